@@ -1,0 +1,275 @@
+// Option registry (see options.h). Validation ranges come from the option help
+// texts of the Gmsh 4.8.4 manual; Gmsh itself stores any value, we refuse
+// values no algorithm understands (documented in docs/interpreter.md).
+#include "interp/options.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+#include <fmt/format.h>
+
+#include "base/check.h"
+
+namespace sm::interp {
+namespace {
+
+const std::vector<OptionInfo>& build_table() {
+  static const std::vector<OptionInfo> table = {
+#define OPT(kind, name, def, ro, help) OptionInfo{OptionKind::kind, name, def, ro, help},
+#include "interp/options_table.def"
+#undef OPT
+  };
+  return table;
+}
+
+// Sorted copy of the names with their table index, for binary search.
+struct NameIndex {
+  std::vector<std::pair<std::string_view, std::size_t>> entries;
+  NameIndex() {
+    const auto& t = build_table();
+    for (std::size_t i = 0; i < t.size(); ++i) entries.emplace_back(t[i].name, i);
+    for (const auto& [alias, canon] : Options::aliases()) {
+      for (std::size_t i = 0; i < t.size(); ++i)
+        if (t[i].name == canon) entries.emplace_back(alias, i);
+    }
+    std::sort(entries.begin(), entries.end());
+  }
+  std::size_t find(std::string_view name) const {
+    auto it = std::lower_bound(entries.begin(), entries.end(), name,
+                               [](const auto& e, std::string_view n) { return e.first < n; });
+    return (it != entries.end() && it->first == name) ? it->second : kNotFound;
+  }
+  static constexpr std::size_t kNotFound = static_cast<std::size_t>(-1);
+};
+
+const NameIndex& name_index() {
+  static const NameIndex index;
+  return index;
+}
+
+Color parse_color(std::string_view text) {
+  Color c{0, 0, 0, 255};
+  std::size_t k = 0, pos = 0;
+  while (k < 4 && pos <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', pos), text.size());
+    c[k++] = std::atof(std::string(text.substr(pos, comma - pos)).c_str());
+    pos = comma + 1;
+  }
+  return c;
+}
+
+// Allowed values of the options whose meaning is a choice.
+struct Choice {
+  std::string_view name;
+  std::vector<double> allowed;
+};
+const std::vector<Choice>& choices() {
+  static const std::vector<Choice> c = {
+      {"Mesh.Algorithm", {1, 2, 3, 5, 6, 7, 8, 9}},
+      {"Mesh.Algorithm3D", {1, 3, 4, 7, 9, 10}},
+      {"Mesh.MshFileVersion", {1, 2, 2.2, 3, 4, 4.1}},
+      {"Mesh.RecombinationAlgorithm", {0, 1, 2, 3}},
+      {"Mesh.SubdivisionAlgorithm", {0, 1, 2, 3}},
+      {"Mesh.QualityType", {0, 1, 2, 3}},
+      {"Mesh.Binary", {0, 1}},
+      {"Mesh.SaveAll", {0, 1}},
+      {"Mesh.RecombineAll", {0, 1}},
+      {"Mesh.SecondOrderLinear", {0, 1}},
+      {"Geometry.OldNewReg", {0, 1}},
+      {"Geometry.AutoCoherence", {0, 1, 2}},
+  };
+  return c;
+}
+
+// Lower bounds of numeric options that are sizes, counts or tolerances.
+struct Bound {
+  std::string_view name;
+  double min;
+  bool strict;
+};
+const std::vector<Bound>& bounds() {
+  static const std::vector<Bound> b = {
+      {"Mesh.MeshSizeMin", 0, false},     {"Mesh.MeshSizeMax", 0, true},
+      {"Mesh.MeshSizeFactor", 0, true},   {"Mesh.ElementOrder", 1, false},
+      {"Mesh.Smoothing", 0, false},       {"Mesh.RandomFactor", 0, false},
+      {"Geometry.Tolerance", 0, false},   {"General.NumThreads", 0, false},
+      {"General.Verbosity", 0, false},    {"Geometry.ScalingFactor", 0, true},
+      {"Mesh.LcIntegrationPrecision", 0, true},
+  };
+  return b;
+}
+
+std::string_view kind_name(OptionKind k) {
+  switch (k) {
+    case OptionKind::Number: return "number";
+    case OptionKind::String: return "string";
+    case OptionKind::Color: return "color";
+  }
+  return "?";
+}
+
+}  // namespace
+
+const std::vector<OptionInfo>& Options::table() { return build_table(); }
+
+const std::vector<std::pair<std::string_view, std::string_view>>& Options::aliases() {
+  // Gmsh 4.8.4 keeps the pre-4.7 names working as aliases of the MeshSize*
+  // options; the ocean benchmarks still use them.
+  static const std::vector<std::pair<std::string_view, std::string_view>> a = {
+      {"Mesh.CharacteristicLengthMin", "Mesh.MeshSizeMin"},
+      {"Mesh.CharacteristicLengthMax", "Mesh.MeshSizeMax"},
+      {"Mesh.CharacteristicLengthFactor", "Mesh.MeshSizeFactor"},
+      {"Mesh.CharacteristicLengthFromPoints", "Mesh.MeshSizeFromPoints"},
+      {"Mesh.CharacteristicLengthFromCurvature", "Mesh.MeshSizeFromCurvature"},
+      {"Mesh.CharacteristicLengthFromParametricPoints", "Mesh.MeshSizeFromParametricPoints"},
+      {"Mesh.CharacteristicLengthExtendFromBoundary", "Mesh.MeshSizeExtendFromBoundary"},
+  };
+  return a;
+}
+
+Options::Options() { reset(); }
+
+void Options::reset() {
+  const auto& t = table();
+  nums_.assign(t.size(), 0.0);
+  strs_.assign(t.size(), std::string());
+  colors_.assign(t.size(), Color{0, 0, 0, 255});
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    switch (t[i].kind) {
+      case OptionKind::Number: nums_[i] = std::atof(std::string(t[i].default_text).c_str()); break;
+      case OptionKind::String: strs_[i] = std::string(t[i].default_text); break;
+      case OptionKind::Color: colors_[i] = parse_color(t[i].default_text); break;
+    }
+  }
+}
+
+const OptionInfo* Options::find(std::string_view name) const {
+  const std::size_t i = name_index().find(name);
+  return i == NameIndex::kNotFound ? nullptr : &table()[i];
+}
+
+std::string Options::closest(std::string_view name) const {
+  std::string_view best;
+  std::size_t best_d = static_cast<std::size_t>(-1);
+  for (const auto& [n, i] : name_index().entries) {
+    const std::size_t d = edit_distance(name, n);
+    if (d < best_d) {
+      best_d = d;
+      best = n;
+    }
+  }
+  return std::string(best);
+}
+
+std::size_t Options::index_of(std::string_view name, OptionKind kind) const {
+  const std::size_t i = name_index().find(name);
+  SM_ASSERT(i != NameIndex::kNotFound && table()[i].kind == kind, "unknown option or wrong kind");
+  return i;
+}
+
+double Options::number(std::string_view name) const { return nums_[index_of(name, OptionKind::Number)]; }
+const std::string& Options::string(std::string_view name) const {
+  return strs_[index_of(name, OptionKind::String)];
+}
+const Color& Options::color(std::string_view name) const {
+  return colors_[index_of(name, OptionKind::Color)];
+}
+
+std::string Options::set_number(std::string_view name, double v, bool internal) {
+  const std::size_t i = name_index().find(name);
+  if (i == NameIndex::kNotFound) return fmt::format("unknown option '{}'", name);
+  const OptionInfo& info = table()[i];
+  if (info.kind != OptionKind::Number)
+    return fmt::format("option '{}' is a {}, not a number", name, kind_name(info.kind));
+  if (info.read_only && !internal) return fmt::format("option '{}' is read-only", name);
+  if (!std::isfinite(v)) return fmt::format("option '{}' must be finite", name);
+  for (const auto& c : choices()) {
+    if (c.name != info.name) continue;
+    if (std::find(c.allowed.begin(), c.allowed.end(), v) == c.allowed.end()) {
+      std::string list;
+      for (double a : c.allowed) list += fmt::format("{}{}", list.empty() ? "" : ", ", a);
+      return fmt::format("invalid value {} for option '{}' (allowed: {})", v, name, list);
+    }
+  }
+  for (const auto& b : bounds()) {
+    if (b.name != info.name) continue;
+    if (v < b.min || (b.strict && v == b.min))
+      return fmt::format("invalid value {} for option '{}' (must be {} {})", v, name,
+                         b.strict ? ">" : ">=", b.min);
+  }
+  nums_[i] = v;
+  return "";
+}
+
+std::string Options::set_string(std::string_view name, std::string v, bool internal) {
+  const std::size_t i = name_index().find(name);
+  if (i == NameIndex::kNotFound) return fmt::format("unknown option '{}'", name);
+  const OptionInfo& info = table()[i];
+  if (info.kind != OptionKind::String)
+    return fmt::format("option '{}' is a {}, not a string", name, kind_name(info.kind));
+  if (info.read_only && !internal) return fmt::format("option '{}' is read-only", name);
+  strs_[i] = std::move(v);
+  return "";
+}
+
+std::string Options::set_color(std::string_view name, const Color& c) {
+  const std::size_t i = name_index().find(name);
+  if (i == NameIndex::kNotFound) return fmt::format("unknown option '{}'", name);
+  const OptionInfo& info = table()[i];
+  if (info.kind != OptionKind::Color)
+    return fmt::format("option '{}' is a {}, not a color", name, kind_name(info.kind));
+  for (double x : c)
+    if (!(x >= 0 && x <= 255)) return fmt::format("color components of '{}' must be in 0..255", name);
+  colors_[i] = c;
+  return "";
+}
+
+bool named_color(std::string_view name, Color& out) {
+  struct Named {
+    std::string_view name;
+    Color c;
+  };
+  // The common X11 names; Gmsh accepts the whole X11 list.
+  static const Named kColors[] = {
+      {"Black", {0, 0, 0, 255}},         {"White", {255, 255, 255, 255}},
+      {"Red", {255, 0, 0, 255}},         {"Green", {0, 255, 0, 255}},
+      {"Blue", {0, 0, 255, 255}},        {"Yellow", {255, 255, 0, 255}},
+      {"Cyan", {0, 255, 255, 255}},      {"Magenta", {255, 0, 255, 255}},
+      {"Gray", {190, 190, 190, 255}},    {"Grey", {190, 190, 190, 255}},
+      {"Orange", {255, 165, 0, 255}},    {"Purple", {160, 32, 240, 255}},
+      {"Brown", {165, 42, 42, 255}},     {"Pink", {255, 192, 203, 255}},
+      {"Navy", {0, 0, 128, 255}},        {"Maroon", {176, 48, 96, 255}},
+      {"Gold", {255, 215, 0, 255}},      {"Orchid", {218, 112, 214, 255}},
+      {"LightGray", {211, 211, 211, 255}}, {"DarkGray", {169, 169, 169, 255}},
+  };
+  for (const auto& n : kColors) {
+    if (n.name.size() != name.size()) continue;
+    bool eq = true;
+    for (std::size_t i = 0; i < name.size() && eq; ++i)
+      eq = std::tolower(static_cast<unsigned char>(n.name[i])) ==
+           std::tolower(static_cast<unsigned char>(name[i]));
+    if (eq) {
+      out = n.c;
+      return true;
+    }
+  }
+  return false;
+}
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diag = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diag = up;
+    }
+  }
+  return row[b.size()];
+}
+
+}  // namespace sm::interp

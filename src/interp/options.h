@@ -1,0 +1,71 @@
+// The typed registry of General.*, Geometry.* and Mesh.* options with Gmsh
+// 4.8.4's defaults (table generated from the manual's option index), deprecated
+// aliases sharing storage, validation, and closest-name suggestions.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace sm::interp {
+
+enum class OptionKind { Number, String, Color };
+
+struct OptionInfo {
+  OptionKind kind;
+  std::string_view name;
+  std::string_view default_text;   ///< number text, string, or "r,g,b,a"
+  bool read_only;                  ///< set only by the program (e.g. Mesh.NbNodes)
+  std::string_view help;
+};
+
+/// RGBA components 0..255.
+using Color = std::array<double, 4>;
+
+/// All option values of one run. A plain value passed in the interpreter's
+/// context: no global state, so two runs never see each other's settings.
+class Options {
+ public:
+  Options();
+
+  /// The option with this exact name or deprecated alias; nullptr if unknown.
+  const OptionInfo* find(std::string_view name) const;
+  /// The known option (or alias) nearest to `name` by edit distance.
+  std::string closest(std::string_view name) const;
+
+  /// Readers; `name` must be a known option of the right kind.
+  double number(std::string_view name) const;
+  const std::string& string(std::string_view name) const;
+  const Color& color(std::string_view name) const;
+
+  /// Setters return "" or the reason the value is refused (unknown option,
+  /// wrong kind, read-only, outside the allowed set). `internal` lets the
+  /// program update read-only statistics.
+  std::string set_number(std::string_view name, double v, bool internal = false);
+  std::string set_string(std::string_view name, std::string v, bool internal = false);
+  std::string set_color(std::string_view name, const Color& c);
+
+  /// Back to the defaults (`Delete Options;`).
+  void reset();
+
+  /// Every option of the table, in table order (deprecated aliases excluded).
+  static const std::vector<OptionInfo>& table();
+  /// Deprecated aliases as (alias, canonical name) pairs.
+  static const std::vector<std::pair<std::string_view, std::string_view>>& aliases();
+
+ private:
+  std::size_t index_of(std::string_view name, OptionKind kind) const;
+  std::vector<double> nums_;
+  std::vector<std::string> strs_;
+  std::vector<Color> colors_;
+};
+
+/// Named colours accepted on the right of `X.Color.Y = Name;` ("Red", ...).
+bool named_color(std::string_view name, Color& out);
+
+/// Levenshtein distance, used for "did you mean" suggestions.
+std::size_t edit_distance(std::string_view a, std::string_view b);
+
+}  // namespace sm::interp

@@ -1,0 +1,56 @@
+// Option registry: 4.8.4 defaults, aliases, validation, suggestions.
+#include <doctest/doctest.h>
+
+#include "interp/options.h"
+
+using sm::interp::Options;
+
+TEST_CASE("options: defaults from the 4.8.4 manual") {
+  Options o;
+  CHECK(Options::table().size() > 500);
+  CHECK(o.number("Mesh.Algorithm") == 6);
+  CHECK(o.number("Mesh.MeshSizeMax") == 1e22);
+  CHECK(o.number("Mesh.MshFileVersion") == 4.1);
+  CHECK(o.number("General.Verbosity") == 5);
+  CHECK(o.number("Geometry.OldNewReg") == 1);
+  CHECK(o.number("Geometry.Tolerance") == 1e-8);
+  CHECK(o.string("General.Version").empty() == false);
+  CHECK(o.color("General.Color.Background")[0] == 255);
+}
+
+TEST_CASE("options: CharacteristicLength aliases share storage") {
+  Options o;
+  CHECK(o.set_number("Mesh.CharacteristicLengthMax", 5).empty());
+  CHECK(o.number("Mesh.MeshSizeMax") == 5);
+  CHECK(o.set_number("Mesh.MeshSizeFactor", 0.5).empty());
+  CHECK(o.number("Mesh.CharacteristicLengthFactor") == 0.5);
+  o.reset();
+  CHECK(o.number("Mesh.MeshSizeMax") == 1e22);
+}
+
+TEST_CASE("options: validation") {
+  Options o;
+  CHECK(o.set_number("Mesh.Algorithm", 4).find("allowed") != std::string::npos);
+  CHECK(o.number("Mesh.Algorithm") == 6);
+  CHECK(o.set_number("Mesh.Algorithm", 5).empty());
+  CHECK_FALSE(o.set_number("Mesh.MeshSizeFactor", 0).empty());
+  CHECK_FALSE(o.set_number("Mesh.NbNodes", 3).empty());          // read-only
+  CHECK(o.set_number("Mesh.NbNodes", 3, /*internal=*/true).empty());
+  CHECK(o.number("Mesh.NbNodes") == 3);
+  CHECK_FALSE(o.set_string("Mesh.Algorithm", "x").empty());
+  CHECK_FALSE(o.set_number("Mesh.Foo", 1).empty());
+  CHECK(o.set_color("Geometry.Color.Points", {1, 2, 3, 255}).empty());
+  CHECK_FALSE(o.set_color("Geometry.Color.Points", {1, 2, 300, 255}).empty());
+}
+
+TEST_CASE("options: closest name for unknown options") {
+  Options o;
+  CHECK(o.find("Mesh.Algoritm") == nullptr);
+  CHECK(o.closest("Mesh.Algoritm") == "Mesh.Algorithm");
+  CHECK(o.closest("Mesh.CharacteristicLenghtMax") == "Mesh.CharacteristicLengthMax");
+  CHECK(sm::interp::edit_distance("kitten", "sitting") == 3);
+  sm::interp::Color c;
+  CHECK(sm::interp::named_color("red", c));
+  CHECK(c[0] == 255);
+  CHECK_FALSE(sm::interp::named_color("Blurple", c));
+}
