@@ -1,0 +1,93 @@
+// The flat triangulation store (STYLE section 6): per-side corner and twin,
+// per-vertex out_side, flags, a free list of dead triangles, compact().
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "base/id.h"
+#include "base/vec.h"
+
+namespace sm {
+
+//            apex          side s = 3t+e runs org -> dest, counter-clockwise;
+//            /  \          corner[s] = org(s); twin[s] = the same edge seen
+//     prev  /    \  next   from the neighbour (kNone on the hull or beside a
+//     org  +------+ dest   removed triangle). next(s) starts at dest(s).
+//              s
+inline TriId tri_of(Side s) { return TriId{s.value / 3}; }
+inline Side side_of(TriId t, std::uint32_t e) { return Side{3 * t.value + e}; }
+inline Side next(Side s) { return Side{s.value / 3 * 3 + (s.value + 1) % 3}; }
+inline Side prev(Side s) { return Side{s.value / 3 * 3 + (s.value + 2) % 3}; }
+
+/// Per-side flags (both sides of an edge carry the same ones).
+enum SideFlag : std::uint8_t { kConstrained = 1, kBoundary = 2 };
+/// Per-triangle flags. kMark is scratch: an algorithm that sets it clears it.
+enum TriFlag : std::uint8_t { kDead = 1, kQueued = 2, kMark = 4 };
+
+struct TriangleStore {
+  std::vector<Vec2> xy;                  // per vertex (plane or stereographic plane)
+  std::vector<Side> out_side;            // per vertex: a side leaving it, kNone if isolated
+  std::vector<VertexId> corner;          // per side: origin vertex
+  std::vector<Side> twin;                // per side: opposite side
+  std::vector<std::uint8_t> side_flags;  // per side: SideFlag bits
+  std::vector<std::uint8_t> tri_flags;   // per triangle: TriFlag bits
+  std::vector<TriId> free_tris;          // dead slots, reused before growing
+
+  std::uint32_t num_vertices() const { return static_cast<std::uint32_t>(xy.size()); }
+  /// Triangle slots, dead ones included.
+  std::uint32_t num_slots() const { return static_cast<std::uint32_t>(tri_flags.size()); }
+  std::uint32_t num_triangles() const { return num_slots() - static_cast<std::uint32_t>(free_tris.size()); }
+  bool alive(TriId t) const { return !(tri_flags[t.value] & kDead); }
+
+  VertexId org(Side s) const { return corner[s.value]; }
+  VertexId dest(Side s) const { return corner[next(s).value]; }
+  VertexId apex(Side s) const { return corner[prev(s).value]; }
+  VertexId vertex(TriId t, std::uint32_t e) const { return corner[3 * t.value + e]; }
+  Vec2 pos(VertexId v) const { return xy[v.value]; }
+  bool constrained(Side s) const { return side_flags[s.value] & kConstrained; }
+  /// out_side[v] names a live side leaving v.
+  bool out_side_ok(VertexId v) const {
+    const Side s = out_side[v.value];
+    return s.valid() && s.value < corner.size() && alive(tri_of(s)) && corner[s.value] == v;
+  }
+
+  VertexId add_vertex(Vec2 p);
+  /// A triangle a, b, c (counter-clockwise) with unlinked sides; reuses a dead slot.
+  TriId add_triangle(VertexId a, VertexId b, VertexId c);
+  /// Marks t dead, unlinks its neighbours and recycles the slot. out_side of
+  /// its corners is repaired when another triangle still holds them.
+  void kill_triangle(TriId t);
+  /// Makes a and b twins of each other.
+  void link(Side a, Side b) {
+    twin[a.value] = b;
+    if (b.valid()) twin[b.value] = a;
+  }
+  /// Sets flags on a side and on its twin.
+  void set_edge_flags(Side s, std::uint8_t f);
+  void clear_edge_flags(Side s, std::uint8_t f);
+
+  /// The side running a -> b, or kNone (on the hull only b -> a may exist).
+  Side side_between(VertexId a, VertexId b) const;
+  bool has_edge(VertexId a, VertexId b) const { return side_between(a, b).valid() || side_between(b, a).valid(); }
+
+  /// Flips the diagonal of the quad formed by the triangles on both sides of
+  /// s (a -> b, apexes c and d): afterwards the edge c - d exists. The caller
+  /// checks convexity; flags of the four outer edges follow them. Returns the
+  /// side d -> c of the new edge.
+  Side flip(Side s);
+
+  /// Renumbers live triangles to 0..n-1 (order kept) and empties the free list.
+  void compact();
+  void clear();
+  void reserve(std::uint32_t vertices, std::uint32_t triangles);
+};
+
+/// A store from vertex positions and counter-clockwise triangles; twins are
+/// found by matching opposite sides. Returns false (store left empty) when
+/// an edge is used twice in the same direction or an id is out of range.
+bool build_triangulation(std::vector<Vec2> xy, const std::vector<std::array<std::uint32_t, 3>>& tris,
+                         TriangleStore& out);
+
+}  // namespace sm

@@ -1,0 +1,131 @@
+// The flat store: building, rotation (side_between), flip, kill, compact,
+// each followed by the checkers.
+#include <doctest/doctest.h>
+
+#include "mesh/check.h"
+#include "mesh/triangulation.h"
+
+using namespace sm;
+
+namespace {
+
+// Unit square 0(0,0) 1(1,0) 2(1,1) 3(0,1) split by the diagonal 0-2.
+TriangleStore unit_square_02() {
+  TriangleStore m;
+  REQUIRE(build_triangulation({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {{0, 1, 2}, {0, 2, 3}}, m));
+  return m;
+}
+
+// A 3x3 grid of vertices (ids row-major), each cell split along one diagonal.
+TriangleStore grid3() {
+  std::vector<Vec2> xy;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) xy.push_back({double(i), double(j)});
+  std::vector<std::array<std::uint32_t, 3>> tris;
+  for (std::uint32_t j = 0; j < 2; ++j)
+    for (std::uint32_t i = 0; i < 2; ++i) {
+      const std::uint32_t a = 3 * j + i, b = a + 1, c = a + 4, d = a + 3;
+      tris.push_back({a, b, c});
+      tris.push_back({a, c, d});
+    }
+  TriangleStore m;
+  REQUIRE(build_triangulation(xy, tris, m));
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("triangulation: build, sides, rotation") {
+  TriangleStore m = unit_square_02();
+  CHECK(check_topology(m).ok());
+  CHECK(m.num_triangles() == 2);
+  const Side s = m.side_between(VertexId{0}, VertexId{2});
+  REQUIRE(s.valid());
+  CHECK(m.org(s) == VertexId{0});
+  CHECK(m.dest(s) == VertexId{2});
+  CHECK(m.apex(s) == VertexId{3});
+  CHECK(m.org(m.twin[s.value]) == VertexId{2});
+  CHECK(m.has_edge(VertexId{1}, VertexId{0}));  // only 0->1 exists (hull)
+  CHECK_FALSE(m.side_between(VertexId{1}, VertexId{0}).valid());
+  CHECK_FALSE(m.has_edge(VertexId{1}, VertexId{3}));
+  const PlanarGeometry g{&m.xy};
+  CHECK(check_delaunay(m, g).ok());  // cocircular: either diagonal is Delaunay
+}
+
+TEST_CASE("triangulation: flip of a convex quad keeps topology and flags") {
+  TriangleStore m = unit_square_02();
+  const Side hull = m.side_between(VertexId{0}, VertexId{1});
+  m.set_edge_flags(hull, kBoundary);
+  const Side s = m.side_between(VertexId{0}, VertexId{2});
+  const Side n = m.flip(s);
+  CHECK(m.org(n) == VertexId{1});  // d -> c
+  CHECK(m.dest(n) == VertexId{3});
+  CHECK(m.has_edge(VertexId{1}, VertexId{3}));
+  CHECK_FALSE(m.has_edge(VertexId{0}, VertexId{2}));
+  CHECK(check_topology(m).ok());
+  const Side h2 = m.side_between(VertexId{0}, VertexId{1});
+  REQUIRE(h2.valid());
+  CHECK((m.side_flags[h2.value] & kBoundary));
+  m.flip(n);  // and back
+  CHECK(m.has_edge(VertexId{0}, VertexId{2}));
+  CHECK(check_topology(m).ok());
+}
+
+TEST_CASE("triangulation: flips across a grid, kill, compact") {
+  TriangleStore m = grid3();
+  CHECK(check_topology(m).ok());
+  CHECK(check_delaunay(m, PlanarGeometry{&m.xy}).ok());
+  // Flip every interior diagonal (all cells are squares: both diagonals legal).
+  for (std::uint32_t j = 0; j < 2; ++j)
+    for (std::uint32_t i = 0; i < 2; ++i) {
+      const VertexId a{3 * j + i}, c{3 * j + i + 4};
+      m.flip(m.side_between(a, c));
+      CHECK(check_topology(m).ok());
+      CHECK(m.has_edge(VertexId{a.value + 1}, VertexId{a.value + 3}));
+    }
+  // Every interior vertex (4) rotates fully: side_between finds all 8 neighbours' edges.
+  int found = 0;
+  for (std::uint32_t v = 0; v < 9; ++v)
+    if (m.has_edge(VertexId{4}, VertexId{v})) ++found;
+  CHECK(found == 6);  // 1, 2, 3, 5, 6, 7: the diagonals 0-4 and 4-8 became 1-3 and 5-7
+  CHECK_FALSE(m.has_edge(VertexId{0}, VertexId{4}));
+  CHECK_FALSE(m.has_edge(VertexId{4}, VertexId{8}));
+  // Remove the corner triangles at 0 and 8 (the ear cut off by each flip):
+  // the rest stays a manifold disc and 0, 8 become isolated.
+  const TriId t0 = tri_of(m.out_side[0]), nb = tri_of(m.out_side[8]);
+  m.kill_triangle(t0);
+  m.kill_triangle(nb);
+  CHECK_FALSE(m.out_side[0].valid());
+  INFO(check_topology(m).error);
+  CHECK(check_topology(m).ok());
+  CHECK(m.num_triangles() == 6);
+  const TriId t = m.add_triangle(VertexId{0}, VertexId{1}, VertexId{3});  // reuses a slot
+  CHECK(t == nb);
+  m.kill_triangle(t);
+  m.compact();
+  CHECK(m.num_slots() == 6);
+  CHECK(m.free_tris.empty());
+  CHECK(check_topology(m).ok());
+}
+
+TEST_CASE("triangulation: checkers catch broken invariants") {
+  TriangleStore m = unit_square_02();
+  m.twin[0] = Side{4};
+  CHECK_FALSE(check_topology(m).ok());
+  m = unit_square_02();
+  std::swap(m.corner[0], m.corner[1]);  // clockwise triangle
+  CHECK_FALSE(check_topology(m).ok());
+  m = unit_square_02();
+  m.xy[3] = {0.9, 0.1};  // vertex 3 now inside the circle of (0,1,2)... and its triangle inverted
+  CHECK_FALSE(check_topology(m).ok());
+  TriangleStore d;
+  REQUIRE(build_triangulation({{0, 0}, {4, 0}, {2, 1}, {2, -1}}, {{0, 3, 1}, {0, 1, 2}}, d));
+  CHECK(check_topology(d).ok());
+  CHECK_FALSE(check_delaunay(d, PlanarGeometry{&d.xy}).ok());  // 2 and 3 see each other: flat triangles
+  d.set_edge_flags(d.side_between(VertexId{0}, VertexId{1}), kConstrained);
+  CHECK(check_delaunay(d, PlanarGeometry{&d.xy}).ok());
+  CHECK(check_constraints(d, {{VertexId{1}, VertexId{0}}}).ok());
+  CHECK_FALSE(check_constraints(d, {{VertexId{2}, VertexId{3}}}).ok());
+  TriangleStore bad;
+  CHECK_FALSE(build_triangulation({{0, 0}, {1, 0}, {0, 1}}, {{0, 1, 2}, {0, 1, 2}}, bad));
+}
