@@ -1,0 +1,118 @@
+// Located diagnostics: kinds from diag_kinds.def, notes ("called from", "opened
+// here"), an error limit, and clang-style rendering with the source line and a caret.
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "lang/source.h"
+
+namespace sm::lang {
+
+enum class Severity : std::uint8_t { Error, Warning, Note };
+
+enum class Diag : std::uint16_t {
+#define DIAG(name, severity, kebab, format) name,
+#include "lang/diag_kinds.def"
+#undef DIAG
+  kCount
+};
+
+struct DiagInfo {
+  Severity severity;
+  std::string_view kebab;   ///< "expected-semicolon"
+  std::string_view format;  ///< fmt format string
+};
+const DiagInfo& diag_info(Diag kind);
+/// The kind whose kebab name is `kebab`, or Diag::kCount.
+Diag diag_from_kebab(std::string_view kebab);
+std::string_view severity_name(Severity s);  // "error", "warning", "note"
+
+struct DiagNote {
+  SourceRange range;  ///< invalid: rendered without a location
+  std::string message;
+};
+
+struct Diagnostic {
+  Diag kind = Diag::kCount;
+  Severity severity = Severity::Error;
+  SourceRange range;
+  std::string message;  ///< formatted, without the [kebab] suffix
+  std::vector<DiagNote> notes;
+};
+
+/// Collects diagnostics for one run. Errors are counted; after max_errors
+/// errors one "too many errors" error is added and later reports are dropped
+/// (the parser checks too_many_errors() and stops).
+class Diagnostics {
+ public:
+  static constexpr std::size_t kDefaultMaxErrors = 50;
+
+  /// Attaches notes to the diagnostic just reported; a no-op handle when that
+  /// report was dropped by the error limit.
+  class Handle {
+   public:
+    Handle& note(SourceRange range, std::string message);
+    bool dropped() const { return index_ == kDropped; }
+
+   private:
+    friend class Diagnostics;
+    static constexpr std::size_t kDropped = ~std::size_t{0};
+    Handle(Diagnostics* owner, std::size_t index) : owner_(owner), index_(index) {}
+    Diagnostics* owner_;
+    std::size_t index_;
+  };
+
+  explicit Diagnostics(const SourceManager& sources) : sources_(&sources) {}
+
+  /// diags.report(tok.range, Diag::UnknownField, name): formats the kind's
+  /// message with fmt. Never throws (a bad argument list is reported in the text).
+  template <class... Args>
+  Handle report(SourceRange range, Diag kind, const Args&... args) {
+    std::string message;
+    try {
+      message = fmt::vformat(diag_info(kind).format, fmt::make_format_args(args...));
+    } catch (const fmt::format_error&) {
+      message = std::string(diag_info(kind).format) + " (bad diagnostic arguments)";
+    }
+    return report_message(range, kind, std::move(message));
+  }
+  /// Reports with an already formatted message.
+  Handle report_message(SourceRange range, Diag kind, std::string message);
+
+  std::size_t error_count() const { return errors_; }
+  std::size_t warning_count() const { return warnings_; }
+  bool too_many_errors() const { return stopped_; }
+  void set_max_errors(std::size_t n) { max_errors_ = n; }  ///< 0: no limit
+  std::size_t max_errors() const { return max_errors_; }
+
+  const std::vector<Diagnostic>& all() const { return diags_; }
+  const SourceManager& sources() const { return *sources_; }
+
+  /// clang-style text of one diagnostic and its notes (ends with '\n').
+  std::string render(const Diagnostic& d) const;
+  /// All diagnostics in report order.
+  std::string render_all() const;
+  /// Writes the diagnostics not written by an earlier flush (so a driver can
+  /// stream them while a script runs) and returns how many were written.
+  std::size_t flush(std::FILE* out);
+
+ private:
+  const SourceManager* sources_;
+  std::vector<Diagnostic> diags_;
+  std::size_t errors_ = 0;
+  std::size_t warnings_ = 0;
+  std::size_t max_errors_ = kDefaultMaxErrors;
+  std::size_t flushed_ = 0;
+  bool stopped_ = false;
+};
+
+/// "file:line:col" of a location (or "<unknown>"), as used in messages.
+std::string format_location(const SourceManager& sources, SourceLoc loc);
+
+}  // namespace sm::lang
