@@ -1,0 +1,74 @@
+// Typed errors of the geometry kernel: a kind, the entity tags involved (the interpreter maps
+// them back to the statements that created them) and a message; never thrown, never printed.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+namespace sm::geo {
+
+enum class GeoErrorKind {
+  MissingEntity,      // a referenced point/curve/loop/surface/geometry does not exist
+  DuplicateTag,       // an entity with this tag already exists in its dimension
+  InvalidTag,         // tags must be > 0
+  TooFewPoints,       // e.g. a line with one point
+  SelfReference,      // a curve using the same point twice in a row (zero-length piece)
+  CoincidentPoints,   // arc end points coincide with the centre, ...
+  NotCocircular,      // circle start/end radii differ by more than Gmsh's 10%
+  DegenerateArc,      // arc/ellipse whose plane or axes cannot be determined
+  LoopNotClosed,      // a curve loop that does not close or is not in order
+  LoopEmpty,
+  HoleOutside,        // a hole of a plane surface is not inside its outer loop
+  SharedBoundary,     // a hole shares a curve with the outer loop or another hole
+  EntityInUse,        // delete refused: a higher-dimensional entity uses it
+  BadArgument,        // anything else malformed (wrong counts, zero axis, ...)
+};
+
+const char* to_string(GeoErrorKind k);
+
+struct GeoError {
+  GeoErrorKind kind = GeoErrorKind::BadArgument;
+  int dim = -1;              // dimension of the entity the error is about (-1: none)
+  std::vector<int> tags;     // that entity first, then the others involved (signed for curves)
+  std::string message;       // lowercase, no final period; mentions the tags
+};
+
+/// Either a value or a GeoError: the kernel's return type for operations that can fail.
+template <class T>
+class GeoResult {
+ public:
+  GeoResult(T value) : v_(std::move(value)) {}                // NOLINT: implicit on purpose
+  GeoResult(GeoError error) : v_(std::move(error)) {}         // NOLINT
+  bool ok() const { return v_.index() == 0; }
+  explicit operator bool() const { return ok(); }
+  T& value() { return std::get<0>(v_); }
+  const T& value() const { return std::get<0>(v_); }
+  T& operator*() { return value(); }
+  const T& operator*() const { return value(); }
+  T* operator->() { return &value(); }
+  const T* operator->() const { return &value(); }
+  const GeoError& error() const { return std::get<1>(v_); }
+
+ private:
+  std::variant<T, GeoError> v_;
+};
+
+/// Success or a GeoError, for operations without a value.
+class GeoStatus {
+ public:
+  GeoStatus() = default;
+  GeoStatus(GeoError error) : ok_(false), error_(std::move(error)) {}   // NOLINT
+  bool ok() const { return ok_; }
+  explicit operator bool() const { return ok_; }
+  const GeoError& error() const { return error_; }
+
+ private:
+  bool ok_ = true;
+  GeoError error_;
+};
+
+GeoError make_error(GeoErrorKind kind, int dim, std::vector<int> tags, std::string message);
+
+}  // namespace sm::geo
