@@ -176,7 +176,7 @@ TEST_CASE("curves vs Gmsh 4.8.4: Euclidean Line, Spline, BSpline, Bezier, Circle
       {18, K::Ellipse, {32, 20, 30, 23}},
       {19, K::Circle, {41, 40, 42}},
   };
-  run_cases("curves_euclid.msh", cases, {});
+  run_cases("curves_euclid.msh41", cases, {});
 }
 
 TEST_CASE("curves vs Gmsh 4.8.4: drawn in (u,v) on PolarSpheres and a lon/lat Sphere") {
@@ -200,7 +200,7 @@ TEST_CASE("curves vs Gmsh 4.8.4: drawn in (u,v) on PolarSpheres and a lon/lat Sp
       {11, K::BSpline, range(21, 25), 3},
       {12, K::Line, {21, 23}, 3},
   };
-  run_cases("curves_polar.msh", cases, geos);
+  run_cases("curves_polar.msh41", cases, geos);
 }
 
 TEST_CASE("curves: a PolarSphere Line is a circle arc in (u,v), not a great circle") {
