@@ -1,0 +1,46 @@
+// The mesh as every writer sees it: nodes classified on model entities
+// (Gmsh's view of a mesh: each node belongs to exactly one point, curve or
+// surface), independent of how the mesher stores its triangulation.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "base/vec.h"
+
+namespace sm::io {
+
+/// Gmsh element type numbers (MSH formats).
+enum class ElementType : int { Line2 = 1, Triangle3 = 2, Quad4 = 3, Point1 = 15 };
+
+int nodes_per_element(ElementType type);
+
+/// The mesh of one model entity. Node indices refer to MeshModel::xyz.
+struct EntityMesh {
+  int dim = 0;                           // 0 point, 1 curve, 2 surface
+  int tag = 0;                           // model tag (> 0)
+  std::vector<int> physical_tags;        // groups this entity belongs to
+  std::vector<int> boundary;             // signed tags of bounding entities of dim-1
+                                         // (curve: +begin, -end point; surface: signed curves)
+  std::vector<std::uint32_t> nodes;      // nodes classified on this entity (for a curve: interior only)
+  std::vector<double> params;            // empty, or dim values per node (curve t; surface u v)
+  ElementType type = ElementType::Point1;
+  std::vector<std::uint32_t> connectivity;  // nodes_per_element(type) node indices per element
+};
+
+struct PhysicalGroup {
+  int dim = 0;
+  int tag = 0;
+  std::string name;  // may be empty
+};
+
+struct MeshModel {
+  std::vector<Vec3> xyz;                 // every node, in any order
+  std::vector<EntityMesh> entities;      // any order: writers sort by (dim, tag)
+  std::vector<PhysicalGroup> physicals;
+
+  std::size_t element_count() const;
+};
+
+}  // namespace sm::io

@@ -1,0 +1,394 @@
+// MSH 2.2 / 4.1 writer (ASCII and binary). Entities are written in (dim, tag)
+// order and nodes and elements are numbered contiguously from 1 in that
+// order, as Gmsh does, so the same mesh always gives the same bytes.
+#include "io/msh_writer.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <functional>
+#include <numeric>
+
+#include "io/atomic_file.h"
+
+namespace sm::io {
+namespace {
+
+constexpr std::uint32_t kUnowned = 0xFFFFFFFFu;
+
+// Buffered byte output that either keeps everything (msh_to_string) or
+// drains to an AtomicFile every few megabytes (large meshes).
+class Out {
+ public:
+  explicit Out(AtomicFile* file) : file_(file) {}
+  void text(std::string_view s) { buf_.append(s); drain(); }
+  template <class... A>
+  void f(fmt::format_string<A...> pattern, A&&... args) {
+    fmt::format_to(std::back_inserter(buf_), pattern, std::forward<A>(args)...);
+    drain();
+  }
+  template <class T>
+  void bin(T v) {
+    char b[sizeof(T)];
+    std::memcpy(b, &v, sizeof(T));
+    buf_.append(b, sizeof(T));
+  }
+  void coord(double v) { f("{:.16g}", v); }
+  bool finish() {
+    if (file_) {
+      const bool ok = file_->write(buf_);
+      buf_.clear();
+      return ok;
+    }
+    return true;
+  }
+  std::string take() { return std::move(buf_); }
+
+ private:
+  void drain() {
+    if (file_ && buf_.size() > (4u << 20)) {
+      file_->write(buf_);
+      buf_.clear();
+    }
+  }
+  AtomicFile* file_;
+  std::string buf_;
+};
+
+// Everything both versions need to know about numbering and what is saved.
+struct Plan {
+  std::vector<std::size_t> order;          // entity indices sorted by (dim, tag)
+  std::vector<char> saved;                 // per entity: its elements are written
+  std::vector<std::uint32_t> owner;        // per node: owning entity index
+  bool has_physicals = false;
+};
+
+Plan make_plan(const MeshModel& m, const MshOptions& opt) {
+  Plan p;
+  p.order.resize(m.entities.size());
+  std::iota(p.order.begin(), p.order.end(), std::size_t{0});
+  std::sort(p.order.begin(), p.order.end(), [&](std::size_t a, std::size_t b) {
+    const EntityMesh &ea = m.entities[a], &eb = m.entities[b];
+    return ea.dim != eb.dim ? ea.dim < eb.dim : ea.tag < eb.tag;
+  });
+  for (const EntityMesh& e : m.entities) p.has_physicals |= !e.physical_tags.empty();
+  p.saved.resize(m.entities.size());
+  for (std::size_t i = 0; i < m.entities.size(); ++i)
+    p.saved[i] = opt.save_all || !p.has_physicals || !m.entities[i].physical_tags.empty();
+  p.owner.assign(m.xyz.size(), kUnowned);
+  for (std::size_t i = 0; i < m.entities.size(); ++i)
+    for (std::uint32_t n : m.entities[i].nodes) p.owner[n] = static_cast<std::uint32_t>(i);
+  return p;
+}
+
+std::size_t element_count(const EntityMesh& e) { return e.connectivity.size() / nodes_per_element(e.type); }
+
+void write_header(Out& o, const MshOptions& opt) {
+  o.text("$MeshFormat\n");
+  o.text(opt.version == 22 ? "2.2 " : "4.1 ");
+  o.text(opt.binary ? "1 8\n" : "0 8\n");
+  if (opt.binary) {
+    o.bin<int>(1);  // lets the reader detect the byte order
+    o.text("\n");
+  }
+  o.text("$EndMeshFormat\n");
+}
+
+void write_physical_names(Out& o, const MeshModel& m) {
+  std::vector<const PhysicalGroup*> named;
+  for (const PhysicalGroup& g : m.physicals)
+    if (!g.name.empty()) named.push_back(&g);
+  if (named.empty()) return;
+  std::sort(named.begin(), named.end(), [](auto* a, auto* b) {
+    return a->dim != b->dim ? a->dim < b->dim : a->tag < b->tag;
+  });
+  o.f("$PhysicalNames\n{}\n", named.size());
+  for (const PhysicalGroup* g : named) o.f("{} {} \"{}\"\n", g->dim, g->tag, g->name);
+  o.text("$EndPhysicalNames\n");
+}
+
+// ---- MSH 2.2 ---------------------------------------------------------------
+
+void write_msh22(Out& o, const MeshModel& m, const MshOptions& opt, const Plan& p) {
+  // Only nodes used by written elements are output, numbered in the order of
+  // their owning entities.
+  std::vector<char> used(m.xyz.size(), 0);
+  std::size_t n_elements = 0;
+  for (std::size_t i : p.order) {
+    if (!p.saved[i]) continue;
+    const EntityMesh& e = m.entities[i];
+    for (std::uint32_t n : e.connectivity) used[n] = 1;
+    const std::size_t copies = (opt.save_all || e.physical_tags.empty()) ? 1 : e.physical_tags.size();
+    n_elements += element_count(e) * copies;
+  }
+  std::vector<std::uint32_t> tag(m.xyz.size(), 0);
+  std::vector<std::uint32_t> node_order;
+  for (std::size_t i : p.order)
+    for (std::uint32_t n : m.entities[i].nodes)
+      if (used[n]) {
+        node_order.push_back(n);
+        tag[n] = static_cast<std::uint32_t>(node_order.size());
+      }
+
+  o.f("$Nodes\n{}\n", node_order.size());
+  for (std::uint32_t n : node_order) {
+    const Vec3 x = m.xyz[n];
+    if (opt.binary) {
+      o.bin<int>(static_cast<int>(tag[n]));
+      o.bin(x.x), o.bin(x.y), o.bin(x.z);
+    } else {
+      o.f("{} {:.16g} {:.16g} {:.16g}\n", tag[n], x.x, x.y, x.z);
+    }
+  }
+  if (opt.binary) o.text("\n");
+  o.text("$EndNodes\n");
+
+  o.f("$Elements\n{}\n", n_elements);
+  int elm = 0;
+  for (std::size_t i : p.order) {
+    if (!p.saved[i]) continue;
+    const EntityMesh& e = m.entities[i];
+    const int npe = nodes_per_element(e.type);
+    const std::size_t ne = element_count(e);
+    // SaveAll drops the physical tags in MSH2 (written as 0).
+    std::vector<int> phys = opt.save_all || e.physical_tags.empty() ? std::vector<int>{0} : e.physical_tags;
+    for (int ph : phys) {
+      for (std::size_t k = 0; k < ne; ++k) {
+        ++elm;
+        const std::uint32_t* c = &e.connectivity[k * npe];
+        if (opt.binary) {
+          // Gmsh writes a one-element block header (type, 1, 2 tags) before
+          // every element; readers accept any block size, we match Gmsh.
+          o.bin<int>(static_cast<int>(e.type)), o.bin<int>(1), o.bin<int>(2);
+          o.bin<int>(elm), o.bin<int>(ph), o.bin<int>(e.tag);
+          for (int j = 0; j < npe; ++j) o.bin<int>(static_cast<int>(tag[c[j]]));
+        } else {
+          o.f("{} {} 2 {} {}", elm, static_cast<int>(e.type), ph, e.tag);
+          for (int j = 0; j < npe; ++j) o.f(" {}", tag[c[j]]);
+          o.text("\n");
+        }
+      }
+    }
+  }
+  if (opt.binary) o.text("\n");
+  o.text("$EndElements\n");
+}
+
+// ---- MSH 4.1 ---------------------------------------------------------------
+
+struct Box {
+  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  void add(Vec3 x) {
+    lo = {std::min(lo.x, x.x), std::min(lo.y, x.y), std::min(lo.z, x.z)};
+    hi = {std::max(hi.x, x.x), std::max(hi.y, x.y), std::max(hi.z, x.z)};
+  }
+  bool empty() const { return lo.x > hi.x; }
+};
+
+void write_entities41(Out& o, const MeshModel& m, const MshOptions& opt, const Plan& p) {
+  std::size_t count[4] = {0, 0, 0, 0};
+  for (const EntityMesh& e : m.entities) ++count[std::clamp(e.dim, 0, 3)];
+  o.text("$Entities\n");
+  if (opt.binary) {
+    for (std::size_t c : count) o.bin<std::uint64_t>(c);
+  } else {
+    o.f("{} {} {} {}\n", count[0], count[1], count[2], count[3]);
+  }
+  for (std::size_t i : p.order) {
+    const EntityMesh& e = m.entities[i];
+    Box box;
+    for (std::uint32_t n : e.nodes) box.add(m.xyz[n]);
+    for (std::uint32_t n : e.connectivity) box.add(m.xyz[n]);
+    if (box.empty()) box.add(Vec3{0, 0, 0});
+    if (opt.binary) {
+      o.bin<int>(e.tag);
+      if (e.dim == 0) {
+        o.bin(box.lo.x), o.bin(box.lo.y), o.bin(box.lo.z);
+      } else {
+        for (double v : {box.lo.x, box.lo.y, box.lo.z, box.hi.x, box.hi.y, box.hi.z}) o.bin(v);
+      }
+      o.bin<std::uint64_t>(e.physical_tags.size());
+      for (int t : e.physical_tags) o.bin<int>(t);
+      if (e.dim > 0) {
+        o.bin<std::uint64_t>(e.boundary.size());
+        for (int t : e.boundary) o.bin<int>(t);
+      }
+    } else {
+      o.f("{} ", e.tag);
+      if (e.dim == 0) {
+        o.f("{:.16g} {:.16g} {:.16g} ", box.lo.x, box.lo.y, box.lo.z);
+      } else {
+        o.f("{:.16g} {:.16g} {:.16g} {:.16g} {:.16g} {:.16g} ", box.lo.x, box.lo.y, box.lo.z, box.hi.x,
+            box.hi.y, box.hi.z);
+      }
+      o.f("{} ", e.physical_tags.size());
+      for (int t : e.physical_tags) o.f("{} ", t);
+      if (e.dim > 0) {
+        o.f("{} ", e.boundary.size());
+        for (int t : e.boundary) o.f("{} ", t);
+      }
+      o.text("\n");
+    }
+  }
+  o.text(opt.binary ? "\n$EndEntities\n" : "$EndEntities\n");
+}
+
+void write_msh41(Out& o, const MeshModel& m, const MshOptions& opt, const Plan& p) {
+  write_entities41(o, m, opt, p);
+
+  // Node blocks: every saved entity, plus every entity owning a node that a
+  // saved element uses (the boundary of a physical surface, say).
+  std::vector<char> node_block(m.entities.size(), 0);
+  for (std::size_t i = 0; i < m.entities.size(); ++i) {
+    if (!p.saved[i]) continue;
+    node_block[i] = 1;
+    for (std::uint32_t n : m.entities[i].connectivity) node_block[p.owner[n]] = 1;
+  }
+  std::vector<std::uint64_t> tag(m.xyz.size(), 0);
+  std::size_t n_blocks = 0, n_nodes = 0;
+  for (std::size_t i : p.order) {
+    if (!node_block[i]) continue;
+    ++n_blocks;
+    for (std::uint32_t n : m.entities[i].nodes) tag[n] = ++n_nodes;
+  }
+  o.text("$Nodes\n");
+  const std::uint64_t min_tag = n_nodes ? 1 : 0;
+  if (opt.binary) {
+    o.bin<std::uint64_t>(n_blocks), o.bin<std::uint64_t>(n_nodes), o.bin<std::uint64_t>(min_tag),
+        o.bin<std::uint64_t>(n_nodes);
+  } else {
+    o.f("{} {} {} {}\n", n_blocks, n_nodes, min_tag, n_nodes);
+  }
+  for (std::size_t i : p.order) {
+    if (!node_block[i]) continue;
+    const EntityMesh& e = m.entities[i];
+    const bool param = opt.save_parametric && e.dim > 0 && e.params.size() == e.nodes.size() * e.dim;
+    if (opt.binary) {
+      o.bin<int>(e.dim), o.bin<int>(e.tag), o.bin<int>(param ? 1 : 0), o.bin<std::uint64_t>(e.nodes.size());
+      for (std::uint32_t n : e.nodes) o.bin<std::uint64_t>(tag[n]);
+      for (std::size_t k = 0; k < e.nodes.size(); ++k) {
+        const Vec3 x = m.xyz[e.nodes[k]];
+        o.bin(x.x), o.bin(x.y), o.bin(x.z);
+        if (param)
+          for (int d = 0; d < e.dim; ++d) o.bin(e.params[k * e.dim + d]);
+      }
+    } else {
+      o.f("{} {} {} {}\n", e.dim, e.tag, param ? 1 : 0, e.nodes.size());
+      for (std::uint32_t n : e.nodes) o.f("{}\n", tag[n]);
+      for (std::size_t k = 0; k < e.nodes.size(); ++k) {
+        const Vec3 x = m.xyz[e.nodes[k]];
+        o.f("{:.16g} {:.16g} {:.16g}", x.x, x.y, x.z);
+        if (param)
+          for (int d = 0; d < e.dim; ++d) o.f(" {:.16g}", e.params[k * e.dim + d]);
+        o.text("\n");
+      }
+    }
+  }
+  o.text(opt.binary ? "\n$EndNodes\n" : "$EndNodes\n");
+
+  std::size_t e_blocks = 0, n_elem = 0;
+  for (std::size_t i : p.order)
+    if (p.saved[i] && element_count(m.entities[i])) ++e_blocks, n_elem += element_count(m.entities[i]);
+  o.text("$Elements\n");
+  const std::uint64_t min_el = n_elem ? 1 : 0;
+  if (opt.binary) {
+    o.bin<std::uint64_t>(e_blocks), o.bin<std::uint64_t>(n_elem), o.bin<std::uint64_t>(min_el),
+        o.bin<std::uint64_t>(n_elem);
+  } else {
+    o.f("{} {} {} {}\n", e_blocks, n_elem, min_el, n_elem);
+  }
+  std::uint64_t elm = 0;
+  for (std::size_t i : p.order) {
+    const EntityMesh& e = m.entities[i];
+    const std::size_t ne = element_count(e);
+    if (!p.saved[i] || !ne) continue;
+    const int npe = nodes_per_element(e.type);
+    if (opt.binary) {
+      o.bin<int>(e.dim), o.bin<int>(e.tag), o.bin<int>(static_cast<int>(e.type)), o.bin<std::uint64_t>(ne);
+    } else {
+      o.f("{} {} {} {}\n", e.dim, e.tag, static_cast<int>(e.type), ne);
+    }
+    for (std::size_t k = 0; k < ne; ++k) {
+      ++elm;
+      const std::uint32_t* c = &e.connectivity[k * npe];
+      if (opt.binary) {
+        o.bin<std::uint64_t>(elm);
+        for (int j = 0; j < npe; ++j) o.bin<std::uint64_t>(tag[c[j]]);
+      } else {
+        o.f("{} ", elm);
+        for (int j = 0; j < npe; ++j) o.f("{} ", tag[c[j]]);
+        o.text("\n");
+      }
+    }
+  }
+  o.text(opt.binary ? "\n$EndElements\n" : "$EndElements\n");
+}
+
+void write_all(Out& o, const MeshModel& m, const MshOptions& opt) {
+  const Plan p = make_plan(m, opt);
+  write_header(o, opt);
+  write_physical_names(o, m);
+  if (opt.version == 22)
+    write_msh22(o, m, opt, p);
+  else
+    write_msh41(o, m, opt, p);
+}
+
+}  // namespace
+
+std::string validate_mesh_model(const MeshModel& m) {
+  if (m.xyz.size() >= kUnowned) return "too many nodes for 32-bit node indices";
+  std::vector<std::uint32_t> owner(m.xyz.size(), kUnowned);
+  for (std::size_t i = 0; i < m.entities.size(); ++i) {
+    const EntityMesh& e = m.entities[i];
+    if (e.dim < 0 || e.dim > 3 || e.tag <= 0)
+      return fmt::format("invalid entity (dim {}, tag {})", e.dim, e.tag);
+    for (std::size_t j = 0; j < i; ++j)
+      if (m.entities[j].dim == e.dim && m.entities[j].tag == e.tag)
+        return fmt::format("entity (dim {}, tag {}) listed twice", e.dim, e.tag);
+    for (std::uint32_t n : e.nodes) {
+      if (n >= m.xyz.size()) return fmt::format("entity ({}, {}) owns node {} out of range", e.dim, e.tag, n);
+      if (owner[n] != kUnowned)
+        return fmt::format("node {} is owned by two entities ({}, {}) and ({}, {})", n,
+                           m.entities[owner[n]].dim, m.entities[owner[n]].tag, e.dim, e.tag);
+      owner[n] = static_cast<std::uint32_t>(i);
+    }
+    if (e.connectivity.size() % nodes_per_element(e.type) != 0)
+      return fmt::format("entity ({}, {}) has a truncated element", e.dim, e.tag);
+  }
+  for (const EntityMesh& e : m.entities)
+    for (std::uint32_t n : e.connectivity) {
+      if (n >= m.xyz.size()) return fmt::format("element of entity ({}, {}) uses node {} out of range", e.dim, e.tag, n);
+      if (owner[n] == kUnowned) return fmt::format("node {} is used by an element but owned by no entity", n);
+    }
+  return {};
+}
+
+std::string msh_to_string(const MeshModel& mesh, const MshOptions& opt) {
+  Out o(nullptr);
+  write_all(o, mesh, opt);
+  return o.take();
+}
+
+bool save_msh(const MeshModel& mesh, const MshOptions& opt, const std::string& path, std::string* error) {
+  if (std::string why = validate_mesh_model(mesh); !why.empty()) {
+    *error = "cannot write '" + path + "': invalid mesh: " + why;
+    return false;
+  }
+  AtomicFile file;
+  if (!file.open(path)) {
+    *error = file.error();
+    return false;
+  }
+  Out o(&file);
+  write_all(o, mesh, opt);
+  if (!o.finish() || !file.commit()) {
+    *error = file.error();
+    return false;
+  }
+  return true;
+}
+
+}  // namespace sm::io

@@ -1,0 +1,30 @@
+// Gmsh MSH writer: versions 2.2 and 4.1, ASCII and binary, with physical
+// groups and names, following the layout Gmsh 4.8.4 itself writes (see
+// ../shared/gmsh-reference.md §7) so that every file loads in Gmsh.
+#pragma once
+
+#include <string>
+
+#include "io/mesh_model.h"
+
+namespace sm::io {
+
+struct MshOptions {
+  int version = 41;              // 22 or 41 (Mesh.MshFileVersion 2.2 / 4.1)
+  bool binary = false;           // Mesh.Binary
+  bool save_all = false;         // Mesh.SaveAll: also entities outside physical groups
+  bool save_parametric = false;  // Mesh.SaveParametric (4.1 only): curve t, surface u v
+};
+
+/// Checks the model (every used node owned by exactly one entity, element
+/// node indices in range). Returns an empty string when valid.
+std::string validate_mesh_model(const MeshModel& mesh);
+
+/// Serialises to a string (tests, small meshes).
+std::string msh_to_string(const MeshModel& mesh, const MshOptions& opt);
+
+/// Writes the file atomically. On failure returns false and sets *error;
+/// the target path is then untouched.
+bool save_msh(const MeshModel& mesh, const MshOptions& opt, const std::string& path, std::string* error);
+
+}  // namespace sm::io

@@ -1,0 +1,245 @@
+// The MSH writer against files written by Gmsh 4.8.4 itself (tests/data/io):
+// the same mesh must give the same bytes, in both versions, ASCII and binary.
+#include <doctest/doctest.h>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "io/msh_writer.h"
+
+using namespace sm;
+using namespace sm::io;
+
+namespace {
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Rebuilds Gmsh's unit-square mesh from its MSH 4.1 ASCII file (entities,
+// node blocks, element blocks), adding one point element per model point as
+// Gmsh's mesh has them.
+MeshModel load_square() {
+  std::istringstream in(read_file(SM_TEST_DATA "/io/sq41.msh"));
+  std::string line;
+  MeshModel m;
+  while (std::getline(in, line) && line != "$Entities") {}
+  int np, nc, ns, nv;
+  in >> np >> nc >> ns >> nv;
+  std::map<std::pair<int, int>, std::size_t> index;
+  for (int i = 0; i < np + nc + ns; ++i) {
+    EntityMesh e;
+    e.dim = i < np ? 0 : i < np + nc ? 1 : 2;
+    in >> e.tag;
+    double skip;
+    for (int k = 0; k < (e.dim == 0 ? 3 : 6); ++k) in >> skip;
+    int nphys;
+    in >> nphys;
+    e.physical_tags.resize(nphys);
+    for (int& t : e.physical_tags) in >> t;
+    if (e.dim > 0) {
+      int nb;
+      in >> nb;
+      e.boundary.resize(nb);
+      for (int& t : e.boundary) in >> t;
+    }
+    e.type = e.dim == 0 ? ElementType::Point1 : e.dim == 1 ? ElementType::Line2 : ElementType::Triangle3;
+    index[{e.dim, e.tag}] = m.entities.size();
+    m.entities.push_back(e);
+  }
+  while (std::getline(in, line) && line != "$Nodes") {}
+  std::size_t nblocks, nnodes, lo, hi;
+  in >> nblocks >> nnodes >> lo >> hi;
+  m.xyz.resize(nnodes);
+  for (std::size_t b = 0; b < nblocks; ++b) {
+    int dim, tag, param;
+    std::size_t n;
+    in >> dim >> tag >> param >> n;
+    EntityMesh& e = m.entities[index[{dim, tag}]];
+    std::vector<std::size_t> tags(n);
+    for (auto& t : tags) in >> t;
+    for (std::size_t t : tags) {
+      in >> m.xyz[t - 1].x >> m.xyz[t - 1].y >> m.xyz[t - 1].z;
+      e.nodes.push_back(static_cast<std::uint32_t>(t - 1));
+    }
+  }
+  while (std::getline(in, line) && line != "$Elements") {}
+  in >> nblocks >> nnodes >> lo >> hi;
+  for (std::size_t b = 0; b < nblocks; ++b) {
+    int dim, tag, type;
+    std::size_t n;
+    in >> dim >> tag >> type >> n;
+    EntityMesh& e = m.entities[index[{dim, tag}]];
+    const int npe = nodes_per_element(static_cast<ElementType>(type));
+    for (std::size_t k = 0; k < n; ++k) {
+      std::size_t elm, v;
+      in >> elm;
+      for (int j = 0; j < npe; ++j) {
+        in >> v;
+        e.connectivity.push_back(static_cast<std::uint32_t>(v - 1));
+      }
+    }
+  }
+  for (EntityMesh& e : m.entities)
+    if (e.dim == 0) e.connectivity = e.nodes;
+  m.physicals = {{1, 1, "bnd"}, {2, 7, "dom"}};
+  // The ASCII file keeps 16 significant digits; take the exact doubles from
+  // Gmsh's binary MSH 2.2 file (records: int tag, 3 doubles), so that the
+  // binary outputs can be compared bit for bit too.
+  const std::string bin = read_file(SM_TEST_DATA "/io/sq22b.msh");
+  std::size_t at = bin.find("$Nodes\n12\n") + 10;
+  for (std::size_t k = 0; k < m.xyz.size(); ++k, at += 4 + 24) {
+    int tag;
+    std::memcpy(&tag, &bin[at], 4);
+    std::memcpy(&m.xyz[tag - 1], &bin[at + 4], 24);
+  }
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("msh: the square's mesh is valid") {
+  const MeshModel m = load_square();
+  CHECK(validate_mesh_model(m).empty());
+  CHECK(m.xyz.size() == 12);
+  CHECK(m.element_count() == 4 + 8 + 14);
+}
+
+TEST_CASE("msh 4.1 ASCII: byte-identical to Gmsh 4.8.4") {
+  CHECK(msh_to_string(load_square(), {41, false}) == read_file(SM_TEST_DATA "/io/sq41.msh"));
+}
+
+TEST_CASE("msh 4.1 binary: byte-identical to Gmsh 4.8.4") {
+  CHECK(msh_to_string(load_square(), {41, true}) == read_file(SM_TEST_DATA "/io/sq41b.msh"));
+}
+
+TEST_CASE("msh 2.2 ASCII and binary: byte-identical to Gmsh 4.8.4") {
+  CHECK(msh_to_string(load_square(), {22, false}) == read_file(SM_TEST_DATA "/io/sq22.msh"));
+  CHECK(msh_to_string(load_square(), {22, true}) == read_file(SM_TEST_DATA "/io/sq22b.msh"));
+}
+
+TEST_CASE("msh 2.2 SaveAll: every entity, physical tags written as 0") {
+  CHECK(msh_to_string(load_square(), {22, false, true}) == read_file(SM_TEST_DATA "/io/sq22all.msh"));
+}
+
+TEST_CASE("msh: invalid models are rejected before anything is written") {
+  MeshModel m = load_square();
+  m.entities[0].nodes.push_back(m.entities[5].nodes[0]);  // a node owned twice
+  CHECK(validate_mesh_model(m).find("owned by two entities") != std::string::npos);
+  MeshModel bad = load_square();
+  for (int k = 0; k < 3; ++k) bad.entities.back().connectivity.push_back(999);
+  CHECK(validate_mesh_model(bad).find("out of range") != std::string::npos);
+  std::string error;
+  const std::string path = "/tmp/sm_io_test_invalid.msh";
+  ::unlink(path.c_str());
+  CHECK_FALSE(save_msh(bad, {}, path, &error));
+  CHECK(error.find("invalid mesh") != std::string::npos);
+  CHECK(::access(path.c_str(), F_OK) != 0);
+}
+
+TEST_CASE("msh: atomic save replaces the file, a failed save leaves it intact") {
+  const MeshModel m = load_square();
+  const std::string dir = "/tmp/sm_io_test_dir";
+  ::mkdir(dir.c_str(), 0755);
+  const std::string path = dir + "/sq.msh";
+  std::string error;
+  REQUIRE(save_msh(m, {}, path, &error));
+  CHECK(read_file(path) == read_file(SM_TEST_DATA "/io/sq41.msh"));
+  // A missing directory: a clear error naming the file, nothing created.
+  CHECK_FALSE(save_msh(m, {}, dir + "/no/such/dir/sq.msh", &error));
+  CHECK(error.find("no/such/dir/sq.msh") != std::string::npos);
+  if (::geteuid() != 0) {  // root ignores directory permissions
+    ::chmod(dir.c_str(), 0555);
+    CHECK_FALSE(save_msh(m, {22, false}, path, &error));
+    ::chmod(dir.c_str(), 0755);
+  }
+  CHECK(read_file(path) == read_file(SM_TEST_DATA "/io/sq41.msh"));
+}
+
+namespace {
+
+// A structured n x n triangulation of the unit square classified on 4 points,
+// 4 curves and 1 surface, with a physical curve and surface.
+MeshModel grid_square(int n) {
+  MeshModel m;
+  auto id = [n](int i, int j) { return static_cast<std::uint32_t>(j * (n + 1) + i); };
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) m.xyz.push_back({double(i) / n, double(j) / n, 0});
+  const int corner[4][2] = {{0, 0}, {n, 0}, {n, n}, {0, n}};
+  for (int c = 0; c < 4; ++c) {
+    EntityMesh p;
+    p.dim = 0, p.tag = c + 1, p.type = ElementType::Point1;
+    p.nodes = {id(corner[c][0], corner[c][1])};
+    p.connectivity = p.nodes;
+    m.entities.push_back(p);
+  }
+  for (int c = 0; c < 4; ++c) {
+    EntityMesh e;
+    e.dim = 1, e.tag = c + 1, e.type = ElementType::Line2, e.physical_tags = {5};
+    e.boundary = {c + 1, -((c + 1) % 4 + 1)};
+    const int di = corner[(c + 1) % 4][0] - corner[c][0], dj = corner[(c + 1) % 4][1] - corner[c][1];
+    for (int k = 0; k <= n; ++k) {
+      const std::uint32_t v = id(corner[c][0] + di / n * k, corner[c][1] + dj / n * k);
+      if (k > 0 && k < n) e.nodes.push_back(v), e.params.push_back(double(k) / n);
+      if (k > 0) {
+        e.connectivity.push_back(id(corner[c][0] + di / n * (k - 1), corner[c][1] + dj / n * (k - 1)));
+        e.connectivity.push_back(v);
+      }
+    }
+    m.entities.push_back(e);
+  }
+  EntityMesh s;
+  s.dim = 2, s.tag = 1, s.type = ElementType::Triangle3, s.physical_tags = {7}, s.boundary = {1, 2, 3, 4};
+  for (int j = 1; j < n; ++j)
+    for (int i = 1; i < n; ++i) s.nodes.push_back(id(i, j)), s.params.push_back(double(i) / n),
+                                s.params.push_back(double(j) / n);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      for (std::uint32_t v : {id(i, j), id(i + 1, j), id(i + 1, j + 1)}) s.connectivity.push_back(v);
+      for (std::uint32_t v : {id(i, j), id(i + 1, j + 1), id(i, j + 1)}) s.connectivity.push_back(v);
+    }
+  m.entities.push_back(s);
+  m.physicals = {{1, 5, "coast"}, {2, 7, "ocean"}};
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("msh: every variant loads in Gmsh 4.8.4 with the same counts") {
+  if (std::system("/usr/bin/python3 -c 'import gmsh' >/dev/null 2>&1") != 0) {
+    MESSAGE("python3-gmsh not installed: skipped");
+    return;
+  }
+  const MeshModel m = grid_square(40);
+  REQUIRE(validate_mesh_model(m).empty());
+  const std::string script = "/tmp/sm_io_load.py";
+  std::ofstream(script) << "import sys, gmsh\n"
+                           "gmsh.initialize(['x', '-v', '0'])\n"
+                           "gmsh.open(sys.argv[1])\n"
+                           "tags, _, _ = gmsh.model.mesh.getNodes()\n"
+                           "types, etags, _ = gmsh.model.mesh.getElements(2)\n"
+                           "names = [gmsh.model.getPhysicalName(d, t) for d, t in gmsh.model.getPhysicalGroups()]\n"
+                           "print(len(tags), sum(len(e) for e in etags), ','.join(names))\n";
+  for (int version : {22, 41})
+    for (bool binary : {false, true})
+      for (bool parametric : {false, true}) {
+        if (version == 22 && parametric) continue;
+        const std::string path = fmt::format("/tmp/sm_io_grid_{}_{}_{}.msh", version, binary, parametric);
+        std::string error;
+        REQUIRE(save_msh(m, {version, binary, false, parametric}, path, &error));
+        const std::string out = "/tmp/sm_io_load.txt";
+        REQUIRE(std::system(("/usr/bin/python3 " + script + " " + path + " > " + out).c_str()) == 0);
+        CAPTURE(path);
+        CHECK(read_file(out) == "1681 3200 coast,ocean\n");
+      }
+}
