@@ -1,0 +1,42 @@
+// Typed errors of the field module: what went wrong, on which field id,
+// option, file or expression column, so the interpreter can locate it.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace sm::field {
+
+enum class FieldErrc {
+  UnknownKind,      // Field[n] = NoSuchKind;
+  UnknownOption,    // Field[n].NoSuchOption = ...;
+  WrongOptionType,  // a number given to a list option, ...
+  DuplicateId,      // Field[n] defined twice
+  MissingField,     // a reference to an undefined field id
+  Cycle,            // fields referencing each other in a loop
+  BadValue,         // out-of-range or non-finite option value
+  FileError,        // missing/unreadable/ill-formed data file
+  ParseError,       // MathEval expression syntax
+};
+
+const char* to_string(FieldErrc code);
+
+class FieldError : public std::runtime_error {
+ public:
+  FieldError(FieldErrc code, std::string message) : std::runtime_error(message), code_(code) {}
+
+  FieldErrc code() const { return code_; }
+
+  int field_id = -1;          ///< the field being defined/built, -1 if none
+  std::string option;         ///< the option involved, if any
+  std::string suggestion;     ///< closest known name, for "did you mean"
+  std::vector<int> ids;       ///< MissingField: the missing id; Cycle: the loop, in order
+  std::string file;           ///< FileError: the path
+  int column = -1;            ///< ParseError: 1-based column in the expression
+
+ private:
+  FieldErrc code_;
+};
+
+}  // namespace sm::field

@@ -1,0 +1,46 @@
+// Nearest-neighbour queries on 3D point sets: an exact k-d tree built by
+// FLANN (the shore-proximity function f3 of paper section 3.1 uses ANN).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "base/vec.h"
+
+namespace sm::field {
+
+struct KnnOptions {
+  int leaf_size = 10;  ///< points per leaf of the single k-d tree
+  /// Leaves visited per query; -1 = unlimited, i.e. the exact nearest point.
+  int checks = -1;
+};
+
+class KdTree {
+ public:
+  explicit KdTree(std::vector<Vec3> points, KnnOptions opts = {});
+  ~KdTree();
+  KdTree(const KdTree&) = delete;
+  KdTree& operator=(const KdTree&) = delete;
+
+  std::size_t size() const { return points_.size(); }
+  const std::vector<Vec3>& points() const { return points_; }
+
+  /// Euclidean (chord) distance from each query to its nearest point, and
+  /// optionally that point's index. Thread-safe; an empty tree gives 1e22.
+  void nearest(std::span<const Vec3> queries, std::span<double> dist,
+               std::span<std::uint32_t> index = {}) const;
+
+ private:
+  struct Impl;
+  std::vector<Vec3> points_;  // FLANN indexes this memory in place
+  KnnOptions opts_;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Brute-force oracle for tests.
+void nearest_brute_force(std::span<const Vec3> points, std::span<const Vec3> queries,
+                         std::span<double> dist, std::span<std::uint32_t> index = {});
+
+}  // namespace sm::field

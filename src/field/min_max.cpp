@@ -1,0 +1,79 @@
+// Min and Max fields (paper section 3.1: the final size is the minimum of the
+// criteria sizes) and the argmin report of Min.
+#include "field/min_max.h"
+
+#include <algorithm>
+#include <vector>
+
+#include "field/kinds.h"
+
+namespace sm::field {
+namespace {
+
+class ExtremumField final : public CompositeField {
+ public:
+  ExtremumField(std::vector<std::pair<int, FieldPtr>> in, bool is_min)
+      : in_(std::move(in)), is_min_(is_min) {}
+
+  bool is_min() const { return is_min_; }
+
+  void run_argmin(const EntityRef* on, std::span<const Vec3> pts, std::span<double> h,
+                  std::span<int> which) const {
+    std::fill(h.begin(), h.end(), is_min_ ? kMaxLc : -kMaxLc);
+    if (!which.empty()) std::fill(which.begin(), which.end(), -1);
+    std::vector<double> tmp(pts.size());
+    for (const auto& [id, f] : in_) {
+      eval_input(*f, on, pts, tmp);
+      for (std::size_t i = 0; i < pts.size(); ++i) {
+        const bool better = is_min_ ? tmp[i] < h[i] : tmp[i] > h[i];
+        if (better || (!which.empty() && which[i] < 0 && tmp[i] == h[i])) {
+          h[i] = tmp[i];
+          if (!which.empty()) which[i] = id;
+        }
+      }
+    }
+  }
+
+ protected:
+  void run(const EntityRef* on, std::span<const Vec3> pts, std::span<double> h) const override {
+    run_argmin(on, pts, h, {});
+  }
+
+ private:
+  std::vector<std::pair<int, FieldPtr>> in_;
+  bool is_min_;
+};
+
+FieldPtr make_min(const BuildInputs& in) {
+  return std::make_shared<ExtremumField>(in.inputs("FieldsList"), true);
+}
+
+FieldPtr make_max(const BuildInputs& in) {
+  return std::make_shared<ExtremumField>(in.inputs("FieldsList"), false);
+}
+
+}  // namespace
+
+bool eval_argmin(const SizeField& f, const EntityRef* on, std::span<const Vec3> pts,
+                 std::span<double> h, std::span<int> which) {
+  const auto* m = dynamic_cast<const ExtremumField*>(&f);
+  if (!m || !m->is_min()) return false;
+  m->run_argmin(on, pts, h, which);
+  return true;
+}
+
+KindSpec min_kind() {
+  return {"Min",
+          "Minimum of the listed fields (1e22 when the list is empty); eval_argmin() reports "
+          "which input attains it.",
+          {list_opt("FieldsList", "ids of the fields to combine", {}, OptionRole::FieldRefList)},
+          make_min};
+}
+
+KindSpec max_kind() {
+  return {"Max", "Maximum of the listed fields (-1e22 when the list is empty).",
+          {list_opt("FieldsList", "ids of the fields to combine", {}, OptionRole::FieldRefList)},
+          make_max};
+}
+
+}  // namespace sm::field

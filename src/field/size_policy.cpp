@@ -1,0 +1,69 @@
+// Final size combination of Gmsh 4.8.4 (gmsh-reference 4.4), as a pure
+// function of the options and of what is known at the point.
+#include "field/size_policy.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "field/field.h"
+
+namespace sm::field {
+
+bool set_size_option(SizePolicyOptions& o, std::string_view name, double value) {
+  if (name.substr(0, 5) == "Mesh.") name.remove_prefix(5);
+  std::string_view suffix;
+  if (name.substr(0, 8) == "MeshSize") {
+    suffix = name.substr(8);
+  } else if (name.substr(0, 20) == "CharacteristicLength") {
+    suffix = name.substr(20);
+  } else {
+    return false;
+  }
+  if (suffix == "Factor") o.factor = value;
+  else if (suffix == "Min") o.min = value;
+  else if (suffix == "Max") o.max = value;
+  else if (suffix == "FromPoints") o.from_points = value != 0;
+  else if (suffix == "ExtendFromBoundary") o.extend_from_boundary = static_cast<int>(value);
+  else if (suffix == "FromCurvature") o.from_curvature = static_cast<int>(value);
+  else return false;
+  return true;
+}
+
+SizeResult final_size(const SizePolicyOptions& o, const SizeQuery& q) {
+  const double bbox = q.bbox_diag > 0 ? q.bbox_diag : 1;
+  double lc = bbox;
+  if (o.from_points && q.entity_dim == 0) {
+    lc = std::min(lc, q.point_lc ? *q.point_lc : bbox / 10);
+  } else if (o.from_points && q.entity_dim == 1) {
+    if (!q.end_lc0 && !q.end_lc1) {
+      lc = std::min(lc, bbox / 10);
+    } else {
+      // One missing end size interpolates toward MAX_LC (Gmsh's quirk); the
+      // bbox cap above keeps the result finite.
+      const double a = q.end_lc0.value_or(kMaxLc), b = q.end_lc1.value_or(kMaxLc);
+      lc = std::min(lc, a + (b - a) * q.t);
+    }
+  }
+  if (o.from_curvature > 0 && q.curvature && *q.curvature > 0)
+    lc = std::min(lc, 2 * std::numbers::pi / (*q.curvature * o.from_curvature));
+  if (q.background) lc = std::min(lc, *q.background);
+  if (q.entity_size) lc = std::min(lc, *q.entity_size);
+  lc = std::max(lc, o.min);
+  lc = std::min(lc, o.max);
+  SizeResult r;
+  if (!(lc > 0)) {
+    r.nonpositive = true;
+    lc = bbox;
+  }
+  r.size = lc * q.entity_factor * o.factor;
+  return r;
+}
+
+double surface_target(const SizePolicyOptions& o, double final, std::optional<double> boundary_interp) {
+  if (o.extend_from_boundary != 0 && boundary_interp) return std::min(final, *boundary_interp);
+  return final;
+}
+
+}  // namespace sm::field

@@ -1,0 +1,174 @@
+#include "field/field_set.h"
+
+#include <cmath>
+
+#include <doctest/doctest.h>
+
+#include "field/error.h"
+#include "test_util.h"
+
+using namespace sm;
+using namespace sm::field;
+using sm::field::testing::eval1;
+
+TEST_CASE("field set: newf, delete, duplicate ids") {
+  FieldSet fs;
+  CHECK(fs.next_id() == 1);
+  fs.define(3, "Box");
+  CHECK(fs.next_id() == 4);
+  CHECK_THROWS_AS(fs.define(3, "Ball"), FieldError);
+  fs.remove(3);
+  CHECK(!fs.contains(3));
+  fs.define(3, "Ball");
+  CHECK(fs.options(3).kind().name == "Ball");
+  CHECK_THROWS_AS(fs.set(9, "VIn", 1.0), FieldError);
+}
+
+TEST_CASE("field set: a reference to a missing field is a typed error naming it") {
+  FieldSet fs;
+  fs.define(1, "Min");
+  fs.set(1, "FieldsList", std::vector<double>{2, 5});
+  fs.define(2, "Box");
+  try {
+    fs.build(1, {});
+    FAIL("expected an error");
+  } catch (const FieldError& e) {
+    CHECK(e.code() == FieldErrc::MissingField);
+    CHECK(e.field_id == 1);
+    CHECK(e.ids == std::vector<int>{5});
+  }
+  // Threshold's InField defaults to 0, which does not exist.
+  fs.define(3, "Threshold");
+  CHECK_THROWS_AS(fs.build(3, {}), FieldError);
+  // MathEval's F<n> references are checked too.
+  fs.define(4, "MathEval");
+  fs.set(4, "F", std::string("F2 + F8"));
+  try {
+    fs.build(4, {});
+    FAIL("expected an error");
+  } catch (const FieldError& e) {
+    CHECK(e.code() == FieldErrc::MissingField);
+    CHECK(e.ids == std::vector<int>{8});
+  }
+}
+
+TEST_CASE("field set: cycles are typed errors listing the loop") {
+  FieldSet fs;
+  fs.define(1, "Min");
+  fs.set(1, "FieldsList", std::vector<double>{2});
+  fs.define(2, "Threshold");
+  fs.set(2, "InField", 3.0);
+  fs.define(3, "MathEval");
+  fs.set(3, "F", std::string("F1 * 2"));
+  try {
+    fs.build(1, {});
+    FAIL("expected an error");
+  } catch (const FieldError& e) {
+    CHECK(e.code() == FieldErrc::Cycle);
+    CHECK(e.ids == std::vector<int>{1, 2, 3, 1});
+    CHECK(std::string(e.what()).find("Field[1] -> Field[2] -> Field[3] -> Field[1]") != std::string::npos);
+  }
+  FieldSet self;
+  self.define(4, "Min");
+  self.set(4, "FieldsList", std::vector<double>{4});
+  try {
+    self.build(4, {});
+    FAIL("expected an error");
+  } catch (const FieldError& e) {
+    CHECK(e.code() == FieldErrc::Cycle);
+    CHECK(e.ids == std::vector<int>{4, 4});
+  }
+}
+
+TEST_CASE("field set: a shared input is built once and a diamond is not a cycle") {
+  FieldSet fs;
+  fs.define(1, "Ball");
+  fs.set(1, "Radius", 1.0);
+  fs.set(1, "VIn", 2.0);
+  fs.set(1, "VOut", 5.0);
+  fs.define(2, "MathEval");
+  fs.set(2, "F", std::string("F1 + 1"));
+  fs.define(3, "MathEval");
+  fs.set(3, "F", std::string("F1 * 3"));
+  fs.define(4, "Max");
+  fs.set(4, "FieldsList", std::vector<double>{2, 3});
+  BuiltFields b = fs.build(4, {});
+  CHECK(b.ids() == std::vector<int>{1, 2, 3, 4});
+  std::vector<Vec3> p = {{0, 0, 0}, {3, 0, 0}};
+  std::vector<double> h(2);
+  b.get(4)->eval(p, h);
+  CHECK(h[0] == 6);
+  CHECK(h[1] == 15);
+}
+
+// Gmsh tutorial t10's field set on the unit square, against the formulas of
+// gmsh-reference 4.1 written out independently here (exact distances to the
+// point and the segments stand in for Gmsh's 100-sample curves).
+TEST_CASE("field set: Gmsh tutorial t10 field set") {
+  const double lc = .15;
+  const std::vector<Vec3> corners = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.2, 0.5, 0}};
+  BuildContext ctx;
+  ctx.point_position = [&](int tag) -> std::optional<Vec3> {
+    if (tag < 1 || tag > 5) return std::nullopt;
+    return corners[static_cast<std::size_t>(tag - 1)];
+  };
+  // Line(1) = {1,2}, Line(2) = {2,3}: Gmsh's samples at t = i/(N-1), i = 1..N-2.
+  ctx.curve_samples = [&](int tag, int n) -> std::optional<std::vector<Vec3>> {
+    if (tag != 1 && tag != 2) return std::nullopt;
+    const Vec3 a = corners[static_cast<std::size_t>(tag - 1)], b = corners[static_cast<std::size_t>(tag)];
+    std::vector<Vec3> s;
+    for (int i = 1; i <= n - 2; ++i) s.push_back(a + (b - a) * (static_cast<double>(i) / (n - 1)));
+    return s;
+  };
+  FieldSet fs;
+  fs.define(1, "Distance");
+  fs.set(1, "PointsList", std::vector<double>{5});
+  fs.set(1, "CurvesList", std::vector<double>{2});
+  fs.set(1, "NumPointsPerCurve", 100.0);
+  fs.define(2, "Threshold");
+  fs.set(2, "InField", 1.0);
+  fs.set(2, "SizeMin", lc / 30);
+  fs.set(2, "SizeMax", lc);
+  fs.set(2, "DistMin", 0.15);
+  fs.set(2, "DistMax", 0.5);
+  fs.define(3, "MathEval");
+  fs.set(3, "F", std::string("Cos(4*3.14*x) * Sin(4*3.14*y) / 10 + 0.101"));
+  fs.define(4, "Distance");
+  fs.set(4, "CurvesList", std::vector<double>{1});
+  fs.set(4, "NumPointsPerCurve", 100.0);
+  fs.define(5, "MathEval");
+  fs.set(5, "F", std::string("F4^3 + 0.015"));  // Sprintf("F4^3 + %g", lc / 10)
+  fs.define(6, "Box");
+  fs.set(6, "VIn", lc / 15);
+  fs.set(6, "VOut", lc);
+  fs.set(6, "XMin", 0.3);
+  fs.set(6, "XMax", 0.6);
+  fs.set(6, "YMin", 0.3);
+  fs.set(6, "YMax", 0.6);
+  fs.set(6, "Thickness", 0.3);
+  fs.define(7, "Min");
+  fs.set(7, "FieldsList", std::vector<double>{2, 3, 5, 6});
+
+  auto oracle = [&](double x, double y) {
+    const double d1 = std::min(std::hypot(x - 0.2, y - 0.5), std::fabs(1 - x));
+    const double r = std::clamp((d1 - 0.15) / (0.5 - 0.15), 0.0, 1.0);
+    const double f2 = lc / 30 * (1 - r) + lc * r;
+    const double f3 = std::cos(4 * 3.14 * x) * std::sin(4 * 3.14 * y) / 10 + 0.101;
+    const double f5 = std::pow(std::fabs(y), 3) + 0.015;
+    const double dx = std::max({0.3 - x, 0.0, x - 0.6}), dy = std::max({0.3 - y, 0.0, y - 0.6});
+    const double db = std::hypot(dx, dy);
+    const double f6 = db == 0 ? lc / 15 : db <= 0.3 ? lc / 15 + db / 0.3 * (lc - lc / 15) : lc;
+    return std::min({f2, f3, f5, f6});
+  };
+  std::vector<Vec3> pts;
+  for (int i = 1; i < 20; ++i)
+    for (int j = 1; j < 20; ++j) pts.push_back({0.05 * i, 0.05 * j, 0});
+  const std::vector<double> h = sm::field::testing::eval_field(fs, 7, pts, ctx);
+  for (std::size_t k = 0; k < pts.size(); ++k)
+    CHECK_MESSAGE(h[k] == doctest::Approx(oracle(pts[k].x, pts[k].y)).epsilon(2e-3),
+                  "at " << pts[k].x << "," << pts[k].y);
+  // Two spot values by hand: inside the box, the box wins (0.01); at
+  // (0.9, 0.9) the sine term of Field[3] is the smallest.
+  CHECK(eval1(fs, 7, {0.45, 0.45, 0}, ctx) == doctest::Approx(0.01));
+  CHECK(eval1(fs, 7, {0.05, 0.05, 0}, ctx) == doctest::Approx(std::pow(0.05, 3) + 0.015).epsilon(1e-3));
+}

@@ -1,0 +1,67 @@
+#include "field/knn.h"
+
+#include <cmath>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include <doctest/doctest.h>
+
+#include "field/lonlat_grid.h"
+#include "test_util.h"
+
+using namespace sm;
+using namespace sm::field;
+
+TEST_CASE("knn: FLANN k-d tree equals brute force on random points") {
+  std::mt19937 rng(42);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<Vec3> pts(3000), q(500);
+  for (Vec3& p : pts) p = {u(rng), u(rng), u(rng)};
+  for (Vec3& p : q) p = {1.5 * u(rng), 1.5 * u(rng), 1.5 * u(rng)};
+  // Duplicates and a query exactly on a point.
+  pts[10] = pts[11];
+  q[0] = pts[5];
+  KdTree tree(pts);
+  std::vector<double> d(q.size()), bd(q.size());
+  std::vector<std::uint32_t> idx(q.size()), bidx(q.size());
+  tree.nearest(q, d, idx);
+  nearest_brute_force(pts, q, bd, bidx);
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    CHECK(d[i] == doctest::Approx(bd[i]).epsilon(1e-12));
+    CHECK(norm(pts[idx[i]] - q[i]) == doctest::Approx(bd[i]).epsilon(1e-12));
+  }
+  CHECK(d[0] == 0);
+}
+
+TEST_CASE("knn: real coastline samples on the unit sphere (world_c) against brute force") {
+  std::ifstream in(sm::field::testing::shared_data("gshhg/world_c.txt"));
+  REQUIRE(in);
+  std::vector<Vec3> pts;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#' || line[0] == '>') continue;
+    std::istringstream ls(line);
+    double lon, lat;
+    ls >> lon >> lat;
+    pts.push_back(point_of(lon, lat, 1));
+  }
+  CHECK(pts.size() == 7899);
+  KdTree tree(pts);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> lon(-180, 180), z(-1, 1);
+  std::vector<Vec3> q(400);
+  for (Vec3& p : q) p = point_of(lon(rng), std::asin(z(rng)) * 180 / 3.141592653589793, 1);
+  std::vector<double> d(q.size()), bd(q.size());
+  tree.nearest(q, d);
+  nearest_brute_force(pts, q, bd);
+  for (std::size_t i = 0; i < q.size(); ++i) CHECK(d[i] == doctest::Approx(bd[i]).epsilon(1e-12));
+}
+
+TEST_CASE("knn: empty tree gives no constraint") {
+  KdTree tree({});
+  std::vector<Vec3> q = {{0, 0, 0}};
+  std::vector<double> d(1);
+  tree.nearest(q, d);
+  CHECK(d[0] == 1e22);
+}
