@@ -50,6 +50,15 @@ void Symbols::clear() {
   strs_.clear();
 }
 
+std::string join_lines(const std::vector<std::string>& strs) {
+  std::string s;
+  for (std::size_t i = 0; i < strs.size(); ++i) {
+    if (i) s += '\n';
+    s += strs[i];
+  }
+  return s;
+}
+
 std::string suffixed_name(std::string_view base, double index) {
   return fmt::format("{}_{}", base, static_cast<long long>(std::trunc(index)));
 }

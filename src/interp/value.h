@@ -77,6 +77,10 @@ class Symbols {
   std::map<std::string, std::vector<std::string>, std::less<>> strs_;
 };
 
+/// A string list as one string, its items joined with newlines (what a string
+/// list becomes where one string is expected: `s = Str("a", "b");`).
+std::string join_lines(const std::vector<std::string>& strs);
+
 /// Gmsh's name suffix: `x~{3}` is the identifier "x_3" (the index is truncated
 /// toward zero like every index).
 std::string suffixed_name(std::string_view base, double index);

@@ -1,0 +1,157 @@
+// Command-line parsing (see args.h). Numbers must be complete and finite:
+// `-clmax 1e3x` is a usage error, not 1000.
+#include "cli/args.h"
+
+#include <cmath>
+#include <cstdlib>
+
+#include <fmt/format.h>
+
+namespace sm::cli {
+
+namespace {
+
+bool parse_number(const std::string& s, double& out) {
+  if (s.empty()) return false;
+  char* end = nullptr;
+  out = std::strtod(s.c_str(), &end);
+  return end && *end == '\0' && std::isfinite(out);
+}
+
+// -algo names of Gmsh for 2D, mapped to Mesh.Algorithm.
+bool algo_number(const std::string& name, double& out) {
+  static const std::pair<const char*, double> kAlgos[] = {
+      {"meshadapt", 1}, {"auto", 2}, {"initial2d", 3}, {"del2d", 5},
+      {"front2d", 6},   {"bamg", 7}, {"delquad", 8},   {"pack", 9}};
+  for (const auto& [n, v] : kAlgos)
+    if (name == n) {
+      out = v;
+      return true;
+    }
+  return false;
+}
+
+}  // namespace
+
+std::string usage_text() {
+  return "usage: stereomesh [options] FILE.geo...\n"
+         "       stereomesh --test DIR|FILE...\n"
+         "\n"
+         "Runs Gmsh 4.8.4-compatible .geo scripts (Printf output on stdout,\n"
+         "diagnostics on stderr).\n"
+         "\n"
+         "  -0                  evaluate the scripts only, write nothing\n"
+         "  -1, -2              mesh in 1D/2D (not available yet: exits with an error)\n"
+         "  -o FILE             output mesh file\n"
+         "  -format NAME        output format: msh, msh2, msh22, msh4, msh41, vtk\n"
+         "  -bin                binary output (Mesh.Binary = 1)\n"
+         "  -setnumber NAME V   define variable NAME (wins over DefineConstant) or set option NAME\n"
+         "  -setstring NAME S   the same with a string\n"
+         "  -clmin X, -clmax X  Mesh.MeshSizeMin / Mesh.MeshSizeMax\n"
+         "  -clscale X          Mesh.MeshSizeFactor\n"
+         "  -algo NAME          meshadapt, auto, initial2d, del2d, front2d, bamg, delquad, pack\n"
+         "  -nt N               General.NumThreads\n"
+         "  -v N                General.Verbosity (0 silent ... 5 default, <2 hides warnings)\n"
+         "  -I DIR              add DIR to the Include search path\n"
+         "  --test PATH...      run the script tests under PATH (see docs/interpreter.md)\n"
+         "  --help, --version\n"
+         "\n"
+         "Include search order: the including file's directory, -I directories,\n"
+         "$STEREOMESH_PATH (':'-separated), the installed stdlib/.\n"
+         "Exit status: 0 success, 1 script error, 2 usage error, 3 internal error\n"
+         "(Exit n; in a script exits with n).\n";
+}
+
+ParseOutcome parse_args(const std::vector<std::string>& argv) {
+  ParseOutcome r;
+  CliArgs& a = r.args;
+  auto fail = [&](std::string msg) {
+    r.ok = false;
+    r.error = std::move(msg);
+    return r;
+  };
+  for (std::size_t i = 0; i < argv.size(); ++i) {
+    const std::string& arg = argv[i];
+    auto value = [&](const char* what, std::string& out) {
+      if (i + 1 >= argv.size()) return false;
+      out = argv[++i];
+      (void)what;
+      return true;
+    };
+    auto number_opt = [&](const char* option_name) -> bool {
+      std::string v;
+      double d = 0;
+      if (!value(option_name, v) || !parse_number(v, d)) return false;
+      a.option_numbers.emplace_back(option_name, d);
+      return true;
+    };
+    if (a.test && !arg.empty() && arg[0] != '-') {
+      a.files.push_back(arg);
+    } else if (arg == "--help" || arg == "-help" || arg == "-h") {
+      a.help = true;
+    } else if (arg == "--version" || arg == "-version") {
+      a.version = true;
+    } else if (arg == "--test") {
+      a.test = true;
+    } else if (arg == "-0" || arg == "-1" || arg == "-2") {
+      a.mesh_dim = arg[1] - '0';
+    } else if (arg == "-o") {
+      if (!value("-o", a.output)) return fail("'-o' needs a file name");
+    } else if (arg == "-format") {
+      if (!value("-format", a.format)) return fail("'-format' needs a format name");
+      static const char* kFormats[] = {"msh", "msh2", "msh22", "msh4", "msh41", "vtk"};
+      bool known = false;
+      for (const char* f : kFormats) known = known || a.format == f;
+      if (!known) return fail(fmt::format("unknown format '{}' (msh, msh2, msh22, msh4, msh41, vtk)", a.format));
+      const bool v2 = a.format == "msh2" || a.format == "msh22";
+      a.option_numbers.emplace_back("Mesh.Format", a.format == "vtk" ? 16 : 1);
+      if (a.format != "vtk" && a.format != "msh") a.option_numbers.emplace_back("Mesh.MshFileVersion", v2 ? 2.2 : 4.1);
+    } else if (arg == "-bin") {
+      a.option_numbers.emplace_back("Mesh.Binary", 1);
+    } else if (arg == "-setnumber") {
+      if (i + 2 >= argv.size()) return fail("'-setnumber' needs a name and a value");
+      double d = 0;
+      if (!parse_number(argv[i + 2], d))
+        return fail(fmt::format("'-setnumber {}': '{}' is not a number", argv[i + 1], argv[i + 2]));
+      a.set_numbers.emplace_back(argv[i + 1], d);
+      i += 2;
+    } else if (arg == "-setstring") {
+      if (i + 2 >= argv.size()) return fail("'-setstring' needs a name and a value");
+      a.set_strings.emplace_back(argv[i + 1], argv[i + 2]);
+      i += 2;
+    } else if (arg == "-clmin") {
+      if (!number_opt("Mesh.MeshSizeMin")) return fail("'-clmin' needs a number");
+    } else if (arg == "-clmax") {
+      if (!number_opt("Mesh.MeshSizeMax")) return fail("'-clmax' needs a number");
+    } else if (arg == "-clscale") {
+      if (!number_opt("Mesh.MeshSizeFactor")) return fail("'-clscale' needs a number");
+    } else if (arg == "-nt") {
+      if (!number_opt("General.NumThreads")) return fail("'-nt' needs a number");
+    } else if (arg == "-v") {
+      if (!number_opt("General.Verbosity")) return fail("'-v' needs a number");
+    } else if (arg == "-algo") {
+      std::string name;
+      double d = 0;
+      if (!value("-algo", name)) return fail("'-algo' needs an algorithm name");
+      if (!algo_number(name, d))
+        return fail(fmt::format("unknown algorithm '{}' (meshadapt, auto, initial2d, del2d, front2d, bamg, "
+                                "delquad, pack)", name));
+      a.option_numbers.emplace_back("Mesh.Algorithm", d);
+    } else if (arg == "-I") {
+      std::string dir;
+      if (!value("-I", dir)) return fail("'-I' needs a directory");
+      a.include_dirs.push_back(dir);
+    } else if (arg.size() > 2 && arg.rfind("-I", 0) == 0) {
+      a.include_dirs.push_back(arg.substr(2));
+    } else if (!arg.empty() && arg[0] == '-') {
+      return fail(fmt::format("unknown option '{}'", arg));
+    } else {
+      a.files.push_back(arg);
+    }
+  }
+  if (!a.help && !a.version && a.files.empty())
+    return fail(a.test ? "'--test' needs a directory or file" : "no input file");
+  return r;
+}
+
+}  // namespace sm::cli

@@ -1,0 +1,122 @@
+// stereomesh entry point: runs scripts or the script tests and maps the outcome
+// to the exit status (0 ok, 1 script error, 2 usage error, 3 internal error).
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <iostream>
+#include <new>
+
+#include <fmt/format.h>
+
+#include "cli/args.h"
+#include "interp/interpreter.h"
+#include "interp/script_test.h"
+
+namespace {
+
+constexpr int kExitOk = 0;
+constexpr int kExitScriptError = 1;
+constexpr int kExitUsage = 2;
+constexpr int kExitInternal = 3;
+
+std::vector<std::string> split_path_list(const char* s) {
+  std::vector<std::string> out;
+  if (!s) return out;
+  std::string cur;
+  for (const char* p = s;; ++p) {
+    if (*p == ':' || *p == '\0') {
+      if (!cur.empty()) out.push_back(cur);
+      cur.clear();
+      if (*p == '\0') break;
+    } else {
+      cur += *p;
+    }
+  }
+  return out;
+}
+
+void print_diagnostics(const sm::lang::Diagnostics& diags, bool warnings) {
+  std::fflush(stdout);
+  for (const auto& d : diags.all()) {
+    if (d.severity == sm::lang::Severity::Warning && !warnings) continue;
+    std::fputs(diags.render(d).c_str(), stderr);
+  }
+}
+
+int run(const std::vector<std::string>& argv) {
+  const sm::cli::ParseOutcome parsed = sm::cli::parse_args(argv);
+  if (!parsed.ok) {
+    std::fprintf(stderr, "stereomesh: %s\n%s", parsed.error.c_str(), "try 'stereomesh --help'\n");
+    return kExitUsage;
+  }
+  const sm::cli::CliArgs& a = parsed.args;
+  if (a.help) {
+    std::fputs(sm::cli::usage_text().c_str(), stdout);
+    return kExitOk;
+  }
+  if (a.version) {
+    std::printf("stereomesh %s (Gmsh 4.8.4-compatible .geo language)\n", STEREOMESH_VERSION);
+    return kExitOk;
+  }
+  sm::interp::RunSettings settings;
+  settings.include_dirs = a.include_dirs;
+  settings.search_path = split_path_list(std::getenv("STEREOMESH_PATH"));
+  if (a.test) {
+    const int failed = sm::interp::run_script_tests(a.files, settings, std::cout);
+    std::cout.flush();
+    if (failed < 0) return kExitUsage;
+    return failed == 0 ? kExitOk : kExitScriptError;
+  }
+
+  sm::lang::SourceManager sources;
+  sm::lang::Diagnostics diags(sources);
+  sm::interp::Interpreter interp(sources, diags, std::cout, settings);
+  for (const auto& [name, v] : a.option_numbers) {
+    if (auto err = interp.options().set_number(name, v); !err.empty()) {
+      std::fprintf(stderr, "stereomesh: %s\n", err.c_str());
+      return kExitUsage;
+    }
+  }
+  for (const auto& [name, v] : a.set_numbers) {
+    if (auto err = interp.preset_number(name, v); !err.empty()) {
+      std::fprintf(stderr, "stereomesh: -setnumber: %s\n", err.c_str());
+      return kExitUsage;
+    }
+  }
+  for (const auto& [name, v] : a.set_strings) {
+    if (auto err = interp.preset_string(name, v); !err.empty()) {
+      std::fprintf(stderr, "stereomesh: -setstring: %s\n", err.c_str());
+      return kExitUsage;
+    }
+  }
+  bool errors = false;
+  for (const std::string& f : a.files) {
+    if (interp.run_file(f) == sm::interp::RunStatus::Errors) errors = true;
+    if (errors || interp.stopped()) break;
+  }
+  std::cout.flush();
+  const bool warnings = interp.options().number("General.Verbosity") >= 2;
+  print_diagnostics(diags, warnings);
+  if (interp.exit_request() >= 0) return interp.exit_request();
+  if (errors) return kExitScriptError;
+  if (a.mesh_dim >= 1) {
+    // Meshing arrives with the mesh issue; say so instead of writing nothing.
+    std::fprintf(stderr, "stereomesh: error: meshing ('-%d') is not available yet; use -0 to evaluate only\n",
+                 a.mesh_dim);
+    return kExitScriptError;
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(std::vector<std::string>(argv + 1, argv + argc));
+  } catch (const std::bad_alloc&) {
+    std::fputs("stereomesh: internal error: out of memory\n", stderr);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "stereomesh: internal error: %s\n", e.what());
+  }
+  return kExitInternal;
+}

@@ -1,0 +1,67 @@
+// Built-in functions callable from expressions (`Sqrt(x)`, `StrCat(a,b)`,
+// `LinSpace[0,1,5]`...), one family per file; the evaluator looks them up by
+// name and calls them with evaluated arguments.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "interp/options.h"
+#include "interp/value.h"
+
+namespace sm::interp {
+
+/// What a builtin may touch: the run's variables, options, ONELAB-style
+/// parameters, the directory of the script being run, and a seeded generator.
+struct BuiltinEnv {
+  Symbols& symbols;
+  Options& options;
+  std::map<std::string, double, std::less<>>& onelab_numbers;
+  std::map<std::string, std::string, std::less<>>& onelab_strings;
+  std::string script_path;   ///< file of the statement being run ("" for none)
+  std::uint64_t& rand_state;
+};
+
+/// A builtin's failure: a message about the call, or about argument `arg`.
+struct BuiltinError {
+  std::string message;
+  int arg = -1;
+};
+
+using BuiltinFn = Value (*)(BuiltinEnv& env, const std::vector<Value>& args);
+
+struct BuiltinInfo {
+  std::string_view name;
+  int min_args;
+  int max_args;   ///< -1: any number
+  BuiltinFn fn;
+  std::string_view help;
+};
+
+/// The builtin with this name (synonyms included), or nullptr.
+const BuiltinInfo* find_builtin(std::string_view name);
+/// Every builtin, sorted by name (for docs and suggestions).
+const std::vector<BuiltinInfo>& all_builtins();
+
+/// The string constants `Today`, `CurrentDirectory`... or false when `name` is none.
+bool builtin_string_constant(std::string_view name, const BuiltinEnv& env, std::string& out);
+/// The numeric constants `Pi`, `GMSH_MAJOR_VERSION`, `MPI_Size`, ... or false.
+bool builtin_number_constant(std::string_view name, double& out);
+
+// Argument helpers shared by the family files; they throw BuiltinError.
+double arg_number(const std::vector<Value>& args, int i);
+std::string arg_string(const std::vector<Value>& args, int i);
+/// A numeric argument as a list (a scalar is a one-element list).
+const std::vector<double>& arg_list(const std::vector<Value>& args, int i);
+/// Resolves a script-relative path against the running script's directory.
+std::string resolve_script_path(const BuiltinEnv& env, const std::string& path);
+
+// Family registration, one per file.
+void add_math_builtins(std::vector<BuiltinInfo>& out);
+void add_list_builtins(std::vector<BuiltinInfo>& out);
+void add_string_builtins(std::vector<BuiltinInfo>& out);
+
+}  // namespace sm::interp

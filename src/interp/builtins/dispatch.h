@@ -1,0 +1,30 @@
+// Entry points of the statements and expressions that need the geometry model,
+// fields or the mesher. Each family file (geometry.cpp, fields.cpp,
+// mesh_commands.cpp) owns its part, so later issues replace them file by file.
+#pragma once
+
+#include <string_view>
+
+#include "lang/ast.h"
+
+namespace sm::interp {
+
+class Interpreter;
+
+/// Any statement the core evaluator does not run itself (geometry, physical
+/// groups, mesh constraints, fields, plugins, views).
+void dispatch_model_stmt(Interpreter& in, lang::StmtId s);
+/// Field statements (`Field[1] = Distance;`, options, actions, Background Field).
+void exec_field_stmt(Interpreter& in, lang::StmtId s);
+/// `Mesh 2;`, `Save "f";`, `Merge`, ... (`CommandStmt`s other than Include).
+/// Returns false for an unknown command name.
+bool exec_mesh_command(Interpreter& in, lang::StmtId s, std::string_view command);
+/// Mesh-side statements without a command word: Plugin, View, Color, Coherence Mesh.
+void exec_mesh_stmt(Interpreter& in, lang::StmtId s);
+
+/// newp, newl, newc, newll, news, newsl, newv, newreg, newf.
+double new_tag_constant(Interpreter& in, lang::Constant c);
+/// Entity queries, transforms, Boundary{}, Coastline{}: expressions needing the model.
+[[noreturn]] void eval_model_expr(Interpreter& in, lang::ExprId e);
+
+}  // namespace sm::interp

@@ -1,0 +1,96 @@
+// List builtins of the Gmsh 4.8.4 manual (§4.2.1 expression-list-item):
+// List, Unique, LinSpace, LogSpace, ListFromFile, Find.
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "interp/builtins/builtins.h"
+#include "interp/limits.h"
+
+namespace sm::interp {
+namespace {
+
+std::size_t checked_count(double n, int arg) {
+  if (!(n >= 0) || n > static_cast<double>(kMaxListSize))
+    throw BuiltinError{fmt::format("list size {} is outside [0, {}]", n, kMaxListSize), arg};
+  return static_cast<std::size_t>(n);
+}
+
+Value f_list(BuiltinEnv&, const std::vector<Value>& a) { return Value::list(arg_list(a, 0)); }
+
+// Sorts and removes duplicates.
+Value f_unique(BuiltinEnv&, const std::vector<Value>& a) {
+  std::vector<double> v = arg_list(a, 0);
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+  return Value::list(std::move(v));
+}
+
+// n values from a to b, both included (n = 1 gives {a}).
+std::vector<double> linspace(double a, double b, std::size_t n) {
+  std::vector<double> v(n);
+  for (std::size_t i = 0; i < n; ++i)
+    v[i] = n == 1 ? a : a + (b - a) * static_cast<double>(i) / static_cast<double>(n - 1);
+  return v;
+}
+
+Value f_linspace(BuiltinEnv&, const std::vector<Value>& a) {
+  return Value::list(linspace(arg_number(a, 0), arg_number(a, 1), checked_count(std::trunc(arg_number(a, 2)), 2)));
+}
+
+Value f_logspace(BuiltinEnv&, const std::vector<Value>& a) {
+  std::vector<double> v =
+      linspace(arg_number(a, 0), arg_number(a, 1), checked_count(std::trunc(arg_number(a, 2)), 2));
+  for (double& x : v) x = std::pow(10.0, x);
+  return Value::list(std::move(v));
+}
+
+// Whitespace-separated numbers; anything else is an error naming the token.
+Value f_list_from_file(BuiltinEnv& env, const std::vector<Value>& a) {
+  const std::string path = resolve_script_path(env, arg_string(a, 0));
+  std::ifstream in(path);
+  if (!in) throw BuiltinError{fmt::format("cannot open '{}'", path), 0};
+  std::vector<double> v;
+  std::string tok;
+  while (in >> tok) {
+    char* end = nullptr;
+    const double x = std::strtod(tok.c_str(), &end);
+    if (end == tok.c_str() || *end != '\0')
+      throw BuiltinError{fmt::format("'{}' in '{}' (item {}) is not a number", tok.substr(0, 40), path,
+                                     v.size() + 1), 0};
+    if (v.size() >= kMaxListSize)
+      throw BuiltinError{fmt::format("'{}' holds more than {} numbers", path, kMaxListSize), 0};
+    v.push_back(x);
+  }
+  return Value::list(std::move(v));
+}
+
+// How many items of the first list occur in the second.
+Value f_find(BuiltinEnv&, const std::vector<Value>& a) {
+  const std::vector<double>& what = arg_list(a, 0);
+  std::vector<double> where = arg_list(a, 1);
+  std::sort(where.begin(), where.end());
+  double count = 0;
+  for (double x : what)
+    if (std::binary_search(where.begin(), where.end(), x)) count += 1;
+  return Value::number(count);
+}
+
+}  // namespace
+
+void add_list_builtins(std::vector<BuiltinInfo>& out) {
+  const BuiltinInfo fns[] = {
+      {"List", 1, 1, f_list, "List[l]: a copy of a list"},
+      {"Unique", 1, 1, f_unique, "sorted list without duplicates"},
+      {"LinSpace", 3, 3, f_linspace, "LinSpace[a, b, n]: n evenly spaced values from a to b"},
+      {"LogSpace", 3, 3, f_logspace, "LogSpace[a, b, n]: n values from 10^a to 10^b"},
+      {"ListFromFile", 1, 1, f_list_from_file, "numbers read from a file (relative to the script)"},
+      {"Find", 2, 2, f_find, "Find(l1, l2): how many items of l1 occur in l2"},
+  };
+  out.insert(out.end(), std::begin(fns), std::end(fns));
+}
+
+}  // namespace sm::interp

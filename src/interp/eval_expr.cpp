@@ -1,0 +1,453 @@
+// Expression evaluation: numbers, strings, variables and lists with Gmsh's
+// scalar/list conversions, operators with Gmsh's integer and non-short-circuit
+// rules, ranges, builtin calls and option reads.
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "interp/builtins/dispatch.h"
+#include "interp/format.h"
+#include "interp/interpreter.h"
+#include "interp/limits.h"
+
+namespace sm::interp {
+
+using namespace sm::lang;
+
+namespace {
+
+std::string_view kind_word(const Value& v) {
+  switch (v.kind()) {
+    case Value::Kind::Number: return "a number";
+    case Value::Kind::List: return "a list";
+    case Value::Kind::String: return "a string";
+    case Value::Kind::StringList: return "a string list";
+  }
+  return "?";
+}
+
+std::string_view op_text(Tok op) {
+  switch (op) {
+    case Tok::Caret: return "^";
+    case Tok::Star: return "*";
+    case Tok::Slash: return "/";
+    case Tok::Percent: return "%";
+    case Tok::Pipe: return "|";
+    case Tok::Amp: return "&";
+    case Tok::Plus: return "+";
+    case Tok::Minus: return "-";
+    case Tok::Less: return "<";
+    case Tok::Greater: return ">";
+    case Tok::LessEq: return "<=";
+    case Tok::GreaterEq: return ">=";
+    case Tok::ShiftLeft: return "<<";
+    case Tok::ShiftRight: return ">>";
+    case Tok::EqEq: return "==";
+    case Tok::NotEq: return "!=";
+    case Tok::AmpAmp: return "&&";
+    case Tok::PipePipe: return "||";
+    case Tok::Not: return "!";
+    default: return "?";
+  }
+}
+
+// A known name close to `name` for "did you mean" hints, or "".
+template <class Names>
+std::string suggestion(std::string_view name, const Names& names) {
+  std::string best;
+  std::size_t best_d = std::max<std::size_t>(2, name.size() / 3) + 1;
+  for (const auto& n : names) {
+    const std::string_view cand = n.first;
+    const std::size_t d = edit_distance(name, cand);
+    if (d < best_d) {
+      best_d = d;
+      best = std::string(cand);
+    }
+  }
+  return best.empty() ? std::string() : fmt::format(" (did you mean '{}'?)", best);
+}
+
+}  // namespace
+
+long long Interpreter::to_int(double v, SourceRange r) {
+  // Gmsh converts with a C (int) cast; values outside the exactly
+  // representable integers are refused instead of being undefined behaviour.
+  if (!(std::fabs(v) < 9007199254740992.0))
+    fail_fmt(r, Diag::InvalidOperation, fmt::format("value {} is not a valid integer", format_g(v)));
+  return static_cast<long long>(v);
+}
+
+std::string Interpreter::resolve_name(const Name& n) {
+  if (n.from_string.valid()) return eval_string(n.from_string);
+  std::string name(ast_.str(n.ident));
+  for (ExprId suffix : n.suffixes) name = suffixed_name(name, eval_number(suffix));
+  return name;
+}
+
+double Interpreter::eval_number(ExprId e) {
+  const Value v = eval(e);
+  if (!v.is_numeric())
+    fail_fmt(ast_.expr(e).range, Diag::WrongType, fmt::format("expected a number, found {}", kind_word(v)));
+  if (v.nums().empty())
+    fail_fmt(ast_.expr(e).range, Diag::WrongType, "expected a number, found an empty list");
+  return v.nums()[0];
+}
+
+std::string Interpreter::eval_string(ExprId e) {
+  const Value v = eval(e);
+  if (!v.is_string())
+    fail_fmt(ast_.expr(e).range, Diag::WrongType, fmt::format("expected a string, found {}", kind_word(v)));
+  if (v.kind() == Value::Kind::StringList) return join_lines(v.strs());
+  return v.strs()[0];
+}
+
+Value Interpreter::eval_list_arg(ExprId e) {
+  const Expr& x = ast_.expr(e);
+  if (const auto* v = std::get_if<VarExpr>(&x.node)) {
+    const std::string name = resolve_name(v->name);
+    if (const NumSymbol* sym = symbols_.find_num(name); sym && sym->is_list)
+      return Value::list(sym->values);
+  }
+  return eval(e);
+}
+
+std::vector<double> Interpreter::eval_numbers(ExprId e) {
+  Value v = eval(e);
+  if (!v.is_numeric())
+    fail_fmt(ast_.expr(e).range, Diag::WrongType, fmt::format("expected numbers, found {}", kind_word(v)));
+  return std::move(v.nums());
+}
+
+Value Interpreter::eval(ExprId id) {
+  const Expr& e = ast_.expr(id);
+  return std::visit(
+      [&](const auto& n) -> Value {
+        using T = std::decay_t<decltype(n)>;
+        if constexpr (std::is_same_v<T, ErrorExpr>) {
+          fail_fmt(e.range, Diag::InvalidOperation, "cannot evaluate an expression with a syntax error");
+        } else if constexpr (std::is_same_v<T, NumberExpr>) {
+          return Value::number(n.value);
+        } else if constexpr (std::is_same_v<T, StringExpr>) {
+          return Value::string(std::string(ast_.str(n.text)));
+        } else if constexpr (std::is_same_v<T, VarExpr>) {
+          return eval_var(e, n);
+        } else if constexpr (std::is_same_v<T, ConstantExpr>) {
+          if (constant_is_string(n.which)) {
+            std::string s;
+            builtin_string_constant(constant_text(n.which), env_, s);
+            return Value::string(std::move(s));
+          }
+          switch (n.which) {
+            case Constant::NewP: case Constant::NewL: case Constant::NewC: case Constant::NewLL:
+            case Constant::NewCL: case Constant::NewS: case Constant::NewSL: case Constant::NewV:
+            case Constant::NewReg: case Constant::NewF:
+              return Value::number(new_tag_constant(*this, n.which));
+            default: break;
+          }
+          double v = 0;
+          if (!builtin_number_constant(constant_text(n.which), v))
+            fail_fmt(e.range, Diag::UnknownVariable, constant_text(n.which), "");
+          return Value::number(v);
+        } else if constexpr (std::is_same_v<T, UnaryExpr>) {
+          return eval_unary(e, n);
+        } else if constexpr (std::is_same_v<T, BinaryExpr>) {
+          return eval_binary(e, n);
+        } else if constexpr (std::is_same_v<T, TernaryExpr>) {
+          // Only the chosen branch is evaluated (Gmsh's yacc evaluates both).
+          return eval_number(n.cond) != 0 ? eval(n.then_expr) : eval(n.else_expr);
+        } else if constexpr (std::is_same_v<T, PostfixExpr>) {
+          return eval_postfix(e, n);
+        } else if constexpr (std::is_same_v<T, IndexExpr>) {
+          return eval_index(e, n.name, n.index);
+        } else if constexpr (std::is_same_v<T, WholeListExpr>) {
+          return eval_whole(e, n.name);
+        } else if constexpr (std::is_same_v<T, SliceExpr>) {
+          const Value whole = eval_whole(e, n.name);
+          const std::string name = resolve_name(n.name);
+          std::vector<double> out;
+          std::vector<std::string> sout;
+          for (ExprId ie : n.indices) {
+            for (double d : eval_numbers(ie)) {
+              const long long i = to_int(d, ast_.expr(ie).range);
+              const std::size_t size = whole.is_numeric() ? whole.nums().size() : whole.strs().size();
+              if (i < 0 || static_cast<std::size_t>(i) >= size)
+                fail_fmt(ast_.expr(ie).range, Diag::IndexOutOfRange, i, name, size);
+              if (whole.is_numeric())
+                out.push_back(whole.nums()[static_cast<std::size_t>(i)]);
+              else
+                sout.push_back(whole.strs()[static_cast<std::size_t>(i)]);
+            }
+          }
+          return whole.is_numeric() ? Value::list(std::move(out)) : Value::string_list(std::move(sout));
+        } else if constexpr (std::is_same_v<T, LengthExpr>) {
+          const Value v = eval_list_arg(n.list);
+          return Value::number(static_cast<double>(v.is_numeric() ? v.nums().size() : v.strs().size()));
+        } else if constexpr (std::is_same_v<T, ListExpr>) {
+          return eval_list(e, n);
+        } else if constexpr (std::is_same_v<T, RangeExpr>) {
+          return eval_range(e, n);
+        } else if constexpr (std::is_same_v<T, CallExpr>) {
+          return eval_call(e, n);
+        } else if constexpr (std::is_same_v<T, OptionExpr>) {
+          return read_option(n.option);
+        } else {
+          eval_model_expr(*this, id);
+        }
+      },
+      e.node);
+}
+
+Value Interpreter::eval_var(const Expr& e, const VarExpr& v) {
+  const std::string name = resolve_name(v.name);
+  if (const NumSymbol* sym = symbols_.find_num(name)) {
+    // A list used as a scalar gives its element 0 (Gmsh).
+    if (sym->values.empty())
+      fail_fmt(e.range, Diag::WrongType, fmt::format("'{}' is an empty list, not a number", name));
+    return Value::number(sym->values[0]);
+  }
+  if (const auto* strs = symbols_.find_str(name)) {
+    if (strs->empty())
+      fail_fmt(e.range, Diag::WrongType, fmt::format("'{}' is an empty string list", name));
+    return Value::string((*strs)[0]);
+  }
+  std::string hint = suggestion(name, symbols_.nums());
+  if (hint.empty()) hint = suggestion(name, symbols_.strs());
+  fail_fmt(e.range, Diag::UnknownVariable, name, hint);
+}
+
+Value Interpreter::eval_whole(const Expr& e, const Name& n) {
+  const std::string name = resolve_name(n);
+  if (const NumSymbol* sym = symbols_.find_num(name)) return Value::list(sym->values);
+  if (const auto* strs = symbols_.find_str(name)) return Value::string_list(*strs);
+  std::string hint = suggestion(name, symbols_.nums());
+  if (hint.empty()) hint = suggestion(name, symbols_.strs());
+  fail_fmt(e.range, Diag::UnknownVariable, name, hint);
+}
+
+Value Interpreter::eval_index(const Expr& e, const Name& n, ExprId index) {
+  const Value whole = eval_whole(e, n);
+  const long long i = to_int(eval_number(index), ast_.expr(index).range);
+  const std::size_t size = whole.is_numeric() ? whole.nums().size() : whole.strs().size();
+  if (i < 0 || static_cast<std::size_t>(i) >= size)
+    fail_fmt(ast_.expr(index).range, Diag::IndexOutOfRange, i, resolve_name(n), size);
+  if (whole.is_numeric()) return Value::number(whole.nums()[static_cast<std::size_t>(i)]);
+  return Value::string(whole.strs()[static_cast<std::size_t>(i)]);
+}
+
+Value Interpreter::eval_unary(const Expr& e, const UnaryExpr& u) {
+  Value v = eval(u.operand);
+  if (!v.is_numeric())
+    fail_fmt(e.range, Diag::WrongType,
+             fmt::format("operator '{}' needs a number, found {}", op_text(u.op), kind_word(v)));
+  for (double& x : v.nums()) {
+    if (u.op == Tok::Minus) x = -x;
+    else if (u.op == Tok::Not) x = (x == 0) ? 1 : 0;
+  }
+  return v;
+}
+
+Value Interpreter::eval_binary(const Expr& e, const BinaryExpr& b) {
+  // Both sides are always evaluated: && and || do not short-circuit (Gmsh).
+  const Value l = eval(b.lhs);
+  const Value r = eval(b.rhs);
+  if (!l.is_numeric() || !r.is_numeric())
+    fail_fmt(e.range, Diag::WrongType,
+             fmt::format("operator '{}' needs numbers, found {} and {}", op_text(b.op), kind_word(l),
+                         kind_word(r)));
+  const SourceRange rr = ast_.expr(b.rhs).range;
+  const SourceRange lr = ast_.expr(b.lhs).range;
+  auto apply = [&](double x, double y) -> double {
+    switch (b.op) {
+      case Tok::Caret: return std::pow(x, y);
+      case Tok::Star: return x * y;
+      case Tok::Slash:
+        if (y == 0) fail_fmt(rr, Diag::DivisionByZero);
+        return x / y;
+      case Tok::Percent: {
+        // Integer modulo on (int)-converted operands, sign of the left (C).
+        const long long yi = to_int(y, rr);
+        if (yi == 0) fail_fmt(rr, Diag::DivisionByZero);
+        return static_cast<double>(to_int(x, lr) % yi);
+      }
+      case Tok::Pipe: return static_cast<double>(to_int(x, lr) | to_int(y, rr));
+      case Tok::Amp: return static_cast<double>(to_int(x, lr) & to_int(y, rr));
+      case Tok::ShiftLeft:
+      case Tok::ShiftRight: {
+        const long long xi = to_int(x, lr), yi = to_int(y, rr);
+        if (yi < 0 || yi > 52)
+          fail_fmt(rr, Diag::InvalidOperation, fmt::format("shift count {} is outside 0..52", yi));
+        if (b.op == Tok::ShiftRight) return static_cast<double>(xi >> yi);
+        return static_cast<double>(xi) * std::ldexp(1.0, static_cast<int>(yi));
+      }
+      case Tok::Plus: return x + y;
+      case Tok::Minus: return x - y;
+      case Tok::Less: return x < y;
+      case Tok::Greater: return x > y;
+      case Tok::LessEq: return x <= y;
+      case Tok::GreaterEq: return x >= y;
+      case Tok::EqEq: return x == y;
+      case Tok::NotEq: return x != y;
+      case Tok::AmpAmp: return (x != 0) && (y != 0);
+      case Tok::PipePipe: return (x != 0) || (y != 0);
+      default:
+        fail_fmt(e.range, Diag::InvalidOperation, fmt::format("unknown operator '{}'", op_text(b.op)));
+    }
+  };
+  const bool ll = l.kind() == Value::Kind::List, rl = r.kind() == Value::Kind::List;
+  if (!ll && !rl) return Value::number(apply(l.nums()[0], r.nums()[0]));
+  // `k*{...}`, `-{...}`, `{...}+1`: element by element, a scalar broadcast.
+  const auto& a = l.nums();
+  const auto& c = r.nums();
+  if (ll && rl && a.size() != c.size())
+    fail_fmt(e.range, Diag::ListSizeMismatch,
+             fmt::format("operator '{}' on lists of different sizes ({} and {})", op_text(b.op), a.size(),
+                         c.size()));
+  const std::size_t n = ll ? a.size() : c.size();
+  std::vector<double> out(n);
+  for (std::size_t i = 0; i < n; ++i) out[i] = apply(ll ? a[i] : a[0], rl ? c[i] : c[0]);
+  return Value::list(std::move(out));
+}
+
+Value Interpreter::eval_range(const Expr& e, const RangeExpr& r) {
+  const double a = eval_number(r.from);
+  const double b = eval_number(r.to);
+  if (!std::isfinite(a) || !std::isfinite(b))
+    fail_fmt(e.range, Diag::InvalidRange, "range bounds must be finite numbers");
+  double step;
+  if (r.step.valid()) {
+    step = eval_number(r.step);
+    if (step == 0) fail_fmt(ast_.expr(r.step).range, Diag::InvalidRange, "range step is 0");
+    if (!std::isfinite(step)) fail_fmt(ast_.expr(r.step).range, Diag::InvalidRange, "range step must be finite");
+  } else {
+    step = (a <= b) ? 1.0 : -1.0;   // `5:1` counts down
+  }
+  const double count = std::floor((b - a) / step) + 1;
+  if (count > static_cast<double>(kMaxListSize))
+    fail_fmt(e.range, Diag::LimitExceeded,
+             fmt::format("range {}:{}:{} has {} elements, more than the limit of {}", format_g(a),
+                         format_g(b), format_g(step), format_g(count), kMaxListSize));
+  std::vector<double> out;
+  if (count > 0) out.reserve(static_cast<std::size_t>(count) + 1);
+  // Accumulated like Gmsh (d += step, no tolerance): 0:0.3:0.1 gives 0, 0.1, 0.2.
+  for (double d = a; step > 0 ? d <= b : d >= b; d += step) {
+    out.push_back(d);
+    if (out.size() > kMaxListSize) break;
+  }
+  return Value::list(std::move(out));
+}
+
+Value Interpreter::eval_list(const Expr& e, const ListExpr& l) {
+  std::vector<double> nums;
+  std::vector<std::string> strs;
+  for (ExprId item : l.items) {
+    const Value v = eval(item);
+    if (v.is_numeric()) {
+      nums.insert(nums.end(), v.nums().begin(), v.nums().end());
+    } else {
+      strs.insert(strs.end(), v.strs().begin(), v.strs().end());
+    }
+    if (!nums.empty() && !strs.empty())
+      fail_fmt(ast_.expr(item).range, Diag::WrongType, "a list cannot mix numbers and strings");
+    if (nums.size() > kMaxListSize)
+      fail_fmt(e.range, Diag::LimitExceeded, fmt::format("list longer than the limit of {}", kMaxListSize));
+  }
+  if (!strs.empty()) return Value::string_list(std::move(strs));
+  return Value::list(std::move(nums));
+}
+
+Value Interpreter::eval_postfix(const Expr& e, const PostfixExpr& p) {
+  const double delta = p.op == Tok::PlusPlus ? 1 : -1;
+  const Expr& t = ast_.expr(p.target);
+  if (const auto* v = std::get_if<VarExpr>(&t.node)) {
+    const std::string name = resolve_name(v->name);
+    NumSymbol* sym = symbols_.find_num(name);
+    if (!sym || sym->values.empty()) eval_var(t, *v);   // reports the unknown variable
+    const double old = sym->values[0];
+    sym->values[0] = old + delta;
+    return Value::number(old);
+  }
+  if (const auto* ix = std::get_if<IndexExpr>(&t.node)) {
+    const std::string name = resolve_name(ix->name);
+    eval_index(t, ix->name, ix->index);   // checks existence and range
+    NumSymbol* sym = symbols_.find_num(name);
+    if (!sym) fail_fmt(t.range, Diag::WrongType, fmt::format("'{}' is not a numeric list", name));
+    const auto i = static_cast<std::size_t>(to_int(eval_number(ix->index), t.range));
+    const double old = sym->values[i];
+    sym->values[i] = old + delta;
+    return Value::number(old);
+  }
+  if (const auto* o = std::get_if<OptionExpr>(&t.node)) {
+    const double old = read_option(o->option).nums().at(0);
+    const std::string name = option_name(o->option);
+    if (auto err = options_.set_number(name, old + delta); !err.empty())
+      fail_fmt(t.range, Diag::InvalidOptionValue, err);
+    return Value::number(old);
+  }
+  fail_fmt(e.range, Diag::InvalidOperation, "'++' and '--' need a variable, a list element or an option");
+}
+
+Value Interpreter::eval_call(const Expr& e, const CallExpr& c) {
+  const std::string_view fname = ast_.str(c.func);
+  auto name_arg = [&](std::size_t i) -> std::string {
+    const Expr& a = ast_.expr(c.args[i]);
+    if (const auto* v = std::get_if<VarExpr>(&a.node)) return resolve_name(v->name);
+    if (const auto* w = std::get_if<WholeListExpr>(&a.node)) return resolve_name(w->name);
+    fail_fmt(a.range, Diag::WrongType, fmt::format("'{}' needs a variable name", fname));
+  };
+  auto need_args = [&](std::size_t lo, std::size_t hi) {
+    if (c.args.size() < lo || c.args.size() > hi)
+      fail_fmt(c.func_range, Diag::WrongArgumentCount, fname,
+               lo == hi ? fmt::format("{}", lo)
+                        : (hi == static_cast<std::size_t>(-1) ? fmt::format("at least {}", lo)
+                                                              : fmt::format("{} to {}", lo, hi)),
+               hi == 1 ? "" : "s", c.args.size());
+  };
+  // Functions that take a name, not a value.
+  if (fname == "Exists") {
+    need_args(1, 1);
+    return Value::number(symbols_.exists(name_arg(0)) ? 1 : 0);
+  }
+  if (fname == "NameToString" || fname == "N2S") {
+    need_args(1, 1);
+    return Value::string(name_arg(0));
+  }
+  if (fname == "StringToName" || fname == "S2N") {
+    need_args(1, 1);
+    Name n;
+    n.from_string = c.args[0];
+    return eval_var(e, VarExpr{n});
+  }
+  if (fname == "DefineNumber" || fname == "DefineString") {
+    if (c.args.empty()) need_args(1, 1);
+    return eval(c.args[0]);   // ONELAB attributes are accepted and ignored
+  }
+  const BuiltinInfo* fn = find_builtin(fname);
+  if (!fn) {
+    std::string hint;
+    std::size_t best = 3;
+    for (const auto& b : all_builtins()) {
+      const std::size_t d = edit_distance(fname, b.name);
+      if (d < best) {
+        best = d;
+        hint = fmt::format(" (did you mean '{}'?)", b.name);
+      }
+    }
+    fail_fmt(c.func_range, Diag::UnknownFunction, fname, hint);
+  }
+  need_args(static_cast<std::size_t>(fn->min_args),
+            fn->max_args < 0 ? static_cast<std::size_t>(-1) : static_cast<std::size_t>(fn->max_args));
+  const bool list_args = fname == "List" || fname == "Unique" || fname == "Abs" || fname == "Find";
+  std::vector<Value> args;
+  args.reserve(c.args.size());
+  for (ExprId a : c.args) args.push_back(list_args ? eval_list_arg(a) : eval(a));
+  try {
+    return fn->fn(env_, args);
+  } catch (const BuiltinError& err) {
+    const SourceRange where = (err.arg >= 0 && static_cast<std::size_t>(err.arg) < c.args.size())
+                                  ? ast_.expr(c.args[static_cast<std::size_t>(err.arg)]).range
+                                  : e.range;
+    fail_fmt(where, Diag::BuiltinFailed, fname, err.message);
+  }
+}
+
+}  // namespace sm::interp

@@ -1,0 +1,340 @@
+// Assignments with Gmsh's storage rules: `x = {..}` makes a list unless it has
+// exactly one item, `+=`/`-=` append/remove on lists, `L[i] = v` grows a list
+// with zeros, options are typed and validated; DefineConstant and Delete.
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "interp/format.h"
+#include "interp/interpreter.h"
+#include "interp/limits.h"
+
+namespace sm::interp {
+
+using namespace sm::lang;
+
+namespace {
+
+bool known_other_category(std::string_view c) {
+  return c == "View" || c == "Print" || c == "PostProcessing" || c == "Solver" || c == "Plugin";
+}
+
+}  // namespace
+
+std::string Interpreter::option_name(const OptionRef& o) {
+  std::string name(ast_.str(o.category));
+  if (o.index.valid())
+    name += fmt::format("[{}]", to_int(eval_number(o.index), ast_.expr(o.index).range));
+  name += '.';
+  name += ast_.str(o.member);
+  if (o.sub_member.valid()) {
+    name += '.';
+    name += ast_.str(o.sub_member);
+  }
+  return name;
+}
+
+Value Interpreter::read_option(const OptionRef& o) {
+  const std::string name = option_name(o);
+  const OptionInfo* info = options_.find(name);
+  if (!info) {
+    if (known_other_category(ast_.str(o.category)))
+      fail_fmt(o.range, Diag::NotSupportedYet, fmt::format("{}.* options", ast_.str(o.category)), "");
+    fail_fmt(o.range, Diag::UnknownOption, name, fmt::format(" (did you mean '{}'?)", options_.closest(name)));
+  }
+  switch (info->kind) {
+    case OptionKind::Number: return Value::number(options_.number(info->name));
+    case OptionKind::String: return Value::string(options_.string(info->name));
+    case OptionKind::Color: {
+      const Color& c = options_.color(info->name);
+      return Value::list({c[0], c[1], c[2], c[3]});
+    }
+  }
+  return Value();
+}
+
+void Interpreter::assign_option(const LValue& t, AffOp op, ExprId value, SourceRange r) {
+  const OptionRef& o = t.option;
+  const std::string name = option_name(o);
+  const OptionInfo* info = options_.find(name);
+  if (!info) {
+    if (known_other_category(ast_.str(o.category))) {
+      fail_fmt(o.range, Diag::NotSupportedYet, fmt::format("{}.* options", ast_.str(o.category)), "");
+    }
+    fail_fmt(o.range, Diag::UnknownOption, name, fmt::format(" (did you mean '{}'?)", options_.closest(name)));
+  }
+  const SourceRange vr = ast_.expr(value).range;
+  std::string err;
+  switch (info->kind) {
+    case OptionKind::Number: {
+      const double v = eval_number(value);
+      double cur = options_.number(info->name);
+      switch (op) {
+        case AffOp::Assign: cur = v; break;
+        case AffOp::Add: cur += v; break;
+        case AffOp::Sub: cur -= v; break;
+        case AffOp::Mul: cur *= v; break;
+        case AffOp::Div:
+          if (v == 0) fail_fmt(vr, Diag::DivisionByZero);
+          cur /= v;
+          break;
+      }
+      err = options_.set_number(name, cur);
+      break;
+    }
+    case OptionKind::String: {
+      if (op != AffOp::Assign)
+        fail_fmt(r, Diag::InvalidOperation, fmt::format("string option '{}' only takes '='", name));
+      err = options_.set_string(name, eval_string(value));
+      break;
+    }
+    case OptionKind::Color: {
+      if (op != AffOp::Assign)
+        fail_fmt(r, Diag::InvalidOperation, fmt::format("color option '{}' only takes '='", name));
+      Color c{0, 0, 0, 255};
+      const Expr& ve = ast_.expr(value);
+      // `= Red`: a colour name written as an identifier or a string.
+      std::string cname;
+      if (const auto* v = std::get_if<VarExpr>(&ve.node); v && !v->name.from_string.valid() &&
+                                                           v->name.suffixes.empty())
+        cname = std::string(ast_.str(v->name.ident));
+      else if (const auto* s = std::get_if<StringExpr>(&ve.node))
+        cname = std::string(ast_.str(s->text));
+      if (!cname.empty()) {
+        if (!named_color(cname, c))
+          fail_fmt(vr, Diag::InvalidOptionValue, fmt::format("unknown color name '{}'", cname));
+      } else {
+        const std::vector<double> rgba = eval_numbers(value);
+        if (rgba.size() != 3 && rgba.size() != 4)
+          fail_fmt(vr, Diag::InvalidOptionValue,
+                   fmt::format("a color is {{r, g, b}} or {{r, g, b, a}}, found {} numbers", rgba.size()));
+        std::copy(rgba.begin(), rgba.end(), c.begin());
+      }
+      err = options_.set_color(name, c);
+      break;
+    }
+  }
+  if (!err.empty()) fail_fmt(vr, Diag::InvalidOptionValue, err);
+}
+
+void Interpreter::exec_assign(const Stmt& s, const AssignStmt& a) {
+  const LValue& t = a.target;
+  if (t.kind == LValue::Kind::Option) {
+    assign_option(t, a.op, a.value, s.range);
+    return;
+  }
+  const std::string name = resolve_name(t.name);
+  const SourceRange vr = ast_.expr(a.value).range;
+  auto grow_check = [&](std::size_t n) {
+    if (n > kMaxListSize)
+      fail_fmt(s.range, Diag::LimitExceeded, fmt::format("list '{}' would exceed {} elements", name, kMaxListSize));
+  };
+  auto arith = [&](double cur, double v) -> double {
+    switch (a.op) {
+      case AffOp::Assign: return v;
+      case AffOp::Add: return cur + v;
+      case AffOp::Sub: return cur - v;
+      case AffOp::Mul: return cur * v;
+      case AffOp::Div:
+        if (v == 0) fail_fmt(vr, Diag::DivisionByZero);
+        return cur / v;
+    }
+    return v;
+  };
+  auto list_update = [&](std::vector<double>& list, const std::vector<double>& items) {
+    if (a.op == AffOp::Add) {
+      grow_check(list.size() + items.size());
+      list.insert(list.end(), items.begin(), items.end());
+    } else if (a.op == AffOp::Sub) {
+      // Removes the first occurrence of each item (Gmsh).
+      for (double x : items) {
+        auto it = std::find(list.begin(), list.end(), x);
+        if (it != list.end()) list.erase(it);
+      }
+    } else {
+      fail_fmt(s.range, Diag::InvalidOperation,
+               fmt::format("'{}' is not defined on the list '{}'", affop_text(a.op), name));
+    }
+  };
+
+  switch (t.kind) {
+    case LValue::Kind::Var:
+    case LValue::Kind::WholeList: {
+      const bool whole = t.kind == LValue::Kind::WholeList;
+      Value v = whole ? eval_list_arg(a.value) : eval(a.value);
+      if (v.is_string()) {
+        std::vector<std::string> strs = v.strs();
+        if (!whole && strs.size() != 1) strs = {join_lines(strs)};
+        if (a.op == AffOp::Assign) {
+          symbols_.set_str(name, std::move(strs));
+        } else if (a.op == AffOp::Add && whole) {
+          std::vector<std::string> cur;
+          if (const auto* old = symbols_.find_str(name)) cur = *old;
+          cur.insert(cur.end(), strs.begin(), strs.end());
+          symbols_.set_str(name, std::move(cur));
+        } else {
+          fail_fmt(s.range, Diag::InvalidOperation,
+                   fmt::format("'{}' is not defined on strings", affop_text(a.op)));
+        }
+        return;
+      }
+      const bool rhs_list = v.kind() == Value::Kind::List && v.nums().size() != 1;
+      if (a.op == AffOp::Assign) {
+        // `x = {a, b}` is a list, `x = {a}` a scalar; `L[] = ...` always a list.
+        symbols_.set_num(name, NumSymbol{std::move(v.nums()), whole || rhs_list});
+        return;
+      }
+      NumSymbol* sym = symbols_.find_num(name);
+      if (!sym) {
+        if (whole || (rhs_list && a.op == AffOp::Add)) {
+          if (a.op != AffOp::Add)
+            fail_fmt(t.range, Diag::UnknownVariable, name, "");
+          symbols_.set_num(name, NumSymbol{std::move(v.nums()), true});
+          return;
+        }
+        if (symbols_.find_str(name))
+          fail_fmt(t.range, Diag::WrongType, fmt::format("'{}' is a string, not a number", name));
+        fail_fmt(t.range, Diag::UnknownVariable, name, "");
+      }
+      if (whole || sym->is_list || rhs_list) {
+        list_update(sym->values, v.nums());
+        sym->is_list = true;
+        return;
+      }
+      if (v.nums().empty()) fail_fmt(vr, Diag::WrongType, "expected a number, found an empty list");
+      sym->values.resize(1);
+      sym->values[0] = arith(sym->values[0], v.nums()[0]);
+      return;
+    }
+    case LValue::Kind::Element:
+    case LValue::Kind::SubList: {
+      std::vector<std::pair<long long, SourceRange>> idx;
+      if (t.kind == LValue::Kind::Element) {
+        idx.emplace_back(to_int(eval_number(t.index), ast_.expr(t.index).range), ast_.expr(t.index).range);
+      } else {
+        for (ExprId ie : t.indices)
+          for (double d : eval_numbers(ie)) idx.emplace_back(to_int(d, ast_.expr(ie).range), ast_.expr(ie).range);
+      }
+      const Value v = eval(a.value);
+      if (v.is_string()) {
+        // Elements of a string list.
+        const auto* old = symbols_.find_str(name);
+        if (a.op != AffOp::Assign || !old || idx.size() != v.strs().size())
+          fail_fmt(s.range, Diag::WrongType, fmt::format("cannot assign strings to elements of '{}'", name));
+        std::vector<std::string> cur = *old;
+        for (std::size_t k = 0; k < idx.size(); ++k) {
+          if (idx[k].first < 0 || static_cast<std::size_t>(idx[k].first) >= cur.size())
+            fail_fmt(idx[k].second, Diag::IndexOutOfRange, idx[k].first, name, cur.size());
+          cur[static_cast<std::size_t>(idx[k].first)] = v.strs()[k];
+        }
+        symbols_.set_str(name, std::move(cur));
+        return;
+      }
+      if (v.nums().size() != idx.size())
+        fail_fmt(s.range, Diag::ListSizeMismatch,
+                 fmt::format("{} indices but {} values", idx.size(), v.nums().size()));
+      NumSymbol* sym = symbols_.find_num(name);
+      if (!sym) {
+        if (symbols_.find_str(name))
+          fail_fmt(t.range, Diag::WrongType, fmt::format("'{}' is a string, not a numeric list", name));
+        symbols_.set_num(name, NumSymbol{{}, true});   // a missing list is created
+        sym = symbols_.find_num(name);
+      } else if (!sym->is_list) {
+        fail_fmt(t.range, Diag::NotAList, name, name);
+      }
+      for (std::size_t k = 0; k < idx.size(); ++k) {
+        const long long i = idx[k].first;
+        if (i < 0) fail_fmt(idx[k].second, Diag::IndexOutOfRange, i, name, sym->values.size());
+        grow_check(static_cast<std::size_t>(i) + 1);
+        if (static_cast<std::size_t>(i) >= sym->values.size()) sym->values.resize(static_cast<std::size_t>(i) + 1, 0.0);
+        double& slot = sym->values[static_cast<std::size_t>(i)];
+        slot = arith(slot, v.nums()[k]);
+      }
+      return;
+    }
+    case LValue::Kind::Option:
+      break;
+  }
+}
+
+void Interpreter::exec_incdec(const Stmt& s, const IncDecStmt& a) {
+  const double delta = a.increment ? 1 : -1;
+  const LValue& t = a.target;
+  switch (t.kind) {
+    case LValue::Kind::Option: {
+      const std::string name = option_name(t.option);
+      const Value cur = read_option(t.option);
+      if (cur.kind() != Value::Kind::Number)
+        fail_fmt(t.range, Diag::WrongType, fmt::format("'{}' is not a number option", name));
+      if (auto err = options_.set_number(name, cur.nums()[0] + delta); !err.empty())
+        fail_fmt(s.range, Diag::InvalidOptionValue, err);
+      return;
+    }
+    case LValue::Kind::Var: {
+      const std::string name = resolve_name(t.name);
+      NumSymbol* sym = symbols_.find_num(name);
+      if (!sym) fail_fmt(t.range, Diag::UnknownVariable, name, "");
+      if (sym->is_list || sym->values.size() != 1)
+        fail_fmt(t.range, Diag::InvalidOperation, fmt::format("'++'/'--' on the list '{}'", name));
+      sym->values[0] += delta;
+      return;
+    }
+    case LValue::Kind::Element: {
+      const std::string name = resolve_name(t.name);
+      NumSymbol* sym = symbols_.find_num(name);
+      if (!sym) fail_fmt(t.range, Diag::UnknownVariable, name, "");
+      const long long i = to_int(eval_number(t.index), ast_.expr(t.index).range);
+      if (i < 0 || static_cast<std::size_t>(i) >= sym->values.size())
+        fail_fmt(ast_.expr(t.index).range, Diag::IndexOutOfRange, i, name, sym->values.size());
+      sym->values[static_cast<std::size_t>(i)] += delta;
+      return;
+    }
+    default:
+      fail_fmt(s.range, Diag::InvalidOperation, "'++'/'--' needs a variable, an element or an option");
+  }
+}
+
+void Interpreter::exec_define_constant(const DefineConstantStmt& d) {
+  for (const DefineEntry& entry : d.entries) {
+    const std::string name = resolve_name(entry.name);
+    // First definition wins; -setnumber values were defined before the script.
+    if (symbols_.exists(name)) continue;
+    if (!entry.value.valid()) {
+      symbols_.set_num(name, NumSymbol{{0.0}, false});
+      continue;
+    }
+    Value v = eval(entry.value);
+    if (v.is_string()) {
+      symbols_.set_str(name, v.strs());
+    } else {
+      const bool list = v.kind() == Value::Kind::List && v.nums().size() != 1;
+      symbols_.set_num(name, NumSymbol{std::move(v.nums()), list});
+    }
+  }
+}
+
+void Interpreter::exec_delete(const Stmt& s, const DeleteStmt& d) {
+  switch (d.what) {
+    case DeleteWhat::Variable: {
+      const std::string name = resolve_name(d.name);
+      if (!symbols_.erase(name)) fail_fmt(d.name.range, Diag::UnknownVariableDeleted, name);
+      return;
+    }
+    case DeleteWhat::Variables: symbols_.clear(); return;
+    case DeleteWhat::Options: options_.reset(); return;
+    default: break;
+  }
+  // Model, Physicals, Meshes, All: the model arrives with the geometry issue.
+  std::string what = "Delete";
+  switch (d.what) {
+    case DeleteWhat::Model: what = "Delete Model"; break;
+    case DeleteWhat::Physicals: what = "Delete Physicals"; break;
+    case DeleteWhat::Meshes: what = "Delete Meshes"; break;
+    case DeleteWhat::All: what = "Delete All"; break;
+    default: break;
+  }
+  not_supported_stmt(current_stmt_, what);
+}
+
+}  // namespace sm::interp

@@ -1,0 +1,196 @@
+// Interpreter core: running files, statement dispatch, error reporting with the
+// Call/Include stack, and the hang-prevention counters (limits.h).
+#include "interp/interpreter.h"
+
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "interp/builtins/dispatch.h"
+#include "interp/limits.h"
+#include "lang/parser.h"
+
+namespace sm::interp {
+
+using namespace sm::lang;
+
+Interpreter::Interpreter(SourceManager& sources, Diagnostics& diags, std::ostream& out,
+                         RunSettings settings)
+    : sources_(sources),
+      diags_(diags),
+      out_(out),
+      settings_(std::move(settings)),
+      env_{symbols_, options_, onelab_numbers_, onelab_strings_, "", rand_state_} {}
+
+std::string Interpreter::preset_number(const std::string& name, double v) {
+  if (name.find('.') != std::string::npos) {
+    if (!options_.find(name))
+      return fmt::format("unknown option '{}' (did you mean '{}'?)", name, options_.closest(name));
+    return options_.set_number(name, v);
+  }
+  symbols_.set_num(name, NumSymbol{{v}, false});
+  return "";
+}
+
+std::string Interpreter::preset_string(const std::string& name, const std::string& v) {
+  if (name.find('.') != std::string::npos) {
+    if (!options_.find(name))
+      return fmt::format("unknown option '{}' (did you mean '{}'?)", name, options_.closest(name));
+    return options_.set_string(name, v);
+  }
+  symbols_.set_str(name, {v});
+  return "";
+}
+
+RunStatus Interpreter::run_file(const std::string& path) {
+  const auto loaded = sources_.load_file(path);
+  if (!loaded.file.valid()) {
+    diags_.report(SourceRange{}, Diag::IncludeFailed, loaded.error);
+    return RunStatus::Errors;
+  }
+  std::error_code ec;
+  include_stack_.push_back(std::filesystem::weakly_canonical(path, ec).string());
+  const RunStatus st = run_loaded(loaded.file);
+  include_stack_.pop_back();
+  return st;
+}
+
+RunStatus Interpreter::run_buffer(const std::string& name, const std::string& text) {
+  const auto loaded = sources_.add_buffer(name, text);
+  if (!loaded.file.valid()) {
+    diags_.report(SourceRange{}, Diag::IncludeFailed, loaded.error);
+    return RunStatus::Errors;
+  }
+  include_stack_.push_back(name);
+  const RunStatus st = run_loaded(loaded.file);
+  include_stack_.pop_back();
+  return st;
+}
+
+RunStatus Interpreter::run_loaded(FileId file) {
+  const std::size_t errors_before = diags_.error_count();
+  if (stopped_) return RunStatus::Ok;
+  const ParseResult parsed = parse_file(sources_, file, ast_, diags_);
+  if (!parsed.ok || diags_.error_count() > errors_before) return RunStatus::Errors;
+  parsed_files_[file.value] = parsed.stmts;
+  try {
+    run_statements(parsed.stmts);
+  } catch (const RuntimeError& e) {
+    report(e);
+  }
+  return diags_.error_count() > errors_before ? RunStatus::Errors : RunStatus::Ok;
+}
+
+Interpreter::Flow Interpreter::run_statements(const StmtList& stmts) {
+  for (StmtId s : stmts) {
+    const Flow f = exec(s);
+    if (f == Flow::Stop) return f;
+    if (f == Flow::Return)
+      fail_fmt(ast_.stmt(s).range, Diag::ReturnOutsideMacro);
+  }
+  return Flow::Normal;
+}
+
+Interpreter::Flow Interpreter::exec_block(const StmtList& body) {
+  for (StmtId s : body) {
+    const Flow f = exec(s);
+    if (f != Flow::Normal) return f;
+  }
+  return Flow::Normal;
+}
+
+void Interpreter::count_statement(SourceRange r) {
+  if (++statements_run_ > kMaxStatements)
+    fail_fmt(r, Diag::LimitExceeded,
+             fmt::format("more than {} statements executed: stopping a runaway loop", kMaxStatements));
+}
+
+Interpreter::Flow Interpreter::exec(StmtId id) {
+  const Stmt& s = ast_.stmt(id);
+  count_statement(s.range);
+  current_stmt_ = id;
+  if (s.range.valid()) {
+    const std::string& p = sources_.path(s.range.file);
+    if (env_.script_path != p) env_.script_path = p;
+  }
+  return std::visit(
+      [&](const auto& n) -> Flow {
+        using T = std::decay_t<decltype(n)>;
+        if constexpr (std::is_same_v<T, AssignStmt>) {
+          exec_assign(s, n);
+        } else if constexpr (std::is_same_v<T, IncDecStmt>) {
+          exec_incdec(s, n);
+        } else if constexpr (std::is_same_v<T, DefineConstantStmt>) {
+          exec_define_constant(n);
+        } else if constexpr (std::is_same_v<T, DeleteStmt>) {
+          exec_delete(s, n);
+        } else if constexpr (std::is_same_v<T, PrintStmt>) {
+          exec_print(s, n);
+        } else if constexpr (std::is_same_v<T, IfStmt>) {
+          return exec_if(n);
+        } else if constexpr (std::is_same_v<T, ForStmt>) {
+          return exec_for(s, n);
+        } else if constexpr (std::is_same_v<T, MacroStmt>) {
+          exec_macro(s, n);
+        } else if constexpr (std::is_same_v<T, CallStmt>) {
+          return exec_call(s, n);
+        } else if constexpr (std::is_same_v<T, ReturnStmt>) {
+          return Flow::Return;
+        } else if constexpr (std::is_same_v<T, ExitStmt>) {
+          exit_code_ = n.code.valid() ? static_cast<int>(to_int(eval_number(n.code), s.range)) : 0;
+          stopped_ = true;
+          return Flow::Stop;
+        } else if constexpr (std::is_same_v<T, AbortStmt>) {
+          stopped_ = true;
+          return Flow::Stop;
+        } else if constexpr (std::is_same_v<T, AssertStmt>) {
+          exec_assert(s, n);
+        } else if constexpr (std::is_same_v<T, IncludeStmt>) {
+          return exec_include(s, n);
+        } else if constexpr (std::is_same_v<T, CommandStmt>) {
+          return exec_command(s, n);
+        } else {
+          dispatch_model_stmt(*this, id);
+        }
+        return Flow::Normal;
+      },
+      s.node);
+}
+
+std::string_view Interpreter::text_of(SourceRange r) const {
+  if (!r.valid()) return {};
+  const std::string_view t = sources_.text(r.file);
+  if (r.begin > t.size() || r.end > t.size() || r.end < r.begin) return {};
+  return t.substr(r.begin, r.end - r.begin);
+}
+
+std::vector<DiagNote> Interpreter::frame_notes() const {
+  std::vector<DiagNote> notes;
+  for (auto it = frames_.rbegin(); it != frames_.rend(); ++it)
+    notes.push_back(DiagNote{it->site, fmt::format("called from here ({})", it->what)});
+  return notes;
+}
+
+void Interpreter::fail(SourceRange range, Diag kind, std::string message) {
+  throw RuntimeError{range, kind, std::move(message), frame_notes()};
+}
+
+void Interpreter::report(const RuntimeError& e) {
+  auto h = diags_.report_message(e.range, e.kind, e.message);
+  for (const auto& n : e.notes) h.note(n.range, n.message);
+}
+
+void Interpreter::not_supported_stmt(StmtId id, std::string_view what) {
+  const Stmt& s = ast_.stmt(id);
+  const std::string key(what);
+  if (!reported_unsupported_.insert(key).second) return;
+  auto h = diags_.report(s.keyword.valid() ? s.keyword : s.range, Diag::NotSupportedYet, what,
+                         ": the statement is skipped (reported once per run)");
+  for (const auto& n : frame_notes()) h.note(n.range, n.message);
+}
+
+void Interpreter::not_supported_expr(ExprId e, std::string_view what) {
+  fail_fmt(ast_.expr(e).range, Diag::NotSupportedYet, what, " (it needs the geometry model)");
+}
+
+}  // namespace sm::interp

@@ -1,0 +1,179 @@
+// The evaluator: walks the AST of a .geo script with normal semantics (loops
+// re-evaluate nodes, Call/Include take effect where they stand), holding all
+// run state (variables, options, macros, Include stack) in one object.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <ostream>
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "interp/builtins/builtins.h"
+#include "interp/options.h"
+#include "interp/value.h"
+#include "lang/ast.h"
+#include "lang/diagnostics.h"
+#include "lang/source.h"
+
+namespace sm::interp {
+
+/// Settings of one run, from the command line.
+struct RunSettings {
+  std::vector<std::string> include_dirs;   ///< `-I DIR`, searched after the including file's dir
+  std::vector<std::string> search_path;    ///< $STEREOMESH_PATH entries
+  std::string stdlib_dir = STEREOMESH_STDLIB_DIR;
+};
+
+/// How a run ended.
+enum class RunStatus {
+  Ok,        ///< ran to the end (or Abort/Exit without errors)
+  Errors,    ///< syntax or runtime errors were reported
+};
+
+/// A runtime error on its way to the top: reported once, with the call stack
+/// captured where it was raised.
+struct RuntimeError {
+  lang::SourceRange range;
+  lang::Diag kind;
+  std::string message;
+  std::vector<lang::DiagNote> notes;
+};
+
+class Interpreter {
+ public:
+  /// Printf output goes to `out`; diagnostics to `diags`.
+  Interpreter(lang::SourceManager& sources, lang::Diagnostics& diags, std::ostream& out,
+              RunSettings settings = {});
+
+  Options& options() { return options_; }
+  Symbols& symbols() { return symbols_; }
+
+  /// `-setnumber NAME V` / `-setstring NAME S`: an option when NAME has a '.',
+  /// else a variable defined before the script (DefineConstant keeps it).
+  /// Returns "" or why the value is refused.
+  std::string preset_number(const std::string& name, double v);
+  std::string preset_string(const std::string& name, const std::string& v);
+
+  /// Loads, parses and runs a file (or an in-memory buffer for tests). A file
+  /// with syntax errors is not run. Several files share all state, in order.
+  RunStatus run_file(const std::string& path);
+  RunStatus run_buffer(const std::string& name, const std::string& text);
+
+  /// Set by `Exit n;` (the process exit status the script asks for), else -1.
+  int exit_request() const { return exit_code_; }
+  /// True once Exit/Abort stopped the run: later files are not run.
+  bool stopped() const { return stopped_; }
+
+  // ---- used by the statement/expression families and builtins/ ----
+  enum class Flow { Normal, Return, Stop };
+
+  Value eval(lang::ExprId e);
+  double eval_number(lang::ExprId e);
+  std::string eval_string(lang::ExprId e);
+  /// A list item: a list-flagged variable gives its whole list.
+  Value eval_list_arg(lang::ExprId e);
+  /// Flattened numbers of list items (ranges, lists, scalars).
+  std::vector<double> eval_numbers(lang::ExprId e);
+  std::string resolve_name(const lang::Name& n);
+
+  Flow exec(lang::StmtId s);
+  Flow exec_block(const lang::StmtList& body);
+
+  [[noreturn]] void fail(lang::SourceRange range, lang::Diag kind, std::string message);
+  template <class... Args>
+  [[noreturn]] void fail_fmt(lang::SourceRange range, lang::Diag kind, const Args&... args) {
+    fail(range, kind, fmt::vformat(lang::diag_info(kind).format, fmt::make_format_args(args...)));
+  }
+  /// A statement the kernel cannot run yet: reported once per kind of
+  /// statement, then the run goes on (the script's variables stay usable).
+  void not_supported_stmt(lang::StmtId s, std::string_view what);
+  /// An expression that needs the model: a runtime error (its value is needed).
+  [[noreturn]] void not_supported_expr(lang::ExprId e, std::string_view what);
+
+  const lang::Ast& ast() const { return ast_; }
+  lang::SourceManager& sources() { return sources_; }
+  lang::Diagnostics& diags() { return diags_; }
+  std::string_view text_of(lang::SourceRange r) const;
+  BuiltinEnv& builtin_env() { return env_; }
+
+ private:
+  RunStatus run_loaded(lang::FileId file);
+  Flow run_statements(const lang::StmtList& stmts);
+  void report(const RuntimeError& e);
+  std::vector<lang::DiagNote> frame_notes() const;
+  void count_statement(lang::SourceRange r);
+
+  // expressions (eval_expr.cpp)
+  Value eval_var(const lang::Expr& e, const lang::VarExpr& v);
+  Value eval_unary(const lang::Expr& e, const lang::UnaryExpr& u);
+  Value eval_binary(const lang::Expr& e, const lang::BinaryExpr& b);
+  Value eval_call(const lang::Expr& e, const lang::CallExpr& c);
+  Value eval_option(const lang::Expr& e, const lang::OptionExpr& o);
+  Value eval_range(const lang::Expr& e, const lang::RangeExpr& r);
+  Value eval_list(const lang::Expr& e, const lang::ListExpr& l);
+  Value eval_index(const lang::Expr& e, const lang::Name& name, lang::ExprId index);
+  Value eval_whole(const lang::Expr& e, const lang::Name& name);
+  Value eval_postfix(const lang::Expr& e, const lang::PostfixExpr& p);
+  long long to_int(double v, lang::SourceRange r);
+
+  // assignments (exec_assign.cpp)
+  void exec_assign(const lang::Stmt& s, const lang::AssignStmt& a);
+  void exec_incdec(const lang::Stmt& s, const lang::IncDecStmt& a);
+  void assign_option(const lang::LValue& t, lang::AffOp op, lang::ExprId value, lang::SourceRange r);
+  void exec_define_constant(const lang::DefineConstantStmt& d);
+  void exec_delete(const lang::Stmt& s, const lang::DeleteStmt& d);
+  std::string option_name(const lang::OptionRef& o);
+  Value read_option(const lang::OptionRef& o);
+
+  // output (exec_print.cpp)
+  void exec_print(const lang::Stmt& s, const lang::PrintStmt& p);
+  void exec_assert(const lang::Stmt& s, const lang::AssertStmt& a);
+  std::string format_args(lang::ExprId format, const lang::ExprList& args, lang::SourceRange r);
+
+  // control flow (exec_control.cpp)
+  Flow exec_if(const lang::IfStmt& s);
+  Flow exec_for(const lang::Stmt& st, const lang::ForStmt& f);
+  void exec_macro(const lang::Stmt& s, const lang::MacroStmt& m);
+  Flow exec_call(const lang::Stmt& s, const lang::CallStmt& c);
+  Flow exec_include(const lang::Stmt& s, const lang::IncludeStmt& inc);
+  Flow exec_command(const lang::Stmt& s, const lang::CommandStmt& c);
+  std::string find_include(const std::string& name, lang::SourceRange r);
+
+  struct Frame {
+    lang::SourceRange site;   ///< the Call or Include statement
+    std::string what;         ///< "macro 'Foo'" / "'file.geo'"
+  };
+  struct MacroDef {
+    lang::StmtId stmt;
+    std::string name;
+  };
+
+  lang::SourceManager& sources_;
+  lang::Diagnostics& diags_;
+  std::ostream& out_;
+  RunSettings settings_;
+  lang::Ast ast_;
+  Options options_;
+  Symbols symbols_;
+  std::map<std::string, double, std::less<>> onelab_numbers_;
+  std::map<std::string, std::string, std::less<>> onelab_strings_;
+  std::uint64_t rand_state_ = 0;
+  BuiltinEnv env_;
+
+  std::map<std::string, MacroDef, std::less<>> macros_;
+  std::map<std::uint32_t, lang::StmtList> parsed_files_;   // FileId value -> statements
+  std::vector<Frame> frames_;
+  std::vector<std::string> include_stack_;                 // canonical paths
+  std::vector<lang::FileId> file_stack_;
+  std::set<std::string, std::less<>> reported_unsupported_;
+  lang::StmtId current_stmt_;   // the statement being run, for reports
+  std::uint64_t statements_run_ = 0;
+  std::size_t macro_depth_ = 0;
+  int exit_code_ = -1;
+  bool stopped_ = false;
+};
+
+}  // namespace sm::interp

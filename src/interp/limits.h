@@ -1,0 +1,21 @@
+// Hard limits that keep hostile scripts from hanging or exhausting memory;
+// each one is reported with a clear message when hit.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+namespace sm::interp {
+
+/// Largest list a range, LinSpace, ListFromFile or list growth may build.
+inline constexpr std::size_t kMaxListSize = 100'000'000;
+/// Longest string a script may build (StrCat, Sprintf, StrReplace...).
+inline constexpr std::size_t kMaxStringSize = 64u << 20;
+/// Statements executed by one run before it is stopped as a runaway loop.
+inline constexpr std::uint64_t kMaxStatements = 1'000'000'000;
+/// Nested Call/Include frames (recursive macros).
+inline constexpr std::size_t kMaxCallDepth = 200;
+/// Nested Include files.
+inline constexpr std::size_t kMaxIncludeDepth = 64;
+
+}  // namespace sm::interp

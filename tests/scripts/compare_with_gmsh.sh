@@ -1,0 +1,33 @@
+#!/bin/sh
+# Runs every non-fail_ script under tests/scripts/ through `gmsh -0` and
+# `stereomesh -0` and diffs their Printf output line for line.
+# Usage: tests/scripts/compare_with_gmsh.sh [path/to/stereomesh] [script.geo...]
+# Exit status: 0 when every script agrees, 1 otherwise.
+set -u
+here=$(cd "$(dirname "$0")" && pwd)
+sm=${1:-stereomesh}
+[ $# -gt 0 ] && shift
+command -v gmsh >/dev/null || { echo "gmsh not found" >&2; exit 2; }
+tmp=$(mktemp -d) || exit 2
+trap 'rm -rf "$tmp"' EXIT
+cp -r "$here" "$tmp/scripts"
+if [ $# -gt 0 ]; then
+  scripts="$*"
+else
+  scripts=$(cd "$here" && find . -name '*.geo' ! -name 'fail_*' | sort)
+fi
+same=0; differ=0; lines=0
+for s in $scripts; do
+  rel=${s#"$here"/}; rel=${rel#./}
+  dir=$tmp/scripts/$(dirname "$rel"); base=$(basename "$rel")
+  (cd "$dir" && gmsh -0 "$base" 2>/dev/null | grep -av '^Info    :') > "$tmp/gmsh.out"
+  (cd "$dir" && "$sm" -0 "$base" 2>/dev/null) > "$tmp/sm.out"
+  if cmp -s "$tmp/gmsh.out" "$tmp/sm.out"; then
+    same=$((same + 1)); lines=$((lines + $(wc -l < "$tmp/gmsh.out")))
+  else
+    differ=$((differ + 1)); echo "DIFF $rel (< gmsh, > stereomesh)"
+    diff "$tmp/gmsh.out" "$tmp/sm.out" | head -20
+  fi
+done
+echo "$same scripts agree ($lines Printf lines), $differ differ"
+[ "$differ" -eq 0 ]
