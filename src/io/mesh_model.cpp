@@ -1,9 +1,13 @@
 // Small helpers of the writer-facing mesh description.
 #include "io/mesh_model.h"
 
+#include <fmt/format.h>
+
 #include "base/check.h"
 
 namespace sm::io {
+
+constexpr std::uint32_t kNoOwner = 0xFFFFFFFFu;
 
 int nodes_per_element(ElementType type) {
   switch (type) {
@@ -20,6 +24,34 @@ std::size_t MeshModel::element_count() const {
   std::size_t n = 0;
   for (const EntityMesh& e : entities) n += e.connectivity.size() / nodes_per_element(e.type);
   return n;
+}
+
+std::string validate_mesh_model(const MeshModel& m) {
+  if (m.xyz.size() >= kNoOwner) return "too many nodes for 32-bit node indices";
+  std::vector<std::uint32_t> owner(m.xyz.size(), kNoOwner);
+  for (std::size_t i = 0; i < m.entities.size(); ++i) {
+    const EntityMesh& e = m.entities[i];
+    if (e.dim < 0 || e.dim > 3 || e.tag <= 0)
+      return fmt::format("invalid entity (dim {}, tag {})", e.dim, e.tag);
+    for (std::size_t j = 0; j < i; ++j)
+      if (m.entities[j].dim == e.dim && m.entities[j].tag == e.tag)
+        return fmt::format("entity (dim {}, tag {}) listed twice", e.dim, e.tag);
+    for (std::uint32_t n : e.nodes) {
+      if (n >= m.xyz.size()) return fmt::format("entity ({}, {}) owns node {} out of range", e.dim, e.tag, n);
+      if (owner[n] != kNoOwner)
+        return fmt::format("node {} is owned by two entities ({}, {}) and ({}, {})", n,
+                           m.entities[owner[n]].dim, m.entities[owner[n]].tag, e.dim, e.tag);
+      owner[n] = static_cast<std::uint32_t>(i);
+    }
+    if (e.connectivity.size() % nodes_per_element(e.type) != 0)
+      return fmt::format("entity ({}, {}) has a truncated element", e.dim, e.tag);
+  }
+  for (const EntityMesh& e : m.entities)
+    for (std::uint32_t n : e.connectivity) {
+      if (n >= m.xyz.size()) return fmt::format("element of entity ({}, {}) uses node {} out of range", e.dim, e.tag, n);
+      if (owner[n] == kNoOwner) return fmt::format("node {} is used by an element but owned by no entity", n);
+    }
+  return {};
 }
 
 }  // namespace sm::io

@@ -43,4 +43,9 @@ struct MeshModel {
   std::size_t element_count() const;
 };
 
+/// Checks the model (every used node owned by exactly one entity, element
+/// node indices in range, tags positive and unique). Returns an empty string
+/// when valid, else what is wrong; writers refuse invalid models.
+std::string validate_mesh_model(const MeshModel& mesh);
+
 }  // namespace sm::io

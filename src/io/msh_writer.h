@@ -16,10 +16,6 @@ struct MshOptions {
   bool save_parametric = false;  // Mesh.SaveParametric (4.1 only): curve t, surface u v
 };
 
-/// Checks the model (every used node owned by exactly one entity, element
-/// node indices in range). Returns an empty string when valid.
-std::string validate_mesh_model(const MeshModel& mesh);
-
 /// Serialises to a string (tests, small meshes).
 std::string msh_to_string(const MeshModel& mesh, const MshOptions& opt);
 

@@ -1,0 +1,70 @@
+// VTK writers: structure checked in C++, and every variant read back by an
+// independent reader (meshio) with the same counts and data.
+#include <doctest/doctest.h>
+
+#include <fmt/format.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "io/element_quality.h"
+#include "io/test_meshes.h"
+#include "io/vtk_writer.h"
+
+using namespace sm;
+using namespace sm::io;
+
+TEST_CASE("quality: rho of equilateral, right and degenerate triangles") {
+  CHECK(triangle_rho({0, 0, 0}, {1, 0, 0}, {0.5, std::sqrt(3.0) / 2, 0}) == doctest::Approx(1.0));
+  // right isosceles: r_in = (2 - sqrt2)/2, R = sqrt2/2 -> rho = 2 r/R = 2(sqrt2 - 1)
+  CHECK(triangle_rho({0, 0, 0}, {1, 0, 0}, {0, 1, 5e-17}) == doctest::Approx(2 * (std::sqrt(2.0) - 1)));
+  CHECK(triangle_rho({0, 0, 0}, {1, 0, 0}, {2, 0, 0}) == 0);
+}
+
+TEST_CASE("vtk legacy ASCII: header, counts, cell types") {
+  const MeshModel m = testing::grid_square(4);
+  const std::string s = vtk_to_string(m, {});
+  CHECK(s.rfind("# vtk DataFile Version 3.0\n", 0) == 0);
+  CHECK(s.find("POINTS 25 double\n") != std::string::npos);
+  CHECK(s.find("CELLS 32 128\n") != std::string::npos);
+  CHECK(s.find("CELL_TYPES 32\n5\n") != std::string::npos);
+  CHECK(s.find("SCALARS quality_rho double 1") != std::string::npos);
+}
+
+TEST_CASE("vtk: every variant reads back in meshio with the same data") {
+  if (std::system("/usr/bin/python3 -c 'import meshio' >/dev/null 2>&1") != 0) {
+    MESSAGE("python3-meshio not installed: skipped");
+    return;
+  }
+  const MeshModel m = testing::grid_square(10);
+  std::vector<double> size(m.xyz.size());
+  for (std::size_t i = 0; i < size.size(); ++i) size[i] = 0.1 + m.xyz[i].x;
+  const std::string script = "/tmp/sm_vtk_load.py";
+  std::ofstream(script) << "import sys, meshio\n"
+                           "m = meshio.read(sys.argv[1])\n"
+                           "tri = sum(len(c.data) for c in m.cells if c.type == 'triangle')\n"
+                           "h = m.point_data['size']\n"
+                           "q = m.cell_data['quality_rho'][0]\n"
+                           "print(len(m.points), tri, '%.6f' % h.sum(), '%.6f' % q.min())\n";
+  for (bool xml : {false, true})
+    for (bool binary : {false, true}) {
+      const std::string path = fmt::format("/tmp/sm_vtk_{}.{}", binary ? "bin" : "ascii", xml ? "vtu" : "vtk");
+      std::string error;
+      REQUIRE(save_vtk(m, {xml, binary, false, {{"size", size}}}, path, &error));
+      REQUIRE(std::system(fmt::format("/usr/bin/python3 {} {} > /tmp/sm_vtk_out.txt", script, path).c_str()) == 0);
+      std::ifstream in("/tmp/sm_vtk_out.txt");
+      std::stringstream got;
+      got << in.rdbuf();
+      CAPTURE(path);
+      // 121 nodes; sum of 0.1 + x over the grid = 121 * 0.1 + 11 * (0 + 0.1 + ... + 1) = 12.1 + 60.5
+      CHECK(got.str() == fmt::format("121 200 {:.6f} {:.6f}\n", 72.6, 2 * (std::sqrt(2.0) - 1)));
+    }
+}
+
+TEST_CASE("vtk: node data of the wrong length is an error, nothing written") {
+  const MeshModel m = testing::grid_square(2);
+  std::string error;
+  CHECK_FALSE(save_vtk(m, {false, false, false, {{"size", {1.0, 2.0}}}}, "/tmp/sm_vtk_bad.vtk", &error));
+  CHECK(error.find("node data 'size' has 2 values for 9 nodes") != std::string::npos);
+}
