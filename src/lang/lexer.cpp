@@ -66,6 +66,7 @@ bool Lexer::skip_space_and_comments() {
       const std::size_t close = text_.find("*/", pos_ + 2);
       if (close == std::string_view::npos) {
         diags_->report(range(pos_, pos_ + 2), Diag::UnterminatedComment);
+        truncated_ = true;
         pos_ = static_cast<std::uint32_t>(n);
         return false;
       }
@@ -160,6 +161,7 @@ Token Lexer::lex_string() {
   const std::size_t close = text_.find(quote, pos_ + 1);
   if (close == std::string_view::npos) {
     diags_->report(range(b, b + 1), Diag::UnterminatedString, quote == '"' ? "'\"'" : "\"'\"");
+    truncated_ = true;
     pos_ = static_cast<std::uint32_t>(text_.size());
     return {Tok::Error, range(b, pos_)};
   }

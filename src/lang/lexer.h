@@ -21,6 +21,9 @@ class Lexer {
   std::string_view text(const Token& t) const { return text_.substr(t.range.begin, t.range.end - t.range.begin); }
   std::string_view source() const { return text_; }
   FileId file() const { return file_; }
+  /// True once an unterminated string or comment swallowed the rest of the
+  /// file (the parser then stays quiet about the missing end).
+  bool truncated() const { return truncated_; }
 
  private:
   SourceRange range(std::uint32_t b, std::uint32_t e) const { return {file_, b, e}; }
@@ -34,6 +37,7 @@ class Lexer {
   FileId file_;
   Diagnostics* diags_;
   std::uint32_t pos_ = 0;
+  bool truncated_ = false;
 };
 
 /// The value of a Number token's text (Gmsh rules: `1.`, `.5`, `1.5e-3`, `2E4`).

@@ -37,3 +37,33 @@ inline Lexed lex_all(const std::string& text) {
 }
 
 }  // namespace sm::lang::testing
+
+#include "lang/parser.h"
+
+namespace sm::lang::testing {
+
+struct Parsed {
+  std::string ast;    ///< dump() of the top-level statements
+  std::string diags;  ///< rendered diagnostics
+  std::size_t errors = 0;
+  bool ok = false;
+};
+
+inline Parsed parse_text(const std::string& text, ParseOptions options = {}) {
+  SourceManager sm;
+  Diagnostics diags(sm);
+  const FileId f = sm.add_buffer("t.geo", text).file;
+  Ast ast;
+  const ParseResult r = parse_file(sm, f, ast, diags, options);
+  return {dump(ast, r.stmts), diags.render_all(), diags.error_count(), r.ok};
+}
+
+/// The dump of a single-statement script, without the trailing newline.
+inline std::string ast_of(const std::string& text) {
+  Parsed p = parse_text(text);
+  if (!p.ok) return "ERRORS: " + p.diags;
+  if (!p.ast.empty() && p.ast.back() == '\n') p.ast.pop_back();
+  return p.ast;
+}
+
+}  // namespace sm::lang::testing
