@@ -1,0 +1,69 @@
+// SVG pictures: well-formed XML (read by Python's parser) with one polygon
+// per triangle and one polyline per boundary curve.
+#include <doctest/doctest.h>
+
+#include <fmt/format.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "geo/sphere.h"
+#include "io/svg_writer.h"
+#include "io/test_meshes.h"
+
+using namespace sm;
+using namespace sm::io;
+
+namespace {
+
+std::string count_elements(const std::string& svg_path) {
+  const std::string script = "/tmp/sm_svg_count.py";
+  std::ofstream(script) << "import sys, xml.etree.ElementTree as ET\n"
+                           "ns = '{http://www.w3.org/2000/svg}'\n"
+                           "root = ET.parse(sys.argv[1]).getroot()\n"
+                           "print(len(root.findall('.//' + ns + 'polygon')), len(root.findall('.//' + ns + 'polyline')))\n";
+  const std::string out = "/tmp/sm_svg_count.txt";
+  if (std::system(fmt::format("python3 {} {} > {}", script, svg_path, out).c_str()) != 0) return "parse error";
+  std::ifstream in(out);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+TEST_CASE("svg: planar mesh, one polygon per triangle, one polyline per curve") {
+  const MeshModel m = testing::grid_square(10);
+  std::string error;
+  for (SvgColour colour : {SvgColour::None, SvgColour::Quality}) {
+    SvgOptions opt;
+    opt.view = SvgView::Plane;
+    opt.colour = colour;
+    REQUIRE(save_svg(m, opt, "/tmp/sm_svg_plane.svg", &error));
+    CHECK(count_elements("/tmp/sm_svg_plane.svg") == "200 4\n");
+  }
+}
+
+TEST_CASE("svg: lon/lat view draws a triangle across the dateline on both sides") {
+  // Three triangles on the unit sphere: two near lon 170 and -170 (one of
+  // them spanning the dateline), and one far from it.
+  MeshModel m;
+  const geo::PolarSphere sphere({0, 0, 0}, 1);
+  for (geo::LonLat ll : {geo::LonLat{175, 0}, {-175, 0}, {178, 5}, {10, 0}, {20, 0}, {15, 8}})
+    m.xyz.push_back(sphere.from_lonlat(ll));
+  EntityMesh s;
+  s.dim = 2, s.tag = 1, s.type = ElementType::Triangle3;
+  s.nodes = {0, 1, 2, 3, 4, 5};
+  s.connectivity = {0, 1, 2, 3, 4, 5};
+  m.entities.push_back(s);
+  SvgOptions opt;
+  opt.view = SvgView::LonLat;
+  opt.colour = SvgColour::NodeValue;
+  opt.node_values = {1, 2, 3, 4, 5, 6};
+  std::string error;
+  REQUIRE(save_svg(m, opt, "/tmp/sm_svg_ll.svg", &error));
+  CHECK(count_elements("/tmp/sm_svg_ll.svg") == "3 0\n");
+  const std::string svg = svg_to_string(m, opt);
+  CHECK(svg.find("width=\"1600\"") != std::string::npos);
+}
