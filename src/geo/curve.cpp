@@ -26,7 +26,7 @@ const char* to_string(CurveKind k) {
 GeoResult<Curve> Curve::make(CurveDef def) {
   const int tag = def.tag;
   const std::size_t n = def.xyz.size();
-  auto fail = [&](GeoErrorKind k, std::string msg) { return make_error(k, 1, {tag}, std::move(msg)); };
+  auto fail = [&](GeoErrorKind k, std::string msg) { return make_error(k, EntityKind::Curve, {tag}, std::move(msg)); };
   if (def.surface && def.uv.size() != n)
     return fail(GeoErrorKind::BadArgument, fmt::format("curve {}: (u,v) and xyz control point counts differ", tag));
   const char* name = to_string(def.kind);

@@ -19,10 +19,10 @@ GeoResult<CircleArc> make_circle_arc(Vec3 start, Vec3 centre, Vec3 end, std::opt
   const Vec3 d0 = start - centre, d2 = end - centre;
   const double r1 = norm(d0), r2 = norm(d2);
   if (r1 == 0 || r2 == 0)
-    return make_error(GeoErrorKind::CoincidentPoints, 1, {tag},
+    return make_error(GeoErrorKind::CoincidentPoints, EntityKind::Curve, {tag},
                       fmt::format("circle {}: an end point coincides with the centre", tag));
   if (std::abs(r1 - r2) > 0.1 * (r1 + r2))
-    return make_error(GeoErrorKind::NotCocircular, 1, {tag},
+    return make_error(GeoErrorKind::NotCocircular, EntityKind::Curve, {tag},
                       fmt::format("circle {}: control points are not cocircular (R1={:g}, R2={:g})", tag, r1, r2));
   const Vec3 n = arc_normal(d0, d2, plane_normal);
   CircleArc a;
@@ -31,7 +31,7 @@ GeoResult<CircleArc> make_circle_arc(Vec3 start, Vec3 centre, Vec3 end, std::opt
   a.x_axis = d0 / r1;
   const Vec3 y = cross(n, a.x_axis);
   if (norm(y) < 1e-12)
-    return make_error(GeoErrorKind::DegenerateArc, 1, {tag},
+    return make_error(GeoErrorKind::DegenerateArc, EntityKind::Curve, {tag},
                       fmt::format("circle {}: the arc plane is undefined (start, centre and end are collinear "
                                   "along the plane normal); give a Plane{{}} normal",
                                   tag));

@@ -14,7 +14,7 @@ GeoResult<EllipseArc> make_ellipse_arc(Vec3 start, Vec3 centre, Vec3 major_point
                                        std::optional<Vec3> plane_normal, int tag) {
   const Vec3 d0 = start - centre, d2 = end - centre, dm = major_point - centre;
   auto degenerate = [tag](const char* why) {
-    return make_error(GeoErrorKind::DegenerateArc, 1, {tag}, fmt::format("ellipse {}: {}", tag, why));
+    return make_error(GeoErrorKind::DegenerateArc, EntityKind::Curve, {tag}, fmt::format("ellipse {}: {}", tag, why));
   };
   if (norm(d0) == 0 || norm(d2) == 0 || norm(dm) == 0) return degenerate("a control point coincides with the centre");
   const Vec3 n = arc_normal(d0, d2, plane_normal);

@@ -23,10 +23,24 @@ const char* to_string(GeoErrorKind k) {
   return "unknown";
 }
 
-GeoError make_error(GeoErrorKind kind, int dim, std::vector<int> tags, std::string message) {
+const char* to_string(EntityKind k) {
+  switch (k) {
+    case EntityKind::Point: return "point";
+    case EntityKind::Curve: return "curve";
+    case EntityKind::Surface: return "surface";
+    case EntityKind::Volume: return "volume";
+    case EntityKind::CurveLoop: return "curve loop";
+    case EntityKind::SurfaceGeometry: return "surface geometry";
+    case EntityKind::Physical: return "physical group";
+    case EntityKind::None: return "none";
+  }
+  return "?";
+}
+
+GeoError make_error(GeoErrorKind kind, EntityKind entity, std::vector<int> tags, std::string message) {
   GeoError e;
   e.kind = kind;
-  e.dim = dim;
+  e.entity = entity;
   e.tags = std::move(tags);
   e.message = std::move(message);
   return e;

@@ -28,11 +28,16 @@ enum class GeoErrorKind {
 
 const char* to_string(GeoErrorKind k);
 
+/// What a tag in an error names (the first four are Gmsh's entity dimensions).
+enum class EntityKind { Point = 0, Curve = 1, Surface = 2, Volume = 3, CurveLoop, SurfaceGeometry, Physical, None };
+
+const char* to_string(EntityKind k);
+
 struct GeoError {
   GeoErrorKind kind = GeoErrorKind::BadArgument;
-  int dim = -1;              // dimension of the entity the error is about (-1: none)
-  std::vector<int> tags;     // that entity first, then the others involved (signed for curves)
-  std::string message;       // lowercase, no final period; mentions the tags
+  EntityKind entity = EntityKind::None;   // what tags[0] is
+  std::vector<int> tags;                  // that entity first, then others involved (signed for curves)
+  std::string message;                    // lowercase, no final period; mentions the tags
 };
 
 /// Either a value or a GeoError: the kernel's return type for operations that can fail.
@@ -69,6 +74,6 @@ class GeoStatus {
   GeoError error_;
 };
 
-GeoError make_error(GeoErrorKind kind, int dim, std::vector<int> tags, std::string message);
+GeoError make_error(GeoErrorKind kind, EntityKind entity, std::vector<int> tags, std::string message);
 
 }  // namespace sm::geo

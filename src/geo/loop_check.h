@@ -1,0 +1,47 @@
+// Curve-loop chaining (Gmsh's SortEdgesInLoop, with located errors) and the containment test
+// of a plane surface's holes in its parameter plane.
+#pragma once
+
+#include "geo/error.h"
+#include "geo/surface_geometry.h"
+
+#include <vector>
+
+namespace sm::geo {
+
+class Model;
+struct ModelCurveLoop;
+
+/// A signed curve of a loop with its oriented end vertices.
+struct LoopEdge {
+  int curve = 0;   // signed tag
+  int from = 0, to = 0;
+};
+
+/// Gmsh's order: start with the first curve, then repeatedly take the first remaining curve
+/// (in written order) that starts where the chain ends; when a chain closes and curves
+/// remain, a new chain ("subloop") starts with the first remaining one. Errors name the
+/// curve where the chain breaks (and a curve that would fit with the other sign).
+GeoResult<std::vector<int>> chain_loop(int loop_tag, const std::vector<LoopEdge>& edges);
+
+/// A loop sampled densely enough for containment tests: (u,v) when drawn on a geometry,
+/// else points in space.
+struct LoopPolygon {
+  std::vector<Vec3> xyz;
+  std::vector<Vec2> uv;
+};
+LoopPolygon sample_loop(const Model& m, const ModelCurveLoop& loop, const SurfaceGeometry* g);
+
+/// Mean plane of a polygon in space (Newell's normal) and the projection onto it.
+struct PlaneFrame {
+  Vec3 origin, e1{1, 0, 0}, e2{0, 1, 0};
+  std::vector<Vec2> project(const std::vector<Vec3>& pts) const;
+};
+PlaneFrame plane_frame(const std::vector<Vec3>& pts);
+
+/// Whether polygon `inner` lies inside polygon `outer` (even-odd rule), tested on up to 16
+/// of its points spread along it. Floating-point ray crossing on sampled constructions: a
+/// model check, not a mesh decision, so the exact predicates of src/mesh are not needed.
+bool polygon_inside(const std::vector<Vec2>& inner, const std::vector<Vec2>& outer);
+
+}  // namespace sm::geo

@@ -1,0 +1,469 @@
+// Model construction, validation and queries with Gmsh 4.8.4's semantics (tags, loops,
+// plane surfaces on a surface geometry, physical groups, Boundary / CombinedBoundary).
+#include "geo/model.h"
+
+#include "geo/loop_check.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace sm::geo {
+
+namespace {
+
+constexpr int kLoopSlot = 4;
+
+GeoError missing(EntityKind k, int tag, std::vector<int> context, const std::string& where) {
+  std::vector<int> tags{tag};
+  tags.insert(tags.end(), context.begin(), context.end());
+  return make_error(GeoErrorKind::MissingEntity, k, std::move(tags),
+                    fmt::format("unknown {} {}{}", to_string(k), tag, where));
+}
+
+}  // namespace
+
+void BoundingBox::add(Vec3 p) {
+  lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+  hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+}
+
+// ---- tags ----
+
+void Model::bump_max(int slot, int tag) { max_tag_[slot] = std::max(max_tag_[slot], tag); }
+
+// Gmsh lowers the high-water mark by one only when the deleted entity holds it.
+void Model::on_delete(int slot, int tag) {
+  if (tag == max_tag_[slot]) max_tag_[slot] = tag - 1;
+}
+
+int Model::new_reg() const {
+  int m = std::max({max_tag_[1], max_tag_[2], max_tag_[3], max_tag_[kLoopSlot]});
+  for (const auto& [key, g] : physicals_) m = std::max(m, g.tag);
+  return m + 1;
+}
+
+int Model::new_curve_tag() const { return options_.old_new_reg ? new_reg() : max_tag_[1] + 1; }
+int Model::new_loop_tag() const { return options_.old_new_reg ? new_reg() : max_tag_[kLoopSlot] + 1; }
+int Model::new_surface_tag() const { return options_.old_new_reg ? new_reg() : max_tag_[2] + 1; }
+
+void Model::set_max_tag(int dim, int tag) {
+  const int slot = dim < 0 ? kLoopSlot : std::min(dim, 3);
+  max_tag_[slot] = tag;
+}
+
+GeoStatus Model::check_new_tag(EntityKind kind, int tag, bool exists) const {
+  if (tag <= 0)
+    return make_error(GeoErrorKind::InvalidTag, kind, {tag},
+                      fmt::format("{} tag {} is invalid: tags must be positive", to_string(kind), tag));
+  if (exists)
+    return make_error(GeoErrorKind::DuplicateTag, kind, {tag},
+                      fmt::format("{} {} already exists", to_string(kind), tag));
+  return {};
+}
+
+// ---- lookups ----
+
+const ModelVertex* Model::vertex(int tag) const {
+  auto it = vertices_.find(tag);
+  return it == vertices_.end() ? nullptr : &it->second;
+}
+
+const ModelCurve* Model::curve(int tag) const {
+  auto it = curves_.find(tag);
+  return it == curves_.end() ? nullptr : &it->second;
+}
+
+const ModelCurveLoop* Model::curve_loop(int tag) const {
+  auto it = loops_.find(tag);
+  return it == loops_.end() ? nullptr : &it->second;
+}
+
+const ModelSurface* Model::surface(int tag) const {
+  auto it = surfaces_.find(tag);
+  return it == surfaces_.end() ? nullptr : &it->second;
+}
+
+const PhysicalGroup* Model::physical(int dim, int tag) const {
+  auto it = physicals_.find({dim, tag});
+  return it == physicals_.end() ? nullptr : &it->second;
+}
+
+const SurfaceGeometry* Model::geometry(int tag) const {
+  auto it = geometries_.find(tag);
+  return it == geometries_.end() ? nullptr : &it->second;
+}
+
+std::vector<int> Model::tags(int dim) const {
+  std::vector<int> out;
+  auto collect = [&out](const auto& m) {
+    out.reserve(m.size());
+    for (const auto& kv : m) out.push_back(kv.first);
+  };
+  if (dim == 0) collect(vertices_);
+  else if (dim == 1) collect(curves_);
+  else if (dim == 2) collect(surfaces_);
+  return out;
+}
+
+std::vector<int> Model::loop_tags() const {
+  std::vector<int> out;
+  for (const auto& kv : loops_) out.push_back(kv.first);
+  return out;
+}
+
+BoundingBox Model::bounding_box() const {
+  BoundingBox b;
+  for (const auto& [t, v] : vertices_) b.add(v.xyz);
+  return b;
+}
+
+// ---- surface geometries ----
+
+GeoStatus Model::add_sphere_geometry(int tag, int centre_point, int pole_point, bool polar) {
+  if (tag <= 0 || geometries_.count(tag))
+    return check_new_tag(EntityKind::SurfaceGeometry, tag, geometries_.count(tag) > 0);
+  const ModelVertex* c = vertex(centre_point);
+  const ModelVertex* p = vertex(pole_point);
+  const char* what = polar ? "PolarSphere" : "Sphere";
+  if (!c) return missing(EntityKind::Point, centre_point, {tag}, fmt::format(" (centre of {} {})", what, tag));
+  if (!p) return missing(EntityKind::Point, pole_point, {tag}, fmt::format(" (pole of {} {})", what, tag));
+  const double r = norm(p->xyz - c->xyz);
+  if (!(r > 0))
+    return make_error(GeoErrorKind::CoincidentPoints, EntityKind::SurfaceGeometry, {tag, centre_point, pole_point},
+                      fmt::format("{} {} has radius 0: points {} and {} coincide", what, tag, centre_point, pole_point));
+  if (polar) geometries_.emplace(tag, SurfaceGeometry(PolarSphere(c->xyz, r)));
+  else geometries_.emplace(tag, SurfaceGeometry(Sphere(c->xyz, r)));
+  current_geometry_ = tag;
+  return {};
+}
+
+GeoStatus Model::add_polar_sphere(int tag, int c, int p) { return add_sphere_geometry(tag, c, p, true); }
+GeoStatus Model::add_lonlat_sphere(int tag, int c, int p) { return add_sphere_geometry(tag, c, p, false); }
+
+GeoStatus Model::set_current_geometry(int tag) {
+  if (!geometry(tag)) return missing(EntityKind::SurfaceGeometry, tag, {}, "");
+  current_geometry_ = tag;
+  return {};
+}
+
+// ---- points ----
+
+GeoStatus Model::add_point(int tag, Vec3 coords, double lc) {
+  if (current_geometry_) return add_point_on_geometry(tag, current_geometry_, {coords.x, coords.y}, lc);
+  if (auto s = check_new_tag(EntityKind::Point, tag, vertices_.count(tag) > 0); !s) return s;
+  ModelVertex v;
+  v.tag = tag;
+  v.xyz = coords;
+  v.lc = lc > 0 ? lc : kMaxLc;
+  vertices_.emplace(tag, v);
+  bump_max(0, tag);
+  return {};
+}
+
+GeoStatus Model::add_point_on_geometry(int tag, int geometry_tag, Vec2 uv, double lc) {
+  if (auto s = check_new_tag(EntityKind::Point, tag, vertices_.count(tag) > 0); !s) return s;
+  const SurfaceGeometry* g = geometry(geometry_tag);
+  if (!g) return missing(EntityKind::SurfaceGeometry, geometry_tag, {tag}, fmt::format(" (for point {})", tag));
+  ModelVertex v;
+  v.tag = tag;
+  v.geometry = geometry_tag;
+  v.uv = uv;
+  v.xyz = g->point(uv);
+  v.lc = lc > 0 ? lc : kMaxLc;
+  vertices_.emplace(tag, v);
+  bump_max(0, tag);
+  return {};
+}
+
+GeoStatus Model::set_mesh_size(const std::vector<int>& points, double lc) {
+  for (int p : points)
+    if (!vertex(p)) return missing(EntityKind::Point, p, {}, " in MeshSize");
+  for (int p : points) vertices_[p].lc = lc > 0 ? lc : kMaxLc;
+  return {};
+}
+
+// ---- curves ----
+
+GeoResult<Curve> Model::build_shape(const ModelCurve& c) const {
+  CurveDef d;
+  d.kind = c.kind;
+  d.tag = c.tag;
+  d.periodic = c.points.size() > 2 && c.points.front() == c.points.back();
+  d.plane_normal = c.plane_normal;
+  d.xyz.reserve(c.points.size());
+  if (c.geometry) {
+    d.surface = geometries_.at(c.geometry);
+    d.uv.reserve(c.points.size());
+  }
+  for (int p : c.points) {
+    const ModelVertex& v = vertices_.at(p);
+    d.xyz.push_back(v.xyz);
+    if (c.geometry) d.uv.push_back(v.uv);
+  }
+  return Curve::make(std::move(d));
+}
+
+GeoStatus Model::add_curve(int tag, CurveKind kind, const std::vector<int>& points, std::optional<Vec3> plane_normal) {
+  if (auto s = check_new_tag(EntityKind::Curve, tag, curves_.count(tag) > 0); !s) return s;
+  for (int p : points)
+    if (!vertex(p)) return missing(EntityKind::Point, p, {tag}, fmt::format(" used by {} {}", to_string(kind), tag));
+  // A zero-length piece: the same point twice in a row (a curve through itself).
+  for (std::size_t i = 0; i + 1 < points.size(); ++i)
+    if (points[i] == points[i + 1])
+      return make_error(GeoErrorKind::SelfReference, EntityKind::Curve, {tag, points[i]},
+                        fmt::format("{} {} uses point {} twice in a row", to_string(kind), tag, points[i]));
+  if ((kind == CurveKind::Line || kind == CurveKind::Bezier) && points.size() == 2 && points[0] == points[1])
+    return make_error(GeoErrorKind::SelfReference, EntityKind::Curve, {tag, points[0]},
+                      fmt::format("{} {} starts and ends at point {}", to_string(kind), tag, points[0]));
+  if ((kind == CurveKind::Circle || kind == CurveKind::Ellipse) && points.size() >= 3) {
+    const int centre = points[1];
+    if (points.front() == centre || points.back() == centre || points.front() == points.back())
+      return make_error(GeoErrorKind::SelfReference, EntityKind::Curve, {tag},
+                        fmt::format("{} {} repeats a point among start, centre and end", to_string(kind), tag));
+  }
+  ModelCurve c;
+  c.tag = tag;
+  c.kind = kind;
+  c.points = points;
+  c.plane_normal = plane_normal;
+  if (!points.empty()) {
+    c.begin = points.front();
+    c.end = points.back();
+    // Gmsh: the curve lies on a geometry when all its control points do.
+    const int g = vertices_.at(points.front()).geometry;
+    bool same = g != 0;
+    for (int p : points) same = same && vertices_.at(p).geometry == g;
+    c.geometry = same ? g : 0;
+  }
+  auto shape = build_shape(c);
+  if (!shape) return shape.error();
+  c.shape = std::move(*shape);
+  curves_.emplace(tag, std::move(c));
+  bump_max(1, tag);
+  return {};
+}
+
+GeoStatus Model::rebuild_curves_using(const std::vector<int>& moved_points) {
+  std::vector<int> sorted = moved_points;
+  std::sort(sorted.begin(), sorted.end());
+  GeoStatus status;
+  for (auto& [t, c] : curves_) {
+    bool hit = false;
+    for (int p : c.points) hit = hit || std::binary_search(sorted.begin(), sorted.end(), p);
+    if (!hit) continue;
+    // A non-uniform dilation can make an arc invalid: the curve keeps its previous shape and
+    // the first such failure is reported.
+    auto shape = build_shape(c);
+    if (shape) c.shape = std::move(*shape);
+    else if (status.ok()) status = shape.error();
+  }
+  return status;
+}
+
+// ---- curve loops ----
+
+GeoStatus Model::add_curve_loop(int tag, const std::vector<int>& curves) {
+  if (auto s = check_new_tag(EntityKind::CurveLoop, tag, loops_.count(tag) > 0); !s) return s;
+  if (curves.empty())
+    return make_error(GeoErrorKind::LoopEmpty, EntityKind::CurveLoop, {tag}, fmt::format("curve loop {} is empty", tag));
+  std::vector<LoopEdge> edges;
+  edges.reserve(curves.size());
+  for (int sc : curves) {
+    const ModelCurve* c = curve(std::abs(sc));
+    if (sc == 0 || !c) return missing(EntityKind::Curve, sc, {tag}, fmt::format(" in curve loop {}", tag));
+    edges.push_back(sc > 0 ? LoopEdge{sc, c->begin, c->end} : LoopEdge{sc, c->end, c->begin});
+  }
+  auto chained = chain_loop(tag, edges);
+  if (!chained) return chained.error();
+  ModelCurveLoop l;
+  l.tag = tag;
+  l.curves = std::move(*chained);
+  l.reordered = l.curves != curves;
+  loops_.emplace(tag, std::move(l));
+  bump_max(kLoopSlot, tag);
+  return {};
+}
+
+// ---- plane surfaces ----
+
+GeoStatus Model::add_plane_surface(int tag, const std::vector<int>& loops) {
+  if (auto s = check_new_tag(EntityKind::Surface, tag, surfaces_.count(tag) > 0); !s) return s;
+  if (loops.empty())
+    return make_error(GeoErrorKind::LoopEmpty, EntityKind::Surface, {tag},
+                      fmt::format("plane surface {} has no curve loop", tag));
+  for (int l : loops)
+    if (l == 0 || !curve_loop(std::abs(l))) return missing(EntityKind::CurveLoop, l, {tag}, fmt::format(" in plane surface {}", tag));
+  for (std::size_t i = 0; i < loops.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (std::abs(loops[i]) == std::abs(loops[j]))
+        return make_error(GeoErrorKind::SharedBoundary, EntityKind::Surface, {tag, std::abs(loops[i])},
+                          fmt::format("plane surface {} uses curve loop {} twice", tag, std::abs(loops[i])));
+  // No curve may appear in two loops of one surface (a seam may appear twice in one loop).
+  std::map<int, int> owner;   // |curve| -> loop
+  int geometry_tag = -1;
+  for (int l : loops) {
+    for (int sc : loops_.at(std::abs(l)).curves) {
+      const int c = std::abs(sc);
+      auto [it, fresh] = owner.emplace(c, l);
+      if (!fresh && std::abs(it->second) != std::abs(l))
+        return make_error(GeoErrorKind::SharedBoundary, EntityKind::Surface, {tag, c, it->second, l},
+                          fmt::format("plane surface {}: curve {} belongs to both curve loops {} and {}", tag, c,
+                                      std::abs(it->second), std::abs(l)));
+      const int g = curves_.at(c).geometry;
+      geometry_tag = geometry_tag == -1 ? g : (geometry_tag == g ? g : 0);
+    }
+  }
+  ModelSurface s;
+  s.tag = tag;
+  s.loops = loops;
+  s.geometry = std::max(geometry_tag, 0);
+  // Holes must lie inside the outer loop: checked in the surface's parameter plane.
+  const SurfaceGeometry* g = s.geometry ? &geometries_.at(s.geometry) : nullptr;
+  LoopPolygon outer = sample_loop(*this, loops_.at(std::abs(loops[0])), g);
+  PlaneFrame frame = g ? PlaneFrame{} : plane_frame(outer.xyz);
+  const std::vector<Vec2> outer2 = g ? outer.uv : frame.project(outer.xyz);
+  for (std::size_t i = 1; i < loops.size(); ++i) {
+    const int l = std::abs(loops[i]);
+    const LoopPolygon hole = sample_loop(*this, loops_.at(l), g);
+    const std::vector<Vec2> hole2 = g ? hole.uv : frame.project(hole.xyz);
+    if (!polygon_inside(hole2, outer2))
+      return make_error(GeoErrorKind::HoleOutside, EntityKind::Surface, {tag, l, std::abs(loops[0])},
+                        fmt::format("plane surface {}: hole (curve loop {}) is not inside the outer curve loop {}", tag,
+                                    l, std::abs(loops[0])));
+  }
+  surfaces_.emplace(tag, std::move(s));
+  bump_max(2, tag);
+  return {};
+}
+
+// ---- physical groups ----
+
+GeoResult<int> Model::add_physical(int dim, std::optional<int> tag, const std::string& name,
+                                   const std::vector<int>& entities, PhysicalOp op) {
+  if (dim < 0 || dim > 3)
+    return make_error(GeoErrorKind::BadArgument, EntityKind::Physical, {}, fmt::format("bad physical dimension {}", dim));
+  for (int e : entities) {
+    const int a = std::abs(e);
+    const bool ok = (dim == 0 && vertex(a)) || (dim == 1 && curve(a)) || (dim == 2 && surface(a));
+    if (!ok) return missing(static_cast<EntityKind>(dim), e, {}, fmt::format(" in physical group"));
+  }
+  int t = 0;
+  if (tag) {
+    t = *tag;
+    if (t <= 0) return check_new_tag(EntityKind::Physical, t, false).error();
+  } else {
+    // A name alone reuses the group of that name in this dimension, else takes 1 + the
+    // largest physical tag of any dimension.
+    for (const auto& [key, g] : physicals_)
+      if (g.dim == dim && g.name == name) t = g.tag;
+    if (!t) {
+      int m = 0;
+      for (const auto& [key, g] : physicals_) m = std::max(m, g.tag);
+      t = m + 1;
+    }
+  }
+  auto it = physicals_.find({dim, t});
+  if (op == PhysicalOp::Assign) {
+    if (it != physicals_.end())
+      return make_error(GeoErrorKind::DuplicateTag, EntityKind::Physical, {t},
+                        fmt::format("physical {} {} already exists", dim == 0 ? "point" : dim == 1 ? "curve" : dim == 2 ? "surface" : "volume", t));
+    PhysicalGroup g;
+    g.dim = dim;
+    g.tag = t;
+    g.name = name;
+    g.entities = entities;
+    physicals_.emplace(std::make_pair(dim, t), std::move(g));
+    return t;
+  }
+  if (it == physicals_.end()) {
+    if (op == PhysicalOp::Remove) return missing(EntityKind::Physical, t, {}, "");
+    PhysicalGroup g;   // += creates the group, as Gmsh does
+    g.dim = dim;
+    g.tag = t;
+    g.name = name;
+    it = physicals_.emplace(std::make_pair(dim, t), std::move(g)).first;
+  }
+  auto& list = it->second.entities;
+  if (op == PhysicalOp::Add) {
+    list.insert(list.end(), entities.begin(), entities.end());
+  } else {
+    for (int e : entities) {
+      auto f = std::find(list.begin(), list.end(), e);
+      if (f != list.end()) list.erase(f);
+    }
+  }
+  return t;
+}
+
+GeoStatus Model::embed(int dim, const std::vector<int>& tags_in, int surface_tag) {
+  auto it = surfaces_.find(surface_tag);
+  if (it == surfaces_.end()) return missing(EntityKind::Surface, surface_tag, {}, " (embedding target)");
+  for (int t : tags_in) {
+    if (dim == 0 && !vertex(t)) return missing(EntityKind::Point, t, {surface_tag}, fmt::format(" embedded in surface {}", surface_tag));
+    if (dim == 1 && !curve(std::abs(t))) return missing(EntityKind::Curve, t, {surface_tag}, fmt::format(" embedded in surface {}", surface_tag));
+  }
+  if (dim != 0 && dim != 1)
+    return make_error(GeoErrorKind::BadArgument, EntityKind::Surface, {surface_tag}, "only points and curves can be embedded in a surface");
+  auto& list = dim == 0 ? it->second.embedded_points : it->second.embedded_curves;
+  for (int t : tags_in)
+    if (std::find(list.begin(), list.end(), std::abs(t)) == list.end()) list.push_back(std::abs(t));
+  return {};
+}
+
+// ---- queries ----
+
+GeoResult<std::vector<DimTag>> Model::boundary(const std::vector<DimTag>& entities, bool combined) const {
+  std::vector<DimTag> raw;
+  for (const DimTag& e : entities) {
+    const int a = std::abs(e.tag);
+    if (e.dim == 0) {
+      if (!vertex(a)) return missing(EntityKind::Point, a, {}, " in Boundary");
+    } else if (e.dim == 1) {
+      const ModelCurve* c = curve(a);
+      if (!c) return missing(EntityKind::Curve, e.tag, {}, " in Boundary");
+      // Oriented: the start point counts negatively, the end positively.
+      const int b = e.tag > 0 ? c->begin : c->end, f = e.tag > 0 ? c->end : c->begin;
+      raw.push_back({0, -b});
+      raw.push_back({0, f});
+    } else if (e.dim == 2) {
+      const ModelSurface* s = surface(a);
+      if (!s) return missing(EntityKind::Surface, e.tag, {}, " in Boundary");
+      for (int l : s->loops) {
+        const auto& cs = loops_.at(std::abs(l)).curves;
+        const int sign = (l > 0) == (e.tag > 0) ? 1 : -1;
+        if (sign > 0)
+          for (int c : cs) raw.push_back({1, c});
+        else
+          for (auto it = cs.rbegin(); it != cs.rend(); ++it) raw.push_back({1, -*it});
+      }
+    } else {
+      return make_error(GeoErrorKind::BadArgument, EntityKind::None, {e.tag}, "Boundary of a volume is not supported by this kernel");
+    }
+  }
+  std::vector<DimTag> out;
+  if (!combined) {
+    // Gmsh prints point tags unsigned and keeps curve signs.
+    for (DimTag d : raw) out.push_back({d.dim, d.dim == 0 ? std::abs(d.tag) : d.tag});
+    return out;
+  }
+  // Combined: oriented sum; an entity seen with both orientations cancels. Output keeps the
+  // order of first appearance (deterministic).
+  std::vector<std::pair<DimTag, int>> sums;   // (|entity|, signed count)
+  std::map<std::pair<int, int>, std::size_t> index;
+  for (DimTag d : raw) {
+    const DimTag key{d.dim, std::abs(d.tag)};
+    const int s = d.tag > 0 ? 1 : -1;
+    auto [it, fresh] = index.emplace(std::make_pair(key.dim, key.tag), sums.size());
+    if (fresh) sums.push_back({key, s});
+    else sums[it->second].second += s;
+  }
+  for (const auto& [key, count] : sums) {
+    if (count == 0) continue;
+    out.push_back({key.dim, key.dim == 0 ? key.tag : (count > 0 ? key.tag : -key.tag)});
+  }
+  return out;
+}
+
+}  // namespace sm::geo

@@ -1,0 +1,205 @@
+// The boundary representation (paper section 2): model vertices, curves, curve loops, plane
+// surfaces, surface geometries (PolarSphere, lon/lat Sphere), physical groups, with Gmsh
+// 4.8.4's tag rules. The interpreter fills it statement by statement; the mesher reads it.
+#pragma once
+
+#include "geo/curve.h"
+#include "geo/error.h"
+#include "geo/surface_geometry.h"
+
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace sm::geo {
+
+/// Gmsh's "no prescribed size" (MAX_LC): a missing or zero lc.
+inline constexpr double kMaxLc = 1e22;
+
+struct ModelVertex {
+  int tag = 0;
+  Vec3 xyz;            // position in space (on the geometry when geometry != 0)
+  int geometry = 0;    // surface geometry tag the point was defined on, 0: Euclidean
+  Vec2 uv;             // its parameters on that geometry
+  double lc = kMaxLc;  // prescribed mesh size
+};
+
+struct ModelCurve {
+  int tag = 0;
+  CurveKind kind = CurveKind::Line;
+  std::vector<int> points;            // control vertex tags, as written
+  std::optional<Vec3> plane_normal;   // Circle/Ellipse Plane{} clause
+  int geometry = 0;                   // all control points on this geometry (else 0)
+  int begin = 0, end = 0;             // bounding vertices (first / last control point)
+  std::optional<Curve> shape;         // the evaluator, rebuilt whenever a point moves
+
+  bool periodic() const { return begin == end; }
+};
+
+struct ModelCurveLoop {
+  int tag = 0;
+  std::vector<int> curves;   // signed curve tags, in chained order
+  bool reordered = false;    // Gmsh-style reordering changed the written order
+};
+
+struct ModelSurface {
+  int tag = 0;
+  std::vector<int> loops;            // signed loop tags: [0] outer boundary, then holes
+  int geometry = 0;                  // parametric on this surface geometry (0: planar)
+  std::vector<int> embedded_points;  // Point{...} In Surface{tag}
+  std::vector<int> embedded_curves;  // Curve{...} In Surface{tag}
+};
+
+struct PhysicalGroup {
+  int dim = 0;
+  int tag = 0;
+  std::string name;
+  std::vector<int> entities;   // signed for curves/surfaces (orientation in MSH 2)
+};
+
+struct DimTag {
+  int dim = 0;
+  int tag = 0;   // signed for curves where orientation matters
+  friend bool operator==(DimTag a, DimTag b) { return a.dim == b.dim && a.tag == b.tag; }
+};
+
+struct BoundingBox {
+  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  bool empty() const { return lo.x > hi.x; }
+  double diagonal() const { return empty() ? 0.0 : norm(hi - lo); }
+  void add(Vec3 p);
+};
+
+/// Geometry.* options the kernel needs (plain data: the interpreter copies them in).
+struct ModelOptions {
+  double tolerance = 1e-8;     // Geometry.Tolerance: relative to the bounding box diagonal
+  bool old_new_reg = true;     // Geometry.OldNewReg: newl/newc/newll/news return newreg
+  bool auto_coherence = true;  // Geometry.AutoCoherence: Coherence after every transform
+};
+
+enum class PhysicalOp { Assign, Add, Remove };
+
+class Model {
+ public:
+  ModelOptions& options() { return options_; }
+  const ModelOptions& options() const { return options_; }
+
+  // ---- surface geometries ("PolarSphere(g) = {c, p};", "Sphere(g) = {c, p};") ----
+  /// Radius |p - c|; both points must exist and be Euclidean. Makes g the current geometry.
+  GeoStatus add_polar_sphere(int tag, int centre_point, int pole_point);
+  GeoStatus add_lonlat_sphere(int tag, int centre_point, int pole_point);
+  /// "Coordinates Surface g;"
+  GeoStatus set_current_geometry(int tag);
+  /// "Euclidian Coordinates;"
+  void set_euclidean() { current_geometry_ = 0; }
+  int current_geometry() const { return current_geometry_; }
+  const SurfaceGeometry* geometry(int tag) const;
+  const std::map<int, SurfaceGeometry>& geometries() const { return geometries_; }
+
+  // ---- entities ----
+  /// "Point(t) = {x, y, z, lc};": with a current geometry, (x, y) are its (u, v) and z is
+  /// ignored. lc <= 0 means no size (kMaxLc).
+  GeoStatus add_point(int tag, Vec3 coords, double lc = 0);
+  GeoStatus add_point_on_geometry(int tag, int geometry, Vec2 uv, double lc = 0);
+  /// Line, Spline, BSpline, Bezier (>= 2 points), Circle (3), Ellipse (3 or 4).
+  GeoStatus add_curve(int tag, CurveKind kind, const std::vector<int>& points,
+                      std::optional<Vec3> plane_normal = std::nullopt);
+  /// "Curve Loop(t) = {...};": must close; reordered as Gmsh does when the signs are
+  /// consistent; a loop may hold several closed chains (Gmsh's "subloops").
+  GeoStatus add_curve_loop(int tag, const std::vector<int>& curves);
+  /// "Plane Surface(t) = {outer, holes...};": every hole inside the outer loop, no curve
+  /// shared between loops; parametric on a geometry when all boundary curves lie on it.
+  GeoStatus add_plane_surface(int tag, const std::vector<int>& loops);
+  /// "Physical Point|Curve|Surface(tag | "name" | "name", tag) =|+=|-= {...};". Returns
+  /// the group's tag (Gmsh's auto-tag: 1 + the largest physical tag, all dimensions).
+  GeoResult<int> add_physical(int dim, std::optional<int> tag, const std::string& name,
+                              const std::vector<int>& entities, PhysicalOp op = PhysicalOp::Assign);
+  /// "Point{...} In Surface{s};" (dim 0) and "Curve{...} In Surface{s};" (dim 1).
+  GeoStatus embed(int dim, const std::vector<int>& tags, int surface);
+  /// "MeshSize{points} = lc;"
+  GeoStatus set_mesh_size(const std::vector<int>& points, double lc);
+
+  // ---- editing ----
+  /// "<Recursive> Delete {...}": an entity used by a higher-dimensional one is skipped
+  /// (returned in `skipped`), as in Gmsh; Recursive also deletes the sub-entities that are
+  /// no longer used.
+  GeoStatus remove(const std::vector<DimTag>& entities, bool recursive, std::vector<DimTag>* skipped = nullptr);
+  /// "Coherence;": merges points closer than tolerance x bounding-box diagonal (the lowest
+  /// tag survives), then curves with the same kind and control points. Returns the number
+  /// of entities merged.
+  int coherence();
+  /// "Duplicata{...}": copies (new tags, in order), sharing copied points between copied
+  /// curves and copied curves between copied surfaces. Returns the new entities.
+  GeoResult<std::vector<DimTag>> duplicate(const std::vector<DimTag>& entities);
+  GeoStatus translate(const std::vector<DimTag>& entities, Vec3 d);
+  GeoStatus rotate(const std::vector<DimTag>& entities, Vec3 axis, Vec3 point, double angle);
+  GeoStatus dilate(const std::vector<DimTag>& entities, Vec3 centre, Vec3 factors);
+  /// Mirror in the plane a x + b y + c z + d = 0.
+  GeoStatus symmetry(const std::vector<DimTag>& entities, double a, double b, double c, double d);
+  /// "Split Curve{c} Point{...};": pieces between the listed control points (a periodic
+  /// curve is rotated to start at the first of them); the curve is replaced by its pieces,
+  /// also inside curve loops. Returns the new curve tags.
+  GeoResult<std::vector<int>> split_curve(int curve, const std::vector<int>& points);
+
+  // ---- queries ----
+  /// "Boundary{...}" (combined = false) / "CombinedBoundary{...}" (shared entities cancel).
+  GeoResult<std::vector<DimTag>> boundary(const std::vector<DimTag>& entities, bool combined) const;
+  std::vector<int> tags(int dim) const;   // "Point{:}", "Curve{:}", "Surface{:}"
+  std::vector<int> loop_tags() const;
+  BoundingBox bounding_box() const;
+
+  const ModelVertex* vertex(int tag) const;
+  const ModelCurve* curve(int tag) const;   // tag > 0
+  const ModelCurveLoop* curve_loop(int tag) const;
+  const ModelSurface* surface(int tag) const;
+  const PhysicalGroup* physical(int dim, int tag) const;
+  const std::map<int, ModelVertex>& vertices() const { return vertices_; }
+  const std::map<int, ModelCurve>& curves() const { return curves_; }
+  const std::map<int, ModelCurveLoop>& curve_loops() const { return loops_; }
+  const std::map<int, ModelSurface>& surfaces() const { return surfaces_; }
+  const std::map<std::pair<int, int>, PhysicalGroup>& physicals() const { return physicals_; }
+
+  // ---- Gmsh's next-tag variables ----
+  int new_point_tag() const { return max_tag_[0] + 1; }                           // newp
+  int new_curve_tag() const;                                                    // newl, newc
+  int new_loop_tag() const;                                                     // newll
+  int new_surface_tag() const;                                                  // news
+  int new_reg() const;                                                          // newreg
+  /// "SetMaxTag Point(n);" etc. (dim 0..3; -1: curve loops).
+  void set_max_tag(int dim, int tag);
+
+ private:
+  GeoStatus add_sphere_geometry(int tag, int centre_point, int pole_point, bool polar);
+  GeoStatus check_new_tag(EntityKind kind, int tag, bool exists) const;
+  GeoResult<Curve> build_shape(const ModelCurve& c) const;
+  GeoStatus rebuild_curves_using(const std::vector<int>& moved_points);
+  void bump_max(int slot, int tag);
+  void on_delete(int slot, int tag);
+  std::vector<int> points_of(const std::vector<DimTag>& entities) const;
+  GeoStatus transform_points(const std::vector<DimTag>& entities, const std::array<double, 12>& m);
+  bool point_in_use(int tag) const;
+  bool curve_in_use(int tag) const;
+  bool loop_in_use(int tag) const;
+  void drop_from_groups(int dim, int tag);
+  void delete_point(int tag);
+  void delete_curve(int tag, bool recursive);
+  void delete_loop(int tag, bool recursive);
+  void delete_surface(int tag, bool recursive);
+
+  ModelOptions options_;
+  std::map<int, ModelVertex> vertices_;
+  std::map<int, ModelCurve> curves_;
+  std::map<int, ModelCurveLoop> loops_;
+  std::map<int, ModelSurface> surfaces_;
+  std::map<int, SurfaceGeometry> geometries_;
+  std::map<std::pair<int, int>, PhysicalGroup> physicals_;   // (dim, tag)
+  int current_geometry_ = 0;
+  // High-water marks as Gmsh keeps them: slots 0..3 = dims, 4 = curve loops.
+  std::array<int, 5> max_tag_{0, 0, 0, 0, 0};
+  int max_physical_tag_ = 0;
+};
+
+}  // namespace sm::geo

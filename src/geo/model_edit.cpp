@@ -1,0 +1,439 @@
+// Model editing with Gmsh 4.8.4's semantics: Delete (skipped when in use, Recursive),
+// Coherence, Duplicata, Translate/Rotate/Dilate/Symmetry (with AutoCoherence), Split Curve.
+#include "geo/model.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace sm::geo {
+
+namespace {
+
+constexpr int kLoopSlot = 4;
+
+bool contains(const std::vector<int>& v, int x) { return std::find(v.begin(), v.end(), x) != v.end(); }
+
+}  // namespace
+
+// ---- usage ----
+
+bool Model::point_in_use(int tag) const {
+  for (const auto& [t, c] : curves_)
+    if (contains(c.points, tag)) return true;
+  for (const auto& [t, s] : surfaces_)
+    if (contains(s.embedded_points, tag)) return true;
+  return false;
+}
+
+bool Model::curve_in_use(int tag) const {
+  for (const auto& [t, l] : loops_)
+    for (int c : l.curves)
+      if (std::abs(c) == tag) return true;
+  for (const auto& [t, s] : surfaces_)
+    if (contains(s.embedded_curves, tag)) return true;
+  return false;
+}
+
+bool Model::loop_in_use(int tag) const {
+  for (const auto& [t, s] : surfaces_)
+    for (int l : s.loops)
+      if (std::abs(l) == tag) return true;
+  return false;
+}
+
+// Deleted entities leave their physical groups; a group left empty disappears (as in Gmsh).
+void Model::drop_from_groups(int dim, int tag) {
+  for (auto it = physicals_.begin(); it != physicals_.end();) {
+    auto& e = it->second.entities;
+    if (it->second.dim == dim) e.erase(std::remove_if(e.begin(), e.end(), [tag](int x) { return std::abs(x) == tag; }), e.end());
+    it = (it->second.dim == dim && e.empty()) ? physicals_.erase(it) : std::next(it);
+  }
+}
+
+void Model::delete_point(int tag) {
+  vertices_.erase(tag);
+  drop_from_groups(0, tag);
+  on_delete(0, tag);
+}
+
+void Model::delete_curve(int tag, bool recursive) {
+  const std::vector<int> pts = curves_.at(tag).points;
+  curves_.erase(tag);
+  drop_from_groups(1, tag);
+  on_delete(1, tag);
+  if (!recursive) return;
+  for (int p : pts)
+    if (vertices_.count(p) && !point_in_use(p)) delete_point(p);
+}
+
+void Model::delete_loop(int tag, bool recursive) {
+  const std::vector<int> cs = loops_.at(tag).curves;
+  loops_.erase(tag);
+  on_delete(kLoopSlot, tag);
+  if (!recursive) return;
+  for (int c : cs)
+    if (curves_.count(std::abs(c)) && !curve_in_use(std::abs(c))) delete_curve(std::abs(c), true);
+}
+
+void Model::delete_surface(int tag, bool recursive) {
+  const ModelSurface s = surfaces_.at(tag);
+  surfaces_.erase(tag);
+  drop_from_groups(2, tag);
+  on_delete(2, tag);
+  if (!recursive) return;
+  for (int l : s.loops)
+    if (loops_.count(std::abs(l)) && !loop_in_use(std::abs(l))) delete_loop(std::abs(l), true);
+  for (int c : s.embedded_curves)
+    if (curves_.count(c) && !curve_in_use(c)) delete_curve(c, true);
+  for (int p : s.embedded_points)
+    if (vertices_.count(p) && !point_in_use(p)) delete_point(p);
+}
+
+GeoStatus Model::remove(const std::vector<DimTag>& entities, bool recursive, std::vector<DimTag>* skipped) {
+  for (const DimTag& e : entities) {
+    const int t = std::abs(e.tag);
+    const bool exists = (e.dim == 0 && vertices_.count(t)) || (e.dim == 1 && curves_.count(t)) ||
+                        (e.dim == 2 && surfaces_.count(t));
+    if (!exists)
+      return make_error(GeoErrorKind::MissingEntity, e.dim >= 0 && e.dim <= 2 ? static_cast<EntityKind>(e.dim) : EntityKind::None,
+                        {e.tag}, fmt::format("cannot delete unknown {} {}", e.dim == 0 ? "point" : e.dim == 1 ? "curve" : "surface", t));
+  }
+  for (const DimTag& e : entities) {
+    const int t = std::abs(e.tag);
+    bool used = false;
+    if (e.dim == 0 && vertices_.count(t)) {
+      used = point_in_use(t);
+      if (!used) delete_point(t);
+    } else if (e.dim == 1 && curves_.count(t)) {
+      used = curve_in_use(t);
+      if (!used) delete_curve(t, recursive);
+    } else if (e.dim == 2 && surfaces_.count(t)) {
+      delete_surface(t, recursive);
+    }
+    if (used && skipped) skipped->push_back(e);
+  }
+  return {};
+}
+
+// ---- coherence ----
+
+int Model::coherence() {
+  if (vertices_.empty()) return 0;
+  const double diag = bounding_box().diagonal();
+  const double eps = options_.tolerance * (diag > 0 ? diag : 1.0);
+  // Points: union-find over pairs closer than eps in every coordinate (Gmsh's comparison),
+  // found by a sweep in x; each cluster keeps its lowest tag.
+  std::vector<const ModelVertex*> pts;
+  pts.reserve(vertices_.size());
+  for (const auto& [t, v] : vertices_) pts.push_back(&v);
+  std::vector<std::size_t> order(pts.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return pts[a]->xyz.x < pts[b]->xyz.x || (pts[a]->xyz.x == pts[b]->xyz.x && a < b);
+  });
+  std::vector<std::size_t> parent(pts.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](std::size_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (std::size_t a = 0; a < order.size(); ++a)
+    for (std::size_t b = a + 1; b < order.size(); ++b) {
+      const Vec3 p = pts[order[a]]->xyz, q = pts[order[b]]->xyz;
+      if (q.x - p.x > eps) break;
+      if (std::abs(q.y - p.y) <= eps && std::abs(q.z - p.z) <= eps) {
+        const std::size_t ra = find(order[a]), rb = find(order[b]);
+        if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);   // pts is in tag order
+      }
+    }
+  std::map<int, int> replace;   // merged point -> survivor
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const std::size_t r = find(i);
+    if (r != i) replace[pts[i]->tag] = pts[r]->tag;
+  }
+  int merged = 0;
+  std::vector<int> touched;
+  for (auto& [t, c] : curves_) {
+    bool hit = false;
+    for (int& p : c.points)
+      if (auto it = replace.find(p); it != replace.end()) {
+        p = it->second;
+        hit = true;
+      }
+    if (hit) {
+      c.begin = c.points.front();
+      c.end = c.points.back();
+      touched.push_back(t);
+    }
+  }
+  for (auto& [t, s] : surfaces_)
+    for (int& p : s.embedded_points)
+      if (auto it = replace.find(p); it != replace.end()) p = it->second;
+  for (auto& [key, g] : physicals_)
+    if (g.dim == 0)
+      for (int& p : g.entities)
+        if (auto it = replace.find(p); it != replace.end()) p = it->second;
+  for (const auto& [from, to] : replace) {
+    vertices_.erase(from);
+    ++merged;
+  }
+  for (int t : touched) {
+    auto shape = build_shape(curves_.at(t));
+    if (shape) curves_.at(t).shape = std::move(*shape);
+  }
+  // Curves with the same kind, control points and plane: keep the lowest tag.
+  std::map<int, int> curve_replace;
+  for (auto a = curves_.begin(); a != curves_.end(); ++a) {
+    if (curve_replace.count(a->first)) continue;
+    for (auto b = std::next(a); b != curves_.end(); ++b) {
+      if (curve_replace.count(b->first)) continue;
+      const ModelCurve &x = a->second, &y = b->second;
+      const bool same_normal = x.plane_normal.has_value() == y.plane_normal.has_value() &&
+                               (!x.plane_normal || *x.plane_normal == *y.plane_normal);
+      if (x.kind == y.kind && x.points == y.points && same_normal) curve_replace[b->first] = a->first;
+    }
+  }
+  auto map_curve = [&](int& c) {
+    if (auto it = curve_replace.find(std::abs(c)); it != curve_replace.end()) c = c > 0 ? it->second : -it->second;
+  };
+  for (auto& [t, l] : loops_)
+    for (int& c : l.curves) map_curve(c);
+  for (auto& [t, s] : surfaces_)
+    for (int& c : s.embedded_curves) map_curve(c);
+  for (auto& [key, g] : physicals_)
+    if (g.dim == 1)
+      for (int& c : g.entities) map_curve(c);
+  for (const auto& [from, to] : curve_replace) {
+    curves_.erase(from);
+    ++merged;
+  }
+  return merged;
+}
+
+// ---- duplicata ----
+
+GeoResult<std::vector<DimTag>> Model::duplicate(const std::vector<DimTag>& entities) {
+  for (const DimTag& e : entities) {
+    const int t = std::abs(e.tag);
+    if ((e.dim == 0 && !vertices_.count(t)) || (e.dim == 1 && !curves_.count(t)) || (e.dim == 2 && !surfaces_.count(t)) ||
+        e.dim < 0 || e.dim > 2)
+      return make_error(GeoErrorKind::MissingEntity, e.dim >= 0 && e.dim <= 2 ? static_cast<EntityKind>(e.dim) : EntityKind::None,
+                        {e.tag}, fmt::format("cannot duplicate unknown entity {} of dimension {}", t, e.dim));
+  }
+  std::map<int, int> point_copy, curve_copy;
+  auto copy_point = [&](int p) {
+    if (auto it = point_copy.find(p); it != point_copy.end()) return it->second;
+    ModelVertex v = vertices_.at(p);
+    v.tag = new_point_tag();
+    vertices_.emplace(v.tag, v);
+    bump_max(0, v.tag);
+    point_copy[p] = v.tag;
+    return v.tag;
+  };
+  auto copy_curve = [&](int c) {
+    if (auto it = curve_copy.find(c); it != curve_copy.end()) return it->second;
+    ModelCurve n = curves_.at(c);
+    for (int& p : n.points) p = copy_point(p);
+    n.begin = n.points.front();
+    n.end = n.points.back();
+    n.tag = new_curve_tag();
+    const int tag = n.tag;
+    curves_.emplace(tag, std::move(n));
+    bump_max(1, tag);
+    curve_copy[c] = tag;
+    return tag;
+  };
+  std::vector<DimTag> out;
+  for (const DimTag& e : entities) {
+    const int t = std::abs(e.tag);
+    if (e.dim == 0) {
+      out.push_back({0, copy_point(t)});
+    } else if (e.dim == 1) {
+      out.push_back({1, copy_curve(t)});
+    } else {
+      ModelSurface s = surfaces_.at(t);
+      for (int& l : s.loops) {
+        ModelCurveLoop nl = loops_.at(std::abs(l));
+        for (int& c : nl.curves) c = c > 0 ? copy_curve(c) : -copy_curve(-c);
+        nl.tag = new_loop_tag();
+        const int lt = nl.tag;
+        loops_.emplace(lt, std::move(nl));
+        bump_max(kLoopSlot, lt);
+        l = l > 0 ? lt : -lt;
+      }
+      for (int& p : s.embedded_points) p = copy_point(p);
+      for (int& c : s.embedded_curves) c = copy_curve(c);
+      s.tag = new_surface_tag();
+      const int st = s.tag;
+      surfaces_.emplace(st, std::move(s));
+      bump_max(2, st);
+      out.push_back({2, st});
+    }
+  }
+  return out;
+}
+
+// ---- transformations ----
+
+std::vector<int> Model::points_of(const std::vector<DimTag>& entities) const {
+  std::vector<int> pts;
+  auto add_curve = [&](int c) {
+    const ModelCurve& mc = curves_.at(std::abs(c));
+    pts.insert(pts.end(), mc.points.begin(), mc.points.end());
+  };
+  for (const DimTag& e : entities) {
+    const int t = std::abs(e.tag);
+    if (e.dim == 0) {
+      pts.push_back(t);
+    } else if (e.dim == 1) {
+      add_curve(t);
+    } else if (e.dim == 2) {
+      const ModelSurface& s = surfaces_.at(t);
+      for (int l : s.loops)
+        for (int c : loops_.at(std::abs(l)).curves) add_curve(c);
+      for (int c : s.embedded_curves) add_curve(c);
+      pts.insert(pts.end(), s.embedded_points.begin(), s.embedded_points.end());
+    }
+  }
+  std::sort(pts.begin(), pts.end());
+  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+  return pts;
+}
+
+// m is a row-major 3x4 affine map [A | b]: x' = A x + b. Each point moves once, however many
+// of the entities use it. A point on a surface geometry stays on it: its moved position is
+// projected back (Gmsh moves the 3D position off the sphere and keeps the old (u,v)).
+GeoStatus Model::transform_points(const std::vector<DimTag>& entities, const std::array<double, 12>& m) {
+  for (const DimTag& e : entities) {
+    const int t = std::abs(e.tag);
+    if ((e.dim == 0 && !vertices_.count(t)) || (e.dim == 1 && !curves_.count(t)) || (e.dim == 2 && !surfaces_.count(t)) ||
+        e.dim < 0 || e.dim > 2)
+      return make_error(GeoErrorKind::MissingEntity, e.dim >= 0 && e.dim <= 2 ? static_cast<EntityKind>(e.dim) : EntityKind::None,
+                        {e.tag}, fmt::format("cannot transform unknown entity {} of dimension {}", t, e.dim));
+  }
+  const std::vector<int> pts = points_of(entities);
+  for (int p : pts) {
+    ModelVertex& v = vertices_.at(p);
+    const Vec3 x = v.xyz;
+    v.xyz = {m[0] * x.x + m[1] * x.y + m[2] * x.z + m[3], m[4] * x.x + m[5] * x.y + m[6] * x.z + m[7],
+             m[8] * x.x + m[9] * x.y + m[10] * x.z + m[11]};
+    if (v.geometry) {
+      const SurfaceGeometry& g = geometries_.at(v.geometry);
+      v.uv = g.param(v.xyz);
+      v.xyz = g.point(v.uv);
+    }
+  }
+  GeoStatus s = rebuild_curves_using(pts);
+  if (options_.auto_coherence) coherence();
+  return s;
+}
+
+GeoStatus Model::translate(const std::vector<DimTag>& entities, Vec3 d) {
+  return transform_points(entities, {1, 0, 0, d.x, 0, 1, 0, d.y, 0, 0, 1, d.z});
+}
+
+GeoStatus Model::rotate(const std::vector<DimTag>& entities, Vec3 axis, Vec3 p, double angle) {
+  const double n = norm(axis);
+  if (!(n > 0))
+    return make_error(GeoErrorKind::BadArgument, EntityKind::None, {}, "rotation axis has zero length");
+  const Vec3 k = axis / n;
+  const double c = std::cos(angle), s = std::sin(angle), t = 1 - c;
+  // Rodrigues' rotation matrix about the unit axis k.
+  const double r[9] = {c + k.x * k.x * t,       k.x * k.y * t - k.z * s, k.x * k.z * t + k.y * s,
+                       k.y * k.x * t + k.z * s, c + k.y * k.y * t,       k.y * k.z * t - k.x * s,
+                       k.z * k.x * t - k.y * s, k.z * k.y * t + k.x * s, c + k.z * k.z * t};
+  // x' = p + R (x - p) = R x + (p - R p)
+  const Vec3 rp{r[0] * p.x + r[1] * p.y + r[2] * p.z, r[3] * p.x + r[4] * p.y + r[5] * p.z,
+                r[6] * p.x + r[7] * p.y + r[8] * p.z};
+  const Vec3 b = p - rp;
+  return transform_points(entities, {r[0], r[1], r[2], b.x, r[3], r[4], r[5], b.y, r[6], r[7], r[8], b.z});
+}
+
+GeoStatus Model::dilate(const std::vector<DimTag>& entities, Vec3 c, Vec3 f) {
+  return transform_points(entities, {f.x, 0, 0, c.x - f.x * c.x, 0, f.y, 0, c.y - f.y * c.y, 0, 0, f.z, c.z - f.z * c.z});
+}
+
+GeoStatus Model::symmetry(const std::vector<DimTag>& entities, double a, double b, double c, double d) {
+  const double n2 = a * a + b * b + c * c;
+  if (!(n2 > 0))
+    return make_error(GeoErrorKind::BadArgument, EntityKind::None, {}, "symmetry plane has a zero normal");
+  // x' = x - 2 (n.x + d) n / |n|^2
+  const double k = 2.0 / n2;
+  return transform_points(entities, {1 - k * a * a, -k * a * b, -k * a * c, -k * a * d,
+                                     -k * b * a, 1 - k * b * b, -k * b * c, -k * b * d,
+                                     -k * c * a, -k * c * b, 1 - k * c * c, -k * c * d});
+}
+
+// ---- split ----
+
+GeoResult<std::vector<int>> Model::split_curve(int tag, const std::vector<int>& split_points) {
+  auto it = curves_.find(tag);
+  if (it == curves_.end()) return make_error(GeoErrorKind::MissingEntity, EntityKind::Curve, {tag}, fmt::format("cannot split unknown curve {}", tag));
+  const ModelCurve old = it->second;
+  if (old.kind == CurveKind::Circle || old.kind == CurveKind::Ellipse)
+    return make_error(GeoErrorKind::BadArgument, EntityKind::Curve, {tag},
+                      fmt::format("cannot split {} {}: only Line, Spline, BSpline and Bezier curves split at control points",
+                                  to_string(old.kind), tag));
+  for (int p : split_points)
+    if (!contains(old.points, p))
+      return make_error(GeoErrorKind::BadArgument, EntityKind::Curve, {tag, p},
+                        fmt::format("cannot split curve {} at point {}: not one of its control points", tag, p));
+  std::vector<int> pts = old.points;
+  if (old.periodic() && pts.size() > 2 && !split_points.empty()) {
+    // Rotate the closed list to start at the first split point (Gmsh does the same).
+    pts.pop_back();
+    const auto first = std::find(pts.begin(), pts.end(), split_points.front());
+    std::rotate(pts.begin(), first, pts.end());
+    pts.push_back(pts.front());
+  }
+  std::vector<std::vector<int>> pieces(1);
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    pieces.back().push_back(pts[i]);
+    if (i > 0 && i + 1 < pts.size() && contains(split_points, pts[i])) pieces.push_back({pts[i]});
+  }
+  // Build the pieces first so that a failure leaves the model unchanged.
+  std::vector<ModelCurve> made;
+  int next = new_curve_tag();
+  for (const auto& piece : pieces) {
+    ModelCurve c = old;
+    c.tag = next++;
+    c.points = piece;
+    c.begin = piece.front();
+    c.end = piece.back();
+    auto shape = build_shape(c);
+    if (!shape) return shape.error();
+    c.shape = std::move(*shape);
+    made.push_back(std::move(c));
+  }
+  curves_.erase(tag);
+  on_delete(1, tag);
+  std::vector<int> out;
+  for (ModelCurve& c : made) {
+    out.push_back(c.tag);
+    bump_max(1, c.tag);
+    curves_.emplace(c.tag, std::move(c));
+  }
+  auto replace_in = [&](std::vector<int>& list) {
+    std::vector<int> r;
+    for (int c : list) {
+      if (std::abs(c) != tag) {
+        r.push_back(c);
+      } else if (c > 0) {
+        r.insert(r.end(), out.begin(), out.end());
+      } else {
+        for (auto o = out.rbegin(); o != out.rend(); ++o) r.push_back(-*o);
+      }
+    }
+    list = std::move(r);
+  };
+  for (auto& [t, l] : loops_) replace_in(l.curves);
+  for (auto& [key, g] : physicals_)
+    if (g.dim == 1) replace_in(g.entities);
+  for (auto& [t, s] : surfaces_) replace_in(s.embedded_curves);
+  return out;
+}
+
+}  // namespace sm::geo
