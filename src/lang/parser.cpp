@@ -101,6 +101,13 @@ void Parser::expect_semicolon() {
   if (accept(Tok::Semicolon)) return;
   const Token& t = peek();
   if (t.kind == Tok::Error || (t.kind == Tok::Eof && lexer_.truncated())) return;
+  if (t.kind == Tok::RBrace || t.kind == Tok::RParen || t.kind == Tok::RBracket) {
+    // A stray closer (`{1, 2}};`): one error at it, then skip to the ';'.
+    diags_.report(t.range, Diag::ExpectedToken, "';' after the statement", describe(t));
+    while (at(Tok::RBrace) || at(Tok::RParen) || at(Tok::RBracket)) advance();
+    accept(Tok::Semicolon);
+    return;
+  }
   diags_.report(SourceRange{prev_.range.file, prev_.range.end, prev_.range.end}, Diag::ExpectedSemicolon);
 }
 
@@ -114,9 +121,9 @@ bool Parser::is_statement_boundary(Tok k) const {
   }
 }
 
-// Panic mode: skip to just after the next ';' outside braces, or to a block
-// keyword, or to a '}' closing braces opened before the error. Always makes
-// progress past the statement's first token.
+// Panic mode: skip to just after the next ';' outside braces opened while
+// skipping, or to a block keyword. Always makes progress past the statement's
+// first token.
 void Parser::synchronize(std::size_t start_offset) {
   int brace_depth = 0;
   for (;;) {
@@ -125,10 +132,7 @@ void Parser::synchronize(std::size_t start_offset) {
     const bool progressed = t.range.begin > start_offset;
     if (progressed && brace_depth == 0 && is_statement_boundary(t.kind)) return;
     if (t.kind == Tok::LBrace) ++brace_depth;
-    if (t.kind == Tok::RBrace) {
-      if (brace_depth == 0 && progressed) return;
-      brace_depth = std::max(0, brace_depth - 1);
-    }
+    if (t.kind == Tok::RBrace) brace_depth = std::max(0, brace_depth - 1);
     advance();
     if (t.kind == Tok::Semicolon && brace_depth == 0) return;
   }
@@ -155,7 +159,7 @@ StmtId Parser::add(const Token& first, StmtNode node, SourceRange keyword) {
 ParseResult Parser::run() {
   errors_at_start_ = diags_.error_count();
   ParseResult result;
-  while (!at(Tok::Eof) && !diags_.too_many_errors()) {
+  while (!at(Tok::Eof) && !stopped()) {
     const Token& t = peek();
     if (t.kind == Tok::EndFor || t.kind == Tok::EndIf || t.kind == Tok::ElseIf || t.kind == Tok::Else ||
         t.kind == Tok::Return) {
@@ -194,7 +198,7 @@ bool Parser::at_block_end() {
 StmtList Parser::parse_block(const Token& opener, Block kind) {
   blocks_.push_back({kind, opener});
   StmtList body;
-  while (!diags_.too_many_errors()) {
+  while (!stopped()) {
     const Tok k = this->kind();
     if (k == Tok::Eof) break;
     if (at_block_end()) {
@@ -273,6 +277,13 @@ StmtId Parser::parse_statement() {
     default: break;
   }
   if (is_keyword(t.kind)) return parse_geometry_statement();
+  if (t.kind == Tok::RBrace || t.kind == Tok::RParen || t.kind == Tok::RBracket) {
+    // stray closers: one error for the whole run
+    diags_.report(t.range, Diag::ExpectedStatement, describe(t));
+    while (at(Tok::RBrace) || at(Tok::RParen) || at(Tok::RBracket)) advance();
+    accept(Tok::Semicolon);
+    return StmtId{};
+  }
   if (t.kind == Tok::Error) throw SyntaxError{};
   if (!(t.kind == Tok::Eof && lexer_.truncated())) diags_.report(t.range, Diag::ExpectedStatement, describe(t));
   throw SyntaxError{};
@@ -328,7 +339,7 @@ StmtId Parser::parse_if() {
     advance();
     accept(Tok::Semicolon);
   } else {
-    report_unclosed(diags_, peek(), describe(peek()), text(kw), kw.range, "EndIf", peek().kind == Tok::Eof && lexer_.truncated());
+    report_unclosed(diags_, peek(), describe(peek()), text(kw), kw.range, "EndIf", quiet_at_end());
   }
   return add(kw, std::move(node));
 }
@@ -365,7 +376,7 @@ StmtId Parser::parse_for() {
     advance();
     accept(Tok::Semicolon);
   } else {
-    report_unclosed(diags_, peek(), describe(peek()), text(kw), kw.range, "EndFor", peek().kind == Tok::Eof && lexer_.truncated());
+    report_unclosed(diags_, peek(), describe(peek()), text(kw), kw.range, "EndFor", quiet_at_end());
   }
   return add(kw, std::move(node));
 }
@@ -393,7 +404,7 @@ StmtId Parser::parse_macro() {
     advance();
     accept(Tok::Semicolon);
   } else {
-    report_unclosed(diags_, peek(), describe(peek()), text(kw), kw.range, "Return", peek().kind == Tok::Eof && lexer_.truncated());
+    report_unclosed(diags_, peek(), describe(peek()), text(kw), kw.range, "Return", quiet_at_end());
   }
   return add(kw, std::move(node));
 }

@@ -44,6 +44,11 @@ class Parser {
   std::string describe(const Token& t) const;
   void synchronize(std::size_t start_offset);
   bool is_statement_boundary(Tok k) const;
+  /// After the nesting limit or the error limit the rest of the file is skipped.
+  bool stopped() const { return depth_reported_ || diags_.too_many_errors(); }
+  /// No "unclosed block" error: the file was cut by an unterminated string or
+  /// comment, or parsing stopped.
+  bool quiet_at_end() { return stopped() || (peek().kind == Tok::Eof && lexer_.truncated()); }
 
   // ---- nesting depth
   struct DepthGuard {
