@@ -1,0 +1,36 @@
+// Cleaning of raw shoreline rings before coarsening (shared/data/README.md "Known
+// artefacts"): consecutive duplicates, zero-width spikes a->b->a, degenerate rings, and
+// vertices on the projection's singular point (the South Pole).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "coast/coastline.h"
+
+namespace sm::coast {
+
+enum class CleanAction {
+  Duplicate,      // consecutive copy of the previous vertex removed
+  Spike,          // vertex b of a -> b -> a removed (with the second a)
+  PoleVertex,     // vertex at lat -90 removed from a pole-closed ring (Natural Earth)
+  DegenerateRing, // ring with fewer than 3 distinct vertices (or a polyline < 2) dropped
+};
+
+struct CleanEntry {
+  CleanAction action;
+  std::size_t record;    // Ring::record
+  std::int64_t id;       // Ring::id
+  geo::LonLat where;     // the removed vertex, or the ring's first vertex
+};
+
+struct CleanReport {
+  std::vector<CleanEntry> entries;
+  std::size_t count(CleanAction a) const;
+  std::string summary() const;   // one line: counts per action
+};
+
+/// Cleans every ring in place; dropped rings are erased. Deterministic (ring order kept).
+CleanReport clean(Coastline& c);
+
+}  // namespace sm::coast

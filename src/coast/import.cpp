@@ -1,0 +1,297 @@
+// Import pipeline: filter -> clean -> orient -> clip -> coarsen -> (u,v) topology ->
+// repair -> model. Orientation convention: water on the left of every loop.
+#include "coast/import.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "coast/polygon2d.h"
+#include "coast/repair.h"
+
+namespace sm::coast {
+
+std::size_t ImportReport::count(RepairKind k) const {
+  std::size_t n = 0;
+  for (const auto& e : repair) n += e.kind == k;
+  return n;
+}
+
+std::vector<std::string> ImportReport::lines() const {
+  std::vector<std::string> out;
+  if (!clean.entries.empty()) out.push_back("cleaning: " + clean.summary());
+  std::size_t few = 0, small = 0;
+  for (const auto& d : dropped) (d.reason == DropReason::TooFewPoints ? few : small)++;
+  if (few + small > 0)
+    out.push_back(fmt::format("coarsening: {} rings too small for the accuracy and {} below MinArea dropped", few, small));
+  for (const auto& e : repair) {
+    const char* what = "";
+    switch (e.kind) {
+      case RepairKind::Refined: what = "original points put back on a crossing segment"; break;
+      case RepairKind::DroppedIsland: what = "island below the accuracy touching another coastline dropped"; break;
+      case RepairKind::CutSliver: what = "self-touching sliver of the source shoreline cut out"; break;
+      case RepairKind::MergedIslands: what = "islands merged across a strait narrower than the accuracy"; break;
+      case RepairKind::NarrowStrait: what = "strait narrower than the accuracy kept open"; break;
+      case RepairKind::OutsideWater: what = "island outside every water surface dropped"; break;
+    }
+    out.push_back(fmt::format("record {} (id {}) at lon {:.5f} lat {:.5f}: {}{}", e.record, e.id, e.where.lon,
+                              e.where.lat, what,
+                              e.kind == RepairKind::NarrowStrait ? fmt::format(" (width {:.0f} m)", e.value)
+                              : e.kind == RepairKind::Refined    ? fmt::format(" ({} points)", e.value)
+                                                                 : std::string()));
+  }
+  return out;
+}
+
+namespace {
+
+bool is_water_level(int level) { return level == 2 || level == 4; }
+
+WorkCurve make_curve(CoarseRing&& cr, bool open_boundary, const geo::PolarSphere& ps) {
+  WorkCurve w;
+  w.full = std::move(cr.ring.pts);
+  w.gamma = std::move(cr.gamma);
+  w.keep = std::move(cr.keep);
+  w.periodic = cr.ring.closed;
+  w.open_boundary = open_boundary;
+  w.record = cr.ring.record;
+  w.id = cr.ring.id;
+  w.uv.reserve(w.full.size());
+  for (auto p : w.full) w.uv.push_back(ps.param_from_lonlat(p));
+  return w;
+}
+
+void reverse_curve(WorkCurve& c) {
+  const auto n = static_cast<std::uint32_t>(c.full.size());
+  std::reverse(c.full.begin(), c.full.end());
+  std::reverse(c.uv.begin(), c.uv.end());
+  std::reverse(c.gamma.begin(), c.gamma.end());
+  for (auto& k : c.keep) k = n - 1 - k;
+  std::reverse(c.keep.begin(), c.keep.end());
+}
+
+}  // namespace
+
+Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
+  CoastModel model;
+  ImportReport& rep = model.report;
+  const geo::PolarSphere ps({0, 0, 0}, 1.0);
+
+  // 1. Levels.
+  std::vector<Ring> rings;
+  for (Ring& r : data.rings) {
+    const bool want = std::find(opt.levels.begin(), opt.levels.end(), r.level) != opt.levels.end() ||
+                      (opt.antarctica_level != 0 && r.level == opt.antarctica_level);
+    if (want) rings.push_back(std::move(r));
+  }
+  // 2. Cleaning and orientation.
+  {
+    Coastline c;
+    c.rings = std::move(rings);
+    rep.clean = clean(c);
+    rings = std::move(c.rings);
+  }
+  rep.reversed = orient_rings(rings);
+
+  // 3. Region clipping: which rings stay whole, which loops are made of pieces.
+  std::optional<LonLatBox> box = opt.region;
+  const bool has_open = std::any_of(rings.begin(), rings.end(), [](const Ring& r) { return !r.closed; });
+  if (!box && has_open) {
+    if (opt.use_file_region && data.region)
+      box = data.region;
+    else
+      return CoastError{data.file, -1, "the file holds open (cut) coastlines: a Region is needed to close them", {}};
+  }
+  std::vector<Ring> to_coarsen;                 // closed islands first, then loop pieces
+  std::vector<std::pair<std::size_t, std::size_t>> piece_span;   // per region loop: [first, last) in to_coarsen
+  std::vector<char> piece_is_boundary;
+  if (box) {
+    auto clipped = clip_to_region(rings, *box, opt.region_options);
+    if (!clipped) return clipped.error();
+    for (std::size_t i : clipped->inside) to_coarsen.push_back(rings[i]);
+    piece_is_boundary.assign(to_coarsen.size(), 0);
+    for (const RegionLoop& loop : clipped->loops) {
+      const std::size_t first = to_coarsen.size();
+      for (const RegionPiece& p : loop.pieces) {
+        Ring r;
+        r.pts = p.pts;
+        r.closed = loop.pieces.size() == 1;   // the box alone: one closed boundary curve
+        if (p.open_boundary) {
+          r.record = static_cast<std::size_t>(-1);
+          r.id = -1;
+        } else {
+          r.record = rings[p.ring].record;
+          r.id = rings[p.ring].id;
+          r.level = rings[p.ring].level;
+        }
+        to_coarsen.push_back(std::move(r));
+        piece_is_boundary.push_back(p.open_boundary ? 1 : 0);
+      }
+      piece_span.push_back({first, to_coarsen.size()});
+    }
+  } else {
+    to_coarsen = std::move(rings);
+    piece_is_boundary.assign(to_coarsen.size(), 0);
+  }
+
+  // 4. Coarsening (a closed region box that is a single curve may not be dropped).
+  CoarsenOptions co;
+  co.gamma = opt.gamma;
+  co.radius = opt.radius;
+  co.min_area_km2 = opt.min_area_km2;
+  co.min_points = opt.min_points;
+  const std::size_t n_whole = to_coarsen.size() - (piece_span.empty() ? 0 : to_coarsen.size() - piece_span.front().first);
+  std::vector<Ring> whole(std::make_move_iterator(to_coarsen.begin()),
+                          std::make_move_iterator(to_coarsen.begin() + static_cast<long>(n_whole)));
+  std::vector<Ring> pieces(std::make_move_iterator(to_coarsen.begin() + static_cast<long>(n_whole)),
+                           std::make_move_iterator(to_coarsen.end()));
+  auto cw = coarsen(std::move(whole), co);
+  if (!cw) return cw.error();
+  CoarsenOptions cp = co;
+  cp.min_area_km2 = 0;
+  cp.min_points = 3;
+  auto cpieces = coarsen(std::move(pieces), cp);
+  if (!cpieces) return cpieces.error();
+  if (!cpieces->dropped.empty())   // only the box alone, as one closed curve, can be dropped
+    return CoastError{data.file, -1, "the region box is smaller than the accuracy", {}};
+  rep.dropped = std::move(cw->dropped);
+  rep.points_in = cw->points_in + cpieces->points_in;
+
+  // 5. Work curves and loops; orientation in (u,v) with water on the left.
+  std::vector<WorkCurve> curves;
+  std::vector<WorkLoop> loops;
+  for (CoarseRing& cr : cw->rings) {
+    const int level = cr.ring.level;
+    const bool pole = cr.ring.wraps_pole;
+    curves.push_back(make_curve(std::move(cr), false, ps));
+    WorkLoop loop;
+    loop.curves = {static_cast<std::uint32_t>(curves.size() - 1)};
+    // Land rings are holes in the water; the ring round the singular point (the South
+    // Pole) and lakes are outer boundaries of water.
+    const bool south_pole_ring = pole && curves.back().full.front().lat < 0;
+    loop.hole = !(south_pole_ring || is_water_level(level));
+    loops.push_back(std::move(loop));
+  }
+  {
+    std::size_t at = 0;
+    for (const auto& span : piece_span) {
+      WorkLoop loop;
+      loop.hole = false;
+      for (std::size_t k = span.first; k < span.second; ++k, ++at) {
+        curves.push_back(make_curve(std::move(cpieces->rings[at]), piece_is_boundary[k] != 0, ps));
+        loop.curves.push_back(static_cast<std::uint32_t>(curves.size() - 1));
+      }
+      loops.push_back(std::move(loop));
+    }
+  }
+  // Loops the coarsening left without area (a corner of the region cut off by a coast
+  // piece, below the accuracy) are dropped.
+  std::vector<Vec2> poly;
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    WorkLoop& loop = loops[l];
+    loop_polygon(curves, loop, poly, nullptr);
+    if (poly.size() < 3 || ring_orientation(poly) == Sign::Zero) {
+      const WorkCurve& c = curves[loop.curves[0]];
+      loop.dead = true;
+      rep.repair.push_back({RepairKind::DroppedIsland, c.record, c.id, c.full.front(), 0});
+    }
+  }
+
+  // 6. Repair.
+  RepairOptions ro;
+  ro.max_rounds = opt.max_repair_rounds;
+  ro.radius = opt.radius;
+  ro.strait_factor = opt.strait_factor;
+  ro.close_straits = opt.close_straits;
+  auto rounds = repair_loops(curves, loops, ro, rep.repair);
+  if (!rounds) {
+    CoastError e = rounds.error();
+    e.file = data.file;
+    return e;
+  }
+  rep.repair_rounds = *rounds;
+
+  // Orientation once the loops are simple (the extreme-vertex test needs a simple
+  // polygon): water on the left, outer loops counter-clockwise, holes clockwise.
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    WorkLoop& loop = loops[l];
+    if (loop.dead) continue;
+    loop_polygon(curves, loop, poly, nullptr);
+    const Sign o = ring_orientation(poly);
+    if ((o == Sign::Positive) != !loop.hole) {
+      if (loop.curves.size() != 1)
+        return CoastError{data.file, -1, "a region loop runs the wrong way round (land data not land-on-left)",
+                          curves[loop.curves[0]].full.front()};
+      reverse_curve(curves[loop.curves[0]]);
+    }
+  }
+
+  // 7. Surfaces: each hole goes to the smallest outer loop that contains it.
+  std::vector<std::vector<Vec2>> polys(loops.size());
+  for (std::size_t l = 0; l < loops.size(); ++l)
+    if (!loops[l].dead) loop_polygon(curves, loops[l], polys[l], nullptr);
+  std::vector<std::uint32_t> outers;
+  for (std::uint32_t l = 0; l < loops.size(); ++l)
+    if (!loops[l].dead && !loops[l].hole) outers.push_back(l);
+  auto area = [&](std::uint32_t l) {
+    double a = 0;
+    const auto& p = polys[l];
+    for (std::size_t i = 0; i < p.size(); ++i) a += cross(p[i], p[(i + 1) % p.size()]);
+    return std::abs(a);
+  };
+  // The ocean first: the loop round the South Pole or, in a region, the largest loop.
+  std::stable_sort(outers.begin(), outers.end(), [&](std::uint32_t a, std::uint32_t b) { return area(a) > area(b); });
+  std::vector<std::uint32_t> new_index(loops.size(), 0xFFFFFFFFu);
+  std::vector<std::vector<std::uint32_t>> holes_of(outers.size());
+  std::vector<std::uint32_t> unassigned;
+  for (std::uint32_t l = 0; l < loops.size(); ++l) {
+    if (loops[l].dead || !loops[l].hole) continue;
+    std::size_t best = outers.size();
+    for (std::size_t o = 0; o < outers.size(); ++o)
+      if (point_in_ring(polys[outers[o]], polys[l][0]) &&
+          (best == outers.size() || area(outers[o]) < area(outers[best])))
+        best = o;
+    if (best < outers.size()) {
+      holes_of[best].push_back(l);
+    } else if (outers.empty()) {
+      unassigned.push_back(l);
+    } else {
+      const WorkCurve& c = curves[loops[l].curves[0]];
+      rep.repair.push_back({RepairKind::OutsideWater, c.record, c.id, c.full[c.keep[0]], 0});
+    }
+  }
+  // 8. Output, loops numbered surface by surface (outer first, then its holes).
+  std::vector<std::uint32_t> curve_index(curves.size(), 0xFFFFFFFFu);
+  auto emit_loop = [&](std::uint32_t l) {
+    CoastLoop out;
+    for (std::uint32_t ci : loops[l].curves) {
+      const WorkCurve& c = curves[ci];
+      CoastCurve cc;
+      cc.periodic = c.periodic;
+      cc.open_boundary = c.open_boundary;
+      cc.record = c.record;
+      cc.id = c.id;
+      for (std::uint32_t k : c.keep) {
+        cc.ll.push_back(c.full[k]);
+        cc.uv.push_back(c.uv[k]);
+      }
+      rep.points_out += cc.ll.size();
+      curve_index[ci] = static_cast<std::uint32_t>(model.curves.size());
+      out.curves.push_back(curve_index[ci]);
+      model.curves.push_back(std::move(cc));
+    }
+    model.loops.push_back(std::move(out));
+    return static_cast<std::uint32_t>(model.loops.size() - 1);
+  };
+  for (std::size_t o = 0; o < outers.size(); ++o) {
+    CoastSurface s;
+    s.outer = emit_loop(outers[o]);
+    for (std::uint32_t h : holes_of[o]) s.holes.push_back(emit_loop(h));
+    model.surfaces.push_back(std::move(s));
+  }
+  for (std::uint32_t l : unassigned) model.unassigned.push_back(emit_loop(l));
+  return model;
+}
+
+}  // namespace sm::coast

@@ -1,0 +1,96 @@
+// The coastline import pipeline (paper section 2.2; issue 4): level filter, cleaning,
+// orientation, region clipping, coarsening with gamma(x), topology on the sphere, and
+// intersection repair. Produces loops in PolarSphere (u,v) coordinates ready to become
+// periodic B-splines; this is the kernel behind `Coastline[n] = ...; loops[] = Coastline{n};`.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "coast/clean.h"
+#include "coast/coarsen.h"
+#include "coast/coastline.h"
+#include "coast/region.h"
+
+namespace sm::coast {
+
+struct ImportOptions {
+  std::vector<int> levels{1};          // GSHHS levels kept
+  /// Antarctica in GSHHG >= 2.3 binaries is level 5 (ice front) or 6 (grounding line),
+  /// outside `levels`: the level kept for it (0 = none). Text exports use level 1.
+  int antarctica_level = 5;
+  AccuracyFn gamma;                    // metres at 3D points of the sphere of `radius`
+  double radius = geo::kEarthRadius;   // metres
+  std::optional<LonLatBox> region;     // clip to this box
+  bool use_file_region = true;         // else clip to the file's own -R box when it has open pieces
+  double min_area_km2 = 0;
+  std::size_t min_points = 3;
+  /// Narrow straits: places where two coastlines come closer than strait_factor * gamma
+  /// (Gmsh's MinStraitsFactor). Kept open (listed in the report) unless close_straits,
+  /// in which case the two islands are merged across the strait.
+  double strait_factor = 1.0;
+  bool close_straits = false;
+  int max_repair_rounds = 64;
+  RegionOptions region_options;
+};
+
+/// One curve of the model: a whole island (periodic: first point not repeated), a cut
+/// coastline piece, or a piece of the region box (open_boundary).
+struct CoastCurve {
+  std::vector<geo::LonLat> ll;
+  std::vector<Vec2> uv;                // unit-scaled PolarSphere parameters of ll
+  bool periodic = false;
+  bool open_boundary = false;
+  std::size_t record = 0;              // source record (-1 for box pieces)
+  std::int64_t id = -1;                // source id
+};
+
+/// Curves in order, each traversed forward, water on the left: the outer loop of a
+/// surface runs counter-clockwise in (u,v), its holes clockwise.
+struct CoastLoop {
+  std::vector<std::uint32_t> curves;
+};
+
+struct CoastSurface {
+  std::uint32_t outer;                 // loop index
+  std::vector<std::uint32_t> holes;    // loop indices
+};
+
+enum class RepairKind {
+  Refined,        // original points put back on a segment that crossed another
+  DroppedIsland,  // island below the accuracy that still touched another loop
+  CutSliver,      // a loop meeting itself on the source data: its shorter side cut out
+  MergedIslands,  // two islands joined across a strait narrower than the accuracy
+  NarrowStrait,   // a strait narrower than strait_factor * gamma, left open
+  OutsideWater,   // island outside every outer loop (for instance inland in a region), dropped
+};
+
+struct RepairEntry {
+  RepairKind kind;
+  std::size_t record;
+  std::int64_t id;
+  geo::LonLat where;
+  double value = 0;   // refined: points added; strait: width in metres
+};
+
+struct ImportReport {
+  CleanReport clean;
+  std::vector<DroppedRing> dropped;
+  std::vector<RepairEntry> repair;
+  std::size_t reversed = 0, points_in = 0, points_out = 0, repair_rounds = 0;
+  std::size_t count(RepairKind k) const;
+  std::vector<std::string> lines() const;   // human-readable warnings, one per change
+};
+
+struct CoastModel {
+  std::vector<CoastCurve> curves;
+  std::vector<CoastLoop> loops;
+  std::vector<CoastSurface> surfaces;      // outer loop first in each; ocean first
+  std::vector<std::uint32_t> unassigned;   // hole loops with no outer (no Antarctica, no region)
+  ImportReport report;
+};
+
+Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt);
+
+}  // namespace sm::coast

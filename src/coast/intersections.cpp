@@ -1,0 +1,223 @@
+// Uniform-grid search for segment intersections. Each segment is entered in the cells its
+// bounding box covers; (cell, segment) pairs are sorted so the pairs met in a cell come
+// out in a fixed order, and a pair is tested only in the cell holding the lower corner of
+// the overlap of its two boxes, so it is tested (and reported) once.
+#include "coast/intersections.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <tuple>
+
+#include "mesh/predicates.h"
+
+namespace sm::coast {
+namespace {
+
+struct Seg {
+  Vec2 a, b;
+  std::uint32_t loop, index, n;   // n: vertex count of its loop
+  Vec2 lo, hi;
+};
+
+struct Grid {
+  Vec2 origin;
+  double cell = 1;
+  std::int64_t nx = 1, ny = 1;
+  std::int64_t ix(double x) const {
+    return std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor((x - origin.x) / cell)), 0, nx - 1);
+  }
+  std::int64_t iy(double y) const {
+    return std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor((y - origin.y) / cell)), 0, ny - 1);
+  }
+};
+
+// pad: per-loop, per-segment half widths added to the boxes (empty: none).
+std::vector<Seg> make_segments(std::span<const std::vector<Vec2>> loops, std::span<const std::vector<double>> pad) {
+  std::vector<Seg> segs;
+  for (std::uint32_t l = 0; l < loops.size(); ++l) {
+    const auto& p = loops[l];
+    const auto n = static_cast<std::uint32_t>(p.size());
+    if (n < 2) continue;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      Seg s{p[i], p[(i + 1) % n], l, i, n, {}, {}};
+      const double pd = pad.empty() ? 0.0 : 0.5 * pad[l][i];
+      s.lo = {std::min(s.a.x, s.b.x) - pd, std::min(s.a.y, s.b.y) - pd};
+      s.hi = {std::max(s.a.x, s.b.x) + pd, std::max(s.a.y, s.b.y) + pd};
+      segs.push_back(s);
+    }
+  }
+  return segs;
+}
+
+Grid make_grid(const std::vector<Seg>& segs) {
+  Grid g;
+  Vec2 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()}, hi = -lo;
+  std::vector<double> len;
+  len.reserve(segs.size());
+  for (const Seg& s : segs) {
+    lo = {std::min(lo.x, s.lo.x), std::min(lo.y, s.lo.y)};
+    hi = {std::max(hi.x, s.hi.x), std::max(hi.y, s.hi.y)};
+    len.push_back(std::max(s.hi.x - s.lo.x, s.hi.y - s.lo.y));
+  }
+  // Cells about twice the median segment extent: a segment covers a few cells and a cell
+  // holds a few segments wherever the coastline is dense.
+  std::nth_element(len.begin(), len.begin() + static_cast<long>(len.size() / 2), len.end());
+  const double span = std::max(hi.x - lo.x, hi.y - lo.y);
+  double cell = std::max(2.0 * len[len.size() / 2], span * 1e-7);
+  // Never more than ~16 cells per segment overall (memory bound for sparse data).
+  const double min_cell = span / std::sqrt(16.0 * static_cast<double>(segs.size()) + 1.0);
+  cell = std::max(cell, min_cell);
+  if (!(cell > 0)) cell = 1;
+  g.origin = lo;
+  g.cell = cell;
+  g.nx = std::max<std::int64_t>(1, static_cast<std::int64_t>((hi.x - lo.x) / cell) + 1);
+  g.ny = std::max<std::int64_t>(1, static_cast<std::int64_t>((hi.y - lo.y) / cell) + 1);
+  return g;
+}
+
+// Cell entries sorted by cell: the candidate pairs of each cell are tested in order.
+std::vector<std::pair<std::int64_t, std::uint32_t>> bin(const std::vector<Seg>& segs, const Grid& g) {
+  std::vector<std::pair<std::int64_t, std::uint32_t>> cells;
+  cells.reserve(segs.size() * 2);
+  for (std::uint32_t k = 0; k < segs.size(); ++k) {
+    const Seg& s = segs[k];
+    for (std::int64_t y = g.iy(s.lo.y); y <= g.iy(s.hi.y); ++y)
+      for (std::int64_t x = g.ix(s.lo.x); x <= g.ix(s.hi.x); ++x) cells.push_back({y * g.nx + x, k});
+  }
+  std::sort(cells.begin(), cells.end());
+  return cells;
+}
+
+bool adjacent(const Seg& s, const Seg& t) {
+  if (s.loop != t.loop) return false;
+  return (s.index + 1) % s.n == t.index || (t.index + 1) % t.n == s.index;
+}
+
+bool on_segment(Vec2 a, Vec2 b, Vec2 p) {   // p collinear with ab: within its box?
+  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
+         p.y <= std::max(a.y, b.y);
+}
+
+// Classifies two segments; false when they are disjoint.
+bool classify(const Seg& s, const Seg& t, HitKind& kind, Vec2& where) {
+  const Sign o1 = orient2d(s.a, s.b, t.a), o2 = orient2d(s.a, s.b, t.b);
+  const Sign o3 = orient2d(t.a, t.b, s.a), o4 = orient2d(t.a, t.b, s.b);
+  if (adjacent(s, t)) {
+    // Consecutive segments share a vertex; they are wrong only when they fold back
+    // (collinear, the far end turning back onto the other segment).
+    const bool s_first = (s.index + 1) % s.n == t.index;
+    const Seg& u = s_first ? s : t;   // u.b == v.a
+    const Seg& v = s_first ? t : s;
+    if (u.n == 2) return false;
+    if (orient2d(u.a, u.b, v.b) == Sign::Zero && dot(u.b - u.a, v.b - v.a) < 0) {
+      kind = HitKind::Overlap;
+      where = u.b;
+      return true;
+    }
+    return false;
+  }
+  if (o1 != Sign::Zero && o1 == o2) return false;
+  if (o3 != Sign::Zero && o3 == o4) return false;
+  if (o1 == Sign::Zero && o2 == Sign::Zero) {   // collinear
+    if (on_segment(s.a, s.b, t.a) || on_segment(s.a, s.b, t.b) || on_segment(t.a, t.b, s.a) ||
+        on_segment(t.a, t.b, s.b)) {
+      kind = HitKind::Overlap;
+      where = 0.5 * (s.a + s.b);
+      return true;
+    }
+    return false;
+  }
+  if (o1 == Sign::Zero || o2 == Sign::Zero || o3 == Sign::Zero || o4 == Sign::Zero) {
+    kind = HitKind::Touch;
+    where = o1 == Sign::Zero ? t.a : o2 == Sign::Zero ? t.b : o3 == Sign::Zero ? s.a : s.b;
+    return true;
+  }
+  kind = HitKind::Cross;
+  const Vec2 r = s.b - s.a, q = t.b - t.a;
+  const double den = cross(r, q);
+  const double u = den != 0 ? cross(t.a - s.a, q) / den : 0.5;
+  where = s.a + u * r;
+  return true;
+}
+
+double seg_distance_point(Vec2 a, Vec2 b, Vec2 p) {
+  const Vec2 d = b - a;
+  const double l2 = norm2(d);
+  double t = l2 > 0 ? dot(p - a, d) / l2 : 0;
+  t = std::clamp(t, 0.0, 1.0);
+  return norm(p - (a + t * d));
+}
+
+template <class Visit>
+void for_each_candidate(const std::vector<Seg>& segs, const Grid& g, IntersectionStats* st, Visit visit) {
+  const auto cells = bin(segs, g);
+  if (st) st->grid_cells = static_cast<std::size_t>(g.nx * g.ny);
+  for (std::size_t i = 0; i < cells.size();) {
+    std::size_t j = i;
+    while (j < cells.size() && cells[j].first == cells[i].first) ++j;
+    const std::int64_t cell = cells[i].first;
+    for (std::size_t p = i; p < j; ++p)
+      for (std::size_t q = p + 1; q < j; ++q) {
+        const Seg& s = segs[cells[p].second];
+        const Seg& t = segs[cells[q].second];
+        if (s.lo.x > t.hi.x || t.lo.x > s.hi.x || s.lo.y > t.hi.y || t.lo.y > s.hi.y) continue;
+        const Vec2 corner{std::max(s.lo.x, t.lo.x), std::max(s.lo.y, t.lo.y)};
+        if (g.iy(corner.y) * g.nx + g.ix(corner.x) != cell) continue;   // tested in another cell
+        if (st) ++st->candidate_pairs;
+        visit(s, t);
+      }
+    i = j;
+  }
+}
+
+}  // namespace
+
+std::vector<SegmentHit> find_intersections(std::span<const std::vector<Vec2>> loops, IntersectionStats* stats) {
+  std::vector<SegmentHit> hits;
+  const std::vector<Seg> segs = make_segments(loops, {});
+  if (stats) *stats = {segs.size(), 0, 0};
+  if (segs.size() < 2) return hits;
+  const Grid g = make_grid(segs);
+  for_each_candidate(segs, g, stats, [&](const Seg& s, const Seg& t) {
+    HitKind kind;
+    Vec2 where;
+    if (!classify(s, t, kind, where)) return;
+    SegmentHit h{s.loop, s.index, t.loop, t.index, kind, where};
+    if (std::pair(h.loop_b, h.seg_b) < std::pair(h.loop_a, h.seg_a)) {
+      std::swap(h.loop_a, h.loop_b);
+      std::swap(h.seg_a, h.seg_b);
+    }
+    hits.push_back(h);
+  });
+  std::sort(hits.begin(), hits.end(), [](const SegmentHit& a, const SegmentHit& b) {
+    return std::tie(a.loop_a, a.seg_a, a.loop_b, a.seg_b) < std::tie(b.loop_a, b.seg_a, b.loop_b, b.seg_b);
+  });
+  return hits;
+}
+
+std::vector<NearMiss> find_near_misses(std::span<const std::vector<Vec2>> loops,
+                                       std::span<const std::vector<double>> width) {
+  std::vector<NearMiss> out;
+  std::vector<Seg> segs = make_segments(loops, width);
+  if (segs.size() < 2) return out;
+  const Grid g = make_grid(segs);
+  for_each_candidate(segs, g, nullptr, [&](const Seg& s, const Seg& t) {
+    if (s.loop == t.loop) {
+      // Within one loop only far-apart parts count: at least 3 segments away both ways.
+      const std::uint32_t d = s.index > t.index ? s.index - t.index : t.index - s.index;
+      if (std::min(d, s.n - d) < 3) return;
+    }
+    const double w = std::min(width[s.loop][s.index], width[t.loop][t.index]);
+    const double d = std::min({seg_distance_point(s.a, s.b, t.a), seg_distance_point(s.a, s.b, t.b),
+                               seg_distance_point(t.a, t.b, s.a), seg_distance_point(t.a, t.b, s.b)});
+    if (d >= w || d == 0) return;
+    out.push_back({s.loop, s.index, t.loop, t.index, d, 0.5 * (s.a + t.a)});
+  });
+  std::sort(out.begin(), out.end(), [](const NearMiss& a, const NearMiss& b) {
+    return std::tie(a.loop_a, a.seg_a, a.loop_b, a.seg_b) < std::tie(b.loop_a, b.seg_a, b.loop_b, b.seg_b);
+  });
+  return out;
+}
+
+}  // namespace sm::coast

@@ -1,0 +1,201 @@
+// Repair by local refinement toward the original shoreline, then by dropping islands
+// below the accuracy; strait detection and island merging across straits.
+#include "coast/repair.h"
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+#include <fmt/format.h>
+
+#include "coast/intersections.h"
+
+namespace sm::coast {
+namespace {
+
+geo::LonLat uv_to_lonlat(Vec2 uv) { return geo::PolarSphere({0, 0, 0}, 1.0).lonlat_from_param(uv); }
+
+// Index in `full` to insert on the segment leaving keep position k of curve c (the
+// middle of the gap), or -1 when the segment is already original.
+std::int64_t refine_index(const WorkCurve& c, std::uint32_t k) {
+  const std::size_t n = c.full.size();
+  std::size_t a = c.keep[k], b;
+  if (k + 1 < c.keep.size())
+    b = c.keep[k + 1];
+  else if (c.periodic)
+    b = n + c.keep[0];
+  else
+    return -1;
+  if (b - a < 2) return -1;
+  return static_cast<std::int64_t>(((a + b) / 2) % n);
+}
+
+// Segment s of a loop polygon starts at refs[s]; which curve/keep position owns it.
+LoopVertexRef segment_owner(const std::vector<LoopVertexRef>& refs, std::size_t s) { return refs[s]; }
+
+double island_perimeter_m(const WorkCurve& c, double radius) {
+  double p = 0;
+  for (std::size_t i = 0; i < c.full.size(); ++i)
+    p += chord(c.full[i], c.full[(i + 1) % c.full.size()], radius);
+  return p;
+}
+
+// Removes the original points strictly between the segments leaving full indices a1 and
+// a2 (a1 < a2) on the shorter side of the loop. Non-periodic curves can only lose the
+// inside part (their ends are fixed). False when too little would remain.
+bool cut_sliver(WorkCurve& c, std::uint32_t a1, std::uint32_t a2) {
+  const std::size_t n = c.full.size();
+  const std::size_t inner = a2 - a1;   // points a1+1 .. a2
+  std::vector<char> drop(n, 0);
+  if (!c.periodic || inner <= n - inner) {
+    if (n - inner < 3) return false;
+    for (std::size_t i = a1 + 1; i <= a2; ++i) drop[i] = 1;
+  } else {
+    if (inner < 3) return false;
+    for (std::size_t i = 0; i < n; ++i) drop[i] = (i <= a1 || i > a2) ? 1 : 0;
+  }
+  std::vector<std::uint32_t> remap(n, 0xFFFFFFFFu);
+  std::size_t m = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (drop[i]) continue;
+    remap[i] = static_cast<std::uint32_t>(m);
+    c.full[m] = c.full[i];
+    c.uv[m] = c.uv[i];
+    c.gamma[m] = c.gamma[i];
+    ++m;
+  }
+  c.full.resize(m);
+  c.uv.resize(m);
+  c.gamma.resize(m);
+  std::vector<std::uint32_t> keep;
+  for (std::uint32_t k : c.keep)
+    if (remap[k] != 0xFFFFFFFFu) keep.push_back(remap[k]);
+  // The two ends of the cut stay as vertices so the new segment joins them.
+  for (std::size_t i : {std::size_t{a1}, std::size_t{a2} + 1})
+    if (i < n && remap[i] != 0xFFFFFFFFu) keep.push_back(remap[i]);
+  std::sort(keep.begin(), keep.end());
+  keep.erase(std::unique(keep.begin(), keep.end()), keep.end());
+  c.keep = std::move(keep);
+  return c.keep.size() >= 3 || !c.periodic;
+}
+
+double mean_gamma(const WorkCurve& c) {
+  double g = 0;
+  for (double x : c.gamma) g += x;
+  return c.gamma.empty() ? 0 : g / static_cast<double>(c.gamma.size());
+}
+
+}  // namespace
+
+void loop_polygon(const std::vector<WorkCurve>& curves, const WorkLoop& loop, std::vector<Vec2>& uv,
+                  std::vector<LoopVertexRef>* refs) {
+  uv.clear();
+  if (refs) refs->clear();
+  for (std::uint32_t ci : loop.curves) {
+    const WorkCurve& c = curves[ci];
+    const std::size_t m = c.periodic ? c.keep.size() : c.keep.size() - 1;   // shared end point skipped
+    for (std::uint32_t k = 0; k < m; ++k) {
+      uv.push_back(c.uv[c.keep[k]]);
+      if (refs) refs->push_back({ci, k});
+    }
+  }
+}
+
+Result<std::size_t> repair_loops(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops,
+                                 const RepairOptions& opt, std::vector<RepairEntry>& log) {
+  std::vector<std::vector<Vec2>> polys(loops.size());
+  std::vector<std::vector<LoopVertexRef>> refs(loops.size());
+  auto rebuild = [&] {
+    for (std::size_t l = 0; l < loops.size(); ++l) {
+      if (loops[l].dead) {
+        polys[l].clear();
+        refs[l].clear();
+      } else {
+        loop_polygon(curves, loops[l], polys[l], &refs[l]);
+      }
+    }
+  };
+  std::size_t round = 0;
+  for (;; ++round) {
+    rebuild();
+    const std::vector<SegmentHit> hits = find_intersections(polys);
+    if (hits.empty()) break;
+    if (static_cast<int>(round) >= opt.max_rounds)
+      return CoastError{"repair", static_cast<std::int64_t>(curves[refs[hits[0].loop_a][0].curve].record),
+                        fmt::format("{} intersections left after {} repair rounds", hits.size(), round),
+                        uv_to_lonlat(hits[0].where)};
+    // 1. Put original points back on every offending segment that has some.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> inserts;   // (curve, full index)
+    std::vector<const SegmentHit*> stuck;
+    for (const SegmentHit& h : hits) {
+      bool any = false;
+      for (const auto& [l, s] : {std::pair{h.loop_a, h.seg_a}, std::pair{h.loop_b, h.seg_b}}) {
+        const LoopVertexRef r = segment_owner(refs[l], s);
+        const std::int64_t idx = refine_index(curves[r.curve], r.k);
+        if (idx >= 0) {
+          inserts.push_back({r.curve, static_cast<std::uint32_t>(idx)});
+          any = true;
+        }
+      }
+      if (!any) stuck.push_back(&h);
+    }
+    if (!inserts.empty()) {
+      std::sort(inserts.begin(), inserts.end());
+      inserts.erase(std::unique(inserts.begin(), inserts.end()), inserts.end());
+      for (std::size_t i = 0; i < inserts.size();) {
+        const std::uint32_t ci = inserts[i].first;
+        WorkCurve& c = curves[ci];
+        std::size_t j = i;
+        while (j < inserts.size() && inserts[j].first == ci) c.keep.push_back(inserts[j++].second);
+        std::sort(c.keep.begin(), c.keep.end());
+        c.keep.erase(std::unique(c.keep.begin(), c.keep.end()), c.keep.end());
+        log.push_back({RepairKind::Refined, c.record, c.id, c.full[inserts[i].second], static_cast<double>(j - i)});
+        i = j;
+      }
+      continue;
+    }
+    // 2. Original data still meets: drop an island below the accuracy, else fail.
+    bool dropped = false;
+    for (const SegmentHit* h : stuck) {
+      for (std::uint32_t l : {h->loop_a, h->loop_b}) {
+        WorkLoop& loop = loops[l];
+        if (loop.dead || !loop.hole || loop.curves.size() != 1) continue;
+        const WorkCurve& c = curves[loop.curves[0]];
+        if (!c.periodic || island_perimeter_m(c, opt.radius) >= 5.0 * mean_gamma(c)) continue;
+        loop.dead = true;
+        dropped = true;
+        log.push_back({RepairKind::DroppedIsland, c.record, c.id, uv_to_lonlat(h->where), 0});
+        break;
+      }
+    }
+    if (dropped) continue;
+    // 3. A loop that meets itself on original data (a pinch or a twisted sliver, as in
+    //    GSHHG's intermediate Baltic coast): cut out the shorter side.
+    bool cut = false;
+    for (const SegmentHit* h : stuck) {
+      if (h->loop_a != h->loop_b || loops[h->loop_a].dead) continue;
+      const LoopVertexRef ra = refs[h->loop_a][h->seg_a], rb = refs[h->loop_b][h->seg_b];
+      if (ra.curve != rb.curve) continue;
+      WorkCurve& c = curves[ra.curve];
+      const geo::LonLat where = uv_to_lonlat(h->where);
+      if (cut_sliver(c, std::min(c.keep[ra.k], c.keep[rb.k]), std::max(c.keep[ra.k], c.keep[rb.k]))) {
+        log.push_back({RepairKind::CutSliver, c.record, c.id, where, 0});
+        cut = true;
+        break;   // polygons changed: search again
+      }
+    }
+    if (cut) continue;
+    const SegmentHit& h = *stuck.front();
+    const WorkCurve& ca = curves[refs[h.loop_a][h.seg_a].curve];
+    const WorkCurve& cb = curves[refs[h.loop_b][h.seg_b].curve];
+    const char* kind = h.kind == HitKind::Cross ? "cross" : h.kind == HitKind::Touch ? "touch" : "overlap";
+    return CoastError{"repair", static_cast<std::int64_t>(ca.record),
+                      fmt::format("the source shorelines (record {} id {} and record {} id {}) {} each other; "
+                                  "{} such places cannot be repaired",
+                                  ca.record, ca.id, cb.record, cb.id, kind, stuck.size()),
+                      uv_to_lonlat(h.where)};
+  }
+  return round;
+}
+
+}  // namespace sm::coast

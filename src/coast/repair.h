@@ -1,0 +1,53 @@
+// Consistency repair of coarsened coastline loops (issue 4): segments that cross after
+// coarsening get their original points back (the source data is self-consistent, so
+// this converges at the latest on the original shoreline); islands below the accuracy
+// that still touch are dropped; narrow straits are listed or closed by merging islands.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "coast/coastline.h"
+#include "coast/import.h"
+
+namespace sm::coast {
+
+/// A curve during repair: full-resolution points, gamma at each, retained indices.
+struct WorkCurve {
+  std::vector<geo::LonLat> full;
+  std::vector<Vec2> uv;                 // (u,v) of every full point
+  std::vector<double> gamma;
+  std::vector<std::uint32_t> keep;      // increasing; periodic curves close keep.back() -> keep[0]
+  bool periodic = false;
+  bool open_boundary = false;
+  std::size_t record = 0;
+  std::int64_t id = -1;
+};
+
+struct WorkLoop {
+  std::vector<std::uint32_t> curves;    // consecutive; a non-periodic curve ends where the next starts
+  bool hole = true;
+  bool dead = false;
+};
+
+struct RepairOptions {
+  int max_rounds = 64;
+  double radius = geo::kEarthRadius;
+  double strait_factor = 1.0;
+  bool close_straits = false;
+};
+
+/// The (u,v) polygon of a loop (first point not repeated) and, per vertex, the curve and
+/// keep position it comes from.
+struct LoopVertexRef {
+  std::uint32_t curve, k;
+};
+void loop_polygon(const std::vector<WorkCurve>& curves, const WorkLoop& loop, std::vector<Vec2>& uv,
+                  std::vector<LoopVertexRef>* refs);
+
+/// Repairs in place; appends what changed to `log`. Returns the number of rounds, or an
+/// error naming the loops and the place when an intersection survives on original data.
+Result<std::size_t> repair_loops(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops,
+                                 const RepairOptions& opt, std::vector<RepairEntry>& log);
+
+}  // namespace sm::coast

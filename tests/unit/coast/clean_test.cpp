@@ -1,0 +1,70 @@
+// Cleaning: synthetic duplicates/spikes/seams, and the artefact counts of the real files
+// (shared/data/README.md "Known artefacts").
+#include "coast/clean.h"
+
+#include <doctest/doctest.h>
+
+#include "coast/read_lonlat_text.h"
+#include "coast/read_shapefile.h"
+
+using namespace sm;
+using namespace sm::coast;
+
+namespace {
+Ring ring(std::vector<geo::LonLat> pts, bool closed = true) {
+  Ring r;
+  r.pts = std::move(pts);
+  r.closed = closed;
+  return r;
+}
+}  // namespace
+
+TEST_CASE("clean: duplicates, spikes, seam spikes, degenerate rings") {
+  Coastline c;
+  c.rings.push_back(ring({{0, 0}, {1, 0}, {1, 0}, {2, 0}, {2.5, 0.5}, {2, 0}, {2, 1}, {0, 1}}));
+  c.rings.push_back(ring({{5, 5}, {6, 5}, {6, 6}, {5, 6}, {4, 6}, {5, 6}}));   // spike at the seam
+  c.rings.push_back(ring({{9, 9}, {9.5, 9}, {9, 9}}));                          // 2 distinct vertices
+  c.rings.push_back(ring({{-180, 10}, {180, 10}}, false));                      // one point on the sphere
+  const CleanReport rep = clean(c);
+  CHECK(rep.count(CleanAction::Duplicate) >= 1);
+  CHECK(rep.count(CleanAction::Spike) == 3);
+  CHECK(rep.count(CleanAction::DegenerateRing) == 2);
+  REQUIRE(c.rings.size() == 2);
+  CHECK(c.rings[0].pts.size() == 5);
+  CHECK(c.rings[1].pts.size() == 4);
+  bool found = false;
+  for (const auto& e : rep.entries)
+    if (e.action == CleanAction::Spike && e.where.lon == 2.5 && e.where.lat == 0.5) found = true;
+  CHECK(found);   // the report says where
+}
+
+TEST_CASE("clean: the artefacts of the GSHHG text exports") {
+  // README counts the vertices of every a->b->a pattern; a double spike a->b->a->b (world_c
+  // ring 11) is one removal here, and world_l's 2-vertex ring is dropped as degenerate.
+  struct F { const char* name; std::size_t spikes, degenerate; };
+  const F files[] = {{"world_c.txt", 2, 0},      {"world_l.txt", 2, 1}, {"world_i_A100.txt", 4, 0},
+                     {"arctic_i_A10.txt", 2, 0}, {"canadian_arctic_h.txt", 2, 0}, {"gb_ireland_f.txt", 0, 0},
+                     {"northsea_scheldt_f.txt", 0, 0}, {"gbr_lizard_f.txt", 0, 0}};
+  for (const F& f : files) {
+    CAPTURE(f.name);
+    auto c = read_lonlat_text(std::string(SM_SHARED_DATA) + "/gshhg/" + f.name);
+    REQUIRE(c.ok());
+    const CleanReport rep = clean(*c);
+    CHECK(rep.count(CleanAction::Spike) == f.spikes);
+    CHECK(rep.count(CleanAction::DegenerateRing) == f.degenerate);
+    CHECK(rep.count(CleanAction::Duplicate) == 0);   // "No file has consecutive duplicate vertices"
+  }
+}
+
+TEST_CASE("clean: Natural Earth Antarctica closed along the South Pole") {
+  auto c = read_shapefile(std::string(SM_SHARED_DATA) + "/naturalearth/ne_110m_land.shp");
+  REQUIRE(c.ok());
+  const CleanReport rep = clean(*c);
+  CHECK(rep.count(CleanAction::PoleVertex) >= 1);
+  std::size_t wraps = 0;
+  for (const Ring& r : c->rings) {
+    wraps += r.wraps_pole;
+    for (auto p : r.pts) CHECK(p.lat > -90);
+  }
+  CHECK(wraps == 1);
+}

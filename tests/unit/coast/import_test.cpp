@@ -1,0 +1,177 @@
+// The whole import pipeline on real data: topology and orientation on the PolarSphere,
+// consistency (no intersections left), regions, and the paper's Figure 5 table.
+#include "coast/import.h"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "coast/intersections.h"
+#include "coast/polygon2d.h"
+#include "coast/read_gshhs.h"
+#include "coast/read_lonlat_text.h"
+
+using namespace sm;
+using namespace sm::coast;
+
+namespace {
+AccuracyFn constant(double g) {
+  return [g](std::span<const Vec3>, std::span<double> out) {
+    for (double& x : out) x = g;
+  };
+}
+
+Coastline load(const char* name) {
+  auto c = read_lonlat_text(std::string(SM_SHARED_DATA) + "/gshhg/" + name);
+  REQUIRE(c.ok());
+  return std::move(*c);
+}
+
+std::vector<Vec2> loop_uv(const CoastModel& m, std::uint32_t l) {
+  std::vector<Vec2> p;
+  const auto& loop = m.loops[l];
+  for (std::uint32_t c : loop.curves) {
+    const auto& uv = m.curves[c].uv;
+    p.insert(p.end(), uv.begin(), loop.curves.size() > 1 ? uv.end() - 1 : uv.end());
+  }
+  return p;
+}
+
+// Invariants every model must satisfy.
+void check_model(const CoastModel& m) {
+  std::vector<std::vector<Vec2>> polys;
+  for (std::uint32_t l = 0; l < m.loops.size(); ++l) polys.push_back(loop_uv(m, l));
+  CHECK(find_intersections(polys).empty());
+  for (const CoastSurface& s : m.surfaces) {
+    CHECK(ring_orientation(polys[s.outer]) == Sign::Positive);
+    for (std::uint32_t h : s.holes) {
+      CHECK(ring_orientation(polys[h]) == Sign::Negative);
+      CHECK(point_in_ring(polys[s.outer], polys[h][0]));
+    }
+  }
+  for (const CoastLoop& loop : m.loops) {
+    for (std::size_t i = 0; loop.curves.size() > 1 && i < loop.curves.size(); ++i) {
+      const auto& a = m.curves[loop.curves[i]];
+      const auto& b = m.curves[loop.curves[(i + 1) % loop.curves.size()]];
+      CHECK(a.uv.back() == b.uv.front());
+      CHECK_FALSE(a.periodic);
+    }
+  }
+  for (const CoastCurve& c : m.curves) {
+    REQUIRE(c.uv.size() == c.ll.size());
+    if (c.periodic) CHECK(c.uv.size() >= 3);
+    const geo::PolarSphere ps({0, 0, 0}, 1.0);
+    for (std::size_t k = 0; k < c.uv.size(); k += 7) {
+      const Vec2 uv = ps.param_from_lonlat(c.ll[k]);
+      CHECK(uv.x == doctest::Approx(c.uv[k].x));
+      CHECK(uv.y == doctest::Approx(c.uv[k].y));
+    }
+  }
+}
+}  // namespace
+
+TEST_CASE("import: the world ocean at 100 km is bounded by Antarctica") {
+  ImportOptions o;
+  o.gamma = constant(100e3);
+  auto m = build_coast_model(load("world_c.txt"), o);
+  REQUIRE_MESSAGE(m.ok(), (m.ok() ? "" : m.error().to_string()));
+  REQUIRE(m->surfaces.size() == 1);
+  const CoastSurface& ocean = m->surfaces[0];
+  CHECK(ocean.outer == 0);
+  const CoastCurve& outer = m->curves[m->loops[ocean.outer].curves[0]];
+  CHECK(outer.periodic);
+  for (auto p : outer.ll) CHECK(p.lat < -60);   // Antarctica
+  CHECK(ocean.holes.size() > 50);
+  CHECK(m->unassigned.empty());
+  check_model(*m);
+}
+
+TEST_CASE("import: the original GSHHS crude binary (levels 1 + Antarctic ice front)") {
+  auto c = read_gshhs(std::string(SM_SHARED_DATA) + "/gshhs/gshhs_c.b");
+  REQUIRE(c.ok());
+  ImportOptions o;
+  o.gamma = constant(50e3);
+  auto m = build_coast_model(std::move(*c), o);
+  REQUIRE_MESSAGE(m.ok(), (m.ok() ? "" : m.error().to_string()));
+  REQUIRE(m->surfaces.size() == 1);
+  for (auto p : m->curves[m->loops[m->surfaces[0].outer].curves[0]].ll) CHECK(p.lat < -60);
+  check_model(*m);
+  ImportOptions no_ant = o;
+  no_ant.antarctica_level = 0;
+  auto c2 = read_gshhs(std::string(SM_SHARED_DATA) + "/gshhs/gshhs_c.b");
+  auto m2 = build_coast_model(std::move(*c2), no_ant);
+  REQUIRE(m2.ok());
+  CHECK(m2->surfaces.empty());          // no loop round the singular point: no outer boundary
+  CHECK(m2->unassigned.size() > 100);
+}
+
+TEST_CASE("import: world intermediate at 10 km: crossings made by coarsening are repaired") {
+  ImportOptions o;
+  o.gamma = constant(10e3);
+  auto m = build_coast_model(load("world_i_A100.txt"), o);
+  REQUIRE_MESSAGE(m.ok(), (m.ok() ? "" : m.error().to_string()));
+  CHECK(m->report.count(RepairKind::Refined) > 0);
+  CHECK_FALSE(m->report.lines().empty());
+  check_model(*m);
+}
+
+TEST_CASE("import: regions make open-boundary curves") {
+  ImportOptions o;
+  o.gamma = constant(1500);
+  auto m = build_coast_model(load("gb_ireland_f.txt"), o);   // the file's own box closes the French coast
+  REQUIRE(m.ok());
+  std::size_t open = 0;
+  for (const auto& c : m->curves) open += c.open_boundary;
+  CHECK(open == 2);
+  check_model(*m);
+  ImportOptions r = o;
+  r.gamma = constant(5000);
+  r.region = LonLatBox{-4, 9, 50, 58};
+  auto ns = build_coast_model(load("northsea_scheldt_f.txt"), r);
+  REQUIRE_MESSAGE(ns.ok(), (ns.ok() ? "" : ns.error().to_string()));
+  open = 0;
+  for (const auto& c : ns->curves) open += c.open_boundary;
+  CHECK(open >= 2);
+  check_model(*ns);
+  ImportOptions none = o;
+  none.use_file_region = false;
+  CHECK_FALSE(build_coast_model(load("gb_ireland_f.txt"), none).ok());
+}
+
+TEST_CASE("import: MinArea drops small islands") {
+  ImportOptions o;
+  o.gamma = constant(150);
+  o.min_area_km2 = 10;
+  auto m = build_coast_model(load("gb_ireland_f.txt"), o);
+  REQUIRE(m.ok());
+  CHECK(m->surfaces[0].holes.size() < 200);
+  std::size_t small = 0;
+  for (const auto& d : m->report.dropped) small += d.reason == DropReason::BelowMinArea;
+  CHECK(small > 2000);
+}
+
+// Figure 5 of the paper (GSHHS 2008 full resolution): gamma = 100 km: GB and Ireland only;
+// 15 km: "15 contours"; 1.5 km: 152 islands; 150 m: 2,176 islands, 83,277 control points.
+// Ours (GSHHG 2.3.7 full, gb_ireland_f.txt): 2, 16, 155, 2438 islands and 81,848 island
+// control points (docs/coastlines.md discusses the differences).
+TEST_CASE("import: Figure 5, Great Britain and Ireland") {
+  struct Row { double gamma; std::size_t paper, lo, hi; };
+  const Row rows[] = {{100e3, 2, 2, 2}, {15e3, 15, 13, 18}, {1.5e3, 152, 140, 165}, {150, 2176, 2176, 2600}};
+  for (const Row& r : rows) {
+    CAPTURE(r.gamma);
+    ImportOptions o;
+    o.gamma = constant(r.gamma);
+    auto m = build_coast_model(load("gb_ireland_f.txt"), o);
+    REQUIRE(m.ok());
+    REQUIRE(m->surfaces.size() == 1);
+    const std::size_t islands = m->surfaces[0].holes.size();
+    CHECK(islands >= r.lo);
+    CHECK(islands <= r.hi);
+    if (r.gamma == 150) {
+      std::size_t pts = 0;
+      for (std::uint32_t h : m->surfaces[0].holes) pts += m->curves[m->loops[h].curves[0]].uv.size();
+      CHECK(pts == doctest::Approx(83277).epsilon(0.05));
+    }
+    check_model(*m);
+  }
+}

@@ -1,0 +1,103 @@
+// Grid intersection search: hand-made cases, then agreement with an all-pairs oracle on
+// random polygon soups (the oracle lives only here).
+#include "coast/intersections.h"
+
+#include <doctest/doctest.h>
+
+#include <random>
+#include <set>
+#include <tuple>
+
+#include "mesh/predicates.h"
+
+using namespace sm;
+using namespace sm::coast;
+
+TEST_CASE("intersections: crossing, touching, overlapping, folding back") {
+  const std::vector<std::vector<Vec2>> cross{{{0, 0}, {2, 0}, {2, 2}, {0, 2}}, {{1, 1}, {3, 1}, {3, 3}, {1, 3}}};
+  auto h = find_intersections(cross);
+  REQUIRE(h.size() == 2);
+  CHECK(h[0].kind == HitKind::Cross);
+  CHECK(h[0].loop_a == 0);
+  CHECK(h[0].loop_b == 1);
+  const std::vector<std::vector<Vec2>> touch{{{0, 0}, {2, 0}, {2, 2}, {0, 2}}, {{2, 1}, {3, 0}, {3, 2}}};
+  auto t = find_intersections(touch);
+  REQUIRE(t.size() >= 1);
+  CHECK(t[0].kind == HitKind::Touch);
+  const std::vector<std::vector<Vec2>> apart{{{0, 0}, {2, 0}, {2, 2}, {0, 2}}, {{2.5, 1}, {3, 0}, {3, 2}}};
+  CHECK(find_intersections(apart).empty());
+  const std::vector<std::vector<Vec2>> fold{{{0, 0}, {2, 0}, {1, 0}, {1, 1}}};   // 0->2 then back to 1
+  auto f = find_intersections(fold);
+  REQUIRE_FALSE(f.empty());
+  CHECK(f[0].kind == HitKind::Overlap);
+  const std::vector<std::vector<Vec2>> bowtie{{{0, 0}, {1, 1}, {1, 0}, {0, 1}}};
+  CHECK(find_intersections(bowtie).size() == 1);
+}
+
+TEST_CASE("intersections: the grid finds exactly what all pairs find") {
+  std::mt19937 rng(20081234);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int trial = 0; trial < 20; ++trial) {
+    std::vector<std::vector<Vec2>> loops;
+    const int nl = 3 + trial % 5;
+    for (int l = 0; l < nl; ++l) {
+      // Star-shaped loops of varied size so segment lengths vary a lot.
+      const Vec2 c{u(rng), u(rng)};
+      const double r = 0.01 + 0.2 * u(rng);
+      const int n = 5 + static_cast<int>(u(rng) * 60);
+      std::vector<Vec2> p;
+      for (int i = 0; i < n; ++i) {
+        const double a = 6.283185307179586 * i / n;
+        const double rr = r * (0.5 + u(rng));
+        p.push_back({c.x + rr * std::cos(a), c.y + rr * std::sin(a)});
+      }
+      if (trial % 4 == 0) p[2] = p[0] + 0.5 * (p[1] - p[0]) + Vec2{0, 0};   // collinear junk
+      loops.push_back(p);
+    }
+    IntersectionStats st;
+    const auto got = find_intersections(loops, &st);
+    std::set<std::tuple<unsigned, unsigned, unsigned, unsigned>> want, have;
+    for (const auto& h : got) have.insert({h.loop_a, h.seg_a, h.loop_b, h.seg_b});
+    CHECK(have.size() == got.size());   // each pair reported once
+    for (unsigned a = 0; a < loops.size(); ++a)
+      for (unsigned i = 0; i < loops[a].size(); ++i)
+        for (unsigned b = a; b < loops.size(); ++b)
+          for (unsigned j = (a == b ? i + 1 : 0); j < loops[b].size(); ++j) {
+            const unsigned na = static_cast<unsigned>(loops[a].size());
+            const Vec2 p = loops[a][i], q = loops[a][(i + 1) % na];
+            const Vec2 r = loops[b][j], s = loops[b][(j + 1) % loops[b].size()];
+            const bool adj = a == b && ((i + 1) % na == j || (j + 1) % na == i);
+            if (adj) continue;
+            const Sign o1 = orient2d(p, q, r), o2 = orient2d(p, q, s), o3 = orient2d(r, s, p), o4 = orient2d(r, s, q);
+            bool hit = false;
+            if (o1 == Sign::Zero && o2 == Sign::Zero) {
+              auto within = [](Vec2 x, Vec2 y, Vec2 z) {
+                return std::min(x.x, y.x) <= z.x && z.x <= std::max(x.x, y.x) && std::min(x.y, y.y) <= z.y &&
+                       z.y <= std::max(x.y, y.y);
+              };
+              hit = within(p, q, r) || within(p, q, s) || within(r, s, p) || within(r, s, q);
+            } else {
+              hit = !(o1 != Sign::Zero && o1 == o2) && !(o3 != Sign::Zero && o3 == o4);
+            }
+            if (hit) want.insert({a, i, b, j});
+          }
+    std::set<std::tuple<unsigned, unsigned, unsigned, unsigned>> have_nonadj;
+    for (const auto& h : got) {
+      const unsigned na = static_cast<unsigned>(loops[h.loop_a].size());
+      const bool adj = h.loop_a == h.loop_b && ((h.seg_a + 1) % na == h.seg_b || (h.seg_b + 1) % na == h.seg_a);
+      if (!adj) have_nonadj.insert({h.loop_a, h.seg_a, h.loop_b, h.seg_b});
+    }
+    CHECK(have_nonadj == want);
+    CHECK(st.candidate_pairs < st.segments * st.segments / 4);   // not all pairs
+  }
+}
+
+TEST_CASE("intersections: near misses measure straits") {
+  const std::vector<std::vector<Vec2>> two{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {{1.05, 0}, {2, 0}, {2, 1}, {1.05, 1}}};
+  const std::vector<std::vector<double>> w{{0.1, 0.1, 0.1, 0.1}, {0.1, 0.1, 0.1, 0.1}};
+  auto m = find_near_misses(two, w);
+  REQUIRE_FALSE(m.empty());
+  CHECK(m[0].distance == doctest::Approx(0.05));
+  const std::vector<std::vector<double>> narrow{{0.01, 0.01, 0.01, 0.01}, {0.01, 0.01, 0.01, 0.01}};
+  CHECK(find_near_misses(two, narrow).empty());
+}
