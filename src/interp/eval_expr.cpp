@@ -197,6 +197,19 @@ Value Interpreter::eval(ExprId id) {
       e.node);
 }
 
+std::string Interpreter::unknown_name_hint(const std::string& name) const {
+  std::string hint = suggestion(name, symbols_.nums());
+  if (hint.empty()) hint = suggestion(name, symbols_.strs());
+  if (hint.empty()) {
+    // `Sqr(2)` parses as indexing a variable 'Sqr': point at the function.
+    std::vector<std::pair<std::string_view, int>> fns;
+    for (const auto& b : all_builtins()) fns.emplace_back(b.name, 0);
+    hint = suggestion(name, fns);
+    if (!hint.empty()) hint.insert(hint.find('\'') , "the function ");
+  }
+  return hint;
+}
+
 Value Interpreter::eval_var(const Expr& e, const VarExpr& v) {
   const std::string name = resolve_name(v.name);
   if (const NumSymbol* sym = symbols_.find_num(name)) {
@@ -210,18 +223,14 @@ Value Interpreter::eval_var(const Expr& e, const VarExpr& v) {
       fail_fmt(e.range, Diag::WrongType, fmt::format("'{}' is an empty string list", name));
     return Value::string((*strs)[0]);
   }
-  std::string hint = suggestion(name, symbols_.nums());
-  if (hint.empty()) hint = suggestion(name, symbols_.strs());
-  fail_fmt(e.range, Diag::UnknownVariable, name, hint);
+  fail_fmt(e.range, Diag::UnknownVariable, name, unknown_name_hint(name));
 }
 
 Value Interpreter::eval_whole(const Expr& e, const Name& n) {
   const std::string name = resolve_name(n);
   if (const NumSymbol* sym = symbols_.find_num(name)) return Value::list(sym->values);
   if (const auto* strs = symbols_.find_str(name)) return Value::string_list(*strs);
-  std::string hint = suggestion(name, symbols_.nums());
-  if (hint.empty()) hint = suggestion(name, symbols_.strs());
-  fail_fmt(e.range, Diag::UnknownVariable, name, hint);
+  fail_fmt(e.range, Diag::UnknownVariable, name, unknown_name_hint(name));
 }
 
 Value Interpreter::eval_index(const Expr& e, const Name& n, ExprId index) {

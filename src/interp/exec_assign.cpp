@@ -60,7 +60,10 @@ void Interpreter::assign_option(const LValue& t, AffOp op, ExprId value, SourceR
   const OptionInfo* info = options_.find(name);
   if (!info) {
     if (known_other_category(ast_.str(o.category))) {
-      fail_fmt(o.range, Diag::NotSupportedYet, fmt::format("{}.* options", ast_.str(o.category)), "");
+      // Post-processing and printing options only matter to the GUI and the
+      // post-processor: skipped like an unsupported statement.
+      not_supported_stmt(current_stmt_, fmt::format("{}.* options", ast_.str(o.category)));
+      return;
     }
     fail_fmt(o.range, Diag::UnknownOption, name, fmt::format(" (did you mean '{}'?)", options_.closest(name)));
   }

@@ -118,6 +118,7 @@ class Interpreter {
   Value eval_whole(const lang::Expr& e, const lang::Name& name);
   Value eval_postfix(const lang::Expr& e, const lang::PostfixExpr& p);
   long long to_int(double v, lang::SourceRange r);
+  std::string unknown_name_hint(const std::string& name) const;
 
   // assignments (exec_assign.cpp)
   void exec_assign(const lang::Stmt& s, const lang::AssignStmt& a);

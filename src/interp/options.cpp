@@ -124,6 +124,23 @@ const std::vector<std::pair<std::string_view, std::string_view>>& Options::alias
       {"Mesh.CharacteristicLengthFromCurvature", "Mesh.MeshSizeFromCurvature"},
       {"Mesh.CharacteristicLengthFromParametricPoints", "Mesh.MeshSizeFromParametricPoints"},
       {"Mesh.CharacteristicLengthExtendFromBoundary", "Mesh.MeshSizeExtendFromBoundary"},
+      // Pre-4.0 "Line"/"Numbers" names that 4.8.4 still accepts (t4.geo uses
+      // Geometry.DoubleClickedLineCommand); checked with gmsh -0.
+      {"Geometry.DoubleClickedLineCommand", "Geometry.DoubleClickedCurveCommand"},
+      {"Geometry.Lines", "Geometry.Curves"},
+      {"Geometry.LineSelectWidth", "Geometry.CurveSelectWidth"},
+      {"Geometry.LineType", "Geometry.CurveType"},
+      {"Geometry.LineWidth", "Geometry.CurveWidth"},
+      {"Geometry.Color.Lines", "Geometry.Color.Curves"},
+      {"Geometry.PointNumbers", "Geometry.PointLabels"},
+      {"Geometry.LineNumbers", "Geometry.CurveLabels"},
+      {"Geometry.SurfaceNumbers", "Geometry.SurfaceLabels"},
+      {"Geometry.VolumeNumbers", "Geometry.VolumeLabels"},
+      {"Mesh.PointNumbers", "Mesh.NodeLabels"},
+      {"Mesh.LineNumbers", "Mesh.LineLabels"},
+      {"Mesh.SurfaceNumbers", "Mesh.SurfaceLabels"},
+      {"Mesh.VolumeNumbers", "Mesh.VolumeLabels"},
+      {"Mesh.Points", "Mesh.Nodes"},
   };
   return a;
 }
