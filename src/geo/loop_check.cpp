@@ -130,42 +130,48 @@ PlaneFrame plane_frame(const std::vector<Vec3>& pts) {
   return f;
 }
 
-bool polygon_inside(const std::vector<Vec2>& inner, const std::vector<Vec2>& outer) {
-  if (inner.empty() || outer.size() < 3) return false;
-  // Bands in y so that each query visits only the edges crossing its band.
-  double ylo = outer[0].y, yhi = outer[0].y;
-  for (Vec2 p : outer) {
-    ylo = std::min(ylo, p.y);
-    yhi = std::max(yhi, p.y);
+PolygonIndex::PolygonIndex(std::vector<Vec2> polygon) : poly_(std::move(polygon)) {
+  if (poly_.empty()) return;
+  ylo_ = yhi_ = poly_[0].y;
+  for (Vec2 p : poly_) {
+    ylo_ = std::min(ylo_, p.y);
+    yhi_ = std::max(yhi_, p.y);
   }
-  const std::size_t m = outer.size();
-  const int bands = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(m))));
-  const double h = (yhi - ylo) / bands;
-  auto band_of = [&](double y) {
-    if (!(h > 0)) return 0;
-    return std::clamp(static_cast<int>((y - ylo) / h), 0, bands - 1);
-  };
-  std::vector<std::vector<std::size_t>> edges(bands);
+  const std::size_t m = poly_.size();
+  bands_ = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(m))));
+  h_ = (yhi_ - ylo_) / bands_;
+  edges_.assign(bands_, {});
   for (std::size_t i = 0; i < m; ++i) {
-    const Vec2 a = outer[i], b = outer[(i + 1) % m];
+    const Vec2 a = poly_[i], b = poly_[(i + 1) % m];
     const int b0 = band_of(std::min(a.y, b.y)), b1 = band_of(std::max(a.y, b.y));
-    for (int k = b0; k <= b1; ++k) edges[k].push_back(i);
+    for (int k = b0; k <= b1; ++k) edges_[k].push_back(i);
   }
-  auto inside = [&](Vec2 p) {
-    if (p.y < ylo || p.y > yhi) return false;
-    bool in = false;
-    for (std::size_t i : edges[band_of(p.y)]) {
-      const Vec2 a = outer[i], b = outer[(i + 1) % m];
-      if ((a.y > p.y) != (b.y > p.y)) {
-        const double x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
-        if (x > p.x) in = !in;
-      }
+}
+
+int PolygonIndex::band_of(double y) const {
+  if (!(h_ > 0)) return 0;
+  return std::clamp(static_cast<int>((y - ylo_) / h_), 0, bands_ - 1);
+}
+
+bool PolygonIndex::contains(Vec2 p) const {
+  const std::size_t m = poly_.size();
+  if (m < 3 || p.y < ylo_ || p.y > yhi_) return false;
+  bool in = false;
+  for (std::size_t i : edges_[band_of(p.y)]) {
+    const Vec2 a = poly_[i], b = poly_[(i + 1) % m];
+    if ((a.y > p.y) != (b.y > p.y)) {
+      const double x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
+      if (x > p.x) in = !in;
     }
-    return in;
-  };
+  }
+  return in;
+}
+
+bool polygon_inside(const std::vector<Vec2>& inner, const PolygonIndex& outer) {
+  if (inner.empty()) return false;
   const std::size_t tests = std::min<std::size_t>(16, inner.size());
   for (std::size_t k = 0; k < tests; ++k)
-    if (!inside(inner[k * inner.size() / tests])) return false;
+    if (!outer.contains(inner[k * inner.size() / tests])) return false;
   return true;
 }
 

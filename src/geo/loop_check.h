@@ -39,9 +39,25 @@ struct PlaneFrame {
 };
 PlaneFrame plane_frame(const std::vector<Vec3>& pts);
 
-/// Whether polygon `inner` lies inside polygon `outer` (even-odd rule), tested on up to 16
-/// of its points spread along it. Floating-point ray crossing on sampled constructions: a
-/// model check, not a mesh decision, so the exact predicates of src/mesh are not needed.
-bool polygon_inside(const std::vector<Vec2>& inner, const std::vector<Vec2>& outer);
+/// Even-odd point-in-polygon test against a fixed polygon, with its edges sorted into
+/// horizontal bands so that a query visits about sqrt(n) edges. Floating-point ray crossing
+/// on sampled constructions: a model check, not a mesh decision, so the exact predicates of
+/// src/mesh (which depends on this module) are not used.
+class PolygonIndex {
+ public:
+  explicit PolygonIndex(std::vector<Vec2> polygon);
+  bool contains(Vec2 p) const;
+
+ private:
+  int band_of(double y) const;
+  std::vector<Vec2> poly_;
+  double ylo_ = 0, yhi_ = 0, h_ = 0;
+  int bands_ = 1;
+  std::vector<std::vector<std::size_t>> edges_;
+};
+
+/// Whether polygon `inner` lies inside the indexed polygon, tested on up to 16 of its
+/// points spread along it.
+bool polygon_inside(const std::vector<Vec2>& inner, const PolygonIndex& outer);
 
 }  // namespace sm::geo

@@ -323,7 +323,7 @@ GeoStatus Model::add_plane_surface(int tag, const std::vector<int>& loops) {
   const SurfaceGeometry* g = s.geometry ? &geometries_.at(s.geometry) : nullptr;
   LoopPolygon outer = sample_loop(*this, loops_.at(std::abs(loops[0])), g);
   PlaneFrame frame = g ? PlaneFrame{} : plane_frame(outer.xyz);
-  const std::vector<Vec2> outer2 = g ? outer.uv : frame.project(outer.xyz);
+  const PolygonIndex outer2(g ? outer.uv : frame.project(outer.xyz));
   for (std::size_t i = 1; i < loops.size(); ++i) {
     const int l = std::abs(loops[i]);
     const LoopPolygon hole = sample_loop(*this, loops_.at(l), g);

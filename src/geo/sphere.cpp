@@ -60,6 +60,25 @@ SecondDerivs PolarSphere::second_derivatives(Vec2 uv) const {
   return s;
 }
 
+Jet3 PolarSphere::map(const Jet2& c) const {
+  const double u = c.p.x, v = c.p.y;
+  const double g = 1.0 / (1.0 + u * u + v * v);
+  const double g2 = g * g, g3 = g2 * g;
+  const double gu = -2.0 * u * g2, gv = -2.0 * v * g2;
+  const double guu = -2.0 * g2 + 8.0 * u * u * g3, guv = 8.0 * u * v * g3, gvv = -2.0 * g2 + 8.0 * v * v * g3;
+  const Vec3 xu{-2.0 * g - 2.0 * u * gu, -2.0 * v * gu, 2.0 * gu};
+  const Vec3 xv{-2.0 * u * gv, -2.0 * g - 2.0 * v * gv, 2.0 * gv};
+  const Vec3 xuu{-4.0 * gu - 2.0 * u * guu, -2.0 * v * guu, 2.0 * guu};
+  const Vec3 xuv{-2.0 * gv - 2.0 * u * guv, -2.0 * gu - 2.0 * v * guv, 2.0 * guv};
+  const Vec3 xvv{-2.0 * u * gvv, -4.0 * gv - 2.0 * v * gvv, 2.0 * gvv};
+  const double a = c.d1.x, b = c.d1.y;
+  Jet3 out;
+  out.p = centre_ + radius_ * Vec3{-2.0 * u * g, -2.0 * v * g, 2.0 * g - 1.0};
+  out.d1 = radius_ * (a * xu + b * xv);
+  out.d2 = radius_ * ((a * a) * xuu + (2.0 * a * b) * xuv + (b * b) * xvv + c.d2.x * xu + c.d2.y * xv);
+  return out;
+}
+
 Metric2 PolarSphere::metric(Vec2 uv) const {
   const double l = lambda(uv);
   return {l * l, 0.0, l * l};

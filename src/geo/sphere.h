@@ -4,6 +4,7 @@
 #pragma once
 
 #include "base/vec.h"
+#include "geo/jet.h"
 
 namespace sm::geo {
 
@@ -49,6 +50,9 @@ class PolarSphere {
   double lambda(Vec2 uv) const;
   void tangents(Vec2 uv, Vec3& du, Vec3& dv) const;
   SecondDerivs second_derivatives(Vec2 uv) const;
+  /// A curve (u(t), v(t)) with its derivatives mapped to the sphere (chain rule), computing
+  /// the map's derivatives once: the hot path of coastline evaluation.
+  Jet3 map(const Jet2& c) const;
   /// M = lambda^2 I (conformal).
   Metric2 metric(Vec2 uv) const;
   /// Outward unit normal at X(u,v).

@@ -32,6 +32,7 @@ Metric2 SurfaceGeometry::metric(Vec2 uv) const {
 }
 
 Jet3 SurfaceGeometry::map(const Jet2& c) const {
+  if (const PolarSphere* p = polar()) return p->map(c);
   Jet3 out;
   out.p = point(c.p);
   Vec3 xu, xv;

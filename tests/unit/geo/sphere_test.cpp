@@ -183,3 +183,16 @@ TEST_CASE("geodesy: great circle vs GeographicLib, WGS84 distances, geocentric")
   const LonLat w = lonlat_from_sphere(sphere_from_lonlat({-180, 10}, 1.0));
   CHECK(w.lon == doctest::Approx(180.0));
 }
+
+TEST_CASE("PolarSphere::map: the chain rule in one pass equals the generic composition") {
+  const PolarSphere s({0.1, -0.2, 0.3}, 1.7);
+  const Jet2 c{{0.4, -0.9}, {1.3, 0.2}, {-0.5, 2.0}};
+  const Jet3 j = s.map(c);
+  Vec3 xu, xv;
+  s.tangents(c.p, xu, xv);
+  const SecondDerivs d = s.second_derivatives(c.p);
+  CHECK(norm(j.p - s.point(c.p)) < 1e-15);
+  CHECK(norm(j.d1 - (c.d1.x * xu + c.d1.y * xv)) < 1e-14);
+  const Vec3 d2 = (c.d1.x * c.d1.x) * d.uu + (2 * c.d1.x * c.d1.y) * d.uv + (c.d1.y * c.d1.y) * d.vv + c.d2.x * xu + c.d2.y * xv;
+  CHECK(norm(j.d2 - d2) < 1e-13);
+}

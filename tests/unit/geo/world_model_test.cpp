@@ -1,0 +1,116 @@
+// The paper's world model on real data (section 2, Fig. 4): every GSHHG crude coastline of
+// world_c.txt becomes points in unit-PolarSphere (u,v) coordinates and one closed BSpline;
+// Antarctica, the ring round the projection's singular point, is the outer loop of one
+// Plane Surface and every other coastline is a hole. The model must accept all of it.
+#include "geo/model.h"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace sm;
+using namespace sm::geo;
+
+namespace {
+
+// A tiny reader for the test only (src/coast owns the real one): segments of "lon lat".
+struct Segment {
+  bool wraps_pole = false;
+  std::vector<LonLat> pts;
+};
+
+std::vector<Segment> read_segments(const std::string& path) {
+  std::ifstream in(path);
+  REQUIRE(in.good());
+  std::vector<Segment> segs;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    if (line[0] == '>') {
+      segs.emplace_back();
+      segs.back().wraps_pole = line.find("wraps_pole=1") != std::string::npos;
+      continue;
+    }
+    std::istringstream ss(line);
+    LonLat p;
+    ss >> p.lon >> p.lat;
+    REQUIRE(!segs.empty());
+    segs.back().pts.push_back(p);
+  }
+  return segs;
+}
+
+}  // namespace
+
+TEST_CASE("world model: world_c.txt as closed BSplines on a PolarSphere, Antarctica outer") {
+  const std::vector<Segment> segs = read_segments(std::string(SM_SHARED_DATA) + "/gshhg/world_c.txt");
+  REQUIRE(segs.size() == 743);
+  Model m;
+  REQUIRE(m.add_point(1, {0, 0, 0}));
+  REQUIRE(m.add_point(2, {0, 0, 1}));
+  REQUIRE(m.add_polar_sphere(1, 1, 2));
+  const PolarSphere& ps = *m.geometry(1)->polar();
+  int outer = 0;
+  std::vector<int> holes;
+  std::size_t npts = 0;
+  for (const Segment& s : segs) {
+    std::vector<int> ids;
+    const int first = m.new_point_tag();
+    for (const LonLat& ll : s.pts) {
+      const int t = m.new_point_tag();
+      REQUIRE(m.add_point(t, {ps.param_from_lonlat(ll).x, ps.param_from_lonlat(ll).y, 0}));
+      ids.push_back(t);
+    }
+    // The last vertex repeats the first on the sphere (for Antarctica: lon 180 vs -180):
+    // close the spline on the first point's tag instead.
+    const Vec3 a = m.vertex(ids.front())->xyz, b = m.vertex(ids.back())->xyz;
+    REQUIRE(norm(a - b) < 1e-12);
+    REQUIRE(m.remove({{0, ids.back()}}, false));
+    ids.back() = first;
+    npts += ids.size() - 1;
+    const int c = m.new_curve_tag();
+    REQUIRE(m.add_curve(c, CurveKind::BSpline, ids));
+    const int l = m.new_loop_tag();
+    REQUIRE(m.add_curve_loop(l, {c}));
+    if (s.wraps_pole) {
+      CHECK(outer == 0);
+      outer = l;
+    } else {
+      holes.push_back(l);
+    }
+  }
+  CHECK(npts == 7899 - 743);
+  REQUIRE(outer != 0);
+  std::vector<int> loops{outer};
+  loops.insert(loops.end(), holes.begin(), holes.end());
+  const int s = m.new_surface_tag();
+  auto status = m.add_plane_surface(s, loops);
+  REQUIRE_MESSAGE(status.ok(), (status.ok() ? "" : status.error().message));
+  CHECK(m.surfaces().size() == 1);
+  CHECK(m.surface(s)->geometry == 1);
+  CHECK(m.surface(s)->loops.size() == 743);
+  for (const auto& [t, c] : m.curves()) {
+    CHECK(c.periodic());
+    CHECK(c.geometry == 1);
+    CHECK(c.shape->defined_in_uv());
+  }
+  // Every boundary curve lies on the unit sphere.
+  for (const auto& [t, c] : m.curves())
+    for (double u : {0.0, 0.37, 0.91}) CHECK(std::abs(norm(c.shape->point(u)) - 1) < 1e-14);
+  // The boundary of the face is every coastline once.
+  auto b = m.boundary({{2, s}}, false);
+  REQUIRE(b);
+  CHECK(b->size() == 743);
+
+  // Swapping the roles (Eurasia-Africa as the outer loop) must be rejected: Antarctica is
+  // not inside it in the (u,v) plane, and the error names the offending loop.
+  std::vector<int> wrong{holes.front(), outer};
+  auto bad = m.add_plane_surface(s + 1, wrong);
+  REQUIRE_FALSE(bad);
+  CHECK(bad.error().kind == GeoErrorKind::HoleOutside);
+  CHECK(bad.error().tags == std::vector<int>{s + 1, outer, holes.front()});
+}
