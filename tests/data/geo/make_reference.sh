@@ -4,6 +4,7 @@
 # inside a curve, its 3D position and the curve parameter t at which Gmsh evaluated it.
 set -e
 cd "$(dirname "$0")"
-for f in curves_euclid curves_polar; do
+/usr/bin/python3 make_coast_geo.py
+for f in curves_euclid curves_polar coast_polar; do
   gmsh "$f.geo" -1 -format msh41 -save_parametric -o "$f.msh41" > /dev/null
 done

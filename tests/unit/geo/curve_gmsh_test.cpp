@@ -203,6 +203,18 @@ TEST_CASE("curves vs Gmsh 4.8.4: drawn in (u,v) on PolarSpheres and a lon/lat Sp
   run_cases("curves_polar.msh41", cases, geos);
 }
 
+TEST_CASE("curves vs Gmsh 4.8.4: real GSHHG coastlines (Great Britain, New Guinea) on a PolarSphere") {
+  using K = CurveKind;
+  const std::map<int, SurfaceGeometry> geos = {{1, SurfaceGeometry(PolarSphere({0, 0, 0}, 1.0))}};
+  const std::vector<CurveCase> cases = {
+      {1, K::BSpline, closed(range(10, 74)), 1},
+      {2, K::Spline, closed(range(75, 152)), 1},
+      {3, K::Line, range(10, 74), 1},
+      {4, K::BSpline, range(75, 152), 1},
+  };
+  run_cases("coast_polar.msh41", cases, geos);
+}
+
 TEST_CASE("curves: a PolarSphere Line is a circle arc in (u,v), not a great circle") {
   const PolarSphere ps({0, 0, 0}, 1.0);
   CurveDef d;
