@@ -1,0 +1,121 @@
+// Plugin(GSHHS) compatibility: option mapping and the .geo writer.
+#include "coast/gshhs_plugin_geo.h"
+
+#include <cstdio>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "coast/read_gshhs.h"
+#include "coast/read_loops2.h"
+
+namespace sm::coast {
+
+std::string write_gshhs_plugin_geo(const CoastModel& m, const GshhsPluginOptions& opt) {
+  std::string out;
+  auto w = [&out](const std::string& s) { out += s; };
+  w("IP = newp;  IL = newl;  ILL = newll;  IS = news;  IFI = newf;\n");
+  if (opt.write_polar_sphere > 0) {
+    w(fmt::format("Point ( IP + 0 ) = {{0, 0, 0 }};  Point ( IP + 1 ) = {{0, 0,{:.16g}}};\n", opt.radius));
+    w("PolarSphere ( IS + 0 ) = {IP , IP+1};\n");
+  }
+  const geo::StereoPlane plane(opt.radius);
+  std::size_t ip = opt.write_polar_sphere > 0 ? 2 : 0;
+  const std::size_t first_coast_point = ip;
+  std::vector<std::size_t> curve_tag(m.curves.size());
+  std::vector<std::size_t> open_curves;
+  std::size_t il = 0;
+  // Loops in model order (surface by surface); each loop's curves share end points.
+  for (std::size_t l = 0; l < m.loops.size(); ++l) {
+    const CoastLoop& loop = m.loops[l];
+    // A periodic curve writes all its points and closes on its first. In a loop of
+    // pieces, each piece writes all but its last point, which is the next piece's first.
+    const std::size_t loop_first_point = ip;
+    for (std::size_t k = 0; k < loop.curves.size(); ++k) {
+      const CoastCurve& c = m.curves[loop.curves[k]];
+      const std::size_t start = ip;
+      const std::size_t n = c.periodic ? c.uv.size() : c.uv.size() - 1;
+      for (std::size_t i = 0; i < n; ++i) {
+        Vec2 p = c.uv[i];
+        if (opt.write_polar_sphere == -2) p = plane.from_polar(p);
+        w(fmt::format("Point ( IP + {} ) = {{{:.16g}, {:.16g}, 0 }};\n", ip++, p.x, p.y));
+      }
+      const std::size_t tag = il++;
+      curve_tag[loop.curves[k]] = tag;
+      if (c.open_boundary) open_curves.push_back(tag);
+      if (c.periodic) {
+        w(fmt::format("LoopStart{} = IP + {};  LoopEnd{} = IP + {};\n", tag, start, tag, ip - 1));
+        w(fmt::format("BSpline ( IL + {} ) = {{ IP + {} : IP + {}, IP + {} }};\n", tag, start, ip - 1, start));
+      } else if (k + 1 == loop.curves.size()) {
+        w(fmt::format("BSpline ( IL + {} ) = {{ IP + {} : IP + {}, IP + {} }};\n", tag, start, ip - 1, loop_first_point));
+      } else {
+        w(fmt::format("BSpline ( IL + {} ) = {{ IP + {} : IP + {} }};\n", tag, start, ip));
+      }
+    }
+    std::string ids;
+    for (std::size_t k = 0; k < loop.curves.size(); ++k)
+      ids += fmt::format("{}IL + {}", k ? ", " : "", curve_tag[loop.curves[k]]);
+    w(fmt::format("Line Loop ( ILL + {} ) = {{ {} }};\n", l, ids));
+  }
+  // The Plane Surfaces Gmsh 2.6 meant to write (its buffer was cleared before writing).
+  for (std::size_t s = 0; s < m.surfaces.size(); ++s) {
+    std::string ids = fmt::format("ILL + {}", m.surfaces[s].outer);
+    for (std::uint32_t h : m.surfaces[s].holes) ids += fmt::format(", ILL + {}", h);
+    w(fmt::format("Plane Surface ( IS + {} ) = {{ {} }};\n", s, ids));
+  }
+  if (!open_curves.empty()) {
+    std::string ids;
+    for (std::size_t k = 0; k < open_curves.size(); ++k) ids += fmt::format("{}IL + {}", k ? ", " : "", open_curves[k]);
+    w(fmt::format("Physical Curve ( \"open\" ) = {{ {} }};\n", ids));
+  }
+  if (ip > first_coast_point) {
+    w("Field [ IFI + 0]  = Distance;\n");
+    w(fmt::format("Field [ IFI + 0].PointsList  = {{ IP + {} : IP + {} }};\n", first_coast_point, ip - 1));
+  }
+  return out;
+}
+
+Result<GshhsPluginResult> run_gshhs_plugin(const GshhsPluginOptions& opt) {
+  if (!(opt.radius > 0)) return CoastError{opt.in_file_name, -1, "Plugin(GSHHS): radius must be positive", {}};
+  if (opt.write_polar_sphere != 1 && opt.write_polar_sphere != 0 && opt.write_polar_sphere != -2)
+    return CoastError{opt.in_file_name, -1,
+                      fmt::format("Plugin(GSHHS): WritePolarSphere must be 1, 0 or -2, not {}", opt.write_polar_sphere), {}};
+  Result<Coastline> data = CoastError{};
+  if (opt.format == "gshhs") {
+    data = read_gshhs(opt.in_file_name);
+  } else if (opt.format == "loops2") {
+    const auto coord = parse_loops2_coordinate(opt.coordinate);
+    if (!coord)
+      return CoastError{opt.in_file_name, -1, fmt::format("Plugin(GSHHS): unknown Coordinate '{}'", opt.coordinate), {}};
+    Loops2Options lo;
+    lo.coordinate = *coord;
+    lo.utm_zone = opt.utm_zone;
+    lo.utm_equatorial_radius = opt.utm_equatorial_radius;
+    lo.utm_polar_radius = opt.utm_polar_radius;
+    data = read_loops2(opt.in_file_name, lo);
+  } else {
+    return CoastError{opt.in_file_name, -1, fmt::format("Plugin(GSHHS): unknown Format '{}' (gshhs or loops2)", opt.format), {}};
+  }
+  if (!data) return data.error();
+  if (opt.format == "loops2")
+    for (Ring& r : data->rings) r.level = 1;   // loops2 has no levels: every loop is a coastline
+  ImportOptions io;
+  io.radius = opt.radius;
+  io.gamma = opt.field ? opt.field : AccuracyFn([](std::span<const Vec3>, std::span<double> g) {
+    for (double& x : g) x = 1e-3;   // no field: keep every distinct point
+  });
+  io.strait_factor = opt.min_straits_factor > 0 ? opt.min_straits_factor : 1.0;
+  io.close_straits = opt.min_straits_factor > 0;
+  auto model = build_coast_model(std::move(*data), io);
+  if (!model) return model.error();
+  GshhsPluginResult res;
+  res.geo = write_gshhs_plugin_geo(*model, opt);
+  res.model = std::move(*model);
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(opt.out_file_name.c_str(), "wb"), &std::fclose);
+  if (!f) return CoastError{opt.out_file_name, -1, "Plugin(GSHHS): cannot write the output file", {}};
+  if (std::fwrite(res.geo.data(), 1, res.geo.size(), f.get()) != res.geo.size())
+    return CoastError{opt.out_file_name, -1, "Plugin(GSHHS): write error", {}};
+  return res;
+}
+
+}  // namespace sm::coast
