@@ -363,8 +363,10 @@ class Ast {
   StrId find(std::string_view text) const;
 
  private:
-  std::vector<Expr> exprs_;
-  std::vector<Stmt> stmts_;
+  // Deques: the interpreter parses an Included file while it is still running
+  // statements of the including one, so node references must survive growth.
+  std::deque<Expr> exprs_;
+  std::deque<Stmt> stmts_;
   std::deque<std::string> strings_;  // deque: views into it stay valid as it grows
   std::unordered_map<std::string_view, StrId> string_ids_;
 };
