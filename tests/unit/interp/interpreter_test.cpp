@@ -224,3 +224,25 @@ TEST_CASE("interp: Include searches -I directories and the stdlib") {
   CHECK(r.out == "6.371e+06\n");
   fs::remove_all(dir);
 }
+
+TEST_CASE("interp: Include inside a running loop keeps the loop's nodes valid") {
+  // Parsing the included file grows the shared Ast while the For body runs.
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "sm_interp_test_loop_include";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  {
+    std::ofstream inc(dir / "body.geo");
+    inc << "count += 1;\n";
+    for (int i = 0; i < 2000; ++i) inc << "tmp_" << i << " = " << i << " * 2 + 1;\n";
+  }
+  std::ofstream(dir / "main.geo") << "count = 0;\nFor i In {1:3}\n  Include \"body.geo\";\n  Printf(\"%g %g\", i, count);\nEndFor\n";
+  sm::lang::SourceManager sources;
+  sm::lang::Diagnostics diags(sources);
+  std::ostringstream out;
+  sm::interp::Interpreter in(sources, diags, out);
+  in.run_file((dir / "main.geo").string());
+  CHECK(diags.render_all() == "");
+  CHECK(out.str() == "1 1\n2 2\n3 3\n");
+  fs::remove_all(dir);
+}

@@ -1,0 +1,2 @@
+l[] = {0:1e10};
+// expect error: 1:8: limit-exceeded

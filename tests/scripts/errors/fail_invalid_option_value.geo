@@ -1,0 +1,2 @@
+Mesh.Algorithm = 4;
+// expect error: 1:18: invalid-option-value

@@ -1,0 +1,2 @@
+l[] = {1:10:0};
+// expect error: 1:13: invalid-range

@@ -1,0 +1,2 @@
+x = Sqrt(-1);
+// expect error: 1:10: builtin-error

@@ -1,0 +1,2 @@
+Mesh.Algoritm = 6;
+// expect error: 1:1: unknown-option

@@ -1,0 +1,3 @@
+s = "text";
+x = s + 1;
+// expect error: 2:5: wrong-type
