@@ -1,0 +1,391 @@
+// Bowyer-Watson Delaunay insertion with ghost triangles.
+//
+// Ghost triangles join every hull edge to one symbolic vertex at infinity,
+// so every side has a twin and a point outside the hull is located like any
+// other: the ghost (u, v, G) across hull edge u -> v "contains" p when p is
+// strictly left of u -> v, or on the open segment uv. We use ghosts rather
+// than a big enclosing triangle because the enclosing triangle's finite
+// corners change which hull edges are Delaunay (near-collinear hull points
+// end up joined to them) unless it is pushed impossibly far; ghosts keep the
+// result exactly the Delaunay triangulation of the input.
+#include "mesh/delaunay.h"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <utility>
+
+namespace sm {
+namespace {
+
+constexpr std::uint32_t kGhost = 0xFFFFFFFEu;
+constexpr std::uint32_t kNo = 0xFFFFFFFFu;
+
+// xorshift64*: small, fast, and the same on every platform.
+struct Rng {
+  std::uint64_t s;
+  std::uint32_t next() {
+    s ^= s >> 12;
+    s ^= s << 25;
+    s ^= s >> 27;
+    return static_cast<std::uint32_t>((s * 0x2545F4914F6CDD1Dull) >> 32);
+  }
+};
+
+// Hilbert curve order as a 4-state machine. The state is the transform
+// (swap of x and y, complement of both) accumulated by the quadrants above;
+// each level reads one bit of x and y, emits a 2-bit digit and updates the
+// state. The table below runs four levels per lookup: index
+// state << 8 | x4 << 4 | y4, value digits8 << 2 | new state.
+constexpr std::array<std::uint16_t, 1024> make_hilbert_table() {
+  std::array<std::uint16_t, 1024> tab{};
+  for (std::uint32_t st = 0; st < 4; ++st)
+    for (std::uint32_t x4 = 0; x4 < 16; ++x4)
+      for (std::uint32_t y4 = 0; y4 < 16; ++y4) {
+        std::uint32_t comp = st & 1, swp = st >> 1, d = 0;
+        for (int l = 3; l >= 0; --l) {
+          std::uint32_t ex = ((x4 >> l) & 1) ^ comp, ey = ((y4 >> l) & 1) ^ comp;
+          if (swp) {
+            const std::uint32_t t = ex;
+            ex = ey;
+            ey = t;
+          }
+          d = d << 2 | ((3 * ex) ^ ey);
+          // Quadrants with y = 0 are entered rotated: swap, plus complement
+          // when x = 1 (the lower-left / lower-right cells of the U).
+          if (ey == 0) {
+            comp ^= ex;
+            swp ^= 1;
+          }
+        }
+        tab[st << 8 | x4 << 4 | y4] = static_cast<std::uint16_t>(d << 2 | swp << 1 | comp);
+      }
+  return tab;
+}
+constexpr std::array<std::uint16_t, 1024> kHilbert = make_hilbert_table();
+
+// Sorts (key << 32 | index) values by the low key_bits of the key: LSD
+// radix, passes of 11 bits, stable.
+void radix_sort_keys(std::vector<std::uint64_t>& v, int key_bits) {
+  std::vector<std::uint64_t> tmp(v.size());
+  for (int shift = 32; shift < 32 + key_bits; shift += 11) {
+    std::vector<std::size_t> count(2049, 0);
+    for (std::uint64_t x : v) ++count[((x >> shift) & 0x7FF) + 1];
+    for (int i = 0; i < 2048; ++i) count[i + 1] += count[i];
+    for (std::uint64_t x : v) tmp[count[(x >> shift) & 0x7FF]++] = x;
+    v.swap(tmp);
+  }
+}
+
+// Working triangle: corners (kGhost allowed), neighbour sides and the
+// cavity stamp in one half cache line, so a conflict test or a walk step
+// touches one line. Sides are numbered 4t + e here (shifts, no division by
+// 3) and become 3t + e in the store.
+struct alignas(32) Tri {
+  std::uint32_t v[3];
+  std::uint32_t n[3];
+  std::uint32_t stamp;
+  std::uint32_t pad;
+};
+
+class Builder {
+ public:
+  Builder(TriangleStore& m, const DelaunayOptions& opt, DelaunayResult& res)
+      : m_(m), res_(res), stats_(&res.stats.predicates), rng_{opt.seed | 1}, seed_(opt.seed) {}
+
+  void run();
+
+ private:
+  static bool is_ghost(const Tri& t) { return t.v[0] == kGhost || t.v[1] == kGhost || t.v[2] == kGhost; }
+  Vec2 pos(std::uint32_t v) const { return pts_[v]; }
+  bool in_conflict(const Tri& t, std::uint32_t p) const;
+  std::uint32_t locate(std::uint32_t p, std::uint32_t start);
+  void insert(std::uint32_t p, std::uint32_t t0);
+  std::uint32_t new_slot() {
+    tri_.push_back(Tri{});
+    return static_cast<std::uint32_t>(tri_.size() - 1);
+  }
+  void link(std::uint32_t a, std::uint32_t b) {
+    tri_[a >> 2].n[a & 3] = b;
+    tri_[b >> 2].n[b & 3] = a;
+  }
+  void finish();
+
+  TriangleStore& m_;
+  DelaunayResult& res_;
+  PredicateStats* stats_;
+  Rng rng_;
+  std::uint64_t seed_;
+  // Vertices are renumbered by insertion rank so that consecutive insertions
+  // touch neighbouring memory: pts_[k] = m.xy[orig_[k]]. Ties are still
+  // broken by the original ids, so the result does not depend on the order.
+  std::vector<Vec2> pts_;
+  std::vector<std::uint32_t> orig_;
+  std::vector<Tri> tri_;
+  std::uint32_t stamp_now_ = 0;
+  std::uint32_t last_ = 0;  // a real triangle near the last insertion
+  // Scratch, reused by every insertion.
+  struct Bound {
+    std::uint32_t a, b, outer;
+  };
+  std::vector<std::uint32_t> stack_, cavity_, vmap_;
+  std::vector<Bound> bound_;
+};
+
+bool Builder::in_conflict(const Tri& t, std::uint32_t p) const {
+  const std::uint32_t* c = t.v;
+  std::uint32_t u, v;
+  if (c[2] == kGhost) u = c[0], v = c[1];
+  else if (c[0] == kGhost) u = c[1], v = c[2];
+  else if (c[1] == kGhost) u = c[2], v = c[0];
+  else {
+    const Sign s = incircle(pos(c[0]), pos(c[1]), pos(c[2]), pos(p), stats_);
+    if (s != Sign::Zero) return s == Sign::Positive;
+    return incircle_sos_tie(pos(c[0]), pos(c[1]), pos(c[2]), pos(p), orig_[c[0]], orig_[c[1]], orig_[c[2]],
+                            orig_[p], stats_) == Sign::Positive;
+  }
+  const Vec2 a = pos(u), b = pos(v), q = pos(p);
+  const Sign o = orient2d(a, b, q, stats_);
+  if (o != Sign::Zero) return o == Sign::Positive;
+  // Collinear: in conflict only on the open segment (exact comparisons).
+  if (a.x != b.x) return (a.x < q.x && q.x < b.x) || (b.x < q.x && q.x < a.x);
+  return (a.y < q.y && q.y < b.y) || (b.y < q.y && q.y < a.y);
+}
+
+// Visibility walk from a real triangle: cross an edge that has p strictly on
+// its right, trying the edges from a random one (which guarantees
+// termination), and skipping the edge we came through. Stops in a real
+// triangle containing p (closed) or in the ghost beyond the hull edge crossed.
+std::uint32_t Builder::locate(std::uint32_t p, std::uint32_t t) {
+  static constexpr std::uint32_t kNext[3] = {1, 2, 0};
+  const Vec2 q = pos(p);
+  std::uint32_t came = 3;  // local index of the edge we entered by; 3 = none
+  for (;;) {
+    const Tri& tr = tri_[t];
+    const std::uint32_t e0 = static_cast<std::uint32_t>((std::uint64_t{rng_.next()} * 3) >> 32);
+    std::uint32_t e = e0, k = 0;
+    for (; k < 3; ++k, e = kNext[e]) {
+      if (e == came) continue;
+      if (orient2d(pos(tr.v[e]), pos(tr.v[kNext[e]]), q, stats_) == Sign::Negative) break;
+    }
+    if (k == 3) return t;
+    const std::uint32_t o = tr.n[e];
+    ++res_.stats.walk_steps;
+    t = o >> 2;
+    if (is_ghost(tri_[t])) return t;
+    came = o & 3;
+  }
+}
+
+void Builder::insert(std::uint32_t p, std::uint32_t t0) {
+  const std::uint32_t stamp = ++stamp_now_;
+  cavity_.clear();
+  bound_.clear();
+  stack_.clear();
+  tri_[t0].stamp = stamp;
+  stack_.push_back(t0);
+  while (!stack_.empty()) {
+    const std::uint32_t t = stack_.back();
+    stack_.pop_back();
+    cavity_.push_back(t);
+    for (std::uint32_t e = 0; e < 3; ++e) {
+      const std::uint32_t o = tri_[t].n[e];
+      Tri& nt = tri_[o >> 2];
+      if (nt.stamp == stamp) continue;
+      if (in_conflict(nt, p)) {
+        nt.stamp = stamp;
+        stack_.push_back(o >> 2);
+      } else {
+        bound_.push_back({tri_[t].v[e], tri_[t].v[e == 2 ? 0 : e + 1], o});
+      }
+    }
+  }
+  res_.stats.cavity_triangles += cavity_.size();
+  // The boundary is a simple polygon around p: one new triangle (a, b, p)
+  // per boundary edge, two more triangles than the cavity had.
+  while (cavity_.size() < bound_.size()) cavity_.push_back(new_slot());
+  const std::size_t k = bound_.size();
+  for (std::size_t i = 0; i < k; ++i) {
+    const Bound& bd = bound_[i];
+    Tri& t = tri_[cavity_[i]];
+    t.v[0] = bd.a, t.v[1] = bd.b, t.v[2] = p;
+    link(cavity_[i] << 2, bd.outer);
+  }
+  // Link side b -> p of the triangle on edge (a, b) with side p -> b of the
+  // one on (b, c). Small cavities (the usual 4-8 edges) search the boundary
+  // list, which stays in cache; large ones index a per-vertex map.
+  if (k <= 16) {
+    for (std::size_t i = 0; i < k; ++i) {
+      const std::uint32_t b = bound_[i].b;
+      std::size_t j = 0;
+      while (bound_[j].a != b) ++j;
+      link(cavity_[i] << 2 | 1, cavity_[j] << 2 | 2);
+    }
+  } else {
+    std::uint32_t ghost_tri = kNo;
+    for (std::size_t i = 0; i < k; ++i) {
+      if (bound_[i].a == kGhost) ghost_tri = cavity_[i];
+      else vmap_[bound_[i].a] = cavity_[i];
+    }
+    for (std::size_t i = 0; i < k; ++i) {
+      const std::uint32_t b = bound_[i].b;
+      link(cavity_[i] << 2 | 1, (b == kGhost ? ghost_tri : vmap_[b]) << 2 | 2);
+    }
+  }
+  for (std::size_t i = 0; i < k; ++i)
+    if (bound_[i].a != kGhost && bound_[i].b != kGhost) {
+      last_ = cavity_[i];
+      break;
+    }
+}
+
+void Builder::run() {
+  const auto n = m_.num_vertices();
+  orig_ = brio_order(m_.xy, seed_);
+  pts_.resize(n);
+  for (std::uint32_t k = 0; k < n; ++k) pts_[k] = m_.xy[orig_[k]];
+  // Initial triangle: the first three points in order that are not collinear.
+  std::uint32_t i0 = n == 0 ? kNo : 0, i1 = kNo, i2 = kNo;
+  for (std::uint32_t k = 1; k < n && i1 == kNo; ++k)
+    if (!(pos(k) == pos(i0))) i1 = k;
+  for (std::uint32_t k = i1 + 1; k < n && i1 != kNo && i2 == kNo; ++k)
+    if (orient2d(pos(i0), pos(i1), pos(k), stats_) != Sign::Zero) i2 = k;
+  if (i2 == kNo) {
+    res_.error = n < 3 ? "fewer than three points to triangulate" : "all points are collinear or coincident";
+    return;
+  }
+  if (orient2d(pos(i0), pos(i1), pos(i2), stats_) == Sign::Negative) std::swap(i1, i2);
+  tri_.reserve(2 * std::size_t{n} + 4);
+  vmap_.assign(n, kNo);
+  const std::uint32_t c[3] = {i0, i1, i2};
+  const std::uint32_t t = new_slot();
+  for (int e = 0; e < 3; ++e) tri_[t].v[e] = c[e];
+  std::uint32_t gh[3];
+  for (std::uint32_t e = 0; e < 3; ++e) {
+    gh[e] = new_slot();  // ghost across edge c[e] -> c[e+1]: (c[e+1], c[e], G)
+    tri_[gh[e]].v[0] = c[(e + 1) % 3], tri_[gh[e]].v[1] = c[e], tri_[gh[e]].v[2] = kGhost;
+    link(t << 2 | e, gh[e] << 2);
+  }
+  for (int e = 0; e < 3; ++e) link(gh[e] << 2 | 1, gh[(e + 2) % 3] << 2 | 2);
+  last_ = t;
+  for (std::uint32_t p = 0; p < n; ++p) {
+    if (p == i0 || p == i1 || p == i2) continue;
+    const std::uint32_t t0 = locate(p, last_);
+    if (!is_ghost(tri_[t0])) {
+      const std::uint32_t* tc = tri_[t0].v;
+      const Vec2 q = pos(p);
+      std::uint32_t same = kNo;
+      for (int e = 0; e < 3; ++e)
+        if (pos(tc[e]) == q) same = tc[e];
+      if (same != kNo) {
+        res_.duplicates.push_back({VertexId{orig_[p]}, VertexId{orig_[same]}});
+        continue;
+      }
+    }
+    insert(p, t0);
+  }
+  finish();
+}
+
+// Moves the real triangles into the store in slot order (deterministic),
+// drops the ghosts (their real neighbours become hull sides) and sets out_side.
+void Builder::finish() {
+  const auto slots = static_cast<std::uint32_t>(tri_.size());
+  std::vector<std::uint32_t> new_id(slots, kNo);
+  std::uint32_t nt = 0;
+  for (std::uint32_t t = 0; t < slots; ++t)
+    if (!is_ghost(tri_[t])) new_id[t] = nt++;
+  m_.corner.resize(3 * std::size_t{nt});
+  m_.twin.resize(3 * std::size_t{nt});
+  m_.side_flags.assign(3 * std::size_t{nt}, 0);
+  m_.tri_flags.assign(nt, 0);
+  m_.free_tris.clear();
+  // out_side by insertion rank first (sequential writes), then scattered once.
+  std::vector<Side> out_local(pts_.size());
+  for (std::uint32_t t = 0; t < slots; ++t) {
+    const std::uint32_t u = new_id[t];
+    if (u == kNo) continue;
+    for (std::uint32_t e = 0; e < 3; ++e) {
+      const std::uint32_t o = tri_[t].n[e];
+      const std::uint32_t ou = new_id[o >> 2];
+      const std::uint32_t k = tri_[t].v[e];
+      m_.corner[3 * u + e] = VertexId{orig_[k]};
+      m_.twin[3 * u + e] = ou == kNo ? Side{} : Side{3 * ou + (o & 3)};
+      out_local[k] = Side{3 * u + e};
+    }
+  }
+  m_.out_side.assign(m_.num_vertices(), Side{});
+  for (std::uint32_t k = 0; k < pts_.size(); ++k) m_.out_side[orig_[k]] = out_local[k];
+}
+
+}  // namespace
+
+// Position along a Hilbert curve of a point on a 2^bits x 2^bits grid
+// (bits a multiple of 4).
+std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y, int bits) {
+  std::uint32_t d = 0, st = 0;
+  for (int l = bits - 4; l >= 0; l -= 4) {
+    const std::uint32_t v = kHilbert[st << 8 | ((x >> l) & 15) << 4 | ((y >> l) & 15)];
+    d = d << 8 | v >> 2;
+    st = v & 3;
+  }
+  return d;
+}
+
+std::vector<std::uint32_t> brio_order(const std::vector<Vec2>& xy, std::uint64_t seed) {
+  const auto n = static_cast<std::uint32_t>(xy.size());
+  std::vector<std::uint32_t> order(n);
+  if (n == 0) return order;
+  double x0 = xy[0].x, x1 = x0, y0 = xy[0].y, y1 = y0;
+  for (const Vec2& p : xy) {
+    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x);
+    y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+  }
+  // A grid finer than the point spacing is enough to order by; 12 bits per
+  // axis plus 4 round bits keep the key within 32 bits.
+  int bits = 4;
+  while (bits < 12 && (std::uint64_t{1} << (2 * bits)) < 16 * std::uint64_t{n}) bits += 4;
+  const double span = std::max(x1 - x0, y1 - y0);
+  const double scale = span > 0 ? ((1u << bits) - 1) / span : 0.0;
+  // BRIO: a point joins round `level` with probability 2^-(level+1) (a coin
+  // flipped until heads); rounds go from the highest level, a few dozen
+  // points, to level 0, half of them. One stable radix sort on
+  // (rounds - level, Hilbert index) orders everything in streaming passes.
+  int rounds = 0;
+  while (rounds < 15 && (n >> (rounds + 1)) > 32) ++rounds;
+  const int key_bits = 2 * bits + 4;
+  Rng rng{seed | 1};
+  std::vector<std::uint64_t> keys(n);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const Vec2 p = xy[i];
+    const auto qx = std::min(static_cast<std::uint32_t>((p.x - x0) * scale), (1u << bits) - 1);
+    const auto qy = std::min(static_cast<std::uint32_t>((p.y - y0) * scale), (1u << bits) - 1);
+    const int level = std::min(std::countr_zero(rng.next() | 0x80000000u), rounds);
+    const std::uint64_t key = std::uint64_t(rounds - level) << (2 * bits) | hilbert_index(qx, qy, bits);
+    keys[i] = key << 32 | i;
+  }
+  radix_sort_keys(keys, key_bits);
+  for (std::uint32_t i = 0; i < n; ++i) order[i] = static_cast<std::uint32_t>(keys[i]);
+  return order;
+}
+
+DelaunayResult delaunay(TriangleStore& m, const DelaunayOptions& opt) {
+  DelaunayResult res;
+  m.corner.clear();
+  m.twin.clear();
+  m.side_flags.clear();
+  m.tri_flags.clear();
+  m.free_tris.clear();
+  m.out_side.assign(m.num_vertices(), Side{});
+  for (const Vec2& p : m.xy)
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
+      res.error = "point coordinates must be finite";
+      return res;
+    }
+  Builder b(m, opt, res);
+  b.run();
+  return res;
+}
+
+}  // namespace sm
