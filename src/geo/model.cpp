@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 
 namespace sm::geo {
 
@@ -150,9 +151,22 @@ GeoStatus Model::set_current_geometry(int tag) {
 
 // ---- points ----
 
+namespace {
+
+GeoStatus check_finite(int tag, std::initializer_list<double> values) {
+  for (double v : values)
+    if (!std::isfinite(v))
+      return make_error(GeoErrorKind::BadArgument, EntityKind::Point, {tag},
+                        fmt::format("point {} has a non-finite coordinate or size ({})", tag, v));
+  return {};
+}
+
+}  // namespace
+
 GeoStatus Model::add_point(int tag, Vec3 coords, double lc) {
   if (current_geometry_) return add_point_on_geometry(tag, current_geometry_, {coords.x, coords.y}, lc);
   if (auto s = check_new_tag(EntityKind::Point, tag, vertices_.count(tag) > 0); !s) return s;
+  if (auto s = check_finite(tag, {coords.x, coords.y, coords.z, lc}); !s) return s;
   ModelVertex v;
   v.tag = tag;
   v.xyz = coords;
@@ -166,6 +180,7 @@ GeoStatus Model::add_point_on_geometry(int tag, int geometry_tag, Vec2 uv, doubl
   if (auto s = check_new_tag(EntityKind::Point, tag, vertices_.count(tag) > 0); !s) return s;
   const SurfaceGeometry* g = geometry(geometry_tag);
   if (!g) return missing(EntityKind::SurfaceGeometry, geometry_tag, {tag}, fmt::format(" (for point {})", tag));
+  if (auto s = check_finite(tag, {uv.x, uv.y, lc}); !s) return s;
   ModelVertex v;
   v.tag = tag;
   v.geometry = geometry_tag;
@@ -178,6 +193,8 @@ GeoStatus Model::add_point_on_geometry(int tag, int geometry_tag, Vec2 uv, doubl
 }
 
 GeoStatus Model::set_mesh_size(const std::vector<int>& points, double lc) {
+  if (!std::isfinite(lc))
+    return make_error(GeoErrorKind::BadArgument, EntityKind::Point, points, fmt::format("mesh size {} is not finite", lc));
   for (int p : points)
     if (!vertex(p)) return missing(EntityKind::Point, p, {}, " in MeshSize");
   for (int p : points) vertices_[p].lc = lc > 0 ? lc : kMaxLc;
@@ -209,12 +226,14 @@ GeoStatus Model::add_curve(int tag, CurveKind kind, const std::vector<int>& poin
   if (auto s = check_new_tag(EntityKind::Curve, tag, curves_.count(tag) > 0); !s) return s;
   for (int p : points)
     if (!vertex(p)) return missing(EntityKind::Point, p, {tag}, fmt::format(" used by {} {}", to_string(kind), tag));
-  // A zero-length piece: the same point twice in a row (a curve through itself).
-  for (std::size_t i = 0; i + 1 < points.size(); ++i)
+  // A zero-length piece of a Line or Spline: the same point twice in a row. (B-splines and
+  // Bezier curves may repeat control points: Gmsh uses that to sharpen them.)
+  const bool interpolating = kind == CurveKind::Line || kind == CurveKind::Spline;
+  for (std::size_t i = 0; interpolating && i + 1 < points.size(); ++i)
     if (points[i] == points[i + 1])
       return make_error(GeoErrorKind::SelfReference, EntityKind::Curve, {tag, points[i]},
                         fmt::format("{} {} uses point {} twice in a row", to_string(kind), tag, points[i]));
-  if ((kind == CurveKind::Line || kind == CurveKind::Bezier) && points.size() == 2 && points[0] == points[1])
+  if (points.size() == 2 && points[0] == points[1])
     return make_error(GeoErrorKind::SelfReference, EntityKind::Curve, {tag, points[0]},
                       fmt::format("{} {} starts and ends at point {}", to_string(kind), tag, points[0]));
   if ((kind == CurveKind::Circle || kind == CurveKind::Ellipse) && points.size() >= 3) {

@@ -126,6 +126,15 @@ TEST_CASE("model errors: missing point, duplicate tag, self reference, bad tag")
   CHECK(m.add_curve(1, CurveKind::Line, {2, 1}).error().kind == GeoErrorKind::DuplicateTag);
   CHECK(m.add_curve(2, CurveKind::Circle, {1, 2, 1}).error().kind == GeoErrorKind::SelfReference);
   CHECK(m.curves().size() == 1);   // failed statements leave nothing behind
+  // B-splines may repeat control points (Gmsh sharpens the curve there); lines may not.
+  REQUIRE(m.add_point(3, {1, 1, 0}));
+  CHECK(m.add_curve(3, CurveKind::BSpline, {1, 2, 2, 3}));
+  CHECK(m.add_curve(4, CurveKind::Line, {1, 2, 2, 3}).error().kind == GeoErrorKind::SelfReference);
+  CHECK(m.add_curve(5, CurveKind::BSpline, {1, 1}).error().kind == GeoErrorKind::SelfReference);
+  const double nan = std::nan("");
+  CHECK(m.add_point(9, {nan, 0, 0}).error().kind == GeoErrorKind::BadArgument);
+  CHECK(m.add_point(9, {0, 0, 0}, HUGE_VAL).error().kind == GeoErrorKind::BadArgument);
+  CHECK_FALSE(m.vertex(9));
 }
 
 TEST_CASE("curve loops: closing, Gmsh's reordering, subloops, located breaks") {
