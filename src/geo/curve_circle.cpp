@@ -1,6 +1,8 @@
 // Circle arcs with Gmsh 4.8.4's construction rules (checked against gmsh's own evaluation).
 #include "geo/curve_circle.h"
 
+#include "geo/sphere.h"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -37,6 +39,9 @@ GeoResult<CircleArc> make_circle_arc(Vec3 start, Vec3 centre, Vec3 end, std::opt
                                   tag));
   a.y_axis = y / norm(y);
   a.angle = std::atan2(dot(d2, a.y_axis), dot(d2, a.x_axis));
+  // Collinear points (a half circle about the fallback normal): Gmsh always turns +pi about
+  // that normal; rounding in the dot product could otherwise give -pi.
+  if (norm(cross(d0, d2)) <= 1e-12 * r1 * r2 && dot(d0, d2) < 0) a.angle = kPi;
   return a;
 }
 

@@ -44,6 +44,8 @@ GeoResult<EllipseArc> make_ellipse_arc(Vec3 start, Vec3 centre, Vec3 major_point
   double sweep = std::atan2(y2 / e.b, x2 / e.a) - e.theta0;
   if (sweep > kPi) sweep -= 2 * kPi;
   if (sweep <= -kPi) sweep += 2 * kPi;
+  // Collinear start and end: half an ellipse, turning +pi about the fallback normal.
+  if (norm(cross(d0, d2)) <= 1e-12 * norm(d0) * norm(d2) && sweep < 0) sweep += 2 * kPi;
   e.sweep = sweep;
   return e;
 }

@@ -262,3 +262,32 @@ TEST_CASE("curves: construction errors") {
   d.xyz = {{2, 0, 0}, {0, 0, 0}, {3, 1, 0}};     // end farther along the major axis than a
   CHECK(Curve::make(d).error().kind == GeoErrorKind::DegenerateArc);
 }
+
+TEST_CASE("curves vs Gmsh 4.8.4: half circles turn +pi about the normal (default +z or Plane)") {
+  // Values printed by gmsh 4.8.4 (model.geo.addCircleArc + model.getValue) at t = 0.25, 0.5.
+  struct Case {
+    Vec3 start, end;
+    std::optional<Vec3> normal;
+    Vec3 quarter, mid;
+  };
+  const double h = std::sqrt(0.5);
+  const std::vector<Case> cases = {
+      {{0, 1, 0}, {0, -1, 0}, std::nullopt, {-h, h, 0}, {-1, 0, 0}},
+      {{1, 1, 0}, {-1, -1, 0}, std::nullopt, {0, std::sqrt(2.0), 0}, {-1, 1, 0}},
+      {{1, -2, 0.5}, {-1, 2, -0.5}, std::nullopt, {2.15624446, -0.68964473, 0.35355339}, {2.04939015, 1.02469508, 0}},
+      {{0, 1, 0}, {0, -1, 0}, Vec3{1, 0, 0}, {0, h, h}, {0, 0, 1}},
+      {{0, 1, 0}, {0, -1, 0}, Vec3{-1, 0, 0}, {0, h, -h}, {0, 0, -1}},
+      {{3, 0, 0}, {-3, 0, 0}, Vec3{0, 1, 0}, {2.12132034, 0, -2.12132034}, {0, 0, -3}},
+  };
+  for (const Case& c : cases) {
+    CurveDef d;
+    d.kind = CurveKind::Circle;
+    d.xyz = {c.start, {0, 0, 0}, c.end};
+    d.plane_normal = c.normal;
+    auto curve = Curve::make(d);
+    REQUIRE(curve.ok());
+    CHECK(norm(curve->point(0.25) - c.quarter) < 1e-8);
+    CHECK(norm(curve->point(0.5) - c.mid) < 1e-8);
+    CHECK(norm(curve->point(1.0) - c.end) < 1e-14);
+  }
+}
