@@ -427,6 +427,8 @@ StmtId Parser::parse_call() {
     node.name = ast_.intern(text(s).substr(1, text(s).size() - 2));
   } else if (starts_string_expr()) {
     node.name_expr = parse_expr();
+  } else if (is_keyword(kind())) {
+    node.name = ast_.intern(text(advance()));  // `Call Circle;` (a macro named like a keyword)
   } else {
     fail_expected("a macro name after 'Call'");
   }

@@ -152,3 +152,19 @@ TEST_CASE("parser: Gmsh tutorials t1, t4, t10 parse without errors") {
     CHECK(r.ast.find("(plane-surface") != std::string::npos);
   }
 }
+
+TEST_CASE("parser: documented extensions and corner cases") {
+  CHECK(ast_of("Macro Circle Return") == "(macro Circle ())");
+  CHECK(ast_of("Call Circle;") == "(call-macro Circle)");
+  CHECK(ast_of("Printf(\"%g %g\", {1, 2});") == "(Printf \"%g %g\" (list 1 2))");
+  CHECK(ast_of("n = #{1, 2};") == "(assign = n (# (list 1 2)))");
+  CHECK(ast_of("Field[1].Min = 1;") == "(field-option 1 Min 1)");
+  CHECK(ast_of("Mesh.Smoother = 3;") == "(assign = (option Mesh.Smoother) 3)");
+  CHECK(ast_of("Translate {-0.02, 0, 0} { Point{5}; }") == "(shape-stmt (Translate (params (- 0.02) 0 0) (shapes (Point 5))))");
+  CHECK(ast_of("Point(1) = (0, 1, 2);") == "(point 1 (list 0 1 2))");
+  CHECK(ast_of("For i In {1:3} EndFor;") == "(for i 1 3 _ ())");
+  CHECK(ast_of("Mesh = 3;") == "(assign = Mesh 3)");
+  CHECK(ast_of("x = 'single';") == "(assign = x \"single\")");
+  CHECK(ast_of("x = a?b:c;") == "(assign = x (? (var a) (var b) (var c)))");
+  CHECK(ast_of("L[] = {c ? 1 : 2 : 5};") == "(assign = (whole L) (list (range (? (var c) 1 2) 5)))");
+}

@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# Fuzz the .geo front end (and evaluator) for a fixed time.
+#
+#   tests/fuzz/run.sh SECONDS                 build fuzz_geo with clang in its own build dir
+#                                             ($SM_FUZZ_BUILD_DIR, default build-fuzz/) and run it
+#   tests/fuzz/run.sh --no-build SECONDS BIN  run an already built fuzz_geo (CTest fuzz_smoke)
+#
+# The seed corpus (tests/fuzz/corpus, tests/fuzz/crashes, tests/scripts, examples) is copied to a
+# scratch directory, so the repository is never modified. Exit status: 0 no crash; 1 the fuzzer
+# found a crash, leak, timeout or invariant violation (the input is saved under
+# $SM_FUZZ_ARTIFACTS, default <build dir>/fuzz-artifacts/: add it to tests/fuzz/crashes/ with the
+# fix); 2 usage or build error.
+set -euo pipefail
+
+usage() { echo "usage: $0 SECONDS | $0 --no-build SECONDS FUZZ_BINARY" >&2; exit 2; }
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/../.." && pwd)"
+
+build=1
+if [[ "${1:-}" == "--no-build" ]]; then build=0; shift; fi
+[[ $# -ge 1 && "$1" =~ ^[0-9]+$ ]] || usage
+seconds="$1"
+
+if [[ $build == 1 ]]; then
+  [[ $# -eq 1 ]] || usage
+  bdir="${SM_FUZZ_BUILD_DIR:-$root/build-fuzz}"
+  command -v clang++ >/dev/null || { echo "run.sh: clang++ not found (apt-get install clang libclang-rt-14-dev)" >&2; exit 2; }
+  generator=()
+  command -v ninja >/dev/null && generator=(-G Ninja)
+  cmake -S "$root" -B "$bdir" "${generator[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+        -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DSTEREOMESH_FUZZ=ON >/dev/null || exit 2
+  cmake --build "$bdir" --target fuzz_geo -j "${SM_FUZZ_JOBS:-2}" || exit 2
+  bin="$bdir/tests/fuzz/fuzz_geo"
+else
+  [[ $# -eq 2 ]] || usage
+  bin="$2"
+  bdir="$(pwd)"
+fi
+[[ -x "$bin" ]] || { echo "run.sh: no fuzz binary at $bin" >&2; exit 2; }
+
+scratch="$(mktemp -d "${TMPDIR:-/tmp}/sm-fuzz.XXXXXX")"
+trap 'rm -rf "$scratch"' EXIT
+mkdir -p "$scratch/corpus" "$scratch/work"
+for d in "$here/corpus" "$here/crashes" "$root/tests/scripts" "$root/examples"; do
+  [[ -d "$d" ]] || continue
+  find "$d" -type f ! -name 'README*' ! -name '*.sh' ! -name '*.py' -size -64k -print0 |
+    while IFS= read -r -d '' f; do cp "$f" "$scratch/corpus/$(echo "$f" | md5sum | cut -c1-16)"; done
+done
+artifacts="${SM_FUZZ_ARTIFACTS:-$bdir/fuzz-artifacts}"
+mkdir -p "$artifacts"
+
+echo "run.sh: fuzzing for ${seconds}s with $(ls "$scratch/corpus" | wc -l) seeds; artifacts in $artifacts"
+# Evaluated scripts may write files (Printf > f, Save): run inside the scratch dir.
+set +e
+(cd "$scratch/work" && "$bin" -max_total_time="$seconds" -timeout=25 -rss_limit_mb=2560 -max_len=8192 \
+   -dict="$here/geo.dict" -artifact_prefix="$artifacts/" -print_final_stats=1 "$scratch/corpus")
+status=$?
+set -e
+if [[ $status -ne 0 ]]; then
+  echo "run.sh: fuzz_geo failed (status $status); reproduce with: $bin <file from $artifacts>" >&2
+  exit 1
+fi
+echo "run.sh: no crash in ${seconds}s"
