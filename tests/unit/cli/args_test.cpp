@@ -1,0 +1,104 @@
+// Command-line parsing, and the exit statuses of the built stereomesh binary.
+#include <doctest/doctest.h>
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "cli/args.h"
+
+using sm::cli::parse_args;
+
+TEST_CASE("cli: Gmsh flags") {
+  auto r = parse_args({"-0", "a.geo", "-setnumber", "n", "3", "-setstring", "s", "x", "-clmin", "0.5",
+                       "-clmax", "1e3", "-clscale", "2", "-algo", "del2d", "-format", "msh22", "-bin",
+                       "-nt", "2", "-v", "3", "-o", "out.msh", "-I", "lib", "-Iother", "b.geo"});
+  REQUIRE(r.ok);
+  CHECK(r.args.files == std::vector<std::string>{"a.geo", "b.geo"});
+  CHECK(r.args.mesh_dim == 0);
+  CHECK(r.args.output == "out.msh");
+  REQUIRE(r.args.set_numbers.size() == 1);
+  CHECK(r.args.set_numbers[0].second == 3);
+  CHECK(r.args.set_strings.at(0).second == "x");
+  CHECK(r.args.include_dirs == std::vector<std::string>{"lib", "other"});
+  bool algo = false, version = false, clmax = false;
+  for (const auto& [name, v] : r.args.option_numbers) {
+    if (name == "Mesh.Algorithm") algo = v == 5;
+    if (name == "Mesh.MshFileVersion") version = v == 2.2;
+    if (name == "Mesh.MeshSizeMax") clmax = v == 1000;
+  }
+  CHECK(algo);
+  CHECK(version);
+  CHECK(clmax);
+}
+
+TEST_CASE("cli: usage errors") {
+  CHECK_FALSE(parse_args({}).ok);
+  CHECK_FALSE(parse_args({"-frobnicate", "a.geo"}).ok);
+  CHECK_FALSE(parse_args({"a.geo", "-clmax"}).ok);
+  CHECK_FALSE(parse_args({"a.geo", "-clmax", "1e3x"}).ok);
+  CHECK_FALSE(parse_args({"a.geo", "-clmax", "nan"}).ok);
+  CHECK_FALSE(parse_args({"a.geo", "-setnumber", "n"}).ok);
+  CHECK_FALSE(parse_args({"a.geo", "-setnumber", "n", "abc"}).ok);
+  CHECK_FALSE(parse_args({"a.geo", "-algo", "magic"}).ok);
+  CHECK_FALSE(parse_args({"a.geo", "-format", "stl"}).ok);
+  CHECK_FALSE(parse_args({"--test"}).ok);
+  CHECK(parse_args({"--help"}).ok);
+  CHECK(parse_args({"--version"}).ok);
+  CHECK(parse_args({"--test", "dir1", "dir2"}).args.files.size() == 2);
+}
+
+namespace {
+
+// The stereomesh built next to this test (build/src/cli/stereomesh), or "".
+std::string binary() {
+  std::error_code ec;
+  const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec) return "";
+  const auto bin = self.parent_path().parent_path() / "src" / "cli" / "stereomesh";
+  return std::filesystem::exists(bin, ec) ? bin.string() : "";
+}
+
+int run_status(const std::string& cmd) {
+  const int st = std::system((cmd + " >/dev/null 2>&1").c_str());
+  return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+}  // namespace
+
+TEST_CASE("cli: exit statuses of the binary") {
+  const std::string bin = binary();
+  if (bin.empty()) {
+    MESSAGE("skipped: stereomesh binary not built");
+    return;
+  }
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "sm_cli_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "ok.geo") << "DefineConstant[n = 1];\nPrintf(\"%g\", n);\n";
+  std::ofstream(dir / "bad.geo") << "x = y;\n";
+  std::ofstream(dir / "syntax.geo") << "x = (1 + ;\n";
+  std::ofstream(dir / "exit.geo") << "Exit 4;\n";
+  const std::string d = dir.string() + "/";
+  CHECK(run_status(bin + " -0 " + d + "ok.geo") == 0);
+  CHECK(run_status(bin + " -0 " + d + "bad.geo") == 1);
+  CHECK(run_status(bin + " -0 " + d + "syntax.geo") == 1);
+  CHECK(run_status(bin + " -0 " + d + "missing.geo") == 1);
+  CHECK(run_status(bin + " -0 " + d + "exit.geo") == 4);
+  CHECK(run_status(bin + " -2 " + d + "ok.geo") == 1);   // meshing not available yet
+  CHECK(run_status(bin + " --bogus " + d + "ok.geo") == 2);
+  CHECK(run_status(bin + " -0 -setnumber Mesh.Algoritm 5 " + d + "ok.geo") == 2);
+  CHECK(run_status(bin + " --test " + d + "nowhere") == 2);
+  // Printf on stdout, diagnostics on stderr.
+  std::FILE* p = ::popen((bin + " -0 -setnumber n 7 " + d + "ok.geo 2>/dev/null").c_str(), "r");
+  REQUIRE(p);
+  char buf[64] = {};
+  const std::size_t n = std::fread(buf, 1, sizeof buf - 1, p);
+  ::pclose(p);
+  CHECK(std::string(buf, n) == "7\n");
+  fs::remove_all(dir);
+}
