@@ -15,6 +15,7 @@ enum class CleanAction {
   Spike,          // vertex b of a -> b -> a removed (with the second a)
   PoleVertex,     // vertex at lat -90 removed from a pole-closed ring (Natural Earth)
   DegenerateRing, // ring with fewer than 3 distinct vertices (or a polyline < 2) dropped
+  MergedRings,    // two closed rings sharing an edge (a polygon split at the dateline) joined
 };
 
 struct CleanEntry {
@@ -32,5 +33,11 @@ struct CleanReport {
 
 /// Cleans every ring in place; dropped rings are erased. Deterministic (ring order kept).
 CleanReport clean(Coastline& c);
+
+/// Joins closed rings of the same level that share an edge run in opposite directions
+/// (shapefiles split polygons at the dateline: GSHHS_l_L1.shp, Natural Earth's Fiji and
+/// Chukotka; touching islands in general). The merged ring replaces the first of the two;
+/// the leftover shared run becomes spikes, which are removed. Appends to `rep`.
+void merge_touching_rings(Coastline& c, CleanReport& rep);
 
 }  // namespace sm::coast

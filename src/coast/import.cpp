@@ -90,6 +90,7 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
     Coastline c;
     c.rings = std::move(rings);
     rep.clean = clean(c);
+    merge_touching_rings(c, rep.clean);
     rings = std::move(c.rings);
   }
   rep.reversed = orient_rings(rings);

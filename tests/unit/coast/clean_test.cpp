@@ -4,6 +4,8 @@
 
 #include <doctest/doctest.h>
 
+#include <cmath>
+
 #include "coast/read_lonlat_text.h"
 #include "coast/read_shapefile.h"
 
@@ -67,4 +69,41 @@ TEST_CASE("clean: Natural Earth Antarctica closed along the South Pole") {
     for (auto p : r.pts) CHECK(p.lat > -90);
   }
   CHECK(wraps == 1);
+}
+
+TEST_CASE("clean: rings sharing an edge are merged (polygons split at the dateline)") {
+  Coastline sq;
+  Ring a, b;
+  a.pts = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  b.pts = {{1, 0}, {2, 0}, {2, 1}, {1, 1}};
+  b.record = 1;
+  sq.rings = {a, b};
+  CleanReport rep;
+  merge_touching_rings(sq, rep);
+  REQUIRE(sq.rings.size() == 1);
+  CHECK(sq.rings[0].pts.size() == 6);
+  CHECK(rep.count(CleanAction::MergedRings) == 1);
+  // A run of two shared edges: the leftover becomes a spike and is removed.
+  Coastline run;
+  a.pts = {{0, 0}, {1, 0}, {1, 0.5}, {1, 1}, {0, 1}};
+  b.pts = {{1, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 0.5}};
+  run.rings = {a, b};
+  CleanReport rep2;
+  merge_touching_rings(run, rep2);
+  REQUIRE(run.rings.size() == 1);
+  CHECK(run.rings[0].pts.size() == 6);
+  CHECK(rep2.count(CleanAction::Spike) == 1);
+  struct F { const char* path; std::size_t merges; };
+  for (const F& f : {F{"/gshhs_shp/GSHHS_l_L1.shp", 5}, F{"/naturalearth/ne_110m_land.shp", 3}}) {
+    CAPTURE(f.path);
+    auto c = read_shapefile(std::string(SM_SHARED_DATA) + f.path);
+    REQUIRE(c.ok());
+    const std::size_t before = c->rings.size();
+    CleanReport r = clean(*c);
+    merge_touching_rings(*c, r);
+    CHECK(r.count(CleanAction::MergedRings) == f.merges);
+    CHECK(c->rings.size() + f.merges + r.count(CleanAction::DegenerateRing) == before);
+    for (const auto& e : r.entries)
+      if (e.action == CleanAction::MergedRings) CHECK(std::abs(std::abs(std::fmod(e.where.lon, 360.0)) - 180.0) < 1e-6);
+  }
 }

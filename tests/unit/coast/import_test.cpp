@@ -10,6 +10,7 @@
 #include "coast/polygon2d.h"
 #include "coast/read_gshhs.h"
 #include "coast/read_lonlat_text.h"
+#include "coast/read_shapefile.h"
 
 using namespace sm;
 using namespace sm::coast;
@@ -174,4 +175,17 @@ TEST_CASE("import: Figure 5, Great Britain and Ireland") {
     }
     check_model(*m);
   }
+}
+
+TEST_CASE("import: Natural Earth land (dateline splits merged, Antarctica closed at the pole)") {
+  auto c = read_shapefile(std::string(SM_SHARED_DATA) + "/naturalearth/ne_110m_land.shp");
+  REQUIRE(c.ok());
+  ImportOptions o;
+  o.gamma = constant(20e3);
+  auto m = build_coast_model(std::move(*c), o);
+  REQUIRE_MESSAGE(m.ok(), (m.ok() ? "" : m.error().to_string()));
+  REQUIRE(m->surfaces.size() == 1);
+  for (auto p : m->curves[m->loops[m->surfaces[0].outer].curves[0]].ll) CHECK(p.lat < -60);
+  CHECK(m->report.clean.count(CleanAction::MergedRings) == 3);
+  check_model(*m);
 }
