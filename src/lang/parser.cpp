@@ -51,15 +51,19 @@ SourceRange Parser::since(const Token& first) const {
 
 // ---------------------------------------------------------------- errors
 
+// Source text quoted in a message, cut so that a 50 MB identifier or number
+// does not end up in the message.
+std::string clip(std::string_view text) {
+  constexpr std::size_t kMax = 40;
+  return text.size() <= kMax ? std::string(text) : std::string(text.substr(0, kMax - 3)) + "...";
+}
+
 std::string Parser::describe(const Token& t) const {
   switch (t.kind) {
     case Tok::Eof: return "end of file";
-    case Tok::Ident: return fmt::format("identifier '{}'", text(t));
-    case Tok::Number: return fmt::format("number '{}'", text(t));
-    case Tok::String: {
-      std::string_view s = text(t);
-      return s.size() > 40 ? fmt::format("string {}...", s.substr(0, 37)) : fmt::format("string {}", s);
-    }
+    case Tok::Ident: return fmt::format("identifier '{}'", clip(text(t)));
+    case Tok::Number: return fmt::format("number '{}'", clip(text(t)));
+    case Tok::String: return fmt::format("string {}", clip(text(t)));
     case Tok::Constant: return fmt::format("'{}'", text(t));
     default: break;
   }

@@ -116,7 +116,7 @@ ExprId Parser::parse_primary() {
     case Tok::Number: {
       const Token n = advance();
       double v = 0;
-      if (!number_value(text(n), v)) diags_.report(n.range, Diag::NumberOutOfRange, text(n));
+      if (!number_value(text(n), v)) diags_.report(n.range, Diag::NumberOutOfRange, clip(text(n)));
       return add_expr(n, NumberExpr{v});
     }
     case Tok::String: {

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -18,6 +19,9 @@ namespace sm::lang::detail {
 /// Thrown after a syntax error has been reported: unwinds to the enclosing
 /// statement list, which resynchronizes (panic mode).
 struct SyntaxError {};
+
+/// Source text for a message, shortened to at most 40 characters.
+std::string clip(std::string_view text);
 
 class Parser {
  public:

@@ -133,7 +133,7 @@ StmtId Parser::parse_assignment(const Token& first) {
     const Token& t = peek();
     if (lv.kind == LValue::Kind::Var && lv.name.suffixes.empty() && lv.name.ident.valid() &&
         (t.kind == Tok::String || t.kind == Tok::Number || t.kind == Tok::Semicolon || t.kind == Tok::Ident)) {
-      diags_.report(first.range, Diag::UnknownCommand, text(first));
+      diags_.report(first.range, Diag::UnknownCommand, clip(text(first)));
       throw SyntaxError{};
     }
     fail_expected("'=' or another assignment operator");
@@ -278,7 +278,7 @@ StmtId Parser::parse_background_field() {
   const Token word = advance();
   const std::string_view w = text(word);
   if (w != "Background" && w != "BoundaryLayer") {
-    diags_.report(word.range, Diag::UnknownCommand, w);
+    diags_.report(word.range, Diag::UnknownCommand, clip(w));
     throw SyntaxError{};
   }
   advance();  // Field

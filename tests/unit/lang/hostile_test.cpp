@@ -108,3 +108,14 @@ TEST_CASE("hostile: files over the size limit are rejected with a message") {
   CHECK_FALSE(r.file.valid());
   CHECK(r.error == "cannot load 'big.geo': larger than the 256 MiB limit for a script");
 }
+
+TEST_CASE("hostile: huge tokens are clipped in messages") {
+  auto r = parse_text(std::string(10u << 20, 'x') + " \"a\";\n");
+  CHECK(r.errors == 1);
+  CHECK(r.diags.size() < 800);
+  CHECK(r.diags.find("unknown command 'xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx...'") != std::string::npos);
+  r = parse_text("x = 1" + std::string(1u << 20, '0') + ";\n");
+  CHECK(r.errors == 1);
+  CHECK(r.diags.find("[number-out-of-range]") != std::string::npos);
+  CHECK(r.diags.size() < 800);
+}
