@@ -137,7 +137,9 @@ Interpreter::Flow Interpreter::exec(StmtId id) {
         } else if constexpr (std::is_same_v<T, ReturnStmt>) {
           return Flow::Return;
         } else if constexpr (std::is_same_v<T, ExitStmt>) {
-          exit_code_ = n.code.valid() ? static_cast<int>(to_int(eval_number(n.code), s.range)) : 0;
+          // `Exit;` is status 0, or 1 when errors were reported (Gmsh).
+          exit_code_ = n.code.valid() ? static_cast<int>(to_int(eval_number(n.code), s.range))
+                                      : (diags_.error_count() > 0 ? 1 : 0);
           stopped_ = true;
           return Flow::Stop;
         } else if constexpr (std::is_same_v<T, AbortStmt>) {

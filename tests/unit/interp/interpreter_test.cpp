@@ -128,6 +128,10 @@ TEST_CASE("interp: Exit and Abort stop the script") {
   auto r = run_script("Printf(\"a\");\nExit 3;\nPrintf(\"b\");\n");
   CHECK(r.out == "a\n");
   CHECK(r.exit_request == 3);
+  r = run_script("Error(\"e\");\nExit;\n");
+  CHECK(r.exit_request == 1);
+  r = run_script("Exit;\n");
+  CHECK(r.exit_request == 0);
   r = run_script("Printf(\"a\");\nAbort;\nPrintf(\"b\");\n");
   CHECK(r.out == "a\n");
   CHECK(r.ok);
