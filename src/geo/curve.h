@@ -54,6 +54,9 @@ class Curve {
   /// (u,v), du/dt, d2u/dt2 on the surface; requires on_surface().
   Jet2 eval_uv(double t, bool reversed = false) const;
 
+  /// The arc frame of a Circle (nullptr for other kinds).
+  const CircleArc* circle() const { return kind_ == CurveKind::Circle ? &circle_ : nullptr; }
+
   Vec3 begin_point() const { return point(0.0); }
   Vec3 end_point() const { return point(1.0); }
 

@@ -3,6 +3,7 @@
 #include "geo/model.h"
 
 #include "geo/loop_check.h"
+#include "geo/surface_filling.h"
 
 #include <fmt/format.h>
 
@@ -483,6 +484,81 @@ GeoResult<std::vector<DimTag>> Model::boundary(const std::vector<DimTag>& entiti
     out.push_back({key.dim, key.dim == 0 ? key.tag : (count > 0 ? key.tag : -key.tag)});
   }
   return out;
+}
+
+// ---- filling surfaces ----
+
+GeoStatus Model::add_surface_filling(int tag, const std::vector<int>& loops, std::optional<int> sphere_centre) {
+  if (auto s = check_new_tag(EntityKind::Surface, tag, surfaces_.count(tag) > 0); !s) return s;
+  if (loops.size() != 1)
+    return make_error(GeoErrorKind::BadArgument, EntityKind::Surface, {tag},
+                      fmt::format("surface {} needs exactly one curve loop (got {}): holes need a Plane Surface", tag,
+                                  loops.size()));
+  const ModelCurveLoop* l = curve_loop(std::abs(loops[0]));
+  if (loops[0] == 0 || !l) return missing(EntityKind::CurveLoop, loops[0], {tag}, fmt::format(" in surface {}", tag));
+  if (l->curves.size() != 3 && l->curves.size() != 4)
+    return make_error(GeoErrorKind::BadArgument, EntityKind::Surface, {tag, std::abs(loops[0])},
+                      fmt::format("surface {}: curve loop {} has {} curves, a filling needs 3 or 4", tag,
+                                  std::abs(loops[0]), l->curves.size()));
+  if (sphere_centre && !vertex(*sphere_centre))
+    return missing(EntityKind::Point, *sphere_centre, {tag}, fmt::format(" (sphere centre of surface {})", tag));
+  ModelSurface s;
+  s.tag = tag;
+  s.filling = true;
+  s.sphere_centre = sphere_centre.value_or(0);
+  s.loops = loops;
+  int g = -1;
+  for (int c : l->curves) {
+    const int cg = curves_.at(std::abs(c)).geometry;
+    g = g == -1 ? cg : (g == cg ? g : 0);
+  }
+  s.geometry = std::max(g, 0);
+  surfaces_.emplace(tag, std::move(s));
+  bump_max(2, tag);
+  return {};
+}
+
+GeoResult<Vec3> Model::surface_point(int tag, Vec2 uv) const {
+  const ModelSurface* s = surface(tag);
+  if (!s) return missing(EntityKind::Surface, tag, {}, "");
+  if (s->geometry) return geometries_.at(s->geometry).point(uv);
+  if (!s->filling)
+    return make_error(GeoErrorKind::BadArgument, EntityKind::Surface, {tag},
+                      fmt::format("plane surface {} is not parametrised by (u,v): it lies in the plane of its boundary", tag));
+  // Loop orientation: a negative loop tag reverses the loop.
+  std::vector<int> cs = loops_.at(std::abs(s->loops[0])).curves;
+  if (s->loops[0] < 0) {
+    std::reverse(cs.begin(), cs.end());
+    for (int& c : cs) c = -c;
+  }
+  TransfinitePatch patch;
+  for (int c : cs) patch.sides.push_back({&*curves_.at(std::abs(c)).shape, c < 0});
+  if (s->sphere_centre) {
+    patch.sphere_centre = vertices_.at(s->sphere_centre).xyz;
+  } else {
+    // Gmsh's guess: all sides are circles about the same centre point, not all in one plane.
+    bool circles = true, one_plane = true;
+    int centre = 0;
+    Vec3 n0;
+    for (std::size_t i = 0; i < cs.size(); ++i) {
+      const ModelCurve& c = curves_.at(std::abs(cs[i]));
+      if (c.kind != CurveKind::Circle) {
+        circles = false;
+        break;
+      }
+      const CircleArc& a = *c.shape->circle();
+      const Vec3 n = cross(a.x_axis, a.y_axis);
+      if (i == 0) {
+        centre = c.points[1];
+        n0 = n;
+      } else {
+        circles = circles && c.points[1] == centre;
+        one_plane = one_plane && norm(n - n0) < 1e-12;
+      }
+    }
+    if (circles && !one_plane) patch.sphere_centre = vertices_.at(centre).xyz;
+  }
+  return patch.point(uv);
 }
 
 }  // namespace sm::geo

@@ -47,6 +47,8 @@ struct ModelCurveLoop {
 
 struct ModelSurface {
   int tag = 0;
+  bool filling = false;              // "Surface" (transfinite patch) rather than "Plane Surface"
+  int sphere_centre = 0;             // filling: "In Sphere{c}" point tag, 0 if none
   std::vector<int> loops;            // signed loop tags: [0] outer boundary, then holes
   int geometry = 0;                  // parametric on this surface geometry (0: planar)
   std::vector<int> embedded_points;  // Point{...} In Surface{tag}
@@ -113,6 +115,12 @@ class Model {
   /// "Plane Surface(t) = {outer, holes...};": every hole inside the outer loop, no curve
   /// shared between loops; parametric on a geometry when all boundary curves lie on it.
   GeoStatus add_plane_surface(int tag, const std::vector<int>& loops);
+  /// "Surface(t) = {loop} <In Sphere{c}>;": a transfinite patch on a loop of 3 or 4 curves.
+  /// On a surface geometry (all its curves on it) it is parametrised by that geometry, as
+  /// in Gmsh.
+  GeoStatus add_surface_filling(int tag, const std::vector<int>& loops, std::optional<int> sphere_centre = std::nullopt);
+  /// The point at (u,v) of a filling surface or of a surface on a geometry.
+  GeoResult<Vec3> surface_point(int tag, Vec2 uv) const;
   /// "Physical Point|Curve|Surface(tag | "name" | "name", tag) =|+=|-= {...};". Returns
   /// the group's tag (Gmsh's auto-tag: 1 + the largest physical tag, all dimensions).
   GeoResult<int> add_physical(int dim, std::optional<int> tag, const std::string& name,
