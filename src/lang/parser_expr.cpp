@@ -238,13 +238,27 @@ ExprId Parser::parse_name_primary() {
 }
 
 // call := FUNC ("(" [ items ] ")" | "[" [ items ] "]")
+//       | ("DefineNumber" | "DefineString") ("[" | "(") item { "," onelab_attr } ("]" | ")")
 ExprId Parser::parse_call_args(const Token& func) {
   const Token open = advance();
   CallExpr call;
   call.func = ast_.intern(text(func));
   call.func_range = func.range;
   call.square = open.kind == Tok::LBracket;
-  call.args = parse_items_until(call.square ? Tok::RBracket : Tok::RParen, open);
+  const Tok closer = call.square ? Tok::RBracket : Tok::RParen;
+  const std::string_view name = text(func);
+  if ((name == "DefineNumber" || name == "DefineString") && !at(closer)) {
+    // DefineNumber[value, Name "..", Min 0, Choices{...}]: the value is the only
+    // argument; the ONELAB attributes are parsed and ignored.
+    call.args.push_back(parse_item());
+    while (accept(Tok::Comma)) {
+      if (at(closer)) break;
+      parse_onelab_attr_after(expect_member_word("a parameter attribute such as 'Name' or 'Min'"), closer);
+    }
+    expect_closing(closer, open);
+  } else {
+    call.args = parse_items_until(closer, open);
+  }
   return add_expr(func, std::move(call));
 }
 

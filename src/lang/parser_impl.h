@@ -112,6 +112,7 @@ class Parser {
   StmtId parse_command(const Token& word);
   StmtId parse_print();
   StmtId parse_define_constant();
+  OnelabAttr parse_onelab_attr_after(const Token& key, Tok closer);
   StmtId parse_delete();
   StmtId parse_field_statement();
   StmtId parse_background_field();

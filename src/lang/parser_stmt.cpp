@@ -184,12 +184,7 @@ StmtId Parser::parse_define_constant() {
         while (accept(Tok::Comma)) {
           if (at(Tok::RBrace)) break;
           const Token key = expect_member_word("a parameter attribute such as 'Name' or 'Min'");
-          OnelabAttr a;
-          a.key = ast_.intern(text(key));
-          if (at(Tok::LBrace)) a.value = parse_braced_list();
-          else if (!at(Tok::Comma) && !at(Tok::RBrace)) a.value = parse_expr();
-          a.range = since(key);
-          e.attrs.push_back(std::move(a));
+          e.attrs.push_back(parse_onelab_attr_after(key, Tok::RBrace));
         }
         expect_closing(Tok::RBrace, lb);
       } else {
@@ -203,6 +198,27 @@ StmtId Parser::parse_define_constant() {
   advance();  // ']'
   expect_semicolon();
   return add(kw, std::move(node));
+}
+
+// onelab_attr := word [ expr | onelab_list ]
+// onelab_list := "{" [ item [ "=" expr ] { "," item [ "=" expr ] } ] "}"   (Choices{0="None", 1="A"})
+OnelabAttr Parser::parse_onelab_attr_after(const Token& key, Tok closer) {
+  OnelabAttr a;
+  a.key = ast_.intern(text(key));
+  if (at(Tok::LBrace)) {
+    const Token open = advance();
+    ListExpr choices;
+    while (!accept(Tok::RBrace)) {
+      choices.items.push_back(parse_item());
+      if (accept(Tok::Assign)) parse_expr();  // the label of a choice (display only)
+      if (!accept(Tok::Comma) && !at(Tok::RBrace)) expect_closing(Tok::RBrace, open);
+    }
+    a.value = add_expr(open, std::move(choices));
+  } else if (!at(Tok::Comma) && !at(closer)) {
+    a.value = parse_expr();
+  }
+  a.range = since(key);
+  return a;
 }
 
 // delete := "Delete" shape_block [ ";" ] | "Recursive" "Delete" shape_block [ ";" ]

@@ -168,3 +168,10 @@ TEST_CASE("parser: documented extensions and corner cases") {
   CHECK(ast_of("x = a?b:c;") == "(assign = x (? (var a) (var b) (var c)))");
   CHECK(ast_of("L[] = {c ? 1 : 2 : 5};") == "(assign = (whole L) (list (range (? (var c) 1 2) 5)))");
 }
+
+TEST_CASE("parser: ONELAB forms (DefineNumber, labelled Choices)") {
+  CHECK(ast_of("R = DefineNumber[1.4, Min 0.1, Max 2, Step 0.01, Name \"Parameters/R\"];") ==
+        "(assign = R (call DefineNumber 1.4))");
+  CHECK(ast_of("DefineConstant[ op = {0, Choices{0=\"None\", 1=\"Union\"}, Name \"Op\"} ];") ==
+        "(define-constant (op 0 (Choices (list 0 1)) (Name \"Op\")))");
+}
