@@ -59,6 +59,12 @@ void TriangleStore::kill_triangle(TriId t) {
   free_tris.push_back(t);
 }
 
+void TriangleStore::rebuild_out_side() {
+  out_side.assign(xy.size(), Side{});
+  for (std::uint32_t s = 0; s < corner.size(); ++s)
+    if (!(tri_flags[s / 3] & kDead)) out_side[corner[s].value] = Side{s};
+}
+
 void TriangleStore::set_edge_flags(Side s, std::uint8_t f) {
   side_flags[s.value] |= f;
   const Side o = twin[s.value];

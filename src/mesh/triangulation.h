@@ -57,8 +57,12 @@ struct TriangleStore {
   /// A triangle a, b, c (counter-clockwise) with unlinked sides; reuses a dead slot.
   TriId add_triangle(VertexId a, VertexId b, VertexId c);
   /// Marks t dead, unlinks its neighbours and recycles the slot. out_side of
-  /// its corners is repaired when another triangle still holds them.
+  /// its corners moves to a neighbour around the corner; after killing
+  /// several adjacent triangles call rebuild_out_side() (a corner may keep
+  /// live triangles that are no longer reachable from the dead ones).
   void kill_triangle(TriId t);
+  /// Sets out_side from the live triangles (one pass, highest side wins).
+  void rebuild_out_side();
   /// Makes a and b twins of each other.
   void link(Side a, Side b) {
     twin[a.value] = b;

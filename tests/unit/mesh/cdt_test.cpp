@@ -1,0 +1,174 @@
+// Edge recovery by swaps (crossings detected, collinear vertices split) and
+// removal of outside triangles; every case ends with the checkers.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "mesh/cdt.h"
+#include "mesh/check.h"
+#include "mesh/delaunay.h"
+
+using namespace sm;
+
+namespace {
+
+void check_cdt(const TriangleStore& m, const std::vector<Edge>& constrained) {
+  INFO(check_topology(m).error);
+  REQUIRE(check_topology(m).ok());
+  INFO(check_constraints(m, constrained).error);
+  REQUIRE(check_constraints(m, constrained).ok());
+  // Constrained Delaunay: every non-constrained edge locally Delaunay (ties by id).
+  INFO(check_delaunay(m, PlanarGeometry{&m.xy}, true).error);
+  REQUIRE(check_delaunay(m, PlanarGeometry{&m.xy}, true).ok());
+}
+
+double area(const TriangleStore& m) {
+  double a = 0;
+  for (std::uint32_t t = 0; t < m.num_slots(); ++t) {
+    if (!m.alive(TriId{t})) continue;
+    const Vec2 p = m.pos(m.vertex(TriId{t}, 0)), q = m.pos(m.vertex(TriId{t}, 1)), r = m.pos(m.vertex(TriId{t}, 2));
+    a += 0.5 * cross(q - p, r - p);
+  }
+  return a;
+}
+
+}  // namespace
+
+TEST_CASE("cdt: long thin constraints through random points") {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> U(0, 1);
+  TriangleStore m;
+  for (int i = 0; i < 3000; ++i) m.add_vertex({U(rng), U(rng)});
+  std::vector<Edge> edges;
+  for (int k = 0; k < 25; ++k) {  // nearly horizontal, distinct heights: no two cross
+    const double y = 0.02 + 0.038 * k;
+    const VertexId a = m.add_vertex({0.01 + 0.001 * k, y}), b = m.add_vertex({0.99 - 0.001 * k, y + 0.011});
+    edges.push_back({a, b});
+  }
+  REQUIRE(delaunay(m).ok());
+  const PlanarGeometry g{&m.xy};
+  const auto r = recover_edges(m, g, edges);
+  REQUIRE(r.ok());
+  CHECK(r.clean());
+  CHECK(r.stats.flips > 100);
+  check_cdt(m, edges);
+  // Recovering again changes nothing.
+  const auto r2 = recover_edges(m, g, edges);
+  CHECK(r2.clean());
+  CHECK(r2.stats.flips == 0);
+  CHECK(r2.stats.already_present == edges.size());
+}
+
+TEST_CASE("cdt: a constraint crossing a constrained edge is reported, not swapped") {
+  TriangleStore m;
+  for (int j = 0; j < 6; ++j)
+    for (int i = 0; i < 6; ++i) m.add_vertex({i + 0.01 * j, j + 0.013 * i});  // perturbed grid
+  const VertexId a = m.add_vertex({-1, 2.5}), b = m.add_vertex({6, 2.7});   // roughly horizontal
+  const VertexId c = m.add_vertex({2.5, -1}), d = m.add_vertex({2.7, 6});   // roughly vertical
+  REQUIRE(delaunay(m).ok());
+  const PlanarGeometry g{&m.xy};
+  const auto r = recover_edges(m, g, {{a, b}, {c, d}});
+  REQUIRE(r.ok());
+  REQUIRE(r.crossings.size() == 1);
+  CHECK(r.crossings[0].edge == 1);
+  CHECK(r.crossings[0].other == 0);
+  CHECK(m.has_edge(a, b));
+  check_cdt(m, {{a, b}});
+  CHECK_FALSE(m.has_edge(c, d));
+}
+
+TEST_CASE("cdt: vertices exactly on a constraint split it") {
+  TriangleStore m;
+  for (int j = 0; j < 30; ++j)
+    for (int i = 0; i < 30; ++i) m.add_vertex({double(i), double(j)});
+  REQUIRE(delaunay(m).ok());
+  const PlanarGeometry g{&m.xy};
+  const VertexId v00{0}, v_diag{29 * 30 + 29}, v_thin{1 * 30 + 29}, v_row{29};
+  const auto r = recover_edges(m, g, {{v00, v_diag}, {v00, v_thin}, {VertexId{30}, VertexId{30 + 29}}});
+  REQUIRE(r.ok());
+  CHECK(r.crossings.empty());
+  // The diagonal passes through (i, i) for i = 1..28, the row through 28 vertices.
+  CHECK(r.touching.size() == 28 + 28);
+  std::vector<Edge> sub;
+  for (std::uint32_t i = 0; i < 29; ++i) sub.push_back({VertexId{31 * i}, VertexId{31 * (i + 1)}});
+  for (std::uint32_t i = 0; i < 29; ++i) sub.push_back({VertexId{30 + i}, VertexId{31 + i}});
+  sub.push_back({v00, v_thin});  // slope 1/29: through no vertex
+  check_cdt(m, sub);
+  (void)v_row;
+}
+
+TEST_CASE("cdt: random non-crossing polygon edges at many scales") {
+  // A star-shaped polygon around the centre with radii spanning 1e-6..1:
+  // its edges never cross; points scattered inside and out.
+  std::mt19937_64 rng(21);
+  std::uniform_real_distribution<double> U(0, 1);
+  TriangleStore m;
+  const int n = 400;
+  std::vector<VertexId> poly;
+  for (int k = 0; k < n; ++k) {
+    const double th = 2 * M_PI * k / n, r = 0.3 + 0.2 * U(rng) + (k % 7 == 0 ? 1e-6 * U(rng) : 0);
+    poly.push_back(m.add_vertex({0.5 + r * std::cos(th), 0.5 + r * std::sin(th)}));
+  }
+  for (int i = 0; i < 2000; ++i) m.add_vertex({U(rng), U(rng)});
+  REQUIRE(delaunay(m).ok());
+  std::vector<Edge> edges;
+  for (int k = 0; k < n; ++k) edges.push_back({poly[k], poly[(k + 1) % n]});
+  const PlanarGeometry g{&m.xy};
+  const auto r = recover_edges(m, g, edges);
+  REQUIRE(r.ok());
+  // Random interior points may fall exactly on an edge only with probability 0.
+  CHECK(r.clean());
+  check_cdt(m, edges);
+  const double before = area(m);
+  const auto d = remove_outside(m, g, {Loop{poly, false}});
+  REQUIRE(d.ok());
+  CHECK(d.removed > 0);
+  CHECK(check_topology(m).ok());
+  CHECK(check_constraints(m, edges).ok());
+  double poly_area = 0;
+  for (int k = 0; k < n; ++k) poly_area += 0.5 * cross(m.pos(poly[k]), m.pos(poly[(k + 1) % n]));
+  CHECK(area(m) == doctest::Approx(poly_area).epsilon(1e-12));
+  CHECK(area(m) < before);
+}
+
+TEST_CASE("cdt: outer loop with holes, either orientation; inconsistent loops fail") {
+  std::mt19937_64 rng(4);
+  std::uniform_real_distribution<double> U(0, 1);
+  TriangleStore m;
+  auto square = [&](double x0, double y0, double s, int per_side) {
+    std::vector<VertexId> v;
+    const Vec2 c[4] = {{x0, y0}, {x0 + s, y0}, {x0 + s, y0 + s}, {x0, y0 + s}};
+    for (int e = 0; e < 4; ++e)
+      for (int k = 0; k < per_side; ++k) v.push_back(m.add_vertex(c[e] + (double(k) / per_side) * (c[(e + 1) % 4] - c[e])));
+    return v;
+  };
+  auto outer = square(0, 0, 1, 10);
+  auto hole1 = square(0.2, 0.2, 0.2, 3);
+  auto hole2 = square(0.6, 0.5, 0.3, 4);
+  std::reverse(hole1.begin(), hole1.end());  // orientation must not matter
+  for (int i = 0; i < 500; ++i) m.add_vertex({U(rng), U(rng)});
+  REQUIRE(delaunay(m).ok());
+  std::vector<Edge> edges;
+  for (const std::vector<VertexId>* l : {&outer, &hole1, &hole2})
+    for (std::size_t k = 0; k < l->size(); ++k) edges.push_back({(*l)[k], (*l)[(k + 1) % l->size()]});
+  const PlanarGeometry g{&m.xy};
+  const auto r = recover_edges(m, g, edges);
+  REQUIRE(r.ok());
+  // Random points may land exactly on an axis-aligned side only by chance.
+  CHECK(r.crossings.empty());
+  check_cdt(m, edges);
+  TriangleStore copy = m;
+  const auto d = remove_outside(m, g, {Loop{outer, false}, Loop{hole1, true}, Loop{hole2, true}});
+  REQUIRE(d.ok());
+  INFO(check_topology(m).error);
+  CHECK(check_topology(m).ok());
+  CHECK(area(m) == doctest::Approx(1 - 0.04 - 0.09));
+  // Both squares as holes: the ring between them would be inside (beside
+  // the small hole) and outside (beside the big one) at once.
+  const PlanarGeometry gc{&copy.xy};
+  const auto bad = remove_outside(copy, gc, {Loop{outer, true}, Loop{hole2, true}});
+  CHECK_FALSE(bad.ok());
+  CHECK(copy.num_triangles() == m.num_triangles() + d.removed);  // unchanged on failure
+}
