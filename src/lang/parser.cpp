@@ -75,7 +75,7 @@ std::string Parser::describe(const Token& t) const {
 // Nothing is reported on an Error token (the lexer already did) or at the end
 // of a file truncated by an unterminated string/comment.
 void Parser::fail_expected(std::string_view what) {
-  const Token& t = peek();
+  const Token t = peek();
   const bool quiet = t.kind == Tok::Error || (t.kind == Tok::Eof && lexer_.truncated());
   if (!quiet) diags_.report(t.range, Diag::ExpectedToken, what, describe(t));
   throw SyntaxError{};
@@ -90,7 +90,7 @@ Token Parser::expect(Tok k, std::string_view what) {
 // points back at it.
 Token Parser::expect_closing(Tok k, const Token& opener) {
   if (at(k)) return advance();
-  const Token& t = peek();
+  const Token t = peek();
   if (t.kind != Tok::Error && !(t.kind == Tok::Eof && lexer_.truncated())) {
     const std::string_view closer = tok_name(k).substr(1, 1);
     diags_.report(t.range, Diag::UnclosedDelimiter, closer, text(opener), line_of(opener.range), describe(t))
@@ -103,7 +103,7 @@ Token Parser::expect_closing(Tok k, const Token& opener) {
 // without unwinding: the statement itself was complete.
 void Parser::expect_semicolon() {
   if (accept(Tok::Semicolon)) return;
-  const Token& t = peek();
+  const Token t = peek();
   if (t.kind == Tok::Error || (t.kind == Tok::Eof && lexer_.truncated())) return;
   if (t.kind == Tok::RBrace || t.kind == Tok::RParen || t.kind == Tok::RBracket) {
     // A stray closer (`{1, 2}};`): one error at it, then skip to the ';'.
@@ -131,7 +131,7 @@ bool Parser::is_statement_boundary(Tok k) const {
 void Parser::synchronize(std::size_t start_offset) {
   int brace_depth = 0;
   for (;;) {
-    const Token& t = peek();
+    const Token t = peek();
     if (t.kind == Tok::Eof) return;
     const bool progressed = t.range.begin > start_offset;
     if (progressed && brace_depth == 0 && is_statement_boundary(t.kind)) return;
@@ -164,7 +164,7 @@ ParseResult Parser::run() {
   errors_at_start_ = diags_.error_count();
   ParseResult result;
   while (!at(Tok::Eof) && !stopped()) {
-    const Token& t = peek();
+    const Token t = peek();
     if (t.kind == Tok::EndFor || t.kind == Tok::EndIf || t.kind == Tok::ElseIf || t.kind == Tok::Else ||
         t.kind == Tok::Return) {
       const Token end = advance();
@@ -254,7 +254,7 @@ void report_unclosed(Diagnostics& diags, const Token& found, std::string_view fo
 }  // namespace
 
 StmtId Parser::parse_statement() {
-  const Token& t = peek();
+  const Token t = peek();
   switch (t.kind) {
     case Tok::Semicolon: advance(); return StmtId{};  // empty statement
     case Tok::If: return parse_if();
@@ -445,7 +445,7 @@ StmtId Parser::parse_call() {
 // Gmsh runs the rest of the line before a Call/Include takes effect; we run in
 // order, so say so when more statements follow on the same line.
 void Parser::warn_statement_after(const Token& kw, SourceRange stmt_range) {
-  const Token& t = peek();
+  const Token t = peek();
   if (t.kind == Tok::Eof || is_statement_boundary(t.kind) || t.kind == Tok::Error) return;
   if (line_of(t.range) != line_of(SourceRange{stmt_range.file, stmt_range.end ? stmt_range.end - 1 : 0, stmt_range.end}))
     return;

@@ -111,7 +111,7 @@ ExprId Parser::parse_postfix() {
 // primary := NUMBER | STRING | const | "(" expr ")" | "{" [ items ] "}" | "#" postfix
 //          | name_primary | entity_expr | transform | boundary | coastline_query
 ExprId Parser::parse_primary() {
-  const Token& t = peek();
+  const Token t = peek();
   switch (t.kind) {
     case Tok::Number: {
       const Token n = advance();

@@ -47,7 +47,7 @@ ExprId Parser::parse_entity_list(bool& all) {
 }
 
 StmtId Parser::parse_geometry_statement() {
-  const Token& t = peek();
+  const Token t = peek();
   switch (t.kind) {
     case Tok::Point:
       if (at(Tok::LBrace, 1)) return parse_embed(t, EntityKind::Point);

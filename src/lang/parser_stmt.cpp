@@ -48,7 +48,7 @@ AffOp Parser::affop_of(Tok k) const {
 // ident_stmt := "Include" sexpr ";" | command | IDENT "Field" "=" list_value ";"
 //             | ("SetNumber" | "SetString") "(" items ")" ";" | assign
 StmtId Parser::parse_ident_statement() {
-  const Token& t = peek();
+  const Token t = peek();
   const std::string_view w = text(t);
   const Tok next = kind(1);
   if (next == Tok::Field) return parse_background_field();
@@ -130,7 +130,7 @@ StmtId Parser::parse_assignment(const Token& first) {
     return add(first, IncDecStmt{std::move(lv), inc});
   }
   if (!is_affop(kind())) {
-    const Token& t = peek();
+    const Token t = peek();
     if (lv.kind == LValue::Kind::Var && lv.name.suffixes.empty() && lv.name.ident.valid() &&
         (t.kind == Tok::String || t.kind == Tok::Number || t.kind == Tok::Semicolon || t.kind == Tok::Ident)) {
       diags_.report(first.range, Diag::UnknownCommand, clip(text(first)));
