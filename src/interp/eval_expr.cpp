@@ -80,7 +80,8 @@ long long Interpreter::to_int(double v, SourceRange r) {
 std::string Interpreter::resolve_name(const Name& n) {
   if (n.from_string.valid()) return eval_string(n.from_string);
   std::string name(ast_.str(n.ident));
-  for (ExprId suffix : n.suffixes) name = suffixed_name(name, eval_number(suffix));
+  for (ExprId suffix : n.suffixes)
+    name = suffixed_name(name, static_cast<double>(to_int(eval_number(suffix), ast_.expr(suffix).range)));
   return name;
 }
 
@@ -370,7 +371,13 @@ Value Interpreter::eval_postfix(const Expr& e, const PostfixExpr& p) {
   if (const auto* v = std::get_if<VarExpr>(&t.node)) {
     const std::string name = resolve_name(v->name);
     NumSymbol* sym = symbols_.find_num(name);
-    if (!sym || sym->values.empty()) eval_var(t, *v);   // reports the unknown variable
+    if (!sym) {
+      if (symbols_.find_str(name))
+        fail_fmt(t.range, Diag::WrongType, fmt::format("'{}' is a string, not a number", name));
+      fail_fmt(t.range, Diag::UnknownVariable, name, unknown_name_hint(name));
+    }
+    if (sym->values.empty())
+      fail_fmt(t.range, Diag::WrongType, fmt::format("'{}' is an empty list, not a number", name));
     const double old = sym->values[0];
     sym->values[0] = old + delta;
     return Value::number(old);

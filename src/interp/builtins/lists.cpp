@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 
 #include <fmt/format.h>
@@ -51,6 +52,12 @@ Value f_logspace(BuiltinEnv&, const std::vector<Value>& a) {
 // Whitespace-separated numbers; anything else is an error naming the token.
 Value f_list_from_file(BuiltinEnv& env, const std::vector<Value>& a) {
   const std::string path = resolve_script_path(env, arg_string(a, 0));
+  // Only regular files of bounded size: /dev/zero or a FIFO must not hang us.
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw BuiltinError{fmt::format("'{}' is not a readable regular file", path), 0};
+  if (std::filesystem::file_size(path, ec) > kMaxStringSize * 4)
+    throw BuiltinError{fmt::format("'{}' is larger than {} bytes", path, kMaxStringSize * 4), 0};
   std::ifstream in(path);
   if (!in) throw BuiltinError{fmt::format("cannot open '{}'", path), 0};
   std::vector<double> v;

@@ -53,12 +53,12 @@ TEST_CASE("cli: usage errors") {
 
 namespace {
 
-// The stereomesh built next to this test (build/src/cli/stereomesh), or "".
+// The stereomesh built with this test (build/stereomesh beside build/tests/), or "".
 std::string binary() {
   std::error_code ec;
   const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
   if (ec) return "";
-  const auto bin = self.parent_path().parent_path() / "src" / "cli" / "stereomesh";
+  const auto bin = self.parent_path().parent_path() / "stereomesh";
   return std::filesystem::exists(bin, ec) ? bin.string() : "";
 }
 
