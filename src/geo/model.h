@@ -188,14 +188,17 @@ class Model {
   void on_delete(int slot, int tag);
   std::vector<int> points_of(const std::vector<DimTag>& entities) const;
   GeoStatus transform_points(const std::vector<DimTag>& entities, const std::array<double, 12>& m);
-  bool point_in_use(int tag) const;
-  bool curve_in_use(int tag) const;
-  bool loop_in_use(int tag) const;
+  // How many higher-dimensional references each point, curve and loop has: built once per
+  // Delete so that deleting a large model stays O(n log n).
+  struct Usage {
+    std::map<int, int> point, curve, loop;
+  };
+  Usage usage() const;
   void drop_from_groups(int dim, int tag);
   void delete_point(int tag);
-  void delete_curve(int tag, bool recursive);
-  void delete_loop(int tag, bool recursive);
-  void delete_surface(int tag, bool recursive);
+  void delete_curve(int tag, bool recursive, Usage& u);
+  void delete_loop(int tag, bool recursive, Usage& u);
+  void delete_surface(int tag, bool recursive, Usage& u);
 
   ModelOptions options_;
   std::map<int, ModelVertex> vertices_;

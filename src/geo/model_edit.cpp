@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <tuple>
 
 namespace sm::geo {
 
@@ -20,29 +21,28 @@ bool contains(const std::vector<int>& v, int x) { return std::find(v.begin(), v.
 
 // ---- usage ----
 
-bool Model::point_in_use(int tag) const {
+Model::Usage Model::usage() const {
+  Usage u;
   for (const auto& [t, c] : curves_)
-    if (contains(c.points, tag)) return true;
-  for (const auto& [t, s] : surfaces_)
-    if (contains(s.embedded_points, tag)) return true;
-  return false;
-}
-
-bool Model::curve_in_use(int tag) const {
+    for (int p : c.points) ++u.point[p];
   for (const auto& [t, l] : loops_)
-    for (int c : l.curves)
-      if (std::abs(c) == tag) return true;
-  for (const auto& [t, s] : surfaces_)
-    if (contains(s.embedded_curves, tag)) return true;
-  return false;
+    for (int c : l.curves) ++u.curve[std::abs(c)];
+  for (const auto& [t, s] : surfaces_) {
+    for (int l : s.loops) ++u.loop[std::abs(l)];
+    for (int p : s.embedded_points) ++u.point[p];
+    for (int c : s.embedded_curves) ++u.curve[c];
+  }
+  return u;
 }
 
-bool Model::loop_in_use(int tag) const {
-  for (const auto& [t, s] : surfaces_)
-    for (int l : s.loops)
-      if (std::abs(l) == tag) return true;
-  return false;
+namespace {
+
+bool used(const std::map<int, int>& m, int tag) {
+  auto it = m.find(tag);
+  return it != m.end() && it->second > 0;
 }
+
+}  // namespace
 
 // Deleted entities leave their physical groups; a group left empty disappears (as in Gmsh).
 void Model::drop_from_groups(int dim, int tag) {
@@ -59,37 +59,42 @@ void Model::delete_point(int tag) {
   on_delete(0, tag);
 }
 
-void Model::delete_curve(int tag, bool recursive) {
+void Model::delete_curve(int tag, bool recursive, Usage& u) {
   const std::vector<int> pts = curves_.at(tag).points;
   curves_.erase(tag);
   drop_from_groups(1, tag);
   on_delete(1, tag);
+  for (int p : pts) --u.point[p];
   if (!recursive) return;
   for (int p : pts)
-    if (vertices_.count(p) && !point_in_use(p)) delete_point(p);
+    if (vertices_.count(p) && !used(u.point, p)) delete_point(p);
 }
 
-void Model::delete_loop(int tag, bool recursive) {
+void Model::delete_loop(int tag, bool recursive, Usage& u) {
   const std::vector<int> cs = loops_.at(tag).curves;
   loops_.erase(tag);
   on_delete(kLoopSlot, tag);
+  for (int c : cs) --u.curve[std::abs(c)];
   if (!recursive) return;
   for (int c : cs)
-    if (curves_.count(std::abs(c)) && !curve_in_use(std::abs(c))) delete_curve(std::abs(c), true);
+    if (curves_.count(std::abs(c)) && !used(u.curve, std::abs(c))) delete_curve(std::abs(c), true, u);
 }
 
-void Model::delete_surface(int tag, bool recursive) {
+void Model::delete_surface(int tag, bool recursive, Usage& u) {
   const ModelSurface s = surfaces_.at(tag);
   surfaces_.erase(tag);
   drop_from_groups(2, tag);
   on_delete(2, tag);
+  for (int l : s.loops) --u.loop[std::abs(l)];
+  for (int c : s.embedded_curves) --u.curve[c];
+  for (int p : s.embedded_points) --u.point[p];
   if (!recursive) return;
   for (int l : s.loops)
-    if (loops_.count(std::abs(l)) && !loop_in_use(std::abs(l))) delete_loop(std::abs(l), true);
+    if (loops_.count(std::abs(l)) && !used(u.loop, std::abs(l))) delete_loop(std::abs(l), true, u);
   for (int c : s.embedded_curves)
-    if (curves_.count(c) && !curve_in_use(c)) delete_curve(c, true);
+    if (curves_.count(c) && !used(u.curve, c)) delete_curve(c, true, u);
   for (int p : s.embedded_points)
-    if (vertices_.count(p) && !point_in_use(p)) delete_point(p);
+    if (vertices_.count(p) && !used(u.point, p)) delete_point(p);
 }
 
 GeoStatus Model::remove(const std::vector<DimTag>& entities, bool recursive, std::vector<DimTag>* skipped) {
@@ -101,19 +106,20 @@ GeoStatus Model::remove(const std::vector<DimTag>& entities, bool recursive, std
       return make_error(GeoErrorKind::MissingEntity, e.dim >= 0 && e.dim <= 2 ? static_cast<EntityKind>(e.dim) : EntityKind::None,
                         {e.tag}, fmt::format("cannot delete unknown {} {}", e.dim == 0 ? "point" : e.dim == 1 ? "curve" : "surface", t));
   }
+  Usage u = usage();
   for (const DimTag& e : entities) {
     const int t = std::abs(e.tag);
-    bool used = false;
+    bool in_use = false;
     if (e.dim == 0 && vertices_.count(t)) {
-      used = point_in_use(t);
-      if (!used) delete_point(t);
+      in_use = used(u.point, t);
+      if (!in_use) delete_point(t);
     } else if (e.dim == 1 && curves_.count(t)) {
-      used = curve_in_use(t);
-      if (!used) delete_curve(t, recursive);
+      in_use = used(u.curve, t);
+      if (!in_use) delete_curve(t, recursive, u);
     } else if (e.dim == 2 && surfaces_.count(t)) {
-      delete_surface(t, recursive);
+      delete_surface(t, recursive, u);
     }
-    if (used && skipped) skipped->push_back(e);
+    if (in_use && skipped) skipped->push_back(e);
   }
   return {};
 }
@@ -184,17 +190,16 @@ int Model::coherence() {
     auto shape = build_shape(curves_.at(t));
     if (shape) curves_.at(t).shape = std::move(*shape);
   }
-  // Curves with the same kind, control points and plane: keep the lowest tag.
+  // Curves with the same kind, control points and plane: keep the lowest tag (curves_ is
+  // visited in tag order, so the first one seen survives).
+  using CurveKey = std::tuple<int, std::vector<int>, bool, double, double, double>;
+  std::map<CurveKey, int> first_of;
   std::map<int, int> curve_replace;
-  for (auto a = curves_.begin(); a != curves_.end(); ++a) {
-    if (curve_replace.count(a->first)) continue;
-    for (auto b = std::next(a); b != curves_.end(); ++b) {
-      if (curve_replace.count(b->first)) continue;
-      const ModelCurve &x = a->second, &y = b->second;
-      const bool same_normal = x.plane_normal.has_value() == y.plane_normal.has_value() &&
-                               (!x.plane_normal || *x.plane_normal == *y.plane_normal);
-      if (x.kind == y.kind && x.points == y.points && same_normal) curve_replace[b->first] = a->first;
-    }
+  for (const auto& [t, c] : curves_) {
+    const Vec3 n = c.plane_normal.value_or(Vec3{});
+    CurveKey key{static_cast<int>(c.kind), c.points, c.plane_normal.has_value(), n.x, n.y, n.z};
+    auto [it, fresh] = first_of.emplace(std::move(key), t);
+    if (!fresh) curve_replace[t] = it->second;
   }
   auto map_curve = [&](int& c) {
     if (auto it = curve_replace.find(std::abs(c)); it != curve_replace.end()) c = c > 0 ? it->second : -it->second;

@@ -89,7 +89,8 @@ int main() {
   const double t_curves = seconds_since(t0);
   loops.insert(loops.begin(), outer);
   t0 = std::chrono::steady_clock::now();
-  const GeoStatus st = m.add_plane_surface(m.new_surface_tag(), loops);
+  const int surface_tag = m.new_surface_tag();
+  const GeoStatus st = m.add_plane_surface(surface_tag, loops);
   const double t_surface = seconds_since(t0);
   ok = ok && st.ok();
   std::printf("world_i_A100: %zu coastlines, %zu points\n", segs.size(), npts);
@@ -117,5 +118,17 @@ int main() {
                 1e9 * dt / calls);
   }
   std::printf("  (checksum %.3g)\n", sink);
+
+  // Whole-model edits at this size: Coherence and Recursive Delete. Coherence merges 4
+  // points: 4 rings of this file repeat a vertex non-consecutively (out-and-back spikes or
+  // pinches where GMT joined bin pieces, at lon -100, -75, 5 and 0; segments 44, 158, 681, 1).
+  t0 = std::chrono::steady_clock::now();
+  const int merged = m.coherence();
+  std::printf("  Coherence                    %8.3f s  (%d merged)\n", seconds_since(t0), merged);
+  t0 = std::chrono::steady_clock::now();
+  ok = ok && m.remove({{2, surface_tag}}, true).ok();
+  std::printf("  Recursive Delete of the face %8.3f s  (%zu points, %zu curves left)\n", seconds_since(t0),
+              m.vertices().size(), m.curves().size());
+  ok = ok && m.curves().empty() && m.vertices().size() == 2;
   return ok ? 0 : 1;
 }
