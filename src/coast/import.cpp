@@ -37,7 +37,8 @@ std::vector<std::string> ImportReport::lines() const {
     }
     out.push_back(fmt::format("record {} (id {}) at lon {:.5f} lat {:.5f}: {}{}", e.record, e.id, e.where.lon,
                               e.where.lat, what,
-                              e.kind == RepairKind::NarrowStrait ? fmt::format(" (width {:.0f} m)", e.value)
+                              e.kind == RepairKind::NarrowStrait || e.kind == RepairKind::MergedIslands
+                                  ? fmt::format(" (width {:.0f} m)", e.value)
                               : e.kind == RepairKind::Refined    ? fmt::format(" ({} points)", e.value)
                                                                  : std::string()));
   }
@@ -212,6 +213,7 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
     return e;
   }
   rep.repair_rounds = *rounds;
+  handle_straits(curves, loops, ro, rep.repair);
 
   // Orientation once the loops are simple (the extreme-vertex test needs a simple
   // polygon): water on the left, outer loops counter-clockwise, holes clockwise.

@@ -3,12 +3,14 @@
 #include "coast/repair.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <tuple>
 
 #include <fmt/format.h>
 
 #include "coast/intersections.h"
+#include "mesh/predicates.h"
 
 namespace sm::coast {
 namespace {
@@ -196,6 +198,161 @@ Result<std::size_t> repair_loops(std::vector<WorkCurve>& curves, std::vector<Wor
                       uv_to_lonlat(h.where)};
   }
   return round;
+}
+
+namespace {
+
+// Joins island loop lb into la across the facing kept segments (la, ka) and (lb, kb):
+// la's points from the end of its segment round to its start, then lb's likewise.
+void merge_across(std::vector<WorkCurve>& curves, WorkLoop& la, std::uint32_t ka, WorkLoop& lb, std::uint32_t kb) {
+  WorkCurve& A = curves[la.curves[0]];
+  const WorkCurve& B = curves[lb.curves[0]];
+  WorkCurve M;
+  M.periodic = true;
+  M.record = A.record;
+  M.id = A.id;
+  auto append = [&M](const WorkCurve& c, std::uint32_t k) {
+    // From keep[k+1] round to keep[k] (inclusive), keeping the retained flags.
+    const std::size_t n = c.full.size();
+    const std::size_t from = c.keep[(k + 1) % c.keep.size()];
+    const std::size_t to = c.keep[k];
+    const std::size_t len = (to + n - from) % n + 1;
+    std::vector<char> kept(n, 0);
+    for (auto i : c.keep) kept[i] = 1;
+    for (std::size_t s = 0; s < len; ++s) {
+      const std::size_t i = (from + s) % n;
+      if (kept[i]) M.keep.push_back(static_cast<std::uint32_t>(M.full.size()));
+      M.full.push_back(c.full[i]);
+      M.uv.push_back(c.uv[i]);
+      M.gamma.push_back(c.gamma[i]);
+    }
+  };
+  append(A, ka);
+  append(B, kb);
+  A = std::move(M);
+  lb.dead = true;
+}
+
+double lambda(Vec2 uv, double radius) { return 2.0 * radius / (1.0 + norm2(uv)); }
+
+// Closed segments pq and rs share a point (exact predicates).
+bool segments_meet(Vec2 p, Vec2 q, Vec2 r, Vec2 s) {
+  const Sign o1 = orient2d(p, q, r), o2 = orient2d(p, q, s), o3 = orient2d(r, s, p), o4 = orient2d(r, s, q);
+  if (o1 == Sign::Zero && o2 == Sign::Zero) {
+    auto within = [](Vec2 a, Vec2 b, Vec2 c) {
+      return std::min(a.x, b.x) <= c.x && c.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= c.y &&
+             c.y <= std::max(a.y, b.y);
+    };
+    return within(p, q, r) || within(p, q, s) || within(r, s, p) || within(r, s, q);
+  }
+  return !(o1 != Sign::Zero && o1 == o2) && !(o3 != Sign::Zero && o3 == o4);
+}
+
+}  // namespace
+
+void handle_straits(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops, const RepairOptions& opt,
+                    std::vector<RepairEntry>& log) {
+  if (!(opt.strait_factor > 0)) return;
+  // Each pass merges every island at most once (its polygon changes); chains of islands
+  // across several straits take several passes.
+  constexpr int kMaxPasses = 16;
+  for (int pass = 0; pass < kMaxPasses; ++pass) {
+    std::vector<std::vector<Vec2>> polys(loops.size());
+    std::vector<std::vector<LoopVertexRef>> refs(loops.size());
+    std::vector<std::vector<double>> width(loops.size());
+    for (std::size_t l = 0; l < loops.size(); ++l) {
+      if (loops[l].dead) continue;
+      loop_polygon(curves, loops[l], polys[l], &refs[l]);
+      for (std::size_t s = 0; s < polys[l].size(); ++s) {
+        const LoopVertexRef r = refs[l][s];
+        const WorkCurve& c = curves[r.curve];
+        width[l].push_back(opt.strait_factor * c.gamma[c.keep[r.k]] / lambda(polys[l][s], opt.radius));
+      }
+    }
+    const std::vector<NearMiss> near = find_near_misses(polys, width);
+    // Narrowest place per pair of loops, narrowest pairs first; a place where the two
+    // segments face each other (run in opposite directions, more than 120 degrees apart)
+    // is preferred, since only there can a bridge close the strait.
+    auto facing = [&](const NearMiss& m) {
+      const auto& pa = polys[m.loop_a];
+      const auto& pb = polys[m.loop_b];
+      const Vec2 da = pa[(m.seg_a + 1) % pa.size()] - pa[m.seg_a];
+      const Vec2 db = pb[(m.seg_b + 1) % pb.size()] - pb[m.seg_b];
+      return dot(da, db) < -0.5 * norm(da) * norm(db);
+    };
+    std::vector<NearMiss> best;
+    std::vector<char> best_facing;
+    for (const NearMiss& m : near) {
+      const bool f = facing(m);
+      std::size_t i = 0;
+      while (i < best.size() && !(best[i].loop_a == m.loop_a && best[i].loop_b == m.loop_b)) ++i;
+      if (i == best.size()) {
+        best.push_back(m);
+        best_facing.push_back(f);
+      } else if ((f && !best_facing[i]) || (f == static_cast<bool>(best_facing[i]) && m.distance < best[i].distance)) {
+        best[i] = m;
+        best_facing[i] = f;
+      }
+    }
+    std::vector<std::size_t> order(best.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return best[a].distance < best[b].distance; });
+    bool merged = false;
+    std::vector<char> touched(loops.size(), 0);
+    std::vector<RepairEntry> pending;
+    for (std::size_t oi : order) {
+      const NearMiss& m = best[oi];
+      const LoopVertexRef ra = refs[m.loop_a][m.seg_a], rb = refs[m.loop_b][m.seg_b];
+      const WorkCurve& ca = curves[ra.curve];
+      const double metres = m.distance * lambda(m.where, opt.radius);
+      WorkLoop& la = loops[m.loop_a];
+      WorkLoop& lb = loops[m.loop_b];
+      const bool can_merge = opt.close_straits && best_facing[oi] && m.loop_a != m.loop_b && la.hole && lb.hole &&
+                             la.curves.size() == 1 && lb.curves.size() == 1 && !touched[m.loop_a] &&
+                             !touched[m.loop_b] && curves[la.curves[0]].periodic && curves[lb.curves[0]].periodic;
+      if (can_merge) {
+        // The merge adds only the two bridge edges a[k]->b[k+1] and b[k]->a[k+1]; the
+        // loops were intersection-free, so checking those two edges is enough.
+        const std::vector<Vec2>& pa = polys[m.loop_a];
+        const std::vector<Vec2>& pb = polys[m.loop_b];
+        const Vec2 a0 = pa[m.seg_a], a1 = pa[(m.seg_a + 1) % pa.size()];
+        const Vec2 b0 = pb[m.seg_b], b1 = pb[(m.seg_b + 1) % pb.size()];
+        const std::array<std::array<Vec2, 2>, 2> bridges{{{a0, b1}, {b0, a1}}};
+        bool bad = segments_meet(bridges[0][0], bridges[0][1], bridges[1][0], bridges[1][1]);
+        for (std::size_t l = 0; l < polys.size() && !bad; ++l) {
+          if (loops[l].dead) continue;
+          const auto& p = polys[l];
+          for (std::size_t i = 0; i < p.size() && !bad; ++i) {
+            const Vec2 s0 = p[i], s1 = p[(i + 1) % p.size()];
+            for (const auto& br : bridges) {
+              if (std::max(s0.x, s1.x) < std::min(br[0].x, br[1].x) || std::min(s0.x, s1.x) > std::max(br[0].x, br[1].x) ||
+                  std::max(s0.y, s1.y) < std::min(br[0].y, br[1].y) || std::min(s0.y, s1.y) > std::max(br[0].y, br[1].y))
+                continue;
+              // Edges sharing an end point with the bridge are its neighbours in the new loop.
+              if (s0 == br[0] || s0 == br[1] || s1 == br[0] || s1 == br[1]) continue;
+              if (segments_meet(br[0], br[1], s0, s1)) {
+                bad = true;
+                break;
+              }
+            }
+          }
+        }
+        if (!bad) {
+          merge_across(curves, la, ra.k, lb, rb.k);
+          touched[m.loop_a] = touched[m.loop_b] = 1;
+          merged = true;
+          log.push_back({RepairKind::MergedIslands, ca.record, ca.id, uv_to_lonlat(m.where), metres});
+          continue;
+        }
+      }
+      pending.push_back({RepairKind::NarrowStrait, ca.record, ca.id, uv_to_lonlat(m.where), metres});
+    }
+    if (!merged || pass + 1 == kMaxPasses) {   // straits left open: reported once, from the final pass
+      log.insert(log.end(), pending.begin(), pending.end());
+      return;
+    }
+  }
 }
 
 }  // namespace sm::coast

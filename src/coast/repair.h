@@ -50,4 +50,14 @@ void loop_polygon(const std::vector<WorkCurve>& curves, const WorkLoop& loop, st
 Result<std::size_t> repair_loops(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops,
                                  const RepairOptions& opt, std::vector<RepairEntry>& log);
 
+/// Straits narrower than strait_factor * gamma between two loops (or two far-apart parts
+/// of one loop), measured on the sphere (uv distance times the conformal factor). Each
+/// pair of loops is reported once (NarrowStrait, width in metres) at its narrowest place.
+/// With close_straits, two islands facing each other across such a strait are merged
+/// into one loop: the two facing segments are replaced by the two bridge edges joining
+/// their ends, closing the strait (a merge that would cross anything is not made, and
+/// the strait is reported instead). Call on repaired (intersection-free) loops.
+void handle_straits(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops, const RepairOptions& opt,
+                    std::vector<RepairEntry>& log);
+
 }  // namespace sm::coast

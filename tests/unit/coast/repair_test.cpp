@@ -4,6 +4,9 @@
 #include <doctest/doctest.h>
 
 #include "coast/import.h"
+#include "coast/read_lonlat_text.h"
+
+#include <cmath>
 
 using namespace sm;
 using namespace sm::coast;
@@ -66,4 +69,46 @@ TEST_CASE("repair: a tiny island overlapping another is dropped; a large overlap
   REQUIRE_FALSE(bad.ok());
   REQUIRE(bad.error().where.has_value());
   CHECK(bad.error().message.find("cross") != std::string::npos);
+}
+
+TEST_CASE("repair: a strait narrower than gamma is listed, or closed on request") {
+  // Two 0.01-degree squares about 70 m apart (0.001 deg of longitude at 50N).
+  const std::vector<geo::LonLat> a{{0, 50}, {0.01, 50}, {0.01, 50.01}, {0, 50.01}};
+  const std::vector<geo::LonLat> b{{0.011, 50}, {0.021, 50}, {0.021, 50.01}, {0.011, 50.01}};
+  ImportOptions o;
+  o.gamma = constant(100);
+  auto open = build_coast_model(with_ocean({a, b}), o);
+  REQUIRE(open.ok());
+  REQUIRE(open->report.count(RepairKind::NarrowStrait) == 1);
+  for (const auto& e : open->report.repair)
+    if (e.kind == RepairKind::NarrowStrait) CHECK(e.value == doctest::Approx(71.6).epsilon(0.01));
+  CHECK(open->surfaces[0].holes.size() == 2);
+  o.close_straits = true;
+  auto closed = build_coast_model(with_ocean({a, b}), o);
+  REQUIRE(closed.ok());
+  CHECK(closed->report.count(RepairKind::MergedIslands) == 1);
+  CHECK(closed->report.count(RepairKind::NarrowStrait) == 0);
+  REQUIRE(closed->surfaces[0].holes.size() == 1);
+  const auto& merged = closed->curves[closed->loops[closed->surfaces[0].holes[0]].curves[0]];
+  CHECK(merged.ll.size() == 8);
+  o.strait_factor = 0.5;   // 50 m: the 72 m strait stays open
+  auto wide = build_coast_model(with_ocean({a, b}), o);
+  REQUIRE(wide.ok());
+  CHECK(wide->report.count(RepairKind::MergedIslands) == 0);
+}
+
+TEST_CASE("repair: closing straits at 15 km joins Anglesey to Great Britain across the Menai Strait") {
+  auto c = read_lonlat_text(std::string(SM_SHARED_DATA) + "/gshhg/gb_ireland_f.txt");
+  REQUIRE(c.ok());
+  ImportOptions o;
+  o.gamma = constant(15e3);
+  o.close_straits = true;
+  auto m = build_coast_model(std::move(*c), o);
+  REQUIRE(m.ok());
+  bool menai = false;
+  for (const auto& e : m->report.repair)
+    if (e.kind == RepairKind::MergedIslands && std::abs(e.where.lon + 4.2) < 0.1 && std::abs(e.where.lat - 53.2) < 0.1)
+      menai = true;
+  CHECK(menai);
+  CHECK(m->surfaces[0].holes.size() < 16);
 }
