@@ -45,7 +45,7 @@ std::string Interpreter::preset_string(const std::string& name, const std::strin
 RunStatus Interpreter::run_file(const std::string& path) {
   const auto loaded = sources_.load_file(path);
   if (!loaded.file.valid()) {
-    diags_.report(SourceRange{}, Diag::IncludeFailed, loaded.error);
+    diags_.report(SourceRange{}, Diag::CannotOpenFile, loaded.error);
     return RunStatus::Errors;
   }
   std::error_code ec;
@@ -58,7 +58,7 @@ RunStatus Interpreter::run_file(const std::string& path) {
 RunStatus Interpreter::run_buffer(const std::string& name, const std::string& text) {
   const auto loaded = sources_.add_buffer(name, text);
   if (!loaded.file.valid()) {
-    diags_.report(SourceRange{}, Diag::IncludeFailed, loaded.error);
+    diags_.report(SourceRange{}, Diag::CannotOpenFile, loaded.error);
     return RunStatus::Errors;
   }
   include_stack_.push_back(name);
