@@ -9,6 +9,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace sm::geo {
 
 const char* to_string(CurveKind k) {
@@ -117,6 +119,18 @@ Jet2 Curve::eval_uv_forward(double t) const {
   const SecondDerivs s = surface_->second_derivatives(j.p);
   j.d2 = solve(x.d2 - (j.d1.x * j.d1.x) * s.uu - (2.0 * j.d1.x * j.d1.y) * s.uv - (j.d1.y * j.d1.y) * s.vv);
   return j;
+}
+
+int Curve::pieces() const {
+  const int n = static_cast<int>(xyz_.size());
+  switch (kind_) {
+    case CurveKind::Line:
+    case CurveKind::Spline: return n - 1;
+    case CurveKind::BSpline:
+      if (clamped_) return n - std::min(3, n - 1);
+      return periodic_ ? n - 1 : n + 1;
+    default: return 1;
+  }
 }
 
 Jet3 Curve::eval(double t, bool reversed) const {

@@ -54,6 +54,10 @@ class Curve {
   /// (u,v), du/dt, d2u/dt2 on the surface; requires on_surface().
   Jet2 eval_uv(double t, bool reversed = false) const;
 
+  /// Number of polynomial pieces, uniform in t: piece i covers [i/n, (i+1)/n]. Integrators
+  /// work piece by piece (the curve is smooth inside a piece).
+  int pieces() const;
+
   /// The arc frame of a Circle (nullptr for other kinds).
   const CircleArc* circle() const { return kind_ == CurveKind::Circle ? &circle_ : nullptr; }
 
