@@ -236,18 +236,21 @@ DomainResult remove_outside(TriangleStore& m, const PlanarGeometry& g, const std
     }
     const Sign o = g.orient(v[(k + n - 1) % n], v[k], v[(k + 1) % n]);
     if (o == Sign::Zero) return {fmt::format("loop {} is degenerate at vertex {}", li, v[k].value)};
-    // Domain on the left: outer loops counter-clockwise, holes clockwise.
-    const bool forward = (o == Sign::Positive) != loops[li].hole;
+    // The interior of the loop is left of its counter-clockwise edges. Only
+    // the interior side is seeded (inside for an outer loop, outside for a
+    // hole): the exterior side belongs to whatever encloses the loop, found
+    // by the flood fill. So a loop lying outside every outer loop (an island
+    // beyond the outer boundary) is harmless.
+    const bool ccw = o == Sign::Positive;
     for (std::size_t j = 0; j < n; ++j) {
       VertexId p = v[j], q = v[(j + 1) % n];
-      if (!forward) std::swap(p, q);
+      if (!ccw) std::swap(p, q);
       const Side in = m.side_between(p, q), out = m.side_between(q, p);
       if (!in.valid() && !out.valid())
         return {fmt::format("loop {}: edge {}-{} is not in the triangulation", li, p.value, q.value)};
       for (Side s : {in, out})
         if (s.valid()) wall[s.value] = 1, loop_sides.push_back(s);
-      if (in.valid()) seeds.push_back({tri_of(in).value, kIn});
-      if (out.valid()) seeds.push_back({tri_of(out).value, kOut});
+      if (in.valid()) seeds.push_back({tri_of(in).value, loops[li].hole ? kOut : kIn});
     }
   }
   // Triangles on the hull, behind a side that is no loop edge, are outside.

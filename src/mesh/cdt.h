@@ -63,11 +63,14 @@ struct DomainResult {
 };
 
 /// Deletes the triangles outside the domain bounded by the loops (whose
-/// edges must be present): a triangle is kept when its region, reached
-/// without crossing a loop edge, lies inside an outer loop and outside every
-/// hole. Loop edges get kBoundary | kConstrained. Both orientations of the
-/// loops are accepted. Inconsistent loops (a region seen both inside and
-/// outside) are an error and leave m unchanged.
+/// edges must be present). A region reached without crossing a loop edge is
+/// inside when its innermost enclosing loop is an outer loop: the interior
+/// side of each loop is seeded (inside for outer loops, outside for holes),
+/// hull triangles are outside, and a flood fill across non-loop edges
+/// labels the rest. Both orientations of the loops are accepted; a loop
+/// lying outside every outer loop is harmless. Loop edges get kBoundary |
+/// kConstrained. Contradictory loops (a region both inside an outer loop and
+/// inside a hole, i.e. overlapping loops) are an error and leave m unchanged.
 DomainResult remove_outside(TriangleStore& m, const PlanarGeometry& g, const std::vector<Loop>& loops);
 
 }  // namespace sm

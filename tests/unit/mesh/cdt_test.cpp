@@ -165,10 +165,15 @@ TEST_CASE("cdt: outer loop with holes, either orientation; inconsistent loops fa
   INFO(check_topology(m).error);
   CHECK(check_topology(m).ok());
   CHECK(area(m) == doctest::Approx(1 - 0.04 - 0.09));
-  // Both squares as holes: the ring between them would be inside (beside
-  // the small hole) and outside (beside the big one) at once.
+  // The same loop as outer boundary and as hole: contradictory.
   const PlanarGeometry gc{&copy.xy};
-  const auto bad = remove_outside(copy, gc, {Loop{outer, true}, Loop{hole2, true}});
+  const auto bad = remove_outside(copy, gc, {Loop{outer, false}, Loop{hole2, true}, Loop{outer, true}});
   CHECK_FALSE(bad.ok());
+  // A hole lying outside the outer loop (here: the outer square is the
+  // small one) changes nothing and is no error.
+  TriangleStore only = copy;
+  const auto d2 = remove_outside(only, gc, {Loop{hole2, false}, Loop{hole1, true}});
+  REQUIRE(d2.ok());
+  CHECK(area(only) == doctest::Approx(0.09));
   CHECK(copy.num_triangles() == m.num_triangles() + d.removed);  // unchanged on failure
 }

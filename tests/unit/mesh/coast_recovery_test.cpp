@@ -1,0 +1,53 @@
+// Real data: the GSHHG world shorelines in the paper's stereographic plane,
+// every coastline edge recovered (with repairs where chords cross).
+#include <doctest/doctest.h>
+
+#include "mesh/check.h"
+#include "testing_coast.h"
+
+using namespace sm;
+
+namespace {
+
+void run_world(const char* file, double step_km) {
+  const auto rings = testing::read_gshhg(std::string(SM_SHARED_DATA) + "/gshhg/" + file);
+  REQUIRE(rings.size() > 100);
+  std::vector<testing::RingCurve> curves;
+  for (const auto& r : rings) curves.emplace_back(r);
+  BoundaryProblem p = testing::coast_problem(curves, step_km);
+  const std::size_t n0 = p.points.size();
+  const auto split = [&](std::uint32_t c, double t) { return curves[c].at(t); };
+  BoundaryOptions opt;
+  opt.tolerance = 1e-9;  // ~6 mm on the unit sphere's plane near the equator
+  const BoundaryResult r = recover_boundary(p, split, opt);
+  INFO(std::string(file), " step ", step_km, ": ", r.error.message);
+  REQUIRE(r.ok());
+  MESSAGE(std::string(file) << " step " << step_km << " km: " << n0 << " points, " << r.edges.size() << " edges, "
+                << r.rounds << " rounds, " << r.splits << " splits");
+  REQUIRE(check_topology(r.mesh).ok());
+  REQUIRE(check_constraints(r.mesh, r.edges).ok());
+  REQUIRE(check_delaunay(r.mesh, PlanarGeometry{&r.mesh.xy}, true).ok());
+  // Keep the ocean: Antarctica's ice front (the ring round the South Pole,
+  // hence the largest loop in this plane) is the outer loop, every other
+  // ring an island.
+  std::vector<Loop> loops;
+  for (std::size_t c = 0; c < p.curves.size(); ++c) {
+    Loop l;
+    for (std::size_t k = 0; k + 1 < p.curves[c].pts.size(); ++k) l.v.push_back(VertexId{p.curves[c].pts[k]});
+    l.hole = !rings[c].wraps_pole;
+    loops.push_back(std::move(l));
+  }
+  TriangleStore m = r.mesh;
+  const auto d = remove_outside(m, PlanarGeometry{&m.xy}, loops);
+  INFO(d.error);
+  REQUIRE(d.ok());
+  CHECK(d.removed > 0);
+  CHECK(m.num_triangles() > 0);
+  CHECK(check_topology(m).ok());
+}
+
+}  // namespace
+
+TEST_CASE("coast recovery: world crude shorelines, raw vertices") { run_world("world_c.txt", 0); }
+
+TEST_CASE("coast recovery: world low shorelines resampled at 30 km") { run_world("world_l.txt", 30); }
