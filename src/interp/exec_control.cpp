@@ -179,6 +179,22 @@ Interpreter::Flow Interpreter::exec_include(const Stmt& s, const IncludeStmt& in
 
 Interpreter::Flow Interpreter::exec_command(const Stmt& s, const CommandStmt& c) {
   const std::string_view name = ast_.str(c.command);
+  if (name == "SetNumber" || name == "SetString") {
+    // `SetNumber("name", v);`: the ONELAB-style parameter store that
+    // GetNumber/GetString read. The parser gives the arguments as a ListExpr.
+    const auto* list = c.arg.valid() ? std::get_if<ListExpr>(&ast_.expr(c.arg).node) : nullptr;
+    if (!list || list->items.size() != 2)
+      fail_fmt(s.range, Diag::WrongArgumentCount, name, "2", "s", list ? list->items.size() : 0);
+    std::vector<Value> args{eval(list->items[0]), eval(list->items[1])};
+    try {
+      find_builtin(name)->fn(env_, args);
+    } catch (const BuiltinError& err) {
+      const SourceRange where =
+          err.arg >= 0 && err.arg < 2 ? ast_.expr(list->items[static_cast<std::size_t>(err.arg)]).range : s.range;
+      fail_fmt(where, Diag::BuiltinFailed, name, err.message);
+    }
+    return Flow::Normal;
+  }
   if (!exec_mesh_command(*this, current_stmt_, name)) not_supported_stmt(current_stmt_, name);
   return Flow::Normal;
 }
