@@ -1,6 +1,7 @@
 // The model: Gmsh 4.8.4's tag rules, located validation errors, loops, plane surfaces on a
 // PolarSphere, physical groups, Boundary queries, Delete, Coherence, transforms, Split Curve.
-// Expected values marked "Gmsh" were printed by gmsh 4.8.4 on the same statements.
+// Expected values marked "Gmsh" were printed by gmsh 4.8.4 on the same statements: the
+// scripts and their output are in tests/data/geo/gmsh_queries (run.sh regenerates them).
 #include "geo/model.h"
 
 #include <doctest/doctest.h>

@@ -1,9 +1,11 @@
-// Filling surfaces ("Surface(t) = {loop} <In Sphere{c}>;") against Gmsh 4.8.4: the values
-// below were printed by gmsh 4.8.4 (model.getValue(2, tag, [u, v])) on the same script.
+// Filling surfaces ("Surface(t) = {loop} <In Sphere{c}>;") against Gmsh 4.8.4: 42 values of
+// model.getValue(2, tag, [u, v]) on the same script (tests/data/geo/gmsh_queries/run.sh).
 #include "geo/model.h"
 
 #include <doctest/doctest.h>
 
+#include <fstream>
+#include <string>
 #include <vector>
 
 using namespace sm;
@@ -48,35 +50,21 @@ TEST_CASE("filling surfaces: Coons patch on 4 sides, Gmsh's 3-side form, sphere 
   REQUIRE(m.add_curve_loop(6, {10, 11, 12}));
   REQUIRE(m.add_surface_filling(6, {6}));       // detected: circles about one centre
 
-  const std::vector<Sample> samples = {
-      {1, {0.3, 0.2}, {0.53936, 0.11096, -0.00432}},
-      {1, {0.5, 0.5}, {1.05, 0.675, -0.05}},
-      {1, {0.9, 0.7}, {2.15752, 1.08444, -0.01464}},
-      {1, {0, 1}, {-0.2, 1, 0.5}},
-      {2, {0.3, 0.2}, {0.24496, 0.28536, -0.03392}},
-      {2, {0.9, 0.7}, {1.51608, 1.43516, 0.07704}},
-      {2, {1, 0}, {-0.2, 1, 0.5}},
-      {3, {0.3, 0.2}, {0.6784, 0.23376, 0.00376}},
-      {3, {0.5, 0.5}, {1.1, 0.75, 0}},
-      {3, {0.9, 0.7}, {2.1384, 1.046, -0.0192}},
-      {3, {0, 1}, {4.2, -1, -2.3}},   // v > u: Gmsh extrapolates its sides
-      {4, {0.3, 0.2}, {1.71472, 0.01304, 0.14968}},
-      {4, {0.5, 0.5}, {1, -0.3, 0.1}},
-      {4, {0, 1}, {3.8, -1, -1.2}},
-      {5, {0.3, 0.2}, {0.92441409, 0.1812939, 0.335546}},
-      {5, {0.5, 0.5}, {0.707106781, 0, 0.707106781}},
-      {5, {0.9, 0.7}, {0.1812939, 0.335546, 0.92441409}},
-      {5, {0, 1}, {-0.57735027, -0.57735027, -0.57735027}},
-      {6, {0.3, 0.2}, {0.92441409, 0.1812939, 0.335546}},
-      {6, {0.9, 0.7}, {0.1812939, 0.335546, 0.92441409}},
-  };
+  // tests/data/geo/gmsh_queries/filling_surfaces.out: "surface u v x y z" from gmsh 4.8.4's
+  // model.getValue on filling_surfaces.geo (the same script), %.17g.
+  std::ifstream in(std::string(SM_TEST_DATA) + "/geo/gmsh_queries/filling_surfaces.out");
+  REQUIRE(in.good());
+  std::vector<Sample> samples;
+  Sample smp;
+  while (in >> smp.surface >> smp.uv.x >> smp.uv.y >> smp.gmsh.x >> smp.gmsh.y >> smp.gmsh.z) samples.push_back(smp);
+  REQUIRE(samples.size() == 42);
   for (const Sample& s : samples) {
     CAPTURE(s.surface);
     CAPTURE(s.uv.x);
     CAPTURE(s.uv.y);
     auto x = m.surface_point(s.surface, s.uv);
     REQUIRE(x.ok());
-    CHECK(norm(*x - s.gmsh) < 1e-7);
+    CHECK(norm(*x - s.gmsh) < 1e-12);
   }
   // The boundary of a filling is its loop.
   auto b = m.boundary({{2, 3}}, false);

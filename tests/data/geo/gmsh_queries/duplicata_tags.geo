@@ -1,0 +1,10 @@
+Point(1)={0,0,0}; Point(2)={1,0,0}; Point(3)={1,1,0}; 
+Line(1)={1,2}; Line(2)={2,3};
+q[] = Duplicata{ Point{1}; Curve{2}; };
+Printf("dup", q[]);
+p[] = Point{:}; Printf("pts", p[]);
+Printf("newp %g", newp);
+q[] = Translate{1,0,0}{ Point{q[0]}; Curve{q[1]}; };
+p[] = Point{:}; Printf("pts", p[]);
+Printf("newp after translate %g", newp);
+b[] = Boundary{Curve{3};}; Printf("bnd3", b[]);

@@ -1,0 +1,18 @@
+Point(1)={0,0,0}; Point(2)={2,0,0.3}; Point(3)={2.2,1.5,0}; Point(4)={-0.2,1,0.5};
+Point(5)={1,-0.3,0.1}; Point(6)={2.5,0.8,0}; Point(7)={1,1.6,0.2}; Point(8)={-0.4,0.5,0};
+Spline(1)={1,5,2}; Spline(2)={2,6,3}; Spline(3)={3,7,4}; Spline(4)={4,8,1};
+Curve Loop(1)={1,2,3,4};
+Surface(1)={1};
+Curve Loop(2)={-4,-3,-2,-1};
+Surface(2)={2};
+Line(5)={1,3};
+Curve Loop(3)={1,2,-5};
+Surface(3)={3};
+Curve Loop(4)={2,-5,1};
+Surface(4)={4};
+Point(10)={0,0,0}; Point(11)={1,0,0}; Point(12)={0,1,0}; Point(13)={0,0,1};
+Circle(10)={11,10,12}; Circle(11)={12,10,13}; Circle(12)={13,10,11};
+Curve Loop(5)={10,11,12};
+Surface(5)={5} In Sphere{10};
+Curve Loop(6)={10,11,12};
+Surface(6)={6};
