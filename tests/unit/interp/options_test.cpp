@@ -1,6 +1,8 @@
 // Option registry: 4.8.4 defaults, aliases, validation, suggestions.
 #include <doctest/doctest.h>
 
+#include <algorithm>
+
 #include "interp/options.h"
 
 using sm::interp::Options;
@@ -53,4 +55,18 @@ TEST_CASE("options: closest name for unknown options") {
   CHECK(sm::interp::named_color("red", c));
   CHECK(c[0] == 255);
   CHECK_FALSE(sm::interp::named_color("Blurple", c));
+}
+
+TEST_CASE("options: the table has unique names and every alias resolves") {
+  std::vector<std::string_view> names;
+  for (const auto& o : Options::table()) names.push_back(o.name);
+  std::sort(names.begin(), names.end());
+  CHECK(std::adjacent_find(names.begin(), names.end()) == names.end());
+  Options o;
+  for (const auto& [alias, canon] : Options::aliases()) {
+    CAPTURE(alias);
+    REQUIRE(o.find(canon) != nullptr);
+    CHECK(o.find(alias) == o.find(canon));
+    CHECK(std::find(names.begin(), names.end(), alias) == names.end());
+  }
 }
