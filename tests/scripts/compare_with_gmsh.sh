@@ -22,8 +22,12 @@ for s in $scripts; do
   rel=${s#"$here"/}; rel=${rel#./}
   dir=$tmp/scripts/$(dirname "$rel"); base=$(basename "$rel")
   (cd "$dir" && gmsh -0 "$base" 2>/dev/null | grep -av '^Info    :') > "$tmp/gmsh.out"
-  (cd "$dir" && "$sm" -0 "$base" 2>/dev/null) > "$tmp/sm.out"
-  if cmp -s "$tmp/gmsh.out" "$tmp/sm.out"; then
+  (cd "$dir" && "$sm" -0 "$base" 2>"$tmp/sm.err") > "$tmp/sm.out"
+  status=$?
+  if [ "$status" -ne 0 ]; then
+    differ=$((differ + 1)); echo "FAIL $rel: stereomesh exited with $status"
+    head -5 "$tmp/sm.err"
+  elif cmp -s "$tmp/gmsh.out" "$tmp/sm.out"; then
     same=$((same + 1)); lines=$((lines + $(wc -l < "$tmp/gmsh.out")))
   else
     differ=$((differ + 1)); echo "DIFF $rel (< gmsh, > stereomesh)"
