@@ -40,6 +40,7 @@ Result<CoarsenResult> coarsen(std::vector<Ring> rings, const CoarsenOptions& opt
   for (Ring& ring : rings) {
     const std::size_t n = ring.pts.size();
     out.points_in += n;
+    if (n == 0) continue;   // nothing to keep (clean() never leaves such rings)
     if (ring.closed && opt.min_area_km2 > 0) {
       const double area = ring_area_km2(ring.pts, r * 1e-3);
       if (area < opt.min_area_km2) {

@@ -191,10 +191,16 @@ Result<std::size_t> repair_loops(std::vector<WorkCurve>& curves, std::vector<Wor
     const WorkCurve& ca = curves[refs[h.loop_a][h.seg_a].curve];
     const WorkCurve& cb = curves[refs[h.loop_b][h.seg_b].curve];
     const char* kind = h.kind == HitKind::Cross ? "cross" : h.kind == HitKind::Touch ? "touch" : "overlap";
+    const std::string what =
+        &ca == &cb || (ca.record == cb.record && ca.id == cb.id)
+            ? fmt::format("the source shoreline (record {} id {}) meets itself ({}) and no sliver can be cut out",
+                          ca.record, ca.id, kind)
+            : fmt::format("the source shorelines (record {} id {} and record {} id {}) {} each other", ca.record,
+                          ca.id, cb.record, cb.id, kind);
     return CoastError{"repair", static_cast<std::int64_t>(ca.record),
-                      fmt::format("the source shorelines (record {} id {} and record {} id {}) {} each other; "
-                                  "{} such places cannot be repaired",
-                                  ca.record, ca.id, cb.record, cb.id, kind, stuck.size()),
+                      fmt::format("{}; {} such places cannot be repaired (a finer accuracy or a region avoiding "
+                                  "them may help)",
+                                  what, stuck.size()),
                       uv_to_lonlat(h.where)};
   }
   return round;

@@ -112,3 +112,32 @@ TEST_CASE("repair: closing straits at 15 km joins Anglesey to Great Britain acro
   CHECK(menai);
   CHECK(m->surfaces[0].holes.size() < 16);
 }
+
+TEST_CASE("repair: random self-crossing shorelines end in a model or an error, never a crash or a hang") {
+  std::uint32_t seed = 7;
+  auto rnd = [&seed] { return (seed = seed * 1664525u + 1013904223u) / 4294967296.0; };
+  int ok = 0, failed = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    std::vector<std::vector<geo::LonLat>> islands;
+    const int ni = 1 + trial % 6;
+    for (int i = 0; i < ni; ++i) {
+      std::vector<geo::LonLat> p;
+      const double lon0 = 10 * rnd(), lat0 = 40 + 10 * rnd();
+      const int n = 3 + static_cast<int>(rnd() * 30);
+      for (int k = 0; k < n; ++k) p.push_back({lon0 + 2 * rnd(), lat0 + 2 * rnd()});
+      islands.push_back(p);
+    }
+    ImportOptions o;
+    o.gamma = constant(1000 + 50e3 * rnd());
+    o.close_straits = trial % 2 == 1;
+    auto m = build_coast_model(with_ocean(islands), o);
+    if (m.ok()) {
+      ++ok;
+      CHECK(m->surfaces.size() == 1);
+    } else {
+      ++failed;
+      CHECK_FALSE(m.error().message.empty());
+    }
+  }
+  CHECK(ok + failed == 40);
+}
