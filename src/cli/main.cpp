@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 #include <new>
 
@@ -60,6 +61,17 @@ int run(const std::vector<std::string>& argv) {
   }
   sm::interp::RunSettings settings;
   settings.include_dirs = a.include_dirs;
+  {
+    // The stdlib compiled in is the source tree's; an installed binary finds
+    // its copy in <prefix>/share/stereomesh/stdlib instead.
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (!fs::is_directory(settings.stdlib_dir, ec)) {
+      const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+      const fs::path installed = exe.parent_path().parent_path() / "share" / "stereomesh" / "stdlib";
+      if (!ec && fs::is_directory(installed, ec)) settings.stdlib_dir = installed.string();
+    }
+  }
   settings.search_path = split_path_list(std::getenv("STEREOMESH_PATH"));
   if (a.test) {
     const int failed = sm::interp::run_script_tests(a.files, settings, std::cout);
