@@ -109,6 +109,47 @@ std::vector<int> Model::tags(int dim) const {
   return out;
 }
 
+BoundingBox Model::curve_bounding_box(int tag) const {
+  BoundingBox b;
+  const ModelCurve* c = curve(std::abs(tag));
+  if (!c) return b;
+  const int n = 16 * c->shape->pieces();
+  for (int i = 0; i <= n; ++i) b.add(c->shape->point(static_cast<double>(i) / n));
+  return b;
+}
+
+BoundingBox Model::surface_bounding_box(int tag) const {
+  BoundingBox b;
+  const ModelSurface* s = surface(tag);
+  if (!s) return b;
+  for (int l : s->loops)
+    for (int c : loops_.at(std::abs(l)).curves) {
+      const BoundingBox cb = curve_bounding_box(c);
+      if (!cb.empty()) {
+        b.add(cb.lo);
+        b.add(cb.hi);
+      }
+    }
+  return b;
+}
+
+std::vector<int> Model::in_bounding_box(int dim, Vec3 lo, Vec3 hi) const {
+  auto inside = [&](Vec3 p) {
+    return p.x >= lo.x && p.y >= lo.y && p.z >= lo.z && p.x <= hi.x && p.y <= hi.y && p.z <= hi.z;
+  };
+  std::vector<int> out;
+  if (dim == 0) {
+    for (const auto& [t, v] : vertices_)
+      if (inside(v.xyz)) out.push_back(t);
+  } else if (dim == 1 || dim == 2) {
+    for (int t : tags(dim)) {
+      const BoundingBox b = dim == 1 ? curve_bounding_box(t) : surface_bounding_box(t);
+      if (!b.empty() && inside(b.lo) && inside(b.hi)) out.push_back(t);
+    }
+  }
+  return out;
+}
+
 std::vector<int> Model::loop_tags() const {
   std::vector<int> out;
   for (const auto& kv : loops_) out.push_back(kv.first);

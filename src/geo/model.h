@@ -156,6 +156,13 @@ class Model {
   /// "Boundary{...}" (combined = false) / "CombinedBoundary{...}" (shared entities cancel).
   GeoResult<std::vector<DimTag>> boundary(const std::vector<DimTag>& entities, bool combined) const;
   std::vector<int> tags(int dim) const;   // "Point{:}", "Curve{:}", "Surface{:}"
+  /// "Point|Curve|Surface In BoundingBox{xmin, ymin, zmin, xmax, ymax, zmax}": entities
+  /// whose bounding box lies inside (bounds included).
+  std::vector<int> in_bounding_box(int dim, Vec3 lo, Vec3 hi) const;
+  /// Bounding box of a curve (sampled 16 times per polynomial piece) or of a surface's
+  /// boundary curves; empty for unknown tags.
+  BoundingBox curve_bounding_box(int tag) const;
+  BoundingBox surface_bounding_box(int tag) const;
   std::vector<int> loop_tags() const;
   BoundingBox bounding_box() const;
 

@@ -401,3 +401,24 @@ TEST_CASE("Split Curve: Gmsh's pieces and tags (sp.geo)") {
   CHECK(m.split_curve(5, {6}).error().kind == GeoErrorKind::BadArgument);
   CHECK(m.split_curve(1, {2}).error().kind == GeoErrorKind::MissingEntity);
 }
+
+TEST_CASE("In BoundingBox queries (Gmsh's bb.geo)") {
+  Model m;
+  const Vec3 p[] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 1.3, 0}};
+  for (int i = 0; i < 5; ++i) REQUIRE(m.add_point(i + 1, p[i]));
+  REQUIRE(m.add_curve(1, CurveKind::Line, {1, 2}));
+  REQUIRE(m.add_curve(2, CurveKind::Line, {2, 3}));
+  REQUIRE(m.add_curve(3, CurveKind::Circle, {3, 4, 1}));
+  REQUIRE(m.add_curve(4, CurveKind::Line, {4, 1}));
+  const Vec3 lo{-0.1, -0.1, -0.1};
+  CHECK(m.in_bounding_box(0, lo, {1.1, 1.1, 0.1}) == std::vector<int>{1, 2, 3, 4});    // Gmsh: pts 1 2 3 4
+  CHECK(m.in_bounding_box(1, lo, {1.1, 1.05, 0.1}) == std::vector<int>{1, 2, 3, 4});   // Gmsh: curves2
+  REQUIRE(m.add_curve(5, CurveKind::Spline, {1, 5, 3}));
+  CHECK(m.in_bounding_box(1, lo, {1.1, 1.1, 0.1}) == std::vector<int>{1, 2, 3, 4});    // Gmsh: curves3
+  CHECK(m.in_bounding_box(1, lo, {1.1, 1.35, 0.1}) == std::vector<int>{1, 2, 3, 4, 5}); // Gmsh: curves4
+  REQUIRE(m.add_curve_loop(1, {1, 2, 3}));
+  REQUIRE(m.add_plane_surface(1, {1}));
+  CHECK(m.in_bounding_box(2, lo, {1.1, 1.1, 0.1}) == std::vector<int>{1});
+  CHECK(m.in_bounding_box(2, lo, {0.9, 1.1, 0.1}).empty());
+  CHECK(m.curve_bounding_box(99).empty());
+}

@@ -1,0 +1,13 @@
+Point(1)={0,0,0}; Point(2)={1,0,0}; Point(3)={1,1,0}; Point(4)={0,1,0}; Point(5)={0.5,1.3,0};
+Line(1)={1,2}; Line(2)={2,3}; Circle(3)={3,4,1}; Line(4)={4,1};
+a[] = Point In BoundingBox{-0.1,-0.1,-0.1,1.1,1.1,0.1};
+Printf("pts", a[]);
+b[] = Curve In BoundingBox{-0.1,-0.1,-0.1,1.1,1.1,0.1};
+Printf("curves", b[]);
+c[] = Curve In BoundingBox{-0.1,-0.1,-0.1,1.1,1.05,0.1};
+Printf("curves2", c[]);
+Spline(5)={1,5,3};
+d[] = Curve In BoundingBox{-0.1,-0.1,-0.1,1.1,1.1,0.1};
+Printf("curves3", d[]);
+e[] = Curve In BoundingBox{-0.1,-0.1,-0.1,1.1,1.35,0.1};
+Printf("curves4", e[]);
