@@ -17,9 +17,13 @@ namespace {
 
 geo::LonLat uv_to_lonlat(Vec2 uv) { return geo::PolarSphere({0, 0, 0}, 1.0).lonlat_from_param(uv); }
 
-// Index in `full` to insert on the segment leaving keep position k of curve c (the
-// middle of the gap), or -1 when the segment is already original.
-std::int64_t refine_index(const WorkCurve& c, std::uint32_t k) {
+// Full indices to put back on the segment leaving keep position k of curve c: the middle
+// of the gap (bisection keeps the coarsening where it can), or, after kBisectRounds
+// rounds, every original point of the gap (so the number of rounds stays small). Empty
+// when the segment is already original.
+constexpr std::size_t kBisectRounds = 4;
+void refine_indices(const WorkCurve& c, std::uint32_t k, std::size_t round, std::vector<std::uint32_t>& out) {
+  out.clear();
   const std::size_t n = c.full.size();
   std::size_t a = c.keep[k], b;
   if (k + 1 < c.keep.size())
@@ -27,9 +31,13 @@ std::int64_t refine_index(const WorkCurve& c, std::uint32_t k) {
   else if (c.periodic)
     b = n + c.keep[0];
   else
-    return -1;
-  if (b - a < 2) return -1;
-  return static_cast<std::int64_t>(((a + b) / 2) % n);
+    return;
+  if (b - a < 2) return;
+  if (round < kBisectRounds) {
+    out.push_back(static_cast<std::uint32_t>(((a + b) / 2) % n));
+    return;
+  }
+  for (std::size_t i = a + 1; i < b; ++i) out.push_back(static_cast<std::uint32_t>(i % n));
 }
 
 // Segment s of a loop polygon starts at refs[s]; which curve/keep position owns it.
@@ -129,15 +137,14 @@ Result<std::size_t> repair_loops(std::vector<WorkCurve>& curves, std::vector<Wor
     // 1. Put original points back on every offending segment that has some.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> inserts;   // (curve, full index)
     std::vector<const SegmentHit*> stuck;
+    std::vector<std::uint32_t> idx;
     for (const SegmentHit& h : hits) {
       bool any = false;
       for (const auto& [l, s] : {std::pair{h.loop_a, h.seg_a}, std::pair{h.loop_b, h.seg_b}}) {
         const LoopVertexRef r = segment_owner(refs[l], s);
-        const std::int64_t idx = refine_index(curves[r.curve], r.k);
-        if (idx >= 0) {
-          inserts.push_back({r.curve, static_cast<std::uint32_t>(idx)});
-          any = true;
-        }
+        refine_indices(curves[r.curve], r.k, round, idx);
+        for (std::uint32_t i : idx) inserts.push_back({r.curve, i});
+        any |= !idx.empty();
       }
       if (!any) stuck.push_back(&h);
     }
@@ -173,17 +180,19 @@ Result<std::size_t> repair_loops(std::vector<WorkCurve>& curves, std::vector<Wor
     if (dropped) continue;
     // 3. A loop that meets itself on original data (a pinch or a twisted sliver, as in
     //    GSHHG's intermediate Baltic coast): cut out the shorter side.
+    // One cut per curve per round (a cut renumbers the curve's points).
     bool cut = false;
+    std::vector<char> cut_curve(curves.size(), 0);
     for (const SegmentHit* h : stuck) {
       if (h->loop_a != h->loop_b || loops[h->loop_a].dead) continue;
       const LoopVertexRef ra = refs[h->loop_a][h->seg_a], rb = refs[h->loop_b][h->seg_b];
-      if (ra.curve != rb.curve) continue;
+      if (ra.curve != rb.curve || cut_curve[ra.curve]) continue;
       WorkCurve& c = curves[ra.curve];
       const geo::LonLat where = uv_to_lonlat(h->where);
       if (cut_sliver(c, std::min(c.keep[ra.k], c.keep[rb.k]), std::max(c.keep[ra.k], c.keep[rb.k]))) {
         log.push_back({RepairKind::CutSliver, c.record, c.id, where, 0});
         cut = true;
-        break;   // polygons changed: search again
+        cut_curve[ra.curve] = 1;
       }
     }
     if (cut) continue;
