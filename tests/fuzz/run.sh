@@ -6,7 +6,8 @@
 #   tests/fuzz/run.sh --no-build SECONDS BIN  run an already built fuzz_geo (CTest fuzz_smoke)
 #
 # The seed corpus (tests/fuzz/corpus, tests/fuzz/crashes, tests/scripts, examples) is copied to a
-# scratch directory, so the repository is never modified. Exit status: 0 no crash; 1 the fuzzer
+# scratch directory, so the repository is never modified. Set SM_FUZZ_CORPUS=DIR to keep the
+# grown corpus in DIR between runs. Exit status: 0 no crash; 1 the fuzzer
 # found a crash, leak, timeout or invariant violation (the input is saved under
 # $SM_FUZZ_ARTIFACTS, default <build dir>/fuzz-artifacts/: add it to tests/fuzz/crashes/ with the
 # fix); 2 usage or build error.
@@ -41,19 +42,21 @@ fi
 scratch="$(mktemp -d "${TMPDIR:-/tmp}/sm-fuzz.XXXXXX")"
 trap 'rm -rf "$scratch"' EXIT
 mkdir -p "$scratch/corpus" "$scratch/work"
+corpus="$scratch/corpus"
+if [[ -n "${SM_FUZZ_CORPUS:-}" ]]; then mkdir -p "$SM_FUZZ_CORPUS"; corpus="$SM_FUZZ_CORPUS"; fi
 for d in "$here/corpus" "$here/crashes" "$root/tests/scripts" "$root/examples"; do
   [[ -d "$d" ]] || continue
   find "$d" -type f ! -name 'README*' ! -name '*.sh' ! -name '*.py' -size -64k -print0 |
-    while IFS= read -r -d '' f; do cp "$f" "$scratch/corpus/$(echo "$f" | md5sum | cut -c1-16)"; done
+    while IFS= read -r -d '' f; do cp "$f" "$corpus/seed-$(echo "$f" | md5sum | cut -c1-16)"; done
 done
 artifacts="${SM_FUZZ_ARTIFACTS:-$bdir/fuzz-artifacts}"
 mkdir -p "$artifacts"
 
-echo "run.sh: fuzzing for ${seconds}s with $(ls "$scratch/corpus" | wc -l) seeds; artifacts in $artifacts"
+echo "run.sh: fuzzing for ${seconds}s with $(ls "$corpus" | wc -l) inputs; artifacts in $artifacts"
 # Evaluated scripts may write files (Printf > f, Save): run inside the scratch dir.
 set +e
 (cd "$scratch/work" && "$bin" -max_total_time="$seconds" -timeout=25 -rss_limit_mb=2560 -max_len=8192 \
-   -dict="$here/geo.dict" -artifact_prefix="$artifacts/" -print_final_stats=1 "$scratch/corpus")
+   -dict="$here/geo.dict" -artifact_prefix="$artifacts/" -print_final_stats=1 "$corpus")
 status=$?
 set -e
 if [[ $status -ne 0 ]]; then
