@@ -60,6 +60,7 @@ Interpreter::Flow Interpreter::exec_for(const Stmt& st, const ForStmt& f) {
   if (has_var) symbols_.set_num(var, NumSymbol{{x}, false});
   if ((step > 0 && x > to) || (step < 0 && x < to)) return Flow::Normal;
   for (;;) {
+    count_statement(st.keyword);   // empty nested loops count too: no silent 1e12 iterations
     const Flow fl = exec_block(f.body);
     if (fl != Flow::Normal) return fl;
     x += step;

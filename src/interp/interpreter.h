@@ -82,6 +82,8 @@ class Interpreter {
   Flow exec(lang::StmtId s);
   Flow exec_block(const lang::StmtList& body);
 
+  /// Counts one executed statement or loop iteration against kMaxStatements.
+  void count_statement(lang::SourceRange r);
   [[noreturn]] void fail(lang::SourceRange range, lang::Diag kind, std::string message);
   template <class... Args>
   [[noreturn]] void fail_fmt(lang::SourceRange range, lang::Diag kind, const Args&... args) {
@@ -104,7 +106,6 @@ class Interpreter {
   Flow run_statements(const lang::StmtList& stmts);
   void report(const RuntimeError& e);
   std::vector<lang::DiagNote> frame_notes() const;
-  void count_statement(lang::SourceRange r);
 
   // expressions (eval_expr.cpp)
   Value eval_var(const lang::Expr& e, const lang::VarExpr& v);

@@ -11,8 +11,9 @@ namespace sm::interp {
 inline constexpr std::size_t kMaxListSize = 100'000'000;
 /// Longest string a script may build (StrCat, Sprintf, StrReplace...).
 inline constexpr std::size_t kMaxStringSize = 64u << 20;
-/// Statements executed by one run before it is stopped as a runaway loop.
-inline constexpr std::uint64_t kMaxStatements = 1'000'000'000;
+/// Statements and loop iterations executed by one run before it is stopped as a
+/// runaway loop (about 4 s of evaluation; real scripts stay far below).
+inline constexpr std::uint64_t kMaxStatements = 100'000'000;
 /// Nested Call/Include frames (recursive macros).
 inline constexpr std::size_t kMaxCallDepth = 200;
 /// Nested Include files.
