@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace sm::geo {
 
@@ -25,9 +26,11 @@ double gauss(const Curve& c, double a, double b) {
 
 double curve_length(const Curve& c, double t0, double t1, int refine) {
   if (t1 <= t0) return 0.0;
+  if (!(t0 == t0) || !(t1 == t1)) return std::numeric_limits<double>::quiet_NaN();
   const int n = c.pieces();
-  const int first = std::clamp(static_cast<int>(std::floor(t0 * n)), 0, n - 1);
-  const int last = std::clamp(static_cast<int>(std::ceil(t1 * n)), 1, n);
+  // Clamp in double before converting (t far outside [0,1] must not overflow the int).
+  const int first = static_cast<int>(std::clamp(std::floor(t0 * n), 0.0, static_cast<double>(n - 1)));
+  const int last = static_cast<int>(std::clamp(std::ceil(t1 * n), 1.0, static_cast<double>(n)));
   const int sub = std::max(1, refine);
   double total = 0;
   for (int i = first; i < last; ++i) {

@@ -28,9 +28,10 @@ struct UniformSpan {
 
 inline UniformSpan uniform_span(double t, int n) {
   const double x = t * static_cast<double>(n);
-  int i = x >= 0 ? static_cast<int>(x) : -1;
-  if (i >= n) i = n - 1;
-  if (i < 0) i = 0;
+  // Compare in double before converting: a huge or NaN t must not overflow the int.
+  int i = 0;
+  if (x >= static_cast<double>(n)) i = n - 1;
+  else if (x >= 0) i = static_cast<int>(x);
   const double t1 = static_cast<double>(i) / static_cast<double>(n);
   const double t2 = static_cast<double>(i + 1) / static_cast<double>(n);
   return {i, (t - t1) / (t2 - t1)};

@@ -291,3 +291,18 @@ TEST_CASE("curves vs Gmsh 4.8.4: half circles turn +pi about the normal (default
     CHECK(norm(curve->point(1.0) - c.end) < 1e-14);
   }
 }
+
+TEST_CASE("curves: parameters far outside [0,1] or NaN never overflow the piece index") {
+  CurveDef d;
+  d.kind = CurveKind::BSpline;
+  for (int i = 0; i < 30; ++i) d.xyz.push_back({double(i), 0.5 * i, 0});
+  const Curve c = *Curve::make(d);
+  for (double t : {1e300, -1e300, 1e18, -7.5, 3.0}) CHECK(std::isfinite(c.point(t).x) == (std::abs(t) < 1e100));
+  CHECK(std::isnan(c.point(std::nan("")).x));
+  d.xyz.push_back(d.xyz.front());
+  d.periodic = true;
+  d.kind = CurveKind::Spline;
+  const Curve s = *Curve::make(d);
+  CHECK(std::isfinite(s.point(-1e9).x));
+  CHECK(std::isfinite(s.point(1e9).y));
+}
