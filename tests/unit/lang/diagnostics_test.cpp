@@ -75,3 +75,42 @@ TEST_CASE("diagnostics: files are loaded with errors as strings") {
   CHECK(r.error.find("is a directory") != std::string::npos);
   CHECK(diag_from_kebab("expected-semicolon") == Diag::ExpectedSemicolon);
 }
+
+TEST_CASE("diagnostics: caret alignment after UTF-8 and control bytes; multi-line ranges") {
+  SourceManager sm;
+  const FileId f = sm.add_buffer("u.geo", "s = \"\xc3\xa9t\xc3\xa9\" @;\nx = {1,\n 2};\n").file;
+  Diagnostics diags(sm);
+  diags.report(SourceRange{f, 12, 13}, Diag::UnexpectedCharacter, "@");
+  diags.report(SourceRange{f, 19, 28}, Diag::ExpectedSemicolon);  // from '{' on line 2 into line 3
+  CHECK(diags.render_all() ==
+        "u.geo:1:13: error: unexpected character '@' [unexpected-character]\n"
+        "    1 | s = \"\xc3\xa9t\xc3\xa9\" @;\n"
+        "      |           ^\n"
+        "u.geo:2:5: error: expected ';' after statement [expected-semicolon]\n"
+        "    2 | x = {1,\n"
+        "      |     ^~~\n");
+  Diagnostics d2(sm);
+  const FileId g = sm.add_buffer("c.geo", std::string("a\x01" "b = 1;", 8)).file;
+  d2.report(SourceRange{g, 4, 5}, Diag::ExpectedSemicolon).note(SourceRange{}, "no location");
+  CHECK(d2.render_all() ==
+        "c.geo:1:5: error: expected ';' after statement [expected-semicolon]\n"
+        "    1 | a?b = 1;\n"
+        "      |     ^\n"
+        "note: no location\n");
+}
+
+TEST_CASE("diagnostics: flush writes each diagnostic once") {
+  SourceManager sm;
+  const FileId f = sm.add_buffer("a.geo", "x").file;
+  Diagnostics diags(sm);
+  diags.report(SourceRange{f, 0, 1}, Diag::UnknownCommand, "x");
+  std::FILE* tmp = std::tmpfile();
+  REQUIRE(tmp);
+  CHECK(diags.flush(tmp) == 1);
+  CHECK(diags.flush(tmp) == 0);
+  diags.report(SourceRange{}, Diag::StatementAfterCall, "Include");
+  CHECK(diags.flush(tmp) == 1);
+  CHECK(diags.warning_count() == 1);
+  CHECK(std::ftell(tmp) > 0);
+  std::fclose(tmp);
+}

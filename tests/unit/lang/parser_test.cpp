@@ -194,3 +194,22 @@ TEST_CASE("parser: ONELAB forms (DefineNumber, labelled Choices)") {
   CHECK(ast_of("DefineConstant[ op = {0, Choices{0=\"None\", 1=\"Union\"}, Name \"Op\"} ];") ==
         "(define-constant (op 0 (Choices (list 0 1)) (Name \"Op\")))");
 }
+
+TEST_CASE("parser: several files share one Ast (Include at run time)") {
+  SourceManager sm;
+  Diagnostics diags(sm);
+  Ast ast;
+  const FileId main = sm.add_buffer("main.geo", "Include \"lib.geo\";\nCall Lib;\n").file;
+  const ParseResult r1 = parse_file(sm, main, ast, diags);
+  const std::size_t exprs_before = ast.expr_count();
+  const FileId lib = sm.add_buffer("lib.geo", "Macro Lib\n  x = 1;\nReturn\n").file;
+  const ParseResult r2 = parse_file(sm, lib, ast, diags);
+  CHECK(r1.ok);
+  CHECK(r2.ok);
+  CHECK(ast.expr_count() > exprs_before);
+  CHECK(dump(ast, r1.stmts) == "(include \"lib.geo\")\n(call-macro Lib)\n");
+  CHECK(dump(ast, r2.stmts) == "(macro Lib ((assign = x 1)))\n");
+  CHECK(ast.stmt(r2.stmts[0]).range.file == lib);
+  CHECK(ast.stmt(r1.stmts[0]).keyword.end - ast.stmt(r1.stmts[0]).keyword.begin == 7);
+  CHECK(ast.intern("Lib") == ast.find("Lib"));
+}
