@@ -192,6 +192,9 @@ class MathParser {
 
   int emit(MathExpr::Op op, int a, int b = 0) {
     if (is_unary(op) && is_const(a)) return constant(apply1(op, cval(a)));
+    // x^2 is x*x (what a compiler does with std::pow(x, 2)).
+    if (op == MathExpr::Op::Pow && !is_const(a) && is_const(b) && cval(b) == 2)
+      op = MathExpr::Op::Mul, b = a;
     if (!is_unary(op) && !is_variadic(op) && op >= MathExpr::Op::Add && op <= MathExpr::Op::Pow &&
         is_const(a) && is_const(b))
       return constant(apply2(op, cval(a), cval(b)));

@@ -32,6 +32,18 @@ TEST_CASE("knn: FLANN k-d tree equals brute force on random points") {
     CHECK(norm(pts[idx[i]] - q[i]) == doctest::Approx(bd[i]).epsilon(1e-12));
   }
   CHECK(d[0] == 0);
+  // FLANN's plain per-query search and the Morton-ordered, bounded one agree.
+  KdTree plain(pts, {10, 0, false});
+  std::vector<double> pd(q.size());
+  plain.nearest(q, pd);
+  for (std::size_t i = 0; i < q.size(); ++i) CHECK(pd[i] == d[i]);
+  // A (1+eps)-approximate tree stays within its bound.
+  KdTree approx(pts, {10, 0.25f, true});
+  approx.nearest(q, pd);
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    CHECK(pd[i] >= bd[i] * (1 - 1e-12));
+    CHECK(pd[i] <= bd[i] * 1.25 + 1e-12);
+  }
 }
 
 TEST_CASE("knn: real coastline samples on the unit sphere (world_c) against brute force") {
@@ -50,12 +62,20 @@ TEST_CASE("knn: real coastline samples on the unit sphere (world_c) against brut
   KdTree tree(pts);
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> lon(-180, 180), z(-1, 1);
-  std::vector<Vec3> q(400);
+  // Dense enough that Morton groups of queries far from the coast share
+  // candidate lists (the grouped path of KdTree::nearest).
+  std::vector<Vec3> q(20000);
   for (Vec3& p : q) p = point_of(lon(rng), std::asin(z(rng)) * 180 / 3.141592653589793, 1);
   std::vector<double> d(q.size()), bd(q.size());
-  tree.nearest(q, d);
+  std::vector<std::uint32_t> idx(q.size());
+  tree.nearest(q, d, idx);
   nearest_brute_force(pts, q, bd);
-  for (std::size_t i = 0; i < q.size(); ++i) CHECK(d[i] == doctest::Approx(bd[i]).epsilon(1e-12));
+  std::size_t bad = 0;
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    if (d[i] != doctest::Approx(bd[i]).epsilon(1e-12)) ++bad;
+    if (norm(pts[idx[i]] - q[i]) != doctest::Approx(bd[i]).epsilon(1e-12)) ++bad;
+  }
+  CHECK(bad == 0);
 }
 
 TEST_CASE("knn: empty tree gives no constraint") {

@@ -89,6 +89,7 @@ TEST_CASE("math expr: F<n> references, 'Fabs' is a function") {
 TEST_CASE("math expr: constant subtrees are folded") {
   CHECK(MathExpr::compile("2 * Pi * 3 + sqrt(4)").size() == 0);
   CHECK(MathExpr::compile("x * (2 + 3)").size() == 2);  // load x, multiply
+  CHECK(ev("x^2 + (x+1)^2", {3, 0, 0}) == 25);
 }
 
 TEST_CASE("math expr: errors carry the column") {
