@@ -22,6 +22,11 @@ bool exec_mesh_command(Interpreter& in, lang::StmtId s, std::string_view command
 /// Mesh-side statements without a command word: Plugin, View, Color, Coherence Mesh.
 void exec_mesh_stmt(Interpreter& in, lang::StmtId s);
 
+/// Evaluates the expressions of a statement the kernel cannot run yet, so
+/// that mistakes in them (unknown variables, division by zero...) are
+/// reported now; parts that need the model themselves are skipped.
+void check_stmt_exprs(Interpreter& in, lang::StmtId s);
+
 /// newp, newl, newc, newll, news, newsl, newv, newreg, newf.
 double new_tag_constant(Interpreter& in, lang::Constant c);
 /// Entity queries, transforms, Boundary{}, Coastline{}: expressions needing the model.

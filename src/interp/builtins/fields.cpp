@@ -10,6 +10,7 @@ using namespace sm::lang;
 
 void exec_field_stmt(Interpreter& in, StmtId id) {
   const Stmt& s = in.ast().stmt(id);
+  check_stmt_exprs(in, id);
   switch (s.kind()) {
     case StmtKind::FieldNew: in.not_supported_stmt(id, "Field[] ="); break;
     case StmtKind::FieldOption: in.not_supported_stmt(id, "Field[].Option ="); break;

@@ -34,6 +34,78 @@ std::string stmt_name(Interpreter& in, StmtId id) {
 
 }  // namespace
 
+void check_stmt_exprs(Interpreter& in, StmtId id) {
+  const Stmt& s = in.ast().stmt(id);
+  auto check = [&](ExprId e) {
+    if (!e.valid()) return;
+    try {
+      in.eval(e);
+    } catch (const RuntimeError& err) {
+      if (err.kind != Diag::NotSupportedYet) throw;   // a model query: its value must wait
+    }
+  };
+  std::visit(
+      [&](const auto& n) {
+        using T = std::decay_t<decltype(n)>;
+        if constexpr (std::is_same_v<T, PointStmt>) {
+          check(n.tag), check(n.coords);
+        } else if constexpr (std::is_same_v<T, CurveStmt>) {
+          check(n.tag), check(n.points), check(n.plane), check(n.knots), check(n.order), check(n.using_n);
+        } else if constexpr (std::is_same_v<T, CurveLoopStmt>) {
+          check(n.tag), check(n.curves);
+        } else if constexpr (std::is_same_v<T, SurfaceStmt>) {
+          check(n.tag), check(n.loops), check(n.in_sphere);
+        } else if constexpr (std::is_same_v<T, SurfaceLoopStmt>) {
+          check(n.tag), check(n.surfaces);
+        } else if constexpr (std::is_same_v<T, VolumeStmt>) {
+          check(n.tag), check(n.loops);
+        } else if constexpr (std::is_same_v<T, SphereStmt>) {
+          check(n.tag), check(n.points);
+        } else if constexpr (std::is_same_v<T, ParametricSurfaceStmt>) {
+          check(n.tag), check(n.fx), check(n.fy), check(n.fz);
+        } else if constexpr (std::is_same_v<T, CoordinatesSurfaceStmt>) {
+          check(n.geometry);
+        } else if constexpr (std::is_same_v<T, PhysicalStmt>) {
+          check(n.tag), check(n.name), check(n.entities);
+        } else if constexpr (std::is_same_v<T, CoherenceStmt>) {
+          check(n.points);
+        } else if constexpr (std::is_same_v<T, SplitCurveStmt>) {
+          check(n.curve), check(n.points);
+        } else if constexpr (std::is_same_v<T, EmbedStmt>) {
+          check(n.tags), check(n.target_tag);
+        } else if constexpr (std::is_same_v<T, MeshSizeStmt>) {
+          check(n.points), check(n.size);
+        } else if constexpr (std::is_same_v<T, TransfiniteCurveStmt>) {
+          check(n.curves), check(n.nodes), check(n.coef);
+        } else if constexpr (std::is_same_v<T, TransfiniteSurfaceStmt>) {
+          check(n.surfaces), check(n.corners);
+        } else if constexpr (std::is_same_v<T, RecombineStmt>) {
+          check(n.tags), check(n.angle);
+        } else if constexpr (std::is_same_v<T, EntitySettingStmt>) {
+          check(n.tags), check(n.value);
+        } else if constexpr (std::is_same_v<T, PeriodicStmt>) {
+          check(n.slaves), check(n.masters);
+          for (ExprId e : n.translate) check(e);
+        } else if constexpr (std::is_same_v<T, ReverseMeshStmt> || std::is_same_v<T, CompoundStmt>) {
+          check(n.tags);
+        } else if constexpr (std::is_same_v<T, FieldNewStmt> || std::is_same_v<T, FieldActionStmt> ||
+                             std::is_same_v<T, DeleteFieldStmt>) {
+          check(n.id);
+        } else if constexpr (std::is_same_v<T, FieldOptionStmt>) {
+          check(n.id), check(n.value);
+        } else if constexpr (std::is_same_v<T, BackgroundFieldStmt>) {
+          check(n.value);
+        } else if constexpr (std::is_same_v<T, SetMaxTagStmt>) {
+          check(n.tag);
+        } else if constexpr (std::is_same_v<T, CommandStmt>) {
+          check(n.arg);
+        } else if constexpr (std::is_same_v<T, PluginStmt>) {
+          check(n.value);
+        }
+      },
+      s.node);
+}
+
 void dispatch_model_stmt(Interpreter& in, StmtId id) {
   const Stmt& s = in.ast().stmt(id);
   switch (s.kind()) {
@@ -64,6 +136,7 @@ void dispatch_model_stmt(Interpreter& in, StmtId id) {
     default:
       break;
   }
+  check_stmt_exprs(in, id);
   in.not_supported_stmt(id, stmt_name(in, id));
 }
 

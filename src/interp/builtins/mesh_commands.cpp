@@ -17,6 +17,7 @@ bool exec_mesh_command(Interpreter& in, StmtId id, std::string_view command) {
       "RenumberMeshElements", "SyncModel", "BoundingBox", "Coherence"};
   for (std::string_view k : kKnown) {
     if (k == command) {
+      check_stmt_exprs(in, id);
       in.not_supported_stmt(id, command);
       return true;
     }
@@ -26,6 +27,7 @@ bool exec_mesh_command(Interpreter& in, StmtId id, std::string_view command) {
 
 void exec_mesh_stmt(Interpreter& in, StmtId id) {
   const Stmt& s = in.ast().stmt(id);
+  check_stmt_exprs(in, id);
   switch (s.kind()) {
     case StmtKind::Plugin: in.not_supported_stmt(id, "Plugin"); break;
     case StmtKind::View: in.not_supported_stmt(id, "View"); break;
