@@ -14,7 +14,13 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <cstdlib>
+#include <new>
 #include <utility>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 namespace sm {
 namespace {
@@ -78,6 +84,31 @@ void radix_sort_keys(std::vector<std::uint64_t>& v, int key_bits) {
   }
 }
 
+// Allocator for the big working arrays: 2 MiB aligned and, on Linux,
+// advised to use transparent huge pages. The cavity search and the walk jump
+// between triangles across tens of MiB; with 4 KiB pages nearly every such
+// jump is also a TLB miss (and the first touch of each page a fault).
+template <class T>
+struct HugeAlloc {
+  using value_type = T;
+  HugeAlloc() = default;
+  template <class U>
+  HugeAlloc(const HugeAlloc<U>&) {}
+  T* allocate(std::size_t n) {
+    constexpr std::size_t kHuge = std::size_t{2} << 20;
+    const std::size_t bytes = (n * sizeof(T) + kHuge - 1) / kHuge * kHuge;
+    void* p = std::aligned_alloc(kHuge, bytes);
+    if (!p) throw std::bad_alloc();
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    madvise(p, bytes, MADV_HUGEPAGE);
+#endif
+    return static_cast<T*>(p);
+  }
+  void deallocate(T* p, std::size_t) { std::free(p); }
+  template <class U>
+  friend bool operator==(const HugeAlloc&, const HugeAlloc<U>&) { return true; }
+};
+
 // Working triangle: corners (kGhost allowed), neighbour sides and the
 // cavity stamp in one half cache line, so a conflict test or a walk step
 // touches one line. Sides are numbered 4t + e here (shifts, no division by
@@ -120,9 +151,9 @@ class Builder {
   // Vertices are renumbered by insertion rank so that consecutive insertions
   // touch neighbouring memory: pts_[k] = m.xy[orig_[k]]. Ties are still
   // broken by the original ids, so the result does not depend on the order.
-  std::vector<Vec2> pts_;
+  std::vector<Vec2, HugeAlloc<Vec2>> pts_;
   std::vector<std::uint32_t> orig_;
-  std::vector<Tri> tri_;
+  std::vector<Tri, HugeAlloc<Tri>> tri_;
   std::uint32_t stamp_now_ = 0;
   std::uint32_t last_ = 0;  // a real triangle near the last insertion
   // Scratch, reused by every insertion.
@@ -233,11 +264,17 @@ void Builder::insert(std::uint32_t p, std::uint32_t t0) {
       link(cavity_[i] << 2 | 1, (b == kGhost ? ghost_tri : vmap_[b]) << 2 | 2);
     }
   }
-  for (std::size_t i = 0; i < k; ++i)
-    if (bound_[i].a != kGhost && bound_[i].b != kGhost) {
-      last_ = cavity_[i];
-      break;
-    }
+  // Start the next walk from the new triangle that faces the next point
+  // (points are numbered in insertion order). A heuristic with inexact
+  // arithmetic: it only picks where the exact walk starts.
+  const Vec2 pp = pos(p), dq = p + 1 < pts_.size() ? pos(p + 1) - pp : Vec2{};
+  double best = -1e300;
+  for (std::size_t i = 0; i < k; ++i) {
+    const Bound& bd = bound_[i];
+    if (bd.a == kGhost || bd.b == kGhost) continue;
+    const double score = dot(pos(bd.a) + pos(bd.b) - 2.0 * pp, dq);
+    if (score > best) best = score, last_ = cavity_[i];
+  }
 }
 
 void Builder::run() {
