@@ -30,6 +30,7 @@ std::vector<std::string> ImportReport::lines() const {
     switch (e.kind) {
       case RepairKind::Refined: what = "original points put back on a crossing segment"; break;
       case RepairKind::DroppedIsland: what = "island below the accuracy touching another coastline dropped"; break;
+      case RepairKind::UnitedIslands: what = "islands overlapping in the source united"; break;
       case RepairKind::CutSliver: what = "self-touching sliver of the source shoreline cut out"; break;
       case RepairKind::MergedIslands: what = "islands merged across a strait narrower than the accuracy"; break;
       case RepairKind::NarrowStrait: what = "strait narrower than the accuracy kept open"; break;

@@ -61,6 +61,7 @@ enum class RepairKind {
   Refined,        // original points put back on a segment that crossed another
   DroppedIsland,  // island below the accuracy that still touched another loop
   CutSliver,      // a loop meeting itself on the source data: its shorter side cut out
+  UnitedIslands,  // two islands overlapping in the source data: replaced by their union
   MergedIslands,  // two islands joined across a strait narrower than the accuracy
   NarrowStrait,   // a strait narrower than strait_factor * gamma, left open
   OutsideWater,   // island outside every outer loop (for instance inland in a region), dropped

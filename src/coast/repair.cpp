@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "coast/intersections.h"
+#include "coast/polygon2d.h"
 #include "mesh/predicates.h"
 
 namespace sm::coast {
@@ -87,6 +88,192 @@ bool cut_sliver(WorkCurve& c, std::uint32_t a1, std::uint32_t a2) {
   keep.erase(std::unique(keep.begin(), keep.end()), keep.end());
   c.keep = std::move(keep);
   return c.keep.size() >= 3 || !c.periodic;
+}
+
+// Unites two islands whose source outlines cross (properly, at 2k points): the boundary of
+// the union of the two land polygons (both counter-clockwise, land inside). Walking from a
+// crossing where A leaves B: A up to the next crossing along A, then B up to the next
+// crossing along B, and so on. Every hit must be a proper crossing between original
+// segments and the walk must visit every crossing (a single outline); else false.
+bool unite_islands(std::vector<WorkCurve>& curves, WorkLoop& la, WorkLoop& lb, const std::vector<Vec2>& pa,
+                   const std::vector<LoopVertexRef>& ra, const std::vector<Vec2>& pb,
+                   const std::vector<LoopVertexRef>& rb, const std::vector<const SegmentHit*>& hits, bool a_first) {
+  WorkCurve& A = curves[la.curves[0]];
+  const WorkCurve& B = curves[lb.curves[0]];
+  if (ring_orientation(pa) != Sign::Positive || ring_orientation(pb) != Sign::Positive) return false;
+  struct X {
+    std::size_t ia, ib;   // full index starting the crossed original segment of A, of B
+    double ta, tb;        // position along those segments
+    Vec2 p;
+    bool a_exits;         // A leaves B's land here
+  };
+  std::vector<X> xs;
+  for (const SegmentHit* h : hits) {
+    if (h->kind != HitKind::Cross) return false;
+    const std::uint32_t sa = a_first ? h->seg_a : h->seg_b, sb = a_first ? h->seg_b : h->seg_a;
+    const Vec2 a0 = pa[sa], a1 = pa[(sa + 1) % pa.size()], b0 = pb[sb], b1 = pb[(sb + 1) % pb.size()];
+    const std::size_t ia = A.keep[ra[sa].k], ib = B.keep[rb[sb].k];
+    if ((ia + 1) % A.full.size() != A.keep[(ra[sa].k + 1) % A.keep.size()]) return false;   // not original
+    if ((ib + 1) % B.full.size() != B.keep[(rb[sb].k + 1) % B.keep.size()]) return false;
+    const Vec2 r = a1 - a0, q = b1 - b0;
+    const double den = cross(r, q);
+    if (den == 0) return false;
+    X x;
+    x.ia = ia;
+    x.ib = ib;
+    x.ta = cross(b0 - a0, q) / den;
+    x.tb = cross(b0 - a0, r) / den;
+    x.p = a0 + x.ta * r;
+    x.a_exits = orient2d(b0, b1, a1) == Sign::Negative;
+    xs.push_back(x);
+  }
+  const std::size_t m = xs.size();
+  if (m < 2 || m % 2) return false;
+  std::vector<std::size_t> by_a(m), by_b(m), pos_a(m), pos_b(m);
+  for (std::size_t i = 0; i < m; ++i) by_a[i] = by_b[i] = i;
+  std::sort(by_a.begin(), by_a.end(), [&](std::size_t i, std::size_t j) { return std::tie(xs[i].ia, xs[i].ta) < std::tie(xs[j].ia, xs[j].ta); });
+  std::sort(by_b.begin(), by_b.end(), [&](std::size_t i, std::size_t j) { return std::tie(xs[i].ib, xs[i].tb) < std::tie(xs[j].ib, xs[j].tb); });
+  for (std::size_t i = 0; i < m; ++i) pos_a[by_a[i]] = i, pos_b[by_b[i]] = i;
+  std::size_t start = m;
+  for (std::size_t i = 0; i < m && start == m; ++i)
+    if (xs[by_a[i]].a_exits) start = by_a[i];
+  if (start == m) return false;
+  std::vector<char> kept_a(A.full.size(), 0), kept_b(B.full.size(), 0);
+  for (auto i : A.keep) kept_a[i] = 1;
+  for (auto i : B.keep) kept_b[i] = 1;
+  WorkCurve M;
+  M.periodic = true;
+  M.record = A.record;
+  M.id = A.id;
+  auto add = [&M](geo::LonLat ll, Vec2 uv, double g, bool keep) {
+    if (keep) M.keep.push_back(static_cast<std::uint32_t>(M.full.size()));
+    M.full.push_back(ll);
+    M.uv.push_back(uv);
+    M.gamma.push_back(g);
+  };
+  // Original points strictly after crossing `from` up to the segment start of `to`.
+  auto run = [&](const WorkCurve& c, const std::vector<char>& kept, std::size_t i_from, double t_from, std::size_t i_to,
+                 double t_to) {
+    const std::size_t n = c.full.size();
+    std::size_t count = (i_to + n - i_from) % n;
+    if (count == 0 && t_to <= t_from) count = n;
+    for (std::size_t s = 1; s <= count; ++s) {
+      const std::size_t i = (i_from + s) % n;
+      add(c.full[i], c.uv[i], c.gamma[i], kept[i] != 0);
+    }
+  };
+  std::vector<char> seen(m, 0);
+  std::size_t x = start;
+  bool on_a = true;
+  for (std::size_t guard = 0; guard <= 2 * m; ++guard) {
+    if (on_a && seen[x]) break;
+    const X& cx = xs[x];
+    const double g = std::min(A.gamma[cx.ia], B.gamma[cx.ib]);
+    if (on_a) {
+      seen[x] = 1;
+      add(geo::PolarSphere({0, 0, 0}, 1.0).lonlat_from_param(cx.p), cx.p, g, true);
+      const std::size_t nx = by_a[(pos_a[x] + 1) % m];
+      if (xs[nx].a_exits) return false;   // must enter B next
+      run(A, kept_a, cx.ia, cx.ta, xs[nx].ia, xs[nx].ta);
+      x = nx;
+      on_a = false;
+    } else {
+      seen[x] = 1;
+      add(geo::PolarSphere({0, 0, 0}, 1.0).lonlat_from_param(cx.p), cx.p, g, true);
+      const std::size_t nx = by_b[(pos_b[x] + 1) % m];
+      run(B, kept_b, cx.ib, cx.tb, xs[nx].ib, xs[nx].tb);
+      x = nx;
+      on_a = true;
+    }
+  }
+  if (std::count(seen.begin(), seen.end(), 1) != static_cast<long>(m) || M.keep.size() < 3) return false;
+  A = std::move(M);
+  lb.dead = true;
+  return true;
+}
+
+// An island A whose source outline crosses a cut coastline piece c of a water loop W
+// (regional data: an islet overlapping the mainland) at exactly two places: the part of
+// c between the crossings, which runs under the island, is replaced by the island's arc
+// that lies in the water, so the island becomes part of the mainland.
+bool unite_island_with_coast(std::vector<WorkCurve>& curves, WorkLoop& island, const std::vector<Vec2>& pa,
+                             const std::vector<LoopVertexRef>& ra, const std::vector<Vec2>& pw,
+                             const std::vector<LoopVertexRef>& rw, const std::vector<const SegmentHit*>& hits,
+                             bool island_first) {
+  if (hits.size() != 2) return false;
+  WorkCurve& A = curves[island.curves[0]];
+  struct X {
+    std::size_t ia, ic;
+    double ta, tc;
+    Vec2 p;
+  };
+  std::vector<X> xs;
+  std::uint32_t curve_c = 0xFFFFFFFFu;
+  for (const SegmentHit* h : hits) {
+    if (h->kind != HitKind::Cross) return false;
+    const std::uint32_t sa = island_first ? h->seg_a : h->seg_b, sw = island_first ? h->seg_b : h->seg_a;
+    const LoopVertexRef wa = ra[sa], ww = rw[sw];
+    if (curve_c != 0xFFFFFFFFu && ww.curve != curve_c) return false;
+    curve_c = ww.curve;
+    const WorkCurve& c = curves[ww.curve];
+    if (c.periodic || c.open_boundary || ww.k + 1 >= c.keep.size()) return false;
+    const std::size_t ia = A.keep[wa.k], ic = c.keep[ww.k];
+    if ((ia + 1) % A.full.size() != A.keep[(wa.k + 1) % A.keep.size()] || ic + 1 != c.keep[ww.k + 1]) return false;
+    const Vec2 a0 = pa[sa], a1 = pa[(sa + 1) % pa.size()], c0 = pw[sw], c1 = pw[(sw + 1) % pw.size()];
+    const Vec2 r = a1 - a0, q = c1 - c0;
+    const double den = cross(r, q);
+    if (den == 0) return false;
+    X x{ia, ic, cross(c0 - a0, q) / den, cross(c0 - a0, r) / den, {}};
+    x.p = a0 + x.ta * r;
+    xs.push_back(x);
+  }
+  if (std::tie(xs[1].ic, xs[1].tc) < std::tie(xs[0].ic, xs[0].tc)) std::swap(xs[0], xs[1]);
+  WorkCurve& c = curves[curve_c];
+  // c between the crossings must run inside the island.
+  const Vec2 probe = xs[0].ic == xs[1].ic ? 0.5 * (xs[0].p + xs[1].p) : c.uv[xs[0].ic + 1];
+  if (!point_in_ring(pa, probe)) return false;
+  // The island's arc in the water: forward or backward from the first crossing.
+  const std::size_t n = A.full.size();
+  std::vector<std::size_t> arc;
+  const bool forward = point_in_ring(pw, A.uv[(xs[0].ia + 1) % n]);
+  if (forward) {
+    for (std::size_t i = (xs[0].ia + 1) % n;; i = (i + 1) % n) {
+      arc.push_back(i);
+      if (i == xs[1].ia || arc.size() > n) break;
+    }
+  } else {
+    if (!point_in_ring(pw, A.uv[xs[0].ia])) return false;
+    for (std::size_t i = xs[0].ia;; i = (i + n - 1) % n) {
+      if (i == xs[1].ia) break;   // xs[1]'s segment starts here: its end is on the arc already
+      arc.push_back(i);
+      if (arc.size() > n) break;
+    }
+    arc.push_back((xs[1].ia + 1) % n);
+  }
+  if (arc.size() > n) return false;
+  std::vector<char> kept_c(c.full.size(), 0), kept_a(n, 0);
+  for (auto i : c.keep) kept_c[i] = 1;
+  for (auto i : A.keep) kept_a[i] = 1;
+  WorkCurve M = c;
+  M.full.clear();
+  M.uv.clear();
+  M.gamma.clear();
+  M.keep.clear();
+  auto add = [&M](geo::LonLat ll, Vec2 uv, double g, bool keep) {
+    if (keep) M.keep.push_back(static_cast<std::uint32_t>(M.full.size()));
+    M.full.push_back(ll);
+    M.uv.push_back(uv);
+    M.gamma.push_back(g);
+  };
+  const geo::PolarSphere ps({0, 0, 0}, 1.0);
+  for (std::size_t i = 0; i <= xs[0].ic; ++i) add(c.full[i], c.uv[i], c.gamma[i], kept_c[i] != 0);
+  add(ps.lonlat_from_param(xs[0].p), xs[0].p, c.gamma[xs[0].ic], true);
+  for (std::size_t i : arc) add(A.full[i], A.uv[i], A.gamma[i], true);
+  add(ps.lonlat_from_param(xs[1].p), xs[1].p, c.gamma[xs[1].ic], true);
+  for (std::size_t i = xs[1].ic + 1; i < c.full.size(); ++i) add(c.full[i], c.uv[i], c.gamma[i], kept_c[i] != 0);
+  c = std::move(M);
+  island.dead = true;
+  return true;
 }
 
 double mean_gamma(const WorkCurve& c) {
@@ -178,6 +365,52 @@ Result<std::size_t> repair_loops(std::vector<WorkCurve>& curves, std::vector<Wor
       }
     }
     if (dropped) continue;
+    // 2b. Two islands whose source outlines overlap: united into one.
+    bool united = false;
+    {
+      std::vector<const SegmentHit*> by_pair(stuck.begin(), stuck.end());
+      std::stable_sort(by_pair.begin(), by_pair.end(), [](const SegmentHit* x, const SegmentHit* y) {
+        return std::pair(x->loop_a, x->loop_b) < std::pair(y->loop_a, y->loop_b);
+      });
+      std::vector<char> used(loops.size(), 0);
+      for (std::size_t i = 0; i < by_pair.size();) {
+        const std::uint32_t a = by_pair[i]->loop_a, b = by_pair[i]->loop_b;
+        std::size_t j = i;
+        while (j < by_pair.size() && by_pair[j]->loop_a == a && by_pair[j]->loop_b == b) ++j;
+        const std::vector<const SegmentHit*> pair(by_pair.begin() + static_cast<long>(i),
+                                                  by_pair.begin() + static_cast<long>(j));
+        i = j;
+        if (a != b && !used[a] && !used[b] && !loops[a].dead && !loops[b].dead && loops[a].hole != loops[b].hole) {
+          const std::uint32_t isl = loops[a].hole ? a : b, water = loops[a].hole ? b : a;
+          const WorkLoop& il = loops[isl];
+          if (il.curves.size() == 1 && curves[il.curves[0]].periodic) {
+            const WorkCurve& ci = curves[il.curves[0]];
+            const std::size_t rec = ci.record;
+            const std::int64_t id = ci.id;
+            if (unite_island_with_coast(curves, loops[isl], polys[isl], refs[isl], polys[water], refs[water], pair,
+                                        isl == a)) {
+              used[a] = used[b] = 1;
+              united = true;
+              log.push_back({RepairKind::UnitedIslands, rec, id, uv_to_lonlat(pair.front()->where), 0});
+            }
+          }
+          continue;
+        }
+        if (a == b || used[a] || used[b] || loops[a].dead || loops[b].dead || !loops[a].hole || !loops[b].hole ||
+            loops[a].curves.size() != 1 || loops[b].curves.size() != 1 || !curves[loops[a].curves[0]].periodic ||
+            !curves[loops[b].curves[0]].periodic)
+          continue;
+        const WorkCurve& cb = curves[loops[b].curves[0]];
+        const std::size_t rec_b = cb.record;
+        const std::int64_t id_b = cb.id;
+        if (unite_islands(curves, loops[a], loops[b], polys[a], refs[a], polys[b], refs[b], pair, true)) {
+          used[a] = used[b] = 1;
+          united = true;
+          log.push_back({RepairKind::UnitedIslands, rec_b, id_b, uv_to_lonlat(pair.front()->where), 0});
+        }
+      }
+    }
+    if (united) continue;
     // 3. A loop that meets itself on original data (a pinch or a twisted sliver, as in
     //    GSHHG's intermediate Baltic coast): cut out the shorter side.
     // One cut per curve per round (a cut renumbers the curve's points).

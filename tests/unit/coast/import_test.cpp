@@ -189,3 +189,21 @@ TEST_CASE("import: Natural Earth land (dateline splits merged, Antarctica closed
   CHECK(m->report.clean.count(CleanAction::MergedRings) == 3);
   check_model(*m);
 }
+
+TEST_CASE("import: an islet overlapping the mainland in GSHHG high becomes part of it") {
+  // canadian_arctic_h.txt record 3255 (6 points, 107.68W 68.20N) crosses the cut mainland
+  // coast (record 13145) in the source itself; at 200 m both survive the coarsening.
+  ImportOptions o;
+  o.gamma = constant(200);
+  auto m = build_coast_model(load("canadian_arctic_h.txt"), o);
+  REQUIRE_MESSAGE(m.ok(), (m.ok() ? "" : m.error().to_string()));
+  bool found = false;
+  for (const auto& e : m->report.repair)
+    if (e.kind == RepairKind::UnitedIslands && e.record == 3255) {
+      found = true;
+      CHECK(e.where.lon == doctest::Approx(-107.68).epsilon(1e-3));
+      CHECK(e.where.lat == doctest::Approx(68.20).epsilon(1e-3));
+    }
+  CHECK(found);
+  check_model(*m);
+}
