@@ -1,0 +1,33 @@
+// Triangle quality and mesh statistics: rho = 2 r_in / r_circ (the paper's
+// aspect ratio, Gmsh's gamma), eta (mean ratio), and edge length over the
+// target size (median and 5-95% range).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+
+#include "base/vec.h"
+#include "mesh/triangulation.h"
+
+namespace sm {
+
+/// 2 r_in / r_circ: 1 for an equilateral triangle, 0 for a degenerate one.
+double rho(Vec2 a, Vec2 b, Vec2 c);
+/// Mean ratio 4 sqrt(3) area / (sum of squared edge lengths), in [0, 1].
+double eta(Vec2 a, Vec2 b, Vec2 c);
+/// Circumcentre and circumradius (inexact constructions).
+Vec2 circumcentre(Vec2 a, Vec2 b, Vec2 c);
+double circumradius(Vec2 a, Vec2 b, Vec2 c);
+
+struct QualityStats {
+  std::uint32_t nodes = 0, triangles = 0, edges = 0;
+  double min_rho = 0, mean_rho = 0, share_rho_09 = 0;  // share of triangles with rho > 0.9
+  double len_median = 0, len_p05 = 0, len_p95 = 0;     // edge length / target size
+  double share_len_07_14 = 0;                          // share of edges with ratio in [0.7, 1.4]
+};
+
+/// Statistics over the live triangles of m; `size` gives the target size at
+/// an edge midpoint (nullptr: ratios are plain lengths).
+QualityStats mesh_quality(const TriangleStore& m, const std::function<double(Vec2)>& size = nullptr);
+
+}  // namespace sm

@@ -1,0 +1,45 @@
+// Delaunay refinement (del2d, issue 7 / paper section 3.3) in a plane:
+// repeatedly insert the circumcentre of the triangle with the largest
+// circumradius over target size, reconnecting by Bowyer-Watson cavities that
+// never cross constrained edges, until every triangle is below the bound.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "mesh/predicates.h"
+#include "mesh/triangulation.h"
+
+namespace sm {
+
+struct RefineOptions {
+  double size = 0.1;                     // uniform target edge length
+  std::function<double(Vec2)> size_at;   // optional: size at a point (overrides `size`)
+  /// A triangle is refined while circumradius / size exceeds this. For an
+  /// equilateral triangle of side h, R / h = 1/sqrt(3) ~ 0.577.
+  double radius_limit = 0.7071067811865476;
+  std::uint32_t max_vertices = 0xFFFFFFF0u;
+  std::uint64_t seed = 0x2545F4914F6CDD1Dull;  // walk edge order
+};
+
+struct RefineStats {
+  std::uint64_t inserted = 0;
+  std::uint64_t rejected = 0;   // circumcentre outside the domain, on a constraint or not visible
+  std::uint64_t pops = 0, stale = 0, walk_steps = 0, cavity_triangles = 0;
+  PredicateStats predicates;
+};
+
+struct RefineResult {
+  std::string error;
+  RefineStats stats;
+  bool ok() const { return error.empty(); }
+};
+
+/// Refines a constrained Delaunay triangulation of the domain (outside
+/// triangles already removed, boundary edges kConstrained). Constrained
+/// edges are never split or crossed; circumcentres beyond them are skipped.
+/// Deterministic: the heap breaks priority ties by triangle id.
+RefineResult refine_del2d(TriangleStore& m, const RefineOptions& opt);
+
+}  // namespace sm

@@ -1,0 +1,78 @@
+// del2d on the unit square with uniform size h (default 0.002, ~660k
+// triangles), side by side with Gmsh 4.8.4's `-2 -algo del2d` on the same
+// geometry when gmsh is installed. Usage: bench_mesh_square [h] [--no-gmsh]
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <ctime>
+#include <fstream>
+#include <string>
+
+#include "../unit/mesh/testing_domains.h"
+#include "mesh/quality.h"
+#include "mesh/refine.h"
+
+namespace {
+
+double since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+double cpu_seconds() {
+  timespec ts;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  double h = 0.002;
+  bool run_gmsh = true;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--no-gmsh") == 0) run_gmsh = false;
+    else h = std::atof(argv[i]);
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  const double c0 = cpu_seconds();
+  sm::TriangleStore m;
+  const sm::Loop sq = sm::testing::polygon_loop(m, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, h, false);
+  if (!sm::testing::boundary_mesh(m, {sq})) return std::fprintf(stderr, "boundary mesh failed\n"), 1;
+  const double t_boundary = since(t0);
+  sm::RefineOptions opt;
+  opt.size = h;
+  const auto r = sm::refine_del2d(m, opt);
+  const double t_total = since(t0), c_total = cpu_seconds() - c0;
+  if (!r.ok()) return std::fprintf(stderr, "refine: %s\n", r.error.c_str()), 1;
+  const auto q = sm::mesh_quality(m, [&](sm::Vec2) { return h; });
+  std::printf("stereomesh del2d, unit square, h = %g\n", h);
+  std::printf("  %u nodes, %u triangles; boundary %.3f s, total %.3f s wall, %.3f s CPU\n", q.nodes, q.triangles,
+              t_boundary, t_total, c_total);
+  std::printf("  %.0f triangles/s (wall), %.0f triangles/s (CPU)\n", q.triangles / t_total, q.triangles / c_total);
+  std::printf("  rho: min %.3f mean %.3f, share > 0.9: %.2f%%; edge/h median %.3f, 5-95%% [%.3f, %.3f], in [0.7,1.4] %.2f%%\n",
+              q.min_rho, q.mean_rho, 100 * q.share_rho_09, q.len_median, q.len_p05, q.len_p95,
+              100 * q.share_len_07_14);
+  std::printf("  %llu insertions, %llu rejected, %llu heap pops (%llu stale), %.2f walk steps/insertion\n",
+              static_cast<unsigned long long>(r.stats.inserted), static_cast<unsigned long long>(r.stats.rejected),
+              static_cast<unsigned long long>(r.stats.pops), static_cast<unsigned long long>(r.stats.stale),
+              double(r.stats.walk_steps) / double(r.stats.inserted ? r.stats.inserted : 1));
+  if (!run_gmsh) return 0;
+  if (std::system("command -v gmsh >/dev/null 2>&1") != 0) {
+    std::printf("gmsh: not installed, column skipped\n");
+    return 0;
+  }
+  const std::string dir = "/tmp/stereomesh_bench_square";
+  std::system(("mkdir -p " + dir).c_str());
+  std::ofstream(dir + "/sq.geo") << "lc = " << h << ";\n"
+                                 << "Point(1) = {0, 0, 0, lc}; Point(2) = {1, 0, 0, lc};\n"
+                                 << "Point(3) = {1, 1, 0, lc}; Point(4) = {0, 1, 0, lc};\n"
+                                 << "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};\n"
+                                 << "Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};\n";
+  const auto g0 = std::chrono::steady_clock::now();
+  const int rc = std::system(("cd " + dir + " && gmsh sq.geo -2 -algo del2d -nt 1 -o sq.msh > gmsh.log 2>&1").c_str());
+  const double tg = since(g0);
+  std::printf("gmsh 4.8.4 -2 -algo del2d: %.3f s wall (exit %d); its summary:\n", tg, rc);
+  std::system(("grep -E 'Done meshing 2D|nodes .* elements' " + dir + "/gmsh.log | sed 's/^/  /'").c_str());
+  return 0;
+}

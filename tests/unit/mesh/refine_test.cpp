@@ -1,0 +1,92 @@
+// del2d refinement in the plane: valid constrained Delaunay mesh, boundary
+// kept, sizes and quality within bounds, deterministic.
+#include <doctest/doctest.h>
+
+#include "mesh/check.h"
+#include "mesh/quality.h"
+#include "mesh/refine.h"
+#include "testing_domains.h"
+
+using namespace sm;
+
+namespace {
+
+void check_refined(const TriangleStore& m, const std::vector<Edge>& edges) {
+  INFO(check_topology(m).error);
+  REQUIRE(check_topology(m).ok());
+  REQUIRE(check_constraints(m, edges).ok());
+  INFO(check_delaunay(m, PlanarGeometry{&m.xy}, true).error);
+  REQUIRE(check_delaunay(m, PlanarGeometry{&m.xy}, true).ok());
+}
+
+}  // namespace
+
+TEST_CASE("quality: rho and eta") {
+  CHECK(rho({0, 0}, {1, 0}, {0.5, std::sqrt(0.75)}) == doctest::Approx(1));
+  CHECK(eta({0, 0}, {1, 0}, {0.5, std::sqrt(0.75)}) == doctest::Approx(1));
+  CHECK(rho({0, 0}, {1, 0}, {0, 1}) == doctest::Approx(2 * (2 - std::sqrt(2.0)) / std::sqrt(2.0)));
+  CHECK(rho({0, 0}, {1, 0}, {2, 0}) == 0);
+  const Vec2 cc = circumcentre({0, 0}, {2, 0}, {0, 2});
+  CHECK(cc.x == doctest::Approx(1));
+  CHECK(cc.y == doctest::Approx(1));
+}
+
+TEST_CASE("refine: uniform unit square") {
+  const double h = 0.02;
+  TriangleStore m;
+  const Loop sq = testing::polygon_loop(m, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, h, false);
+  std::vector<Edge> edges;
+  REQUIRE(testing::boundary_mesh(m, {sq}, &edges));
+  RefineOptions opt;
+  opt.size = h;
+  const auto r = refine_del2d(m, opt);
+  REQUIRE(r.ok());
+  check_refined(m, edges);
+  const QualityStats q = mesh_quality(m, [&](Vec2) { return h; });
+  MESSAGE("square h=0.02: " << q.triangles << " triangles, min rho " << q.min_rho << ", mean " << q.mean_rho
+                            << ", rho>0.9 " << q.share_rho_09 << ", len median " << q.len_median << " [" << q.len_p05
+                            << ", " << q.len_p95 << "], in [0.7,1.4] " << q.share_len_07_14 << ", rejected "
+                            << r.stats.rejected);
+  double area = 0;
+  for (std::uint32_t t = 0; t < m.num_slots(); ++t)
+    if (m.alive(TriId{t})) {
+      const Vec2 a = m.pos(m.vertex(TriId{t}, 0)), b = m.pos(m.vertex(TriId{t}, 1)), c = m.pos(m.vertex(TriId{t}, 2));
+      area += 0.5 * cross(b - a, c - a);
+      // Every triangle below the radius bound.
+      CHECK(circumradius(a, b, c) <= opt.radius_limit * h * (1 + 1e-9));
+    }
+  CHECK(area == doctest::Approx(1.0));
+  CHECK(q.min_rho > 0.4);
+  CHECK(q.share_rho_09 > 0.6);  // 62% before smoothing; Gmsh del2d (with one smoothing pass) 84%
+  CHECK(q.share_len_07_14 > 0.9);
+  // Deterministic: the same mesh again.
+  TriangleStore m2;
+  const Loop sq2 = testing::polygon_loop(m2, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, h, false);
+  REQUIRE(testing::boundary_mesh(m2, {sq2}));
+  REQUIRE(refine_del2d(m2, opt).ok());
+  CHECK(m2.corner == m.corner);
+  CHECK(m2.xy == m.xy);
+}
+
+TEST_CASE("refine: square with circular holes and a graded size") {
+  TriangleStore m;
+  const Loop sq = testing::polygon_loop(m, {{0, 0}, {2, 0}, {2, 1}, {0, 1}}, 0.01, false);
+  const Loop h1 = testing::circle_loop(m, {0.5, 0.5}, 0.2, 0.01, true);
+  const Loop h2 = testing::circle_loop(m, {1.4, 0.45}, 0.25, 0.01, true);
+  std::vector<Edge> edges;
+  REQUIRE(testing::boundary_mesh(m, {sq, h1, h2}, &edges));
+  RefineOptions opt;
+  opt.size_at = [](Vec2 p) { return 0.01 + 0.05 * std::min(1.0, std::fabs(p.y - 0.5)); };
+  const auto r = refine_del2d(m, opt);
+  REQUIRE(r.ok());
+  check_refined(m, edges);
+  const QualityStats q = mesh_quality(m, opt.size_at);
+  MESSAGE("holes, graded: " << q.triangles << " triangles, min rho " << q.min_rho << ", rho>0.9 " << q.share_rho_09
+                            << ", len in [0.7,1.4] " << q.share_len_07_14);
+  CHECK(q.min_rho > 0.2);
+  CHECK(r.stats.inserted > 1000);
+  // No vertex inside a hole.
+  for (std::uint32_t v = 0; v < m.num_vertices(); ++v) {
+    CHECK(norm(m.xy[v] - Vec2{0.5, 0.5}) >= 0.2 * (1 - 1e-12) * std::cos(M_PI / std::ceil(2 * M_PI * 0.2 / 0.01)));
+  }
+}
