@@ -121,6 +121,7 @@ std::vector<double> Interpreter::eval_numbers(ExprId e) {
 
 Value Interpreter::eval(ExprId id) {
   const Expr& e = ast_.expr(id);
+  const DepthGuard depth(*this, e.range);
   return std::visit(
       [&](const auto& n) -> Value {
         using T = std::decay_t<decltype(n)>;
@@ -257,9 +258,25 @@ Value Interpreter::eval_unary(const Expr& e, const UnaryExpr& u) {
 }
 
 Value Interpreter::eval_binary(const Expr& e, const BinaryExpr& b) {
-  // Both sides are always evaluated: && and || do not short-circuit (Gmsh).
-  const Value l = eval(b.lhs);
-  const Value r = eval(b.rhs);
+  // A long left-associative chain (`1+1+1+...`, 50 000 terms) is as deep as
+  // it is long: walk its left spine with a loop instead of recursing.
+  std::vector<const Expr*> spine{&e};
+  ExprId leftmost = b.lhs;
+  while (const auto* inner = std::get_if<BinaryExpr>(&ast_.expr(leftmost).node)) {
+    spine.push_back(&ast_.expr(leftmost));
+    leftmost = inner->lhs;
+  }
+  Value acc = eval(leftmost);
+  for (auto it = spine.rbegin(); it != spine.rend(); ++it) {
+    const auto& node = std::get<BinaryExpr>((*it)->node);
+    // Both sides are always evaluated: && and || do not short-circuit (Gmsh).
+    const Value r = eval(node.rhs);
+    acc = apply_binary(**it, node, acc, r);
+  }
+  return acc;
+}
+
+Value Interpreter::apply_binary(const Expr& e, const BinaryExpr& b, const Value& l, const Value& r) {
   if (!l.is_numeric() || !r.is_numeric())
     fail_fmt(e.range, Diag::WrongType,
              fmt::format("operator '{}' needs numbers, found {} and {}", op_text(b.op), kind_word(l),

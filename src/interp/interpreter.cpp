@@ -105,8 +105,18 @@ void Interpreter::count_statement(SourceRange r) {
              fmt::format("more than {} statements executed: stopping a runaway loop", kMaxStatements));
 }
 
+Interpreter::DepthGuard::DepthGuard(Interpreter& in, SourceRange r) : in_(in) {
+  if (++in_.depth_ > kMaxEvalDepth) {
+    --in_.depth_;   // the destructor does not run when the constructor throws
+    in_.fail_fmt(r, Diag::LimitExceeded,
+                 fmt::format("evaluation nested deeper than {} levels (deeply nested blocks inside "
+                             "recursive macro calls?)", kMaxEvalDepth));
+  }
+}
+
 Interpreter::Flow Interpreter::exec(StmtId id) {
   const Stmt& s = ast_.stmt(id);
+  const DepthGuard depth(*this, s.keyword.valid() ? s.keyword : s.range);
   count_statement(s.range);
   current_stmt_ = id;
   if (s.range.valid()) {
@@ -167,9 +177,19 @@ std::string_view Interpreter::text_of(SourceRange r) const {
 }
 
 std::vector<DiagNote> Interpreter::frame_notes() const {
+  // Innermost first; a deep recursion shows its 8 innermost and 4 outermost
+  // frames rather than 200 identical notes.
+  constexpr std::size_t kInner = 8, kOuter = 4;
   std::vector<DiagNote> notes;
-  for (auto it = frames_.rbegin(); it != frames_.rend(); ++it)
-    notes.push_back(DiagNote{it->site, fmt::format("called from here ({})", it->what)});
+  const std::size_t n = frames_.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    if (n > kInner + kOuter && k == kInner) {
+      notes.push_back(DiagNote{SourceRange{}, fmt::format("... {} more frames ...", n - kInner - kOuter)});
+      k = n - kOuter;
+    }
+    const Frame& f = frames_[n - 1 - k];
+    notes.push_back(DiagNote{f.site, fmt::format("called from here ({})", f.what)});
+  }
   return notes;
 }
 

@@ -111,6 +111,7 @@ class Interpreter {
   Value eval_var(const lang::Expr& e, const lang::VarExpr& v);
   Value eval_unary(const lang::Expr& e, const lang::UnaryExpr& u);
   Value eval_binary(const lang::Expr& e, const lang::BinaryExpr& b);
+  Value apply_binary(const lang::Expr& e, const lang::BinaryExpr& b, const Value& l, const Value& r);
   Value eval_call(const lang::Expr& e, const lang::CallExpr& c);
   Value eval_option(const lang::Expr& e, const lang::OptionExpr& o);
   Value eval_range(const lang::Expr& e, const lang::RangeExpr& r);
@@ -144,6 +145,14 @@ class Interpreter {
   Flow exec_command(const lang::Stmt& s, const lang::CommandStmt& c);
   std::string find_include(const std::string& name, lang::SourceRange r);
 
+  // Counts nested eval/exec calls (expressions inside blocks inside macro
+  // calls): past kMaxEvalDepth the run stops before the C++ stack would.
+  struct DepthGuard {
+    DepthGuard(Interpreter& in, lang::SourceRange r);
+    ~DepthGuard() { --in_.depth_; }
+    Interpreter& in_;
+  };
+
   struct Frame {
     lang::SourceRange site;   ///< the Call or Include statement
     std::string what;         ///< "macro 'Foo'" / "'file.geo'"
@@ -174,6 +183,7 @@ class Interpreter {
   lang::StmtId current_stmt_;   // the statement being run, for reports
   std::uint64_t statements_run_ = 0;
   std::size_t macro_depth_ = 0;
+  std::size_t depth_ = 0;
   int exit_code_ = -1;
   bool stopped_ = false;
 };

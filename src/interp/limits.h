@@ -16,6 +16,9 @@ inline constexpr std::size_t kMaxStringSize = 64u << 20;
 inline constexpr std::uint64_t kMaxStatements = 100'000'000;
 /// Nested Call/Include frames (recursive macros).
 inline constexpr std::size_t kMaxCallDepth = 200;
+/// Nested evaluation (expressions within statements within blocks within
+/// macro calls); keeps the evaluator's recursion far below an 8 MiB stack.
+inline constexpr std::size_t kMaxEvalDepth = 4000;
 /// Nested Include files.
 inline constexpr std::size_t kMaxIncludeDepth = 64;
 

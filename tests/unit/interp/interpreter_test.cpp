@@ -250,3 +250,23 @@ TEST_CASE("interp: Include inside a running loop keeps the loop's nodes valid") 
   CHECK(out.str() == "1 1\n2 2\n3 3\n");
   fs::remove_all(dir);
 }
+
+TEST_CASE("interp: deep expressions evaluate without exhausting the stack") {
+  std::string chain = "z = 1";
+  for (int i = 0; i < 200000; ++i) chain += "+1";
+  auto r = run_script(chain + ";\nPrintf(\"%g\", z);\n");
+  CHECK(r.ok);
+  CHECK(r.out == "200001\n");
+  // Blocks nested 900 deep inside a macro recursing 200 deep: a clean error.
+  std::string rec = "n = 0;\nMacro R\nn++;\n";
+  for (int i = 0; i < 900; ++i) rec += "If (1) ";
+  rec += "If (n < 300) Call R; EndIf ";
+  for (int i = 0; i < 900; ++i) rec += "EndIf ";
+  rec += "\nReturn\nCall R;\n";
+  r = run_script(rec);
+  REQUIRE(r.kinds.size() == 1);
+  CHECK(r.kinds[0].find("limit-exceeded") != std::string::npos);
+  // 200 identical frames are summarised.
+  r = run_script("Macro R\nCall R;\nReturn\nCall R;\n");
+  CHECK(r.rendered.find("... 188 more frames ...") != std::string::npos);
+}
