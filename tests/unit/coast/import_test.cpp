@@ -207,3 +207,35 @@ TEST_CASE("import: an islet overlapping the mainland in GSHHG high becomes part 
   CHECK(found);
   check_model(*m);
 }
+
+TEST_CASE("import: a region across the dateline with a variable accuracy field") {
+  // Bering Strait box written past 180, gamma 5 km near (190E, 66N) growing to 50 km.
+  ImportOptions o;
+  const Vec3 centre = geo::sphere_from_lonlat({190, 66}, geo::kEarthRadius);
+  o.gamma = [centre](std::span<const Vec3> pts, std::span<double> g) {
+    for (std::size_t i = 0; i < pts.size(); ++i) g[i] = std::min(50e3, 5e3 + 0.05 * norm(pts[i] - centre));
+  };
+  o.region = LonLatBox{170, 200, 60, 72};
+  auto m = build_coast_model(load("world_l.txt"), o);
+  REQUIRE_MESSAGE(m.ok(), (m.ok() ? "" : m.error().to_string()));
+  std::size_t open = 0, coast = 0;
+  for (const auto& c : m->curves) {
+    (c.open_boundary ? open : coast)++;
+    for (auto p : c.ll) {
+      const double lon = std::fmod(p.lon + 720.0, 360.0);
+      CHECK((lon >= 170 - 1e-9 || lon <= 200 - 360 + 1e-9));
+      CHECK(p.lat >= 60 - 1e-9);
+      CHECK(p.lat <= 72 + 1e-9);
+    }
+  }
+  CHECK(open >= 2);   // Siberia and Alaska are both cut by the box
+  CHECK(coast >= 2);
+  check_model(*m);
+  // Points are denser near the strait than far from it.
+  std::size_t near = 0, far = 0;
+  for (const auto& c : m->curves)
+    if (!c.open_boundary)
+      for (auto p : c.ll) (norm(geo::sphere_from_lonlat(p, geo::kEarthRadius) - centre) < 300e3 ? near : far)++;
+  CHECK(near > 0);
+  CHECK(far > 0);
+}
