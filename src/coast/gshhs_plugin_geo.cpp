@@ -29,28 +29,39 @@ std::string write_gshhs_plugin_geo(const CoastModel& m, const GshhsPluginOptions
   for (std::size_t l = 0; l < m.loops.size(); ++l) {
     const CoastLoop& loop = m.loops[l];
     // A periodic curve writes all its points and closes on its first. In a loop of
-    // pieces, each piece writes all but its last point, which is the next piece's first.
+    // pieces, each piece writes all but its last point, which is the next piece's first;
+    // all points of the loop are written before its curves refer to them.
     const std::size_t loop_first_point = ip;
+    std::vector<std::size_t> start(loop.curves.size());
     for (std::size_t k = 0; k < loop.curves.size(); ++k) {
       const CoastCurve& c = m.curves[loop.curves[k]];
-      const std::size_t start = ip;
+      start[k] = ip;
       const std::size_t n = c.periodic ? c.uv.size() : c.uv.size() - 1;
       for (std::size_t i = 0; i < n; ++i) {
         Vec2 p = c.uv[i];
         if (opt.write_polar_sphere == -2) p = plane.from_polar(p);
         w(fmt::format("Point ( IP + {} ) = {{{:.16g}, {:.16g}, 0 }};\n", ip++, p.x, p.y));
       }
+    }
+    for (std::size_t k = 0; k < loop.curves.size(); ++k) {
+      const CoastCurve& c = m.curves[loop.curves[k]];
       const std::size_t tag = il++;
       curve_tag[loop.curves[k]] = tag;
       if (c.open_boundary) open_curves.push_back(tag);
+      const std::size_t first = start[k];
+      const std::size_t last = k + 1 < loop.curves.size() ? start[k + 1] - 1 : ip - 1;
       if (c.periodic) {
-        w(fmt::format("LoopStart{} = IP + {};  LoopEnd{} = IP + {};\n", tag, start, tag, ip - 1));
-        w(fmt::format("BSpline ( IL + {} ) = {{ IP + {} : IP + {}, IP + {} }};\n", tag, start, ip - 1, start));
-      } else if (k + 1 == loop.curves.size()) {
-        w(fmt::format("BSpline ( IL + {} ) = {{ IP + {} : IP + {}, IP + {} }};\n", tag, start, ip - 1, loop_first_point));
-      } else {
-        w(fmt::format("BSpline ( IL + {} ) = {{ IP + {} : IP + {} }};\n", tag, start, ip));
+        w(fmt::format("LoopStart{} = IP + {};  LoopEnd{} = IP + {};\n", tag, first, tag, last));
+        w(fmt::format("BSpline ( IL + {} ) = {{ IP + {} : IP + {}, IP + {} }};\n", tag, first, last, first));
+        continue;
       }
+      const std::size_t end = k + 1 < loop.curves.size() ? start[k + 1] : loop_first_point;
+      if (c.uv.size() == 2)   // two points: a segment in (u,v)
+        w(fmt::format("Line ( IL + {} ) = {{ IP + {}, IP + {} }};\n", tag, first, end));
+      else if (end == last + 1)
+        w(fmt::format("BSpline ( IL + {} ) = {{ IP + {} : IP + {} }};\n", tag, first, end));
+      else
+        w(fmt::format("BSpline ( IL + {} ) = {{ IP + {} : IP + {}, IP + {} }};\n", tag, first, last, end));
     }
     std::string ids;
     for (std::size_t k = 0; k < loop.curves.size(); ++k)

@@ -1,6 +1,7 @@
 // Plugin(GSHHS) compatibility writer: structure of the .geo text, options, and Gmsh 4.8.4
 // reading the file for the world (run when gmsh is installed, else skipped with a message).
 #include "coast/gshhs_plugin_geo.h"
+#include "coast/read_lonlat_text.h"
 
 #include <doctest/doctest.h>
 
@@ -150,4 +151,30 @@ TEST_CASE("plugin: loops2 input, WritePolarSphere = 0 and -2, bad options") {
   bad = o;
   bad.in_file_name = "/nonexistent.txt";
   CHECK_FALSE(run_gshhs_plugin(bad).ok());
+}
+
+TEST_CASE("plugin writer: a regional model (cut coasts closed along the box) meshes in Gmsh 4.8.4") {
+  auto c = read_lonlat_text(std::string(SM_SHARED_DATA) + "/gshhg/gb_ireland_f.txt");
+  REQUIRE(c.ok());
+  ImportOptions io;
+  io.gamma = constant(15e3);
+  auto m = build_coast_model(std::move(*c), io);
+  REQUIRE(m.ok());
+  const std::string geo = write_gshhs_plugin_geo(*m, GshhsPluginOptions{});
+  // The outer loop: 2 French coast pieces and 2 box pieces, chained point to point.
+  CHECK(count(geo, "Line Loop ( ILL + 0 ) = { IL + 0, IL + 1, IL + 2, IL + 3 };") == 1);
+  CHECK(count(geo, "Physical Curve ( \"open\" )") == 1);
+  if (!have_gmsh()) {
+    MESSAGE("gmsh not installed: skipping the Gmsh 4.8.4 meshing check");
+    return;
+  }
+  const fs::path f = temp_dir() / "gb_region.geo";
+  {
+    std::ofstream out(f);
+    out << geo << "Mesh.CharacteristicLengthMax = 20e3;\nMesh.CharacteristicLengthFromPoints = 0;\n";
+  }
+  std::string out;
+  CHECK(run("gmsh -2 '" + f.string() + "' -o '" + (temp_dir() / "gb_region.msh").string() + "'", out) == 0);
+  CHECK_MESSAGE(gmsh_errors(out).empty(), out);
+  CHECK(out.find(" nodes ") != std::string::npos);
 }
