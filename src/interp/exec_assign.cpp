@@ -308,6 +308,19 @@ void Interpreter::exec_define_constant(const DefineConstantStmt& d) {
       continue;
     }
     Value v = eval(entry.value);
+    // `Name "Parameters/x"` makes it a ONELAB parameter: an existing parameter
+    // (SetNumber/SetString) gives its value, else the parameter is created.
+    // The other attributes (Min, Max, Choices...) only matter to a GUI.
+    std::string onelab;
+    for (const OnelabAttr& attr : entry.attrs)
+      if (ast_.str(attr.key) == "Name" && attr.value.valid()) onelab = eval_string(attr.value);
+    if (!onelab.empty() && v.is_numeric() && !v.nums().empty()) {
+      auto [it, fresh] = onelab_numbers_.emplace(onelab, v.nums()[0]);
+      if (!fresh) v = Value::number(it->second);
+    } else if (!onelab.empty() && v.is_string() && !v.strs().empty()) {
+      auto [it, fresh] = onelab_strings_.emplace(onelab, v.strs()[0]);
+      if (!fresh) v = Value::string(it->second);
+    }
     if (v.is_string()) {
       symbols_.set_str(name, v.strs());
     } else {
