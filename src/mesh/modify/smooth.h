@@ -1,0 +1,25 @@
+// Laplacian smoothing of the free vertices followed by Delaunay flips (the
+// Mesh.Smoothing passes Gmsh applies after 2D meshing).
+#pragma once
+
+#include <cstdint>
+
+#include "mesh/triangulation.h"
+
+namespace sm {
+
+struct SmoothStats {
+  std::uint64_t moved = 0, refused = 0, flips = 0;
+};
+
+/// `passes` times: move every vertex that is on no constrained or hull edge
+/// to the average of its neighbours, unless that would invert a triangle of
+/// its fan (exact orient2d at the new place); then flip non-constrained
+/// edges until the mesh is constrained Delaunay again (id tie-break).
+SmoothStats smooth_laplacian(TriangleStore& m, int passes);
+
+/// Lawson flips over every non-constrained edge until all are locally
+/// Delaunay. Returns the number of flips.
+std::uint64_t make_delaunay(TriangleStore& m);
+
+}  // namespace sm

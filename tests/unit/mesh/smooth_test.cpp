@@ -1,0 +1,42 @@
+// Laplacian smoothing + Lawson flips after del2d: the mesh stays valid,
+// constrained Delaunay, and its quality improves.
+#include <doctest/doctest.h>
+
+#include "mesh/check.h"
+#include "mesh/modify/smooth.h"
+#include "mesh/quality.h"
+#include "mesh/refine.h"
+#include "testing_domains.h"
+
+using namespace sm;
+
+TEST_CASE("smooth: one and three passes after del2d on a square with a hole") {
+  TriangleStore m;
+  const Loop sq = testing::polygon_loop(m, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.02, false);
+  const Loop hole = testing::circle_loop(m, {0.4, 0.6}, 0.15, 0.02, true);
+  std::vector<Edge> edges;
+  REQUIRE(testing::boundary_mesh(m, {sq, hole}, &edges));
+  RefineOptions opt;
+  opt.size = 0.02;
+  REQUIRE(refine_del2d(m, opt).ok());
+  const auto before = mesh_quality(m);
+  const std::vector<Vec2> boundary_xy = m.xy;
+  const auto st = smooth_laplacian(m, 1);
+  CHECK(st.moved > 1000);
+  INFO(check_topology(m).error);
+  REQUIRE(check_topology(m).ok());
+  REQUIRE(check_constraints(m, edges).ok());
+  REQUIRE(check_delaunay(m, PlanarGeometry{&m.xy}, true).ok());
+  const auto after = mesh_quality(m);
+  MESSAGE("rho > 0.9: " << before.share_rho_09 << " -> " << after.share_rho_09 << ", min rho " << before.min_rho
+                        << " -> " << after.min_rho);
+  CHECK(after.share_rho_09 > before.share_rho_09 + 0.1);
+  CHECK(after.triangles == before.triangles);
+  // Boundary vertices never move.
+  for (const Loop* l : {&sq, &hole})
+    for (VertexId v : l->v) CHECK(m.xy[v.value] == boundary_xy[v.value]);
+  smooth_laplacian(m, 2);
+  REQUIRE(check_topology(m).ok());
+  REQUIRE(check_delaunay(m, PlanarGeometry{&m.xy}, true).ok());
+  CHECK(mesh_quality(m).share_rho_09 >= after.share_rho_09);
+}
