@@ -168,27 +168,35 @@ void KdTree::nearest(std::span<const Vec3> queries, std::span<double> dist,
   // of consecutive (Morton-close) queries with centre c and radius r shares
   // one candidate list: the nearest point of any query in the group lies
   // within d(c) + 2r of c. Each query then scans the list; the answer is
-  // still exact.
-  constexpr std::size_t kGroup = 16;
-  const bool exact = opts_.eps == 0;
+  // still exact. Groups grow while they stay small next to the distance to
+  // the samples (estimated from the previous answer), so queries near the
+  // samples keep the cheap single search.
+  constexpr std::size_t kMaxGroup = 64, kMinGroup = 8, kMaxCandidates = 4096;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const bool grouping = opts_.eps == 0 && !order.empty();
   std::vector<std::uint32_t> cand;
   std::vector<double> cx, cy, cz;
   std::size_t k = 0;
   while (k < queries.size()) {
-    const std::size_t n = std::min(kGroup, queries.size() - k);
     auto at = [&](std::size_t j) -> std::size_t { return order.empty() ? k + j : order[k + j]; };
+    std::size_t n = 1;
+    if (grouping && prev != NearestResult::kNone) {
+      const Vec3 q0 = queries[at(0)];
+      const double reach = 0.25 * norm(points_[prev] - q0);
+      while (n < kMaxGroup && k + n < queries.size() && norm(queries[at(n)] - q0) < reach) ++n;
+    }
     bool grouped = false;
-    if (exact && n >= 8) {
+    if (n >= kMinGroup) {
       Vec3 c{};
       for (std::size_t j = 0; j < n; ++j) c += queries[at(j)];
       c = c / static_cast<double>(n);
       double r = 0;
       for (std::size_t j = 0; j < n; ++j) r = std::max(r, norm(queries[at(j)] - c));
       const double dc = std::sqrt(search(c).d2);
-      if (std::isfinite(dc) && std::isfinite(r) && 2 * r < dc) {
+      if (std::isfinite(dc) && 2 * r < dc) {
         const double rr = (dc + 2 * r) * (1 + 1e-9) + 1e-300;
         cand.clear();
-        RadiusResult rs(rr * rr, 256 * n, cand);
+        RadiusResult rs(rr * rr, kMaxCandidates, cand);
         impl_->tree.findNeighbors(rs, &c.x, params);
         if (!rs.overflow() && !cand.empty()) {
           grouped = true;
@@ -202,7 +210,7 @@ void KdTree::nearest(std::span<const Vec3> queries, std::span<double> dist,
           for (std::size_t j = 0; j < n; ++j) {
             const std::size_t i = at(j);
             const Vec3 q = queries[i];
-            double best = std::numeric_limits<double>::infinity();
+            double best = kInf;
             std::size_t arg = 0;
             for (std::size_t m = 0; m < cand.size(); ++m) {
               const double dx = cx[m] - q.x, dy = cy[m] - q.y, dz = cz[m] - q.z;
