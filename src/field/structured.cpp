@@ -3,6 +3,8 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
+#include <string>
 #include <fstream>
 
 #include <fmt/format.h>
@@ -47,8 +49,16 @@ Grid3 read_text(const std::filesystem::path& file) {
   check_header(file, g);
   const std::size_t total = static_cast<std::size_t>(g.n[0]) * g.n[1] * g.n[2];
   g.v.resize(total);
-  for (std::size_t k = 0; k < total; ++k)
-    if (!(in >> g.v[k])) file_error(file, fmt::format("expected {} values, found {}", total, k));
+  // Tokens go through strtod so that "nan"/"inf" are read (and then rejected
+  // with their node) rather than ending the file early.
+  std::string tok;
+  for (std::size_t k = 0; k < total; ++k) {
+    if (!(in >> tok)) file_error(file, fmt::format("expected {} values, found {}", total, k));
+    char* end = nullptr;
+    g.v[k] = std::strtod(tok.c_str(), &end);
+    if (end == tok.c_str() || *end != '\0')
+      file_error(file, fmt::format("value {} ('{}') is not a number", k + 1, tok));
+  }
   return g;
 }
 
@@ -129,6 +139,12 @@ FieldPtr make(const BuildInputs& in) {
   try {
     if (!std::filesystem::exists(path)) file_error(path, "no such file");
     Grid3 g = in.opts.number("TextFormat") != 0 ? read_text(path) : read_binary(path);
+    for (std::size_t k = 0; k < g.v.size(); ++k)
+      if (!std::isfinite(g.v[k])) {
+        const std::size_t nz = static_cast<std::size_t>(g.n[2]), nyz = static_cast<std::size_t>(g.n[1]) * nz;
+        file_error(path, fmt::format("value {} at node (i, j, k) = ({}, {}, {}) is not finite", g.v[k],
+                                     k / nyz, k % nyz / nz, k % nz));
+      }
     return std::make_shared<StructuredField>(std::move(g), in.opts.number("SetOutsideValue") != 0,
                                              in.opts.number("OutsideValue"));
   } catch (FieldError& e) {

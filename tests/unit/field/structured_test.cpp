@@ -72,6 +72,19 @@ TEST_CASE("structured: binary format, and bad files") {
   ctx.base_dir = dir;
   FieldSet rel = structured("grid.bin", false);
   CHECK(eval1(rel, 1, {1, 2, 3}, ctx) == 0);
+  // A NaN value is rejected with its node.
+  {
+    std::ofstream out(dir / "nan.txt");
+    out << "0 0 0\n1 1 1\n2 2 1\n1 2 nan 4\n";
+  }
+  FieldSet nan = structured((dir / "nan.txt").string(), true);
+  try {
+    nan.build(1, {});
+    FAIL("expected an error");
+  } catch (const FieldError& e) {
+    CHECK(e.code() == FieldErrc::FileError);
+    CHECK(std::string(e.what()).find("(1, 0, 0)") != std::string::npos);
+  }
   // Truncated file, missing file, text read as binary.
   std::filesystem::resize_file(bin, 80);
   CHECK_THROWS_AS(fs.build(1, {}), FieldError);
