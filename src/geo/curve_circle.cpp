@@ -42,6 +42,13 @@ GeoResult<CircleArc> make_circle_arc(Vec3 start, Vec3 centre, Vec3 end, std::opt
   // Collinear points (a half circle about the fallback normal): Gmsh always turns +pi about
   // that normal; rounding in the dot product could otherwise give -pi.
   if (norm(cross(d0, d2)) <= 1e-12 * r1 * r2 && dot(d0, d2) < 0) a.angle = kPi;
+  // Start and end in the same direction: Gmsh measures a full turn and rejects the arc as
+  // "greater than Pi".
+  if (std::abs(a.angle) <= 1e-12)
+    return make_error(GeoErrorKind::DegenerateArc, EntityKind::Curve, {tag},
+                      fmt::format("circle {}: start and end lie in the same direction from the centre (a full "
+                                  "circle): split it into arcs smaller than Pi",
+                                  tag));
   return a;
 }
 

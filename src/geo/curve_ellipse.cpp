@@ -46,6 +46,9 @@ GeoResult<EllipseArc> make_ellipse_arc(Vec3 start, Vec3 centre, Vec3 major_point
   if (sweep <= -kPi) sweep += 2 * kPi;
   // Collinear start and end: half an ellipse, turning +pi about the fallback normal.
   if (norm(cross(d0, d2)) <= 1e-12 * norm(d0) * norm(d2) && sweep < 0) sweep += 2 * kPi;
+  if (std::abs(sweep) <= 1e-12)
+    return degenerate("start and end lie in the same direction from the centre (a full ellipse): split it into "
+                      "arcs smaller than Pi");
   e.sweep = sweep;
   return e;
 }

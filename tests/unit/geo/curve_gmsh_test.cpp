@@ -255,6 +255,13 @@ TEST_CASE("curves: construction errors") {
   CHECK(Curve::make(d).error().kind == GeoErrorKind::DegenerateArc);
   d.plane_normal = Vec3{1, 0, 0};
   CHECK(Curve::make(d).ok());
+  // Same direction from the centre: Gmsh's "Circle or ellipse arc greater than Pi".
+  d.plane_normal.reset();
+  d.xyz = {{1, 0, 0}, {0, 0, 0}, {1.05, 0, 0}};
+  auto full = Curve::make(d);
+  REQUIRE_FALSE(full);
+  CHECK(full.error().kind == GeoErrorKind::DegenerateArc);
+  CHECK(full.error().message.find("same direction") != std::string::npos);
   d.kind = CurveKind::Ellipse;
   d.plane_normal.reset();
   d.xyz = {{2, 0, 0}, {0, 0, 0}, {-2, 0, 0}};    // both on the major axis
