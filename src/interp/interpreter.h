@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "interp/builtins/builtins.h"
+#include "interp/limits.h"
+#include "interp/kernel_state.h"
 #include "interp/options.h"
 #include "interp/value.h"
 #include "lang/ast.h"
@@ -25,6 +27,7 @@ struct RunSettings {
   std::vector<std::string> include_dirs;   ///< `-I DIR`, searched after the including file's dir
   std::vector<std::string> search_path;    ///< $STEREOMESH_PATH entries
   std::string stdlib_dir = STEREOMESH_STDLIB_DIR;
+  Limits limits;                           ///< hang and memory guards (limits.h)
 };
 
 /// How a run ended.
@@ -50,6 +53,8 @@ class Interpreter {
 
   Options& options() { return options_; }
   Symbols& symbols() { return symbols_; }
+  /// The model, fields and imports the script has built so far.
+  KernelState& kernel() { return kernel_; }
 
   /// `-setnumber NAME V` / `-setstring NAME S`: an option when NAME has a '.',
   /// else a variable defined before the script (DefineConstant keeps it).
@@ -82,7 +87,7 @@ class Interpreter {
   Flow exec(lang::StmtId s);
   Flow exec_block(const lang::StmtList& body);
 
-  /// Counts one executed statement or loop iteration against kMaxStatements.
+  /// Counts one executed statement or loop iteration against the statement limit.
   void count_statement(lang::SourceRange r);
   [[noreturn]] void fail(lang::SourceRange range, lang::Diag kind, std::string message);
   template <class... Args>
@@ -146,7 +151,7 @@ class Interpreter {
   std::string find_include(const std::string& name, lang::SourceRange r);
 
   // Counts nested eval/exec calls (expressions inside blocks inside macro
-  // calls): past kMaxEvalDepth the run stops before the C++ stack would.
+  // calls): past the eval-depth limit the run stops before the C++ stack would.
   struct DepthGuard {
     DepthGuard(Interpreter& in, lang::SourceRange r);
     ~DepthGuard() { --in_.depth_; }
@@ -173,6 +178,7 @@ class Interpreter {
   std::map<std::string, std::string, std::less<>> onelab_strings_;
   std::uint64_t rand_state_ = 0;
   BuiltinEnv env_;
+  KernelState kernel_;
 
   std::map<std::string, MacroDef, std::less<>> macros_;
   std::map<std::uint32_t, lang::StmtList> parsed_files_;   // FileId value -> statements

@@ -1,0 +1,39 @@
+// What a script builds in the kernel: the geometry model, the size-field
+// definitions, coastline import definitions, and where each entity came from
+// (so that kernel errors, which carry tags, point at script lines). The
+// interpreter owns one; each builtins family (geometry.cpp, fields.cpp,
+// coastline.cpp, mesh_commands.cpp) fills its part.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "field/field_set.h"
+#include "geo/model.h"
+#include "interp/value.h"
+#include "lang/source.h"
+
+namespace sm::interp {
+
+/// `Coastline[n] = Format; Coastline[n].Option = value;` (native extension),
+/// kept as written until `Coastline{n}` imports it.
+struct CoastlineDef {
+  std::string format;                                   // GSHHS, Shapefile, LonLatText, Loops2
+  std::map<std::string, Value, std::less<>> options;    // as set by the script
+  std::map<std::string, lang::SourceRange, std::less<>> option_at;
+  lang::SourceRange defined_at;
+};
+
+struct KernelState {
+  geo::Model model;
+  field::FieldSet fields;
+  std::optional<int> background_field;                  // `Background Field = n;`
+  std::map<int, lang::SourceRange> field_defined_at;    // Field[n] = ... statement
+  std::map<int, CoastlineDef> coastlines;
+  /// (dim, tag) -> the statement that created the entity (provenance).
+  std::map<std::pair<int, int>, lang::SourceRange> created_at;
+};
+
+}  // namespace sm::interp
