@@ -349,16 +349,17 @@ Value Interpreter::eval_range(const Expr& e, const RangeExpr& r) {
     step = (a <= b) ? 1.0 : -1.0;   // `5:1` counts down
   }
   const double count = std::floor((b - a) / step) + 1;
-  if (count > static_cast<double>(kMaxListSize))
+  const std::size_t max_list = settings_.limits.max_list_size;
+  if (count > static_cast<double>(max_list))
     fail_fmt(e.range, Diag::LimitExceeded,
              fmt::format("range {}:{}:{} has {} elements, more than the limit of {}", format_g(a),
-                         format_g(b), format_g(step), format_g(count), kMaxListSize));
+                         format_g(b), format_g(step), format_g(count), max_list));
   std::vector<double> out;
   if (count > 0) out.reserve(static_cast<std::size_t>(count) + 1);
   // Accumulated like Gmsh (d += step, no tolerance): 0:0.3:0.1 gives 0, 0.1, 0.2.
   for (double d = a; step > 0 ? d <= b : d >= b; d += step) {
     out.push_back(d);
-    if (out.size() > kMaxListSize) break;
+    if (out.size() > max_list) break;
   }
   return Value::list(std::move(out));
 }
@@ -375,8 +376,9 @@ Value Interpreter::eval_list(const Expr& e, const ListExpr& l) {
     }
     if (!nums.empty() && !strs.empty())
       fail_fmt(ast_.expr(item).range, Diag::WrongType, "a list cannot mix numbers and strings");
-    if (nums.size() > kMaxListSize)
-      fail_fmt(e.range, Diag::LimitExceeded, fmt::format("list longer than the limit of {}", kMaxListSize));
+    if (nums.size() > settings_.limits.max_list_size)
+      fail_fmt(e.range, Diag::LimitExceeded,
+               fmt::format("list longer than the limit of {}", settings_.limits.max_list_size));
   }
   if (!strs.empty()) return Value::string_list(std::move(strs));
   return Value::list(std::move(nums));

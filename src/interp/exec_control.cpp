@@ -49,10 +49,10 @@ Interpreter::Flow Interpreter::exec_for(const Stmt& st, const ForStmt& f) {
     fail_fmt(st.keyword, Diag::InvalidRange, "loop bounds and step must be finite numbers");
   if (step != 0) {
     const double n = std::floor((to - from) / step) + 1;
-    if (n > static_cast<double>(kMaxListSize))
+    if (n > static_cast<double>(settings_.limits.max_list_size))
       fail_fmt(st.keyword, Diag::LimitExceeded,
                fmt::format("loop {}:{}:{} would run {} iterations, more than the limit of {}", format_g(from),
-                           format_g(to), format_g(step), format_g(n), kMaxListSize));
+                           format_g(to), format_g(step), format_g(n), settings_.limits.max_list_size));
   }
   const bool has_var = f.var.valid();
   const std::string var = has_var ? std::string(ast_.str(f.var)) : std::string();
@@ -98,7 +98,8 @@ Interpreter::Flow Interpreter::exec_call(const Stmt& s, const CallStmt& c) {
     }
     fail_fmt(s.range, Diag::UnknownMacro, name, hint);
   }
-  if (macro_depth_ >= kMaxCallDepth) fail_fmt(s.range, Diag::CallTooDeep, kMaxCallDepth);
+  if (macro_depth_ >= settings_.limits.max_call_depth)
+    fail_fmt(s.range, Diag::CallTooDeep, settings_.limits.max_call_depth);
   const auto& body = std::get<MacroStmt>(ast_.stmt(it->second.stmt).node).body;
   frames_.push_back(Frame{s.range, fmt::format("macro '{}'", name)});
   PopGuard<std::vector<Frame>> guard{frames_};
@@ -154,7 +155,8 @@ Interpreter::Flow Interpreter::exec_include(const Stmt& s, const IncludeStmt& in
       }
     }
   }
-  if (include_stack_.size() >= kMaxIncludeDepth) fail_fmt(r, Diag::IncludeTooDeep, kMaxIncludeDepth);
+  if (include_stack_.size() >= settings_.limits.max_include_depth)
+    fail_fmt(r, Diag::IncludeTooDeep, settings_.limits.max_include_depth);
   FileId file = sources_.find_loaded(path);
   if (!file.valid()) {
     const auto loaded = sources_.load_file(path);

@@ -20,7 +20,7 @@ Interpreter::Interpreter(SourceManager& sources, Diagnostics& diags, std::ostrea
       diags_(diags),
       out_(out),
       settings_(std::move(settings)),
-      env_{symbols_, options_, onelab_numbers_, onelab_strings_, "", rand_state_} {}
+      env_{symbols_, options_, onelab_numbers_, onelab_strings_, "", rand_state_, &settings_.limits} {}
 
 std::string Interpreter::preset_number(const std::string& name, double v) {
   if (name.find('.') != std::string::npos) {
@@ -100,17 +100,18 @@ Interpreter::Flow Interpreter::exec_block(const StmtList& body) {
 }
 
 void Interpreter::count_statement(SourceRange r) {
-  if (++statements_run_ > kMaxStatements)
+  if (++statements_run_ > settings_.limits.max_statements)
     fail_fmt(r, Diag::LimitExceeded,
-             fmt::format("more than {} statements executed: stopping a runaway loop", kMaxStatements));
+             fmt::format("more than {} statements executed: stopping a runaway loop",
+                         settings_.limits.max_statements));
 }
 
 Interpreter::DepthGuard::DepthGuard(Interpreter& in, SourceRange r) : in_(in) {
-  if (++in_.depth_ > kMaxEvalDepth) {
+  if (++in_.depth_ > in_.settings_.limits.max_eval_depth) {
     --in_.depth_;   // the destructor does not run when the constructor throws
     in_.fail_fmt(r, Diag::LimitExceeded,
                  fmt::format("evaluation nested deeper than {} levels (deeply nested blocks inside "
-                             "recursive macro calls?)", kMaxEvalDepth));
+                             "recursive macro calls?)", in_.settings_.limits.max_eval_depth));
   }
 }
 

@@ -22,4 +22,15 @@ inline constexpr std::size_t kMaxEvalDepth = 4000;
 /// Nested Include files.
 inline constexpr std::size_t kMaxIncludeDepth = 64;
 
+/// The limits of one run. The defaults are the constants above; tests and
+/// the fuzzer pass smaller ones (RunSettings::limits) to stay fast.
+struct Limits {
+  std::size_t max_list_size = kMaxListSize;
+  std::size_t max_string_size = kMaxStringSize;
+  std::uint64_t max_statements = kMaxStatements;
+  std::size_t max_call_depth = kMaxCallDepth;
+  std::size_t max_include_depth = kMaxIncludeDepth;
+  std::size_t max_eval_depth = kMaxEvalDepth;
+};
+
 }  // namespace sm::interp

@@ -45,6 +45,11 @@ const BuiltinInfo* find_builtin(std::string_view name) {
   return (it != all.end() && it->name == name) ? &*it : nullptr;
 }
 
+const Limits& env_limits(const BuiltinEnv& env) {
+  static const Limits kDefaults;
+  return env.limits ? *env.limits : kDefaults;
+}
+
 double arg_number(const std::vector<Value>& args, int i) {
   const Value& v = args[static_cast<std::size_t>(i)];
   if (!v.is_numeric())

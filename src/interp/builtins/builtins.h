@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "interp/limits.h"
 #include "interp/options.h"
 #include "interp/value.h"
 
@@ -23,7 +24,11 @@ struct BuiltinEnv {
   std::map<std::string, std::string, std::less<>>& onelab_strings;
   std::string script_path;   ///< file of the statement being run ("" for none)
   std::uint64_t& rand_state;
+  const Limits* limits = nullptr;   ///< nullptr: the defaults
 };
+
+/// The run's limits (the defaults when the environment names none).
+const Limits& env_limits(const BuiltinEnv& env);
 
 /// A builtin's failure: a message about the call, or about argument `arg`.
 struct BuiltinError {

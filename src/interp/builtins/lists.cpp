@@ -14,9 +14,10 @@
 namespace sm::interp {
 namespace {
 
-std::size_t checked_count(double n, int arg) {
-  if (!(n >= 0) || n > static_cast<double>(kMaxListSize))
-    throw BuiltinError{fmt::format("list size {} is outside [0, {}]", n, kMaxListSize), arg};
+std::size_t checked_count(const BuiltinEnv& env, double n, int arg) {
+  const std::size_t max = env_limits(env).max_list_size;
+  if (!(n >= 0) || n > static_cast<double>(max))
+    throw BuiltinError{fmt::format("list size {} is outside [0, {}]", n, max), arg};
   return static_cast<std::size_t>(n);
 }
 
@@ -38,13 +39,14 @@ std::vector<double> linspace(double a, double b, std::size_t n) {
   return v;
 }
 
-Value f_linspace(BuiltinEnv&, const std::vector<Value>& a) {
-  return Value::list(linspace(arg_number(a, 0), arg_number(a, 1), checked_count(std::trunc(arg_number(a, 2)), 2)));
+Value f_linspace(BuiltinEnv& env, const std::vector<Value>& a) {
+  return Value::list(
+      linspace(arg_number(a, 0), arg_number(a, 1), checked_count(env, std::trunc(arg_number(a, 2)), 2)));
 }
 
-Value f_logspace(BuiltinEnv&, const std::vector<Value>& a) {
+Value f_logspace(BuiltinEnv& env, const std::vector<Value>& a) {
   std::vector<double> v =
-      linspace(arg_number(a, 0), arg_number(a, 1), checked_count(std::trunc(arg_number(a, 2)), 2));
+      linspace(arg_number(a, 0), arg_number(a, 1), checked_count(env, std::trunc(arg_number(a, 2)), 2));
   for (double& x : v) x = std::pow(10.0, x);
   return Value::list(std::move(v));
 }
@@ -56,8 +58,9 @@ Value f_list_from_file(BuiltinEnv& env, const std::vector<Value>& a) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
     throw BuiltinError{fmt::format("'{}' is not a readable regular file", path), 0};
-  if (std::filesystem::file_size(path, ec) > kMaxStringSize * 4)
-    throw BuiltinError{fmt::format("'{}' is larger than {} bytes", path, kMaxStringSize * 4), 0};
+  const std::size_t max_bytes = env_limits(env).max_string_size * 4;
+  if (std::filesystem::file_size(path, ec) > max_bytes)
+    throw BuiltinError{fmt::format("'{}' is larger than {} bytes", path, max_bytes), 0};
   std::ifstream in(path);
   if (!in) throw BuiltinError{fmt::format("cannot open '{}'", path), 0};
   std::vector<double> v;
@@ -68,8 +71,8 @@ Value f_list_from_file(BuiltinEnv& env, const std::vector<Value>& a) {
     if (end == tok.c_str() || *end != '\0')
       throw BuiltinError{fmt::format("'{}' in '{}' (item {}) is not a number", tok.substr(0, 40), path,
                                      v.size() + 1), 0};
-    if (v.size() >= kMaxListSize)
-      throw BuiltinError{fmt::format("'{}' holds more than {} numbers", path, kMaxListSize), 0};
+    if (v.size() >= env_limits(env).max_list_size)
+      throw BuiltinError{fmt::format("'{}' holds more than {} numbers", path, env_limits(env).max_list_size), 0};
     v.push_back(x);
   }
   return Value::list(std::move(v));

@@ -18,35 +18,39 @@ namespace {
 
 namespace fs = std::filesystem;
 
-Value checked_string(std::string s) {
-  if (s.size() > kMaxStringSize)
-    throw BuiltinError{fmt::format("string of {} bytes is longer than the limit of {}", s.size(), kMaxStringSize)};
+[[noreturn]] void too_long(const BuiltinEnv& env, std::size_t size) {
+  throw BuiltinError{fmt::format("string of {} bytes is longer than the limit of {}", size,
+                                 env_limits(env).max_string_size)};
+}
+
+Value checked_string(const BuiltinEnv& env, std::string s) {
+  if (s.size() > env_limits(env).max_string_size) too_long(env, s.size());
   return Value::string(std::move(s));
 }
 
-Value f_strcat(BuiltinEnv&, const std::vector<Value>& a) {
+Value f_strcat(BuiltinEnv& env, const std::vector<Value>& a) {
   std::string s;
   for (int i = 0; i < static_cast<int>(a.size()); ++i) {
     s += arg_string(a, i);
-    if (s.size() > kMaxStringSize) return checked_string(std::move(s));
+    if (s.size() > env_limits(env).max_string_size) too_long(env, s.size());
   }
-  return checked_string(std::move(s));
+  return Value::string(std::move(s));
 }
 
 // Str makes a string list: `S[] = Str("a", "b")` has two elements, while
 // `s = Str("a", "b")` joins them with newlines (Gmsh's multi-line strings).
-Value f_str(BuiltinEnv&, const std::vector<Value>& a) {
+Value f_str(BuiltinEnv& env, const std::vector<Value>& a) {
   std::vector<std::string> out;
   std::size_t total = 0;
   for (int i = 0; i < static_cast<int>(a.size()); ++i) {
     out.push_back(arg_string(a, i));
     total += out.back().size() + 1;
-    if (total > kMaxStringSize) return checked_string(std::string(total, ' '));
+    if (total > env_limits(env).max_string_size) too_long(env, total);
   }
   return Value::string_list(std::move(out));
 }
 
-Value f_sprintf(BuiltinEnv&, const std::vector<Value>& a) {
+Value f_sprintf(BuiltinEnv& env, const std::vector<Value>& a) {
   const std::string& f = arg_string(a, 0);
   std::vector<FormatArg> args;
   std::vector<int> origin;   // argument index of each flattened item
@@ -62,7 +66,7 @@ Value f_sprintf(BuiltinEnv&, const std::vector<Value>& a) {
     throw BuiltinError{r.error, r.arg_index >= 0 && r.arg_index < static_cast<int>(origin.size())
                                     ? origin[static_cast<std::size_t>(r.arg_index)]
                                     : 0};
-  return checked_string(std::move(r.text));
+  return checked_string(env, std::move(r.text));
 }
 
 Value f_strlen(BuiltinEnv&, const std::vector<Value>& a) {
@@ -110,7 +114,7 @@ Value f_strsub(BuiltinEnv&, const std::vector<Value>& a) {
   return Value::string(s.substr(static_cast<std::size_t>(i), n));
 }
 
-Value f_strreplace(BuiltinEnv&, const std::vector<Value>& a) {
+Value f_strreplace(BuiltinEnv& env, const std::vector<Value>& a) {
   std::string s = arg_string(a, 0);
   const std::string& from = arg_string(a, 1);
   const std::string& to = arg_string(a, 2);
@@ -120,10 +124,10 @@ Value f_strreplace(BuiltinEnv&, const std::vector<Value>& a) {
   for (std::size_t hit; (hit = s.find(from, pos)) != std::string::npos; pos = hit + from.size()) {
     out.append(s, pos, hit - pos);
     out += to;
-    if (out.size() > kMaxStringSize) return checked_string(std::move(out));
+    if (out.size() > env_limits(env).max_string_size) too_long(env, out.size());
   }
   out.append(s, pos, std::string::npos);
-  return checked_string(std::move(out));
+  return checked_string(env, std::move(out));
 }
 
 Value f_uppercase(BuiltinEnv&, const std::vector<Value>& a) {
