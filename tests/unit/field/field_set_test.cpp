@@ -1,6 +1,9 @@
 #include "field/field_set.h"
 
+#include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <sstream>
 
 #include <doctest/doctest.h>
 
@@ -101,25 +104,30 @@ TEST_CASE("field set: a shared input is built once and a diamond is not a cycle"
   CHECK(h[1] == 15);
 }
 
-// Gmsh tutorial t10's field set on the unit square, against the formulas of
-// gmsh-reference 4.1 written out independently here (exact distances to the
-// point and the segments stand in for Gmsh's 100-sample curves).
-TEST_CASE("field set: Gmsh tutorial t10 field set") {
-  const double lc = .15;
-  const std::vector<Vec3> corners = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.2, 0.5, 0}};
+namespace {
+
+const double lc = .15;
+const std::vector<Vec3> t10_points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.2, 0.5, 0}};
+
+// Gmsh tutorial t10's fields (tests/data/field/t10.geo). Curve samples as
+// Gmsh takes them on an unmeshed curve: t = i/(N-1), i = 1..N-2.
+BuildContext t10_context() {
   BuildContext ctx;
-  ctx.point_position = [&](int tag) -> std::optional<Vec3> {
+  ctx.point_position = [](int tag) -> std::optional<Vec3> {
     if (tag < 1 || tag > 5) return std::nullopt;
-    return corners[static_cast<std::size_t>(tag - 1)];
+    return t10_points[static_cast<std::size_t>(tag - 1)];
   };
-  // Line(1) = {1,2}, Line(2) = {2,3}: Gmsh's samples at t = i/(N-1), i = 1..N-2.
-  ctx.curve_samples = [&](int tag, int n) -> std::optional<std::vector<Vec3>> {
+  ctx.curve_samples = [](int tag, int n) -> std::optional<std::vector<Vec3>> {
     if (tag != 1 && tag != 2) return std::nullopt;
-    const Vec3 a = corners[static_cast<std::size_t>(tag - 1)], b = corners[static_cast<std::size_t>(tag)];
+    const Vec3 a = t10_points[static_cast<std::size_t>(tag - 1)], b = t10_points[static_cast<std::size_t>(tag)];
     std::vector<Vec3> s;
     for (int i = 1; i <= n - 2; ++i) s.push_back(a + (b - a) * (static_cast<double>(i) / (n - 1)));
     return s;
   };
+  return ctx;
+}
+
+FieldSet t10_fields() {
   FieldSet fs;
   fs.define(1, "Distance");
   fs.set(1, "PointsList", std::vector<double>{5});
@@ -148,6 +156,17 @@ TEST_CASE("field set: Gmsh tutorial t10 field set") {
   fs.set(6, "Thickness", 0.3);
   fs.define(7, "Min");
   fs.set(7, "FieldsList", std::vector<double>{2, 3, 5, 6});
+  return fs;
+}
+
+}  // namespace
+
+// t10's field set against the formulas of gmsh-reference 4.1 written out
+// independently here (exact distances to the point and the segments stand in
+// for Gmsh's 100-sample curves).
+TEST_CASE("field set: Gmsh tutorial t10 field set") {
+  const BuildContext ctx = t10_context();
+  FieldSet fs = t10_fields();
 
   auto oracle = [&](double x, double y) {
     const double d1 = std::min(std::hypot(x - 0.2, y - 0.5), std::fabs(1 - x));
@@ -171,4 +190,42 @@ TEST_CASE("field set: Gmsh tutorial t10 field set") {
   // (0.9, 0.9) the sine term of Field[3] is the smallest.
   CHECK(eval1(fs, 7, {0.45, 0.45, 0}, ctx) == doctest::Approx(0.01));
   CHECK(eval1(fs, 7, {0.05, 0.05, 0}, ctx) == doctest::Approx(std::pow(0.05, 3) + 0.015).epsilon(1e-3));
+}
+
+// The mesh Gmsh 4.8.4 itself made from t10.geo with this field as background
+// (tests/data/field/t10_gmsh_edges.txt): its edge lengths follow our Field[7]
+// at the edge midpoints. Gmsh's edges scatter around the target size, so the
+// check is statistical: the median ratio is near 1 and most edges are within
+// a factor 1.6 of the size.
+TEST_CASE("field set: t10 sizes against the edges of Gmsh's own mesh") {
+  std::ifstream in(std::string(SM_TEST_DATA) + "/field/t10_gmsh_edges.txt");
+  REQUIRE(in);
+  std::vector<Vec3> mid;
+  std::vector<double> len;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream ls(line);
+    double x, y, l;
+    ls >> x >> y >> l;
+    mid.push_back({x, y, 0});
+    len.push_back(l);
+  }
+  REQUIRE(mid.size() == 6393);
+  const std::vector<double> h = sm::field::testing::eval_field(t10_fields(), 7, mid, t10_context());
+  std::vector<double> ratio(mid.size());
+  std::size_t close = 0, tight = 0;
+  for (std::size_t i = 0; i < mid.size(); ++i) {
+    ratio[i] = len[i] / h[i];
+    if (ratio[i] > 1 / 1.6 && ratio[i] < 1.6) ++close;
+    if (ratio[i] > 1 / 1.25 && ratio[i] < 1.25) ++tight;
+  }
+  std::nth_element(ratio.begin(), ratio.begin() + static_cast<long>(ratio.size() / 2), ratio.end());
+  const double median = ratio[ratio.size() / 2];
+  MESSAGE("t10: median edge/size ratio " << median << "; of " << mid.size() << " edges " << close
+                                         << " within a factor 1.6, " << tight << " within 1.25");
+  CHECK(median > 0.95);
+  CHECK(median < 1.05);
+  CHECK(close > 0.99 * static_cast<double>(mid.size()));
+  CHECK(tight > 0.8 * static_cast<double>(mid.size()));
 }
