@@ -46,6 +46,52 @@ std::vector<Segment> read_segments(const std::string& path) {
 
 }  // namespace
 
+namespace {
+
+// Builds the world model of one GSHHG text export; returns the surface tag.
+int build_world(Model& m, const std::vector<Segment>& segs, int& outer, std::vector<int>& holes) {
+  REQUIRE(m.add_point(1, {0, 0, 0}));
+  REQUIRE(m.add_point(2, {0, 0, 1}));
+  REQUIRE(m.add_polar_sphere(1, 1, 2));
+  const PolarSphere& ps = *m.geometry(1)->polar();
+  for (const Segment& s : segs) {
+    std::vector<int> ids;
+    for (std::size_t i = 0; i + 1 < s.pts.size(); ++i) {
+      const int t = m.new_point_tag();
+      const Vec2 uv = ps.param_from_lonlat(s.pts[i]);
+      REQUIRE(m.add_point(t, {uv.x, uv.y, 0}));
+      ids.push_back(t);
+    }
+    ids.push_back(ids.front());
+    const int c = m.new_curve_tag();
+    REQUIRE(m.add_curve(c, CurveKind::BSpline, ids));
+    const int l = m.new_loop_tag();
+    REQUIRE(m.add_curve_loop(l, {c}));
+    if (s.wraps_pole) outer = l;
+    else holes.push_back(l);
+  }
+  std::vector<int> loops{outer};
+  loops.insert(loops.end(), holes.begin(), holes.end());
+  const int s = m.new_surface_tag();
+  const GeoStatus st = m.add_plane_surface(s, loops);
+  REQUIRE_MESSAGE(st.ok(), (st.ok() ? "" : st.error().message));
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("world model: world_l.txt (5,741 low-resolution coastlines) gives one valid face") {
+  const std::vector<Segment> segs = read_segments(std::string(SM_SHARED_DATA) + "/gshhg/world_l.txt");
+  REQUIRE(segs.size() == 5741);
+  Model m;
+  int outer = 0;
+  std::vector<int> holes;
+  const int s = build_world(m, segs, outer, holes);
+  CHECK(holes.size() == 5740);
+  CHECK(m.surface(s)->geometry == 1);
+  CHECK(m.curves().size() == 5741);
+}
+
 TEST_CASE("world model: world_c.txt as closed BSplines on a PolarSphere, Antarctica outer") {
   const std::vector<Segment> segs = read_segments(std::string(SM_SHARED_DATA) + "/gshhg/world_c.txt");
   REQUIRE(segs.size() == 743);
