@@ -35,12 +35,15 @@ std::vector<std::string> ImportReport::lines() const {
       case RepairKind::MergedIslands: what = "islands merged across a strait narrower than the accuracy"; break;
       case RepairKind::NarrowStrait: what = "strait narrower than the accuracy kept open"; break;
       case RepairKind::OutsideWater: what = "island outside every water surface dropped"; break;
+      case RepairKind::SplineHull: what = "original points put back where two spline spans could cross"; break;
+      case RepairKind::SplineMayCross: what = "the B-splines may cross here (span hulls overlap on the source data)"; break;
     }
     out.push_back(fmt::format("record {} (id {}) at lon {:.5f} lat {:.5f}: {}{}", e.record, e.id, e.where.lon,
                               e.where.lat, what,
                               e.kind == RepairKind::NarrowStrait || e.kind == RepairKind::MergedIslands
                                   ? fmt::format(" (width {:.0f} m)", e.value)
-                              : e.kind == RepairKind::Refined    ? fmt::format(" ({} points)", e.value)
+                              : e.kind == RepairKind::Refined || e.kind == RepairKind::SplineHull
+                                  ? fmt::format(" ({} points)", e.value)
                                                                  : std::string()));
   }
   return out;
@@ -207,6 +210,7 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
   ro.radius = opt.radius;
   ro.strait_factor = opt.strait_factor;
   ro.close_straits = opt.close_straits;
+  ro.check_splines = opt.check_splines;
   auto rounds = repair_loops(curves, loops, ro, rep.repair);
   if (!rounds) {
     CoastError e = rounds.error();

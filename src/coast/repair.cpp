@@ -11,6 +11,7 @@
 
 #include "coast/intersections.h"
 #include "coast/polygon2d.h"
+#include "coast/spline_check.h"
 #include "mesh/predicates.h"
 
 namespace sm::coast {
@@ -276,6 +277,67 @@ bool unite_island_with_coast(std::vector<WorkCurve>& curves, WorkLoop& island, c
   return true;
 }
 
+// One pass of the spline-hull check on intersection-free polygons. Puts original points
+// back on the control segments around overlapping span hulls; returns true when nothing
+// was put back (done), after logging the overlaps left on source data.
+bool spline_pass(std::vector<WorkCurve>& curves, const std::vector<WorkLoop>& loops,
+                 const std::vector<std::vector<Vec2>>& polys, const std::vector<std::vector<LoopVertexRef>>& refs,
+                 std::size_t round, std::vector<RepairEntry>& log) {
+  std::vector<std::vector<std::uint32_t>> starts(loops.size());
+  std::vector<SplineLoop> sl(loops.size());
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    const auto& r = refs[l];
+    for (std::uint32_t i = 0; i < r.size(); ++i)
+      if (i == 0 || r[i].curve != r[i - 1].curve) starts[l].push_back(i);
+    sl[l].pts = polys[l];
+    sl[l].piece_start = starts[l];
+    sl[l].periodic = loops[l].curves.size() == 1 && !loops[l].dead && curves[loops[l].curves[0]].periodic;
+  }
+  const std::vector<HullOverlap> over = find_hull_overlaps(sl);
+  if (over.empty()) return true;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> inserts;
+  std::vector<std::uint32_t> idx;
+  std::vector<const HullOverlap*> stuck;
+  for (const HullOverlap& o : over) {
+    bool any = false;
+    for (const auto& [l, s] : {std::pair{o.loop_a, o.seg_a}, std::pair{o.loop_b, o.seg_b}}) {
+      const auto n = static_cast<std::uint32_t>(polys[l].size());
+      for (std::uint32_t d : {n - 1, 0u, 1u}) {   // the span's control segments s-1, s, s+1
+        const LoopVertexRef r = refs[l][(s + d) % n];
+        refine_indices(curves[r.curve], r.k, round, idx);
+        for (std::uint32_t i : idx) inserts.push_back({r.curve, i});
+        any |= !idx.empty();
+      }
+    }
+    if (!any) stuck.push_back(&o);
+  }
+  if (inserts.empty()) {
+    // One warning per pair of loops.
+    std::uint32_t la = 0xFFFFFFFFu, lb = 0xFFFFFFFFu;
+    for (const HullOverlap* o : stuck) {
+      if (o->loop_a == la && o->loop_b == lb) continue;
+      la = o->loop_a;
+      lb = o->loop_b;
+      const WorkCurve& c = curves[refs[la][o->seg_a].curve];
+      log.push_back({RepairKind::SplineMayCross, c.record, c.id, uv_to_lonlat(o->where), 0});
+    }
+    return true;
+  }
+  std::sort(inserts.begin(), inserts.end());
+  inserts.erase(std::unique(inserts.begin(), inserts.end()), inserts.end());
+  for (std::size_t i = 0; i < inserts.size();) {
+    const std::uint32_t ci = inserts[i].first;
+    WorkCurve& c = curves[ci];
+    std::size_t j = i;
+    while (j < inserts.size() && inserts[j].first == ci) c.keep.push_back(inserts[j++].second);
+    std::sort(c.keep.begin(), c.keep.end());
+    c.keep.erase(std::unique(c.keep.begin(), c.keep.end()), c.keep.end());
+    log.push_back({RepairKind::SplineHull, c.record, c.id, c.full[inserts[i].second], static_cast<double>(j - i)});
+    i = j;
+  }
+  return false;
+}
+
 double mean_gamma(const WorkCurve& c) {
   double g = 0;
   for (double x : c.gamma) g += x;
@@ -316,7 +378,12 @@ Result<std::size_t> repair_loops(std::vector<WorkCurve>& curves, std::vector<Wor
   for (;; ++round) {
     rebuild();
     const std::vector<SegmentHit> hits = find_intersections(polys);
-    if (hits.empty()) break;
+    if (hits.empty()) {
+      if (!opt.check_splines || static_cast<int>(round) >= opt.max_rounds ||
+          spline_pass(curves, loops, polys, refs, round, log))
+        break;
+      continue;   // points were put back: check the polygons again
+    }
     if (static_cast<int>(round) >= opt.max_rounds)
       return CoastError{"repair", static_cast<std::int64_t>(curves[refs[hits[0].loop_a][0].curve].record),
                         fmt::format("{} intersections left after {} repair rounds", hits.size(), round),

@@ -35,6 +35,9 @@ struct RepairOptions {
   double radius = geo::kEarthRadius;
   double strait_factor = 1.0;
   bool close_straits = false;
+  /// Also refine where the convex hulls of two B-spline spans overlap (spline_check.h);
+  /// overlaps left on original data are reported as SplineMayCross.
+  bool check_splines = false;
 };
 
 /// The (u,v) polygon of a loop (first point not repeated) and, per vertex, the curve and
