@@ -268,12 +268,15 @@ void Builder::insert(std::uint32_t p, std::uint32_t t0) {
   // (points are numbered in insertion order). A heuristic with inexact
   // arithmetic: it only picks where the exact walk starts.
   const Vec2 pp = pos(p), dq = p + 1 < pts_.size() ? pos(p + 1) - pp : Vec2{};
-  double best = -1e300;
+  // (Scores may overflow near the double range: the first real triangle
+  // stands unless a score is strictly better.)
+  bool have = false;
+  double best = 0;
   for (std::size_t i = 0; i < k; ++i) {
     const Bound& bd = bound_[i];
     if (bd.a == kGhost || bd.b == kGhost) continue;
-    const double score = dot(pos(bd.a) + pos(bd.b) - 2.0 * pp, dq);
-    if (score > best) best = score, last_ = cavity_[i];
+    const double score = dot(0.5 * pos(bd.a) + 0.5 * pos(bd.b) - pp, dq);
+    if (!have || score > best) best = score, last_ = cavity_[i], have = true;
   }
 }
 
@@ -383,8 +386,13 @@ std::vector<std::uint32_t> brio_order(const std::vector<Vec2>& xy, std::uint64_t
   // axis plus 4 round bits keep the key within 32 bits.
   int bits = 4;
   while (bits < 12 && (std::uint64_t{1} << (2 * bits)) < 16 * std::uint64_t{n}) bits += 4;
-  const double span = std::max(x1 - x0, y1 - y0);
-  const double scale = span > 0 ? ((1u << bits) - 1) / span : 0.0;
+  // Halves keep the span finite for coordinates near the double range.
+  const double half_span = std::max(0.5 * x1 - 0.5 * x0, 0.5 * y1 - 0.5 * y0);
+  const double scale = half_span > 0 ? ((1u << bits) - 1) / half_span : 0.0;
+  auto cell = [&](double v, double v0) {
+    const double q = (0.5 * v - 0.5 * v0) * scale;  // in [0, 2^bits - 1], never NaN
+    return std::min(static_cast<std::uint32_t>(std::max(q, 0.0)), (1u << bits) - 1);
+  };
   // BRIO: a point joins round `level` with probability 2^-(level+1) (a coin
   // flipped until heads); rounds go from the highest level, a few dozen
   // points, to level 0, half of them. One stable radix sort on
@@ -396,8 +404,7 @@ std::vector<std::uint32_t> brio_order(const std::vector<Vec2>& xy, std::uint64_t
   std::vector<std::uint64_t> keys(n);
   for (std::uint32_t i = 0; i < n; ++i) {
     const Vec2 p = xy[i];
-    const auto qx = std::min(static_cast<std::uint32_t>((p.x - x0) * scale), (1u << bits) - 1);
-    const auto qy = std::min(static_cast<std::uint32_t>((p.y - y0) * scale), (1u << bits) - 1);
+    const std::uint32_t qx = cell(p.x, x0), qy = cell(p.y, y0);
     const int level = std::min(std::countr_zero(rng.next() | 0x80000000u), rounds);
     const std::uint64_t key = std::uint64_t(rounds - level) << (2 * bits) | hilbert_index(qx, qy, bits);
     keys[i] = key << 32 | i;

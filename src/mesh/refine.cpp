@@ -5,6 +5,8 @@
 #include "mesh/refine.h"
 
 #include <algorithm>
+#include <cmath>
+#include <string>
 #include <vector>
 
 #include "mesh/geometry.h"
@@ -57,6 +59,10 @@ void Refiner::consider(std::uint32_t t) {
   const Vec2 a = m_.pos(m_.vertex(TriId{t}, 0)), b = m_.pos(m_.vertex(TriId{t}, 1)), c = m_.pos(m_.vertex(TriId{t}, 2));
   const Vec2 cc = circumcentre(a, b, c);
   const double h = size_at(cc);
+  if (!(h > 0) || !std::isfinite(h)) {
+    if (res_.error.empty()) res_.error = "mesh size must be positive and finite (got " + std::to_string(h) + ")";
+    return;
+  }
   const double q = norm2(cc - a) / (h * h);
   if (q > opt_.radius_limit * opt_.radius_limit) {
     heap_.push_back({q, t, stamp_[t]});
@@ -166,7 +172,7 @@ void Refiner::run() {
   stamp_.assign(m_.num_slots(), 0);
   for (std::uint32_t t = 0; t < m_.num_slots(); ++t)
     if (m_.alive(TriId{t})) consider(t);
-  while (!heap_.empty()) {
+  while (!heap_.empty() && res_.error.empty()) {
     std::pop_heap(heap_.begin(), heap_.end());
     const Entry top = heap_.back();
     heap_.pop_back();

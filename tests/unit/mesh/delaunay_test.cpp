@@ -214,3 +214,16 @@ TEST_CASE("delaunay: Hilbert index is a curve through adjacent cells; BRIO order
   std::sort(order.begin(), order.end());
   for (std::uint32_t i = 0; i < order.size(); ++i) REQUIRE(order[i] == i);
 }
+
+TEST_CASE("delaunay: coordinates near the ends of the double range") {
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> U(-1, 1);
+  for (double scale : {1e-300, 1e300, 1.7e308}) {
+    TriangleStore m;
+    for (int i = 0; i < 300; ++i) m.add_vertex({scale * U(rng), scale * U(rng)});
+    for (int i = 0; i < 20; ++i) m.add_vertex({scale * (-0.5 + 0.05 * i), scale * 0.25});  // a collinear run
+    const auto r = delaunay(m);
+    REQUIRE(r.ok());
+    check_all(m, m.num_vertices());
+  }
+}

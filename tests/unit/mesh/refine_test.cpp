@@ -90,3 +90,18 @@ TEST_CASE("refine: square with circular holes and a graded size") {
     CHECK(norm(m.xy[v] - Vec2{0.5, 0.5}) >= 0.2 * (1 - 1e-12) * std::cos(M_PI / std::ceil(2 * M_PI * 0.2 / 0.01)));
   }
 }
+
+TEST_CASE("refine: a bad size is an error, not a hang") {
+  TriangleStore m;
+  const Loop sq = testing::polygon_loop(m, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.25, false);
+  REQUIRE(testing::boundary_mesh(m, {sq}));
+  RefineOptions opt;
+  opt.size_at = [](Vec2 p) { return p.x > 0.5 ? 0.0 : 0.1; };
+  CHECK_FALSE(refine_del2d(m, opt).ok());
+  opt.size_at = [](Vec2) { return std::nan(""); };
+  CHECK_FALSE(refine_del2d(m, opt).ok());
+  opt.size_at = nullptr;
+  opt.size = -1;
+  CHECK_FALSE(refine_del2d(m, opt).ok());
+  CHECK(check_topology(m).ok());
+}
