@@ -270,3 +270,23 @@ TEST_CASE("interp: deep expressions evaluate without exhausting the stack") {
   r = run_script("Macro R\nCall R;\nReturn\nCall R;\n");
   CHECK(r.rendered.find("... 188 more frames ...") != std::string::npos);
 }
+
+TEST_CASE("interp: per-run limits") {
+  sm::interp::RunSettings settings;
+  settings.limits.max_statements = 1000;
+  settings.limits.max_list_size = 50;
+  settings.limits.max_string_size = 10;
+  settings.limits.max_call_depth = 5;
+  auto r = run_script("For i In {1:2000}\nEndFor\n", "t.geo", settings);
+  CHECK(r.kinds.at(0) == "1:1 limit-exceeded");
+  r = run_script("l[] = {1:100};\n", "t.geo", settings);
+  CHECK(r.kinds.at(0) == "1:8 limit-exceeded");
+  r = run_script("l[] = LinSpace(0, 1, 60);\n", "t.geo", settings);
+  CHECK(r.kinds.at(0) == "1:22 builtin-error");
+  r = run_script("s = StrCat(\"abcdef\", \"ghijkl\");\n", "t.geo", settings);
+  CHECK(r.kinds.at(0) == "1:5 builtin-error");
+  r = run_script("n = 0;\nMacro R\nn++;\nCall R;\nReturn\nCall R;\n", "t.geo", settings);
+  CHECK(r.kinds.at(0) == "4:1 call-too-deep");
+  r = run_script("For i In {1:10}\nEndFor\nl[] = {1:40};\ns = \"short\";\n", "t.geo", settings);
+  CHECK(r.ok);
+}
