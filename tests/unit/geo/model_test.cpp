@@ -422,3 +422,22 @@ TEST_CASE("In BoundingBox queries (Gmsh's bb.geo)") {
   CHECK(m.in_bounding_box(2, lo, {0.9, 1.1, 0.1}).empty());
   CHECK(m.curve_bounding_box(99).empty());
 }
+
+TEST_CASE("Coherence tolerance is Geometry.Tolerance x bounding-box diagonal (Gmsh's co.geo)") {
+  // Gmsh 4.8.4: points (0,0,0), (2,0,0), (0,d,0); Coherence merges point 3 for d = 5e-9 and
+  // 2e-8 (eps = 1e-8 x 2) and keeps it for d = 5e-8.
+  for (auto [d, merged] : {std::pair{5e-9, true}, std::pair{2e-8, true}, std::pair{5e-8, false}}) {
+    Model m;
+    REQUIRE(m.add_point(1, {0, 0, 0}));
+    REQUIRE(m.add_point(2, {2, 0, 0}));
+    REQUIRE(m.add_point(3, {0, d, 0}));
+    m.coherence();
+    CHECK((m.vertex(3) == nullptr) == merged);
+  }
+  Model m;
+  m.options().tolerance = 1e-3;
+  REQUIRE(m.add_point(1, {0, 0, 0}));
+  REQUIRE(m.add_point(2, {2, 0, 0}));
+  REQUIRE(m.add_point(3, {0, 1e-3, 0}));
+  CHECK(m.coherence() == 1);
+}
