@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <set>
 
 #include "mesh/cdt.h"
 #include "mesh/check.h"
@@ -176,4 +177,83 @@ TEST_CASE("cdt: outer loop with holes, either orientation; inconsistent loops fa
   REQUIRE(d2.ok());
   CHECK(area(only) == doctest::Approx(0.09));
   CHECK(copy.num_triangles() == m.num_triangles() + d.removed);  // unchanged on failure
+}
+
+namespace {
+
+// Exact for small integers: proper crossing or overlap of two segments.
+bool segments_meet(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const Sign o1 = orient2d(a, b, c), o2 = orient2d(a, b, d), o3 = orient2d(c, d, a), o4 = orient2d(c, d, b);
+  if (o1 != o2 && o3 != o4 && o1 != Sign::Zero && o2 != Sign::Zero && o3 != Sign::Zero && o4 != Sign::Zero)
+    return true;
+  auto on = [](Vec2 p, Vec2 q, Vec2 r) {  // r on closed segment pq, collinear assumed
+    return std::min(p.x, q.x) <= r.x && r.x <= std::max(p.x, q.x) && std::min(p.y, q.y) <= r.y &&
+           r.y <= std::max(p.y, q.y);
+  };
+  // Touching in the interior of either segment counts as meeting.
+  if (o1 == Sign::Zero && on(a, b, c) && !(c == a) && !(c == b)) return true;
+  if (o2 == Sign::Zero && on(a, b, d) && !(d == a) && !(d == b)) return true;
+  if (o3 == Sign::Zero && on(c, d, a) && !(a == c) && !(a == d)) return true;
+  if (o4 == Sign::Zero && on(c, d, b) && !(b == c) && !(b == d)) return true;
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("cdt: random lattices with random non-crossing constraints") {
+  std::mt19937_64 rng(77);
+  for (int trial = 0; trial < 150; ++trial) {
+    const int side = 4 + static_cast<int>(rng() % 8);
+    TriangleStore m;
+    std::set<std::pair<int, int>> used;
+    const int n = 10 + static_cast<int>(rng() % 60);
+    for (int i = 0; i < n; ++i) {
+      const int x = static_cast<int>(rng() % side), y = static_cast<int>(rng() % side);
+      if (used.insert({x, y}).second) m.add_vertex({double(x), double(y)});
+    }
+    if (!delaunay(m).ok()) continue;
+    // Greedy set of constraints that pairwise neither cross nor touch
+    // (a vertex exactly on a constraint is fine: it gets split).
+    std::vector<Edge> edges;
+    for (int k = 0; k < 40; ++k) {
+      const VertexId a{static_cast<std::uint32_t>(rng() % m.num_vertices())};
+      const VertexId b{static_cast<std::uint32_t>(rng() % m.num_vertices())};
+      if (a == b) continue;
+      bool ok = true;
+      for (auto [c, d] : edges)
+        if (segments_meet(m.xy[a.value], m.xy[b.value], m.xy[c.value], m.xy[d.value])) ok = false;
+      if (ok) edges.push_back({a, b});
+    }
+    const auto r = recover_edges(m, PlanarGeometry{&m.xy}, edges);
+    REQUIRE(r.ok());
+    REQUIRE(r.crossings.empty());
+    INFO(check_topology(m).error);
+    REQUIRE(check_topology(m).ok());
+    REQUIRE(check_delaunay(m, PlanarGeometry{&m.xy}, true).ok());
+    // Each constraint is present, or split through the vertices on it.
+    for (std::uint32_t i = 0; i < edges.size(); ++i) {
+      bool split = false;
+      for (const auto& t : r.touching) split |= t.edge == i;
+      if (!split) CHECK(check_constraints(m, {edges[i]}).ok());
+    }
+    // And a crossing constraint added now is reported.
+    if (!edges.empty()) {
+      const auto [a, b] = edges[0];
+      for (std::uint32_t v = 0; v < m.num_vertices(); ++v)
+        for (std::uint32_t w = v + 1; w < m.num_vertices(); ++w) {
+          const Vec2 p = m.xy[v], q = m.xy[w];
+          const Sign o1 = orient2d(m.xy[a.value], m.xy[b.value], p), o2 = orient2d(m.xy[a.value], m.xy[b.value], q);
+          const Sign o3 = orient2d(p, q, m.xy[a.value]), o4 = orient2d(p, q, m.xy[b.value]);
+          if (o1 != Sign::Zero && o2 != Sign::Zero && o1 != o2 && o3 != Sign::Zero && o4 != Sign::Zero && o3 != o4) {
+            TriangleStore copy = m;
+            const auto rc = recover_edges(copy, PlanarGeometry{&copy.xy}, {{VertexId{v}, VertexId{w}}});
+            REQUIRE(rc.ok());
+            const bool split0 = std::any_of(r.touching.begin(), r.touching.end(), [](const VertexOnEdge& t) { return t.edge == 0; });
+            if (!split0) CHECK(!rc.crossings.empty());
+            CHECK(check_topology(copy).ok());
+            v = w = m.num_vertices();  // one probe per trial
+          }
+        }
+    }
+  }
 }

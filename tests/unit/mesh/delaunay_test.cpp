@@ -227,3 +227,32 @@ TEST_CASE("delaunay: coordinates near the ends of the double range") {
     check_all(m, m.num_vertices());
   }
 }
+
+TEST_CASE("delaunay: random small lattices (duplicates, collinear and cocircular everywhere)") {
+  std::mt19937_64 rng(2024);
+  for (int trial = 0; trial < 300; ++trial) {
+    const int side = 2 + static_cast<int>(rng() % 7), n = 3 + static_cast<int>(rng() % 60);
+    TriangleStore m;
+    for (int i = 0; i < n; ++i) m.add_vertex({double(rng() % side) * 0.1, double(rng() % side) * 0.3});
+    const auto r = delaunay(m, DelaunayOptions{rng()});
+    std::set<std::pair<double, double>> distinct;
+    for (const Vec2& p : m.xy) distinct.insert({p.x, p.y});
+    if (!r.ok()) {
+      // Only when every point is collinear (or there are fewer than 3).
+      bool collinear = true;
+      for (std::uint32_t i = 2; i < m.num_vertices() && collinear; ++i)
+        for (std::uint32_t j = 1; j < i && collinear; ++j)
+          collinear = orient2d(m.xy[0], m.xy[j], m.xy[i]) == Sign::Zero || m.xy[0] == m.xy[j];
+      CHECK(collinear);
+      continue;
+    }
+    CHECK(r.duplicates.size() == n - distinct.size());
+    check_all(m, static_cast<std::uint32_t>(distinct.size()));
+    CHECK(globally_delaunay(m));
+    TriangleStore m2;
+    m2.xy = m.xy;
+    REQUIRE(delaunay(m2, DelaunayOptions{rng()}).ok());
+    // Duplicates may keep a different copy; compare when there are none.
+    if (r.duplicates.empty()) CHECK(canonical(m) == canonical(m2));
+  }
+}
