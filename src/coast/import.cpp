@@ -67,6 +67,16 @@ WorkCurve make_curve(CoarseRing&& cr, bool open_boundary, const geo::PolarSphere
   return w;
 }
 
+// Every point on one line (exact): a loop without area.
+bool all_collinear(const std::vector<Vec2>& p) {
+  std::size_t j = 1;
+  while (j < p.size() && p[j] == p[0]) ++j;
+  if (j == p.size()) return true;
+  for (std::size_t i = j + 1; i < p.size(); ++i)
+    if (orient2d(p[0], p[j], p[i]) != Sign::Zero) return false;
+  return true;
+}
+
 void reverse_curve(WorkCurve& c) {
   const auto n = static_cast<std::uint32_t>(c.full.size());
   std::reverse(c.full.begin(), c.full.end());
@@ -147,7 +157,7 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
   co.radius = opt.radius;
   co.min_area_km2 = opt.min_area_km2;
   co.min_points = opt.min_points;
-  const std::size_t n_whole = to_coarsen.size() - (piece_span.empty() ? 0 : to_coarsen.size() - piece_span.front().first);
+  const std::size_t n_whole = piece_span.empty() ? to_coarsen.size() : piece_span.front().first;
   std::vector<Ring> whole(std::make_move_iterator(to_coarsen.begin()),
                           std::make_move_iterator(to_coarsen.begin() + static_cast<long>(n_whole)));
   std::vector<Ring> pieces(std::make_move_iterator(to_coarsen.begin() + static_cast<long>(n_whole)),
@@ -197,7 +207,7 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
   for (std::size_t l = 0; l < loops.size(); ++l) {
     WorkLoop& loop = loops[l];
     loop_polygon(curves, loop, poly, nullptr);
-    if (poly.size() < 3 || ring_orientation(poly) == Sign::Zero) {
+    if (poly.size() < 3 || all_collinear(poly)) {
       const WorkCurve& c = curves[loop.curves[0]];
       loop.dead = true;
       rep.repair.push_back({RepairKind::DroppedIsland, c.record, c.id, c.full.front(), 0});
