@@ -41,6 +41,8 @@ struct TempDir {
 };
 
 fs::path unique_temp_dir() {
+  // Process id + a counter keep concurrent readers (threads, processes) apart; the
+  // counter carries no state beyond name uniqueness.
   static std::atomic<unsigned> counter{0};
   std::error_code ec;
   const fs::path base = fs::temp_directory_path(ec);

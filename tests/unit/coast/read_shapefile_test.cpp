@@ -8,6 +8,8 @@
 
 #include "coast/file_bytes.h"
 
+#include <shapefil.h>
+
 using namespace sm;
 using namespace sm::coast;
 
@@ -113,6 +115,49 @@ TEST_CASE("shapefile: broken files are located errors") {
     write("e.shp", junk, 0);
     CHECK_FALSE(read_shapefile((dir / "e.shp").string()).ok());
     CHECK_FALSE(read_shapefile((dir / "missing.shp").string()).ok());
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("shapefile: PolygonZ and PolyLineZ written from real data read back the same") {
+  namespace fs = std::filesystem;
+  auto src = read_shapefile(kNe + "ne_110m_land.shp");
+  REQUIRE(src.ok());
+  const fs::path dir = fs::temp_directory_path() / "sm_coast_shpz_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  for (int type : {SHPT_POLYGONZ, SHPT_ARCZ}) {
+    const std::string base = (dir / (type == SHPT_POLYGONZ ? "landz" : "linez")).string();
+    SHPHandle h = SHPCreate(base.c_str(), type);
+    REQUIRE(h != nullptr);
+    // One multi-part record of the first 3 rings (closed, first point repeated), z = 7.
+    std::vector<double> x, y, z;
+    std::vector<int> starts;
+    for (int r = 0; r < 3; ++r) {
+      starts.push_back(static_cast<int>(x.size()));
+      const auto& pts = src->rings[static_cast<std::size_t>(r)].pts;
+      for (std::size_t k = 0; k <= pts.size(); ++k) {
+        const auto p = pts[k % pts.size()];
+        x.push_back(p.lon), y.push_back(p.lat), z.push_back(7.0);
+      }
+    }
+    SHPObject* o = SHPCreateObject(type, -1, 3, starts.data(), nullptr, static_cast<int>(x.size()), x.data(), y.data(),
+                                   z.data(), nullptr);
+    SHPWriteObject(h, -1, o);
+    SHPDestroyObject(o);
+    SHPClose(h);
+    ShapefileInfo info;
+    auto back = read_shapefile(base + ".shp", &info);
+    REQUIRE_MESSAGE(back.ok(), (back.ok() ? "" : back.error().to_string()));
+    CHECK(info.shape_type == type);
+    REQUIRE(back->rings.size() == 3);
+    for (std::size_t r = 0; r < 3; ++r) {
+      CHECK(back->rings[r].record == 0);
+      CHECK(back->rings[r].part == static_cast<int>(r));
+      CHECK(back->rings[r].closed);
+      REQUIRE(back->rings[r].pts.size() == src->rings[r].pts.size());
+      CHECK(back->rings[r].pts[1].lon == src->rings[r].pts[1].lon);
+    }
   }
   fs::remove_all(dir);
 }
