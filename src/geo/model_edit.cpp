@@ -215,6 +215,12 @@ int Model::coherence() {
     curves_.erase(from);
     ++merged;
   }
+  // Measured on gmsh 4.8.4: with Geometry.OldNewReg = 1 the next tags after a merge follow
+  // the largest surviving tag; with OldNewReg = 0 the high-water marks stay.
+  if (options_.old_new_reg) {
+    if (!replace.empty()) max_tag_[0] = vertices_.empty() ? 0 : vertices_.rbegin()->first;
+    if (!curve_replace.empty()) max_tag_[1] = curves_.empty() ? 0 : curves_.rbegin()->first;
+  }
   return merged;
 }
 

@@ -441,3 +441,20 @@ TEST_CASE("Coherence tolerance is Geometry.Tolerance x bounding-box diagonal (Gm
   REQUIRE(m.add_point(3, {0, 1e-3, 0}));
   CHECK(m.coherence() == 1);
 }
+
+TEST_CASE("next tags after Coherence follow Geometry.OldNewReg (gmsh_queries/duplicata_oldnewreg.geo)") {
+  for (bool old_new_reg : {true, false}) {
+    Model m;
+    m.options().old_new_reg = old_new_reg;
+    REQUIRE(m.add_point(1, {0, 0, 0}));
+    REQUIRE(m.add_point(2, {1, 0, 0}));
+    REQUIRE(m.add_point(3, {1, 1, 0}));
+    REQUIRE(m.add_curve(1, CurveKind::Line, {1, 2}));
+    REQUIRE(m.add_curve(2, CurveKind::Line, {2, 3}));
+    REQUIRE(m.add_point(7, {5, 5, 5}));
+    REQUIRE(m.add_point(8, {5, 5, 5}));   // merged into 7 by the transform's coherence
+    REQUIRE(m.translate({{0, 1}}, {0, 0, 0}));
+    // Gmsh: the mark follows the survivors with OldNewReg = 1 and stays with 0.
+    CHECK(m.new_point_tag() == (old_new_reg ? 8 : 9));
+  }
+}

@@ -9,6 +9,9 @@ for f in tags physicals_boundary_delete duplicata_transforms duplicata_tags spli
   echo "--- unrolled:" >> "$f.out"
   cat /tmp/gmsh_queries_$$.geo_unrolled >> "$f.out"
 done
+for onr in 1 0; do
+  gmsh -0 duplicata_oldnewreg.geo -setnumber onr $onr -o /tmp/gmsh_queries_$$.geo_unrolled 2>&1 | grep -v '^Info'
+done > duplicata_oldnewreg.out
 rm -f /tmp/gmsh_queries_$$.geo_unrolled
 /usr/bin/python3 - > filling_surfaces.out <<'PY'
 import gmsh
