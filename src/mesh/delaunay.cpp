@@ -328,14 +328,33 @@ void Builder::run() {
   finish();
 }
 
-// Moves the real triangles into the store in slot order (deterministic),
-// drops the ghosts (their real neighbours become hull sides) and sets out_side.
+// Drops the ghosts and writes the real triangles into the store. The few
+// ghosts (one per hull edge) are unlinked from their real neighbours, then
+// the last real triangles move into the ghosts' low slots, so the final pass
+// is one streaming copy without an id map (deterministic: it depends only on
+// the slot layout).
 void Builder::finish() {
   const auto slots = static_cast<std::uint32_t>(tri_.size());
-  std::vector<std::uint32_t> new_id(slots, kNo);
-  std::uint32_t nt = 0;
+  std::vector<std::uint32_t> ghosts;
   for (std::uint32_t t = 0; t < slots; ++t)
-    if (!is_ghost(tri_[t])) new_id[t] = nt++;
+    if (is_ghost(tri_[t])) ghosts.push_back(t);
+  for (std::uint32_t g : ghosts)
+    for (std::uint32_t e = 0; e < 3; ++e) {
+      const std::uint32_t o = tri_[g].n[e];
+      if (!is_ghost(tri_[o >> 2])) tri_[o >> 2].n[o & 3] = kNo;
+    }
+  const std::uint32_t nt = slots - static_cast<std::uint32_t>(ghosts.size());
+  std::uint32_t mover = slots;
+  for (std::uint32_t g : ghosts) {
+    if (g >= nt) break;
+    do --mover;
+    while (is_ghost(tri_[mover]));
+    tri_[g] = tri_[mover];
+    for (std::uint32_t e = 0; e < 3; ++e) {
+      const std::uint32_t o = tri_[g].n[e];
+      if (o != kNo) tri_[o >> 2].n[o & 3] = g << 2 | e;
+    }
+  }
   m_.corner.resize(3 * std::size_t{nt});
   m_.twin.resize(3 * std::size_t{nt});
   m_.side_flags.assign(3 * std::size_t{nt}, 0);
@@ -343,16 +362,13 @@ void Builder::finish() {
   m_.free_tris.clear();
   // out_side by insertion rank first (sequential writes), then scattered once.
   std::vector<Side> out_local(pts_.size());
-  for (std::uint32_t t = 0; t < slots; ++t) {
-    const std::uint32_t u = new_id[t];
-    if (u == kNo) continue;
+  for (std::uint32_t t = 0; t < nt; ++t) {
     for (std::uint32_t e = 0; e < 3; ++e) {
       const std::uint32_t o = tri_[t].n[e];
-      const std::uint32_t ou = new_id[o >> 2];
       const std::uint32_t k = tri_[t].v[e];
-      m_.corner[3 * u + e] = VertexId{orig_[k]};
-      m_.twin[3 * u + e] = ou == kNo ? Side{} : Side{3 * ou + (o & 3)};
-      out_local[k] = Side{3 * u + e};
+      m_.corner[3 * t + e] = VertexId{orig_[k]};
+      m_.twin[3 * t + e] = o == kNo ? Side{} : Side{3 * (o >> 2) + (o & 3)};
+      out_local[k] = Side{3 * t + e};
     }
   }
   m_.out_side.assign(m_.num_vertices(), Side{});
