@@ -217,9 +217,11 @@ bool unite_island_with_coast(std::vector<WorkCurve>& curves, WorkLoop& island, c
     if (curve_c != 0xFFFFFFFFu && ww.curve != curve_c) return false;
     curve_c = ww.curve;
     const WorkCurve& c = curves[ww.curve];
-    if (c.periodic || c.open_boundary || ww.k + 1 >= c.keep.size()) return false;
+    if (c.open_boundary || (!c.periodic && ww.k + 1 >= c.keep.size())) return false;
     const std::size_t ia = A.keep[wa.k], ic = c.keep[ww.k];
-    if ((ia + 1) % A.full.size() != A.keep[(wa.k + 1) % A.keep.size()] || ic + 1 != c.keep[ww.k + 1]) return false;
+    if ((ia + 1) % A.full.size() != A.keep[(wa.k + 1) % A.keep.size()] ||
+        (ic + 1) % c.full.size() != c.keep[(ww.k + 1) % c.keep.size()])
+      return false;   // both crossed segments must be original
     const Vec2 a0 = pa[sa], a1 = pa[(sa + 1) % pa.size()], c0 = pw[sw], c1 = pw[(sw + 1) % pw.size()];
     const Vec2 r = a1 - a0, q = c1 - c0;
     const double den = cross(r, q);
@@ -230,31 +232,35 @@ bool unite_island_with_coast(std::vector<WorkCurve>& curves, WorkLoop& island, c
   }
   if (std::tie(xs[1].ic, xs[1].tc) < std::tie(xs[0].ic, xs[0].tc)) std::swap(xs[0], xs[1]);
   WorkCurve& c = curves[curve_c];
-  // c between the crossings must run inside the island.
-  const Vec2 probe = xs[0].ic == xs[1].ic ? 0.5 * (xs[0].p + xs[1].p) : c.uv[xs[0].ic + 1];
-  if (!point_in_ring(pa, probe)) return false;
-  // The island's arc in the water: forward or backward from the first crossing.
-  const std::size_t n = A.full.size();
-  std::vector<std::size_t> arc;
-  const bool forward = point_in_ring(pw, A.uv[(xs[0].ia + 1) % n]);
-  if (forward) {
-    for (std::size_t i = (xs[0].ia + 1) % n;; i = (i + 1) % n) {
-      arc.push_back(i);
-      if (i == xs[1].ia || arc.size() > n) break;
-    }
-  } else {
-    if (!point_in_ring(pw, A.uv[xs[0].ia])) return false;
-    for (std::size_t i = xs[0].ia;; i = (i + n - 1) % n) {
-      if (i == xs[1].ia) break;   // xs[1]'s segment starts here: its end is on the arc already
-      arc.push_back(i);
-      if (arc.size() > n) break;
-    }
-    arc.push_back((xs[1].ia + 1) % n);
+  const std::size_t nc = c.full.size();
+  // Which part of c runs under the island: between the crossings (F) or, for a periodic
+  // curve, the rest (R). The part under the island is replaced by its arc in the water.
+  const Vec2 probe_f = xs[0].ic == xs[1].ic ? 0.5 * (xs[0].p + xs[1].p) : c.uv[xs[0].ic + 1];
+  bool replace_f = point_in_ring(pa, probe_f);
+  if (!replace_f) {
+    if (!c.periodic) return false;
+    const Vec2 probe_r = xs[0].ic == xs[1].ic ? c.uv[(xs[1].ic + 1) % nc] : c.uv[(xs[1].ic + 1) % nc];
+    if (!point_in_ring(pa, probe_r)) return false;
   }
-  if (arc.size() > n) return false;
-  std::vector<char> kept_c(c.full.size(), 0), kept_a(n, 0);
+  // Arc of the island in the water from crossing `from` to crossing `to`.
+  const std::size_t n = A.full.size();
+  auto water_arc = [&](const X& from, const X& to, std::vector<std::size_t>& arc) {
+    arc.clear();
+    if (point_in_ring(pw, A.uv[(from.ia + 1) % n])) {
+      for (std::size_t i = (from.ia + 1) % n;; i = (i + 1) % n) {
+        arc.push_back(i);
+        if (i == to.ia || arc.size() > n) break;
+      }
+    } else {
+      if (!point_in_ring(pw, A.uv[from.ia])) return false;
+      for (std::size_t i = from.ia; i != to.ia && arc.size() <= n; i = (i + n - 1) % n) arc.push_back(i);
+      arc.push_back((to.ia + 1) % n);
+    }
+    return arc.size() <= n;
+  };
+  std::vector<std::size_t> arc;
+  std::vector<char> kept_c(nc, 0);
   for (auto i : c.keep) kept_c[i] = 1;
-  for (auto i : A.keep) kept_a[i] = 1;
   WorkCurve M = c;
   M.full.clear();
   M.uv.clear();
@@ -267,11 +273,23 @@ bool unite_island_with_coast(std::vector<WorkCurve>& curves, WorkLoop& island, c
     M.gamma.push_back(g);
   };
   const geo::PolarSphere ps({0, 0, 0}, 1.0);
-  for (std::size_t i = 0; i <= xs[0].ic; ++i) add(c.full[i], c.uv[i], c.gamma[i], kept_c[i] != 0);
-  add(ps.lonlat_from_param(xs[0].p), xs[0].p, c.gamma[xs[0].ic], true);
-  for (std::size_t i : arc) add(A.full[i], A.uv[i], A.gamma[i], true);
-  add(ps.lonlat_from_param(xs[1].p), xs[1].p, c.gamma[xs[1].ic], true);
-  for (std::size_t i = xs[1].ic + 1; i < c.full.size(); ++i) add(c.full[i], c.uv[i], c.gamma[i], kept_c[i] != 0);
+  auto add_x = [&](const X& x) { add(ps.lonlat_from_param(x.p), x.p, c.gamma[x.ic], true); };
+  auto add_c = [&](std::size_t i) { add(c.full[i], c.uv[i], c.gamma[i], kept_c[i] != 0); };
+  if (replace_f) {   // c[0..ic0], X0, water arc X0 -> X1, X1, c[ic1+1..]
+    if (!water_arc(xs[0], xs[1], arc)) return false;
+    for (std::size_t i = 0; i <= xs[0].ic; ++i) add_c(i);
+    add_x(xs[0]);
+    for (std::size_t i : arc) add(A.full[i], A.uv[i], A.gamma[i], true);
+    add_x(xs[1]);
+    for (std::size_t i = xs[1].ic + 1; i < nc; ++i) add_c(i);
+  } else {           // periodic: c[ic0+1..ic1], X1, water arc X1 -> X0, X0
+    if (!water_arc(xs[1], xs[0], arc)) return false;
+    for (std::size_t i = xs[0].ic + 1; i <= xs[1].ic; ++i) add_c(i);
+    add_x(xs[1]);
+    for (std::size_t i : arc) add(A.full[i], A.uv[i], A.gamma[i], true);
+    add_x(xs[0]);
+  }
+  if (M.keep.size() < 3) return false;
   c = std::move(M);
   island.dead = true;
   return true;
@@ -450,7 +468,7 @@ Result<std::size_t> repair_loops(std::vector<WorkCurve>& curves, std::vector<Wor
         if (a != b && !used[a] && !used[b] && !loops[a].dead && !loops[b].dead && loops[a].hole != loops[b].hole) {
           const std::uint32_t isl = loops[a].hole ? a : b, water = loops[a].hole ? b : a;
           const WorkLoop& il = loops[isl];
-          if (il.curves.size() == 1 && curves[il.curves[0]].periodic) {
+          if (il.curves.size() == 1 && curves[il.curves[0]].periodic) {   // an island against water
             const WorkCurve& ci = curves[il.curves[0]];
             const std::size_t rec = ci.record;
             const std::int64_t id = ci.id;

@@ -239,3 +239,20 @@ TEST_CASE("import: a region across the dateline with a variable accuracy field")
   CHECK(near > 0);
   CHECK(far > 0);
 }
+
+TEST_CASE("import: Antarctica's grounding line (level 6) absorbs the ice-shelf islands it crosses") {
+  auto c = read_gshhs(std::string(SM_SHARED_DATA) + "/gshhs/gshhs_c.b");
+  REQUIRE(c.ok());
+  ImportOptions o;
+  o.antarctica_level = 6;
+  o.levels = {1, 2, 3};   // lakes become water surfaces of their own, level-3 islands their holes
+  o.gamma = constant(30e3);
+  auto m = build_coast_model(std::move(*c), o);
+  REQUIRE_MESSAGE(m.ok(), (m.ok() ? "" : m.error().to_string()));
+  double min_lat = 0;
+  for (auto p : m->curves[m->loops[m->surfaces[0].outer].curves[0]].ll) min_lat = std::min(min_lat, p.lat);
+  CHECK(min_lat < -85);   // the grounding line reaches 85.2S (the ice front 78.6S)
+  CHECK(m->report.count(RepairKind::UnitedIslands) >= 1);
+  CHECK(m->surfaces.size() > 100);   // the ocean and the lakes
+  check_model(*m);
+}
