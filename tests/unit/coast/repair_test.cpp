@@ -54,7 +54,7 @@ TEST_CASE("repair: a loop crossing itself in the source loses its twisted sliver
   CHECK(m->curves[m->loops[m->surfaces[0].holes[0]].curves[0]].ll.size() == 6);   // (0.4,51.1) and (0.6,51.1) cut out
 }
 
-TEST_CASE("repair: a tiny island overlapping another is dropped; one crossing the outer loop is an error") {
+TEST_CASE("repair: a tiny island overlapping another is dropped; one through a vertex of the outer loop is an error") {
   const std::vector<geo::LonLat> big{{0, 50}, {1, 50}, {1, 51}, {0, 51}};
   // 100 m square straddling the east coast of `big`.
   const std::vector<geo::LonLat> tiny{{0.9995, 50.5}, {1.0008, 50.5}, {1.0008, 50.5009}, {0.9995, 50.5009}};
@@ -64,7 +64,8 @@ TEST_CASE("repair: a tiny island overlapping another is dropped; one crossing th
   REQUIRE_MESSAGE(m.ok(), (m.ok() ? "" : m.error().to_string()));
   CHECK(m->report.count(RepairKind::DroppedIsland) == 1);
   CHECK(m->surfaces[0].holes.size() == 1);
-  // An island straddling the ring round the South Pole (the ocean's outer loop).
+  // An island straddling the ring round the South Pole through its vertex (0, -70): a
+  // touch plus crossings, which no rule unites.
   const std::vector<geo::LonLat> ice{{0, -70.5}, {1, -70.5}, {1, -69.5}, {0, -69.5}};
   o.gamma = constant(1000);
   auto bad = build_coast_model(with_ocean({ice}), o);
@@ -167,4 +168,17 @@ TEST_CASE("repair: two islands overlapping in the source are united") {
   const std::vector<geo::LonLat> d{{-0.5, 50.2}, {1.5, 50.2}, {1.5, 50.8}, {-0.5, 50.8}};
   auto x = build_coast_model(with_ocean({c, d}), o);
   if (x.ok()) CHECK(x->report.count(RepairKind::UnitedIslands) == 1);
+}
+
+TEST_CASE("repair: an island straddling the ring round the South Pole becomes part of Antarctica") {
+  const std::vector<geo::LonLat> ice{{3, -70.5}, {4, -70.5}, {4, -69.5}, {3, -69.5}};
+  ImportOptions o;
+  o.gamma = constant(1000);
+  auto m = build_coast_model(with_ocean({ice}), o);
+  REQUIRE_MESSAGE(m.ok(), (m.ok() ? "" : m.error().to_string()));
+  CHECK(m->report.count(RepairKind::UnitedIslands) == 1);
+  CHECK(m->surfaces[0].holes.empty());
+  double north = -90;
+  for (auto p : m->curves[m->loops[m->surfaces[0].outer].curves[0]].ll) north = std::max(north, p.lat);
+  CHECK(north == doctest::Approx(-69.5));   // the island's north side is now Antarctica's coast
 }
