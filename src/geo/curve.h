@@ -1,7 +1,5 @@
-// A model edge's geometry (paper section 2): one of Gmsh's built-in curve kinds on the
-// parameter range t in [0,1], either in space or drawn in the (u,v) plane of a surface
-// geometry and mapped to it. Evaluation gives the point and its first two derivatives and
-// costs O(1) for every kind except Bezier (O(n^2) in its degree).
+// A model edge's geometry (paper section 2): one of Gmsh's built-in curve kinds on t in
+// [0,1], in space or drawn in the (u,v) plane of a surface geometry and mapped to it.
 #pragma once
 
 #include "geo/curve_circle.h"
@@ -33,6 +31,8 @@ struct CurveDef {
   std::optional<Vec3> plane_normal;      // Circle/Ellipse "Plane{nx,ny,nz}"
 };
 
+/// Evaluation gives the point and its first two derivatives and costs O(1) for every kind
+/// except Bezier (O(n^2) in its degree).
 class Curve {
  public:
   /// Checks the control points (counts, arcs) and precomputes what evaluation needs.

@@ -1,8 +1,5 @@
-// Gmsh's Circle arc {start, centre, end} (gmsh-reference 3), as measured on Gmsh 4.8.4:
-// radius |start - centre|, plane normal start x end (the short way round, so the angle is
-// at most pi); the optional Plane normal is used only when start, centre and end are
-// collinear (a half circle), and Gmsh's default normal there is +z. Start and end radii
-// differing by more than 10% of their sum is Gmsh's "not cocircular" error.
+// Gmsh's Circle arc {start, centre, end} (gmsh-reference 3) with the construction rules
+// measured on Gmsh 4.8.4.
 #pragma once
 
 #include "geo/error.h"
@@ -17,7 +14,11 @@ struct CircleArc {
   double radius = 0, angle = 0;  // X(t) = c + r(cos(angle t) x + sin(angle t) y)
 };
 
-/// `tag` only names the curve in the error.
+/// Radius |start - centre|, plane normal start x end (the short way round, so the angle is
+/// at most pi); the optional Plane normal is used only when start, centre and end are
+/// collinear (a half circle, always +pi about the normal), and Gmsh's default normal there
+/// is +z. Start and end radii differing by more than 10% of their sum is Gmsh's "not
+/// cocircular" error. `tag` only names the curve in the error.
 GeoResult<CircleArc> make_circle_arc(Vec3 start, Vec3 centre, Vec3 end, std::optional<Vec3> plane_normal,
                                      int tag);
 Jet3 eval_circle_arc(const CircleArc& arc, double t);
