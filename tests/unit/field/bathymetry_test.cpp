@@ -194,3 +194,44 @@ TEST_CASE("bathymetry: bad input is rejected with typed, located errors") {
   CHECK_THROWS_AS(hole.build(1, {}), FieldError);
   std::filesystem::remove_all(dir);
 }
+
+// Every relief file of the shared data set reads, with the value ranges its
+// README gives (and the Ferret files' wrap columns detected).
+TEST_CASE("bathymetry: all shared netCDF grids read with their documented ranges") {
+  struct Case {
+    const char* file;
+    int nlon, nlat;
+    double lo, hi;
+    int period;
+  };
+  const Case cases[] = {
+      {"etopo5_global_0.25deg.nc", 1441, 721, -9565.2, 6324.2, 1440},
+      {"etopo5_global_1deg.nc", 361, 181, -7733.8, 5669.1, 360},
+      {"etopo5_nw_europe_5min.nc", 265, 181, -4834, 2248, 0},
+      {"etopo5_gbr_5min.nc", 193, 205, -4834, 3052, 0},
+      {"etopo5_canadian_arctic_5min.nc", 1081, 361, -3853, 3205, 0},
+      {"etopo60.cdf", 360, 180, -1e9, 1e9, 360},
+      {"etopo20.cdf", 1081, 540, -1e9, 1e9, 1080},
+  };
+  for (const Case& c : cases) {
+    CAPTURE(c.file);
+    const LonLatGrid g = read_netcdf_grid(shared_data(std::string("bathymetry/") + c.file), {});
+    CHECK(g.nlon == c.nlon);
+    CHECK(g.nlat == c.nlat);
+    CHECK(g.period == c.period);
+    double lo = 1e300, hi = -1e300;
+    std::size_t non_finite = 0;
+    for (double v : g.v) {
+      if (!std::isfinite(v)) ++non_finite;
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+    CHECK(non_finite == 0);
+    if (c.lo > -1e9) {
+      CHECK(lo == doctest::Approx(c.lo).epsilon(1e-4));
+      CHECK(hi == doctest::Approx(c.hi).epsilon(1e-4));
+    }
+    CHECK(lo < -3000);
+    CHECK(hi > 2000);
+  }
+}
