@@ -11,7 +11,8 @@
 
 namespace sm::coast {
 
-std::string write_gshhs_plugin_geo(const CoastModel& m, const GshhsPluginOptions& opt) {
+std::string write_gshhs_plugin_geo(const CoastModel& m, const GshhsPluginOptions& opt,
+                                   std::span<const CoastCurve> cut) {
   std::string out;
   auto w = [&out](const std::string& s) { out += s; };
   w("IP = newp;  IL = newl;  ILL = newll;  IS = news;  IFI = newf;\n");
@@ -68,6 +69,19 @@ std::string write_gshhs_plugin_geo(const CoastModel& m, const GshhsPluginOptions
       ids += fmt::format("{}IL + {}", k ? ", " : "", curve_tag[loop.curves[k]]);
     w(fmt::format("Line Loop ( ILL + {} ) = {{ {} }};\n", l, ids));
   }
+  // Cut coastlines (negative field values): curves without a loop.
+  for (const CoastCurve& c : cut) {
+    const std::size_t first = ip;
+    for (Vec2 p : c.uv) {
+      if (opt.write_polar_sphere == -2) p = plane.from_polar(p);
+      w(fmt::format("Point ( IP + {} ) = {{{:.16g}, {:.16g}, 0 }};\n", ip++, p.x, p.y));
+    }
+    const std::size_t tag = il++;
+    if (c.uv.size() == 2)
+      w(fmt::format("Line ( IL + {} ) = {{ IP + {}, IP + {} }};\n", tag, first, ip - 1));
+    else
+      w(fmt::format("BSpline ( IL + {} ) = {{ IP + {} : IP + {} }};\n", tag, first, ip - 1));
+  }
   // The Plane Surfaces Gmsh 2.6 meant to write (its buffer was cleared before writing).
   for (std::size_t s = 0; s < m.surfaces.size(); ++s) {
     std::string ids = fmt::format("ILL + {}", m.surfaces[s].outer);
@@ -110,17 +124,85 @@ Result<GshhsPluginResult> run_gshhs_plugin(const GshhsPluginOptions& opt) {
   if (!data) return data.error();
   if (opt.format == "loops2")
     for (Ring& r : data->rings) r.level = 1;   // loops2 has no levels: every loop is a coastline
+  // The plugin's field semantics: 0 (or no field) keeps every point, < 0 cuts the loop.
+  constexpr double kKeepAll = 1e-3;   // metres
+  const AccuracyFn field = opt.field;
+  const AccuracyFn positive = [field](std::span<const Vec3> pts, std::span<double> g) {
+    if (field)
+      field(pts, g);
+    else
+      for (double& x : g) x = kKeepAll;
+    for (double& x : g)
+      if (x == 0) x = kKeepAll;
+  };
   ImportOptions io;
   io.radius = opt.radius;
-  io.gamma = opt.field ? opt.field : AccuracyFn([](std::span<const Vec3>, std::span<double> g) {
-    for (double& x : g) x = 1e-3;   // no field: keep every distinct point
-  });
+  io.gamma = positive;
   io.strait_factor = opt.min_straits_factor > 0 ? opt.min_straits_factor : 1.0;
   io.close_straits = opt.min_straits_factor > 0;
+  GshhsPluginResult res;
+  {
+    // Levels first (as the import would), then loops with negative values are cut.
+    std::vector<Ring> rings;
+    for (Ring& r : data->rings)
+      if (r.level == 1 || r.level == io.antarctica_level) rings.push_back(std::move(r));
+    data->rings = std::move(rings);
+    clean(*data);
+    std::vector<Ring> whole, pieces;
+    std::vector<Vec3> xyz;
+    std::vector<double> g;
+    for (Ring& r : data->rings) {
+      xyz.resize(r.pts.size());
+      g.assign(r.pts.size(), 0.0);
+      for (std::size_t i = 0; i < r.pts.size(); ++i) xyz[i] = geo::sphere_from_lonlat(r.pts[i], opt.radius);
+      positive(xyz, g);
+      std::size_t neg = r.pts.size();
+      for (std::size_t i = 0; i < r.pts.size() && neg == r.pts.size(); ++i)
+        if (g[i] < 0) neg = i;
+      if (neg == r.pts.size()) {
+        whole.push_back(std::move(r));
+        continue;
+      }
+      // Runs of non-negative points, starting after a negative one (the ring is cyclic).
+      const std::size_t n = r.pts.size();
+      Ring piece;
+      for (std::size_t s = 1; s <= n; ++s) {
+        const std::size_t i = (neg + s) % n;
+        if (g[i] >= 0) {
+          piece.pts.push_back(r.pts[i]);
+          continue;
+        }
+        if (piece.pts.size() >= 2) {
+          piece.closed = false;
+          piece.record = r.record;
+          piece.id = r.id;
+          pieces.push_back(std::move(piece));
+        }
+        piece = Ring{};
+      }
+    }
+    data->rings = std::move(whole);
+    CoarsenOptions co;
+    co.gamma = positive;
+    co.radius = opt.radius;
+    auto cut = coarsen(std::move(pieces), co);
+    if (!cut) return cut.error();
+    const geo::PolarSphere ps({0, 0, 0}, 1.0);
+    for (const CoarseRing& cr : cut->rings) {
+      CoastCurve c;
+      c.record = cr.ring.record;
+      c.id = cr.ring.id;
+      for (auto k : cr.keep) {
+        c.ll.push_back(cr.ring.pts[k]);
+        c.uv.push_back(ps.param_from_lonlat(cr.ring.pts[k]));
+      }
+      res.cut.push_back(std::move(c));
+    }
+  }
+  io.levels = {1};
   auto model = build_coast_model(std::move(*data), io);
   if (!model) return model.error();
-  GshhsPluginResult res;
-  res.geo = write_gshhs_plugin_geo(*model, opt);
+  res.geo = write_gshhs_plugin_geo(*model, opt, res.cut);
   res.model = std::move(*model);
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(opt.out_file_name.c_str(), "wb"), &std::fclose);
   if (!f) return CoastError{opt.out_file_name, -1, "Plugin(GSHHS): cannot write the output file", {}};

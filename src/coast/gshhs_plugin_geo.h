@@ -3,7 +3,9 @@
 // text the plugin wrote, with its bugs fixed (see write_gshhs_plugin_geo).
 #pragma once
 
+#include <span>
 #include <string>
+#include <vector>
 
 #include "coast/coarsen.h"
 #include "coast/import.h"
@@ -27,7 +29,8 @@ struct GshhsPluginOptions {
 
 struct GshhsPluginResult {
   CoastModel model;
-  std::string geo;   // the text written to out_file_name
+  std::vector<CoastCurve> cut;   // open polylines left by negative field values (cropping)
+  std::string geo;               // the text written to out_file_name
 };
 
 /// The .geo text for a model. Tags are relative (IP = newp; ...) so the file can be
@@ -36,9 +39,15 @@ struct GshhsPluginResult {
 /// - the coastline size field is `Distance` with `PointsList` (Gmsh 4.8.4 has no Attractor);
 /// - GSHHG >= 2.2 levels are read after byte swapping (lakes no longer leak in);
 /// - cut coastlines are closed along the region box and grouped as Physical Curve("open").
-std::string write_gshhs_plugin_geo(const CoastModel& m, const GshhsPluginOptions& opt);
+/// `cut`: open polylines written after the loops as curves of their own (no loop), as the
+/// plugin did for loops cut by negative field values.
+std::string write_gshhs_plugin_geo(const CoastModel& m, const GshhsPluginOptions& opt,
+                                   std::span<const CoastCurve> cut = {});
 
-/// Runs the plugin: read, import (levels {1} + Antarctica), write the file.
+/// Runs the plugin: read, import (levels {1} + Antarctica), write the file. As in Gmsh 2.6,
+/// a negative iField value cuts a loop at that point (the way to crop to a region): the cut
+/// loops become open polylines, coarsened but not part of any loop or surface; a zero value
+/// keeps every point.
 Result<GshhsPluginResult> run_gshhs_plugin(const GshhsPluginOptions& opt);
 
 }  // namespace sm::coast

@@ -178,3 +178,35 @@ TEST_CASE("plugin writer: a regional model (cut coasts closed along the box) mes
   CHECK_MESSAGE(gmsh_errors(out).empty(), out);
   CHECK(out.find(" nodes ") != std::string::npos);
 }
+
+TEST_CASE("plugin: a negative field value cuts loops (Gmsh 2.6's way to crop to a region)") {
+  GshhsPluginOptions o;
+  o.in_file_name = std::string(SM_SHARED_DATA) + "/gshhs/gshhs_c.b";
+  o.out_file_name = (temp_dir() / "crop.geo").string();
+  // 20 km inside -12/3/48/62 (around Great Britain), -1 outside.
+  o.field = [](std::span<const Vec3> pts, std::span<double> g) {
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      const geo::LonLat ll = geo::lonlat_from_sphere(pts[i]);
+      g[i] = (ll.lon >= -12 && ll.lon <= 3 && ll.lat >= 48 && ll.lat <= 62) ? 20e3 : -1;
+    }
+  };
+  auto r = run_gshhs_plugin(o);
+  REQUIRE_MESSAGE(r.ok(), (r.ok() ? "" : r.error().to_string()));
+  CHECK_FALSE(r->cut.empty());                       // the continent's coast, cut at the box
+  for (const auto& c : r->cut)
+    for (auto p : c.ll) {
+      CHECK(p.lat >= 48);
+      CHECK(p.lat <= 62);
+    }
+  bool gb = false;
+  for (const auto& c : r->model.curves) gb |= c.periodic && c.id == 15;   // Great Britain stays a whole loop
+  CHECK(gb);
+  CHECK(r->model.surfaces.empty());                  // Antarctica was cut away: no outer loop
+  CHECK(count(r->geo, "BSpline ( IL + ") + count(r->geo, "Line ( IL + ") == r->model.curves.size() + r->cut.size());
+  CHECK(count(r->geo, "Line Loop") == r->model.loops.size());
+  if (have_gmsh()) {
+    std::string out;
+    CHECK(run("gmsh '" + o.out_file_name + "' -parse_and_exit", out) == 0);
+    CHECK_MESSAGE(gmsh_errors(out).empty(), out);
+  }
+}
