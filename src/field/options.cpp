@@ -1,6 +1,8 @@
 // Option values of one field instance, with alias resolution and type checks.
 #include "field/options.h"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "field/error.h"
@@ -86,6 +88,20 @@ void Options::set(std::string_view name, OptionValue value) {
                              kind_->name, type_name(spec.type), type_name(type_of(value))));
     e.option = std::string(name);
     throw e;
+  }
+  if (spec.role != OptionRole::Plain) {
+    // Field ids are whole numbers: 2.5 is a mistake, not field 2.
+    std::vector<double> ids;
+    if (const double* d = std::get_if<double>(&value)) ids = {*d};
+    else ids = std::get<std::vector<double>>(value);
+    for (double id : ids)
+      if (!std::isfinite(id) || id != std::floor(id) || std::fabs(id) > 2e9) {
+        FieldError e(FieldErrc::BadValue,
+                     fmt::format("option '{}' of field kind '{}' expects field ids, got {}", name,
+                                 kind_->name, id));
+        e.option = std::string(name);
+        throw e;
+      }
   }
   values_[static_cast<std::size_t>(i)] = std::move(value);
   set_[static_cast<std::size_t>(i)] = true;

@@ -1,5 +1,7 @@
 #include "field/registry.h"
 
+#include <cmath>
+
 #include <doctest/doctest.h>
 
 #include "field/error.h"
@@ -79,7 +81,15 @@ TEST_CASE("registry: unknown kind and option suggest the closest name") {
   } catch (const FieldError& e) {
     CHECK(e.code() == FieldErrc::WrongOptionType);
   }
+  try {
+    fs.set(1, "InField", 2.5);
+    FAIL("expected an error");
+  } catch (const FieldError& e) {
+    CHECK(e.code() == FieldErrc::BadValue);
+    CHECK(e.field_id == 1);
+  }
   fs.define(2, "Min");
+  CHECK_THROWS_AS(fs.set(2, "FieldsList", std::vector<double>{1, std::nan("")}), FieldError);
   // Gmsh 4.8.4 silently ignores a list option set without braces; we refuse.
   CHECK_THROWS_AS(fs.set(2, "FieldsList", 3.0), FieldError);
 }
