@@ -5,6 +5,7 @@
 #include "mesh/refine.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -17,11 +18,13 @@ namespace {
 
 constexpr std::uint32_t kNo = 0xFFFFFFFFu;
 
-struct Entry {
-  double prio;
-  std::uint32_t t, stamp;
-  friend bool operator<(const Entry& a, const Entry& b) { return a.prio != b.prio ? a.prio < b.prio : a.t > b.t; }
-};
+// A heap entry {priority, TriId, stamp} packed in 64 bits: the priority as
+// float bits (positive floats order like their bit patterns) above the
+// complemented id (ties: smaller id first). The stamp is implicit: queued_[t]
+// holds the priority bits the slot's current triangle was queued with, so an
+// entry is stale when the slot died, was rewritten or was already served.
+// Half the bytes of a {double, id, stamp} record: the heap is the hot data.
+using Entry = std::uint64_t;
 
 class Refiner {
  public:
@@ -44,7 +47,7 @@ class Refiner {
   RefineResult& res_;
   PredicateStats* st_;
   std::uint64_t rng_;
-  std::vector<std::uint32_t> stamp_;  // per slot: bumped whenever the slot is rewritten
+  std::vector<std::uint32_t> queued_;  // per slot: priority bits when queued, 0 when not
   std::vector<Entry> heap_;
   struct Bound {
     VertexId a, b;
@@ -64,8 +67,11 @@ void Refiner::consider(std::uint32_t t) {
     return;
   }
   const double q = norm2(cc - a) / (h * h);
+  queued_[t] = 0;
   if (q > opt_.radius_limit * opt_.radius_limit) {
-    heap_.push_back({q, t, stamp_[t]});
+    const std::uint32_t bits = std::bit_cast<std::uint32_t>(static_cast<float>(q));
+    queued_[t] = bits;
+    heap_.push_back(std::uint64_t{bits} << 32 | (~t & 0xFFFFFFFFu));
     std::push_heap(heap_.begin(), heap_.end());
   }
 }
@@ -138,7 +144,7 @@ bool Refiner::insert(Vec2 c, std::uint32_t t0) {
       m_.corner.resize(m_.corner.size() + 3);
       m_.twin.resize(m_.twin.size() + 3);
       m_.side_flags.resize(m_.side_flags.size() + 3);
-      stamp_.push_back(0);
+      queued_.push_back(0);
     }
     cavity_.push_back(t);
   }
@@ -146,7 +152,6 @@ bool Refiner::insert(Vec2 c, std::uint32_t t0) {
     const Bound& bd = bound_[i];
     const std::uint32_t t = cavity_[i], s = 3 * t;
     m_.tri_flags[t] = 0;
-    ++stamp_[t];
     m_.corner[s] = bd.a, m_.corner[s + 1] = bd.b, m_.corner[s + 2] = v;
     m_.side_flags[s] = bd.flags, m_.side_flags[s + 1] = 0, m_.side_flags[s + 2] = 0;
     m_.link(Side{s}, bd.outer);
@@ -169,7 +174,7 @@ bool Refiner::insert(Vec2 c, std::uint32_t t0) {
 }
 
 void Refiner::run() {
-  stamp_.assign(m_.num_slots(), 0);
+  queued_.assign(m_.num_slots(), 0);
   for (std::uint32_t t = 0; t < m_.num_slots(); ++t)
     if (m_.alive(TriId{t})) consider(t);
   while (!heap_.empty() && res_.error.empty()) {
@@ -177,17 +182,19 @@ void Refiner::run() {
     const Entry top = heap_.back();
     heap_.pop_back();
     ++res_.stats.pops;
-    if (!m_.alive(TriId{top.t}) || stamp_[top.t] != top.stamp) {
+    const std::uint32_t t = ~static_cast<std::uint32_t>(top);
+    if (!m_.alive(TriId{t}) || queued_[t] != static_cast<std::uint32_t>(top >> 32)) {
       ++res_.stats.stale;
       continue;
     }
+    queued_[t] = 0;
     if (m_.num_vertices() >= opt_.max_vertices) {
       res_.error = "refinement stopped at the vertex limit";
       return;
     }
-    const Vec2 a = m_.pos(m_.vertex(TriId{top.t}, 0)), b = m_.pos(m_.vertex(TriId{top.t}, 1));
-    const Vec2 cc = circumcentre(a, b, m_.pos(m_.vertex(TriId{top.t}, 2)));
-    const std::uint32_t loc = locate(cc, top.t);
+    const Vec2 a = m_.pos(m_.vertex(TriId{t}, 0)), b = m_.pos(m_.vertex(TriId{t}, 1));
+    const Vec2 cc = circumcentre(a, b, m_.pos(m_.vertex(TriId{t}, 2)));
+    const std::uint32_t loc = locate(cc, t);
     if (loc == kNo || !insert(cc, loc)) {
       ++res_.stats.rejected;
       continue;
