@@ -6,6 +6,7 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -26,11 +27,18 @@ struct CoastlineDef {
   lang::SourceRange defined_at;
 };
 
+/// Fields built for FieldValue/FieldArgmin (builtins/field_eval.cpp).
+struct FieldCache;
+
 struct KernelState {
   geo::Model model;
   field::FieldSet fields;
   std::optional<int> background_field;                  // `Background Field = n;`
   std::map<int, lang::SourceRange> field_defined_at;    // Field[n] = ... statement
+  lang::SourceRange background_field_at;                 // the `Background Field = n;` statement
+  /// (field id, canonical option name) -> the `Field[n].Option = v;` statement that set it.
+  std::map<std::pair<int, std::string>, lang::SourceRange> field_option_at;
+  std::shared_ptr<FieldCache> field_cache;               // dropped when a Field statement runs
   std::map<int, CoastlineDef> coastlines;
   /// (dim, tag) -> the statement that created the entity (provenance).
   std::map<std::pair<int, int>, lang::SourceRange> created_at;
