@@ -96,11 +96,27 @@ LoopPolygon sample_loop(const Model& m, const ModelCurveLoop& loop, const Surfac
     for (int i = 0; i < k; ++i) {
       const double t = static_cast<double>(i) / k;
       if (g) {
-        poly.uv.push_back(shape.on_surface() && c.geometry ? shape.eval_uv(t, rev).p : g->param(shape.eval(t, rev).p));
+        poly.uv.push_back(c.geometry ? shape.eval_uv(t, rev).p : g->param(shape.eval(t, rev).p));
       } else {
         poly.xyz.push_back(shape.eval(t, rev).p);
       }
     }
+  }
+  return poly;
+}
+
+LoopPolygon probe_loop(const Model& m, const ModelCurveLoop& loop, const SurfaceGeometry* g, int count) {
+  LoopPolygon poly;
+  const int n = static_cast<int>(loop.curves.size());
+  for (int k = 0; k < count; ++k) {
+    const double x = static_cast<double>(k) * n / count;   // position along the loop, in curves
+    const int i = std::min(n - 1, static_cast<int>(x));
+    const int sc = loop.curves[i];
+    const ModelCurve& c = *m.curve(std::abs(sc));
+    const Curve& shape = *c.shape;
+    const double t = x - i;
+    if (g) poly.uv.push_back(c.geometry ? shape.eval_uv(t, sc < 0).p : g->param(shape.eval(t, sc < 0).p));
+    else poly.xyz.push_back(shape.eval(t, sc < 0).p);
   }
   return poly;
 }

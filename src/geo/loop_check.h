@@ -31,6 +31,9 @@ struct LoopPolygon {
   std::vector<Vec2> uv;
 };
 LoopPolygon sample_loop(const Model& m, const ModelCurveLoop& loop, const SurfaceGeometry* g);
+/// `count` points spread evenly over the loop's curves (by curve, then along it): the probe
+/// points of a hole, without sampling all of a 35k-point coastline.
+LoopPolygon probe_loop(const Model& m, const ModelCurveLoop& loop, const SurfaceGeometry* g, int count);
 
 /// Mean plane of a polygon in space (Newell's normal) and the projection onto it.
 struct PlaneFrame {

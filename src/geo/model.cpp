@@ -387,7 +387,7 @@ GeoStatus Model::add_plane_surface(int tag, const std::vector<int>& loops) {
   const PolygonIndex outer2(g ? outer.uv : frame.project(outer.xyz));
   for (std::size_t i = 1; i < loops.size(); ++i) {
     const int l = std::abs(loops[i]);
-    const LoopPolygon hole = sample_loop(*this, loops_.at(l), g);
+    const LoopPolygon hole = probe_loop(*this, loops_.at(l), g, 16);
     const std::vector<Vec2> hole2 = g ? hole.uv : frame.project(hole.xyz);
     if (!polygon_inside(hole2, outer2))
       return make_error(GeoErrorKind::HoleOutside, EntityKind::Surface, {tag, l, std::abs(loops[0])},
