@@ -59,11 +59,17 @@ Interpreter::Flow Interpreter::exec_for(const Stmt& st, const ForStmt& f) {
   double x = from;
   if (has_var) symbols_.set_num(var, NumSymbol{{x}, false});
   if ((step > 0 && x > to) || (step < 0 && x < to)) return Flow::Normal;
+  frames_.push_back(Frame{st.keyword, var, true, has_var ? x : 1});
+  PopGuard<std::vector<Frame>> guard{frames_};
+  const std::size_t frame = frames_.size() - 1;
+  double iteration = 1;
   for (;;) {
     count_statement(st.keyword);   // empty nested loops count too: no silent 1e12 iterations
+    frames_[frame].value = has_var ? x : iteration;
     const Flow fl = exec_block(f.body);
     if (fl != Flow::Normal) return fl;
     x += step;
+    iteration += 1;
     if (has_var) symbols_.set_num(var, NumSymbol{{x}, false});
     if (step == 0 || (step > 0 && x > to) || (step < 0 && x < to)) break;
   }

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "interp/builtins/dispatch.h"
+#include "interp/format.h"
 #include "interp/limits.h"
 #include "lang/parser.h"
 
@@ -189,13 +190,23 @@ std::vector<DiagNote> Interpreter::frame_notes() const {
       k = n - kOuter;
     }
     const Frame& f = frames_[n - 1 - k];
-    notes.push_back(DiagNote{f.site, fmt::format("called from here ({})", f.what)});
+    if (f.loop)
+      notes.push_back(DiagNote{f.site, f.what.empty()
+                                           ? fmt::format("inside this 'For' loop (iteration {})", format_g(f.value))
+                                           : fmt::format("inside this 'For' loop ({} = {})", f.what, format_g(f.value))});
+    else
+      notes.push_back(DiagNote{f.site, fmt::format("called from here ({})", f.what)});
   }
   return notes;
 }
 
 void Interpreter::fail(SourceRange range, Diag kind, std::string message) {
   throw RuntimeError{range, kind, std::move(message), frame_notes()};
+}
+
+void Interpreter::fail_with_notes(SourceRange range, Diag kind, std::string message, std::vector<DiagNote> notes) {
+  for (auto& n : frame_notes()) notes.push_back(std::move(n));
+  throw RuntimeError{range, kind, std::move(message), std::move(notes)};
 }
 
 void Interpreter::report(const RuntimeError& e) {

@@ -90,6 +90,9 @@ class Interpreter {
   /// Counts one executed statement or loop iteration against the statement limit.
   void count_statement(lang::SourceRange r);
   [[noreturn]] void fail(lang::SourceRange range, lang::Diag kind, std::string message);
+  /// fail() with extra notes (e.g. where the entities a kernel error names were created).
+  [[noreturn]] void fail_with_notes(lang::SourceRange range, lang::Diag kind, std::string message,
+                                    std::vector<lang::DiagNote> notes);
   template <class... Args>
   [[noreturn]] void fail_fmt(lang::SourceRange range, lang::Diag kind, const Args&... args) {
     fail(range, kind, fmt::vformat(lang::diag_info(kind).format, fmt::make_format_args(args...)));
@@ -158,9 +161,13 @@ class Interpreter {
     Interpreter& in_;
   };
 
+  // One level of the run's context, innermost last: a Call, an Include, or
+  // a running For loop (whose variable value is read when a note is made).
   struct Frame {
-    lang::SourceRange site;   ///< the Call or Include statement
-    std::string what;         ///< "macro 'Foo'" / "'file.geo'"
+    lang::SourceRange site;   ///< the Call, Include or For keyword
+    std::string what;         ///< "macro 'Foo'", "included file 'f.geo'", or the loop variable
+    bool loop = false;
+    double value = 0;         ///< loop: the variable's value (or the iteration for `For (a:b)`)
   };
   struct MacroDef {
     lang::StmtId stmt;

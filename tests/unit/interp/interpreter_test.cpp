@@ -290,3 +290,12 @@ TEST_CASE("interp: per-run limits") {
   r = run_script("For i In {1:10}\nEndFor\nl[] = {1:40};\ns = \"short\";\n", "t.geo", settings);
   CHECK(r.ok);
 }
+
+TEST_CASE("interp: errors inside loops say which iteration failed") {
+  auto r = run_script("l[] = {1, 2, 0, 4};\nFor i In {0:3}\n  x = 1 / l[i];\nEndFor\n");
+  REQUIRE(r.kinds.size() == 1);
+  CHECK(r.kinds[0] == "3:11 division-by-zero");
+  CHECK(r.rendered.find("test.geo:2:1: note: inside this 'For' loop (i = 2)") != std::string::npos);
+  r = run_script("n = 0;\nFor (1:5)\n  n++;\n  If (n == 4)\n    y = undefined;\n  EndIf\nEndFor\n");
+  CHECK(r.rendered.find("inside this 'For' loop (iteration 4)") != std::string::npos);
+}
