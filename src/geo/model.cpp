@@ -314,8 +314,8 @@ GeoStatus Model::rebuild_curves_using(const std::vector<int>& moved_points) {
     bool hit = false;
     for (int p : c.points) hit = hit || std::binary_search(sorted.begin(), sorted.end(), p);
     if (!hit) continue;
-    // A non-uniform dilation can make an arc invalid: the curve keeps its previous shape and
-    // the first such failure is reported.
+    // A non-uniform dilation can make an arc invalid: the first such failure is reported
+    // (and the transform undone by the caller).
     auto shape = build_shape(c);
     if (shape) c.shape = std::move(*shape);
     else if (status.ok()) status = shape.error();

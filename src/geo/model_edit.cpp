@@ -326,6 +326,9 @@ GeoStatus Model::transform_points(const std::vector<DimTag>& entities, const std
                         {e.tag}, fmt::format("cannot transform unknown entity {} of dimension {}", t, e.dim));
   }
   const std::vector<int> pts = points_of(entities);
+  std::vector<ModelVertex> before;
+  before.reserve(pts.size());
+  for (int p : pts) before.push_back(vertices_.at(p));
   for (int p : pts) {
     ModelVertex& v = vertices_.at(p);
     const Vec3 x = v.xyz;
@@ -338,6 +341,13 @@ GeoStatus Model::transform_points(const std::vector<DimTag>& entities, const std
     }
   }
   GeoStatus s = rebuild_curves_using(pts);
+  if (!s.ok()) {
+    // An arc the map made invalid (a non-uniform Dilate of a circle, say): undo, so that a
+    // failed statement leaves the model as it was.
+    for (const ModelVertex& v : before) vertices_.at(v.tag) = v;
+    rebuild_curves_using(pts);
+    return s;
+  }
   if (options_.auto_coherence) coherence();
   return s;
 }

@@ -458,3 +458,20 @@ TEST_CASE("next tags after Coherence follow Geometry.OldNewReg (gmsh_queries/dup
     CHECK(m.new_point_tag() == (old_new_reg ? 8 : 9));
   }
 }
+
+TEST_CASE("a transform that breaks an arc fails and leaves the model unchanged") {
+  Model m;
+  REQUIRE(m.add_point(1, {0, 0, 0}));
+  REQUIRE(m.add_point(2, {1, 0, 0}));
+  REQUIRE(m.add_point(3, {0, 1, 0}));
+  REQUIRE(m.add_curve(1, CurveKind::Circle, {2, 1, 3}));
+  // Stretching y by 2 makes the end radius 2 against a start radius 1: not cocircular.
+  auto st = m.dilate({{1, 1}}, {0, 0, 0}, {1, 2, 1});
+  REQUIRE_FALSE(st);
+  CHECK(st.error().kind == GeoErrorKind::NotCocircular);
+  CHECK(st.error().tags == std::vector<int>{1});
+  CHECK(norm(m.vertex(3)->xyz - Vec3{0, 1, 0}) == 0);
+  CHECK(norm(m.curve(1)->shape->point(0.5) - Vec3{std::sqrt(0.5), std::sqrt(0.5), 0}) < 1e-15);
+  REQUIRE(m.dilate({{1, 1}}, {0, 0, 0}, {2, 2, 2}));   // uniform: fine
+  CHECK(norm(m.curve(1)->shape->point(0.5) - Vec3{std::sqrt(2.0), std::sqrt(2.0), 0}) < 1e-14);
+}
