@@ -21,6 +21,13 @@ double eta(Vec2 a, Vec2 b, Vec2 c) {
   return s > 0 ? 4 * std::sqrt(3.0) * area / s : 0.0;
 }
 
+double gamma(Vec2 a, Vec2 b, Vec2 c) {
+  const double la = norm(b - c), lb = norm(c - a), lc = norm(a - b);
+  const double area = 0.5 * std::fabs(cross(b - a, c - a));
+  const double p = la + lb + lc, lmax = std::max({la, lb, lc});
+  return p > 0 && lmax > 0 ? 2 * std::sqrt(3.0) * (2 * area / p) / lmax : 0.0;
+}
+
 Vec2 circumcentre(Vec2 a, Vec2 b, Vec2 c) {
   const Vec2 ba = b - a, ca = c - a;
   const double d = 2 * cross(ba, ca);
@@ -34,14 +41,16 @@ QualityStats mesh_quality(const TriangleStore& m, const std::function<double(Vec
   QualityStats q;
   std::vector<double> ratio;
   std::vector<std::uint8_t> used(m.num_vertices(), 0);
-  double sum_rho = 0;
-  q.min_rho = 1;
+  double sum_rho = 0, sum_gamma = 0;
+  q.min_rho = 1, q.min_gamma = 1;
   std::uint32_t good = 0;
   for (std::uint32_t t = 0; t < m.num_slots(); ++t) {
     if (!m.alive(TriId{t})) continue;
     const Vec2 a = m.pos(m.vertex(TriId{t}, 0)), b = m.pos(m.vertex(TriId{t}, 1)), c = m.pos(m.vertex(TriId{t}, 2));
-    const double r = rho(a, b, c);
+    const double r = rho(a, b, c), gm = gamma(a, b, c);
     ++q.triangles;
+    sum_gamma += gm;
+    q.min_gamma = std::min(q.min_gamma, gm);
     sum_rho += r;
     q.min_rho = std::min(q.min_rho, r);
     good += r > 0.9;
@@ -59,6 +68,7 @@ QualityStats mesh_quality(const TriangleStore& m, const std::function<double(Vec
   q.edges = static_cast<std::uint32_t>(ratio.size());
   if (q.triangles == 0) return QualityStats{};
   q.mean_rho = sum_rho / q.triangles;
+  q.mean_gamma = sum_gamma / q.triangles;
   q.share_rho_09 = double(good) / q.triangles;
   std::sort(ratio.begin(), ratio.end());
   auto pct = [&](double f) { return ratio[std::min(ratio.size() - 1, static_cast<std::size_t>(f * ratio.size()))]; };

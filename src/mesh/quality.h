@@ -15,6 +15,9 @@ namespace sm {
 double rho(Vec2 a, Vec2 b, Vec2 c);
 /// Mean ratio 4 sqrt(3) area / (sum of squared edge lengths), in [0, 1].
 double eta(Vec2 a, Vec2 b, Vec2 c);
+/// 2 sqrt(3) r_in / longest edge, in [0, 1]: the 2D form of Gmsh's "gamma"
+/// quality type (volume / sum of faces / longest edge).
+double gamma(Vec2 a, Vec2 b, Vec2 c);
 /// Circumcentre and circumradius (inexact constructions).
 Vec2 circumcentre(Vec2 a, Vec2 b, Vec2 c);
 double circumradius(Vec2 a, Vec2 b, Vec2 c);
@@ -22,6 +25,7 @@ double circumradius(Vec2 a, Vec2 b, Vec2 c);
 struct QualityStats {
   std::uint32_t nodes = 0, triangles = 0, edges = 0;
   double min_rho = 0, mean_rho = 0, share_rho_09 = 0;  // share of triangles with rho > 0.9
+  double min_gamma = 0, mean_gamma = 0;
   double len_median = 0, len_p05 = 0, len_p95 = 0;     // edge length / target size
   double share_len_07_14 = 0;                          // share of edges with ratio in [0.7, 1.4]
 };

@@ -26,6 +26,10 @@ TEST_CASE("quality: rho and eta") {
   CHECK(eta({0, 0}, {1, 0}, {0.5, std::sqrt(0.75)}) == doctest::Approx(1));
   CHECK(rho({0, 0}, {1, 0}, {0, 1}) == doctest::Approx(2 * (2 - std::sqrt(2.0)) / std::sqrt(2.0)));
   CHECK(rho({0, 0}, {1, 0}, {2, 0}) == 0);
+  CHECK(gamma({0, 0}, {1, 0}, {0.5, std::sqrt(0.75)}) == doctest::Approx(1));
+  // Right isosceles: r_in = (2 - sqrt2) / 2, longest edge sqrt2.
+  CHECK(gamma({0, 0}, {1, 0}, {0, 1}) == doctest::Approx(2 * std::sqrt(3.0) * (2 - std::sqrt(2.0)) / 2 / std::sqrt(2.0)));
+  CHECK(gamma({0, 0}, {1, 0}, {2, 0}) == 0);
   const Vec2 cc = circumcentre({0, 0}, {2, 0}, {0, 2});
   CHECK(cc.x == doctest::Approx(1));
   CHECK(cc.y == doctest::Approx(1));
