@@ -18,26 +18,41 @@ std::size_t ImportReport::count(RepairKind k) const {
   return n;
 }
 
-std::vector<std::string> ImportReport::lines() const {
+namespace {
+
+const char* describe(RepairKind k) {
+  switch (k) {
+    case RepairKind::Refined: return "original points put back on a crossing segment";
+    case RepairKind::DroppedIsland: return "island below the accuracy touching another coastline dropped";
+    case RepairKind::UnitedIslands: return "islands overlapping in the source united";
+    case RepairKind::CutSliver: return "self-touching sliver of the source shoreline cut out";
+    case RepairKind::MergedIslands: return "islands merged across a strait narrower than the accuracy";
+    case RepairKind::NarrowStrait: return "strait narrower than the accuracy kept open";
+    case RepairKind::OutsideWater: return "island outside every water surface dropped";
+    case RepairKind::SplineHull: return "original points put back where two spline spans could cross";
+    case RepairKind::SplineMayCross: return "the B-splines may cross here (span hulls overlap on the source data)";
+  }
+  return "?";
+}
+
+}  // namespace
+
+std::vector<std::string> ImportReport::lines(std::size_t max_per_kind) const {
   std::vector<std::string> out;
   if (!clean.entries.empty()) out.push_back("cleaning: " + clean.summary());
   std::size_t few = 0, small = 0;
   for (const auto& d : dropped) (d.reason == DropReason::TooFewPoints ? few : small)++;
   if (few + small > 0)
     out.push_back(fmt::format("coarsening: {} rings too small for the accuracy and {} below MinArea dropped", few, small));
+  std::vector<std::size_t> shown(16, 0), hidden(16, 0);
   for (const auto& e : repair) {
-    const char* what = "";
-    switch (e.kind) {
-      case RepairKind::Refined: what = "original points put back on a crossing segment"; break;
-      case RepairKind::DroppedIsland: what = "island below the accuracy touching another coastline dropped"; break;
-      case RepairKind::UnitedIslands: what = "islands overlapping in the source united"; break;
-      case RepairKind::CutSliver: what = "self-touching sliver of the source shoreline cut out"; break;
-      case RepairKind::MergedIslands: what = "islands merged across a strait narrower than the accuracy"; break;
-      case RepairKind::NarrowStrait: what = "strait narrower than the accuracy kept open"; break;
-      case RepairKind::OutsideWater: what = "island outside every water surface dropped"; break;
-      case RepairKind::SplineHull: what = "original points put back where two spline spans could cross"; break;
-      case RepairKind::SplineMayCross: what = "the B-splines may cross here (span hulls overlap on the source data)"; break;
+    const auto kind = static_cast<std::size_t>(e.kind);
+    if (shown[kind] >= max_per_kind) {
+      ++hidden[kind];
+      continue;
     }
+    ++shown[kind];
+    const char* what = describe(e.kind);
     out.push_back(fmt::format("record {} (id {}) at lon {:.5f} lat {:.5f}: {}{}", e.record, e.id, e.where.lon,
                               e.where.lat, what,
                               e.kind == RepairKind::NarrowStrait || e.kind == RepairKind::MergedIslands
@@ -46,6 +61,9 @@ std::vector<std::string> ImportReport::lines() const {
                                   ? fmt::format(" ({} points)", e.value)
                                                                  : std::string()));
   }
+  for (std::size_t k = 0; k < hidden.size(); ++k)
+    if (hidden[k] > 0)
+      out.push_back(fmt::format("... and {} more: {}", hidden[k], describe(static_cast<RepairKind>(k))));
   return out;
 }
 

@@ -88,7 +88,9 @@ struct ImportReport {
   std::vector<RepairEntry> repair;
   std::size_t reversed = 0, points_in = 0, points_out = 0, repair_rounds = 0;
   std::size_t count(RepairKind k) const;
-  std::vector<std::string> lines() const;   // human-readable warnings, one per change
+  /// Human-readable warnings, one per change; at most `max_per_kind` entries of each
+  /// repair kind, then one line saying how many more there are.
+  std::vector<std::string> lines(std::size_t max_per_kind = static_cast<std::size_t>(-1)) const;
 };
 
 struct CoastModel {

@@ -113,6 +113,9 @@ TEST_CASE("import: world intermediate at 10 km: crossings made by coarsening are
   REQUIRE_MESSAGE(m.ok(), (m.ok() ? "" : m.error().to_string()));
   CHECK(m->report.count(RepairKind::Refined) > 0);
   CHECK_FALSE(m->report.lines().empty());
+  const auto brief = m->report.lines(3);
+  CHECK(brief.size() < m->report.lines().size());
+  CHECK(brief.back().rfind("... and ", 0) == 0);
   check_model(*m);
 }
 
