@@ -193,7 +193,7 @@ Value Interpreter::eval(ExprId id) {
         } else if constexpr (std::is_same_v<T, OptionExpr>) {
           return read_option(n.option);
         } else {
-          eval_model_expr(*this, id);
+          return eval_model_expr(*this, id);
         }
       },
       e.node);

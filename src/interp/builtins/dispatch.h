@@ -5,6 +5,7 @@
 
 #include <string_view>
 
+#include "interp/value.h"
 #include "lang/ast.h"
 
 namespace sm::interp {
@@ -30,6 +31,6 @@ void check_stmt_exprs(Interpreter& in, lang::StmtId s);
 /// newp, newl, newc, newll, news, newsl, newv, newreg, newf.
 double new_tag_constant(Interpreter& in, lang::Constant c);
 /// Entity queries, transforms, Boundary{}, Coastline{}: expressions needing the model.
-[[noreturn]] void eval_model_expr(Interpreter& in, lang::ExprId e);
+Value eval_model_expr(Interpreter& in, lang::ExprId e);
 
 }  // namespace sm::interp

@@ -1,11 +1,15 @@
-// Geometry statements and model queries. The geometry kernel arrives with a
-// later issue; until then each statement reports 'not supported yet' (once per
-// kind) and queries that need the model are errors. new* tags answer for the
-// empty model, which is exact while no entity can be created.
+// Geometry statements evaluated into the kernel's model (geo::Model) with Gmsh 4.8.4's
+// meaning (gmsh-reference section 3), new* tags, and the statements the kernel has no
+// place for yet (reported 'not supported yet', never dropped silently).
+#include <cmath>
+#include <limits>
+
 #include <fmt/format.h>
 
 #include "interp/builtins/dispatch.h"
+#include "interp/builtins/geometry_shapes.h"
 #include "interp/interpreter.h"
+#include "interp/provenance.h"
 
 namespace sm::interp {
 
@@ -106,6 +110,227 @@ void check_stmt_exprs(Interpreter& in, StmtId id) {
       s.node);
 }
 
+void sync_geometry_options(Interpreter& in) {
+  geo::ModelOptions& o = in.kernel().model.options();
+  const Options& opt = in.options();
+  o.tolerance = opt.number("Geometry.Tolerance");
+  o.old_new_reg = opt.number("Geometry.OldNewReg") != 0;
+  o.auto_coherence = opt.number("Geometry.AutoCoherence") != 0;
+}
+
+int to_tag(Interpreter& in, double v, SourceRange at) {
+  if (!std::isfinite(v) || std::fabs(v) > std::numeric_limits<int>::max())
+    in.fail_fmt(at, Diag::InvalidOperation, fmt::format("{} is not a valid entity tag", v));
+  return static_cast<int>(v);
+}
+
+int eval_tag(Interpreter& in, ExprId e) { return to_tag(in, in.eval_number(e), in.ast().expr(e).range); }
+
+std::vector<int> eval_tags(Interpreter& in, ExprId e) {
+  std::vector<int> out;
+  if (!e.valid()) return out;
+  const SourceRange at = in.ast().expr(e).range;
+  for (double v : in.eval_numbers(e)) out.push_back(to_tag(in, v, at));
+  return out;
+}
+
+namespace {
+
+int dim_of(EntityKind e) { return static_cast<int>(e); }
+
+geo::CurveKind curve_kind(CurveKind k) {
+  switch (k) {
+    case CurveKind::Line: return geo::CurveKind::Line;
+    case CurveKind::Spline: return geo::CurveKind::Spline;
+    case CurveKind::BSpline: return geo::CurveKind::BSpline;
+    case CurveKind::Bezier: return geo::CurveKind::Bezier;
+    case CurveKind::Circle: return geo::CurveKind::Circle;
+    case CurveKind::Ellipse: return geo::CurveKind::Ellipse;
+    default: return geo::CurveKind::Line;   // Nurbs and compounds never get here
+  }
+}
+
+// A kernel status: on failure, the located diagnostic with provenance notes.
+void check(Interpreter& in, const geo::GeoStatus& st, SourceRange at) {
+  if (!st) fail_geo(in, at, st.error());
+}
+
+Vec3 eval_vec3(Interpreter& in, ExprId e, const char* what) {
+  const std::vector<double> v = in.eval_numbers(e);
+  if (v.size() != 3)
+    in.fail_fmt(in.ast().expr(e).range, Diag::ListSizeMismatch,
+                fmt::format("{} needs 3 numbers, got {}", what, v.size()));
+  return {v[0], v[1], v[2]};
+}
+
+// The keyword the statement starts at: where its diagnostics point.
+SourceRange where(const Stmt& s) { return s.range; }
+
+std::optional<geo::DimTag> exec_point(Interpreter& in, const Stmt& s, const PointStmt& n) {
+  const int tag = eval_tag(in, n.tag);
+  const std::vector<double> c = in.eval_numbers(n.coords);
+  if (c.size() != 3 && c.size() != 4)
+    in.fail_fmt(in.ast().expr(n.coords).range, Diag::ListSizeMismatch,
+                fmt::format("Point needs {{x, y, z}} or {{x, y, z, lc}}, got {} numbers", c.size()));
+  // Gmsh scales coordinates and the size (and, on a sphere, (u, v)) by Geometry.ScalingFactor.
+  const double f = in.options().number("Geometry.ScalingFactor");
+  const double lc = c.size() == 4 ? f * c[3] : 0.0;
+  check(in, in.kernel().model.add_point(tag, {f * c[0], f * c[1], f * c[2]}, lc), where(s));
+  return geo::DimTag{0, tag};
+}
+
+std::optional<geo::DimTag> exec_curve(Interpreter& in, StmtId id, const Stmt& s, const CurveStmt& n) {
+  if (n.kind == CurveKind::Nurbs || n.kind == CurveKind::CompoundSpline || n.kind == CurveKind::CompoundBSpline) {
+    check_stmt_exprs(in, id);
+    in.not_supported_stmt(id, stmt_name(in, id));
+    return std::nullopt;
+  }
+  const int tag = eval_tag(in, n.tag);
+  const std::vector<int> points = eval_tags(in, n.points);
+  std::optional<Vec3> normal;
+  if (n.plane.valid()) normal = eval_vec3(in, n.plane, "Plane{}");
+  check(in, in.kernel().model.add_curve(tag, curve_kind(n.kind), points, normal), where(s));
+  return geo::DimTag{1, tag};
+}
+
+std::optional<geo::DimTag> exec_surface(Interpreter& in, const Stmt& s, const SurfaceStmt& n) {
+  const int tag = eval_tag(in, n.tag);
+  const std::vector<int> loops = eval_tags(in, n.loops);
+  geo::Model& m = in.kernel().model;
+  if (n.kind == SurfaceKind::Plane) {
+    check(in, m.add_plane_surface(tag, loops), where(s));
+  } else {
+    std::optional<int> centre;
+    if (n.in_sphere.valid()) centre = eval_tag(in, n.in_sphere);
+    check(in, m.add_surface_filling(tag, loops, centre), where(s));
+  }
+  return geo::DimTag{2, tag};
+}
+
+void exec_physical(Interpreter& in, const Stmt& s, const PhysicalStmt& n) {
+  std::optional<int> tag;
+  std::string name;
+  if (n.name.valid()) name = in.eval_string(n.name);
+  if (n.tag.valid()) {
+    // `Physical Curve(s)` with a string variable s is the name form.
+    const Value v = in.eval(n.tag);
+    if (v.is_string())
+      name = v.strs().empty() ? "" : v.strs()[0];
+    else
+      tag = to_tag(in, v.nums().empty() ? 0.0 : v.nums()[0], in.ast().expr(n.tag).range);
+  }
+  const std::vector<int> entities = eval_tags(in, n.entities);
+  geo::PhysicalOp op = geo::PhysicalOp::Assign;
+  if (n.op == AffOp::Add) op = geo::PhysicalOp::Add;
+  else if (n.op == AffOp::Sub) op = geo::PhysicalOp::Remove;
+  else if (n.op != AffOp::Assign)
+    in.fail_fmt(where(s), Diag::InvalidOperation, fmt::format("'{}' cannot change a physical group", affop_text(n.op)));
+  const int dim = dim_of(n.ent);
+  auto r = in.kernel().model.add_physical(dim, tag, name, entities, op);
+  if (!r) fail_geo(in, where(s), r.error());
+  if (in.kernel().created_at.count({kPhysicalKeyBase + dim, *r}) == 0)
+    record_created(in.kernel(), kPhysicalKeyBase + dim, *r, where(s));
+}
+
+void exec_delete_shapes(Interpreter& in, const Stmt& s, const DeleteShapesStmt& n) {
+  const std::vector<geo::DimTag> ents = eval_shape_block(in, n.shapes, false);
+  std::vector<geo::DimTag> skipped;
+  check(in, in.kernel().model.remove(ents, n.recursive, &skipped), where(s));
+  if (skipped.empty()) return;
+  // Gmsh skips these silently; a warning says why they are still there.
+  std::string list;
+  for (const geo::DimTag& d : skipped)
+    list += fmt::format("{}{} {}", list.empty() ? "" : ", ", d.dim == 0 ? "point" : d.dim == 1 ? "curve" : "surface",
+                        std::abs(d.tag));
+  in.diags().report_message(s.keyword.valid() ? s.keyword : s.range, Diag::GeoDeleteSkipped,
+                            fmt::format("not deleted (still used by a higher-dimensional entity): {}", list));
+}
+
+void exec_split_curve(Interpreter& in, const Stmt& s, const SplitCurveStmt& n) {
+  const int curve = eval_tag(in, n.curve);
+  const std::vector<int> points = eval_tags(in, n.points);
+  auto r = in.kernel().model.split_curve(curve, points);
+  if (!r) fail_geo(in, where(s), r.error());
+  for (int c : *r) record_created(in.kernel(), 1, c, where(s));
+}
+
+}  // namespace
+
+std::optional<geo::DimTag> exec_geometry_stmt(Interpreter& in, StmtId id) {
+  const Stmt& s = in.ast().stmt(id);
+  sync_geometry_options(in);
+  KernelState& k = in.kernel();
+  geo::Model& m = k.model;
+  std::optional<geo::DimTag> made;
+  switch (s.kind()) {
+    case StmtKind::Point: made = exec_point(in, s, std::get<PointStmt>(s.node)); break;
+    case StmtKind::Curve: made = exec_curve(in, id, s, std::get<CurveStmt>(s.node)); break;
+    case StmtKind::CurveLoop: {
+      const auto& n = std::get<CurveLoopStmt>(s.node);
+      const int tag = eval_tag(in, n.tag);
+      check(in, m.add_curve_loop(tag, eval_tags(in, n.curves)), where(s));
+      record_created(k, kCurveLoopKey, tag, where(s));
+      return std::nullopt;
+    }
+    case StmtKind::Surface: made = exec_surface(in, s, std::get<SurfaceStmt>(s.node)); break;
+    case StmtKind::Sphere: {
+      const auto& n = std::get<SphereStmt>(s.node);
+      const int tag = eval_tag(in, n.tag);
+      const std::vector<int> pts = eval_tags(in, n.points);
+      if (pts.size() != 2)
+        in.fail_fmt(in.ast().expr(n.points).range, Diag::ListSizeMismatch,
+                    fmt::format("{} needs {{centre, pole}} point tags, got {} tags", stmt_name(in, id), pts.size()));
+      check(in, n.polar ? m.add_polar_sphere(tag, pts[0], pts[1]) : m.add_lonlat_sphere(tag, pts[0], pts[1]), where(s));
+      record_created(k, kGeometryKey, tag, where(s));
+      return std::nullopt;
+    }
+    case StmtKind::CoordinatesSurface:
+      check(in, m.set_current_geometry(eval_tag(in, std::get<CoordinatesSurfaceStmt>(s.node).geometry)), where(s));
+      return std::nullopt;
+    case StmtKind::EuclideanCoordinates: m.set_euclidean(); return std::nullopt;
+    case StmtKind::Physical: exec_physical(in, s, std::get<PhysicalStmt>(s.node)); return std::nullopt;
+    case StmtKind::Coherence:
+      if (std::get<CoherenceStmt>(s.node).what == CoherenceKind::Geometry) {
+        m.coherence();
+        return std::nullopt;
+      }
+      break;   // `Coherence Point{...}`: below
+    case StmtKind::SplitCurve: exec_split_curve(in, s, std::get<SplitCurveStmt>(s.node)); return std::nullopt;
+    case StmtKind::ShapeExpr: eval_shape_expr(in, std::get<ShapeExprStmt>(s.node).expr); return std::nullopt;
+    case StmtKind::DeleteShapes: exec_delete_shapes(in, s, std::get<DeleteShapesStmt>(s.node)); return std::nullopt;
+    case StmtKind::Embed: {
+      const auto& n = std::get<EmbedStmt>(s.node);
+      if (n.target != EntityKind::Surface || n.ent == EntityKind::Surface || n.ent == EntityKind::Volume) break;
+      const std::vector<int> tags = eval_tags(in, n.tags);
+      check(in, m.embed(dim_of(n.ent), tags, eval_tag(in, n.target_tag)), where(s));
+      return std::nullopt;
+    }
+    case StmtKind::MeshSize: {
+      const auto& n = std::get<MeshSizeStmt>(s.node);
+      const std::vector<int> points = n.all ? m.tags(0) : eval_tags(in, n.points);
+      check(in, m.set_mesh_size(points, in.eval_number(n.size)), where(s));
+      return std::nullopt;
+    }
+    case StmtKind::SetMaxTag: {
+      const auto& n = std::get<SetMaxTagStmt>(s.node);
+      m.set_max_tag(dim_of(n.ent), eval_tag(in, n.tag));
+      return std::nullopt;
+    }
+    default: break;
+  }
+  if (made) {
+    record_created(k, made->dim, made->tag, where(s));
+    return made;
+  }
+  if (s.kind() == StmtKind::Curve) return std::nullopt;   // a kind reported as not supported
+  // Surface Loop, Volume, Parametric Surface, Coherence Point{}, embedding in a volume and
+  // the mesh constraints (Transfinite, Recombine, MeshAlgorithm, Smoother, Periodic,
+  // ReverseMesh, Compound): the model has no place for them yet.
+  check_stmt_exprs(in, id);
+  in.not_supported_stmt(id, stmt_name(in, id));
+  return std::nullopt;
+}
+
 void dispatch_model_stmt(Interpreter& in, StmtId id) {
   const Stmt& s = in.ast().stmt(id);
   switch (s.kind()) {
@@ -136,32 +361,25 @@ void dispatch_model_stmt(Interpreter& in, StmtId id) {
     default:
       break;
   }
-  check_stmt_exprs(in, id);
-  in.not_supported_stmt(id, stmt_name(in, id));
+  exec_geometry_stmt(in, id);
 }
 
-double new_tag_constant(Interpreter&, Constant) { return 1; }
-
-void eval_model_expr(Interpreter& in, ExprId e) {
-  const Expr& x = in.ast().expr(e);
-  std::string what;
-  switch (x.kind()) {
-    case ExprKind::EntityQuery: {
-      const auto& q = std::get<EntityQueryExpr>(x.node);
-      what = fmt::format("{}{}{{}}", q.physical ? "Physical " : "", entity_name(q.ent));
-      break;
-    }
-    case ExprKind::EntityInBox: what = "In BoundingBox"; break;
-    case ExprKind::Boundary: what = "Boundary{}"; break;
-    case ExprKind::Transform: {
-      static const char* kNames[] = {"Translate", "Rotate", "Symmetry", "Dilate", "Duplicata"};
-      what = kNames[static_cast<int>(std::get<TransformExpr>(x.node).kind)];
-      break;
-    }
-    case ExprKind::CoastlineQuery: what = "Coastline{}"; break;
-    default: what = std::string(in.text_of(x.range).substr(0, 30)); break;
+double new_tag_constant(Interpreter& in, Constant c) {
+  sync_geometry_options(in);
+  const geo::Model& m = in.kernel().model;
+  switch (c) {
+    case Constant::NewP: return m.new_point_tag();
+    case Constant::NewL:
+    case Constant::NewC: return m.new_curve_tag();
+    case Constant::NewLL:
+    case Constant::NewCL: return m.new_loop_tag();
+    case Constant::NewS: return m.new_surface_tag();
+    // No surface loops or volumes exist: their own counters stay at 0.
+    case Constant::NewSL:
+    case Constant::NewV: return m.options().old_new_reg ? m.new_reg() : 1;
+    case Constant::NewF: return in.kernel().fields.next_id();
+    default: return m.new_reg();
   }
-  in.not_supported_expr(e, what);
 }
 
 }  // namespace sm::interp

@@ -1,9 +1,11 @@
-// Geometry statements are reported once per kind and skipped; variables go on.
+// Statements the model has no place for yet are reported once per kind and
+// skipped; the geometry and the variables go on.
 Point(1) = {0, 0, 0};
 Point(2) = {1, 0, 0};
 Line(1) = {1, 2};
-Field[1] = Distance;
-Printf("%g", newp);  // expect: 1
-// expect error: 2:1: not-supported-yet
-// expect error: 4:1: not-supported-yet
-// expect error: 5:1: not-supported-yet
+Transfinite Curve{1} = 10;
+Transfinite Curve{1} = 20;
+Surface Loop(1) = {1};
+Printf("%g", newp);  // expect: 3
+// expect error: 6:1: not-supported-yet
+// expect error: 8:1: not-supported-yet

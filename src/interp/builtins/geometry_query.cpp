@@ -1,0 +1,235 @@
+// Expressions that read or change the model: Point{t} coordinates, Curve{:} tags,
+// Physical groups, In BoundingBox, Boundary/CombinedBoundary/PointsOf, and the
+// Translate/Rotate/Symmetry/Dilate/Duplicata transforms with their shape blocks.
+#include <algorithm>
+#include <cstdlib>
+
+#include <fmt/format.h>
+
+#include "interp/builtins/dispatch.h"
+#include "interp/builtins/geometry_shapes.h"
+#include "interp/interpreter.h"
+#include "interp/provenance.h"
+
+namespace sm::interp {
+
+using namespace sm::lang;
+
+namespace {
+
+const char* dim_word(int dim) {
+  static const char* kWords[] = {"point", "curve", "surface", "volume"};
+  return dim >= 0 && dim <= 3 ? kWords[dim] : "entity";
+}
+
+// Entities of physical groups `tags` of dimension dim, signed as stored. An unknown group
+// gives nothing (Gmsh 4.8.4: `#Physical Curve{7}[]` is 0).
+std::vector<int> physical_members(const geo::Model& m, int dim, const std::vector<int>& tags) {
+  std::vector<int> out;
+  for (int t : tags)
+    if (const geo::PhysicalGroup* g = m.physical(dim, t)) out.insert(out.end(), g->entities.begin(), g->entities.end());
+  return out;
+}
+
+std::vector<double> numbers_of(Interpreter& in, const ExprList& items) {
+  std::vector<double> out;
+  for (ExprId e : items) {
+    const std::vector<double> v = in.eval_numbers(e);
+    out.insert(out.end(), v.begin(), v.end());
+  }
+  return out;
+}
+
+std::vector<double> sized(Interpreter& in, SourceRange at, std::vector<double> v, std::size_t n, const char* what) {
+  if (v.size() != n)
+    in.fail_fmt(at, Diag::ListSizeMismatch, fmt::format("{} needs {} numbers, got {}", what, n, v.size()));
+  return v;
+}
+
+Vec3 vec3(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
+
+std::vector<geo::DimTag> apply_transform(Interpreter& in, const Expr& x, const TransformExpr& t) {
+  geo::Model& m = in.kernel().model;
+  const SourceRange at = x.range;
+  // The parameters first, as Gmsh's parser reduces them before the shapes.
+  std::vector<std::vector<double>> p;
+  for (ExprId e : t.params) p.push_back(in.eval_numbers(e));
+  std::vector<geo::DimTag> ents = eval_shape_block(in, t.shapes, false);
+  sync_geometry_options(in);
+  geo::GeoStatus st;
+  switch (t.kind) {
+    case TransformKind::Translate:
+      st = m.translate(ents, vec3(sized(in, at, numbers_of(in, t.params), 3, "Translate{dx, dy, dz}")));
+      break;
+    case TransformKind::Rotate: {
+      if (p.size() != 3)
+        in.fail_fmt(at, Diag::ListSizeMismatch, "Rotate needs {{{{ax, ay, az}}, {{px, py, pz}}, angle}}");
+      const Vec3 axis = vec3(sized(in, at, p[0], 3, "the Rotate axis"));
+      const Vec3 point = vec3(sized(in, at, p[1], 3, "the Rotate point"));
+      st = m.rotate(ents, axis, point, sized(in, at, p[2], 1, "the Rotate angle")[0]);
+      break;
+    }
+    case TransformKind::Symmetry: {
+      const std::vector<double> a = sized(in, at, numbers_of(in, t.params), 4, "Symmetry{a, b, c, d}");
+      st = m.symmetry(ents, a[0], a[1], a[2], a[3]);
+      break;
+    }
+    case TransformKind::Dilate: {
+      if (p.size() != 2) in.fail_fmt(at, Diag::ListSizeMismatch, "Dilate needs {{{{cx, cy, cz}}, factor}}");
+      const Vec3 c = vec3(sized(in, at, p[0], 3, "the Dilate centre"));
+      if (p[1].size() != 1 && p[1].size() != 3)
+        in.fail_fmt(at, Diag::ListSizeMismatch,
+                    fmt::format("the Dilate factor needs 1 or 3 numbers, got {}", p[1].size()));
+      const Vec3 f = p[1].size() == 1 ? Vec3{p[1][0], p[1][0], p[1][0]} : vec3(p[1]);
+      st = m.dilate(ents, c, f);
+      break;
+    }
+    case TransformKind::Duplicata: {
+      auto r = m.duplicate(ents);
+      if (!r) fail_geo(in, at, r.error());
+      for (const geo::DimTag& d : *r) record_created(in.kernel(), d.dim, std::abs(d.tag), at);
+      return std::move(*r);
+    }
+  }
+  if (!st) fail_geo(in, at, st.error());
+  return ents;
+}
+
+std::vector<geo::DimTag> eval_boundary(Interpreter& in, const Expr& x, const BoundaryExpr& b) {
+  const geo::Model& m = in.kernel().model;
+  std::vector<geo::DimTag> ents = eval_shape_block(in, b.shapes, true);
+  if (b.kind != BoundaryKind::PointsOf) {
+    auto r = m.boundary(ents, b.kind == BoundaryKind::CombinedBoundary);
+    if (!r) fail_geo(in, x.range, r.error());
+    return std::move(*r);
+  }
+  // PointsOf: every point below the entities, each once, in the order first reached.
+  std::vector<geo::DimTag> points;
+  while (!ents.empty()) {
+    std::vector<geo::DimTag> higher;
+    for (const geo::DimTag& d : ents) {
+      if (d.dim == 0) {
+        const geo::DimTag p{0, std::abs(d.tag)};
+        if (std::find(points.begin(), points.end(), p) == points.end()) points.push_back(p);
+      } else {
+        higher.push_back(d);
+      }
+    }
+    if (higher.empty()) break;
+    auto r = m.boundary(higher, false);
+    if (!r) fail_geo(in, x.range, r.error());
+    ents = std::move(*r);
+  }
+  return points;
+}
+
+Value tag_list(const std::vector<geo::DimTag>& ents) {
+  std::vector<double> out;
+  out.reserve(ents.size());
+  for (const geo::DimTag& d : ents) out.push_back(d.tag);
+  return Value::list(std::move(out));
+}
+
+Value eval_entity_query(Interpreter& in, const Expr& x, const EntityQueryExpr& q) {
+  const geo::Model& m = in.kernel().model;
+  const int dim = static_cast<int>(q.ent);
+  std::vector<double> out;
+  if (q.physical) {
+    std::vector<int> groups;
+    if (q.all) {
+      for (const auto& [key, g] : m.physicals())
+        if (key.first == dim) groups.push_back(key.second);
+    } else {
+      for (ExprId e : q.tags) {
+        const std::vector<int> t = eval_tags(in, e);
+        groups.insert(groups.end(), t.begin(), t.end());
+      }
+    }
+    for (int e : physical_members(m, dim, groups)) out.push_back(e);
+    return Value::list(std::move(out));
+  }
+  if (q.all) {
+    if (dim <= 2)
+      for (int t : m.tags(dim)) out.push_back(t);
+    return Value::list(std::move(out));
+  }
+  if (q.ent != EntityKind::Point)
+    in.fail_fmt(x.range, Diag::InvalidOperation,
+                fmt::format("'{}{{t}}' has no value: only Point{{t}} (its coordinates) and {}{{:}} (all tags)",
+                            entity_name(q.ent), entity_name(q.ent)));
+  for (ExprId e : q.tags) {
+    for (int t : eval_tags(in, e)) {
+      const geo::ModelVertex* v = m.vertex(t);
+      if (!v)
+        fail_geo(in, x.range, geo::make_error(geo::GeoErrorKind::MissingEntity, geo::EntityKind::Point, {t},
+                                             fmt::format("unknown point {} in Point{{}}", t)));
+      out.insert(out.end(), {v->xyz.x, v->xyz.y, v->xyz.z});
+    }
+  }
+  return Value::list(std::move(out));
+}
+
+}  // namespace
+
+std::vector<geo::DimTag> eval_shape_block(Interpreter& in, const ShapeBlock& block, bool keep_sign) {
+  std::vector<geo::DimTag> out;
+  for (const ShapeItem& item : block) {
+    switch (item.kind) {
+      case ShapeItem::Kind::Entities: {
+        const geo::Model& m = in.kernel().model;
+        const int dim = static_cast<int>(item.ent);
+        std::vector<int> tags;
+        if (item.all) {
+          tags = m.tags(dim);
+        } else {
+          for (ExprId e : item.tags) {
+            const std::vector<int> t = eval_tags(in, e);
+            tags.insert(tags.end(), t.begin(), t.end());
+          }
+        }
+        if (item.physical) tags = physical_members(m, dim, tags);
+        for (int t : tags) out.push_back({dim, keep_sign ? t : std::abs(t)});
+        break;
+      }
+      case ShapeItem::Kind::Create:
+        if (auto made = exec_geometry_stmt(in, item.create)) out.push_back(*made);
+        break;
+      case ShapeItem::Kind::Nested: {
+        const std::vector<geo::DimTag> inner = eval_shape_expr(in, item.nested);
+        out.insert(out.end(), inner.begin(), inner.end());
+        break;
+      }
+    }
+  }
+  return out;
+}
+
+std::vector<geo::DimTag> eval_shape_expr(Interpreter& in, ExprId e) {
+  const Expr& x = in.ast().expr(e);
+  if (const auto* t = std::get_if<TransformExpr>(&x.node)) return apply_transform(in, x, *t);
+  if (const auto* b = std::get_if<BoundaryExpr>(&x.node)) return eval_boundary(in, x, *b);
+  in.fail_fmt(x.range, Diag::WrongType, "expected a transform, Duplicata or Boundary expression");
+}
+
+Value eval_model_expr(Interpreter& in, ExprId e) {
+  const Expr& x = in.ast().expr(e);
+  switch (x.kind()) {
+    case ExprKind::EntityQuery: return eval_entity_query(in, x, std::get<EntityQueryExpr>(x.node));
+    case ExprKind::EntityInBox: {
+      const auto& q = std::get<EntityInBoxExpr>(x.node);
+      const std::vector<double> b = sized(in, x.range, numbers_of(in, q.box), 6, "In BoundingBox{xmin, ymin, zmin, xmax, ymax, zmax}");
+      std::vector<double> out;
+      const int dim = static_cast<int>(q.ent);
+      if (dim <= 2)
+        for (int t : in.kernel().model.in_bounding_box(dim, {b[0], b[1], b[2]}, {b[3], b[4], b[5]})) out.push_back(t);
+      return Value::list(std::move(out));
+    }
+    case ExprKind::Boundary:
+    case ExprKind::Transform: return tag_list(eval_shape_expr(in, e));
+    case ExprKind::CoastlineQuery: in.not_supported_expr(e, "Coastline{}");
+    default: break;
+  }
+  in.not_supported_expr(e, in.text_of(x.range).substr(0, 30));
+}
+
+}  // namespace sm::interp

@@ -1,0 +1,36 @@
+// Shared by the geometry statement and query files: tags from expressions, entity lists
+// from shape blocks (`{ Point{1}; Curve{2:4}; }`), and running a creation statement that
+// appears inside such a block.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "geo/model.h"
+#include "lang/ast.h"
+
+namespace sm::interp {
+
+class Interpreter;
+
+/// Copies the Geometry.* options the kernel reads (Tolerance, OldNewReg, AutoCoherence).
+void sync_geometry_options(Interpreter& in);
+
+/// An entity tag: the number truncated toward zero as Gmsh does; an error when it is
+/// not finite or out of the int range.
+int to_tag(Interpreter& in, double v, lang::SourceRange at);
+int eval_tag(Interpreter& in, lang::ExprId e);
+/// Every number of a (list) expression as tags.
+std::vector<int> eval_tags(Interpreter& in, lang::ExprId e);
+
+/// The entities of a shape block, in order. `keep_sign` keeps `-c` (Boundary); else tags
+/// are made positive. Creation items run their statement; nested transforms run.
+std::vector<geo::DimTag> eval_shape_block(Interpreter& in, const lang::ShapeBlock& block, bool keep_sign);
+
+/// A Translate/Rotate/Symmetry/Dilate/Duplicata/Boundary expression as entities.
+std::vector<geo::DimTag> eval_shape_expr(Interpreter& in, lang::ExprId e);
+
+/// Runs a geometry statement; returns the elementary entity it created, if any.
+std::optional<geo::DimTag> exec_geometry_stmt(Interpreter& in, lang::StmtId s);
+
+}  // namespace sm::interp
