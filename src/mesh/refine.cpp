@@ -8,6 +8,7 @@
 #include <bit>
 #include <cmath>
 #include <string>
+#include <span>
 #include <vector>
 
 #include "mesh/geometry.h"
@@ -33,8 +34,7 @@ class Refiner {
   void run();
 
  private:
-  double size_at(Vec2 p) const { return opt_.size_at ? opt_.size_at(p) : opt_.size; }
-  void consider(std::uint32_t t);
+  void consider(std::span<const std::uint32_t> tris);
   std::uint32_t locate(Vec2 c, std::uint32_t t);
   bool insert(Vec2 c, std::uint32_t t0);
   std::uint32_t rand3() {
@@ -56,23 +56,37 @@ class Refiner {
   };
   std::vector<std::uint32_t> stack_, cavity_, vmap_;
   std::vector<Bound> bound_;
+  std::vector<Vec2> cc_;
+  std::vector<double> h_;
 };
 
-void Refiner::consider(std::uint32_t t) {
-  const Vec2 a = m_.pos(m_.vertex(TriId{t}, 0)), b = m_.pos(m_.vertex(TriId{t}, 1)), c = m_.pos(m_.vertex(TriId{t}, 2));
-  const Vec2 cc = circumcentre(a, b, c);
-  const double h = size_at(cc);
-  if (!(h > 0) || !std::isfinite(h)) {
-    if (res_.error.empty()) res_.error = "mesh size must be positive and finite (got " + std::to_string(h) + ")";
-    return;
+// Queues the triangles whose circumradius exceeds the bound, with the size
+// field evaluated once for the whole batch of circumcentres.
+void Refiner::consider(std::span<const std::uint32_t> tris) {
+  cc_.resize(tris.size());
+  h_.resize(tris.size());
+  for (std::size_t i = 0; i < tris.size(); ++i) {
+    const TriId t{tris[i]};
+    cc_[i] = circumcentre(m_.pos(m_.vertex(t, 0)), m_.pos(m_.vertex(t, 1)), m_.pos(m_.vertex(t, 2)));
   }
-  const double q = norm2(cc - a) / (h * h);
-  queued_[t] = 0;
-  if (q > opt_.radius_limit * opt_.radius_limit) {
-    const std::uint32_t bits = std::bit_cast<std::uint32_t>(static_cast<float>(q));
-    queued_[t] = bits;
-    heap_.push_back(std::uint64_t{bits} << 32 | (~t & 0xFFFFFFFFu));
-    std::push_heap(heap_.begin(), heap_.end());
+  if (opt_.size_at) opt_.size_at(cc_, h_);
+  else std::fill(h_.begin(), h_.end(), opt_.size);
+  const double limit2 = opt_.radius_limit * opt_.radius_limit;
+  for (std::size_t i = 0; i < tris.size(); ++i) {
+    const std::uint32_t t = tris[i];
+    const double h = h_[i];
+    if (!(h > 0) || !std::isfinite(h)) {
+      if (res_.error.empty()) res_.error = "mesh size must be positive and finite (got " + std::to_string(h) + ")";
+      return;
+    }
+    const double q = norm2(cc_[i] - m_.pos(m_.vertex(TriId{t}, 0))) / (h * h);
+    queued_[t] = 0;
+    if (q > limit2) {
+      const std::uint32_t bits = std::bit_cast<std::uint32_t>(static_cast<float>(q));
+      queued_[t] = bits;
+      heap_.push_back(std::uint64_t{bits} << 32 | (~t & 0xFFFFFFFFu));
+      std::push_heap(heap_.begin(), heap_.end());
+    }
   }
 }
 
@@ -169,14 +183,17 @@ bool Refiner::insert(Vec2 c, std::uint32_t t0) {
     for (std::size_t i = 0; i < k; ++i) vmap_[bound_[i].a.value] = cavity_[i];
     for (std::size_t i = 0; i < k; ++i) m_.link(Side{3 * cavity_[i] + 1}, Side{3 * vmap_[bound_[i].b.value] + 2});
   }
-  for (std::size_t i = 0; i < k; ++i) consider(cavity_[i]);
+  consider(std::span<const std::uint32_t>(cavity_.data(), k));
   return true;
 }
 
 void Refiner::run() {
   queued_.assign(m_.num_slots(), 0);
+  std::vector<std::uint32_t> live;
   for (std::uint32_t t = 0; t < m_.num_slots(); ++t)
-    if (m_.alive(TriId{t})) consider(t);
+    if (m_.alive(TriId{t})) live.push_back(t);
+  for (std::size_t i = 0; i < live.size(); i += 4096)
+    consider(std::span<const std::uint32_t>(live.data() + i, std::min<std::size_t>(4096, live.size() - i)));
   while (!heap_.empty() && res_.error.empty()) {
     std::pop_heap(heap_.begin(), heap_.end());
     const Entry top = heap_.back();

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <string>
 
 #include "mesh/predicates.h"
@@ -15,7 +16,10 @@ namespace sm {
 
 struct RefineOptions {
   double size = 0.1;                     // uniform target edge length
-  std::function<double(Vec2)> size_at;   // optional: size at a point (overrides `size`)
+  /// Optional size field, evaluated in batches (STYLE 8: one call, many
+  /// points): h[i] = size at pts[i]. Overrides `size`. Called with the
+  /// circumcentres of the triangles an insertion creates.
+  std::function<void(std::span<const Vec2> pts, std::span<double> h)> size_at;
   /// A triangle is refined while circumradius / size exceeds this. For an
   /// equilateral triangle of side h, R / h = 1/sqrt(3) ~ 0.577.
   double radius_limit = 0.7071067811865476;

@@ -2,6 +2,9 @@
 // kept, sizes and quality within bounds, deterministic.
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <span>
+
 #include "mesh/check.h"
 #include "mesh/quality.h"
 #include "mesh/refine.h"
@@ -80,11 +83,17 @@ TEST_CASE("refine: square with circular holes and a graded size") {
   std::vector<Edge> edges;
   REQUIRE(testing::boundary_mesh(m, {sq, h1, h2}, &edges));
   RefineOptions opt;
-  opt.size_at = [](Vec2 p) { return 0.01 + 0.05 * std::min(1.0, std::fabs(p.y - 0.5)); };
+  const auto size = [](Vec2 p) { return 0.01 + 0.05 * std::min(1.0, std::fabs(p.y - 0.5)); };
+  std::size_t calls = 0, points = 0;
+  opt.size_at = [&](std::span<const Vec2> pts, std::span<double> h) {
+    ++calls, points += pts.size();
+    for (std::size_t i = 0; i < pts.size(); ++i) h[i] = size(pts[i]);
+  };
   const auto r = refine_del2d(m, opt);
   REQUIRE(r.ok());
   check_refined(m, edges);
-  const QualityStats q = mesh_quality(m, opt.size_at);
+  CHECK(points > 4 * calls);  // batches, not one call per point
+  const QualityStats q = mesh_quality(m, size);
   MESSAGE("holes, graded: " << q.triangles << " triangles, min rho " << q.min_rho << ", rho>0.9 " << q.share_rho_09
                             << ", len in [0.7,1.4] " << q.share_len_07_14);
   CHECK(q.min_rho > 0.2);
@@ -100,9 +109,11 @@ TEST_CASE("refine: a bad size is an error, not a hang") {
   const Loop sq = testing::polygon_loop(m, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.25, false);
   REQUIRE(testing::boundary_mesh(m, {sq}));
   RefineOptions opt;
-  opt.size_at = [](Vec2 p) { return p.x > 0.5 ? 0.0 : 0.1; };
+  opt.size_at = [](std::span<const Vec2> p, std::span<double> h) {
+    for (std::size_t i = 0; i < p.size(); ++i) h[i] = p[i].x > 0.5 ? 0.0 : 0.1;
+  };
   CHECK_FALSE(refine_del2d(m, opt).ok());
-  opt.size_at = [](Vec2) { return std::nan(""); };
+  opt.size_at = [](std::span<const Vec2>, std::span<double> h) { std::fill(h.begin(), h.end(), std::nan("")); };
   CHECK_FALSE(refine_del2d(m, opt).ok());
   opt.size_at = nullptr;
   opt.size = -1;
