@@ -1,6 +1,7 @@
 // Laplacian smoothing and Lawson flips on the flat store.
 #include "mesh/modify/smooth.h"
 
+#include <algorithm>
 #include <vector>
 
 #include "mesh/geometry.h"
@@ -42,36 +43,43 @@ std::uint64_t make_delaunay(TriangleStore& m) {
 }
 
 SmoothStats smooth_laplacian(TriangleStore& m, int passes) {
+  // Jacobi form: all free vertices move at once to the average of their
+  // neighbours from the previous positions, computed in streaming passes over
+  // the sides (each neighbour w of v appears once, as the side v -> w). Then
+  // every triangle is checked with the exact orient2d; corners of an inverted
+  // or flat triangle go back to their old place, until none is left.
   SmoothStats st;
-  std::vector<std::uint8_t> fixed(m.num_vertices(), 0);
+  const std::uint32_t nv = m.num_vertices();
+  std::vector<std::uint8_t> fixed(nv, 0);
   for (std::uint32_t s = 0; s < m.corner.size(); ++s) {
     if (!m.alive(tri_of(Side{s}))) continue;
     if (m.constrained(Side{s}) || !m.twin[s].valid()) fixed[m.corner[s].value] = fixed[m.dest(Side{s}).value] = 1;
   }
+  std::vector<Vec2> sum(nv), old(nv);
+  std::vector<std::uint32_t> count(nv);
   for (int pass = 0; pass < passes; ++pass) {
-    for (std::uint32_t v = 0; v < m.num_vertices(); ++v) {
-      const Side s0 = m.out_side[v];
-      if (fixed[v] || !s0.valid()) continue;
-      Vec2 sum{0, 0};
-      int n = 0;
-      Side s = s0;
-      do {
-        sum += m.pos(m.dest(s));
-        ++n;
-        s = m.twin[prev(s).value];
-      } while (s.valid() && s != s0);
-      if (!s.valid() || n < 3) continue;
-      const Vec2 old = m.xy[v];
-      m.xy[v] = sum / n;
-      bool ok = true;
-      s = s0;
-      do {
-        ok = orient2d(m.xy[v], m.pos(m.dest(s)), m.pos(m.apex(s))) == Sign::Positive;
-        s = m.twin[prev(s).value];
-      } while (ok && s != s0);
-      if (ok) ++st.moved;
-      else m.xy[v] = old, ++st.refused;
+    std::fill(sum.begin(), sum.end(), Vec2{0, 0});
+    std::fill(count.begin(), count.end(), 0);
+    for (std::uint32_t s = 0; s < m.corner.size(); ++s) {
+      if (!m.alive(tri_of(Side{s}))) continue;
+      const std::uint32_t v = m.corner[s].value;
+      sum[v] += m.pos(m.dest(Side{s}));
+      ++count[v];
     }
+    old = m.xy;
+    for (std::uint32_t v = 0; v < nv; ++v)
+      if (!fixed[v] && count[v] >= 3) m.xy[v] = sum[v] / count[v];
+    for (bool again = true; again;) {
+      again = false;
+      for (std::uint32_t t = 0; t < m.num_slots(); ++t) {
+        if (!m.alive(TriId{t})) continue;
+        const VertexId a = m.vertex(TriId{t}, 0), b = m.vertex(TriId{t}, 1), c = m.vertex(TriId{t}, 2);
+        if (orient2d(m.xy[a.value], m.xy[b.value], m.xy[c.value]) == Sign::Positive) continue;
+        for (VertexId v : {a, b, c})
+          if (!(m.xy[v.value] == old[v.value])) m.xy[v.value] = old[v.value], ++st.refused, again = true;
+      }
+    }
+    for (std::uint32_t v = 0; v < nv; ++v) st.moved += !(m.xy[v] == old[v]);
     st.flips += make_delaunay(m);
   }
   return st;
