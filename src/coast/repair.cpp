@@ -1,5 +1,6 @@
-// Repair by local refinement toward the original shoreline, then by dropping islands
-// below the accuracy; strait detection and island merging across straits.
+// Repair of coarsened loops: local refinement toward the original shoreline, dropping
+// islands below the accuracy, uniting overlaps and cutting slivers of the source data; the
+// optional spline-hull pass; strait detection and island merging across straits.
 #include "coast/repair.h"
 
 #include <algorithm>
@@ -42,8 +43,6 @@ void refine_indices(const WorkCurve& c, std::uint32_t k, std::size_t round, std:
   for (std::size_t i = a + 1; i < b; ++i) out.push_back(static_cast<std::uint32_t>(i % n));
 }
 
-// Segment s of a loop polygon starts at refs[s]; which curve/keep position owns it.
-LoopVertexRef segment_owner(const std::vector<LoopVertexRef>& refs, std::size_t s) { return refs[s]; }
 
 double island_perimeter_m(const WorkCurve& c, double radius) {
   double p = 0;
@@ -413,7 +412,7 @@ Result<std::size_t> repair_loops(std::vector<WorkCurve>& curves, std::vector<Wor
     for (const SegmentHit& h : hits) {
       bool any = false;
       for (const auto& [l, s] : {std::pair{h.loop_a, h.seg_a}, std::pair{h.loop_b, h.seg_b}}) {
-        const LoopVertexRef r = segment_owner(refs[l], s);
+        const LoopVertexRef r = refs[l][s];   // the segment's first vertex owns it
         refine_indices(curves[r.curve], r.k, round, idx);
         for (std::uint32_t i : idx) inserts.push_back({r.curve, i});
         any |= !idx.empty();
