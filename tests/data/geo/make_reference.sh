@@ -8,3 +8,25 @@ cd "$(dirname "$0")"
 for f in curves_euclid curves_polar coast_polar; do
   gmsh "$f.geo" -1 -format msh41 -save_parametric -o "$f.msh41" > /dev/null
 done
+# All 1,440 coastlines of world_i_A100.txt as closed BSplines (Eurasia: 35,321 control
+# points), meshed by gmsh at lc = 0.05 on the unit sphere; only the curve nodes are kept:
+# "curve t x y z" per line (the full .msh41 would be 33 MB with every control point).
+/usr/bin/python3 make_world_geo.py ../../../../shared/data/gshhg/world_i_A100.txt /tmp/world_i_$$.geo 0.05
+gmsh /tmp/world_i_$$.geo -1 -format msh41 -save_parametric -o /tmp/world_i_$$.msh41 > /dev/null
+/usr/bin/python3 - /tmp/world_i_$$.msh41 > world_i_bspline_nodes.txt <<'PY'
+import sys
+f = open(sys.argv[1])
+for line in f:
+    if line.startswith('$Nodes'):
+        break
+nb, nn, lo, hi = map(int, f.readline().split())
+for b in range(nb):
+    d, t, par, n = map(int, f.readline().split())
+    for _ in range(n):
+        f.readline()
+    for _ in range(n):
+        row = f.readline().split()
+        if d == 1:
+            print(t, row[3], row[0], row[1], row[2])
+PY
+rm -f /tmp/world_i_$$.geo /tmp/world_i_$$.msh41

@@ -6,6 +6,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -159,4 +160,48 @@ TEST_CASE("world model: world_c.txt as closed BSplines on a PolarSphere, Antarct
   REQUIRE_FALSE(bad);
   CHECK(bad.error().kind == GeoErrorKind::HoleOutside);
   CHECK(bad.error().tags == std::vector<int>{s + 1, outer, holes.front()});
+}
+
+TEST_CASE("world_i_A100 coastlines as closed BSplines match gmsh 4.8.4 at its 2,844 curve nodes") {
+  // tests/data/geo/world_i_bspline_nodes.txt: "curve t x y z" for every curve node of gmsh's
+  // 1D mesh (lc 0.05 on the unit sphere) of the whole file as closed BSplines in Plugin(GSHHS)
+  // (u,v) (make_world_geo.py, make_reference.sh). Curve k is segment k; Eurasia (k = 1) has
+  // 35,321 control points.
+  const std::vector<Segment> segs = read_segments(std::string(SM_SHARED_DATA) + "/gshhg/world_i_A100.txt");
+  REQUIRE(segs.size() == 1440);
+  const PolarSphere ps({0, 0, 0}, 1.0);
+  std::vector<Curve> curves;
+  curves.reserve(segs.size());
+  for (const Segment& s : segs) {
+    CurveDef d;
+    d.kind = CurveKind::BSpline;
+    d.surface = SurfaceGeometry(ps);
+    d.periodic = true;
+    for (std::size_t i = 0; i + 1 < s.pts.size(); ++i) {
+      d.uv.push_back(ps.param_from_lonlat(s.pts[i]));
+      d.xyz.push_back(ps.point(d.uv.back()));
+    }
+    d.uv.push_back(d.uv.front());
+    d.xyz.push_back(d.xyz.front());
+    auto c = Curve::make(std::move(d));
+    REQUIRE(c.ok());
+    curves.push_back(std::move(*c));
+  }
+  CHECK(curves[0].control_uv().size() == 35322);
+  std::ifstream in(std::string(SM_TEST_DATA) + "/geo/world_i_bspline_nodes.txt");
+  REQUIRE(in.good());
+  int k = 0;
+  double t = 0, worst = 0;
+  Vec3 x;
+  std::size_t nodes = 0, on_eurasia = 0;
+  while (in >> k >> t >> x.x >> x.y >> x.z) {
+    REQUIRE(k >= 1);
+    REQUIRE(k <= 1440);
+    worst = std::max(worst, norm(curves[k - 1].point(t) - x));
+    ++nodes;
+    on_eurasia += k == 1;
+  }
+  CHECK(nodes == 2844);
+  CHECK(on_eurasia == 385);
+  CHECK(worst < 1e-9);
 }
