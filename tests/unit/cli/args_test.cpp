@@ -93,6 +93,14 @@ TEST_CASE("cli: exit statuses of the binary") {
   CHECK(run_status(bin + " --bogus " + d + "ok.geo") == 2);
   CHECK(run_status(bin + " -0 -setnumber Mesh.Algoritm 5 " + d + "ok.geo") == 2);
   CHECK(run_status(bin + " --test " + d + "nowhere") == 2);
+  // Include finds files through -I and $STEREOMESH_PATH (after the script's directory).
+  fs::create_directories(dir / "lib1");
+  fs::create_directories(dir / "lib2");
+  std::ofstream(dir / "lib1" / "one.geo") << "one = 1;\n";
+  std::ofstream(dir / "lib2" / "two.geo") << "two = 2;\n";
+  std::ofstream(dir / "inc.geo") << "Include \"one.geo\";\nInclude \"two.geo\";\nAssert(one + two == 3);\n";
+  CHECK(run_status(bin + " -0 " + d + "inc.geo") == 1);
+  CHECK(run_status("STEREOMESH_PATH=/nonexistent:" + d + "lib2 " + bin + " -0 -I " + d + "lib1 " + d + "inc.geo") == 0);
   // Printf on stdout, diagnostics on stderr.
   std::FILE* p = ::popen((bin + " -0 -setnumber n 7 " + d + "ok.geo 2>/dev/null").c_str(), "r");
   REQUIRE(p);
