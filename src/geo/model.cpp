@@ -509,20 +509,18 @@ GeoResult<std::vector<DimTag>> Model::boundary(const std::vector<DimTag>& entiti
     for (DimTag d : raw) out.push_back({d.dim, d.dim == 0 ? std::abs(d.tag) : d.tag});
     return out;
   }
-  // Combined: oriented sum; an entity seen with both orientations cancels. Output keeps the
-  // order of first appearance (deterministic).
-  std::vector<std::pair<DimTag, int>> sums;   // (|entity|, signed count)
-  std::map<std::pair<int, int>, std::size_t> index;
+  // Combined, as Gmsh 4.8.4 (GModel::getBoundaryTags): an entity seen an even number of
+  // times cancels whatever its signs (two surfaces written with the same orientation of
+  // their shared curve still share it); the rest is listed by dimension, then by |tag|, with
+  // the sign of its first appearance.
+  std::map<std::pair<int, int>, std::pair<int, int>> seen;   // (dim, |tag|) -> (count, first tag)
   for (DimTag d : raw) {
-    const DimTag key{d.dim, std::abs(d.tag)};
-    const int s = d.tag > 0 ? 1 : -1;
-    auto [it, fresh] = index.emplace(std::make_pair(key.dim, key.tag), sums.size());
-    if (fresh) sums.push_back({key, s});
-    else sums[it->second].second += s;
+    auto [it, fresh] = seen.emplace(std::make_pair(d.dim, std::abs(d.tag)), std::make_pair(0, d.tag));
+    ++it->second.first;
   }
-  for (const auto& [key, count] : sums) {
-    if (count == 0) continue;
-    out.push_back({key.dim, key.dim == 0 ? key.tag : (count > 0 ? key.tag : -key.tag)});
+  for (const auto& [key, v] : seen) {
+    if (v.first % 2 == 0) continue;
+    out.push_back({key.first, key.first == 0 ? key.second : v.second});
   }
   return out;
 }
