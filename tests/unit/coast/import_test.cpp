@@ -259,3 +259,19 @@ TEST_CASE("import: Antarctica's grounding line (level 6) absorbs the ice-shelf i
   CHECK(m->surfaces.size() > 100);   // the ocean and the lakes
   check_model(*m);
 }
+
+TEST_CASE("import: the same input gives the same model, bit for bit") {
+  ImportOptions o;
+  o.gamma = constant(5000);
+  o.close_straits = true;
+  auto a = build_coast_model(load("northsea_scheldt_f.txt"), o);
+  auto b = build_coast_model(load("northsea_scheldt_f.txt"), o);
+  REQUIRE(a.ok());
+  REQUIRE(b.ok());
+  REQUIRE(a->curves.size() == b->curves.size());
+  for (std::size_t i = 0; i < a->curves.size(); ++i) {
+    REQUIRE(a->curves[i].uv.size() == b->curves[i].uv.size());
+    for (std::size_t k = 0; k < a->curves[i].uv.size(); ++k) CHECK(a->curves[i].uv[k] == b->curves[i].uv[k]);
+  }
+  CHECK(a->report.lines() == b->report.lines());
+}
