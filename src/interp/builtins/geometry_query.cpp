@@ -22,12 +22,14 @@ const char* dim_word(int dim) {
   return dim >= 0 && dim <= 3 ? kWords[dim] : "entity";
 }
 
-// Entities of physical groups `tags` of dimension dim, signed as stored. An unknown group
-// gives nothing (Gmsh 4.8.4: `#Physical Curve{7}[]` is 0).
+// Entities of physical groups `tags` of dimension dim, as positive tags (the sign stored for
+// MSH 2 orientation is not listed, as in Gmsh). An unknown group gives nothing (Gmsh 4.8.4:
+// `#Physical Curve{7}[]` is 0).
 std::vector<int> physical_members(const geo::Model& m, int dim, const std::vector<int>& tags) {
   std::vector<int> out;
   for (int t : tags)
-    if (const geo::PhysicalGroup* g = m.physical(dim, t)) out.insert(out.end(), g->entities.begin(), g->entities.end());
+    if (const geo::PhysicalGroup* g = m.physical(dim, t))
+      for (int e : g->entities) out.push_back(std::abs(e));
   return out;
 }
 
