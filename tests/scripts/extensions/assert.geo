@@ -1,4 +1,5 @@
 // Native extension: Assert(condition, "message", args...).
+// compare_with_gmsh: skip
 n = 4;
 Assert(n == 4, "n is %g", n);
 Assert(n > 0);

@@ -1,4 +1,5 @@
 // examples/hello.geo as a regression test (its Include of earth.geo uses the
+// compare_with_gmsh: skip
 // stdlib search path, a native feature). Output identical to gmsh 4.8.4 -0
 // when earth.geo is copied next to it.
 Include "../../../examples/hello.geo";

@@ -1,4 +1,5 @@
 // Native behaviour (not Gmsh 4.8.4): C printf semantics for %d %i %x %c %s and
+// compare_with_gmsh: skip
 // "%%", and string arguments. compare_with_gmsh.sh skips this directory.
 Printf("%d", 5);  // expect: 5
 Printf("%5.3d|", 42.9);  // expect:   042|

@@ -1,4 +1,5 @@
 // SetString/GetString (Gmsh 4.8.4's parser has no SetString statement).
+// compare_with_gmsh: skip
 SetString("ss", "val");
 s = GetString("ss");
 Printf(s);  // expect: val
