@@ -97,6 +97,13 @@ const SurfaceGeometry* Model::geometry(int tag) const {
   return it == geometries_.end() ? nullptr : &it->second;
 }
 
+std::vector<int> Model::physical_entities(int dim, int tag) const {
+  std::vector<int> out;
+  if (const PhysicalGroup* g = physical(dim, tag))
+    for (int e : g->entities) out.push_back(std::abs(e));
+  return out;
+}
+
 std::vector<int> Model::tags(int dim) const {
   std::vector<int> out;
   auto collect = [&out](const auto& m) {
@@ -491,9 +498,12 @@ GeoResult<std::vector<DimTag>> Model::boundary(const std::vector<DimTag>& entiti
     } else if (e.dim == 2) {
       const ModelSurface* s = surface(a);
       if (!s) return missing(EntityKind::Surface, e.tag, {}, " in Boundary");
-      for (int l : s->loops) {
+      for (std::size_t i = 0; i < s->loops.size(); ++i) {
+        // Gmsh lists a hole reversed (its curves negated, in reverse order) so that the
+        // holes run against the outer loop, as Boundary{} prints them (setSurfaceGeneratrices).
+        const int l = s->loops[i];
         const auto& cs = loops_.at(std::abs(l)).curves;
-        const int sign = (l > 0) == (e.tag > 0) ? 1 : -1;
+        const int sign = ((l > 0) == (e.tag > 0)) == (i == 0) ? 1 : -1;
         if (sign > 0)
           for (int c : cs) raw.push_back({1, c});
         else

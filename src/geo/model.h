@@ -171,6 +171,9 @@ class Model {
   const ModelCurveLoop* curve_loop(int tag) const;
   const ModelSurface* surface(int tag) const;
   const PhysicalGroup* physical(int dim, int tag) const;
+  /// "Physical Curve{t}" as Gmsh 4.8.4 answers it: the group's entity tags without their
+  /// orientation signs (the group keeps the signs for MSH 2 output); empty if no such group.
+  std::vector<int> physical_entities(int dim, int tag) const;
   const std::map<int, ModelVertex>& vertices() const { return vertices_; }
   const std::map<int, ModelCurve>& curves() const { return curves_; }
   const std::map<int, ModelCurveLoop>& curve_loops() const { return loops_; }

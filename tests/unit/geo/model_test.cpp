@@ -264,6 +264,12 @@ TEST_CASE("physical groups: Gmsh's auto tags, names, += and -=") {
   CHECK(*m.add_physical(0, std::nullopt, "p", {1}) == 21);
   CHECK(m.new_reg() == 22);   // Gmsh: newreg 22
   CHECK(m.add_physical(1, std::nullopt, "x", {99}).error().kind == GeoErrorKind::MissingEntity);
+  // Signs are kept for MSH 2 orientation; the script query lists tags unsigned (gmsh 4.8.4
+  // prints "2 3 4" for Physical Curve{6} after += {-4}).
+  REQUIRE(m.add_physical(1, 6, "", {-7}, PhysicalOp::Add));
+  CHECK(m.physical(1, 6)->entities == std::vector<int>{4, 5, -7});
+  CHECK(m.physical_entities(1, 6) == std::vector<int>{4, 5, 7});
+  CHECK(m.physical_entities(1, 99).empty());
 }
 
 TEST_CASE("Boundary and CombinedBoundary as Gmsh prints them") {
