@@ -54,6 +54,7 @@ constexpr std::string_view kFunctionNames[] = {
     "StrCat", "StrChoice", "StrCmp", "StrFind", "StrLen", "StrPrefix", "StrRelative", "StrReplace",
     "StrSub", "Tan", "Tanh", "TextAttributes", "Unique", "UpperCase", "Norm", "Sign", "Total",
     "StrSplit", "Hypot3",
+    "FieldValue", "FieldArgmin",   // native: size fields (interp/builtins/field_eval.cpp)
 };
 
 #define SM_CHECK_KIND(Enum, Variant, kind, Type) \

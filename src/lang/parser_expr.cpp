@@ -10,8 +10,8 @@ namespace sm::lang::detail {
 
 namespace {
 
-// Binding power of a binary operator (0: not one). Higher binds tighter.
-constexpr int kUnaryPrec = 8;
+// Binding power of a binary operator (0: not one). Higher binds tighter. The
+// prefix operators sit between `|`/`&` (7) and `^` (9): see parse_unary.
 constexpr int kCaretPrec = 9;
 int binary_prec(Tok k) {
   switch (k) {
@@ -90,7 +90,6 @@ ExprId Parser::parse_unary() {
     const ExprId operand = parse_binary(kCaretPrec);
     return add_expr(op, UnaryExpr{op.kind, operand});
   }
-  (void)kUnaryPrec;
   return parse_postfix();
 }
 

@@ -1,3 +1,4 @@
+// Diagnostics engine: exact rendering, line tables, error limit, long lines, flush.
 #include <doctest/doctest.h>
 
 #include "lang/diagnostics.h"

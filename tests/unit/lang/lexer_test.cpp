@@ -1,3 +1,4 @@
+// Lexer: Gmsh number/keyword/operator rules, raw strings, bad bytes.
 #include <doctest/doctest.h>
 
 #include "lang_test_util.h"

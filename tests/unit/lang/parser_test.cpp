@@ -1,3 +1,4 @@
+// Parser: AST shapes (via dump) for every construct, precedence, Gmsh tutorials.
 #include <doctest/doctest.h>
 
 #include <cstdio>

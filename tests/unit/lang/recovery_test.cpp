@@ -1,3 +1,4 @@
+// Error recovery: every independent error in one run, unclosed openers, quiet ends.
 #include <doctest/doctest.h>
 
 #include "lang_test_util.h"
