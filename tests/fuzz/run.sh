@@ -11,6 +11,10 @@
 # found a crash, leak, timeout or invariant violation (the input is saved under
 # $SM_FUZZ_ARTIFACTS, default <build dir>/fuzz-artifacts/: add it to tests/fuzz/crashes/ with the
 # fix); 2 usage or build error.
+#
+# Environment: SM_FUZZ_BUILD_DIR (build dir), SM_FUZZ_JOBS (build jobs, default 2), SM_FUZZ_CORPUS
+# (keep the grown corpus there), SM_FUZZ_ARTIFACTS (where crashing inputs go), SM_FUZZ_PARSER_ONLY=1
+# (fuzz lexer+parser only: builds sm_lang alone instead of the interpreter and the whole kernel).
 set -euo pipefail
 
 usage() { echo "usage: $0 SECONDS | $0 --no-build SECONDS FUZZ_BINARY" >&2; exit 2; }
@@ -29,7 +33,8 @@ if [[ $build == 1 ]]; then
   generator=()
   command -v ninja >/dev/null && generator=(-G Ninja)
   cmake -S "$root" -B "$bdir" "${generator[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-        -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DSTEREOMESH_FUZZ=ON >/dev/null || exit 2
+        -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DSTEREOMESH_FUZZ=ON \
+        -DSTEREOMESH_FUZZ_PARSER_ONLY="$([[ -n "${SM_FUZZ_PARSER_ONLY:-}" ]] && echo ON || echo OFF)" >/dev/null || exit 2
   cmake --build "$bdir" --target fuzz_geo -j "${SM_FUZZ_JOBS:-2}" || exit 2
   bin="$bdir/tests/fuzz/fuzz_geo"
 else
