@@ -481,3 +481,20 @@ TEST_CASE("a transform that breaks an arc fails and leaves the model unchanged")
   REQUIRE(m.dilate({{1, 1}}, {0, 0, 0}, {2, 2, 2}));   // uniform: fine
   CHECK(norm(m.curve(1)->shape->point(0.5) - Vec3{std::sqrt(2.0), std::sqrt(2.0), 0}) < 1e-14);
 }
+
+TEST_CASE("Split Curve inside a loop and a physical group (gmsh_queries/split_in_loop.geo)") {
+  Model m;
+  const Vec3 p[] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  for (int i = 0; i < 4; ++i) REQUIRE(m.add_point(i + 1, p[i]));
+  REQUIRE(m.add_curve(1, CurveKind::Line, {1, 2, 3}));
+  REQUIRE(m.add_curve(2, CurveKind::Line, {3, 4, 1}));
+  REQUIRE(m.add_curve_loop(1, {1, 2}));
+  REQUIRE(m.add_plane_surface(1, {1}));
+  REQUIRE(m.add_physical(1, 7, "", {1}));
+  auto pieces = m.split_curve(1, {2});
+  REQUIRE(pieces);
+  CHECK(*pieces == std::vector<int>{8, 9});                                    // newreg after physical 7
+  CHECK(m.tags(1) == std::vector<int>{2, 8, 9});                               // Gmsh: curves 2 8 9
+  CHECK(tags_of(*m.boundary({{2, 1}}, false)) == std::vector<int>{8, 9, 2});   // Gmsh: bnd 8 9 2
+  CHECK(m.physical_entities(1, 7) == std::vector<int>{8, 9});                  // Gmsh: phys 8 9
+}

@@ -4,7 +4,7 @@
 # in <script>.out; filling_surfaces.out holds model.getValue samples (python3-gmsh).
 set -e
 cd "$(dirname "$0")"
-for f in tags physicals_boundary_delete duplicata_transforms duplicata_tags split_curve bounding_box; do
+for f in tags physicals_boundary_delete duplicata_transforms duplicata_tags split_curve split_in_loop bounding_box; do
   gmsh -0 "$f.geo" -o /tmp/gmsh_queries_$$.geo_unrolled 2>&1 | grep -v '^Info' > "$f.out" || true
   echo "--- unrolled:" >> "$f.out"
   cat /tmp/gmsh_queries_$$.geo_unrolled >> "$f.out"
