@@ -173,13 +173,25 @@ void for_each_candidate(const std::vector<Seg>& segs, const Grid& g, Intersectio
 
 }  // namespace
 
-std::vector<SegmentHit> find_intersections(std::span<const std::vector<Vec2>> loops, IntersectionStats* stats) {
+std::vector<SegmentHit> find_intersections(std::span<const std::vector<Vec2>> loops, IntersectionStats* stats,
+                                           std::span<const char> active) {
   std::vector<SegmentHit> hits;
-  const std::vector<Seg> segs = make_segments(loops, {});
+  std::vector<Seg> segs = make_segments(loops, {});
+  if (!active.empty()) {
+    // Segments of inactive loops matter only where an active segment's box reaches them:
+    // keep those whose box meets the union box of the active segments.
+    Vec2 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()}, hi = -lo;
+    for (const Seg& s : segs)
+      if (active[s.loop]) lo = {std::min(lo.x, s.lo.x), std::min(lo.y, s.lo.y)}, hi = {std::max(hi.x, s.hi.x), std::max(hi.y, s.hi.y)};
+    std::erase_if(segs, [&](const Seg& s) {
+      return !active[s.loop] && (s.lo.x > hi.x || s.hi.x < lo.x || s.lo.y > hi.y || s.hi.y < lo.y);
+    });
+  }
   if (stats) *stats = {segs.size(), 0, 0};
   if (segs.size() < 2) return hits;
   const Grid g = make_grid(segs);
   for_each_candidate(segs, g, stats, [&](const Seg& s, const Seg& t) {
+    if (!active.empty() && !active[s.loop] && !active[t.loop]) return;
     HitKind kind;
     Vec2 where;
     if (!classify(s, t, kind, where)) return;

@@ -30,8 +30,10 @@ struct IntersectionStats {
 
 /// Every pair of non-adjacent segments that cross, touch or overlap, plus adjacent ones
 /// that fold back. Loops are closed (first point not repeated). Sorted, deterministic.
+/// With `active` (one flag per loop), only pairs involving an active loop are tested: the
+/// repair re-checks just the loops it changed.
 std::vector<SegmentHit> find_intersections(std::span<const std::vector<Vec2>> loops,
-                                           IntersectionStats* stats = nullptr);
+                                           IntersectionStats* stats = nullptr, std::span<const char> active = {});
 
 /// Segments of different loops (or far apart in one loop) closer than `width(loop, seg)`
 /// without touching: narrow straits. Found with the same grid, cells enlarged by the width.

@@ -391,14 +391,27 @@ Result<std::size_t> repair_loops(std::vector<WorkCurve>& curves, std::vector<Wor
       }
     }
   };
+  // Loops changed since they were last checked; pairs of unchanged loops keep their
+  // earlier (clean) verdict.
+  std::vector<char> dirty(loops.size(), 1);
+  auto mark_curve = [&](std::uint32_t ci) {
+    for (std::size_t l = 0; l < loops.size(); ++l)
+      for (std::uint32_t c : loops[l].curves)
+        if (c == ci) dirty[l] = 1;
+  };
   std::size_t round = 0;
   for (;; ++round) {
     rebuild();
-    const std::vector<SegmentHit> hits = find_intersections(polys);
+    const std::vector<SegmentHit> hits = find_intersections(polys, nullptr, dirty);
+    // Next round re-checks the loops met here (a hit left alone this round stays) and
+    // those changed below.
+    std::fill(dirty.begin(), dirty.end(), 0);
+    for (const SegmentHit& h : hits) dirty[h.loop_a] = dirty[h.loop_b] = 1;
     if (hits.empty()) {
       if (!opt.check_splines || static_cast<int>(round) >= opt.max_rounds ||
           spline_pass(curves, loops, polys, refs, round, log))
         break;
+      std::fill(dirty.begin(), dirty.end(), 1);
       continue;   // points were put back: check the polygons again
     }
     if (static_cast<int>(round) >= opt.max_rounds)
@@ -429,6 +442,7 @@ Result<std::size_t> repair_loops(std::vector<WorkCurve>& curves, std::vector<Wor
         while (j < inserts.size() && inserts[j].first == ci) c.keep.push_back(inserts[j++].second);
         std::sort(c.keep.begin(), c.keep.end());
         c.keep.erase(std::unique(c.keep.begin(), c.keep.end()), c.keep.end());
+        mark_curve(ci);
         log.push_back({RepairKind::Refined, c.record, c.id, c.full[inserts[i].second], static_cast<double>(j - i)});
         i = j;
       }
@@ -474,6 +488,7 @@ Result<std::size_t> repair_loops(std::vector<WorkCurve>& curves, std::vector<Wor
             if (unite_island_with_coast(curves, loops[isl], polys[isl], refs[isl], polys[water], refs[water], pair,
                                         isl == a)) {
               used[a] = used[b] = 1;
+          dirty[a] = dirty[b] = 1;
               united = true;
               log.push_back({RepairKind::UnitedIslands, rec, id, uv_to_lonlat(pair.front()->where), 0});
             }
@@ -489,6 +504,7 @@ Result<std::size_t> repair_loops(std::vector<WorkCurve>& curves, std::vector<Wor
         const std::int64_t id_b = cb.id;
         if (unite_islands(curves, loops[a], loops[b], polys[a], refs[a], polys[b], refs[b], pair, true)) {
           used[a] = used[b] = 1;
+          dirty[a] = dirty[b] = 1;
           united = true;
           log.push_back({RepairKind::UnitedIslands, rec_b, id_b, uv_to_lonlat(pair.front()->where), 0});
         }
@@ -510,6 +526,7 @@ Result<std::size_t> repair_loops(std::vector<WorkCurve>& curves, std::vector<Wor
         log.push_back({RepairKind::CutSliver, c.record, c.id, where, 0});
         cut = true;
         cut_curve[ra.curve] = 1;
+        mark_curve(ra.curve);
       }
     }
     if (cut) continue;
