@@ -101,3 +101,27 @@ TEST_CASE("intersections: near misses measure straits") {
   const std::vector<std::vector<double>> narrow{{0.01, 0.01, 0.01, 0.01}, {0.01, 0.01, 0.01, 0.01}};
   CHECK(find_near_misses(two, narrow).empty());
 }
+
+TEST_CASE("intersections: an active mask reports exactly the hits of the active loops") {
+  std::mt19937 rng(99);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<std::vector<Vec2>> loops;
+  for (int l = 0; l < 12; ++l) {
+    const Vec2 c{u(rng), u(rng)};
+    std::vector<Vec2> p;
+    for (int i = 0; i < 20; ++i) {
+      const double a = 6.283185307179586 * i / 20;
+      p.push_back({c.x + 0.15 * (0.5 + u(rng)) * std::cos(a), c.y + 0.15 * (0.5 + u(rng)) * std::sin(a)});
+    }
+    loops.push_back(p);
+  }
+  const auto all = find_intersections(loops);
+  REQUIRE_FALSE(all.empty());
+  std::vector<char> active(loops.size(), 0);
+  active[3] = active[7] = 1;
+  const auto some = find_intersections(loops, nullptr, active);
+  std::size_t want = 0;
+  for (const auto& h : all) want += active[h.loop_a] || active[h.loop_b];
+  CHECK(some.size() == want);
+  for (const auto& h : some) CHECK((active[h.loop_a] || active[h.loop_b]));
+}
