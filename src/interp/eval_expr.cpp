@@ -456,6 +456,7 @@ Value Interpreter::eval_call(const Expr& e, const CallExpr& c) {
     if (c.args.empty()) need_args(1, 1);
     return eval(c.args[0]);   // ONELAB attributes are accepted and ignored
   }
+  if (Value v; eval_field_call(*this, e, c, v)) return v;   // FieldValue, FieldArgmin
   const BuiltinInfo* fn = find_builtin(fname);
   if (!fn) {
     std::string hint;

@@ -1,24 +1,205 @@
-// Mesh size field statements (`Field[n] = Type;`, options, actions, Background
-// Field). The field kernel arrives with a later issue; until then they report
-// 'not supported yet' once per kind of statement.
+// Mesh size field statements (gmsh-reference 4): `Field[n] = Kind;`,
+// `Field[n].Option = value;`, `Field[n].Action;`, `Delete Field[n];` and
+// `Background Field = n;`, recorded in the kernel's FieldSet with the
+// statement of each definition and option for located build errors.
+#include <cmath>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "field/error.h"
 #include "interp/builtins/dispatch.h"
+#include "interp/builtins/field_eval.h"
 #include "interp/interpreter.h"
 
 namespace sm::interp {
 
 using namespace sm::lang;
 
+namespace {
+
+// Gmsh truncates the id to an int; we also refuse what no int can hold.
+int field_id(Interpreter& in, ExprId e) {
+  const double v = in.eval_number(e);
+  if (!std::isfinite(v) || std::abs(v) > 2147483647.0)
+    in.fail_fmt(in.ast().expr(e).range, Diag::WrongType,
+                fmt::format("a field id must be an integer, not {}", v));
+  return static_cast<int>(v);
+}
+
+void require_field(Interpreter& in, int id, ExprId id_expr, std::string_view doing) {
+  if (in.kernel().fields.contains(id)) return;
+  const auto ids = in.kernel().fields.ids();
+  in.fail_fmt(in.ast().expr(id_expr).range, Diag::MissingField,
+              fmt::format("cannot {} Field[{}]: it is not defined{}", doing, id,
+                          ids.empty() ? std::string(" (no field is)")
+                                      : fmt::format(" (defined: {})", fmt::join(ids, ", "))));
+}
+
+void exec_field_new(Interpreter& in, const Stmt& s, const FieldNewStmt& n) {
+  const int id = field_id(in, n.id);
+  const std::string kind(in.ast().str(n.type));
+  KernelState& k = in.kernel();
+  try {
+    k.fields.define(id, kind);
+  } catch (const field::FieldError& e) {
+    if (e.code() == field::FieldErrc::DuplicateId) {
+      // Gmsh 4.8.4: "Field id n is already defined", and the old field stays.
+      std::string message = e.what();
+      message += ": 'Delete Field[n];' first to redefine it";
+      try {
+        in.fail(in.ast().expr(n.id).range, Diag::DuplicateFieldId, message);
+      } catch (RuntimeError& err) {
+        auto it = k.field_defined_at.find(id);
+        if (it != k.field_defined_at.end())
+          err.notes.insert(err.notes.begin(), DiagNote{it->second, "first defined here"});
+        throw;
+      }
+    }
+    fail_field_error(in, e, n.type_range);
+  }
+  k.field_defined_at[id] = s.range;
+  invalidate_field_cache(in);
+}
+
+// The script value as the option's type wants it. A bare number where a list
+// is expected is ignored by Gmsh 4.8.4 without a word: we warn and ignore it
+// too, so that a script means the same in both. Returns false to skip the set.
+bool option_value(Interpreter& in, const Stmt& s, const FieldOptionStmt& n, int id,
+                  const field::OptionSpec* spec, field::OptionValue& out) {
+  const Value v = in.eval(n.value);
+  const SourceRange value_at = in.ast().expr(n.value).range;
+  if (v.is_string()) {
+    if (v.kind() == Value::Kind::StringList && v.strs().size() != 1)
+      in.fail_fmt(value_at, Diag::WrongFieldOptionType,
+                  fmt::format("option '{}' of Field[{}] takes one string, not a list of {}",
+                              in.ast().str(n.option), id, v.strs().size()));
+    std::string text = v.strs().empty() ? std::string() : v.strs().front();
+    // File options are relative to the script, as Gmsh's FIELD_OPTION_PATH.
+    if (spec && spec->name == "FileName" && !text.empty())
+      text = resolve_script_path(in.builtin_env(), text);
+    out = std::move(text);
+    return true;
+  }
+  const bool list = n.braced || v.kind() == Value::Kind::List;
+  if (spec && spec->type == field::OptionType::List && !list) {
+    in.diags().report(value_at, Diag::FieldListWithoutBraces,
+                      fmt::format("option '{}' of Field[{}] ({}) takes a list in braces: the value is "
+                                  "ignored, as Gmsh 4.8.4 does; write {{{}}}",
+                                  in.ast().str(n.option), id,
+                                  in.kernel().fields.options(id).kind().name, in.text_of(value_at)));
+    (void)s;
+    return false;
+  }
+  if (list) {
+    out = v.nums();
+  } else {
+    if (!std::isfinite(v.nums().front()))
+      in.fail_fmt(value_at, Diag::BadFieldValue,
+                  fmt::format("option '{}' of Field[{}] is not finite", in.ast().str(n.option), id));
+    out = v.nums().front();
+  }
+  return true;
+}
+
+void exec_field_option(Interpreter& in, const Stmt& s, const FieldOptionStmt& n) {
+  const int id = field_id(in, n.id);
+  require_field(in, id, n.id, "set an option of");
+  KernelState& k = in.kernel();
+  const std::string option(in.ast().str(n.option));
+  const field::Options& opts = k.fields.options(id);
+  const int index = opts.find(option);
+  const field::OptionSpec* spec =
+      index < 0 ? nullptr : &opts.kind().options[static_cast<std::size_t>(index)];
+  if (!spec) {
+    std::vector<std::string> names;
+    for (const field::OptionSpec& o : opts.kind().options) {
+      names.push_back(o.name);
+      names.insert(names.end(), o.aliases.begin(), o.aliases.end());
+    }
+    const std::string best = field::closest_name(option, names);
+    in.fail(n.option_range, Diag::UnknownFieldOption,
+            fmt::format("Field[{}] ({}) has no option '{}'{}", id, opts.kind().name, option,
+                        best.empty() ? std::string() : fmt::format(" (did you mean '{}'?)", best)));
+  }
+  field::OptionValue value;
+  if (!option_value(in, s, n, id, spec, value)) return;
+  try {
+    k.fields.set(id, option, std::move(value));
+  } catch (const field::FieldError& e) {
+    in.fail(in.ast().expr(n.value).range, Diag::WrongFieldOptionType,
+            fmt::format("Field[{}]: {}", id, e.what()));
+  }
+  k.field_option_at[{id, spec->name}] = s.range;
+  invalidate_field_cache(in);
+}
+
+void exec_field_action(Interpreter& in, const FieldActionStmt& n) {
+  const int id = field_id(in, n.id);
+  require_field(in, id, n.id, "run an action of");
+  // No kind declares a callback (Gmsh's are for views and the GUI), so every
+  // action is unknown, as Gmsh reports "Unknown callback".
+  in.fail_fmt(n.action_range, Diag::UnknownFieldAction,
+              fmt::format("Field[{}] ({}) has no action '{}'", id,
+                          in.kernel().fields.options(id).kind().name, in.ast().str(n.action)));
+}
+
+void exec_delete_field(Interpreter& in, const DeleteFieldStmt& n) {
+  const int id = field_id(in, n.id);
+  require_field(in, id, n.id, "delete");   // Gmsh: "Cannot delete field id n, it does not exist"
+  KernelState& k = in.kernel();
+  k.fields.remove(id);
+  k.field_defined_at.erase(id);
+  for (auto it = k.field_option_at.begin(); it != k.field_option_at.end();)
+    it = it->first.first == id ? k.field_option_at.erase(it) : std::next(it);
+  invalidate_field_cache(in);
+}
+
+void exec_background_field(Interpreter& in, StmtId id, const Stmt& s, const BackgroundFieldStmt& n) {
+  if (in.ast().str(n.which) != "Background") {
+    check_stmt_exprs(in, id);
+    in.not_supported_stmt(id, "BoundaryLayer Field");
+    return;
+  }
+  // Checked when the mesher builds it: options may still change after this.
+  KernelState& k = in.kernel();
+  k.background_field = field_id(in, n.value);
+  k.background_field_at = s.range;
+}
+
+}  // namespace
+
 void exec_field_stmt(Interpreter& in, StmtId id) {
   const Stmt& s = in.ast().stmt(id);
-  check_stmt_exprs(in, id);
-  switch (s.kind()) {
-    case StmtKind::FieldNew: in.not_supported_stmt(id, "Field[] ="); break;
-    case StmtKind::FieldOption: in.not_supported_stmt(id, "Field[].Option ="); break;
-    case StmtKind::FieldAction: in.not_supported_stmt(id, "Field[].Action"); break;
-    case StmtKind::BackgroundField: in.not_supported_stmt(id, "Background Field"); break;
-    case StmtKind::DeleteField: in.not_supported_stmt(id, "Delete Field"); break;
-    default: in.not_supported_stmt(id, "field statement"); break;
+  const bool coastline = std::visit(
+      [](const auto& n) {
+        if constexpr (requires { n.coastline; }) return n.coastline;
+        return false;
+      },
+      s.node);
+  if (coastline) {   // `Coastline[n] = ...`: the coastline importer's statements
+    check_stmt_exprs(in, id);
+    in.not_supported_stmt(id, "Coastline[]");
+    return;
   }
+  std::visit(
+      [&](const auto& n) {
+        using T = std::decay_t<decltype(n)>;
+        if constexpr (std::is_same_v<T, FieldNewStmt>) {
+          exec_field_new(in, s, n);
+        } else if constexpr (std::is_same_v<T, FieldOptionStmt>) {
+          exec_field_option(in, s, n);
+        } else if constexpr (std::is_same_v<T, FieldActionStmt>) {
+          exec_field_action(in, n);
+        } else if constexpr (std::is_same_v<T, DeleteFieldStmt>) {
+          exec_delete_field(in, n);
+        } else if constexpr (std::is_same_v<T, BackgroundFieldStmt>) {
+          exec_background_field(in, id, s, n);
+        } else {
+          in.not_supported_stmt(id, "field statement");
+        }
+      },
+      s.node);
 }
 
 }  // namespace sm::interp

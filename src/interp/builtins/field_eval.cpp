@@ -1,0 +1,276 @@
+// Field builds requested by scripts (FieldValue, FieldArgmin) and by the
+// mesher (Background Field), and kernel field errors turned into located
+// diagnostics that point at the statements defining the fields involved.
+#include "interp/builtins/field_eval.h"
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <map>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "field/min_max.h"
+#include "interp/builtins/dispatch.h"
+#include "interp/builtins/field_context.h"
+#include "interp/interpreter.h"
+
+namespace sm::interp {
+
+using namespace sm::lang;
+
+/// Built fields by root id, valid for one model state (`model_hash`).
+struct FieldCache {
+  std::uint64_t model_hash = 0;
+  std::map<int, field::BuiltFields> by_root;
+};
+
+namespace {
+
+Diag diag_of(field::FieldErrc c) {
+  switch (c) {
+    case field::FieldErrc::UnknownKind: return Diag::UnknownFieldKind;
+    case field::FieldErrc::UnknownOption: return Diag::UnknownFieldOption;
+    case field::FieldErrc::WrongOptionType: return Diag::WrongFieldOptionType;
+    case field::FieldErrc::DuplicateId: return Diag::DuplicateFieldId;
+    case field::FieldErrc::MissingField: return Diag::MissingField;
+    case field::FieldErrc::Cycle: return Diag::FieldCycle;
+    case field::FieldErrc::BadValue: return Diag::BadFieldValue;
+    case field::FieldErrc::FileError: return Diag::FieldFileError;
+    case field::FieldErrc::ParseError: return Diag::FieldExpressionError;
+  }
+  return Diag::BadFieldValue;
+}
+
+// FNV-1a over what field builds read from the model: point positions and the
+// definition of every curve (kind, control points, surface geometry). Any
+// geometry statement or transform that moves or adds an entity changes it.
+class Hasher {
+ public:
+  template <class T>
+  void add(const T& v) {
+    unsigned char b[sizeof(T)];
+    std::memcpy(b, &v, sizeof(T));
+    for (unsigned char c : b) h_ = (h_ ^ c) * 1099511628211ull;
+  }
+  std::uint64_t value() const { return h_; }
+
+ private:
+  std::uint64_t h_ = 1469598103934665603ull;
+};
+
+std::uint64_t model_hash(const geo::Model& m) {
+  Hasher h;
+  h.add(m.vertices().size());
+  for (const auto& [tag, v] : m.vertices()) {
+    h.add(tag), h.add(v.xyz.x), h.add(v.xyz.y), h.add(v.xyz.z), h.add(v.geometry);
+  }
+  h.add(m.curves().size());
+  for (const auto& [tag, c] : m.curves()) {
+    h.add(tag), h.add(static_cast<int>(c.kind)), h.add(c.geometry), h.add(c.shape.has_value());
+    for (int p : c.points) h.add(p);
+    if (c.plane_normal) h.add(c.plane_normal->x), h.add(c.plane_normal->y), h.add(c.plane_normal->z);
+  }
+  h.add(m.surfaces().size());
+  return h.value();
+}
+
+std::string kind_of(Interpreter& in, int id) {
+  return in.kernel().fields.contains(id) ? in.kernel().fields.options(id).kind().name : "?";
+}
+
+// Where option `option` (any spelling) of field `id` was set, if a statement did.
+const SourceRange* option_site(Interpreter& in, int id, const std::string& option) {
+  KernelState& k = in.kernel();
+  if (!k.fields.contains(id) || option.empty()) return nullptr;
+  const field::Options& o = k.fields.options(id);
+  const int i = o.find(option);
+  if (i < 0) return nullptr;
+  auto it = k.field_option_at.find({id, o.kind().options[static_cast<std::size_t>(i)].name});
+  return it == k.field_option_at.end() ? nullptr : &it->second;
+}
+
+// The option statement of field `id` that references field `ref`, if any.
+const SourceRange* reference_site(Interpreter& in, int id, int ref) {
+  KernelState& k = in.kernel();
+  if (!k.fields.contains(id)) return nullptr;
+  const field::Options& o = k.fields.options(id);
+  const auto& specs = o.kind().options;
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    const field::OptionSpec& s = specs[i];
+    bool refers = false;
+    if (s.role == field::OptionRole::FieldRef) {
+      refers = static_cast<int>(std::get<double>(o.value(static_cast<int>(i)))) == ref;
+    } else if (s.role == field::OptionRole::FieldRefList) {
+      for (double v : std::get<std::vector<double>>(o.value(static_cast<int>(i))))
+        refers = refers || static_cast<int>(v) == ref;
+    } else if (s.type == field::OptionType::String && o.kind().extra_refs) {
+      refers = true;   // MathEval's F<n> live in its expression strings
+    }
+    if (!refers) continue;
+    auto it = k.field_option_at.find({id, s.name});
+    if (it != k.field_option_at.end()) return &it->second;
+  }
+  return nullptr;
+}
+
+void add_definition_note(Interpreter& in, int id, std::vector<DiagNote>& notes) {
+  auto it = in.kernel().field_defined_at.find(id);
+  if (it != in.kernel().field_defined_at.end())
+    notes.push_back({it->second, fmt::format("Field[{}] ({}) is defined here", id, kind_of(in, id))});
+}
+
+}  // namespace
+
+void fail_field_error(Interpreter& in, const field::FieldError& e, SourceRange at) {
+  std::string message = e.what();
+  if (!e.suggestion.empty()) message += fmt::format(" (did you mean '{}'?)", e.suggestion);
+  std::vector<DiagNote> notes;
+  SourceRange where = at;
+  switch (e.code()) {
+    case field::FieldErrc::Cycle: {
+      // Each link of the loop: the option that makes Field[a] read Field[b].
+      for (std::size_t i = 0; i + 1 < e.ids.size(); ++i) {
+        const int a = e.ids[i], b = e.ids[i + 1];
+        if (const SourceRange* r = reference_site(in, a, b))
+          notes.push_back({*r, fmt::format("Field[{}] ({}) reads Field[{}] here", a, kind_of(in, a), b)});
+        else
+          add_definition_note(in, a, notes);
+      }
+      break;
+    }
+    case field::FieldErrc::MissingField: {
+      const int missing = e.ids.empty() ? -1 : e.ids.front();
+      if (e.field_id >= 0 && e.field_id != missing) {
+        if (const SourceRange* r = reference_site(in, e.field_id, missing))
+          notes.push_back({*r, fmt::format("Field[{}] refers to Field[{}] here", e.field_id, missing)});
+        else
+          add_definition_note(in, e.field_id, notes);
+      }
+      break;
+    }
+    default: {
+      // A bad value is best shown where it was set; the use comes as a note.
+      if (const SourceRange* r = option_site(in, e.field_id, e.option)) {
+        where = *r;
+      } else {
+        auto it = in.kernel().field_defined_at.find(e.field_id);
+        if (it != in.kernel().field_defined_at.end()) where = it->second;
+      }
+      if (at.valid() && (where.begin != at.begin || where.file.value != at.file.value))
+        notes.push_back({at, "the field is built for this use"});
+      break;
+    }
+  }
+  try {
+    in.fail(where, diag_of(e.code()), message);
+  } catch (RuntimeError& err) {
+    err.notes.insert(err.notes.begin(), notes.begin(), notes.end());
+    throw;
+  }
+}
+
+void invalidate_field_cache(Interpreter& in) { in.kernel().field_cache.reset(); }
+
+const field::BuiltFields& built_fields(Interpreter& in, int root, SourceRange use) {
+  KernelState& k = in.kernel();
+  const std::uint64_t hash = model_hash(k.model);
+  if (!k.field_cache || k.field_cache->model_hash != hash) {
+    k.field_cache = std::make_shared<FieldCache>();
+    k.field_cache->model_hash = hash;
+  }
+  auto it = k.field_cache->by_root.find(root);
+  if (it != k.field_cache->by_root.end()) return it->second;
+  if (!k.fields.contains(root))
+    in.fail_fmt(use, Diag::MissingField, fmt::format("Field[{}] is not defined", root));
+  try {
+    field::BuildContext ctx = make_build_context(k.model);
+    return k.field_cache->by_root.emplace(root, k.fields.build(root, ctx)).first->second;
+  } catch (const field::FieldError& e) {
+    fail_field_error(in, e, use);
+  }
+}
+
+field::FieldPtr background_size_field(Interpreter& in) {
+  KernelState& k = in.kernel();
+  if (!k.background_field || *k.background_field <= 0) return nullptr;
+  const int id = *k.background_field;
+  if (!k.fields.contains(id)) {
+    try {
+      in.fail_fmt(k.background_field_at, Diag::MissingField,
+                  fmt::format("the background field, Field[{}], is not defined", id));
+    } catch (RuntimeError& err) {
+      if (!k.fields.ids().empty())
+        err.notes.insert(err.notes.begin(),
+                         DiagNote{SourceRange{}, fmt::format("defined fields: {}", fmt::join(k.fields.ids(), ", "))});
+      throw;
+    }
+  }
+  return built_fields(in, id, k.background_field_at).shared(id);
+}
+
+namespace {
+
+struct FieldCallArgs {
+  int id = 0;
+  Vec3 p;
+  std::optional<field::EntityRef> on;
+};
+
+FieldCallArgs field_call_args(Interpreter& in, const Expr& e, const CallExpr& c, std::string_view fname) {
+  if (c.args.size() != 4 && c.args.size() != 6)
+    in.fail_fmt(c.func_range, Diag::WrongArgumentCount, fname, "4 or 6", "s", c.args.size());
+  double v[6] = {0, 0, 0, 0, 0, 0};
+  for (std::size_t i = 0; i < c.args.size(); ++i) {
+    v[i] = in.eval_number(c.args[i]);
+    if (!std::isfinite(v[i]))
+      in.fail_fmt(in.ast().expr(c.args[i]).range, Diag::BuiltinFailed, fname,
+                  fmt::format("argument {} is not finite", i + 1));
+  }
+  auto as_int = [&](std::size_t i) {
+    if (std::abs(v[i]) > 2e9 || v[i] != std::trunc(v[i]))
+      in.fail_fmt(in.ast().expr(c.args[i]).range, Diag::BuiltinFailed, fname,
+                  fmt::format("argument {} must be an integer, not {}", i + 1, v[i]));
+    return static_cast<int>(v[i]);
+  };
+  FieldCallArgs out;
+  out.id = as_int(0);
+  out.p = Vec3{v[1], v[2], v[3]};
+  if (c.args.size() == 6) {
+    const int dim = as_int(4);
+    if (dim < 0 || dim > 3)
+      in.fail_fmt(in.ast().expr(c.args[4]).range, Diag::BuiltinFailed, fname,
+                  fmt::format("the entity dimension must be 0 to 3, not {}", dim));
+    out.on = field::EntityRef{dim, as_int(5)};
+  }
+  (void)e;
+  return out;
+}
+
+}  // namespace
+
+bool eval_field_call(Interpreter& in, const Expr& e, const CallExpr& c, Value& out) {
+  const std::string_view fname = in.ast().str(c.func);
+  const bool value = fname == "FieldValue";
+  if (!value && fname != "FieldArgmin") return false;
+  const FieldCallArgs a = field_call_args(in, e, c, fname);
+  const field::BuiltFields& built = built_fields(in, a.id, e.range);
+  const field::SizeField& f = *built.get(a.id);
+  double h = 0;
+  const field::EntityRef* on = a.on ? &*a.on : nullptr;
+  if (value) {
+    field::eval_input(f, on, std::span<const Vec3>(&a.p, 1), std::span<double>(&h, 1));
+    out = Value::number(h);
+    return true;
+  }
+  int which = -1;
+  if (!field::eval_argmin(f, on, std::span<const Vec3>(&a.p, 1), std::span<double>(&h, 1),
+                          std::span<int>(&which, 1)))
+    in.fail_fmt(in.ast().expr(c.args[0]).range, Diag::BuiltinFailed, fname,
+                fmt::format("Field[{}] is a {} field, not a Min", a.id, kind_of(in, a.id)));
+  out = Value::number(which);
+  return true;
+}
+
+}  // namespace sm::interp

@@ -1,0 +1,32 @@
+// Building the script's size fields from the interpreter: located diagnostics
+// for kernel field errors, the FieldValue/FieldArgmin cache, and the
+// Background Field the mesher asks for.
+#pragma once
+
+#include "field/error.h"
+#include "field/field_set.h"
+#include "lang/source.h"
+
+namespace sm::interp {
+
+class Interpreter;
+
+/// Reports a kernel field error as a runtime error located at `at`, with notes
+/// at the `Field[n] = ...` and `Field[n].Option = ...` statements involved
+/// (every field of a cycle, the option naming a missing field, ...).
+[[noreturn]] void fail_field_error(Interpreter& in, const field::FieldError& e, lang::SourceRange at);
+
+/// Field `root` and every field it references, built from the current
+/// definitions and model. Cached until a Field statement runs or the model
+/// changes; build errors are reported at `use`.
+const field::BuiltFields& built_fields(Interpreter& in, int root, lang::SourceRange use);
+
+/// Drops every cached build (each Field statement calls it).
+void invalidate_field_cache(Interpreter& in);
+
+/// The size field of `Background Field = n;` for the mesher, or nullptr when
+/// there is none (no statement, or n <= 0 as in Gmsh). A missing field or a
+/// cycle is an error located at the Background Field statement.
+field::FieldPtr background_size_field(Interpreter& in);
+
+}  // namespace sm::interp

@@ -1,0 +1,27 @@
+// Mesh.MeshSize{Factor,Min,Max,FromPoints,ExtendFromBoundary,FromCurvature}
+// -> field::SizePolicyOptions. The option registry stores each deprecated
+// CharacteristicLength* alias in the same slot, so reading the current names
+// sees whichever spelling the script used.
+#include "interp/builtins/size_policy_from_options.h"
+
+#include <array>
+#include <string_view>
+
+#include "base/check.h"
+
+namespace sm::interp {
+
+field::SizePolicyOptions size_policy_from_options(const Options& options) {
+  static constexpr std::array<std::string_view, 6> kNames = {
+      "Mesh.MeshSizeFactor",   "Mesh.MeshSizeMin",
+      "Mesh.MeshSizeMax",      "Mesh.MeshSizeFromPoints",
+      "Mesh.MeshSizeExtendFromBoundary", "Mesh.MeshSizeFromCurvature"};
+  field::SizePolicyOptions out;
+  for (std::string_view name : kNames) {
+    const bool known = field::set_size_option(out, name, options.number(name));
+    SM_ASSERT(known, "size option missing from field::set_size_option");
+  }
+  return out;
+}
+
+}  // namespace sm::interp
