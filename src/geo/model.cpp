@@ -499,11 +499,12 @@ GeoResult<std::vector<DimTag>> Model::boundary(const std::vector<DimTag>& entiti
       const ModelSurface* s = surface(a);
       if (!s) return missing(EntityKind::Surface, e.tag, {}, " in Boundary");
       for (std::size_t i = 0; i < s->loops.size(); ++i) {
-        // Gmsh lists a hole reversed (its curves negated, in reverse order) so that the
-        // holes run against the outer loop, as Boundary{} prints them (setSurfaceGeneratrices).
+        // As Gmsh lists them (setSurfaceGeneratrices): a hole reversed (its curves negated,
+        // in reverse order) so that holes run against the outer loop; the sign of the
+        // surface tag itself is ignored.
         const int l = s->loops[i];
         const auto& cs = loops_.at(std::abs(l)).curves;
-        const int sign = ((l > 0) == (e.tag > 0)) == (i == 0) ? 1 : -1;
+        const int sign = (l > 0) == (i == 0) ? 1 : -1;
         if (sign > 0)
           for (int c : cs) raw.push_back({1, c});
         else
