@@ -1,0 +1,114 @@
+// Constrained Bowyer-Watson point insertion on the flat store.
+#include "mesh/insert.h"
+
+#include "mesh/geometry.h"
+
+namespace sm {
+
+namespace {
+constexpr std::uint32_t kNo = 0xFFFFFFFFu;
+}
+
+std::uint32_t PointInserter::rand3() {
+  rng_ ^= rng_ >> 12, rng_ ^= rng_ << 25, rng_ ^= rng_ >> 27;
+  return static_cast<std::uint32_t>((((rng_ * 0x2545F4914F6CDD1Dull) >> 32) * 3) >> 32);
+}
+
+TriId PointInserter::locate(Vec2 c, TriId hint) {
+  std::uint32_t t = hint.value;
+  for (std::uint32_t steps = 0; steps < (1u << 24); ++steps) {
+    const std::uint32_t e0 = rand3();
+    std::uint32_t k = 0, e = e0;
+    for (; k < 3; ++k, e = e == 2 ? 0 : e + 1) {
+      const Side s{3 * t + e};
+      if (orient2d(m_.pos(m_.org(s)), m_.pos(m_.dest(s)), c, st_) == Sign::Negative) break;
+    }
+    if (k == 3) return TriId{t};
+    const Side s{3 * t + e};
+    const Side o = m_.twin[s.value];
+    if (!o.valid() || m_.constrained(s)) return TriId{};
+    t = o.value / 3;
+    ++stats.walk_steps;
+  }
+  return TriId{};
+}
+
+InsertOutcome PointInserter::insert(Vec2 c, TriId t0) {
+  const std::uint32_t nv = m_.num_vertices();
+  for (std::uint32_t e = 0; e < 3; ++e)
+    if (m_.pos(m_.vertex(t0, e)) == c) return InsertOutcome::Duplicate;
+  cavity_.clear();
+  bound_.clear();
+  stack_.assign(1, t0.value);
+  m_.tri_flags[t0.value] |= kMark;
+  bool visible = true;
+  while (!stack_.empty()) {
+    const std::uint32_t t = stack_.back();
+    stack_.pop_back();
+    cavity_.push_back(t);
+    for (std::uint32_t e = 0; e < 3; ++e) {
+      const Side s{3 * t + e};
+      const Side o = m_.twin[s.value];
+      if (o.valid() && !m_.constrained(s)) {
+        const std::uint32_t nt = o.value / 3;
+        if (m_.tri_flags[nt] & kMark) continue;
+        const VertexId a = m_.vertex(TriId{nt}, 0), b = m_.vertex(TriId{nt}, 1), d = m_.vertex(TriId{nt}, 2);
+        if (incircle_sos(m_.pos(a), m_.pos(b), m_.pos(d), c, a.value, b.value, d.value, nv, st_) == Sign::Positive) {
+          m_.tri_flags[nt] |= kMark;
+          stack_.push_back(nt);
+          continue;
+        }
+      }
+      const VertexId a = m_.org(s), b = m_.dest(s);
+      if (orient2d(m_.pos(a), m_.pos(b), c, st_) != Sign::Positive) visible = false;
+      bound_.push_back({a, b, o, m_.side_flags[s.value]});
+    }
+  }
+  for (std::uint32_t t : cavity_) m_.tri_flags[t] &= static_cast<std::uint8_t>(~kMark);
+  if (!visible) return InsertOutcome::NotVisible;
+  stats.cavity_triangles += cavity_.size();
+  const VertexId v = m_.add_vertex(c);
+  const std::size_t k = bound_.size();
+  // Slots: the cavity's, then dead ones, then new ones (k = cavity + 2).
+  while (cavity_.size() < k) {
+    std::uint32_t t;
+    if (!m_.free_tris.empty()) {
+      t = m_.free_tris.back().value;
+      m_.free_tris.pop_back();
+    } else {
+      t = m_.num_slots();
+      m_.tri_flags.push_back(0);
+      m_.corner.resize(m_.corner.size() + 3);
+      m_.twin.resize(m_.twin.size() + 3);
+      m_.side_flags.resize(m_.side_flags.size() + 3);
+    }
+    cavity_.push_back(t);
+  }
+  for (std::size_t i = 0; i < k; ++i) {
+    const Bound& bd = bound_[i];
+    const std::uint32_t t = cavity_[i], s = 3 * t;
+    m_.tri_flags[t] = 0;
+    m_.corner[s] = bd.a, m_.corner[s + 1] = bd.b, m_.corner[s + 2] = v;
+    m_.side_flags[s] = bd.flags, m_.side_flags[s + 1] = 0, m_.side_flags[s + 2] = 0;
+    m_.link(Side{s}, bd.outer);
+    m_.out_side[bd.a.value] = Side{s};
+  }
+  m_.out_side[v.value] = Side{3 * cavity_[0] + 2};
+  // Link b -> v of the triangle on (a, b) with v -> b of the one on (b, c).
+  if (k <= 32) {
+    for (std::size_t i = 0; i < k; ++i) {
+      std::size_t j = 0;
+      while (bound_[j].a != bound_[i].b) ++j;
+      m_.link(Side{3 * cavity_[i] + 1}, Side{3 * cavity_[j] + 2});
+    }
+  } else {
+    if (vmap_.size() < m_.num_vertices()) vmap_.resize(m_.num_vertices() + m_.num_vertices() / 2, kNo);
+    for (std::size_t i = 0; i < k; ++i) vmap_[bound_[i].a.value] = cavity_[i];
+    for (std::size_t i = 0; i < k; ++i) m_.link(Side{3 * cavity_[i] + 1}, Side{3 * vmap_[bound_[i].b.value] + 2});
+  }
+  last_ = v;
+  created_ = k;
+  return InsertOutcome::Inserted;
+}
+
+}  // namespace sm

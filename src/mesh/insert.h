@@ -1,0 +1,76 @@
+// Incremental insertion of a point into a constrained Delaunay triangulation:
+// a walk that never crosses constrained edges, then a Bowyer-Watson cavity
+// bounded by them. Shared by the refinement algorithms (del2d; frontal and
+// meshadapt later).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "mesh/predicates.h"
+#include "mesh/triangulation.h"
+
+namespace sm {
+
+enum class InsertOutcome : std::uint8_t {
+  Inserted,
+  Outside,     // beyond a constrained or hull edge from the start triangle
+  Duplicate,   // equal to a corner of its triangle
+  NotVisible,  // the cavity has an edge the point does not see strictly (on a constraint, say)
+};
+
+struct InsertStats {
+  std::uint64_t walk_steps = 0, cavity_triangles = 0;
+};
+
+class PointInserter {
+ public:
+  explicit PointInserter(TriangleStore& m, std::uint64_t seed = 0x2545F4914F6CDD1Dull,
+                         PredicateStats* predicate_stats = nullptr)
+      : m_(m), st_(predicate_stats), rng_(seed | 1) {}
+
+  /// Visibility walk from the live triangle `hint` towards p that never
+  /// crosses a constrained or hull edge (random edge order, fixed seed).
+  /// Returns a triangle containing p (closed), or kNone when p lies beyond
+  /// such an edge.
+  TriId locate(Vec2 p, TriId hint);
+
+  /// Inserts p, contained in triangle t: the cavity is the set of triangles
+  /// whose circumcircle holds p (ties broken by id), reached without
+  /// crossing constrained edges; it is refilled by a fan around p. Side
+  /// flags of the cavity boundary are kept; out_side is maintained. The
+  /// mesh is unchanged unless the outcome is Inserted.
+  InsertOutcome insert(Vec2 p, TriId t);
+
+  /// locate() then insert().
+  InsertOutcome insert_near(Vec2 p, TriId hint) {
+    const TriId t = locate(p, hint);
+    return t.valid() ? insert(p, t) : InsertOutcome::Outside;
+  }
+
+  /// The vertex made by the last successful insertion.
+  VertexId last_vertex() const { return last_; }
+  /// Slots of the triangles made by the last successful insertion.
+  std::span<const std::uint32_t> created() const { return {cavity_.data(), created_}; }
+
+  InsertStats stats;
+
+ private:
+  struct Bound {
+    VertexId a, b;
+    Side outer;
+    std::uint8_t flags;
+  };
+  std::uint32_t rand3();
+
+  TriangleStore& m_;
+  PredicateStats* st_;
+  std::uint64_t rng_;
+  VertexId last_;
+  std::size_t created_ = 0;
+  std::vector<std::uint32_t> stack_, cavity_, vmap_;
+  std::vector<Bound> bound_;
+};
+
+}  // namespace sm

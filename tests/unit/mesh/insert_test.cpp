@@ -1,0 +1,57 @@
+// Point insertion into a constrained Delaunay triangulation, checked after
+// every single insertion.
+#include <doctest/doctest.h>
+
+#include <random>
+
+#include "mesh/check.h"
+#include "mesh/insert.h"
+#include "testing_domains.h"
+
+using namespace sm;
+
+TEST_CASE("insert: one point at a time into a CDT with an internal constraint") {
+  TriangleStore m;
+  const Loop sq = testing::polygon_loop(m, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.25, false);
+  const VertexId a = m.add_vertex({0.125, 0.25}), b = m.add_vertex({0.875, 0.75});  // dyadic: midpoint exactly on a-b
+  std::vector<Edge> edges;
+  REQUIRE(testing::boundary_mesh(m, {sq}, &edges));
+  REQUIRE(recover_edges(m, PlanarGeometry{&m.xy}, {{a, b}}).clean());
+  edges.push_back({a, b});
+  PointInserter ins(m);
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> U(0, 1);
+  TriId hint{0};
+  int inserted = 0, blocked = 0;
+  for (int i = 0; i < 400; ++i) {
+    const Vec2 p{U(rng), U(rng)};
+    const InsertOutcome out = ins.insert_near(p, hint);
+    if (out == InsertOutcome::Inserted) {
+      ++inserted;
+      CHECK(m.xy[ins.last_vertex().value] == p);
+      REQUIRE(ins.created().size() >= 3);
+      hint = TriId{ins.created()[0]};
+    } else {
+      ++blocked;  // p beyond the constraint a-b as seen from the hint
+      CHECK(out == InsertOutcome::Outside);
+    }
+    INFO(check_topology(m).error);
+    REQUIRE(check_topology(m).ok());
+    REQUIRE(check_constraints(m, edges).ok());
+    REQUIRE(check_delaunay(m, PlanarGeometry{&m.xy}, true).ok());
+  }
+  CHECK(inserted > 200);
+  CHECK(blocked > 20);
+  // Outside the square, a duplicate, and a point on the constraint.
+  const std::uint32_t nv = m.num_vertices(), nt = m.num_triangles();
+  CHECK(ins.insert_near({1.5, 0.5}, hint) == InsertOutcome::Outside);
+  const TriId ta = tri_of(m.out_side[a.value]);
+  CHECK(ins.insert(m.xy[a.value], ta) == InsertOutcome::Duplicate);
+  const Vec2 mid = 0.5 * (m.xy[a.value] + m.xy[b.value]);  // (0.5, 0.5), exactly on a-b
+  const TriId tm = ins.locate(mid, tri_of(m.out_side[a.value]));
+  REQUIRE(tm.valid());
+  CHECK(ins.insert(mid, tm) == InsertOutcome::NotVisible);
+  CHECK(m.num_vertices() == nv);
+  CHECK(m.num_triangles() == nt);
+  CHECK(check_topology(m).ok());
+}
