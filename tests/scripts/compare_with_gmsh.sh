@@ -13,6 +13,8 @@ command -v gmsh >/dev/null || { echo "gmsh not found" >&2; exit 2; }
 tmp=$(mktemp -d) || exit 2
 trap 'rm -rf "$tmp"' EXIT
 cp -r "$here" "$tmp/scripts"
+# Scripts may Include generated models from tests/data/geo_scripts (../../data/... from a subdirectory).
+mkdir -p "$tmp/data" && cp -r "$here/../data/geo_scripts" "$tmp/data/"
 if [ $# -gt 0 ]; then
   scripts="$*"
 else
