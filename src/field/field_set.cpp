@@ -87,7 +87,15 @@ void FieldSet::build_into(int id, const BuildContext& ctx, BuiltFields& out,
   if (out.fields_.count(id)) return;
   const Options& opts = options(id);
   // References first, so a cycle is reported as such before anything is built.
-  for (int ref : referenced_ids(opts)) {
+  // Finding them may parse (MathEval's F<n>): its errors name this field too.
+  std::vector<int> refs;
+  try {
+    refs = referenced_ids(opts);
+  } catch (FieldError& e) {
+    if (e.field_id < 0) e.field_id = id;
+    throw;
+  }
+  for (int ref : refs) {
     auto on_stack = std::find(stack.begin(), stack.end(), ref);
     if (ref == id || on_stack != stack.end()) {
       std::vector<int> loop(on_stack, stack.end());

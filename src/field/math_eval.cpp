@@ -2,6 +2,7 @@
 // build time; inputs F<n> are evaluated per batch, never per point.
 #include <vector>
 
+#include "field/error.h"
 #include "field/kinds.h"
 #include "field/math_expr.h"
 
@@ -29,10 +30,19 @@ class MathEvalField final : public CompositeField {
   std::vector<FieldPtr> in_;
 };
 
-std::vector<int> refs(const Options& o) { return MathExpr::compile(o.string("F")).field_refs(); }
+MathExpr compile_f(const Options& o) {
+  try {
+    return MathExpr::compile(o.string("F"));
+  } catch (FieldError& e) {
+    e.option = "F";   // so the interpreter can point at the statement that set it
+    throw;
+  }
+}
+
+std::vector<int> refs(const Options& o) { return compile_f(o).field_refs(); }
 
 FieldPtr make(const BuildInputs& in) {
-  MathExpr e = MathExpr::compile(in.opts.string("F"));
+  MathExpr e = compile_f(in.opts);
   std::vector<FieldPtr> inputs;
   for (int id : e.field_refs()) inputs.push_back(in.field(id, "F"));
   return std::make_shared<MathEvalField>(std::move(e), std::move(inputs));
