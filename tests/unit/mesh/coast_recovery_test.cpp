@@ -51,3 +51,28 @@ void run_world(const char* file, double step_km) {
 TEST_CASE("coast recovery: world crude shorelines, raw vertices") { run_world("world_c.txt", 0); }
 
 TEST_CASE("coast recovery: world low shorelines resampled at 30 km") { run_world("world_l.txt", 30); }
+
+TEST_CASE("coast recovery: a genuinely self-intersecting real coastline fails, located") {
+  // GSHHG low, raw vertices: the Antarctic ice-front ring (segment 6) crosses
+  // itself near lon 162.4, lat -76.1 (its edges 32-33 and 34-35 intersect in
+  // lon/lat: a simplification defect of the source data).
+  const auto rings = testing::read_gshhg(std::string(SM_SHARED_DATA) + "/gshhg/world_l.txt");
+  std::vector<testing::RingCurve> curves;
+  for (const auto& r : rings) curves.emplace_back(r);
+  BoundaryProblem p = testing::coast_problem(curves, 0);
+  BoundaryOptions opt;
+  opt.tolerance = 1e-9;
+  const BoundaryResult r = recover_boundary(p, [&](std::uint32_t c, double t) { return curves[c].at(t); }, opt);
+  REQUIRE_FALSE(r.ok());
+  CHECK(r.error.kind == BoundaryErrorKind::Intersection);
+  CHECK(r.error.curve_a == 6);
+  CHECK(r.error.curve_b == 6);
+  CHECK(rings[5].wraps_pole);
+  // Back to lon/lat from the South-Pole stereographic plane.
+  const double rho2 = norm2(r.error.where);
+  const double lat = std::asin((1 - rho2) / (1 + rho2)) * 180 / M_PI;
+  const double lon = std::atan2(r.error.where.y, r.error.where.x) * 180 / M_PI;
+  MESSAGE(r.error.message << " = lon " << lon << ", lat " << lat);
+  CHECK(std::fabs(lon - 162.4) < 0.3);
+  CHECK(std::fabs(lat + 76.1) < 0.2);
+}
