@@ -91,12 +91,21 @@ bool option_value(Interpreter& in, const Stmt& s, const FieldOptionStmt& n, int 
     (void)s;
     return false;
   }
+  // Ids and tags become ints in the kernel: they must fit one.
+  const bool ids = spec && (spec->type == field::OptionType::List ||
+                            spec->role != field::OptionRole::Plain);
+  for (double x : v.nums()) {
+    if (!std::isfinite(x))
+      in.fail_fmt(value_at, Diag::BadFieldValue,
+                  fmt::format("option '{}' of Field[{}] is not finite", in.ast().str(n.option), id));
+    if (ids && std::abs(x) > 2147483647.0)
+      in.fail_fmt(value_at, Diag::BadFieldValue,
+                  fmt::format("option '{}' of Field[{}]: {} is not a valid id", in.ast().str(n.option),
+                              id, x));
+  }
   if (list) {
     out = v.nums();
   } else {
-    if (!std::isfinite(v.nums().front()))
-      in.fail_fmt(value_at, Diag::BadFieldValue,
-                  fmt::format("option '{}' of Field[{}] is not finite", in.ast().str(n.option), id));
     out = v.nums().front();
   }
   return true;

@@ -1,0 +1,4 @@
+// A field id in a list must fit an int.
+Field[1] = Min;
+Field[1].FieldsList = {1, 1e12};
+// expect error: 3:23: bad-field-value
