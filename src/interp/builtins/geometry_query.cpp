@@ -105,22 +105,29 @@ std::vector<geo::DimTag> eval_boundary(Interpreter& in, const Expr& x, const Bou
     if (!r) fail_geo(in, x.range, r.error());
     return std::move(*r);
   }
-  // PointsOf: every point below the entities, each once, in the order first reached.
+  // PointsOf, as gmsh 4.8.4 prints it: a point is itself, a curve gives its begin and end
+  // points (end first for -c), a surface the points of its boundary, each once, in the
+  // order first reached; nothing is merged across the listed entities.
   std::vector<geo::DimTag> points;
-  while (!ents.empty()) {
-    std::vector<geo::DimTag> higher;
-    for (const geo::DimTag& d : ents) {
-      if (d.dim == 0) {
-        const geo::DimTag p{0, std::abs(d.tag)};
-        if (std::find(points.begin(), points.end(), p) == points.end()) points.push_back(p);
-      } else {
-        higher.push_back(d);
-      }
+  for (const geo::DimTag& d : ents) {
+    if (d.dim == 0) {
+      points.push_back({0, std::abs(d.tag)});
+      continue;
     }
-    if (higher.empty()) break;
-    auto r = m.boundary(higher, false);
+    auto r = m.boundary({d}, false);
     if (!r) fail_geo(in, x.range, r.error());
-    ents = std::move(*r);
+    if (d.dim == 1) {
+      for (const geo::DimTag& p : *r) points.push_back({0, std::abs(p.tag)});
+      continue;
+    }
+    std::vector<geo::DimTag> mine;
+    auto below = m.boundary(*r, false);
+    if (!below) fail_geo(in, x.range, below.error());
+    for (const geo::DimTag& p : *below) {
+      const geo::DimTag q{0, std::abs(p.tag)};
+      if (std::find(mine.begin(), mine.end(), q) == mine.end()) mine.push_back(q);
+    }
+    points.insert(points.end(), mine.begin(), mine.end());
   }
   return points;
 }
@@ -138,9 +145,10 @@ Value eval_entity_query(Interpreter& in, const Expr& x, const EntityQueryExpr& q
   std::vector<double> out;
   if (q.physical) {
     std::vector<int> groups;
-    if (q.all) {
+    if (q.all) {   // `Physical Curve{:}`: the group tags themselves (gmsh 4.8.4)
       for (const auto& [key, g] : m.physicals())
-        if (key.first == dim) groups.push_back(key.second);
+        if (key.first == dim) out.push_back(key.second);
+      return Value::list(std::move(out));
     } else {
       for (ExprId e : q.tags) {
         const std::vector<int> t = eval_tags(in, e);
@@ -181,7 +189,10 @@ std::vector<geo::DimTag> eval_shape_block(Interpreter& in, const ShapeBlock& blo
         const geo::Model& m = in.kernel().model;
         const int dim = static_cast<int>(item.ent);
         std::vector<int> tags;
-        if (item.all) {
+        if (item.all && item.physical) {   // `Physical Curve{:};`: every group's members
+          for (const auto& [key, g] : m.physicals())
+            if (key.first == dim) tags.push_back(key.second);
+        } else if (item.all) {
           tags = m.tags(dim);
         } else {
           for (ExprId e : item.tags) {
