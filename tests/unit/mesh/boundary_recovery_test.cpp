@@ -148,3 +148,36 @@ TEST_CASE("boundary recovery: a curve crossing itself, duplicates, bad input") {
   bad.curves = {{1, {0, 3}, {0, 1}}};
   CHECK(recover_boundary(bad, [](std::uint32_t, double) { return Vec2{}; }).error.kind == BoundaryErrorKind::Invalid);
 }
+
+TEST_CASE("boundary recovery: open curves sharing end points, split near the shared points") {
+  // Two arcs of the circle of radius 10 share their end points (indices 0
+  // and 1): the upper arc (curve 21) from angle 0 to pi, the lower (22) from
+  // pi to 2 pi; each has 4 segments, so the chords sag well inside. An
+  // island sits under the upper arc near its end point at angle 0.
+  const auto arc = [](double a) { return Vec2{10 * std::cos(a), 10 * std::sin(a)}; };
+  BoundaryProblem p;
+  p.points = {arc(0), arc(M_PI)};
+  BoundaryCurve up{21, {0}, {0.0}}, low{22, {1}, {M_PI}};
+  for (int k = 1; k < 4; ++k) {
+    up.pts.push_back(static_cast<std::uint32_t>(p.points.size()));
+    up.t.push_back(k * M_PI / 4);
+    p.points.push_back(arc(k * M_PI / 4));
+    low.pts.push_back(static_cast<std::uint32_t>(p.points.size()));
+    low.t.push_back(M_PI + k * M_PI / 4);
+    p.points.push_back(arc(M_PI + k * M_PI / 4));
+  }
+  up.pts.push_back(1), up.t.push_back(M_PI);
+  low.pts.push_back(0), low.t.push_back(2 * M_PI);
+  p.curves = {up, low};
+  const std::vector<Circle> circles = {{{0, 0}, 10, 0}, {{0, 0}, 10, 0}, {{8.9, 2.2}, 0.4, 0}};
+  add_circle(p, 23, circles[2], 6);
+  const auto split = [&](std::uint32_t c, double t) { return c < 2 ? arc(t) : circles[2].at(t); };
+  const BoundaryResult r = recover_boundary(p, split, {});
+  check_result(r, p, circles);
+  CHECK(r.rounds >= 2);
+  // The shared end points are still shared, once.
+  CHECK(p.curves[0].pts.front() == 0);
+  CHECK(p.curves[0].pts.back() == 1);
+  CHECK(p.curves[1].pts.front() == 1);
+  CHECK(p.curves[1].pts.back() == 0);
+}
