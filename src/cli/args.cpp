@@ -54,6 +54,7 @@ std::string usage_text() {
          "  -v N                General.Verbosity (0 silent ... 5 default, <2 hides warnings)\n"
          "  -I DIR              add DIR to the Include search path\n"
          "  --test PATH...      run the script tests under PATH (see docs/interpreter.md)\n"
+         "  --help-fields       list the size-field kinds and their options (docs/fields.md)\n"
          "  --help, --version\n"
          "\n"
          "Include search order: the including file's directory, -I directories,\n"
@@ -89,6 +90,8 @@ ParseOutcome parse_args(const std::vector<std::string>& argv) {
       a.files.push_back(arg);
     } else if (arg == "--help" || arg == "-help" || arg == "-h") {
       a.help = true;
+    } else if (arg == "--help-fields") {
+      a.help_fields = true;
     } else if (arg == "--version" || arg == "-version") {
       a.version = true;
     } else if (arg == "--test") {
@@ -149,7 +152,7 @@ ParseOutcome parse_args(const std::vector<std::string>& argv) {
       a.files.push_back(arg);
     }
   }
-  if (!a.help && !a.version && a.files.empty())
+  if (!a.help && !a.help_fields && !a.version && a.files.empty())
     return fail(a.test ? "'--test' needs a directory or file" : "no input file");
   return r;
 }

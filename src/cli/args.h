@@ -18,6 +18,7 @@ struct CliArgs {
   std::vector<std::pair<std::string, double>> option_numbers;     ///< -clmin, -algo, -bin, -nt, -v ...
   std::vector<std::string> include_dirs;                          ///< -I
   bool help = false;
+  bool help_fields = false;   ///< --help-fields: the size-field kinds and options
   bool version = false;
   bool test = false;
 };

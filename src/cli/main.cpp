@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "cli/args.h"
+#include "field/registry.h"
 #include "interp/interpreter.h"
 #include "interp/script_test.h"
 
@@ -53,6 +54,10 @@ int run(const std::vector<std::string>& argv) {
   const sm::cli::CliArgs& a = parsed.args;
   if (a.help) {
     std::fputs(sm::cli::usage_text().c_str(), stdout);
+    return kExitOk;
+  }
+  if (a.help_fields) {
+    std::fputs(sm::field::registry_markdown().c_str(), stdout);
     return kExitOk;
   }
   if (a.version) {
