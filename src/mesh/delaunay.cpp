@@ -94,13 +94,14 @@ struct HugeAlloc {
   HugeAlloc() = default;
   template <class U>
   HugeAlloc(const HugeAlloc<U>&) {}
+  static constexpr std::size_t kHuge = std::size_t{2} << 20;
   T* allocate(std::size_t n) {
-    constexpr std::size_t kHuge = std::size_t{2} << 20;
-    const std::size_t bytes = (n * sizeof(T) + kHuge - 1) / kHuge * kHuge;
-    void* p = std::aligned_alloc(kHuge, bytes);
+    // Small arrays (small inputs) take the ordinary path.
+    const std::size_t bytes = n * sizeof(T) < 2 * kHuge ? n * sizeof(T) : (n * sizeof(T) + kHuge - 1) / kHuge * kHuge;
+    void* p = bytes < 2 * kHuge ? std::malloc(bytes ? bytes : 1) : std::aligned_alloc(kHuge, bytes);
     if (!p) throw std::bad_alloc();
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-    madvise(p, bytes, MADV_HUGEPAGE);
+    if (bytes >= 2 * kHuge) madvise(p, bytes, MADV_HUGEPAGE);
 #endif
     return static_cast<T*>(p);
   }
