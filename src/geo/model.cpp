@@ -455,7 +455,9 @@ GeoResult<int> Model::add_physical(int dim, std::optional<int> tag, const std::s
   }
   auto& list = it->second.entities;
   if (op == PhysicalOp::Add) {
-    list.insert(list.end(), entities.begin(), entities.end());
+    // Gmsh's List_Insert: an entity (with its sign) already in the group is not added again.
+    for (int e : entities)
+      if (std::find(list.begin(), list.end(), e) == list.end()) list.push_back(e);
   } else {
     for (int e : entities) {
       auto f = std::find(list.begin(), list.end(), e);
