@@ -38,3 +38,6 @@ a[] = Physical Point{3};
 Printf("%g %g %g", #a[], a[0], a[1]);  // expect: 2 1 2
 a[] = Physical Curve{99};
 Printf("%g", #a[]);  // expect: 0
+Physical Curve(20) += {2, 3};
+a[] = Physical Curve{20};
+Printf("%g %g %g", #a[], a[0], a[1]);  // expect: 2 2 3
