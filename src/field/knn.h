@@ -18,6 +18,9 @@ struct KnnOptions {
   /// Answer the queries of a batch in Morton (space-filling curve) order,
   /// each search starting with the bound given by the previous answer.
   bool sort_queries = true;
+  /// Far from the samples, search a coarse tree over runs of samples
+  /// ("buckets", built for 4096 samples or more) instead of the fine tree.
+  bool buckets = true;
 };
 
 class KdTree {
