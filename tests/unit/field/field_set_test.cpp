@@ -250,3 +250,22 @@ TEST_CASE("field set: concurrent evaluation of one built field") {
   for (std::thread& t : threads) t.join();
   for (const auto& o : out) CHECK(o == serial);
 }
+
+// A MathEval syntax error found while listing the F<n> references names the
+// field and option, so the interpreter can point at the Field[n].F statement.
+TEST_CASE("field set: MathEval parse errors carry field id, option and column") {
+  FieldSet fs;
+  fs.define(3, "MathEval");
+  fs.set(3, "F", std::string("F1 + 2*-x"));
+  fs.define(4, "Min");
+  fs.set(4, "FieldsList", std::vector<double>{3});
+  try {
+    fs.build(4, {});
+    FAIL("expected an error");
+  } catch (const FieldError& e) {
+    CHECK(e.code() == FieldErrc::ParseError);
+    CHECK(e.field_id == 3);
+    CHECK(e.option == "F");
+    CHECK(e.column == 8);
+  }
+}
