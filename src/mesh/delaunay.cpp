@@ -118,7 +118,7 @@ struct alignas(32) Tri {
   std::uint32_t v[3];
   std::uint32_t n[3];
   std::uint32_t stamp;
-  std::uint32_t pad;
+  std::uint32_t ghost;  // 1 when a corner is the vertex at infinity
 };
 
 class Builder {
@@ -129,7 +129,7 @@ class Builder {
   void run();
 
  private:
-  static bool is_ghost(const Tri& t) { return t.v[0] == kGhost || t.v[1] == kGhost || t.v[2] == kGhost; }
+  static bool is_ghost(const Tri& t) { return t.ghost != 0; }
   Vec2 pos(std::uint32_t v) const { return pts_[v]; }
   bool in_conflict(const Tri& t, std::uint32_t p) const;
   std::uint32_t locate(std::uint32_t p, std::uint32_t start);
@@ -167,16 +167,16 @@ class Builder {
 
 bool Builder::in_conflict(const Tri& t, std::uint32_t p) const {
   const std::uint32_t* c = t.v;
-  std::uint32_t u, v;
-  if (c[2] == kGhost) u = c[0], v = c[1];
-  else if (c[0] == kGhost) u = c[1], v = c[2];
-  else if (c[1] == kGhost) u = c[2], v = c[0];
-  else {
+  if (!t.ghost) {
     const Sign s = incircle(pos(c[0]), pos(c[1]), pos(c[2]), pos(p), stats_);
     if (s != Sign::Zero) return s == Sign::Positive;
     return incircle_sos_tie(pos(c[0]), pos(c[1]), pos(c[2]), pos(p), orig_[c[0]], orig_[c[1]], orig_[c[2]],
                             orig_[p], stats_) == Sign::Positive;
   }
+  std::uint32_t u, v;
+  if (c[2] == kGhost) u = c[0], v = c[1];
+  else if (c[0] == kGhost) u = c[1], v = c[2];
+  else u = c[2], v = c[0];
   const Vec2 a = pos(u), b = pos(v), q = pos(p);
   const Sign o = orient2d(a, b, q, stats_);
   if (o != Sign::Zero) return o == Sign::Positive;
@@ -248,6 +248,7 @@ void Builder::insert(std::uint32_t p, std::uint32_t t0) {
     const Bound& bd = bound_[i];
     Tri& t = tri_[cavity_[i]];
     t.v[0] = bd.a, t.v[1] = bd.b, t.v[2] = p;
+    t.ghost = bd.a == kGhost || bd.b == kGhost;
     link(cavity_[i] << 2, bd.outer);
   }
   // Link side b -> p of the triangle on edge (a, b) with side p -> b of the
@@ -312,6 +313,7 @@ void Builder::run() {
   for (std::uint32_t e = 0; e < 3; ++e) {
     gh[e] = new_slot();  // ghost across edge c[e] -> c[e+1]: (c[e+1], c[e], G)
     tri_[gh[e]].v[0] = c[(e + 1) % 3], tri_[gh[e]].v[1] = c[e], tri_[gh[e]].v[2] = kGhost;
+    tri_[gh[e]].ghost = 1;
     link(t << 2 | e, gh[e] << 2);
   }
   for (int e = 0; e < 3; ++e) link(gh[e] << 2 | 1, gh[(e + 2) % 3] << 2 | 2);
