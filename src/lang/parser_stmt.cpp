@@ -3,6 +3,7 @@
 // commands (Include, Save, Mesh...), Printf/Warning/Error, DefineConstant,
 // Delete, Field/Coastline, Background Field, Plugin, View, Color, SetFactory.
 #include <algorithm>
+#include <vector>
 
 #include "lang/parser_impl.h"
 
@@ -26,6 +27,48 @@ constexpr std::string_view kBareCommands[] = {
 template <std::size_t N>
 bool in(const std::string_view (&list)[N], std::string_view w) {
   return std::find(std::begin(list), std::end(list), w) != std::end(list);
+}
+
+// Levenshtein distance, capped: a misspelled command or keyword is within 2.
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  if (a.size() > 40 || b.size() > 40) return 99;
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diag = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diag = up;
+    }
+  }
+  return row[b.size()];
+}
+
+// The statement word closest to `w` (a keyword or command), or "".
+std::string_view closest_statement_word(std::string_view w) {
+  static constexpr std::string_view kWords[] = {
+#define SM_KW(kind, text) text,
+      SM_GEO_KEYWORDS(SM_KW)
+#undef SM_KW
+      "Include", "Background", "BoundaryLayer", "SetNumber", "SetString",
+  };
+  std::string_view best;
+  std::size_t best_d = 3;
+  auto consider = [&](std::string_view cand) {
+    const std::size_t d = edit_distance(w, cand);
+    const std::size_t allowed = cand.size() <= 4 ? 1 : 2;  // short words: one typo only
+    if (d < best_d && d <= allowed) {
+      best_d = d;
+      best = cand;
+    }
+  };
+  for (std::string_view k : kWords) consider(k);
+  for (std::string_view k : kStringCommands) consider(k);
+  for (std::string_view k : kNumberCommands) consider(k);
+  for (std::string_view k : kBareCommands) consider(k);
+  return best;
 }
 
 }  // namespace
@@ -133,7 +176,9 @@ StmtId Parser::parse_assignment(const Token& first) {
     const Token t = peek();
     if (lv.kind == LValue::Kind::Var && lv.name.suffixes.empty() && lv.name.ident.valid() &&
         (t.kind == Tok::String || t.kind == Tok::Number || t.kind == Tok::Semicolon || t.kind == Tok::Ident)) {
-      diags_.report(first.range, Diag::UnknownCommand, clip(text(first)));
+      auto h = diags_.report(first.range, Diag::UnknownCommand, clip(text(first)));
+      if (const std::string_view near = closest_statement_word(text(first)); !near.empty())
+        h.note(first.range, fmt::format("did you mean '{}'?", near));
       throw SyntaxError{};
     }
     fail_expected("'=' or another assignment operator");
@@ -294,7 +339,9 @@ StmtId Parser::parse_background_field() {
   const Token word = advance();
   const std::string_view w = text(word);
   if (w != "Background" && w != "BoundaryLayer") {
-    diags_.report(word.range, Diag::UnknownCommand, clip(w));
+    auto h = diags_.report(word.range, Diag::UnknownCommand, clip(w));
+    if (const std::string_view near = closest_statement_word(w); !near.empty())
+      h.note(word.range, fmt::format("did you mean '{}'?", near));
     throw SyntaxError{};
   }
   advance();  // Field

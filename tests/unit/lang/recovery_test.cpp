@@ -92,8 +92,18 @@ TEST_CASE("recovery: syntax errors in dead branches and macro bodies are reporte
 }
 
 TEST_CASE("recovery: unknown commands and keywords as names") {
-  auto r = parse_text("Foo \"bar\";\nx = 1;\n");
-  CHECK(headlines(r.diags) == "t.geo:1:1: error: unknown command 'Foo' [unknown-command]\n");
+  auto r = parse_text("Frobnicate \"bar\";\nx = 1;\n");
+  CHECK(headlines(r.diags) == "t.geo:1:1: error: unknown command 'Frobnicate' [unknown-command]\n");
+  r = parse_text("For i In {1:2}\n  x = i;\nEndFo\ny = 2;\n");
+  CHECK(headlines(r.diags) ==
+        "t.geo:3:1: error: unknown command 'EndFo' [unknown-command]\n"
+        "t.geo:3:1: note: did you mean 'EndFor'?\n"
+        "t.geo:5:1: error: 'For' without matching 'EndFor' [unterminated-block]\n"
+        "t.geo:1:1: note: 'For' opened here\n");
+  r = parse_text("Sav \"a.msh\";\n");
+  CHECK(headlines(r.diags) ==
+        "t.geo:1:1: error: unknown command 'Sav' [unknown-command]\n"
+        "t.geo:1:1: note: did you mean 'Save'?\n");
   r = parse_text("Pi = 3;\n");
   CHECK(headlines(r.diags) == "t.geo:1:1: error: 'Pi' is a keyword and cannot be used as a name here [keyword-as-name]\n");
   r = parse_text("Call Foo; x = 1;\n");
