@@ -1,0 +1,364 @@
+// 1D meshing (paper section 3.2): adaptive trapezoid integration of |X'|/h piece by piece
+// with batched size evaluation, Gmsh's node count and placement, then the self-intersection
+// repair of mesh/boundary_recovery on the curves of each plane (parametric or Euclidean).
+#include "mesh/mesh1d.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "mesh/boundary_recovery.h"
+#include "mesh/predicates.h"
+
+namespace sm {
+
+std::size_t ModelMesh::num_curve_edges() const {
+  std::size_t n = 0;
+  for (const auto& [tag, c] : curves) n += c.num_edges();
+  return n;
+}
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Integrand |X'(t)| / h(t) at a batch of parameters.
+void integrand(const geo::Curve& c, const CurveSizeFn& size, std::span<const double> t, std::vector<geo::Jet3>& jets,
+               std::vector<double>& h, std::vector<double>& f) {
+  jets.resize(t.size());
+  h.resize(t.size());
+  f.resize(t.size());
+  for (std::size_t i = 0; i < t.size(); ++i) jets[i] = c.eval(t[i]);
+  size(t, jets, h);
+  for (std::size_t i = 0; i < t.size(); ++i) f[i] = norm(jets[i].d1) / h[i];
+}
+
+}  // namespace
+
+CurvePrimitive integrate_curve(const geo::Curve& c, const CurveSizeFn& size, double rel_tolerance,
+                               double abs_tolerance) {
+  // The curve is smooth inside each polynomial piece: start from a few intervals per piece
+  // (so piece boundaries are grid points), then halve, in batches, every interval whose
+  // trapezoid disagrees with the sum of its two halves.
+  const int pieces = std::max(1, c.pieces());
+  const int per_piece = std::max(2, (32 + pieces - 1) / pieces);
+  const std::size_t n0 = static_cast<std::size_t>(pieces) * static_cast<std::size_t>(per_piece);
+  std::vector<double> t(n0 + 1), f;
+  for (std::size_t i = 0; i <= n0; ++i) t[i] = static_cast<double>(i) / static_cast<double>(n0);
+  std::vector<geo::Jet3> jets;
+  std::vector<double> h;
+  CurvePrimitive out;
+  integrand(c, size, t, jets, h, f);
+  out.evaluations += t.size();
+  std::vector<std::uint8_t> active(n0, 1);   // per interval
+  std::vector<double> mid_t, mid_f, nt, nf;
+  std::vector<std::uint8_t> nactive;
+  constexpr int kMaxPasses = 40;
+  for (int pass = 0; pass < kMaxPasses; ++pass) {
+    mid_t.clear();
+    for (std::size_t i = 0; i + 1 < t.size(); ++i)
+      if (active[i]) mid_t.push_back(0.5 * (t[i] + t[i + 1]));
+    if (mid_t.empty()) break;
+    integrand(c, size, mid_t, jets, h, mid_f);
+    out.evaluations += mid_t.size();
+    nt.clear(), nf.clear(), nactive.clear();
+    std::size_t k = 0;
+    for (std::size_t i = 0; i + 1 < t.size(); ++i) {
+      nt.push_back(t[i]);
+      nf.push_back(f[i]);
+      if (!active[i]) {
+        nactive.push_back(0);
+        continue;
+      }
+      const double w = t[i + 1] - t[i], fm = mid_f[k], tm = mid_t[k];
+      ++k;
+      const double t1 = 0.5 * w * (f[i] + f[i + 1]);
+      const double t2 = 0.25 * w * (f[i] + 2 * fm + f[i + 1]);
+      const bool again = std::abs(t1 - t2) > rel_tolerance * std::abs(t2) + abs_tolerance && 0.5 * w > 1e-13;
+      nt.push_back(tm);
+      nf.push_back(fm);
+      nactive.push_back(again);
+      nactive.push_back(again);
+    }
+    nt.push_back(t.back());
+    nf.push_back(f.back());
+    t.swap(nt), f.swap(nf), active.swap(nactive);
+  }
+  out.t = std::move(t);
+  out.a.resize(out.t.size());
+  out.a[0] = 0;
+  for (std::size_t i = 1; i < out.t.size(); ++i)
+    out.a[i] = out.a[i - 1] + 0.5 * (out.t[i] - out.t[i - 1]) * (f[i - 1] + f[i]);
+  return out;
+}
+
+std::vector<double> place_nodes(const CurvePrimitive& p, int min_segs) {
+  const double a = p.total();
+  const int n = std::max(min_segs + 1, static_cast<int>(a + 1.99));
+  std::vector<double> out(static_cast<std::size_t>(n));
+  out.front() = 0;
+  out.back() = 1;
+  std::size_t j = 0;
+  for (int i = 1; i + 1 < n; ++i) {
+    if (!(a > 0)) {
+      out[i] = static_cast<double>(i) / (n - 1);
+      continue;
+    }
+    const double target = a * i / (n - 1);
+    while (j + 2 < p.a.size() && p.a[j + 1] < target) ++j;
+    const double da = p.a[j + 1] - p.a[j];
+    const double s = da > 0 ? std::clamp((target - p.a[j]) / da, 0.0, 1.0) : 0.5;
+    out[i] = p.t[j] + s * (p.t[j + 1] - p.t[j]);
+  }
+  return out;
+}
+
+int min_segments(const geo::Curve& c, const Mesh1dOptions& opt) {
+  int np = 1;
+  switch (c.kind()) {
+    case geo::CurveKind::Line: np = 1; break;
+    case geo::CurveKind::Circle:
+    case geo::CurveKind::Ellipse: {
+      const double angle = c.kind() == geo::CurveKind::Circle ? std::abs(c.circle()->angle) : 2 * std::numbers::pi;
+      const double n = opt.min_circle_nodes;
+      np = angle > 6.28 ? static_cast<int>(n) : static_cast<int>(0.99 + (n - 1) * angle / (2 * std::numbers::pi));
+      break;
+    }
+    default: np = opt.min_curve_nodes - 1; break;
+  }
+  return std::max(np, 1);
+}
+
+namespace {
+
+struct CurveJob {
+  const geo::ModelCurve* mc = nullptr;
+  const geo::Curve* shape = nullptr;
+};
+
+Mesh1dError make_error(Mesh1dErrorKind kind, int a, int b, std::string msg) {
+  Mesh1dError e;
+  e.kind = kind;
+  e.curve_a = a, e.curve_b = b;
+  e.message = std::move(msg);
+  return e;
+}
+
+// The curves drawn in one plane: a surface geometry's (u,v) plane (key = its tag) or the
+// Euclidean plane z = const (key 0). Crossing edges are searched there.
+struct PlaneGroup {
+  int geometry = 0;
+  double z = 0;
+  std::vector<int> curves;   // tags
+};
+
+bool all_collinear(const std::vector<Vec2>& p) {
+  if (p.size() < 3) return true;
+  std::size_t j = 1;
+  while (j < p.size() && p[j] == p[0]) ++j;
+  if (j == p.size()) return true;
+  for (std::size_t k = j + 1; k < p.size(); ++k)
+    if (orient2d(p[0], p[j], p[k]) != Sign::Zero) return false;
+  return true;
+}
+
+Mesh1dError repair_group(const geo::Model& model, const PlaneGroup& g, ModelMesh& mesh, const Mesh1dOptions& opt,
+                         Mesh1dStats& st) {
+  const geo::SurfaceGeometry* geom = g.geometry ? model.geometry(g.geometry) : nullptr;
+  auto plane_of = [&](const MeshNode& n) { return geom ? n.uv : Vec2{n.xyz.x, n.xyz.y}; };
+  BoundaryProblem prob;
+  std::vector<std::uint32_t> node_to_pt(mesh.nodes.size(), kNoEdge);
+  std::vector<std::uint32_t> pt_to_node;
+  for (int tag : g.curves) {
+    const CurveMesh& cm = mesh.curves.at(tag);
+    BoundaryCurve bc;
+    bc.id = static_cast<std::uint32_t>(tag);
+    bc.t = cm.t;
+    for (std::uint32_t n : cm.nodes) {
+      if (node_to_pt[n] == kNoEdge) {
+        node_to_pt[n] = static_cast<std::uint32_t>(prob.points.size());
+        prob.points.push_back(plane_of(mesh.nodes[n]));
+        pt_to_node.push_back(n);
+      }
+      bc.pts.push_back(node_to_pt[n]);
+    }
+    prob.curves.push_back(std::move(bc));
+  }
+  if (all_collinear(prob.points)) return {};
+  const std::size_t original = prob.points.size();
+  double lo_x = 1e300, lo_y = 1e300, hi_x = -1e300, hi_y = -1e300;
+  for (Vec2 p : prob.points) lo_x = std::min(lo_x, p.x), lo_y = std::min(lo_y, p.y), hi_x = std::max(hi_x, p.x), hi_y = std::max(hi_y, p.y);
+  BoundaryOptions bo;
+  bo.tolerance = model.options().tolerance * std::hypot(hi_x - lo_x, hi_y - lo_y);
+  bo.max_rounds = opt.max_repair_rounds;
+  auto split = [&](std::uint32_t c, double t) -> Vec2 {
+    const geo::Curve& shape = *model.curve(g.curves[c])->shape;
+    if (geom) return shape.eval_uv(t).p;
+    const Vec3 p = shape.point(t);
+    return {p.x, p.y};
+  };
+  BoundaryResult br = recover_boundary(prob, split, bo);
+  st.repair_rounds += br.rounds;
+  st.repair_splits += br.splits;
+  if (!br.ok()) {
+    Mesh1dErrorKind kind = Mesh1dErrorKind::Invalid;
+    if (br.error.kind == BoundaryErrorKind::Intersection) kind = Mesh1dErrorKind::Intersection;
+    if (br.error.kind == BoundaryErrorKind::DuplicatePoint) kind = Mesh1dErrorKind::DuplicatePoint;
+    if (br.error.kind == BoundaryErrorKind::NoProgress) kind = Mesh1dErrorKind::NoProgress;
+    Mesh1dError e = make_error(kind, static_cast<int>(br.error.curve_a), static_cast<int>(br.error.curve_b), "");
+    const Vec2 w = br.error.where;
+    e.xyz = geom ? geom->point(w) : Vec3{w.x, w.y, g.z};
+    if (geom && geom->polar()) {
+      e.has_lonlat = true;
+      e.where = geom->polar()->to_lonlat(e.xyz);
+    } else if (geom && geom->lonlat()) {
+      e.has_lonlat = true;
+      e.where = {w.x * geo::kRadToDeg, w.y * geo::kRadToDeg};
+    }
+    const std::string place = e.has_lonlat ? fmt::format("lon {:.6f}, lat {:.6f}", e.where.lon, e.where.lat)
+                                           : fmt::format("({}, {}, {})", e.xyz.x, e.xyz.y, e.xyz.z);
+    if (kind == Mesh1dErrorKind::Intersection)
+      e.message = e.curve_a == e.curve_b ? fmt::format("curve {} intersects itself near {}", e.curve_a, place)
+                                         : fmt::format("curves {} and {} intersect near {}", e.curve_a, e.curve_b, place);
+    else if (kind == Mesh1dErrorKind::DuplicatePoint)
+      e.message = fmt::format("curves {} and {} have distinct nodes at the same place near {}", e.curve_a, e.curve_b, place);
+    else
+      e.message = br.error.message;
+    return e;
+  }
+  if (br.splits == 0) return {};
+  // New points: one node each, on the curve that received it.
+  pt_to_node.resize(prob.points.size(), kNoEdge);
+  for (std::size_t ci = 0; ci < prob.curves.size(); ++ci) {
+    const BoundaryCurve& bc = prob.curves[ci];
+    const geo::Curve& shape = *model.curve(g.curves[ci])->shape;
+    CurveMesh& cm = mesh.curves.at(g.curves[ci]);
+    if (bc.pts.size() == cm.nodes.size()) continue;
+    cm.nodes.clear();
+    cm.t = bc.t;
+    for (std::size_t k = 0; k < bc.pts.size(); ++k) {
+      const std::uint32_t p = bc.pts[k];
+      if (p >= original && pt_to_node[p] == kNoEdge) {
+        const double t = bc.t[k];
+        pt_to_node[p] = geom ? mesh.add_node(shape.point(t), shape.eval_uv(t).p) : mesh.add_node(shape.point(t));
+      }
+      cm.nodes.push_back(pt_to_node[p]);
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
+Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
+  Mesh1dResult res;
+  ModelMesh& mesh = res.mesh;
+  mesh.dim = 1;
+  double bbox = opt.bbox_diag;
+  if (!(bbox > 0)) bbox = model.bounding_box().diagonal();
+  if (!(bbox > 0)) bbox = 1;
+  for (const auto& [tag, v] : model.vertices()) {
+    const geo::SurfaceGeometry* g = v.geometry ? model.geometry(v.geometry) : nullptr;
+    mesh.vertex_node[tag] = g ? mesh.add_node(v.xyz, v.uv) : mesh.add_node(v.xyz);
+  }
+  auto t0 = std::chrono::steady_clock::now();
+  std::vector<Vec3> pts;
+  std::vector<double> bg;
+  for (const auto& [tag, mc] : model.curves()) {
+    if (!mc.shape) {
+      res.error = make_error(Mesh1dErrorKind::Invalid, tag, tag, fmt::format("curve {} has no geometry", tag));
+      return res;
+    }
+    const geo::Curve& shape = *mc.shape;
+    const geo::ModelVertex* vb = model.vertex(mc.begin);
+    const geo::ModelVertex* ve = model.vertex(mc.end);
+    if (!vb || !ve) {
+      res.error = make_error(Mesh1dErrorKind::Invalid, tag, tag, fmt::format("curve {} lacks an end point", tag));
+      return res;
+    }
+    std::optional<double> lc0, lc1;
+    if (vb->lc < geo::kMaxLc) lc0 = vb->lc;
+    if (ve->lc < geo::kMaxLc) lc1 = ve->lc;
+    const field::EntityRef on{1, tag};
+    const bool curvature = opt.size.from_curvature > 0;
+    auto size = [&](std::span<const double> t, std::span<const geo::Jet3> jets, std::span<double> h) {
+      if (opt.background) {
+        pts.resize(t.size());
+        bg.resize(t.size());
+        for (std::size_t i = 0; i < t.size(); ++i) pts[i] = jets[i].p;
+        opt.background->eval_on(on, pts, bg);
+      }
+      field::SizeQuery q;
+      q.bbox_diag = bbox;
+      q.entity_dim = 1;
+      q.end_lc0 = lc0;
+      q.end_lc1 = lc1;
+      for (std::size_t i = 0; i < t.size(); ++i) {
+        q.t = t[i];
+        if (opt.background) q.background = bg[i];
+        if (curvature) {
+          const double d = norm(jets[i].d1);
+          q.curvature = d > 0 ? norm(cross(jets[i].d1, jets[i].d2)) / (d * d * d) : 0.0;
+        }
+        h[i] = field::final_size(opt.size, q).size;
+      }
+    };
+    const CurvePrimitive prim = integrate_curve(shape, size, opt.rel_tolerance, opt.abs_tolerance);
+    res.stats.size_evaluations += prim.evaluations;
+    if (!std::isfinite(prim.total())) {
+      res.error = make_error(Mesh1dErrorKind::Invalid, tag, tag,
+                             fmt::format("curve {}: the size integral is not finite (a size of zero or a degenerate curve)", tag));
+      return res;
+    }
+    const std::vector<double> ts = place_nodes(prim, min_segments(shape, opt));
+    CurveMesh cm;
+    cm.tag = tag;
+    cm.t = ts;
+    cm.nodes.reserve(ts.size());
+    cm.nodes.push_back(mesh.vertex_node.at(mc.begin));
+    const bool uv = shape.on_surface();
+    for (std::size_t i = 1; i + 1 < ts.size(); ++i)
+      cm.nodes.push_back(uv ? mesh.add_node(shape.point(ts[i]), shape.eval_uv(ts[i]).p) : mesh.add_node(shape.point(ts[i])));
+    cm.nodes.push_back(mesh.vertex_node.at(mc.end));
+    mesh.curves.emplace(tag, std::move(cm));
+  }
+  res.stats.seconds_integrate = seconds_since(t0);
+  if (opt.repair_intersections) {
+    t0 = std::chrono::steady_clock::now();
+    std::map<int, PlaneGroup> groups;   // geometry tag -> curves; 0: Euclidean z = const
+    bool euclid_planar = true;
+    std::optional<double> euclid_z;
+    for (const auto& [tag, mc] : model.curves()) {
+      const int key = mc.shape->on_surface() ? mc.geometry : 0;
+      if (key == 0) {
+        for (std::uint32_t n : mesh.curves.at(tag).nodes) {
+          if (!euclid_z) euclid_z = mesh.nodes[n].xyz.z;
+          if (mesh.nodes[n].xyz.z != *euclid_z) euclid_planar = false;
+        }
+      }
+      PlaneGroup& g = groups[key];
+      g.geometry = key;
+      g.curves.push_back(tag);
+    }
+    for (auto& [key, g] : groups) {
+      if (key == 0 && !euclid_planar) continue;
+      if (key == 0) g.z = euclid_z.value_or(0.0);
+      res.error = repair_group(model, g, mesh, opt, res.stats);
+      if (!res.ok()) return res;
+    }
+    res.stats.seconds_repair = seconds_since(t0);
+  }
+  res.stats.curves = mesh.curves.size();
+  res.stats.nodes = mesh.nodes.size();
+  res.stats.edges = mesh.num_curve_edges();
+  return res;
+}
+
+}  // namespace sm

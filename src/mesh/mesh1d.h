@@ -1,0 +1,86 @@
+// 1D meshing of a model (paper section 3.2, gmsh-reference 4.4): each curve is discretised
+// so that its edges follow the size field on the surface, N from the integral of |X'|/h,
+// then the paper's self-intersection repair (Delaunay of all 1D nodes + edge recovery).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "field/field.h"
+#include "field/size_policy.h"
+#include "geo/model.h"
+#include "mesh/model_mesh.h"
+
+namespace sm {
+
+struct Mesh1dOptions {
+  field::SizePolicyOptions size;                 ///< Mesh.MeshSize* (gmsh-reference 4.4)
+  const field::SizeField* background = nullptr;  ///< Background Field, if any
+  double bbox_diag = 0;        ///< Gmsh's CTX::lc; <= 0: the model's bounding-box diagonal
+  int min_curve_nodes = 3;     ///< Mesh.MinimumCurveNodes (splines, B-splines, Bezier)
+  int min_circle_nodes = 7;    ///< Mesh.MinimumCircleNodes (full turn of an arc)
+  /// Adaptive trapezoid: an interval is halved while its trapezoid and its two halves
+  /// differ by more than rel * (its integral) + abs (in elements).
+  double rel_tolerance = 1e-4;
+  double abs_tolerance = 1e-6;
+  bool repair_intersections = true;  ///< the paper's section 3.2 repair loop
+  std::uint32_t max_repair_rounds = 200;
+};
+
+/// The integrand's size h(t) along one curve: for `t`, the curve jets at t, sets h (> 0).
+using CurveSizeFn = std::function<void(std::span<const double> t, std::span<const geo::Jet3> jets, std::span<double> h)>;
+
+/// Samples of the primitive a(t) = integral_0^t |X'(s)| / h(s) ds (adaptive trapezoid,
+/// piece by piece, sizes evaluated in batches): t and a increasing, t from 0 to 1.
+struct CurvePrimitive {
+  std::vector<double> t, a;
+  std::uint64_t evaluations = 0;
+  double total() const { return a.empty() ? 0.0 : a.back(); }
+};
+
+CurvePrimitive integrate_curve(const geo::Curve& c, const CurveSizeFn& size, double rel_tolerance = 1e-4,
+                               double abs_tolerance = 1e-6);
+
+/// Gmsh's node count N = max(min_segments + 1, int(a + 1.99)) and parameters of the N
+/// nodes at equal increments a/(N-1) of the primitive (first 0, last 1).
+std::vector<double> place_nodes(const CurvePrimitive& p, int min_segments);
+
+/// Minimum number of segments of a curve (Gmsh's minimumMeshSegments): 1 for lines,
+/// MinimumCurveNodes - 1 for splines, a share of MinimumCircleNodes for arcs.
+int min_segments(const geo::Curve& c, const Mesh1dOptions& opt);
+
+enum class Mesh1dErrorKind { None, Intersection, DuplicatePoint, Invalid, NoProgress };
+
+/// A located failure: the curves involved (equal for a self-intersection), the place in
+/// space and, on a sphere geometry, in longitude/latitude (degrees).
+struct Mesh1dError {
+  Mesh1dErrorKind kind = Mesh1dErrorKind::None;
+  int curve_a = 0, curve_b = 0;
+  Vec3 xyz;
+  bool has_lonlat = false;
+  geo::LonLat where;
+  std::string message;
+};
+
+struct Mesh1dStats {
+  std::uint64_t curves = 0, nodes = 0, edges = 0;
+  std::uint64_t size_evaluations = 0;   // points at which the size was evaluated
+  std::uint32_t repair_rounds = 0, repair_splits = 0;
+  double seconds_integrate = 0, seconds_repair = 0;
+};
+
+struct Mesh1dResult {
+  ModelMesh mesh;
+  Mesh1dError error;
+  Mesh1dStats stats;
+  bool ok() const { return error.kind == Mesh1dErrorKind::None; }
+};
+
+/// Meshes every model vertex and curve (in tag order, deterministic). On failure the
+/// result holds the error and no usable mesh.
+Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt);
+
+}  // namespace sm

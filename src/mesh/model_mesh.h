@@ -1,0 +1,58 @@
+// The mesh of a geometry model as the meshers build it (paper section 3): one node per
+// model vertex, per curve its ordered nodes with parameters, later per surface its
+// triangles. Shared end points are meshed once; writers go through io/from_model_mesh.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "base/vec.h"
+
+namespace sm {
+
+/// One mesh node: its position in space and, on a surface geometry, its (u,v).
+struct MeshNode {
+  Vec3 xyz;
+  Vec2 uv;
+  bool has_uv = false;
+};
+
+/// The 1D mesh of one model curve, from its begin vertex to its end vertex (equal for a
+/// closed curve). nodes.front()/back() are the model vertices' nodes; t increases
+/// strictly from 0 to 1.
+struct CurveMesh {
+  int tag = 0;
+  std::vector<std::uint32_t> nodes;   // indices into ModelMesh::nodes
+  std::vector<double> t;              // curve parameter of each node
+  std::size_t num_edges() const { return nodes.empty() ? 0 : nodes.size() - 1; }
+};
+
+/// Triangles of one model surface (filled by the 2D meshers).
+struct SurfaceMesh {
+  int tag = 0;
+  std::vector<std::uint32_t> interior_nodes;          // nodes classified on the surface
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+};
+
+struct ModelMesh {
+  std::vector<MeshNode> nodes;
+  std::map<int, std::uint32_t> vertex_node;   // model vertex tag -> its node
+  std::map<int, CurveMesh> curves;            // curve tag -> its mesh
+  std::map<int, SurfaceMesh> surfaces;
+  int dim = 0;                                // highest dimension meshed
+
+  std::uint32_t add_node(Vec3 xyz) {
+    nodes.push_back({xyz, {}, false});
+    return static_cast<std::uint32_t>(nodes.size() - 1);
+  }
+  std::uint32_t add_node(Vec3 xyz, Vec2 uv) {
+    nodes.push_back({xyz, uv, true});
+    return static_cast<std::uint32_t>(nodes.size() - 1);
+  }
+  std::size_t num_curve_edges() const;
+};
+
+}  // namespace sm
