@@ -163,7 +163,7 @@ Interpreter::Flow Interpreter::exec(StmtId id) {
           return exec_include(s, n);
         } else if constexpr (std::is_same_v<T, CommandStmt>) {
           return exec_command(s, n);
-        } else {
+        } else if (!exec_native_coast_stmt(*this, id)) {
           dispatch_model_stmt(*this, id);
         }
         return Flow::Normal;

@@ -18,6 +18,9 @@
 
 namespace sm::interp {
 
+/// The entities one coastline import created (builtins/coastline.cpp).
+struct CoastlineImport;
+
 /// `Coastline[n] = Format; Coastline[n].Option = value;` (native extension),
 /// kept as written until `Coastline{n}` imports it.
 struct CoastlineDef {
@@ -25,6 +28,8 @@ struct CoastlineDef {
   std::map<std::string, Value, std::less<>> options;    // as set by the script
   std::map<std::string, lang::SourceRange, std::less<>> option_at;
   lang::SourceRange defined_at;
+  /// Set by the first `Coastline{n}`: the entities the import created (coastline.cpp).
+  std::shared_ptr<const CoastlineImport> imported;
 };
 
 /// Fields built for FieldValue/FieldArgmin (builtins/field_eval.cpp).
@@ -40,6 +45,8 @@ struct KernelState {
   std::map<std::pair<int, std::string>, lang::SourceRange> field_option_at;
   std::shared_ptr<FieldCache> field_cache;               // dropped when a Field statement runs
   std::map<int, CoastlineDef> coastlines;
+  /// `Plugin(GSHHS).Option = value;` as set so far (plugin_gshhs.cpp), name -> value.
+  std::map<std::string, Value, std::less<>> gshhs_plugin_options;
   /// (dim, tag) -> the statement that created the entity (provenance).
   std::map<std::pair<int, int>, lang::SourceRange> created_at;
 };

@@ -26,6 +26,16 @@ bool exec_mesh_command(Interpreter& in, lang::StmtId s, std::string_view command
 /// Mesh-side statements without a command word: Plugin, View, Color, Coherence Mesh.
 void exec_mesh_stmt(Interpreter& in, lang::StmtId s);
 
+/// `Coastline[n] = Format;`, `Coastline[n].Option = v;`, `Delete Coastline[n];` and
+/// `Plugin(GSHHS)...;` (coastline.cpp, plugin_gshhs.cpp): runs them and returns true, or
+/// returns false for any other statement.
+bool exec_native_coast_stmt(Interpreter& in, lang::StmtId s);
+void exec_coastline_stmt(Interpreter& in, lang::StmtId s);
+void exec_gshhs_plugin_stmt(Interpreter& in, lang::StmtId s);
+/// `Coastline{n, ...}` (coastline.cpp): imports coastline n on first use and returns its
+/// curve-loop tags (or, with a string item, its "Curves", "OpenCurves", "Points"...).
+Value eval_coastline_query(Interpreter& in, lang::ExprId e);
+
 /// Evaluates the expressions of a statement the kernel cannot run yet, so
 /// that mistakes in them (unknown variables, division by zero...) are
 /// reported now; parts that need the model themselves are skipped.

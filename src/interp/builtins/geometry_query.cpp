@@ -239,7 +239,7 @@ Value eval_model_expr(Interpreter& in, ExprId e) {
     }
     case ExprKind::Boundary:
     case ExprKind::Transform: return tag_list(eval_shape_expr(in, e));
-    case ExprKind::CoastlineQuery: in.not_supported_expr(e, "Coastline{}");
+    case ExprKind::CoastlineQuery: return eval_coastline_query(in, e);
     default: break;
   }
   in.not_supported_expr(e, in.text_of(x.range).substr(0, 30));

@@ -1,0 +1,457 @@
+// Coastline statements (native extension, paper section 2.2, issue 4): `Coastline[n] = GSHHS;`,
+// `Coastline[n].Option = value;`, `Delete Coastline[n];` and the import `Coastline{n}`, which
+// runs coast::build_coast_model and turns its loops into points, curves and curve loops.
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "coast/import.h"
+#include "coast/read.h"
+#include "field/registry.h"
+#include "interp/builtins/dispatch.h"
+#include "interp/builtins/field_eval.h"
+#include "interp/builtins/geometry_shapes.h"
+#include "interp/interpreter.h"
+#include "interp/provenance.h"
+
+namespace sm::interp {
+
+/// What one import created, in the order `Coastline{n}` returns it.
+struct CoastlineImport {
+  std::vector<int> loops;            // surface by surface, outer loop first; then unassigned holes
+  std::vector<int> loop_points;      // control points of each loop
+  std::vector<int> outer;            // the outer loop of each surface
+  std::vector<int> curves, open_curves, points;
+  lang::SourceRange at;              // the query that imported
+};
+
+using namespace sm::lang;
+
+namespace {
+
+enum class OptType { String, Number, List };
+
+struct CoastOption {
+  std::string_view name;
+  OptType type;
+  bool loops2_only;
+  std::string_view help;
+};
+
+// Every option, with the value it takes; docs/interpreter.md lists the same.
+constexpr CoastOption kOptions[] = {
+    {"FileName", OptType::String, false, "shoreline file, relative to the script"},
+    {"Levels", OptType::List, false, "GSHHS levels kept (default {1})"},
+    {"AntarcticaLevel", OptType::Number, false, "level kept for Antarctica: 5 ice front (default), 6 grounding line, 0 none"},
+    {"AccuracyField", OptType::Number, false, "size field giving gamma(x) in metres (required)"},
+    {"Region", OptType::List, false, "{west, east, south, north} in degrees"},
+    {"MinArea", OptType::Number, false, "drop closed rings below this area (km^2)"},
+    {"CurveType", OptType::String, false, "\"BSpline\" (default) or \"Line\""},
+    {"MinStraitsFactor", OptType::Number, false, "straits narrower than factor * gamma are reported (default 1)"},
+    {"CloseStraits", OptType::Number, false, "1: merge islands across such straits (default 0: keep them open)"},
+    {"CheckSplines", OptType::Number, false, "1: refine until no two B-spline span hulls overlap"},
+    {"Coordinate", OptType::String, true, "lonlat, lonlat_degrees (default), utm or cartesian"},
+    {"UTMZone", OptType::Number, true, "UTM zone of utm coordinates"},
+    {"UTMEquatorialRadius", OptType::Number, true, "ellipsoid of utm coordinates (m)"},
+    {"UTMPolarRadius", OptType::Number, true, "ellipsoid of utm coordinates (m)"},
+};
+
+// What `Coastline{n, "What"}` returns.
+constexpr std::string_view kSelectors[] = {"Loops", "Curves", "OpenCurves", "Points", "ControlPoints", "Outer"};
+
+const CoastOption* find_option(std::string_view name) {
+  for (const CoastOption& o : kOptions)
+    if (o.name == name) return &o;
+  return nullptr;
+}
+
+std::string did_you_mean(std::string_view name, const std::vector<std::string>& names) {
+  const std::string best = field::closest_name(name, names);
+  return best.empty() ? std::string() : fmt::format(" (did you mean '{}'?)", best);
+}
+
+int coast_id(Interpreter& in, ExprId e) {
+  const double v = in.eval_number(e);
+  if (!std::isfinite(v) || std::abs(v) > 2147483647.0)
+    in.fail_fmt(in.ast().expr(e).range, Diag::WrongType, fmt::format("a coastline id must be an integer, not {}", v));
+  return static_cast<int>(v);
+}
+
+CoastlineDef& require_coast(Interpreter& in, int id, SourceRange at, std::string_view doing) {
+  auto& defs = in.kernel().coastlines;
+  auto it = defs.find(id);
+  if (it != defs.end()) return it->second;
+  std::vector<int> ids;
+  for (const auto& [k, d] : defs) ids.push_back(k);
+  in.fail_fmt(at, Diag::MissingCoastline,
+              fmt::format("cannot {} Coastline[{}]: it is not defined{}", doing, id,
+                          ids.empty() ? std::string(" (no coastline is; write 'Coastline[n] = GSHHS;' first)")
+                                      : fmt::format(" (defined: {})", fmt::join(ids, ", "))));
+}
+
+void exec_coast_new(Interpreter& in, const Stmt& s, const FieldNewStmt& n) {
+  const int id = coast_id(in, n.id);
+  const std::string format(in.ast().str(n.type));
+  const auto parsed = coast::parse_coast_format(format);
+  if (!parsed) {
+    in.fail_fmt(n.type_range, Diag::UnknownCoastlineFormat,
+                fmt::format("unknown coastline format '{}'{}; the formats are GSHHS, Shapefile, LonLatText and Loops2",
+                            format, did_you_mean(format, {"GSHHS", "Shapefile", "LonLatText", "Loops2"})));
+  }
+  auto& defs = in.kernel().coastlines;
+  if (auto it = defs.find(id); it != defs.end()) {
+    try {
+      in.fail_fmt(in.ast().expr(n.id).range, Diag::DuplicateCoastline,
+                  fmt::format("Coastline[{}] is already defined: 'Delete Coastline[{}];' first to redefine it", id, id));
+    } catch (RuntimeError& err) {
+      err.notes.insert(err.notes.begin(), DiagNote{it->second.defined_at, "first defined here"});
+      throw;
+    }
+  }
+  CoastlineDef d;
+  d.format = coast::coast_format_name(*parsed);
+  d.defined_at = s.range;
+  defs.emplace(id, std::move(d));
+}
+
+[[noreturn]] void fail_option(Interpreter& in, SourceRange at, int id, std::string_view option, const std::string& why) {
+  in.fail_fmt(at, Diag::WrongCoastlineOption, fmt::format("Coastline[{}].{} {}", id, option, why));
+}
+
+// Checks a value against its option now, so that a mistake is reported where it is written.
+void check_option_value(Interpreter& in, int id, const CoastOption& o, const Value& v, SourceRange at) {
+  if (o.type == OptType::String) {
+    if (!v.is_string() || v.strs().size() != 1) fail_option(in, at, id, o.name, "takes one string");
+    const std::string& t = v.strs().front();
+    if (o.name == "CurveType" && t != "BSpline" && t != "Line")
+      fail_option(in, at, id, o.name, fmt::format("must be \"BSpline\" or \"Line\", not \"{}\"", t));
+    if (o.name == "Coordinate" && !coast::parse_loops2_coordinate(t))
+      fail_option(in, at, id, o.name,
+                  fmt::format("must be lonlat, lonlat_degrees, utm or cartesian, not \"{}\"", t));
+    if (o.name == "FileName" && t.empty()) fail_option(in, at, id, o.name, "is empty");
+    return;
+  }
+  if (!v.is_numeric()) fail_option(in, at, id, o.name, o.type == OptType::List ? "takes a list of numbers" : "takes a number");
+  const std::vector<double>& x = v.nums();
+  for (double d : x)
+    if (!std::isfinite(d)) fail_option(in, at, id, o.name, "is not finite");
+  if (o.type == OptType::Number && x.size() != 1)
+    fail_option(in, at, id, o.name, fmt::format("takes one number, not a list of {}", x.size()));
+  const std::string_view name = o.name;
+  if (name == "Levels") {
+    if (x.empty()) fail_option(in, at, id, name, "is empty: no shoreline would be kept");
+    for (double d : x)
+      if (d != std::floor(d) || d < 1 || d > 6) fail_option(in, at, id, name, fmt::format("must list levels 1 to 6, not {}", d));
+  } else if (name == "AntarcticaLevel") {
+    if (x[0] != 0 && x[0] != 5 && x[0] != 6) fail_option(in, at, id, name, fmt::format("must be 0, 5 or 6, not {}", x[0]));
+  } else if (name == "AccuracyField" || name == "UTMZone") {
+    if (x[0] != std::floor(x[0]) || x[0] < (name == "UTMZone" ? 1 : 0) || x[0] > (name == "UTMZone" ? 60 : 2147483647.0))
+      fail_option(in, at, id, name, fmt::format("must be {}, not {}", name == "UTMZone" ? "a zone 1 to 60" : "a field id", x[0]));
+  } else if (name == "Region") {
+    if (x.size() != 4) fail_option(in, at, id, name, fmt::format("takes {{west, east, south, north}}, not {} numbers", x.size()));
+    if (!(x[0] < x[1]) || x[1] - x[0] > 360)
+      fail_option(in, at, id, name, fmt::format("needs west < east <= west + 360 (got {} and {})", x[0], x[1]));
+    if (!(x[2] < x[3]) || x[2] < -90 || x[3] > 90)
+      fail_option(in, at, id, name, fmt::format("needs -90 <= south < north <= 90 (got {} and {})", x[2], x[3]));
+  } else if (name == "MinArea") {
+    if (x[0] < 0) fail_option(in, at, id, name, "must not be negative");
+  } else if (name == "MinStraitsFactor" || name == "UTMEquatorialRadius" || name == "UTMPolarRadius") {
+    if (!(x[0] > 0)) fail_option(in, at, id, name, "must be positive");
+  } else if (name == "CloseStraits" || name == "CheckSplines") {
+    if (x[0] != 0 && x[0] != 1) fail_option(in, at, id, name, fmt::format("must be 0 or 1, not {}", x[0]));
+  }
+}
+
+void exec_coast_option(Interpreter& in, const Stmt& s, const FieldOptionStmt& n) {
+  const int id = coast_id(in, n.id);
+  CoastlineDef& d = require_coast(in, id, in.ast().expr(n.id).range, "set an option of");
+  const std::string option(in.ast().str(n.option));
+  const CoastOption* o = find_option(option);
+  if (!o) {
+    std::vector<std::string> names;
+    for (const CoastOption& c : kOptions) names.emplace_back(c.name);
+    in.fail_fmt(n.option_range, Diag::UnknownCoastlineOption,
+                fmt::format("Coastline[{}] ({}) has no option '{}'{}", id, d.format, option, did_you_mean(option, names)));
+  }
+  if (o->loops2_only && d.format != "Loops2")
+    in.fail_fmt(n.option_range, Diag::UnknownCoastlineOption,
+                fmt::format("option '{}' applies to Loops2 coastlines only, and Coastline[{}] is {}", option, id, d.format));
+  if (d.imported) {
+    try {
+      in.fail_fmt(s.range, Diag::WrongCoastlineOption,
+                  fmt::format("Coastline[{}] was already imported: its options can no longer change", id));
+    } catch (RuntimeError& err) {
+      err.notes.insert(err.notes.begin(), DiagNote{d.imported->at, "imported here"});
+      throw;
+    }
+  }
+  Value v = in.eval(n.value);
+  const SourceRange value_at = in.ast().expr(n.value).range;
+  check_option_value(in, id, *o, v, value_at);
+  if (o->name == "FileName") v = Value::string(resolve_script_path(in.builtin_env(), v.strs().front()));
+  d.options.insert_or_assign(option, std::move(v));
+  d.option_at.insert_or_assign(option, s.range);
+}
+
+void exec_delete_coast(Interpreter& in, const DeleteFieldStmt& n) {
+  const int id = coast_id(in, n.id);
+  require_coast(in, id, in.ast().expr(n.id).range, "delete");
+  in.kernel().coastlines.erase(id);   // the entities an import created stay in the model
+}
+
+const Value* option(const CoastlineDef& d, std::string_view name) {
+  auto it = d.options.find(name);
+  return it == d.options.end() ? nullptr : &it->second;
+}
+
+double number_option(const CoastlineDef& d, std::string_view name, double fallback) {
+  const Value* v = option(d, name);
+  return v ? v->nums().front() : fallback;
+}
+
+// A kernel error at `at`, with notes at the definition and, for file errors, at FileName.
+[[noreturn]] void fail_coast(Interpreter& in, int id, const CoastlineDef& d, SourceRange at, const coast::CoastError& e,
+                             bool file_error) {
+  std::vector<DiagNote> notes;
+  if (file_error) {
+    auto it = d.option_at.find("FileName");
+    if (it != d.option_at.end()) notes.push_back({it->second, fmt::format("Coastline[{}].FileName is set here", id)});
+  }
+  notes.push_back({d.defined_at, fmt::format("Coastline[{}] ({}) is defined here", id, d.format)});
+  in.fail_with_notes(at, Diag::CoastlineError, fmt::format("Coastline[{}]: {}", id, e.to_string()), std::move(notes));
+}
+
+void check_geo(Interpreter& in, SourceRange at, const geo::GeoStatus& st) {
+  if (!st) fail_geo(in, at, st.error());
+}
+
+// Runs the import of Coastline[id] and adds its entities to the model.
+std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id, CoastlineDef& d, SourceRange at) {
+  KernelState& k = in.kernel();
+  geo::Model& model = k.model;
+  const int g = model.current_geometry();
+  const geo::SurfaceGeometry* sg = g ? model.geometry(g) : nullptr;
+  if (!sg || !sg->polar()) {
+    in.fail_with_notes(
+        at, Diag::CoastlineError,
+        fmt::format("Coastline{{{}}} puts its points on the current PolarSphere, and {}: define one first with "
+                    "'PolarSphere(s) = {{centre, pole}};' (its radius gives the metres of the accuracy field)",
+                    id, !sg ? "there is none" : fmt::format("the current geometry {} is a lon/lat Sphere", g)),
+        {{d.defined_at, fmt::format("Coastline[{}] is defined here", id)}});
+  }
+  const geo::PolarSphere& sphere = *sg->polar();
+  const Value* file = option(d, "FileName");
+  if (!file)
+    in.fail_with_notes(at, Diag::WrongCoastlineOption,
+                       fmt::format("Coastline[{}] has no FileName: set 'Coastline[{}].FileName = \"...\";'", id, id),
+                       {{d.defined_at, fmt::format("Coastline[{}] is defined here", id)}});
+  const Value* accuracy = option(d, "AccuracyField");
+  if (!accuracy)
+    in.fail_with_notes(at, Diag::WrongCoastlineOption,
+                       fmt::format("Coastline[{}] has no AccuracyField: set 'Coastline[{}].AccuracyField = n;' to a size "
+                                   "field giving the accuracy gamma(x) in metres",
+                                   id, id),
+                       {{d.defined_at, fmt::format("Coastline[{}] is defined here", id)}});
+
+  // The accuracy field: built now (errors located at this use), evaluated at points of
+  // the kernel's origin-centred sphere moved to the PolarSphere's centre.
+  const int field_id = static_cast<int>(accuracy->nums().front());
+  auto fit = d.option_at.find("AccuracyField");
+  const field::FieldPtr gamma_field = built_fields(in, field_id, fit->second).shared(field_id);
+  const Vec3 centre = sphere.centre();
+  std::vector<Vec3> moved;
+  coast::ImportOptions io;
+  io.gamma = [gamma_field, centre, &moved](std::span<const Vec3> pts, std::span<double> gamma) {
+    moved.resize(pts.size());
+    for (std::size_t i = 0; i < pts.size(); ++i) moved[i] = pts[i] + centre;
+    gamma_field->eval(moved, gamma);
+  };
+  io.radius = sphere.radius();
+  if (const Value* v = option(d, "Levels")) {
+    io.levels.clear();
+    for (double l : v->nums()) io.levels.push_back(static_cast<int>(l));
+  }
+  io.antarctica_level = static_cast<int>(number_option(d, "AntarcticaLevel", io.antarctica_level));
+  if (const Value* v = option(d, "Region")) {
+    const auto& r = v->nums();
+    io.region = coast::LonLatBox{r[0], r[1], r[2], r[3]};
+  }
+  io.min_area_km2 = number_option(d, "MinArea", 0);
+  io.strait_factor = number_option(d, "MinStraitsFactor", io.strait_factor);
+  io.close_straits = number_option(d, "CloseStraits", 0) != 0;
+  io.check_splines = number_option(d, "CheckSplines", 0) != 0;
+  coast::Loops2Options l2;
+  if (const Value* v = option(d, "Coordinate")) l2.coordinate = *coast::parse_loops2_coordinate(v->strs().front());
+  l2.utm_zone = static_cast<int>(number_option(d, "UTMZone", l2.utm_zone));
+  l2.utm_equatorial_radius = number_option(d, "UTMEquatorialRadius", l2.utm_equatorial_radius);
+  l2.utm_polar_radius = number_option(d, "UTMPolarRadius", l2.utm_polar_radius);
+
+  auto data = coast::read_coastline(*coast::parse_coast_format(d.format), file->strs().front(), l2);
+  if (!data) {
+    auto f = d.option_at.find("FileName");
+    try {
+      fail_coast(in, id, d, f->second, data.error(), false);
+    } catch (RuntimeError& err) {
+      err.notes.insert(err.notes.begin(), DiagNote{at, "the coastline is imported here"});
+      throw;
+    }
+  }
+  auto built = coast::build_coast_model(std::move(*data), io);
+  if (!built) fail_coast(in, id, d, at, built.error(), true);
+  const coast::CoastModel& m = *built;
+  for (const std::string& line : m.report.lines(5))
+    in.diags().report(at, Diag::CoastlineRepair, fmt::format("Coastline[{}]: {}", id, line));
+
+  // Loops surface by surface (outer first), then the holes no outer loop holds.
+  std::vector<std::uint32_t> order;
+  std::vector<bool> listed(m.loops.size(), false);
+  auto add = [&](std::uint32_t l) {
+    if (l < m.loops.size() && !listed[l]) order.push_back(l), listed[l] = true;
+  };
+  for (const coast::CoastSurface& s : m.surfaces) {
+    add(s.outer);
+    for (std::uint32_t h : s.holes) add(h);
+  }
+  for (std::uint32_t l : m.unassigned) add(l);
+  for (std::uint32_t l = 0; l < m.loops.size(); ++l) add(l);
+
+  sync_geometry_options(in);
+  const bool polyline = option(d, "CurveType") && option(d, "CurveType")->strs().front() == "Line";
+  auto imp = std::make_shared<CoastlineImport>();
+  imp->at = at;
+  std::vector<int> loop_tag(m.loops.size(), 0);
+  std::vector<int> pts;
+  for (std::uint32_t l : order) {
+    const coast::CoastLoop& loop = m.loops[l];
+    // Each piece of a loop writes all its points but the last, which is the next piece's
+    // first; a periodic curve (a whole island) writes all of its points and closes on
+    // the first. All points of the loop exist before its curves refer to them.
+    pts.clear();
+    std::vector<std::size_t> start(loop.curves.size());
+    for (std::size_t c = 0; c < loop.curves.size(); ++c) {
+      const coast::CoastCurve& cc = m.curves[loop.curves[c]];
+      start[c] = pts.size();
+      const std::size_t n = cc.periodic ? cc.uv.size() : cc.uv.size() - 1;
+      for (std::size_t i = 0; i < n; ++i) {
+        const int tag = model.new_point_tag();
+        check_geo(in, at, model.add_point_on_geometry(tag, g, cc.uv[i]));
+        record_created(k, 0, tag, at);
+        pts.push_back(tag);
+      }
+    }
+    std::vector<int> curves;
+    for (std::size_t c = 0; c < loop.curves.size(); ++c) {
+      const coast::CoastCurve& cc = m.curves[loop.curves[c]];
+      const std::size_t end = c + 1 < loop.curves.size() ? start[c + 1] : pts.size();
+      std::vector<int> cp(pts.begin() + static_cast<std::ptrdiff_t>(start[c]), pts.begin() + static_cast<std::ptrdiff_t>(end));
+      cp.push_back(cc.periodic ? pts[start[c]] : pts[end == pts.size() ? 0 : end]);
+      const geo::CurveKind kind = polyline || cp.size() == 2 ? geo::CurveKind::Line : geo::CurveKind::BSpline;
+      const int tag = model.new_curve_tag();
+      check_geo(in, at, model.add_curve(tag, kind, cp));
+      record_created(k, 1, tag, at);
+      curves.push_back(tag);
+      imp->curves.push_back(tag);
+      if (cc.open_boundary) imp->open_curves.push_back(tag);
+    }
+    const int tag = model.new_loop_tag();
+    check_geo(in, at, model.add_curve_loop(tag, curves));
+    record_created(k, kCurveLoopKey, tag, at);
+    loop_tag[l] = tag;
+    imp->loops.push_back(tag);
+    imp->loop_points.push_back(static_cast<int>(pts.size()));
+    imp->points.insert(imp->points.end(), pts.begin(), pts.end());
+  }
+  for (const coast::CoastSurface& s : m.surfaces) imp->outer.push_back(loop_tag[s.outer]);
+  invalidate_field_cache(in);
+  return imp;
+}
+
+}  // namespace
+
+void exec_coastline_stmt(Interpreter& in, StmtId id) {
+  const Stmt& s = in.ast().stmt(id);
+  std::visit(
+      [&](const auto& n) {
+        using T = std::decay_t<decltype(n)>;
+        if constexpr (std::is_same_v<T, FieldNewStmt>) {
+          exec_coast_new(in, s, n);
+        } else if constexpr (std::is_same_v<T, FieldOptionStmt>) {
+          exec_coast_option(in, s, n);
+        } else if constexpr (std::is_same_v<T, DeleteFieldStmt>) {
+          exec_delete_coast(in, n);
+        } else if constexpr (std::is_same_v<T, FieldActionStmt>) {
+          const int cid = coast_id(in, n.id);
+          require_coast(in, cid, in.ast().expr(n.id).range, "run an action of");
+          in.fail_fmt(n.action_range, Diag::UnknownCoastlineOption,
+                      fmt::format("Coastline[{}] has no action '{}': import it with 'loops[] = Coastline{{{}}};'", cid,
+                                  in.ast().str(n.action), cid));
+        }
+      },
+      s.node);
+}
+
+bool exec_native_coast_stmt(Interpreter& in, StmtId id) {
+  const Stmt& s = in.ast().stmt(id);
+  const bool coastline = std::visit(
+      [](const auto& n) {
+        if constexpr (requires { n.coastline; }) return n.coastline;
+        return false;
+      },
+      s.node);
+  if (coastline) {
+    exec_coastline_stmt(in, id);
+    return true;
+  }
+  if (const auto* p = std::get_if<PluginStmt>(&s.node); p && in.ast().str(p->plugin) == "GSHHS") {
+    exec_gshhs_plugin_stmt(in, id);
+    return true;
+  }
+  return false;
+}
+
+Value eval_coastline_query(Interpreter& in, ExprId e) {
+  const Expr& x = in.ast().expr(e);
+  const auto& q = std::get<CoastlineQueryExpr>(x.node);
+  std::vector<std::pair<int, SourceRange>> ids;
+  std::string what = "Loops";
+  for (ExprId item : q.ids) {
+    const Value v = in.eval(item);
+    const SourceRange r = in.ast().expr(item).range;
+    if (v.is_string()) {
+      what = v.strs().empty() ? std::string() : v.strs().front();
+      bool known = false;
+      std::vector<std::string> names;
+      for (std::string_view s : kSelectors) known = known || s == what, names.emplace_back(s);
+      if (!known || v.strs().size() != 1)
+        in.fail_fmt(r, Diag::UnknownCoastlineOption,
+                    fmt::format("Coastline{{}} cannot return \"{}\"{}; it returns {}", what, did_you_mean(what, names),
+                                "Loops, Curves, OpenCurves, Points, ControlPoints or Outer"));
+      continue;
+    }
+    for (double d : v.nums()) {
+      if (!std::isfinite(d) || std::abs(d) > 2147483647.0)
+        in.fail_fmt(r, Diag::WrongType, fmt::format("a coastline id must be an integer, not {}", d));
+      ids.emplace_back(static_cast<int>(d), r);
+    }
+  }
+  if (ids.empty()) in.fail_fmt(x.range, Diag::MissingCoastline, "Coastline{} needs the id of a coastline: 'Coastline{1}'");
+  std::vector<double> out;
+  for (const auto& [id, r] : ids) {
+    CoastlineDef& d = require_coast(in, id, r, "import");
+    if (!d.imported) d.imported = import_coastline(in, id, d, x.range);
+    const CoastlineImport& imp = *d.imported;
+    const std::vector<int>& list = what == "Curves"          ? imp.curves
+                                   : what == "OpenCurves"    ? imp.open_curves
+                                   : what == "Points"        ? imp.points
+                                   : what == "ControlPoints" ? imp.loop_points
+                                   : what == "Outer"         ? imp.outer
+                                                             : imp.loops;
+    out.insert(out.end(), list.begin(), list.end());
+  }
+  return Value::list(std::move(out));
+}
+
+}  // namespace sm::interp
