@@ -44,3 +44,11 @@ Field[5].PointsList = {3};
 Printf("%g", FieldValue(5, 0, 0, 0));      // expect: 2
 Translate {0, 1, 0} { Point{3}; }
 Printf("%g", FieldValue(5, 0, 0, 0));      // expect: 3
+
+// Lists take ranges and entity queries, as in Gmsh.
+Field[6] = Distance;
+Field[6].CurvesList = {Curve{:}};
+Field[6].NumPointsPerCurve = 3;            // the midpoints of Line 1 and Circle 2
+Printf("%.6g", FieldValue(6, 0.5, 0, 0));  // expect: 0
+Field[6].PointsList = {1:2};
+Printf("%g", FieldValue(6, 1, 0, 0));      // expect: 0
