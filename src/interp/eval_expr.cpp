@@ -95,6 +95,7 @@ double Interpreter::eval_number(ExprId e) {
 }
 
 std::string Interpreter::eval_string(ExprId e) {
+  if (std::string name; physical_group_name(*this, e, name)) return name;
   const Value v = eval(e);
   if (!v.is_string())
     fail_fmt(ast_.expr(e).range, Diag::WrongType, fmt::format("expected a string, found {}", kind_word(v)));
@@ -475,7 +476,13 @@ Value Interpreter::eval_call(const Expr& e, const CallExpr& c) {
   const bool list_args = fname == "List" || fname == "Unique" || fname == "Abs" || fname == "Find";
   std::vector<Value> args;
   args.reserve(c.args.size());
-  for (ExprId a : c.args) args.push_back(list_args ? eval_list_arg(a) : eval(a));
+  const bool concat = fname == "StrCat" || fname == "Str";
+  for (ExprId a : c.args) {
+    if (std::string name; concat && physical_group_name(*this, a, name))
+      args.push_back(Value::string(std::move(name)));   // `StrCat("x", Physical Curve{1})`
+    else
+      args.push_back(list_args ? eval_list_arg(a) : eval(a));
+  }
   try {
     return fn->fn(env_, args);
   } catch (const BuiltinError& err) {

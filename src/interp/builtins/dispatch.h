@@ -3,6 +3,7 @@
 // mesh_commands.cpp) owns its part, so later issues replace them file by file.
 #pragma once
 
+#include <string>
 #include <string_view>
 
 #include "interp/value.h"
@@ -45,5 +46,8 @@ void check_stmt_exprs(Interpreter& in, lang::StmtId s);
 double new_tag_constant(Interpreter& in, lang::Constant c);
 /// Entity queries, transforms, Boundary{}, Coastline{}: expressions needing the model.
 Value eval_model_expr(Interpreter& in, lang::ExprId e);
+/// Where a string is expected, Gmsh reads `Physical Curve{t}` as the group's name: true
+/// (and the name in `out`, "" for an unnamed or unknown group) when `e` is such a query.
+bool physical_group_name(Interpreter& in, lang::ExprId e, std::string& out);
 
 }  // namespace sm::interp

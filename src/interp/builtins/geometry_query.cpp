@@ -224,6 +224,14 @@ std::vector<geo::DimTag> eval_shape_expr(Interpreter& in, ExprId e) {
   in.fail_fmt(x.range, Diag::WrongType, "expected a transform, Duplicata or Boundary expression");
 }
 
+bool physical_group_name(Interpreter& in, ExprId e, std::string& out) {
+  const auto* q = std::get_if<EntityQueryExpr>(&in.ast().expr(e).node);
+  if (!q || !q->physical || q->all || q->tags.size() != 1) return false;
+  const geo::PhysicalGroup* g = in.kernel().model.physical(static_cast<int>(q->ent), eval_tag(in, q->tags[0]));
+  out = g ? g->name : "";
+  return true;
+}
+
 Value eval_model_expr(Interpreter& in, ExprId e) {
   const Expr& x = in.ast().expr(e);
   switch (x.kind()) {

@@ -41,3 +41,5 @@ Printf("%g", #a[]);  // expect: 0
 Physical Curve(20) += {2, 3};
 a[] = Physical Curve{20};
 Printf("%g %g %g", #a[], a[0], a[1]);  // expect: 2 2 3
+Printf(StrCat("names: ", Physical Curve{6}, "|", Physical Surface{7}, "|", Physical Curve{5}, "|", Physical Curve{42}));  // expect: names: top|sea||
+Printf(StrCat(Physical Curve{20}, "!"));  // expect: side!
