@@ -121,6 +121,26 @@ void add_definition_note(Interpreter& in, int id, std::vector<DiagNote>& notes) 
     notes.push_back({it->second, fmt::format("Field[{}] ({}) is defined here", id, kind_of(in, id))});
 }
 
+// A MathEx syntax error inside a plain string literal (`F = "x +* 2";`):
+// the column of the expression becomes a column of the script.
+SourceRange expression_column(Interpreter& in, const field::FieldError& e, SourceRange stmt) {
+  if (e.column < 1 || !in.kernel().fields.contains(e.field_id)) return stmt;
+  const field::Options& o = in.kernel().fields.options(e.field_id);
+  const int i = o.find(e.option);
+  if (i < 0) return stmt;
+  const auto* expr = std::get_if<std::string>(&o.value(i));
+  const std::string_view t = in.text_of(stmt);
+  const std::size_t eq = t.find('=');
+  const std::size_t quote = eq == std::string_view::npos ? eq : t.find('"', eq);
+  if (!expr || quote == std::string_view::npos || t.substr(quote + 1, expr->size()) != *expr ||
+      t.substr(quote + 1 + expr->size(), 1) != "\"")
+    return stmt;   // built by Sprintf or StrCat: no column of its own
+  SourceRange r = stmt;
+  r.begin = stmt.begin + static_cast<std::uint32_t>(quote + static_cast<std::size_t>(e.column));
+  r.end = r.begin + 1;
+  return r;
+}
+
 }  // namespace
 
 void fail_field_error(Interpreter& in, const field::FieldError& e, SourceRange at) {
@@ -154,6 +174,7 @@ void fail_field_error(Interpreter& in, const field::FieldError& e, SourceRange a
       // A bad value is best shown where it was set; the use comes as a note.
       if (const SourceRange* r = option_site(in, e.field_id, e.option)) {
         where = *r;
+        if (e.code() == field::FieldErrc::ParseError) where = expression_column(in, e, where);
       } else {
         auto it = in.kernel().field_defined_at.find(e.field_id);
         if (it != in.kernel().field_defined_at.end()) where = it->second;
