@@ -1,6 +1,7 @@
-// del2d on the unit square with uniform size h (default 0.002, ~660k
-// triangles), side by side with Gmsh 4.8.4's `-2 -algo del2d` on the same
-// geometry when gmsh is installed. Usage: bench_mesh_square [h] [--no-gmsh]
+// del2d and front2d on the unit square with uniform size h (default 0.002,
+// ~660k and ~580k triangles), side by side with Gmsh 4.8.4's `-2 -algo del2d`
+// and `-2 -algo front2d` on the same geometry when gmsh is installed.
+// Usage: bench_mesh_square [h] [--no-gmsh] [--algo del2d|front2d|all]
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -10,6 +11,7 @@
 #include <string>
 
 #include "../unit/mesh/testing_domains.h"
+#include "mesh/frontal.h"
 #include "mesh/modify/smooth.h"
 #include "mesh/quality.h"
 #include "mesh/refine.h"
@@ -26,39 +28,38 @@ double cpu_seconds() {
   return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  double h = 0.002;
-  bool run_gmsh = true;
-  for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--no-gmsh") == 0) run_gmsh = false;
-    else h = std::atof(argv[i]);
-  }
+// Meshes the square with one algorithm, smooths once (Gmsh's default
+// Mesh.Smoothing = 1) and prints the figures. False on failure.
+bool run_ours(double h, bool frontal) {
+  const char* name = frontal ? "front2d" : "del2d";
   const auto t0 = std::chrono::steady_clock::now();
   const double c0 = cpu_seconds();
   sm::TriangleStore m;
   const sm::Loop sq = sm::testing::polygon_loop(m, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, h, false);
-  if (!sm::testing::boundary_mesh(m, {sq})) return std::fprintf(stderr, "boundary mesh failed\n"), 1;
+  if (!sm::testing::boundary_mesh(m, {sq})) return std::fprintf(stderr, "boundary mesh failed\n"), false;
   const double t_boundary = since(t0);
   sm::RefineOptions opt;
   opt.size = h;
-  const auto r = sm::refine_del2d(m, opt);
+  sm::RefineResult r;
+  sm::FrontalResult fr;
+  if (frontal) fr = sm::refine_front2d(m, opt), r = fr;
+  else r = sm::refine_del2d(m, opt);
   const double t_refined = since(t0), c_refined = cpu_seconds() - c0;
+  if (!r.ok()) return std::fprintf(stderr, "%s: %s\n", name, r.error.c_str()), false;
   const auto q0 = sm::mesh_quality(m, [&](sm::Vec2) { return h; });  // not timed
   const auto t1 = std::chrono::steady_clock::now();
   const double c1 = cpu_seconds();
-  sm::smooth_laplacian(m, 1);  // Gmsh's default Mesh.Smoothing = 1
+  sm::smooth_laplacian(m, 1);
   const double t_smooth = since(t1), c_smooth = cpu_seconds() - c1;
   const double t_total = t_refined + t_smooth, c_total = c_refined + c_smooth;
-  if (!r.ok()) return std::fprintf(stderr, "refine: %s\n", r.error.c_str()), 1;
   const auto q = sm::mesh_quality(m, [&](sm::Vec2) { return h; });
-  std::printf("stereomesh del2d, unit square, h = %g\n", h);
+  std::printf("stereomesh %s, unit square, h = %g\n", name, h);
   std::printf("  %u nodes, %u triangles; boundary %.3f s, refine %.3f s, smoothing %.3f s; total %.3f s wall, %.3f s CPU\n",
               q.nodes, q.triangles, t_boundary, t_refined - t_boundary, t_smooth, t_total, c_total);
   std::printf("  CPU: boundary + refine %.3f s (%.0f triangles/s), smoothing %.3f s\n", c_refined, q.triangles / c_refined,
               c_smooth);
-  std::printf("  before smoothing: rho > 0.9: %.2f%%, min rho %.3f\n", 100 * q0.share_rho_09, q0.min_rho);
+  std::printf("  before smoothing: rho > 0.9: %.2f%%, min rho %.3f, mean %.3f\n", 100 * q0.share_rho_09, q0.min_rho,
+              q0.mean_rho);
   std::printf("  %.0f triangles/s (wall), %.0f triangles/s (CPU)\n", q.triangles / t_total, q.triangles / c_total);
   std::printf("  rho: min %.3f mean %.3f, share > 0.9: %.2f%%; edge/h median %.3f, 5-95%% [%.3f, %.3f], in [0.7,1.4] %.2f%%\n",
               q.min_rho, q.mean_rho, 100 * q.share_rho_09, q.len_median, q.len_p05, q.len_p95,
@@ -67,11 +68,15 @@ int main(int argc, char** argv) {
               static_cast<unsigned long long>(r.stats.inserted), static_cast<unsigned long long>(r.stats.rejected),
               static_cast<unsigned long long>(r.stats.pops), static_cast<unsigned long long>(r.stats.stale),
               double(r.stats.walk_steps) / double(r.stats.inserted ? r.stats.inserted : 1));
-  if (!run_gmsh) return 0;
-  if (std::system("command -v gmsh >/dev/null 2>&1") != 0) {
-    std::printf("gmsh: not installed, column skipped\n");
-    return 0;
-  }
+  if (frontal)
+    std::printf("  %llu frontal points, %llu circumcentre fallbacks, %llu given up\n",
+                static_cast<unsigned long long>(fr.frontal_points),
+                static_cast<unsigned long long>(fr.circumcentre_fallbacks),
+                static_cast<unsigned long long>(fr.given_up));
+  return true;
+}
+
+void run_gmsh(double h, const char* algo) {
   const std::string dir = "/tmp/stereomesh_bench_square";
   std::system(("mkdir -p " + dir).c_str());
   std::ofstream(dir + "/sq.geo") << "lc = " << h << ";\n"
@@ -80,9 +85,40 @@ int main(int argc, char** argv) {
                                  << "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};\n"
                                  << "Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};\n";
   const auto g0 = std::chrono::steady_clock::now();
-  const int rc = std::system(("cd " + dir + " && gmsh sq.geo -2 -algo del2d -nt 1 -o sq.msh > gmsh.log 2>&1").c_str());
+  const std::string log = dir + "/gmsh_" + algo + ".log";
+  const int rc = std::system(("cd " + dir + " && gmsh sq.geo -2 -algo " + algo + " -nt 1 -o sq_" + algo +
+                              ".msh > " + log + " 2>&1").c_str());
   const double tg = since(g0);
-  std::printf("gmsh 4.8.4 -2 -algo del2d: %.3f s wall (exit %d); its summary:\n", tg, rc);
-  std::system(("grep -E 'Done meshing 2D|nodes .* elements' " + dir + "/gmsh.log | sed 's/^/  /'").c_str());
+  std::printf("gmsh 4.8.4 -2 -algo %s: %.3f s wall (exit %d); its summary:\n", algo, tg, rc);
+  std::system(("grep -E 'Done meshing 2D|nodes .* elements' " + log + " | sed 's/^/  /'").c_str());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  double h = 0.002;
+  bool gmsh = true, del2d = true, front2d = true;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--no-gmsh") == 0) {
+      gmsh = false;
+    } else if (std::strcmp(argv[i], "--algo") == 0 && i + 1 < argc) {
+      const std::string a = argv[++i];
+      del2d = a == "del2d" || a == "all";
+      front2d = a == "front2d" || a == "all";
+      if (!del2d && !front2d) return std::fprintf(stderr, "--algo: del2d, front2d or all\n"), 2;
+    } else {
+      h = std::atof(argv[i]);
+    }
+  }
+  if (!(h > 0)) return std::fprintf(stderr, "usage: bench_mesh_square [h] [--no-gmsh] [--algo del2d|front2d|all]\n"), 2;
+  if (del2d && !run_ours(h, false)) return 1;
+  if (front2d && !run_ours(h, true)) return 1;
+  if (!gmsh) return 0;
+  if (std::system("command -v gmsh >/dev/null 2>&1") != 0) {
+    std::printf("gmsh: not installed, column skipped\n");
+    return 0;
+  }
+  if (del2d) run_gmsh(h, "del2d");
+  if (front2d) run_gmsh(h, "front2d");
   return 0;
 }

@@ -1,0 +1,244 @@
+// front2d (frontal-Delaunay, Rebay) in the plane and in the stereographic
+// plane: valid constrained Delaunay mesh, boundary kept, sizes and quality
+// within bounds, holes, graded sizes, deterministic.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+
+#include "mesh/check.h"
+#include "mesh/frontal.h"
+#include "mesh/modify/smooth.h"
+#include "mesh/quality.h"
+#include "mesh/refine.h"
+#include "testing_domains.h"
+
+using namespace sm;
+
+namespace {
+
+void check_valid(const TriangleStore& m, const std::vector<Edge>& edges) {
+  INFO(check_topology(m).error);
+  REQUIRE(check_topology(m).ok());
+  INFO(check_constraints(m, edges).error);
+  REQUIRE(check_constraints(m, edges).ok());
+  INFO(check_delaunay(m, PlanarGeometry{&m.xy}, true).error);
+  REQUIRE(check_delaunay(m, PlanarGeometry{&m.xy}, true).ok());
+}
+
+double area_of(const TriangleStore& m) {
+  double area = 0;
+  for (std::uint32_t t = 0; t < m.num_slots(); ++t)
+    if (m.alive(TriId{t})) {
+      const Vec2 a = m.pos(m.vertex(TriId{t}, 0)), b = m.pos(m.vertex(TriId{t}, 1)), c = m.pos(m.vertex(TriId{t}, 2));
+      area += 0.5 * cross(b - a, c - a);
+    }
+  return area;
+}
+
+// A closed curve x(s), s in [0, 1), cut into pieces of about the local size:
+// equal steps of the integral of |x'| / size (the 1D mesher's rule).
+template <class Curve, class Size>
+Loop graded_loop(TriangleStore& m, Curve x, Size size, bool hole) {
+  const int fine = 20000;
+  std::vector<double> acc(fine + 1, 0.0);
+  for (int i = 0; i < fine; ++i) {
+    const Vec2 a = x(double(i) / fine), b = x(double(i + 1) / fine);
+    acc[i + 1] = acc[i] + norm(b - a) / size(0.5 * (a + b));
+  }
+  const int n = std::max(3, static_cast<int>(std::lround(acc[fine])));
+  Loop l;
+  l.hole = hole;
+  for (int k = 0, i = 0; k < n; ++k) {
+    const double target = acc[fine] * k / n;
+    while (acc[i + 1] < target) ++i;
+    const double f = (target - acc[i]) / (acc[i + 1] - acc[i]);
+    l.v.push_back(m.add_vertex(x((i + f) / fine)));
+  }
+  return l;
+}
+
+}  // namespace
+
+TEST_CASE("front2d: uniform unit square") {
+  const double h = 0.02;
+  TriangleStore m;
+  const Loop sq = testing::polygon_loop(m, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, h, false);
+  std::vector<Edge> edges;
+  REQUIRE(testing::boundary_mesh(m, {sq}, &edges));
+  RefineOptions opt;
+  opt.size = h;
+  const FrontalResult r = refine_front2d(m, opt);
+  REQUIRE(r.ok());
+  check_valid(m, edges);
+  const QualityStats q = mesh_quality(m, [&](Vec2) { return h; });
+  MESSAGE("front2d square h=0.02: " << q.triangles << " triangles, min rho " << q.min_rho << ", mean " << q.mean_rho
+                                    << ", rho>0.9 " << q.share_rho_09 << ", len median " << q.len_median << " ["
+                                    << q.len_p05 << ", " << q.len_p95 << "], in [0.7,1.4] " << q.share_len_07_14
+                                    << "; frontal " << r.frontal_points << ", circumcentre " << r.circumcentre_fallbacks
+                                    << ", given up " << r.given_up);
+  CHECK(area_of(m) == doctest::Approx(1.0));
+  // Every triangle is resolved unless it was given up.
+  std::uint64_t over = 0;
+  for (std::uint32_t t = 0; t < m.num_slots(); ++t)
+    if (m.alive(TriId{t})) {
+      const Vec2 a = m.pos(m.vertex(TriId{t}, 0)), b = m.pos(m.vertex(TriId{t}, 1)), c = m.pos(m.vertex(TriId{t}, 2));
+      over += circumradius(a, b, c) > opt.radius_limit * h * (1 + 1e-9);
+    }
+  CHECK(over <= r.given_up);
+  CHECK(r.frontal_points > 0.9 * r.stats.inserted);
+  CHECK(q.share_rho_09 > 0.9);
+  CHECK(q.min_rho > 0.25);  // 0.32: where two fronts meet
+  CHECK(q.share_len_07_14 > 0.95);
+  smooth_laplacian(m, 1);
+  check_valid(m, edges);
+  const QualityStats qs = mesh_quality(m, [&](Vec2) { return h; });
+  MESSAGE("after one smoothing pass: min rho " << qs.min_rho << ", rho>0.9 " << qs.share_rho_09);
+  CHECK(qs.share_rho_09 > 0.97);
+  CHECK(qs.min_rho > 0.4);
+  // Deterministic: the same triangles again.
+  TriangleStore m2;
+  const Loop sq2 = testing::polygon_loop(m2, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, h, false);
+  REQUIRE(testing::boundary_mesh(m2, {sq2}));
+  REQUIRE(refine_front2d(m2, opt).ok());
+  smooth_laplacian(m2, 1);
+  CHECK(m2.corner == m.corner);
+  CHECK(m2.xy == m.xy);
+}
+
+TEST_CASE("front2d: square with circular holes, an embedded polyline and a graded size") {
+  const auto size = [](Vec2 p) { return 0.01 + 0.05 * std::min(1.0, std::fabs(p.y - 0.5)); };
+  TriangleStore m;
+  // Boundaries discretised at the field's size, as the 1D mesher does.
+  const auto rect = [](double s) {
+    const double u = 6 * s;  // perimeter 6: (0,0) -> (2,0) -> (2,1) -> (0,1)
+    if (u < 2) return Vec2{u, 0};
+    if (u < 3) return Vec2{2, u - 2};
+    if (u < 5) return Vec2{5 - u, 1};
+    return Vec2{0, 6 - u};
+  };
+  const auto circle = [](Vec2 c, double r) {
+    return [c, r](double s) { return Vec2{c.x + r * std::cos(2 * M_PI * s), c.y + r * std::sin(2 * M_PI * s)}; };
+  };
+  const Loop sq = graded_loop(m, rect, size, false);
+  const Loop h1 = graded_loop(m, circle({0.5, 0.5}, 0.2), size, true);
+  const Loop h2 = graded_loop(m, circle({1.4, 0.45}, 0.25), size, true);
+  // An embedded open polyline (Curve In Surface): constrained, not a loop.
+  std::vector<VertexId> line;
+  for (int k = 0; k <= 30; ++k) line.push_back(m.add_vertex({0.85 + 0.01 * k * std::cos(0.3), 0.2 + 0.01 * k * std::sin(0.3)}));
+  std::vector<Edge> edges;
+  REQUIRE(delaunay(m).ok());
+  for (const Loop* l : {&sq, &h1, &h2})
+    for (std::size_t k = 0; k < l->v.size(); ++k) edges.push_back({l->v[k], l->v[(k + 1) % l->v.size()]});
+  for (std::size_t k = 0; k + 1 < line.size(); ++k) edges.push_back({line[k], line[k + 1]});
+  const PlanarGeometry g{&m.xy};
+  REQUIRE(recover_edges(m, g, edges).clean());
+  REQUIRE(remove_outside(m, g, {sq, h1, h2}).ok());
+  RefineOptions opt;
+  std::size_t calls = 0, points = 0;
+  opt.size_at = [&](std::span<const Vec2> pts, std::span<double> h) {
+    ++calls, points += pts.size();
+    for (std::size_t i = 0; i < pts.size(); ++i) h[i] = size(pts[i]);
+  };
+  const FrontalResult r = refine_front2d(m, opt);
+  REQUIRE(r.ok());
+  check_valid(m, edges);
+  CHECK(points > 4 * calls);  // batches, not one call per point
+  const QualityStats q = mesh_quality(m, size);
+  MESSAGE("front2d holes, graded: " << q.triangles << " triangles, min rho " << q.min_rho << ", rho>0.9 "
+                                    << q.share_rho_09 << ", len median " << q.len_median << " [" << q.len_p05 << ", "
+                                    << q.len_p95 << "], in [0.7,1.4] " << q.share_len_07_14 << "; circumcentre "
+                                    << r.circumcentre_fallbacks << ", given up " << r.given_up);
+  CHECK(r.stats.inserted > 1000);
+  CHECK(q.min_rho > 0.2);
+  CHECK(q.share_rho_09 > 0.85);
+  CHECK(q.share_len_07_14 > 0.95);
+  const double holes = M_PI * (0.2 * 0.2 + 0.25 * 0.25);
+  CHECK(area_of(m) == doctest::Approx(2.0 - holes).epsilon(2e-3));  // holes are inscribed polygons
+  // No vertex inside a hole (the inscribed polygons' edges are at most 0.03 long).
+  const double sag = 0.03 * 0.03 / 8 / 0.2;
+  for (std::uint32_t v = 0; v < m.num_vertices(); ++v) {
+    CHECK(norm(m.xy[v] - Vec2{0.5, 0.5}) >= 0.2 - sag);
+    CHECK(norm(m.xy[v] - Vec2{1.4, 0.45}) >= 0.25 - sag);
+  }
+}
+
+TEST_CASE("front2d: bad sizes and limits are errors, not hangs") {
+  TriangleStore m;
+  const Loop sq = testing::polygon_loop(m, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.25, false);
+  REQUIRE(testing::boundary_mesh(m, {sq}));
+  RefineOptions opt;
+  opt.size_at = [](std::span<const Vec2> p, std::span<double> h) {
+    for (std::size_t i = 0; i < p.size(); ++i) h[i] = p[i].x > 0.5 ? 0.0 : 0.1;
+  };
+  FrontalResult r = refine_front2d(m, opt);
+  CHECK_FALSE(r.ok());
+  CHECK(r.error.find("positive") != std::string::npos);
+  CHECK(check_topology(m).ok());
+  opt.size_at = [](std::span<const Vec2>, std::span<double> h) { std::fill(h.begin(), h.end(), std::nan("")); };
+  CHECK_FALSE(refine_front2d(m, opt).ok());
+  opt.size_at = nullptr;
+  opt.size = -1;
+  CHECK_FALSE(refine_front2d(m, opt).ok());
+  opt.size = 0.001;
+  opt.max_vertices = 500;
+  r = refine_front2d(m, opt);
+  CHECK_FALSE(r.ok());
+  CHECK(r.error.find("vertex limit") != std::string::npos);
+  CHECK(m.num_vertices() == 500);
+  CHECK(check_topology(m).ok());
+}
+
+TEST_CASE("front2d: a spherical cap meshed in the stereographic plane (paper section 3.1)") {
+  // Unit sphere projected from the South Pole: u = (x, y) / (1 + z); a length
+  // on the sphere is lambda(u) = 2 / (1 + |u|^2) times the length in the
+  // plane, so the plane size is delta_u = delta / lambda (conformal map).
+  const double delta = 0.04;
+  const double rho_cap = std::tan(M_PI / 6);  // cap of angular radius 60 degrees round the North Pole
+  TriangleStore m;
+  const int n = static_cast<int>(std::ceil(2 * M_PI * std::sin(M_PI / 3) / delta));
+  Loop cap;
+  for (int k = 0; k < n; ++k)
+    cap.v.push_back(m.add_vertex({rho_cap * std::cos(2 * M_PI * k / n), rho_cap * std::sin(2 * M_PI * k / n)}));
+  std::vector<Edge> edges;
+  REQUIRE(testing::boundary_mesh(m, {cap}, &edges));
+  const auto lambda = [](Vec2 u) { return 2 / (1 + norm2(u)); };
+  RefineOptions opt;
+  opt.size_at = [&](std::span<const Vec2> pts, std::span<double> h) {
+    for (std::size_t i = 0; i < pts.size(); ++i) h[i] = delta / lambda(pts[i]);
+  };
+  REQUIRE(refine_front2d(m, opt).ok());
+  check_valid(m, edges);
+  const auto on_sphere = [](Vec2 u) {
+    const double r2 = norm2(u);
+    return Vec3{2 * u.x / (1 + r2), 2 * u.y / (1 + r2), (1 - r2) / (1 + r2)};
+  };
+  // Edge lengths as great-circle arcs; quality of the triangles on the sphere
+  // (rho of the flat triangle through the three points on the sphere).
+  std::size_t in = 0, total = 0, good = 0;
+  for (std::uint32_t s = 0; s < m.corner.size(); ++s) {
+    if (!m.alive(tri_of(Side{s}))) continue;
+    const Side o = m.twin[s];
+    if (o.valid() && o.value < s) continue;
+    const Vec3 a = on_sphere(m.pos(m.org(Side{s}))), b = on_sphere(m.pos(m.dest(Side{s})));
+    const double arc = std::atan2(norm(cross(a, b)), dot(a, b));
+    in += arc >= 0.7 * delta && arc <= 1.4 * delta;
+    ++total;
+  }
+  for (std::uint32_t t = 0; t < m.num_slots(); ++t) {
+    if (!m.alive(TriId{t})) continue;
+    const Vec3 a = on_sphere(m.pos(m.vertex(TriId{t}, 0))), b = on_sphere(m.pos(m.vertex(TriId{t}, 1))),
+               c = on_sphere(m.pos(m.vertex(TriId{t}, 2)));
+    const double la = norm(b - c), lb = norm(c - a), lc = norm(a - b), area = 0.5 * norm(cross(b - a, c - a));
+    good += 16 * area * area / ((la + lb + lc) * la * lb * lc) > 0.9;
+  }
+  MESSAGE("front2d cap: " << m.num_triangles() << " triangles, " << 100.0 * in / total
+                          << "% of edges within [0.7, 1.4] delta on the sphere, " << 100.0 * good / m.num_triangles()
+                          << "% rho > 0.9 on the sphere");
+  CHECK(double(in) / total > 0.95);
+  CHECK(double(good) / m.num_triangles() > 0.9);
+  const double expected = M_PI / (std::sqrt(3.0) / 4 * delta * delta);
+  CHECK(m.num_triangles() > 0.9 * expected);
+  CHECK(m.num_triangles() < 1.3 * expected);
+}
