@@ -43,21 +43,30 @@ Diag diag_of(field::FieldErrc c) {
   return Diag::BadFieldValue;
 }
 
-// FNV-1a over what field builds read from the model: point positions and the
+// A hash of what field builds read from the model: point positions and the
 // definition of every curve (kind, control points, surface geometry). Any
 // geometry statement or transform that moves or adds an entity changes it.
+// One multiply-xorshift step per 64-bit word keeps a FieldValue call on a
+// million-point coastline model at a few milliseconds.
 class Hasher {
  public:
-  template <class T>
-  void add(const T& v) {
-    unsigned char b[sizeof(T)];
-    std::memcpy(b, &v, sizeof(T));
-    for (unsigned char c : b) h_ = (h_ ^ c) * 1099511628211ull;
+  void add(double v) {
+    std::uint64_t w;
+    std::memcpy(&w, &v, sizeof w);
+    mix(w);
   }
+  void add(std::int64_t v) { mix(static_cast<std::uint64_t>(v)); }
+  void add(int v) { mix(static_cast<std::uint64_t>(static_cast<std::int64_t>(v))); }
+  void add(std::size_t v) { mix(static_cast<std::uint64_t>(v)); }
+  void add(bool v) { mix(v ? 1 : 0); }
   std::uint64_t value() const { return h_; }
 
  private:
-  std::uint64_t h_ = 1469598103934665603ull;
+  void mix(std::uint64_t w) {
+    h_ = (h_ ^ w) * 0x9E3779B97F4A7C15ull;
+    h_ ^= h_ >> 29;
+  }
+  std::uint64_t h_ = 0x243F6A8885A308D3ull;
 };
 
 std::uint64_t model_hash(const geo::Model& m) {
