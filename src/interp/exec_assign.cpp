@@ -340,9 +340,15 @@ void Interpreter::exec_delete(const Stmt& s, const DeleteStmt& d) {
     }
     case DeleteWhat::Variables: symbols_.clear(); return;
     case DeleteWhat::Options: options_.reset(); return;
+    case DeleteWhat::Model:
+    case DeleteWhat::All:
+      // Gmsh 4.8.4 destroys the geometry with its tags and the fields: newp, newreg and newf
+      // start again at 1.
+      kernel_ = KernelState{};
+      return;
     default: break;
   }
-  // Model, Physicals, Meshes, All: the model arrives with the geometry issue.
+  // Physicals (the kernel cannot drop groups yet) and Meshes.
   std::string what = "Delete";
   switch (d.what) {
     case DeleteWhat::Model: what = "Delete Model"; break;
