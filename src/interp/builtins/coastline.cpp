@@ -24,6 +24,7 @@ struct CoastlineImport {
   std::vector<int> loops;            // surface by surface, outer loop first; then unassigned holes
   std::vector<int> loop_points;      // control points of each loop
   std::vector<int> outer;            // the outer loop of each surface
+  std::vector<int> loops_per_surface;   // outer + holes of each surface, as in `loops`
   std::vector<int> curves, open_curves, points;
   lang::SourceRange at;              // the query that imported
 };
@@ -60,7 +61,8 @@ constexpr CoastOption kOptions[] = {
 };
 
 // What `Coastline{n, "What"}` returns.
-constexpr std::string_view kSelectors[] = {"Loops", "Curves", "OpenCurves", "Points", "ControlPoints", "Outer"};
+constexpr std::string_view kSelectors[] = {"Loops",         "Curves", "OpenCurves",     "Points",
+                                           "ControlPoints", "Outer",  "LoopsPerSurface"};
 
 const CoastOption* find_option(std::string_view name) {
   for (const CoastOption& o : kOptions)
@@ -364,7 +366,10 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
     imp->loop_points.push_back(static_cast<int>(pts.size()));
     imp->points.insert(imp->points.end(), pts.begin(), pts.end());
   }
-  for (const coast::CoastSurface& s : m.surfaces) imp->outer.push_back(loop_tag[s.outer]);
+  for (const coast::CoastSurface& s : m.surfaces) {
+    imp->outer.push_back(loop_tag[s.outer]);
+    imp->loops_per_surface.push_back(static_cast<int>(1 + s.holes.size()));
+  }
   invalidate_field_cache(in);
   return imp;
 }
@@ -428,7 +433,7 @@ Value eval_coastline_query(Interpreter& in, ExprId e) {
       if (!known || v.strs().size() != 1)
         in.fail_fmt(r, Diag::UnknownCoastlineOption,
                     fmt::format("Coastline{{}} cannot return \"{}\"{}; it returns {}", what, did_you_mean(what, names),
-                                "Loops, Curves, OpenCurves, Points, ControlPoints or Outer"));
+                                "Loops, Curves, OpenCurves, Points, ControlPoints, Outer or LoopsPerSurface"));
       continue;
     }
     for (double d : v.nums()) {
@@ -448,6 +453,7 @@ Value eval_coastline_query(Interpreter& in, ExprId e) {
                                    : what == "Points"        ? imp.points
                                    : what == "ControlPoints" ? imp.loop_points
                                    : what == "Outer"         ? imp.outer
+                                   : what == "LoopsPerSurface" ? imp.loops_per_surface
                                                              : imp.loops;
     out.insert(out.end(), list.begin(), list.end());
   }
