@@ -7,11 +7,10 @@
 
 namespace sm::interp {
 
-std::vector<Vec3> distance_curve_samples(const geo::Curve& c, int n) {
-  std::vector<Vec3> out;
-  if (n < 3) return out;
-  out.reserve(static_cast<std::size_t>(n - 2));
-  for (int i = 1; i < n - 1; ++i) out.push_back(c.point(static_cast<double>(i) / (n - 1)));
+std::vector<Vec3> distance_curve_samples(const geo::Curve& c, int n, std::span<const Vec3> mesh_nodes) {
+  std::vector<Vec3> out(mesh_nodes.begin(), mesh_nodes.end());
+  const long k = static_cast<long>(n) - static_cast<long>(mesh_nodes.size());
+  for (long i = 1; i < k - 1; ++i) out.push_back(c.point(static_cast<double>(i) / static_cast<double>(k - 1)));
   return out;
 }
 
@@ -20,7 +19,8 @@ double model_bbox_diag(const geo::Model& model) {
   return d > 0 ? d : 1.0;
 }
 
-field::BuildContext make_build_context(const geo::Model& model, std::filesystem::path base_dir) {
+field::BuildContext make_build_context(const geo::Model& model, std::filesystem::path base_dir,
+                                       const CurveMeshNodes* mesh_nodes) {
   field::BuildContext ctx;
   ctx.bbox_diag = model_bbox_diag(model);
   ctx.base_dir = std::move(base_dir);
@@ -31,10 +31,15 @@ field::BuildContext make_build_context(const geo::Model& model, std::filesystem:
     return v->xyz;
   };
   // A negative tag names the reversed curve: the same samples (Gmsh's FindCurve(-tag)).
-  ctx.curve_samples = [m](int tag, int n) -> std::optional<std::vector<Vec3>> {
+  ctx.curve_samples = [m, mesh_nodes](int tag, int n) -> std::optional<std::vector<Vec3>> {
     const geo::ModelCurve* c = m->curve(std::abs(tag));
     if (!c || !c->shape) return std::nullopt;
-    return distance_curve_samples(*c->shape, n);
+    std::span<const Vec3> nodes;
+    if (mesh_nodes) {
+      auto it = mesh_nodes->find(std::abs(tag));
+      if (it != mesh_nodes->end()) nodes = it->second;
+    }
+    return distance_curve_samples(*c->shape, n, nodes);
   };
   // Surface point clouds need a surface parametrisation the model does not
   // expose yet (Gmsh >= 4.9 samples only OCC and discrete surfaces anyway):

@@ -222,7 +222,7 @@ const field::BuiltFields& built_fields(Interpreter& in, int root, SourceRange us
   }
 }
 
-field::FieldPtr background_size_field(Interpreter& in) {
+field::FieldPtr background_size_field(Interpreter& in, const CurveMeshNodes* mesh_nodes) {
   KernelState& k = in.kernel();
   if (!k.background_field || *k.background_field <= 0) return nullptr;
   const int id = *k.background_field;
@@ -237,7 +237,12 @@ field::FieldPtr background_size_field(Interpreter& in) {
       throw;
     }
   }
-  return built_fields(in, id, k.background_field_at).shared(id);
+  if (!mesh_nodes) return built_fields(in, id, k.background_field_at).shared(id);
+  try {
+    return k.fields.build(id, make_build_context(k.model, {}, mesh_nodes)).shared(id);
+  } catch (const field::FieldError& e) {
+    fail_field_error(in, e, k.background_field_at);
+  }
 }
 
 namespace {

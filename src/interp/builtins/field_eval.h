@@ -4,6 +4,7 @@
 #pragma once
 
 #include "field/error.h"
+#include "interp/builtins/field_context.h"
 #include "field/field_set.h"
 #include "lang/source.h"
 
@@ -26,7 +27,9 @@ void invalidate_field_cache(Interpreter& in);
 
 /// The size field of `Background Field = n;` for the mesher, or nullptr when
 /// there is none (no statement, or n <= 0 as in Gmsh). A missing field or a
-/// cycle is an error located at the Background Field statement.
-field::FieldPtr background_size_field(Interpreter& in);
+/// cycle is an error located at the Background Field statement. With
+/// `mesh_nodes` (the 1D mesh, for 2D meshing) Distance samples meshed curves
+/// as Gmsh does; that build is not cached.
+field::FieldPtr background_size_field(Interpreter& in, const CurveMeshNodes* mesh_nodes = nullptr);
 
 }  // namespace sm::interp

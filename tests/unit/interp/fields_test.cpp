@@ -35,6 +35,18 @@ TEST_CASE("fields: Gmsh's curve samples, point positions and bbox from the model
   CHECK(ctx.curve_samples(1, 2)->empty());
   CHECK_FALSE(ctx.curve_samples(7, 6).has_value());
   CHECK_FALSE(ctx.surface_samples);   // Distance reports SurfacesList as not sampleable
+
+  // A meshed curve (2D meshing): its m interior nodes, then K - 2 uniform
+  // points with K = N - m (Gmsh 4.8.4's Distance).
+  const CurveMeshNodes nodes = {{1, {Vec3{0.3, 0.4, 0}, Vec3{1.5, 2, 0}, Vec3{2.7, 3.6, 0}}}};
+  const field::BuildContext meshed = make_build_context(m, {}, &nodes);
+  const auto t = meshed.curve_samples(-1, 10);   // K = 7: t = 1/6 .. 5/6
+  REQUIRE(t.has_value());
+  REQUIRE(t->size() == 8);
+  CHECK((*t)[0].x == 0.3);
+  CHECK((*t)[3].x == doctest::Approx(3.0 / 6));
+  CHECK((*t)[7].y == doctest::Approx(4.0 * 5 / 6));
+  CHECK(meshed.curve_samples(1, 4)->size() == 3);   // K = 1: the nodes only
 }
 
 TEST_CASE("fields: Mesh.MeshSize* and CharacteristicLength* reach SizePolicyOptions") {
