@@ -219,8 +219,11 @@ double number_option(const CoastlineDef& d, std::string_view name, double fallba
                              bool file_error) {
   std::vector<DiagNote> notes;
   if (file_error) {
-    auto it = d.option_at.find("FileName");
-    if (it != d.option_at.end()) notes.push_back({it->second, fmt::format("Coastline[{}].FileName is set here", id)});
+    // Records of the file, or a bad gamma(x) value at a place of it.
+    for (std::string_view o : {"FileName", "AccuracyField"}) {
+      auto it = d.option_at.find(o);
+      if (it != d.option_at.end()) notes.push_back({it->second, fmt::format("Coastline[{}].{} is set here", id, o)});
+    }
   }
   notes.push_back({d.defined_at, fmt::format("Coastline[{}] ({}) is defined here", id, d.format)});
   in.fail_with_notes(at, Diag::CoastlineError, fmt::format("Coastline[{}]: {}", id, e.to_string()), std::move(notes));
