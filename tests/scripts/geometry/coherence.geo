@@ -17,3 +17,12 @@ Coherence;
 a[] = Point{:};
 c[] = Curve{:};
 Printf("%g %g", #a[], #c[]);  // expect: 3 2
+Point(6) = {0.5, 0.5, 0.001};
+Point(7) = {0.5, 0.5, 0};
+Coherence;
+a[] = Point{:};
+Printf("%g", #a[]);  // expect: 5
+Geometry.Tolerance = 1e-3;
+Coherence;
+a[] = Point{:};
+Printf("%g %g", #a[], a[#a[] - 1]);  // expect: 4 6
