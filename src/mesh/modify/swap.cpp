@@ -1,0 +1,55 @@
+// Quality swaps on the flat store, with an explicit stack of sides.
+#include "mesh/modify/swap.h"
+
+#include <algorithm>
+#include <vector>
+
+#include "mesh/quality.h"
+
+namespace sm {
+
+double swap_gain(const TriangleStore& m, Side s, PredicateStats* st) {
+  const Side o = m.twin[s.value];
+  if (!o.valid() || m.constrained(s)) return -1;
+  const VertexId a = m.org(s), b = m.dest(s), c = m.apex(s), d = m.apex(o);
+  const Vec2 pa = m.pos(a), pb = m.pos(b), pc = m.pos(c), pd = m.pos(d);
+  const double before = std::min(rho(pa, pb, pc), rho(pb, pa, pd));
+  const double after = std::min(rho(pc, pa, pd), rho(pd, pb, pc));
+  if (after <= before) return after - before;
+  // Only now the exact test: the new triangles (c, a, d) and (d, b, c).
+  if (orient2d(pc, pa, pd, st) != Sign::Positive || orient2d(pd, pb, pc, st) != Sign::Positive) return -1;
+  return after - before;
+}
+
+SwapStats swap_for_quality(TriangleStore& m, double min_gain, std::uint64_t max_swaps, PredicateStats* st) {
+  SwapStats out;
+  std::vector<Side> stack;
+  std::vector<std::uint8_t> queued(m.corner.size(), 0);
+  for (std::uint32_t s = m.corner.size(); s-- > 0;) {
+    const Side o = m.twin[s];
+    if (m.alive(tri_of(Side{s})) && o.valid() && s < o.value && !m.constrained(Side{s})) {
+      stack.push_back(Side{s});
+      queued[s] = 1;
+    }
+  }
+  while (!stack.empty() && out.swaps < max_swaps) {
+    const Side s = stack.back();
+    stack.pop_back();
+    queued[s.value] = 0;
+    ++out.tested;
+    const double g = swap_gain(m, s, st);
+    if (!(g > min_gain)) continue;
+    const Side n = m.flip(s);
+    ++out.swaps;
+    const Side outer[4] = {next(n), prev(n), next(m.twin[n.value]), prev(m.twin[n.value])};
+    for (Side x : outer) {
+      const Side y = m.twin[x.value];
+      if (!y.valid() || m.constrained(x)) continue;
+      const Side key = x.value < y.value ? x : y;
+      if (!queued[key.value]) queued[key.value] = 1, stack.push_back(key);
+    }
+  }
+  return out;
+}
+
+}  // namespace sm
