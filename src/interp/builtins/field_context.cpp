@@ -2,10 +2,20 @@
 // the finite-difference kinds need, computed from geo::Model at build time.
 #include "interp/builtins/field_context.h"
 
+#include <algorithm>
 #include <cstdlib>
+#include <memory>
 #include <optional>
 
+#include <fmt/format.h>
+
+#include "field/error.h"
+
 namespace sm::interp {
+
+namespace {
+constexpr std::size_t kMaxCurveSamples = 50'000'000;
+}  // namespace
 
 std::vector<Vec3> distance_curve_samples(const geo::Curve& c, int n, std::span<const Vec3> mesh_nodes) {
   std::vector<Vec3> out(mesh_nodes.begin(), mesh_nodes.end());
@@ -31,9 +41,20 @@ field::BuildContext make_build_context(const geo::Model& model, std::filesystem:
     return v->xyz;
   };
   // A negative tag names the reversed curve: the same samples (Gmsh's FindCurve(-tag)).
-  ctx.curve_samples = [m, mesh_nodes](int tag, int n) -> std::optional<std::vector<Vec3>> {
+  // A hostile NumPointsPerCurve must not exhaust memory: the samples of one
+  // build stay below kMaxCurveSamples (1.2 GB), well above real coastlines.
+  auto total = std::make_shared<std::size_t>(0);
+  ctx.curve_samples = [m, mesh_nodes, total](int tag, int n) -> std::optional<std::vector<Vec3>> {
     const geo::ModelCurve* c = m->curve(std::abs(tag));
     if (!c || !c->shape) return std::nullopt;
+    *total += static_cast<std::size_t>(std::max(n, 0));
+    if (*total > kMaxCurveSamples) {
+      field::FieldError e(field::FieldErrc::BadValue,
+                          fmt::format("NumPointsPerCurve: more than {} curve samples in one build",
+                                      kMaxCurveSamples));
+      e.option = "NumPointsPerCurve";
+      throw e;
+    }
     std::span<const Vec3> nodes;
     if (mesh_nodes) {
       auto it = mesh_nodes->find(std::abs(tag));
