@@ -47,7 +47,8 @@ void set_plugin_option(Interpreter& in, const PluginStmt& p, const std::string& 
     const std::string best = field::closest_name(name, names);
     in.fail_fmt(p.member_range, Diag::UnknownPluginOption,
                 fmt::format("Plugin(GSHHS) has no option '{}'{}", name,
-                            best.empty() ? std::string(" (its action is 'Run')") : fmt::format(" (did you mean '{}'?)", best)));
+                            best.empty() ? fmt::format(" (its options: {}; its action: Run)", fmt::join(names, ", "))
+                                         : fmt::format(" (did you mean '{}'?)", best)));
   }
   const Value v = in.eval(p.value);
   const SourceRange at = in.ast().expr(p.value).range;
