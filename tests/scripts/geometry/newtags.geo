@@ -29,3 +29,10 @@ Point(newp) = {2, 2, 0};
 Printf("%g", newp);  // expect: 102
 Line(newl) = {101, 3};
 Printf("%g %g", newl, newreg);  // expect: 14 14
+SetMaxTag Curve(50);
+Printf("%g %g %g", newl, newreg, newp);  // expect: 51 51 102
+SetMaxTag Surface(60);
+Printf("%g %g", news, newreg);  // expect: 61 61
+Geometry.OldNewReg = 0;
+Printf("%g %g %g", newl, news, newll);  // expect: 51 61 11
+Geometry.OldNewReg = 1;
