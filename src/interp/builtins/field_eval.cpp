@@ -7,7 +7,6 @@
 #include <cstdint>
 #include <cstring>
 #include <map>
-#include <set>
 
 #include <fmt/format.h>
 
@@ -253,7 +252,7 @@ struct FieldCallArgs {
   std::optional<field::EntityRef> on;
 };
 
-FieldCallArgs field_call_args(Interpreter& in, const Expr& e, const CallExpr& c, std::string_view fname) {
+FieldCallArgs field_call_args(Interpreter& in, const CallExpr& c, std::string_view fname) {
   if (c.args.size() != 4 && c.args.size() != 6)
     in.fail_fmt(c.func_range, Diag::WrongArgumentCount, fname, "4 or 6", "s", c.args.size());
   double v[6] = {0, 0, 0, 0, 0, 0};
@@ -279,7 +278,6 @@ FieldCallArgs field_call_args(Interpreter& in, const Expr& e, const CallExpr& c,
                   fmt::format("the entity dimension must be 0 to 3, not {}", dim));
     out.on = field::EntityRef{dim, as_int(5)};
   }
-  (void)e;
   return out;
 }
 
@@ -289,7 +287,7 @@ bool eval_field_call(Interpreter& in, const Expr& e, const CallExpr& c, Value& o
   const std::string_view fname = in.ast().str(c.func);
   const bool value = fname == "FieldValue";
   if (!value && fname != "FieldArgmin") return false;
-  const FieldCallArgs a = field_call_args(in, e, c, fname);
+  const FieldCallArgs a = field_call_args(in, c, fname);
   const field::BuiltFields& built = built_fields(in, a.id, e.range);
   const field::SizeField& f = *built.get(a.id);
   double h = 0;

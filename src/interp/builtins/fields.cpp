@@ -65,8 +65,8 @@ void exec_field_new(Interpreter& in, const Stmt& s, const FieldNewStmt& n) {
 // The script value as the option's type wants it. A bare number where a list
 // is expected is ignored by Gmsh 4.8.4 without a word: we warn and ignore it
 // too, so that a script means the same in both. Returns false to skip the set.
-bool option_value(Interpreter& in, const Stmt& s, const FieldOptionStmt& n, int id,
-                  const field::OptionSpec* spec, field::OptionValue& out) {
+bool option_value(Interpreter& in, const FieldOptionStmt& n, int id, const field::OptionSpec* spec,
+                  field::OptionValue& out) {
   const Value v = in.eval(n.value);
   const SourceRange value_at = in.ast().expr(n.value).range;
   if (v.is_string()) {
@@ -88,7 +88,6 @@ bool option_value(Interpreter& in, const Stmt& s, const FieldOptionStmt& n, int 
                                   "ignored, as Gmsh 4.8.4 does; write {{{}}}",
                                   in.ast().str(n.option), id,
                                   in.kernel().fields.options(id).kind().name, in.text_of(value_at)));
-    (void)s;
     return false;
   }
   // Ids and tags become ints in the kernel: they must fit one.
@@ -132,7 +131,7 @@ void exec_field_option(Interpreter& in, const Stmt& s, const FieldOptionStmt& n)
                         best.empty() ? std::string() : fmt::format(" (did you mean '{}'?)", best)));
   }
   field::OptionValue value;
-  if (!option_value(in, s, n, id, spec, value)) return;
+  if (!option_value(in, n, id, spec, value)) return;
   try {
     k.fields.set(id, option, std::move(value));
   } catch (const field::FieldError& e) {
