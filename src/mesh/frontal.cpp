@@ -32,6 +32,9 @@ class Frontal {
   /// whose neighbour is resolved (first in side order); kNone if t is not
   /// on the front.
   Side front_side(std::uint32_t t) const;
+  bool on_front(Side s) const;
+  /// Rebay's point for front side s (see frontal.h).
+  Vec2 frontal_point(Side s) const;
   void push(std::uint32_t t);
   /// Queues the unresolved neighbours of resolved t that are not queued.
   void wake_neighbours(std::uint32_t t);
@@ -56,13 +59,30 @@ class Frontal {
   std::vector<double> h_;
 };
 
+bool Frontal::on_front(Side s) const {
+  const Side o = m_.twin[s.value];
+  return !o.valid() || m_.constrained(s) || resolved(o.value / 3);
+}
+
 Side Frontal::front_side(std::uint32_t t) const {
-  for (std::uint32_t e = 0; e < 3; ++e) {
-    const Side s{3 * t + e};
-    const Side o = m_.twin[s.value];
-    if (!o.valid() || m_.constrained(s) || resolved(o.value / 3)) return s;
-  }
+  for (std::uint32_t e = 0; e < 3; ++e)
+    if (on_front(Side{3 * t + e})) return Side{3 * t + e};
   return Side{};
+}
+
+Vec2 Frontal::frontal_point(Side s) const {
+  const VertexId ia = m_.org(s), ib = m_.dest(s);
+  const Vec2 a = m_.pos(ia), b = m_.pos(ib);
+  const Vec2 cc = circumcentre(a, b, m_.pos(m_.apex(s)));
+  const Vec2 mid = 0.5 * (a + b), e = b - a;
+  const double len = norm(e), p = 0.5 * len;
+  const Vec2 n = (1 / len) * Vec2{-e.y, e.x};  // towards the apex: the triangle is counter-clockwise
+  const double q = dot(cc - mid, n);
+  // The circumradius of an equilateral triangle of side h is h / sqrt 3.
+  double rho_m = std::max(0.5 * (vsize_[ia.value] + vsize_[ib.value]) / std::sqrt(3.0), p);
+  if (q > 0) rho_m = std::min(rho_m, (p * p + q * q) / (2 * q));
+  const double d = rho_m + std::sqrt(std::max(0.0, rho_m * rho_m - p * p));
+  return mid + d * n;
 }
 
 void Frontal::push(std::uint32_t t) {
@@ -150,7 +170,6 @@ void Frontal::run() {
   // on the front; the others join it as their neighbours get resolved.
   for (const std::uint32_t t : live)
     if (!resolved(t) && front_side(t).valid()) push(t);
-  const double inv_sqrt3 = 1 / std::sqrt(3.0);
   while (!heap_.empty()) {
     std::pop_heap(heap_.begin(), heap_.end());
     const Entry top = heap_.back();
@@ -171,26 +190,24 @@ void Frontal::run() {
       res_.error = "refinement stopped at the vertex limit";
       return;
     }
-    const VertexId ia = m_.org(s), ib = m_.dest(s), ic = m_.apex(s);
-    const Vec2 a = m_.pos(ia), b = m_.pos(ib), c = m_.pos(ic);
-    const Vec2 cc = circumcentre(a, b, c);
-    const Vec2 mid = 0.5 * (a + b), e = b - a;
-    const double len = norm(e), p = 0.5 * len;
-    const Vec2 n = (1 / len) * Vec2{-e.y, e.x};  // towards c: the triangle is counter-clockwise
-    const double q = dot(cc - mid, n);
-    double rho_m = std::max(0.5 * (vsize_[ia.value] + vsize_[ib.value]) * inv_sqrt3, p);
-    if (q > 0) rho_m = std::min(rho_m, (p * p + q * q) / (2 * q));
-    const double d = rho_m + std::sqrt(std::max(0.0, rho_m * rho_m - p * p));
-    const Vec2 x = mid + d * n;
     InsertOutcome out = InsertOutcome::Outside;
-    // The point must be in t's circumcircle, or t would survive the
-    // insertion and come back forever.
-    if (incircle(a, b, c, x, &res_.stats.predicates) == Sign::Positive) {
+    // Rebay's point on each front side in turn (a side beside a constraint
+    // may put it beyond another one in a narrow passage).
+    for (std::uint32_t k = 0; k < 3 && out != InsertOutcome::Inserted; ++k) {
+      const Side fs{3 * t + (s.value - 3 * t + k) % 3};
+      if (k > 0 && !on_front(fs)) continue;
+      const Vec2 x = frontal_point(fs);
+      // The point must be in t's circumcircle, or t would survive the
+      // insertion and come back forever.
+      if (incircle(m_.pos(m_.org(fs)), m_.pos(m_.dest(fs)), m_.pos(m_.apex(fs)), x, &res_.stats.predicates) !=
+          Sign::Positive)
+        continue;
       out = ins_.insert_near(x, TriId{t});
       if (out == InsertOutcome::Inserted) ++res_.frontal_points;
     }
     if (out != InsertOutcome::Inserted) {
-      out = ins_.insert_near(cc, TriId{t});
+      const TriId tt{t};
+      out = ins_.insert_near(circumcentre(m_.pos(m_.vertex(tt, 0)), m_.pos(m_.vertex(tt, 1)), m_.pos(m_.vertex(tt, 2))), tt);
       if (out == InsertOutcome::Inserted) ++res_.circumcentre_fallbacks;
     }
     if (out != InsertOutcome::Inserted) {

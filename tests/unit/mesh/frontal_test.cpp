@@ -12,6 +12,7 @@
 #include "mesh/modify/smooth.h"
 #include "mesh/quality.h"
 #include "mesh/refine.h"
+#include "testing_coast.h"
 #include "testing_domains.h"
 
 using namespace sm;
@@ -19,12 +20,12 @@ using namespace sm;
 namespace {
 
 void check_valid(const TriangleStore& m, const std::vector<Edge>& edges) {
-  INFO(check_topology(m).error);
-  REQUIRE(check_topology(m).ok());
-  INFO(check_constraints(m, edges).error);
-  REQUIRE(check_constraints(m, edges).ok());
-  INFO(check_delaunay(m, PlanarGeometry{&m.xy}, true).error);
-  REQUIRE(check_delaunay(m, PlanarGeometry{&m.xy}, true).ok());
+  const CheckResult topo = check_topology(m), cons = check_constraints(m, edges),
+                    del = check_delaunay(m, PlanarGeometry{&m.xy}, true);
+  INFO(topo.error, cons.error, del.error);
+  REQUIRE(topo.ok());
+  REQUIRE(cons.ok());
+  REQUIRE(del.ok());
 }
 
 double area_of(const TriangleStore& m) {
@@ -35,6 +36,42 @@ double area_of(const TriangleStore& m) {
       area += 0.5 * cross(b - a, c - a);
     }
   return area;
+}
+
+Vec3 on_sphere(Vec2 u) {  // inverse stereographic map from the South Pole, unit sphere
+  const double r2 = norm2(u);
+  return Vec3{2 * u.x / (1 + r2), 2 * u.y / (1 + r2), (1 - r2) / (1 + r2)};
+}
+
+struct SphereStats {
+  double in_07_14 = 0;  // share of edges whose great-circle arc is in [0.7, 1.4] delta
+  double rho_09 = 0;    // share of triangles (chords on the sphere) with rho > 0.9
+  double area = 0;      // sum of the chord triangles' areas
+};
+
+SphereStats sphere_stats(const TriangleStore& m, double delta) {
+  SphereStats st;
+  std::size_t in = 0, total = 0, good = 0;
+  for (std::uint32_t s = 0; s < m.corner.size(); ++s) {
+    if (!m.alive(tri_of(Side{s}))) continue;
+    const Side o = m.twin[s];
+    if (o.valid() && o.value < s) continue;
+    const Vec3 a = on_sphere(m.pos(m.org(Side{s}))), b = on_sphere(m.pos(m.dest(Side{s})));
+    const double arc = std::atan2(norm(cross(a, b)), dot(a, b));
+    in += arc >= 0.7 * delta && arc <= 1.4 * delta;
+    ++total;
+  }
+  for (std::uint32_t t = 0; t < m.num_slots(); ++t) {
+    if (!m.alive(TriId{t})) continue;
+    const Vec3 a = on_sphere(m.pos(m.vertex(TriId{t}, 0))), b = on_sphere(m.pos(m.vertex(TriId{t}, 1))),
+               c = on_sphere(m.pos(m.vertex(TriId{t}, 2)));
+    const double la = norm(b - c), lb = norm(c - a), lc = norm(a - b), ar = 0.5 * norm(cross(b - a, c - a));
+    good += 16 * ar * ar / ((la + lb + lc) * la * lb * lc) > 0.9;
+    st.area += ar;
+  }
+  st.in_07_14 = double(in) / double(total);
+  st.rho_09 = double(good) / m.num_triangles();
+  return st;
 }
 
 // A closed curve x(s), s in [0, 1), cut into pieces of about the local size:
@@ -210,35 +247,75 @@ TEST_CASE("front2d: a spherical cap meshed in the stereographic plane (paper sec
   };
   REQUIRE(refine_front2d(m, opt).ok());
   check_valid(m, edges);
-  const auto on_sphere = [](Vec2 u) {
-    const double r2 = norm2(u);
-    return Vec3{2 * u.x / (1 + r2), 2 * u.y / (1 + r2), (1 - r2) / (1 + r2)};
-  };
-  // Edge lengths as great-circle arcs; quality of the triangles on the sphere
-  // (rho of the flat triangle through the three points on the sphere).
-  std::size_t in = 0, total = 0, good = 0;
-  for (std::uint32_t s = 0; s < m.corner.size(); ++s) {
-    if (!m.alive(tri_of(Side{s}))) continue;
-    const Side o = m.twin[s];
-    if (o.valid() && o.value < s) continue;
-    const Vec3 a = on_sphere(m.pos(m.org(Side{s}))), b = on_sphere(m.pos(m.dest(Side{s})));
-    const double arc = std::atan2(norm(cross(a, b)), dot(a, b));
-    in += arc >= 0.7 * delta && arc <= 1.4 * delta;
-    ++total;
-  }
-  for (std::uint32_t t = 0; t < m.num_slots(); ++t) {
-    if (!m.alive(TriId{t})) continue;
-    const Vec3 a = on_sphere(m.pos(m.vertex(TriId{t}, 0))), b = on_sphere(m.pos(m.vertex(TriId{t}, 1))),
-               c = on_sphere(m.pos(m.vertex(TriId{t}, 2)));
-    const double la = norm(b - c), lb = norm(c - a), lc = norm(a - b), area = 0.5 * norm(cross(b - a, c - a));
-    good += 16 * area * area / ((la + lb + lc) * la * lb * lc) > 0.9;
-  }
-  MESSAGE("front2d cap: " << m.num_triangles() << " triangles, " << 100.0 * in / total
-                          << "% of edges within [0.7, 1.4] delta on the sphere, " << 100.0 * good / m.num_triangles()
+  const SphereStats st = sphere_stats(m, delta);
+  MESSAGE("front2d cap: " << m.num_triangles() << " triangles, " << 100 * st.in_07_14
+                          << "% of edges within [0.7, 1.4] delta on the sphere, " << 100 * st.rho_09
                           << "% rho > 0.9 on the sphere");
-  CHECK(double(in) / total > 0.95);
-  CHECK(double(good) / m.num_triangles() > 0.9);
+  CHECK(st.in_07_14 > 0.95);
+  CHECK(st.rho_09 > 0.9);
   const double expected = M_PI / (std::sqrt(3.0) / 4 * delta * delta);
   CHECK(m.num_triangles() > 0.9 * expected);
   CHECK(m.num_triangles() < 1.3 * expected);
+}
+
+TEST_CASE("front2d: the world ocean from GSHHG crude shorelines at 150 km in the stereographic plane") {
+  // Real data: every ring resampled at 150 km, recovered (paper section
+  // 3.2), Antarctica's ring (round the projection pole) the outer loop,
+  // every other ring an island; uniform 150 km on the sphere.
+  const auto rings = testing::read_gshhg(std::string(SM_SHARED_DATA) + "/gshhg/world_c.txt");
+  REQUIRE(rings.size() > 100);
+  std::vector<testing::RingCurve> curves;
+  for (const auto& r : rings) curves.emplace_back(r);
+  const double step_km = 150;
+  BoundaryProblem p = testing::coast_problem(curves, step_km);
+  BoundaryOptions bopt;
+  bopt.tolerance = 1e-9;
+  const BoundaryResult br = recover_boundary(p, [&](std::uint32_t c, double t) { return curves[c].at(t); }, bopt);
+  INFO(br.error.message);
+  REQUIRE(br.ok());
+  std::vector<Loop> loops;
+  for (std::size_t c = 0; c < p.curves.size(); ++c) {
+    Loop l;
+    for (std::size_t k = 0; k + 1 < p.curves[c].pts.size(); ++k) l.v.push_back(VertexId{p.curves[c].pts[k]});
+    l.hole = !rings[c].wraps_pole;
+    loops.push_back(std::move(l));
+  }
+  TriangleStore m = br.mesh;
+  REQUIRE(remove_outside(m, PlanarGeometry{&m.xy}, loops).ok());
+  // Rings inside land (lakes, GSHHG level 2) went with the land: keep the
+  // coastline edges that bound the ocean.
+  std::vector<Edge> edges;
+  for (const Edge& e : br.edges)
+    if (m.has_edge(e.first, e.second)) edges.push_back(e);
+  MESSAGE((br.edges.size() - edges.size()) << " of " << br.edges.size() << " recovered edges lie inside land");
+  const double delta = step_km / 6371.0;  // unit sphere
+  RefineOptions opt;
+  opt.size_at = [&](std::span<const Vec2> pts, std::span<double> h) {
+    for (std::size_t i = 0; i < pts.size(); ++i) h[i] = delta * (1 + norm2(pts[i])) / 2;
+  };
+  TriangleStore m_del = m;
+  const FrontalResult r = refine_front2d(m, opt);
+  INFO(r.error);
+  REQUIRE(r.ok());
+  check_valid(m, edges);
+  const SphereStats st = sphere_stats(m, delta);
+  const double ocean_km2 = st.area * 6371.0 * 6371.0;
+  // del2d on the same boundary mesh, for comparison.
+  REQUIRE(refine_del2d(m_del, opt).ok());
+  const SphereStats sd = sphere_stats(m_del, delta);
+  MESSAGE("world ocean (GSHHG crude, 150 km), " << loops.size() << " loops: front2d " << m.num_triangles()
+          << " triangles, " << 100 * st.in_07_14 << "% of arcs in [0.7, 1.4] delta, " << 100 * st.rho_09
+          << "% rho > 0.9 on the sphere, ocean " << ocean_km2 / 1e6 << " M km2, " << r.given_up
+          << " triangles given up; del2d " << m_del.num_triangles() << " triangles, " << 100 * sd.in_07_14 << "%, "
+          << 100 * sd.rho_09 << "%");
+  // The world ocean covers about 361 M km2 (71% of the sphere).
+  CHECK(ocean_km2 > 330e6);
+  CHECK(ocean_km2 < 390e6);
+  // Below the square's figures: the crude rings' tiny islands (3 points)
+  // and straits narrower than 150 km force short edges and flat triangles
+  // (those are the given-up ones: every candidate point lies beyond the coast).
+  CHECK(st.in_07_14 > 0.87);
+  CHECK(st.rho_09 > 0.7);
+  CHECK(st.rho_09 > sd.rho_09 + 0.1);
+  CHECK(r.given_up < m.num_triangles() / 200);
 }
