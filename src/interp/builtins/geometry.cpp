@@ -45,7 +45,7 @@ void check_stmt_exprs(Interpreter& in, StmtId id) {
     try {
       in.eval(e);
     } catch (const RuntimeError& err) {
-      if (err.kind != Diag::NotSupportedYet) throw;   // a model query: its value must wait
+      if (err.kind != Diag::NotSupportedYet) throw;   // e.g. Coastline{} inside: its value must wait
     }
   };
   std::visit(
@@ -163,7 +163,7 @@ Vec3 eval_vec3(Interpreter& in, ExprId e, const char* what) {
   return {v[0], v[1], v[2]};
 }
 
-// The keyword the statement starts at: where its diagnostics point.
+// Kernel errors point at the whole statement (the caret underlines it, from its first word).
 SourceRange where(const Stmt& s) { return s.range; }
 
 std::optional<geo::DimTag> exec_point(Interpreter& in, const Stmt& s, const PointStmt& n) {
