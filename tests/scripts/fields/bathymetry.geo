@@ -18,6 +18,21 @@ Printf("%.6g", FieldValue(1, px, py, pz));   // expect: 1816
 lon = 140; lat = -26; Call Sphere;
 Printf("%.6g", FieldValue(1, px, py, pz));   // expect: 10
 
+// The same grid as an ESRI ASCII file (first row north).
+Field[10] = Bathymetry;
+Field[10].FileName = "../../../../shared/data/bathymetry/etopo5_gbr_5min.asc";
+lon = 150; lat = -15; Call Sphere;
+Printf("%.6g", FieldValue(10, px, py, pz));   // expect: 1856
+// The global 1-degree grid across the dateline (float values, as ncdump shows
+// them): z(179E, 10S) = -4568.657,
+// z(180, 10S) = z(-180, 10S) = -3880.569, z(-179E, 10S) = -4051.445.
+Field[11] = Bathymetry;
+Field[11].FileName = "../../../../shared/data/bathymetry/etopo5_global_1deg.nc";
+lon = 179.5; lat = -10; Call Sphere;
+Printf("%.2f", FieldValue(11, px, py, pz));   // expect: 4224.61
+lon = -179.5; Call Sphere;
+Printf("%.2f", FieldValue(11, px, py, pz));   // expect: 3966.01
+
 // f1: gravity-wave wavelength lambda_min/N sqrt(H_ref/H), in metres.
 Field[2] = Bathymetry;
 Field[2].FileName = gbr;
