@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstring>
 #include <map>
+#include <set>
 
 #include <fmt/format.h>
 
@@ -149,6 +150,60 @@ SourceRange expression_column(Interpreter& in, const field::FieldError& e, Sourc
   return r;
 }
 
+// Builds and evaluations recurse once per reference level, so a hostile chain
+// (Field[i].InField = i - 1 for 200000 fields) would overflow the stack: the
+// depth is measured here first, without recursion. Cycles and missing ids are
+// left to the build, which reports them with their ids.
+constexpr int kMaxFieldDepth = 1000;
+
+void check_reference_depth(Interpreter& in, int root, SourceRange use) {
+  const field::FieldSet& set = in.kernel().fields;
+  std::map<int, int> depth;   // finished fields: longest reference chain below
+  std::set<int> open;
+  struct Item {
+    int id;
+    std::vector<int> refs;
+    std::size_t next = 0;
+  };
+  std::vector<Item> stack;
+  auto push = [&](int id) {
+    std::vector<int> refs;
+    try {
+      refs = field::referenced_ids(set.options(id));
+    } catch (const field::FieldError&) {
+      // A MathEval syntax error: the build reports it where it belongs.
+    }
+    open.insert(id);
+    stack.push_back({id, std::move(refs)});
+    if (static_cast<int>(stack.size()) > kMaxFieldDepth)
+      in.fail_fmt(use, Diag::LimitExceeded,
+                  fmt::format("Field[{}] references fields nested deeper than {} levels (Field[{}] -> "
+                              "Field[{}] -> ...)", root, kMaxFieldDepth, stack[0].id, stack[1].id));
+  };
+  if (!set.contains(root)) return;
+  push(root);
+  while (!stack.empty()) {
+    Item& top = stack.back();
+    if (top.next < top.refs.size()) {
+      const int ref = top.refs[top.next++];
+      if (set.contains(ref) && !depth.count(ref) && !open.count(ref)) push(ref);
+      continue;
+    }
+    int d = 0;
+    for (int ref : top.refs) {
+      auto it = depth.find(ref);
+      if (it != depth.end()) d = std::max(d, it->second + 1);
+    }
+    if (d >= kMaxFieldDepth)
+      in.fail_fmt(use, Diag::LimitExceeded,
+                  fmt::format("Field[{}] references fields nested deeper than {} levels", root,
+                              kMaxFieldDepth));
+    depth[top.id] = d;
+    open.erase(top.id);
+    stack.pop_back();
+  }
+}
+
 }  // namespace
 
 void fail_field_error(Interpreter& in, const field::FieldError& e, SourceRange at) {
@@ -213,6 +268,7 @@ const field::BuiltFields& built_fields(Interpreter& in, int root, SourceRange us
   if (it != k.field_cache->by_root.end()) return it->second;
   if (!k.fields.contains(root))
     in.fail_fmt(use, Diag::MissingField, fmt::format("Field[{}] is not defined", root));
+  check_reference_depth(in, root, use);
   try {
     field::BuildContext ctx = make_build_context(k.model);
     return k.field_cache->by_root.emplace(root, k.fields.build(root, ctx)).first->second;
@@ -237,6 +293,7 @@ field::FieldPtr background_size_field(Interpreter& in, const CurveMeshNodes* mes
     }
   }
   if (!mesh_nodes) return built_fields(in, id, k.background_field_at).shared(id);
+  check_reference_depth(in, id, k.background_field_at);
   try {
     return k.fields.build(id, make_build_context(k.model, {}, mesh_nodes)).shared(id);
   } catch (const field::FieldError& e) {
