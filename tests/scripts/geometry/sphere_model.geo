@@ -34,7 +34,7 @@ Printf("%g %g", #t[], t[0]);
 Physical Surface("sea") = {1};
 Physical Curve("coast") = {5};
 Printf(StrCat(Physical Surface{1}, " ", Physical Curve{2}));
-// gmsh 4.8.4 -0 output (it also reports 'Skipping surface 1 in export' writing .geo_unrolled):
+// gmsh 4.8.4 -0 output:
 // expect: 5 1 2 4 -5 6
 // expect: 1.000000000 -1.764705882 0.941176471
 // expect: 1.198019802 -0.342980358 1.960396040

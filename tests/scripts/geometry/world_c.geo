@@ -20,7 +20,7 @@ x[] = Point{e[0]};
 Printf("%.6f %.6f %.6f", x[0], x[1], x[2]);
 x[] = Point{3};
 Printf("%.6f %.6f %.6f", x[0], x[1], x[2]);
-// gmsh 4.8.4 -0 output (run with tests/ copied whole, so that the Include resolves):
+// gmsh 4.8.4 -0 output:
 // expect: 743 curves, 1 surface, 743 boundary curves, 7158 points, newreg 744
 // expect: outer 5, first hole -1, last hole -743
 // expect: Antarctica from 2477 to 2477
