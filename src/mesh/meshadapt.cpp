@@ -246,6 +246,14 @@ std::uint64_t Adapter::smooth_pass() {
 void Adapter::run() {
   const std::uint32_t n_input = m_.num_vertices();
   fixed_.assign(n_input, 1);
+  if (opt_.move_input_vertices) {
+    std::fill(fixed_.begin(), fixed_.end(), 0);
+    for (std::uint32_t s = 0; s < m_.corner.size(); ++s) {
+      if (!m_.alive(tri_of(Side{s}))) continue;
+      if (m_.constrained(Side{s}) || !m_.twin[s].valid()) fixed_[m_.corner[s].value] = fixed_[m_.dest(Side{s}).value] = 1;
+    }
+    for (std::uint32_t v = 0; v < n_input; ++v) fixed_[v] |= !m_.out_side[v].valid();
+  }
   evaluate_from(0);
   std::uint64_t fewest = ~0ull, previous = 0;
   bool shrinking = false;
@@ -272,7 +280,7 @@ void Adapter::run() {
     res_.stats.swaps += swap_for_quality(m_, 1e-6, ~0ull, pst()).swaps;
     smooth_pass();
   }
-  drop_isolated_vertices(m_, n_input);
+  res_.vertex_map = drop_isolated_vertices(m_, opt_.move_input_vertices ? 0 : n_input);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <functional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "mesh/predicates.h"
 #include "mesh/triangulation.h"
@@ -30,6 +31,10 @@ struct MeshAdaptOptions {
   /// when set (right for straight boundaries; a curved one would leave its
   /// curve, so the face driver leaves it off and meshes curves in 1D).
   bool split_constrained = false;
+  /// Input vertices on no constrained or hull edge (an earlier mesh's
+  /// interior, to be re-adapted to a new size) may move and be collapsed
+  /// when set. Off by default: such vertices are embedded points.
+  bool move_input_vertices = false;
   std::uint32_t max_vertices = 0xFFFFFFF0u;
 };
 
@@ -43,15 +48,17 @@ struct MeshAdaptStats {
 struct MeshAdaptResult {
   std::string error;
   MeshAdaptStats stats;
+  std::vector<std::uint32_t> vertex_map;  // old -> new vertex id (kNone: removed)
   bool ok() const { return error.empty(); }
 };
 
 /// Adapts a constrained triangulation of the domain (outside triangles
 /// removed, boundary edges kConstrained: the input of refine_del2d). The
 /// input vertices (1D mesh, embedded points) never move and are never
-/// removed; constrained edges are never crossed or collapsed. Vertices that
-/// collapses removed are dropped at the end (ids of the input vertices are
-/// kept). Deterministic: every pass visits edges in a fixed order.
+/// removed (unless move_input_vertices); constrained edges are never
+/// crossed or collapsed. Vertices that collapses removed are dropped at the
+/// end; the ids of the input vertices are kept (with move_input_vertices
+/// the ids change: vertex_map gives them). Deterministic: every pass visits edges in a fixed order.
 MeshAdaptResult mesh_adapt(TriangleStore& m, const MeshAdaptOptions& opt);
 
 }  // namespace sm
