@@ -36,3 +36,9 @@ c[] = Curve{:};
 Printf("%g %g", #c[], c[6]);  // expect: 7 7
 s[] = Surface{:};
 Printf("%g %g %g", #s[], s[0], s[1]);  // expect: 2 1 2
+s[] = Surface In BoundingBox{-0.1, -0.1, -0.1, 1.1, 1.1, 0.1};
+Printf("%g %g", #s[], s[0]);  // expect: 1 1
+s[] = Surface In BoundingBox{-0.1, -0.1, -0.1, 2.1, 1.1, 0.1};
+Printf("%g %g %g", #s[], s[0], s[1]);  // expect: 2 1 2
+c[] = Curve In BoundingBox{0.9, -0.1, -0.1, 2.1, 1.1, 0.1};
+Printf("%g %g %g %g %g", #c[], c[0], c[1], c[2], c[3]);  // expect: 4 2 5 6 7
