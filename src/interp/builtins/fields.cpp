@@ -1,7 +1,6 @@
-// Mesh size field statements (gmsh-reference 4): `Field[n] = Kind;`,
-// `Field[n].Option = value;`, `Field[n].Action;`, `Delete Field[n];` and
-// `Background Field = n;`, recorded in the kernel's FieldSet with the
-// statement of each definition and option for located build errors.
+// Size field statements (gmsh-reference 4): Field[n] = Kind, options, actions,
+// Delete Field and Background Field, recorded in the kernel's FieldSet with the
+// statement of each definition and option, so that build errors are located.
 #include <cmath>
 #include <string>
 

@@ -1,7 +1,6 @@
-// Mesh.MeshSize{Factor,Min,Max,FromPoints,ExtendFromBoundary,FromCurvature}
-// -> field::SizePolicyOptions. The option registry stores each deprecated
-// CharacteristicLength* alias in the same slot, so reading the current names
-// sees whichever spelling the script used.
+// Mesh.MeshSize{Factor,Min,Max,FromPoints,ExtendFromBoundary,FromCurvature} ->
+// field::SizePolicyOptions. Each CharacteristicLength* alias shares its option's
+// slot in the registry, so reading the current names sees either spelling.
 #include "interp/builtins/size_policy_from_options.h"
 
 #include <array>
