@@ -1,0 +1,470 @@
+// The face driver of 2D meshing (paper section 3.3): boundary nodes in the face's plane,
+// Delaunay + edge recovery + hole removal, del2d refinement with the size converted to
+// the plane (h / lambda on a PolarSphere), Laplacian smoothing, 3D output.
+#include "mesh/mesh2d.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "mesh/cdt.h"
+#include "mesh/delaunay.h"
+#include "mesh/modify/smooth.h"
+#include "mesh/predicates.h"
+#include "mesh/refine.h"
+
+namespace sm {
+namespace {
+
+constexpr std::uint32_t kNoLocal = 0xFFFFFFFFu;
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// The face's parameter plane: a surface geometry's (u,v), or a Euclidean plane with an
+// orthonormal basis (e1, e2) such that e1 x e2 is the outer loop's Newell normal, so
+// the outer loop runs counter-clockwise in the plane. For a loop in z = const the basis
+// is (x, +-y) and the coordinates are exact.
+struct FacePlane {
+  const geo::SurfaceGeometry* geom = nullptr;
+  Vec3 o, e1, e2, n;
+  bool ccw_is_outward = true;   // on a geometry: counter-clockwise (u,v) triangles face outwards
+
+  Vec2 to_plane(Vec3 x) const { return {dot(x - o, e1), dot(x - o, e2)}; }
+  Vec3 to_space(Vec2 p) const { return geom ? geom->point(p) : o + p.x * e1 + p.y * e2; }
+  double lambda(Vec2 p) const {
+    if (!geom) return 1.0;
+    if (const geo::PolarSphere* ps = geom->polar()) return ps->lambda(p);
+    return 1.0;
+  }
+};
+
+// One closed chain of global nodes (first not repeated) with the curve of each edge.
+struct Chain {
+  std::vector<std::uint32_t> nodes;
+  std::vector<int> edge_curve;
+};
+
+class FaceMesher {
+ public:
+  FaceMesher(const geo::Model& model, ModelMesh& mesh, const Mesh2dOptions& opt, double bbox, Mesh2dResult& res)
+      : model_(model), mesh_(mesh), opt_(opt), bbox_(bbox), res_(res) {}
+  bool run(const geo::ModelSurface& s);
+
+ private:
+  bool fail(std::string msg, std::optional<Vec3> where = std::nullopt);
+  bool collect_loops(const geo::ModelSurface& s);
+  bool make_plane();
+  std::uint32_t local(std::uint32_t node);
+  Vec2 node_plane(std::uint32_t node) const;
+  void sizes_in_plane(std::span<const Vec2> p, std::span<double> h);
+  std::optional<double> boundary_size(Vec2 p);
+
+  const geo::Model& model_;
+  ModelMesh& mesh_;
+  const Mesh2dOptions& opt_;
+  double bbox_;
+  Mesh2dResult& res_;
+  int tag_ = 0;
+  FacePlane plane_;
+  std::vector<Chain> chains_;                 // [0] outer, then holes
+  std::vector<std::uint32_t> emb_points_;     // global nodes
+  std::vector<Chain> emb_curves_;             // open chains (edge i joins nodes i, i+1)
+  std::vector<std::uint32_t> global_;         // local vertex -> global node
+  std::vector<std::uint32_t> local_of_;       // global node -> local vertex (scratch)
+  TriangleStore m_;
+  // Extension of the boundary sizes into the face: the recovered boundary triangulation,
+  // per vertex the mean length of its boundary edges (inf: none), a walk hint.
+  TriangleStore bg_;
+  std::vector<double> bsize_;
+  TriId bg_hint_;
+  std::uint32_t walk_turn_ = 0;
+  std::vector<Vec3> pts3_;
+  std::vector<double> field_;
+};
+
+bool FaceMesher::fail(std::string msg, std::optional<Vec3> where) {
+  res_.error.surface = tag_;
+  res_.error.message = fmt::format("surface {}: {}", tag_, msg);
+  if (where) {
+    res_.error.xyz = *where;
+    if (plane_.geom && plane_.geom->polar()) {
+      res_.error.has_lonlat = true;
+      res_.error.where = plane_.geom->polar()->to_lonlat(*where);
+      res_.error.message += fmt::format(" near lon {:.6f}, lat {:.6f}", res_.error.where.lon, res_.error.where.lat);
+    } else {
+      res_.error.message += fmt::format(" near ({}, {}, {})", where->x, where->y, where->z);
+    }
+  }
+  return false;
+}
+
+bool FaceMesher::collect_loops(const geo::ModelSurface& s) {
+  for (std::size_t li = 0; li < s.loops.size(); ++li) {
+    const geo::ModelCurveLoop* loop = model_.curve_loop(std::abs(s.loops[li]));
+    if (!loop) return fail(fmt::format("curve loop {} does not exist", std::abs(s.loops[li])));
+    std::vector<int> curves = loop->curves;
+    if (s.loops[li] < 0) {
+      std::reverse(curves.begin(), curves.end());
+      for (int& c : curves) c = -c;
+    }
+    // A loop may hold several closed chains (Gmsh's subloops): a chain ends when it
+    // returns to its first node.
+    Chain ch;
+    for (int sc : curves) {
+      const auto it = mesh_.curves.find(std::abs(sc));
+      if (it == mesh_.curves.end()) return fail(fmt::format("curve {} has no 1D mesh", std::abs(sc)));
+      std::vector<std::uint32_t> nodes = it->second.nodes;
+      if (sc < 0) std::reverse(nodes.begin(), nodes.end());
+      if (!ch.nodes.empty() && ch.nodes.back() != nodes.front())
+        return fail(fmt::format("curve loop {} is not connected at curve {}", loop->tag, sc));
+      for (std::size_t k = ch.nodes.empty() ? 0 : 1; k < nodes.size(); ++k) ch.nodes.push_back(nodes[k]);
+      ch.edge_curve.insert(ch.edge_curve.end(), nodes.size() - 1, std::abs(sc));
+      if (ch.nodes.size() > 1 && ch.nodes.back() == ch.nodes.front()) {
+        ch.nodes.pop_back();
+        if (ch.nodes.size() < 3 && (li > 0 || !chains_.empty())) {
+          // An island below the mesh size meshed as two edges encloses nothing: left out.
+          res_.warnings.push_back(fmt::format("surface {}: hole loop {} has {} boundary node(s) and is left out",
+                                              tag_, loop->tag, ch.nodes.size()));
+        } else if (ch.nodes.size() < 3) {
+          return fail(fmt::format("curve loop {} has fewer than 3 boundary nodes", loop->tag),
+                      mesh_.nodes[ch.nodes.front()].xyz);
+        } else {
+          chains_.push_back(std::move(ch));
+        }
+        ch = Chain{};
+      }
+    }
+    if (!ch.nodes.empty()) return fail(fmt::format("curve loop {} does not close", loop->tag));
+  }
+  if (chains_.empty()) return fail("no boundary loop");
+  for (int p : s.embedded_points) {
+    const auto it = mesh_.vertex_node.find(p);
+    if (it == mesh_.vertex_node.end()) return fail(fmt::format("embedded point {} has no node", p));
+    emb_points_.push_back(it->second);
+  }
+  for (int c : s.embedded_curves) {
+    const auto it = mesh_.curves.find(c);
+    if (it == mesh_.curves.end()) return fail(fmt::format("embedded curve {} has no 1D mesh", c));
+    Chain ch;
+    ch.nodes = it->second.nodes;
+    ch.edge_curve.assign(ch.nodes.size() - 1, c);
+    emb_curves_.push_back(std::move(ch));
+  }
+  return true;
+}
+
+bool FaceMesher::make_plane() {
+  if (plane_.geom) {
+    if (!plane_.geom->polar())
+      return fail("faces on a lon/lat Sphere geometry are not supported yet (refinement in the anisotropic "
+                  "metric J^T J is missing); use a PolarSphere");
+    const Vec2 uv = node_plane(chains_[0].nodes[0]);
+    Vec3 du, dv;
+    plane_.geom->tangents(uv, du, dv);
+    plane_.ccw_is_outward = dot(cross(du, dv), plane_.geom->polar()->normal(uv)) > 0;
+    return true;
+  }
+  // Newell's normal of the outer loop and its centroid.
+  Vec3 n{0, 0, 0}, c{0, 0, 0};
+  const std::vector<std::uint32_t>& L = chains_[0].nodes;
+  for (std::size_t i = 0; i < L.size(); ++i) {
+    const Vec3 a = mesh_.nodes[L[i]].xyz, b = mesh_.nodes[L[(i + 1) % L.size()]].xyz;
+    n = n + Vec3{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y)};
+    c = c + a;
+  }
+  c = c / static_cast<double>(L.size());
+  const double nn = norm(n);
+  if (!(nn > 0)) return fail("the outer loop encloses no area", mesh_.nodes[L[0]].xyz);
+  n = n / nn;
+  if (n.x == 0 && n.y == 0) {
+    plane_.o = {0, 0, c.z};
+    plane_.e1 = {1, 0, 0};
+    plane_.e2 = {0, n.z > 0 ? 1.0 : -1.0, 0};
+    plane_.n = {0, 0, n.z > 0 ? 1.0 : -1.0};
+    plane_.o.z = mesh_.nodes[L[0]].xyz.z;
+  } else {
+    const Vec3 axis = std::abs(n.z) < 0.9 ? Vec3{0, 0, 1} : Vec3{1, 0, 0};
+    plane_.e1 = cross(axis, n);
+    plane_.e1 = plane_.e1 / norm(plane_.e1);
+    plane_.e2 = cross(n, plane_.e1);
+    plane_.o = c;
+    plane_.n = n;
+  }
+  // Every boundary node must lie in that plane (Gmsh's Plane Surface is planar).
+  const double tol = std::max(model_.options().tolerance * bbox_, 1e-12 * bbox_);
+  auto check = [&](std::uint32_t node) {
+    const Vec3 x = mesh_.nodes[node].xyz;
+    return std::abs(dot(x - plane_.o, plane_.n)) <= tol;
+  };
+  for (const auto* group : {&chains_, &emb_curves_})
+    for (const Chain& ch : *group)
+      for (std::uint32_t v : ch.nodes)
+        if (!check(v)) return fail("the boundary is not planar", mesh_.nodes[v].xyz);
+  for (std::uint32_t v : emb_points_)
+    if (!check(v)) return fail("an embedded point is not in the surface's plane", mesh_.nodes[v].xyz);
+  return true;
+}
+
+Vec2 FaceMesher::node_plane(std::uint32_t node) const {
+  const MeshNode& n = mesh_.nodes[node];
+  if (plane_.geom) return n.has_uv ? n.uv : plane_.geom->param(n.xyz);
+  return plane_.to_plane(n.xyz);
+}
+
+std::uint32_t FaceMesher::local(std::uint32_t node) {
+  if (local_of_[node] == kNoLocal) {
+    local_of_[node] = static_cast<std::uint32_t>(global_.size());
+    global_.push_back(node);
+    m_.add_vertex(node_plane(node));
+  }
+  return local_of_[node];
+}
+
+// Barycentric interpolation of the boundary sizes in the recovered boundary
+// triangulation: a visibility walk from the last hit that stops at the domain's boundary
+// (the point is then clamped to the last triangle).
+std::optional<double> FaceMesher::boundary_size(Vec2 p) {
+  if (!bg_hint_.valid() || !bg_.alive(bg_hint_)) {
+    bg_hint_ = TriId{};
+    for (std::uint32_t t = 0; t < bg_.num_slots(); ++t)
+      if (bg_.alive(TriId{t})) {
+        bg_hint_ = TriId{t};
+        break;
+      }
+    if (!bg_hint_.valid()) return std::nullopt;
+  }
+  TriId t = bg_hint_;
+  const std::uint32_t cap = 4 * bg_.num_slots() + 16;
+  for (std::uint32_t step = 0; step < cap; ++step) {
+    bool moved = false;
+    walk_turn_ = (walk_turn_ + 1) % 3;
+    for (std::uint32_t k = 0; k < 3 && !moved; ++k) {
+      const Side s = side_of(t, (walk_turn_ + k) % 3);
+      if (orient2d(bg_.pos(bg_.org(s)), bg_.pos(bg_.dest(s)), p) != Sign::Negative) continue;
+      const Side o = bg_.twin[s.value];
+      if (!o.valid()) continue;   // beyond the boundary: try another edge, else stop here
+      t = tri_of(o);
+      moved = true;
+    }
+    if (!moved) break;
+  }
+  bg_hint_ = t;
+  const Vec2 a = bg_.pos(bg_.vertex(t, 0)), b = bg_.pos(bg_.vertex(t, 1)), c = bg_.pos(bg_.vertex(t, 2));
+  const double area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+  double w[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
+  if (area > 0) {
+    w[0] = ((b.x - p.x) * (c.y - p.y) - (b.y - p.y) * (c.x - p.x)) / area;
+    w[1] = ((c.x - p.x) * (a.y - p.y) - (c.y - p.y) * (a.x - p.x)) / area;
+    w[2] = ((a.x - p.x) * (b.y - p.y) - (a.y - p.y) * (b.x - p.x)) / area;
+  }
+  double sum_w = 0, sum = 0;
+  for (std::uint32_t e = 0; e < 3; ++e) {
+    const double h = bsize_[bg_.vertex(t, e).value];
+    const double wi = std::max(0.0, w[e]);
+    if (!std::isfinite(h)) continue;
+    sum_w += wi;
+    sum += wi * h;
+  }
+  if (sum_w > 0) return sum / sum_w;
+  double lo = std::numeric_limits<double>::infinity();
+  for (std::uint32_t e = 0; e < 3; ++e) lo = std::min(lo, bsize_[bg_.vertex(t, e).value]);
+  return std::isfinite(lo) ? std::optional<double>(lo) : std::nullopt;
+}
+
+void FaceMesher::sizes_in_plane(std::span<const Vec2> p, std::span<double> h) {
+  pts3_.resize(p.size());
+  field_.resize(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) pts3_[i] = plane_.to_space(p[i]);
+  if (opt_.background) opt_.background->eval_on(field::EntityRef{2, tag_}, pts3_, field_);
+  field::SizeQuery q;
+  q.bbox_diag = bbox_;
+  q.entity_dim = 2;
+  const bool extend = opt_.size.extend_from_boundary != 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (opt_.background) q.background = field_[i];
+    double size = field::final_size(opt_.size, q).size;
+    if (extend) size = field::surface_target(opt_.size, size, boundary_size(p[i]));
+    h[i] = size / plane_.lambda(p[i]);
+  }
+  res_.stats.size_evaluations += p.size();
+}
+
+bool FaceMesher::run(const geo::ModelSurface& s) {
+  tag_ = s.tag;
+  if (s.filling) return fail("transfinite (filling) surfaces are not meshed by the 2D mesher yet");
+  plane_.geom = s.geometry ? model_.geometry(s.geometry) : nullptr;
+  if (s.geometry && !plane_.geom) return fail(fmt::format("surface geometry {} does not exist", s.geometry));
+  auto t0 = std::chrono::steady_clock::now();
+  if (!collect_loops(s) || !make_plane()) return false;
+
+  // Local vertices: loops, embedded curves, embedded points (first occurrence order).
+  local_of_.assign(mesh_.nodes.size(), kNoLocal);
+  std::vector<Loop> loops;
+  std::vector<Edge> edges;
+  std::vector<int> edge_curve;
+  for (std::size_t ci = 0; ci < chains_.size(); ++ci) {
+    Loop L;
+    L.hole = ci > 0;
+    for (std::uint32_t node : chains_[ci].nodes) L.v.push_back(VertexId{local(node)});
+    for (std::size_t k = 0; k < L.v.size(); ++k) {
+      edges.push_back({L.v[k], L.v[(k + 1) % L.v.size()]});
+      edge_curve.push_back(chains_[ci].edge_curve[k]);
+    }
+    loops.push_back(std::move(L));
+  }
+  for (const Chain& ch : emb_curves_)
+    for (std::size_t k = 0; k + 1 < ch.nodes.size(); ++k) {
+      edges.push_back({VertexId{local(ch.nodes[k])}, VertexId{local(ch.nodes[k + 1])}});
+      edge_curve.push_back(ch.edge_curve[k]);
+    }
+  for (std::uint32_t node : emb_points_) local(node);
+  const std::uint32_t fixed_count = m_.num_vertices();
+
+  const DelaunayResult dr = delaunay(m_);
+  if (!dr.ok()) return fail("Delaunay of the boundary nodes failed: " + dr.error);
+  if (!dr.duplicates.empty()) {
+    const std::uint32_t a = global_[dr.duplicates[0].dup.value], b = global_[dr.duplicates[0].kept.value];
+    return fail(fmt::format("two distinct boundary nodes ({} and {}) at the same place", a, b), mesh_.nodes[a].xyz);
+  }
+  const PlanarGeometry g{&m_.xy};
+  const RecoverResult rr = recover_edges(m_, g, edges);
+  if (!rr.ok()) return fail("boundary recovery failed: " + rr.error);
+  if (!rr.crossings.empty()) {
+    const EdgeCrossing& x = rr.crossings[0];
+    const Edge e = edges[x.edge];
+    const int other = x.other != kNoEdge ? edge_curve[x.other] : 0;
+    return fail(fmt::format("boundary edges of curves {} and {} cross", edge_curve[x.edge], other),
+                mesh_.nodes[global_[e.first.value]].xyz);
+  }
+  if (!rr.touching.empty()) {
+    const VertexOnEdge& x = rr.touching[0];
+    return fail(fmt::format("a boundary node lies on an edge of curve {}", edge_curve[x.edge]),
+                mesh_.nodes[global_[x.v.value]].xyz);
+  }
+  const DomainResult dom = remove_outside(m_, g, loops);
+  if (!dom.ok()) return fail("hole removal failed: " + dom.error);
+
+  if (opt_.size.extend_from_boundary != 0) {
+    bg_ = m_;
+    bsize_.assign(fixed_count, 0.0);
+    std::vector<std::uint32_t> count(fixed_count, 0);
+    for (const Edge& e : edges) {
+      const double len = norm(mesh_.nodes[global_[e.first.value]].xyz - mesh_.nodes[global_[e.second.value]].xyz);
+      bsize_[e.first.value] += len, bsize_[e.second.value] += len;
+      ++count[e.first.value], ++count[e.second.value];
+    }
+    for (std::uint32_t v = 0; v < fixed_count; ++v) {
+      bsize_[v] = count[v] ? bsize_[v] / count[v] : std::numeric_limits<double>::infinity();
+      if (!count[v]) {
+        // An embedded point with a prescribed size keeps it.
+        for (const auto& [vt, node] : mesh_.vertex_node)
+          if (node == global_[v]) {
+            const geo::ModelVertex* mv = model_.vertex(vt);
+            if (mv && opt_.size.from_points && mv->lc < geo::kMaxLc) bsize_[v] = mv->lc * opt_.size.factor;
+            break;
+          }
+      }
+    }
+  }
+  res_.stats.seconds_boundary += seconds_since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  RefineOptions ro;
+  ro.radius_limit = opt_.radius_limit;
+  ro.max_vertices = opt_.max_vertices_per_face;
+  ro.size_at = [this](std::span<const Vec2> p, std::span<double> h) { sizes_in_plane(p, h); };
+  const RefineResult rf = refine_del2d(m_, ro);
+  res_.stats.inserted += rf.stats.inserted;
+  res_.stats.rejected += rf.stats.rejected;
+  if (!rf.ok()) return fail("refinement failed: " + rf.error);
+  res_.stats.seconds_refine += seconds_since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  if (opt_.smoothing > 0) {
+    // smooth_laplacian keeps vertices of constrained edges in place; an isolated
+    // embedded point is not on one and would move, so such faces are not smoothed.
+    if (emb_points_.empty()) smooth_laplacian(m_, opt_.smoothing);
+    else res_.warnings.push_back(fmt::format("surface {}: not smoothed (it has embedded points)", tag_));
+  }
+  res_.stats.seconds_smooth += seconds_since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  SurfaceMesh sm_out;
+  sm_out.tag = tag_;
+  const std::uint32_t nv = m_.num_vertices();
+  global_.resize(nv);
+  for (std::uint32_t v = fixed_count; v < nv; ++v) {
+    const Vec2 p = m_.xy[v];
+    global_[v] = plane_.geom ? mesh_.add_node(plane_.to_space(p), p) : mesh_.add_node(plane_.to_space(p));
+    sm_out.interior_nodes.push_back(global_[v]);
+  }
+  const bool flip = plane_.geom && !plane_.ccw_is_outward;
+  sm_out.triangles.reserve(m_.num_triangles());
+  for (std::uint32_t t = 0; t < m_.num_slots(); ++t) {
+    if (!m_.alive(TriId{t})) continue;
+    const std::uint32_t a = global_[m_.vertex(TriId{t}, 0).value], b = global_[m_.vertex(TriId{t}, 1).value],
+                        c = global_[m_.vertex(TriId{t}, 2).value];
+    sm_out.triangles.push_back(flip ? std::array<std::uint32_t, 3>{a, c, b} : std::array<std::uint32_t, 3>{a, b, c});
+  }
+  res_.stats.new_nodes += nv - fixed_count;
+  res_.stats.triangles += sm_out.triangles.size();
+  ++res_.stats.faces;
+  mesh_.surfaces[tag_] = std::move(sm_out);
+  res_.stats.seconds_output += seconds_since(t0);
+  return true;
+}
+
+double model_bbox(const geo::Model& model, double given) {
+  double bbox = given;
+  if (!(bbox > 0)) bbox = model.bounding_box().diagonal();
+  if (!(bbox > 0)) bbox = 1;
+  return bbox;
+}
+
+}  // namespace
+
+Mesh2dResult mesh_surfaces(const geo::Model& model, ModelMesh& mesh, const Mesh2dOptions& opt) {
+  Mesh2dResult res;
+  switch (opt.algorithm) {
+    case Mesh2dAlgorithm::Del2d:
+    case Mesh2dAlgorithm::Automatic: break;
+    case Mesh2dAlgorithm::Frontal:
+      res.warnings.push_back("Mesh.Algorithm 6 (Frontal-Delaunay) is not available yet: using 5 (Delaunay)");
+      break;
+    case Mesh2dAlgorithm::MeshAdapt:
+      res.warnings.push_back("Mesh.Algorithm 1 (MeshAdapt) is not available yet: using 5 (Delaunay)");
+      break;
+  }
+  const double bbox = model_bbox(model, opt.bbox_diag);
+  for (const auto& [tag, s] : model.surfaces()) {
+    FaceMesher fm(model, mesh, opt, bbox, res);
+    if (!fm.run(s)) return res;
+  }
+  mesh.dim = std::max(mesh.dim, 2);
+  return res;
+}
+
+std::function<void(std::span<const Vec3>, std::span<double>)> surface_size_fn(const geo::Model& model,
+                                                                              const Mesh2dOptions& opt, int tag) {
+  const double bbox = model_bbox(model, opt.bbox_diag);
+  return [bbox, opt, tag](std::span<const Vec3> pts, std::span<double> h) {
+    std::vector<double> bg(pts.size());
+    if (opt.background) opt.background->eval_on(field::EntityRef{2, tag}, pts, bg);
+    field::SizeQuery q;
+    q.bbox_diag = bbox;
+    q.entity_dim = 2;
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      if (opt.background) q.background = bg[i];
+      h[i] = field::final_size(opt.size, q).size;
+    }
+  };
+}
+
+}  // namespace sm

@@ -1,0 +1,75 @@
+// 2D meshing of a model's faces (paper section 3.3): each Plane Surface is meshed in its
+// parameter plane (its own plane, or the PolarSphere's stereographic (u,v) plane) from the
+// 1D boundary mesh: Delaunay, edge recovery, hole removal, refinement, smoothing, 3D output.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "field/field.h"
+#include "field/size_policy.h"
+#include "geo/model.h"
+#include "geo/sphere.h"
+#include "mesh/model_mesh.h"
+
+namespace sm {
+
+/// Mesh.Algorithm with Gmsh's numbers.
+enum class Mesh2dAlgorithm { MeshAdapt = 1, Automatic = 2, Del2d = 5, Frontal = 6 };
+
+struct Mesh2dOptions {
+  /// Automatic is del2d. Frontal and MeshAdapt are not written yet: they run del2d and
+  /// leave a warning in the result.
+  Mesh2dAlgorithm algorithm = Mesh2dAlgorithm::Del2d;
+  field::SizePolicyOptions size;                 ///< Mesh.MeshSize*
+  const field::SizeField* background = nullptr;  ///< Background Field, if any
+  double bbox_diag = 0;      ///< Gmsh's CTX::lc; <= 0: the model's bounding-box diagonal
+  int smoothing = 1;         ///< Mesh.Smoothing: Laplacian passes after refinement
+  /// del2d stops when circumradius / size <= this on every triangle (measured in the
+  /// parameter plane with the size divided by the conformal factor).
+  double radius_limit = 0.76;
+  std::uint32_t max_vertices_per_face = 0xFFFFFFF0u;
+};
+
+/// A located failure: the surface, and where (3D; lon/lat on a sphere geometry).
+struct Mesh2dError {
+  int surface = 0;          // 0: no error
+  std::string message;
+  Vec3 xyz;
+  bool has_lonlat = false;
+  geo::LonLat where;
+};
+
+struct Mesh2dStats {
+  std::uint64_t faces = 0, triangles = 0, new_nodes = 0;
+  std::uint64_t inserted = 0, rejected = 0, size_evaluations = 0;
+  double seconds_boundary = 0;   // Delaunay of the boundary nodes, edge recovery, holes
+  double seconds_refine = 0;
+  double seconds_smooth = 0;
+  double seconds_output = 0;     // nodes mapped to 3D, triangles oriented
+};
+
+struct Mesh2dResult {
+  Mesh2dError error;
+  std::vector<std::string> warnings;
+  Mesh2dStats stats;
+  bool ok() const { return error.surface == 0; }
+};
+
+/// Meshes every Plane Surface of the model in tag order into `mesh` (which holds the 1D
+/// mesh from mesh_curves). Boundary and embedded nodes are the curve/vertex nodes, so
+/// faces sharing curves share nodes; interior nodes get their (u,v) on a surface geometry.
+/// Triangles are oriented with the outward normal on a sphere and by the right-hand rule
+/// of the outer loop on a plane. Deterministic. On failure, surfaces meshed before the
+/// failing one are kept, the failing one is absent.
+Mesh2dResult mesh_surfaces(const geo::Model& model, ModelMesh& mesh, const Mesh2dOptions& opt);
+
+/// The target size (without extension from the boundary) at 3D points of surface `tag`:
+/// the size policy with the background field, as mesh_surfaces uses it. For statistics.
+std::function<void(std::span<const Vec3>, std::span<double>)> surface_size_fn(const geo::Model& model,
+                                                                              const Mesh2dOptions& opt, int tag);
+
+}  // namespace sm

@@ -1,0 +1,47 @@
+// The statistics printed after meshing (issue 7): nodes, triangles, quality rho = 2 r_in /
+// r_circ measured in 3D, edge length over the target size, time per stage; as a summary
+// for stderr and as JSON (for --stats FILE.json).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "base/vec.h"
+#include "mesh/model_mesh.h"
+
+namespace sm {
+
+struct StageTime {
+  std::string name;
+  double seconds = 0;
+};
+
+struct MeshStats {
+  std::uint64_t nodes = 0, triangles = 0, edges = 0;
+  double min_rho = 0, mean_rho = 0, share_rho_09 = 0;   // share of triangles with rho > 0.9
+  bool has_sizes = false;                              // the length ratios below are set
+  double len_median = 0, len_p05 = 0, len_p95 = 0;     // edge length / target size
+  double share_len_07_14 = 0;                          // share of edges with ratio in [0.7, 1.4]
+  std::vector<StageTime> stages;                       // filled by the caller
+};
+
+/// Target size at 3D points (batched), e.g. mesh2d's surface_size_fn.
+using SizeAt3 = std::function<void(std::span<const Vec3>, std::span<double>)>;
+
+/// 2 r_in / r_circ of a triangle in space: 16 A^2 / ((a + b + c) a b c); 0 if degenerate.
+double rho3(Vec3 a, Vec3 b, Vec3 c);
+
+/// Statistics over every surface triangle of the mesh. With `size`, each distinct
+/// triangle edge's chord length is divided by the size at its midpoint (the callback may
+/// project the midpoint onto the surface).
+MeshStats mesh_stats(const ModelMesh& mesh, const SizeAt3& size = nullptr);
+
+/// A few lines for stderr.
+std::string format_stats(const MeshStats& s);
+/// One JSON object (keys as the summary's words: nodes, triangles, rho_min, ...).
+std::string stats_json(const MeshStats& s);
+
+}  // namespace sm

@@ -1,0 +1,75 @@
+// mesh/mesh_stats: rho in 3D, edge-length ratios against a size, the summary and JSON.
+#include "mesh/mesh_stats.h"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <string>
+
+using namespace sm;
+
+namespace {
+
+// Two triangles on the unit square's diagonal, plus an equilateral one far away, tilted
+// out of the plane (rho does not depend on the orientation in space).
+ModelMesh small_mesh() {
+  ModelMesh m;
+  const std::uint32_t a = m.add_node({0, 0, 0}), b = m.add_node({1, 0, 0}), c = m.add_node({1, 1, 0}),
+                      d = m.add_node({0, 1, 0});
+  const double s = std::sqrt(0.5);
+  const std::uint32_t e = m.add_node({5, 0, 0}), f = m.add_node({5, s, s}),
+                      g = m.add_node({5 + std::sqrt(0.75), 0.5 * s, 0.5 * s});
+  SurfaceMesh sf;
+  sf.tag = 1;
+  sf.triangles = {{a, b, c}, {a, c, d}};
+  m.surfaces[1] = sf;
+  sf.tag = 2;
+  sf.triangles = {{e, f, g}};
+  m.surfaces[2] = sf;
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("mesh_stats: rho of an equilateral, a right isosceles and a flat triangle") {
+  CHECK(rho3({0, 0, 0}, {1, 0, 0}, {0.5, std::sqrt(0.75), 0}) == doctest::Approx(1));
+  CHECK(rho3({0, 0, 0}, {1, 0, 0}, {0, 1, 0}) == doctest::Approx(2 * (2 - std::sqrt(2.0)) / std::sqrt(2.0)));
+  CHECK(rho3({0, 0, 0}, {1, 0, 0}, {2, 0, 0}) == 0);
+  CHECK(rho3({0, 0, 0}, {0, 0, 0}, {2, 0, 0}) == 0);
+}
+
+TEST_CASE("mesh_stats: counts, quality shares and length ratios") {
+  const ModelMesh m = small_mesh();
+  const double right = 2 * (2 - std::sqrt(2.0)) / std::sqrt(2.0);
+  MeshStats s = mesh_stats(m);
+  CHECK(s.nodes == 7);
+  CHECK(s.triangles == 3);
+  CHECK_FALSE(s.has_sizes);
+  CHECK(s.min_rho == doctest::Approx(right));
+  CHECK(s.mean_rho == doctest::Approx((2 * right + 1) / 3));
+  CHECK(s.share_rho_09 == doctest::Approx(1.0 / 3));
+  // Size 1 everywhere: 5 square edges + 3 equilateral edges of length 1, one diagonal of
+  // sqrt 2 (shared, counted once): ratios {1 x 7, 1.414...}.
+  s = mesh_stats(m, [](std::span<const Vec3>, std::span<double> h) { std::fill(h.begin(), h.end(), 1.0); });
+  CHECK(s.edges == 8);
+  CHECK(s.len_median == doctest::Approx(1));
+  CHECK(s.len_p05 == doctest::Approx(1));
+  CHECK(s.len_p95 > 1.1);
+  CHECK(s.share_len_07_14 == doctest::Approx(7.0 / 8));
+  s.stages = {{"1D", 0.25}, {"2D \"refine\"", 0.5}};
+  const std::string text = format_stats(s);
+  CHECK(text.find("7 nodes, 3 triangles") != std::string::npos);
+  CHECK(text.find("total 0.750 s") != std::string::npos);
+  const std::string json = stats_json(s);
+  CHECK(json.find("\"nodes\": 7") != std::string::npos);
+  CHECK(json.find("\"edges\": 8") != std::string::npos);
+  CHECK(json.find("\"2D \\\"refine\\\"\": 0.5") != std::string::npos);
+  CHECK(json.front() == '{');
+}
+
+TEST_CASE("mesh_stats: an empty mesh") {
+  const MeshStats s = mesh_stats(ModelMesh{});
+  CHECK(s.triangles == 0);
+  CHECK(s.min_rho == 0);
+  CHECK(stats_json(s).find("\"triangles\": 0") != std::string::npos);
+}
