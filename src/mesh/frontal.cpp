@@ -19,6 +19,12 @@ namespace {
 
 using Entry = std::uint64_t;
 
+// A frontal point closer than this fraction of the local size to a vertex
+// nearby is not used. On the unit square at h = 0.002, 0.6 gave 99.97% of
+// triangles with rho > 0.9 after one smoothing pass and a min rho of 0.69
+// (without the test: 99.92%, 0.55); 0.5 gave 99.94%, 0.7 the same as 0.6.
+constexpr double kCrowded = 0.6;
+
 class Frontal {
  public:
   Frontal(TriangleStore& m, const RefineOptions& opt, FrontalResult& res)
@@ -35,6 +41,9 @@ class Frontal {
   bool on_front(Side s) const;
   /// Rebay's point for front side s (see frontal.h).
   Vec2 frontal_point(Side s) const;
+  /// Whether x is closer than kCrowded times the size to a corner of s's
+  /// triangle or to the apex of one of its neighbours.
+  bool crowds_vertex(Side s, Vec2 x) const;
   void push(std::uint32_t t);
   /// Queues the unresolved neighbours of resolved t that are not queued.
   void wake_neighbours(std::uint32_t t);
@@ -68,6 +77,17 @@ Side Frontal::front_side(std::uint32_t t) const {
   for (std::uint32_t e = 0; e < 3; ++e)
     if (on_front(Side{3 * t + e})) return Side{3 * t + e};
   return Side{};
+}
+
+bool Frontal::crowds_vertex(Side s, Vec2 x) const {
+  const double h = kCrowded * 0.5 * (vsize_[m_.org(s).value] + vsize_[m_.dest(s).value]);
+  const std::uint32_t t = s.value / 3;
+  for (std::uint32_t e = 0; e < 3; ++e) {
+    if (norm2(m_.pos(m_.vertex(TriId{t}, e)) - x) < h * h) return true;
+    const Side o = m_.twin[3 * t + e];
+    if (o.valid() && norm2(m_.pos(m_.apex(o)) - x) < h * h) return true;
+  }
+  return false;
 }
 
 Vec2 Frontal::frontal_point(Side s) const {
@@ -192,8 +212,11 @@ void Frontal::run() {
     }
     InsertOutcome out = InsertOutcome::Outside;
     // Rebay's point on each front side in turn (a side beside a constraint
-    // may put it beyond another one in a narrow passage).
-    for (std::uint32_t k = 0; k < 3 && out != InsertOutcome::Inserted; ++k) {
+    // may put it beyond another one in a narrow passage). A point crowding
+    // a vertex means two fronts meet here: the circumcentre closes the gap
+    // better (it is what lifts the seams' worst rho from 0.27 to 0.63).
+    bool crowded = false;
+    for (std::uint32_t k = 0; k < 3 && out != InsertOutcome::Inserted && !crowded; ++k) {
       const Side fs{3 * t + (s.value - 3 * t + k) % 3};
       if (k > 0 && !on_front(fs)) continue;
       const Vec2 x = frontal_point(fs);
@@ -202,6 +225,7 @@ void Frontal::run() {
       if (incircle(m_.pos(m_.org(fs)), m_.pos(m_.dest(fs)), m_.pos(m_.apex(fs)), x, &res_.stats.predicates) !=
           Sign::Positive)
         continue;
+      if ((crowded = crowds_vertex(fs, x))) break;
       out = ins_.insert_near(x, TriId{t});
       if (out == InsertOutcome::Inserted) ++res_.frontal_points;
     }

@@ -3,6 +3,8 @@
 // and `-2 -algo front2d` on the same geometry when gmsh is installed; and
 // meshadapt (Gmsh's column only for h >= 0.005: it takes ~250 s at 0.002).
 // Usage: bench_mesh_square [h] [--no-gmsh] [--algo del2d|front2d|meshadapt|all]
+#include <unistd.h>
+
 #include <array>
 #include <chrono>
 #include <cstdio>
@@ -167,7 +169,8 @@ void print_msh_quality(const std::string& path, double h) {
 }
 
 void run_gmsh(double h, const char* algo) {
-  const std::string dir = "/tmp/stereomesh_bench_square";
+  // One directory per run: several benchmarks may run Gmsh at once.
+  const std::string dir = "/tmp/stereomesh_bench_square_" + std::to_string(getpid());
   std::system(("mkdir -p " + dir).c_str());
   std::ofstream(dir + "/sq.geo") << "lc = " << h << ";\n"
                                  << "Point(1) = {0, 0, 0, lc}; Point(2) = {1, 0, 0, lc};\n"
@@ -182,7 +185,8 @@ void run_gmsh(double h, const char* algo) {
   const double tg = since(g0);
   std::printf("gmsh 4.8.4 -2 -algo %s: %.3f s wall (exit %d); its summary:\n", algo, tg, rc);
   std::system(("grep -E 'Done meshing 2D|nodes .* elements' " + log + " | sed 's/^/  /'").c_str());
-  if (std::strcmp(algo, "meshadapt") == 0) print_msh_quality(dir + "/sq_" + algo + ".msh", h);
+  if (rc == 0) print_msh_quality(dir + "/sq_" + algo + ".msh", h);
+  std::system(("rm -rf " + dir).c_str());
 }
 
 }  // namespace
