@@ -50,7 +50,16 @@ class Adapter {
   /// min rho of v's ball after a collapse onto w, or -1 when a new edge
   /// would be too long; ring_ holds v's ring.
   double collapse_quality(VertexId w) const;
-  std::uint64_t smooth_pass();
+  /// Swaps for quality from the edges of the triangles round the dirty
+  /// vertices (all edges when `all`); swapped corners become dirty.
+  std::uint64_t swap_pass(bool all);
+  /// Smooths the dirty vertices (all when `all`) and clears them; a vertex
+  /// that moved by more than 1% of its size dirties its neighbours for the
+  /// next round, so quiet regions stop costing time.
+  std::uint64_t smooth_pass(bool all);
+  void touch(VertexId v) {
+    if (!dirty_[v.value]) dirty_[v.value] = 1, dirty_list_.push_back(v.value);
+  }
 
   TriangleStore& m_;
   const MeshAdaptOptions& opt_;
@@ -63,6 +72,11 @@ class Adapter {
   std::vector<Vec2> pts_;
   std::vector<double> h_;
   std::vector<std::uint32_t> moved_;
+  std::vector<std::uint8_t> dirty_;        // per vertex: in dirty_list_
+  std::vector<std::uint32_t> dirty_list_;  // vertices whose ball changed
+  std::vector<std::uint32_t> work_;
+  std::vector<std::uint8_t> side_queued_;  // per side: on stack_
+  std::vector<Side> stack_;
 };
 
 void Adapter::evaluate(const std::vector<std::uint32_t>& verts) {
@@ -104,7 +118,9 @@ void Adapter::mark(TriId t) {
 
 void Adapter::mark_ball(VertexId v) {
   vertex_ring(m_, v, ring2_);
-  for (Side x : ring2_) mark(tri_of(x));
+  dirty_.resize(m_.num_vertices(), 0);
+  touch(v);
+  for (Side x : ring2_) mark(tri_of(x)), touch(m_.dest(x)), touch(m_.apex(x));
 }
 
 void Adapter::clear_marks() {
@@ -211,12 +227,58 @@ std::uint64_t Adapter::collapse_pass() {
   return n;
 }
 
-std::uint64_t Adapter::smooth_pass() {
+std::uint64_t Adapter::swap_pass(bool all) {
+  side_queued_.resize(m_.corner.size(), 0);
+  const auto push = [&](Side x) {
+    const Side y = m_.twin[x.value];
+    if (!y.valid() || m_.constrained(x)) return;
+    const Side key = x.value < y.value ? x : y;
+    if (!side_queued_[key.value]) side_queued_[key.value] = 1, stack_.push_back(key);
+  };
+  stack_.clear();
+  if (all) {
+    for (std::uint32_t s = m_.corner.size(); s-- > 0;)
+      if (m_.alive(tri_of(Side{s}))) push(Side{s});
+  } else {
+    std::sort(dirty_list_.begin(), dirty_list_.end());
+    for (std::size_t i = dirty_list_.size(); i-- > 0;) {
+      if (!m_.out_side[dirty_list_[i]].valid()) continue;
+      vertex_ring(m_, VertexId{dirty_list_[i]}, ring_);
+      for (Side x : ring_) push(x), push(next(x)), push(prev(x));
+    }
+  }
+  std::uint64_t n = 0;
+  while (!stack_.empty()) {
+    const Side s = stack_.back();
+    stack_.pop_back();
+    side_queued_[s.value] = 0;
+    if (!(swap_gain(m_, s, pst()) > 1e-6)) continue;
+    const Side e = m_.flip(s);  // d -> c
+    ++n;
+    const Side o = m_.twin[e.value];
+    touch(m_.org(e)), touch(m_.dest(e)), touch(m_.apex(e)), touch(m_.apex(o));
+    push(next(e)), push(prev(e)), push(next(o)), push(prev(o));
+  }
+  res_.stats.swaps += n;
+  return n;
+}
+
+std::uint64_t Adapter::smooth_pass(bool all) {
   // Gauss-Seidel Laplacian: each free vertex moves to the mean of its
   // neighbours when its ball stays counter-clockwise (exact orient2d) and
   // its worst rho does not drop.
+  work_.clear();
+  if (all) {
+    for (std::uint32_t v = 0; v < m_.num_vertices(); ++v) work_.push_back(v);
+  } else {
+    work_.swap(dirty_list_);
+    std::sort(work_.begin(), work_.end());
+  }
+  for (std::uint32_t v : dirty_list_) dirty_[v] = 0;
+  dirty_list_.clear();
+  for (std::uint32_t v : work_) dirty_[v] = 0;
   moved_.clear();
-  for (std::uint32_t v = 0; v < m_.num_vertices(); ++v) {
+  for (std::uint32_t v : work_) {
     if (fixed_[v] || !m_.out_side[v].valid()) continue;
     if (!vertex_ring(m_, VertexId{v}, ring_)) continue;
     Vec2 sum{0, 0};
@@ -232,6 +294,10 @@ std::uint64_t Adapter::smooth_pass() {
     if (!ok || ball_min_rho(ring_, p) < ball_min_rho(ring_, old)) continue;
     m_.xy[v] = p;
     moved_.push_back(v);
+    if (norm(p - old) * inv_h_[v] > 0.01) {
+      touch(VertexId{v});
+      for (Side x : ring_) touch(m_.dest(x));
+    }
   }
   res_.stats.smoothed += moved_.size();
   std::vector<std::uint32_t> moved;
@@ -255,30 +321,28 @@ void Adapter::run() {
     for (std::uint32_t v = 0; v < n_input; ++v) fixed_[v] |= !m_.out_side[v].valid();
   }
   evaluate_from(0);
-  std::uint64_t fewest = ~0ull, previous = 0;
-  bool shrinking = false;
+  dirty_.assign(n_input, 0);
+  std::uint64_t fewest = ~0ull;
   int stalled = 0;
   for (int it = 0; it < opt_.max_iterations && res_.error.empty(); ++it) {
     ++res_.stats.iterations;
     const std::uint64_t split = split_pass();
     if (!res_.error.empty()) break;
     const std::uint64_t collapsed = collapse_pass();
-    res_.stats.swaps += swap_for_quality(m_, 1e-6, ~0ull, pst()).swaps;
-    for (int k = 0; k < opt_.smoothing_passes && res_.error.empty(); ++k) smooth_pass();
+    swap_pass(it == 0);
+    for (int k = 0; k < opt_.smoothing_passes && res_.error.empty(); ++k) smooth_pass(false);
     if (split == 0 && collapsed == 0) break;
-    // Stall detection starts once the changes per round decrease (the
-    // first rounds grow with the mesh).
+    // Stall detection starts once a round changes less than 1% of the
+    // triangles (the refinement front has swept the domain).
     const std::uint64_t changes = split + collapsed;
-    if (changes < previous) shrinking = true;
-    previous = changes;
-    if (!shrinking) continue;
+    if (changes * 100 > m_.num_triangles()) continue;
     if (changes < fewest) fewest = changes, stalled = 0;
     else if (++stalled >= kStallRounds) break;
   }
   if (!res_.error.empty()) return;
   for (int k = 0; k < opt_.smoothing_passes && res_.error.empty(); ++k) {
-    res_.stats.swaps += swap_for_quality(m_, 1e-6, ~0ull, pst()).swaps;
-    smooth_pass();
+    swap_pass(true);
+    smooth_pass(true);
   }
   res_.vertex_map = drop_isolated_vertices(m_, opt_.move_input_vertices ? 0 : n_input);
 }
