@@ -21,16 +21,17 @@ namespace sm {
 enum class Mesh2dAlgorithm { MeshAdapt = 1, Automatic = 2, Del2d = 5, Frontal = 6 };
 
 struct Mesh2dOptions {
-  /// Automatic is del2d. Frontal and MeshAdapt are not written yet: they run del2d and
-  /// leave a warning in the result.
+  /// Del2d: refine_del2d; Frontal: refine_front2d; MeshAdapt: mesh_adapt from the
+  /// boundary mesh; Automatic is Del2d.
   Mesh2dAlgorithm algorithm = Mesh2dAlgorithm::Del2d;
   field::SizePolicyOptions size;                 ///< Mesh.MeshSize*
   const field::SizeField* background = nullptr;  ///< Background Field, if any
   double bbox_diag = 0;      ///< Gmsh's CTX::lc; <= 0: the model's bounding-box diagonal
-  int smoothing = 1;         ///< Mesh.Smoothing: Laplacian passes after refinement
-  /// del2d stops when circumradius / size <= this on every triangle (measured in the
-  /// parameter plane with the size divided by the conformal factor).
-  double radius_limit = 0.76;
+  int smoothing = 1;         ///< Mesh.Smoothing: Laplacian passes (meshadapt: per round)
+  /// del2d / front2d resolve a triangle when circumradius / size <= this (measured in the
+  /// parameter plane with the size divided by the conformal factor). 0: the algorithm's
+  /// default (del2d 0.76, front2d refine.h's 1/sqrt2).
+  double radius_limit = 0;
   std::uint32_t max_vertices_per_face = 0xFFFFFFF0u;
 };
 
