@@ -319,3 +319,27 @@ TEST_CASE("front2d: the world ocean from GSHHG crude shorelines at 150 km in the
   CHECK(st.rho_09 > sd.rho_09 + 0.1);
   CHECK(r.given_up < m.num_triangles() / 200);
 }
+
+TEST_CASE("front2d: a sharp wedge and a narrow notch terminate with a bounded number of points") {
+  // Small input angles and passages narrower than h are where refinement
+  // can cascade; the mesh must stay near the equilateral count for the area.
+  const double h = 0.02, a5 = 5 * M_PI / 180;
+  const std::vector<std::vector<Vec2>> shapes = {
+      {{0, 0}, {1, 0}, {1, std::tan(a5)}},                                    // 5 degree wedge
+      {{0, 0}, {1, 0}, {1, 1}, {0.505, 1}, {0.5, 0.1}, {0.495, 1}, {0, 1}}};  // notch 0.01 wide at the top
+  for (const auto& shape : shapes) {
+    TriangleStore m;
+    const Loop outer = testing::polygon_loop(m, shape, h, false);
+    std::vector<Edge> edges;
+    REQUIRE(testing::boundary_mesh(m, {outer}, &edges));
+    RefineOptions opt;
+    opt.size = h;
+    const FrontalResult r = refine_front2d(m, opt);
+    REQUIRE(r.ok());
+    check_valid(m, edges);
+    const double equilateral = area_of(m) / (std::sqrt(3.0) / 4 * h * h);
+    MESSAGE(shape.size() << " corners: " << m.num_triangles() << " triangles (area / equilateral " << equilateral
+                         << "), circumcentre " << r.circumcentre_fallbacks << ", given up " << r.given_up);
+    CHECK(m.num_triangles() < 1.5 * equilateral + 200);
+  }
+}
