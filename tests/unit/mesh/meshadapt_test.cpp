@@ -10,6 +10,7 @@
 #include "mesh/check.h"
 #include "mesh/meshadapt.h"
 #include "mesh/quality.h"
+#include "testing_coast.h"
 #include "testing_domains.h"
 
 using namespace sm;
@@ -275,4 +276,78 @@ TEST_CASE("meshadapt: embedded points stay; bad sizes are errors, not hangs") {
   CHECK_FALSE(t.ok());
   CHECK(t.error.find("vertex limit") != std::string::npos);
   CHECK(check_topology(b).ok());
+}
+
+TEST_CASE("meshadapt: the world ocean from GSHHG crude shorelines on the sphere (real data)") {
+  // Shorelines resampled every 150 km in the stereographic plane from the
+  // South Pole (Antarctica's ring, round the pole, is the outer loop), the
+  // ocean meshed at delta = 150 km: delta_u = delta / lambda(u).
+  const double step_km = 150, delta = step_km / 6371.0;
+  const auto rings = testing::read_gshhg(std::string(SM_SHARED_DATA) + "/gshhg/world_c.txt");
+  REQUIRE(rings.size() > 100);
+  std::vector<testing::RingCurve> curves;
+  for (const auto& r : rings) curves.emplace_back(r);
+  BoundaryProblem p = testing::coast_problem(curves, step_km);
+  const BoundaryResult br = recover_boundary(p, [&](std::uint32_t c, double t) { return curves[c].at(t); }, {});
+  INFO(br.error.message);
+  REQUIRE(br.ok());
+  std::vector<Loop> loops;
+  for (std::size_t c = 0; c < p.curves.size(); ++c) {
+    Loop l;
+    for (std::size_t k = 0; k + 1 < p.curves[c].pts.size(); ++k) l.v.push_back(VertexId{p.curves[c].pts[k]});
+    l.hole = !rings[c].wraps_pole;
+    loops.push_back(std::move(l));
+  }
+  TriangleStore m = br.mesh;
+  REQUIRE(remove_outside(m, PlanarGeometry{&m.xy}, loops).ok());
+  // The coast edges left (rings inside removed regions went with them).
+  std::vector<Edge> coast;
+  for (std::uint32_t s = 0; s < m.corner.size(); ++s)
+    if (m.alive(tri_of(Side{s})) && m.constrained(Side{s})) coast.push_back({m.org(Side{s}), m.dest(Side{s})});
+  REQUIRE(coast.size() > 1000);
+  const std::uint32_t nb = m.num_vertices();
+  MeshAdaptOptions opt;
+  opt.size_at = [&](std::span<const Vec2> pts, std::span<double> h) {
+    for (std::size_t i = 0; i < pts.size(); ++i) h[i] = delta * (1 + norm2(pts[i])) / 2;
+  };
+  const auto r = mesh_adapt(m, opt);
+  REQUIRE(r.ok());
+  check_adapted(m, coast);
+  const auto on_sphere = [](Vec2 u) {
+    const double r2 = norm2(u);
+    return Vec3{2 * u.x / (1 + r2), 2 * u.y / (1 + r2), (1 - r2) / (1 + r2)};
+  };
+  // Edges with a free end (the coast is as the resampling made it: small
+  // islands are triangles far below delta).
+  std::size_t in = 0, total = 0;
+  for (std::uint32_t s = 0; s < m.corner.size(); ++s) {
+    if (!m.alive(tri_of(Side{s}))) continue;
+    const Side o = m.twin[s];
+    if (o.valid() && o.value < s) continue;
+    if (m.org(Side{s}).value < nb && m.dest(Side{s}).value < nb) continue;
+    const Vec3 a = on_sphere(m.pos(m.org(Side{s}))), b = on_sphere(m.pos(m.dest(Side{s})));
+    const double arc = std::atan2(norm(cross(a, b)), dot(a, b));
+    in += arc >= 0.7 * delta && arc <= 1.4 * delta;
+    ++total;
+  }
+  const QualityStats q = mesh_quality(m);
+  std::size_t open_sea = 0, good = 0;  // triangles away from the coast
+  for (std::uint32_t t = 0; t < m.num_slots(); ++t) {
+    if (!m.alive(TriId{t})) continue;
+    const VertexId a = m.vertex(TriId{t}, 0), b = m.vertex(TriId{t}, 1), c = m.vertex(TriId{t}, 2);
+    if (a.value < nb || b.value < nb || c.value < nb) continue;
+    ++open_sea;
+    good += rho(m.pos(a), m.pos(b), m.pos(c)) > 0.9;
+  }
+  MESSAGE("world ocean at 150 km: " << nb << " coast points, " << m.num_triangles() << " triangles, "
+                                    << r.stats.iterations << " rounds; " << 100.0 * in / total
+                                    << "% of edges with a free end within [0.7, 1.4] delta; rho>0.9 " << q.share_rho_09
+                                    << " (away from the coast " << double(good) / open_sea << ")");
+  CHECK(double(in) / total > 0.95);
+  CHECK(q.share_rho_09 > 0.7);
+  CHECK(double(good) / open_sea > 0.85);
+  // The ocean is about 71% of the sphere: 0.71 * 4 pi / (sqrt3/4 delta^2) equilateral triangles.
+  const double expected = 0.71 * 4 * M_PI / (std::sqrt(3.0) / 4 * delta * delta);
+  CHECK(m.num_triangles() > 0.8 * expected);
+  CHECK(m.num_triangles() < 1.3 * expected);
 }
