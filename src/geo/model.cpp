@@ -42,8 +42,9 @@ void Model::on_delete(int slot, int tag) {
 
 int Model::new_reg() const {
   int m = std::max({max_tag_[1], max_tag_[2], max_tag_[3], max_tag_[kLoopSlot]});
-  for (const auto& [key, g] : physicals_) m = std::max(m, g.tag);
-  return m + 1;
+  // Physical tags count as a high-water mark: Gmsh keeps it when groups are emptied or
+  // deleted (`Delete Physicals;` leaves newreg and the next auto tag where they were).
+  return std::max(m, max_physical_tag_) + 1;
 }
 
 int Model::new_curve_tag() const { return options_.old_new_reg ? new_reg() : max_tag_[1] + 1; }
@@ -426,11 +427,7 @@ GeoResult<int> Model::add_physical(int dim, std::optional<int> tag, const std::s
     // largest physical tag of any dimension.
     for (const auto& [key, g] : physicals_)
       if (g.dim == dim && g.name == name) t = g.tag;
-    if (!t) {
-      int m = 0;
-      for (const auto& [key, g] : physicals_) m = std::max(m, g.tag);
-      t = m + 1;
-    }
+    if (!t) t = max_physical_tag_ + 1;
   }
   auto it = physicals_.find({dim, t});
   if (op == PhysicalOp::Assign) {
@@ -443,6 +440,7 @@ GeoResult<int> Model::add_physical(int dim, std::optional<int> tag, const std::s
     g.name = name;
     g.entities = entities;
     physicals_.emplace(std::make_pair(dim, t), std::move(g));
+    max_physical_tag_ = std::max(max_physical_tag_, t);
     return t;
   }
   if (it == physicals_.end()) {
@@ -452,6 +450,7 @@ GeoResult<int> Model::add_physical(int dim, std::optional<int> tag, const std::s
     g.tag = t;
     g.name = name;
     it = physicals_.emplace(std::make_pair(dim, t), std::move(g)).first;
+    max_physical_tag_ = std::max(max_physical_tag_, t);
   }
   auto& list = it->second.entities;
   if (op == PhysicalOp::Add) {

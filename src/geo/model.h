@@ -125,6 +125,9 @@ class Model {
   /// the group's tag (Gmsh's auto-tag: 1 + the largest physical tag, all dimensions).
   GeoResult<int> add_physical(int dim, std::optional<int> tag, const std::string& name,
                               const std::vector<int>& entities, PhysicalOp op = PhysicalOp::Assign);
+  /// "Delete Physicals;": every group goes; newreg and the next auto tag keep counting from
+  /// the largest physical tag used so far, as in Gmsh.
+  void clear_physicals() { physicals_.clear(); }
   /// "Point{...} In Surface{s};" (dim 0) and "Curve{...} In Surface{s};" (dim 1).
   GeoStatus embed(int dim, const std::vector<int>& tags, int surface);
   /// "MeshSize{points} = lc;"
@@ -220,7 +223,7 @@ class Model {
   int current_geometry_ = 0;
   // High-water marks as Gmsh keeps them: slots 0..3 = dims, 4 = curve loops.
   std::array<int, 5> max_tag_{0, 0, 0, 0, 0};
-  int max_physical_tag_ = 0;
+  int max_physical_tag_ = 0;   // high-water mark of physical group tags (newreg, auto tags)
 };
 
 }  // namespace sm::geo
