@@ -346,9 +346,10 @@ void Interpreter::exec_delete(const Stmt& s, const DeleteStmt& d) {
       // start again at 1.
       kernel_ = KernelState{};
       return;
+    case DeleteWhat::Physicals: kernel_.model.clear_physicals(); return;
     default: break;
   }
-  // Physicals (the kernel cannot drop groups yet) and Meshes.
+  // Meshes.
   std::string what = "Delete";
   switch (d.what) {
     case DeleteWhat::Model: what = "Delete Model"; break;
