@@ -11,6 +11,7 @@
 
 #include "cli/args.h"
 #include "field/registry.h"
+#include "interp/builtins/mesh_commands.h"
 #include "interp/interpreter.h"
 #include "interp/script_test.h"
 
@@ -111,17 +112,15 @@ int run(const std::vector<std::string>& argv) {
     if (interp.run_file(f) == sm::interp::RunStatus::Errors) errors = true;
     if (errors || interp.stopped()) break;
   }
+  // -1: mesh what the scripts built and write it (unless they failed or called Exit).
+  if (!errors && !interp.stopped() && interp.exit_request() < 0 && a.mesh_dim >= 1 && !a.files.empty() &&
+      !sm::interp::mesh_from_command_line(interp, a.mesh_dim, a.output, a.format, a.files.front()))
+    errors = true;
   std::cout.flush();
   const bool warnings = interp.options().number("General.Verbosity") >= 2;
   print_diagnostics(diags, warnings);
   if (interp.exit_request() >= 0) return interp.exit_request();
   if (errors) return kExitScriptError;
-  if (a.mesh_dim >= 1) {
-    // Meshing arrives with the mesh issue; say so instead of writing nothing.
-    std::fprintf(stderr, "stereomesh: error: meshing ('-%d') is not available yet; use -0 to evaluate only\n",
-                 a.mesh_dim);
-    return kExitScriptError;
-  }
   return kExitOk;
 }
 

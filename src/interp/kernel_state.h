@@ -15,6 +15,7 @@
 #include "geo/model.h"
 #include "interp/value.h"
 #include "lang/source.h"
+#include "mesh/model_mesh.h"
 
 namespace sm::interp {
 
@@ -49,6 +50,8 @@ struct KernelState {
   std::map<std::string, Value, std::less<>> gshhs_plugin_options;
   /// (dim, tag) -> the statement that created the entity (provenance).
   std::map<std::pair<int, int>, lang::SourceRange> created_at;
+  /// The mesh of the last `Mesh n;` (builtins/mesh_commands.cpp), what `Save` writes.
+  std::shared_ptr<const ModelMesh> mesh;
 };
 
 }  // namespace sm::interp

@@ -288,6 +288,12 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
     if (ve->lc < geo::kMaxLc) lc1 = ve->lc;
     const field::EntityRef on{1, tag};
     const bool curvature = opt.size.from_curvature > 0;
+    // Gmsh 4.8.4 integrates a Bezier curve of degree d with |X'| / d (measured: a
+    // 3-point Bezier of length 3 at lc 0.1 gets 16 segments, a 6-point one 7), so its
+    // node count is d times smaller than the sizes ask; we follow it for compatibility.
+    const double stretch = shape.kind() == geo::CurveKind::Bezier
+                               ? static_cast<double>(std::max<std::size_t>(1, shape.control_xyz().size() - 1))
+                               : 1.0;
     auto size = [&](std::span<const double> t, std::span<const geo::Jet3> jets, std::span<double> h) {
       if (opt.background) {
         pts.resize(t.size());
@@ -307,7 +313,7 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
           const double d = norm(jets[i].d1);
           q.curvature = d > 0 ? norm(cross(jets[i].d1, jets[i].d2)) / (d * d * d) : 0.0;
         }
-        h[i] = field::final_size(opt.size, q).size;
+        h[i] = stretch * field::final_size(opt.size, q).size;
       }
     };
     const CurvePrimitive prim = integrate_curve(shape, size, opt.rel_tolerance, opt.abs_tolerance);
@@ -335,7 +341,16 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
     std::map<int, PlaneGroup> groups;   // geometry tag -> curves; 0: Euclidean z = const
     bool euclid_planar = true;
     std::optional<double> euclid_z;
+    std::vector<int> in_surface;   // curves bounding or embedded in a surface
+    for (const auto& [stag, s] : model.surfaces()) {
+      for (int l : s.loops)
+        if (const geo::ModelCurveLoop* loop = model.curve_loop(std::abs(l)))
+          for (int c : loop->curves) in_surface.push_back(std::abs(c));
+      in_surface.insert(in_surface.end(), s.embedded_curves.begin(), s.embedded_curves.end());
+    }
+    std::sort(in_surface.begin(), in_surface.end());
     for (const auto& [tag, mc] : model.curves()) {
+      if (!opt.repair_all_curves && !std::binary_search(in_surface.begin(), in_surface.end(), tag)) continue;
       const int key = mc.shape->on_surface() ? mc.geometry : 0;
       if (key == 0) {
         for (std::uint32_t n : mesh.curves.at(tag).nodes) {

@@ -27,6 +27,9 @@ struct Mesh1dOptions {
   double rel_tolerance = 1e-4;
   double abs_tolerance = 1e-6;
   bool repair_intersections = true;  ///< the paper's section 3.2 repair loop
+  /// Which curves the repair sees: those bounding or embedded in a surface (what the 2D
+  /// mesher needs; Gmsh's 1D mesh of free curves ignores crossings), or every curve.
+  bool repair_all_curves = false;
   std::uint32_t max_repair_rounds = 200;
 };
 

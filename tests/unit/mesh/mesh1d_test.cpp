@@ -31,6 +31,7 @@ class LinearZField : public field::SizeField {
 
 Mesh1dOptions fields_only(const field::SizeField* f) {
   Mesh1dOptions o;
+  o.repair_all_curves = true;
   o.background = f;
   o.size.from_points = false;
   return o;
@@ -224,6 +225,7 @@ TEST_CASE("mesh1d: two islands almost touching are repaired by splitting (paper 
   const int b = add_ring(m, circle_ring(1.4, 0, 0.3, 24));
   const double h = 2.0 * geo::kDegToRad;
   Mesh1dOptions opt;
+  opt.repair_all_curves = true;
   opt.size.from_points = false;
   opt.size.max = h;
   Mesh1dOptions no_repair = opt;
@@ -262,6 +264,7 @@ TEST_CASE("mesh1d: a self-intersecting coastline fails with the curves and the p
   }
   const int c = add_ring(m, ring);
   Mesh1dOptions opt;
+  opt.repair_all_curves = true;
   opt.size.from_points = false;
   opt.size.max = 0.5 * geo::kDegToRad;
   const Mesh1dResult r = mesh_curves(m, opt);
@@ -280,6 +283,7 @@ TEST_CASE("mesh1d: two crossing coastlines name both curves") {
   const int a = add_ring(m, circle_ring(0, 0, 1.0, 16));
   const int b = add_ring(m, circle_ring(1.5, 0, 1.0, 16));
   Mesh1dOptions opt;
+  opt.repair_all_curves = true;
   opt.size.from_points = false;
   opt.size.max = 0.2 * geo::kDegToRad;
   const Mesh1dResult r = mesh_curves(m, opt);
@@ -288,4 +292,53 @@ TEST_CASE("mesh1d: two crossing coastlines name both curves") {
   CHECK(std::min(r.error.curve_a, r.error.curve_b) == a);
   CHECK(std::max(r.error.curve_a, r.error.curve_b) == b);
   CHECK(r.error.where.lon == doctest::Approx(0.75).epsilon(0.02));
+}
+
+TEST_CASE("mesh1d: only curves of surfaces are repaired unless asked") {
+  geo::Model m = sphere_model();
+  const int a = add_ring(m, circle_ring(0, 0, 1.0, 16));
+  const int b = add_ring(m, circle_ring(1.5, 0, 1.0, 16));
+  Mesh1dOptions opt;
+  opt.size.from_points = false;
+  opt.size.max = 0.2 * geo::kDegToRad;
+  // Free curves: Gmsh meshes crossing curves without complaint, and so do we.
+  CHECK(mesh_curves(m, opt).ok());
+  // As holes of a surface they must not cross.
+  REQUIRE(m.add_point(m.new_point_tag(), {-1, -1, 0}).ok());
+  const int p0 = m.new_point_tag() - 1;
+  REQUIRE(m.add_point(p0 + 1, {1, -1, 0}).ok());
+  REQUIRE(m.add_point(p0 + 2, {1, 1, 0}).ok());
+  REQUIRE(m.add_point(p0 + 3, {-1, 1, 0}).ok());
+  const int c0 = m.new_curve_tag();
+  for (int i = 0; i < 4; ++i) REQUIRE(m.add_curve(c0 + i, geo::CurveKind::Line, {p0 + i, p0 + (i + 1) % 4}).ok());
+  REQUIRE(m.add_curve_loop(1, {c0, c0 + 1, c0 + 2, c0 + 3}).ok());
+  REQUIRE(m.add_curve_loop(2, {a}).ok());
+  REQUIRE(m.add_curve_loop(3, {b}).ok());
+  const geo::GeoStatus st = m.add_plane_surface(1, {1, 2, 3});
+  if (!st.ok()) {
+    // The geometry kernel may itself refuse overlapping holes; then embed them instead.
+    REQUIRE(m.add_plane_surface(1, {1}).ok());
+    REQUIRE(m.embed(1, {a, b}, 1).ok());
+  }
+  const Mesh1dResult r = mesh_curves(m, opt);
+  REQUIRE_FALSE(r.ok());
+  CHECK(r.error.kind == Mesh1dErrorKind::Intersection);
+}
+
+TEST_CASE("mesh1d: Bezier node counts as gmsh 4.8.4 (|X'| divided by the degree)") {
+  // Control points (3 i / (n-1), 0.3 (i % 2)) at lc 0.1; gmsh 4.8.4 -1 gives these totals
+  // (n points + the curve's interior nodes).
+  const int expected[] = {32, 18, 14, 12, 12};
+  for (int n = 2; n <= 6; ++n) {
+    geo::Model m;
+    std::vector<int> ids;
+    for (int i = 0; i < n; ++i) {
+      REQUIRE(m.add_point(i + 1, {3.0 * i / (n - 1), 0.3 * (i % 2), 0}, 0.1).ok());
+      ids.push_back(i + 1);
+    }
+    REQUIRE(m.add_curve(1, geo::CurveKind::Bezier, ids).ok());
+    const Mesh1dResult r = mesh_curves(m, {});
+    REQUIRE(r.ok());
+    CHECK(r.mesh.nodes.size() == static_cast<std::size_t>(expected[n - 2]));
+  }
 }
