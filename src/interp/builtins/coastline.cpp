@@ -339,7 +339,7 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
     for (std::size_t c = 0; c < loop.curves.size(); ++c) {
       const coast::CoastCurve& cc = m.curves[loop.curves[c]];
       start[c] = pts.size();
-      const std::size_t n = cc.periodic ? cc.uv.size() : cc.uv.size() - 1;
+      const std::size_t n = cc.periodic || cc.uv.empty() ? cc.uv.size() : cc.uv.size() - 1;
       for (std::size_t i = 0; i < n; ++i) {
         const int tag = model.new_point_tag();
         check_geo(in, at, model.add_point_on_geometry(tag, g, cc.uv[i]));
@@ -347,6 +347,9 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
         pts.push_back(tag);
       }
     }
+    if (pts.size() < 2)   // the kernel never returns such a loop; refuse it rather than guess
+      in.fail_fmt(at, Diag::CoastlineError,
+                  fmt::format("Coastline[{}]: the import produced a loop with {} point(s)", id, pts.size()));
     std::vector<int> curves;
     for (std::size_t c = 0; c < loop.curves.size(); ++c) {
       const coast::CoastCurve& cc = m.curves[loop.curves[c]];
