@@ -516,3 +516,73 @@ TEST_CASE("mesh2d: world ocean north of 60S from GSHHG crude, shore distance 30 
   check_same(a.mesh, again);
   }
 }
+
+TEST_CASE("mesh2d: two faces sharing a curve share its nodes and conform along it") {
+  geo::Model m;
+  REQUIRE(m.add_point(1, {0, 0, 0}, 0.05).ok());
+  REQUIRE(m.add_point(2, {1, 0, 0}, 0.05).ok());
+  REQUIRE(m.add_point(3, {1, 1, 0}, 0.05).ok());
+  REQUIRE(m.add_point(4, {0, 1, 0}, 0.05).ok());
+  REQUIRE(m.add_point(5, {2, 0, 0}, 0.1).ok());
+  REQUIRE(m.add_point(6, {2, 1, 0}, 0.1).ok());
+  REQUIRE(m.add_curve(1, geo::CurveKind::Line, {1, 2}).ok());
+  REQUIRE(m.add_curve(2, geo::CurveKind::Line, {2, 3}).ok());   // shared
+  REQUIRE(m.add_curve(3, geo::CurveKind::Line, {3, 4}).ok());
+  REQUIRE(m.add_curve(4, geo::CurveKind::Line, {4, 1}).ok());
+  REQUIRE(m.add_curve(5, geo::CurveKind::Line, {2, 5}).ok());
+  REQUIRE(m.add_curve(6, geo::CurveKind::Line, {5, 6}).ok());
+  REQUIRE(m.add_curve(7, geo::CurveKind::Line, {6, 3}).ok());
+  REQUIRE(m.add_curve_loop(1, {1, 2, 3, 4}).ok());
+  REQUIRE(m.add_curve_loop(2, {5, 6, 7, -2}).ok());
+  REQUIRE(m.add_plane_surface(1, {1}).ok());
+  REQUIRE(m.add_plane_surface(2, {2}).ok());
+  for (Mesh2dAlgorithm alg : kAlgorithms) {
+    CAPTURE(name_of(alg));
+    Mesh2dOptions o2;
+    o2.algorithm = alg;
+    const Meshed a = mesh_model(m, {}, o2);
+    check_face(m, a.mesh, 1);
+    check_face(m, a.mesh, 2);
+    check_ccw_xy(a.mesh, 1);
+    check_ccw_xy(a.mesh, 2);
+    // The union is one conforming mesh: no directed edge twice, the shared curve's edges
+    // seen once from each face.
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
+    for (int s : {1, 2})
+      for (const Tri& t : a.mesh.surfaces.at(s).triangles)
+        for (int e = 0; e < 3; ++e) REQUIRE(++directed[{t[e], t[(e + 1) % 3]}] == 1);
+    const CurveMesh& shared = a.mesh.curves.at(2);
+    REQUIRE(shared.nodes.size() > 10);
+    for (std::size_t k = 0; k + 1 < shared.nodes.size(); ++k) {
+      CHECK(directed.count({shared.nodes[k], shared.nodes[k + 1]}) == 1);
+      CHECK(directed.count({shared.nodes[k + 1], shared.nodes[k]}) == 1);
+    }
+  }
+}
+
+TEST_CASE("mesh2d: a face in a tilted plane is meshed in that plane") {
+  // The square (0,0,0) (1,0,1) (1,1,1) (0,1,0): the plane x = z.
+  geo::Model m;
+  REQUIRE(m.add_point(1, {0, 0, 0}, 0.05).ok());
+  REQUIRE(m.add_point(2, {1, 0, 1}, 0.05).ok());
+  REQUIRE(m.add_point(3, {1, 1, 1}, 0.05).ok());
+  REQUIRE(m.add_point(4, {0, 1, 0}, 0.05).ok());
+  for (int i = 0; i < 4; ++i) REQUIRE(m.add_curve(i + 1, geo::CurveKind::Line, {i + 1, (i + 1) % 4 + 1}).ok());
+  REQUIRE(m.add_curve_loop(1, {1, 2, 3, 4}).ok());
+  REQUIRE(m.add_plane_surface(1, {1}).ok());
+  const Meshed a = mesh_model(m, {}, {});
+  check_face(m, a.mesh, 1);
+  // Newell normal of the loop: (-1, 0, 1) / sqrt2; every triangle faces that way.
+  const Vec3 n{-1 / std::sqrt(2.0), 0, 1 / std::sqrt(2.0)};
+  double area = 0;
+  for (const Tri& t : a.mesh.surfaces.at(1).triangles) {
+    const Vec3 p = a.mesh.nodes[t[0]].xyz, q = a.mesh.nodes[t[1]].xyz, r = a.mesh.nodes[t[2]].xyz;
+    const Vec3 c = cross(q - p, r - p);
+    CHECK(dot(c, n) > 0.999 * norm(c));
+    area += 0.5 * norm(c);
+  }
+  CHECK(area == doctest::Approx(std::sqrt(2.0)).epsilon(1e-9));
+  for (std::uint32_t v : a.mesh.surfaces.at(1).interior_nodes) CHECK(std::abs(a.mesh.nodes[v].xyz.x - a.mesh.nodes[v].xyz.z) < 1e-12);
+  const MeshStats st = mesh_stats(a.mesh, [](std::span<const Vec3>, std::span<double> h) { std::fill(h.begin(), h.end(), 0.05); });
+  CHECK(st.share_len_07_14 >= 0.95);
+}
