@@ -184,6 +184,7 @@ void run_gmsh(double h, const char* algo) {
                               ".msh > " + log + " 2>&1").c_str());
   const double tg = since(g0);
   std::printf("gmsh 4.8.4 -2 -algo %s: %.3f s wall (exit %d); its summary:\n", algo, tg, rc);
+  std::fflush(stdout);
   std::system(("grep -E 'Done meshing 2D|nodes .* elements' " + log + " | sed 's/^/  /'").c_str());
   if (rc == 0) print_msh_quality(dir + "/sq_" + algo + ".msh", h);
   std::system(("rm -rf " + dir).c_str());
