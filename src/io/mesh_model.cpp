@@ -1,6 +1,9 @@
 // Small helpers of the writer-facing mesh description.
 #include "io/mesh_model.h"
 
+#include <algorithm>
+#include <utility>
+
 #include <fmt/format.h>
 
 #include "base/check.h"
@@ -29,13 +32,17 @@ std::size_t MeshModel::element_count() const {
 std::string validate_mesh_model(const MeshModel& m) {
   if (m.xyz.size() >= kNoOwner) return "too many nodes for 32-bit node indices";
   std::vector<std::uint32_t> owner(m.xyz.size(), kNoOwner);
+  // Sorted (dim, tag) pairs: a world 1D mesh has ~10^5 point entities.
+  std::vector<std::pair<int, int>> keys;
+  keys.reserve(m.entities.size());
+  for (const EntityMesh& e : m.entities) keys.emplace_back(e.dim, e.tag);
+  std::sort(keys.begin(), keys.end());
+  if (const auto d = std::adjacent_find(keys.begin(), keys.end()); d != keys.end())
+    return fmt::format("entity (dim {}, tag {}) listed twice", d->first, d->second);
   for (std::size_t i = 0; i < m.entities.size(); ++i) {
     const EntityMesh& e = m.entities[i];
     if (e.dim < 0 || e.dim > 3 || e.tag <= 0)
       return fmt::format("invalid entity (dim {}, tag {})", e.dim, e.tag);
-    for (std::size_t j = 0; j < i; ++j)
-      if (m.entities[j].dim == e.dim && m.entities[j].tag == e.tag)
-        return fmt::format("entity (dim {}, tag {}) listed twice", e.dim, e.tag);
     for (std::uint32_t n : e.nodes) {
       if (n >= m.xyz.size()) return fmt::format("entity ({}, {}) owns node {} out of range", e.dim, e.tag, n);
       if (owner[n] != kNoOwner)

@@ -25,7 +25,7 @@ struct Mesh1dOptions {
   /// Adaptive trapezoid: an interval is halved while its trapezoid and its two halves
   /// differ by more than rel * (its integral) + abs (in elements).
   double rel_tolerance = 1e-4;
-  double abs_tolerance = 1e-6;
+  double abs_tolerance = 1e-5;
   bool repair_intersections = true;  ///< the paper's section 3.2 repair loop
   /// Which curves the repair sees: those bounding or embedded in a surface (what the 2D
   /// mesher needs; Gmsh's 1D mesh of free curves ignores crossings), or every curve.
@@ -45,7 +45,7 @@ struct CurvePrimitive {
 };
 
 CurvePrimitive integrate_curve(const geo::Curve& c, const CurveSizeFn& size, double rel_tolerance = 1e-4,
-                               double abs_tolerance = 1e-6);
+                               double abs_tolerance = 1e-5);
 
 /// Gmsh's node count N = max(min_segments + 1, int(a + 1.99)) and parameters of the N
 /// nodes at equal increments a/(N-1) of the primitive (first 0, last 1).
