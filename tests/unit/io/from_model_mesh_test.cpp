@@ -78,3 +78,15 @@ TEST_CASE("from_model_mesh: physical groups select what MSH 4.1 and 2.2 write, a
   CHECK(v22.find("$Nodes\n9\n") != std::string::npos);
   CHECK(v22.find("$Elements\n9\n1 15 2 7 5 2\n") != std::string::npos);
 }
+
+TEST_CASE("from_model_mesh: the same script meshes to the same bytes") {
+  const geo::Model m = square_model(true);
+  io::MshOptions o;
+  o.save_parametric = true;
+  const Mesh1dResult a = mesh_curves(m, {}), b = mesh_curves(m, {});
+  REQUIRE(a.ok());
+  REQUIRE(b.ok());
+  const std::string sa = io::msh_to_string(io::from_model_mesh(m, a.mesh), o);
+  CHECK(sa == io::msh_to_string(io::from_model_mesh(m, b.mesh), o));
+  CHECK(sa.size() > 200);
+}
