@@ -59,8 +59,14 @@ struct Chain {
 
 class FaceMesher {
  public:
-  FaceMesher(const geo::Model& model, ModelMesh& mesh, const Mesh2dOptions& opt, double bbox, Mesh2dResult& res)
-      : model_(model), mesh_(mesh), opt_(opt), bbox_(bbox), res_(res) {}
+  /// local_of: global node -> local vertex, all kNoLocal; left so again on return.
+  FaceMesher(const geo::Model& model, ModelMesh& mesh, const Mesh2dOptions& opt, double bbox, Mesh2dResult& res,
+             std::vector<std::uint32_t>& local_of)
+      : model_(model), mesh_(mesh), opt_(opt), bbox_(bbox), res_(res), local_of_(local_of) {}
+  ~FaceMesher() {
+    for (std::uint32_t node : global_)
+      if (node < local_of_.size()) local_of_[node] = kNoLocal;
+  }
   bool run(const geo::ModelSurface& s);
 
  private:
@@ -83,7 +89,7 @@ class FaceMesher {
   std::vector<std::uint32_t> emb_points_;     // global nodes
   std::vector<Chain> emb_curves_;             // open chains (edge i joins nodes i, i+1)
   std::vector<std::uint32_t> global_;         // local vertex -> global node
-  std::vector<std::uint32_t> local_of_;       // global node -> local vertex (scratch)
+  std::vector<std::uint32_t>& local_of_;      // global node -> local vertex (shared scratch)
   TriangleStore m_;
   // Extension of the boundary sizes into the face: the recovered boundary triangulation,
   // per vertex the mean length of its boundary edges (inf: none), a walk hint.
@@ -311,7 +317,8 @@ bool FaceMesher::run(const geo::ModelSurface& s) {
   if (!collect_loops(s) || !make_plane()) return false;
 
   // Local vertices: loops, embedded curves, embedded points (first occurrence order).
-  local_of_.assign(mesh_.nodes.size(), kNoLocal);
+  // The scratch map is shared by all faces and reset entry by entry (O(face) per face).
+  local_of_.resize(mesh_.nodes.size(), kNoLocal);
   std::vector<Loop> loops;
   std::vector<Edge> edges;
   std::vector<int> edge_curve;
@@ -458,8 +465,9 @@ double model_bbox(const geo::Model& model, double given) {
 Mesh2dResult mesh_surfaces(const geo::Model& model, ModelMesh& mesh, const Mesh2dOptions& opt) {
   Mesh2dResult res;
   const double bbox = model_bbox(model, opt.bbox_diag);
+  std::vector<std::uint32_t> local_of;
   for (const auto& [tag, s] : model.surfaces()) {
-    FaceMesher fm(model, mesh, opt, bbox, res);
+    FaceMesher fm(model, mesh, opt, bbox, res, local_of);
     if (!fm.run(s)) return res;
   }
   mesh.dim = std::max(mesh.dim, 2);

@@ -586,3 +586,41 @@ TEST_CASE("mesh2d: a face in a tilted plane is meshed in that plane") {
   const MeshStats st = mesh_stats(a.mesh, [](std::span<const Vec3>, std::span<double> h) { std::fill(h.begin(), h.end(), 0.05); });
   CHECK(st.share_len_07_14 >= 0.95);
 }
+
+TEST_CASE("mesh2d: a non-planar boundary and an embedded curve crossing the boundary are located errors") {
+  {
+    geo::Model m;
+    REQUIRE(m.add_point(1, {0, 0, 0}, 0.2).ok());
+    REQUIRE(m.add_point(2, {1, 0, 0}, 0.2).ok());
+    REQUIRE(m.add_point(3, {1, 1, 0.3}, 0.2).ok());
+    REQUIRE(m.add_point(4, {0, 1, 0}, 0.2).ok());
+    for (int i = 0; i < 4; ++i) REQUIRE(m.add_curve(i + 1, geo::CurveKind::Line, {i + 1, (i + 1) % 4 + 1}).ok());
+    REQUIRE(m.add_curve_loop(1, {1, 2, 3, 4}).ok());
+    REQUIRE(m.add_plane_surface(1, {1}).ok());
+    Mesh1dResult r1 = mesh_curves(m, {});
+    REQUIRE(r1.ok());
+    const Mesh2dResult r2 = mesh_surfaces(m, r1.mesh, {});
+    CHECK_FALSE(r2.ok());
+    CHECK(r2.error.surface == 1);
+    CHECK(r2.error.message.find("not planar") != std::string::npos);
+  }
+  {
+    geo::Model m;
+    const int outer = add_square(m, 0, 0, 1, 1, 0.1, true);
+    REQUIRE(m.add_point(100, {0.5, 0.5, 0}, 0.1).ok());
+    REQUIRE(m.add_point(101, {1.5, 0.53, 0}, 0.1).ok());
+    REQUIRE(m.add_curve(100, geo::CurveKind::Line, {100, 101}).ok());
+    REQUIRE(m.add_plane_surface(1, {outer}).ok());
+    REQUIRE(m.embed(1, {100}, 1).ok());
+    Mesh1dOptions o1;
+    o1.repair_intersections = false;   // leave the crossing for 2D to find
+    Mesh1dResult r1 = mesh_curves(m, o1);
+    REQUIRE(r1.ok());
+    const Mesh2dResult r2 = mesh_surfaces(m, r1.mesh, {});
+    CHECK_FALSE(r2.ok());
+    CHECK(r2.error.surface == 1);
+    CHECK(r2.error.message.find("cross") != std::string::npos);
+    CHECK(r2.error.message.find("near (") != std::string::npos);
+    CHECK(r1.mesh.surfaces.empty());
+  }
+}
