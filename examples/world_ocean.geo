@@ -1,0 +1,99 @@
+// Figures 9-10 of Lambrechts et al. (2008), section 4.1: the World Ocean on the sphere,
+// meshed in the stereographic plane of a PolarSphere projected from the South Pole
+// (Antarctica's coast is the outer loop). Size field (section 3.1), all three criteria:
+//   shore proximity: 30 km on the coast to 200 km at 500 km from it,
+//   wavelength from the ETOPO5 bathymetry: lambda_min / N sqrt(H_ref / H), 25-500 km,
+//   bathymetry Hessian: 1 / sqrt(|lambda_max|) of H / H_ref, 25-500 km,
+// combined by a Min. Coastlines: GSHHG 2.3.7 intermediate (islands >= 100 km^2), coarsened
+// to the accuracy gamma = CoastAccuracy (30 km, the smallest mesh size near the coast).
+//   stereomesh -0 examples/world_ocean.geo              (evaluate and check)
+//   stereomesh -2 examples/world_ocean.geo -o world.msh (mesh, once Mesh 2 is available)
+// Smaller settings (tests/scripts/examples/world_ocean_coarse.geo): -setnumber CoastAccuracy
+// 200e3 -setstring CoastFile world_l.txt -setstring BathyName etopo5_global_1deg.nc.
+// Paper: 436,409 triangles in 35 s (whole process). docs/examples.md has our numbers.
+// The paper gives the criteria's ranges but not lambda_min / N; 50 km where the ocean is
+// 4000 m deep (f1 grows where it is shallower: sqrt(H_ref / H)) brings the open ocean to
+// about the paper's mean size. Set before the Include: ocean_fields.geo's DefineConstant
+// keeps it.
+DefineConstant[ WaveLengthMin = 500e3 ];
+Include "earth.geo";
+Include "ocean_fields.geo";
+Include "regions.geo";
+
+DefineConstant[ CoastAccuracy = 30e3, CoastFile = "world_i_A100.txt",
+                BathyName = "etopo5_global_0.25deg.nc", Quiet = 0, DoMesh = 0 ];
+// DoMesh = 1 runs the `Mesh 2; Save` part at the end (stereomesh -0 ... -setnumber DoMesh 1);
+// it is off by default while `Mesh 2` is not available in stereomesh yet.
+
+Call EarthSphere;
+
+Field[1] = MathEval;
+Field[1].F = Sprintf("%.17g", CoastAccuracy);
+Coastline[1] = LonLatText;
+Coastline[1].FileName = StrCat(GshhgDir, CoastFile);
+Coastline[1].AccuracyField = 1;
+Coastline[1].AntarcticaLevel = 5;            // the ice front, as GSHHS level 5
+
+OceanLoops[] = Coastline{1};
+OceanLoopsPerSurface[] = Coastline{1, "LoopsPerSurface"};
+counts[] = Coastline{1, "ControlPoints"};
+Call OceanSurfaces;
+Physical Surface("ocean") = {OceanSurfaces[]};
+Physical Curve("coast") = Coastline{1, "Curves"};
+
+// The criteria, with the paper's values (ocean_fields.geo's defaults, WaveLengthMin above).
+ShorePoints[] = Coastline{1, "Points"};
+Call ShoreProximity;
+BathyFile = StrCat(BathyDir, BathyName);
+Call WaveLength;
+Call BathyHessian;
+OceanFields[] = {ShoreField, WaveField, HessianField};
+Call OceanSize;
+
+// Figures we can check before meshing.
+islands = OceanLoopsPerSurface[0] - 1;   // holes of the World Ocean
+seas = #OceanSurfaces[];
+points = 0;
+For i In {0 : #counts[] - 1}
+  points += counts[i];
+EndFor
+If (!Quiet)
+  Printf("gamma %g km: %g sea(s), %g islands, %g control points", CoastAccuracy / Km, seas,
+         islands, points);
+EndIf
+// The Pacific (Antarctica's ice front as the outer loop) is one connected ocean with the
+// Atlantic and the Indian Ocean: the largest surface holds every continent as a hole.
+Assert(seas >= 1 && OceanLoopsPerSurface[0] > 3, "the World Ocean surface has no islands");
+
+// Size at known places (FieldValue at 3D points of the sphere, metres).
+// Mid-Pacific, 5 km deep, more than 500 km from any coast: 50 km sqrt(4000 / 5000) from
+// the wavelength, unless the Hessian of a seamount asks for less; never the shore.
+lon = -140; lat = 10; Call LonLatToXYZ;
+pacific = FieldValue(SizeField, x, y, z);
+pacific_by = FieldArgmin(MinSizeField, x, y, z);
+pacific_wave = FieldValue(WaveField, x, y, z);
+// On the Dogger Bank in the North Sea (20-40 m deep) f1 is large (coarse); the shore
+// criterion (about 150 km offshore) decides.
+lon = 2.5; lat = 55; Call LonLatToXYZ;
+shelf = FieldValue(SizeField, x, y, z);
+shelf_by = FieldArgmin(MinSizeField, x, y, z);
+shelf_wave = FieldValue(WaveField, x, y, z);
+// On a coast point the shore criterion gives its ShoreSizeMin (30 km).
+xyz[] = Point{ShorePoints[0]};
+coast = FieldValue(SizeField, xyz[0], xyz[1], xyz[2]);
+If (!Quiet)
+  Printf("size: mid-Pacific %.1f km (wavelength %.1f km), Dogger Bank %.1f km (wavelength %.0f km), coast %.1f km",
+         pacific / Km, pacific_wave / Km, shelf / Km, shelf_wave / Km, coast / Km);
+EndIf
+Assert(pacific_wave > 40e3 && pacific_wave < 55e3, "mid-Pacific wavelength size %g m", pacific_wave);
+Assert(pacific_by != ShoreField && pacific <= pacific_wave, "the shore criterion acts 500 km offshore");
+Assert(shelf_wave > 200e3 && shelf_by == ShoreField, "shelf: wavelength %g m, criterion field %g",
+       shelf_wave, shelf_by);
+Assert(Fabs(coast - ShoreSizeMin) < 1, "size on the coast %g m", coast);
+
+If (DoMesh)
+  Mesh 2;
+  // after meshing: Assert(Mesh.NbTriangles > 300000 && Mesh.NbTriangles < 600000);
+  //   (the paper: 436,409 triangles)
+  Save "world_ocean.msh";
+EndIf

@@ -1,0 +1,148 @@
+// The paper's mesh size criteria (Lambrechts et al. 2008, section 3.1) as macros driven by
+// variables: shore proximity, gravity-wave wavelength from the bathymetry (f1) and the
+// bathymetry Hessian (f2), each clamped by a Threshold, combined by a Min.
+//
+//   Include "earth.geo";  Include "ocean_fields.geo";
+//   Call EarthSphere;  ...  loops[] = Coastline{1};
+//   ShorePoints[] = Coastline{1, "Points"};  Call ShoreProximity;
+//   BathyFile = StrCat(BathyDir, "etopo5_global_0.25deg.nc");
+//   Call WaveLength;  Call BathyHessian;
+//   OceanFields[] = {ShoreField, WaveField, HessianField};  Call OceanSize;
+//
+// Sizes and distances are in metres on the sphere of earth.geo's EarthSphere. The defaults
+// are the paper's World Ocean (Figures 9-10); set a variable before the Call to change it.
+// Each macro takes new field ids (newf), so they can be called more than once (e.g. two
+// shore criteria with different coasts); the output variables name the fields made last.
+// Included twice (e.g. by a script and by another stdlib file), the second Include does
+// nothing: macros cannot be redefined.
+If (!Exists(OceanFieldsGeoLoaded))
+  OceanFieldsGeoLoaded = 1;
+  Include "earth.geo";
+
+  // Shore proximity (the paper's f3 in section 3.1, "f1" in section 4.1): the distance to
+  // the coast d, and delta = ShoreSizeMin + alpha(d) (ShoreSizeMax - ShoreSizeMin) with alpha
+  // linear from ShoreDistMin to ShoreDistMax. The paper's world: 30-200 km within 500 km.
+  DefineConstant[ ShoreSizeMin = 30e3, ShoreSizeMax = 200e3, ShoreDistMin = 0,
+                  ShoreDistMax = 500e3, ShoreSamples = 20 ];
+
+  // Wavelength (f1): lambda_min / N sqrt(H_ref / H), clamped to [WaveSizeMin, WaveSizeMax].
+  // The paper's world: 25-500 km; lambda_min / N = 25 km where the ocean is 4000 m deep.
+  DefineConstant[ WaveLengthMin = 250e3, PointsPerWaveLength = 10, DepthRef = 4000,
+                  MinDepth = 10, WaveSizeMin = 25e3, WaveSizeMax = 500e3 ];
+
+  // Bathymetry Hessian (f2): 1 / sqrt(|lambda_max|) of the Hessian of H / H_ref (metres),
+  // clamped to [HessianSizeMin, HessianSizeMax]. The paper's world: 25-500 km.
+  DefineConstant[ HessianSizeMin = 25e3, HessianSizeMax = 500e3 ];
+
+  // Gradation of the combined size (0: none): |grad delta| <= GradationRate on a lon/lat
+  // background grid of GradationResolution degrees (the whole globe unless GradationBox[] =
+  // {W, E, S, N} is set).
+  DefineConstant[ GradationRate = 0, GradationResolution = 0.25 ];
+
+  // ShoreProximity: input ShorePoints[] (point tags, e.g. Coastline{n, "Points"}: control
+  // points spaced about gamma apart along every coast) and/or ShoreCurves[] (curve tags,
+  // ShoreSamples uniform samples each). Output: ShoreDistanceField (the distance, metres)
+  // and ShoreField (the size).
+  Macro ShoreProximity
+    If (!Exists(ShorePoints[]) && !Exists(ShoreCurves[]))
+      Error("ShoreProximity: set ShorePoints[] or ShoreCurves[] first");
+      Abort;
+    EndIf
+    ShoreDistanceField = newf;
+    Field[ShoreDistanceField] = Distance;
+    If (Exists(ShorePoints[]))
+      Field[ShoreDistanceField].PointsList = {ShorePoints[]};
+    EndIf
+    If (Exists(ShoreCurves[]))
+      Field[ShoreDistanceField].CurvesList = {ShoreCurves[]};
+      Field[ShoreDistanceField].NumPointsPerCurve = ShoreSamples;
+    EndIf
+    ShoreField = newf;
+    Field[ShoreField] = Threshold;
+    Field[ShoreField].InField = ShoreDistanceField;
+    Field[ShoreField].SizeMin = ShoreSizeMin;
+    Field[ShoreField].SizeMax = ShoreSizeMax;
+    Field[ShoreField].DistMin = ShoreDistMin;
+    Field[ShoreField].DistMax = ShoreDistMax;
+  Return
+
+  // WaveLength: input BathyFile (netCDF or .asc relief, elevations positive up). Output:
+  // WaveCriterionField (f1, metres) and WaveField (the size).
+  Macro WaveLength
+    WaveCriterionField = newf;
+    Field[WaveCriterionField] = Bathymetry;
+    Field[WaveCriterionField].FileName = BathyFile;
+    Field[WaveCriterionField].Output = "wavelength";
+    Field[WaveCriterionField].WaveLengthMin = WaveLengthMin;
+    Field[WaveCriterionField].PointsPerWaveLength = PointsPerWaveLength;
+    Field[WaveCriterionField].DepthRef = DepthRef;
+    Field[WaveCriterionField].MinDepth = MinDepth;
+    Field[WaveCriterionField].EarthRadius = EarthRadius;
+    WaveField = newf;
+    Field[WaveField] = Threshold;
+    Field[WaveField].InField = WaveCriterionField;
+    Field[WaveField].SizeMin = WaveSizeMin;
+    Field[WaveField].SizeMax = WaveSizeMax;
+    Field[WaveField].DistMin = WaveSizeMin;
+    Field[WaveField].DistMax = WaveSizeMax;
+  Return
+
+  // BathyHessian: input BathyFile. Output: HessianCriterionField (f2, metres) and
+  // HessianField (the size).
+  Macro BathyHessian
+    HessianCriterionField = newf;
+    Field[HessianCriterionField] = Bathymetry;
+    Field[HessianCriterionField].FileName = BathyFile;
+    Field[HessianCriterionField].Output = "hessian";
+    Field[HessianCriterionField].DepthRef = DepthRef;
+    Field[HessianCriterionField].MinDepth = MinDepth;
+    Field[HessianCriterionField].EarthRadius = EarthRadius;
+    HessianField = newf;
+    Field[HessianField] = Threshold;
+    Field[HessianField].InField = HessianCriterionField;
+    Field[HessianField].SizeMin = HessianSizeMin;
+    Field[HessianField].SizeMax = HessianSizeMax;
+    Field[HessianField].DistMin = HessianSizeMin;
+    Field[HessianField].DistMax = HessianSizeMax;
+  Return
+
+  // OceanSize: input OceanFields[] (size fields). Output: SizeField, the Min of them
+  // (FieldArgmin(SizeField, ...) tells which criterion controls the size where), limited by
+  // a Gradation when GradationRate > 0 (then MinSizeField is the Min), and made the
+  // Background Field.
+  Macro OceanSize
+    MinSizeField = newf;
+    Field[MinSizeField] = Min;
+    Field[MinSizeField].FieldsList = {OceanFields[]};
+    SizeField = MinSizeField;
+    If (GradationRate > 0)
+      SizeField = newf;
+      Field[SizeField] = Gradation;
+      Field[SizeField].InField = MinSizeField;
+      Field[SizeField].Rate = GradationRate;
+      Field[SizeField].Radius = EarthRadius;
+      Field[SizeField].Resolution = GradationResolution;
+      If (Exists(GradationBox[]))
+        Field[SizeField].LonMin = GradationBox[0];
+        Field[SizeField].LonMax = GradationBox[1];
+        Field[SizeField].LatMin = GradationBox[2];
+        Field[SizeField].LatMax = GradationBox[3];
+      EndIf
+    EndIf
+    Background Field = SizeField;
+  Return
+
+  // OceanSurfaces: input OceanLoops[] (Coastline{n}) and OceanLoopsPerSurface[]
+  // (Coastline{n, "LoopsPerSurface"}). Makes one Plane Surface per sea (a region box may cut
+  // the water into several). Output: OceanSurfaces[].
+  Macro OceanSurfaces
+    OceanSurfaces[] = {};
+    ocean_first_ = 0;
+    For ocean_s_ In {0 : #OceanLoopsPerSurface[] - 1}
+      ocean_tag_ = news;
+      Plane Surface(ocean_tag_) = OceanLoops[{ocean_first_ : ocean_first_ + OceanLoopsPerSurface[ocean_s_] - 1}];
+      OceanSurfaces[] += ocean_tag_;
+      ocean_first_ += OceanLoopsPerSurface[ocean_s_];
+    EndFor
+  Return
+EndIf

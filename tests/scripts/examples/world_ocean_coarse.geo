@@ -1,0 +1,15 @@
+// examples/world_ocean.geo (Figures 9-10) at a smaller setting: GSHHG low resolution
+// coarsened to 200 km and the 1-degree ETOPO5 grid. Checks the model and the size field
+// at known places (the example's own Asserts), and prints the figures.
+// compare_with_gmsh: skip (native Coastline and Field statements)
+CoastAccuracy = 200e3;
+CoastFile = "world_l.txt";
+BathyName = "etopo5_global_1deg.nc";
+Quiet = 1;
+Include "../../../examples/world_ocean.geo";
+Printf("%g sea, %g islands, %g control points", seas, islands, points);
+Printf("mid-Pacific %.0f km by the wavelength: %g", pacific / Km, pacific_by == WaveField);
+Printf("coast %.0f km", coast / Km);
+// expect: 1 sea, 36 islands, 1112 control points
+// expect: mid-Pacific 45 km by the wavelength: 1
+// expect: coast 30 km
