@@ -41,14 +41,33 @@ If (!Exists(OceanFieldsGeoLoaded))
 
   // ShoreProximity: input ShorePoints[] (point tags, e.g. Coastline{n, "Points"}: control
   // points spaced about gamma apart along every coast) and/or ShoreCurves[] (curve tags,
-  // ShoreSamples uniform samples each). Output: ShoreDistanceField (the distance, metres)
-  // and ShoreField (the size).
+  // ShoreSamples uniform samples each). With ShoreBox[] = {W, E, S, N} (a region), points
+  // on the box's edges are dropped from ShorePoints[] first: the closing pieces are open
+  // sea, not coast. Output: ShoreDistanceField (the distance, metres) and ShoreField (the
+  // size).
   Macro ShoreProximity
     If (!Exists(ShorePoints[]) && !Exists(ShoreCurves[]))
       Error("ShoreProximity: set ShorePoints[] or ShoreCurves[] first");
       Abort;
     EndIf
-    ShoreDistanceField = newf;
+    // A region's closing pieces lie on the box: their points are not coast.
+  If (Exists(ShoreBox[]) && Exists(ShorePoints[]))
+    shore_kept_[] = {};
+    For shore_i_ In {0 : #ShorePoints[] - 1}
+      shore_p_[] = Point{ShorePoints[shore_i_]};
+      shore_lon_ = Atan2(shore_p_[1], shore_p_[0]) * Rad2Deg;
+      shore_lat_ = Atan2(shore_p_[2], Hypot(shore_p_[0], shore_p_[1])) * Rad2Deg;
+      shore_lon_ = ShoreBox[0] + Fmod(Fmod(shore_lon_ - ShoreBox[0], 360) + 360, 360);
+      shore_on_box_ = Fabs(shore_lat_ - ShoreBox[2]) < 1e-5 || Fabs(shore_lat_ - ShoreBox[3]) < 1e-5 ||
+                      Fabs(shore_lon_ - ShoreBox[0]) < 1e-5 || Fabs(shore_lon_ - ShoreBox[1]) < 1e-5 ||
+                      Fabs(shore_lon_ - ShoreBox[0] - 360) < 1e-5;
+      If (!shore_on_box_)
+        shore_kept_[] += ShorePoints[shore_i_];
+      EndIf
+    EndFor
+    ShorePoints[] = shore_kept_[];
+  EndIf
+  ShoreDistanceField = newf;
     Field[ShoreDistanceField] = Distance;
     If (Exists(ShorePoints[]))
       Field[ShoreDistanceField].PointsList = {ShorePoints[]};

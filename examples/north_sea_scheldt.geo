@@ -1,0 +1,99 @@
+// Figure 13 of Lambrechts et al. (2008), section 4.2: a multiscale mesh of the North Sea and
+// the Scheldt estuary, from about 150 m in the river near Antwerp to about 50 km far from the
+// coasts (paper: 27,472 elements). Coastlines: GSHHG 2.3.7 full resolution cut by GMT to
+// -4/9/48/58 (northsea_scheldt_f.txt), closed along that box (the "open" boundary).
+// Size field: the Min of
+//   estuary: distance to points along the Scheldt, EstuarySize (150 m) within 3 km of
+//            them, growing linearly to OffshoreSize (50 km) at EstuaryReach (400 km);
+//   shore:   distance to the coast, CoastSize (5 km) on it to OffshoreSize at 300 km.
+// The coastline accuracy gamma is the estuary criterion capped at CoastSize, so the river
+// banks keep their detail and far coasts are coarsened to the mesh size.
+//   stereomesh -0 examples/north_sea_scheldt.geo
+// Smaller setting (tests/scripts/examples/north_sea_scheldt_coarse.geo): -setnumber
+// EstuarySize 2000 -setnumber CoastSize 20e3.
+DefineConstant[ EstuarySize = 150, CoastSize = 5e3, OffshoreSize = 50e3,
+                EstuaryReach = 400e3, Quiet = 0, DoMesh = 0 ];
+// DoMesh = 1 runs the `Mesh 2; Save` part at the end; off while `Mesh 2` is not available.
+DefineConstant[ ShoreSizeMin = CoastSize, ShoreSizeMax = OffshoreSize, ShoreDistMax = 300e3 ];
+Include "earth.geo";
+Include "ocean_fields.geo";
+Include "regions.geo";
+
+Call EarthSphere;
+
+// Points along the estuary, from the mouth (Vlissingen) up to Antwerp.
+estuary_lon[] = {ScheldtMouth[0], 3.83, 4.03, 4.21, 4.29, Antwerp[0]};
+estuary_lat[] = {ScheldtMouth[1], 51.35, 51.36, 51.40, 51.32, Antwerp[1]};
+EstuaryPoints[] = {};
+For i In {0 : #estuary_lon[] - 1}
+  lon = estuary_lon[i];  lat = estuary_lat[i];
+  Call LonLatPoint;
+  EstuaryPoints[] += LonLatPointTag;
+EndFor
+Field[1] = Distance;
+Field[1].PointsList = {EstuaryPoints[]};
+Field[2] = Threshold;
+Field[2].InField = 1;
+Field[2].SizeMin = EstuarySize;
+Field[2].SizeMax = OffshoreSize;
+Field[2].DistMin = 3e3;
+Field[2].DistMax = EstuaryReach;
+EstuaryField = 2;
+Field[3] = MathEval;
+Field[3].F = Sprintf("%.17g", CoastSize);
+Field[4] = Min;                               // the coastline accuracy gamma
+Field[4].FieldsList = {2, 3};
+
+Coastline[1] = LonLatText;
+Coastline[1].FileName = StrCat(GshhgDir, "northsea_scheldt_f.txt");
+Coastline[1].AccuracyField = 4;
+// No Region: the file's own -R box closes the cut coasts (Brittany to Denmark, Norway).
+OceanLoops[] = Coastline{1};
+OceanLoopsPerSurface[] = Coastline{1, "LoopsPerSurface"};
+open[] = Coastline{1, "OpenCurves"};
+coast[] = Coastline{1, "Curves"};
+coast[] -= open[];
+Call OceanSurfaces;
+Physical Surface("sea") = {OceanSurfaces[]};
+Physical Curve("coast") = {coast[]};
+Physical Curve("open") = {open[]};
+
+ShorePoints[] = Coastline{1, "Points"};
+ShoreBox[] = RegionNorthSeaScheldt[];     // the file's box: its closing pieces are sea
+Call ShoreProximity;
+OceanFields[] = {EstuaryField, ShoreField};
+Call OceanSize;
+
+// Figures we can check before meshing.
+seas = #OceanSurfaces[];
+islands = #OceanLoops[] - seas;
+lon = Antwerp[0]; lat = Antwerp[1]; Call LonLatToXYZ;
+antwerp = FieldValue(SizeField, x, y, z);
+lon = ScheldtMouth[0]; lat = ScheldtMouth[1]; Call LonLatToXYZ;
+mouth = FieldValue(SizeField, x, y, z);
+lon = 2.5; lat = 51.8; Call LonLatToXYZ;        // 80 km off the mouth
+off_mouth = FieldValue(SizeField, x, y, z);
+off_mouth_by = FieldArgmin(MinSizeField, x, y, z);
+lon = 3; lat = 56.5; Call LonLatToXYZ;          // central North Sea, 300 km from the coasts
+offshore = FieldValue(SizeField, x, y, z);
+offshore_by = FieldArgmin(MinSizeField, x, y, z);
+If (!Quiet)
+  Printf("%g seas, %g islands, %g open-boundary curves, %g coast curves", seas, islands,
+         #open[], #coast[]);
+  Printf("size: Antwerp %.0f m, Scheldt mouth %.0f m, 80 km off it %.1f km, central North Sea %.1f km",
+         antwerp, mouth, off_mouth / Km, offshore / Km);
+EndIf
+Assert(Fabs(antwerp - EstuarySize) < 1, "size at Antwerp %g m", antwerp);
+Assert(Fabs(mouth - EstuarySize) < 1, "size at the Scheldt mouth %g m", mouth);
+// There the estuary's linear growth still decides (150 m + 77/397 of the way to 50 km).
+Assert(off_mouth > 3 * EstuarySize && off_mouth < 0.5 * OffshoreSize && off_mouth_by == EstuaryField,
+       "80 km off the mouth: %g m (criterion field %g)", off_mouth, off_mouth_by);
+Assert(offshore > 0.7 * OffshoreSize && offshore <= OffshoreSize, "offshore size %g m", offshore);
+Assert(#open[] >= 2 && #coast[] > 0, "the box closes the cut coasts");
+
+If (DoMesh)
+  Mesh 2;
+  // after meshing: Assert(Mesh.NbTriangles > 15000 && Mesh.NbTriangles < 50000);
+  //   (the paper: 27,472 elements)
+  Save "north_sea_scheldt.msh";
+EndIf
