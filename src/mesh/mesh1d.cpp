@@ -42,8 +42,39 @@ void integrand(const geo::Curve& c, const CurveSizeFn& size, std::span<const dou
 
 }  // namespace
 
+namespace {
+
+// Gmsh's smoothPrimitive (meshGEdge.cpp): with h = |X'| / f the size at a sample, the
+// growth dh/ds along the curve is limited to alpha - 1, by Gauss-Seidel sweeps forward
+// and backward until no sample changes.
+void smooth_sizes(const std::vector<double>& t, const std::vector<double>& xp, std::vector<double>& f, double alpha) {
+  const double slope = alpha - 1;
+  for (int sweep = 0; sweep < 2000; ++sweep) {
+    std::size_t changed = 0;
+    for (std::size_t i = 1; i < t.size(); ++i) {
+      if (!(xp[i] > 0) || !(f[i] > 0) || !(f[i - 1] > 0)) continue;
+      const double h0 = xp[i - 1] / f[i - 1], h1 = xp[i] / f[i], dt = t[i] - t[i - 1];
+      if ((h1 - h0) / dt / xp[i] > slope * 1.01) {
+        f[i] = xp[i] / (h0 + dt * slope * xp[i]);
+        ++changed;
+      }
+    }
+    for (std::size_t i = t.size() - 1; i > 0; --i) {
+      if (!(xp[i - 1] > 0) || !(f[i] > 0) || !(f[i - 1] > 0)) continue;
+      const double h0 = xp[i - 1] / f[i - 1], h1 = xp[i] / f[i], dt = t[i] - t[i - 1];
+      if ((h0 - h1) / dt / xp[i - 1] > slope * 1.01) {
+        f[i - 1] = xp[i - 1] / (h1 + dt * slope * xp[i - 1]);
+        ++changed;
+      }
+    }
+    if (changed == 0) break;
+  }
+}
+
+}  // namespace
+
 CurvePrimitive integrate_curve(const geo::Curve& c, const CurveSizeFn& size, double rel_tolerance,
-                               double abs_tolerance) {
+                               double abs_tolerance, double smooth_ratio) {
   // The curve is smooth inside each polynomial piece: start from a few intervals per piece
   // (so piece boundaries are grid points), then halve, in batches, every interval whose
   // trapezoid disagrees with the sum of its two halves.
@@ -90,6 +121,11 @@ CurvePrimitive integrate_curve(const geo::Curve& c, const CurveSizeFn& size, dou
     nt.push_back(t.back());
     nf.push_back(f.back());
     t.swap(nt), f.swap(nf), active.swap(nactive);
+  }
+  if (smooth_ratio > 1) {
+    std::vector<double> xp(t.size());
+    for (std::size_t i = 0; i < t.size(); ++i) xp[i] = norm(c.eval(t[i]).d1);
+    smooth_sizes(t, xp, f, std::sqrt(smooth_ratio));
   }
   out.t = std::move(t);
   out.a.resize(out.t.size());
@@ -316,7 +352,7 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
         h[i] = stretch * field::final_size(opt.size, q).size;
       }
     };
-    const CurvePrimitive prim = integrate_curve(shape, size, opt.rel_tolerance, opt.abs_tolerance);
+    const CurvePrimitive prim = integrate_curve(shape, size, opt.rel_tolerance, opt.abs_tolerance, opt.smooth_ratio);
     res.stats.size_evaluations += prim.evaluations;
     if (!std::isfinite(prim.total())) {
       res.error = make_error(Mesh1dErrorKind::Invalid, tag, tag,

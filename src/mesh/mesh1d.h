@@ -26,6 +26,9 @@ struct Mesh1dOptions {
   /// differ by more than rel * (its integral) + abs (in elements).
   double rel_tolerance = 1e-4;
   double abs_tolerance = 1e-5;
+  /// Mesh.SmoothRatio: along each curve the size may grow by at most sqrt(ratio) - 1 per
+  /// unit length (Gmsh's smoothing of the primitive); <= 1 disables it.
+  double smooth_ratio = 1.8;
   bool repair_intersections = true;  ///< the paper's section 3.2 repair loop
   /// Which curves the repair sees: those bounding or embedded in a surface (what the 2D
   /// mesher needs; Gmsh's 1D mesh of free curves ignores crossings), or every curve.
@@ -37,7 +40,9 @@ struct Mesh1dOptions {
 using CurveSizeFn = std::function<void(std::span<const double> t, std::span<const geo::Jet3> jets, std::span<double> h)>;
 
 /// Samples of the primitive a(t) = integral_0^t |X'(s)| / h(s) ds (adaptive trapezoid,
-/// piece by piece, sizes evaluated in batches): t and a increasing, t from 0 to 1.
+/// piece by piece, sizes evaluated in batches): t and a increasing, t from 0 to 1. With
+/// smooth_ratio > 1 the sizes at the samples are first limited as Gmsh does (dh/ds <=
+/// sqrt(smooth_ratio) - 1, forward and backward sweeps until stable).
 struct CurvePrimitive {
   std::vector<double> t, a;
   std::uint64_t evaluations = 0;
@@ -45,7 +50,7 @@ struct CurvePrimitive {
 };
 
 CurvePrimitive integrate_curve(const geo::Curve& c, const CurveSizeFn& size, double rel_tolerance = 1e-4,
-                               double abs_tolerance = 1e-5);
+                               double abs_tolerance = 1e-5, double smooth_ratio = 0);
 
 /// Gmsh's node count N = max(min_segments + 1, int(a + 1.99)) and parameters of the N
 /// nodes at equal increments a/(N-1) of the primitive (first 0, last 1).

@@ -34,6 +34,7 @@ Mesh1dOptions mesh1d_options(Interpreter& in, const field::SizeField* background
   opt.bbox_diag = model_bbox_diag(in.kernel().model);
   opt.min_curve_nodes = static_cast<int>(o.number("Mesh.MinimumCurveNodes"));
   opt.min_circle_nodes = static_cast<int>(o.number("Mesh.MinimumCircleNodes"));
+  opt.smooth_ratio = o.number("Mesh.SmoothRatio");
   return opt;
 }
 

@@ -342,3 +342,27 @@ TEST_CASE("mesh1d: Bezier node counts as gmsh 4.8.4 (|X'| divided by the degree)
     CHECK(r.mesh.nodes.size() == static_cast<std::size_t>(expected[n - 2]));
   }
 }
+
+TEST_CASE("mesh1d: Gmsh's smoothing limits the size growth along a curve (Mesh.SmoothRatio)") {
+  // lc 0.01 -> 1 on a unit line: gmsh 4.8.4 gives 12 nodes with SmoothRatio 1.8 (h grows
+  // by sqrt(1.8) - 1 per unit length: a = ln(1 + 34.2) / 0.342 = 10.4) and 6 with 100.
+  geo::Model m;
+  REQUIRE(m.add_point(1, {0, 0, 0}, 0.01).ok());
+  REQUIRE(m.add_point(2, {1, 0, 0}, 1).ok());
+  REQUIRE(m.add_curve(1, geo::CurveKind::Line, {1, 2}).ok());
+  Mesh1dOptions opt;
+  Mesh1dResult r = mesh_curves(m, opt);
+  REQUIRE(r.ok());
+  CHECK(r.mesh.nodes.size() == 12);
+  const CurveMesh& c = r.mesh.curves.at(1);
+  for (std::size_t k = 1; k + 1 < c.nodes.size(); ++k) {
+    // Consecutive edges grow by at most the ratio of a geometric gradation.
+    const double e0 = r.mesh.nodes[c.nodes[k]].xyz.x - r.mesh.nodes[c.nodes[k - 1]].xyz.x;
+    const double e1 = r.mesh.nodes[c.nodes[k + 1]].xyz.x - r.mesh.nodes[c.nodes[k]].xyz.x;
+    CHECK(e1 / e0 < 1.6);
+  }
+  opt.smooth_ratio = 100;
+  r = mesh_curves(m, opt);
+  REQUIRE(r.ok());
+  CHECK(r.mesh.nodes.size() == 6);
+}
