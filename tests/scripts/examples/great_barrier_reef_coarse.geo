@@ -1,0 +1,15 @@
+// examples/great_barrier_reef.geo (Figure 14) at a smaller setting: 1 km at Lizard Island
+// and 20 km on the other coasts. The example asserts that Lizard Island stays in the model
+// (its gamma is the Lizard criterion), the size there, and that the bathymetry decides in
+// the deep Coral Sea.
+// compare_with_gmsh: skip (native Coastline and Field statements)
+LizardSize = 1000;
+CoastSize = 20e3;
+Quiet = 1;
+Include "../../../examples/great_barrier_reef.geo";
+Printf("%g sea, %g islands, %g open-boundary curves", seas, islands, #open[]);
+Printf("Lizard Island: coast %.1f km from its centre, size %.0f m", lizard_shore / Km, lizard);
+Printf("Coral Sea %.1f km by the wavelength: %g", coral_sea / Km, coral_sea_by == WaveField);
+// expect: 1 sea, 4 islands, 6 open-boundary curves
+// expect: Lizard Island: coast 0.7 km from its centre, size 1000 m
+// expect: Coral Sea 28.6 km by the wavelength: 1
