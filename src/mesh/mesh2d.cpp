@@ -33,21 +33,29 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// The face's parameter plane: a surface geometry's (u,v), or a Euclidean plane with an
-// orthonormal basis (e1, e2) such that e1 x e2 is the outer loop's Newell normal, so
-// the outer loop runs counter-clockwise in the plane. For a loop in z = const the basis
-// is (x, +-y) and the coordinates are exact.
+// The face's parameter plane: a PolarSphere's (u,v); for a lon/lat Sphere its Mercator
+// plane (x, y) = (lon, asinh(tan lat)), conformal with factor r cos lat = r / cosh y, so
+// the anisotropic metric J^T J = diag(r^2 cos^2 lat, r^2) of (lon, lat) becomes isotropic
+// and the same refiners apply; or a Euclidean plane with an orthonormal basis (e1, e2)
+// such that e1 x e2 is the outer loop's Newell normal, so the outer loop runs
+// counter-clockwise in the plane. For a loop in z = const the basis is (x, +-y) and the
+// coordinates are exact.
 struct FacePlane {
   const geo::SurfaceGeometry* geom = nullptr;
+  bool mercator = false;
   Vec3 o, e1, e2, n;
-  bool ccw_is_outward = true;   // on a geometry: counter-clockwise (u,v) triangles face outwards
+  bool ccw_is_outward = true;   // on a geometry: counter-clockwise triangles face outwards
 
   Vec2 to_plane(Vec3 x) const { return {dot(x - o, e1), dot(x - o, e2)}; }
-  Vec3 to_space(Vec2 p) const { return geom ? geom->point(p) : o + p.x * e1 + p.y * e2; }
+  /// Plane point of surface parameters (u,v) (lon/lat in radians on a Sphere).
+  Vec2 from_param(Vec2 uv) const { return mercator ? Vec2{uv.x, std::asinh(std::tan(uv.y))} : uv; }
+  /// Surface parameters of a plane point.
+  Vec2 to_param(Vec2 p) const { return mercator ? Vec2{p.x, std::atan(std::sinh(p.y))} : p; }
+  Vec3 to_space(Vec2 p) const { return geom ? geom->point(to_param(p)) : o + p.x * e1 + p.y * e2; }
   double lambda(Vec2 p) const {
     if (!geom) return 1.0;
     if (const geo::PolarSphere* ps = geom->polar()) return ps->lambda(p);
-    return 1.0;
+    return geom->radius() / std::cosh(p.y);
   }
 };
 
@@ -75,6 +83,7 @@ class FaceMesher {
   bool make_plane();
   std::uint32_t local(std::uint32_t node);
   Vec2 node_plane(std::uint32_t node) const;
+  Vec2 node_param(std::uint32_t node) const;   // on a geometry: the node's (u,v)
   void sizes_in_plane(std::span<const Vec2> p, std::span<double> h);
   std::optional<double> boundary_size(Vec2 p);
 
@@ -106,9 +115,14 @@ bool FaceMesher::fail(std::string msg, std::optional<Vec3> where) {
   res_.error.message = fmt::format("surface {}: {}", tag_, msg);
   if (where) {
     res_.error.xyz = *where;
-    if (plane_.geom && plane_.geom->polar()) {
+    if (plane_.geom) {
       res_.error.has_lonlat = true;
-      res_.error.where = plane_.geom->polar()->to_lonlat(*where);
+      if (plane_.geom->polar()) {
+        res_.error.where = plane_.geom->polar()->to_lonlat(*where);
+      } else {
+        const Vec2 ll = plane_.geom->param(*where);
+        res_.error.where = {ll.x * geo::kRadToDeg, ll.y * geo::kRadToDeg};
+      }
       res_.error.message += fmt::format(" near lon {:.6f}, lat {:.6f}", res_.error.where.lon, res_.error.where.lat);
     } else {
       res_.error.message += fmt::format(" near ({}, {}, {})", where->x, where->y, where->z);
@@ -174,13 +188,22 @@ bool FaceMesher::collect_loops(const geo::ModelSurface& s) {
 
 bool FaceMesher::make_plane() {
   if (plane_.geom) {
-    if (!plane_.geom->polar())
-      return fail("faces on a lon/lat Sphere geometry are not supported yet (refinement in the anisotropic "
-                  "metric J^T J is missing); use a PolarSphere");
-    const Vec2 uv = node_plane(chains_[0].nodes[0]);
+    plane_.mercator = plane_.geom->lonlat() != nullptr;
+    Vec2 uv{0, 0};
+    for (const auto* group : {&chains_, &emb_curves_})
+      for (const Chain& ch : *group)
+        for (std::uint32_t v : ch.nodes) {
+          uv = node_param(v);
+          if (plane_.mercator && !(std::abs(uv.y) < 0.5 * geo::kPi - 1e-9))
+            return fail("a lon/lat Sphere face cannot reach a pole (its parametrisation is singular there); "
+                        "use a PolarSphere",
+                        mesh_.nodes[v].xyz);
+        }
+    uv = node_param(chains_[0].nodes[0]);
     Vec3 du, dv;
     plane_.geom->tangents(uv, du, dv);
-    plane_.ccw_is_outward = dot(cross(du, dv), plane_.geom->polar()->normal(uv)) > 0;
+    // Mercator keeps the orientation of (lon, lat): dy/dlat = 1 / cos lat > 0.
+    plane_.ccw_is_outward = dot(cross(du, dv), plane_.geom->point(uv) - plane_.geom->centre()) > 0;
     return true;
   }
   // Newell's normal of the outer loop and its centroid.
@@ -224,10 +247,14 @@ bool FaceMesher::make_plane() {
   return true;
 }
 
-Vec2 FaceMesher::node_plane(std::uint32_t node) const {
+Vec2 FaceMesher::node_param(std::uint32_t node) const {
   const MeshNode& n = mesh_.nodes[node];
-  if (plane_.geom) return n.has_uv ? n.uv : plane_.geom->param(n.xyz);
-  return plane_.to_plane(n.xyz);
+  return n.has_uv ? n.uv : plane_.geom->param(n.xyz);
+}
+
+Vec2 FaceMesher::node_plane(std::uint32_t node) const {
+  if (plane_.geom) return plane_.from_param(node_param(node));
+  return plane_.to_plane(mesh_.nodes[node].xyz);
 }
 
 std::uint32_t FaceMesher::local(std::uint32_t node) {
@@ -434,7 +461,7 @@ bool FaceMesher::run(const geo::ModelSurface& s) {
   global_.resize(nv);
   for (std::uint32_t v = fixed_count; v < nv; ++v) {
     const Vec2 p = m_.xy[v];
-    global_[v] = plane_.geom ? mesh_.add_node(plane_.to_space(p), p) : mesh_.add_node(plane_.to_space(p));
+    global_[v] = plane_.geom ? mesh_.add_node(plane_.to_space(p), plane_.to_param(p)) : mesh_.add_node(plane_.to_space(p));
     sm_out.interior_nodes.push_back(global_[v]);
   }
   const bool flip = plane_.geom && !plane_.ccw_is_outward;

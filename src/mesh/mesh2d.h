@@ -1,6 +1,7 @@
 // 2D meshing of a model's faces (paper section 3.3): each Plane Surface is meshed in its
-// parameter plane (its own plane, or the PolarSphere's stereographic (u,v) plane) from the
-// 1D boundary mesh: Delaunay, edge recovery, hole removal, refinement, smoothing, 3D output.
+// parameter plane (its own plane, a PolarSphere's stereographic (u,v), a lon/lat Sphere's
+// Mercator plane) from the 1D boundary mesh: Delaunay, edge recovery, hole removal,
+// refinement, smoothing, 3D output.
 #pragma once
 
 #include <cstdint>
@@ -29,7 +30,8 @@ struct Mesh2dOptions {
   double bbox_diag = 0;      ///< Gmsh's CTX::lc; <= 0: the model's bounding-box diagonal
   int smoothing = 1;         ///< Mesh.Smoothing: Laplacian passes (meshadapt: per round)
   /// del2d / front2d resolve a triangle when circumradius / size <= this (measured in the
-  /// parameter plane with the size divided by the conformal factor). 0: the algorithm's
+  /// plane with the size divided by the conformal factor: lambda on a PolarSphere,
+  /// r cos(lat) in a Sphere's Mercator plane). 0: the algorithm's
   /// default (del2d 0.76, front2d refine.h's 1/sqrt2).
   double radius_limit = 0;
   std::uint32_t max_vertices_per_face = 0xFFFFFFF0u;

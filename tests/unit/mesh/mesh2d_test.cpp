@@ -326,19 +326,67 @@ TEST_CASE("mesh2d: PolarSphere cap bounded by the circle of latitude 30N") {
   }
 }
 
-TEST_CASE("mesh2d: unsupported and malformed faces fail with a located message") {
+TEST_CASE("mesh2d: lon/lat Sphere face, the box 0-40E x 10-50N, meshed in the Mercator plane") {
   geo::Model m;
   REQUIRE(m.add_point(1, {0, 0, 0}).ok());
   REQUIRE(m.add_point(2, {0, 0, 1}).ok());
   REQUIRE(m.add_lonlat_sphere(1, 1, 2).ok());
-  const int loop = add_circle(m, 0, 0.3, 0.2, 0.05);
-  REQUIRE(m.add_plane_surface(1, {loop}).ok());
+  const double d = geo::kDegToRad;
+  // Lines in (lon, lat): parallels and meridians, so the face is exactly the box.
+  REQUIRE(m.add_point(3, {0, 10 * d, 0}, 0.03).ok());
+  REQUIRE(m.add_point(4, {40 * d, 10 * d, 0}, 0.03).ok());
+  REQUIRE(m.add_point(5, {40 * d, 50 * d, 0}, 0.03).ok());
+  REQUIRE(m.add_point(6, {0, 50 * d, 0}, 0.03).ok());
+  for (int i = 0; i < 4; ++i) REQUIRE(m.add_curve(i + 1, geo::CurveKind::Line, {i + 3, (i + 1) % 4 + 3}).ok());
+  REQUIRE(m.add_curve_loop(1, {1, 2, 3, 4}).ok());
+  REQUIRE(m.add_plane_surface(1, {1}).ok());
+  REQUIRE(m.surface(1)->geometry == 1);
+  for (Mesh2dAlgorithm alg : kAlgorithms) {
+    CAPTURE(name_of(alg));
+    Mesh2dOptions o2;
+    o2.algorithm = alg;
+    const Meshed a = mesh_model(m, {}, o2);
+    check_face(m, a.mesh, 1);
+    check_on_sphere(m, a.mesh, 1, 1.0);
+    const MeshStats st = mesh_stats(a.mesh, [](std::span<const Vec3>, std::span<double> h) {
+      std::fill(h.begin(), h.end(), 0.03);
+    });
+    MESSAGE(name_of(alg) << ": " << format_stats(st));
+    double area = 0;
+    for (const Tri& t : a.mesh.surfaces.at(1).triangles) {
+      const Vec3 p = a.mesh.nodes[t[0]].xyz, q = a.mesh.nodes[t[1]].xyz, r = a.mesh.nodes[t[2]].xyz;
+      area += 0.5 * norm(cross(q - p, r - p));
+    }
+    // Spherical box: dlon (sin 50 - sin 10); the 1D edges are chords, a little inside.
+    CHECK(area == doctest::Approx(40 * d * (std::sin(50 * d) - std::sin(10 * d))).epsilon(3e-3));
+    CHECK(st.share_len_07_14 >= 0.95);
+    CHECK(st.min_rho > 0.4);
+    CHECK(st.share_rho_09 > rho09_floor(alg));
+    const Meshed b = mesh_model(m, {}, o2);
+    check_same(a.mesh, b.mesh);
+  }
+}
+
+TEST_CASE("mesh2d: a lon/lat Sphere face through a pole is a located error") {
+  geo::Model m;
+  REQUIRE(m.add_point(1, {0, 0, 0}).ok());
+  REQUIRE(m.add_point(2, {0, 0, 1}).ok());
+  REQUIRE(m.add_lonlat_sphere(1, 1, 2).ok());
+  const double d = geo::kDegToRad;
+  REQUIRE(m.add_point(3, {0, 60 * d, 0}, 0.2).ok());
+  REQUIRE(m.add_point(4, {40 * d, 60 * d, 0}, 0.2).ok());
+  REQUIRE(m.add_point(5, {40 * d, 90 * d, 0}, 0.2).ok());
+  for (int i = 0; i < 3; ++i) REQUIRE(m.add_curve(i + 1, geo::CurveKind::Line, {i + 3, (i + 1) % 3 + 3}).ok());
+  REQUIRE(m.add_curve_loop(1, {1, 2, 3}).ok());
+  REQUIRE(m.add_plane_surface(1, {1}).ok());
   Mesh1dResult r1 = mesh_curves(m, {});
   REQUIRE(r1.ok());
   const Mesh2dResult r2 = mesh_surfaces(m, r1.mesh, {});
   CHECK_FALSE(r2.ok());
   CHECK(r2.error.surface == 1);
-  CHECK(r2.error.message.find("not supported yet") != std::string::npos);
+  CHECK(r2.error.message.find("pole") != std::string::npos);
+  CHECK(r2.error.has_lonlat);
+  CHECK(r2.error.where.lat == doctest::Approx(90));
   CHECK(r1.mesh.surfaces.empty());
 }
 
