@@ -2,7 +2,8 @@
 // coast import, closed BSplines, shore-distance size 30 to 200 km within 500 km (Distance +
 // linear Threshold), 1D + 2D meshing per algorithm with time per stage and quality; then
 // the same model through `gmsh -2` (the .geo from the coast module's Plugin(GSHHS) writer).
-// Usage: bench_mesh_world_ocean [file=world_l.txt] [gamma_km=30] [algorithms=5,6] [gmsh=1]
+// Usage: bench_mesh_world_ocean [file=world_l.txt] [gamma_km=30] [algorithms=5,6] [gmsh=1] [out.msh]
+// (out.msh: our mesh of the last algorithm through io::from_model_mesh, MSH 4.1).
 #include <chrono>
 #include <ctime>
 #include <cstdio>
@@ -18,6 +19,8 @@
 #include "coast/import.h"
 #include "coast/read.h"
 #include "field/distance.h"
+#include "io/from_model_mesh.h"
+#include "io/msh_writer.h"
 #include "mesh/mesh1d.h"
 #include "mesh/mesh2d.h"
 #include "mesh/mesh_stats.h"
@@ -166,6 +169,7 @@ int main(int argc, char** argv) {
   const double gamma_km = argc > 2 ? std::atof(argv[2]) : 30.0;
   const std::string algos = argc > 3 ? argv[3] : "5,6";
   const bool with_gmsh = argc > 4 ? std::atoi(argv[4]) != 0 : true;
+  const std::string out_msh = argc > 5 ? argv[5] : "";
   const std::string path = std::string(SM_SHARED_DATA) + "/gshhg/" + file;
   const double radius = sm::geo::kEarthRadius;
 
@@ -234,6 +238,14 @@ int main(int argc, char** argv) {
                 static_cast<double>(st.triangles) / c2, r2.warnings.size());
     print_stats("ours", st);
     ours_1d[a] = c1, ours_2d[a] = c2;
+    if (!out_msh.empty()) {
+      std::string err;
+      sm::io::MshOptions mo;
+      mo.save_all = true;
+      if (!sm::io::save_msh(sm::io::from_model_mesh(model, r1.mesh), mo, out_msh, &err))
+        return std::fprintf(stderr, "%s: %s\n", out_msh.c_str(), err.c_str()), 1;
+      std::printf("  wrote %s\n", out_msh.c_str());
+    }
     for (std::size_t k = 0; k < r2.warnings.size() && k < 3; ++k) std::printf("  warning: %s\n", r2.warnings[k].c_str());
   }
 
