@@ -164,4 +164,32 @@ If (!Exists(OceanFieldsGeoLoaded))
       ocean_first_ += OceanLoopsPerSurface[ocean_s_];
     EndFor
   Return
+
+  // EstimateTriangles: how many triangles a mesh of the size field SizeField should have,
+  // before meshing: the sum over the water cells of a lon/lat grid (EstimateBox[] = {W, E,
+  // S, N}, step EstimateStep degrees) of cell area / (sqrt(3)/4 h^2), the area of an
+  // equilateral triangle of side h at the cell's centre. A cell is water where the depth
+  // field EstimateDepthField (a Bathymetry field, Output "depth") exceeds MinDepth (land
+  // reads MinDepth). The grid ignores the coastline, so islands smaller than a cell count
+  // as water. Output: EstimatedTriangles, EstimatedWaterArea (m^2).
+  Macro EstimateTriangles
+    EstimatedTriangles = 0;
+    EstimatedWaterArea = 0;
+    est_ni_ = Round((EstimateBox[1] - EstimateBox[0]) / EstimateStep);
+    est_nj_ = Round((EstimateBox[3] - EstimateBox[2]) / EstimateStep);
+    For est_j_ In {0 : est_nj_ - 1}
+      lat = EstimateBox[2] + (est_j_ + 0.5) * EstimateStep;
+      est_area_ = EarthRadius^2 * EstimateStep * Deg2Rad *
+                  (Sin((lat + EstimateStep / 2) * Deg2Rad) - Sin((lat - EstimateStep / 2) * Deg2Rad));
+      For est_i_ In {0 : est_ni_ - 1}
+        lon = EstimateBox[0] + (est_i_ + 0.5) * EstimateStep;
+        Call LonLatToXYZ;
+        If (FieldValue(EstimateDepthField, x, y, z) > MinDepth)
+          est_h_ = FieldValue(SizeField, x, y, z);
+          EstimatedWaterArea += est_area_;
+          EstimatedTriangles += est_area_ / (Sqrt(3) / 4 * est_h_^2);
+        EndIf
+      EndFor
+    EndFor
+  Return
 EndIf

@@ -1,0 +1,14 @@
+// examples/gb_ireland.geo (Figures 5 and 8) at a smaller setting: the 15 km coastline
+// (Figure 5's second panel, whose counts gb_ireland_coarsening.geo asserts) and a 0.25
+// degree triangle-count estimate of Figure 8's shore-proximity size field (0.1 degree in the
+// example: 15,212 triangles; the paper's meshes have 17,154-19,514).
+// compare_with_gmsh: skip (native Coastline and Field statements)
+EstimateStep = 0.25;
+Quiet = 1;
+Include "../../../examples/gb_ireland.geo";
+Printf("%g islands, %g open-boundary curves, %g coast curves", islands, #open[], #coast[]);
+Printf("Irish Sea %.1f km, Atlantic %.0f km", irish_sea / Km, atlantic / Km);
+Printf("estimate: %.0f triangles", EstimatedTriangles);
+// expect: 16 islands, 2 open-boundary curves, 18 coast curves
+// expect: Irish Sea 11.1 km, Atlantic 30 km
+// expect: estimate: 15546 triangles
