@@ -59,6 +59,41 @@ struct FacePlane {
   }
 };
 
+// Laplacian smoothing as smooth_laplacian (Jacobi passes, a move undone where it would
+// invert or flatten a triangle, then Delaunay flips) but with vertices [0, fixed_count)
+// pinned: embedded points are on no constrained edge and must not move.
+void smooth_pinned(TriangleStore& m, std::uint32_t fixed_count, int passes) {
+  const std::uint32_t nv = m.num_vertices();
+  std::vector<Vec2> sum(nv), old(nv);
+  std::vector<std::uint32_t> count(nv);
+  for (int pass = 0; pass < passes; ++pass) {
+    std::fill(sum.begin(), sum.end(), Vec2{0, 0});
+    std::fill(count.begin(), count.end(), 0u);
+    for (std::uint32_t s = 0; s < m.corner.size(); ++s) {
+      if (!m.alive(tri_of(Side{s}))) continue;
+      const std::uint32_t v = m.corner[s].value;
+      sum[v] += m.pos(m.dest(Side{s}));
+      ++count[v];
+    }
+    old = m.xy;
+    for (std::uint32_t v = fixed_count; v < nv; ++v)
+      if (count[v]) m.xy[v] = sum[v] / static_cast<double>(count[v]);
+    // Undo moves around inverted or flat triangles until none is left (each round puts at
+    // least one vertex back, so this ends).
+    for (bool again = true; again;) {
+      again = false;
+      for (std::uint32_t t = 0; t < m.num_slots(); ++t) {
+        if (!m.alive(TriId{t})) continue;
+        const VertexId a = m.vertex(TriId{t}, 0), b = m.vertex(TriId{t}, 1), c = m.vertex(TriId{t}, 2);
+        if (orient2d(m.pos(a), m.pos(b), m.pos(c)) == Sign::Positive) continue;
+        for (VertexId v : {a, b, c})
+          if (m.xy[v.value] != old[v.value]) m.xy[v.value] = old[v.value], again = true;
+      }
+    }
+    make_delaunay(m);
+  }
+}
+
 // One closed chain of global nodes (first not repeated) with the curve of each edge.
 struct Chain {
   std::vector<std::uint32_t> nodes;
@@ -448,9 +483,9 @@ bool FaceMesher::run(const geo::ModelSurface& s) {
   t0 = std::chrono::steady_clock::now();
   if (opt_.smoothing > 0 && !smoothed) {
     // smooth_laplacian keeps vertices of constrained edges in place; an isolated
-    // embedded point is not on one and would move, so such faces are not smoothed.
+    // embedded point is not on one and would move: such faces pin every input vertex.
     if (emb_points_.empty()) smooth_laplacian(m_, opt_.smoothing);
-    else res_.warnings.push_back(fmt::format("surface {}: not smoothed (it has embedded points)", tag_));
+    else smooth_pinned(m_, fixed_count, opt_.smoothing);
   }
   res_.stats.seconds_smooth += seconds_since(t0);
 

@@ -415,6 +415,12 @@ TEST_CASE("mesh2d: embedded point and curve are kept as nodes and edges") {
   const CurveMesh& cm = a.mesh.curves.at(100);
   for (std::size_t k = 0; k + 1 < cm.nodes.size(); ++k) CHECK(edges.count(std::minmax(cm.nodes[k], cm.nodes[k + 1])) == 1);
   check_ccw_xy(a.mesh, 1);
+  // Smoothed with the embedded point pinned (no warning), to a good quality.
+  CHECK(a.r2.warnings.empty());
+  const MeshStats st = mesh_stats(a.mesh);
+  MESSAGE(format_stats(st));
+  CHECK(st.min_rho > 0.3);
+  CHECK(st.mean_rho > 0.9);
   // The point's size 0.01 is extended around it: short edges at the point.
   double shortest = 1;
   for (const auto& e : edges)
