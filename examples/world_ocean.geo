@@ -21,7 +21,9 @@ Include "ocean_fields.geo";
 Include "regions.geo";
 
 DefineConstant[ CoastAccuracy = 30e3, CoastFile = "world_i_A100.txt",
-                BathyName = "etopo5_global_0.25deg.nc", Quiet = 0, DoMesh = 0 ];
+                BathyName = "etopo5_global_0.25deg.nc", Quiet = 0, DoMesh = 0,
+                EstimateStep = 1 ];
+// EstimateStep: lon/lat step (degrees) of the triangle-count estimate (0: skip it).
 // DoMesh = 1 runs the `Mesh 2; Save` part at the end (stereomesh -0 ... -setnumber DoMesh 1);
 // it is off by default while `Mesh 2` is not available in stereomesh yet.
 
@@ -90,6 +92,18 @@ Assert(pacific_by != ShoreField && pacific <= pacific_wave, "the shore criterion
 Assert(shelf_wave > 200e3 && shelf_by == ShoreField, "shelf: wavelength %g m, criterion field %g",
        shelf_wave, shelf_by);
 Assert(Fabs(coast - ShoreSizeMin) < 1, "size on the coast %g m", coast);
+
+If (EstimateStep > 0)
+  EstimateDepthField = newf;
+  Field[EstimateDepthField] = Bathymetry;
+  Field[EstimateDepthField].FileName = BathyFile;
+  EstimateBox[] = {-180, 180, -90, 90};
+  Call EstimateTriangles;
+  If (!Quiet)
+    Printf("estimate: %.0f triangles over %.0f km^2 of water (paper, Figure 9: 436,409)",
+           EstimatedTriangles, EstimatedWaterArea / 1e6);
+  EndIf
+EndIf
 
 If (DoMesh)
   Mesh 2;

@@ -171,23 +171,45 @@ If (!Exists(OceanFieldsGeoLoaded))
   // equilateral triangle of side h at the cell's centre. A cell is water where the depth
   // field EstimateDepthField (a Bathymetry field, Output "depth") exceeds MinDepth (land
   // reads MinDepth). The grid ignores the coastline, so islands smaller than a cell count
-  // as water. Output: EstimatedTriangles, EstimatedWaterArea (m^2).
+  // as water. Where the size is much smaller than a cell (a refined estuary), set
+  // EstimateFineBox[] (edges on the coarse grid) and EstimateFineStep: that box is summed
+  // on the fine grid instead. Output: EstimatedTriangles, EstimatedWaterArea (m^2).
   Macro EstimateTriangles
     EstimatedTriangles = 0;
     EstimatedWaterArea = 0;
-    est_ni_ = Round((EstimateBox[1] - EstimateBox[0]) / EstimateStep);
-    est_nj_ = Round((EstimateBox[3] - EstimateBox[2]) / EstimateStep);
+    est_box_[] = EstimateBox[];
+    est_step_ = EstimateStep;
+    est_skip_[] = {1, 0, 1, 0};                  // an empty box
+    If (Exists(EstimateFineBox[]))
+      est_skip_[] = EstimateFineBox[];
+    EndIf
+    Call EstimateTrianglesOnGrid_;
+    If (Exists(EstimateFineBox[]))
+      est_box_[] = EstimateFineBox[];
+      est_step_ = EstimateFineStep;
+      est_skip_[] = {1, 0, 1, 0};
+      Call EstimateTrianglesOnGrid_;
+    EndIf
+  Return
+
+  Macro EstimateTrianglesOnGrid_
+    est_ni_ = Round((est_box_[1] - est_box_[0]) / est_step_);
+    est_nj_ = Round((est_box_[3] - est_box_[2]) / est_step_);
     For est_j_ In {0 : est_nj_ - 1}
-      lat = EstimateBox[2] + (est_j_ + 0.5) * EstimateStep;
-      est_area_ = EarthRadius^2 * EstimateStep * Deg2Rad *
-                  (Sin((lat + EstimateStep / 2) * Deg2Rad) - Sin((lat - EstimateStep / 2) * Deg2Rad));
+      lat = est_box_[2] + (est_j_ + 0.5) * est_step_;
+      est_area_ = EarthRadius^2 * est_step_ * Deg2Rad *
+                  (Sin((lat + est_step_ / 2) * Deg2Rad) - Sin((lat - est_step_ / 2) * Deg2Rad));
       For est_i_ In {0 : est_ni_ - 1}
-        lon = EstimateBox[0] + (est_i_ + 0.5) * EstimateStep;
-        Call LonLatToXYZ;
-        If (FieldValue(EstimateDepthField, x, y, z) > MinDepth)
-          est_h_ = FieldValue(SizeField, x, y, z);
-          EstimatedWaterArea += est_area_;
-          EstimatedTriangles += est_area_ / (Sqrt(3) / 4 * est_h_^2);
+        lon = est_box_[0] + (est_i_ + 0.5) * est_step_;
+        est_skipped_ = lon > est_skip_[0] && lon < est_skip_[1] && lat > est_skip_[2] &&
+                       lat < est_skip_[3];
+        If (!est_skipped_)
+          Call LonLatToXYZ;
+          If (FieldValue(EstimateDepthField, x, y, z) > MinDepth)
+            est_h_ = FieldValue(SizeField, x, y, z);
+            EstimatedWaterArea += est_area_;
+            EstimatedTriangles += est_area_ / (Sqrt(3) / 4 * est_h_^2);
+          EndIf
         EndIf
       EndFor
     EndFor

@@ -6,10 +6,14 @@
 LizardSize = 1000;
 CoastSize = 20e3;
 Quiet = 1;
+EstimateStep = 0.5;
+EstimateFineStep = 0.05;
 Include "../../../examples/great_barrier_reef.geo";
 Printf("%g sea, %g islands, %g open-boundary curves", seas, islands, #open[]);
 Printf("Lizard Island: coast %.1f km from its centre, size %.0f m", lizard_shore / Km, lizard);
 Printf("Coral Sea %.1f km by the wavelength: %g", coral_sea / Km, coral_sea_by == WaveField);
+Printf("estimate: %.0f triangles, %.0f%% near Lizard Island", all_triangles, 100 * EstimatedTriangles / all_triangles);
 // expect: 1 sea, 4 islands, 6 open-boundary curves
 // expect: Lizard Island: coast 0.7 km from its centre, size 1000 m
 // expect: Coral Sea 28.6 km by the wavelength: 1
+// expect: estimate: 3497 triangles, 26% near Lizard Island

@@ -6,6 +6,7 @@ CoastAccuracy = 200e3;
 CoastFile = "world_l.txt";
 BathyName = "etopo5_global_1deg.nc";
 Quiet = 1;
+EstimateStep = 0;   // the 1-degree triangle estimate takes 20 s of CPU
 Include "../../../examples/world_ocean.geo";
 Printf("%g sea, %g islands, %g control points", seas, islands, points);
 Printf("mid-Pacific %.0f km by the wavelength: %g", pacific / Km, pacific_by == WaveField);
