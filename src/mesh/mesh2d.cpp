@@ -536,6 +536,13 @@ Mesh2dResult mesh_surfaces(const geo::Model& model, ModelMesh& mesh, const Mesh2
   return res;
 }
 
+std::vector<StageTime> stage_times(const Mesh2dStats& s) {
+  return {{"2D boundary", s.seconds_boundary},
+          {"2D refine", s.seconds_refine},
+          {"2D smooth", s.seconds_smooth},
+          {"2D output", s.seconds_output}};
+}
+
 std::function<void(std::span<const Vec3>, std::span<double>)> surface_size_fn(const geo::Model& model,
                                                                               const Mesh2dOptions& opt, int tag) {
   const double bbox = model_bbox(model, opt.bbox_diag);

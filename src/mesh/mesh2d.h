@@ -14,6 +14,7 @@
 #include "field/size_policy.h"
 #include "geo/model.h"
 #include "geo/sphere.h"
+#include "mesh/mesh_stats.h"
 #include "mesh/model_mesh.h"
 
 namespace sm {
@@ -23,8 +24,8 @@ enum class Mesh2dAlgorithm { MeshAdapt = 1, Automatic = 2, Del2d = 5, Frontal = 
 
 struct Mesh2dOptions {
   /// Del2d: refine_del2d; Frontal: refine_front2d; MeshAdapt: mesh_adapt from the
-  /// boundary mesh; Automatic is Del2d.
-  Mesh2dAlgorithm algorithm = Mesh2dAlgorithm::Del2d;
+  /// boundary mesh; Automatic is Del2d. Frontal by default, as Gmsh 4.8.4's Mesh.Algorithm.
+  Mesh2dAlgorithm algorithm = Mesh2dAlgorithm::Frontal;
   field::SizePolicyOptions size;                 ///< Mesh.MeshSize*
   const field::SizeField* background = nullptr;  ///< Background Field, if any
   double bbox_diag = 0;      ///< Gmsh's CTX::lc; <= 0: the model's bounding-box diagonal
@@ -61,6 +62,9 @@ struct Mesh2dResult {
   Mesh2dStats stats;
   bool ok() const { return error.surface == 0; }
 };
+
+/// The 2D stages as named in the statistics summary ("2D boundary", "2D refine", ...).
+std::vector<StageTime> stage_times(const Mesh2dStats& s);
 
 /// Meshes every Plane Surface of the model in tag order into `mesh` (which holds the 1D
 /// mesh from mesh_curves). Boundary and embedded nodes are the curve/vertex nodes, so

@@ -226,17 +226,15 @@ int main(int argc, char** argv) {
     const double t2 = since(t0), c2 = cpu_seconds() - c2start;
     if (!r2.ok()) return std::fprintf(stderr, "2D: %s\n", r2.error.message.c_str()), 1;
     sm::MeshStats st = sm::mesh_stats(r1.mesh, target);
-    st.stages = {{"1D", t1},
-                 {"2D boundary", r2.stats.seconds_boundary},
-                 {"2D refine", r2.stats.seconds_refine},
-                 {"2D smooth", r2.stats.seconds_smooth},
-                 {"2D output", r2.stats.seconds_output}};
+    st.stages = {{"1D", t1}};
+    for (const sm::StageTime& x : sm::stage_times(r2.stats)) st.stages.push_back(x);
     std::printf("  ours: 1D %.3f s CPU (%.3f wall; %llu edges, %u repair splits), 2D %.3f s CPU (%.3f wall: boundary "
                 "%.3f, refine %.3f, smooth %.3f, output %.3f): %.0f triangles/s CPU in 2D, %zu warnings\n",
                 c1, t1, static_cast<unsigned long long>(r1.stats.edges), r1.stats.repair_splits, c2, t2,
                 r2.stats.seconds_boundary, r2.stats.seconds_refine, r2.stats.seconds_smooth, r2.stats.seconds_output,
                 static_cast<double>(st.triangles) / c2, r2.warnings.size());
     print_stats("ours", st);
+    std::printf("%s", sm::format_stats(st).c_str());
     ours_1d[a] = c1, ours_2d[a] = c2;
     if (!out_msh.empty()) {
       std::string err;
