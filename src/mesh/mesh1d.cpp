@@ -305,6 +305,15 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
     mesh.vertex_node[tag] = g ? mesh.add_node(v.xyz, v.uv) : mesh.add_node(v.xyz);
   }
   auto t0 = std::chrono::steady_clock::now();
+  // Gmsh: the vertex of a closed curve that no other curve touches is not tied to its
+  // control point: its node moves to the curve's start (a periodic B-spline does not pass
+  // through its first control point).
+  std::map<int, int> curves_at;   // vertex tag -> curves beginning or ending there
+  for (const auto& [tag, mc] : model.curves()) {
+    ++curves_at[mc.begin];
+    if (mc.end != mc.begin) ++curves_at[mc.end];
+  }
+  auto moves_vertex = [&](const geo::ModelCurve& mc) { return mc.begin == mc.end && curves_at[mc.begin] == 1; };
   std::vector<Vec3> pts;
   std::vector<double> bg;
   for (const auto& [tag, mc] : model.curves()) {
@@ -359,7 +368,49 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
                              fmt::format("curve {}: the size integral is not finite (a size of zero or a degenerate curve)", tag));
       return res;
     }
-    const std::vector<double> ts = place_nodes(prim, min_segments(shape, opt));
+    const int min_segs = min_segments(shape, opt);
+    std::vector<double> ts = place_nodes(prim, min_segs);
+    // Gmsh's filterPoints: an interior node closer than 0.3 h to the previous node kept
+    // (noisy curves, tight turns) is dropped, unless that leaves fewer than the minimum.
+    // Sizes come one at a time (each depends on the node kept before), so first a batch
+    // screen with every node kept decides whether the curve needs it at all.
+    if (ts.size() > 2) {
+      const std::size_t n = ts.size();
+      std::vector<Vec3> x(n);
+      x[0] = moves_vertex(mc) ? shape.point(0) : vb->xyz;
+      for (std::size_t i = 1; i + 1 < n; ++i) x[i] = shape.point(ts[i]);
+      std::vector<double> tm(n - 2), hm(n - 2);
+      std::vector<geo::Jet3> jm(n - 2);
+      for (std::size_t i = 1; i + 1 < n; ++i) {
+        tm[i - 1] = i == 1 ? ts[1] : 0.5 * (ts[i] + ts[i - 1]);
+        jm[i - 1] = shape.eval(tm[i - 1]);
+      }
+      size(tm, jm, hm);
+      bool close = false;
+      for (std::size_t i = 1; i + 1 < n && !close; ++i) close = norm(x[i] - x[i - 1]) < 0.5 * hm[i - 1] / stretch;
+      if (close) {
+        std::vector<std::uint8_t> drop(n, 0);
+        std::size_t dropped = 0, prev = 0;
+        for (std::size_t i = 1; i + 1 < n; ++i) {
+          const double t = i == 1 ? ts[1] : 0.5 * (ts[i] + ts[prev]);
+          const geo::Jet3 j = shape.eval(t);
+          double h = 0;
+          size(std::span<const double>(&t, 1), std::span<const geo::Jet3>(&j, 1), std::span<double>(&h, 1));
+          if (norm(x[i] - x[prev]) < 0.3 * h / stretch) {
+            drop[i] = 1;
+            ++dropped;
+          } else {
+            prev = i;
+          }
+        }
+        if (dropped > 0 && static_cast<int>(n - 2 - dropped) >= min_segs + 1 - 2) {
+          std::vector<double> kept;
+          for (std::size_t i = 0; i < n; ++i)
+            if (!drop[i]) kept.push_back(ts[i]);
+          ts.swap(kept);
+        }
+      }
+    }
     CurveMesh cm;
     cm.tag = tag;
     cm.t = ts;
@@ -370,6 +421,12 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
       cm.nodes.push_back(uv ? mesh.add_node(shape.point(ts[i]), shape.eval_uv(ts[i]).p) : mesh.add_node(shape.point(ts[i])));
     cm.nodes.push_back(mesh.vertex_node.at(mc.end));
     mesh.curves.emplace(tag, std::move(cm));
+  }
+  for (const auto& [tag, mc] : model.curves()) {
+    if (!moves_vertex(mc)) continue;
+    MeshNode& n = mesh.nodes[mesh.vertex_node.at(mc.begin)];
+    n.xyz = mc.shape->point(0);
+    if (mc.shape->on_surface()) n.uv = mc.shape->eval_uv(0).p, n.has_uv = true;
   }
   res.stats.seconds_integrate = seconds_since(t0);
   if (opt.repair_intersections) {

@@ -18,3 +18,4 @@ Background Field = 1;
 Mesh 1;
 gmsh_nodes = 553;   // Mesh.NbNodes after gmsh 4.8.4 meshes this script (gmsh -1)
 Printf("within 5 percent: %g", Fabs(Mesh.NbNodes - gmsh_nodes) <= 0.05 * gmsh_nodes);   // expect: within 5 percent: 1
+Printf("%g nodes", Mesh.NbNodes);   // expect: 553 nodes
