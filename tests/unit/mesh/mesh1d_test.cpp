@@ -366,3 +366,42 @@ TEST_CASE("mesh1d: Gmsh's smoothing limits the size growth along a curve (Mesh.S
   REQUIRE(r.ok());
   CHECK(r.mesh.nodes.size() == 6);
 }
+
+TEST_CASE("mesh1d: a lone closed curve's vertex node sits on the curve, as gmsh 4.8.4 writes it") {
+  geo::Model m;
+  const Vec3 p[4] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  for (int i = 0; i < 4; ++i) REQUIRE(m.add_point(i + 1, p[i], 0.1).ok());
+  REQUIRE(m.add_curve(1, geo::CurveKind::BSpline, {1, 2, 3, 4, 1}).ok());
+  Mesh1dResult r = mesh_curves(m, {});
+  REQUIRE(r.ok());
+  // gmsh -1: node 1 at (1/6, 1/6, 0), 33 nodes in all.
+  const Vec3 v = r.mesh.nodes[r.mesh.vertex_node.at(1)].xyz;
+  CHECK(v.x == doctest::Approx(1.0 / 6));
+  CHECK(v.y == doctest::Approx(1.0 / 6));
+  CHECK(r.mesh.nodes.size() == 33);
+  // A second curve at that vertex pins the node to the point again.
+  REQUIRE(m.add_point(5, {0.5, 0.5, 0}, 0.1).ok());
+  REQUIRE(m.add_curve(2, geo::CurveKind::Line, {1, 5}).ok());
+  r = mesh_curves(m, {});
+  REQUIRE(r.ok());
+  CHECK(r.mesh.nodes[r.mesh.vertex_node.at(1)].xyz == Vec3{0, 0, 0});
+}
+
+TEST_CASE("mesh1d: nodes closer than 0.3 h to the previous one are filtered out") {
+  // A polyline doubling back on itself within one size: the integral along it asks for
+  // nodes that end up next to each other in space; Gmsh's filter removes them.
+  geo::Model m;
+  REQUIRE(m.add_point(1, {0, 0, 0}, 0.1).ok());
+  REQUIRE(m.add_point(2, {1, 0, 0}, 0.1).ok());
+  REQUIRE(m.add_point(3, {1, 0.001, 0}, 0.1).ok());
+  REQUIRE(m.add_point(4, {0.5, 0.001, 0}, 0.1).ok());
+  REQUIRE(m.add_curve(1, geo::CurveKind::Line, {1, 2, 3, 4}).ok());
+  const Mesh1dResult r = mesh_curves(m, {});
+  REQUIRE(r.ok());
+  const CurveMesh& c = r.mesh.curves.at(1);
+  // Without the filter: a = 15.01 -> 16 nodes; nodes on the way back lie next to nodes on
+  // the way out but never next to the node just before them, so only the turn is thinned.
+  CHECK(c.nodes.size() <= 16);
+  for (std::size_t k = 1; k + 1 < c.nodes.size(); ++k)
+    CHECK(norm(r.mesh.nodes[c.nodes[k]].xyz - r.mesh.nodes[c.nodes[k - 1]].xyz) >= 0.03 - 1e-12);
+}
