@@ -71,7 +71,8 @@ std::vector<StageTime> stage_times(const Mesh2dStats& s);
 /// faces sharing curves share nodes; interior nodes get their (u,v) on a surface geometry.
 /// Triangles are oriented with the outward normal on a sphere and by the right-hand rule
 /// of the outer loop on a plane. Deterministic. On failure, surfaces meshed before the
-/// failing one are kept, the failing one is absent.
+/// failing one are kept, the failing one is absent. A filling (transfinite) Surface is an
+/// error: it is not meshed yet.
 Mesh2dResult mesh_surfaces(const geo::Model& model, ModelMesh& mesh, const Mesh2dOptions& opt);
 
 /// The target size (without extension from the boundary) at 3D points of surface `tag`:
