@@ -22,7 +22,7 @@ Include "regions.geo";
 
 DefineConstant[ CoastAccuracy = 30e3, CoastFile = "world_i_A100.txt",
                 BathyName = "etopo5_global_0.25deg.nc", Quiet = 0, DoMesh = 0,
-                EstimateStep = 1 ];
+                EstimateStep = 1, CloseStraits = 1 ];
 // EstimateStep: lon/lat step (degrees) of the triangle-count estimate (0: skip it).
 // DoMesh = 1 runs the `Mesh 2; Save` part at the end (stereomesh -0 ... -setnumber DoMesh 1);
 // it is off by default while `Mesh 2` is not available in stereomesh yet.
@@ -35,6 +35,9 @@ Coastline[1] = LonLatText;
 Coastline[1].FileName = StrCat(GshhgDir, CoastFile);
 Coastline[1].AccuracyField = 1;
 Coastline[1].AntarcticaLevel = 5;            // the ice front, as GSHHS level 5
+// Straits narrower than gamma closed (the two islands merged): without this the coasts'
+// 1D mesh crosses itself in the Singapore Strait at 30 km (curves near 101.46E 1.75N).
+Coastline[1].CloseStraits = CloseStraits;
 
 OceanLoops[] = Coastline{1};
 OceanLoopsPerSurface[] = Coastline{1, "LoopsPerSurface"};

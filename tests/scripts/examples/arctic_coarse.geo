@@ -16,3 +16,8 @@ Printf("estimate: %.0f triangles", EstimatedTriangles);
 // expect: archipelago points are a subset: 1
 // expect: Barrow Strait 68 km, North Pole 182 km
 // expect: estimate: 3557 triangles
+// The model meshes in 1D (the coasts at the size field, no crossing curves): Mesh.NbNodes
+// was 2056 when written (every model point counts, control points included).
+Mesh 1;
+Printf("1D mesh within 15%% of 2056 nodes: %g", Fabs(Mesh.NbNodes - 2056) < 0.15 * 2056);
+// expect: 1D mesh within 15% of 2056 nodes: 1

@@ -12,3 +12,8 @@ Printf("estimate: %.0f triangles", EstimatedTriangles);
 // expect: 16 islands, 2 open-boundary curves, 18 coast curves
 // expect: Irish Sea 11.1 km, Atlantic 30 km
 // expect: estimate: 15546 triangles
+// The model meshes in 1D (the coasts at the size field, no crossing curves): Mesh.NbNodes
+// was 2516 when written (every model point counts, control points included).
+Mesh 1;
+Printf("1D mesh within 15%% of 2516 nodes: %g", Fabs(Mesh.NbNodes - 2516) < 0.15 * 2516);
+// expect: 1D mesh within 15% of 2516 nodes: 1

@@ -10,3 +10,8 @@ Printf("%g seas, %g open-boundary curves, %g kept shore points", seas, #open[], 
 Printf("Antwerp %.0f m, central North Sea %.0f km", antwerp, offshore / Km);
 // expect: 3 seas, 15 open-boundary curves, 366 kept shore points
 // expect: Antwerp 2000 m, central North Sea 50 km
+// The model meshes in 1D (the coasts at the size field, no crossing curves): Mesh.NbNodes
+// was 836 when written (every model point counts, control points included).
+Mesh 1;
+Printf("1D mesh within 15%% of 836 nodes: %g", Fabs(Mesh.NbNodes - 836) < 0.15 * 836);
+// expect: 1D mesh within 15% of 836 nodes: 1
