@@ -52,7 +52,8 @@ class Frontal {
   bool evaluate(std::span<const std::uint32_t> tris, std::span<const VertexId> verts);
   /// Classifies freshly sized triangles and queues those on the front.
   void classify(std::span<const std::uint32_t> tris);
-  bool fail_size(double h);
+  /// Records a non-positive or non-finite size at `where` as the error.
+  bool fail_size(double h, Vec2 where);
   void grow_slots();
 
   TriangleStore& m_;
@@ -122,9 +123,11 @@ void Frontal::wake_neighbours(std::uint32_t t) {
   }
 }
 
-bool Frontal::fail_size(double h) {
+bool Frontal::fail_size(double h, Vec2 where) {
   if (h > 0 && std::isfinite(h)) return false;
-  if (res_.error.empty()) res_.error = "mesh size must be positive and finite (got " + std::to_string(h) + ")";
+  if (res_.error.empty())
+    res_.error = "mesh size must be positive and finite (got " + std::to_string(h) + " at (" +
+                 std::to_string(where.x) + ", " + std::to_string(where.y) + ") in the parameter plane)";
   return true;
 }
 
@@ -148,7 +151,7 @@ bool Frontal::evaluate(std::span<const std::uint32_t> tris, std::span<const Vert
   if (opt_.size_at) opt_.size_at(pts_, h_);
   else std::fill(h_.begin(), h_.end(), opt_.size);
   for (std::size_t i = 0; i < n; ++i)
-    if (fail_size(h_[i])) return false;
+    if (fail_size(h_[i], pts_[i])) return false;
   for (std::size_t i = 0; i < verts.size(); ++i) vsize_[verts[i].value] = h_[tris.size() + i];
   for (std::size_t i = 0; i < tris.size(); ++i) {
     const std::uint32_t t = tris[i];

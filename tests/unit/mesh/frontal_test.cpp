@@ -212,6 +212,8 @@ TEST_CASE("front2d: bad sizes and limits are errors, not hangs") {
   FrontalResult r = refine_front2d(m, opt);
   CHECK_FALSE(r.ok());
   CHECK(r.error.find("positive") != std::string::npos);
+  MESSAGE(r.error);
+  CHECK(r.error.find(" at (0.") != std::string::npos);  // located: a point with x > 0.5
   CHECK(check_topology(m).ok());
   opt.size_at = [](std::span<const Vec2>, std::span<double> h) { std::fill(h.begin(), h.end(), std::nan("")); };
   CHECK_FALSE(refine_front2d(m, opt).ok());
