@@ -51,23 +51,26 @@ If (!Exists(OceanFieldsGeoLoaded))
       Abort;
     EndIf
     // A region's closing pieces lie on the box: their points are not coast.
-  If (Exists(ShoreBox[]) && Exists(ShorePoints[]))
-    shore_kept_[] = {};
-    For shore_i_ In {0 : #ShorePoints[] - 1}
-      shore_p_[] = Point{ShorePoints[shore_i_]};
-      shore_lon_ = Atan2(shore_p_[1], shore_p_[0]) * Rad2Deg;
-      shore_lat_ = Atan2(shore_p_[2], Hypot(shore_p_[0], shore_p_[1])) * Rad2Deg;
-      shore_lon_ = ShoreBox[0] + Fmod(Fmod(shore_lon_ - ShoreBox[0], 360) + 360, 360);
-      shore_on_box_ = Fabs(shore_lat_ - ShoreBox[2]) < 1e-5 || Fabs(shore_lat_ - ShoreBox[3]) < 1e-5 ||
-                      Fabs(shore_lon_ - ShoreBox[0]) < 1e-5 || Fabs(shore_lon_ - ShoreBox[1]) < 1e-5 ||
-                      Fabs(shore_lon_ - ShoreBox[0] - 360) < 1e-5;
-      If (!shore_on_box_)
-        shore_kept_[] += ShorePoints[shore_i_];
-      EndIf
-    EndFor
-    ShorePoints[] = shore_kept_[];
-  EndIf
-  ShoreDistanceField = newf;
+    If (Exists(ShoreBox[]) && Exists(ShorePoints[]))
+      shore_kept_[] = {};
+      For shore_i_ In {0 : #ShorePoints[] - 1}
+        shore_p_[] = Point{ShorePoints[shore_i_]};
+        shore_lon_ = Atan2(shore_p_[1], shore_p_[0]) * Rad2Deg;
+        shore_lat_ = Atan2(shore_p_[2], Hypot(shore_p_[0], shore_p_[1])) * Rad2Deg;
+        shore_lon_ = ShoreBox[0] + Fmod(Fmod(shore_lon_ - ShoreBox[0], 360) + 360, 360);
+        shore_on_box_ = Fabs(shore_lat_ - ShoreBox[2]) < 1e-5 || Fabs(shore_lat_ - ShoreBox[3]) < 1e-5;
+        // A box all round the globe (the Arctic's) has no west or east side.
+        If (ShoreBox[1] - ShoreBox[0] < 360)
+          shore_on_box_ = shore_on_box_ || Fabs(shore_lon_ - ShoreBox[0]) < 1e-5 ||
+                          Fabs(shore_lon_ - ShoreBox[1]) < 1e-5 || Fabs(shore_lon_ - ShoreBox[0] - 360) < 1e-5;
+        EndIf
+        If (!shore_on_box_)
+          shore_kept_[] += ShorePoints[shore_i_];
+        EndIf
+      EndFor
+      ShorePoints[] = shore_kept_[];
+    EndIf
+    ShoreDistanceField = newf;
     Field[ShoreDistanceField] = Distance;
     If (Exists(ShorePoints[]))
       Field[ShoreDistanceField].PointsList = {ShorePoints[]};
