@@ -74,7 +74,6 @@ Call OceanSize;
 // Figures we can check before meshing.
 seas = #OceanSurfaces[];
 islands = #OceanLoops[] - seas;
-caa_islands = 0;
 If (!Quiet)
   Printf("%g seas, %g islands, %g open-boundary curves, %g coast points (%g in the archipelago)",
          seas, islands, #open[], #all_points[], #caa_points[]);

@@ -6,6 +6,7 @@
 // one before the Include. Lengths are in metres: with the sphere of radius EarthRadius that
 // `Call EarthSphere;` builds, coastline accuracies, field sizes and Distance fields are all
 // in metres.
+//
 // Included twice (e.g. by a script and by another stdlib file), the second Include does
 // nothing: macros cannot be redefined.
 If (!Exists(EarthGeoLoaded))

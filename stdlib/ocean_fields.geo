@@ -13,6 +13,7 @@
 // are the paper's World Ocean (Figures 9-10); set a variable before the Call to change it.
 // Each macro takes new field ids (newf), so they can be called more than once (e.g. two
 // shore criteria with different coasts); the output variables name the fields made last.
+//
 // Included twice (e.g. by a script and by another stdlib file), the second Include does
 // nothing: macros cannot be redefined.
 If (!Exists(OceanFieldsGeoLoaded))

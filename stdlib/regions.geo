@@ -2,6 +2,7 @@
 // and places the examples refine around; the boxes match the regional GSHHG cuts in
 // shared/data/gshhg (data/README.md). `Include "regions.geo";`, then e.g.
 // `Coastline[1].Region = {RegionGBR[]};` or `box[] = RegionArctic[]; Call InBox;`.
+//
 // Included twice (e.g. by a script and by another stdlib file), the second Include does
 // nothing: macros cannot be redefined.
 If (!Exists(RegionsGeoLoaded))
