@@ -57,7 +57,10 @@ class Recoverer {
 void Recoverer::recover(std::uint32_t i, VertexId a0, VertexId b0) {
   work_.assign(1, {a0, b0});
   while (!work_.empty()) {
-    const auto [a, b] = work_.back();
+    // Plain variables, not a structured binding: the lambda below captures
+    // them, which C++20 allows but clang 14 (the fuzz build) rejects.
+    const Edge top = work_.back();
+    const VertexId a = top.first, b = top.second;
     work_.pop_back();
     if (const Side s = find_side(m_, a, b); s.valid()) {
       if (a == a0 && b == b0) ++res_.stats.already_present;

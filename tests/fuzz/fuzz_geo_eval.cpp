@@ -25,7 +25,15 @@ void evaluate_parsed(const std::string& text) {
   std::ostream null_out(&null_buffer);
   lang::SourceManager sources;
   lang::Diagnostics diags(sources);
-  interp::Interpreter interpreter(sources, diags, null_out);
+  // Small limits keep every input fast under ASan (loops, ranges, macro
+  // recursion and huge lists all hit a limit with a clean diagnostic).
+  interp::RunSettings settings;
+  settings.limits.max_statements = 100000;
+  settings.limits.max_list_size = 100000;
+  settings.limits.max_string_size = 100000;
+  settings.limits.max_call_depth = 64;
+  settings.limits.max_include_depth = 4;
+  interp::Interpreter interpreter(sources, diags, null_out, settings);
   interpreter.run_buffer("fuzz.geo", text);
   (void)diags.render_all();
 }
