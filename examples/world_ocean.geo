@@ -96,6 +96,31 @@ Assert(shelf_wave > 200e3 && shelf_by == ShoreField, "shelf: wavelength %g m, cr
        shelf_wave, shelf_by);
 Assert(Fabs(coast - ShoreSizeMin) < 1, "size on the coast %g m", coast);
 
+// Figure 10: in the North Pacific close-up "the effects of the three refinement rules are
+// clearly visible". Which criterion sets the size, on a 2-degree grid of water points?
+np[] = RegionNorthPacific[];
+depth_field = newf;
+Field[depth_field] = Bathymetry;
+Field[depth_field].FileName = BathyFile;
+by_shore = 0;  by_wave = 0;  by_hessian = 0;
+For lat In {np[2] + 1 : np[3] - 1 : 2}
+  For lon In {np[0] + 1 : np[1] - 1 : 2}
+    Call LonLatToXYZ;
+    If (FieldValue(depth_field, x, y, z) > MinDepth)
+      which = FieldArgmin(MinSizeField, x, y, z);
+      by_shore += which == ShoreField;
+      by_wave += which == WaveField;
+      by_hessian += which == HessianField;
+    EndIf
+  EndFor
+EndFor
+np_total = by_shore + by_wave + by_hessian;
+If (!Quiet)
+  Printf("North Pacific (Figure 10), %g water points: shore %.0f%%, wavelength %.0f%%, Hessian %.0f%%",
+         np_total, 100 * by_shore / np_total, 100 * by_wave / np_total, 100 * by_hessian / np_total);
+EndIf
+Assert(by_shore > 0 && by_wave > 0 && by_hessian > 0, "a criterion never acts in the North Pacific");
+
 If (EstimateStep > 0)
   EstimateDepthField = newf;
   Field[EstimateDepthField] = Bathymetry;
