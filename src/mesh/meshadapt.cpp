@@ -34,6 +34,9 @@ class Adapter {
 
  private:
   PredicateStats* pst() { return &res_.stats.predicates; }
+  void after(const char* pass) const {
+    if (opt_.after_pass) opt_.after_pass(m_, pass);
+  }
   /// Length in the size field: |ab| times the trapezoid mean of 1/h.
   double length(VertexId a, VertexId b) const {
     return norm(m_.pos(b) - m_.pos(a)) * 0.5 * (inv_h_[a.value] + inv_h_[b.value]);
@@ -327,10 +330,13 @@ void Adapter::run() {
   for (int it = 0; it < opt_.max_iterations && res_.error.empty(); ++it) {
     ++res_.stats.iterations;
     const std::uint64_t split = split_pass();
+    after("split");
     if (!res_.error.empty()) break;
     const std::uint64_t collapsed = collapse_pass();
+    after("collapse");
     swap_pass(it == 0);
-    for (int k = 0; k < opt_.smoothing_passes && res_.error.empty(); ++k) smooth_pass(false);
+    after("swap");
+    for (int k = 0; k < opt_.smoothing_passes && res_.error.empty(); ++k) smooth_pass(false), after("smooth");
     if (split == 0 && collapsed == 0) break;
     // Stall detection starts once a round changes less than 1% of the
     // triangles (the refinement front has swept the domain).
@@ -342,7 +348,9 @@ void Adapter::run() {
   if (!res_.error.empty()) return;
   for (int k = 0; k < opt_.smoothing_passes && res_.error.empty(); ++k) {
     swap_pass(true);
+    after("swap");
     smooth_pass(true);
+    after("smooth");
   }
   res_.vertex_map = drop_isolated_vertices(m_, opt_.move_input_vertices ? 0 : n_input);
 }

@@ -36,6 +36,9 @@ struct MeshAdaptOptions {
   /// when set. Off by default: such vertices are embedded points.
   bool move_input_vertices = false;
   std::uint32_t max_vertices = 0xFFFFFFF0u;
+  /// Called after every pass with its name ("split", "collapse", "swap",
+  /// "smooth"), for tests that run the checkers between operations.
+  std::function<void(const TriangleStore& m, const char* pass)> after_pass;
 };
 
 struct MeshAdaptStats {

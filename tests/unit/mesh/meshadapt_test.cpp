@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <functional>
+#include <map>
+#include <string>
 #include <span>
 
 #include "mesh/check.h"
@@ -150,6 +152,37 @@ TEST_CASE("meshadapt: graded size round two holes") {
   }
   for (const Loop* l : {&sq, &h1, &h2})
     for (VertexId v : l->v) CHECK(v.value < nb);
+}
+
+TEST_CASE("meshadapt: the checkers hold after every pass") {
+  const auto size = [](Vec2 p) { return 0.03 + 0.05 * p.x; };
+  TriangleStore m;
+  const Loop sq = graded_polygon(m, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, size, false);
+  const Loop hole = graded_circle(m, {0.45, 0.5}, 0.2, size);
+  std::vector<Edge> edges;
+  REQUIRE(testing::boundary_mesh(m, {sq, hole}, &edges));
+  MeshAdaptOptions opt;
+  opt.size_at = [&](std::span<const Vec2> pts, std::span<double> h) {
+    for (std::size_t i = 0; i < pts.size(); ++i) h[i] = size(pts[i]);
+  };
+  std::map<std::string, int> passes;
+  opt.after_pass = [&](const TriangleStore& t, const char* pass) {
+    ++passes[pass];
+    const CheckResult topo = check_topology(t);
+    INFO(pass, ": ", topo.error);
+    REQUIRE(topo.ok());
+    const CheckResult cons = check_constraints(t, edges);
+    INFO(pass, ": ", cons.error);
+    REQUIRE(cons.ok());
+  };
+  const auto r = mesh_adapt(m, opt);
+  REQUIRE(r.ok());
+  CHECK(passes["split"] >= 5);
+  CHECK(passes["collapse"] == passes["split"]);
+  CHECK(passes["swap"] == passes["split"] + 1);
+  CHECK(passes["smooth"] == passes["split"] + 1);
+  CHECK(r.stats.collapses > 0);
+  CHECK(mesh_quality(m, size).share_len_07_14 > 0.95);
 }
 
 TEST_CASE("meshadapt: a spherical cap in the stereographic plane (paper section 3.1)") {
