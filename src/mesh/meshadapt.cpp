@@ -14,7 +14,6 @@
 #include "mesh/modify/collapse.h"
 #include "mesh/modify/split.h"
 #include "mesh/modify/swap.h"
-#include "mesh/quality.h"
 
 namespace sm {
 namespace {
@@ -39,7 +38,7 @@ class Adapter {
   }
   /// Length in the size field: |ab| times the trapezoid mean of 1/h.
   double length(VertexId a, VertexId b) const {
-    return norm(m_.pos(b) - m_.pos(a)) * 0.5 * (inv_h_[a.value] + inv_h_[b.value]);
+    return std::sqrt(norm2(m_.pos(b) - m_.pos(a))) * 0.5 * (inv_h_[a.value] + inv_h_[b.value]);
   }
   void evaluate(const std::vector<std::uint32_t>& verts);
   void evaluate_from(std::uint32_t first);
@@ -168,7 +167,7 @@ std::uint64_t Adapter::split_pass() {
 
 double Adapter::ball_min_rho(const std::vector<Side>& ring, Vec2 p) const {
   double q = 1;
-  for (Side x : ring) q = std::min(q, rho(p, m_.pos(m_.dest(x)), m_.pos(m_.apex(x))));
+  for (Side x : ring) q = std::min(q, rho_fast(p, m_.pos(m_.dest(x)), m_.pos(m_.apex(x))));
   return q;
 }
 
@@ -179,7 +178,7 @@ double Adapter::collapse_quality(VertexId w) const {
     const VertexId a = m_.dest(x), b = m_.apex(x);
     if (a == w || b == w) continue;
     if (length(w, a) > kLongEdge) return -1;
-    q = std::min(q, rho(pw, m_.pos(a), m_.pos(b)));
+    q = std::min(q, rho_fast(pw, m_.pos(a), m_.pos(b)));
   }
   return q;
 }
@@ -297,7 +296,7 @@ std::uint64_t Adapter::smooth_pass(bool all) {
     if (!ok || ball_min_rho(ring_, p) < ball_min_rho(ring_, old)) continue;
     m_.xy[v] = p;
     moved_.push_back(v);
-    if (norm(p - old) * inv_h_[v] > 0.01) {
+    if (norm2(p - old) * inv_h_[v] * inv_h_[v] > 1e-4) {
       touch(VertexId{v});
       for (Side x : ring_) touch(m_.dest(x));
     }

@@ -10,27 +10,22 @@ bool vertex_ring(const TriangleStore& m, VertexId v, std::vector<Side>& out) {
   out.clear();
   const Side start = m.out_side[v.value];
   if (!start.valid()) return false;
-  // Clockwise to the first side of an open fan (next(twin(s)) leaves v).
-  Side first = start;
-  for (;;) {
-    const Side o = m.twin[first.value];
-    if (!o.valid()) break;
-    const Side n = next(o);
-    if (n == start) {  // closed: go round counter-clockwise from start
-      first = start;
-      break;
-    }
-    first = n;
-  }
-  // Counter-clockwise: twin(prev(s)) leaves v in the next triangle.
-  Side s = first;
-  for (;;) {
+  // Counter-clockwise (twin(prev(s)) leaves v in the next triangle): back
+  // at the start for an interior vertex, the usual case.
+  for (Side s = start;;) {
     out.push_back(s);
     const Side n = m.twin[prev(s).value];
-    if (!n.valid()) return false;
-    if (n == first) return true;
+    if (!n.valid()) break;
+    if (n == start) return true;
     s = n;
   }
+  // Open fan: clockwise (next(twin(s)) leaves v) to its first side, then
+  // counter-clockwise again to the last.
+  Side first = start;
+  for (Side o = m.twin[first.value]; o.valid(); o = m.twin[first.value]) first = next(o);
+  out.clear();
+  for (Side s = first; s.valid(); s = m.twin[prev(s).value]) out.push_back(s);
+  return false;
 }
 
 CollapseCheck can_collapse(const TriangleStore& m, Side s, std::vector<Side>& ring, PredicateStats* st) {
