@@ -345,11 +345,14 @@ void Adapter::run() {
     else if (++stalled >= kStallRounds) break;
   }
   if (!res_.error.empty()) return;
+  // A full swap pass, then full smoothing sweeps each followed by swaps.
+  swap_pass(true);
+  after("swap");
   for (int k = 0; k < opt_.smoothing_passes && res_.error.empty(); ++k) {
-    swap_pass(true);
-    after("swap");
     smooth_pass(true);
     after("smooth");
+    swap_pass(false);
+    after("swap");
   }
   res_.vertex_map = drop_isolated_vertices(m_, opt_.move_input_vertices ? 0 : n_input);
 }
