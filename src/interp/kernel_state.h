@@ -52,6 +52,8 @@ struct KernelState {
   std::map<std::pair<int, int>, lang::SourceRange> created_at;
   /// The mesh of the last `Mesh n;` (builtins/mesh_commands.cpp), what `Save` writes.
   std::shared_ptr<const ModelMesh> mesh;
+  /// Statistics of the last `Mesh 2;` as JSON (for `--stats FILE.json`); empty before.
+  std::string mesh_stats_json;
 };
 
 }  // namespace sm::interp

@@ -18,6 +18,7 @@ const std::vector<OptionInfo>& build_table() {
   static const std::vector<OptionInfo> table = {
 #define OPT(kind, name, def, ro, help) OptionInfo{OptionKind::kind, name, def, ro, help},
 #include "interp/options_table.def"
+#include "interp/options_native.def"
 #undef OPT
   };
   return table;

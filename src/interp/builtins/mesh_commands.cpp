@@ -1,10 +1,14 @@
 // Mesh commands: `Mesh 1;` runs the 1D mesher (mesh/mesh1d) on the model with the
-// script's Mesh.* options and Background Field, `Save "f";` writes the current mesh
-// (MSH 2.2/4.1 or VTK by extension) atomically, and the command line's -1 does both.
-// The other mesh commands and post-processing statements are reported as not supported.
+// script's Mesh.* options and Background Field, `Mesh 2;` then meshes the faces
+// (mesh/mesh2d, Mesh.Algorithm 1, 2, 5 or 6) and prints the statistics, `Save "f";`
+// writes the current mesh (MSH 2.2/4.1 or VTK by extension) atomically, and the
+// command line's -1 / -2 do both. The other mesh commands and post-processing
+// statements are reported as not supported.
 #include "interp/builtins/mesh_commands.h"
 
 #include <array>
+#include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <memory>
 
@@ -17,8 +21,11 @@
 #include "interp/interpreter.h"
 #include "io/from_model_mesh.h"
 #include "io/msh_writer.h"
+#include "io/svg_writer.h"
 #include "io/vtk_writer.h"
 #include "mesh/mesh1d.h"
+#include "mesh/mesh2d.h"
+#include "mesh/mesh_stats.h"
 
 namespace sm::interp {
 
@@ -55,15 +62,93 @@ Diag diag_of(const Mesh1dError& e) {
              : Diag::MeshFailed;
 }
 
-// Meshes the model up to `dim` into the kernel state; on failure returns the error.
-Mesh1dError mesh_model(Interpreter& in, int dim) {
+// A meshing failure on its way to a diagnostic (kind, message, notes at the
+// statements that created the entities involved).
+struct MeshFailure {
+  Diag kind = Diag::MeshFailed;
+  std::string message;
+  std::vector<DiagNote> notes;
+  bool failed() const { return !message.empty(); }
+};
+
+// Mesh.Algorithm -> the 2D algorithms we have; the others are refused by name.
+bool mesh2d_algorithm(int algo, Mesh2dAlgorithm& out) {
+  switch (algo) {
+    case 1: out = Mesh2dAlgorithm::MeshAdapt; return true;
+    case 2: out = Mesh2dAlgorithm::Automatic; return true;
+    case 5: out = Mesh2dAlgorithm::Del2d; return true;
+    case 6: out = Mesh2dAlgorithm::Frontal; return true;
+    default: return false;
+  }
+}
+
+// Publishes the statistics as read-only options and prints the summary.
+void publish_stats(Interpreter& in, const ModelMesh& mesh, const MeshStats& st) {
+  Options& o = in.options();
+  o.set_number("Mesh.NbNodes", static_cast<double>(mesh.nodes.size()), /*internal=*/true);
+  o.set_number("Mesh.NbTriangles", static_cast<double>(st.triangles), true);
+  o.set_number("Mesh.StatsRhoMin", st.min_rho, true);
+  o.set_number("Mesh.StatsRhoMean", st.mean_rho, true);
+  o.set_number("Mesh.StatsRhoAbove09", st.share_rho_09, true);
+  o.set_number("Mesh.StatsEdgeRatioMedian", st.len_median, true);
+  o.set_number("Mesh.StatsEdgeInRange", st.share_len_07_14, true);
+  in.kernel().mesh_stats_json = stats_json(st);
+  if (o.number("General.Verbosity") >= 4) {
+    std::fputs(format_stats(st).c_str(), stderr);
+    std::fflush(stderr);
+  }
+}
+
+// Meshes the model up to `dim` into the kernel state; on failure returns why.
+MeshFailure mesh_model(Interpreter& in, int dim) {
+  using Clock = std::chrono::steady_clock;
   KernelState& k = in.kernel();
   const field::FieldPtr background = background_size_field(in);
+  Mesh2dOptions opt2;
+  if (dim >= 2) {
+    const int algo = static_cast<int>(in.options().number("Mesh.Algorithm"));
+    if (!mesh2d_algorithm(algo, opt2.algorithm))
+      return {Diag::MeshFailed,
+              fmt::format("Mesh.Algorithm {} is not available: use 1 (meshadapt), 2 (automatic), 5 (del2d) or 6 "
+                          "(front2d)",
+                          algo),
+              {}};
+  }
+  const auto t0 = Clock::now();
   Mesh1dResult r = mesh_curves(k.model, mesh1d_options(in, background.get()));
-  if (!r.ok()) return r.error;
-  k.mesh = std::make_shared<ModelMesh>(std::move(r.mesh));
-  in.options().set_number("Mesh.NbNodes", static_cast<double>(k.mesh->nodes.size()), /*internal=*/true);
-  (void)dim;
+  if (!r.ok()) return {diag_of(r.error), r.error.message, curve_notes(k, r.error)};
+  auto mesh = std::make_shared<ModelMesh>(std::move(r.mesh));
+  const double seconds_1d = std::chrono::duration<double>(Clock::now() - t0).count();
+  if (dim < 2) {
+    in.options().set_number("Mesh.NbNodes", static_cast<double>(mesh->nodes.size()), /*internal=*/true);
+    k.mesh = std::move(mesh);
+    return {};
+  }
+  opt2.size = size_policy_from_options(in.options());
+  opt2.background = background.get();
+  opt2.bbox_diag = model_bbox_diag(k.model);
+  opt2.smoothing = static_cast<int>(in.options().number("Mesh.Smoothing"));
+  const Mesh2dResult r2 = mesh_surfaces(k.model, *mesh, opt2);
+  if (!r2.ok()) {
+    MeshFailure f{Diag::MeshFailed, r2.error.message, {}};
+    if (r2.error.has_lonlat)
+      f.message += fmt::format(" (near lon {:.4f}, lat {:.4f})", r2.error.where.lon, r2.error.where.lat);
+    const auto it = k.created_at.find({2, r2.error.surface});
+    if (it != k.created_at.end())
+      f.notes.push_back({it->second, fmt::format("surface {} was created here", r2.error.surface)});
+    return f;
+  }
+  for (const std::string& w : r2.warnings) std::fprintf(stderr, "stereomesh: warning: %s\n", w.c_str());
+  // Statistics against the target size of the first face (the size policy and
+  // background field are the same for every face unless a Restrict field says
+  // otherwise).
+  SizeAt3 size;
+  if (!k.model.surfaces().empty()) size = surface_size_fn(k.model, opt2, k.model.surfaces().begin()->first);
+  MeshStats st = mesh_stats(*mesh, size);
+  st.stages.push_back({"1D", seconds_1d});
+  for (const StageTime& t : stage_times(r2.stats)) st.stages.push_back(t);
+  publish_stats(in, *mesh, st);
+  k.mesh = std::move(mesh);
   return {};
 }
 
@@ -78,11 +163,27 @@ std::string save_mesh(Interpreter& in, const std::string& path, std::string form
     const int mesh_format = static_cast<int>(o.number("Mesh.Format"));
     if (mesh_format == 1 || (mesh_format == 10 && ext == ".msh")) format = "msh";
     else if (mesh_format == 16 || (mesh_format == 10 && ext == ".vtk")) format = "vtk";
-    else return fmt::format("unsupported mesh format for '{}' (use .msh or .vtk)", path);
+    else if (mesh_format == 10 && ext == ".svg") format = "svg";
+    else return fmt::format("unsupported mesh format for '{}' (use .msh, .vtk or .svg)", path);
   }
   const bool binary = o.number("Mesh.Binary") != 0;
   const bool save_all = o.number("Mesh.SaveAll") != 0;
   std::string error;
+  if (format == "svg") {
+    // A picture: lon/lat view of a mesh on a sphere geometry (the first one the
+    // model has), the plane as it is otherwise; coloured by quality.
+    io::SvgOptions so;
+    so.view = io::SvgView::Plane;
+    for (const auto& [tag, g] : k.model.geometries()) {
+      so.view = io::SvgView::LonLat;
+      so.centre = g.centre();
+      so.radius = g.radius();
+      break;
+    }
+    so.colour = io::SvgColour::Quality;
+    so.save_all = save_all;
+    return io::save_svg(mm, so, path, &error) ? std::string{} : error;
+  }
   if (format == "vtk") {
     io::VtkOptions vo;
     vo.binary = binary;
@@ -93,7 +194,7 @@ std::string save_mesh(Interpreter& in, const std::string& path, std::string form
   if (format == "msh22" || format == "msh2") mo.version = 22;
   else if (format == "msh41" || format == "msh4") mo.version = 41;
   else if (format == "msh") mo.version = o.number("Mesh.MshFileVersion") < 3 ? 22 : 41;
-  else return fmt::format("unknown format '{}' (msh41, msh22, msh4, msh2, msh, vtk)", format);
+  else return fmt::format("unknown format '{}' (msh41, msh22, msh4, msh2, msh, vtk, svg)", format);
   mo.binary = binary;
   mo.save_all = save_all;
   mo.save_parametric = o.number("Mesh.SaveParametric") != 0;
@@ -103,12 +204,12 @@ std::string save_mesh(Interpreter& in, const std::string& path, std::string form
 void exec_mesh(Interpreter& in, StmtId id, const CommandStmt& c) {
   const Stmt& s = in.ast().stmt(id);
   const double n = c.arg.valid() ? in.eval_number(c.arg) : 2;
-  if (n >= 2) {
-    in.not_supported_stmt(id, "Mesh 2");
+  if (n >= 3) {
+    in.not_supported_stmt(id, "Mesh 3");
     return;
   }
-  const Mesh1dError e = mesh_model(in, 1);
-  if (e.kind != Mesh1dErrorKind::None) in.fail_with_notes(s.range, diag_of(e), e.message, curve_notes(in.kernel(), e));
+  const MeshFailure f = mesh_model(in, n >= 2 ? 2 : 1);
+  if (f.failed()) in.fail_with_notes(s.range, f.kind, f.message, f.notes);
 }
 
 void exec_save(Interpreter& in, StmtId id, const CommandStmt& c) {
@@ -163,28 +264,27 @@ void exec_mesh_stmt(Interpreter& in, StmtId id) {
 bool mesh_from_command_line(Interpreter& in, int dim, const std::string& output, const std::string& format,
                             const std::string& first_script) {
   Diagnostics& diags = in.diags();
-  if (dim >= 2) {
-    diags.report_message(SourceRange{}, Diag::NotSupportedYet,
-                         fmt::format("'-{}' is not supported yet: 2D meshing arrives with the 2D mesher; use -1", dim));
+  if (dim >= 3) {
+    diags.report_message(SourceRange{}, Diag::NotSupportedYet, "'-3' is not supported: stereomesh meshes surfaces");
     return false;
   }
-  Mesh1dError e;
+  MeshFailure f;
   try {
-    e = mesh_model(in, dim);
+    f = mesh_model(in, dim);
   } catch (const RuntimeError& err) {   // e.g. the background field cannot be built
     auto h = diags.report_message(err.range, err.kind, err.message);
     for (const DiagNote& n : err.notes) h.note(n.range, n.message);
     return false;
   }
-  if (e.kind != Mesh1dErrorKind::None) {
-    auto h = diags.report_message(SourceRange{}, diag_of(e), e.message);
-    for (const DiagNote& n : curve_notes(in.kernel(), e)) h.note(n.range, n.message);
+  if (f.failed()) {
+    auto h = diags.report_message(SourceRange{}, f.kind, f.message);
+    for (const DiagNote& n : f.notes) h.note(n.range, n.message);
     return false;
   }
   std::string path = output;
   if (path.empty()) {
     std::filesystem::path p(first_script);
-    p.replace_extension(format == "vtk" ? ".vtk" : ".msh");
+    p.replace_extension(format == "vtk" || format == "svg" ? "." + format : ".msh");
     path = p.string();
   }
   if (const std::string err = save_mesh(in, path, format); !err.empty()) {

@@ -8,7 +8,7 @@ namespace sm::interp {
 
 class Interpreter;
 
-/// `-1` / `-2` after the scripts ran: meshes the model up to `dim` (only 1 so far) and
+/// `-1` / `-2` after the scripts ran: meshes the model up to `dim` (1 or 2) and
 /// writes it atomically to `output` (default: the first script's name with `.msh`) in
 /// `format` ("msh41", "msh22", "msh4", "msh2", "msh", "vtk"; empty: by the extension).
 /// Failures become diagnostics (kernel errors with notes at the statements that created
