@@ -41,9 +41,10 @@ std::string usage_text() {
          "diagnostics on stderr).\n"
          "\n"
          "  -0                  evaluate the scripts only, write nothing\n"
-         "  -1, -2              mesh in 1D/2D (not available yet: exits with an error)\n"
+         "  -1, -2              mesh the curves / the surfaces and write the mesh (-o FILE)\n"
+         "  --stats FILE.json   after -2 (or Mesh 2;), write the mesh statistics as JSON\n"
          "  -o FILE             output mesh file\n"
-         "  -format NAME        output format: msh, msh2, msh22, msh4, msh41, vtk\n"
+         "  -format NAME        output format: msh, msh2, msh22, msh4, msh41, vtk, svg (a picture)\n"
          "  -bin                binary output (Mesh.Binary = 1)\n"
          "  -setnumber NAME V   define variable NAME (wins over DefineConstant) or set option NAME\n"
          "  -setstring NAME S   the same with a string\n"
@@ -98,17 +99,20 @@ ParseOutcome parse_args(const std::vector<std::string>& argv) {
       a.test = true;
     } else if (arg == "-0" || arg == "-1" || arg == "-2") {
       a.mesh_dim = arg[1] - '0';
+    } else if (arg == "--stats") {
+      if (!value("--stats", a.stats_file)) return fail("'--stats' needs a file name");
     } else if (arg == "-o") {
       if (!value("-o", a.output)) return fail("'-o' needs a file name");
     } else if (arg == "-format") {
       if (!value("-format", a.format)) return fail("'-format' needs a format name");
-      static const char* kFormats[] = {"msh", "msh2", "msh22", "msh4", "msh41", "vtk"};
+      static const char* kFormats[] = {"msh", "msh2", "msh22", "msh4", "msh41", "vtk", "svg"};
       bool known = false;
       for (const char* f : kFormats) known = known || a.format == f;
-      if (!known) return fail(fmt::format("unknown format '{}' (msh, msh2, msh22, msh4, msh41, vtk)", a.format));
+      if (!known) return fail(fmt::format("unknown format '{}' (msh, msh2, msh22, msh4, msh41, vtk, svg)", a.format));
       const bool v2 = a.format == "msh2" || a.format == "msh22";
-      a.option_numbers.emplace_back("Mesh.Format", a.format == "vtk" ? 16 : 1);
-      if (a.format != "vtk" && a.format != "msh") a.option_numbers.emplace_back("Mesh.MshFileVersion", v2 ? 2.2 : 4.1);
+      // Gmsh has no mesh format number for SVG: the picture is chosen by name.
+      if (a.format != "svg") a.option_numbers.emplace_back("Mesh.Format", a.format == "vtk" ? 16 : 1);
+      if (a.format != "vtk" && a.format != "msh" && a.format != "svg") a.option_numbers.emplace_back("Mesh.MshFileVersion", v2 ? 2.2 : 4.1);
     } else if (arg == "-bin") {
       a.option_numbers.emplace_back("Mesh.Binary", 1);
     } else if (arg == "-setnumber") {

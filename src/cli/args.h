@@ -12,6 +12,7 @@ struct CliArgs {
   std::vector<std::string> files;        ///< scripts, or --test paths
   int mesh_dim = -1;                     ///< -0: 0, -1: 1, -2: 2; -1 when not given
   std::string output;                    ///< -o
+  std::string stats_file;                ///< --stats FILE.json
   std::string format;                    ///< -format
   std::vector<std::pair<std::string, double>> set_numbers;        ///< -setnumber, in order
   std::vector<std::pair<std::string, std::string>> set_strings;   ///< -setstring

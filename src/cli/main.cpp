@@ -14,6 +14,7 @@
 #include "interp/builtins/mesh_commands.h"
 #include "interp/interpreter.h"
 #include "interp/script_test.h"
+#include "io/atomic_file.h"
 
 namespace {
 
@@ -116,6 +117,18 @@ int run(const std::vector<std::string>& argv) {
   if (!errors && !interp.stopped() && interp.exit_request() < 0 && a.mesh_dim >= 1 && !a.files.empty() &&
       !sm::interp::mesh_from_command_line(interp, a.mesh_dim, a.output, a.format, a.files.front()))
     errors = true;
+  // --stats: the statistics of the 2D mesh as JSON, written atomically.
+  if (!errors && !a.stats_file.empty()) {
+    const std::string& json = interp.kernel().mesh_stats_json;
+    sm::io::AtomicFile out;
+    if (json.empty()) {
+      std::fprintf(stderr, "stereomesh: --stats: no 2D mesh was made (use -2 or 'Mesh 2;')\n");
+      errors = true;
+    } else if (!out.open(a.stats_file) || !out.write(json) || !out.write("\n") || !out.commit()) {
+      std::fprintf(stderr, "stereomesh: --stats: %s\n", out.error().c_str());
+      errors = true;
+    }
+  }
   std::cout.flush();
   const bool warnings = interp.options().number("General.Verbosity") >= 2;
   print_diagnostics(diags, warnings);
