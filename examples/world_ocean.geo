@@ -7,7 +7,7 @@
 // combined by a Min. Coastlines: GSHHG 2.3.7 intermediate (islands >= 100 km^2), coarsened
 // to the accuracy gamma = CoastAccuracy (30 km, the smallest mesh size near the coast).
 //   stereomesh -0 examples/world_ocean.geo              (evaluate and check)
-//   stereomesh -2 examples/world_ocean.geo -o world.msh (mesh, once Mesh 2 is available)
+//   stereomesh -2 examples/world_ocean.geo -o world.msh (mesh and write it)
 // Smaller settings (tests/scripts/examples/world_ocean_coarse.geo): -setnumber CoastAccuracy
 // 200e3 -setstring CoastFile world_l.txt -setstring BathyName etopo5_global_1deg.nc.
 // Paper: 436,409 triangles in 35 s (whole process). docs/examples.md has our numbers.
@@ -22,8 +22,9 @@ Include "regions.geo";
 
 DefineConstant[ CoastAccuracy = 30e3, CoastFile = "world_i_A100.txt",
                 BathyName = "etopo5_global_0.25deg.nc", Quiet = 0, DoMesh = 0,
-                EstimateStep = 1, CloseStraits = 1 ];
-// EstimateStep: lon/lat step (degrees) of the triangle-count estimate (0: skip it).
+                EstimateStep = 0, CloseStraits = 1 ];
+// EstimateStep: lon/lat step (degrees) of the triangle-count estimate (0: skip it; 1 takes
+// about 20 s of CPU).
 // DoMesh = 1 runs the `Mesh 2; Save` part at the end (stereomesh -0 ... -setnumber DoMesh 1);
 // it is off by default while `Mesh 2` is not available in stereomesh yet.
 

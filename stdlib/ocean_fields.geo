@@ -153,6 +153,12 @@ If (!Exists(OceanFieldsGeoLoaded))
       EndIf
     EndIf
     Background Field = SizeField;
+    // The size comes from the field alone, as in Gmsh's t10: no extension of the
+    // boundary sizes into the faces (which would spread the 1D edge lengths over
+    // the whole ocean), no sizes from points or curvature.
+    Mesh.MeshSizeExtendFromBoundary = 0;
+    Mesh.MeshSizeFromPoints = 0;
+    Mesh.MeshSizeFromCurvature = 0;
   Return
 
   // OceanSurfaces: input OceanLoops[] (Coastline{n}) and OceanLoopsPerSurface[]
