@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include "cli/args.h"
@@ -89,7 +90,34 @@ TEST_CASE("cli: exit statuses of the binary") {
   CHECK(run_status(bin + " -0 " + d + "syntax.geo") == 1);
   CHECK(run_status(bin + " -0 " + d + "missing.geo") == 1);
   CHECK(run_status(bin + " -0 " + d + "exit.geo") == 4);
-  CHECK(run_status(bin + " -2 " + d + "ok.geo") == 1);   // meshing not available yet
+  // -2 meshes and writes (an empty model gives an empty mesh, as Gmsh); a
+  // square gives triangles, statistics as JSON, and a picture.
+  CHECK(run_status(bin + " -2 " + d + "ok.geo -o " + d + "empty.msh") == 0);
+  CHECK(fs::exists(dir / "empty.msh"));
+  std::ofstream(dir / "square.geo") << "Point(1) = {0, 0, 0, 0.1}; Point(2) = {1, 0, 0, 0.1};\n"
+                                       "Point(3) = {1, 1, 0, 0.1}; Point(4) = {0, 1, 0, 0.1};\n"
+                                       "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};\n"
+                                       "Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};\n";
+  CHECK(run_status(bin + " -2 -v 0 " + d + "square.geo -o " + d + "square.msh --stats " + d + "s.json") == 0);
+  {
+    std::ifstream msh(dir / "square.msh"), json(dir / "s.json");
+    std::stringstream m, j;
+    m << msh.rdbuf();
+    j << json.rdbuf();
+    CHECK(m.str().rfind("$MeshFormat\n4.1 0 8\n", 0) == 0);
+    CHECK(m.str().find("$Elements") != std::string::npos);
+    CHECK(j.str().find("\"triangles\": ") != std::string::npos);
+  }
+  CHECK(run_status(bin + " -2 -v 0 " + d + "square.geo -o " + d + "square.svg") == 0);
+  CHECK(fs::file_size(dir / "square.svg") > 1000);
+  // A script error while meshing leaves no output file; --stats without a 2D mesh is an error.
+  std::ofstream(dir / "badalgo.geo") << "Mesh.Algorithm = 7;\nPoint(1) = {0, 0, 0, 0.1}; Point(2) = {1, 0, 0, 0.1};\n"
+                                        "Point(3) = {0, 1, 0, 0.1}; Line(1) = {1, 2}; Line(2) = {2, 3};\n"
+                                        "Line(3) = {3, 1}; Curve Loop(1) = {1, 2, 3}; Plane Surface(1) = {1};\n";
+  CHECK(run_status(bin + " -2 -v 0 " + d + "badalgo.geo -o " + d + "badalgo.msh") == 1);
+  CHECK_FALSE(fs::exists(dir / "badalgo.msh"));
+  CHECK(run_status(bin + " -1 -v 0 " + d + "square.geo -o " + d + "sq1.msh --stats " + d + "s1.json") == 1);
+  CHECK_FALSE(fs::exists(dir / "s1.json"));
   CHECK(run_status(bin + " --bogus " + d + "ok.geo") == 2);
   CHECK(run_status(bin + " -0 -setnumber Mesh.Algoritm 5 " + d + "ok.geo") == 2);
   CHECK(run_status(bin + " --test " + d + "nowhere") == 2);
