@@ -12,7 +12,8 @@
 # $SM_FUZZ_ARTIFACTS, default <build dir>/fuzz-artifacts/: add it to tests/fuzz/crashes/ with the
 # fix); 2 usage or build error.
 #
-# Environment: SM_FUZZ_BUILD_DIR (build dir), SM_FUZZ_JOBS (build jobs, default 2), SM_FUZZ_CORPUS
+# Environment: SM_FUZZ_RUNS (stop after this many executions; with SM_FUZZ_SEED the run is the
+# same every time, as the CTest test fuzz_short uses it), SM_FUZZ_SEED, SM_FUZZ_BUILD_DIR (build dir), SM_FUZZ_JOBS (build jobs, default 2), SM_FUZZ_CORPUS
 # (keep the grown corpus there), SM_FUZZ_ARTIFACTS (where crashing inputs go), SM_FUZZ_PARSER_ONLY=1
 # (fuzz lexer+parser only: builds sm_lang alone instead of the interpreter and the whole kernel).
 set -euo pipefail
@@ -57,15 +58,18 @@ done
 artifacts="${SM_FUZZ_ARTIFACTS:-$bdir/fuzz-artifacts}"
 mkdir -p "$artifacts"
 
-echo "run.sh: fuzzing for ${seconds}s with $(ls "$corpus" | wc -l) inputs; artifacts in $artifacts"
+extra=()
+[[ -n "${SM_FUZZ_RUNS:-}" ]] && extra+=(-runs="$SM_FUZZ_RUNS")
+[[ -n "${SM_FUZZ_SEED:-}" ]] && extra+=(-seed="$SM_FUZZ_SEED")
+echo "run.sh: fuzzing for ${seconds}s${SM_FUZZ_RUNS:+ or $SM_FUZZ_RUNS runs} with $(ls "$corpus" | wc -l) inputs; artifacts in $artifacts"
 # Evaluated scripts may write files (Printf > f, Save): run inside the scratch dir.
 set +e
 (cd "$scratch/work" && "$bin" -max_total_time="$seconds" -timeout=25 -rss_limit_mb=2560 -max_len=8192 \
-   -dict="$here/geo.dict" -artifact_prefix="$artifacts/" -print_final_stats=1 "$corpus")
+   -dict="$here/geo.dict" -artifact_prefix="$artifacts/" -print_final_stats=1 "${extra[@]}" "$corpus")
 status=$?
 set -e
 if [[ $status -ne 0 ]]; then
   echo "run.sh: fuzz_geo failed (status $status); reproduce with: $bin <file from $artifacts>" >&2
   exit 1
 fi
-echo "run.sh: no crash in ${seconds}s"
+echo "run.sh: no crash"
