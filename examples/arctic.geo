@@ -15,7 +15,7 @@
 // 60e3 -setnumber CoastSize 120e3 -setnumber EstimateStep 2.
 DefineConstant[ ArchipelagoSize = 20e3, CoastSize = 40e3, FarSize = 300e3, FarReach = 1500e3,
                 Quiet = 0, DoMesh = 0, EstimateStep = 0.5 ];
-// DoMesh = 1 runs the `Mesh 2; Save` part at the end; off while `Mesh 2` is not available.
+// DoMesh = 1 runs the `Mesh 2; Save` part at the end (or mesh with `stereomesh -2`).
 // EstimateStep: lon/lat step (degrees) of the triangle-count estimate (0: skip it).
 DefineConstant[ ShoreSizeMin = CoastSize, ShoreSizeMax = FarSize, ShoreDistMax = FarReach ];
 Include "earth.geo";
@@ -109,6 +109,6 @@ EndIf
 
 If (DoMesh)
   Mesh 2;
-  // after meshing: Assert(Mesh.NbTriangles > 10000 && Mesh.NbTriangles < 30000);
+  Assert(Mesh.NbTriangles > 10000 && Mesh.NbTriangles < 30000);
   Save "arctic.msh";
 EndIf

@@ -9,7 +9,7 @@
 //   stereomesh -0 examples/gb_ireland.geo [-setnumber gamma 1500]
 DefineConstant[ gamma = 15000, CoastSize = 5e3, FarSize = 30e3, ShoreReach = 200e3,
                 Quiet = 0, DoMesh = 0, EstimateStep = 0.1 ];
-// DoMesh = 1 runs the `Mesh 2; Save` part at the end; off while `Mesh 2` is not available.
+// DoMesh = 1 runs the `Mesh 2; Save` part at the end (or mesh with `stereomesh -2`).
 // EstimateStep: lon/lat step (degrees) of the triangle-count estimate (0: skip it).
 DefineConstant[ ShoreSizeMin = CoastSize, ShoreSizeMax = FarSize, ShoreDistMax = ShoreReach ];
 quiet = Quiet;
@@ -58,6 +58,6 @@ EndIf
 
 If (DoMesh)
   Mesh 2;
-  // after meshing: Assert(Mesh.NbTriangles > 14000 && Mesh.NbTriangles < 24000);
+  Assert(Mesh.NbTriangles > 14000 && Mesh.NbTriangles < 24000);
   Save "gb_ireland.msh";
 EndIf

@@ -19,7 +19,7 @@ DefineConstant[ LizardSize = 250, LizardCore = 10e3, CoastSize = 5e3, ShelfSize 
                 Quiet = 0, DoMesh = 0, EstimateStep = 0.1, EstimateFineStep = 0.01 ];
 // EstimateStep: lon/lat step (degrees) of the triangle-count estimate (0: skip it); the
 // degree around Lizard Island is summed at EstimateFineStep.
-// DoMesh = 1 runs the `Mesh 2; Save` part at the end; off while `Mesh 2` is not available.
+// DoMesh = 1 runs the `Mesh 2; Save` part at the end (or mesh with `stereomesh -2`).
 DefineConstant[ ShoreSizeMin = CoastSize, ShoreSizeMax = 50e3, ShoreDistMax = 200e3,
                 WaveLengthMin = 300e3, WaveSizeMin = 10e3, WaveSizeMax = 50e3,
                 HessianSizeMin = LizardSize, HessianSizeMax = 50e3 ];
@@ -112,7 +112,7 @@ EndIf
 
 If (DoMesh)
   Mesh 2;
-  // after meshing: Assert(Mesh.NbTriangles > 10000 && Mesh.NbTriangles < 40000);
+  Assert(Mesh.NbTriangles > 10000 && Mesh.NbTriangles < 40000);
   //   (the paper: 20,384 elements, 70% of them near Lizard Island)
   Save "great_barrier_reef.msh";
 EndIf

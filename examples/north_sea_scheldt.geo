@@ -13,7 +13,7 @@
 // EstuarySize 2000 -setnumber CoastSize 20e3.
 DefineConstant[ EstuarySize = 150, CoastSize = 5e3, OffshoreSize = 50e3,
                 EstuaryReach = 400e3, Quiet = 0, DoMesh = 0 ];
-// DoMesh = 1 runs the `Mesh 2; Save` part at the end; off while `Mesh 2` is not available.
+// DoMesh = 1 runs the `Mesh 2; Save` part at the end (or mesh with `stereomesh -2`).
 DefineConstant[ ShoreSizeMin = CoastSize, ShoreSizeMax = OffshoreSize, ShoreDistMax = 300e3 ];
 Include "earth.geo";
 Include "ocean_fields.geo";
@@ -93,7 +93,7 @@ Assert(#open[] >= 2 && #coast[] > 0, "the box closes the cut coasts");
 
 If (DoMesh)
   Mesh 2;
-  // after meshing: Assert(Mesh.NbTriangles > 15000 && Mesh.NbTriangles < 50000);
+  Assert(Mesh.NbTriangles > 15000 && Mesh.NbTriangles < 50000);
   //   (the paper: 27,472 elements)
   Save "north_sea_scheldt.msh";
 EndIf

@@ -21,3 +21,12 @@ Printf("estimate: %.0f triangles", EstimatedTriangles);
 Mesh 1;
 Printf("1D mesh within 15%% of 2056 nodes: %g", Fabs(Mesh.NbNodes - 2056) < 0.15 * 2056);
 // expect: 1D mesh within 15% of 2056 nodes: 1
+
+// 2D (default front2d): 4,536 triangles, 88.8% with rho > 0.9 and 96.7% of
+// edges within [0.7, 1.4] of the size when written; the test allows 10% on the count
+// and 3 points on the shares.
+Mesh 2;
+Printf("2D: triangles within 10%% of 4536: %g, rho > 0.9 share >= 0.858: %g, edges in range >= 0.937: %g",
+       Fabs(Mesh.NbTriangles - 4536) < 0.1 * 4536, Mesh.StatsRhoAbove09 >= 0.858,
+       Mesh.StatsEdgeInRange >= 0.937);
+// expect: 2D: triangles within 10% of 4536: 1, rho > 0.9 share >= 0.858: 1, edges in range >= 0.937: 1

@@ -17,3 +17,12 @@ Printf("estimate: %.0f triangles", EstimatedTriangles);
 Mesh 1;
 Printf("1D mesh within 15%% of 2516 nodes: %g", Fabs(Mesh.NbNodes - 2516) < 0.15 * 2516);
 // expect: 1D mesh within 15% of 2516 nodes: 1
+
+// 2D (default front2d): 18,301 triangles, 93.2% with rho > 0.9 and 98.4% of
+// edges within [0.7, 1.4] of the size when written; the test allows 10% on the count
+// and 3 points on the shares.
+Mesh 2;
+Printf("2D: triangles within 10%% of 18301: %g, rho > 0.9 share >= 0.902: %g, edges in range >= 0.954: %g",
+       Fabs(Mesh.NbTriangles - 18301) < 0.1 * 18301, Mesh.StatsRhoAbove09 >= 0.902,
+       Mesh.StatsEdgeInRange >= 0.954);
+// expect: 2D: triangles within 10% of 18301: 1, rho > 0.9 share >= 0.902: 1, edges in range >= 0.954: 1

@@ -22,3 +22,12 @@ Printf("estimate: %.0f triangles, %.0f%% near Lizard Island", all_triangles, 100
 Mesh 1;
 Printf("1D mesh within 15%% of 586 nodes: %g", Fabs(Mesh.NbNodes - 586) < 0.15 * 586);
 // expect: 1D mesh within 15% of 586 nodes: 1
+
+// 2D (default front2d): 4,558 triangles, 88.3% with rho > 0.9 and 96.1% of
+// edges within [0.7, 1.4] of the size when written; the test allows 10% on the count
+// and 3 points on the shares.
+Mesh 2;
+Printf("2D: triangles within 10%% of 4558: %g, rho > 0.9 share >= 0.853: %g, edges in range >= 0.931: %g",
+       Fabs(Mesh.NbTriangles - 4558) < 0.1 * 4558, Mesh.StatsRhoAbove09 >= 0.853,
+       Mesh.StatsEdgeInRange >= 0.931);
+// expect: 2D: triangles within 10% of 4558: 1, rho > 0.9 share >= 0.853: 1, edges in range >= 0.931: 1

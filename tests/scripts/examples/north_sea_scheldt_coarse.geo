@@ -15,3 +15,12 @@ Printf("Antwerp %.0f m, central North Sea %.0f km", antwerp, offshore / Km);
 Mesh 1;
 Printf("1D mesh within 15%% of 836 nodes: %g", Fabs(Mesh.NbNodes - 836) < 0.15 * 836);
 // expect: 1D mesh within 15% of 836 nodes: 1
+
+// 2D (default front2d): 2,307 triangles, 89.5% with rho > 0.9 and 97.0% of
+// edges within [0.7, 1.4] of the size when written; the test allows 10% on the count
+// and 3 points on the shares.
+Mesh 2;
+Printf("2D: triangles within 10%% of 2307: %g, rho > 0.9 share >= 0.865: %g, edges in range >= 0.940: %g",
+       Fabs(Mesh.NbTriangles - 2307) < 0.1 * 2307, Mesh.StatsRhoAbove09 >= 0.865,
+       Mesh.StatsEdgeInRange >= 0.940);
+// expect: 2D: triangles within 10% of 2307: 1, rho > 0.9 share >= 0.865: 1, edges in range >= 0.940: 1

@@ -23,3 +23,12 @@ Printf("North Pacific: %g water points, shore %.0f%%, wavelength %.0f%%, Hessian
 Mesh 1;
 Printf("1D mesh within 15%% of 5,584 nodes: %g", Fabs(Mesh.NbNodes - 5584) < 0.15 * 5584);
 // expect: 1D mesh within 15% of 5,584 nodes: 1
+
+// 2D (default front2d): 344,014 triangles, 97.1% with rho > 0.9 and 99.3% of
+// edges within [0.7, 1.4] of the size when written; the test allows 10% on the count
+// and 3 points on the shares.
+Mesh 2;
+Printf("2D: triangles within 10%% of 344014: %g, rho > 0.9 share >= 0.941: %g, edges in range >= 0.963: %g",
+       Fabs(Mesh.NbTriangles - 344014) < 0.1 * 344014, Mesh.StatsRhoAbove09 >= 0.941,
+       Mesh.StatsEdgeInRange >= 0.963);
+// expect: 2D: triangles within 10% of 344014: 1, rho > 0.9 share >= 0.941: 1, edges in range >= 0.963: 1
