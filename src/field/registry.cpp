@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "base/edit_distance.h"
 #include "field/error.h"
 #include "field/kinds.h"
 
@@ -69,30 +70,12 @@ std::vector<int> referenced_ids(const Options& opts) {
   return ids;
 }
 
-namespace {
-
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    cur[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) ==
-                        std::tolower(static_cast<unsigned char>(b[j - 1]));
-      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (same ? 0 : 1)});
-    }
-    std::swap(prev, cur);
-  }
-  return prev[b.size()];
-}
-
-}  // namespace
 
 std::string closest_name(std::string_view name, const std::vector<std::string>& candidates) {
   std::string best;
   std::size_t best_d = static_cast<std::size_t>(-1);
   for (const std::string& c : candidates) {
-    const std::size_t d = edit_distance(name, c);
+    const std::size_t d = edit_distance(name, c, LetterCase::Insensitive);
     if (d < best_d) {  // first of equals wins: candidates come in a fixed order
       best_d = d;
       best = c;

@@ -3,6 +3,8 @@
 // aliases sharing storage, validation, and closest-name suggestions.
 #pragma once
 
+#include "base/edit_distance.h"  // edit_distance, for "did you mean" suggestions
+
 #include <array>
 #include <cstddef>
 #include <string>
@@ -65,7 +67,5 @@ class Options {
 /// Named colours accepted on the right of `X.Color.Y = Name;` ("Red", ...).
 bool named_color(std::string_view name, Color& out);
 
-/// Levenshtein distance, used for "did you mean" suggestions.
-std::size_t edit_distance(std::string_view a, std::string_view b);
 
 }  // namespace sm::interp

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "base/edit_distance.h"
 #include "lang/parser_impl.h"
 
 namespace sm::lang::detail {
@@ -29,21 +30,11 @@ bool in(const std::string_view (&list)[N], std::string_view w) {
   return std::find(std::begin(list), std::end(list), w) != std::end(list);
 }
 
-// Levenshtein distance, capped: a misspelled command or keyword is within 2.
-std::size_t edit_distance(std::string_view a, std::string_view b) {
+// A misspelled command or keyword is within 2 of the real one; long words
+// (hostile input) are not compared at all.
+std::size_t capped_edit_distance(std::string_view a, std::string_view b) {
   if (a.size() > 40 || b.size() > 40) return 99;
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diag = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diag = up;
-    }
-  }
-  return row[b.size()];
+  return edit_distance(a, b);
 }
 
 // The statement word closest to `w` (a keyword or command), or "".
@@ -57,7 +48,7 @@ std::string_view closest_statement_word(std::string_view w) {
   std::string_view best;
   std::size_t best_d = 3;
   auto consider = [&](std::string_view cand) {
-    const std::size_t d = edit_distance(w, cand);
+    const std::size_t d = capped_edit_distance(w, cand);
     const std::size_t allowed = cand.size() <= 4 ? 1 : 2;  // short words: one typo only
     if (d < best_d && d <= allowed) {
       best_d = d;

@@ -50,7 +50,7 @@ TEST_CASE("options: closest name for unknown options") {
   CHECK(o.find("Mesh.Algoritm") == nullptr);
   CHECK(o.closest("Mesh.Algoritm") == "Mesh.Algorithm");
   CHECK(o.closest("Mesh.CharacteristicLenghtMax") == "Mesh.CharacteristicLengthMax");
-  CHECK(sm::interp::edit_distance("kitten", "sitting") == 3);
+  CHECK(sm::edit_distance("kitten", "sitting") == 3);
   sm::interp::Color c;
   CHECK(sm::interp::named_color("red", c));
   CHECK(c[0] == 255);
