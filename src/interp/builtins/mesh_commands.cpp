@@ -17,6 +17,7 @@
 #include "interp/builtins/dispatch.h"
 #include "interp/builtins/field_context.h"
 #include "interp/builtins/field_eval.h"
+#include "interp/builtins/ocean_grid_export.h"
 #include "interp/builtins/size_policy_from_options.h"
 #include "interp/interpreter.h"
 #include "io/from_model_mesh.h"
@@ -138,7 +139,8 @@ MeshFailure mesh_model(Interpreter& in, int dim) {
       f.notes.push_back({it->second, fmt::format("surface {} was created here", r2.error.surface)});
     return f;
   }
-  for (const std::string& w : r2.warnings) std::fprintf(stderr, "stereomesh: warning: %s\n", w.c_str());
+  if (in.options().number("General.Verbosity") >= 2)
+    for (const std::string& w : r2.warnings) std::fprintf(stderr, "stereomesh: warning: %s\n", w.c_str());
   // Statistics against the target size of the first face (the size policy and
   // background field are the same for every face unless a Restrict field says
   // otherwise).
@@ -164,8 +166,11 @@ std::string save_mesh(Interpreter& in, const std::string& path, std::string form
     if (mesh_format == 1 || (mesh_format == 10 && ext == ".msh")) format = "msh";
     else if (mesh_format == 16 || (mesh_format == 10 && ext == ".vtk")) format = "vtk";
     else if (mesh_format == 10 && ext == ".svg") format = "svg";
-    else return fmt::format("unsupported mesh format for '{}' (use .msh, .vtk or .svg)", path);
+    else if (mesh_format == 10 && ext == ".14") format = "fort14";
+    else if (mesh_format == 10 && ext == ".gr3") format = "gr3";
+    else return fmt::format("unsupported mesh format for '{}' (use .msh, .vtk, .svg, .14 or .gr3)", path);
   }
+  if (format == "fort14" || format == "gr3") return save_ocean_grid(in, path, format);
   const bool binary = o.number("Mesh.Binary") != 0;
   const bool save_all = o.number("Mesh.SaveAll") != 0;
   std::string error;
@@ -194,7 +199,7 @@ std::string save_mesh(Interpreter& in, const std::string& path, std::string form
   if (format == "msh22" || format == "msh2") mo.version = 22;
   else if (format == "msh41" || format == "msh4") mo.version = 41;
   else if (format == "msh") mo.version = o.number("Mesh.MshFileVersion") < 3 ? 22 : 41;
-  else return fmt::format("unknown format '{}' (msh41, msh22, msh4, msh2, msh, vtk, svg)", format);
+  else return fmt::format("unknown format '{}' (msh41, msh22, msh4, msh2, msh, vtk, svg, fort14, gr3)", format);
   mo.binary = binary;
   mo.save_all = save_all;
   mo.save_parametric = o.number("Mesh.SaveParametric") != 0;
@@ -284,7 +289,9 @@ bool mesh_from_command_line(Interpreter& in, int dim, const std::string& output,
   std::string path = output;
   if (path.empty()) {
     std::filesystem::path p(first_script);
-    p.replace_extension(format == "vtk" || format == "svg" ? "." + format : ".msh");
+    if (format == "fort14") p.replace_filename("fort.14");
+    else if (format == "gr3") p.replace_filename("hgrid.gr3");
+    else p.replace_extension(format == "vtk" || format == "svg" ? "." + format : ".msh");
     path = p.string();
   }
   if (const std::string err = save_mesh(in, path, format); !err.empty()) {

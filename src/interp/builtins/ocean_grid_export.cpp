@@ -1,0 +1,124 @@
+// Ocean-model grid export (see ocean_grid_export.h). Each face's loops are walked
+// curve by curve in the model's own order and orientation, so the strings
+// follow the coast as the model does: an outer loop without open curves is one
+// mainland string, a hole without open curves an island, and a loop with open
+// curves is cut into alternating open and mainland strings that share their
+// end nodes.
+#include "interp/builtins/ocean_grid_export.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <set>
+
+#include "interp/builtins/field_eval.h"
+#include "interp/interpreter.h"
+#include "io/from_model_mesh.h"
+#include "io/ocean_grid.h"
+
+namespace sm::interp {
+namespace {
+
+bool is_open_group(const std::string& name) {
+  std::string lower(name);
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+  return lower == "open";
+}
+
+// The nodes of one signed curve, in the loop's direction.
+std::vector<std::uint32_t> curve_nodes(const ModelMesh& mesh, int signed_tag) {
+  const auto it = mesh.curves.find(std::abs(signed_tag));
+  if (it == mesh.curves.end()) return {};
+  std::vector<std::uint32_t> nodes = it->second.nodes;
+  if (signed_tag < 0) std::reverse(nodes.begin(), nodes.end());
+  return nodes;
+}
+
+// Appends `more` to `chain`, dropping the shared joint node.
+void extend(std::vector<std::uint32_t>& chain, const std::vector<std::uint32_t>& more) {
+  const std::size_t skip = !chain.empty() && !more.empty() && chain.back() == more.front() ? 1 : 0;
+  chain.insert(chain.end(), more.begin() + skip, more.end());
+}
+
+std::string boundary_strings(const geo::Model& model, const ModelMesh& mesh,
+                             std::vector<io::BoundaryString>& out) {
+  std::set<int> open;
+  for (const auto& [key, g] : model.physicals())
+    if (g.dim == 1 && is_open_group(g.name))
+      for (int c : g.entities) open.insert(std::abs(c));
+  using Kind = io::BoundaryString::Kind;
+  for (const auto& [tag, s] : model.surfaces()) {
+    const auto sm = mesh.surfaces.find(tag);
+    if (sm == mesh.surfaces.end()) continue;
+    // A hole whose 1D mesh encloses nothing (two edges) is not in the mesh:
+    // mesh2d left it out with a warning, and it has no boundary string.
+    std::set<std::uint32_t> used;
+    for (const auto& t : sm->second.triangles) used.insert(t.begin(), t.end());
+    for (std::size_t k = 0; k < s.loops.size(); ++k) {
+      const geo::ModelCurveLoop* loop = model.curve_loop(std::abs(s.loops[k]));
+      if (!loop) return fmt::format("surface {}: curve loop {} is missing", tag, s.loops[k]);
+      std::vector<int> curves = loop->curves;
+      if (s.loops[k] < 0) {
+        std::reverse(curves.begin(), curves.end());
+        for (int& c : curves) c = -c;
+      }
+      const bool any_open = std::any_of(curves.begin(), curves.end(), [&](int c) { return open.count(std::abs(c)); });
+      if (!any_open) {
+        io::BoundaryString b{k == 0 ? Kind::Mainland : Kind::Island, {}};
+        for (int c : curves) extend(b.nodes, curve_nodes(mesh, c));
+        if (b.nodes.size() > 1 && b.nodes.front() == b.nodes.back()) b.nodes.pop_back();
+        const bool meshed = std::all_of(b.nodes.begin(), b.nodes.end(), [&](std::uint32_t v) { return used.count(v); });
+        if (meshed) out.push_back(std::move(b));
+        continue;
+      }
+      // Start at an open/land switch so that no string wraps round the start.
+      std::size_t start = 0;
+      while (start < curves.size() &&
+             (open.count(std::abs(curves[start])) != 0) ==
+                 (open.count(std::abs(curves[(start + curves.size() - 1) % curves.size()])) != 0))
+        ++start;
+      std::size_t i = start % curves.size();
+      do {
+        const bool is_open = open.count(std::abs(curves[i])) != 0;
+        io::BoundaryString b{is_open ? Kind::Open : Kind::Mainland, {}};
+        do {
+          extend(b.nodes, curve_nodes(mesh, curves[i]));
+          i = (i + 1) % curves.size();
+        } while (i != start % curves.size() && (open.count(std::abs(curves[i])) != 0) == is_open);
+        out.push_back(std::move(b));
+      } while (i != start % curves.size());
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
+std::string save_ocean_grid(Interpreter& in, const std::string& path, const std::string& format) {
+  const KernelState& k = in.kernel();
+  if (!k.mesh || k.mesh->surfaces.empty()) return "no 2D mesh to write (mesh with -2 or 'Mesh 2;' first)";
+  const io::MeshModel mm = io::from_model_mesh(k.model, *k.mesh);
+  io::OceanGridOptions opt;
+  opt.title = fmt::format("stereomesh {}", std::filesystem::path(path).filename().string());
+  for (const auto& [tag, g] : k.model.geometries()) {
+    opt.centre = g.centre();
+    opt.radius = g.radius();
+    break;
+  }
+  opt.lonlat = !k.model.geometries().empty();
+  const int depth_field = static_cast<int>(in.options().number("Mesh.DepthField"));
+  if (depth_field > 0) {
+    const field::SizeField* f = built_fields(in, depth_field, lang::SourceRange{}).get(depth_field);
+    if (!f) return fmt::format("Mesh.DepthField = {}: no such field", depth_field);
+    opt.depth.resize(mm.xyz.size());
+    f->eval(mm.xyz, opt.depth);
+  }
+  if (std::string why = boundary_strings(k.model, *k.mesh, opt.boundaries); !why.empty()) return why;
+  std::string error;
+  const bool ok = format == "gr3" ? io::save_schism(mm, opt, path, &error) : io::save_fort14(mm, opt, path, &error);
+  return ok ? std::string{} : error;
+}
+
+}  // namespace sm::interp
