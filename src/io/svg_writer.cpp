@@ -64,9 +64,11 @@ std::string svg_to_string(const MeshModel& m, const SvgOptions& opt) {
   });
 
   // The picture's extent: the whole globe in lon/lat, else the used nodes.
+  // Model points (a PolarSphere's centre and pole, say) are not drawn and do
+  // not count: the frame is that of the drawn curves and triangles.
   double x0 = std::numeric_limits<double>::max(), y0 = x0, x1 = -x0, y1 = -x0;
   for (const EntityMesh& e : m.entities)
-    for (std::uint32_t v : e.connectivity) {
+    for (std::uint32_t v : e.type == ElementType::Point1 ? std::vector<std::uint32_t>{} : e.connectivity) {
       x0 = std::min(x0, p[v].x), x1 = std::max(x1, p[v].x);
       y0 = std::min(y0, p[v].y), y1 = std::max(y1, p[v].y);
     }
@@ -127,7 +129,10 @@ std::string svg_to_string(const MeshModel& m, const SvgOptions& opt) {
     out += "</g>\n";
   }
 
-  out += fmt::format("<g id=\"curves\" fill=\"none\" stroke=\"#b2182b\" stroke-width=\"{:.3f}\">\n", 3 * stroke);
+  // Coastlines a few pixels wide whatever the mesh's density, so they stand out.
+  out += fmt::format("<g id=\"curves\" fill=\"none\" stroke=\"#b2182b\" stroke-width=\"{:.3f}\" "
+                     "stroke-linejoin=\"round\">\n",
+                     std::max(1.0, opt.width_px / 1000.0));
   for (std::size_t i : order) {
     const EntityMesh& e = m.entities[i];
     if (e.type != ElementType::Line2 || !saved(e)) continue;

@@ -67,3 +67,21 @@ TEST_CASE("svg: lon/lat view draws a triangle across the dateline on both sides"
   const std::string svg = svg_to_string(m, opt);
   CHECK(svg.find("width=\"1600\"") != std::string::npos);
 }
+
+TEST_CASE("svg: model points (a sphere's centre) do not stretch the frame") {
+  // A triangle near lon 0..10, lat 50..60 plus a point entity at the sphere's
+  // centre (lon/lat 0, 0): the picture keeps the triangle's aspect.
+  MeshModel m;
+  const geo::PolarSphere sphere({0, 0, 0}, 1);
+  for (geo::LonLat ll : {geo::LonLat{0, 50}, {10, 50}, {5, 60}}) m.xyz.push_back(sphere.from_lonlat(ll));
+  m.xyz.push_back({0, 0, 0});
+  EntityMesh p;
+  p.dim = 0, p.tag = 1, p.type = ElementType::Point1, p.nodes = {3}, p.connectivity = {3};
+  EntityMesh s;
+  s.dim = 2, s.tag = 1, s.type = ElementType::Triangle3, s.nodes = {0, 1, 2}, s.connectivity = {0, 1, 2};
+  m.entities = {p, s};
+  SvgOptions opt;
+  opt.width_px = 1000;
+  const std::string svg = svg_to_string(m, opt);
+  CHECK(svg.find("height=\"1000\"") != std::string::npos);  // 10 x 10 degrees
+}
