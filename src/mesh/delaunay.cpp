@@ -18,6 +18,8 @@
 #include <new>
 #include <utility>
 
+#include "base/check.h"
+
 #if defined(__linux__)
 #include <sys/mman.h>
 #endif
@@ -71,15 +73,21 @@ constexpr std::array<std::uint16_t, 1024> make_hilbert_table() {
 }
 constexpr std::array<std::uint16_t, 1024> kHilbert = make_hilbert_table();
 
-// Sorts (key << 32 | index) values by the low key_bits of the key: LSD
-// radix, passes of 11 bits, stable.
+// Sorts (key << 32 | index) values by the low key_bits (at most 33) of the
+// key: LSD radix, passes of 11 bits, stable. One read counts the digits of
+// every pass.
 void radix_sort_keys(std::vector<std::uint64_t>& v, int key_bits) {
+  const int passes = (key_bits + 10) / 11;
+  SM_ASSERT(passes <= 3, "radix_sort_keys: key wider than 33 bits");
+  std::vector<std::size_t> count(3 * 2049, 0);
+  for (std::uint64_t x : v)
+    for (int d = 0; d < passes; ++d) ++count[2049 * d + ((x >> (32 + 11 * d)) & 0x7FF) + 1];
   std::vector<std::uint64_t> tmp(v.size());
-  for (int shift = 32; shift < 32 + key_bits; shift += 11) {
-    std::vector<std::size_t> count(2049, 0);
-    for (std::uint64_t x : v) ++count[((x >> shift) & 0x7FF) + 1];
-    for (int i = 0; i < 2048; ++i) count[i + 1] += count[i];
-    for (std::uint64_t x : v) tmp[count[(x >> shift) & 0x7FF]++] = x;
+  for (int d = 0; d < passes; ++d) {
+    std::size_t* c = &count[2049 * d];
+    for (int i = 0; i < 2048; ++i) c[i + 1] += c[i];
+    const int shift = 32 + 11 * d;
+    for (std::uint64_t x : v) tmp[c[(x >> shift) & 0x7FF]++] = x;
     v.swap(tmp);
   }
 }
@@ -164,6 +172,9 @@ class Builder {
   std::vector<Tri, HugeAlloc<Tri>> tri_;
   std::uint32_t stamp_now_ = 0;
   std::uint32_t last_ = 0;  // a real triangle near the last insertion
+  // The ghost written last. Only an insertion whose cavity holds ghosts
+  // rewrites ghost slots, and it writes new ghosts, so this stays a ghost.
+  std::uint32_t ghost_hint_ = 0;
   // Scratch, reused by every insertion.
   struct Bound {
     std::uint32_t a, b, outer;
@@ -259,6 +270,7 @@ void Builder::insert(std::uint32_t p, std::uint32_t t0) {
     Tri& t = tri_[cavity_[i]];
     t.v[0] = bd.a, t.v[1] = bd.b, t.v[2] = p;
     t.ghost = bd.a == kGhost || bd.b == kGhost;
+    if (t.ghost) ghost_hint_ = cavity_[i];
     link(cavity_[i] << 2, bd.outer);
   }
   // Link side b -> p of the triangle on edge (a, b) with side p -> b of the
@@ -294,7 +306,11 @@ void Builder::insert(std::uint32_t p, std::uint32_t t0) {
     const Bound& bd = bound_[i];
     if (bd.a == kGhost || bd.b == kGhost) continue;
     const double score = dot(0.5 * pos(bd.a) + 0.5 * pos(bd.b) - pp, dq);
-    if (!have || score > best) best = score, last_ = cavity_[i], have = true;
+    // Selects rather than branches: which edge wins is unpredictable.
+    const bool better = !have || score > best;
+    best = better ? score : best;
+    last_ = better ? cavity_[i] : last_;
+    have = true;
   }
 }
 
@@ -328,6 +344,7 @@ void Builder::run() {
   }
   for (int e = 0; e < 3; ++e) link(gh[e] << 2 | 1, gh[(e + 2) % 3] << 2 | 2);
   last_ = t;
+  ghost_hint_ = gh[0];
   for (std::uint32_t p = 0; p < n; ++p) {
     if (p == i0 || p == i1 || p == i2) continue;
     const std::uint32_t t0 = locate(p, last_);
@@ -348,15 +365,28 @@ void Builder::run() {
 }
 
 // Drops the ghosts and writes the real triangles into the store. The few
-// ghosts (one per hull edge) are unlinked from their real neighbours, then
+// ghosts (one per hull edge) are found by walking their ring from one of
+// them (not by reading every slot), unlinked from their real neighbours, then
 // the last real triangles move into the ghosts' low slots, so the final pass
 // is one streaming copy without an id map (deterministic: it depends only on
 // the slot layout).
 void Builder::finish() {
   const auto slots = static_cast<std::uint32_t>(tri_.size());
   std::vector<std::uint32_t> ghosts;
-  for (std::uint32_t t = 0; t < slots; ++t)
-    if (is_ghost(tri_[t])) ghosts.push_back(t);
+  SM_ASSERT(is_ghost(tri_[ghost_hint_]), "delaunay: the ghost hint is not a ghost");
+  const std::uint32_t seen = ++stamp_now_;
+  tri_[ghost_hint_].stamp = seen;
+  ghosts.push_back(ghost_hint_);
+  for (std::size_t i = 0; i < ghosts.size(); ++i)
+    for (std::uint32_t e = 0; e < 3; ++e) {
+      Tri& o = tri_[tri_[ghosts[i]].n[e] >> 2];
+      if (is_ghost(o) && o.stamp != seen) {
+        o.stamp = seen;
+        ghosts.push_back(tri_[ghosts[i]].n[e] >> 2);
+      }
+    }
+  // Ascending slots: the moves below fill the lowest ghost slots first.
+  std::sort(ghosts.begin(), ghosts.end());
   for (std::uint32_t g : ghosts)
     for (std::uint32_t e = 0; e < 3; ++e) {
       const std::uint32_t o = tri_[g].n[e];
