@@ -51,7 +51,10 @@ inline Sign orient2d(Vec2 a, Vec2 b, Vec2 c, PredicateStats* st = nullptr) {
   const double det = l - r;
   const double bound = detail::kOrient2dBound * (std::fabs(l) + std::fabs(r)) + detail::kAbsFloor;
   if (st) ++st->orient2d_calls;
-  if (det > bound || -det > bound) return detail::sign_of(det);
+  // bound > 0, so each test settles the sign: one compare per outcome, no
+  // second branch on det's sign.
+  if (det > bound) return Sign::Positive;
+  if (-det > bound) return Sign::Negative;
   if (st) ++st->orient2d_exact;
   return detail::orient2d_exact(a, b, c);
 }
@@ -74,7 +77,8 @@ inline Sign incircle(Vec2 a, Vec2 b, Vec2 c, Vec2 d, PredicateStats* st = nullpt
                            (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
   const double bound = detail::kIncircleBound * permanent + detail::kAbsFloor;
   if (st) ++st->incircle_calls;
-  if (det > bound || -det > bound) return detail::sign_of(det);
+  if (det > bound) return Sign::Positive;
+  if (-det > bound) return Sign::Negative;
   if (st) ++st->incircle_exact;
   return detail::incircle_exact(a, b, c, d);
 }
@@ -94,7 +98,8 @@ inline Sign orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d, PredicateStats* st = nullpt
                            (std::fabs(adxbdy) + std::fabs(bdxady)) * std::fabs(cdz);
   const double bound = detail::kOrient3dBound * permanent + detail::kAbsFloor;
   if (st) ++st->orient3d_calls;
-  if (det > bound || -det > bound) return detail::sign_of(det);
+  if (det > bound) return Sign::Positive;
+  if (-det > bound) return Sign::Negative;
   if (st) ++st->orient3d_exact;
   return detail::orient3d_exact(a, b, c, d);
 }
