@@ -285,6 +285,9 @@ void Builder::insert(std::uint32_t p, std::uint32_t t0) {
     }
   } else {
     std::uint32_t ghost_tri = kNo;
+    // Every b below is the a of the next boundary edge, written just before:
+    // the map needs no clearing, and exists only once a large cavity occurs.
+    if (vmap_.empty()) vmap_.resize(pts_.size());
     for (std::size_t i = 0; i < k; ++i) {
       if (bound_[i].a == kGhost) ghost_tri = cavity_[i];
       else vmap_[bound_[i].a] = cavity_[i];
@@ -331,7 +334,6 @@ void Builder::run() {
   }
   if (orient2d(pos(i0), pos(i1), pos(i2), stats_) == Sign::Negative) std::swap(i1, i2);
   tri_.reserve(2 * std::size_t{n} + 4);
-  vmap_.assign(n, kNo);
   const std::uint32_t c[3] = {i0, i1, i2};
   const std::uint32_t t = new_slot();
   for (int e = 0; e < 3; ++e) tri_[t].v[e] = c[e];
