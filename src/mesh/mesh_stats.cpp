@@ -31,7 +31,12 @@ double quantile(const std::vector<double>& sorted, double q) {
 
 MeshStats mesh_stats(const ModelMesh& mesh, const SizeAt3& size) {
   MeshStats s;
-  s.nodes = mesh.nodes.size();
+  // Nodes of the triangles, as a mesh file holds them: the model points that
+  // no triangle uses (B-spline control points, a sphere's centre) do not count.
+  std::vector<char> used(mesh.nodes.size(), 0);
+  for (const auto& [tag, sf] : mesh.surfaces)
+    for (const auto& t : sf.triangles) used[t[0]] = used[t[1]] = used[t[2]] = 1;
+  s.nodes = static_cast<std::uint64_t>(std::count(used.begin(), used.end(), 1));
   double sum = 0;
   std::uint64_t good = 0;
   s.min_rho = 1;

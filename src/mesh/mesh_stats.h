@@ -20,7 +20,7 @@ struct StageTime {
 };
 
 struct MeshStats {
-  std::uint64_t nodes = 0, triangles = 0, edges = 0;
+  std::uint64_t nodes = 0, triangles = 0, edges = 0;   // nodes: those of the triangles
   double min_rho = 0, mean_rho = 0, share_rho_09 = 0;   // share of triangles with rho > 0.9
   bool has_sizes = false;                              // the length ratios below are set
   double len_median = 0, len_p05 = 0, len_p95 = 0;     // edge length / target size
