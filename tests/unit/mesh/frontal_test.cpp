@@ -14,6 +14,7 @@
 #include "mesh/refine.h"
 #include "testing_coast.h"
 #include "testing_domains.h"
+#include "testing_sphere.h"
 
 using namespace sm;
 
@@ -38,41 +39,6 @@ double area_of(const TriangleStore& m) {
   return area;
 }
 
-Vec3 on_sphere(Vec2 u) {  // inverse stereographic map from the South Pole, unit sphere
-  const double r2 = norm2(u);
-  return Vec3{2 * u.x / (1 + r2), 2 * u.y / (1 + r2), (1 - r2) / (1 + r2)};
-}
-
-struct SphereStats {
-  double in_07_14 = 0;  // share of edges whose great-circle arc is in [0.7, 1.4] delta
-  double rho_09 = 0;    // share of triangles (chords on the sphere) with rho > 0.9
-  double area = 0;      // sum of the chord triangles' areas
-};
-
-SphereStats sphere_stats(const TriangleStore& m, double delta) {
-  SphereStats st;
-  std::size_t in = 0, total = 0, good = 0;
-  for (std::uint32_t s = 0; s < m.corner.size(); ++s) {
-    if (!m.alive(tri_of(Side{s}))) continue;
-    const Side o = m.twin[s];
-    if (o.valid() && o.value < s) continue;
-    const Vec3 a = on_sphere(m.pos(m.org(Side{s}))), b = on_sphere(m.pos(m.dest(Side{s})));
-    const double arc = std::atan2(norm(cross(a, b)), dot(a, b));
-    in += arc >= 0.7 * delta && arc <= 1.4 * delta;
-    ++total;
-  }
-  for (std::uint32_t t = 0; t < m.num_slots(); ++t) {
-    if (!m.alive(TriId{t})) continue;
-    const Vec3 a = on_sphere(m.pos(m.vertex(TriId{t}, 0))), b = on_sphere(m.pos(m.vertex(TriId{t}, 1))),
-               c = on_sphere(m.pos(m.vertex(TriId{t}, 2)));
-    const double la = norm(b - c), lb = norm(c - a), lc = norm(a - b), ar = 0.5 * norm(cross(b - a, c - a));
-    good += 16 * ar * ar / ((la + lb + lc) * la * lb * lc) > 0.9;
-    st.area += ar;
-  }
-  st.in_07_14 = double(in) / double(total);
-  st.rho_09 = double(good) / m.num_triangles();
-  return st;
-}
 
 // A closed curve x(s), s in [0, 1), cut into pieces of about the local size:
 // equal steps of the integral of |x'| / size (the 1D mesher's rule).
@@ -234,28 +200,21 @@ TEST_CASE("front2d: a spherical cap meshed in the stereographic plane (paper sec
   // on the sphere is lambda(u) = 2 / (1 + |u|^2) times the length in the
   // plane, so the plane size is delta_u = delta / lambda (conformal map).
   const double delta = 0.04;
-  const double rho_cap = std::tan(M_PI / 6);  // cap of angular radius 60 degrees round the North Pole
   TriangleStore m;
-  const int n = static_cast<int>(std::ceil(2 * M_PI * std::sin(M_PI / 3) / delta));
-  Loop cap;
-  for (int k = 0; k < n; ++k)
-    cap.v.push_back(m.add_vertex({rho_cap * std::cos(2 * M_PI * k / n), rho_cap * std::sin(2 * M_PI * k / n)}));
+  const Loop cap = testing::cap_loop(m, delta);
   std::vector<Edge> edges;
   REQUIRE(testing::boundary_mesh(m, {cap}, &edges));
-  const auto lambda = [](Vec2 u) { return 2 / (1 + norm2(u)); };
   RefineOptions opt;
-  opt.size_at = [&](std::span<const Vec2> pts, std::span<double> h) {
-    for (std::size_t i = 0; i < pts.size(); ++i) h[i] = delta / lambda(pts[i]);
-  };
+  opt.size_at = testing::stereo_size(delta);
   REQUIRE(refine_front2d(m, opt).ok());
   check_valid(m, edges);
-  const SphereStats st = sphere_stats(m, delta);
+  const testing::SphereStats st = testing::sphere_stats(m, delta);
   MESSAGE("front2d cap: " << m.num_triangles() << " triangles, " << 100 * st.in_07_14
                           << "% of edges within [0.7, 1.4] delta on the sphere, " << 100 * st.rho_09
                           << "% rho > 0.9 on the sphere");
   CHECK(st.in_07_14 > 0.99);
   CHECK(st.rho_09 > 0.91);
-  const double expected = M_PI / (std::sqrt(3.0) / 4 * delta * delta);
+  const double expected = testing::cap_triangles_expected(delta);
   CHECK(m.num_triangles() > 0.9 * expected);
   CHECK(m.num_triangles() < 1.3 * expected);
 }
@@ -292,19 +251,17 @@ TEST_CASE("front2d: the world ocean from GSHHG crude shorelines at 150 km in the
   MESSAGE((br.edges.size() - edges.size()) << " of " << br.edges.size() << " recovered edges lie inside land");
   const double delta = step_km / 6371.0;  // unit sphere
   RefineOptions opt;
-  opt.size_at = [&](std::span<const Vec2> pts, std::span<double> h) {
-    for (std::size_t i = 0; i < pts.size(); ++i) h[i] = delta * (1 + norm2(pts[i])) / 2;
-  };
+  opt.size_at = testing::stereo_size(delta);
   TriangleStore m_del = m;
   const FrontalResult r = refine_front2d(m, opt);
   INFO(r.error);
   REQUIRE(r.ok());
   check_valid(m, edges);
-  const SphereStats st = sphere_stats(m, delta);
+  const testing::SphereStats st = testing::sphere_stats(m, delta);
   const double ocean_km2 = st.area * 6371.0 * 6371.0;
   // del2d on the same boundary mesh, for comparison.
   REQUIRE(refine_del2d(m_del, opt).ok());
-  const SphereStats sd = sphere_stats(m_del, delta);
+  const testing::SphereStats sd = testing::sphere_stats(m_del, delta);
   MESSAGE("world ocean (GSHHG crude, 150 km), " << loops.size() << " loops: front2d " << m.num_triangles()
           << " triangles, " << 100 * st.in_07_14 << "% of arcs in [0.7, 1.4] delta, " << 100 * st.rho_09
           << "% rho > 0.9 on the sphere, ocean " << ocean_km2 / 1e6 << " M km2, " << r.given_up

@@ -14,6 +14,7 @@
 #include "mesh/quality.h"
 #include "testing_coast.h"
 #include "testing_domains.h"
+#include "testing_sphere.h"
 
 using namespace sm;
 
@@ -186,53 +187,25 @@ TEST_CASE("meshadapt: the checkers hold after every pass") {
 }
 
 TEST_CASE("meshadapt: a spherical cap in the stereographic plane (paper section 3.1)") {
-  // Unit sphere projected from the South Pole: lengths on the sphere are
-  // lambda(u) = 2 / (1 + |u|^2) times lengths in the plane, so the plane
-  // size is delta_u = delta / lambda (conformal map).
+  // Unit sphere projected from the South Pole: the plane size is
+  // delta_u = delta / lambda(u) (testing_sphere.h).
   const double delta = 0.05;
-  const double rho_cap = std::tan(M_PI / 6);  // cap of angular radius 60 degrees round the North Pole
   TriangleStore m;
-  const int n = static_cast<int>(std::ceil(2 * M_PI * std::sin(M_PI / 3) / delta));
-  Loop cap;
-  for (int k = 0; k < n; ++k)
-    cap.v.push_back(m.add_vertex({rho_cap * std::cos(2 * M_PI * k / n), rho_cap * std::sin(2 * M_PI * k / n)}));
+  const Loop cap = testing::cap_loop(m, delta);
   std::vector<Edge> edges;
   REQUIRE(testing::boundary_mesh(m, {cap}, &edges));
-  const auto lambda = [](Vec2 u) { return 2 / (1 + norm2(u)); };
   MeshAdaptOptions opt;
-  opt.size_at = [&](std::span<const Vec2> pts, std::span<double> h) {
-    for (std::size_t i = 0; i < pts.size(); ++i) h[i] = delta / lambda(pts[i]);
-  };
+  opt.size_at = testing::stereo_size(delta);
   const auto r = mesh_adapt(m, opt);
   REQUIRE(r.ok());
   check_adapted(m, edges);
-  const auto on_sphere = [](Vec2 u) {
-    const double r2 = norm2(u);
-    return Vec3{2 * u.x / (1 + r2), 2 * u.y / (1 + r2), (1 - r2) / (1 + r2)};
-  };
-  std::size_t in = 0, total = 0, good = 0;
-  for (std::uint32_t s = 0; s < m.corner.size(); ++s) {
-    if (!m.alive(tri_of(Side{s}))) continue;
-    const Side o = m.twin[s];
-    if (o.valid() && o.value < s) continue;
-    const Vec3 a = on_sphere(m.pos(m.org(Side{s}))), b = on_sphere(m.pos(m.dest(Side{s})));
-    const double arc = std::atan2(norm(cross(a, b)), dot(a, b));
-    in += arc >= 0.7 * delta && arc <= 1.4 * delta;
-    ++total;
-  }
-  for (std::uint32_t t = 0; t < m.num_slots(); ++t) {
-    if (!m.alive(TriId{t})) continue;
-    // rho of the flat triangle through the three points on the sphere.
-    const Vec3 a = on_sphere(m.pos(m.vertex(TriId{t}, 0))), b = on_sphere(m.pos(m.vertex(TriId{t}, 1))),
-               c = on_sphere(m.pos(m.vertex(TriId{t}, 2)));
-    const double la = norm(b - c), lb = norm(c - a), lc = norm(a - b), area = 0.5 * norm(cross(b - a, c - a));
-    good += 16 * area * area / ((la + lb + lc) * la * lb * lc) > 0.9;
-  }
-  MESSAGE("cap: " << m.num_triangles() << " triangles, " << 100.0 * in / total << "% of edges within [0.7, 1.4] delta, "
-                  << 100.0 * good / m.num_triangles() << "% rho > 0.9 on the sphere");
-  CHECK(double(in) / total > 0.95);
-  CHECK(double(good) / m.num_triangles() > 0.8);
-  const double expected = M_PI / (std::sqrt(3.0) / 4 * delta * delta);
+  // Arcs and the flat triangles through the three points, on the sphere.
+  const testing::SphereStats st = testing::sphere_stats(m, delta);
+  MESSAGE("cap: " << m.num_triangles() << " triangles, " << 100.0 * st.in_07_14 << "% of edges within [0.7, 1.4] delta, "
+                  << 100.0 * st.rho_09 << "% rho > 0.9 on the sphere");
+  CHECK(st.in_07_14 > 0.95);
+  CHECK(st.rho_09 > 0.8);
+  const double expected = testing::cap_triangles_expected(delta);
   CHECK(m.num_triangles() > 0.9 * expected);
   CHECK(m.num_triangles() < 1.3 * expected);
 }
@@ -340,16 +313,10 @@ TEST_CASE("meshadapt: the world ocean from GSHHG crude shorelines on the sphere 
   REQUIRE(coast.size() > 1000);
   const std::uint32_t nb = m.num_vertices();
   MeshAdaptOptions opt;
-  opt.size_at = [&](std::span<const Vec2> pts, std::span<double> h) {
-    for (std::size_t i = 0; i < pts.size(); ++i) h[i] = delta * (1 + norm2(pts[i])) / 2;
-  };
+  opt.size_at = testing::stereo_size(delta);
   const auto r = mesh_adapt(m, opt);
   REQUIRE(r.ok());
   check_adapted(m, coast);
-  const auto on_sphere = [](Vec2 u) {
-    const double r2 = norm2(u);
-    return Vec3{2 * u.x / (1 + r2), 2 * u.y / (1 + r2), (1 - r2) / (1 + r2)};
-  };
   // Edges with a free end (the coast is as the resampling made it: small
   // islands are triangles far below delta).
   std::size_t in = 0, total = 0;
@@ -358,7 +325,7 @@ TEST_CASE("meshadapt: the world ocean from GSHHG crude shorelines on the sphere 
     const Side o = m.twin[s];
     if (o.valid() && o.value < s) continue;
     if (m.org(Side{s}).value < nb && m.dest(Side{s}).value < nb) continue;
-    const Vec3 a = on_sphere(m.pos(m.org(Side{s}))), b = on_sphere(m.pos(m.dest(Side{s})));
+    const Vec3 a = testing::unit_on_sphere(m.pos(m.org(Side{s}))), b = testing::unit_on_sphere(m.pos(m.dest(Side{s})));
     const double arc = std::atan2(norm(cross(a, b)), dot(a, b));
     in += arc >= 0.7 * delta && arc <= 1.4 * delta;
     ++total;

@@ -10,6 +10,7 @@
 #include "mesh/quality.h"
 #include "mesh/refine.h"
 #include "testing_domains.h"
+#include "testing_sphere.h"
 
 using namespace sm;
 
@@ -123,46 +124,25 @@ TEST_CASE("refine: a bad size is an error, not a hang") {
 }
 
 TEST_CASE("refine: a spherical cap meshed in the stereographic plane (paper section 3.1)") {
-  // Unit sphere projected from the South Pole: u = (x, y) / (1 + z), so a
-  // length on the sphere is lambda(u) = 2 / (1 + |u|^2) times the length in
-  // the plane, and the plane size is delta_u = delta / lambda (conformal map).
+  // Unit sphere projected from the South Pole: the plane size is
+  // delta_u = delta / lambda(u) (testing_sphere.h).
   const double delta = 0.04;
-  const double rho_cap = std::tan(M_PI / 6);  // cap of angular radius 60 degrees round the North Pole
   TriangleStore m;
-  const int n = static_cast<int>(std::ceil(2 * M_PI * std::sin(M_PI / 3) / delta));
-  Loop cap;
-  for (int k = 0; k < n; ++k)
-    cap.v.push_back(m.add_vertex({rho_cap * std::cos(2 * M_PI * k / n), rho_cap * std::sin(2 * M_PI * k / n)}));
+  const Loop cap = testing::cap_loop(m, delta);
   std::vector<Edge> edges;
   REQUIRE(testing::boundary_mesh(m, {cap}, &edges));
-  const auto lambda = [](Vec2 u) { return 2 / (1 + norm2(u)); };
   RefineOptions opt;
-  opt.size_at = [&](std::span<const Vec2> pts, std::span<double> h) {
-    for (std::size_t i = 0; i < pts.size(); ++i) h[i] = delta / lambda(pts[i]);
-  };
+  opt.size_at = testing::stereo_size(delta);
   REQUIRE(refine_del2d(m, opt).ok());
   smooth_laplacian(m, 1);
   check_refined(m, edges);
   // Edge lengths measured on the sphere (great-circle arcs).
-  const auto on_sphere = [](Vec2 u) {
-    const double r2 = norm2(u);
-    return Vec3{2 * u.x / (1 + r2), 2 * u.y / (1 + r2), (1 - r2) / (1 + r2)};
-  };
-  std::size_t in = 0, total = 0;
-  for (std::uint32_t s = 0; s < m.corner.size(); ++s) {
-    if (!m.alive(tri_of(Side{s}))) continue;
-    const Side o = m.twin[s];
-    if (o.valid() && o.value < s) continue;
-    const Vec3 a = on_sphere(m.pos(m.org(Side{s}))), b = on_sphere(m.pos(m.dest(Side{s})));
-    const double arc = std::atan2(norm(cross(a, b)), dot(a, b));
-    in += arc >= 0.7 * delta && arc <= 1.4 * delta;
-    ++total;
-  }
-  MESSAGE("cap: " << m.num_triangles() << " triangles, " << 100.0 * in / total << "% of edges within [0.7, 1.4] delta on the sphere");
-  CHECK(double(in) / total > 0.95);
+  const testing::SphereStats st = testing::sphere_stats(m, delta);
+  MESSAGE("cap: " << m.num_triangles() << " triangles, " << 100.0 * st.in_07_14 << "% of edges within [0.7, 1.4] delta on the sphere");
+  CHECK(st.in_07_14 > 0.95);
   // Triangles fill the cap's area (2 pi (1 - cos 60) = pi) at about the
   // equilateral density of the target size.
-  const double expected = M_PI / (std::sqrt(3.0) / 4 * delta * delta);
+  const double expected = testing::cap_triangles_expected(delta);
   CHECK(m.num_triangles() > 0.9 * expected);
   CHECK(m.num_triangles() < 1.5 * expected);
 }
