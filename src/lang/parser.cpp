@@ -237,21 +237,27 @@ StmtList Parser::parse_block(const Token& opener, Block kind) {
   return body;
 }
 
-// Reports a block left open: at the token found instead of its end keyword,
-// with a note at the opener.
-namespace {
-void report_unclosed(Diagnostics& diags, const Token& found, std::string_view found_desc, std::string_view opener_text,
-                     SourceRange opener, std::string_view end_kw, bool quiet) {
-  if (quiet) return;
+// block_end := end_keyword [ ";" ]
+// Consumes the end keyword of a block opened by `opener`, or reports the block
+// left open: at the token found instead, with a note at the opener.
+void Parser::close_block(const Token& opener, Tok end, std::string_view end_kw) {
+  if (at(end)) {
+    advance();
+    accept(Tok::Semicolon);
+    return;
+  }
+  if (quiet_at_end()) return;
+  const Token found = peek();
+  const std::string_view opener_text = text(opener);
   if (found.kind == Tok::Eof) {
-    diags.report(found.range, Diag::UnterminatedBlock, opener_text, end_kw)
-        .note(opener, fmt::format("'{}' opened here", opener_text));
+    diags_.report(found.range, Diag::UnterminatedBlock, opener_text, end_kw)
+        .note(opener.range, fmt::format("'{}' opened here", opener_text));
   } else {
-    diags.report(found.range, Diag::ExpectedToken, fmt::format("'{}' to close '{}'", end_kw, opener_text), found_desc)
-        .note(opener, fmt::format("'{}' opened here", opener_text));
+    diags_.report(found.range, Diag::ExpectedToken, fmt::format("'{}' to close '{}'", end_kw, opener_text),
+                  describe(found))
+        .note(opener.range, fmt::format("'{}' opened here", opener_text));
   }
 }
-}  // namespace
 
 StmtId Parser::parse_statement() {
   const Token t = peek();
@@ -339,12 +345,7 @@ StmtId Parser::parse_if() {
       parse_block(kw, Block::If);
     }
   }
-  if (at(Tok::EndIf)) {
-    advance();
-    accept(Tok::Semicolon);
-  } else {
-    report_unclosed(diags_, peek(), describe(peek()), text(kw), kw.range, "EndIf", quiet_at_end());
-  }
+  close_block(kw, Tok::EndIf, "EndIf");
   return add(kw, std::move(node));
 }
 
@@ -376,12 +377,7 @@ StmtId Parser::parse_for() {
     if (!node.to.valid()) node.to = error_expr(peek());
   }
   node.body = parse_block(kw, Block::For);
-  if (at(Tok::EndFor)) {
-    advance();
-    accept(Tok::Semicolon);
-  } else {
-    report_unclosed(diags_, peek(), describe(peek()), text(kw), kw.range, "EndFor", quiet_at_end());
-  }
+  close_block(kw, Tok::EndFor, "EndFor");
   return add(kw, std::move(node));
 }
 
@@ -404,12 +400,7 @@ StmtId Parser::parse_macro() {
     fail_expected("a macro name");
   }
   node.body = parse_block(kw, Block::Macro);
-  if (at(Tok::Return)) {
-    advance();
-    accept(Tok::Semicolon);
-  } else {
-    report_unclosed(diags_, peek(), describe(peek()), text(kw), kw.range, "Return", quiet_at_end());
-  }
+  close_block(kw, Tok::Return, "Return");
   return add(kw, std::move(node));
 }
 

@@ -70,6 +70,7 @@ class Parser {
     Token opener;
   };
   StmtList parse_block(const Token& opener, Block kind);
+  void close_block(const Token& opener, Tok end, std::string_view end_kw);
   bool at_block_end();
   StmtId parse_statement();
   StmtId parse_if();
