@@ -530,10 +530,17 @@ Mesh2dResult mesh_surfaces(const geo::Model& model, ModelMesh& mesh, const Mesh2
   Mesh2dResult res;
   const double bbox = model_bbox(model, opt.bbox_diag);
   std::vector<std::uint32_t> local_of;
+  progress_begin(opt.progress, "2D", model.surfaces().size());
+  std::uint64_t faces_done = 0;
   for (const auto& [tag, s] : model.surfaces()) {
     FaceMesher fm(model, mesh, opt, bbox, res, local_of);
-    if (!fm.run(s)) return res;
+    if (!fm.run(s)) {
+      progress_end(opt.progress);
+      return res;
+    }
+    progress_update(opt.progress, ++faces_done);
   }
+  progress_end(opt.progress);
   mesh.dim = std::max(mesh.dim, 2);
   return res;
 }

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "base/progress.h"
 #include "field/field.h"
 #include "field/size_policy.h"
 #include "geo/model.h"
@@ -36,6 +37,8 @@ struct Mesh2dOptions {
   /// default (del2d 0.76, front2d refine.h's 1/sqrt2).
   double radius_limit = 0;
   std::uint32_t max_vertices_per_face = 0xFFFFFFF0u;
+  /// Told "2D" with one unit per face; null: nobody listens.
+  Progress* progress = nullptr;
 };
 
 /// A located failure: the surface, and where (3D; lon/lat on a sphere geometry).
