@@ -44,7 +44,7 @@ std::string usage_text() {
          "  -1, -2              mesh the curves / the surfaces and write the mesh (-o FILE)\n"
          "  --stats FILE.json   after -2 (or Mesh 2;), write the mesh statistics as JSON\n"
          "  -o FILE             output mesh file\n"
-         "  -format NAME        output format: msh, msh2, msh22, msh4, msh41, vtk, svg (a picture),\n"
+         "  -format NAME        output format: msh, msh2, msh22, msh4, msh41, vtk, svg or png (a picture),\n"
          "                      fort14 (ADCIRC), gr3 (SCHISM hgrid.gr3 + hgrid.ll)\n"
          "  -bin                binary output (Mesh.Binary = 1)\n"
          "  -setnumber NAME V   define variable NAME (wins over DefineConstant) or set option NAME\n"
@@ -106,15 +106,15 @@ ParseOutcome parse_args(const std::vector<std::string>& argv) {
       if (!value("-o", a.output)) return fail("'-o' needs a file name");
     } else if (arg == "-format") {
       if (!value("-format", a.format)) return fail("'-format' needs a format name");
-      static const char* kFormats[] = {"msh", "msh2", "msh22", "msh4", "msh41", "vtk", "svg", "fort14", "gr3"};
+      static const char* kFormats[] = {"msh", "msh2", "msh22", "msh4", "msh41", "vtk", "svg", "png", "fort14", "gr3"};
       bool known = false;
       for (const char* f : kFormats) known = known || a.format == f;
       if (!known)
-        return fail(fmt::format("unknown format '{}' (msh, msh2, msh22, msh4, msh41, vtk, svg, fort14, gr3)", a.format));
+        return fail(fmt::format("unknown format '{}' (msh, msh2, msh22, msh4, msh41, vtk, svg, png, fort14, gr3)", a.format));
       const bool v2 = a.format == "msh2" || a.format == "msh22";
-      // Gmsh has no mesh format number for SVG or the ocean-model grids: they
-      // are chosen by name.
-      const bool native = a.format == "svg" || a.format == "fort14" || a.format == "gr3";
+      // Gmsh has no mesh format number for the pictures or the ocean-model
+      // grids: they are chosen by name.
+      const bool native = a.format == "svg" || a.format == "png" || a.format == "fort14" || a.format == "gr3";
       if (!native) a.option_numbers.emplace_back("Mesh.Format", a.format == "vtk" ? 16 : 1);
       if (a.format != "vtk" && a.format != "msh" && !native) a.option_numbers.emplace_back("Mesh.MshFileVersion", v2 ? 2.2 : 4.1);
     } else if (arg == "-bin") {

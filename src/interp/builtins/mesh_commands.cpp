@@ -22,6 +22,7 @@
 #include "interp/interpreter.h"
 #include "io/from_model_mesh.h"
 #include "io/msh_writer.h"
+#include "io/png_writer.h"
 #include "io/svg_writer.h"
 #include "io/vtk_writer.h"
 #include "mesh/mesh1d.h"
@@ -165,29 +166,30 @@ std::string save_mesh(Interpreter& in, const std::string& path, std::string form
     const int mesh_format = static_cast<int>(o.number("Mesh.Format"));
     if (mesh_format == 1 || (mesh_format == 10 && ext == ".msh")) format = "msh";
     else if (mesh_format == 16 || (mesh_format == 10 && ext == ".vtk")) format = "vtk";
-    else if (mesh_format == 10 && ext == ".svg") format = "svg";
+    else if (mesh_format == 10 && (ext == ".svg" || ext == ".png")) format = ext.substr(1);
     else if (mesh_format == 10 && ext == ".14") format = "fort14";
     else if (mesh_format == 10 && ext == ".gr3") format = "gr3";
-    else return fmt::format("unsupported mesh format for '{}' (use .msh, .vtk, .svg, .14 or .gr3)", path);
+    else return fmt::format("unsupported mesh format for '{}' (use .msh, .vtk, .svg, .png, .14 or .gr3)", path);
   }
   if (format == "fort14" || format == "gr3") return save_ocean_grid(in, path, format);
   const bool binary = o.number("Mesh.Binary") != 0;
   const bool save_all = o.number("Mesh.SaveAll") != 0;
   std::string error;
-  if (format == "svg") {
+  if (format == "svg" || format == "png") {
     // A picture: lon/lat view of a mesh on a sphere geometry (the first one the
     // model has), the plane as it is otherwise; coloured by quality.
-    io::SvgOptions so;
-    so.view = io::SvgView::Plane;
+    io::PictureOptions po;
+    po.view = io::PictureView::Plane;
     for (const auto& [tag, g] : k.model.geometries()) {
-      so.view = io::SvgView::LonLat;
-      so.centre = g.centre();
-      so.radius = g.radius();
+      po.view = io::PictureView::LonLat;
+      po.centre = g.centre();
+      po.radius = g.radius();
       break;
     }
-    so.colour = io::SvgColour::Quality;
-    so.save_all = save_all;
-    return io::save_svg(mm, so, path, &error) ? std::string{} : error;
+    po.colour = io::PictureColour::Quality;
+    po.save_all = save_all;
+    const bool ok = format == "svg" ? io::save_svg(mm, po, path, &error) : io::save_png(mm, po, path, &error);
+    return ok ? std::string{} : error;
   }
   if (format == "vtk") {
     io::VtkOptions vo;
@@ -199,7 +201,7 @@ std::string save_mesh(Interpreter& in, const std::string& path, std::string form
   if (format == "msh22" || format == "msh2") mo.version = 22;
   else if (format == "msh41" || format == "msh4") mo.version = 41;
   else if (format == "msh") mo.version = o.number("Mesh.MshFileVersion") < 3 ? 22 : 41;
-  else return fmt::format("unknown format '{}' (msh41, msh22, msh4, msh2, msh, vtk, svg, fort14, gr3)", format);
+  else return fmt::format("unknown format '{}' (msh41, msh22, msh4, msh2, msh, vtk, svg, png, fort14, gr3)", format);
   mo.binary = binary;
   mo.save_all = save_all;
   mo.save_parametric = o.number("Mesh.SaveParametric") != 0;
@@ -291,7 +293,7 @@ bool mesh_from_command_line(Interpreter& in, int dim, const std::string& output,
     std::filesystem::path p(first_script);
     if (format == "fort14") p.replace_filename("fort.14");
     else if (format == "gr3") p.replace_filename("hgrid.gr3");
-    else p.replace_extension(format == "vtk" || format == "svg" ? "." + format : ".msh");
+    else p.replace_extension(format == "vtk" || format == "svg" || format == "png" ? "." + format : ".msh");
     path = p.string();
   }
   if (const std::string err = save_mesh(in, path, format); !err.empty()) {

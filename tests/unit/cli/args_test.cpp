@@ -110,6 +110,15 @@ TEST_CASE("cli: exit statuses of the binary") {
   }
   CHECK(run_status(bin + " -2 -v 0 " + d + "square.geo -o " + d + "square.svg") == 0);
   CHECK(fs::file_size(dir / "square.svg") > 1000);
+  // PNG by extension and by -format (the default name is the script's with .png).
+  CHECK(run_status(bin + " -2 -v 0 " + d + "square.geo -o " + d + "sq.png") == 0);
+  CHECK(run_status(bin + " -2 -v 0 -format png " + d + "square.geo") == 0);
+  for (const char* png : {"sq.png", "square.png"}) {
+    std::ifstream in(dir / png, std::ios::binary);
+    std::string head(8, '\0');
+    in.read(head.data(), 8);
+    CHECK(head == std::string("\x89PNG\r\n\x1a\n", 8));
+  }
   // A script error while meshing leaves no output file; --stats without a 2D mesh is an error.
   std::ofstream(dir / "badalgo.geo") << "Mesh.Algorithm = 7;\nPoint(1) = {0, 0, 0, 0.1}; Point(2) = {1, 0, 0, 0.1};\n"
                                         "Point(3) = {0, 1, 0, 0.1}; Line(1) = {1, 2}; Line(2) = {2, 3};\n"

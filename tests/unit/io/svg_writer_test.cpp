@@ -36,9 +36,9 @@ std::string count_elements(const std::string& svg_path) {
 TEST_CASE("svg: planar mesh, one polygon per triangle, one polyline per curve") {
   const MeshModel m = testing::grid_square(10);
   std::string error;
-  for (SvgColour colour : {SvgColour::None, SvgColour::Quality}) {
-    SvgOptions opt;
-    opt.view = SvgView::Plane;
+  for (PictureColour colour : {PictureColour::None, PictureColour::Quality}) {
+    PictureOptions opt;
+    opt.view = PictureView::Plane;
     opt.colour = colour;
     REQUIRE(save_svg(m, opt, "/tmp/sm_svg_plane.svg", &error));
     CHECK(count_elements("/tmp/sm_svg_plane.svg") == "200 4\n");
@@ -57,9 +57,9 @@ TEST_CASE("svg: lon/lat view draws a triangle across the dateline on both sides"
   s.nodes = {0, 1, 2, 3, 4, 5};
   s.connectivity = {0, 1, 2, 3, 4, 5};
   m.entities.push_back(s);
-  SvgOptions opt;
-  opt.view = SvgView::LonLat;
-  opt.colour = SvgColour::NodeValue;
+  PictureOptions opt;
+  opt.view = PictureView::LonLat;
+  opt.colour = PictureColour::NodeValue;
   opt.node_values = {1, 2, 3, 4, 5, 6};
   std::string error;
   REQUIRE(save_svg(m, opt, "/tmp/sm_svg_ll.svg", &error));
@@ -80,7 +80,7 @@ TEST_CASE("svg: model points (a sphere's centre) do not stretch the frame") {
   EntityMesh s;
   s.dim = 2, s.tag = 1, s.type = ElementType::Triangle3, s.nodes = {0, 1, 2}, s.connectivity = {0, 1, 2};
   m.entities = {p, s};
-  SvgOptions opt;
+  PictureOptions opt;
   opt.width_px = 1000;
   const std::string svg = svg_to_string(m, opt);
   CHECK(svg.find("height=\"1000\"") != std::string::npos);  // 10 x 10 degrees

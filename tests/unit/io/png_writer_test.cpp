@@ -1,0 +1,162 @@
+// PNG pictures: a valid PNG (signature, IHDR size) that cairo reads back, the same frame as
+// the SVG picture, and coastline-coloured pixels where the boundary curves are.
+#include <doctest/doctest.h>
+
+#include <cairo.h>
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "geo/sphere.h"
+#include "io/png_writer.h"
+#include "io/test_meshes.h"
+
+using namespace sm;
+using namespace sm::io;
+
+namespace {
+
+std::string read_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::uint32_t be32(const std::string& b, std::size_t at) {
+  return (std::uint32_t(std::uint8_t(b[at])) << 24) | (std::uint32_t(std::uint8_t(b[at + 1])) << 16) |
+         (std::uint32_t(std::uint8_t(b[at + 2])) << 8) | std::uint32_t(std::uint8_t(b[at + 3]));
+}
+
+// A picture read back with cairo: its size and pixel colours.
+struct Image {
+  int width = 0, height = 0;
+  std::vector<Rgb> px;
+  Rgb at(int x, int y) const { return px[std::size_t(y) * width + x]; }
+};
+
+Image read_png(const std::string& path) {
+  Image img;
+  cairo_surface_t* s = cairo_image_surface_create_from_png(path.c_str());
+  if (cairo_surface_status(s) == CAIRO_STATUS_SUCCESS) {
+    img.width = cairo_image_surface_get_width(s);
+    img.height = cairo_image_surface_get_height(s);
+    const int stride = cairo_image_surface_get_stride(s);
+    const unsigned char* data = cairo_image_surface_get_data(s);
+    for (int y = 0; y < img.height; ++y)
+      for (int x = 0; x < img.width; ++x) {
+        std::uint32_t v;
+        std::memcpy(&v, data + std::size_t(y) * stride + 4 * x, 4);
+        img.px.push_back({std::uint8_t(v >> 16), std::uint8_t(v >> 8), std::uint8_t(v)});
+      }
+  }
+  cairo_surface_destroy(s);
+  return img;
+}
+
+// Coastline red (#b2182b), allowing for antialiasing against the light fills.
+bool reddish(Rgb c) { return c.r > 140 && c.r > c.g + 60 && c.r > c.b + 60; }
+
+std::size_t count_reddish(const Image& img) {
+  std::size_t n = 0;
+  for (Rgb c : img.px) n += reddish(c);
+  return n;
+}
+
+// grid_square(n) mapped onto the unit sphere (lon -10..10, lat 40..50), plus a curve
+// across its middle (lat 45) in the coast group.
+MeshModel sphere_patch(int n) {
+  MeshModel m = testing::grid_square(n);
+  const geo::PolarSphere sphere({0, 0, 0}, 1);
+  for (Vec3& x : m.xyz) x = sphere.from_lonlat({-10 + 20 * x.x, 40 + 10 * x.y});
+  EntityMesh mid;
+  mid.dim = 1, mid.tag = 5, mid.type = ElementType::Line2, mid.physical_tags = {5};
+  for (int i = 0; i < n; ++i) {
+    mid.connectivity.push_back(std::uint32_t((n / 2) * (n + 1) + i));
+    mid.connectivity.push_back(std::uint32_t((n / 2) * (n + 1) + i + 1));
+  }
+  m.entities.push_back(mid);
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("png: planar mesh, signature, size and coastline pixels") {
+  const MeshModel m = testing::grid_square(10);
+  PictureOptions opt;
+  opt.view = PictureView::Plane;
+  opt.width_px = 400;
+  std::string error;
+  const std::string path = "/tmp/sm_png_plane.png";
+  REQUIRE(save_png(m, opt, path, &error));
+  const std::string bytes = read_bytes(path);
+  REQUIRE(bytes.size() > 33);
+  CHECK(bytes.substr(0, 8) == std::string("\x89PNG\r\n\x1a\n", 8));
+  CHECK(bytes.substr(12, 4) == "IHDR");
+  CHECK(be32(bytes, 16) == 400);
+  CHECK(be32(bytes, 20) == 400);
+  const Image img = read_png(path);
+  REQUIRE(img.width == 400);
+  REQUIRE(img.height == 400);
+  // The four sides: a stroke 1 px wide inside a 1 px margin, antialiased over two pixels.
+  CHECK(count_reddish(img) > 4 * 390);
+  CHECK(!reddish(img.at(200, 200)));   // the middle is mesh, not coastline
+  CHECK(reddish(img.at(200, 0)));
+  CHECK(reddish(img.at(0, 200)));
+  CHECK(reddish(img.at(399, 200)));
+  CHECK(reddish(img.at(200, 399)));
+}
+
+TEST_CASE("png: sphere mesh in lon/lat view, coastline across the middle") {
+  const MeshModel m = sphere_patch(10);
+  for (PictureColour colour : {PictureColour::None, PictureColour::Quality}) {
+    PictureOptions opt;
+    opt.view = PictureView::LonLat;
+    opt.colour = colour;
+    opt.width_px = 3006;   // coastlines 3 px wide, a 3 px margin: 150 px per degree
+    std::string error;
+    const std::string path = "/tmp/sm_png_sphere.png";
+    REQUIRE(save_png(m, opt, path, &error));
+    const Image img = read_png(path);
+    REQUIRE(img.width == 3006);
+    REQUIRE(img.height == 1506);   // 20 x 10 degrees
+    // lat 45 is the middle row: the curve covers rows 751.5 to 754.5.
+    CHECK(reddish(img.at(1503, 753)));
+    CHECK(!reddish(img.at(1503, 700)));
+    CHECK(!reddish(img.at(1503, 800)));
+    // The whole mid curve is drawn: every column has coastline red there.
+    int columns = 0;
+    for (int x = 3; x < 3003; ++x) columns += reddish(img.at(x, 753));   // lon -10..10
+    CHECK(columns == 3000);
+    // And nothing else is red inside: rows a quarter and three quarters down have none.
+    int stray = 0;
+    for (int x = 20; x < 2980; ++x) stray += reddish(img.at(x, 378)) + reddish(img.at(x, 1128));
+    CHECK(stray == 0);
+  }
+}
+
+TEST_CASE("png: stereographic view and the scene shared with SVG") {
+  const MeshModel m = sphere_patch(6);
+  PictureOptions opt;
+  opt.view = PictureView::Stereographic;
+  opt.width_px = 300;
+  const Scene sc = build_scene(m, opt);
+  CHECK(sc.triangles.size() == 72);
+  CHECK(sc.polylines.size() == 5);
+  std::string error;
+  const std::string bytes = png_to_string(sc, &error);
+  REQUIRE(!bytes.empty());
+  CHECK(be32(bytes, 16) == 300);
+  CHECK(be32(bytes, 20) == static_cast<std::uint32_t>(std::lround(sc.height)));
+}
+
+TEST_CASE("png: a missing directory is a clear error and nothing is written") {
+  const MeshModel m = testing::grid_square(2);
+  PictureOptions opt;
+  opt.view = PictureView::Plane;
+  std::string error;
+  CHECK(!save_png(m, opt, "/nonexistent-dir/x.png", &error));
+  CHECK(error.find("cannot create '/nonexistent-dir/x.png'") != std::string::npos);
+}
