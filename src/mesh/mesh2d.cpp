@@ -4,19 +4,23 @@
 #include "mesh/mesh2d.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <memory>
 #include <optional>
 
 #include <fmt/format.h>
 
+#include "base/parallel.h"
 #include "mesh/cdt.h"
 #include "mesh/delaunay.h"
 #include "mesh/frontal.h"
 #include "mesh/meshadapt.h"
 #include "mesh/modify/smooth.h"
+#include "mesh/partition.h"
 #include "mesh/predicates.h"
 #include "mesh/refine.h"
 
@@ -121,8 +125,7 @@ class FaceMesher {
   std::uint32_t local(std::uint32_t node);
   Vec2 node_plane(std::uint32_t node) const;
   Vec2 node_param(std::uint32_t node) const;   // on a geometry: the node's (u,v)
-  void sizes_in_plane(std::span<const Vec2> p, std::span<double> h);
-  std::optional<double> boundary_size(Vec2 p);
+  bool refine(const std::function<void(std::span<const Vec2>, std::span<double>)>& size_at);
 
   const geo::Model& model_;
   ModelMesh& mesh_;
@@ -138,10 +141,27 @@ class FaceMesher {
   std::vector<std::uint32_t>& local_of_;      // global node -> local vertex (shared scratch)
   TriangleStore m_;
   // Extension of the boundary sizes into the face: the recovered boundary triangulation,
-  // per vertex the mean length of its boundary edges (inf: none), a walk hint.
+  // per vertex the mean length of its boundary edges (inf: none).
   TriangleStore bg_;
   std::vector<double> bsize_;
-  TriId bg_hint_;
+  std::atomic<std::uint64_t> size_evaluations_{0};
+  friend class PlaneSizes;
+};
+
+// The size in the face's plane (h / lambda) at batches of points: the size policy with
+// the background field and the extension from the boundary. Holds its own scratch and
+// walk hint, so each part of a partitioned face gets its own and none writes another's;
+// the face data it reads is not modified while it lives.
+class PlaneSizes {
+ public:
+  explicit PlaneSizes(FaceMesher& f) : f_(f) {}
+  void operator()(std::span<const Vec2> p, std::span<double> h);
+
+ private:
+  std::optional<double> boundary_size(Vec2 p);
+
+  FaceMesher& f_;
+  TriId hint_;
   std::uint32_t walk_turn_ = 0;
   std::vector<Vec3> pts3_;
   std::vector<double> field_;
@@ -306,17 +326,19 @@ std::uint32_t FaceMesher::local(std::uint32_t node) {
 // Barycentric interpolation of the boundary sizes in the recovered boundary
 // triangulation: a visibility walk from the last hit that stops at the domain's boundary
 // (the point is then clamped to the last triangle).
-std::optional<double> FaceMesher::boundary_size(Vec2 p) {
-  if (!bg_hint_.valid() || !bg_.alive(bg_hint_)) {
-    bg_hint_ = TriId{};
+std::optional<double> PlaneSizes::boundary_size(Vec2 p) {
+  const TriangleStore& bg_ = f_.bg_;
+  const std::vector<double>& bsize_ = f_.bsize_;
+  if (!hint_.valid() || !bg_.alive(hint_)) {
+    hint_ = TriId{};
     for (std::uint32_t t = 0; t < bg_.num_slots(); ++t)
       if (bg_.alive(TriId{t})) {
-        bg_hint_ = TriId{t};
+        hint_ = TriId{t};
         break;
       }
-    if (!bg_hint_.valid()) return std::nullopt;
+    if (!hint_.valid()) return std::nullopt;
   }
-  TriId t = bg_hint_;
+  TriId t = hint_;
   const std::uint32_t cap = 4 * bg_.num_slots() + 16;
   for (std::uint32_t step = 0; step < cap; ++step) {
     bool moved = false;
@@ -331,7 +353,7 @@ std::optional<double> FaceMesher::boundary_size(Vec2 p) {
     }
     if (!moved) break;
   }
-  bg_hint_ = t;
+  hint_ = t;
   const Vec2 a = bg_.pos(bg_.vertex(t, 0)), b = bg_.pos(bg_.vertex(t, 1)), c = bg_.pos(bg_.vertex(t, 2));
   const double area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
   double w[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
@@ -354,22 +376,62 @@ std::optional<double> FaceMesher::boundary_size(Vec2 p) {
   return std::isfinite(lo) ? std::optional<double>(lo) : std::nullopt;
 }
 
-void FaceMesher::sizes_in_plane(std::span<const Vec2> p, std::span<double> h) {
+void PlaneSizes::operator()(std::span<const Vec2> p, std::span<double> h) {
+  const Mesh2dOptions& opt = f_.opt_;
   pts3_.resize(p.size());
   field_.resize(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i) pts3_[i] = plane_.to_space(p[i]);
-  if (opt_.background) opt_.background->eval_on(field::EntityRef{2, tag_}, pts3_, field_);
+  for (std::size_t i = 0; i < p.size(); ++i) pts3_[i] = f_.plane_.to_space(p[i]);
+  if (opt.background) opt.background->eval_on(field::EntityRef{2, f_.tag_}, pts3_, field_);
   field::SizeQuery q;
-  q.bbox_diag = bbox_;
+  q.bbox_diag = f_.bbox_;
   q.entity_dim = 2;
-  const bool extend = opt_.size.extend_from_boundary != 0;
+  const bool extend = opt.size.extend_from_boundary != 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    if (opt_.background) q.background = field_[i];
-    double size = field::final_size(opt_.size, q).size;
-    if (extend) size = field::surface_target(opt_.size, size, boundary_size(p[i]));
-    h[i] = size / plane_.lambda(p[i]);
+    if (opt.background) q.background = field_[i];
+    double size = field::final_size(opt.size, q).size;
+    if (extend) size = field::surface_target(opt.size, size, boundary_size(p[i]));
+    h[i] = size / f_.plane_.lambda(p[i]);
   }
-  res_.stats.size_evaluations += p.size();
+  f_.size_evaluations_.fetch_add(p.size(), std::memory_order_relaxed);
+}
+
+// del2d or front2d on the face: in one piece, or in parts (partition.h) when the estimated
+// triangle count reaches opt_.partition.min_triangles. The part count depends on the
+// estimate only, so the mesh is the same for every thread count.
+bool FaceMesher::refine(const std::function<void(std::span<const Vec2>, std::span<double>)>& size_at) {
+  RefineOptions ro;
+  ro.max_vertices = opt_.max_vertices_per_face;
+  ro.size_at = size_at;
+  const bool frontal = opt_.algorithm == Mesh2dAlgorithm::Frontal;
+  if (opt_.radius_limit > 0) ro.radius_limit = opt_.radius_limit;
+  else if (!frontal) ro.radius_limit = kDel2dRadiusLimit;
+  // The estimate uses its own evaluator: the refiner's walk hints stay as without it.
+  PlaneSizes estimate_sizes(*this);
+  const PlaneSizeFn estimate_at = [&estimate_sizes](std::span<const Vec2> p, std::span<double> h) { estimate_sizes(p, h); };
+  if (opt_.partition.min_triangles > 0 && estimate_triangles(m_, estimate_at) >= opt_.partition.min_triangles) {
+    ro.size_at = nullptr;
+    const auto make_size = [this]() -> PlaneSizeFn {
+      auto sizes = std::make_shared<PlaneSizes>(*this);
+      return [sizes](std::span<const Vec2> p, std::span<double> h) { (*sizes)(p, h); };
+    };
+    const PartitionResult pr = refine_partitioned(m_, ro, frontal ? PartRefiner::Frontal : PartRefiner::Del2d,
+                                                  make_size, opt_.partition, resolve_thread_count(opt_.threads));
+    res_.stats.inserted += pr.stats.refine.inserted;
+    res_.stats.rejected += pr.stats.refine.rejected;
+    res_.stats.parts += pr.stats.parts;
+    ++res_.stats.partitioned_faces;
+    if (!pr.ok()) return fail("refinement failed: " + pr.error);
+    // Parts are Delaunay inside; smoothing ends with flips that make the seams so too.
+    if (opt_.smoothing <= 0) make_delaunay(m_);
+    return true;
+  }
+  RefineResult rf;
+  if (frontal) rf = refine_front2d(m_, ro);
+  else rf = refine_del2d(m_, ro);
+  res_.stats.inserted += rf.stats.inserted;
+  res_.stats.rejected += rf.stats.rejected;
+  if (!rf.ok()) return fail("refinement failed: " + rf.error);
+  return true;
 }
 
 bool FaceMesher::run(const geo::ModelSurface& s) {
@@ -453,9 +515,11 @@ bool FaceMesher::run(const geo::ModelSurface& s) {
   res_.stats.seconds_boundary += seconds_since(t0);
 
   t0 = std::chrono::steady_clock::now();
-  const auto size_at = [this](std::span<const Vec2> p, std::span<double> h) { sizes_in_plane(p, h); };
+  PlaneSizes sizes(*this);
+  const auto size_at = [&sizes](std::span<const Vec2> p, std::span<double> h) { sizes(p, h); };
   bool smoothed = false;
   if (opt_.algorithm == Mesh2dAlgorithm::MeshAdapt) {
+    // Meshadapt is serial: its rounds of split/collapse/swap act on the whole face.
     MeshAdaptOptions mo;
     mo.size_at = size_at;
     mo.smoothing_passes = std::max(0, opt_.smoothing);
@@ -464,22 +528,10 @@ bool FaceMesher::run(const geo::ModelSurface& s) {
     if (!ma.ok()) return fail("meshadapt failed: " + ma.error);
     res_.stats.inserted += ma.stats.splits;
     smoothed = true;   // meshadapt smooths in each round
-  } else {
-    RefineOptions ro;
-    ro.max_vertices = opt_.max_vertices_per_face;
-    ro.size_at = size_at;
-    RefineResult rf;
-    if (opt_.algorithm == Mesh2dAlgorithm::Frontal) {
-      if (opt_.radius_limit > 0) ro.radius_limit = opt_.radius_limit;
-      rf = refine_front2d(m_, ro);
-    } else {
-      ro.radius_limit = opt_.radius_limit > 0 ? opt_.radius_limit : kDel2dRadiusLimit;
-      rf = refine_del2d(m_, ro);
-    }
-    res_.stats.inserted += rf.stats.inserted;
-    res_.stats.rejected += rf.stats.rejected;
-    if (!rf.ok()) return fail("refinement failed: " + rf.error);
+  } else if (!refine(size_at)) {
+    return false;
   }
+  res_.stats.size_evaluations += size_evaluations_.exchange(0);
   res_.stats.seconds_refine += seconds_since(t0);
 
   t0 = std::chrono::steady_clock::now();

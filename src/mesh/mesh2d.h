@@ -17,6 +17,7 @@
 #include "geo/sphere.h"
 #include "mesh/mesh_stats.h"
 #include "mesh/model_mesh.h"
+#include "mesh/partition.h"
 
 namespace sm {
 
@@ -37,6 +38,11 @@ struct Mesh2dOptions {
   /// default (del2d 0.76, front2d refine.h's 1/sqrt2).
   double radius_limit = 0;
   std::uint32_t max_vertices_per_face = 0xFFFFFFF0u;
+  /// Threads for the refinement of partitioned faces (General.NumThreads /
+  /// Mesh.MaxNumThreads2D); <= 0: the hardware's. The mesh does not depend on it.
+  int threads = 1;
+  /// When and how del2d / front2d faces are refined in parts (partition.h).
+  PartitionOptions partition;
   /// Told "2D" with one unit per face; null: nobody listens.
   Progress* progress = nullptr;
 };
@@ -53,6 +59,7 @@ struct Mesh2dError {
 struct Mesh2dStats {
   std::uint64_t faces = 0, triangles = 0, new_nodes = 0;
   std::uint64_t inserted = 0, rejected = 0, size_evaluations = 0;
+  std::uint64_t partitioned_faces = 0, parts = 0;   // faces refined in parts, their parts
   double seconds_boundary = 0;   // Delaunay of the boundary nodes, edge recovery, holes
   double seconds_refine = 0;
   double seconds_smooth = 0;

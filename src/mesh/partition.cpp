@@ -1,0 +1,476 @@
+// refine_partitioned: coarse pass, bisection, border subdivision, per-part CDT + refinement
+// through parallel_for_chunks (one part per chunk), merge with cross-part twins matched by
+// sorting the parts' hull edges. Nothing here depends on the thread count.
+#include "mesh/partition.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+
+#include <fmt/format.h>
+
+#include "base/parallel.h"
+#include "mesh/cdt.h"
+#include "mesh/delaunay.h"
+#include "mesh/frontal.h"
+
+namespace sm {
+namespace {
+
+constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+constexpr double kEquilateralArea = 0.4330127018922193;  // sqrt(3)/4: equilateral of side 1
+constexpr std::size_t kBatch = 4096;
+
+double since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+Vec2 centroid(const TriangleStore& m, std::uint32_t t) {
+  return (m.pos(m.vertex(TriId{t}, 0)) + m.pos(m.vertex(TriId{t}, 1)) + m.pos(m.vertex(TriId{t}, 2))) / 3.0;
+}
+
+double area(const TriangleStore& m, std::uint32_t t) {
+  const Vec2 a = m.pos(m.vertex(TriId{t}, 0)), b = m.pos(m.vertex(TriId{t}, 1)), c = m.pos(m.vertex(TriId{t}, 2));
+  return 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+}
+
+std::vector<std::uint32_t> live_triangles(const TriangleStore& m) {
+  std::vector<std::uint32_t> t;
+  t.reserve(m.num_triangles());
+  for (std::uint32_t i = 0; i < m.num_slots(); ++i)
+    if (m.alive(TriId{i})) t.push_back(i);
+  return t;
+}
+
+// Centroids and estimated final triangle counts (area / equilateral area at the size) of
+// the listed triangles; a non-positive or non-finite size gives weight 0 (the refiner
+// reports it).
+void estimate_each(const TriangleStore& m, std::span<const std::uint32_t> tris, const PlaneSizeFn& size,
+                   std::vector<Vec2>& c, std::vector<double>& w) {
+  c.resize(tris.size());
+  w.resize(tris.size());
+  for (std::size_t i = 0; i < tris.size(); ++i) c[i] = centroid(m, tris[i]);
+  for (std::size_t b = 0; b < tris.size(); b += kBatch) {
+    const std::size_t n = std::min(kBatch, tris.size() - b);
+    size(std::span<const Vec2>(c.data() + b, n), std::span<double>(w.data() + b, n));
+  }
+  for (std::size_t i = 0; i < tris.size(); ++i) {
+    const double h = w[i];
+    w[i] = h > 0 && std::isfinite(h) ? area(m, tris[i]) / (kEquilateralArea * h * h) : 0.0;
+  }
+}
+
+void add_stats(RefineStats& to, const RefineStats& s) {
+  to.inserted += s.inserted;
+  to.rejected += s.rejected;
+  to.pops += s.pops;
+  to.stale += s.stale;
+  to.walk_steps += s.walk_steps;
+  to.cavity_triangles += s.cavity_triangles;
+}
+
+// A coarse edge between two parts, subdivided: points [first, first + count) of the
+// border point array, ordered from a to b (a < b).
+struct Border {
+  VertexId a, b;
+  std::uint32_t first = 0, count = 0;
+};
+
+// The coarse mesh and its cut, read (never written) by every part.
+struct Coarse {
+  TriangleStore m;
+  std::vector<std::uint32_t> part_of;         // per slot
+  std::vector<std::vector<std::uint32_t>> part_tris;
+  std::vector<std::uint32_t> border_of_side;  // per side: index into borders, or kNone
+  std::vector<Border> borders;
+  std::vector<Vec2> border_xy;
+};
+
+// One part after refinement: its compacted store, the merged id of each of its first
+// n_init vertices (coarse vertices, then border points), its hull sides.
+struct PartOut {
+  TriangleStore st;
+  std::vector<std::uint32_t> global_of;
+  std::uint32_t n_init = 0;
+  RefineStats stats;
+  std::string error;
+};
+
+// Triangulates part p (its coarse vertices and border points, its constrained edges and
+// the border sub-edges recovered, the outside removed by a flood fill from the part's side
+// of its boundary) and refines it.
+void mesh_part(const Coarse& c, std::uint32_t p, const RefineOptions& base, PartRefiner kind,
+               const PlaneSizeFn& size, PartOut& out) {
+  const std::vector<std::uint32_t>& tris = c.part_tris[p];
+  if (tris.empty()) return;
+  const TriangleStore& cm = c.m;
+  std::vector<std::uint32_t>& g = out.global_of;
+  for (std::uint32_t t : tris)
+    for (std::uint32_t e = 0; e < 3; ++e) g.push_back(cm.vertex(TriId{t}, e).value);
+  std::sort(g.begin(), g.end());
+  g.erase(std::unique(g.begin(), g.end()), g.end());
+  const auto n_coarse = static_cast<std::uint32_t>(g.size());
+  auto local = [&](VertexId v) {
+    return VertexId{static_cast<std::uint32_t>(std::lower_bound(g.begin(), g.begin() + n_coarse, v.value) - g.begin())};
+  };
+  TriangleStore& P = out.st;
+  for (std::uint32_t v : g) P.add_vertex(cm.pos(VertexId{v}));
+
+  std::vector<Edge> edges;     // to recover
+  std::vector<Edge> bounds;    // the part's boundary, the part on the left
+  std::vector<Edge> subs;      // border sub-edges: unconstrained after refinement
+  std::vector<std::pair<Edge, std::uint8_t>> flagged;  // coarse constrained edges and their flags
+  std::vector<VertexId> chain;
+  for (std::uint32_t t : tris)
+    for (std::uint32_t e = 0; e < 3; ++e) {
+      const Side s = side_of(TriId{t}, e);
+      const Side o = cm.twin[s.value];
+      const bool outer = !o.valid() || c.part_of[tri_of(o).value] != p;
+      const VertexId a = cm.org(s), b = cm.dest(s);
+      if (cm.constrained(s)) {
+        if (!outer && a.value > b.value) continue;  // the twin in this part adds it
+        edges.push_back({local(a), local(b)});
+        flagged.push_back({edges.back(), cm.side_flags[s.value]});
+        if (outer) bounds.push_back(edges.back());
+        continue;
+      }
+      if (!outer) continue;
+      const Border& br = c.borders[c.border_of_side[s.value]];
+      // The border's points get local ids here: each border has one side in this part.
+      const std::uint32_t first = P.num_vertices();
+      for (std::uint32_t k = 0; k < br.count; ++k) {
+        P.add_vertex(c.border_xy[br.first + k]);
+        g.push_back(cm.num_vertices() + br.first + k);
+      }
+      chain.assign(1, local(a));
+      for (std::uint32_t k = 0; k < br.count; ++k)
+        chain.push_back(VertexId{a == br.a ? first + k : first + br.count - 1 - k});
+      chain.push_back(local(b));
+      for (std::size_t k = 0; k + 1 < chain.size(); ++k) {
+        edges.push_back({chain[k], chain[k + 1]});
+        bounds.push_back(edges.back());
+        subs.push_back(edges.back());
+      }
+    }
+  out.n_init = P.num_vertices();
+
+  const DelaunayResult dr = delaunay(P);
+  if (!dr.ok()) {
+    out.error = "Delaunay failed: " + dr.error;
+    return;
+  }
+  if (!dr.duplicates.empty()) {
+    const Vec2 x = P.pos(dr.duplicates[0].dup);
+    out.error = fmt::format("two points at the same place ({}, {})", x.x, x.y);
+    return;
+  }
+  const PlanarGeometry geom{&P.xy};
+  const RecoverResult rr = recover_edges(P, geom, edges);
+  if (!rr.clean()) {
+    out.error = rr.ok() ? "a border or boundary edge could not be recovered" : "edge recovery failed: " + rr.error;
+    return;
+  }
+
+  // Flood fill from the part's side of its boundary; the boundary stops it.
+  std::vector<std::uint8_t> stop(P.corner.size(), 0), inside(P.num_slots(), 0);
+  std::vector<std::uint32_t> stack;
+  for (const Edge& e : bounds) {
+    const Side s = P.side_between(e.first, e.second);
+    if (!s.valid()) {
+      out.error = "a part boundary edge is missing after recovery";
+      return;
+    }
+    stop[s.value] = 1;
+    if (P.twin[s.value].valid()) stop[P.twin[s.value].value] = 1;
+  }
+  for (const Edge& e : bounds) {
+    const std::uint32_t t = tri_of(P.side_between(e.first, e.second)).value;
+    if (!inside[t]) inside[t] = 1, stack.push_back(t);
+  }
+  while (!stack.empty()) {
+    const std::uint32_t t = stack.back();
+    stack.pop_back();
+    for (std::uint32_t e = 0; e < 3; ++e) {
+      const Side s = side_of(TriId{t}, e);
+      if (stop[s.value]) continue;
+      const Side o = P.twin[s.value];
+      if (!o.valid()) {
+        out.error = "the part's boundary is not closed";
+        return;
+      }
+      if (!inside[tri_of(o).value]) inside[tri_of(o).value] = 1, stack.push_back(tri_of(o).value);
+    }
+  }
+  for (std::uint32_t t = 0; t < inside.size(); ++t)
+    if (!inside[t] && P.alive(TriId{t})) P.kill_triangle(TriId{t});
+  P.rebuild_out_side();
+  // A part may touch itself at a vertex (two fans there), where side_between cannot see
+  // every edge: edges are looked up by their vertex pair over all sides instead.
+  auto key = [](VertexId a, VertexId b) {
+    return std::pair<std::uint32_t, std::uint32_t>(std::min(a.value, b.value), std::max(a.value, b.value));
+  };
+  std::vector<std::pair<std::pair<std::uint32_t, std::uint32_t>, std::uint8_t>> flag_of;
+  for (const auto& [e, f] : flagged) flag_of.push_back({key(e.first, e.second), f});
+  std::sort(flag_of.begin(), flag_of.end());
+  for (std::uint32_t s = 0; s < P.corner.size(); ++s) {
+    if (!P.constrained(Side{s}) || !P.alive(tri_of(Side{s}))) continue;
+    const auto k = key(P.org(Side{s}), P.dest(Side{s}));
+    const auto it = std::lower_bound(flag_of.begin(), flag_of.end(), std::make_pair(k, std::uint8_t{0}));
+    if (it != flag_of.end() && it->first == k) P.side_flags[s] |= it->second;
+  }
+
+  RefineOptions ro = base;
+  ro.size_at = size;
+  const RefineResult r = kind == PartRefiner::Frontal ? RefineResult(refine_front2d(P, ro)) : refine_del2d(P, ro);
+  out.stats = r.stats;
+  if (!r.ok()) {
+    out.error = r.error;
+    return;
+  }
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> sub_keys;
+  for (const Edge& e : subs) sub_keys.push_back(key(e.first, e.second));
+  std::sort(sub_keys.begin(), sub_keys.end());
+  for (std::uint32_t s = 0; s < P.corner.size(); ++s)
+    if (!P.twin[s].valid() && P.alive(tri_of(Side{s})) &&
+        std::binary_search(sub_keys.begin(), sub_keys.end(), key(P.org(Side{s}), P.dest(Side{s}))))
+      P.side_flags[s] &= static_cast<std::uint8_t>(~kConstrained);
+  P.compact();
+}
+
+}  // namespace
+
+std::uint64_t estimate_triangles(const TriangleStore& m, const PlaneSizeFn& size) {
+  const std::vector<std::uint32_t> tris = live_triangles(m);
+  std::vector<Vec2> c;
+  std::vector<double> w;
+  estimate_each(m, tris, size, c, w);
+  return static_cast<std::uint64_t>(std::llround(std::accumulate(w.begin(), w.end(), 0.0)));
+}
+
+std::uint32_t part_count(std::uint64_t estimate, const PartitionOptions& opt) {
+  const double ratio = double(estimate) / double(std::max<std::uint64_t>(opt.part_triangles, 1));
+  const int log2k = ratio > 1 ? static_cast<int>(std::lround(std::log2(ratio))) : 1;
+  const std::uint32_t cap = std::max<std::uint32_t>(opt.max_parts, 2);
+  if (log2k >= 31) return cap;
+  return std::clamp<std::uint32_t>(1u << std::max(log2k, 1), 2, cap);
+}
+
+std::vector<std::uint32_t> bisect_parts(std::span<const Vec2> points, std::span<const double> weights,
+                                        std::uint32_t parts) {
+  std::vector<std::uint32_t> part(points.size(), 0), idx(points.size());
+  std::iota(idx.begin(), idx.end(), 0u);
+  auto split = [&](auto&& self, std::size_t begin, std::size_t end, std::uint32_t first, std::uint32_t count) -> void {
+    if (count <= 1 || end - begin <= 1) {
+      for (std::size_t i = begin; i < end; ++i) part[idx[i]] = first;
+      return;
+    }
+    double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY, total = 0;
+    for (std::size_t i = begin; i < end; ++i) {
+      const Vec2 p = points[idx[i]];
+      x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+      total += weights[idx[i]];
+    }
+    const bool along_x = x1 - x0 >= y1 - y0;
+    std::sort(idx.begin() + begin, idx.begin() + end, [&](std::uint32_t a, std::uint32_t b) {
+      const double ca = along_x ? points[a].x : points[a].y, cb = along_x ? points[b].x : points[b].y;
+      return ca != cb ? ca < cb : a < b;
+    });
+    // The left half takes items while its weight stays below half of the total; both
+    // halves keep at least one item when there are two.
+    std::size_t mid = begin;
+    double acc = 0;
+    while (mid < end && acc + weights[idx[mid]] <= 0.5 * total) acc += weights[idx[mid++]];
+    if (end - begin >= 2) mid = std::clamp(mid, begin + 1, end - 1);
+    self(self, begin, mid, first, count / 2);
+    self(self, mid, end, first + count / 2, count - count / 2);
+  };
+  split(split, 0, points.size(), 0, std::max<std::uint32_t>(parts, 1));
+  return part;
+}
+
+std::vector<Vec2> subdivide_segment(Vec2 a, Vec2 b, const PlaneSizeFn& size) {
+  std::vector<Vec2> out;
+  const double len = norm(b - a);
+  if (!(len > 0)) return out;
+  const Vec2 probe[3] = {a, 0.5 * (a + b), b};
+  double hp[3] = {0, 0, 0};
+  size(probe, hp);
+  const double hmin = std::min({hp[0], hp[1], hp[2]});
+  if (!(hmin > 0) || !std::isfinite(hmin)) return out;
+  const auto steps = static_cast<std::size_t>(std::clamp(std::ceil(4 * len / hmin), 2.0, 65536.0));
+  std::vector<Vec2> s(steps + 1);
+  std::vector<double> h(steps + 1), cum(steps + 1, 0.0);
+  for (std::size_t i = 0; i <= steps; ++i) s[i] = a + (double(i) / double(steps)) * (b - a);
+  s[steps] = b;
+  for (std::size_t i = 0; i <= steps; i += kBatch) {
+    const std::size_t n = std::min(kBatch, steps + 1 - i);
+    size(std::span<const Vec2>(s.data() + i, n), std::span<double>(h.data() + i, n));
+  }
+  for (std::size_t i = 1; i <= steps; ++i) {
+    if (!(h[i] > 0) || !std::isfinite(h[i])) return {};
+    cum[i] = cum[i - 1] + 0.5 * (1 / h[i - 1] + 1 / h[i]) * (len / double(steps));
+  }
+  const double total = cum[steps];
+  const auto n = static_cast<std::size_t>(std::max<long long>(1, std::llround(total)));
+  std::size_t i = 1;
+  for (std::size_t k = 1; k < n; ++k) {
+    const double target = total * double(k) / double(n);
+    while (i < steps && cum[i] < target) ++i;
+    const double f = cum[i] > cum[i - 1] ? (target - cum[i - 1]) / (cum[i] - cum[i - 1]) : 0.5;
+    out.push_back(a + ((double(i - 1) + f) / double(steps)) * (b - a));
+  }
+  return out;
+}
+
+PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, PartRefiner kind,
+                                   const std::function<PlaneSizeFn()>& make_size, const PartitionOptions& opt,
+                                   int threads) {
+  PartitionResult res;
+  auto t0 = std::chrono::steady_clock::now();
+  const PlaneSizeFn fine = make_size();
+
+  // Coarse pass: del2d at the scaled size (its vertices become vertices of the result).
+  Coarse c;
+  c.m = m;
+  {
+    RefineOptions co = base;
+    const double f = opt.coarse_factor;
+    co.size_at = [&fine, f](std::span<const Vec2> p, std::span<double> h) {
+      fine(p, h);
+      for (double& x : h) x *= f;
+    };
+    const RefineResult r = refine_del2d(c.m, co);
+    add_stats(res.stats.refine, r.stats);
+    if (!r.ok()) {
+      res.error = "coarse refinement: " + r.error;
+      return res;
+    }
+  }
+  const std::vector<std::uint32_t> tris = live_triangles(c.m);
+  std::vector<Vec2> centre;
+  std::vector<double> weight;
+  estimate_each(c.m, tris, fine, centre, weight);
+  res.stats.coarse_triangles = tris.size();
+  res.stats.estimate = static_cast<std::uint64_t>(std::llround(std::accumulate(weight.begin(), weight.end(), 0.0)));
+  const std::uint32_t k = part_count(res.stats.estimate, opt);
+  res.stats.parts = k;
+  const std::vector<std::uint32_t> part = bisect_parts(centre, weight, k);
+  c.part_of.assign(c.m.num_slots(), kNone);
+  c.part_tris.resize(k);
+  for (std::size_t i = 0; i < tris.size(); ++i) {
+    c.part_of[tris[i]] = part[i];
+    c.part_tris[part[i]].push_back(tris[i]);
+  }
+  // Border edges: subdivided once, from the smaller vertex id.
+  c.border_of_side.assign(c.m.corner.size(), kNone);
+  for (std::uint32_t t : tris)
+    for (std::uint32_t e = 0; e < 3; ++e) {
+      const Side s = side_of(TriId{t}, e);
+      const Side o = c.m.twin[s.value];
+      if (!o.valid() || c.part_of[tri_of(o).value] == c.part_of[t] || c.m.constrained(s)) continue;
+      if (c.m.org(s).value > c.m.dest(s).value) continue;
+      Border br{c.m.org(s), c.m.dest(s), static_cast<std::uint32_t>(c.border_xy.size()), 0};
+      const std::vector<Vec2> pts = subdivide_segment(c.m.pos(br.a), c.m.pos(br.b), fine);
+      br.count = static_cast<std::uint32_t>(pts.size());
+      c.border_xy.insert(c.border_xy.end(), pts.begin(), pts.end());
+      c.border_of_side[s.value] = c.border_of_side[o.value] = static_cast<std::uint32_t>(c.borders.size());
+      c.borders.push_back(br);
+    }
+  res.stats.border_edges = c.borders.size();
+  res.stats.border_points = c.border_xy.size();
+  res.stats.seconds_coarse = since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  std::vector<PartOut> parts(k);
+  parallel_for_chunks(threads, k, 1, [&](std::size_t b, std::size_t e) {
+    for (std::size_t p = b; p < e; ++p) {
+      const PlaneSizeFn size = make_size();
+      mesh_part(c, static_cast<std::uint32_t>(p), base, kind, size, parts[p]);
+    }
+  });
+  for (std::uint32_t p = 0; p < k; ++p) {
+    add_stats(res.stats.refine, parts[p].stats);
+    if (!parts[p].error.empty() && res.error.empty()) res.error = fmt::format("part {}: {}", p, parts[p].error);
+  }
+  res.stats.seconds_parts = since(t0);
+  if (!res.ok()) return res;
+
+  // Merge: vertices and triangles in part order, twins inside parts kept, twins across
+  // borders found by sorting the parts' hull sides by their vertex pair.
+  t0 = std::chrono::steady_clock::now();
+  const std::uint32_t n_shared = c.m.num_vertices() + static_cast<std::uint32_t>(c.border_xy.size());
+  std::vector<std::uint64_t> vbase(k + 1, n_shared), tbase(k + 1, 0);
+  for (std::uint32_t p = 0; p < k; ++p) {
+    vbase[p + 1] = vbase[p] + (parts[p].st.num_vertices() - parts[p].n_init);
+    tbase[p + 1] = tbase[p] + parts[p].st.num_slots();
+  }
+  if (vbase[k] > base.max_vertices || 3 * tbase[k] >= kNone) {
+    res.error = "refinement stopped at the vertex limit";
+    return res;
+  }
+  TriangleStore out;
+  out.xy.reserve(vbase[k]);
+  out.xy = c.m.xy;
+  out.xy.insert(out.xy.end(), c.border_xy.begin(), c.border_xy.end());
+  out.xy.resize(vbase[k]);
+  out.corner.resize(3 * tbase[k]);
+  out.twin.resize(3 * tbase[k]);
+  out.side_flags.resize(3 * tbase[k]);
+  out.tri_flags.assign(tbase[k], 0);
+  c.m = TriangleStore{};
+  std::vector<std::vector<std::uint32_t>> hull(k);
+  parallel_for_chunks(threads, k, 1, [&](std::size_t b, std::size_t e) {
+    for (std::size_t p = b; p < e; ++p) {
+      PartOut& po = parts[p];
+      const TriangleStore& P = po.st;
+      auto to_global = [&](VertexId v) {
+        return v.value < po.n_init ? po.global_of[v.value] : static_cast<std::uint32_t>(vbase[p] + v.value - po.n_init);
+      };
+      for (std::uint32_t v = po.n_init; v < P.num_vertices(); ++v) out.xy[vbase[p] + v - po.n_init] = P.xy[v];
+      const auto s0 = static_cast<std::uint32_t>(3 * tbase[p]);
+      for (std::uint32_t s = 0; s < P.corner.size(); ++s) {
+        out.corner[s0 + s] = VertexId{to_global(P.corner[s])};
+        out.side_flags[s0 + s] = P.side_flags[s];
+        if (P.twin[s].valid()) {
+          out.twin[s0 + s] = Side{s0 + P.twin[s].value};
+        } else {
+          out.twin[s0 + s] = Side{};
+          hull[p].push_back(s0 + s);
+        }
+      }
+      po = PartOut{};
+    }
+  });
+  struct HullSide {
+    std::uint32_t lo, hi, s;
+  };
+  std::vector<HullSide> hs;
+  for (const auto& h : hull)
+    for (std::uint32_t s : h) {
+      const std::uint32_t a = out.corner[s].value, b = out.corner[next(Side{s}).value].value;
+      hs.push_back({std::min(a, b), std::max(a, b), s});
+    }
+  std::sort(hs.begin(), hs.end(), [](const HullSide& x, const HullSide& y) {
+    return x.lo != y.lo ? x.lo < y.lo : x.hi != y.hi ? x.hi < y.hi : x.s < y.s;
+  });
+  for (std::size_t i = 0; i < hs.size(); ++i) {
+    std::size_t j = i;
+    while (j + 1 < hs.size() && hs[j + 1].lo == hs[i].lo && hs[j + 1].hi == hs[i].hi) ++j;
+    if (j == i + 1) {
+      const Side a{hs[i].s}, b{hs[j].s};
+      if (out.corner[a.value] == out.corner[next(b).value]) out.link(a, b);
+      else res.error = "two parts use a border edge in the same direction";
+    } else if (j > i + 1) {
+      res.error = "a border edge is shared by more than two triangles";
+    }
+    i = j;
+  }
+  if (!res.ok()) return res;
+  out.rebuild_out_side();
+  m = std::move(out);
+  res.stats.seconds_merge = since(t0);
+  return res;
+}
+
+}  // namespace sm
