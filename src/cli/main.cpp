@@ -43,6 +43,8 @@ void print_diagnostics(const sm::lang::Diagnostics& diags, bool warnings) {
   std::fflush(stdout);
   for (const auto& d : diags.all()) {
     if (d.severity == sm::lang::Severity::Warning && !warnings) continue;
+    // Diagnostics of the command line itself (no script location) say who speaks.
+    if (!d.range.valid()) std::fputs("stereomesh: ", stderr);
     std::fputs(diags.render(d).c_str(), stderr);
   }
 }
@@ -125,7 +127,7 @@ int run(const std::vector<std::string>& argv) {
       std::fprintf(stderr, "stereomesh: --stats: no 2D mesh was made (use -2 or 'Mesh 2;')\n");
       errors = true;
     } else if (!out.open(a.stats_file) || !out.write(json) || !out.write("\n") || !out.commit()) {
-      std::fprintf(stderr, "stereomesh: --stats: %s\n", out.error().c_str());
+      std::fprintf(stderr, "stereomesh: error: cannot write '%s': %s\n", a.stats_file.c_str(), out.error().c_str());
       errors = true;
     }
   }

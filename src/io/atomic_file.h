@@ -19,6 +19,8 @@ class AtomicFile {
 
   /// Creates the temporary file next to `path`. On failure returns false and
   /// error() says why (e.g. the directory is read-only or missing).
+  /// error() is the reason only ("Permission denied"), without the file name:
+  /// callers say "cannot write 'PATH': REASON" once.
   bool open(const std::string& path);
   bool write(const void* data, std::size_t size);
   bool write(std::string_view text) { return write(text.data(), text.size()); }

@@ -346,7 +346,7 @@ std::string msh_to_string(const MeshModel& mesh, const MshOptions& opt) {
 
 bool save_msh(const MeshModel& mesh, const MshOptions& opt, const std::string& path, std::string* error) {
   if (std::string why = validate_mesh_model(mesh); !why.empty()) {
-    *error = "cannot write '" + path + "': invalid mesh: " + why;
+    *error = "invalid mesh: " + why;
     return false;
   }
   AtomicFile file;

@@ -19,8 +19,9 @@ struct MshOptions {
 /// Serialises to a string (tests, small meshes).
 std::string msh_to_string(const MeshModel& mesh, const MshOptions& opt);
 
-/// Writes the file atomically. On failure returns false and sets *error;
-/// the target path is then untouched.
+/// Writes the file atomically. On failure returns false and sets *error to the
+/// reason, without the path (as every save_* here: callers say "cannot write
+/// 'PATH': REASON"); the target path is then untouched.
 bool save_msh(const MeshModel& mesh, const MshOptions& opt, const std::string& path, std::string* error);
 
 }  // namespace sm::io

@@ -179,7 +179,7 @@ std::string gr3_to_string(const MeshModel& mesh, const OceanGridOptions& opt) {
 
 bool save_fort14(const MeshModel& mesh, const OceanGridOptions& opt, const std::string& path, std::string* error) {
   if (std::string why = check(mesh, opt); !why.empty()) {
-    *error = "cannot write '" + path + "': " + why;
+    *error = why;
     return false;
   }
   return save_text(path, fort14_to_string(mesh, opt), error);
@@ -187,13 +187,17 @@ bool save_fort14(const MeshModel& mesh, const OceanGridOptions& opt, const std::
 
 bool save_schism(const MeshModel& mesh, const OceanGridOptions& opt, const std::string& gr3_path, std::string* error) {
   if (std::string why = check(mesh, opt); !why.empty()) {
-    *error = "cannot write '" + gr3_path + "': " + why;
+    *error = why;
     return false;
   }
   const std::size_t slash = gr3_path.find_last_of('/');
   const std::string ll_path = (slash == std::string::npos ? "" : gr3_path.substr(0, slash + 1)) + "hgrid.ll";
-  return save_text(gr3_path, write(mesh, opt, Flavour::Schism, false), error) &&
-         save_text(ll_path, write(mesh, opt, Flavour::Schism, true), error);
+  if (!save_text(gr3_path, write(mesh, opt, Flavour::Schism, false), error)) return false;
+  if (!save_text(ll_path, write(mesh, opt, Flavour::Schism, true), error)) {
+    *error = "hgrid.ll beside it: " + *error;
+    return false;
+  }
+  return true;
 }
 
 bool parse_ocean_grid(const std::string& text, OceanGrid* g, std::string* error) {

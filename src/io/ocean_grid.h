@@ -36,9 +36,10 @@ std::string fort14_to_string(const MeshModel& mesh, const OceanGridOptions& opt)
 /// SCHISM's hgrid.gr3 layout (land flag 0, island flag 1, loops not repeated).
 std::string gr3_to_string(const MeshModel& mesh, const OceanGridOptions& opt);
 
+/// Writes atomically; *error is the reason on failure, without the path (see msh_writer.h).
 bool save_fort14(const MeshModel& mesh, const OceanGridOptions& opt, const std::string& path, std::string* error);
 /// Writes `path` (hgrid.gr3) with the coordinates chosen in opt, and the
-/// sibling hgrid.ll in lon/lat.
+/// sibling hgrid.ll in lon/lat (whose failure says "hgrid.ll beside it: ...").
 bool save_schism(const MeshModel& mesh, const OceanGridOptions& opt, const std::string& gr3_path, std::string* error);
 
 /// A fort.14 / hgrid.gr3 read back (tests and round trips).

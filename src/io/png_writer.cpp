@@ -76,13 +76,13 @@ std::string png_to_string(const Scene& sc, std::string* error) {
 
 bool save_png(const MeshModel& mesh, const PictureOptions& opt, const std::string& path, std::string* error) {
   if (std::string why = validate_mesh_model(mesh); !why.empty()) {
-    *error = "cannot write '" + path + "': invalid mesh: " + why;
+    *error = "invalid mesh: " + why;
     return false;
   }
   std::string why;
   const std::string bytes = png_to_string(build_scene(mesh, opt), &why);
   if (bytes.empty()) {
-    *error = "cannot write '" + path + "': " + why;
+    *error = why;
     return false;
   }
   AtomicFile file;

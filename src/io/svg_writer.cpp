@@ -49,7 +49,7 @@ std::string svg_to_string(const MeshModel& mesh, const PictureOptions& opt) {
 
 bool save_svg(const MeshModel& mesh, const PictureOptions& opt, const std::string& path, std::string* error) {
   if (std::string why = validate_mesh_model(mesh); !why.empty()) {
-    *error = "cannot write '" + path + "': invalid mesh: " + why;
+    *error = "invalid mesh: " + why;
     return false;
   }
   AtomicFile file;

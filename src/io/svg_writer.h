@@ -14,6 +14,7 @@ namespace sm::io {
 /// crosses the dateline in the lon/lat view), one <polyline> per chain of curve edges.
 std::string svg_to_string(const Scene& scene);
 std::string svg_to_string(const MeshModel& mesh, const PictureOptions& opt);
+/// Writes atomically; *error is the reason on failure, without the path (see msh_writer.h).
 bool save_svg(const MeshModel& mesh, const PictureOptions& opt, const std::string& path, std::string* error);
 
 }  // namespace sm::io

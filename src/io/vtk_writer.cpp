@@ -252,12 +252,12 @@ std::string vtk_to_string(const MeshModel& mesh, const VtkOptions& opt) {
 
 bool save_vtk(const MeshModel& mesh, const VtkOptions& opt, const std::string& path, std::string* error) {
   if (std::string why = validate_mesh_model(mesh); !why.empty()) {
-    *error = "cannot write '" + path + "': invalid mesh: " + why;
+    *error = "invalid mesh: " + why;
     return false;
   }
   for (const NodeData& d : opt.node_data)
     if (d.values.size() != mesh.xyz.size()) {
-      *error = fmt::format("cannot write '{}': node data '{}' has {} values for {} nodes", path, d.name,
+      *error = fmt::format("node data '{}' has {} values for {} nodes", d.name,
                            d.values.size(), mesh.xyz.size());
       return false;
     }

@@ -26,6 +26,7 @@ struct VtkOptions {
 /// Writes the elements of the highest dimension present (triangles of a 2D
 /// mesh, lines of a 1D mesh) and the nodes they use.
 std::string vtk_to_string(const MeshModel& mesh, const VtkOptions& opt);
+/// Writes atomically; *error is the reason on failure, without the path (see msh_writer.h).
 bool save_vtk(const MeshModel& mesh, const VtkOptions& opt, const std::string& path, std::string* error);
 
 }  // namespace sm::io

@@ -63,6 +63,17 @@ std::string binary() {
   return std::filesystem::exists(bin, ec) ? bin.string() : "";
 }
 
+// What the command prints on stderr (stdout dropped).
+std::string run_stderr(const std::string& cmd) {
+  std::FILE* p = ::popen((cmd + " 2>&1 >/dev/null").c_str(), "r");
+  if (!p) return "popen failed";
+  std::string out;
+  char buf[4096];
+  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, n);
+  ::pclose(p);
+  return out;
+}
+
 int run_status(const std::string& cmd) {
   const int st = std::system((cmd + " >/dev/null 2>&1").c_str());
   return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
@@ -119,6 +130,11 @@ TEST_CASE("cli: exit statuses of the binary") {
     in.read(head.data(), 8);
     CHECK(head == std::string("\x89PNG\r\n\x1a\n", 8));
   }
+  // A failed write says so once, naming the file and the reason (issue 8).
+  CHECK(run_stderr(bin + " -2 -v 0 " + d + "square.geo -o " + d + "no/dir/x.msh") ==
+        "stereomesh: error: cannot write '" + d + "no/dir/x.msh': No such file or directory [file-write-error]\n");
+  CHECK(run_stderr(bin + " -2 -v 0 " + d + "square.geo -o " + d + "x.msh --stats " + d + "no/s.json") ==
+        "stereomesh: error: cannot write '" + d + "no/s.json': No such file or directory\n");
   // A script error while meshing leaves no output file; --stats without a 2D mesh is an error.
   std::ofstream(dir / "badalgo.geo") << "Mesh.Algorithm = 7;\nPoint(1) = {0, 0, 0, 0.1}; Point(2) = {1, 0, 0, 0.1};\n"
                                         "Point(3) = {0, 1, 0, 0.1}; Line(1) = {1, 2}; Line(2) = {2, 3};\n"

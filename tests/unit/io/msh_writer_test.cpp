@@ -156,9 +156,9 @@ TEST_CASE("msh: atomic save replaces the file, a failed save leaves it intact") 
   std::string error;
   REQUIRE(save_msh(m, {}, path, &error));
   CHECK(read_file(path) == read_file(SM_TEST_DATA "/io/sq41.msh"));
-  // A missing directory: a clear error naming the file, nothing created.
+  // A missing directory: the reason (callers name the file), nothing created.
   CHECK_FALSE(save_msh(m, {}, dir + "/no/such/dir/sq.msh", &error));
-  CHECK(error.find("no/such/dir/sq.msh") != std::string::npos);
+  CHECK(error == "No such file or directory");
   if (::geteuid() != 0) {  // root ignores directory permissions
     ::chmod(dir.c_str(), 0555);
     CHECK_FALSE(save_msh(m, {22, false}, path, &error));

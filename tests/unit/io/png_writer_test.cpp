@@ -158,5 +158,5 @@ TEST_CASE("png: a missing directory is a clear error and nothing is written") {
   opt.view = PictureView::Plane;
   std::string error;
   CHECK(!save_png(m, opt, "/nonexistent-dir/x.png", &error));
-  CHECK(error.find("cannot create '/nonexistent-dir/x.png'") != std::string::npos);
+  CHECK(error == "No such file or directory");   // the caller names the file
 }
