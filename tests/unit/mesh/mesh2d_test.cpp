@@ -428,6 +428,58 @@ TEST_CASE("mesh2d: embedded point and curve are kept as nodes and edges") {
   CHECK(shortest < 0.03);
 }
 
+namespace {
+
+// A closed polygon of n Lines around (cx, cy) in the current plane or (u,v) plane.
+int add_polygon_at(geo::Model& m, double cx, double cy, double r, int n, double lc) {
+  const int p = m.new_point_tag();
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * geo::kPi * i / n;
+    REQUIRE(m.add_point(p + i, {cx + r * std::cos(a), cy + r * std::sin(a), 0}, lc).ok());
+  }
+  const int c = m.new_curve_tag();
+  std::vector<int> cs;
+  for (int i = 0; i < n; ++i) {
+    REQUIRE(m.add_curve(c + i, geo::CurveKind::Line, {p + i, p + (i + 1) % n}).ok());
+    cs.push_back(c + i);
+  }
+  const int l = m.new_loop_tag();
+  REQUIRE(m.add_curve_loop(l, cs).ok());
+  return l;
+}
+
+// Partitioning thresholds low enough for a unit-test face of ~20k triangles.
+Mesh2dOptions partitioned(Mesh2dOptions o) {
+  o.partition.min_triangles = 8000;
+  o.partition.part_triangles = 2500;
+  return o;
+}
+
+// Meshes surface 1 partitioned with 1, 2 and 4 threads from the same 1D mesh: the same
+// nodes and triangles each time; returns the 1-thread mesh and its result.
+Meshed mesh_threads(const geo::Model& m, const ModelMesh& mesh1d, Mesh2dOptions o2) {
+  Meshed a;
+  for (int threads : {1, 2, 4}) {
+    CAPTURE(threads);
+    o2.threads = threads;
+    ModelMesh mesh = mesh1d;
+    const Mesh2dResult r = mesh_surfaces(m, mesh, o2);
+    INFO(r.error.message);
+    REQUIRE(r.ok());
+    CHECK(r.stats.partitioned_faces == 1);
+    if (threads == 1) {
+      a.mesh = std::move(mesh);
+      a.r2 = r;
+    } else {
+      check_same(a.mesh, mesh);
+      CHECK(r.stats.parts == a.r2.stats.parts);
+    }
+  }
+  return a;
+}
+
+}  // namespace
+
 // The world ocean north of 60S on a sphere of radius kR km: the outer loop is a closed
 // BSpline near the circle of latitude 60S (a circle around (u,v) = 0); every GSHHG ring
 // wholly north of 58S, except those in `dropped`, is a hole: a closed BSpline through its
@@ -570,6 +622,19 @@ TEST_CASE("mesh2d: world ocean north of 60S from GSHHG crude, shore distance 30 
   ModelMesh again = r1.mesh;
   REQUIRE(mesh_surfaces(m, again, o2).ok());
   check_same(a.mesh, again);
+  // Refined in parts (thresholds lowered to this face's size): the same checks, quality
+  // close to the whole face's, the same bytes for 1, 2 and 4 threads.
+  const Meshed p = mesh_threads(m, r1.mesh, partitioned(o2));
+  CHECK(p.r2.stats.parts >= 8);
+  check_face(m, p.mesh, 1);
+  check_on_sphere(m, p.mesh, 1, kR);
+  const MeshStats sp = mesh_stats(p.mesh, target);
+  MESSAGE(name_of(alg) << " in " << p.r2.stats.parts << " parts: " << format_stats(sp));
+  CHECK(sp.share_len_07_14 >= 0.95);
+  CHECK(sp.mean_rho > 0.9);
+  CHECK(sp.share_rho_09 > st.share_rho_09 - 0.02);
+  CHECK(sp.min_rho >= st.min_rho);   // the poorest triangles are at the coast
+  CHECK(double(sp.triangles) == doctest::Approx(double(st.triangles)).epsilon(0.03));
   }
 }
 
@@ -678,5 +743,102 @@ TEST_CASE("mesh2d: a non-planar boundary and an embedded curve crossing the boun
     CHECK(r2.error.message.find("cross") != std::string::npos);
     CHECK(r2.error.message.find("near (") != std::string::npos);
     CHECK(r1.mesh.surfaces.empty());
+  }
+}
+
+TEST_CASE("mesh2d: a square with holes and embedded entities refined in parts, the same for 1, 2, 4 threads") {
+  geo::Model m;
+  const double lc = 0.01;
+  const int outer = add_square(m, 0, 0, 1, 1, lc, true);
+  const int h1 = add_square(m, 0.2, 0.2, 0.4, 0.45, lc, false);
+  const int h2 = add_circle(m, 0.7, 0.6, 0.15, lc);
+  REQUIRE(m.add_plane_surface(1, {outer, h1, h2}).ok());
+  // An embedded curve across the middle (part borders may run along it) and a point.
+  REQUIRE(m.add_point(100, {0.1, 0.8, 0}, lc).ok());
+  REQUIRE(m.add_point(101, {0.9, 0.9, 0}, lc).ok());
+  REQUIRE(m.add_point(102, {0.5, 0.1, 0}, lc).ok());
+  REQUIRE(m.add_curve(100, geo::CurveKind::Line, {100, 101}).ok());
+  REQUIRE(m.embed(1, {100}, 1).ok());
+  REQUIRE(m.embed(0, {102}, 1).ok());
+  Mesh1dResult r1 = mesh_curves(m, {});
+  REQUIRE(r1.ok());
+  for (Mesh2dAlgorithm alg : {Mesh2dAlgorithm::Del2d, Mesh2dAlgorithm::Frontal}) {
+    CAPTURE(name_of(alg));
+    Mesh2dOptions o2;
+    o2.algorithm = alg;
+    const Meshed a = mesh_threads(m, r1.mesh, partitioned(o2));
+    // Part count as designed: the power of two nearest estimate / 2500.
+    CHECK(a.r2.stats.parts == part_count(a.r2.stats.triangles, partitioned(o2).partition));
+    CHECK(a.r2.stats.parts >= 4);
+    check_face(m, a.mesh, 1);
+    check_ccw_xy(a.mesh, 1);
+    // The embedded curve's edges and point are in the mesh.
+    std::set<std::pair<std::uint32_t, std::uint32_t>> edges;
+    std::set<std::uint32_t> nodes;
+    for (const Tri& t : a.mesh.surfaces.at(1).triangles)
+      for (int e = 0; e < 3; ++e) edges.insert(std::minmax(t[e], t[(e + 1) % 3])), nodes.insert(t[e]);
+    const CurveMesh& emb = a.mesh.curves.at(100);
+    for (std::size_t k = 0; k + 1 < emb.nodes.size(); ++k) CHECK(edges.count(std::minmax(emb.nodes[k], emb.nodes[k + 1])) == 1);
+    CHECK(nodes.count(a.mesh.vertex_node.at(102)) == 1);
+    const auto size = [lc](std::span<const Vec3>, std::span<double> h) { std::fill(h.begin(), h.end(), lc); };
+    const MeshStats st = mesh_stats(a.mesh, size);
+    ModelMesh whole = r1.mesh;
+    REQUIRE(mesh_surfaces(m, whole, o2).ok());
+    const MeshStats sw = mesh_stats(whole, size);
+    MESSAGE(name_of(alg) << ", " << a.r2.stats.parts << " parts: " << format_stats(st) << "\n  whole: " << format_stats(sw));
+    CHECK(st.min_rho > 0.4);
+    CHECK(st.share_rho_09 > rho09_floor(alg));
+    CHECK(st.share_rho_09 > sw.share_rho_09 - 0.02);
+    CHECK(st.share_len_07_14 >= 0.95);
+    CHECK(double(st.triangles) == doctest::Approx(double(sw.triangles)).epsilon(0.03));
+  }
+}
+
+// A uniform size field (sizes from it alone, as ocean scripts set them).
+class ConstantSize : public field::SizeField {
+ public:
+  explicit ConstantSize(double h) : h_(h) {}
+  void eval(std::span<const Vec3>, std::span<double> h) const override { std::fill(h.begin(), h.end(), h_); }
+
+ private:
+  double h_;
+};
+
+TEST_CASE("mesh2d: a PolarSphere cap with islands refined in parts, the same for 1, 2, 4 threads") {
+  geo::Model m;
+  REQUIRE(m.add_point(1, {0, 0, 0}).ok());
+  REQUIRE(m.add_point(2, {0, 0, 1}).ok());
+  REQUIRE(m.add_polar_sphere(1, 1, 2).ok());
+  const double lc = 0.02;
+  std::vector<int> loops{add_uv_polygon(m, 1 / std::sqrt(3.0), 60, lc)};
+  // Islands of various sizes (in (u,v); the map is conformal, so they stay round).
+  const double islands[][3] = {{0.2, 0.1, 0.08}, {-0.25, 0.2, 0.05}, {0.05, -0.3, 0.1}, {-0.1, -0.05, 0.03},
+                               {0.35, -0.2, 0.04}};
+  for (const auto& is : islands) loops.push_back(add_polygon_at(m, is[0], is[1], is[2], 12, lc));
+  REQUIRE(m.add_plane_surface(1, loops).ok());
+  const ConstantSize field(lc);
+  const Mesh1dOptions o1 = world_options(&field);
+  Mesh1dResult r1 = mesh_curves(m, o1);
+  REQUIRE(r1.ok());
+  for (Mesh2dAlgorithm alg : {Mesh2dAlgorithm::Del2d, Mesh2dAlgorithm::Frontal}) {
+    CAPTURE(name_of(alg));
+    Mesh2dOptions o2;
+    o2.algorithm = alg;
+    o2.background = &field;
+    o2.size = o1.size;
+    const Meshed a = mesh_threads(m, r1.mesh, partitioned(o2));
+    CHECK(a.r2.stats.parts >= 4);
+    check_face(m, a.mesh, 1);
+    check_on_sphere(m, a.mesh, 1, 1.0);
+    const auto size = [lc](std::span<const Vec3>, std::span<double> h) { std::fill(h.begin(), h.end(), lc); };
+    const MeshStats st = mesh_stats(a.mesh, size);
+    ModelMesh whole = r1.mesh;
+    REQUIRE(mesh_surfaces(m, whole, o2).ok());
+    const MeshStats sw = mesh_stats(whole, size);
+    MESSAGE(name_of(alg) << ", " << a.r2.stats.parts << " parts: " << format_stats(st) << "\n  whole: " << format_stats(sw));
+    CHECK(st.min_rho > 0.4);
+    CHECK(st.share_rho_09 > rho09_floor(alg));
+    CHECK(st.share_rho_09 > sw.share_rho_09 - 0.02);
+    CHECK(st.share_len_07_14 >= 0.95);
   }
 }
