@@ -85,6 +85,11 @@ struct Coarse {
   std::vector<std::uint32_t> border_of_side;  // per side: index into borders, or kNone
   std::vector<Border> borders;
   std::vector<Vec2> border_xy;
+  // Per coarse vertex: its id in the result, kNone for a vertex inside a part (dropped:
+  // a part is refined from its boundary alone, so fronts meet no stray vertex). The input
+  // vertices keep their ids; border vertices follow in coarse id order, then border points.
+  std::vector<std::uint32_t> new_id;
+  std::uint32_t n_kept = 0;
 };
 
 // One part after refinement: its compacted store, the merged id of each of its first
@@ -105,17 +110,22 @@ void mesh_part(const Coarse& c, std::uint32_t p, const RefineOptions& base, Part
   const std::vector<std::uint32_t>& tris = c.part_tris[p];
   if (tris.empty()) return;
   const TriangleStore& cm = c.m;
-  std::vector<std::uint32_t>& g = out.global_of;
+  // The part's vertices: its kept coarse vertices (coarse id order), then border points.
+  std::vector<std::uint32_t> cv;
   for (std::uint32_t t : tris)
-    for (std::uint32_t e = 0; e < 3; ++e) g.push_back(cm.vertex(TriId{t}, e).value);
-  std::sort(g.begin(), g.end());
-  g.erase(std::unique(g.begin(), g.end()), g.end());
-  const auto n_coarse = static_cast<std::uint32_t>(g.size());
+    for (std::uint32_t e = 0; e < 3; ++e)
+      if (c.new_id[cm.vertex(TriId{t}, e).value] != kNone) cv.push_back(cm.vertex(TriId{t}, e).value);
+  std::sort(cv.begin(), cv.end());
+  cv.erase(std::unique(cv.begin(), cv.end()), cv.end());
   auto local = [&](VertexId v) {
-    return VertexId{static_cast<std::uint32_t>(std::lower_bound(g.begin(), g.begin() + n_coarse, v.value) - g.begin())};
+    return VertexId{static_cast<std::uint32_t>(std::lower_bound(cv.begin(), cv.end(), v.value) - cv.begin())};
   };
   TriangleStore& P = out.st;
-  for (std::uint32_t v : g) P.add_vertex(cm.pos(VertexId{v}));
+  std::vector<std::uint32_t>& g = out.global_of;
+  for (std::uint32_t v : cv) {
+    P.add_vertex(cm.pos(VertexId{v}));
+    g.push_back(c.new_id[v]);
+  }
 
   std::vector<Edge> edges;     // to recover
   std::vector<Edge> bounds;    // the part's boundary, the part on the left
@@ -141,7 +151,7 @@ void mesh_part(const Coarse& c, std::uint32_t p, const RefineOptions& base, Part
       const std::uint32_t first = P.num_vertices();
       for (std::uint32_t k = 0; k < br.count; ++k) {
         P.add_vertex(c.border_xy[br.first + k]);
-        g.push_back(cm.num_vertices() + br.first + k);
+        g.push_back(c.n_kept + br.first + k);
       }
       chain.assign(1, local(a));
       for (std::uint32_t k = 0; k < br.count; ++k)
@@ -236,6 +246,14 @@ void mesh_part(const Coarse& c, std::uint32_t p, const RefineOptions& base, Part
         std::binary_search(sub_keys.begin(), sub_keys.end(), key(P.org(Side{s}), P.dest(Side{s}))))
       P.side_flags[s] &= static_cast<std::uint8_t>(~kConstrained);
   P.compact();
+  // The part waits for the merge: keep only its live data.
+  P.corner.shrink_to_fit();
+  P.twin.shrink_to_fit();
+  P.side_flags.shrink_to_fit();
+  P.tri_flags.shrink_to_fit();
+  P.xy.shrink_to_fit();
+  P.out_side = {};
+  P.free_tris = {};
 }
 
 }  // namespace
@@ -377,6 +395,15 @@ PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, 
       c.border_of_side[s.value] = c.border_of_side[o.value] = static_cast<std::uint32_t>(c.borders.size());
       c.borders.push_back(br);
     }
+  const std::uint32_t n0 = m.num_vertices();
+  c.new_id.assign(c.m.num_vertices(), kNone);
+  for (std::uint32_t v = 0; v < n0; ++v) c.new_id[v] = v;
+  for (const Border& br : c.borders)
+    for (VertexId v : {br.a, br.b})
+      if (v.value >= n0) c.new_id[v.value] = 0;   // kept; numbered below
+  c.n_kept = n0;
+  for (std::uint32_t v = n0; v < c.m.num_vertices(); ++v)
+    if (c.new_id[v] != kNone) c.new_id[v] = c.n_kept++;
   res.stats.border_edges = c.borders.size();
   res.stats.border_points = c.border_xy.size();
   res.stats.seconds_coarse = since(t0);
@@ -399,7 +426,7 @@ PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, 
   // Merge: vertices and triangles in part order, twins inside parts kept, twins across
   // borders found by sorting the parts' hull sides by their vertex pair.
   t0 = std::chrono::steady_clock::now();
-  const std::uint32_t n_shared = c.m.num_vertices() + static_cast<std::uint32_t>(c.border_xy.size());
+  const std::uint32_t n_shared = c.n_kept + static_cast<std::uint32_t>(c.border_xy.size());
   std::vector<std::uint64_t> vbase(k + 1, n_shared), tbase(k + 1, 0);
   for (std::uint32_t p = 0; p < k; ++p) {
     vbase[p + 1] = vbase[p] + (parts[p].st.num_vertices() - parts[p].n_init);
@@ -409,48 +436,47 @@ PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, 
     res.error = "refinement stopped at the vertex limit";
     return res;
   }
+  // Appended part by part, each part freed once copied: the arrays are reserved (not
+  // touched) up front, so the resident peak is about one mesh plus one part.
   TriangleStore out;
   out.xy.reserve(vbase[k]);
-  out.xy = c.m.xy;
+  for (std::uint32_t v = 0; v < c.m.num_vertices(); ++v)
+    if (c.new_id[v] != kNone) out.xy.push_back(c.m.xy[v]);
   out.xy.insert(out.xy.end(), c.border_xy.begin(), c.border_xy.end());
-  out.xy.resize(vbase[k]);
-  out.corner.resize(3 * tbase[k]);
-  out.twin.resize(3 * tbase[k]);
-  out.side_flags.resize(3 * tbase[k]);
-  out.tri_flags.assign(tbase[k], 0);
+  out.corner.reserve(3 * tbase[k]);
+  out.twin.reserve(3 * tbase[k]);
+  out.side_flags.reserve(3 * tbase[k]);
+  out.tri_flags.reserve(tbase[k]);
   c.m = TriangleStore{};
-  std::vector<std::vector<std::uint32_t>> hull(k);
-  parallel_for_chunks(threads, k, 1, [&](std::size_t b, std::size_t e) {
-    for (std::size_t p = b; p < e; ++p) {
-      PartOut& po = parts[p];
-      const TriangleStore& P = po.st;
-      auto to_global = [&](VertexId v) {
-        return v.value < po.n_init ? po.global_of[v.value] : static_cast<std::uint32_t>(vbase[p] + v.value - po.n_init);
-      };
-      for (std::uint32_t v = po.n_init; v < P.num_vertices(); ++v) out.xy[vbase[p] + v - po.n_init] = P.xy[v];
-      const auto s0 = static_cast<std::uint32_t>(3 * tbase[p]);
-      for (std::uint32_t s = 0; s < P.corner.size(); ++s) {
-        out.corner[s0 + s] = VertexId{to_global(P.corner[s])};
-        out.side_flags[s0 + s] = P.side_flags[s];
-        if (P.twin[s].valid()) {
-          out.twin[s0 + s] = Side{s0 + P.twin[s].value};
-        } else {
-          out.twin[s0 + s] = Side{};
-          hull[p].push_back(s0 + s);
-        }
+  std::vector<std::uint32_t> hull;
+  for (std::uint32_t p = 0; p < k; ++p) {
+    PartOut& po = parts[p];
+    const TriangleStore& P = po.st;
+    for (std::uint32_t v = po.n_init; v < P.num_vertices(); ++v) out.xy.push_back(P.xy[v]);
+    const auto s0 = static_cast<std::uint32_t>(3 * tbase[p]);
+    for (std::uint32_t s = 0; s < P.corner.size(); ++s) {
+      const VertexId v = P.corner[s];
+      out.corner.push_back(VertexId{v.value < po.n_init ? po.global_of[v.value]
+                                                        : static_cast<std::uint32_t>(vbase[p] + v.value - po.n_init)});
+      out.side_flags.push_back(P.side_flags[s]);
+      if (P.twin[s].valid()) {
+        out.twin.push_back(Side{s0 + P.twin[s].value});
+      } else {
+        out.twin.push_back(Side{});
+        hull.push_back(s0 + s);
       }
-      po = PartOut{};
     }
-  });
+    out.tri_flags.insert(out.tri_flags.end(), P.num_slots(), 0);
+    po = PartOut{};
+  }
   struct HullSide {
     std::uint32_t lo, hi, s;
   };
   std::vector<HullSide> hs;
-  for (const auto& h : hull)
-    for (std::uint32_t s : h) {
-      const std::uint32_t a = out.corner[s].value, b = out.corner[next(Side{s}).value].value;
-      hs.push_back({std::min(a, b), std::max(a, b), s});
-    }
+  for (std::uint32_t s : hull) {
+    const std::uint32_t a = out.corner[s].value, b = out.corner[next(Side{s}).value].value;
+    hs.push_back({std::min(a, b), std::max(a, b), s});
+  }
   std::sort(hs.begin(), hs.end(), [](const HullSide& x, const HullSide& y) {
     return x.lo != y.lo ? x.lo < y.lo : x.hi != y.hi ? x.hi < y.hi : x.s < y.s;
   });

@@ -2,9 +2,14 @@
 // ~660k and ~580k triangles), side by side with Gmsh 4.8.4's `-2 -algo del2d`
 // and `-2 -algo front2d` on the same geometry when gmsh is installed; and
 // meshadapt (Gmsh's column only for h >= 0.005: it takes ~250 s at 0.002).
+// With --threads N (or --thread-table: 1, 2, 4, 8, 16) del2d and front2d also run
+// refine_partitioned (mesh/partition.h) on N threads: time, speed-up over 1 thread, peak
+// memory per triangle, quality, and a hash showing the mesh is the same for every N.
 // Usage: bench_mesh_square [h] [--no-gmsh] [--algo del2d|front2d|meshadapt|all]
+//                          [--threads N | --thread-table]
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstdio>
@@ -13,11 +18,13 @@
 #include <ctime>
 #include <fstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "../unit/mesh/testing_domains.h"
 #include "mesh/frontal.h"
 #include "mesh/meshadapt.h"
+#include "mesh/partition.h"
 #include "mesh/modify/smooth.h"
 #include "mesh/quality.h"
 #include "mesh/refine.h"
@@ -34,10 +41,44 @@ double cpu_seconds() {
   return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
+double process_cpu_seconds() {
+  timespec ts;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
+// Resident memory of the process in bytes: "VmRSS" now or "VmHWM" (the peak since the
+// last reset_peak_memory()); 0 when /proc is not there.
+double memory_bytes(const char* field) {
+  std::ifstream in("/proc/self/status");
+  std::string line;
+  const std::string key = std::string(field) + ":";
+  while (std::getline(in, line))
+    if (line.compare(0, key.size(), key) == 0) return 1024.0 * std::atof(line.c_str() + key.size());
+  return 0;
+}
+
+// Linux: writing 5 to clear_refs resets VmHWM to the current resident size.
+void reset_peak_memory() { std::ofstream("/proc/self/clear_refs") << "5"; }
+
+// FNV-1a over the vertex coordinates and the triangles: equal meshes, equal hashes.
+std::uint64_t mesh_hash(const sm::TriangleStore& m) {
+  std::uint64_t h = 1469598103934665603ull;
+  auto eat = [&h](const void* p, std::size_t n) {
+    const auto* b = static_cast<const unsigned char*>(p);
+    for (std::size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ull;
+  };
+  eat(m.xy.data(), m.xy.size() * sizeof(sm::Vec2));
+  eat(m.corner.data(), m.corner.size() * sizeof(sm::VertexId));
+  return h;
+}
+
 // Meshes the square with one algorithm, smooths once (Gmsh's default
 // Mesh.Smoothing = 1) and prints the figures. False on failure.
 bool run_ours(double h, bool frontal) {
   const char* name = frontal ? "front2d" : "del2d";
+  reset_peak_memory();
+  const double rss0 = memory_bytes("VmRSS");
   const auto t0 = std::chrono::steady_clock::now();
   const double c0 = cpu_seconds();
   sm::TriangleStore m;
@@ -58,8 +99,10 @@ bool run_ours(double h, bool frontal) {
   sm::smooth_laplacian(m, 1);
   const double t_smooth = since(t1), c_smooth = cpu_seconds() - c1;
   const double t_total = t_refined + t_smooth, c_total = c_refined + c_smooth;
+  const double peak = memory_bytes("VmHWM") - rss0;
   const auto q = sm::mesh_quality(m, [&](sm::Vec2) { return h; });
   std::printf("stereomesh %s, unit square, h = %g\n", name, h);
+  std::printf("  peak memory %.1f MB above the start, %.1f bytes per triangle\n", peak / 1e6, peak / q.triangles);
   std::printf("  %u nodes, %u triangles; boundary %.3f s, refine %.3f s, smoothing %.3f s; total %.3f s wall, %.3f s CPU\n",
               q.nodes, q.triangles, t_boundary, t_refined - t_boundary, t_smooth, t_total, c_total);
   std::printf("  CPU: boundary + refine %.3f s (%.0f triangles/s), smoothing %.3f s\n", c_refined, q.triangles / c_refined,
@@ -80,6 +123,75 @@ bool run_ours(double h, bool frontal) {
                 static_cast<unsigned long long>(fr.circumcentre_fallbacks),
                 static_cast<unsigned long long>(fr.given_up));
   return true;
+}
+
+// The square refined in parts (refine_partitioned, default PartitionOptions) on each
+// thread count, then one smoothing pass: wall time, speed-up over the first count, peak
+// memory, quality, hash. False on failure or when two thread counts differ.
+bool run_threads(double h, bool frontal, const std::vector<int>& counts) {
+  const char* name = frontal ? "front2d" : "del2d";
+  std::printf("stereomesh %s in parts, unit square, h = %g, %u hardware threads\n", name, h,
+              std::thread::hardware_concurrency());
+  std::printf("  threads | parts | triangles | coarse s | parts s | merge s | smooth s | total wall s | process CPU s "
+              "| speed-up | bytes/tri | rho>0.9 | in [0.7,1.4] | hash\n");
+  {
+    // The same refinement in one piece: the reference for quality and time.
+    reset_peak_memory();
+    const double rss0 = memory_bytes("VmRSS");
+    const auto t0 = std::chrono::steady_clock::now();
+    const double c0 = process_cpu_seconds();
+    sm::TriangleStore m;
+    const sm::Loop sq = sm::testing::polygon_loop(m, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, h, false);
+    if (!sm::testing::boundary_mesh(m, {sq})) return std::fprintf(stderr, "boundary mesh failed\n"), false;
+    sm::RefineOptions ro;
+    if (!frontal) ro.radius_limit = 0.73;
+    ro.size = h;
+    const sm::RefineResult r = frontal ? sm::RefineResult(sm::refine_front2d(m, ro)) : sm::refine_del2d(m, ro);
+    if (!r.ok()) return std::fprintf(stderr, "%s: %s\n", name, r.error.c_str()), false;
+    const auto t1 = std::chrono::steady_clock::now();
+    sm::smooth_laplacian(m, 1);
+    const double t_smooth = since(t1), t_total = since(t0), c_total = process_cpu_seconds() - c0;
+    const double peak = memory_bytes("VmHWM") - rss0;
+    const auto q = sm::mesh_quality(m, [&](sm::Vec2) { return h; });
+    std::printf("    whole |     1 | %9u |          |         |         | %8.3f | %12.3f | %13.3f |          | %9.1f | %6.2f%% | %11.2f%% | (min rho %.3f)\n",
+                q.triangles, t_smooth, t_total, c_total, peak / q.triangles, 100 * q.share_rho_09,
+                100 * q.share_len_07_14, q.min_rho);
+  }
+  double first = 0;
+  std::uint64_t first_hash = 0;
+  bool same = true;
+  for (int threads : counts) {
+    reset_peak_memory();
+    const double rss0 = memory_bytes("VmRSS");
+    const auto t0 = std::chrono::steady_clock::now();
+    const double c0 = process_cpu_seconds();
+    sm::TriangleStore m;
+    const sm::Loop sq = sm::testing::polygon_loop(m, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, h, false);
+    if (!sm::testing::boundary_mesh(m, {sq})) return std::fprintf(stderr, "boundary mesh failed\n"), false;
+    sm::RefineOptions ro;
+    if (!frontal) ro.radius_limit = 0.73;   // mesh2d's del2d bound
+    const auto make = [h]() -> sm::PlaneSizeFn {
+      return [h](std::span<const sm::Vec2>, std::span<double> out) { std::fill(out.begin(), out.end(), h); };
+    };
+    const sm::PartitionResult r = sm::refine_partitioned(m, ro, frontal ? sm::PartRefiner::Frontal : sm::PartRefiner::Del2d,
+                                                         make, sm::PartitionOptions{}, threads);
+    if (!r.ok()) return std::fprintf(stderr, "%s in parts: %s\n", name, r.error.c_str()), false;
+    const auto t1 = std::chrono::steady_clock::now();
+    sm::smooth_laplacian(m, 1);
+    const double t_smooth = since(t1), t_total = since(t0), c_total = process_cpu_seconds() - c0;
+    const double peak = memory_bytes("VmHWM") - rss0;
+    const std::uint64_t hash = mesh_hash(m);
+    if (first == 0) first = t_total, first_hash = hash;
+    same = same && hash == first_hash;
+    const auto q = sm::mesh_quality(m, [&](sm::Vec2) { return h; });
+    std::printf("  %7d | %5u | %9u | %8.3f | %7.3f | %7.3f | %8.3f | %12.3f | %13.3f | %7.2fx | %9.1f | %6.2f%% | %11.2f%% | %016llx (min rho %.3f)\n",
+                threads, r.stats.parts, q.triangles, r.stats.seconds_coarse, r.stats.seconds_parts, r.stats.seconds_merge,
+                t_smooth, t_total, c_total, first / t_total, peak / q.triangles, 100 * q.share_rho_09,
+                100 * q.share_len_07_14, static_cast<unsigned long long>(hash), q.min_rho);
+    std::fflush(stdout);
+  }
+  std::printf("  the same mesh for every thread count: %s\n", same ? "yes" : "NO");
+  return same;
 }
 
 // meshadapt from the boundary mesh (its own smoothing included), then the
@@ -195,9 +307,14 @@ void run_gmsh(double h, const char* algo) {
 int main(int argc, char** argv) {
   double h = 0.002;
   bool gmsh = true, del2d = true, front2d = true, meshadapt = true;
+  std::vector<int> thread_counts;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--no-gmsh") == 0) {
       gmsh = false;
+    } else if (std::strcmp(argv[i], "--threads") == 0 && i + 1 < argc) {
+      thread_counts = {std::max(1, std::atoi(argv[++i]))};
+    } else if (std::strcmp(argv[i], "--thread-table") == 0) {
+      thread_counts = {1, 2, 4, 8, 16};
     } else if (std::strcmp(argv[i], "--algo") == 0 && i + 1 < argc) {
       const std::string a = argv[++i];
       del2d = a == "del2d" || a == "all";
@@ -208,9 +325,14 @@ int main(int argc, char** argv) {
       h = std::atof(argv[i]);
     }
   }
-  if (!(h > 0)) return std::fprintf(stderr, "usage: bench_mesh_square [h] [--no-gmsh] [--algo del2d|front2d|meshadapt|all]\n"), 2;
+  if (!(h > 0))
+    return std::fprintf(stderr, "usage: bench_mesh_square [h] [--no-gmsh] [--algo del2d|front2d|meshadapt|all] "
+                                "[--threads N | --thread-table]\n"),
+           2;
   if (del2d && !run_ours(h, false)) return 1;
+  if (del2d && !thread_counts.empty() && !run_threads(h, false, thread_counts)) return 1;
   if (front2d && !run_ours(h, true)) return 1;
+  if (front2d && !thread_counts.empty() && !run_threads(h, true, thread_counts)) return 1;
   if (meshadapt && !run_meshadapt(h)) return 1;
   if (!gmsh) return 0;
   if (std::system("command -v gmsh >/dev/null 2>&1") != 0) {
