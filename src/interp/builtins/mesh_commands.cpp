@@ -130,6 +130,10 @@ MeshFailure mesh_model(Interpreter& in, int dim) {
   opt2.background = background.get();
   opt2.bbox_diag = model_bbox_diag(k.model);
   opt2.smoothing = static_cast<int>(in.options().number("Mesh.Smoothing"));
+  // Threads for faces refined in parts: Mesh.MaxNumThreads2D, else General.NumThreads (0:
+  // the hardware's). The mesh is the same for any count; meshadapt stays serial.
+  const int threads_2d = static_cast<int>(in.options().number("Mesh.MaxNumThreads2D"));
+  opt2.threads = threads_2d > 0 ? threads_2d : static_cast<int>(in.options().number("General.NumThreads"));
   const Mesh2dResult r2 = mesh_surfaces(k.model, *mesh, opt2);
   if (!r2.ok()) {
     MeshFailure f{Diag::MeshFailed, r2.error.message, {}};
