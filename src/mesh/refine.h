@@ -31,6 +31,7 @@ struct RefineStats {
   std::uint64_t inserted = 0;
   std::uint64_t rejected = 0;   // circumcentre outside the domain, on a constraint or not visible
   std::uint64_t pops = 0, stale = 0, walk_steps = 0, cavity_triangles = 0;
+  std::uint64_t size_samples = 0;  // points passed to size_at (or given the uniform size)
   PredicateStats predicates;
 };
 
@@ -43,7 +44,9 @@ struct RefineResult {
 /// Refines a constrained Delaunay triangulation of the domain (outside
 /// triangles already removed, boundary edges kConstrained). Constrained
 /// edges are never split or crossed; circumcentres beyond them are skipped.
-/// Deterministic: the heap breaks priority ties by triangle id.
+/// The triangle served next is one of the largest R / h (to within a factor
+/// 2^(1/32)), the one queued last among those. Deterministic: the order
+/// depends only on the input and the options.
 RefineResult refine_del2d(TriangleStore& m, const RefineOptions& opt);
 
 }  // namespace sm

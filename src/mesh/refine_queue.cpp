@@ -1,0 +1,68 @@
+// The shared pieces of del2d and front2d: option checks, size sampling and
+// insertion bookkeeping (see refine_queue.h).
+#include "mesh/refine_queue.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "mesh/geometry.h"
+#include "mesh/quality.h"
+
+namespace sm::detail {
+
+std::string check_refine_options(const RefineOptions& opt) {
+  if (!(opt.size > 0) && !opt.size_at) return "refinement needs a positive size";
+  if (!(opt.radius_limit > 0)) return "refinement needs a positive radius limit";
+  return {};
+}
+
+bool RefineDriver::sample_sizes(std::span<const std::uint32_t> tris, std::span<const VertexId> verts) {
+  const std::size_t n = tris.size() + verts.size();
+  pts_.resize(n);
+  h_.resize(n);
+  for (std::size_t i = 0; i < tris.size(); ++i) {
+    const TriId t{tris[i]};
+    pts_[i] = circumcentre(m_.pos(m_.vertex(t, 0)), m_.pos(m_.vertex(t, 1)), m_.pos(m_.vertex(t, 2)));
+  }
+  for (std::size_t i = 0; i < verts.size(); ++i) pts_[tris.size() + i] = m_.pos(verts[i]);
+  res_.stats.size_samples += n;
+  if (opt_.size_at) opt_.size_at(pts_, h_);
+  else std::fill(h_.begin(), h_.end(), opt_.size);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double h = h_[i];
+    if (h > 0 && std::isfinite(h)) continue;
+    if (res_.error.empty())
+      res_.error = "mesh size must be positive and finite (got " + std::to_string(h) + " at (" +
+                   std::to_string(pts_[i].x) + ", " + std::to_string(pts_[i].y) + ") in the parameter plane)";
+    return false;
+  }
+  return true;
+}
+
+std::vector<std::uint32_t> RefineDriver::live_triangles() const {
+  std::vector<std::uint32_t> live;
+  live.reserve(m_.num_triangles());
+  for (std::uint32_t t = 0; t < m_.num_slots(); ++t)
+    if (m_.alive(TriId{t})) live.push_back(t);
+  return live;
+}
+
+bool RefineDriver::at_vertex_limit() {
+  if (m_.num_vertices() < opt_.max_vertices) return false;
+  res_.error = "refinement stopped at the vertex limit";
+  return true;
+}
+
+void RefineDriver::inserted() {
+  ++res_.stats.inserted;
+  queue_.grow(m_.num_slots());
+}
+
+void RefineDriver::finish() {
+  res_.stats.pops = queue_.pops;
+  res_.stats.stale += queue_.stale;
+  res_.stats.walk_steps = ins_.stats.walk_steps;
+  res_.stats.cavity_triangles = ins_.stats.cavity_triangles;
+}
+
+}  // namespace sm::detail
