@@ -419,6 +419,7 @@ bool FaceMesher::refine(const std::function<void(std::span<const Vec2>, std::spa
     res_.stats.inserted += pr.stats.refine.inserted;
     res_.stats.rejected += pr.stats.refine.rejected;
     res_.stats.parts += pr.stats.parts;
+    res_.stats.estimated_triangles += pr.stats.estimate;
     ++res_.stats.partitioned_faces;
     if (!pr.ok()) return fail("refinement failed: " + pr.error);
     // Parts are Delaunay inside; smoothing ends with flips that make the seams so too.

@@ -60,6 +60,7 @@ struct Mesh2dStats {
   std::uint64_t faces = 0, triangles = 0, new_nodes = 0;
   std::uint64_t inserted = 0, rejected = 0, size_evaluations = 0;
   std::uint64_t partitioned_faces = 0, parts = 0;   // faces refined in parts, their parts
+  std::uint64_t estimated_triangles = 0;            // of those faces, from their coarse meshes
   double seconds_boundary = 0;   // Delaunay of the boundary nodes, edge recovery, holes
   double seconds_refine = 0;
   double seconds_smooth = 0;

@@ -26,10 +26,6 @@ double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-Vec2 centroid(const TriangleStore& m, std::uint32_t t) {
-  return (m.pos(m.vertex(TriId{t}, 0)) + m.pos(m.vertex(TriId{t}, 1)) + m.pos(m.vertex(TriId{t}, 2))) / 3.0;
-}
-
 double area(const TriangleStore& m, std::uint32_t t) {
   const Vec2 a = m.pos(m.vertex(TriId{t}, 0)), b = m.pos(m.vertex(TriId{t}, 1)), c = m.pos(m.vertex(TriId{t}, 2));
   return 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
@@ -43,21 +39,36 @@ std::vector<std::uint32_t> live_triangles(const TriangleStore& m) {
   return t;
 }
 
-// Centroids and estimated final triangle counts (area / equilateral area at the size) of
-// the listed triangles; a non-positive or non-finite size gives weight 0 (the refiner
-// reports it).
+// Centroids and estimated final triangle counts of the listed triangles: the area times
+// the mean of 1/(equilateral area at the size) at the three edge midpoints (a rule exact
+// for quadratics: the size varies across the large coarse triangles, and 1/h^2 is convex
+// in it, so the centroid alone underestimated the world ocean by 40%). A non-positive or
+// non-finite size counts 0 (the refiner reports it).
 void estimate_each(const TriangleStore& m, std::span<const std::uint32_t> tris, const PlaneSizeFn& size,
                    std::vector<Vec2>& c, std::vector<double>& w) {
   c.resize(tris.size());
-  w.resize(tris.size());
-  for (std::size_t i = 0; i < tris.size(); ++i) c[i] = centroid(m, tris[i]);
+  w.assign(tris.size(), 0.0);
+  std::vector<Vec2> mid;
+  std::vector<double> h;
   for (std::size_t b = 0; b < tris.size(); b += kBatch) {
     const std::size_t n = std::min(kBatch, tris.size() - b);
-    size(std::span<const Vec2>(c.data() + b, n), std::span<double>(w.data() + b, n));
-  }
-  for (std::size_t i = 0; i < tris.size(); ++i) {
-    const double h = w[i];
-    w[i] = h > 0 && std::isfinite(h) ? area(m, tris[i]) / (kEquilateralArea * h * h) : 0.0;
+    mid.resize(3 * n);
+    h.resize(3 * n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const TriId t{tris[b + i]};
+      const Vec2 p[3] = {m.pos(m.vertex(t, 0)), m.pos(m.vertex(t, 1)), m.pos(m.vertex(t, 2))};
+      c[b + i] = (p[0] + p[1] + p[2]) / 3.0;
+      for (int e = 0; e < 3; ++e) mid[3 * i + e] = 0.5 * (p[e] + p[(e + 1) % 3]);
+    }
+    size(mid, h);
+    for (std::size_t i = 0; i < n; ++i) {
+      double inv = 0;
+      for (int e = 0; e < 3; ++e) {
+        const double x = h[3 * i + e];
+        if (x > 0 && std::isfinite(x)) inv += 1 / (3 * x * x);
+      }
+      w[b + i] = area(m, tris[b + i]) * inv / kEquilateralArea;
+    }
   }
 }
 

@@ -21,7 +21,9 @@ struct PartitionOptions {
   /// A face whose estimated triangle count is below this is refined as one piece.
   std::uint64_t min_triangles = 200000;
   /// Estimated triangles per part: K = the power of two nearest estimate / this, >= 2.
-  std::uint64_t part_triangles = 150000;
+  /// Small enough that 16 threads find work on a 1M-triangle face, large enough that the
+  /// seams are a small share (about 4 sqrt(n) of n triangles touch a part's border).
+  std::uint64_t part_triangles = 65536;
   /// The coarse refinement uses the size times this (a few thousand coarse triangles per part).
   double coarse_factor = 8;
   std::uint32_t max_parts = 4096;
@@ -45,7 +47,7 @@ struct PartitionResult {
 };
 
 /// The estimated triangle count after refinement at the size: the sum over the live
-/// triangles of area / (h^2 sqrt(3) / 4), h evaluated at each centroid (batched).
+/// triangles of area / (h^2 sqrt(3) / 4), 1/h^2 averaged over the edge midpoints (batched).
 std::uint64_t estimate_triangles(const TriangleStore& m, const PlaneSizeFn& size);
 
 /// The part count for an estimate: the power of two nearest estimate / part_triangles,

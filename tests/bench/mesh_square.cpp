@@ -6,7 +6,7 @@
 // refine_partitioned (mesh/partition.h) on N threads: time, speed-up over 1 thread, peak
 // memory per triangle, quality, and a hash showing the mesh is the same for every N.
 // Usage: bench_mesh_square [h] [--no-gmsh] [--algo del2d|front2d|meshadapt|all]
-//                          [--threads N | --thread-table]
+//                          [--threads N[,N...] | --thread-table]
 #include <unistd.h>
 
 #include <algorithm>
@@ -302,6 +302,17 @@ void run_gmsh(double h, const char* algo) {
   std::system(("rm -rf " + dir).c_str());
 }
 
+// "1,2,4": thread counts, each at least 1.
+std::vector<int> parse_counts(const char* text) {
+  std::vector<int> out;
+  for (const char* c = text; *c;) {
+    out.push_back(std::max(1, std::atoi(c)));
+    const char* comma = std::strchr(c, ',');
+    c = comma ? comma + 1 : c + std::strlen(c);
+  }
+  return out;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -312,7 +323,7 @@ int main(int argc, char** argv) {
     if (std::strcmp(argv[i], "--no-gmsh") == 0) {
       gmsh = false;
     } else if (std::strcmp(argv[i], "--threads") == 0 && i + 1 < argc) {
-      thread_counts = {std::max(1, std::atoi(argv[++i]))};
+      thread_counts = parse_counts(argv[++i]);
     } else if (std::strcmp(argv[i], "--thread-table") == 0) {
       thread_counts = {1, 2, 4, 8, 16};
     } else if (std::strcmp(argv[i], "--algo") == 0 && i + 1 < argc) {
@@ -327,7 +338,7 @@ int main(int argc, char** argv) {
   }
   if (!(h > 0))
     return std::fprintf(stderr, "usage: bench_mesh_square [h] [--no-gmsh] [--algo del2d|front2d|meshadapt|all] "
-                                "[--threads N | --thread-table]\n"),
+                                "[--threads N[,N...] | --thread-table]\n"),
            2;
   if (del2d && !run_ours(h, false)) return 1;
   if (del2d && !thread_counts.empty() && !run_threads(h, false, thread_counts)) return 1;

@@ -3,16 +3,25 @@
 // linear Threshold), 1D + 2D meshing per algorithm with time per stage and quality; then
 // the same model through `gmsh -2` (the .geo from the coast module's Plugin(GSHHS) writer).
 // Usage: bench_mesh_world_ocean [file=world_l.txt] [gamma_km=30] [algorithms=5,6] [gmsh=1] [out.msh]
-// (out.msh: our mesh of the last algorithm through io::from_model_mesh, MSH 4.1).
+//                               [--size-scale S] [--threads N[,N...] | --thread-table] [--part-triangles N]
+// (out.msh: our mesh of the last algorithm through io::from_model_mesh, MSH 4.1;
+// --size-scale divides the 30-200 km sizes by S, e.g. 4 for a face of ~1.3M triangles;
+// --threads / --thread-table (1, 2, 4, 8, 16) mesh 2D again in parts (mesh/partition.h) on
+// N threads: wall time, speed-up, quality against the face meshed in one piece, same mesh;
+// --part-triangles N: parts of about N triangles, faces from 2N up refined in parts, so the
+// 80k-triangle face of the default sizes can be cut: finer sizes stop in 1D on world_l,
+// whose BSplines then cross).
 #include <chrono>
 #include <ctime>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <memory>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "coast/gshhs_plugin_geo.h"
@@ -36,17 +45,18 @@ double since(std::chrono::steady_clock::time_point t0) {
 // Gmsh's Threshold, linear, StopAtDistMax off (gmsh-reference 4.x table).
 class Threshold : public sm::field::SizeField {
  public:
-  explicit Threshold(sm::field::FieldPtr d) : d_(std::move(d)) {}
+  Threshold(sm::field::FieldPtr d, double scale) : d_(std::move(d)), scale_(scale) {}
   void eval(std::span<const sm::Vec3> pts, std::span<double> h) const override {
     d_->eval(pts, h);
     for (double& x : h) {
       const double r = std::clamp((x - kDistMin) / (kDistMax - kDistMin), 0.0, 1.0);
-      x = kLcMin * (1 - r) + kLcMax * r;
+      x = (kLcMin * (1 - r) + kLcMax * r) / scale_;
     }
   }
 
  private:
   sm::field::FieldPtr d_;
+  double scale_;
 };
 
 // The coast model as geometry, as the Plugin(GSHHS) .geo describes it: a PolarSphere of
@@ -164,7 +174,79 @@ void print_stats(const char* who, const sm::MeshStats& st) {
 
 }  // namespace
 
+// "1,2,4": thread counts, each at least 1.
+std::vector<int> parse_counts(const char* text) {
+  std::vector<int> out;
+  for (const char* c = text; *c;) {
+    out.push_back(std::max(1, std::atoi(c)));
+    const char* comma = std::strchr(c, ',');
+    c = comma ? comma + 1 : c + std::strlen(c);
+  }
+  return out;
+}
+
+// The 2D mesh of one algorithm in one piece, then in parts on each thread count: wall
+// time, speed-up over the first count, quality, and whether nodes and triangles are the
+// same for every count.
+void thread_table(const sm::geo::Model& model, const sm::Mesh1dResult& r1, sm::Mesh2dOptions o2,
+                  const std::vector<int>& counts, const sm::SizeAt3& target) {
+  std::printf("  2D in parts, %u hardware threads:\n", std::thread::hardware_concurrency());
+  std::printf("    threads | parts | estimate | triangles | 2D wall s | refine s | smooth s | speed-up | rho>0.9 | rho min | "
+              "in [0.7,1.4]\n");
+  std::vector<sm::MeshNode> first_nodes;
+  std::map<int, sm::SurfaceMesh> first_faces;
+  double first = 0;
+  bool same = true;
+  for (int run = -1; run < static_cast<int>(counts.size()); ++run) {
+    const int threads = run < 0 ? 1 : counts[run];
+    sm::Mesh2dOptions o = o2;
+    o.threads = threads;
+    if (run < 0) o.partition.min_triangles = 0;   // the whole face: the reference
+    sm::ModelMesh mesh = r1.mesh;
+    const auto t0 = std::chrono::steady_clock::now();
+    const sm::Mesh2dResult r2 = sm::mesh_surfaces(model, mesh, o);
+    const double wall = since(t0);
+    if (!r2.ok()) {
+      std::printf("    2D failed: %s\n", r2.error.message.c_str());
+      return;
+    }
+    const sm::MeshStats st = sm::mesh_stats(mesh, target);
+    if (run == 0) first = wall, first_nodes = mesh.nodes, first_faces = mesh.surfaces;
+    if (run > 0) {
+      bool eq = mesh.nodes.size() == first_nodes.size() && mesh.surfaces.size() == first_faces.size();
+      for (std::size_t i = 0; eq && i < mesh.nodes.size(); ++i) eq = mesh.nodes[i].xyz == first_nodes[i].xyz;
+      for (const auto& [tag, f] : mesh.surfaces) eq = eq && f.triangles == first_faces[tag].triangles;
+      same = same && eq;
+    }
+    char label[16];
+    std::snprintf(label, sizeof label, "%d", threads);
+    std::printf("    %7s | %5llu | %8llu | %9llu | %9.3f | %8.3f | %8.3f | %7.2fx | %6.2f%% | %7.4f | %11.2f%%\n",
+                run < 0 ? "whole" : label, static_cast<unsigned long long>(run < 0 ? 1 : r2.stats.parts),
+                static_cast<unsigned long long>(r2.stats.estimated_triangles),
+                static_cast<unsigned long long>(st.triangles), wall, r2.stats.seconds_refine, r2.stats.seconds_smooth,
+                run < 0 || first == 0 ? 0.0 : first / wall, 100 * st.share_rho_09, st.min_rho, 100 * st.share_len_07_14);
+    std::fflush(stdout);
+  }
+  std::printf("    the same mesh for every thread count: %s\n", same ? "yes" : "NO");
+}
+
 int main(int argc, char** argv) {
+  double size_scale = 1;
+  std::vector<int> thread_counts;
+  long part_triangles = 0;
+  {
+    // Flags out, positional arguments kept in order.
+    int k = 1;
+    for (int i = 1; i < argc; ++i) {
+      if (std::strcmp(argv[i], "--size-scale") == 0 && i + 1 < argc) size_scale = std::atof(argv[++i]);
+      else if (std::strcmp(argv[i], "--threads") == 0 && i + 1 < argc) thread_counts = parse_counts(argv[++i]);
+      else if (std::strcmp(argv[i], "--thread-table") == 0) thread_counts = {1, 2, 4, 8, 16};
+      else if (std::strcmp(argv[i], "--part-triangles") == 0 && i + 1 < argc) part_triangles = std::atol(argv[++i]);
+      else argv[k++] = argv[i];
+    }
+    argc = k;
+    if (!(size_scale > 0)) return std::fprintf(stderr, "--size-scale must be positive\n"), 2;
+  }
   const std::string file = argc > 1 ? argv[1] : "world_l.txt";
   const double gamma_km = argc > 2 ? std::atof(argv[2]) : 30.0;
   const std::string algos = argc > 3 ? argv[3] : "5,6";
@@ -191,7 +273,7 @@ int main(int argc, char** argv) {
               "splines that may cross: %zu\n",
               file.c_str(), gamma_km, cm->curves.size(), cm->loops.size(), cm->surfaces.size(), coast_points.size(),
               t_import, t_model, cm->report.count(sm::coast::RepairKind::SplineMayCross));
-  const Threshold size(sm::field::make_distance_field(coast_points));
+  const Threshold size(sm::field::make_distance_field(coast_points), size_scale);
   const auto target = [&](std::span<const sm::Vec3> pts, std::span<double> h) {
     std::vector<sm::Vec3> on(pts.begin(), pts.end());
     for (sm::Vec3& p : on) p = p * (radius / norm(p));
@@ -245,6 +327,14 @@ int main(int argc, char** argv) {
       std::printf("  wrote %s\n", out_msh.c_str());
     }
     for (std::size_t k = 0; k < r2.warnings.size() && k < 3; ++k) std::printf("  warning: %s\n", r2.warnings[k].c_str());
+    if (!thread_counts.empty()) {
+      if (part_triangles > 0) {
+        o2.partition.part_triangles = static_cast<std::uint64_t>(part_triangles);
+        o2.partition.min_triangles = 2 * o2.partition.part_triangles;
+      }
+      sm::Mesh1dResult again = sm::mesh_curves(model, o1);
+      thread_table(model, again, o2, thread_counts, target);
+    }
   }
 
   if (!with_gmsh) return 0;
@@ -261,7 +351,7 @@ int main(int argc, char** argv) {
       std::ofstream out(base + ".geo");
       out << geo;
       out << "Field[IFI + 1] = Threshold;\nField[IFI + 1].IField = IFI + 0;\n";
-      out << "Field[IFI + 1].LcMin = " << kLcMin << ";\nField[IFI + 1].LcMax = " << kLcMax << ";\n";
+      out << "Field[IFI + 1].LcMin = " << kLcMin / size_scale << ";\nField[IFI + 1].LcMax = " << kLcMax / size_scale << ";\n";
       out << "Field[IFI + 1].DistMin = " << kDistMin << ";\nField[IFI + 1].DistMax = " << kDistMax << ";\n";
       out << "Background Field = IFI + 1;\n";
       out << "Mesh.CharacteristicLengthExtendFromBoundary = 0;\nMesh.CharacteristicLengthFromPoints = 0;\n";

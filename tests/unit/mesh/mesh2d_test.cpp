@@ -624,8 +624,11 @@ TEST_CASE("mesh2d: world ocean north of 60S from GSHHG crude, shore distance 30 
   check_same(a.mesh, again);
   // Refined in parts (thresholds lowered to this face's size): the same checks, quality
   // close to the whole face's, the same bytes for 1, 2 and 4 threads.
-  const Meshed p = mesh_threads(m, r1.mesh, partitioned(o2));
-  CHECK(p.r2.stats.parts >= 8);
+  Mesh2dOptions o2p = partitioned(o2);
+  o2p.partition.part_triangles = 10000;   // 8 parts (tests elsewhere cut faces finer)
+  const Meshed p = mesh_threads(m, r1.mesh, o2p);
+  CHECK(p.r2.stats.parts == 8);
+  CHECK(double(p.r2.stats.estimated_triangles) == doctest::Approx(double(st.triangles)).epsilon(0.1));
   check_face(m, p.mesh, 1);
   check_on_sphere(m, p.mesh, 1, kR);
   const MeshStats sp = mesh_stats(p.mesh, target);
