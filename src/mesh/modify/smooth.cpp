@@ -4,9 +4,15 @@
 #include <algorithm>
 #include <vector>
 
+#include "base/parallel.h"
 #include "mesh/geometry.h"
 
 namespace sm {
+namespace {
+// Vertices (or triangles) per chunk of the parallel loops: fixed, so chunk boundaries
+// and results do not depend on the thread count.
+constexpr std::size_t kSmoothChunk = 16384;
+}  // namespace
 
 std::uint64_t make_delaunay(TriangleStore& m) {
   const PlanarGeometry g{&m.xy};
@@ -42,12 +48,14 @@ std::uint64_t make_delaunay(TriangleStore& m) {
   return flips;
 }
 
-SmoothStats smooth_laplacian(TriangleStore& m, int passes) {
-  // Jacobi form: all free vertices move at once to the average of their
-  // neighbours from the previous positions, computed in streaming passes over
-  // the sides (each neighbour w of v appears once, as the side v -> w). Then
-  // every triangle is checked with the exact orient2d; corners of an inverted
-  // or flat triangle go back to their old place, until none is left.
+SmoothStats smooth_laplacian(TriangleStore& m, int passes, int threads) {
+  // Jacobi form: all free vertices move at once to the average of their neighbours from
+  // the previous positions. Each vertex gathers its own fan (so vertices are independent
+  // and split into chunks across threads) and sums its neighbours in increasing side
+  // order, the order of a serial sweep over the sides, so the bytes do not depend on the
+  // thread count. Then every triangle is checked with the exact orient2d; corners of an
+  // inverted or flat triangle go back to their old place, sweeping in triangle order
+  // until none is left (the parallel scan only finds where the first sweep must start).
   SmoothStats st;
   const std::uint32_t nv = m.num_vertices();
   std::vector<std::uint8_t> fixed(nv, 0);
@@ -55,31 +63,64 @@ SmoothStats smooth_laplacian(TriangleStore& m, int passes) {
     if (!m.alive(tri_of(Side{s}))) continue;
     if (m.constrained(Side{s}) || !m.twin[s].valid()) fixed[m.corner[s].value] = fixed[m.dest(Side{s}).value] = 1;
   }
-  std::vector<Vec2> sum(nv), old(nv);
-  std::vector<std::uint32_t> count(nv);
+  const std::size_t chunks_v = (nv + kSmoothChunk - 1) / kSmoothChunk;
+  const std::size_t chunks_t = (m.num_slots() + kSmoothChunk - 1) / kSmoothChunk;
+  std::vector<std::uint64_t> moved(chunks_v);
+  std::vector<std::uint32_t> first_bad(chunks_t);
+  std::vector<Vec2> old;
   for (int pass = 0; pass < passes; ++pass) {
-    std::fill(sum.begin(), sum.end(), Vec2{0, 0});
-    std::fill(count.begin(), count.end(), 0);
-    for (std::uint32_t s = 0; s < m.corner.size(); ++s) {
-      if (!m.alive(tri_of(Side{s}))) continue;
-      const std::uint32_t v = m.corner[s].value;
-      sum[v] += m.pos(m.dest(Side{s}));
-      ++count[v];
-    }
     old = m.xy;
-    for (std::uint32_t v = 0; v < nv; ++v)
-      if (!fixed[v] && count[v] >= 3) m.xy[v] = sum[v] / count[v];
-    for (bool again = true; again;) {
-      again = false;
-      for (std::uint32_t t = 0; t < m.num_slots(); ++t) {
+    parallel_for_chunks(threads, nv, kSmoothChunk, [&](std::size_t begin, std::size_t end) {
+      std::vector<std::uint32_t> sides;
+      for (std::size_t v = begin; v < end; ++v) {
+        if (fixed[v] || !m.out_side_ok(VertexId{static_cast<std::uint32_t>(v)})) continue;
+        sides.clear();
+        const Side start = m.out_side[v];
+        Side s = start;
+        do {
+          sides.push_back(s.value);
+          s = m.twin[prev(s).value];  // a free vertex is on no hull edge: the fan closes
+        } while (s.valid() && s != start && sides.size() <= m.corner.size());
+        if (sides.size() < 3) continue;
+        std::sort(sides.begin(), sides.end());
+        Vec2 sum{0, 0};
+        for (std::uint32_t x : sides) sum += old[m.dest(Side{x}).value];
+        m.xy[v] = sum / static_cast<double>(static_cast<std::uint32_t>(sides.size()));
+      }
+    });
+    // Undo sweeps. A triangle acts in a sweep only when it is not counter-clockwise and
+    // one of its corners moved; triangles before the first such one do nothing.
+    auto acts = [&](std::uint32_t t) {
+      if (!m.alive(TriId{t})) return false;
+      const VertexId a = m.vertex(TriId{t}, 0), b = m.vertex(TriId{t}, 1), c = m.vertex(TriId{t}, 2);
+      if (orient2d(m.xy[a.value], m.xy[b.value], m.xy[c.value]) == Sign::Positive) return false;
+      return !(m.xy[a.value] == old[a.value]) || !(m.xy[b.value] == old[b.value]) ||
+             !(m.xy[c.value] == old[c.value]);
+    };
+    for (;;) {
+      parallel_for_chunks(threads, m.num_slots(), kSmoothChunk, [&](std::size_t begin, std::size_t end) {
+        std::uint32_t f = TriId::kNone;
+        for (std::size_t t = begin; t < end && f == TriId::kNone; ++t)
+          if (acts(static_cast<std::uint32_t>(t))) f = static_cast<std::uint32_t>(t);
+        first_bad[begin / kSmoothChunk] = f;
+      });
+      const auto it = std::min_element(first_bad.begin(), first_bad.end());
+      if (it == first_bad.end() || *it == TriId::kNone) break;
+      const std::uint32_t from = *it;
+      for (std::uint32_t t = from; t < m.num_slots(); ++t) {
         if (!m.alive(TriId{t})) continue;
         const VertexId a = m.vertex(TriId{t}, 0), b = m.vertex(TriId{t}, 1), c = m.vertex(TriId{t}, 2);
         if (orient2d(m.xy[a.value], m.xy[b.value], m.xy[c.value]) == Sign::Positive) continue;
         for (VertexId v : {a, b, c})
-          if (!(m.xy[v.value] == old[v.value])) m.xy[v.value] = old[v.value], ++st.refused, again = true;
+          if (!(m.xy[v.value] == old[v.value])) m.xy[v.value] = old[v.value], ++st.refused;
       }
     }
-    for (std::uint32_t v = 0; v < nv; ++v) st.moved += !(m.xy[v] == old[v]);
+    parallel_for_chunks(threads, nv, kSmoothChunk, [&](std::size_t begin, std::size_t end) {
+      std::uint64_t n = 0;
+      for (std::size_t v = begin; v < end; ++v) n += !(m.xy[v] == old[v]);
+      moved[begin / kSmoothChunk] = n;
+    });
+    for (std::uint64_t n : moved) st.moved += n;
     st.flips += make_delaunay(m);
   }
   return st;

@@ -15,8 +15,10 @@ struct SmoothStats {
 /// `passes` times: move every vertex that is on no constrained or hull edge
 /// to the average of its neighbours, unless that would invert a triangle of
 /// its fan (exact orient2d at the new place); then flip non-constrained
-/// edges until the mesh is constrained Delaunay again (id tie-break).
-SmoothStats smooth_laplacian(TriangleStore& m, int passes);
+/// edges until the mesh is constrained Delaunay again (id tie-break). The averaging and
+/// the inversion checks run on `threads` threads (<= 1: the calling thread only; the
+/// flips stay serial); the result is the same bytes for any thread count.
+SmoothStats smooth_laplacian(TriangleStore& m, int passes, int threads = 1);
 
 /// Lawson flips over every non-constrained edge until all are locally
 /// Delaunay. Returns the number of flips.

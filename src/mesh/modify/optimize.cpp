@@ -1,0 +1,337 @@
+// Quality optimisation after refinement: swaps and star optimisation of the vertices of
+// the worst triangles, on the flat store, with a worklist that stays local to them.
+#include "mesh/modify/optimize.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+#include "mesh/predicates.h"
+
+namespace sm {
+namespace {
+
+constexpr double kHalfSqrt3 = 0.8660254037844386;
+// The statistics' "good" bar: no swap or move may lower the number of triangles above it.
+constexpr double kGood = 0.9;
+// A swap or move that pushes `lost` triangles below kGood is kept only when the worst rho
+// it starts from is below OptimizeOptions::sacrifice_below, rises by at least kTrade per
+// lost triangle (lifting a bad triangle is worth a few good ones dropping a little, a
+// mediocre one is not), and earlier changes gained as many (Optimizer::bank_).
+constexpr double kTrade = 0.02;
+
+// rho = 2 r_in / r_circ = 16 A^2 / (perimeter * la * lb * lc); -1 unless a, b, c is
+// counter-clockwise in floating point (the exact test comes before anything is kept).
+inline double rho_ccw(Vec2 a, Vec2 b, Vec2 c) {
+  const double area2 = cross(b - a, c - a);
+  if (!(area2 > 0)) return -1;
+  const double la = std::sqrt(norm2(b - c)), lb = std::sqrt(norm2(c - a)), lc = std::sqrt(norm2(a - b));
+  return 4 * area2 * area2 / ((la + lb + lc) * la * lb * lc);
+}
+
+inline double rho_space(Vec3 a, Vec3 b, Vec3 c) {
+  const double area2 = norm(cross(b - a, c - a));
+  const double la = norm(b - c), lb = norm(c - a), lc = norm(a - b);
+  const double den = (la + lb + lc) * la * lb * lc;
+  return den > 0 ? 4 * area2 * area2 / den : 0.0;
+}
+
+// The point p that makes (p, b, c) equilateral and counter-clockwise: on the left of b -> c.
+inline Vec2 ideal_apex(Vec2 b, Vec2 c) {
+  const Vec2 d = c - b;
+  return 0.5 * (b + c) + kHalfSqrt3 * Vec2{-d.y, d.x};
+}
+
+// An outer edge (b, c) of a vertex star: the triangle (centre, b, c) is counter-clockwise.
+struct StarEdge {
+  Vec2 b, c;
+  Vec3 sb, sc;  // on the surface, with OptimizeOptions::to_space
+};
+
+struct BadTri {
+  double q;
+  std::uint32_t t;
+  bool operator<(const BadTri& o) const { return q < o.q || (q == o.q && t < o.t); }
+};
+
+class Optimizer {
+ public:
+  Optimizer(TriangleStore& m, std::uint32_t fixed_count, const OptimizeOptions& opt)
+      : m_(m), fixed_count_(fixed_count), opt_(opt), space_(static_cast<bool>(opt.to_space)) {
+    if (space_) xyz_.resize(m.num_vertices()), have_xyz_.assign(m.num_vertices(), 0);
+    tri_mark_.assign(m.num_slots(), 0);
+    vert_stamp_.assign(m.num_vertices(), 0);
+    stuck_.assign(m.num_vertices(), 0);
+  }
+
+  OptimizeStats run() {
+    OptimizeStats st;
+    double min_all = 1;
+    for (std::uint32_t t = 0; t < m_.num_slots(); ++t) {
+      if (!m_.alive(TriId{t})) continue;
+      const double q = tri_quality(TriId{t});
+      min_all = std::min(min_all, q);
+      if (q < opt_.threshold) bad_.push_back({q, t});
+    }
+    std::sort(bad_.begin(), bad_.end());
+    st.min_before = m_.num_triangles() ? min_all : 0;
+    st.bad_before = static_cast<std::uint32_t>(bad_.size());
+    for (int r = 0; r < opt_.rounds && !bad_.empty(); ++r) {
+      ++st.rounds;
+      const std::uint64_t swaps0 = st.swaps, moves0 = st.moves;
+      swap_round(st);
+      refresh_bad();
+      smooth_round(st);
+      refresh_bad();
+      if (st.swaps == swaps0 && st.moves == moves0) break;
+    }
+    st.bad_after = static_cast<std::uint32_t>(bad_.size());
+    if (!bad_.empty()) {
+      st.min_after = bad_.front().q;
+    } else {
+      // Every triangle is at or above the threshold: one scan for the exact minimum.
+      double mn = 1;
+      for (std::uint32_t t = 0; t < m_.num_slots(); ++t)
+        if (m_.alive(TriId{t})) mn = std::min(mn, tri_quality(TriId{t}));
+      st.min_after = m_.num_triangles() ? mn : 0;
+    }
+    return st;
+  }
+
+ private:
+  Vec3 xyz(VertexId v) {
+    if (!have_xyz_[v.value]) xyz_[v.value] = opt_.to_space(m_.pos(v)), have_xyz_[v.value] = 1;
+    return xyz_[v.value];
+  }
+
+  double quality(VertexId a, VertexId b, VertexId c) {
+    const double q = rho_ccw(m_.pos(a), m_.pos(b), m_.pos(c));
+    if (!space_ || q < 0) return q;
+    return rho_space(xyz(a), xyz(b), xyz(c));
+  }
+  double tri_quality(TriId t) { return quality(m_.vertex(t, 0), m_.vertex(t, 1), m_.vertex(t, 2)); }
+
+  // Whether a change that raises the worst rho from `before` by `gain` may push `lost`
+  // triangles below kGood (`lost_total` since the change began).
+  bool fair_trade(double gain, int lost, double before, int lost_total) {
+    if (lost <= 0 && lost_total <= 0) return true;
+    if (lost > 0 && (!(before < opt_.sacrifice_below) || gain < kTrade * lost)) return false;
+    return lost_total <= bank_;
+  }
+
+  // Triangle t is to be measured again by refresh_bad.
+  void mark(std::uint32_t t) {
+    if (!tri_mark_[t]) tri_mark_[t] = 1, touched_.push_back(t);
+  }
+  // Triangle t changed (flip, a corner moved): measured again, corners smoothed again.
+  void touch(std::uint32_t t) {
+    for (std::uint32_t e = 0; e < 3; ++e) stuck_[m_.vertex(TriId{t}, e).value] = 0;
+    mark(t);
+  }
+
+  // bad_ := the triangles of bad_ and touched_ below the threshold, re-measured, sorted.
+  void refresh_bad() {
+    for (const BadTri& b : bad_) mark(b.t);
+    bad_.clear();
+    for (std::uint32_t t : touched_) {
+      tri_mark_[t] = 0;
+      const double q = tri_quality(TriId{t});
+      if (q < opt_.threshold) bad_.push_back({q, t});
+    }
+    touched_.clear();
+    std::sort(bad_.begin(), bad_.end());
+  }
+
+  // Flips s when the worse rho of its two triangles rises; the new pair must be
+  // counter-clockwise by the exact orient2d.
+  bool try_swap(Side s) {
+    const Side o = m_.twin[s.value];
+    if (!o.valid() || m_.constrained(s)) return false;
+    const VertexId a = m_.org(s), b = m_.dest(s), c = m_.apex(s), d = m_.apex(o);
+    const double q1 = quality(a, b, c), q2 = quality(b, a, d), q3 = quality(c, a, d), q4 = quality(d, b, c);
+    if (!(std::min(q3, q4) > std::min(q1, q2) + opt_.min_gain)) return false;
+    const int lost = (q1 > kGood) + (q2 > kGood) - (q3 > kGood) - (q4 > kGood);
+    if (!fair_trade(std::min(q3, q4) - std::min(q1, q2), lost, std::min(q1, q2), lost)) return false;
+    if (orient2d(m_.pos(c), m_.pos(a), m_.pos(d)) != Sign::Positive ||
+        orient2d(m_.pos(d), m_.pos(b), m_.pos(c)) != Sign::Positive)
+      return false;
+    const Side n = m_.flip(s);
+    bank_ -= lost;
+    touch(tri_of(n).value);
+    touch(tri_of(m_.twin[n.value]).value);
+    const Side outer[4] = {next(n), prev(n), next(m_.twin[n.value]), prev(m_.twin[n.value])};
+    for (Side x : outer)
+      if (m_.twin[x.value].valid() && !m_.constrained(x)) stack_.push_back(x);
+    return true;
+  }
+
+  void swap_round(OptimizeStats& st) {
+    // Worst first: the edges of each bad triangle, then the cascade its flips start.
+    for (const BadTri& b : bad_) {
+      for (std::uint32_t e = 0; e < 3; ++e) stack_.push_back(side_of(TriId{b.t}, e));
+      while (!stack_.empty()) {
+        const Side s = stack_.back();
+        stack_.pop_back();
+        st.swaps += try_swap(s);
+      }
+    }
+  }
+
+  // The star of v as its outer edges (b, c), counter-clockwise triangles (v, b, c);
+  // false when v must not move (pinned, on a constrained or hull edge, isolated).
+  bool gather_star(VertexId v) {
+    star_.clear();
+    star_tris_.clear();
+    if (v.value < fixed_count_ || !m_.out_side_ok(v)) return false;
+    const Side start = m_.out_side[v.value];
+    Side s = start;
+    do {
+      if (m_.constrained(s)) return false;
+      add_star_edge(m_.dest(s), m_.apex(s));
+      star_tris_.push_back(tri_of(s).value);
+      const Side t = m_.twin[prev(s).value];
+      if (!t.valid()) return false;
+      s = t;
+      if (star_.size() > m_.corner.size()) return false;  // not a fan: leave it alone
+    } while (s != start);
+    return star_.size() >= 3;
+  }
+
+  void add_star_edge(VertexId b, VertexId c) {
+    StarEdge e{m_.pos(b), m_.pos(c), {}, {}};
+    if (space_) e.sb = xyz(b), e.sc = xyz(c);
+    star_.push_back(e);
+  }
+
+  // The worst rho of the star with its centre at p; -1 as soon as a triangle is not
+  // counter-clockwise (floating point) or not above `floor`. *good counts the
+  // triangles above kGood, *worst names the worst.
+  double star_quality(Vec2 p, double floor, int* good, std::size_t* worst = nullptr) {
+    double mn = 2;
+    *good = 0;
+    Vec3 ps{};
+    if (space_) ps = opt_.to_space(p);
+    for (std::size_t i = 0; i < star_.size(); ++i) {
+      const StarEdge& e = star_[i];
+      double q = rho_ccw(p, e.b, e.c);
+      if (q < 0) return -1;
+      if (space_) q = rho_space(ps, e.sb, e.sc);
+      if (!(q > floor)) return -1;
+      *good += q > kGood;
+      if (q < mn) {
+        mn = q;
+        if (worst) *worst = i;
+      }
+    }
+    return mn;
+  }
+
+  bool exact_ok(Vec2 p) const {
+    for (const StarEdge& e : star_)
+      if (orient2d(p, e.b, e.c) != Sign::Positive) return false;
+    return true;
+  }
+
+  // From `start`, where the star (star_) has worst rho `best` and `good` triangles above
+  // kGood, a few line searches towards the candidates of optimize.h; returns the
+  // position reached (start when nothing was better) and updates best. Every step is
+  // checked with the exact orient2d.
+  Vec2 optimise_position(Vec2 start, double& best, int& good, OptimizeStats& st) {
+    Vec2 cur = start;
+    std::size_t worst = 0;
+    best = star_quality(cur, -2, &good, &worst);
+    if (best < 0) return start;  // tangled in floating point already: not ours to fix
+    const int good0 = good;
+    Vec2 lap{0, 0}, ideal{0, 0};
+    for (const StarEdge& e : star_) {
+      lap += e.b;
+      ideal += ideal_apex(e.b, e.c);
+    }
+    const double k = 1.0 / static_cast<double>(star_.size());
+    lap *= k, ideal *= k;
+    for (int it = 0; it < opt_.smooth_iterations; ++it) {
+      const Vec2 targets[3] = {ideal, ideal_apex(star_[worst].b, star_[worst].c), lap};
+      Vec2 best_p = cur;
+      double best_q = best;
+      for (const Vec2 target : targets) {
+        for (double step = 1; step >= 1.0 / 128; step *= 0.5) {
+          const Vec2 p = cur + step * (target - cur);
+          int g = 0;
+          const double q = star_quality(p, best + opt_.min_gain, &g);
+          if (q > 0 && fair_trade(q - best, good - g, best, good0 - g)) {
+            if (q > best_q) best_q = q, best_p = p;
+            break;
+          }
+        }
+      }
+      if (!(best_q > best + opt_.min_gain)) break;
+      if (!exact_ok(best_p)) {
+        ++st.refused;
+        break;
+      }
+      cur = best_p;
+      best = star_quality(cur, -2, &good, &worst);
+    }
+    return cur;
+  }
+
+  // Moves v to raise the worst rho of its star; true when it moved.
+  bool smooth_vertex(VertexId v, OptimizeStats& st) {
+    // A vertex that found no better place keeps it until something around it changes.
+    if (stuck_[v.value]) return false;
+    stuck_[v.value] = 1;
+    if (!gather_star(v)) return false;
+    const Vec2 start = m_.pos(v);
+    double best = 0;
+    int good = 0;
+    int good0 = 0;
+    star_quality(start, -2, &good0);
+    const Vec2 cur = optimise_position(start, best, good, st);
+    if (cur == start) return false;
+    bank_ += good - good0;
+    m_.xy[v.value] = cur;
+    if (space_) xyz_[v.value] = opt_.to_space(cur), have_xyz_[v.value] = 1;
+    for (std::uint32_t t : star_tris_) touch(t);
+    return true;
+  }
+
+  void smooth_round(OptimizeStats& st) {
+    ++stamp_;
+    order_.clear();
+    for (const BadTri& b : bad_)
+      for (std::uint32_t e = 0; e < 3; ++e) {
+        const VertexId v = m_.vertex(TriId{b.t}, e);
+        if (vert_stamp_[v.value] != stamp_) vert_stamp_[v.value] = stamp_, order_.push_back(v);
+      }
+    for (VertexId v : order_) st.moves += smooth_vertex(v, st);
+  }
+
+  TriangleStore& m_;
+  const std::uint32_t fixed_count_;
+  const OptimizeOptions& opt_;
+  const bool space_;
+  std::vector<Vec3> xyz_;
+  std::vector<std::uint8_t> have_xyz_;
+  std::vector<BadTri> bad_;
+  std::vector<std::uint32_t> touched_;
+  std::vector<std::uint8_t> tri_mark_;
+  std::vector<std::uint32_t> vert_stamp_;
+  std::vector<std::uint8_t> stuck_;  // per vertex: smoothing found nothing, star unchanged since
+  std::uint32_t stamp_ = 0;
+  // Triangles above kGood gained minus lost so far: never negative, so the share of
+  // rho > 0.9 never falls below the input's.
+  std::int64_t bank_ = 0;
+  std::vector<Side> stack_;
+  std::vector<StarEdge> star_;
+  std::vector<std::uint32_t> star_tris_;
+  std::vector<VertexId> order_;
+};
+
+}  // namespace
+
+OptimizeStats optimize_quality(TriangleStore& m, std::uint32_t fixed_count, const OptimizeOptions& opt) {
+  return Optimizer(m, fixed_count, opt).run();
+}
+
+}  // namespace sm
