@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "io/node_coordinates.h"
+
 namespace sm::cli {
 
 namespace {
@@ -47,6 +49,8 @@ std::string usage_text() {
          "  -format NAME        output format: msh, msh2, msh22, msh4, msh41, vtk, svg or png (a picture),\n"
          "                      fort14 (ADCIRC), gr3 (SCHISM hgrid.gr3 + hgrid.ll)\n"
          "  -bin                binary output (Mesh.Binary = 1)\n"
+         "  -coords NAME        node coordinates of MSH/VTK files: xyz (3D, default), lonlat\n"
+         "                      (degrees, z = 0) or stereo (stereographic plane) (Mesh.NodeCoordinates)\n"
          "  -setnumber NAME V   define variable NAME (wins over DefineConstant) or set option NAME\n"
          "  -setstring NAME S   the same with a string\n"
          "  -clmin X, -clmax X  Mesh.MeshSizeMin / Mesh.MeshSizeMax\n"
@@ -117,6 +121,12 @@ ParseOutcome parse_args(const std::vector<std::string>& argv) {
       const bool native = a.format == "svg" || a.format == "png" || a.format == "fort14" || a.format == "gr3";
       if (!native) a.option_numbers.emplace_back("Mesh.Format", a.format == "vtk" ? 16 : 1);
       if (a.format != "vtk" && a.format != "msh" && !native) a.option_numbers.emplace_back("Mesh.MshFileVersion", v2 ? 2.2 : 4.1);
+    } else if (arg == "-coords") {
+      std::string name;
+      if (!value("-coords", name)) return fail("'-coords' needs xyz, lonlat or stereo");
+      const std::optional<io::NodeCoordinates> mode = io::node_coordinates_from_name(name);
+      if (!mode) return fail(fmt::format("unknown node coordinates '{}' (xyz, lonlat, stereo)", name));
+      a.option_numbers.emplace_back("Mesh.NodeCoordinates", static_cast<int>(*mode));
     } else if (arg == "-bin") {
       a.option_numbers.emplace_back("Mesh.Binary", 1);
     } else if (arg == "-setnumber") {

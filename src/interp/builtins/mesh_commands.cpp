@@ -18,6 +18,7 @@
 #include "interp/builtins/field_context.h"
 #include "interp/builtins/field_eval.h"
 #include "interp/builtins/ocean_grid_export.h"
+#include "interp/builtins/output_options.h"
 #include "interp/builtins/size_policy_from_options.h"
 #include "interp/interpreter.h"
 #include "io/from_model_mesh.h"
@@ -163,7 +164,7 @@ MeshFailure mesh_model(Interpreter& in, int dim) {
 std::string save_mesh(Interpreter& in, const std::string& path, std::string format) {
   const KernelState& k = in.kernel();
   const ModelMesh empty;
-  const io::MeshModel mm = io::from_model_mesh(k.model, k.mesh ? *k.mesh : empty);
+  io::MeshModel mm = io::from_model_mesh(k.model, k.mesh ? *k.mesh : empty);
   const Options& o = in.options();
   if (format.empty()) {
     const std::string ext = std::filesystem::path(path).extension().string();
@@ -180,21 +181,12 @@ std::string save_mesh(Interpreter& in, const std::string& path, std::string form
   const bool save_all = o.number("Mesh.SaveAll") != 0;
   std::string error;
   if (format == "svg" || format == "png") {
-    // A picture: lon/lat view of a mesh on a sphere geometry (the first one the
-    // model has), the plane as it is otherwise; coloured by quality.
     io::PictureOptions po;
-    po.view = io::PictureView::Plane;
-    for (const auto& [tag, g] : k.model.geometries()) {
-      po.view = io::PictureView::LonLat;
-      po.centre = g.centre();
-      po.radius = g.radius();
-      break;
-    }
-    po.colour = io::PictureColour::Quality;
-    po.save_all = save_all;
+    if (std::string why = picture_options(in, po); !why.empty()) return why;
     const bool ok = format == "svg" ? io::save_svg(mm, po, path, &error) : io::save_png(mm, po, path, &error);
     return ok ? std::string{} : error;
   }
+  if (std::string why = apply_node_coordinates(in, mm); !why.empty()) return why;
   if (format == "vtk") {
     io::VtkOptions vo;
     vo.binary = binary;

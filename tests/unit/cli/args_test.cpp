@@ -46,6 +46,14 @@ TEST_CASE("cli: usage errors") {
   CHECK_FALSE(parse_args({"a.geo", "-setnumber", "n", "abc"}).ok);
   CHECK_FALSE(parse_args({"a.geo", "-algo", "magic"}).ok);
   CHECK_FALSE(parse_args({"a.geo", "-format", "stl"}).ok);
+  CHECK_FALSE(parse_args({"a.geo", "-coords", "polar"}).ok);
+  CHECK_FALSE(parse_args({"a.geo", "-coords"}).ok);
+  {
+    const sm::cli::ParseOutcome c = parse_args({"a.geo", "-coords", "stereo"});
+    REQUIRE(c.ok);
+    REQUIRE(c.args.option_numbers.size() == 1);
+    CHECK(c.args.option_numbers[0] == std::pair<std::string, double>{"Mesh.NodeCoordinates", 2});
+  }
   CHECK_FALSE(parse_args({"--test"}).ok);
   CHECK(parse_args({"--help"}).ok);
   CHECK(parse_args({"--version"}).ok);
@@ -135,6 +143,12 @@ TEST_CASE("cli: exit statuses of the binary") {
         "stereomesh: error: cannot write '" + d + "no/dir/x.msh': No such file or directory [file-write-error]\n");
   CHECK(run_stderr(bin + " -2 -v 0 " + d + "square.geo -o " + d + "x.msh --stats " + d + "no/s.json") ==
         "stereomesh: error: cannot write '" + d + "no/s.json': No such file or directory\n");
+  // Lon/lat node coordinates of a planar model: a clear error, no file.
+  CHECK(run_stderr(bin + " -2 -v 0 -coords lonlat " + d + "square.geo -o " + d + "ll.msh") ==
+        "stereomesh: error: cannot write '" + d + "ll.msh': lon/lat node coordinates need a mesh on a sphere "
+        "(PolarSphere or Sphere), and this model is planar [file-write-error]\n");
+  CHECK_FALSE(fs::exists(dir / "ll.msh"));
+  CHECK(run_status(bin + " -2 -v 0 -coords stereo " + d + "square.geo -o " + d + "st.msh") == 0);
   // A script error while meshing leaves no output file; --stats without a 2D mesh is an error.
   std::ofstream(dir / "badalgo.geo") << "Mesh.Algorithm = 7;\nPoint(1) = {0, 0, 0, 0.1}; Point(2) = {1, 0, 0, 0.1};\n"
                                         "Point(3) = {0, 1, 0, 0.1}; Line(1) = {1, 2}; Line(2) = {2, 3};\n"

@@ -65,22 +65,6 @@ std::size_t count_reddish(const Image& img) {
   return n;
 }
 
-// grid_square(n) mapped onto the unit sphere (lon -10..10, lat 40..50), plus a curve
-// across its middle (lat 45) in the coast group.
-MeshModel sphere_patch(int n) {
-  MeshModel m = testing::grid_square(n);
-  const geo::PolarSphere sphere({0, 0, 0}, 1);
-  for (Vec3& x : m.xyz) x = sphere.from_lonlat({-10 + 20 * x.x, 40 + 10 * x.y});
-  EntityMesh mid;
-  mid.dim = 1, mid.tag = 5, mid.type = ElementType::Line2, mid.physical_tags = {5};
-  for (int i = 0; i < n; ++i) {
-    mid.connectivity.push_back(std::uint32_t((n / 2) * (n + 1) + i));
-    mid.connectivity.push_back(std::uint32_t((n / 2) * (n + 1) + i + 1));
-  }
-  m.entities.push_back(mid);
-  return m;
-}
-
 }  // namespace
 
 TEST_CASE("png: planar mesh, signature, size and coastline pixels") {
@@ -110,7 +94,7 @@ TEST_CASE("png: planar mesh, signature, size and coastline pixels") {
 }
 
 TEST_CASE("png: sphere mesh in lon/lat view, coastline across the middle") {
-  const MeshModel m = sphere_patch(10);
+  const MeshModel m = testing::sphere_patch(10);
   for (PictureColour colour : {PictureColour::None, PictureColour::Quality}) {
     PictureOptions opt;
     opt.view = PictureView::LonLat;
@@ -138,7 +122,7 @@ TEST_CASE("png: sphere mesh in lon/lat view, coastline across the middle") {
 }
 
 TEST_CASE("png: stereographic view and the scene shared with SVG") {
-  const MeshModel m = sphere_patch(6);
+  const MeshModel m = testing::sphere_patch(6);
   PictureOptions opt;
   opt.view = PictureView::Stereographic;
   opt.width_px = 300;

@@ -1,6 +1,8 @@
 // Small meshes built in code for the writer tests.
 #pragma once
 
+#include <cmath>
+
 #include "io/mesh_model.h"
 
 namespace sm::io::testing {
@@ -50,5 +52,24 @@ inline MeshModel grid_square(int n) {
   return m;
 }
 
+// grid_square(n) mapped onto a sphere of `radius` centred at the origin: lon -10..10,
+// lat 40..50 (x = 0..1 -> lon, y -> lat), plus a curve across its middle (lat 45,
+// tag 5, in the coast group). n must be even.
+inline MeshModel sphere_patch(int n, double radius = 1) {
+  MeshModel m = grid_square(n);
+  for (Vec3& x : m.xyz) {
+    const double lon = (-10 + 20 * x.x) * 3.14159265358979323846 / 180;
+    const double lat = (40 + 10 * x.y) * 3.14159265358979323846 / 180;
+    x = {radius * std::cos(lat) * std::cos(lon), radius * std::cos(lat) * std::sin(lon), radius * std::sin(lat)};
+  }
+  EntityMesh mid;
+  mid.dim = 1, mid.tag = 5, mid.type = ElementType::Line2, mid.physical_tags = {5};
+  for (int i = 0; i < n; ++i) {
+    mid.connectivity.push_back(std::uint32_t((n / 2) * (n + 1) + i));
+    mid.connectivity.push_back(std::uint32_t((n / 2) * (n + 1) + i + 1));
+  }
+  m.entities.push_back(mid);
+  return m;
+}
 
 }  // namespace sm::io::testing

@@ -1,0 +1,23 @@
+// The writers' settings from the script's options: node coordinates of MSH/VTK files
+// (Mesh.NodeCoordinates, -coords) and the pictures' view and width (Mesh.PictureWidth).
+#pragma once
+
+#include <string>
+
+#include "io/mesh_model.h"
+#include "io/picture.h"
+
+namespace sm::interp {
+
+class Interpreter;
+
+/// Rewrites mm's node coordinates as Mesh.NodeCoordinates asks (0 xyz, 1 lon/lat, 2 the
+/// stereographic plane) on the model's sphere; "" or why not.
+std::string apply_node_coordinates(Interpreter& in, io::MeshModel& mm);
+
+/// Lon/lat view on the model's sphere (the plane as it is for a planar model), coloured
+/// by quality, Mesh.PictureWidth pixels wide, Mesh.SaveAll as for the mesh files; into
+/// `po`. Returns "" or why not (a width out of range).
+std::string picture_options(Interpreter& in, io::PictureOptions& po);
+
+}  // namespace sm::interp
