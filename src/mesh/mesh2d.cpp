@@ -539,7 +539,7 @@ bool FaceMesher::run(const geo::ModelSurface& s) {
   if (opt_.smoothing > 0 && !smoothed) {
     // smooth_laplacian keeps vertices of constrained edges in place; an isolated
     // embedded point is not on one and would move: such faces pin every input vertex.
-    if (emb_points_.empty()) smooth_laplacian(m_, opt_.smoothing);
+    if (emb_points_.empty()) smooth_laplacian(m_, opt_.smoothing, resolve_thread_count(opt_.threads));
     else smooth_pinned(m_, fixed_count, opt_.smoothing);
   }
   res_.stats.seconds_smooth += seconds_since(t0);
