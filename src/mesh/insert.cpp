@@ -7,6 +7,8 @@ namespace sm {
 
 namespace {
 constexpr std::uint32_t kNo = 0xFFFFFFFFu;
+// Visited triangles are found by scanning up to this many slots.
+constexpr std::size_t kScanned = 16;
 }
 
 std::uint32_t PointInserter::rand3() {
@@ -40,7 +42,18 @@ InsertOutcome PointInserter::insert(Vec2 c, TriId t0) {
   cavity_.clear();
   bound_.clear();
   stack_.assign(1, t0.value);
-  m_.tri_flags[t0.value] |= kMark;
+  // Visited triangles are cavity_ + stack_. Small cavities (nearly all)
+  // find them by a scan of those few slots, which saves a cache miss on
+  // tri_flags for every neighbour tested; large ones switch to kMark.
+  bool marked = false;
+  const auto visited = [&](std::uint32_t nt) {
+    if (marked) return (m_.tri_flags[nt] & kMark) != 0;
+    for (const std::uint32_t x : cavity_)
+      if (x == nt) return true;
+    for (const std::uint32_t x : stack_)
+      if (x == nt) return true;
+    return false;
+  };
   bool visible = true;
   while (!stack_.empty()) {
     const std::uint32_t t = stack_.back();
@@ -51,11 +64,17 @@ InsertOutcome PointInserter::insert(Vec2 c, TriId t0) {
       const Side o = m_.twin[s.value];
       if (o.valid() && !m_.constrained(s)) {
         const std::uint32_t nt = o.value / 3;
-        if (m_.tri_flags[nt] & kMark) continue;
+        if (visited(nt)) continue;
         const VertexId a = m_.vertex(TriId{nt}, 0), b = m_.vertex(TriId{nt}, 1), d = m_.vertex(TriId{nt}, 2);
         if (incircle_sos(m_.pos(a), m_.pos(b), m_.pos(d), c, a.value, b.value, d.value, nv, st_) == Sign::Positive) {
-          m_.tri_flags[nt] |= kMark;
           stack_.push_back(nt);
+          if (marked) {
+            m_.tri_flags[nt] |= kMark;
+          } else if (cavity_.size() + stack_.size() > kScanned) {
+            marked = true;
+            for (const std::uint32_t x : cavity_) m_.tri_flags[x] |= kMark;
+            for (const std::uint32_t x : stack_) m_.tri_flags[x] |= kMark;
+          }
           continue;
         }
       }
@@ -64,7 +83,8 @@ InsertOutcome PointInserter::insert(Vec2 c, TriId t0) {
       bound_.push_back({a, b, o, m_.side_flags[s.value]});
     }
   }
-  for (std::uint32_t t : cavity_) m_.tri_flags[t] &= static_cast<std::uint8_t>(~kMark);
+  if (marked)
+    for (std::uint32_t t : cavity_) m_.tri_flags[t] &= static_cast<std::uint8_t>(~kMark);
   if (!visible) return InsertOutcome::NotVisible;
   stats.cavity_triangles += cavity_.size();
   const VertexId v = m_.add_vertex(c);
@@ -91,9 +111,9 @@ InsertOutcome PointInserter::insert(Vec2 c, TriId t0) {
     m_.corner[s] = bd.a, m_.corner[s + 1] = bd.b, m_.corner[s + 2] = v;
     m_.side_flags[s] = bd.flags, m_.side_flags[s + 1] = 0, m_.side_flags[s + 2] = 0;
     m_.link(Side{s}, bd.outer);
-    m_.out_side[bd.a.value] = Side{s};
+    if (keep_out_side) m_.out_side[bd.a.value] = Side{s};
   }
-  m_.out_side[v.value] = Side{3 * cavity_[0] + 2};
+  if (keep_out_side) m_.out_side[v.value] = Side{3 * cavity_[0] + 2};
   // Link b -> v of the triangle on (a, b) with v -> b of the one on (b, c).
   if (k <= 32) {
     for (std::size_t i = 0; i < k; ++i) {

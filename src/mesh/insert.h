@@ -39,7 +39,8 @@ class PointInserter {
   /// Inserts p, contained in triangle t: the cavity is the set of triangles
   /// whose circumcircle holds p (ties broken by id), reached without
   /// crossing constrained edges; it is refilled by a fan around p. Side
-  /// flags of the cavity boundary are kept; out_side is maintained. The
+  /// flags of the cavity boundary are kept; out_side is maintained (see
+  /// keep_out_side). The
   /// mesh is unchanged unless the outcome is Inserted.
   InsertOutcome insert(Vec2 p, TriId t);
 
@@ -55,6 +56,10 @@ class PointInserter {
   std::span<const std::uint32_t> created() const { return {cavity_.data(), created_}; }
 
   InsertStats stats;
+  /// When false, out_side is left alone (a scattered write per cavity
+  /// vertex): for a caller that inserts many points and then calls
+  /// TriangleStore::rebuild_out_side().
+  bool keep_out_side = true;
 
  private:
   struct Bound {

@@ -59,6 +59,7 @@ void RefineDriver::inserted() {
 }
 
 void RefineDriver::finish() {
+  m_.rebuild_out_side();
   res_.stats.pops = queue_.pops;
   res_.stats.stale += queue_.stale;
   res_.stats.walk_steps = ins_.stats.walk_steps;

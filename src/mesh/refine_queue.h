@@ -91,7 +91,9 @@ class RefineQueue {
 class RefineDriver {
  protected:
   RefineDriver(TriangleStore& m, const RefineOptions& opt, RefineResult& res)
-      : m_(m), opt_(opt), res_(res), ins_(m, opt.seed, &res.stats.predicates) {}
+      : m_(m), opt_(opt), res_(res), ins_(m, opt.seed, &res.stats.predicates) {
+    ins_.keep_out_side = false;  // rebuilt once by finish()
+  }
 
   /// Sizes at the circumcentres of `tris` (pts_[i], h_[i]) then at the
   /// vertices `verts` (after them), from one size_at call. False, with the
@@ -104,7 +106,8 @@ class RefineDriver {
   /// Books a successful insertion: counts it and grows the work list over
   /// the slots it made.
   void inserted();
-  /// Copies the counters of the work list and the inserter into the result.
+  /// Rebuilds out_side and copies the counters of the work list and the
+  /// inserter into the result.
   void finish();
 
   TriangleStore& m_;

@@ -2,6 +2,7 @@
 // every single insertion.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <random>
 
 #include "mesh/check.h"
@@ -54,4 +55,29 @@ TEST_CASE("insert: one point at a time into a CDT with an internal constraint") 
   CHECK(m.num_vertices() == nv);
   CHECK(m.num_triangles() == nt);
   CHECK(check_topology(m).ok());
+}
+
+TEST_CASE("insert: a large cavity (the centre of 40 cocircular points), out_side left to the caller") {
+  // A ring of 40 points around the centre of a square: inserting the centre
+  // empties the whole disc, a cavity far beyond the scanned size, so the
+  // visited triangles are marked; the marks must all be gone afterwards.
+  TriangleStore m;
+  const Loop sq = testing::polygon_loop(m, {{-2, -2}, {2, -2}, {2, 2}, {-2, 2}}, 4.0, false);
+  for (int i = 0; i < 40; ++i) m.add_vertex({std::cos(i * M_PI / 20), std::sin(i * M_PI / 20)});
+  REQUIRE(testing::boundary_mesh(m, {sq}));
+  PointInserter ins(m);
+  ins.keep_out_side = false;
+  const std::vector<Side> before = m.out_side;
+  const TriId t = ins.locate({0.001, 0.0005}, TriId{0});
+  REQUIRE(t.valid());
+  REQUIRE(ins.insert({0.001, 0.0005}, t) == InsertOutcome::Inserted);
+  CHECK(ins.created().size() >= 40);
+  for (std::uint32_t s = 0; s < m.num_slots(); ++s) CHECK((m.tri_flags[s] & kMark) == 0);
+  CHECK(m.out_side[ins.last_vertex().value] == Side{});  // not maintained
+  m.rebuild_out_side();
+  INFO(check_topology(m).error);
+  CHECK(check_topology(m).ok());
+  CHECK(check_delaunay(m, PlanarGeometry{&m.xy}, true).ok());
+  // Every ring point is now a neighbour of the centre.
+  for (std::uint32_t v = 4; v < 44; ++v) CHECK(m.has_edge(ins.last_vertex(), VertexId{v}));
 }

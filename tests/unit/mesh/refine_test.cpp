@@ -9,6 +9,7 @@
 #include "mesh/modify/smooth.h"
 #include "mesh/quality.h"
 #include "mesh/refine.h"
+#include "mesh/refine_queue.h"
 #include "testing_domains.h"
 #include "testing_sphere.h"
 
@@ -38,6 +39,39 @@ TEST_CASE("quality: rho and eta") {
   const Vec2 cc = circumcentre({0, 0}, {2, 0}, {0, 2});
   CHECK(cc.x == doctest::Approx(1));
   CHECK(cc.y == doctest::Approx(1));
+}
+
+TEST_CASE("refine: the work list serves the largest bucket first, the last queued first inside it") {
+  TriangleStore m;
+  for (int i = 0; i < 8; ++i) m.add_vertex({double(i), double(i * i)});
+  for (std::uint32_t i = 0; i < 6; ++i) m.add_triangle(VertexId{i}, VertexId{i + 1}, VertexId{i + 2});
+  detail::RefineQueue q;
+  q.grow(m.num_slots());
+  q.push(0, 1.0f);
+  q.push(1, 4.0f);
+  q.push(2, 1.001f);  // same bucket as 1.0 (buckets are 2^(1/32) wide)
+  q.push(3, 2.0f);
+  q.push(4, 1.5f);
+  q.push(5, 3.0f);
+  CHECK(q.queued(4));
+  q.drop(4);            // re-sized: stale
+  m.kill_triangle(TriId{5});  // died in a cavity: stale
+  q.push(3, 8.0f);      // re-queued higher: the old entry is stale
+  std::vector<std::uint32_t> order;
+  for (std::uint32_t t; q.pop(m, t);) order.push_back(t);
+  CHECK(order == std::vector<std::uint32_t>{3, 1, 2, 0});
+  CHECK(q.pops == 7);
+  CHECK(q.stale == 3);
+  CHECK_FALSE(q.queued(0));
+  // Tiny and huge priorities have buckets too.
+  q.push(0, 1e-30f);
+  q.push(1, 3e38f);
+  std::uint32_t t = 9;
+  REQUIRE(q.pop(m, t));
+  CHECK(t == 1);
+  REQUIRE(q.pop(m, t));
+  CHECK(t == 0);
+  CHECK_FALSE(q.pop(m, t));
 }
 
 TEST_CASE("refine: uniform unit square") {
@@ -120,6 +154,14 @@ TEST_CASE("refine: a bad size is an error, not a hang") {
   opt.size_at = nullptr;
   opt.size = -1;
   CHECK_FALSE(refine_del2d(m, opt).ok());
+  opt.size = 0.1;
+  opt.radius_limit = 0;  // no triangle could ever meet it
+  CHECK(refine_del2d(m, opt).error.find("radius limit") != std::string::npos);
+  opt.radius_limit = 0.7;
+  opt.max_vertices = 60;
+  const RefineResult r = refine_del2d(m, opt);
+  CHECK(r.error.find("vertex limit") != std::string::npos);
+  CHECK(m.num_vertices() == 60);
   CHECK(check_topology(m).ok());
 }
 
