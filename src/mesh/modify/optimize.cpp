@@ -75,6 +75,7 @@ class Optimizer {
       if (q < opt_.threshold) bad_.push_back({q, t});
     }
     std::sort(bad_.begin(), bad_.end());
+    bank_ = static_cast<std::int64_t>(std::max(0.0, opt_.max_share_loss) * m_.num_triangles());
     st.min_before = m_.num_triangles() ? min_all : 0;
     st.bad_before = static_cast<std::uint32_t>(bad_.size());
     for (int r = 0; r < opt_.rounds && !bad_.empty(); ++r) {
@@ -117,7 +118,9 @@ class Optimizer {
   bool fair_trade(double gain, int lost, double before, int lost_total) {
     if (lost <= 0 && lost_total <= 0) return true;
     if (lost > 0 && (!(before < opt_.sacrifice_below) || gain < kTrade * lost)) return false;
-    return lost_total <= bank_;
+    if (lost_total <= bank_) return true;
+    bank_blocked_ = true;
+    return false;
   }
 
   // Triangle t is to be measured again by refresh_bad.
@@ -287,7 +290,10 @@ class Optimizer {
     int good = 0;
     int good0 = 0;
     star_quality(start, -2, &good0);
+    bank_blocked_ = false;
     const Vec2 cur = optimise_position(start, best, good, st);
+    // Refused only for want of gained triangles: worth another try in a later round.
+    if (bank_blocked_) stuck_[v.value] = 0;
     if (cur == start) return false;
     bank_ += good - good0;
     m_.xy[v.value] = cur;
@@ -322,6 +328,7 @@ class Optimizer {
   // Triangles above kGood gained minus lost so far: never negative, so the share of
   // rho > 0.9 never falls below the input's.
   std::int64_t bank_ = 0;
+  bool bank_blocked_ = false;  // a change was refused only because bank_ was short
   std::vector<Side> stack_;
   std::vector<StarEdge> star_;
   std::vector<std::uint32_t> star_tris_;

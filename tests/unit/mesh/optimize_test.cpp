@@ -130,6 +130,19 @@ TEST_CASE("optimize_quality: del2d square with a hole, the worst rho rises above
     CHECK(after.share_rho_09 >= before.share_rho_09);
     CHECK(st.bad_after < st.bad_before / 4);
   }
+  SUBCASE("cheap with a slack of 0.1% of the triangles for the share above 0.9") {
+    OptimizeOptions opt;
+    opt.threshold = 0.75;
+    opt.sacrifice_below = 0.7;
+    opt.max_share_loss = 1e-3;
+    optimize_quality(s.m, s.fixed, opt);
+    check_invariants(s.m, s.edges, fixed_xy);
+    const QualityStats after = mesh_quality(s.m);
+    MESSAGE("del2d h 0.01 cheap with slack: rho min " << before.min_rho << " -> " << after.min_rho << ", > 0.9 "
+                                                      << before.share_rho_09 << " -> " << after.share_rho_09);
+    CHECK(after.min_rho > 0.69);
+    CHECK(after.share_rho_09 >= before.share_rho_09 - 1e-3);
+  }
 }
 
 TEST_CASE("optimize_quality: PolarSphere cap measured on the sphere (to_space)") {
