@@ -8,6 +8,10 @@
 #include <cmath>
 #include <numeric>
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
 #include <fmt/format.h>
 
 #include "base/parallel.h"
@@ -21,6 +25,16 @@ namespace {
 constexpr std::uint32_t kNone = 0xFFFFFFFFu;
 constexpr double kEquilateralArea = 0.4330127018922193;  // sqrt(3)/4: equilateral of side 1
 constexpr std::size_t kBatch = 4096;
+
+// Gives freed heap pages back to the system. A part's arrays (about a megabyte each) come
+// from the heap, not from their own mappings, so without this the parts freed during the
+// merge stay resident beside the merged arrays (square, 10M triangles: 85 -> 63 bytes per
+// triangle at the peak).
+void release_free_memory() {
+#if defined(__GLIBC__)
+  malloc_trim(0);
+#endif
+}
 
 double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -479,6 +493,7 @@ PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, 
     }
     out.tri_flags.insert(out.tri_flags.end(), P.num_slots(), 0);
     po = PartOut{};
+    release_free_memory();
   }
   struct HullSide {
     std::uint32_t lo, hi, s;
