@@ -217,10 +217,20 @@ class Optimizer {
     if (space_) ps = opt_.to_space(p);
     for (std::size_t i = 0; i < star_.size(); ++i) {
       const StarEdge& e = star_[i];
-      double q = rho_ccw(p, e.b, e.c);
-      if (q < 0) return -1;
-      if (space_) q = rho_space(ps, e.sb, e.sc);
-      if (!(q > floor)) return -1;
+      double q;
+      if (space_) {
+        if (!(cross(e.b - p, e.c - p) > 0)) return -1;
+        q = rho_space(ps, e.sb, e.sc);
+        if (!(q > floor)) return -1;
+      } else {
+        // rho = num / den; the early exit compares without the division.
+        const double area2 = cross(e.b - p, e.c - p);
+        if (!(area2 > 0)) return -1;
+        const double la = std::sqrt(norm2(e.c - e.b)), lb = std::sqrt(norm2(e.c - p)), lc = std::sqrt(norm2(e.b - p));
+        const double num = 4 * area2 * area2, den = (la + lb + lc) * la * lb * lc;
+        if (!(num > floor * den)) return -1;
+        q = num / den;
+      }
       *good += q > kGood;
       if (q < mn) {
         mn = q;
