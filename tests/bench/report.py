@@ -8,6 +8,7 @@ table and an SVG bar chart of the Gmsh / stereomesh ratios out. Standard library
 """
 import json
 import re
+import statistics
 import sys
 
 
@@ -83,6 +84,14 @@ def table(path):
             stages = f"{st['1D']:.2f} / {st['2D']:.2f}" if "1D" in st and "2D" in st else ""
             print(f"| {case} | {algo} | {prog} | {s['triangles']:,} | {100 * s['rho_gt_0.9']:.1f}% | "
                   f"{s['rho_min']:.3f} | {wall} | {cpu} | {mem} | {stages} |")
+    done = [(o, g) for _, _, o, g in pairs(load(path)) if ok(o) and ok(g)]
+    if done:
+        print()
+        parts = []
+        for key, name in (("wall", "wall time"), ("cpu", "CPU time"), ("peak_mb", "peak memory")):
+            r = sorted(g[key] / o[key] for o, g in done)
+            parts.append(f"{name} {r[0]:.1f}-{r[-1]:.1f}x (median {statistics.median(r):.1f}x)")
+        print(f"Gmsh / stereomesh over the {len(done)} cases both meshed: " + ", ".join(parts) + ".")
 
 
 def plot(path, out):
