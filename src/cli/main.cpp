@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "cli/args.h"
+#include "cli/terminal_progress.h"
 #include "field/registry.h"
 #include "interp/builtins/mesh_commands.h"
 #include "interp/interpreter.h"
@@ -91,7 +92,10 @@ int run(const std::vector<std::string>& argv) {
 
   sm::lang::SourceManager sources;
   sm::lang::Diagnostics diags(sources);
+  // Long stages (coastline import, 1D, 2D) report here; General.Verbosity < 4 silences it.
+  sm::cli::TerminalProgress progress(stderr, sm::cli::TerminalProgress::style_for(stderr));
   sm::interp::Interpreter interp(sources, diags, std::cout, settings);
+  interp.kernel().progress = &progress;
   for (const auto& [name, v] : a.option_numbers) {
     if (auto err = interp.options().set_number(name, v); !err.empty()) {
       std::fprintf(stderr, "stereomesh: %s\n", err.c_str());

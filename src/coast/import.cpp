@@ -20,6 +20,9 @@ std::size_t ImportReport::count(RepairKind k) const {
 
 namespace {
 
+// The pipeline steps numbered in build_coast_model: the units of its progress stage.
+constexpr std::uint64_t kImportSteps = 8;
+
 const char* describe(RepairKind k) {
   switch (k) {
     case RepairKind::Refined: return "original points put back on a crossing segment";
@@ -110,6 +113,14 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
   CoastModel model;
   ImportReport& rep = model.report;
   const geo::PolarSphere ps({0, 0, 0}, 1.0);
+  // The stage ends on every return, errors included.
+  struct StageEnd {
+    Progress* p;
+    ~StageEnd() { progress_end(p); }
+  } stage_end{opt.progress};
+  progress_begin(opt.progress, "coastline", kImportSteps);
+  std::uint64_t steps_done = 0;
+  auto step_done = [&] { progress_update(opt.progress, ++steps_done); };
 
   // 1. Levels.
   std::vector<Ring> rings;
@@ -118,6 +129,7 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
                       (opt.antarctica_level != 0 && r.level == opt.antarctica_level);
     if (want) rings.push_back(std::move(r));
   }
+  step_done();
   // 2. Cleaning and orientation.
   {
     Coastline c;
@@ -127,6 +139,7 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
     rings = std::move(c.rings);
   }
   rep.reversed = orient_rings(rings);
+  step_done();
 
   // 3. Region clipping: which rings stay whole, which loops are made of pieces.
   std::optional<LonLatBox> box = opt.region;
@@ -168,6 +181,7 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
     to_coarsen = std::move(rings);
     piece_is_boundary.assign(to_coarsen.size(), 0);
   }
+  step_done();
 
   // 4. Coarsening (a closed region box that is a single curve may not be dropped).
   CoarsenOptions co;
@@ -191,6 +205,7 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
     return CoastError{data.file, -1, "the region box is smaller than the accuracy", {}};
   rep.dropped = std::move(cw->dropped);
   rep.points_in = cw->points_in + cpieces->points_in;
+  step_done();
 
   // 5. Work curves and loops; orientation in (u,v) with water on the left.
   std::vector<WorkCurve> curves;
@@ -231,6 +246,7 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
       rep.repair.push_back({RepairKind::DroppedIsland, c.record, c.id, c.full.front(), 0});
     }
   }
+  step_done();
 
   // 6. Repair.
   RepairOptions ro;
@@ -262,6 +278,7 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
       reverse_curve(curves[loop.curves[0]]);
     }
   }
+  step_done();
 
   // 7. Surfaces: each hole goes to the smallest outer loop that contains it.
   std::vector<std::vector<Vec2>> polys(loops.size());
@@ -297,6 +314,7 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
       rep.repair.push_back({RepairKind::OutsideWater, c.record, c.id, c.full[c.keep[0]], 0});
     }
   }
+  step_done();
   // 8. Output, loops numbered surface by surface (outer first, then its holes).
   std::vector<std::uint32_t> curve_index(curves.size(), 0xFFFFFFFFu);
   auto emit_loop = [&](std::uint32_t l) {
@@ -327,6 +345,7 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
     model.surfaces.push_back(std::move(s));
   }
   for (std::uint32_t l : unassigned) model.unassigned.push_back(emit_loop(l));
+  step_done();
   return model;
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "base/progress.h"
 #include "coast/clean.h"
 #include "coast/coarsen.h"
 #include "coast/coastline.h"
@@ -38,6 +39,9 @@ struct ImportOptions {
   bool check_splines = false;
   int max_repair_rounds = 64;
   RegionOptions region_options;
+  /// Reports stage "coastline" with one unit per pipeline step (levels, cleaning,
+  /// clipping, coarsening, curves, repair, surfaces, output: 8); null: silent.
+  Progress* progress = nullptr;
 };
 
 /// One curve of the model: a whole island (periodic: first point not repeated), a cut

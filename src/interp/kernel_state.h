@@ -11,6 +11,7 @@
 #include <string>
 #include <utility>
 
+#include "base/progress.h"
 #include "field/field_set.h"
 #include "geo/model.h"
 #include "interp/value.h"
@@ -54,6 +55,9 @@ struct KernelState {
   std::shared_ptr<const ModelMesh> mesh;
   /// Statistics of the last `Mesh 2;` as JSON (for `--stats FILE.json`); empty before.
   std::string mesh_stats_json;
+  /// Where long kernel stages report (the CLI's stderr display); null: nobody listens.
+  /// Kernel calls take it through progress_sink() (interp/progress_sink.h).
+  Progress* progress = nullptr;
 };
 
 }  // namespace sm::interp

@@ -316,6 +316,23 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
   auto moves_vertex = [&](const geo::ModelCurve& mc) { return mc.begin == mc.end && curves_at[mc.begin] == 1; };
   std::vector<Vec3> pts;
   std::vector<double> bg;
+  // Ends the stage on every return, errors included.
+  struct StageEnd {
+    Progress* p;
+    bool open = false;
+    void begin(std::string_view name, std::uint64_t total) {
+      end();
+      progress_begin(p, name, total);
+      open = true;
+    }
+    void end() {
+      if (open) progress_end(p);
+      open = false;
+    }
+    ~StageEnd() { end(); }
+  } stage{opt.progress};
+  stage.begin("1D", model.curves().size());
+  std::uint64_t curves_done = 0;
   for (const auto& [tag, mc] : model.curves()) {
     if (!mc.shape) {
       res.error = make_error(Mesh1dErrorKind::Invalid, tag, tag, fmt::format("curve {} has no geometry", tag));
@@ -421,7 +438,9 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
       cm.nodes.push_back(uv ? mesh.add_node(shape.point(ts[i]), shape.eval_uv(ts[i]).p) : mesh.add_node(shape.point(ts[i])));
     cm.nodes.push_back(mesh.vertex_node.at(mc.end));
     mesh.curves.emplace(tag, std::move(cm));
+    progress_update(opt.progress, ++curves_done);
   }
+  stage.end();
   for (const auto& [tag, mc] : model.curves()) {
     if (!moves_vertex(mc)) continue;
     MeshNode& n = mesh.nodes[mesh.vertex_node.at(mc.begin)];
@@ -431,6 +450,7 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
   res.stats.seconds_integrate = seconds_since(t0);
   if (opt.repair_intersections) {
     t0 = std::chrono::steady_clock::now();
+    stage.begin("1D repair", 0);
     std::map<int, PlaneGroup> groups;   // geometry tag -> curves; 0: Euclidean z = const
     bool euclid_planar = true;
     std::optional<double> euclid_z;

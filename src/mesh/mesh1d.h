@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "base/progress.h"
 #include "field/field.h"
 #include "field/size_policy.h"
 #include "geo/model.h"
@@ -34,6 +35,8 @@ struct Mesh1dOptions {
   /// mesher needs; Gmsh's 1D mesh of free curves ignores crossings), or every curve.
   bool repair_all_curves = false;
   std::uint32_t max_repair_rounds = 200;
+  /// Reports stage "1D" (one unit per curve) and "1D repair" (no total); null: silent.
+  Progress* progress = nullptr;
 };
 
 /// The integrand's size h(t) along one curve: for `t`, the curve jets at t, sets h (> 0).

@@ -15,6 +15,7 @@
 #include "interp/builtins/field_eval.h"
 #include "interp/builtins/geometry_shapes.h"
 #include "interp/interpreter.h"
+#include "interp/progress_sink.h"
 #include "interp/provenance.h"
 
 namespace sm::interp {
@@ -288,6 +289,7 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
   io.strait_factor = number_option(d, "MinStraitsFactor", io.strait_factor);
   io.close_straits = number_option(d, "CloseStraits", 0) != 0;
   io.check_splines = number_option(d, "CheckSplines", 0) != 0;
+  io.progress = progress_sink(in);
   coast::Loops2Options l2;
   if (const Value* v = option(d, "Coordinate")) l2.coordinate = *coast::parse_loops2_coordinate(v->strs().front());
   l2.utm_zone = static_cast<int>(number_option(d, "UTMZone", l2.utm_zone));

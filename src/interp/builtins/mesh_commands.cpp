@@ -21,6 +21,7 @@
 #include "interp/builtins/output_options.h"
 #include "interp/builtins/size_policy_from_options.h"
 #include "interp/interpreter.h"
+#include "interp/progress_sink.h"
 #include "io/from_model_mesh.h"
 #include "io/msh_writer.h"
 #include "io/png_writer.h"
@@ -45,6 +46,7 @@ Mesh1dOptions mesh1d_options(Interpreter& in, const field::SizeField* background
   opt.min_curve_nodes = static_cast<int>(o.number("Mesh.MinimumCurveNodes"));
   opt.min_circle_nodes = static_cast<int>(o.number("Mesh.MinimumCircleNodes"));
   opt.smooth_ratio = o.number("Mesh.SmoothRatio");
+  opt.progress = progress_sink(in);
   return opt;
 }
 
@@ -131,6 +133,7 @@ MeshFailure mesh_model(Interpreter& in, int dim) {
   opt2.background = background.get();
   opt2.bbox_diag = model_bbox_diag(k.model);
   opt2.smoothing = static_cast<int>(in.options().number("Mesh.Smoothing"));
+  opt2.progress = progress_sink(in);
   // Threads for faces refined in parts: Mesh.MaxNumThreads2D, else General.NumThreads (0:
   // the hardware's). The mesh is the same for any count; meshadapt stays serial.
   const int threads_2d = static_cast<int>(in.options().number("Mesh.MaxNumThreads2D"));

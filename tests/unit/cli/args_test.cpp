@@ -129,6 +129,29 @@ TEST_CASE("cli: exit statuses of the binary") {
   }
   CHECK(run_status(bin + " -2 -v 0 " + d + "square.geo -o " + d + "square.svg") == 0);
   CHECK(fs::file_size(dir / "square.svg") > 1000);
+  // Progress (issue 8): nothing on stderr with -v 0 (or up to -v 3) for a clean script;
+  // plain lines, no \r, when stderr is not a terminal (here a pipe, as in CI and logs).
+  CHECK(run_stderr(bin + " -2 -v 0 " + d + "square.geo -o " + d + "q.msh") == "");
+  CHECK(run_stderr(bin + " -2 -v 3 " + d + "square.geo -o " + d + "q.msh") == "");
+  {
+    const std::string log = run_stderr(bin + " -2 " + d + "square.geo -o " + d + "q.msh");
+    CHECK(log.rfind("stereomesh: 1D: start (4)\nstereomesh: 1D: done in ", 0) == 0);
+    CHECK(log.find("stereomesh: 2D: start (1)\nstereomesh: 2D: done in ") != std::string::npos);
+    CHECK(log.find('\r') == std::string::npos);
+  }
+  // On a terminal (a pseudo-terminal from util-linux's script, when there is one): the
+  // live line, redrawn with \r and finished with a newline.
+  if (run_status("script -qc true /dev/null") == 0) {
+    REQUIRE(std::system(("script -qc '" + bin + " -2 " + d + "square.geo -o " + d + "q.msh' /dev/null > " + d +
+                         "tty.txt 2>&1 </dev/null").c_str()) == 0);
+    std::ifstream in(dir / "tty.txt", std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    const std::string tty = ss.str();
+    CHECK(tty.find("\r1D  4/4  100%") != std::string::npos);
+    CHECK(tty.find("\r2D  1/1  100%") != std::string::npos);
+    CHECK(tty.find("stereomesh: 1D: start") == std::string::npos);
+  }
   // PNG by extension and by -format (the default name is the script's with .png).
   CHECK(run_status(bin + " -2 -v 0 " + d + "square.geo -o " + d + "sq.png") == 0);
   CHECK(run_status(bin + " -2 -v 0 -format png " + d + "square.geo") == 0);

@@ -1,0 +1,51 @@
+// The progress display on stderr (issue 8): on a terminal one live line per stage, redrawn
+// at most ten times a second ("2D  12/40  30%  1.2 s"); elsewhere (a log file, a pipe, CI)
+// one plain line when a stage starts and one when it ends, with its time.
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <functional>
+#include <string>
+#include <string_view>
+
+#include "base/progress.h"
+
+namespace sm::cli {
+
+class TerminalProgress final : public Progress {
+ public:
+  enum class Style {
+    Live,   // \r-redrawn line, finished with a newline at the end of the stage
+    Lines,  // "stereomesh: NAME: start (N)" and "stereomesh: NAME: done in T s" lines
+  };
+  /// Seconds since any fixed origin; the steady clock unless a test supplies its own.
+  using Clock = std::function<double()>;
+
+  TerminalProgress(std::FILE* out, Style style, Clock now = {});
+  ~TerminalProgress() override;   // finishes a stage left open
+  TerminalProgress(const TerminalProgress&) = delete;
+  TerminalProgress& operator=(const TerminalProgress&) = delete;
+
+  void begin(std::string_view name, std::uint64_t total) override;
+  void update(std::uint64_t done) override;
+  void end() override;
+
+  /// Live on a terminal, Lines otherwise.
+  static Style style_for(std::FILE* out);
+
+ private:
+  void draw();
+  std::string live_text() const;
+
+  std::FILE* out_;
+  Style style_;
+  Clock now_;
+  bool open_ = false;
+  std::string name_;
+  std::uint64_t total_ = 0, done_ = 0;
+  double start_ = 0, last_draw_ = 0;
+  std::size_t drawn_width_ = 0;   // characters of the live line on screen
+};
+
+}  // namespace sm::cli
