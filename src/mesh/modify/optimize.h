@@ -27,7 +27,7 @@ struct OptimizeOptions {
   /// that earlier changes lifted above 0.9, which a threshold below 0.9 rarely makes.
   double max_share_loss = 0;
   /// Moves tried per vertex and round (each one a small line search).
-  int smooth_iterations = 6;
+  int smooth_iterations = 2;
   /// A swap or move is kept only when the worst rho around it rises by more than
   /// this (so nothing cycles).
   double min_gain = 1e-9;
