@@ -21,9 +21,9 @@ struct PartitionOptions {
   /// A face whose estimated triangle count is below this is refined as one piece.
   std::uint64_t min_triangles = 200000;
   /// Estimated triangles per part: K = the power of two nearest estimate / this, >= 2.
-  /// Small enough that 16 threads find work on a 1M-triangle face, large enough that the
+  /// Small enough that 16 threads find work on a 2M-triangle face, large enough that the
   /// seams are a small share (about 4 sqrt(n) of n triangles touch a part's border).
-  std::uint64_t part_triangles = 65536;
+  std::uint64_t part_triangles = 131072;
   /// The coarse refinement uses the size times this (a few thousand coarse triangles per part).
   double coarse_factor = 8;
   std::uint32_t max_parts = 4096;
