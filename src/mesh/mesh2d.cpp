@@ -1,6 +1,7 @@
 // The face driver of 2D meshing (paper section 3.3): boundary nodes in the face's plane,
-// Delaunay + edge recovery + hole removal, del2d refinement with the size converted to
-// the plane (h / lambda on a PolarSphere), Laplacian smoothing, 3D output.
+// Delaunay + edge recovery + hole removal, del2d/front2d refinement with the size converted
+// to the plane (h / lambda on a PolarSphere; large faces in parts on threads, partition.h),
+// Laplacian smoothing, 3D output.
 #include "mesh/mesh2d.h"
 
 #include <algorithm>

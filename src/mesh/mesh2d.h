@@ -38,8 +38,9 @@ struct Mesh2dOptions {
   /// default (del2d 0.76, front2d refine.h's 1/sqrt2).
   double radius_limit = 0;
   std::uint32_t max_vertices_per_face = 0xFFFFFFF0u;
-  /// Threads for the refinement of partitioned faces (General.NumThreads /
-  /// Mesh.MaxNumThreads2D); <= 0: the hardware's. The mesh does not depend on it.
+  /// Threads for faces refined in parts and for smoothing (General.NumThreads /
+  /// Mesh.MaxNumThreads2D); <= 0: the hardware's. The mesh does not depend on it;
+  /// meshadapt is serial.
   int threads = 1;
   /// When and how del2d / front2d faces are refined in parts (partition.h).
   PartitionOptions partition;
@@ -78,7 +79,9 @@ struct Mesh2dResult {
 std::vector<StageTime> stage_times(const Mesh2dStats& s);
 
 /// Meshes every Plane Surface of the model in tag order into `mesh` (which holds the 1D
-/// mesh from mesh_curves). Boundary and embedded nodes are the curve/vertex nodes, so
+/// mesh from mesh_curves). del2d and front2d faces estimated at opt.partition.min_triangles
+/// or more are refined in parts on opt.threads threads (partition.h); the result does not
+/// depend on the thread count. Boundary and embedded nodes are the curve/vertex nodes, so
 /// faces sharing curves share nodes; interior nodes get their (u,v) on a surface geometry.
 /// Triangles are oriented with the outward normal on a sphere and by the right-hand rule
 /// of the outer loop on a plane. Deterministic. On failure, surfaces meshed before the

@@ -18,7 +18,8 @@ namespace sm {
 using PlaneSizeFn = std::function<void(std::span<const Vec2> p, std::span<double> h)>;
 
 struct PartitionOptions {
-  /// A face whose estimated triangle count is below this is refined as one piece.
+  /// A face whose estimated triangle count is below this is refined as one piece; 0: every
+  /// face is.
   std::uint64_t min_triangles = 200000;
   /// Estimated triangles per part: K = the power of two nearest estimate / this, >= 2.
   /// Small enough that 16 threads find work on a 2M-triangle face, large enough that the
