@@ -98,6 +98,43 @@ bool all_collinear(const std::vector<Vec2>& p) {
   return true;
 }
 
+// A B-spline cuts a corner of its control polygon by about a quarter of the spacing
+// there: after coarsening (points >= gamma apart), a box piece keeps each corner and, on
+// either side, the farthest of region.cpp's graded samples within gamma / 10 of it. The
+// spline then turns the corner within gamma / 10 (its hull near the corner is that thin)
+// and follows the parallels and meridians elsewhere, the control points lying on them.
+void keep_box_corners(CoarseRing& cr, const std::vector<std::size_t>& corners, double radius) {
+  if (corners.empty()) return;
+  const std::vector<geo::LonLat>& pts = cr.ring.pts;
+  const std::size_t n = pts.size();
+  std::vector<std::uint32_t>& keep = cr.keep;
+  for (std::size_t c : corners) {
+    if (c >= n) continue;
+    const double limit = 0.1 * cr.gamma[c];
+    keep.push_back(static_cast<std::uint32_t>(c));
+    for (int dir : {-1, 1}) {
+      // Walk away from the corner along the ring (wrapping when closed) while within limit.
+      std::size_t best = c;
+      for (std::size_t step = 1; step < n; ++step) {
+        const std::size_t i = dir > 0 ? c + step : c - step;
+        std::size_t at = i;
+        if (dir > 0 && i >= n) {
+          if (!cr.ring.closed) break;
+          at = i - n;
+        } else if (dir < 0 && step > c) {
+          if (!cr.ring.closed) break;
+          at = n + c - step;
+        }
+        if (chord(pts[c], pts[at], radius) > limit) break;
+        best = at;
+      }
+      if (best != c) keep.push_back(static_cast<std::uint32_t>(best));
+    }
+  }
+  std::sort(keep.begin(), keep.end());
+  keep.erase(std::unique(keep.begin(), keep.end()), keep.end());
+}
+
 void reverse_curve(WorkCurve& c) {
   const auto n = static_cast<std::uint32_t>(c.full.size());
   std::reverse(c.full.begin(), c.full.end());
@@ -153,6 +190,7 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
   std::vector<Ring> to_coarsen;                 // closed islands first, then loop pieces
   std::vector<std::pair<std::size_t, std::size_t>> piece_span;   // per region loop: [first, last) in to_coarsen
   std::vector<char> piece_is_boundary;
+  std::vector<std::vector<std::size_t>> piece_corners;       // per region piece: box corners in its pts
   if (box) {
     auto clipped = clip_to_region(rings, *box, opt.region_options);
     if (!clipped) return clipped.error();
@@ -174,6 +212,7 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
         }
         to_coarsen.push_back(std::move(r));
         piece_is_boundary.push_back(p.open_boundary ? 1 : 0);
+        piece_corners.push_back(p.corners);
       }
       piece_span.push_back({first, to_coarsen.size()});
     }
@@ -203,6 +242,7 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
   if (!cpieces) return cpieces.error();
   if (!cpieces->dropped.empty())   // only the box alone, as one closed curve, can be dropped
     return CoastError{data.file, -1, "the region box is smaller than the accuracy", {}};
+  for (std::size_t k = 0; k < cpieces->rings.size(); ++k) keep_box_corners(cpieces->rings[k], piece_corners[k], opt.radius);
   rep.dropped = std::move(cw->dropped);
   rep.points_in = cw->points_in + cpieces->points_in;
   step_done();

@@ -73,9 +73,13 @@ geo::LonLat box_point(double t, const LonLatBox& b) {
 }
 
 // Box boundary from parameter ta counter-clockwise to tb (tb taken after ta), with
-// corners and points at most `step` degrees apart; end points exactly a and b.
+// corners and points at most `step` degrees apart, and on either side of each corner
+// samples at step/2, step/4, ... down to corner_step degrees from it (their indices in
+// `corners`, when given); end points exactly a and b. `closed`: a = b is a corner too
+// (the whole box), graded on both sides but not listed (index 0 and the last point).
 std::vector<geo::LonLat> box_path(geo::LonLat a, double ta, geo::LonLat b, double tb, const LonLatBox& box,
-                                  double step) {
+                                  double step, double corner_step = 0, std::vector<std::size_t>* corners = nullptr,
+                                  bool closed = false) {
   if (is_band(box)) {   // eastwards along the parallel, keeping a's longitude contiguous
     double db = wrap360(b.lon - a.lon);
     if (db == 0) db = 360.0;
@@ -90,13 +94,28 @@ std::vector<geo::LonLat> box_path(geo::LonLat a, double ta, geo::LonLat b, doubl
   for (double c = std::floor(ta) + 1; c < tb; c += 1) ts.push_back(c);
   ts.push_back(tb);
   std::vector<geo::LonLat> out{a};
+  std::vector<double> along;   // parameters of one edge's interior samples
   for (std::size_t k = 0; k + 1 < ts.size(); ++k) {
     const double t0 = ts[k], t1 = ts[k + 1];
     const int edge = static_cast<int>(std::floor(t0)) % 4;
-    const double len = (t1 - t0) * ((edge % 2 == 0) ? box.east - box.west : box.north - box.south);
+    const double edge_deg = (edge % 2 == 0) ? box.east - box.west : box.north - box.south;
+    const double len = (t1 - t0) * edge_deg;
     const int m = std::max(1, static_cast<int>(std::ceil(len / step)));
-    for (int i = 1; i < m; ++i) out.push_back(box_point(t0 + (t1 - t0) * i / m, box));
-    if (k + 2 < ts.size()) out.push_back(box_point(t1, box));
+    along.clear();
+    for (int i = 1; i < m; ++i) along.push_back(t0 + (t1 - t0) * i / m);
+    // Graded samples next to the corners this edge starts (k > 0) or ends (k + 2 < size) at.
+    if (corner_step > 0)
+      for (double d = 0.5 * step; d >= corner_step && d < 0.5 * len; d *= 0.5) {
+        if (k > 0 || closed) along.push_back(t0 + d / edge_deg);
+        if (k + 2 < ts.size() || closed) along.push_back(t1 - d / edge_deg);
+      }
+    std::sort(along.begin(), along.end());
+    along.erase(std::unique(along.begin(), along.end()), along.end());
+    for (double t : along) out.push_back(box_point(t, box));
+    if (k + 2 < ts.size()) {
+      if (corners) corners->push_back(out.size());
+      out.push_back(box_point(t1, box));
+    }
   }
   out.push_back(b);
   return out;
@@ -251,8 +270,10 @@ Result<RegionResult> clip_to_region(const std::vector<Ring>& rings, const LonLat
     RegionPiece piece;
     piece.open_boundary = true;
     const geo::LonLat c0 = band ? geo::LonLat{box.west, box.south} : box_point(0, box);
-    piece.pts = box_path(c0, 0, c0, 4.0, box, opt.boundary_step_deg);
+    piece.pts = box_path(c0, 0, c0, 4.0, box, opt.boundary_step_deg, opt.corner_step_deg, &piece.corners,
+                         /*closed=*/!band);
     piece.pts.pop_back();   // closed on itself: the first point is not repeated
+    if (!band) piece.corners.insert(piece.corners.begin(), 0);   // the start is the south-west corner
     loop.pieces.push_back(std::move(piece));
     out.loops.push_back(std::move(loop));
     return out;
@@ -300,7 +321,8 @@ Result<RegionResult> clip_to_region(const std::vector<Ring>& rings, const LonLat
       if (!(from.lon == to.lon && from.lat == to.lat)) {
         RegionPiece bnd;
         bnd.open_boundary = true;
-        bnd.pts = box_path(from, ta, to, tb == ta ? ta + 4.0 : tb, box, opt.boundary_step_deg);
+        bnd.pts = box_path(from, ta, to, tb == ta ? ta + 4.0 : tb, box, opt.boundary_step_deg, opt.corner_step_deg,
+                           &bnd.corners);
         if (band) {   // keep the piece's longitudes contiguous with the coast pieces it joins
           bnd.pts.back().lon = bnd.pts[bnd.pts.size() - 2].lon +
                                wrap_delta(bnd.pts[bnd.pts.size() - 2].lon, bnd.pts.back().lon);

@@ -16,6 +16,11 @@ struct RegionPiece {
   std::vector<geo::LonLat> pts;
   bool open_boundary = false;
   std::size_t ring = static_cast<std::size_t>(-1);   // index of the input ring (coast pieces)
+  /// Box pieces: indices into pts of the box corners they turn round. The samples get
+  /// denser towards each corner (halving the step down to ~1 m), so that the import can
+  /// keep a point close on each side and the B-spline through the kept points turns the
+  /// corner within a small fraction of the accuracy instead of cutting it.
+  std::vector<std::size_t> corners;
 };
 
 /// A closed loop bounding the ocean inside the box, ocean on the left (counter-clockwise
@@ -33,6 +38,8 @@ struct RegionOptions {
   /// Largest step (degrees) between points put on the box boundary pieces; the
   /// coarsening then thins them with the accuracy field like any shoreline.
   double boundary_step_deg = 0.05;
+  /// Smallest distance (degrees) of the graded samples next to a box corner.
+  double corner_step_deg = 1e-5;
 };
 
 /// `rings` must be cleaned and oriented land-on-the-left (orient_rings). Edges of the

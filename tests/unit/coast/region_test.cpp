@@ -116,3 +116,45 @@ TEST_CASE("region: the Arctic cap closes along the parallel 50N") {
       }
   CHECK(open == 16);   // one box piece after each of the 16 cut coastlines
 }
+
+// Box corners listed by the pieces that turn round them, with samples halving in
+// distance towards them (issue 8: the B-splines must not cut the corners).
+void check_corners(const RegionResult& r, const LonLatBox& box, std::size_t want_corners) {
+  std::size_t corners = 0;
+  for (const RegionLoop& loop : r.loops)
+    for (const RegionPiece& p : loop.pieces) {
+      if (!p.open_boundary) CHECK(p.corners.empty());
+      for (std::size_t c : p.corners) {
+        REQUIRE(c < p.pts.size());
+        const geo::LonLat x = p.pts[c];
+        CHECK(((x.lon == box.west || x.lon == box.east) && (x.lat == box.south || x.lat == box.north)));
+        // The nearest samples on either side are ~1e-5 degrees from it, the next twice as far.
+        const std::size_t n = p.pts.size();
+        for (std::size_t nb : {(c + 1) % n, (c + n - 1) % n}) {
+          const double d = std::abs(p.pts[nb].lon - x.lon) + std::abs(p.pts[nb].lat - x.lat);
+          CHECK(d < 2e-5);
+          CHECK(d >= 1e-5 * 0.999);
+        }
+        ++corners;
+      }
+    }
+  CHECK(corners == want_corners);
+}
+
+TEST_CASE("region: box pieces list their corners, sampled densely next to them") {
+  const auto rings = load("gb_ireland_f.txt");
+  // The Irish Sea tutorial's box: one box piece, turning round the western corners (both at sea).
+  const LonLatBox irish{-7, -2.5, 51.5, 55.5};
+  auto r = clip_to_region(rings, irish);
+  REQUIRE_MESSAGE(r.ok(), (r.ok() ? "" : r.error().to_string()));
+  check_loops(*r, irish);
+  check_corners(*r, irish, 2);
+  // A box in the open Atlantic: the box alone, a closed piece with its four corners.
+  const LonLatBox atlantic{-20, -15, 50, 52};
+  auto a = clip_to_region(rings, atlantic);
+  REQUIRE_MESSAGE(a.ok(), (a.ok() ? "" : a.error().to_string()));
+  REQUIRE(a->loops.size() == 1);
+  REQUIRE(a->loops[0].pieces.size() == 1);
+  CHECK(a->loops[0].pieces[0].corners.front() == 0);
+  check_corners(*a, atlantic, 4);
+}
