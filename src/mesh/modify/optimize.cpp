@@ -3,6 +3,7 @@
 #include "mesh/modify/optimize.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -49,6 +50,18 @@ struct StarEdge {
   Vec3 sb, sc;  // on the surface, with OptimizeOptions::to_space
 };
 
+// Sorted qualities compared worst first: the first pair that differs by more than
+// kLexTie decides. A move that lifts a triangle pinned by the boundary (a needle on a
+// short coast edge) by a hair must not pull its other triangles down to that needle.
+constexpr double kLexTie = 1e-3;
+inline bool leximin_better(const std::vector<double>& a, const std::vector<double>& b) {
+  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) {
+    if (a[i] > b[i] + kLexTie) return true;
+    if (a[i] < b[i] - kLexTie) return false;
+  }
+  return false;
+}
+
 struct BadTri {
   double q;
   std::uint32_t t;
@@ -87,6 +100,14 @@ class Optimizer {
       refresh_bad();
       if (st.swaps == swaps0 && st.moves == moves0) break;
     }
+    for (int r = 0; r < opt_.rounds && !bad_.empty() && bad_.front().q < opt_.compound_below; ++r) {
+      const std::uint64_t swaps0 = st.swaps;
+      compound_round(st);
+      refresh_bad();
+      smooth_round(st);
+      refresh_bad();
+      if (st.swaps == swaps0) break;
+    }
     st.bad_after = static_cast<std::uint32_t>(bad_.size());
     if (!bad_.empty()) {
       st.min_after = bad_.front().q;
@@ -117,6 +138,7 @@ class Optimizer {
   // triangles below kGood (`lost_total` since the change began).
   bool fair_trade(double gain, int lost, double before, int lost_total) {
     if (lost <= 0 && lost_total <= 0) return true;
+    if (strict_) return false;
     if (lost > 0 && (!(before < opt_.sacrifice_below) || gain < kTrade * lost)) return false;
     if (lost_total <= bank_) return true;
     bank_blocked_ = true;
@@ -210,9 +232,11 @@ class Optimizer {
   // The worst rho of the star with its centre at p; -1 as soon as a triangle is not
   // counter-clockwise (floating point) or not above `floor`. *good counts the
   // triangles above kGood, *worst names the worst.
-  double star_quality(Vec2 p, double floor, int* good, std::size_t* worst = nullptr) {
+  double star_quality(Vec2 p, double floor, int* good, std::size_t* worst = nullptr,
+                      std::vector<double>* sorted = nullptr) {
     double mn = 2;
     *good = 0;
+    if (sorted) sorted->clear();
     Vec3 ps{};
     if (space_) ps = opt_.to_space(p);
     for (std::size_t i = 0; i < star_.size(); ++i) {
@@ -232,11 +256,13 @@ class Optimizer {
         q = num / den;
       }
       *good += q > kGood;
+      if (sorted) sorted->push_back(q);
       if (q < mn) {
         mn = q;
         if (worst) *worst = i;
       }
     }
+    if (sorted) std::sort(sorted->begin(), sorted->end());
     return mn;
   }
 
@@ -253,7 +279,7 @@ class Optimizer {
   Vec2 optimise_position(Vec2 start, double& best, int& good, OptimizeStats& st) {
     Vec2 cur = start;
     std::size_t worst = 0;
-    best = star_quality(cur, -2, &good, &worst);
+    best = star_quality(cur, -2, &good, &worst, &cur_q_);
     if (best < 0) return start;  // tangled in floating point already: not ours to fix
     const int good0 = good;
     Vec2 lap{0, 0}, ideal{0, 0};
@@ -266,25 +292,26 @@ class Optimizer {
     for (int it = 0; it < opt_.smooth_iterations; ++it) {
       const Vec2 targets[3] = {ideal, ideal_apex(star_[worst].b, star_[worst].c), lap};
       Vec2 best_p = cur;
-      double best_q = best;
+      best_q_ = cur_q_;
       for (const Vec2 target : targets) {
         for (double step = 1; step >= 1.0 / 128; step *= 0.5) {
           const Vec2 p = cur + step * (target - cur);
           int g = 0;
-          const double q = star_quality(p, best + opt_.min_gain, &g);
-          if (q > 0 && fair_trade(q - best, good - g, best, good0 - g)) {
-            if (q > best_q) best_q = q, best_p = p;
+          // The worst may not drop at all; the sorted qualities must rise (leximin).
+          const double q = star_quality(p, std::nextafter(best, -2.0), &g, nullptr, &cand_q_);
+          if (q >= best && leximin_better(cand_q_, cur_q_) && fair_trade(q - best, good - g, best, good0 - g)) {
+            if (leximin_better(cand_q_, best_q_)) best_q_ = cand_q_, best_p = p;
             break;
           }
         }
       }
-      if (!(best_q > best + opt_.min_gain)) break;
+      if (best_p == cur) break;
       if (!exact_ok(best_p)) {
         ++st.refused;
         break;
       }
       cur = best_p;
-      best = star_quality(cur, -2, &good, &worst);
+      best = star_quality(cur, -2, &good, &worst, &cur_q_);
     }
     return cur;
   }
@@ -310,6 +337,83 @@ class Optimizer {
     if (space_) xyz_[v.value] = opt_.to_space(cur), have_xyz_[v.value] = 1;
     for (std::uint32_t t : star_tris_) touch(t);
     return true;
+  }
+
+  // The worst rho and the number above kGood of t1, t2 and the stars of the free
+  // vertices among vs; region_ lists those triangles.
+  std::pair<double, int> region_quality(const std::array<VertexId, 4>& vs, std::uint32_t t1, std::uint32_t t2,
+                                        std::vector<double>& sorted) {
+    region_.assign({t1, t2});
+    for (VertexId v : vs)
+      if (gather_star(v))
+        for (std::uint32_t t : star_tris_)
+          if (std::find(region_.begin(), region_.end(), t) == region_.end()) region_.push_back(t);
+    double mn = 2;
+    int good = 0;
+    sorted.clear();
+    for (std::uint32_t t : region_) {
+      const double q = tri_quality(TriId{t});
+      mn = std::min(mn, q);
+      good += q > kGood;
+      sorted.push_back(q);
+    }
+    std::sort(sorted.begin(), sorted.end());
+    return {mn, good};
+  }
+
+  // Flips s even when that alone does not help, then moves the four corners of the quad
+  // (two sweeps, no sacrifice); kept only when the worst rho round them rises and no
+  // triangle drops below kGood, otherwise undone exactly (positions, then the flip back).
+  // Escapes the local optima of single moves where a vertex has one neighbour too many.
+  bool try_compound(Side s, OptimizeStats& st) {
+    const Side o = m_.twin[s.value];
+    if (!o.valid() || m_.constrained(s)) return false;
+    const std::array<VertexId, 4> vs = {m_.org(s), m_.dest(s), m_.apex(s), m_.apex(o)};
+    if (orient2d(m_.pos(vs[2]), m_.pos(vs[0]), m_.pos(vs[3])) != Sign::Positive ||
+        orient2d(m_.pos(vs[3]), m_.pos(vs[1]), m_.pos(vs[2])) != Sign::Positive)
+      return false;
+    const auto [q0, g0] = region_quality(vs, tri_of(s).value, tri_of(o).value, region_q0_);
+    std::array<Vec2, 4> old_xy;
+    for (std::size_t i = 0; i < 4; ++i) old_xy[i] = m_.pos(vs[i]);
+    const Side n = m_.flip(s);
+    strict_ = true;
+    for (int sweep = 0; sweep < 2; ++sweep)
+      for (VertexId v : vs) {
+        if (!gather_star(v)) continue;
+        double best = 0;
+        int good = 0;
+        const Vec2 p = optimise_position(m_.pos(v), best, good, st);
+        m_.xy[v.value] = p;
+        if (space_) xyz_[v.value] = opt_.to_space(p), have_xyz_[v.value] = 1;
+      }
+    strict_ = false;
+    const auto [q1, g1] = region_quality(vs, tri_of(n).value, tri_of(m_.twin[n.value]).value, region_q1_);
+    if (q1 >= q0 && leximin_better(region_q1_, region_q0_) && g1 >= g0) {
+      for (std::uint32_t t : region_) touch(t);
+      ++st.swaps;
+      for (std::size_t i = 0; i < 4; ++i) st.moves += !(m_.pos(vs[i]) == old_xy[i]);
+      return true;
+    }
+    for (std::size_t i = 0; i < 4; ++i) {
+      m_.xy[vs[i].value] = old_xy[i];
+      if (space_) xyz_[vs[i].value] = opt_.to_space(old_xy[i]), have_xyz_[vs[i].value] = 1;
+    }
+    // The flip back restores the two triangles with their slots exchanged: measure both again.
+    const Side back = m_.flip(n);
+    mark(tri_of(back).value);
+    mark(tri_of(m_.twin[back.value]).value);
+    return false;
+  }
+
+  void compound_round(OptimizeStats& st) {
+    const std::vector<BadTri> bad = bad_;
+    for (const BadTri& b : bad) {
+      if (!(b.q < opt_.compound_below)) break;
+      for (std::uint32_t e = 0; e < 3; ++e) {
+        if (!(tri_quality(TriId{b.t}) < opt_.compound_below)) break;  // an earlier change lifted it
+        if (try_compound(side_of(TriId{b.t}, e), st)) break;
+      }
+    }
   }
 
   void smooth_round(OptimizeStats& st) {
@@ -339,6 +443,9 @@ class Optimizer {
   // rho > 0.9 never falls below the input's.
   std::int64_t bank_ = 0;
   bool bank_blocked_ = false;  // a change was refused only because bank_ was short
+  bool strict_ = false;        // no sacrifice at all (inside a compound change)
+  std::vector<std::uint32_t> region_;
+  std::vector<double> cur_q_, cand_q_, best_q_, region_q0_, region_q1_;
   std::vector<Side> stack_;
   std::vector<StarEdge> star_;
   std::vector<std::uint32_t> star_tris_;

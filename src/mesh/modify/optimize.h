@@ -26,10 +26,15 @@ struct OptimizeOptions {
   /// triangle count; 0: never lower). Sacrifices are otherwise paid only by triangles
   /// that earlier changes lifted above 0.9, which a threshold below 0.9 rarely makes.
   double max_share_loss = 0;
+  /// After the rounds, triangles still below this try compound changes: an edge
+  /// flipped even if that alone loses, then the quad's corners moved, kept only when
+  /// the worst rho round them rises and none drops below 0.9 (undone otherwise).
+  double compound_below = 0.85;
   /// Moves tried per vertex and round (each one a small line search).
   int smooth_iterations = 2;
-  /// A swap or move is kept only when the worst rho around it rises by more than
-  /// this (so nothing cycles).
+  /// A swap is kept only when the worse rho of its pair rises by more than this (so
+  /// swaps cannot cycle). Moves and compound changes compare the sorted qualities
+  /// around them worst first (leximin, ties within 1e-3) and never lower the worst.
   double min_gain = 1e-9;
   /// Optional surface map (u,v) -> xyz: rho is then measured on the chord
   /// triangles in space instead of the parameter plane. Validity (no inverted
@@ -54,13 +59,15 @@ struct OptimizeStats {
 /// threshold, worst first, are flipped when that raises the worse rho of the two
 /// triangles (exact orient2d: the new pair must be counter-clockwise), with cascades
 /// to the edges around each flip; (2) each free vertex of those triangles is moved
-/// where the worst rho of its star is larger: candidates are the mean of its
-/// neighbours, the mean of the points that would make each star triangle
-/// equilateral on its outer edge, and that point for the worst triangle, each tried
-/// with step 1, 1/2, 1/4, 1/8; the best is kept only when every star triangle is
-/// counter-clockwise by the exact orient2d. Stops early when a round changes
-/// nothing. The result is valid but in general no longer Delaunay. Deterministic:
-/// triangles are handled by increasing (rho, id), vertices in that order.
+/// where the sorted rho of its star is better (leximin, the worst never lower):
+/// candidates are the mean of its neighbours, the mean of the points that would make
+/// each star triangle equilateral on its outer edge, and that point for the worst
+/// triangle, each tried with step 1, 1/2, ... 1/128; the best is kept only when every
+/// star triangle is counter-clockwise by the exact orient2d. Stops early when a round changes
+/// nothing. Then (3) triangles still below compound_below try a flip of each edge
+/// followed by two sweeps of moves of the quad's corners, undone unless the sorted
+/// qualities round them rise. The result is valid but in general no longer Delaunay.
+/// Deterministic: triangles are handled by increasing (rho, id), vertices in that order.
 OptimizeStats optimize_quality(TriangleStore& m, std::uint32_t fixed_count, const OptimizeOptions& opt = {});
 
 }  // namespace sm

@@ -100,11 +100,11 @@ TEST_CASE("optimize_quality: front2d square with a hole, the worst rho rises abo
   CHECK(same_bytes(copy, s.m));
 }
 
-TEST_CASE("optimize_quality: del2d square with a hole, the worst rho rises above 0.7") {
+TEST_CASE("optimize_quality: del2d square with a hole, the worst rho rises above 0.7 (0.78 by default)") {
   Square s = square(0.01, false);
   const std::vector<Vec2> fixed_xy(s.m.xy.begin(), s.m.xy.begin() + s.fixed);
   const QualityStats before = mesh_quality(s.m);
-  SUBCASE("defaults (threshold 0.9): the share above 0.9 rises by 8 points too") {
+  SUBCASE("defaults (threshold 0.9): the share above 0.9 rises from 86% to above 98% too") {
     const OptimizeStats st = optimize_quality(s.m, s.fixed);
     check_invariants(s.m, s.edges, fixed_xy);
     const QualityStats after = mesh_quality(s.m);
@@ -112,8 +112,8 @@ TEST_CASE("optimize_quality: del2d square with a hole, the worst rho rises above
                                      << before.share_rho_09 << " -> " << after.share_rho_09 << "; " << st.moves
                                      << " moves, " << st.swaps << " swaps");
     CHECK(before.min_rho < 0.6);
-    CHECK(after.min_rho > 0.7);
-    CHECK(after.share_rho_09 > before.share_rho_09 + 0.08);
+    CHECK(after.min_rho > 0.78);
+    CHECK(after.share_rho_09 > 0.98);
     CHECK(after.share_len_07_14 >= before.share_len_07_14 - 1e-3);
   }
   SUBCASE("cheap: threshold 0.75, sacrifices only below 0.7") {
@@ -169,9 +169,9 @@ TEST_CASE("optimize_quality: PolarSphere cap measured on the sphere (to_space)")
                                             << share0 << " -> " << share1 << "; " << st.moves << " moves");
     CHECK(st.min_before == doctest::Approx(min0));
     CHECK(st.min_after == doctest::Approx(min1));
-    CHECK(min1 > min0 + 0.05);
-    CHECK(min1 > 0.7);
-    CHECK(share1 >= share0);
+    CHECK(min1 > min0 + 0.1);
+    CHECK(min1 > (frontal ? 0.85 : 0.78));
+    CHECK(share1 > (frontal ? 0.999 : 0.98));
     const testing::SphereStats ss = testing::sphere_stats(m, delta);
     CHECK(ss.in_07_14 > 0.95);
   }
@@ -231,7 +231,7 @@ TEST_CASE("optimize_quality: GSHHG crude world coastlines, raw vertices (close b
                       << " moves, " << st.swaps << " swaps");
   CHECK(q1.min_rho >= q0.min_rho);
   CHECK(free1 > free0 + 0.1);
-  CHECK(free1 > 0.25);
+  CHECK(free1 > 0.15);
   CHECK(below1 < below0);
   CHECK(q1.share_rho_09 >= q0.share_rho_09);
   optimize_quality(copy, fixed);
