@@ -326,6 +326,58 @@ TEST_CASE("mesh2d: PolarSphere cap bounded by the circle of latitude 30N") {
   }
 }
 
+namespace {
+
+// A closed polygon of n Lines around (cx, cy) in the current plane or (u,v) plane.
+int add_polygon_at(geo::Model& m, double cx, double cy, double r, int n, double lc) {
+  const int p = m.new_point_tag();
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * geo::kPi * i / n;
+    REQUIRE(m.add_point(p + i, {cx + r * std::cos(a), cy + r * std::sin(a), 0}, lc).ok());
+  }
+  const int c = m.new_curve_tag();
+  std::vector<int> cs;
+  for (int i = 0; i < n; ++i) {
+    REQUIRE(m.add_curve(c + i, geo::CurveKind::Line, {p + i, p + (i + 1) % n}).ok());
+    cs.push_back(c + i);
+  }
+  const int l = m.new_loop_tag();
+  REQUIRE(m.add_curve_loop(l, cs).ok());
+  return l;
+}
+
+// Partitioning thresholds low enough for a unit-test face of ~20k triangles.
+Mesh2dOptions partitioned(Mesh2dOptions o) {
+  o.partition.min_triangles = 8000;
+  o.partition.part_triangles = 2500;
+  return o;
+}
+
+// Meshes surface 1 partitioned with 1, 2 and 4 threads from the same 1D mesh: the same
+// nodes and triangles each time; returns the 1-thread mesh and its result.
+Meshed mesh_threads(const geo::Model& m, const ModelMesh& mesh1d, Mesh2dOptions o2) {
+  Meshed a;
+  for (int threads : {1, 2, 4}) {
+    CAPTURE(threads);
+    o2.threads = threads;
+    ModelMesh mesh = mesh1d;
+    const Mesh2dResult r = mesh_surfaces(m, mesh, o2);
+    INFO(r.error.message);
+    REQUIRE(r.ok());
+    CHECK(r.stats.partitioned_faces == 1);
+    if (threads == 1) {
+      a.mesh = std::move(mesh);
+      a.r2 = r;
+    } else {
+      check_same(a.mesh, mesh);
+      CHECK(r.stats.parts == a.r2.stats.parts);
+    }
+  }
+  return a;
+}
+
+}  // namespace
+
 TEST_CASE("mesh2d: lon/lat Sphere face, the box 0-40E x 10-50N, meshed in the Mercator plane") {
   geo::Model m;
   REQUIRE(m.add_point(1, {0, 0, 0}).ok());
@@ -364,6 +416,24 @@ TEST_CASE("mesh2d: lon/lat Sphere face, the box 0-40E x 10-50N, meshed in the Me
     CHECK(st.share_rho_09 > rho09_floor(alg));
     const Meshed b = mesh_model(m, {}, o2);
     check_same(a.mesh, b.mesh);
+    if (alg == Mesh2dAlgorithm::MeshAdapt) continue;
+    // In 2 parts (the Mercator plane's conformal factor in the sizes of the cut and of the
+    // border points): the same checks, the same mesh on 1, 2, 4 threads.
+    o2.partition.min_triangles = 500;
+    o2.partition.part_triangles = 550;
+    Mesh1dResult r1 = mesh_curves(m, {});
+    REQUIRE(r1.ok());
+    const Meshed p = mesh_threads(m, r1.mesh, o2);
+    CHECK(p.r2.stats.parts == 2);
+    check_face(m, p.mesh, 1);
+    check_on_sphere(m, p.mesh, 1, 1.0);
+    const MeshStats sp = mesh_stats(p.mesh, [](std::span<const Vec3>, std::span<double> h) {
+      std::fill(h.begin(), h.end(), 0.03);
+    });
+    MESSAGE(name_of(alg) << " in parts: " << format_stats(sp));
+    CHECK(sp.share_len_07_14 >= 0.95);
+    CHECK(sp.min_rho > 0.4);
+    CHECK(double(sp.triangles) == doctest::Approx(double(st.triangles)).epsilon(0.05));
   }
 }
 
@@ -428,57 +498,6 @@ TEST_CASE("mesh2d: embedded point and curve are kept as nodes and edges") {
   CHECK(shortest < 0.03);
 }
 
-namespace {
-
-// A closed polygon of n Lines around (cx, cy) in the current plane or (u,v) plane.
-int add_polygon_at(geo::Model& m, double cx, double cy, double r, int n, double lc) {
-  const int p = m.new_point_tag();
-  for (int i = 0; i < n; ++i) {
-    const double a = 2 * geo::kPi * i / n;
-    REQUIRE(m.add_point(p + i, {cx + r * std::cos(a), cy + r * std::sin(a), 0}, lc).ok());
-  }
-  const int c = m.new_curve_tag();
-  std::vector<int> cs;
-  for (int i = 0; i < n; ++i) {
-    REQUIRE(m.add_curve(c + i, geo::CurveKind::Line, {p + i, p + (i + 1) % n}).ok());
-    cs.push_back(c + i);
-  }
-  const int l = m.new_loop_tag();
-  REQUIRE(m.add_curve_loop(l, cs).ok());
-  return l;
-}
-
-// Partitioning thresholds low enough for a unit-test face of ~20k triangles.
-Mesh2dOptions partitioned(Mesh2dOptions o) {
-  o.partition.min_triangles = 8000;
-  o.partition.part_triangles = 2500;
-  return o;
-}
-
-// Meshes surface 1 partitioned with 1, 2 and 4 threads from the same 1D mesh: the same
-// nodes and triangles each time; returns the 1-thread mesh and its result.
-Meshed mesh_threads(const geo::Model& m, const ModelMesh& mesh1d, Mesh2dOptions o2) {
-  Meshed a;
-  for (int threads : {1, 2, 4}) {
-    CAPTURE(threads);
-    o2.threads = threads;
-    ModelMesh mesh = mesh1d;
-    const Mesh2dResult r = mesh_surfaces(m, mesh, o2);
-    INFO(r.error.message);
-    REQUIRE(r.ok());
-    CHECK(r.stats.partitioned_faces == 1);
-    if (threads == 1) {
-      a.mesh = std::move(mesh);
-      a.r2 = r;
-    } else {
-      check_same(a.mesh, mesh);
-      CHECK(r.stats.parts == a.r2.stats.parts);
-    }
-  }
-  return a;
-}
-
-}  // namespace
 
 // The world ocean north of 60S on a sphere of radius kR km: the outer loop is a closed
 // BSpline near the circle of latitude 60S (a circle around (u,v) = 0); every GSHHG ring
