@@ -211,3 +211,20 @@ TEST_CASE("partition: refine_partitioned on a square with holes is conforming, g
     CHECK(double(qp.triangles) == doctest::Approx(double(qw.triangles)).epsilon(0.03));
   }
 }
+
+TEST_CASE("partition: a non-positive size is an error, not a crash") {
+  std::vector<Edge> edges;
+  const TriangleStore cdt = square_with_holes(0.01, &edges);
+  for (double bad : {0.0, -1.0, std::nan("")}) {
+    CAPTURE(bad);
+    TriangleStore m = cdt;
+    const auto make = [bad]() -> PlaneSizeFn {
+      return [bad](std::span<const Vec2> p, std::span<double> h) {
+        for (std::size_t i = 0; i < p.size(); ++i) h[i] = p[i].x > 0.5 ? bad : 0.01;
+      };
+    };
+    const PartitionResult r = refine_partitioned(m, RefineOptions{}, PartRefiner::Del2d, make, PartitionOptions{}, 2);
+    CHECK_FALSE(r.ok());
+    CHECK(r.error.find("positive") != std::string::npos);
+  }
+}
