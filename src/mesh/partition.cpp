@@ -117,8 +117,8 @@ struct Coarse {
   std::uint32_t n_kept = 0;
 };
 
-// One part after refinement: its compacted store, the merged id of each of its first
-// n_init vertices (coarse vertices, then border points), its hull sides.
+// One part after refinement: its compacted store and the merged id of each of its first
+// n_init vertices (kept coarse vertices, then border points).
 struct PartOut {
   TriangleStore st;
   std::vector<std::uint32_t> global_of;
@@ -127,9 +127,9 @@ struct PartOut {
   std::string error;
 };
 
-// Triangulates part p (its coarse vertices and border points, its constrained edges and
-// the border sub-edges recovered, the outside removed by a flood fill from the part's side
-// of its boundary) and refines it.
+// Triangulates part p (its kept coarse vertices and border points, its constrained edges
+// and the border sub-edges recovered, the outside removed by a flood fill from the part's
+// side of its boundary) and refines it.
 void mesh_part(const Coarse& c, std::uint32_t p, const RefineOptions& base, PartRefiner kind,
                const PlaneSizeFn& size, PartOut& out) {
   const std::vector<std::uint32_t>& tris = c.part_tris[p];
