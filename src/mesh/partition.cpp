@@ -461,8 +461,9 @@ PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, 
     res.error = "refinement stopped at the vertex limit";
     return res;
   }
-  // Appended part by part, each part freed once copied: the arrays are reserved (not
-  // touched) up front, so the resident peak is about one mesh plus one part.
+  // Copied in waves of `threads` parts, each part on its own thread and freed once
+  // copied: the arrays are reserved up front and grown by one wave at a time, so the
+  // resident peak is about one mesh plus one wave of parts.
   TriangleStore out;
   out.xy.reserve(vbase[k]);
   for (std::uint32_t v = 0; v < c.m.num_vertices(); ++v)
@@ -473,28 +474,40 @@ PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, 
   out.side_flags.reserve(3 * tbase[k]);
   out.tri_flags.reserve(tbase[k]);
   c.m = TriangleStore{};
-  std::vector<std::uint32_t> hull;
-  for (std::uint32_t p = 0; p < k; ++p) {
-    PartOut& po = parts[p];
-    const TriangleStore& P = po.st;
-    for (std::uint32_t v = po.n_init; v < P.num_vertices(); ++v) out.xy.push_back(P.xy[v]);
-    const auto s0 = static_cast<std::uint32_t>(3 * tbase[p]);
-    for (std::uint32_t s = 0; s < P.corner.size(); ++s) {
-      const VertexId v = P.corner[s];
-      out.corner.push_back(VertexId{v.value < po.n_init ? po.global_of[v.value]
-                                                        : static_cast<std::uint32_t>(vbase[p] + v.value - po.n_init)});
-      out.side_flags.push_back(P.side_flags[s]);
-      if (P.twin[s].valid()) {
-        out.twin.push_back(Side{s0 + P.twin[s].value});
-      } else {
-        out.twin.push_back(Side{});
-        hull.push_back(s0 + s);
+  std::vector<std::vector<std::uint32_t>> hull_of(k);
+  const auto wave = static_cast<std::uint32_t>(std::max(threads, 1));
+  for (std::uint32_t w0 = 0; w0 < k; w0 += wave) {
+    const std::uint32_t w1 = std::min(k, w0 + wave);
+    out.xy.resize(vbase[w1]);
+    out.corner.resize(3 * tbase[w1]);
+    out.twin.resize(3 * tbase[w1]);
+    out.side_flags.resize(3 * tbase[w1]);
+    out.tri_flags.resize(tbase[w1], 0);
+    parallel_for_chunks(threads, w1 - w0, 1, [&](std::size_t b, std::size_t e) {
+      for (std::size_t p = w0 + b; p < w0 + e; ++p) {
+        PartOut& po = parts[p];
+        const TriangleStore& P = po.st;
+        for (std::uint32_t v = po.n_init; v < P.num_vertices(); ++v) out.xy[vbase[p] + v - po.n_init] = P.xy[v];
+        const auto s0 = static_cast<std::uint32_t>(3 * tbase[p]);
+        for (std::uint32_t x = 0; x < P.corner.size(); ++x) {
+          const VertexId v = P.corner[x];
+          out.corner[s0 + x] = VertexId{v.value < po.n_init ? po.global_of[v.value]
+                                                           : static_cast<std::uint32_t>(vbase[p] + v.value - po.n_init)};
+          out.side_flags[s0 + x] = P.side_flags[x];
+          if (P.twin[x].valid()) {
+            out.twin[s0 + x] = Side{s0 + P.twin[x].value};
+          } else {
+            out.twin[s0 + x] = Side{};
+            hull_of[p].push_back(s0 + x);
+          }
+        }
+        po = PartOut{};
       }
-    }
-    out.tri_flags.insert(out.tri_flags.end(), P.num_slots(), 0);
-    po = PartOut{};
+    });
     release_free_memory();
   }
+  std::vector<std::uint32_t> hull;
+  for (const auto& h : hull_of) hull.insert(hull.end(), h.begin(), h.end());
   struct HullSide {
     std::uint32_t lo, hi, s;
   };
