@@ -125,6 +125,13 @@ Scene build_scene(const MeshModel& m, const PictureOptions& opt) {
     }
   }
 
+  if (!sc.triangles.empty()) {
+    double sum = 0;
+    for (const Scene::Triangle& t : sc.triangles)
+      sum += norm(t.p[1] - t.p[0]) + norm(t.p[2] - t.p[1]) + norm(t.p[0] - t.p[2]);
+    if (sum / (3.0 * static_cast<double>(sc.triangles.size())) < kMinEdgePx) sc.edge_width = 0;
+  }
+
   for (std::size_t i : order) {
     const EntityMesh& e = m.entities[i];
     if (e.type != ElementType::Line2 || !saved(e)) continue;

@@ -47,7 +47,7 @@ struct Scene {
   Rgb background{0xf4, 0xf1, 0xea};
   bool draw_triangles = true;
   Rgb edge{0x3a, 0x5a, 0x78};           // triangle edges
-  double edge_width = 0.2;
+  double edge_width = 0.2;              // 0: edges not drawn (triangles too small to see them)
   std::vector<Triangle> triangles;      // a triangle across the dateline appears twice
   Rgb curve{0xb2, 0x18, 0x2b};          // boundary curves (coastlines)
   double curve_width = 1;
@@ -61,7 +61,10 @@ inline constexpr double kMaxPicturePx = 16384;
 /// The scene of `mesh` as `opt` asks: entities chosen as the MSH writers choose them (those
 /// in physical groups when there are any, unless save_all), the frame of the drawn
 /// triangles and curves (the whole longitude range at most in lon/lat), triangles across
-/// the dateline drawn on both sides, curves split where they wrap.
+/// the dateline drawn on both sides, curves split where they wrap. Triangle edges are drawn
+/// only when the triangles' mean edge is at least kMinEdgePx pixels (a dense mesh drawn
+/// small would otherwise be all edge colour); the fills still show sizes or quality.
+inline constexpr double kMinEdgePx = 3;
 Scene build_scene(const MeshModel& mesh, const PictureOptions& opt);
 
 }  // namespace sm::io

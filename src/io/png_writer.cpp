@@ -43,16 +43,23 @@ std::string png_to_string(const Scene& sc, std::string* error) {
   if (sc.draw_triangles) {
     // Each triangle is filled then outlined, in scene order, as the SVG back end
     // draws its polygons, so both pictures look alike.
-    cairo_set_line_width(cr, sc.edge_width);
+    cairo_set_line_width(cr, sc.edge_width > 0 ? sc.edge_width : 0.5);
     for (const Scene::Triangle& t : sc.triangles) {
       cairo_move_to(cr, t.p[0].x, t.p[0].y);
       cairo_line_to(cr, t.p[1].x, t.p[1].y);
       cairo_line_to(cr, t.p[2].x, t.p[2].y);
       cairo_close_path(cr);
       set_colour(cr, t.fill);
-      cairo_fill_preserve(cr);
-      set_colour(cr, sc.edge);
-      cairo_stroke(cr);
+      if (sc.edge_width > 0) {
+        cairo_fill_preserve(cr);
+        set_colour(cr, sc.edge);
+        cairo_stroke(cr);
+      } else {
+        // Tiny triangles: outlined in their own colour, so that antialiased neighbours do
+        // not let the background show through their shared edges.
+        cairo_fill_preserve(cr);
+        cairo_stroke(cr);
+      }
     }
   }
   cairo_set_line_width(cr, sc.curve_width);

@@ -21,8 +21,11 @@ std::string svg_to_string(const Scene& sc) {
       "<rect width=\"100%\" height=\"100%\" fill=\"{}\"/>\n",
       sc.width, sc.height, sc.width, sc.height, hex(sc.background));
   if (sc.draw_triangles) {
-    out += fmt::format("<g id=\"triangles\" stroke=\"{}\" stroke-width=\"{:.3f}\" stroke-linejoin=\"round\">\n",
-                       hex(sc.edge), sc.edge_width);
+    if (sc.edge_width > 0)
+      out += fmt::format("<g id=\"triangles\" stroke=\"{}\" stroke-width=\"{:.3f}\" stroke-linejoin=\"round\">\n",
+                         hex(sc.edge), sc.edge_width);
+    else
+      out += "<g id=\"triangles\" stroke=\"none\">\n";
     for (const Scene::Triangle& t : sc.triangles)
       out += fmt::format("<polygon points=\"{} {} {}\" fill=\"{}\"/>\n", pt(t.p[0]), pt(t.p[1]), pt(t.p[2]),
                          hex(t.fill));

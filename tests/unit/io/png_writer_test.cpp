@@ -144,3 +144,26 @@ TEST_CASE("png: a missing directory is a clear error and nothing is written") {
   CHECK(!save_png(m, opt, "/nonexistent-dir/x.png", &error));
   CHECK(error == "No such file or directory");   // the caller names the file
 }
+
+TEST_CASE("picture: triangle edges only where the triangles are big enough to show them") {
+  PictureOptions opt;
+  opt.view = PictureView::Plane;
+  opt.width_px = 200;
+  // 100 x 100 cells on 198 px: edges of 2-3 px, too small: fills only.
+  CHECK(build_scene(testing::grid_square(100), opt).edge_width == 0);
+  // 10 x 10 cells: 20 px edges, drawn.
+  CHECK(build_scene(testing::grid_square(10), opt).edge_width > 0);
+  // The dense picture has no edge colour and no background seams inside the mesh: every
+  // pixel is the fill colour (within the rounding of antialiased overlaps).
+  std::string error;
+  opt.colour = PictureColour::None;
+  REQUIRE(save_png(testing::grid_square(100), opt, "/tmp/sm_png_dense.png", &error));
+  const Image img = read_png("/tmp/sm_png_dense.png");
+  int fill = 0;
+  for (int y = 20; y < 180; ++y)
+    for (int x = 20; x < 180; ++x) {
+      const Rgb c = img.at(x, y);
+      fill += std::abs(c.r - 0xdf) <= 2 && std::abs(c.g - 0xe9) <= 2 && std::abs(c.b - 0xf2) <= 2;
+    }
+  CHECK(fill == 160 * 160);
+}
