@@ -44,6 +44,7 @@ void Refiner::run() {
   for (std::size_t i = 0; i < live.size(); i += 4096)
     if (!consider(std::span<const std::uint32_t>(live.data() + i, std::min<std::size_t>(4096, live.size() - i))))
       return finish();
+  std::vector<std::uint32_t> new_slot, new_vertex;
   std::uint32_t t;
   while (queue_.pop(m_, t)) {
     if (at_vertex_limit()) break;
@@ -55,6 +56,7 @@ void Refiner::run() {
     }
     inserted();
     if (!consider(ins_.created())) break;
+    maybe_sort(new_slot, new_vertex);
   }
   finish();
 }

@@ -16,6 +16,28 @@ std::string check_refine_options(const RefineOptions& opt) {
   return {};
 }
 
+void RefineQueue::renumber(const std::vector<std::uint32_t>& new_slot, std::uint32_t slots) {
+  std::vector<std::uint16_t> queued(slots, 0);
+  for (std::size_t t = 0; t < new_slot.size() && t < queued_.size(); ++t)
+    if (queued_[t] != 0 && new_slot[t] != TriId::kNone) queued[new_slot[t]] = queued_[t];
+  queued_.swap(queued);
+  for (std::vector<std::uint32_t>& b : buckets_) b.clear();
+  top_ = 0;
+  for (std::uint32_t t = 0; t < queued_.size(); ++t) {
+    if (queued_[t] == 0) continue;
+    buckets_[queued_[t] - 1].push_back(t);
+    top_ = std::max<std::uint32_t>(top_, queued_[t]);
+  }
+}
+
+bool RefineDriver::maybe_sort(std::vector<std::uint32_t>& new_slot, std::vector<std::uint32_t>& new_vertex) {
+  if (m_.num_triangles() < next_sort_) return false;
+  m_.sort_spatially(first_movable_, new_slot, new_vertex);
+  queue_.renumber(new_slot, m_.num_slots());
+  next_sort_ = m_.num_triangles() > 0x7FFFFFFFu ? 0xFFFFFFFFu : 2 * m_.num_triangles();
+  return true;
+}
+
 bool RefineDriver::sample_sizes(std::span<const std::uint32_t> tris, std::span<const VertexId> verts) {
   const std::size_t n = tris.size() + verts.size();
   pts_.resize(n);

@@ -3,6 +3,7 @@
 // size evaluation at circumcentres and the insertion bookkeeping.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -71,6 +72,11 @@ class RefineQueue {
     return false;
   }
 
+  /// Follows TriangleStore::sort_spatially (new_slot[old], kNone for dead):
+  /// stale entries go and each bucket is refilled in new slot order, so its
+  /// stack serves the triangles along the curve (backwards).
+  void renumber(const std::vector<std::uint32_t>& new_slot, std::uint32_t slots);
+
   std::uint64_t pops = 0, stale = 0;
 
  private:
@@ -93,6 +99,8 @@ class RefineDriver {
   RefineDriver(TriangleStore& m, const RefineOptions& opt, RefineResult& res)
       : m_(m), opt_(opt), res_(res), ins_(m, opt.seed, &res.stats.predicates) {
     ins_.keep_out_side = false;  // rebuilt once by finish()
+    first_movable_ = m.num_vertices();
+    next_sort_ = std::max(kFirstSort, 2 * m.num_triangles());
   }
 
   /// Sizes at the circumcentres of `tris` (pts_[i], h_[i]) then at the
@@ -106,6 +114,11 @@ class RefineDriver {
   /// Books a successful insertion: counts it and grows the work list over
   /// the slots it made.
   void inserted();
+  /// Renumbers the mesh along a space-filling curve (sort_spatially; the
+  /// input vertices keep their ids) once the triangle count has doubled
+  /// since the last time, from kFirstSort triangles on. False when nothing
+  /// was done; otherwise the caller remaps its own per-slot state.
+  bool maybe_sort(std::vector<std::uint32_t>& new_slot, std::vector<std::uint32_t>& new_vertex);
   /// Rebuilds out_side and copies the counters of the work list and the
   /// inserter into the result.
   void finish();
@@ -117,6 +130,11 @@ class RefineDriver {
   RefineQueue queue_;
   std::vector<Vec2> pts_;
   std::vector<double> h_;
+
+ private:
+  static constexpr std::uint32_t kFirstSort = 1u << 15;
+  std::uint32_t first_movable_ = 0;
+  std::uint32_t next_sort_ = kFirstSort;
 };
 
 }  // namespace sm::detail

@@ -154,6 +154,95 @@ void TriangleStore::compact() {
   for (Side& s : out_side) s = map_side(s);
 }
 
+namespace {
+
+// Position of cell (x, y) along the Hilbert curve filling a 2^16 x 2^16 grid:
+// at each level, the quadrant's rank on the curve, then the cell is turned
+// into the quadrant's frame (transposed, or reflected and transposed).
+std::uint32_t hilbert_rank(std::uint32_t x, std::uint32_t y) {
+  std::uint32_t d = 0;
+  for (std::uint32_t half = 1u << 15; half > 0; half >>= 1) {
+    const std::uint32_t rx = (x & half) ? 1 : 0, ry = (y & half) ? 1 : 0;
+    d += half * half * ((3 * rx) ^ ry);
+    if (ry == 0) {
+      if (rx == 1) x = ~x, y = ~y;
+      std::swap(x, y);
+    }
+  }
+  return d;
+}
+
+// Moves v[old] to v[map[old]] for every mapped old index (an out-of-place
+// pass, one array at a time, so the extra memory is one array).
+template <class T>
+void permute(std::vector<T>& v, const std::vector<std::uint32_t>& map, std::size_t n, std::uint32_t stride) {
+  std::vector<T> out(n * stride);
+  for (std::size_t i = 0; i < map.size(); ++i)
+    if (map[i] != TriId::kNone)
+      for (std::uint32_t e = 0; e < stride; ++e) out[std::size_t{map[i]} * stride + e] = v[i * stride + e];
+  v.swap(out);
+}
+
+}  // namespace
+
+void TriangleStore::sort_spatially(std::uint32_t first_movable, std::vector<std::uint32_t>& new_slot,
+                                   std::vector<std::uint32_t>& new_vertex) {
+  Vec2 lo{1e300, 1e300}, hi{-1e300, -1e300};
+  for (const Vec2& p : xy) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+  }
+  const double span = std::max({hi.x - lo.x, hi.y - lo.y, 1e-300});
+  const double scale = 65535.0 / span;
+  // (rank, slot) sorted by rank in three 11-bit counting passes (2048
+  // counters stay in L1). A triangle's place is its first corner's, ranked
+  // in one streaming pass over the vertices: the gather per triangle then
+  // reads 4 bytes instead of a 16-byte position.
+  const auto cell = [&](double u) { return static_cast<std::uint32_t>(std::clamp(u * scale, 0.0, 65535.0)); };
+  std::vector<std::uint32_t> rank(xy.size());
+  for (std::size_t v = 0; v < xy.size(); ++v) rank[v] = hilbert_rank(cell(xy[v].x - lo.x), cell(xy[v].y - lo.y));
+  std::vector<std::uint64_t> keys, tmp;
+  keys.reserve(num_triangles());
+  for (std::uint32_t t = 0; t < num_slots(); ++t)
+    if (!(tri_flags[t] & kDead)) keys.push_back(std::uint64_t{rank[corner[3 * t].value]} << 32 | t);
+  rank = {};
+  tmp.resize(keys.size());
+  for (int shift = 32; shift < 64; shift += 11) {
+    std::uint32_t count[2049] = {};
+    for (const std::uint64_t k : keys) ++count[((k >> shift) & 0x7FF) + 1];
+    for (std::size_t i = 1; i < 2049; ++i) count[i] += count[i - 1];
+    for (const std::uint64_t k : keys) tmp[count[(k >> shift) & 0x7FF]++] = k;
+    keys.swap(tmp);
+  }
+  const std::uint32_t n = static_cast<std::uint32_t>(keys.size());
+  new_slot.assign(num_slots(), TriId::kNone);
+  for (std::uint32_t i = 0; i < n; ++i) new_slot[static_cast<std::uint32_t>(keys[i])] = i;
+  new_vertex.assign(num_vertices(), VertexId::kNone);
+  for (std::uint32_t v = 0; v < first_movable && v < num_vertices(); ++v) new_vertex[v] = v;
+  std::uint32_t nv = std::min(first_movable, num_vertices());
+  for (const std::uint64_t k : keys) {
+    const std::uint32_t t = static_cast<std::uint32_t>(k);
+    for (std::uint32_t e = 0; e < 3; ++e) {
+      const std::uint32_t v = corner[3 * t + e].value;
+      if (new_vertex[v] == VertexId::kNone) new_vertex[v] = nv++;
+    }
+  }
+  for (std::uint32_t v = 0; v < num_vertices(); ++v)
+    if (new_vertex[v] == VertexId::kNone) new_vertex[v] = nv++;
+  keys = {};
+  tmp = {};
+  for (Side& s : twin)
+    if (s.valid()) s = Side{3 * new_slot[s.value / 3] + s.value % 3};
+  for (VertexId& v : corner) v = VertexId{new_vertex[v.value]};
+  permute(corner, new_slot, n, 3);
+  permute(twin, new_slot, n, 3);
+  permute(side_flags, new_slot, n, 3);
+  permute(tri_flags, new_slot, n, 1);
+  permute(xy, new_vertex, num_vertices(), 1);
+  free_tris.clear();
+  rebuild_out_side();
+}
+
 void TriangleStore::clear() {
   xy.clear();
   out_side.clear();

@@ -84,6 +84,14 @@ struct TriangleStore {
 
   /// Renumbers live triangles to 0..n-1 (order kept) and empties the free list.
   void compact();
+  /// Renumbers the live triangles to 0..n-1 along a Hilbert curve through
+  /// their centroids (the free list empties), and the vertices from
+  /// `first_movable` on in the order those triangles first use them (vertices
+  /// no live triangle uses keep their order, after them). Long insertion runs
+  /// then find neighbours close in memory. Fills new_slot[old] (kNone for a
+  /// dead slot) and new_vertex[old]; out_side is rebuilt.
+  void sort_spatially(std::uint32_t first_movable, std::vector<std::uint32_t>& new_slot,
+                      std::vector<std::uint32_t>& new_vertex);
   void clear();
   void reserve(std::uint32_t vertices, std::uint32_t triangles);
 };

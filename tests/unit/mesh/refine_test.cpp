@@ -111,6 +111,34 @@ TEST_CASE("refine: uniform unit square") {
   CHECK(m2.xy == m.xy);
 }
 
+TEST_CASE("refine: a run long enough to be renumbered along the curve stays constrained Delaunay") {
+  // h = 0.006: ~64k triangles, so the mesh is sorted spatially once on the
+  // way (from 32k triangles); boundary vertices keep their ids.
+  const double h = 0.006;
+  TriangleStore m;
+  const Loop sq = testing::polygon_loop(m, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, h, false);
+  std::vector<Edge> edges;
+  REQUIRE(testing::boundary_mesh(m, {sq}, &edges));
+  const std::vector<Vec2> boundary = m.xy;
+  RefineOptions opt;
+  opt.size = h;
+  const auto r = refine_del2d(m, opt);
+  REQUIRE(r.ok());
+  CHECK(m.num_triangles() > 40000);
+  check_refined(m, edges);
+  for (std::size_t v = 0; v < boundary.size(); ++v) CHECK(m.xy[v] == boundary[v]);
+  const QualityStats q = mesh_quality(m, [&](Vec2) { return h; });
+  CHECK(q.min_rho > 0.4);
+  CHECK(q.share_len_07_14 > 0.9);
+  // Deterministic through the renumbering.
+  TriangleStore m2;
+  const Loop sq2 = testing::polygon_loop(m2, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, h, false);
+  REQUIRE(testing::boundary_mesh(m2, {sq2}));
+  REQUIRE(refine_del2d(m2, opt).ok());
+  CHECK(m2.corner == m.corner);
+  CHECK(m2.xy == m.xy);
+}
+
 TEST_CASE("refine: square with circular holes and a graded size") {
   TriangleStore m;
   const Loop sq = testing::polygon_loop(m, {{0, 0}, {2, 0}, {2, 1}, {0, 1}}, 0.01, false);

@@ -2,7 +2,12 @@
 // each followed by the checkers.
 #include <doctest/doctest.h>
 
+#include <array>
+#include <random>
+#include <set>
+
 #include "mesh/check.h"
+#include "mesh/delaunay.h"
 #include "mesh/triangulation.h"
 
 using namespace sm;
@@ -128,4 +133,68 @@ TEST_CASE("triangulation: checkers catch broken invariants") {
   CHECK_FALSE(check_constraints(d, {{VertexId{2}, VertexId{3}}}).ok());
   TriangleStore bad;
   CHECK_FALSE(build_triangulation({{0, 0}, {1, 0}, {0, 1}}, {{0, 1, 2}, {0, 1, 2}}, bad));
+}
+
+TEST_CASE("triangulation: sort_spatially renumbers along the curve and keeps the mesh") {
+  TriangleStore m;
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> U(0, 1);
+  for (int i = 0; i < 3000; ++i) m.add_vertex({U(rng), U(rng)});
+  REQUIRE(delaunay(m).ok());
+  // A dead slot (an interior triangle, so the mesh stays manifold): dropped.
+  std::uint32_t hole = 0;
+  double best = 1e300;
+  for (std::uint32_t t = 0; t < m.num_slots(); ++t) {
+    const double d = norm(m.pos(m.vertex(TriId{t}, 0)) - Vec2{0.5, 0.5});
+    if (d < best) best = d, hole = t;
+  }
+  m.kill_triangle(TriId{hole});
+  m.rebuild_out_side();
+  REQUIRE(check_topology(m).ok());
+  const auto tri_set = [](const TriangleStore& s, const std::vector<Vec2>& xy) {
+    std::set<std::array<double, 6>> out;  // by position: ids change
+    for (std::uint32_t t = 0; t < s.num_slots(); ++t) {
+      if (!s.alive(TriId{t})) continue;
+      std::uint32_t e0 = 0;  // rotate to start at the lowest x for a key that ignores ids
+      for (std::uint32_t e = 1; e < 3; ++e)
+        if (xy[s.vertex(TriId{t}, e).value].x < xy[s.vertex(TriId{t}, e0).value].x) e0 = e;
+      std::array<double, 6> k{};
+      for (std::uint32_t e = 0; e < 3; ++e) {
+        const Vec2 p = xy[s.vertex(TriId{t}, (e0 + e) % 3).value];
+        k[2 * e] = p.x, k[2 * e + 1] = p.y;
+      }
+      out.insert(k);
+    }
+    return out;
+  };
+  const std::vector<Vec2> xy0 = m.xy;
+  const std::uint32_t nt = m.num_triangles();
+  const auto before = tri_set(m, m.xy);
+  // Total centroid-to-centroid distance in slot order: the curve (through
+  // first corners) shortens it.
+  const auto path = [](const TriangleStore& s) {
+    double len = 0;
+    Vec2 prev{0, 0};
+    bool first = true;
+    for (std::uint32_t t = 0; t < s.num_slots(); ++t) {
+      if (!s.alive(TriId{t})) continue;
+      const Vec2 c = (1.0 / 3) * (s.pos(s.vertex(TriId{t}, 0)) + s.pos(s.vertex(TriId{t}, 1)) + s.pos(s.vertex(TriId{t}, 2)));
+      if (!first) len += norm(c - prev);
+      prev = c, first = false;
+    }
+    return len;
+  };
+  const double path0 = path(m);
+  std::vector<std::uint32_t> new_slot, new_vertex;
+  m.sort_spatially(1000, new_slot, new_vertex);
+  INFO(check_topology(m).error);
+  REQUIRE(check_topology(m).ok());
+  CHECK(m.num_slots() == nt);
+  CHECK(m.free_tris.empty());
+  CHECK(new_slot[hole] == TriId::kNone);
+  for (std::uint32_t v = 0; v < 1000; ++v) CHECK(new_vertex[v] == v);
+  for (std::uint32_t v = 0; v < 3000; ++v) CHECK(m.xy[new_vertex[v]] == xy0[v]);
+  CHECK(tri_set(m, m.xy) == before);
+  CHECK(path(m) < 0.5 * path0);
+  CHECK(check_delaunay(m, PlanarGeometry{&m.xy}).ok());
 }
