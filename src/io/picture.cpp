@@ -92,6 +92,22 @@ Scene build_scene(const MeshModel& m, const PictureOptions& opt) {
     vmin = *lo, vmax = *hi > *lo ? *hi : *lo + 1;
   }
 
+  auto mean_edge = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    return (norm(m.xyz[b] - m.xyz[a]) + norm(m.xyz[c] - m.xyz[b]) + norm(m.xyz[a] - m.xyz[c])) / 3;
+  };
+  double log_lo = 0, log_span = 1;   // PictureColour::Size: log of the edge length range
+  if (opt.colour == PictureColour::Size) {
+    double lo = std::numeric_limits<double>::max(), hi = 0;
+    for (const EntityMesh& e : m.entities) {
+      if (e.type != ElementType::Triangle3 || !saved(e)) continue;
+      for (std::size_t k = 0; k + 2 < e.connectivity.size(); k += 3) {
+        const double l = mean_edge(e.connectivity[k], e.connectivity[k + 1], e.connectivity[k + 2]);
+        if (l > 0) lo = std::min(lo, l), hi = std::max(hi, l);
+      }
+    }
+    if (hi > 0) log_lo = std::log(lo), log_span = hi > lo ? std::log(hi / lo) : 1;
+  }
+
   if (opt.draw_triangles) {
     for (std::size_t i : order) {
       const EntityMesh& e = m.entities[i];
@@ -104,6 +120,9 @@ Scene build_scene(const MeshModel& m, const PictureOptions& opt) {
         } else if (opt.colour == PictureColour::NodeValue && opt.node_values.size() == m.xyz.size()) {
           const double v = (opt.node_values[a] + opt.node_values[b] + opt.node_values[c]) / 3;
           fill = ramp((v - vmin) / (vmax - vmin));
+        } else if (opt.colour == PictureColour::Size) {
+          const double l = mean_edge(a, b, c);
+          fill = ramp(l > 0 ? (std::log(l) - log_lo) / log_span : 0.0);
         }
         // In lon/lat a triangle across the dateline has vertices on both
         // sides: draw it shifted to either side and let the frame clip it.

@@ -18,7 +18,10 @@ enum class PictureView {
   Stereographic,  // Gmsh's PolarSphere (u, v) plane: the paper's Figure 4 view
 };
 
-enum class PictureColour { None, Quality, NodeValue };
+/// Triangle fills: plain; quality 1 - rho (blue good, red bad); a node field; or size,
+/// the triangle's mean edge length in 3D on a log scale from the smallest (blue) to the
+/// largest (red) triangle drawn, which shows a multiscale mesh's grading.
+enum class PictureColour { None, Quality, NodeValue, Size };
 
 struct PictureOptions {
   PictureView view = PictureView::LonLat;

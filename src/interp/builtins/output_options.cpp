@@ -53,7 +53,10 @@ std::string picture_options(Interpreter& in, io::PictureOptions& po) {
     po.radius = g.radius();
     break;
   }
-  po.colour = io::PictureColour::Quality;
+  const double colour = in.options().number("Mesh.PictureColour");
+  if (colour != 0 && colour != 1 && colour != 2)
+    return fmt::format("Mesh.PictureColour = {:g}: use 0 (plain), 1 (quality) or 2 (triangle size)", colour);
+  po.colour = colour == 0 ? io::PictureColour::None : colour == 1 ? io::PictureColour::Quality : io::PictureColour::Size;
   po.save_all = in.options().number("Mesh.SaveAll") != 0;
   po.width_px = in.options().number("Mesh.PictureWidth");
   if (!(po.width_px >= 16 && po.width_px <= io::kMaxPicturePx))

@@ -16,8 +16,8 @@ class Interpreter;
 std::string apply_node_coordinates(Interpreter& in, io::MeshModel& mm);
 
 /// Lon/lat view on the model's sphere (the plane as it is for a planar model), coloured
-/// by quality, Mesh.PictureWidth pixels wide, Mesh.SaveAll as for the mesh files; into
-/// `po`. Returns "" or why not (a width out of range).
+/// as Mesh.PictureColour says (quality by default, or size), Mesh.PictureWidth pixels wide,
+/// Mesh.SaveAll as for the mesh files; into `po`. Returns "" or why not (a value out of range).
 std::string picture_options(Interpreter& in, io::PictureOptions& po);
 
 }  // namespace sm::interp

@@ -167,3 +167,20 @@ TEST_CASE("picture: triangle edges only where the triangles are big enough to sh
     }
   CHECK(fill == 160 * 160);
 }
+
+TEST_CASE("picture: colouring by size on a log scale, smallest blue, largest red") {
+  // grid_square(8) with x stretched quadratically: cells grow from left to right.
+  MeshModel m = testing::grid_square(8);
+  for (Vec3& x : m.xyz) x.x = x.x * x.x * 4;
+  PictureOptions opt;
+  opt.view = PictureView::Plane;
+  opt.colour = PictureColour::Size;
+  const Scene sc = build_scene(m, opt);
+  REQUIRE(sc.triangles.size() == 128);
+  // Scene triangles follow the entity's order: cell (i, j) gives triangles 2(8j + i), +1.
+  const Rgb first = sc.triangles[0].fill, last = sc.triangles[2 * 7 + 1].fill;
+  CHECK(first.b > first.r);    // the smallest cells: blue end of the ramp
+  CHECK(last.r > last.b);      // the largest: red end
+  CHECK(first == Rgb{49, 54, 149});
+  CHECK(last == Rgb{165, 0, 38});
+}
