@@ -46,9 +46,12 @@ std::string apply_node_coordinates(Interpreter& in, io::MeshModel& mm) {
 
 std::string picture_options(Interpreter& in, io::PictureOptions& po) {
   po = {};
+  const double view = in.options().number("Mesh.PictureView");
+  if (view != 0 && view != 1)
+    return fmt::format("Mesh.PictureView = {:g}: use 0 (lon/lat) or 1 (stereographic)", view);
   po.view = io::PictureView::Plane;
   for (const auto& [tag, g] : in.kernel().model.geometries()) {
-    po.view = io::PictureView::LonLat;
+    po.view = view == 0 ? io::PictureView::LonLat : io::PictureView::Stereographic;
     po.centre = g.centre();
     po.radius = g.radius();
     break;

@@ -15,7 +15,8 @@ class Interpreter;
 /// stereographic plane) on the model's sphere; "" or why not.
 std::string apply_node_coordinates(Interpreter& in, io::MeshModel& mm);
 
-/// Lon/lat view on the model's sphere (the plane as it is for a planar model), coloured
+/// Lon/lat or stereographic view on the model's sphere as Mesh.PictureView says (the plane
+/// as it is for a planar model), coloured
 /// as Mesh.PictureColour says (quality by default, or size), Mesh.PictureWidth pixels wide,
 /// Mesh.SaveAll as for the mesh files; into `po`. Returns "" or why not (a value out of range).
 std::string picture_options(Interpreter& in, io::PictureOptions& po);
