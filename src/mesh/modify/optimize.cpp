@@ -84,7 +84,7 @@ class Optimizer {
     for (std::uint32_t t = 0; t < m_.num_slots(); ++t) {
       if (!m_.alive(TriId{t})) continue;
       const double q = tri_quality(TriId{t});
-      min_all = std::min(min_all, q);
+      min_all = std::min(min_all, std::max(q, 0.0));  // -1: flat in floating point
       if (q < opt_.threshold) bad_.push_back({q, t});
     }
     std::sort(bad_.begin(), bad_.end());
@@ -110,12 +110,12 @@ class Optimizer {
     }
     st.bad_after = static_cast<std::uint32_t>(bad_.size());
     if (!bad_.empty()) {
-      st.min_after = bad_.front().q;
+      st.min_after = std::max(bad_.front().q, 0.0);
     } else {
       // Every triangle is at or above the threshold: one scan for the exact minimum.
       double mn = 1;
       for (std::uint32_t t = 0; t < m_.num_slots(); ++t)
-        if (m_.alive(TriId{t})) mn = std::min(mn, tri_quality(TriId{t}));
+        if (m_.alive(TriId{t})) mn = std::min(mn, std::max(tri_quality(TriId{t}), 0.0));
       st.min_after = m_.num_triangles() ? mn : 0;
     }
     return st;
