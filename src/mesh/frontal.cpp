@@ -46,6 +46,8 @@ class Frontal : detail::RefineDriver {
   /// Classifies freshly sized triangles and queues those on the front.
   void classify(std::span<const std::uint32_t> tris);
   void grow_slots();
+  /// Moves the per-slot ratios and per-vertex sizes after sort_spatially.
+  void renumber(const std::vector<std::uint32_t>& new_slot, const std::vector<std::uint32_t>& new_vertex);
 
   FrontalResult& fres_;
   double limit2_ = 0;
@@ -129,6 +131,16 @@ void Frontal::classify(std::span<const std::uint32_t> tris) {
   }
 }
 
+void Frontal::renumber(const std::vector<std::uint32_t>& new_slot, const std::vector<std::uint32_t>& new_vertex) {
+  std::vector<float> ratio(m_.num_slots(), 0.0f);
+  for (std::size_t t = 0; t < new_slot.size() && t < ratio_.size(); ++t)
+    if (new_slot[t] != TriId::kNone) ratio[new_slot[t]] = ratio_[t];
+  ratio_.swap(ratio);
+  std::vector<double> vsize(vsize_.size());
+  for (std::size_t v = 0; v < vsize_.size(); ++v) vsize[new_vertex[v]] = vsize_[v];
+  vsize_.swap(vsize);
+}
+
 void Frontal::run() {
   limit2_ = opt_.radius_limit * opt_.radius_limit;
   grow_slots();
@@ -147,6 +159,7 @@ void Frontal::run() {
   // on the front; the others join it as their neighbours get resolved.
   for (const std::uint32_t t : live)
     if (!resolved(t) && front_side(t).valid()) push(t);
+  std::vector<std::uint32_t> new_slot, new_vertex;
   std::uint32_t t;
   while (queue_.pop(m_, t)) {
     const Side s = front_side(t);
@@ -191,6 +204,10 @@ void Frontal::run() {
     const VertexId v = ins_.last_vertex();
     if (!evaluate(ins_.created(), std::span<const VertexId>(&v, 1))) break;
     classify(ins_.created());
+    if (maybe_sort(new_slot, new_vertex)) {
+      renumber(new_slot, new_vertex);
+      new_slot = {}, new_vertex = {};  // 6 bytes a triangle, not needed until the next sort
+    }
   }
   finish();
 }

@@ -56,7 +56,7 @@ void Refiner::run() {
     }
     inserted();
     if (!consider(ins_.created())) break;
-    maybe_sort(new_slot, new_vertex);
+    if (maybe_sort(new_slot, new_vertex)) new_slot = {}, new_vertex = {};  // 6 bytes a triangle, not needed until the next sort
   }
   finish();
 }
