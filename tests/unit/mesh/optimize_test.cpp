@@ -162,7 +162,10 @@ TEST_CASE("optimize_quality: PolarSphere cap measured on the sphere (to_space)")
     const auto [min0, share0] = sphere_rho(m);
     OptimizeOptions opt;
     opt.to_space = testing::unit_on_sphere;
+    TriangleStore copy = m;
     const OptimizeStats st = optimize_quality(m, fixed, opt);
+    optimize_quality(copy, fixed, opt);
+    CHECK(same_bytes(copy, m));
     check_invariants(m, edges, fixed_xy);
     const auto [min1, share1] = sphere_rho(m);
     MESSAGE(std::string(frontal ? "front2d" : "del2d") << " cap: sphere rho min " << min0 << " -> " << min1 << ", > 0.9 "
