@@ -132,6 +132,7 @@ TEST_CASE("png: stereographic view and the scene shared with SVG") {
   std::string error;
   const std::string bytes = png_to_string(sc, &error);
   REQUIRE(!bytes.empty());
+  CHECK(png_to_string(build_scene(m, opt), &error) == bytes);   // byte-identical on a second run
   CHECK(be32(bytes, 16) == 300);
   CHECK(be32(bytes, 20) == static_cast<std::uint32_t>(std::lround(sc.height)));
 }
