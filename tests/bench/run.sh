@@ -7,7 +7,7 @@
 # What it runs, each case through both command lines on the same .geo, one thread
 # (`stereomesh -2 -nt 1 -algo A X.geo` and `gmsh -2 -nt 1 -algo A X.geo`), timed and its peak
 # memory taken by /usr/bin/time, both meshes measured by Gmsh's own reader
-# (/work/shared/tools/meshstats.py, python3-gmsh):
+# (../shared/tools/meshstats.py, python3-gmsh):
 #   - the unit square: del2d and front2d at h = 0.002, meshadapt at h = 0.005 (Gmsh's
 #     meshadapt takes ~250 s at 0.002);
 #   - the world ocean: GSHHG low at gamma 30 km (B-spline hulls checked, so Gmsh's splines
@@ -20,7 +20,8 @@
 # Then our stage details (bench_mesh_square, bench_mesh_world_ocean without Gmsh) and the
 # paper's examples through the stereomesh command line (wall time, peak memory, triangles
 # and quality, the paper's figures beside them).
-# Gmsh's columns are skipped with a note when gmsh is not installed.
+# Needs gmsh 4.8.4 with python3-gmsh for /usr/bin/python3 and ../shared/tools/meshstats.py
+# beside the checkout (it stops with a message otherwise).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
@@ -36,7 +37,7 @@ done
 timer=(/usr/bin/time -f "%e %U %S %M")
 [[ -x /usr/bin/time ]] || { echo "run.sh: /usr/bin/time is missing (apt-get install time)" >&2; exit 2; }
 gmsh_bin="$(command -v gmsh || true)"
-meshstats=/work/shared/tools/meshstats.py
+meshstats="$root/../shared/tools/meshstats.py"
 [[ -n "$gmsh_bin" && -x /usr/bin/python3 && -f "$meshstats" ]] ||
   { echo "run.sh: gmsh, /usr/bin/python3 (python3-gmsh) and $meshstats are needed" >&2; exit 2; }
 gmsh_note="Gmsh 4.8.4 ($gmsh_bin)"
