@@ -18,9 +18,9 @@ struct OptimizeOptions {
   /// neighbour's vertex moves (and then never below the worst of the star).
   double threshold = 0.9;
   /// Only a star (or swap pair) whose worst rho is below this may push other
-  /// triangles from above 0.9 to below it (and only for a gain of 0.05 in the worst
-  /// rho per triangle lost); above it the share of rho > 0.9 never drops. Lower it to
-  /// keep that share, raise it to lift the minimum further.
+  /// triangles from above 0.9 to below it (and only for a gain of 0.02 in the worst
+  /// rho per triangle lost, paid from triangles earlier changes lifted above 0.9, so
+  /// the share of rho > 0.9 never ends lower). Raise it to lift the minimum further.
   double sacrifice_below = 0.8;
   /// The share of rho > 0.9 may end this much below the input's (a fraction of the
   /// triangle count; 0: never lower). Sacrifices are otherwise paid only by triangles
@@ -28,7 +28,8 @@ struct OptimizeOptions {
   double max_share_loss = 0;
   /// After the rounds, triangles still below this try compound changes: an edge
   /// flipped even if that alone loses, then the quad's corners moved, kept only when
-  /// the worst rho round them rises and none drops below 0.9 (undone otherwise).
+  /// the sorted rho round them rises, the worst not lower and none dropping below 0.9
+  /// (undone otherwise).
   double compound_below = 0.85;
   /// Moves tried per vertex and round (each one a small line search).
   int smooth_iterations = 2;
