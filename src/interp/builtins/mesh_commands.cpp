@@ -177,6 +177,7 @@ std::string save_mesh(Interpreter& in, const std::string& path, std::string form
     else if (mesh_format == 10 && (ext == ".svg" || ext == ".png")) format = ext.substr(1);
     else if (mesh_format == 10 && ext == ".14") format = "fort14";
     else if (mesh_format == 10 && ext == ".gr3") format = "gr3";
+    else if (ext.empty()) return "the file name has no extension (use .msh, .vtk, .svg, .png, .14 or .gr3)";
     else return fmt::format("unknown file extension '{}' (use .msh, .vtk, .svg, .png, .14 or .gr3)", ext);
   }
   if (format == "fort14" || format == "gr3") return save_ocean_grid(in, path, format);
