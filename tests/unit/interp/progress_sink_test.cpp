@@ -3,6 +3,7 @@
 // the script sets General.Verbosity below 4.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -81,7 +82,7 @@ const char* const kSquare =
 
 }  // namespace
 
-TEST_CASE("progress: 1D one unit per curve, 2D one per face, every stage ended") {
+TEST_CASE("progress: 1D one unit per curve, then 2D, every stage ended") {
   RecordingProgress p;
   const Run r = run_with(std::string(kSquare) + "Mesh 2;\n", &p);
   INFO(r.rendered);
@@ -90,11 +91,13 @@ TEST_CASE("progress: 1D one unit per curve, 2D one per face, every stage ended")
   CHECK_FALSE(p.stray);
   std::vector<std::string> names;
   for (const Stage& s : p.stages) names.push_back(s.name), check_stage(s);
-  CHECK(names == std::vector<std::string>{"1D", "1D repair", "2D"});
-  REQUIRE(p.stages.size() == 3);
+  // 1D first; 2D reports its own units (faces today, parts of faces with threads).
+  REQUIRE(names.size() >= 3);
+  CHECK(names[0] == "1D");
+  CHECK(names[1] == "1D repair");
+  CHECK(std::find(names.begin(), names.end(), "2D") != names.end());
   CHECK(p.stages[0].total == 7);
   CHECK(p.stages[0].updates == std::vector<std::uint64_t>{1, 2, 3, 4, 5, 6, 7});
-  CHECK(p.stages[2].total == 2);
 }
 
 TEST_CASE("progress: silent below General.Verbosity 4, and without a sink") {
