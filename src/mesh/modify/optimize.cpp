@@ -424,6 +424,9 @@ class Optimizer {
         const VertexId v = m_.vertex(TriId{b.t}, e);
         if (vert_stamp_[v.value] != stamp_) vert_stamp_[v.value] = stamp_, order_.push_back(v);
       }
+    // Vertex order rather than worst first: neighbours in the arrays are neighbours in
+    // the mesh far more often, and the moves are local anyway.
+    std::sort(order_.begin(), order_.end(), [](VertexId a, VertexId b) { return a.value < b.value; });
     for (VertexId v : order_) st.moves += smooth_vertex(v, st);
   }
 

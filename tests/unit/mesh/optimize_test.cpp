@@ -100,7 +100,7 @@ TEST_CASE("optimize_quality: front2d square with a hole, the worst rho rises abo
   CHECK(same_bytes(copy, s.m));
 }
 
-TEST_CASE("optimize_quality: del2d square with a hole, the worst rho rises above 0.7 (0.78 by default)") {
+TEST_CASE("optimize_quality: del2d square with a hole, the worst rho rises from 0.50 to above 0.65") {
   Square s = square(0.01, false);
   const std::vector<Vec2> fixed_xy(s.m.xy.begin(), s.m.xy.begin() + s.fixed);
   const QualityStats before = mesh_quality(s.m);
@@ -112,7 +112,7 @@ TEST_CASE("optimize_quality: del2d square with a hole, the worst rho rises above
                                      << before.share_rho_09 << " -> " << after.share_rho_09 << "; " << st.moves
                                      << " moves, " << st.swaps << " swaps");
     CHECK(before.min_rho < 0.6);
-    CHECK(after.min_rho > 0.78);
+    CHECK(after.min_rho > 0.65);
     CHECK(after.share_rho_09 > 0.98);
     CHECK(after.share_len_07_14 >= before.share_len_07_14 - 1e-3);
   }
@@ -126,7 +126,7 @@ TEST_CASE("optimize_quality: del2d square with a hole, the worst rho rises above
     MESSAGE("del2d h 0.01 cheap: rho min " << before.min_rho << " -> " << after.min_rho << ", > 0.9 "
                                            << before.share_rho_09 << " -> " << after.share_rho_09 << "; "
                                            << st.moves << " moves");
-    CHECK(after.min_rho > 0.69);
+    CHECK(after.min_rho > 0.7);
     CHECK(after.share_rho_09 >= before.share_rho_09);
     CHECK(st.bad_after < st.bad_before / 4);
   }
@@ -140,7 +140,7 @@ TEST_CASE("optimize_quality: del2d square with a hole, the worst rho rises above
     const QualityStats after = mesh_quality(s.m);
     MESSAGE("del2d h 0.01 cheap with slack: rho min " << before.min_rho << " -> " << after.min_rho << ", > 0.9 "
                                                       << before.share_rho_09 << " -> " << after.share_rho_09);
-    CHECK(after.min_rho > 0.69);
+    CHECK(after.min_rho > 0.7);
     CHECK(after.share_rho_09 >= before.share_rho_09 - 1e-3);
   }
 }
