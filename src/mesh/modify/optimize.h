@@ -68,7 +68,7 @@ struct OptimizeStats {
 /// nothing. Then (3) triangles still below compound_below try a flip of each edge
 /// followed by two sweeps of moves of the quad's corners, undone unless the sorted
 /// qualities round them rise. The result is valid but in general no longer Delaunay.
-/// Deterministic: triangles are handled by increasing (rho, id), vertices in that order.
+/// Deterministic: triangles are handled by increasing (rho, id), vertices by id.
 OptimizeStats optimize_quality(TriangleStore& m, std::uint32_t fixed_count, const OptimizeOptions& opt = {});
 
 }  // namespace sm
