@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <mutex>
 #include <numbers>
 #include <sstream>
 
@@ -188,6 +189,12 @@ bool looks_like_lon(const NcFile& nc, int v) {
 
 LonLatGrid read_netcdf_grid(const std::filesystem::path& file, const NetcdfGridSpec& spec) {
   if (!std::filesystem::exists(file)) file_error(file, "no such file");
+  // libnetcdf is not thread-safe: its table of open files is shared, and two reads at once
+  // fail ("Not a valid ID") or crash. Every call into it is in this function, so one lock
+  // held from open to close makes reads from several threads safe; reads happen when a
+  // field is built, never while one is evaluated.
+  static std::mutex netcdf_lock;
+  const std::lock_guard<std::mutex> lock(netcdf_lock);
   NcFile nc(file);
   int zv = -1;
   if (!spec.z_var.empty()) {

@@ -297,3 +297,22 @@ TEST_CASE("field threads: the size policy from 4 threads equals the serial sizes
   std::set<double> distinct(serial.begin(), serial.end());
   CHECK(distinct.size() > 100);
 }
+
+// libnetcdf itself is not thread-safe (two reads at once fail with "Not a valid ID" or
+// crash); read_netcdf_grid serialises its calls, so grids may be read from any thread.
+TEST_CASE("field threads: netCDF grids read from 8 threads at once equal the serial reads") {
+  const std::vector<std::string> files = {
+      shared_data("bathymetry/etopo5_global_1deg.nc"), shared_data("bathymetry/etopo5_gbr_5min.nc"),
+      shared_data("bathymetry/etopo60.cdf"), shared_data("bathymetry/etopo5_nw_europe_5min.nc")};
+  std::vector<LonLatGrid> serial;
+  for (const std::string& f : files) serial.push_back(read_netcdf_grid(f, {}));
+  constexpr std::size_t kReaders = 8, kReads = 64;
+  std::vector<std::vector<double>> got(kReaders * kReads);
+  parallel_for_chunks(static_cast<int>(kReaders), got.size(), 1, [&](std::size_t k, std::size_t) {
+    got[k] = read_netcdf_grid(files[k % files.size()], {}).v;
+  });
+  for (std::size_t k = 0; k < got.size(); ++k) {
+    INFO(files[k % files.size()]);
+    CHECK(same_bits(got[k], serial[k % files.size()].v));
+  }
+}
