@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "base/check.h"
+#include "mesh/delaunay.h"
 
 namespace sm {
 
@@ -156,22 +157,6 @@ void TriangleStore::compact() {
 
 namespace {
 
-// Position of cell (x, y) along the Hilbert curve filling a 2^16 x 2^16 grid:
-// at each level, the quadrant's rank on the curve, then the cell is turned
-// into the quadrant's frame (transposed, or reflected and transposed).
-std::uint32_t hilbert_rank(std::uint32_t x, std::uint32_t y) {
-  std::uint32_t d = 0;
-  for (std::uint32_t half = 1u << 15; half > 0; half >>= 1) {
-    const std::uint32_t rx = (x & half) ? 1 : 0, ry = (y & half) ? 1 : 0;
-    d += half * half * ((3 * rx) ^ ry);
-    if (ry == 0) {
-      if (rx == 1) x = ~x, y = ~y;
-      std::swap(x, y);
-    }
-  }
-  return d;
-}
-
 // Moves v[old] to v[map[old]] for every mapped old index (an out-of-place
 // pass, one array at a time, so the extra memory is one array).
 template <class T>
@@ -192,15 +177,18 @@ void TriangleStore::sort_spatially(std::uint32_t first_movable, std::vector<std:
     lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
     hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
   }
-  const double span = std::max({hi.x - lo.x, hi.y - lo.y, 1e-300});
-  const double scale = 65535.0 / span;
+  // Halves keep the span finite for coordinates near the double range.
+  const double half_span = std::max(0.5 * hi.x - 0.5 * lo.x, 0.5 * hi.y - 0.5 * lo.y);
+  const double scale = half_span > 0 ? 65535.0 / half_span : 0.0;
   // (rank, slot) sorted by rank in three 11-bit counting passes (2048
   // counters stay in L1). A triangle's place is its first corner's, ranked
   // in one streaming pass over the vertices: the gather per triangle then
   // reads 4 bytes instead of a 16-byte position.
-  const auto cell = [&](double u) { return static_cast<std::uint32_t>(std::clamp(u * scale, 0.0, 65535.0)); };
+  const auto cell = [&](double u, double u0) {
+    return static_cast<std::uint32_t>(std::clamp((0.5 * u - 0.5 * u0) * scale, 0.0, 65535.0));
+  };
   std::vector<std::uint32_t> rank(xy.size());
-  for (std::size_t v = 0; v < xy.size(); ++v) rank[v] = hilbert_rank(cell(xy[v].x - lo.x), cell(xy[v].y - lo.y));
+  for (std::size_t v = 0; v < xy.size(); ++v) rank[v] = hilbert_index(cell(xy[v].x, lo.x), cell(xy[v].y, lo.y), 16);
   std::vector<std::uint64_t> keys, tmp;
   keys.reserve(num_triangles());
   for (std::uint32_t t = 0; t < num_slots(); ++t)
