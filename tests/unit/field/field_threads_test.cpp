@@ -1,6 +1,7 @@
 // Every field kind, and the size policy, evaluated from several threads at once (issue 7's
-// `-nt`: parts of one face refined concurrently) give the same bits as a serial evaluation.
-// Run under ThreadSanitizer (build-*-tsan, docs/fields.md "Threads") this also proves no race.
+// `-nt`: parts of one face refined concurrently) give the same bits as a serial evaluation,
+// and so do netCDF grids read from several threads. Run under ThreadSanitizer (build-*-tsan,
+// docs/fields.md "Threads") this also shows there is no race.
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -73,7 +74,7 @@ bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
 }
 
 /// One field of every kind, on real data: the GSHHG world coastline for Distance and
-/// ETOPO5 for Bathymetry and Structured. Returns the ids, one per kind.
+/// ETOPO5 for Bathymetry and Structured. Returns their ids (every kind at least once).
 std::vector<int> define_all(FieldSet& fs, std::size_t coast_points) {
   const double r = 6371e3;
   int id = 0;
