@@ -198,3 +198,23 @@ TEST_CASE("triangulation: sort_spatially renumbers along the curve and keeps the
   CHECK(path(m) < 0.5 * path0);
   CHECK(check_delaunay(m, PlanarGeometry{&m.xy}).ok());
 }
+
+TEST_CASE("triangulation: sort_spatially on an empty store, with an isolated vertex, and far from the origin") {
+  TriangleStore empty;
+  std::vector<std::uint32_t> new_slot, new_vertex;
+  empty.sort_spatially(0, new_slot, new_vertex);
+  CHECK(new_slot.empty());
+  CHECK(new_vertex.empty());
+  // Two triangles far from the origin (1e300 apart would overflow a plain
+  // span) plus a vertex no triangle uses: it goes last.
+  TriangleStore m;
+  REQUIRE(build_triangulation({{-1e300, -1e300}, {1e300, -1e300}, {1e300, 1e300}, {-1e300, 1e300}, {0, 0}},
+                              {{0, 1, 2}, {0, 2, 3}}, m));
+  m.rebuild_out_side();
+  REQUIRE(check_topology(m).ok());
+  m.sort_spatially(0, new_slot, new_vertex);
+  CHECK(check_topology(m).ok());
+  CHECK(new_vertex[4] == 4);
+  CHECK(m.xy[4] == Vec2{0, 0});
+  CHECK(m.num_triangles() == 2);
+}
