@@ -25,6 +25,19 @@ void check_refined(const TriangleStore& m, const std::vector<Edge>& edges) {
   REQUIRE(check_delaunay(m, PlanarGeometry{&m.xy}, true).ok());
 }
 
+// The unit square meshed on its boundary at h and refined by del2d.
+TriangleStore refined_square(double h, std::vector<Edge>* edges = nullptr, RefineResult* res = nullptr) {
+  TriangleStore m;
+  const Loop sq = testing::polygon_loop(m, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, h, false);
+  REQUIRE(testing::boundary_mesh(m, {sq}, edges));
+  RefineOptions opt;
+  opt.size = h;
+  const RefineResult r = refine_del2d(m, opt);
+  REQUIRE(r.ok());
+  if (res) *res = r;
+  return m;
+}
+
 }  // namespace
 
 TEST_CASE("quality: rho and eta") {
@@ -76,14 +89,9 @@ TEST_CASE("refine: the work list serves the largest bucket first, the last queue
 
 TEST_CASE("refine: uniform unit square") {
   const double h = 0.02;
-  TriangleStore m;
-  const Loop sq = testing::polygon_loop(m, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, h, false);
   std::vector<Edge> edges;
-  REQUIRE(testing::boundary_mesh(m, {sq}, &edges));
-  RefineOptions opt;
-  opt.size = h;
-  const auto r = refine_del2d(m, opt);
-  REQUIRE(r.ok());
+  RefineResult r;
+  const TriangleStore m = refined_square(h, &edges, &r);
   check_refined(m, edges);
   const QualityStats q = mesh_quality(m, [&](Vec2) { return h; });
   MESSAGE("square h=0.02: " << q.triangles << " triangles, min rho " << q.min_rho << ", mean " << q.mean_rho
@@ -96,17 +104,14 @@ TEST_CASE("refine: uniform unit square") {
       const Vec2 a = m.pos(m.vertex(TriId{t}, 0)), b = m.pos(m.vertex(TriId{t}, 1)), c = m.pos(m.vertex(TriId{t}, 2));
       area += 0.5 * cross(b - a, c - a);
       // Every triangle below the radius bound.
-      CHECK(circumradius(a, b, c) <= opt.radius_limit * h * (1 + 1e-9));
+      CHECK(circumradius(a, b, c) <= RefineOptions{}.radius_limit * h * (1 + 1e-9));
     }
   CHECK(area == doctest::Approx(1.0));
   CHECK(q.min_rho > 0.4);
   CHECK(q.share_rho_09 > 0.6);  // 62% before smoothing; Gmsh del2d (with one smoothing pass) 84%
   CHECK(q.share_len_07_14 > 0.9);
   // Deterministic: the same mesh again.
-  TriangleStore m2;
-  const Loop sq2 = testing::polygon_loop(m2, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, h, false);
-  REQUIRE(testing::boundary_mesh(m2, {sq2}));
-  REQUIRE(refine_del2d(m2, opt).ok());
+  const TriangleStore m2 = refined_square(h);
   CHECK(m2.corner == m.corner);
   CHECK(m2.xy == m.xy);
 }
@@ -115,26 +120,18 @@ TEST_CASE("refine: a run long enough to be renumbered along the curve stays cons
   // h = 0.006: ~64k triangles, so the mesh is sorted spatially once on the
   // way (from 32k triangles); boundary vertices keep their ids.
   const double h = 0.006;
-  TriangleStore m;
-  const Loop sq = testing::polygon_loop(m, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, h, false);
+  TriangleStore boundary_only;
+  testing::polygon_loop(boundary_only, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, h, false);
   std::vector<Edge> edges;
-  REQUIRE(testing::boundary_mesh(m, {sq}, &edges));
-  const std::vector<Vec2> boundary = m.xy;
-  RefineOptions opt;
-  opt.size = h;
-  const auto r = refine_del2d(m, opt);
-  REQUIRE(r.ok());
+  const TriangleStore m = refined_square(h, &edges);
   CHECK(m.num_triangles() > 40000);
   check_refined(m, edges);
-  for (std::size_t v = 0; v < boundary.size(); ++v) CHECK(m.xy[v] == boundary[v]);
+  for (std::size_t v = 0; v < boundary_only.xy.size(); ++v) CHECK(m.xy[v] == boundary_only.xy[v]);
   const QualityStats q = mesh_quality(m, [&](Vec2) { return h; });
   CHECK(q.min_rho > 0.4);
   CHECK(q.share_len_07_14 > 0.9);
   // Deterministic through the renumbering.
-  TriangleStore m2;
-  const Loop sq2 = testing::polygon_loop(m2, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, h, false);
-  REQUIRE(testing::boundary_mesh(m2, {sq2}));
-  REQUIRE(refine_del2d(m2, opt).ok());
+  const TriangleStore m2 = refined_square(h);
   CHECK(m2.corner == m.corner);
   CHECK(m2.xy == m.xy);
 }
