@@ -36,7 +36,9 @@ struct FrontalResult : RefineResult {
 /// Reconnection is Bowyer-Watson (PointInserter), so the result is
 /// constrained Delaunay. In the stereographic plane pass size_at = delta /
 /// lambda (the map is conformal, so the isotropic criterion holds there).
-/// Deterministic: ties in the front's heap go to the smaller triangle id.
+/// Deterministic. The front is served from refine_del2d's work list and the
+/// mesh is renumbered as it grows, as there (vertices present on entry keep
+/// their ids).
 FrontalResult refine_front2d(TriangleStore& m, const RefineOptions& opt);
 
 }  // namespace sm

@@ -45,8 +45,11 @@ struct RefineResult {
 /// triangles already removed, boundary edges kConstrained). Constrained
 /// edges are never split or crossed; circumcentres beyond them are skipped.
 /// The triangle served next is one of the largest R / h (to within a factor
-/// 2^(1/32)), the one queued last among those. Deterministic: the order
-/// depends only on the input and the options.
+/// 2^(1/64)), the one queued last among those. Deterministic: the order
+/// depends only on the input and the options. As the mesh grows, triangle
+/// slots and the vertices it adds are renumbered along a Hilbert curve
+/// (TriangleStore::sort_spatially); vertices present on entry keep their
+/// ids, and the free list ends up empty.
 RefineResult refine_del2d(TriangleStore& m, const RefineOptions& opt);
 
 }  // namespace sm

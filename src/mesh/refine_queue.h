@@ -22,7 +22,7 @@ std::string check_refine_options(const RefineOptions& opt);
 /// of every queued triangle costs log n cache misses per pop at 10 million
 /// triangles and serves them in an order scattered over the whole domain, so
 /// each insertion misses the cache again on the mesh arrays. Here the
-/// priority is cut into buckets of width 2^(1/16) (the float's exponent and top
+/// priority is cut into buckets of width 2^(1/32) (the float's exponent and top
 /// mantissa bits) and each bucket is a stack: the largest bucket first, and
 /// inside it the triangle queued last, which an insertion nearby has just
 /// made. Entries are bare slots; an entry is stale when its slot is no longer
@@ -33,7 +33,7 @@ std::string check_refine_options(const RefineOptions& opt);
 /// Deterministic: the order depends only on the sequence of pushes and pops.
 class RefineQueue {
  public:
-  static constexpr int kStepBits = 5;  // 16 buckets per factor 2 of R^2 / h^2
+  static constexpr int kStepBits = 5;  // 32 buckets per factor 2 of R^2 / h^2
   static constexpr std::uint32_t kBuckets = 256u << kStepBits;
 
   RefineQueue() : buckets_(kBuckets) {}
