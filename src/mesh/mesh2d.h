@@ -32,6 +32,10 @@ struct Mesh2dOptions {
   const field::SizeField* background = nullptr;  ///< Background Field, if any
   double bbox_diag = 0;      ///< Gmsh's CTX::lc; <= 0: the model's bounding-box diagonal
   int smoothing = 1;         ///< Mesh.Smoothing: Laplacian passes (meshadapt: per round)
+  /// After smoothing (Mesh.Smoothing > 0), optimize_quality (mesh/modify/optimize.h) lifts
+  /// the worst triangles: Mesh.QualityPass (stereomesh). del2d gets cheaper settings (only
+  /// triangles below 0.75), keeping its speed; front2d and meshadapt the full pass.
+  bool quality_pass = true;
   /// del2d / front2d resolve a triangle when circumradius / size <= this (measured in the
   /// plane with the size divided by the conformal factor: lambda on a PolarSphere,
   /// r cos(lat) in a Sphere's Mercator plane). 0: the algorithm's
@@ -65,6 +69,7 @@ struct Mesh2dStats {
   double seconds_boundary = 0;   // Delaunay of the boundary nodes, edge recovery, holes
   double seconds_refine = 0;
   double seconds_smooth = 0;
+  double seconds_optimize = 0;  // optimize_quality
   double seconds_output = 0;     // nodes mapped to 3D, triangles oriented
 };
 

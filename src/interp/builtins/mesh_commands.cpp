@@ -133,6 +133,7 @@ MeshFailure mesh_model(Interpreter& in, int dim) {
   opt2.background = background.get();
   opt2.bbox_diag = model_bbox_diag(k.model);
   opt2.smoothing = static_cast<int>(in.options().number("Mesh.Smoothing"));
+  opt2.quality_pass = in.options().number("Mesh.QualityPass") != 0;
   opt2.progress = progress_sink(in);
   // Threads for faces refined in parts: Mesh.MaxNumThreads2D, else General.NumThreads (0:
   // the hardware's). The mesh is the same for any count; meshadapt stays serial.
