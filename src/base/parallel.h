@@ -20,4 +20,13 @@ int resolve_thread_count(int requested);
 void parallel_for_chunks(int threads, std::size_t n, std::size_t chunk,
                          const std::function<void(std::size_t begin, std::size_t end)>& fn);
 
+/// parallel_for_chunks that also tells the calling thread how far it is: progress(done)
+/// with the number of chunks finished so far (non-decreasing), called on the calling
+/// thread only (never by a worker), after each chunk it ran itself and about every
+/// `poll_seconds` while it waits for the others; last with the final count. fn reports
+/// nothing itself, so a Progress sink needs no locking. progress must not throw.
+void parallel_for_chunks(int threads, std::size_t n, std::size_t chunk,
+                         const std::function<void(std::size_t begin, std::size_t end)>& fn,
+                         const std::function<void(std::size_t chunks_done)>& progress, double poll_seconds = 0.1);
+
 }  // namespace sm

@@ -10,6 +10,10 @@ namespace sm {
 /// A sink for progress reports. Stages call begin, then update any number of times, then
 /// end, from one thread at a time (a parallel stage reports from its coordinating thread).
 /// Implementations decide how often to draw: update may be called for every unit of work.
+/// A stage may open a nested stage for finer progress inside one of its units (begin while
+/// it is open, e.g. "2D refine" with one unit per part of a large face inside "2D" with one
+/// unit per face); update and end then apply to the nested stage until it ends, after
+/// which the outer stage continues.
 class Progress {
  public:
   virtual ~Progress() = default;

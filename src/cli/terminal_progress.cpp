@@ -24,32 +24,31 @@ double steady_seconds() {
 TerminalProgress::TerminalProgress(std::FILE* out, Style style, Clock now)
     : out_(out), style_(style), now_(now ? std::move(now) : Clock(steady_seconds)) {}
 
-TerminalProgress::~TerminalProgress() { end(); }
+TerminalProgress::~TerminalProgress() {
+  while (!open_.empty()) end();
+}
 
 TerminalProgress::Style TerminalProgress::style_for(std::FILE* out) {
   return ::isatty(::fileno(out)) ? Style::Live : Style::Lines;
 }
 
 void TerminalProgress::begin(std::string_view name, std::uint64_t total) {
-  end();
-  open_ = true;
-  name_ = name;
-  total_ = total;
-  done_ = 0;
-  start_ = last_draw_ = now_();
-  drawn_width_ = 0;
+  const double t = now_();
+  open_.push_back({std::string(name), total, 0, t});
+  last_draw_ = t;
   if (style_ == Style::Lines) {
-    if (total_ > 0) fmt::print(out_, "stereomesh: {}: start ({})\n", name_, total_);
-    else fmt::print(out_, "stereomesh: {}: start\n", name_);
+    if (total > 0) fmt::print(out_, "stereomesh: {}: start ({})\n", name, total);
+    else fmt::print(out_, "stereomesh: {}: start\n", name);
     std::fflush(out_);
   } else {
+    if (open_.size() == 1) drawn_width_ = 0;
     draw();
   }
 }
 
 void TerminalProgress::update(std::uint64_t done) {
-  if (!open_) return;
-  done_ = done;
+  if (open_.empty()) return;
+  open_.back().done = done;
   if (style_ != Style::Live) return;
   const double t = now_();
   if (t - last_draw_ < kRedrawInterval) return;
@@ -58,24 +57,36 @@ void TerminalProgress::update(std::uint64_t done) {
 }
 
 void TerminalProgress::end() {
-  if (!open_) return;
-  const double seconds = now_() - start_;
+  if (open_.empty()) return;
+  Stage& st = open_.back();
+  const double seconds = now_() - st.start;
   if (style_ == Style::Lines) {
-    fmt::print(out_, "stereomesh: {}: done in {:.3f} s\n", name_, seconds);
+    fmt::print(out_, "stereomesh: {}: done in {:.3f} s\n", st.name, seconds);
   } else {
-    if (total_ > 0) done_ = std::max(done_, total_);
+    if (st.total > 0) st.done = std::max(st.done, st.total);
     draw();
-    std::fputc('\n', out_);
+    if (open_.size() == 1) std::fputc('\n', out_);
   }
+  open_.pop_back();
+  // The outer stage's line again, without the finished nested one.
+  if (style_ == Style::Live && !open_.empty()) draw();
   std::fflush(out_);
-  open_ = false;
 }
 
 std::string TerminalProgress::live_text() const {
-  const double seconds = now_() - start_;
-  if (total_ == 0) return fmt::format("{}  {:.1f} s", name_, seconds);
-  const double pct = 100.0 * static_cast<double>(std::min(done_, total_)) / static_cast<double>(total_);
-  return fmt::format("{}  {}/{}  {:.0f}%  {:.1f} s", name_, done_, total_, pct, seconds);
+  std::string text;
+  const double t = now_();
+  for (const Stage& st : open_) {
+    if (!text.empty()) text += "  >  ";
+    const double seconds = t - st.start;
+    if (st.total == 0) {
+      text += fmt::format("{}  {:.1f} s", st.name, seconds);
+    } else {
+      const double pct = 100.0 * static_cast<double>(std::min(st.done, st.total)) / static_cast<double>(st.total);
+      text += fmt::format("{}  {}/{}  {:.0f}%  {:.1f} s", st.name, st.done, st.total, pct, seconds);
+    }
+  }
+  return text;
 }
 
 void TerminalProgress::draw() {

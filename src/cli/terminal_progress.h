@@ -1,6 +1,8 @@
 // The progress display on stderr (issue 8): on a terminal one live line per stage, redrawn
-// at most ten times a second ("2D  12/40  30%  1.2 s"); elsewhere (a log file, a pipe, CI)
-// one plain line when a stage starts and one when it ends, with its time.
+// at most ten times a second ("2D  12/40  30%  1.2 s"), a nested stage shown after its
+// outer one on the same line ("2D  0/1  0%  3.1 s  >  2D refine  5/16  31%  2.0 s");
+// elsewhere (a log file, a pipe, CI) one plain line when a stage starts and one when it
+// ends, with its time.
 #pragma once
 
 #include <cstdint>
@@ -8,6 +10,7 @@
 #include <functional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "base/progress.h"
 
@@ -23,28 +26,36 @@ class TerminalProgress final : public Progress {
   using Clock = std::function<double()>;
 
   TerminalProgress(std::FILE* out, Style style, Clock now = {});
-  ~TerminalProgress() override;   // finishes a stage left open
+  ~TerminalProgress() override;   // finishes the stages left open
   TerminalProgress(const TerminalProgress&) = delete;
   TerminalProgress& operator=(const TerminalProgress&) = delete;
 
+  /// Opens a stage; while one is open, a nested stage inside it (ended first).
   void begin(std::string_view name, std::uint64_t total) override;
+  /// Progress of the innermost open stage.
   void update(std::uint64_t done) override;
+  /// Ends the innermost open stage: the live line then shows the outer one again and
+  /// ends with a newline only when the outermost stage ends.
   void end() override;
 
   /// Live on a terminal, Lines otherwise.
   static Style style_for(std::FILE* out);
 
  private:
+  struct Stage {
+    std::string name;
+    std::uint64_t total = 0, done = 0;
+    double start = 0;
+  };
+
   void draw();
   std::string live_text() const;
 
   std::FILE* out_;
   Style style_;
   Clock now_;
-  bool open_ = false;
-  std::string name_;
-  std::uint64_t total_ = 0, done_ = 0;
-  double start_ = 0, last_draw_ = 0;
+  std::vector<Stage> open_;       // outermost first
+  double last_draw_ = 0;
   std::size_t drawn_width_ = 0;   // characters of the live line on screen
 };
 

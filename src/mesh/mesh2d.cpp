@@ -67,6 +67,21 @@ struct FacePlane {
   }
 };
 
+// What a face's target size depends on (the one definition, for the refiners and for the
+// statistics after meshing): the size policy with the background field and, with
+// Mesh.MeshSizeExtendFromBoundary, the extension of the boundary sizes into the face: the
+// recovered boundary triangulation `bg` and per vertex the mean length of its boundary
+// edges (inf: none). Outlives its FaceMesher when kept in Mesh2dResult::target_sizes.
+struct FaceSizing {
+  int tag = 0;
+  double bbox = 0;
+  field::SizePolicyOptions size;
+  const field::SizeField* background = nullptr;
+  FacePlane plane;
+  TriangleStore bg;
+  std::vector<double> bsize;
+};
+
 // Laplacian smoothing as smooth_laplacian (Jacobi passes, a move undone where it would
 // invert or flatten a triangle, then Delaunay flips) but with vertices [0, fixed_count)
 // pinned: embedded points are on no constrained edge and must not move.
@@ -142,32 +157,49 @@ class FaceMesher {
   std::vector<std::uint32_t> global_;         // local vertex -> global node
   std::vector<std::uint32_t>& local_of_;      // global node -> local vertex (shared scratch)
   TriangleStore m_;
-  // Extension of the boundary sizes into the face: the recovered boundary triangulation,
-  // per vertex the mean length of its boundary edges (inf: none).
-  TriangleStore bg_;
-  std::vector<double> bsize_;
+  // Set once the boundary is recovered (the plane and the boundary sizes are final then).
+  std::shared_ptr<FaceSizing> sizing_ = std::make_shared<FaceSizing>();
   std::atomic<std::uint64_t> size_evaluations_{0};
-  friend class PlaneSizes;
 };
 
-// The size in the face's plane (h / lambda) at batches of points: the size policy with
-// the background field and the extension from the boundary. Holds its own scratch and
-// walk hint, so each part of a partitioned face gets its own and none writes another's;
-// the face data it reads is not modified while it lives.
+// The target size at batches of points of the face's plane: the size policy with the
+// background field and the extension from the boundary (FaceSizing). Holds its own
+// scratch and walk hint, so each part of a partitioned face gets its own and none writes
+// another's; the face data it reads is not modified while it lives.
 class PlaneSizes {
  public:
-  explicit PlaneSizes(FaceMesher& f) : f_(f) {}
+  /// evaluations: counts the points evaluated (shared by the parts), may be null.
+  explicit PlaneSizes(const FaceSizing& f, std::atomic<std::uint64_t>* evaluations = nullptr)
+      : f_(f), evaluations_(evaluations) {}
+  /// h[i] = the size in the plane at p[i]: the size on the surface divided by lambda.
   void operator()(std::span<const Vec2> p, std::span<double> h);
+  /// h[i] = the size on the surface (3D lengths) at p[i].
+  void on_surface(std::span<const Vec2> p, std::span<double> h);
 
  private:
   std::optional<double> boundary_size(Vec2 p);
 
-  FaceMesher& f_;
+  const FaceSizing& f_;
+  std::atomic<std::uint64_t>* evaluations_;
   TriId hint_;
   std::uint32_t walk_turn_ = 0;
   std::vector<Vec3> pts3_;
   std::vector<double> field_;
 };
+
+// The face's target size at 3D points for the statistics: each point is taken to the
+// face's plane (radially onto a sphere first) and given PlaneSizes::on_surface there.
+SizeAt3 target_size_fn(std::shared_ptr<const FaceSizing> sizing) {
+  auto sizes = std::make_shared<PlaneSizes>(*sizing);
+  auto plane_pts = std::make_shared<std::vector<Vec2>>();
+  return [sizing, sizes, plane_pts](std::span<const Vec3> x, std::span<double> h) {
+    const FacePlane& fp = sizing->plane;
+    plane_pts->resize(x.size());
+    for (std::size_t i = 0; i < x.size(); ++i)
+      (*plane_pts)[i] = fp.geom ? fp.from_param(fp.geom->param(x[i])) : fp.to_plane(x[i]);
+    sizes->on_surface(*plane_pts, h);
+  };
+}
 
 bool FaceMesher::fail(std::string msg, std::optional<Vec3> where) {
   res_.error.surface = tag_;
@@ -329,26 +361,26 @@ std::uint32_t FaceMesher::local(std::uint32_t node) {
 // triangulation: a visibility walk from the last hit that stops at the domain's boundary
 // (the point is then clamped to the last triangle).
 std::optional<double> PlaneSizes::boundary_size(Vec2 p) {
-  const TriangleStore& bg_ = f_.bg_;
-  const std::vector<double>& bsize_ = f_.bsize_;
-  if (!hint_.valid() || !bg_.alive(hint_)) {
+  const TriangleStore& bg = f_.bg;
+  const std::vector<double>& bsize = f_.bsize;
+  if (!hint_.valid() || !bg.alive(hint_)) {
     hint_ = TriId{};
-    for (std::uint32_t t = 0; t < bg_.num_slots(); ++t)
-      if (bg_.alive(TriId{t})) {
+    for (std::uint32_t t = 0; t < bg.num_slots(); ++t)
+      if (bg.alive(TriId{t})) {
         hint_ = TriId{t};
         break;
       }
     if (!hint_.valid()) return std::nullopt;
   }
   TriId t = hint_;
-  const std::uint32_t cap = 4 * bg_.num_slots() + 16;
+  const std::uint32_t cap = 4 * bg.num_slots() + 16;
   for (std::uint32_t step = 0; step < cap; ++step) {
     bool moved = false;
     walk_turn_ = (walk_turn_ + 1) % 3;
     for (std::uint32_t k = 0; k < 3 && !moved; ++k) {
       const Side s = side_of(t, (walk_turn_ + k) % 3);
-      if (orient2d(bg_.pos(bg_.org(s)), bg_.pos(bg_.dest(s)), p) != Sign::Negative) continue;
-      const Side o = bg_.twin[s.value];
+      if (orient2d(bg.pos(bg.org(s)), bg.pos(bg.dest(s)), p) != Sign::Negative) continue;
+      const Side o = bg.twin[s.value];
       if (!o.valid()) continue;   // beyond the boundary: try another edge, else stop here
       t = tri_of(o);
       moved = true;
@@ -356,7 +388,7 @@ std::optional<double> PlaneSizes::boundary_size(Vec2 p) {
     if (!moved) break;
   }
   hint_ = t;
-  const Vec2 a = bg_.pos(bg_.vertex(t, 0)), b = bg_.pos(bg_.vertex(t, 1)), c = bg_.pos(bg_.vertex(t, 2));
+  const Vec2 a = bg.pos(bg.vertex(t, 0)), b = bg.pos(bg.vertex(t, 1)), c = bg.pos(bg.vertex(t, 2));
   const double area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
   double w[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
   if (area > 0) {
@@ -366,7 +398,7 @@ std::optional<double> PlaneSizes::boundary_size(Vec2 p) {
   }
   double sum_w = 0, sum = 0;
   for (std::uint32_t e = 0; e < 3; ++e) {
-    const double h = bsize_[bg_.vertex(t, e).value];
+    const double h = bsize[bg.vertex(t, e).value];
     const double wi = std::max(0.0, w[e]);
     if (!std::isfinite(h)) continue;
     sum_w += wi;
@@ -374,27 +406,31 @@ std::optional<double> PlaneSizes::boundary_size(Vec2 p) {
   }
   if (sum_w > 0) return sum / sum_w;
   double lo = std::numeric_limits<double>::infinity();
-  for (std::uint32_t e = 0; e < 3; ++e) lo = std::min(lo, bsize_[bg_.vertex(t, e).value]);
+  for (std::uint32_t e = 0; e < 3; ++e) lo = std::min(lo, bsize[bg.vertex(t, e).value]);
   return std::isfinite(lo) ? std::optional<double>(lo) : std::nullopt;
 }
 
-void PlaneSizes::operator()(std::span<const Vec2> p, std::span<double> h) {
-  const Mesh2dOptions& opt = f_.opt_;
+void PlaneSizes::on_surface(std::span<const Vec2> p, std::span<double> h) {
   pts3_.resize(p.size());
   field_.resize(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i) pts3_[i] = f_.plane_.to_space(p[i]);
-  if (opt.background) opt.background->eval_on(field::EntityRef{2, f_.tag_}, pts3_, field_);
+  for (std::size_t i = 0; i < p.size(); ++i) pts3_[i] = f_.plane.to_space(p[i]);
+  if (f_.background) f_.background->eval_on(field::EntityRef{2, f_.tag}, pts3_, field_);
   field::SizeQuery q;
-  q.bbox_diag = f_.bbox_;
+  q.bbox_diag = f_.bbox;
   q.entity_dim = 2;
-  const bool extend = opt.size.extend_from_boundary != 0;
+  const bool extend = f_.size.extend_from_boundary != 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    if (opt.background) q.background = field_[i];
-    double size = field::final_size(opt.size, q).size;
-    if (extend) size = field::surface_target(opt.size, size, boundary_size(p[i]));
-    h[i] = size / f_.plane_.lambda(p[i]);
+    if (f_.background) q.background = field_[i];
+    double size = field::final_size(f_.size, q).size;
+    if (extend) size = field::surface_target(f_.size, size, boundary_size(p[i]));
+    h[i] = size;
   }
-  f_.size_evaluations_.fetch_add(p.size(), std::memory_order_relaxed);
+  if (evaluations_) evaluations_->fetch_add(p.size(), std::memory_order_relaxed);
+}
+
+void PlaneSizes::operator()(std::span<const Vec2> p, std::span<double> h) {
+  on_surface(p, h);
+  for (std::size_t i = 0; i < p.size(); ++i) h[i] /= f_.plane.lambda(p[i]);
 }
 
 // del2d or front2d on the face: in one piece, or in parts (partition.h) when the estimated
@@ -408,16 +444,26 @@ bool FaceMesher::refine(const std::function<void(std::span<const Vec2>, std::spa
   if (opt_.radius_limit > 0) ro.radius_limit = opt_.radius_limit;
   else if (!frontal) ro.radius_limit = kDel2dRadiusLimit;
   // The estimate uses its own evaluator: the refiner's walk hints stay as without it.
-  PlaneSizes estimate_sizes(*this);
+  PlaneSizes estimate_sizes(*sizing_, &size_evaluations_);
   const PlaneSizeFn estimate_at = [&estimate_sizes](std::span<const Vec2> p, std::span<double> h) { estimate_sizes(p, h); };
   if (opt_.partition.min_triangles > 0 && estimate_triangles(m_, estimate_at) >= opt_.partition.min_triangles) {
     ro.size_at = nullptr;
     const auto make_size = [this]() -> PlaneSizeFn {
-      auto sizes = std::make_shared<PlaneSizes>(*this);
+      auto sizes = std::make_shared<PlaneSizes>(*sizing_, &size_evaluations_);
       return [sizes](std::span<const Vec2> p, std::span<double> h) { (*sizes)(p, h); };
     };
+    // "2D refine", nested in "2D", one unit per part: a large face is one unit of "2D"
+    // that would otherwise show nothing for seconds. Reported from this thread only.
+    bool nested = false;
+    const auto on_parts = [this, &nested](std::uint32_t done, std::uint32_t parts) {
+      if (!opt_.progress) return;
+      if (!nested) progress_begin(opt_.progress, "2D refine", parts), nested = true;
+      progress_update(opt_.progress, done);
+    };
     const PartitionResult pr = refine_partitioned(m_, ro, frontal ? PartRefiner::Frontal : PartRefiner::Del2d,
-                                                  make_size, opt_.partition, resolve_thread_count(opt_.threads));
+                                                  make_size, opt_.partition, resolve_thread_count(opt_.threads),
+                                                  on_parts);
+    if (nested) progress_end(opt_.progress);
     res_.stats.inserted += pr.stats.refine.inserted;
     res_.stats.rejected += pr.stats.refine.rejected;
     res_.stats.parts += pr.stats.parts;
@@ -493,23 +539,30 @@ bool FaceMesher::run(const geo::ModelSurface& s) {
   const DomainResult dom = remove_outside(m_, g, loops);
   if (!dom.ok()) return fail("hole removal failed: " + dom.error);
 
+  FaceSizing& sz = *sizing_;
+  sz.tag = tag_;
+  sz.bbox = bbox_;
+  sz.size = opt_.size;
+  sz.background = opt_.background;
+  sz.plane = plane_;
   if (opt_.size.extend_from_boundary != 0) {
-    bg_ = m_;
-    bsize_.assign(fixed_count, 0.0);
+    sz.bg = m_;
+    std::vector<double>& bsize = sz.bsize;
+    bsize.assign(fixed_count, 0.0);
     std::vector<std::uint32_t> count(fixed_count, 0);
     for (const Edge& e : edges) {
       const double len = norm(mesh_.nodes[global_[e.first.value]].xyz - mesh_.nodes[global_[e.second.value]].xyz);
-      bsize_[e.first.value] += len, bsize_[e.second.value] += len;
+      bsize[e.first.value] += len, bsize[e.second.value] += len;
       ++count[e.first.value], ++count[e.second.value];
     }
     for (std::uint32_t v = 0; v < fixed_count; ++v) {
-      bsize_[v] = count[v] ? bsize_[v] / count[v] : std::numeric_limits<double>::infinity();
+      bsize[v] = count[v] ? bsize[v] / count[v] : std::numeric_limits<double>::infinity();
       if (!count[v]) {
         // An embedded point with a prescribed size keeps it.
         for (const auto& [vt, node] : mesh_.vertex_node)
           if (node == global_[v]) {
             const geo::ModelVertex* mv = model_.vertex(vt);
-            if (mv && opt_.size.from_points && mv->lc < geo::kMaxLc) bsize_[v] = mv->lc * opt_.size.factor;
+            if (mv && opt_.size.from_points && mv->lc < geo::kMaxLc) bsize[v] = mv->lc * opt_.size.factor;
             break;
           }
       }
@@ -518,7 +571,7 @@ bool FaceMesher::run(const geo::ModelSurface& s) {
   res_.stats.seconds_boundary += seconds_since(t0);
 
   t0 = std::chrono::steady_clock::now();
-  PlaneSizes sizes(*this);
+  PlaneSizes sizes(*sizing_, &size_evaluations_);
   const auto size_at = [&sizes](std::span<const Vec2> p, std::span<double> h) { sizes(p, h); };
   bool smoothed = false;
   if (opt_.algorithm == Mesh2dAlgorithm::MeshAdapt) {
@@ -582,6 +635,7 @@ bool FaceMesher::run(const geo::ModelSurface& s) {
   res_.stats.triangles += sm_out.triangles.size();
   ++res_.stats.faces;
   mesh_.surfaces[tag_] = std::move(sm_out);
+  res_.target_sizes.push_back({tag_, target_size_fn(sizing_)});
   res_.stats.seconds_output += seconds_since(t0);
   return true;
 }
@@ -620,22 +674,6 @@ std::vector<StageTime> stage_times(const Mesh2dStats& s) {
           {"2D smooth", s.seconds_smooth},
           {"2D optimise", s.seconds_optimize},
           {"2D output", s.seconds_output}};
-}
-
-std::function<void(std::span<const Vec3>, std::span<double>)> surface_size_fn(const geo::Model& model,
-                                                                              const Mesh2dOptions& opt, int tag) {
-  const double bbox = model_bbox(model, opt.bbox_diag);
-  return [bbox, opt, tag](std::span<const Vec3> pts, std::span<double> h) {
-    std::vector<double> bg(pts.size());
-    if (opt.background) opt.background->eval_on(field::EntityRef{2, tag}, pts, bg);
-    field::SizeQuery q;
-    q.bbox_diag = bbox;
-    q.entity_dim = 2;
-    for (std::size_t i = 0; i < pts.size(); ++i) {
-      if (opt.background) q.background = bg[i];
-      h[i] = field::final_size(opt.size, q).size;
-    }
-  };
 }
 
 }  // namespace sm

@@ -48,7 +48,8 @@ struct Mesh2dOptions {
   int threads = 1;
   /// When and how del2d / front2d faces are refined in parts (partition.h).
   PartitionOptions partition;
-  /// Told "2D" with one unit per face; null: nobody listens.
+  /// Told "2D" with one unit per face and, inside a face refined in parts, a nested
+  /// "2D refine" with one unit per part; null: nobody listens.
   Progress* progress = nullptr;
 };
 
@@ -77,6 +78,12 @@ struct Mesh2dResult {
   Mesh2dError error;
   std::vector<std::string> warnings;
   Mesh2dStats stats;
+  /// Per meshed surface (tag order), the size its mesher aimed at, at 3D points (the
+  /// points go radially onto a sphere): the size policy with the background field and
+  /// the extension from the boundary (Mesh.MeshSizeExtendFromBoundary), as on the surface,
+  /// for mesh_stats. Valid while opt.background lives; each function keeps its own
+  /// scratch, so call it from one thread at a time.
+  std::vector<SurfaceSize> target_sizes;
   bool ok() const { return error.surface == 0; }
 };
 
@@ -93,10 +100,5 @@ std::vector<StageTime> stage_times(const Mesh2dStats& s);
 /// failing one are kept, the failing one is absent. A filling (transfinite) Surface is an
 /// error: it is not meshed yet.
 Mesh2dResult mesh_surfaces(const geo::Model& model, ModelMesh& mesh, const Mesh2dOptions& opt);
-
-/// The target size (without extension from the boundary) at 3D points of surface `tag`:
-/// the size policy with the background field, as mesh_surfaces uses it. For statistics.
-std::function<void(std::span<const Vec3>, std::span<double>)> surface_size_fn(const geo::Model& model,
-                                                                              const Mesh2dOptions& opt, int tag);
 
 }  // namespace sm

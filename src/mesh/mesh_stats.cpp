@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <utility>
 
 #include <fmt/format.h>
@@ -29,7 +30,15 @@ double quantile(const std::vector<double>& sorted, double q) {
 
 }  // namespace
 
-MeshStats mesh_stats(const ModelMesh& mesh, const SizeAt3& size) {
+namespace {
+
+using EdgeKey = std::pair<std::uint32_t, std::uint32_t>;
+
+// The statistics with size_of[k] the target size of the k-th surface in tag order (null:
+// none). Surfaces are measured one at a time, so the scratch is one surface's edges: an
+// edge is measured by the first surface that holds it; only edges on a surface's border
+// (in one of its triangles) can belong to another, so the borders seen so far are kept.
+MeshStats compute_stats(const ModelMesh& mesh, const std::vector<const SizeAt3*>& size_of) {
   MeshStats s;
   // Nodes of the triangles, as a mesh file holds them: the model points that
   // no triangle uses (B-spline control points, a sphere's centre) do not count.
@@ -38,55 +47,94 @@ MeshStats mesh_stats(const ModelMesh& mesh, const SizeAt3& size) {
     for (const auto& t : sf.triangles) used[t[0]] = used[t[1]] = used[t[2]] = 1;
   s.nodes = static_cast<std::uint64_t>(std::count(used.begin(), used.end(), 1));
   double sum = 0;
-  std::uint64_t good = 0;
+  std::uint64_t good = 0, in_range = 0;
   s.min_rho = 1;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+  std::vector<EdgeKey> edges, border, seen_border, merged;
+  std::vector<double> ratio;
+  constexpr std::size_t kBatch = 4096;
+  std::vector<Vec3> mid;
+  std::vector<double> h;
+  std::size_t index = 0;
   for (const auto& [tag, sf] : mesh.surfaces) {
+    const SizeAt3* size = index < size_of.size() ? size_of[index] : nullptr;
+    ++index;
     for (const auto& t : sf.triangles) {
       const double r = rho3(mesh.nodes[t[0]].xyz, mesh.nodes[t[1]].xyz, mesh.nodes[t[2]].xyz);
       sum += r;
       s.min_rho = std::min(s.min_rho, r);
       if (r > 0.9) ++good;
       ++s.triangles;
-      if (size)
-        for (int e = 0; e < 3; ++e) edges.push_back(std::minmax(t[e], t[(e + 1) % 3]));
+    }
+    if (!size) continue;
+    s.has_sizes = true;
+    edges.clear();
+    for (const auto& t : sf.triangles)
+      for (int e = 0; e < 3; ++e) edges.push_back(std::minmax(t[e], t[(e + 1) % 3]));
+    std::sort(edges.begin(), edges.end());
+    // Edges in one triangle only (the border), then each distinct edge once, less those
+    // an earlier surface measured.
+    border.clear();
+    std::size_t w = 0;
+    for (std::size_t r = 0; r < edges.size();) {
+      std::size_t q = r + 1;
+      while (q < edges.size() && edges[q] == edges[r]) ++q;
+      if (q - r == 1) border.push_back(edges[r]);
+      if (!std::binary_search(seen_border.begin(), seen_border.end(), edges[r])) edges[w++] = edges[r];
+      r = q;
+    }
+    edges.resize(w);
+    merged.resize(seen_border.size() + border.size());
+    std::merge(seen_border.begin(), seen_border.end(), border.begin(), border.end(), merged.begin());
+    merged.erase(std::unique(merged.begin(), merged.end()), merged.end());
+    seen_border.swap(merged);
+    for (std::size_t i = 0; i < edges.size(); i += kBatch) {
+      const std::size_t n = std::min(kBatch, edges.size() - i);
+      mid.resize(n);
+      h.resize(n);
+      for (std::size_t k = 0; k < n; ++k)
+        mid[k] = 0.5 * (mesh.nodes[edges[i + k].first].xyz + mesh.nodes[edges[i + k].second].xyz);
+      (*size)(mid, h);
+      for (std::size_t k = 0; k < n; ++k) {
+        const double len = norm(mesh.nodes[edges[i + k].first].xyz - mesh.nodes[edges[i + k].second].xyz);
+        ratio.push_back(len / h[k]);
+        if (ratio.back() >= 0.7 && ratio.back() <= 1.4) ++in_range;
+      }
     }
   }
   if (s.triangles == 0) {
     s.min_rho = 0;
+    s.has_sizes = false;
     return s;
   }
   s.mean_rho = sum / static_cast<double>(s.triangles);
   s.share_rho_09 = static_cast<double>(good) / static_cast<double>(s.triangles);
-  if (!size) return s;
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  s.edges = edges.size();
-  s.has_sizes = true;
-  std::vector<double> ratio(edges.size());
-  constexpr std::size_t kBatch = 4096;
-  std::vector<Vec3> mid;
-  std::vector<double> h;
-  std::uint64_t in_range = 0;
-  for (std::size_t i = 0; i < edges.size(); i += kBatch) {
-    const std::size_t n = std::min(kBatch, edges.size() - i);
-    mid.resize(n);
-    h.resize(n);
-    for (std::size_t k = 0; k < n; ++k)
-      mid[k] = 0.5 * (mesh.nodes[edges[i + k].first].xyz + mesh.nodes[edges[i + k].second].xyz);
-    size(mid, h);
-    for (std::size_t k = 0; k < n; ++k) {
-      const double len = norm(mesh.nodes[edges[i + k].first].xyz - mesh.nodes[edges[i + k].second].xyz);
-      ratio[i + k] = len / h[k];
-      if (ratio[i + k] >= 0.7 && ratio[i + k] <= 1.4) ++in_range;
-    }
-  }
-  s.share_len_07_14 = static_cast<double>(in_range) / static_cast<double>(edges.size());
+  if (!s.has_sizes) return s;
+  s.edges = ratio.size();
+  if (ratio.empty()) return s;
+  s.share_len_07_14 = static_cast<double>(in_range) / static_cast<double>(ratio.size());
   std::sort(ratio.begin(), ratio.end());
   s.len_median = quantile(ratio, 0.5);
   s.len_p05 = quantile(ratio, 0.05);
   s.len_p95 = quantile(ratio, 0.95);
   return s;
+}
+
+}  // namespace
+
+MeshStats mesh_stats(const ModelMesh& mesh, const SizeAt3& size) {
+  return compute_stats(mesh, std::vector<const SizeAt3*>(mesh.surfaces.size(), size ? &size : nullptr));
+}
+
+MeshStats mesh_stats(const ModelMesh& mesh, const std::vector<SurfaceSize>& sizes) {
+  std::map<int, const SizeAt3*> by_tag;
+  for (const SurfaceSize& ss : sizes)
+    if (ss.size) by_tag.emplace(ss.surface, &ss.size);
+  std::vector<const SizeAt3*> size_of;
+  for (const auto& [tag, sf] : mesh.surfaces) {
+    const auto it = by_tag.find(tag);
+    size_of.push_back(it == by_tag.end() ? nullptr : it->second);
+  }
+  return compute_stats(mesh, size_of);
 }
 
 std::string format_stats(const MeshStats& s) {

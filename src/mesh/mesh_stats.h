@@ -28,8 +28,14 @@ struct MeshStats {
   std::vector<StageTime> stages;                       // filled by the caller
 };
 
-/// Target size at 3D points (batched), e.g. mesh2d's surface_size_fn.
+/// Target size at 3D points (batched), e.g. one of Mesh2dResult::target_sizes.
 using SizeAt3 = std::function<void(std::span<const Vec3>, std::span<double>)>;
+
+/// The target size of one surface (by tag).
+struct SurfaceSize {
+  int surface = 0;
+  SizeAt3 size;
+};
 
 /// 2 r_in / r_circ of a triangle in space: 16 A^2 / ((a + b + c) a b c); 0 if degenerate.
 double rho3(Vec3 a, Vec3 b, Vec3 c);
@@ -38,6 +44,11 @@ double rho3(Vec3 a, Vec3 b, Vec3 c);
 /// triangle edge's chord length is divided by the size at its midpoint (the callback may
 /// project the midpoint onto the surface).
 MeshStats mesh_stats(const ModelMesh& mesh, const SizeAt3& size = nullptr);
+
+/// As above with a target size per surface: each distinct edge is measured against the
+/// size of the first surface (in tag order) that holds it and has an entry in `sizes`;
+/// edges of surfaces without one are left out of the length ratios (and of `edges`).
+MeshStats mesh_stats(const ModelMesh& mesh, const std::vector<SurfaceSize>& sizes);
 
 /// A few lines for stderr.
 std::string format_stats(const MeshStats& s);

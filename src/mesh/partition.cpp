@@ -368,7 +368,8 @@ std::vector<Vec2> subdivide_segment(Vec2 a, Vec2 b, const PlaneSizeFn& size) {
 
 PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, PartRefiner kind,
                                    const std::function<PlaneSizeFn()>& make_size, const PartitionOptions& opt,
-                                   int threads) {
+                                   int threads,
+                                   const std::function<void(std::uint32_t, std::uint32_t)>& on_parts) {
   PartitionResult res;
   auto t0 = std::chrono::steady_clock::now();
   const PlaneSizeFn fine = make_size();
@@ -435,12 +436,20 @@ PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, 
 
   t0 = std::chrono::steady_clock::now();
   std::vector<PartOut> parts(k);
-  parallel_for_chunks(threads, k, 1, [&](std::size_t b, std::size_t e) {
-    for (std::size_t p = b; p < e; ++p) {
-      const PlaneSizeFn size = make_size();
-      mesh_part(c, static_cast<std::uint32_t>(p), base, kind, size, parts[p]);
-    }
-  });
+  std::function<void(std::size_t)> parts_done;
+  if (on_parts) {
+    on_parts(0, k);
+    parts_done = [&](std::size_t done) { on_parts(static_cast<std::uint32_t>(done), k); };
+  }
+  parallel_for_chunks(
+      threads, k, 1,
+      [&](std::size_t b, std::size_t e) {
+        for (std::size_t p = b; p < e; ++p) {
+          const PlaneSizeFn size = make_size();
+          mesh_part(c, static_cast<std::uint32_t>(p), base, kind, size, parts[p]);
+        }
+      },
+      parts_done);
   for (std::uint32_t p = 0; p < k; ++p) {
     add_stats(res.stats.refine, parts[p].stats);
     if (!parts[p].error.empty() && res.error.empty()) res.error = fmt::format("part {}: {}", p, parts[p].error);

@@ -151,12 +151,9 @@ MeshFailure mesh_model(Interpreter& in, int dim) {
   }
   if (in.options().number("General.Verbosity") >= 2)
     for (const std::string& w : r2.warnings) std::fprintf(stderr, "stereomesh: warning: %s\n", w.c_str());
-  // Statistics against the target size of the first face (the size policy and
-  // background field are the same for every face unless a Restrict field says
-  // otherwise).
-  SizeAt3 size;
-  if (!k.model.surfaces().empty()) size = surface_size_fn(k.model, opt2, k.model.surfaces().begin()->first);
-  MeshStats st = mesh_stats(*mesh, size);
+  // Statistics against the size each face's mesher aimed at (with the extension from
+  // the boundary where it is on).
+  MeshStats st = mesh_stats(*mesh, r2.target_sizes);
   st.stages.push_back({"1D", seconds_1d});
   for (const StageTime& t : stage_times(r2.stats)) st.stages.push_back(t);
   publish_stats(in, *mesh, st);

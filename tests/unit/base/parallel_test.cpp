@@ -2,9 +2,12 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <numeric>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 using namespace sm;
@@ -43,4 +46,33 @@ TEST_CASE("parallel_for_chunks rethrows the first exception by chunk order") {
   parallel_for_chunks(2, 0, 10, f);  // nothing to do: no call
   CHECK(resolve_thread_count(3) == 3);
   CHECK(resolve_thread_count(0) >= 1);
+}
+
+TEST_CASE("parallel_for_chunks with progress: reports on the calling thread, non-decreasing, ending at the count") {
+  for (int threads : {1, 2, 4}) {
+    CAPTURE(threads);
+    std::vector<int> hits(64, 0);
+    std::vector<std::size_t> reports;
+    const std::thread::id caller = std::this_thread::get_id();
+    bool other_thread = false;
+    parallel_for_chunks(
+        threads, hits.size(), 1,
+        [&](std::size_t b, std::size_t e) {
+          // Slow chunks, so the caller also reports while it waits for the others.
+          std::this_thread::sleep_for(std::chrono::milliseconds(2));
+          for (std::size_t i = b; i < e; ++i) ++hits[i];
+        },
+        [&](std::size_t done) {
+          other_thread = other_thread || std::this_thread::get_id() != caller;
+          reports.push_back(done);
+        },
+        0.001);
+    CHECK(std::accumulate(hits.begin(), hits.end(), 0) == 64);
+    CHECK_FALSE(other_thread);
+    REQUIRE(!reports.empty());
+    CHECK(std::is_sorted(reports.begin(), reports.end()));
+    CHECK(std::adjacent_find(reports.begin(), reports.end()) == reports.end());   // each count once
+    CHECK(reports.back() == 64);
+    if (threads == 1) CHECK(reports.size() == 64);
+  }
 }

@@ -110,3 +110,49 @@ TEST_CASE("progress: files are not terminals") {
   CHECK(TerminalProgress::style_for(f) == TerminalProgress::Style::Lines);
   std::fclose(f);
 }
+
+TEST_CASE("progress: a nested stage, in plain lines and on a live line") {
+  std::FILE* f = std::tmpfile();
+  REQUIRE(f);
+  double t = 0;
+  {
+    TerminalProgress p(f, TerminalProgress::Style::Lines, [&] { return t; });
+    p.begin("2D", 2);
+    p.update(1);
+    p.begin("2D refine", 4);
+    for (int i = 1; i <= 4; ++i) t += 0.5, p.update(i);
+    p.end();
+    t += 1;
+    p.update(2);
+    p.end();
+  }
+  CHECK(contents(f) ==
+        "stereomesh: 2D: start (2)\n"
+        "stereomesh: 2D refine: start (4)\n"
+        "stereomesh: 2D refine: done in 2.000 s\n"
+        "stereomesh: 2D: done in 3.000 s\n");
+  std::fclose(f);
+
+  f = std::tmpfile();
+  REQUIRE(f);
+  t = 0;
+  {
+    TerminalProgress p(f, TerminalProgress::Style::Live, [&] { return t; });
+    p.begin("2D", 1);
+    t = 1;
+    p.begin("2D refine", 4);
+    t = 1.5, p.update(2);
+    p.end();
+    // Left open: the destructor ends the stages still open.
+  }
+  const std::string s = contents(f);
+  // Back to the outer stage alone: padded over the longer nested line.
+  const std::string longest = "2D  0/1  0%  1.5 s  >  2D refine  4/4  100%  0.5 s", outer = "2D  0/1  0%  1.5 s";
+  CHECK(s == "\r2D  0/1  0%  0.0 s"
+             "\r2D  0/1  0%  1.0 s  >  2D refine  0/4  0%  0.0 s"
+             "\r2D  0/1  0%  1.5 s  >  2D refine  2/4  50%  0.5 s"
+             "\r" + longest + "\r" + outer + std::string(longest.size() - outer.size(), ' ') +
+                 "\r2D  1/1  100%  1.5 s\n");
+  CHECK(count(s, "\n") == 1);
+  std::fclose(f);
+}

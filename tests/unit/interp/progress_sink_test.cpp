@@ -28,22 +28,21 @@ class RecordingProgress final : public Progress {
   bool nested = false;   // begin while a stage was open
   bool stray = false;    // update or end with no stage open
   void begin(std::string_view name, std::uint64_t total) override {
-    nested = nested || open_;
+    nested = nested || !open_.empty();
     stages.push_back({std::string(name), total, {}, false});
-    open_ = true;
+    open_.push_back(stages.size() - 1);
   }
   void update(std::uint64_t done) override {
-    if (!open_) stray = true;
-    else stages.back().updates.push_back(done);
+    if (open_.empty()) stray = true;
+    else stages[open_.back()].updates.push_back(done);
   }
   void end() override {
-    if (!open_) stray = true;
-    else stages.back().ended = true;
-    open_ = false;
+    if (open_.empty()) stray = true;
+    else stages[open_.back()].ended = true, open_.pop_back();
   }
 
  private:
-  bool open_ = false;
+  std::vector<std::size_t> open_;   // open stages, innermost last
 };
 
 struct Run {
@@ -98,6 +97,35 @@ TEST_CASE("progress: 1D one unit per curve, then 2D, every stage ended") {
   CHECK(std::find(names.begin(), names.end(), "2D") != names.end());
   CHECK(p.stages[0].total == 7);
   CHECK(p.stages[0].updates == std::vector<std::uint64_t>{1, 2, 3, 4, 5, 6, 7});
+}
+
+TEST_CASE("progress: a face refined in parts nests '2D refine' inside '2D', one unit per part") {
+  // lc 0.003 on the unit square: about 250k triangles, above the 200k at which a face is
+  // refined in parts.
+  RecordingProgress p;
+  const Run r = run_with(
+      "Point(1) = {0, 0, 0, 0.003}; Point(2) = {1, 0, 0, 0.003};\n"
+      "Point(3) = {1, 1, 0, 0.003}; Point(4) = {0, 1, 0, 0.003};\n"
+      "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};\n"
+      "Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};\n"
+      "General.NumThreads = 2;\n"
+      "Mesh 2;\n",
+      &p);
+  INFO(r.rendered);
+  REQUIRE(r.ok);
+  CHECK_FALSE(p.stray);
+  CHECK(p.nested);
+  std::size_t at = p.stages.size();
+  for (std::size_t i = 0; i < p.stages.size(); ++i) {
+    check_stage(p.stages[i]);
+    if (p.stages[i].name == "2D refine") at = i;
+  }
+  REQUIRE(at < p.stages.size());
+  REQUIRE(at > 0);
+  CHECK(p.stages[at - 1].name == "2D");
+  // The parts: the power of two nearest 250k / 131072, at least 2.
+  CHECK(p.stages[at].total >= 2);
+  CHECK(p.stages[at].updates.front() == 0);
 }
 
 TEST_CASE("progress: silent below General.Verbosity 4, and without a sink") {

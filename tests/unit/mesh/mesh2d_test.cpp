@@ -10,6 +10,7 @@
 #include <map>
 #include <memory>
 #include <set>
+#include <thread>
 #include <string>
 #include <utility>
 #include <vector>
@@ -862,5 +863,112 @@ TEST_CASE("mesh2d: a PolarSphere cap with islands refined in parts, the same for
     CHECK(st.share_rho_09 > rho09_floor(alg));
     CHECK(st.share_rho_09 > sw.share_rho_09 - 0.02);
     CHECK(st.share_len_07_14 >= 0.95);
+  }
+}
+
+TEST_CASE("mesh2d: statistics against the target sizes the mesher aimed at (extension from the boundary)") {
+  // A square with lc 0.03 at its points: Gmsh's extension from the boundary (on by
+  // default) sets the size inside, the size policy alone would say the model's size.
+  geo::Model m;
+  const int outer = add_square(m, 0, 0, 1, 1, 0.03, true);
+  REQUIRE(m.add_plane_surface(1, {outer}).ok());
+  const Meshed a = mesh_model(m, {}, {});
+  REQUIRE(a.r2.target_sizes.size() == 1);
+  CHECK(a.r2.target_sizes[0].surface == 1);
+  const MeshStats st = mesh_stats(a.mesh, a.r2.target_sizes);
+  const MeshStats uniform = mesh_stats(a.mesh, [](std::span<const Vec3>, std::span<double> h) {
+    std::fill(h.begin(), h.end(), 0.03);
+  });
+  MESSAGE(format_stats(st));
+  CHECK(st.len_median == doctest::Approx(1).epsilon(0.1));
+  CHECK(st.share_len_07_14 >= 0.95);
+  CHECK(st.edges == uniform.edges);
+  // The boundary edges are about 0.03 long, so the extended size is about that and the
+  // figures are those of the uniform size to within 3%.
+  CHECK(st.len_median == doctest::Approx(uniform.len_median).epsilon(0.03));
+  // Without the extension the target is the policy's alone, here Mesh.MeshSizeMax 0.05
+  // (points' sizes off): the edges aim at it and read ~1 against it.
+  Mesh2dOptions o2;
+  o2.size.extend_from_boundary = 0;
+  o2.size.from_points = false;
+  o2.size.max = 0.05;
+  const Meshed b = mesh_model(m, {}, o2);
+  const MeshStats sb = mesh_stats(b.mesh, b.r2.target_sizes);
+  CHECK(sb.len_median == doctest::Approx(1).epsilon(0.15));
+}
+
+namespace {
+
+// Records stages and their nesting, and the threads that call it.
+class NestingProgress final : public Progress {
+ public:
+  struct Stage {
+    std::string name;
+    std::uint64_t total = 0;
+    std::size_t depth = 0;
+    std::vector<std::uint64_t> updates;
+    bool ended = false;
+  };
+  std::vector<Stage> stages;
+  std::vector<std::size_t> open;   // indices into stages
+  bool stray = false, other_thread = false;
+  std::thread::id caller = std::this_thread::get_id();
+
+  void begin(std::string_view name, std::uint64_t total) override {
+    seen();
+    stages.push_back({std::string(name), total, open.size(), {}, false});
+    open.push_back(stages.size() - 1);
+  }
+  void update(std::uint64_t done) override {
+    seen();
+    if (open.empty()) stray = true;
+    else stages[open.back()].updates.push_back(done);
+  }
+  void end() override {
+    seen();
+    if (open.empty()) stray = true;
+    else stages[open.back()].ended = true, open.pop_back();
+  }
+
+ private:
+  void seen() { other_thread = other_thread || std::this_thread::get_id() != caller; }
+};
+
+}  // namespace
+
+TEST_CASE("mesh2d: a face refined in parts reports a nested '2D refine' stage, one unit per part") {
+  geo::Model m;
+  const int outer = add_square(m, 0, 0, 1, 1, 0.01, true);
+  REQUIRE(m.add_plane_surface(1, {outer}).ok());
+  const int small = add_square(m, 2, 0, 2.1, 0.1, 0.05, true);
+  REQUIRE(m.add_plane_surface(2, {small}).ok());
+  Mesh1dResult r1 = mesh_curves(m, {});
+  REQUIRE(r1.ok());
+  for (int threads : {1, 2}) {
+    CAPTURE(threads);
+    NestingProgress p;
+    Mesh2dOptions o2 = partitioned({});
+    o2.threads = threads;
+    o2.progress = &p;
+    ModelMesh mesh = r1.mesh;
+    const Mesh2dResult r = mesh_surfaces(m, mesh, o2);
+    REQUIRE(r.ok());
+    REQUIRE(r.stats.partitioned_faces == 1);   // the small face is refined in one piece
+    CHECK_FALSE(p.stray);
+    CHECK_FALSE(p.other_thread);
+    CHECK(p.open.empty());
+    REQUIRE(p.stages.size() == 2);
+    CHECK(p.stages[0].name == "2D");
+    CHECK(p.stages[0].depth == 0);
+    CHECK(p.stages[0].updates == std::vector<std::uint64_t>{1, 2});
+    const NestingProgress::Stage& nested = p.stages[1];
+    CHECK(nested.name == "2D refine");
+    CHECK(nested.depth == 1);
+    CHECK(nested.ended);
+    CHECK(nested.total == r.stats.parts);
+    REQUIRE(!nested.updates.empty());
+    CHECK(nested.updates.front() == 0);
+    CHECK(nested.updates.back() == r.stats.parts);
+    CHECK(std::is_sorted(nested.updates.begin(), nested.updates.end()));
   }
 }

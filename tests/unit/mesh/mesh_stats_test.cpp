@@ -74,3 +74,34 @@ TEST_CASE("mesh_stats: an empty mesh") {
   CHECK(s.min_rho == 0);
   CHECK(stats_json(s).find("\"triangles\": 0") != std::string::npos);
 }
+
+TEST_CASE("mesh_stats: a target size per surface, shared edges measured once by the first") {
+  ModelMesh m = small_mesh();
+  // Surface 3 shares the square's edge b-c with surface 1 and adds one triangle.
+  const std::uint32_t x = m.add_node({2, 0.5, 0});
+  SurfaceMesh sf;
+  sf.tag = 3;
+  sf.triangles = {{1, x, 2}};
+  m.surfaces[3] = sf;
+  const auto uniform = [](double size) {
+    return [size](std::span<const Vec3>, std::span<double> h) { std::fill(h.begin(), h.end(), size); };
+  };
+  // Surface 1: size 1; surface 2: size 0.5 (its three unit edges read 2); surface 3: size
+  // 1000, but its edge b-c belongs to surface 1 first (ratio 1), so only its two new edges
+  // (length sqrt(1.25)) read ~0.001.
+  const MeshStats s = mesh_stats(m, std::vector<SurfaceSize>{{3, uniform(1000)}, {1, uniform(1)}, {2, uniform(0.5)}});
+  REQUIRE(s.has_sizes);
+  CHECK(s.edges == 10);
+  // Sorted ratios: 0.0011 x 2, 1 x 4, 1.414, 2 x 3.
+  CHECK(s.len_median == doctest::Approx(1));
+  CHECK(s.len_p05 == doctest::Approx(0.001 * std::sqrt(1.25)));
+  CHECK(s.len_p95 == doctest::Approx(2));
+  CHECK(s.share_len_07_14 == doctest::Approx(4.0 / 10));
+  // A surface without an entry is left out of the ratios but not of the quality.
+  const MeshStats part = mesh_stats(m, std::vector<SurfaceSize>{{1, uniform(1)}});
+  CHECK(part.triangles == 4);
+  CHECK(part.edges == 5);
+  CHECK(part.len_median == doctest::Approx(1));
+  const MeshStats none = mesh_stats(m, std::vector<SurfaceSize>{});
+  CHECK_FALSE(none.has_sizes);
+}
