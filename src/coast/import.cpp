@@ -32,8 +32,8 @@ const char* describe(RepairKind k) {
     case RepairKind::MergedIslands: return "islands merged across a strait narrower than the accuracy";
     case RepairKind::NarrowStrait: return "strait narrower than the accuracy kept open";
     case RepairKind::OutsideWater: return "island outside every water surface dropped";
-    case RepairKind::SplineHull: return "original points put back where two spline spans could cross";
-    case RepairKind::SplineMayCross: return "the B-splines may cross here (span hulls overlap on the source data)";
+    case RepairKind::SplineHull: return "original points put back where the B-splines crossed or touched";
+    case RepairKind::SplineMayCross: return "the B-splines cross or touch here on the source data";
   }
   return "?";
 }

@@ -32,11 +32,10 @@ struct ImportOptions {
   /// in which case the two islands are merged across the strait.
   double strait_factor = 1.0;
   bool close_straits = false;
-  /// Refine the control polygons until no two B-spline span hulls overlap (the curves
-  /// built through the control points cannot cross), as far as the source data allows.
-  /// Off by default: the hull condition is sufficient, not necessary, and costs many
-  /// points (gb_ireland_f at 15 km: 863 -> 3,718 control points; docs/coastlines.md).
-  bool check_splines = false;
+  /// Put original points back where the B-splines built through the control points cross
+  /// or come within 1e-3 gamma of each other (or of themselves), as far as the source data
+  /// allows (spline_check.h: precise test by Bezier subdivision; docs/coastlines.md 6).
+  bool check_splines = true;
   int max_repair_rounds = 64;
   RegionOptions region_options;
   /// Reports stage "coastline" with one unit per pipeline step (levels, cleaning,
@@ -74,8 +73,8 @@ enum class RepairKind {
   MergedIslands,  // two islands joined across a strait narrower than the accuracy
   NarrowStrait,   // a strait narrower than strait_factor * gamma, left open
   OutsideWater,   // island outside every outer loop (for instance inland in a region), dropped
-  SplineHull,     // original points put back where two B-spline span hulls overlapped
-  SplineMayCross, // span hulls still overlap on the source data: the splines may cross there
+  SplineHull,     // original points put back where two B-spline curves crossed or touched
+  SplineMayCross, // the B-splines still cross or touch on the source data
 };
 
 struct RepairEntry {

@@ -294,41 +294,61 @@ bool unite_island_with_coast(std::vector<WorkCurve>& curves, WorkLoop& island, c
   return true;
 }
 
-// One pass of the spline-hull check on intersection-free polygons. Puts original points
-// back on the control segments around overlapping span hulls; returns true when nothing
-// was put back (done), after logging the overlaps left on source data.
+// Two pieces of B-spline closer than this fraction of gamma count as meeting: far below
+// anything a mesh of size gamma resolves, far above rounding.
+constexpr double kSplineTolerance = 1e-3;
+
+// One pass of the spline check on intersection-free polygons. Puts original points back on
+// the control segments around spans whose curves cross (or come within the tolerance);
+// returns true when nothing was put back (done), after logging the places left on source
+// data.
 bool spline_pass(std::vector<WorkCurve>& curves, const std::vector<WorkLoop>& loops,
                  const std::vector<std::vector<Vec2>>& polys, const std::vector<std::vector<LoopVertexRef>>& refs,
-                 std::size_t round, std::vector<RepairEntry>& log) {
+                 std::size_t round, double radius, std::vector<RepairEntry>& log) {
   std::vector<std::vector<std::uint32_t>> starts(loops.size());
+  std::vector<std::vector<double>> tol(loops.size());
   std::vector<SplineLoop> sl(loops.size());
   for (std::size_t l = 0; l < loops.size(); ++l) {
     const auto& r = refs[l];
-    for (std::uint32_t i = 0; i < r.size(); ++i)
+    for (std::uint32_t i = 0; i < r.size(); ++i) {
       if (i == 0 || r[i].curve != r[i - 1].curve) starts[l].push_back(i);
+      // gamma in metres to (u,v): divided by the conformal factor 2R / (1 + |uv|^2).
+      const WorkCurve& c = curves[r[i].curve];
+      const Vec2 uv = polys[l][i];
+      tol[l].push_back(kSplineTolerance * c.gamma[c.keep[r[i].k]] * (1.0 + norm2(uv)) / (2.0 * radius));
+    }
     sl[l].pts = polys[l];
     sl[l].piece_start = starts[l];
     sl[l].periodic = loops[l].curves.size() == 1 && !loops[l].dead && curves[loops[l].curves[0]].periodic;
+    sl[l].tol = tol[l];
   }
-  const std::vector<HullOverlap> over = find_hull_overlaps(sl);
+  const std::vector<HullOverlap> over = find_spline_crossings(sl);
   if (over.empty()) return true;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> inserts;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> inserts, splits;   // (curve, full index)
   std::vector<std::uint32_t> idx;
   std::vector<const HullOverlap*> stuck;
   for (const HullOverlap& o : over) {
     bool any = false;
-    for (const auto& [l, s] : {std::pair{o.loop_a, o.seg_a}, std::pair{o.loop_b, o.seg_b}}) {
+    const std::size_t first_split = splits.size();
+    for (const auto& [l, s] : {std::pair{o.loop_a, o.seg_a}, std::pair{o.loop_b, o.seg_b}}) {   // inserts are made unique
       const auto n = static_cast<std::uint32_t>(polys[l].size());
       for (std::uint32_t d : {n - 1, 0u, 1u}) {   // the span's control segments s-1, s, s+1
-        const LoopVertexRef r = refs[l][(s + d) % n];
-        refine_indices(curves[r.curve], r.k, round, idx);
+        const std::uint32_t v = (s + d) % n;
+        const LoopVertexRef r = refs[l][v];
+        const WorkCurve& c = curves[r.curve];
+        refine_indices(c, r.k, round, idx);
         for (std::uint32_t i : idx) inserts.push_back({r.curve, i});
         any |= !idx.empty();
+        // An original segment longer than a few tolerances can still be split at its
+        // middle: the spline follows its control polygon closer with every point added.
+        const bool has_segment = c.periodic || r.k + 1 < c.keep.size();
+        if (idx.empty() && has_segment && norm(polys[l][(v + 1) % n] - polys[l][v]) > 4.0 * tol[l][v])
+          splits.push_back({r.curve, c.keep[r.k]});
       }
     }
-    if (!any) stuck.push_back(&o);
+    if (!any && splits.size() == first_split) stuck.push_back(&o);
   }
-  if (inserts.empty()) {
+  if (inserts.empty() && splits.empty()) {
     // One warning per pair of loops.
     std::uint32_t la = 0xFFFFFFFFu, lb = 0xFFFFFFFFu;
     for (const HullOverlap* o : stuck) {
@@ -340,6 +360,7 @@ bool spline_pass(std::vector<WorkCurve>& curves, const std::vector<WorkLoop>& lo
     }
     return true;
   }
+  // Points put back first (full indices unchanged), then the splits, which renumber.
   std::sort(inserts.begin(), inserts.end());
   inserts.erase(std::unique(inserts.begin(), inserts.end()), inserts.end());
   for (std::size_t i = 0; i < inserts.size();) {
@@ -350,6 +371,26 @@ bool spline_pass(std::vector<WorkCurve>& curves, const std::vector<WorkLoop>& lo
     std::sort(c.keep.begin(), c.keep.end());
     c.keep.erase(std::unique(c.keep.begin(), c.keep.end()), c.keep.end());
     log.push_back({RepairKind::SplineHull, c.record, c.id, c.full[inserts[i].second], static_cast<double>(j - i)});
+    i = j;
+  }
+  std::sort(splits.begin(), splits.end());
+  splits.erase(std::unique(splits.begin(), splits.end()), splits.end());
+  for (std::size_t i = splits.size(); i > 0;) {
+    const std::uint32_t ci = splits[i - 1].first;
+    WorkCurve& c = curves[ci];
+    std::size_t j = i;
+    while (j > 0 && splits[j - 1].first == ci) {   // from the last index down: earlier ones stay valid
+      const std::uint32_t a = splits[--j].second;
+      const auto n = static_cast<std::uint32_t>(c.full.size());
+      const std::uint32_t b = (a + 1) % n;
+      const Vec2 uv = 0.5 * (c.uv[a] + c.uv[b]);
+      c.full.insert(c.full.begin() + a + 1, uv_to_lonlat(uv));
+      c.uv.insert(c.uv.begin() + a + 1, uv);
+      c.gamma.insert(c.gamma.begin() + a + 1, std::min(c.gamma[a], c.gamma[b]));
+      for (std::uint32_t& k : c.keep) k += k > a ? 1 : 0;
+      c.keep.insert(std::upper_bound(c.keep.begin(), c.keep.end(), a), a + 1);
+    }
+    log.push_back({RepairKind::SplineHull, c.record, c.id, c.full[splits[j].second + 1], static_cast<double>(i - j)});
     i = j;
   }
   return false;
@@ -409,7 +450,7 @@ Result<std::size_t> repair_loops(std::vector<WorkCurve>& curves, std::vector<Wor
     for (const SegmentHit& h : hits) dirty[h.loop_a] = dirty[h.loop_b] = 1;
     if (hits.empty()) {
       if (!opt.check_splines || static_cast<int>(round) >= opt.max_rounds ||
-          spline_pass(curves, loops, polys, refs, round, log))
+          spline_pass(curves, loops, polys, refs, round, opt.radius, log))
         break;
       std::fill(dirty.begin(), dirty.end(), 1);
       continue;   // points were put back: check the polygons again

@@ -35,9 +35,9 @@ struct RepairOptions {
   double radius = geo::kEarthRadius;
   double strait_factor = 1.0;
   bool close_straits = false;
-  /// Also refine where the convex hulls of two B-spline spans overlap (spline_check.h);
-  /// overlaps left on original data are reported as SplineMayCross.
-  bool check_splines = false;
+  /// Also refine where the B-spline curves cross or touch (find_spline_crossings); places
+  /// left on original data are reported as SplineMayCross.
+  bool check_splines = true;
 };
 
 /// The (u,v) polygon of a loop (first point not repeated) and, per vertex, the curve and

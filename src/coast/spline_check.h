@@ -1,8 +1,9 @@
 // Consistency of the cubic B-splines drawn through the control polygons (paper section
 // 2.2: a B-spline stays in the convex hulls of its consecutive control points). A span of a
 // uniform cubic B-spline lies in the convex hull of its 4 control points; where the hulls
-// of two spans that share no control point overlap, the curves there may cross even though
-// the control polygons do not (thin islands, narrow straits: shared/data/README.md).
+// of two spans overlap, the curves there may cross even though the control polygons do not
+// (thin islands, narrow straits: shared/data/README.md). find_spline_crossings decides it:
+// Bezier form of each span, de Casteljau halving while the hulls overlap.
 #pragma once
 
 #include <cstdint>
@@ -19,6 +20,10 @@ struct SplineLoop {
   std::span<const Vec2> pts;            // first point not repeated
   std::span<const std::uint32_t> piece_start;   // for pieces: first control point of each piece
   bool periodic = true;
+  /// Per control point: the size (in the points' units) below which two pieces of curve
+  /// whose hulls still overlap count as meeting (find_spline_crossings). Empty: 1e-7 of
+  /// the loop's extent.
+  std::span<const double> tol{};
 };
 
 /// Two spans whose hulls overlap. A span is named by the control-polygon segment it
@@ -31,5 +36,16 @@ struct HullOverlap {
 /// All overlapping pairs of span hulls that share no control point, found through a grid
 /// on the hulls' boxes; separation is decided exactly (orient2d, separating edges).
 std::vector<HullOverlap> find_hull_overlaps(std::span<const SplineLoop> loops);
+
+/// Where the B-spline curves Gmsh draws through the loops (geo/curve_bspline.h: the uniform
+/// cubic on a surface geometry; periodic loops wrap, pieces have their end points tripled)
+/// cross, touch, or come closer than the tolerance: two spans (seg_a, seg_b as in
+/// HullOverlap: the loop segment a span follows) or one span with itself (a loop in a
+/// tight bend: seg_a == seg_b). Candidate pairs from a grid on the spans' boxes; each is
+/// decided by halving both cubic Bezier spans (de Casteljau) while their control hulls
+/// overlap (exact orient2d), down to the tolerance. Consecutive spans, which meet at their
+/// joint, are separate when the directions from the joint to their control points span
+/// disjoint angles. Sorted, each pair once.
+std::vector<HullOverlap> find_spline_crossings(std::span<const SplineLoop> loops);
 
 }  // namespace sm::coast

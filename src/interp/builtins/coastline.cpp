@@ -54,7 +54,7 @@ constexpr CoastOption kOptions[] = {
     {"CurveType", OptType::String, false, "\"BSpline\" (default) or \"Line\""},
     {"MinStraitsFactor", OptType::Number, false, "straits narrower than factor * gamma are reported (default 1)"},
     {"CloseStraits", OptType::Number, false, "1: merge islands across such straits (default 0: keep them open)"},
-    {"CheckSplines", OptType::Number, false, "1: refine until no two B-spline span hulls overlap"},
+    {"CheckSplines", OptType::Number, false, "1 (default): put points back until no two B-splines cross; 0: off"},
     {"Coordinate", OptType::String, true, "lonlat, lonlat_degrees (default), utm or cartesian"},
     {"UTMZone", OptType::Number, true, "UTM zone of utm coordinates"},
     {"UTMEquatorialRadius", OptType::Number, true, "ellipsoid of utm coordinates (m)"},
@@ -288,7 +288,7 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
   io.min_area_km2 = number_option(d, "MinArea", 0);
   io.strait_factor = number_option(d, "MinStraitsFactor", io.strait_factor);
   io.close_straits = number_option(d, "CloseStraits", 0) != 0;
-  io.check_splines = number_option(d, "CheckSplines", 0) != 0;
+  io.check_splines = number_option(d, "CheckSplines", 1) != 0;
   io.progress = progress_sink(in);
   coast::Loops2Options l2;
   if (const Value* v = option(d, "Coordinate")) l2.coordinate = *coast::parse_loops2_coordinate(v->strs().front());
