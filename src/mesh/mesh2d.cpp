@@ -37,6 +37,10 @@ constexpr std::uint32_t kNoLocal = 0xFFFFFFFFu;
 // and 95.4% in range (Gmsh: 91.5%).
 constexpr double kDel2dRadiusLimit = 0.73;
 
+// A face refined in one piece gets its own progress stage from this estimated size on
+// (smaller ones refine in well under a tenth of a second).
+constexpr std::uint64_t kNestedProgressTriangles = 65536;
+
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -444,9 +448,17 @@ bool FaceMesher::refine(const std::function<void(std::span<const Vec2>, std::spa
   if (opt_.radius_limit > 0) ro.radius_limit = opt_.radius_limit;
   else if (!frontal) ro.radius_limit = kDel2dRadiusLimit;
   // The estimate uses its own evaluator: the refiner's walk hints stay as without it.
-  PlaneSizes estimate_sizes(*sizing_, &size_evaluations_);
-  const PlaneSizeFn estimate_at = [&estimate_sizes](std::span<const Vec2> p, std::span<double> h) { estimate_sizes(p, h); };
-  if (opt_.partition.min_triangles > 0 && estimate_triangles(m_, estimate_at) >= opt_.partition.min_triangles) {
+  // Without partitioning it is made only for the progress display, and not counted.
+  const bool partitioning = opt_.partition.min_triangles > 0;
+  std::uint64_t estimate = 0;
+  if (partitioning || opt_.progress) {
+    PlaneSizes estimate_sizes(*sizing_, partitioning ? &size_evaluations_ : nullptr);
+    const PlaneSizeFn estimate_at = [&estimate_sizes](std::span<const Vec2> p, std::span<double> h) {
+      estimate_sizes(p, h);
+    };
+    estimate = estimate_triangles(m_, estimate_at);
+  }
+  if (partitioning && estimate >= opt_.partition.min_triangles) {
     ro.size_at = nullptr;
     const auto make_size = [this]() -> PlaneSizeFn {
       auto sizes = std::make_shared<PlaneSizes>(*sizing_, &size_evaluations_);
@@ -474,9 +486,22 @@ bool FaceMesher::refine(const std::function<void(std::span<const Vec2>, std::spa
     if (opt_.smoothing <= 0) make_delaunay(m_);
     return true;
   }
+  // A large face in one piece: "2D refine" nested in "2D" in estimated triangles, told
+  // by the refiner every 64k insertions (done is capped at the estimate, which it may pass).
+  const bool nested = opt_.progress && estimate >= kNestedProgressTriangles;
+  if (nested) {
+    progress_begin(opt_.progress, "2D refine", estimate);
+    ro.on_progress = [this, estimate](std::uint64_t triangles) {
+      progress_update(opt_.progress, std::min(triangles, estimate));
+    };
+  }
   RefineResult rf;
   if (frontal) rf = refine_front2d(m_, ro);
   else rf = refine_del2d(m_, ro);
+  if (nested) {
+    if (rf.ok()) progress_update(opt_.progress, estimate);
+    progress_end(opt_.progress);
+  }
   res_.stats.inserted += rf.stats.inserted;
   res_.stats.rejected += rf.stats.rejected;
   if (!rf.ok()) return fail("refinement failed: " + rf.error);

@@ -49,7 +49,9 @@ struct Mesh2dOptions {
   /// When and how del2d / front2d faces are refined in parts (partition.h).
   PartitionOptions partition;
   /// Told "2D" with one unit per face and, inside a face refined in parts, a nested
-  /// "2D refine" with one unit per part; null: nobody listens.
+  /// "2D refine" with one unit per part; a del2d / front2d face refined in one piece and
+  /// estimated at 65536 triangles or more gets a nested "2D refine" in estimated
+  /// triangles instead. Reported from the calling thread only; null: nobody listens.
   Progress* progress = nullptr;
 };
 

@@ -25,6 +25,10 @@ struct RefineOptions {
   double radius_limit = 0.7071067811865476;
   std::uint32_t max_vertices = 0xFFFFFFF0u;
   std::uint64_t seed = 0x2545F4914F6CDD1Dull;  // walk edge order
+  /// Called every `progress_every` insertions with the live triangle count, on the
+  /// refining thread (for a progress display; must not touch the mesh). Null: never.
+  std::function<void(std::uint64_t triangles)> on_progress;
+  std::uint64_t progress_every = 65536;
 };
 
 struct RefineStats {

@@ -78,6 +78,8 @@ bool RefineDriver::at_vertex_limit() {
 void RefineDriver::inserted() {
   ++res_.stats.inserted;
   queue_.grow(m_.num_slots());
+  if (opt_.on_progress && res_.stats.inserted % std::max<std::uint64_t>(opt_.progress_every, 1) == 0)
+    opt_.on_progress(m_.num_triangles());
 }
 
 void RefineDriver::finish() {

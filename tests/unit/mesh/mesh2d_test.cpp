@@ -972,3 +972,39 @@ TEST_CASE("mesh2d: a face refined in parts reports a nested '2D refine' stage, o
     CHECK(std::is_sorted(nested.updates.begin(), nested.updates.end()));
   }
 }
+
+TEST_CASE("mesh2d: a large face refined in one piece reports '2D refine' in estimated triangles") {
+  // lc 0.003 on the unit square (~250k triangles), partitioning off: one piece, the
+  // refiner telling the triangle count every 64k insertions.
+  geo::Model m;
+  const int outer = add_square(m, 0, 0, 1, 1, 0.003, true);
+  REQUIRE(m.add_plane_surface(1, {outer}).ok());
+  Mesh1dResult r1 = mesh_curves(m, {});
+  REQUIRE(r1.ok());
+  NestingProgress p;
+  Mesh2dOptions o2;
+  o2.partition.min_triangles = 0;
+  o2.progress = &p;
+  ModelMesh mesh = r1.mesh;
+  const Mesh2dResult r = mesh_surfaces(m, mesh, o2);
+  REQUIRE(r.ok());
+  CHECK(r.stats.partitioned_faces == 0);
+  CHECK_FALSE(p.stray);
+  CHECK_FALSE(p.other_thread);
+  REQUIRE(p.stages.size() == 2);
+  const NestingProgress::Stage& nested = p.stages[1];
+  CHECK(nested.name == "2D refine");
+  CHECK(nested.depth == 1);
+  CHECK(nested.ended);
+  CHECK(double(nested.total) == doctest::Approx(double(r.stats.triangles)).epsilon(0.1));
+  // At least one report from inside the refiner, then the end.
+  REQUIRE(nested.updates.size() >= 2);
+  CHECK(nested.updates.front() >= 65536);
+  CHECK(nested.updates.back() == nested.total);
+  CHECK(std::is_sorted(nested.updates.begin(), nested.updates.end()));
+  // The mesh does not depend on who listens.
+  ModelMesh quiet = r1.mesh;
+  o2.progress = nullptr;
+  REQUIRE(mesh_surfaces(m, quiet, o2).ok());
+  check_same(mesh, quiet);
+}
