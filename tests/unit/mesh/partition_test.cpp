@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <thread>
 #include <vector>
 
 #include "mesh/check.h"
@@ -186,8 +187,21 @@ TEST_CASE("partition: refine_partitioned on a square with holes is conforming, g
     CHECK(double(m1.num_triangles()) == doctest::Approx(double(r1.stats.estimate)).epsilon(0.15));
     for (int threads : {2, 4}) {
       TriangleStore mt = cdt;
-      REQUIRE(refine_partitioned(mt, ro, kind, make, po, threads).ok());
+      // Progress: (0, K) first, then parts done up to (K, K), all on this thread.
+      std::vector<std::pair<std::uint32_t, std::uint32_t>> calls;
+      bool other_thread = false;
+      const std::thread::id caller = std::this_thread::get_id();
+      const auto on_parts = [&](std::uint32_t done, std::uint32_t parts) {
+        other_thread = other_thread || std::this_thread::get_id() != caller;
+        calls.emplace_back(done, parts);
+      };
+      REQUIRE(refine_partitioned(mt, ro, kind, make, po, threads, on_parts).ok());
       CHECK(same(m1, mt));
+      CHECK_FALSE(other_thread);
+      REQUIRE(calls.size() >= 2);
+      CHECK(calls.front() == std::pair<std::uint32_t, std::uint32_t>{0, r1.stats.parts});
+      CHECK(calls.back() == std::pair<std::uint32_t, std::uint32_t>{r1.stats.parts, r1.stats.parts});
+      CHECK(std::is_sorted(calls.begin(), calls.end()));
     }
     // Quality after one smoothing pass, against the unpartitioned refinement.
     TriangleStore whole = cdt;
