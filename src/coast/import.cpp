@@ -302,7 +302,19 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
     return e;
   }
   rep.repair_rounds = *rounds;
+  const std::size_t merged_before = rep.count(RepairKind::MergedIslands);
   handle_straits(curves, loops, ro, rep.repair);
+  // A merge across a strait adds two bridge edges, checked against the polygons only: the
+  // curves through them are checked again.
+  if (opt.check_splines && rep.count(RepairKind::MergedIslands) > merged_before) {
+    auto again = repair_loops(curves, loops, ro, rep.repair);
+    if (!again) {
+      CoastError e = again.error();
+      e.file = data.file;
+      return e;
+    }
+    rep.repair_rounds += *again;
+  }
 
   // Orientation once the loops are simple (the extreme-vertex test needs a simple
   // polygon): water on the left, outer loops counter-clockwise, holes clockwise.

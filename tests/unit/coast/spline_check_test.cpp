@@ -223,9 +223,10 @@ TEST_CASE("spline crossings: real coastlines import with no two B-splines crossi
     bool crossed_before;   // the unchecked import's splines cross
   };
   // world_c at 30 km: an island at the Amazon mouth (50.57W 1.56S) whose spline crosses the
-  // mainland's through original points; at 50 km the Chilean fjords (72.9W 51.7S).
+  // mainland's through original points; at 50 km the Chilean fjords (72.9W 51.7S);
+  // gb_ireland_f at 1 km: the Severn (2.36W 51.79N), where Gmsh's 1D mesh then crosses.
   for (const Case& k : {Case{"world_c.txt", 30000, true}, Case{"world_c.txt", 50000, true},
-                        Case{"gb_ireland_f.txt", 15000, false}}) {
+                        Case{"gb_ireland_f.txt", 15000, false}, Case{"gb_ireland_f.txt", 1000, true}}) {
     CAPTURE(k.file);
     CAPTURE(k.gamma);
     auto data = read_lonlat_text(std::string(SM_SHARED_DATA) + "/gshhg/" + k.file);
