@@ -299,12 +299,12 @@ bool unite_island_with_coast(std::vector<WorkCurve>& curves, WorkLoop& island, c
 constexpr double kSplineTolerance = 1e-3;
 
 // One pass of the spline check on intersection-free polygons. Puts original points back on
-// the control segments around spans whose curves cross (or come within the tolerance);
-// returns true when nothing was put back (done), after logging the places left on source
-// data.
+// the control segments around spans whose curves cross (or come within the tolerance), or
+// splits those segments; returns true when nothing was changed (done), after logging the
+// places left. With !may_fix (no repair rounds left) every place found is logged.
 bool spline_pass(std::vector<WorkCurve>& curves, const std::vector<WorkLoop>& loops,
                  const std::vector<std::vector<Vec2>>& polys, const std::vector<std::vector<LoopVertexRef>>& refs,
-                 std::size_t round, double radius, std::vector<RepairEntry>& log) {
+                 std::size_t round, double radius, bool may_fix, std::vector<RepairEntry>& log) {
   std::vector<std::vector<std::uint32_t>> starts(loops.size());
   std::vector<std::vector<double>> tol(loops.size());
   std::vector<SplineLoop> sl(loops.size());
@@ -328,6 +328,10 @@ bool spline_pass(std::vector<WorkCurve>& curves, const std::vector<WorkLoop>& lo
   std::vector<std::uint32_t> idx;
   std::vector<const HullOverlap*> stuck;
   for (const HullOverlap& o : over) {
+    if (!may_fix) {
+      stuck.push_back(&o);
+      continue;
+    }
     bool any = false;
     const std::size_t first_split = splits.size();
     for (const auto& [l, s] : {std::pair{o.loop_a, o.seg_a}, std::pair{o.loop_b, o.seg_b}}) {   // inserts are made unique
@@ -449,8 +453,8 @@ Result<std::size_t> repair_loops(std::vector<WorkCurve>& curves, std::vector<Wor
     std::fill(dirty.begin(), dirty.end(), 0);
     for (const SegmentHit& h : hits) dirty[h.loop_a] = dirty[h.loop_b] = 1;
     if (hits.empty()) {
-      if (!opt.check_splines || static_cast<int>(round) >= opt.max_rounds ||
-          spline_pass(curves, loops, polys, refs, round, opt.radius, log))
+      if (!opt.check_splines ||
+          spline_pass(curves, loops, polys, refs, round, opt.radius, static_cast<int>(round) < opt.max_rounds, log))
         break;
       std::fill(dirty.begin(), dirty.end(), 1);
       continue;   // points were put back: check the polygons again

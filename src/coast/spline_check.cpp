@@ -99,7 +99,6 @@ bool share_points(const Hull& a, const Hull& b) {
   return false;
 }
 
-
 // Calls f(i, j) once for each pair of items whose boxes (members lo, hi) overlap, in a
 // deterministic order: a uniform grid (cell about twice the median box extent), the
 // (cell, item) list sorted, a pair visited in the cell of the lower corner of the overlap.
@@ -144,8 +143,7 @@ void for_box_pairs(const std::vector<Item>& items, F&& f) {
   }
 }
 
-// ---- precise test on the curves ----
-
+// The precise test works on the spans as cubic Beziers.
 using Bez = std::array<Vec2, 4>;
 
 // Each helper returns its input point when the points it combines are equal, so the tripled

@@ -209,6 +209,16 @@ TEST_CASE("spline crossings: the import repairs a pair on original points by spl
   CHECK(checked->report.points_out > plain->report.points_out);
   CHECK(checked->report.points_out < plain->report.points_out + 40);
   CHECK(sampled_crossings(*checked).empty());
+  // No repair rounds allowed: the crossing is reported with its place, not hidden.
+  o.max_repair_rounds = 0;
+  auto unrepaired = build_coast_model(c, o);
+  REQUIRE(unrepaired.ok());
+  REQUIRE(unrepaired->report.count(RepairKind::SplineMayCross) == 1);
+  for (const RepairEntry& e : unrepaired->report.repair)
+    if (e.kind == RepairKind::SplineMayCross) {
+      CHECK(e.where.lon == doctest::Approx(10.0 + 0.02 * 7.0 / 3).epsilon(1e-3));
+      CHECK(e.where.lat == doctest::Approx(50.0 + 0.02 * 7.0 / 3).epsilon(1e-3));
+    }
 }
 
 TEST_CASE("spline crossings: real coastlines import with no two B-splines crossing") {
