@@ -2,9 +2,11 @@
 // write_gshhs_plugin_geo), so that stereomesh and Gmsh 4.8.4 mesh the same input in
 // tests/bench/run.sh. The import is the one of the Coastline statement (the file's own -R box
 // closes a regional coast), with a constant accuracy gamma.
-// Usage: bench_coast_geo FILE GAMMA_M OUT.geo [--check-splines]
-//   FILE: a name under shared/data/gshhg (GMT lon/lat text); --check-splines: refine the
-//   control polygons until no two B-spline span hulls overlap (Gmsh's splines cannot cross).
+// Usage: bench_coast_geo FILE GAMMA_M OUT.geo [--no-check-splines]
+//   FILE: a name under shared/data/gshhg (GMT lon/lat text). The import's B-spline crossing
+//   check is on, as in the Coastline statement (CheckSplines = 1): points are put back until
+//   no two splines cross, so Gmsh's 1D mesh of the same splines cannot stop on a crossing;
+//   --no-check-splines turns it off.
 // The shore Distance field's PointsList is rewritten without the points of the region box's
 // closing curves (open sea, not coast), as stdlib's ShoreProximity drops them with ShoreBox.
 #include <cstdio>
@@ -62,15 +64,15 @@ std::string coast_points_list(const sm::coast::CoastModel& m) {
 
 int main(int argc, char** argv) {
   if (argc < 4) {
-    std::fprintf(stderr, "usage: bench_coast_geo FILE GAMMA_M OUT.geo [--check-splines]\n");
+    std::fprintf(stderr, "usage: bench_coast_geo FILE GAMMA_M OUT.geo [--no-check-splines]\n");
     return 2;
   }
   const std::string path = std::string(SM_SHARED_DATA) + "/gshhg/" + argv[1];
   const double gamma = std::atof(argv[2]);
   if (!(gamma > 0)) return std::fprintf(stderr, "bench_coast_geo: GAMMA_M must be positive\n"), 2;
-  bool check_splines = false;
+  bool check_splines = sm::coast::ImportOptions{}.check_splines;
   for (int i = 4; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--check-splines") == 0) check_splines = true;
+    if (std::strcmp(argv[i], "--no-check-splines") == 0) check_splines = false;
     else return std::fprintf(stderr, "bench_coast_geo: unknown option %s\n", argv[i]), 2;
   }
   auto coast = sm::coast::read_coastline(sm::coast::CoastFormat::LonLatText, path);
@@ -90,7 +92,7 @@ int main(int argc, char** argv) {
   std::size_t points = 0;
   for (const auto& c : cm->curves) points += c.uv.size();
   std::printf("%s at gamma %g m%s: %zu curves, %zu loops, %zu surfaces, %zu control points\n", argv[1], gamma,
-              check_splines ? " (spline hulls checked)" : "", cm->curves.size(), cm->loops.size(),
+              check_splines ? " (spline crossings checked)" : " (splines not checked)", cm->curves.size(), cm->loops.size(),
               cm->surfaces.size(), points);
   return 0;
 }
