@@ -31,6 +31,9 @@ for name in gb_ireland north_sea_scheldt great_barrier_reef; do
 done
 mesh world_ocean -setnumber Mesh.PictureWidth 1000 -o "$tmp/world_ocean.png"
 small "$tmp/world_ocean.png" "$here/world_ocean.png"
+# The same mesh coloured by triangle size (Mesh.PictureColour 2: mean edge length, log scale).
+mesh world_ocean -setnumber Mesh.PictureWidth 1000 -setnumber Mesh.PictureColour 2 -o "$tmp/world_ocean_size.png"
+small "$tmp/world_ocean_size.png" "$here/world_ocean_size.png"
 
 # Views stereomesh does not draw: a close-up of the world ocean (Bering Sea, a part of the
 # paper's Figure 10) and the Arctic from above the pole (Figure 11).
