@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "cli/args.h"
+#include "cli/diagnostic_stream.h"
 #include "cli/terminal_progress.h"
 #include "field/registry.h"
 #include "interp/builtins/mesh_commands.h"
@@ -38,16 +39,6 @@ std::vector<std::string> split_path_list(const char* s) {
     }
   }
   return out;
-}
-
-void print_diagnostics(const sm::lang::Diagnostics& diags, bool warnings) {
-  std::fflush(stdout);
-  for (const auto& d : diags.all()) {
-    if (d.severity == sm::lang::Severity::Warning && !warnings) continue;
-    // Diagnostics of the command line itself (no script location) say who speaks.
-    if (!d.range.valid()) std::fputs("stereomesh: ", stderr);
-    std::fputs(diags.render(d).c_str(), stderr);
-  }
 }
 
 int run(const std::vector<std::string>& argv) {
@@ -96,6 +87,11 @@ int run(const std::vector<std::string>& argv) {
   sm::cli::TerminalProgress progress(stderr, sm::cli::TerminalProgress::style_for(stderr));
   sm::interp::Interpreter interp(sources, diags, std::cout, settings);
   interp.kernel().progress = &progress;
+  // Diagnostics are printed when the statement that caused them ends (flushing Printf's
+  // stdout first and clearing the live progress line), not after the whole run.
+  sm::cli::DiagnosticStream stream(diags, stderr, std::cout, stdout, &progress);
+  stream.set_show_warnings([&interp] { return interp.options().number("General.Verbosity") >= 2; });
+  diags.set_sink(stream);
   for (const auto& [name, v] : a.option_numbers) {
     if (auto err = interp.options().set_number(name, v); !err.empty()) {
       std::fprintf(stderr, "stereomesh: %s\n", err.c_str());
@@ -117,6 +113,7 @@ int run(const std::vector<std::string>& argv) {
   bool errors = false;
   for (const std::string& f : a.files) {
     if (interp.run_file(f) == sm::interp::RunStatus::Errors) errors = true;
+    diags.emit_pending();
     if (errors || interp.stopped()) break;
   }
   // -1: mesh what the scripts built and write it (unless they failed or called Exit).
@@ -135,9 +132,8 @@ int run(const std::vector<std::string>& argv) {
       errors = true;
     }
   }
+  diags.emit_pending();
   std::cout.flush();
-  const bool warnings = interp.options().number("General.Verbosity") >= 2;
-  print_diagnostics(diags, warnings);
   if (interp.exit_request() >= 0) return interp.exit_request();
   if (errors) return kExitScriptError;
   return kExitOk;

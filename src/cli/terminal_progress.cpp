@@ -73,6 +73,17 @@ void TerminalProgress::end() {
   std::fflush(out_);
 }
 
+void TerminalProgress::suspend() {
+  if (style_ != Style::Live || open_.empty() || drawn_width_ == 0) return;
+  fmt::print(out_, "\r{}\r", std::string(drawn_width_, ' '));
+  drawn_width_ = 0;
+  std::fflush(out_);
+}
+
+void TerminalProgress::resume() {
+  if (style_ == Style::Live && !open_.empty()) draw();
+}
+
 std::string TerminalProgress::live_text() const {
   std::string text;
   const double t = now_();

@@ -38,6 +38,12 @@ class TerminalProgress final : public Progress {
   /// ends with a newline only when the outermost stage ends.
   void end() override;
 
+  /// Other text for the same stream (a diagnostic) goes between suspend() and resume():
+  /// on a terminal the live line is cleared first and redrawn after, so the text starts
+  /// on a clean line and the progress stays below it. No-ops in the Lines style.
+  void suspend();
+  void resume();
+
   /// Live on a terminal, Lines otherwise.
   static Style style_for(std::FILE* out);
 

@@ -85,6 +85,9 @@ RunStatus Interpreter::run_loaded(FileId file) {
 Interpreter::Flow Interpreter::run_statements(const StmtList& stmts) {
   for (StmtId s : stmts) {
     const Flow f = exec(s);
+    // Warnings reach the user when the statement that caused them ends, in order with
+    // Printf output and the progress display, not after the whole run.
+    diags_.emit_pending();
     if (f == Flow::Stop) return f;
     if (f == Flow::Return)
       fail_fmt(ast_.stmt(s).range, Diag::ReturnOutsideMacro);
@@ -95,6 +98,7 @@ Interpreter::Flow Interpreter::run_statements(const StmtList& stmts) {
 Interpreter::Flow Interpreter::exec_block(const StmtList& body) {
   for (StmtId s : body) {
     const Flow f = exec(s);
+    diags_.emit_pending();
     if (f != Flow::Normal) return f;
   }
   return Flow::Normal;

@@ -183,4 +183,16 @@ std::size_t Diagnostics::flush(std::FILE* out) {
   return n;
 }
 
+std::size_t Diagnostics::emit_pending() {
+  if (!sink_) return 0;
+  const std::size_t n = diags_.size() - flushed_;
+  // The cursor moves before the call so that a sink which reports (or throws) does not
+  // see the same diagnostic twice.
+  while (flushed_ < diags_.size()) {
+    const Diagnostic d = diags_[flushed_++];  // a copy: the sink may report more
+    sink_(d);
+  }
+  return n;
+}
+
 }  // namespace sm::lang

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -102,6 +103,15 @@ class Diagnostics {
   /// stream them while a script runs) and returns how many were written.
   std::size_t flush(std::FILE* out);
 
+  /// Where diagnostics go as a run reports them (the CLI prints them on stderr), while
+  /// all() keeps collecting them for the --test driver and the unit tests.
+  using Sink = std::function<void(const Diagnostic&)>;
+  void set_sink(Sink sink) { sink_ = std::move(sink); }
+  /// Hands the diagnostics reported since the last flush/emit to the sink, in report
+  /// order, and returns how many; nothing without a sink. The interpreter calls it after
+  /// each statement, once the statement's notes are attached.
+  std::size_t emit_pending();
+
  private:
   const SourceManager* sources_;
   std::vector<Diagnostic> diags_;
@@ -110,6 +120,7 @@ class Diagnostics {
   std::size_t max_errors_ = kDefaultMaxErrors;
   std::size_t flushed_ = 0;
   bool stopped_ = false;
+  Sink sink_;
 };
 
 /// "file:line:col" of a location (or "<unknown>"), as used in messages.
