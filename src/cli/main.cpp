@@ -86,6 +86,7 @@ int run(const std::vector<std::string>& argv) {
   // Long stages (coastline import, 1D, 2D) report here; General.Verbosity < 4 silences it.
   sm::cli::TerminalProgress progress(stderr, sm::cli::TerminalProgress::style_for(stderr));
   sm::interp::Interpreter interp(sources, diags, std::cout, settings);
+  progress.flush_first(stdout);
   interp.kernel().progress = &progress;
   // Diagnostics are printed when the statement that caused them ends (flushing Printf's
   // stdout first and clearing the live progress line), not after the whole run.

@@ -36,6 +36,7 @@ void TerminalProgress::begin(std::string_view name, std::uint64_t total) {
   const double t = now_();
   open_.push_back({std::string(name), total, 0, t});
   last_draw_ = t;
+  flush_other();
   if (style_ == Style::Lines) {
     if (total > 0) fmt::print(out_, "stereomesh: {}: start ({})\n", name, total);
     else fmt::print(out_, "stereomesh: {}: start\n", name);
@@ -60,6 +61,7 @@ void TerminalProgress::end() {
   if (open_.empty()) return;
   Stage& st = open_.back();
   const double seconds = now_() - st.start;
+  flush_other();
   if (style_ == Style::Lines) {
     fmt::print(out_, "stereomesh: {}: done in {:.3f} s\n", st.name, seconds);
   } else {

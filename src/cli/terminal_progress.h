@@ -38,6 +38,10 @@ class TerminalProgress final : public Progress {
   /// ends with a newline only when the outermost stage ends.
   void end() override;
 
+  /// A stream flushed before each write (stdout): Printf output written before a stage
+  /// shows before its progress when both streams go to one pipe or terminal.
+  void flush_first(std::FILE* other) { flush_first_ = other; }
+
   /// Other text for the same stream (a diagnostic) goes between suspend() and resume():
   /// on a terminal the live line is cleared first and redrawn after, so the text starts
   /// on a clean line and the progress stays below it. No-ops in the Lines style.
@@ -55,9 +59,13 @@ class TerminalProgress final : public Progress {
   };
 
   void draw();
+  void flush_other() const {
+    if (flush_first_) std::fflush(flush_first_);
+  }
   std::string live_text() const;
 
   std::FILE* out_;
+  std::FILE* flush_first_ = nullptr;
   Style style_;
   Clock now_;
   std::vector<Stage> open_;       // outermost first

@@ -141,6 +141,8 @@ class FaceMesher {
 
  private:
   bool fail(std::string msg, std::optional<Vec3> where = std::nullopt);
+  /// "lon X, lat Y" of a point of the face (on a geometry), else "(x, y, z)".
+  std::string where_text(Vec3 p) const;
   bool collect_loops(const geo::ModelSurface& s);
   bool make_plane();
   std::uint32_t local(std::uint32_t node);
@@ -226,7 +228,27 @@ bool FaceMesher::fail(std::string msg, std::optional<Vec3> where) {
   return false;
 }
 
+std::string FaceMesher::where_text(Vec3 p) const {
+  if (!plane_.geom) return fmt::format("({}, {}, {})", p.x, p.y, p.z);
+  geo::LonLat ll;
+  if (plane_.geom->polar()) {
+    ll = plane_.geom->polar()->to_lonlat(p);
+  } else {
+    const Vec2 uv = plane_.geom->param(p);
+    ll = {uv.x * geo::kRadToDeg, uv.y * geo::kRadToDeg};
+  }
+  return fmt::format("lon {:.4f}, lat {:.4f}", ll.lon, ll.lat);
+}
+
 bool FaceMesher::collect_loops(const geo::ModelSurface& s) {
+  // Islands below the mesh size (hole chains of fewer than 3 mesh edges): one warning
+  // for the face, naming the largest, rather than one line per island.
+  struct Island {
+    int loop;
+    double span;   // distance between its nodes: a lower bound of its size
+    Vec3 at;
+  };
+  std::vector<Island> islands;
   for (std::size_t li = 0; li < s.loops.size(); ++li) {
     const geo::ModelCurveLoop* loop = model_.curve_loop(std::abs(s.loops[li]));
     if (!loop) return fail(fmt::format("curve loop {} does not exist", std::abs(s.loops[li])));
@@ -250,9 +272,10 @@ bool FaceMesher::collect_loops(const geo::ModelSurface& s) {
       if (ch.nodes.size() > 1 && ch.nodes.back() == ch.nodes.front()) {
         ch.nodes.pop_back();
         if (ch.nodes.size() < 3 && (li > 0 || !chains_.empty())) {
-          // An island below the mesh size meshed as two edges encloses nothing: left out.
-          res_.warnings.push_back(fmt::format("surface {}: hole loop {} has {} boundary node(s) and is left out",
-                                              tag_, loop->tag, ch.nodes.size()));
+          // An island below the mesh size meshed as two edges encloses nothing: left out
+          // (Gmsh does the same).
+          const Vec3 a = mesh_.nodes[ch.nodes.front()].xyz, b = mesh_.nodes[ch.nodes.back()].xyz;
+          islands.push_back({loop->tag, norm(b - a), (a + b) * 0.5});
         } else if (ch.nodes.size() < 3) {
           return fail(fmt::format("curve loop {} has fewer than 3 boundary nodes", loop->tag),
                       mesh_.nodes[ch.nodes.front()].xyz);
@@ -263,6 +286,23 @@ bool FaceMesher::collect_loops(const geo::ModelSurface& s) {
       }
     }
     if (!ch.nodes.empty()) return fail(fmt::format("curve loop {} does not close", loop->tag));
+  }
+  if (!islands.empty()) {
+    // The first island of the largest span: deterministic for equal spans.
+    std::size_t big = 0;
+    for (std::size_t i = 1; i < islands.size(); ++i)
+      if (islands[i].span > islands[big].span) big = i;
+    constexpr std::size_t kListed = 8;
+    std::string loops;
+    for (std::size_t i = 0; i < std::min(islands.size(), kListed); ++i)
+      loops += fmt::format("{}{}", i ? ", " : "", islands[i].loop);
+    if (islands.size() > kListed) loops += fmt::format(" and {} more", islands.size() - kListed);
+    const bool one = islands.size() == 1;
+    res_.warnings.push_back(fmt::format(
+        "surface {}: {} island{} smaller than the mesh size {} left out ({} closed curve{} got fewer than 3 mesh "
+        "edges; {}near {}): hole loop{} {}",
+        tag_, islands.size(), one ? "" : "s", one ? "is" : "are", one ? "its" : "their", one ? "" : "s",
+        one ? "" : "largest ", where_text(islands[big].at), one ? "" : "s", loops));
   }
   if (chains_.empty()) return fail("no boundary loop");
   for (int p : s.embedded_points) {

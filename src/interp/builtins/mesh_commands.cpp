@@ -99,13 +99,15 @@ void publish_stats(Interpreter& in, const ModelMesh& mesh, const MeshStats& st) 
   o.set_number("Mesh.StatsEdgeInRange", st.share_len_07_14, true);
   in.kernel().mesh_stats_json = stats_json(st);
   if (o.number("General.Verbosity") >= 4) {
+    std::fflush(stdout);   // after the Printf output before it when both share a pipe
     std::fputs(format_stats(st).c_str(), stderr);
     std::fflush(stderr);
   }
 }
 
-// Meshes the model up to `dim` into the kernel state; on failure returns why.
-MeshFailure mesh_model(Interpreter& in, int dim) {
+// Meshes the model up to `dim` into the kernel state; on failure returns why. The
+// mesher's warnings are reported at `where` (the Mesh statement; none for -1/-2).
+MeshFailure mesh_model(Interpreter& in, int dim, SourceRange where) {
   using Clock = std::chrono::steady_clock;
   KernelState& k = in.kernel();
   const field::FieldPtr background = background_size_field(in);
@@ -149,8 +151,9 @@ MeshFailure mesh_model(Interpreter& in, int dim) {
       f.notes.push_back({it->second, fmt::format("surface {} was created here", r2.error.surface)});
     return f;
   }
-  if (in.options().number("General.Verbosity") >= 2)
-    for (const std::string& w : r2.warnings) std::fprintf(stderr, "stereomesh: warning: %s\n", w.c_str());
+  // As diagnostics, so that they print in order with Printf and the progress display
+  // (the front end drops them below General.Verbosity 2).
+  for (const std::string& w : r2.warnings) in.diags().report_message(where, Diag::MeshWarning, w);
   // Statistics against the size each face's mesher aimed at (with the extension from
   // the boundary where it is on).
   MeshStats st = mesh_stats(*mesh, r2.target_sizes);
@@ -213,7 +216,7 @@ void exec_mesh(Interpreter& in, StmtId id, const CommandStmt& c) {
     in.not_supported_stmt(id, "Mesh 3");
     return;
   }
-  const MeshFailure f = mesh_model(in, n >= 2 ? 2 : 1);
+  const MeshFailure f = mesh_model(in, n >= 2 ? 2 : 1, s.range);
   if (f.failed()) in.fail_with_notes(s.range, f.kind, f.message, f.notes);
 }
 
@@ -275,7 +278,7 @@ bool mesh_from_command_line(Interpreter& in, int dim, const std::string& output,
   }
   MeshFailure f;
   try {
-    f = mesh_model(in, dim);
+    f = mesh_model(in, dim, SourceRange{});
   } catch (const RuntimeError& err) {   // e.g. the background field cannot be built
     auto h = diags.report_message(err.range, err.kind, err.message);
     for (const DiagNote& n : err.notes) h.note(n.range, n.message);

@@ -218,3 +218,39 @@ TEST_CASE("diagnostic stream: the binary shows Printf, the warning and Printf in
   CHECK(s.rfind("b\n") > w);  // b is written after the warning, not before it
   fs::remove_all(dir);
 }
+
+TEST_CASE("diagnostic stream: progress lines come after the Printf output written before them") {
+  SharedPipe pipe;
+  REQUIRE(pipe.out);
+  double t = 0;
+  TerminalProgress progress(pipe.err, TerminalProgress::Style::Lines, [&] { return t; });
+  progress.flush_first(pipe.out);
+  std::fputs("printed\n", pipe.out);
+  progress.begin("2D", 1);
+  std::fputs("inside\n", pipe.out);
+  progress.end();
+  const std::string s = pipe.text();
+  INFO(s);
+  CHECK(s == "printed\nstereomesh: 2D: start (1)\ninside\nstereomesh: 2D: done in 0.000 s\n");
+}
+
+TEST_CASE("diagnostic stream: the binary meshing islands: Printf, progress, summary, one island warning, Printf") {
+  const std::string bin = binary();
+  if (bin.empty()) {
+    MESSAGE("skipped: stereomesh binary not built");
+    return;
+  }
+  const std::string s =
+      run_merged(bin + " -0 " + std::string(SM_SOURCE_DIR) + "/tests/scripts/diagnostics/fail_islands_warning.geo");
+  INFO(s);
+  const auto before = s.find("before\n"), start = s.find("stereomesh: 2D: start"), summary = s.find("Mesh: "),
+             w = s.find("warning: surface 1: 3 islands smaller than the mesh size are left out"),
+             after = s.rfind("1\n");
+  REQUIRE(w != std::string::npos);
+  CHECK(before < start);
+  CHECK(start < summary);
+  CHECK(summary < w);
+  CHECK(w < after);
+  CHECK(s.find("warning: surface", w + 1) == std::string::npos);   // one warning, not one per island
+  CHECK(s.find("[mesh-warning]") != std::string::npos);
+}

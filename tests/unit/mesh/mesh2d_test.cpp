@@ -15,6 +15,8 @@
 #include <utility>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "field/distance.h"
 #include "mesh/mesh1d.h"
 #include "mesh/mesh_stats.h"
@@ -1007,4 +1009,43 @@ TEST_CASE("mesh2d: a large face refined in one piece reports '2D refine' in esti
   o2.progress = nullptr;
   REQUIRE(mesh_surfaces(m, quiet, o2).ok());
   check_same(mesh, quiet);
+}
+
+TEST_CASE("mesh2d: islands below the mesh size give one warning per surface, naming the largest") {
+  geo::Model m;
+  const int outer = add_square(m, 0, 0, 1, 1, 0.1, true);
+  // Three closed B-splines of 4 control points, far below the size 0.1: each gets
+  // 2 mesh edges and is left out. The one at (0.7, 0.3) is the widest.
+  std::vector<int> loops{outer};
+  const double centres[3][3] = {{0.3, 0.3, 0.004}, {0.7, 0.3, 0.012}, {0.5, 0.7, 0.006}};
+  for (const auto& c : centres) {
+    const int p = m.new_point_tag();
+    for (int i = 0; i < 4; ++i) {
+      const double a = geo::kPi / 2 * i;
+      REQUIRE(m.add_point(p + i, {c[0] + c[2] * std::cos(a), c[1] + c[2] * std::sin(a), 0}, 0.1).ok());
+    }
+    const int cv = m.new_curve_tag();
+    REQUIRE(m.add_curve(cv, geo::CurveKind::BSpline, {p, p + 1, p + 2, p + 3, p}).ok());
+    const int l = m.new_loop_tag();
+    REQUIRE(m.add_curve_loop(l, {cv}).ok());
+    loops.push_back(l);
+  }
+  REQUIRE(m.add_plane_surface(1, loops).ok());
+  const Meshed a = mesh_model(m, {}, {});
+  REQUIRE(a.r2.warnings.size() == 1);
+  const std::string& w = a.r2.warnings.front();
+  INFO(w);
+  CHECK(w.rfind("surface 1: 3 islands smaller than the mesh size are left out (their closed curves got fewer than "
+                "3 mesh edges; largest near (", 0) == 0);
+  CHECK(w.find(fmt::format("): hole loops {}, {}, {}", loops[1], loops[2], loops[3])) != std::string::npos);
+  // The largest is the island at (0.7, 0.3): its two nodes' midpoint lies within its radius.
+  const auto open = w.find("near (") + 6;
+  const double x = std::stod(w.substr(open)), y = std::stod(w.substr(w.find(", ", open) + 2));
+  CHECK(std::abs(x - 0.7) < 0.013);
+  CHECK(std::abs(y - 0.3) < 0.013);
+  // The face is meshed without them: its boundary is the square's 40 edges only.
+  long used = 0;
+  const auto edges = loop_edges(m, a.mesh, 1, &used);
+  CHECK(used == 1);
+  CHECK(edges.size() == 40);
 }
