@@ -229,7 +229,7 @@ bool FaceMesher::fail(std::string msg, std::optional<Vec3> where) {
 }
 
 std::string FaceMesher::where_text(Vec3 p) const {
-  if (!plane_.geom) return fmt::format("({}, {}, {})", p.x, p.y, p.z);
+  if (!plane_.geom) return fmt::format("({:.6g}, {:.6g}, {:.6g})", p.x, p.y, p.z);
   geo::LonLat ll;
   if (plane_.geom->polar()) {
     ll = plane_.geom->polar()->to_lonlat(p);
