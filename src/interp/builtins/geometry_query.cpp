@@ -17,11 +17,6 @@ using namespace sm::lang;
 
 namespace {
 
-const char* dim_word(int dim) {
-  static const char* kWords[] = {"point", "curve", "surface", "volume"};
-  return dim >= 0 && dim <= 3 ? kWords[dim] : "entity";
-}
-
 // Entities of physical groups `tags` of dimension dim, as positive tags (the sign stored for
 // MSH 2 orientation is not listed, as in Gmsh). An unknown group gives nothing (Gmsh 4.8.4:
 // `#Physical Curve{7}[]` is 0).

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "cli/args.h"
+#include "run_binary.h"
 
 using sm::cli::parse_args;
 
@@ -62,30 +63,12 @@ TEST_CASE("cli: usage errors") {
 
 namespace {
 
-// The stereomesh built with this test (build/stereomesh beside build/tests/), or "".
-std::string binary() {
-  std::error_code ec;
-  const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (ec) return "";
-  const auto bin = self.parent_path().parent_path() / "stereomesh";
-  return std::filesystem::exists(bin, ec) ? bin.string() : "";
-}
+using sm::testing::run_status;
+
+std::string binary() { return sm::testing::stereomesh_binary(); }
 
 // What the command prints on stderr (stdout dropped).
-std::string run_stderr(const std::string& cmd) {
-  std::FILE* p = ::popen((cmd + " 2>&1 >/dev/null").c_str(), "r");
-  if (!p) return "popen failed";
-  std::string out;
-  char buf[4096];
-  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, n);
-  ::pclose(p);
-  return out;
-}
-
-int run_status(const std::string& cmd) {
-  const int st = std::system((cmd + " >/dev/null 2>&1").c_str());
-  return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-}
+std::string run_stderr(const std::string& cmd) { return sm::testing::run_output(cmd, "2>&1 >/dev/null"); }
 
 }  // namespace
 

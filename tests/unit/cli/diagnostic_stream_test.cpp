@@ -15,6 +15,7 @@
 #include "cli/diagnostic_stream.h"
 #include "cli/terminal_progress.h"
 #include "interp/interpreter.h"
+#include "run_binary.h"
 
 using sm::cli::DiagnosticStream;
 using sm::cli::TerminalProgress;
@@ -65,25 +66,10 @@ struct SharedPipe {
   }
 };
 
-// The stereomesh built with this test (build/stereomesh beside build/tests/), or "".
-std::string binary() {
-  std::error_code ec;
-  const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (ec) return "";
-  const auto bin = self.parent_path().parent_path() / "stereomesh";
-  return std::filesystem::exists(bin, ec) ? bin.string() : "";
-}
+std::string binary() { return sm::testing::stereomesh_binary(); }
 
 // stdout and stderr of a command through one pipe (`2>&1`).
-std::string run_merged(const std::string& cmd) {
-  std::FILE* p = ::popen((cmd + " 2>&1").c_str(), "r");
-  if (!p) return "popen failed";
-  std::string out;
-  char buf[4096];
-  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, n);
-  ::pclose(p);
-  return out;
-}
+std::string run_merged(const std::string& cmd) { return sm::testing::run_output(cmd, "2>&1"); }
 
 struct Run {
   sm::lang::SourceManager sources;
