@@ -771,6 +771,25 @@ TEST_CASE("mesh2d: a non-planar boundary and an embedded curve crossing the boun
   }
 }
 
+// A face meshed in parts (a) against the same face meshed in one piece from the 1D mesh
+// mesh1d, both measured at the uniform size lc: quality floors of the algorithm, at most 2
+// points of rho > 0.9 lost to the seams, size conformity. Returns {parts, whole}.
+std::pair<MeshStats, MeshStats> check_against_whole(const geo::Model& m, const ModelMesh& mesh1d,
+                                                    const Mesh2dOptions& o2, const Meshed& a, double lc) {
+  const auto size = [lc](std::span<const Vec3>, std::span<double> h) { std::fill(h.begin(), h.end(), lc); };
+  const MeshStats st = mesh_stats(a.mesh, size);
+  ModelMesh whole = mesh1d;
+  REQUIRE(mesh_surfaces(m, whole, o2).ok());
+  const MeshStats sw = mesh_stats(whole, size);
+  MESSAGE(name_of(o2.algorithm) << ", " << a.r2.stats.parts << " parts: " << format_stats(st)
+                                << "\n  whole: " << format_stats(sw));
+  CHECK(st.min_rho > 0.4);
+  CHECK(st.share_rho_09 > rho09_floor(o2.algorithm));
+  CHECK(st.share_rho_09 > sw.share_rho_09 - 0.02);
+  CHECK(st.share_len_07_14 >= 0.95);
+  return {st, sw};
+}
+
 TEST_CASE("mesh2d: a square with holes and embedded entities refined in parts, the same for 1, 2, 4 threads") {
   geo::Model m;
   const double lc = 0.01;
@@ -805,16 +824,7 @@ TEST_CASE("mesh2d: a square with holes and embedded entities refined in parts, t
     const CurveMesh& emb = a.mesh.curves.at(100);
     for (std::size_t k = 0; k + 1 < emb.nodes.size(); ++k) CHECK(edges.count(std::minmax(emb.nodes[k], emb.nodes[k + 1])) == 1);
     CHECK(nodes.count(a.mesh.vertex_node.at(102)) == 1);
-    const auto size = [lc](std::span<const Vec3>, std::span<double> h) { std::fill(h.begin(), h.end(), lc); };
-    const MeshStats st = mesh_stats(a.mesh, size);
-    ModelMesh whole = r1.mesh;
-    REQUIRE(mesh_surfaces(m, whole, o2).ok());
-    const MeshStats sw = mesh_stats(whole, size);
-    MESSAGE(name_of(alg) << ", " << a.r2.stats.parts << " parts: " << format_stats(st) << "\n  whole: " << format_stats(sw));
-    CHECK(st.min_rho > 0.4);
-    CHECK(st.share_rho_09 > rho09_floor(alg));
-    CHECK(st.share_rho_09 > sw.share_rho_09 - 0.02);
-    CHECK(st.share_len_07_14 >= 0.95);
+    const auto [st, sw] = check_against_whole(m, r1.mesh, o2, a, lc);
     CHECK(double(st.triangles) == doctest::Approx(double(sw.triangles)).epsilon(0.03));
   }
 }
@@ -855,16 +865,7 @@ TEST_CASE("mesh2d: a PolarSphere cap with islands refined in parts, the same for
     CHECK(a.r2.stats.parts >= 4);
     check_face(m, a.mesh, 1);
     check_on_sphere(m, a.mesh, 1, 1.0);
-    const auto size = [lc](std::span<const Vec3>, std::span<double> h) { std::fill(h.begin(), h.end(), lc); };
-    const MeshStats st = mesh_stats(a.mesh, size);
-    ModelMesh whole = r1.mesh;
-    REQUIRE(mesh_surfaces(m, whole, o2).ok());
-    const MeshStats sw = mesh_stats(whole, size);
-    MESSAGE(name_of(alg) << ", " << a.r2.stats.parts << " parts: " << format_stats(st) << "\n  whole: " << format_stats(sw));
-    CHECK(st.min_rho > 0.4);
-    CHECK(st.share_rho_09 > rho09_floor(alg));
-    CHECK(st.share_rho_09 > sw.share_rho_09 - 0.02);
-    CHECK(st.share_len_07_14 >= 0.95);
+    check_against_whole(m, r1.mesh, o2, a, lc);
   }
 }
 
