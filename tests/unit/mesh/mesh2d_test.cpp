@@ -227,6 +227,21 @@ class ThresholdOf : public field::SizeField {
   double lc_min_, lc_max_, d_min_, d_max_;
 };
 
+// Statistics of a mesh against the uniform size h.
+MeshStats uniform_stats(const ModelMesh& mesh, double h) {
+  return mesh_stats(mesh, [h](std::span<const Vec3>, std::span<double> out) { std::fill(out.begin(), out.end(), h); });
+}
+
+// The area of surface `tag`'s triangles in 3D (chord triangles on a sphere).
+double face_area(const ModelMesh& mesh, int tag) {
+  double area = 0;
+  for (const Tri& t : mesh.surfaces.at(tag).triangles) {
+    const Vec3 p = mesh.nodes[t[0]].xyz, q = mesh.nodes[t[1]].xyz, r = mesh.nodes[t[2]].xyz;
+    area += 0.5 * norm(cross(q - p, r - p));
+  }
+  return area;
+}
+
 }  // namespace
 
 TEST_CASE("mesh2d: unit square with a square hole and a circular hole, lc 0.03") {
@@ -242,17 +257,11 @@ TEST_CASE("mesh2d: unit square with a square hole and a circular hole, lc 0.03")
     const Meshed a = mesh_model(m, {}, o2);
     check_face(m, a.mesh, 1);
     check_ccw_xy(a.mesh, 1);
-    const MeshStats st = mesh_stats(a.mesh, [](std::span<const Vec3>, std::span<double> h) {
-      std::fill(h.begin(), h.end(), 0.03);
-    });
+    const MeshStats st = uniform_stats(a.mesh, 0.03);
     MESSAGE(name_of(alg) << ": " << format_stats(st));
     // Area of the square minus the holes: 1 - 0.05 - pi 0.15^2 (the circle's polygon is a
     // little smaller).
-    double area = 0;
-    for (const Tri& t : a.mesh.surfaces.at(1).triangles) {
-      const Vec3 p = a.mesh.nodes[t[0]].xyz, q = a.mesh.nodes[t[1]].xyz, r = a.mesh.nodes[t[2]].xyz;
-      area += 0.5 * norm(cross(q - p, r - p));
-    }
+    const double area = face_area(a.mesh, 1);
     CHECK(area == doctest::Approx(1 - 0.05 - geo::kPi * 0.0225).epsilon(2e-3));
     CHECK(st.triangles > 2000);
     CHECK(st.min_rho > 0.4);
@@ -310,16 +319,10 @@ TEST_CASE("mesh2d: PolarSphere cap bounded by the circle of latitude 30N") {
     const Meshed a = mesh_model(m, {}, o2);
     check_face(m, a.mesh, 1);
     check_on_sphere(m, a.mesh, 1, 1.0);
-    const MeshStats st = mesh_stats(a.mesh, [](std::span<const Vec3>, std::span<double> h) {
-      std::fill(h.begin(), h.end(), 0.05);
-    });
+    const MeshStats st = uniform_stats(a.mesh, 0.05);
     MESSAGE(name_of(alg) << ": " << format_stats(st));
     // Cap area 2 pi (1 - sin 30) = pi.
-    double area = 0;
-    for (const Tri& t : a.mesh.surfaces.at(1).triangles) {
-      const Vec3 p = a.mesh.nodes[t[0]].xyz, q = a.mesh.nodes[t[1]].xyz, r = a.mesh.nodes[t[2]].xyz;
-      area += 0.5 * norm(cross(q - p, r - p));
-    }
+    const double area = face_area(a.mesh, 1);
     CHECK(area == doctest::Approx(geo::kPi).epsilon(3e-3));
     CHECK(st.share_len_07_14 >= 0.95);
     CHECK(st.min_rho > 0.4);
@@ -403,15 +406,9 @@ TEST_CASE("mesh2d: lon/lat Sphere face, the box 0-40E x 10-50N, meshed in the Me
     const Meshed a = mesh_model(m, {}, o2);
     check_face(m, a.mesh, 1);
     check_on_sphere(m, a.mesh, 1, 1.0);
-    const MeshStats st = mesh_stats(a.mesh, [](std::span<const Vec3>, std::span<double> h) {
-      std::fill(h.begin(), h.end(), 0.03);
-    });
+    const MeshStats st = uniform_stats(a.mesh, 0.03);
     MESSAGE(name_of(alg) << ": " << format_stats(st));
-    double area = 0;
-    for (const Tri& t : a.mesh.surfaces.at(1).triangles) {
-      const Vec3 p = a.mesh.nodes[t[0]].xyz, q = a.mesh.nodes[t[1]].xyz, r = a.mesh.nodes[t[2]].xyz;
-      area += 0.5 * norm(cross(q - p, r - p));
-    }
+    const double area = face_area(a.mesh, 1);
     // Spherical box: dlon (sin 50 - sin 10); the 1D edges are chords, a little inside.
     CHECK(area == doctest::Approx(40 * d * (std::sin(50 * d) - std::sin(10 * d))).epsilon(3e-3));
     CHECK(st.share_len_07_14 >= 0.95);
@@ -430,9 +427,7 @@ TEST_CASE("mesh2d: lon/lat Sphere face, the box 0-40E x 10-50N, meshed in the Me
     CHECK(p.r2.stats.parts == 2);
     check_face(m, p.mesh, 1);
     check_on_sphere(m, p.mesh, 1, 1.0);
-    const MeshStats sp = mesh_stats(p.mesh, [](std::span<const Vec3>, std::span<double> h) {
-      std::fill(h.begin(), h.end(), 0.03);
-    });
+    const MeshStats sp = uniform_stats(p.mesh, 0.03);
     MESSAGE(name_of(alg) << " in parts: " << format_stats(sp));
     CHECK(sp.share_len_07_14 >= 0.95);
     CHECK(sp.min_rho > 0.4);
@@ -729,7 +724,7 @@ TEST_CASE("mesh2d: a face in a tilted plane is meshed in that plane") {
   }
   CHECK(area == doctest::Approx(std::sqrt(2.0)).epsilon(1e-9));
   for (std::uint32_t v : a.mesh.surfaces.at(1).interior_nodes) CHECK(std::abs(a.mesh.nodes[v].xyz.x - a.mesh.nodes[v].xyz.z) < 1e-12);
-  const MeshStats st = mesh_stats(a.mesh, [](std::span<const Vec3>, std::span<double> h) { std::fill(h.begin(), h.end(), 0.05); });
+  const MeshStats st = uniform_stats(a.mesh, 0.05);
   CHECK(st.share_len_07_14 >= 0.95);
 }
 
@@ -879,9 +874,7 @@ TEST_CASE("mesh2d: statistics against the target sizes the mesher aimed at (exte
   REQUIRE(a.r2.target_sizes.size() == 1);
   CHECK(a.r2.target_sizes[0].surface == 1);
   const MeshStats st = mesh_stats(a.mesh, a.r2.target_sizes);
-  const MeshStats uniform = mesh_stats(a.mesh, [](std::span<const Vec3>, std::span<double> h) {
-    std::fill(h.begin(), h.end(), 0.03);
-  });
+  const MeshStats uniform = uniform_stats(a.mesh, 0.03);
   MESSAGE(format_stats(st));
   CHECK(st.len_median == doctest::Approx(1).epsilon(0.1));
   CHECK(st.share_len_07_14 >= 0.95);
