@@ -30,13 +30,7 @@ void run_world(const char* file, double step_km) {
   // Keep the ocean: Antarctica's ice front (the ring round the South Pole,
   // hence the largest loop in this plane) is the outer loop, every other
   // ring an island.
-  std::vector<Loop> loops;
-  for (std::size_t c = 0; c < p.curves.size(); ++c) {
-    Loop l;
-    for (std::size_t k = 0; k + 1 < p.curves[c].pts.size(); ++k) l.v.push_back(VertexId{p.curves[c].pts[k]});
-    l.hole = !rings[c].wraps_pole;
-    loops.push_back(std::move(l));
-  }
+  const std::vector<Loop> loops = testing::ocean_loops(p, rings);
   TriangleStore m = r.mesh;
   const auto d = remove_outside(m, PlanarGeometry{&m.xy}, loops);
   INFO(d.error);

@@ -234,13 +234,7 @@ TEST_CASE("front2d: the world ocean from GSHHG crude shorelines at 150 km in the
   const BoundaryResult br = recover_boundary(p, [&](std::uint32_t c, double t) { return curves[c].at(t); }, bopt);
   INFO(br.error.message);
   REQUIRE(br.ok());
-  std::vector<Loop> loops;
-  for (std::size_t c = 0; c < p.curves.size(); ++c) {
-    Loop l;
-    for (std::size_t k = 0; k + 1 < p.curves[c].pts.size(); ++k) l.v.push_back(VertexId{p.curves[c].pts[k]});
-    l.hole = !rings[c].wraps_pole;
-    loops.push_back(std::move(l));
-  }
+  const std::vector<Loop> loops = testing::ocean_loops(p, rings);
   TriangleStore m = br.mesh;
   REQUIRE(remove_outside(m, PlanarGeometry{&m.xy}, loops).ok());
   // Rings inside land (lakes, GSHHG level 2) went with the land: keep the

@@ -297,13 +297,7 @@ TEST_CASE("meshadapt: the world ocean from GSHHG crude shorelines on the sphere 
   const BoundaryResult br = recover_boundary(p, [&](std::uint32_t c, double t) { return curves[c].at(t); }, {});
   INFO(br.error.message);
   REQUIRE(br.ok());
-  std::vector<Loop> loops;
-  for (std::size_t c = 0; c < p.curves.size(); ++c) {
-    Loop l;
-    for (std::size_t k = 0; k + 1 < p.curves[c].pts.size(); ++k) l.v.push_back(VertexId{p.curves[c].pts[k]});
-    l.hole = !rings[c].wraps_pole;
-    loops.push_back(std::move(l));
-  }
+  const std::vector<Loop> loops = testing::ocean_loops(p, rings);
   TriangleStore m = br.mesh;
   REQUIRE(remove_outside(m, PlanarGeometry{&m.xy}, loops).ok());
   // The coast edges left (rings inside removed regions went with them).

@@ -191,13 +191,7 @@ TEST_CASE("optimize_quality: GSHHG crude world coastlines, raw vertices (close b
   BoundaryProblem p = testing::coast_problem(curves, 0);
   const BoundaryResult r = recover_boundary(p, [&](std::uint32_t c, double t) { return curves[c].at(t); });
   REQUIRE(r.ok());
-  std::vector<Loop> loops;
-  for (std::size_t c = 0; c < p.curves.size(); ++c) {
-    Loop l;
-    for (std::size_t k = 0; k + 1 < p.curves[c].pts.size(); ++k) l.v.push_back(VertexId{p.curves[c].pts[k]});
-    l.hole = !rings[c].wraps_pole;
-    loops.push_back(std::move(l));
-  }
+  const std::vector<Loop> loops = testing::ocean_loops(p, rings);
   TriangleStore m = r.mesh;
   REQUIRE(remove_outside(m, PlanarGeometry{&m.xy}, loops).ok());
   const std::uint32_t fixed = m.num_vertices();

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "mesh/boundary_recovery.h"
+#include "mesh/cdt.h"
 
 namespace sm::testing {
 
@@ -117,6 +118,20 @@ inline BoundaryProblem coast_problem(const std::vector<RingCurve>& curves, doubl
     p.curves.push_back(std::move(cv));
   }
   return p;
+}
+
+/// The loops of the ocean domain of coast_problem(curves of rings): the ring round the
+/// South Pole (Antarctica's ice front, the largest loop in this plane) is the outer loop,
+/// every other ring an island, for remove_outside.
+inline std::vector<Loop> ocean_loops(const BoundaryProblem& p, const std::vector<Ring>& rings) {
+  std::vector<Loop> loops;
+  for (std::size_t c = 0; c < p.curves.size(); ++c) {
+    Loop l;
+    for (std::size_t k = 0; k + 1 < p.curves[c].pts.size(); ++k) l.v.push_back(VertexId{p.curves[c].pts[k]});
+    l.hole = !rings[c].wraps_pole;
+    loops.push_back(std::move(l));
+  }
+  return loops;
 }
 
 }  // namespace sm::testing
