@@ -9,6 +9,7 @@
 #include <limits>
 #include <tuple>
 
+#include "coast/place_pairs.h"
 #include "mesh/predicates.h"
 
 namespace sm::coast {
@@ -196,15 +197,10 @@ std::vector<SegmentHit> find_intersections(std::span<const std::vector<Vec2>> lo
     Vec2 where;
     if (!classify(s, t, kind, where)) return;
     SegmentHit h{s.loop, s.index, t.loop, t.index, kind, where};
-    if (std::pair(h.loop_b, h.seg_b) < std::pair(h.loop_a, h.seg_a)) {
-      std::swap(h.loop_a, h.loop_b);
-      std::swap(h.seg_a, h.seg_b);
-    }
+    order_places(h);
     hits.push_back(h);
   });
-  std::sort(hits.begin(), hits.end(), [](const SegmentHit& a, const SegmentHit& b) {
-    return std::tie(a.loop_a, a.seg_a, a.loop_b, a.seg_b) < std::tie(b.loop_a, b.seg_a, b.loop_b, b.seg_b);
-  });
+  sort_place_pairs(hits);
   return hits;
 }
 
@@ -226,9 +222,7 @@ std::vector<NearMiss> find_near_misses(std::span<const std::vector<Vec2>> loops,
     if (d >= w || d == 0) return;
     out.push_back({s.loop, s.index, t.loop, t.index, d, 0.5 * (s.a + t.a)});
   });
-  std::sort(out.begin(), out.end(), [](const NearMiss& a, const NearMiss& b) {
-    return std::tie(a.loop_a, a.seg_a, a.loop_b, a.seg_b) < std::tie(b.loop_a, b.seg_a, b.loop_b, b.seg_b);
-  });
+  sort_place_pairs(out);
   return out;
 }
 

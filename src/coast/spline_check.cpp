@@ -10,6 +10,7 @@
 #include <optional>
 #include <tuple>
 
+#include "coast/place_pairs.h"
 #include "mesh/predicates.h"
 
 namespace sm::coast {
@@ -373,15 +374,10 @@ std::vector<HullOverlap> find_hull_overlaps(std::span<const SplineLoop> loops) {
     const Hull& b = hulls[ib];
     if (share_points(a, b) || !hulls_overlap(a, b)) return;
     HullOverlap o{a.loop, a.seg, b.loop, b.seg, 0.5 * (a.p[0] + b.p[0])};
-    if (std::pair(o.loop_b, o.seg_b) < std::pair(o.loop_a, o.seg_a)) {
-      std::swap(o.loop_a, o.loop_b);
-      std::swap(o.seg_a, o.seg_b);
-    }
+    order_places(o);
     out.push_back(o);
   });
-  std::sort(out.begin(), out.end(), [](const HullOverlap& a, const HullOverlap& b) {
-    return std::tie(a.loop_a, a.seg_a, a.loop_b, a.seg_b) < std::tie(b.loop_a, b.seg_a, b.loop_b, b.seg_b);
-  });
+  sort_place_pairs(out);
   return out;
 }
 
@@ -438,10 +434,7 @@ std::vector<HullOverlap> find_spline_crossings(std::span<const SplineLoop> loops
   std::vector<HullOverlap> out;
   auto found = [&](const Span& a, const Span& b, Vec2 where) {
     HullOverlap o{a.loop, a.seg, b.loop, b.seg, where};
-    if (std::pair(o.loop_b, o.seg_b) < std::pair(o.loop_a, o.seg_a)) {
-      std::swap(o.loop_a, o.loop_b);
-      std::swap(o.seg_a, o.seg_b);
-    }
+    order_places(o);
     out.push_back(o);
   };
   for (const Span& s : spans) {
@@ -466,14 +459,9 @@ std::vector<HullOverlap> find_spline_crossings(std::span<const SplineLoop> loops
     }
     if (meet) found(a, b, cx.where);
   });
-  std::sort(out.begin(), out.end(), [](const HullOverlap& a, const HullOverlap& b) {
-    return std::tie(a.loop_a, a.seg_a, a.loop_b, a.seg_b) < std::tie(b.loop_a, b.seg_a, b.loop_b, b.seg_b);
-  });
+  sort_place_pairs(out);
   out.erase(std::unique(out.begin(), out.end(),
-                        [](const HullOverlap& a, const HullOverlap& b) {
-                          return std::tie(a.loop_a, a.seg_a, a.loop_b, a.seg_b) ==
-                                 std::tie(b.loop_a, b.seg_a, b.loop_b, b.seg_b);
-                        }),
+                        [](const HullOverlap& a, const HullOverlap& b) { return place_pair_key(a) == place_pair_key(b); }),
             out.end());
   return out;
 }
