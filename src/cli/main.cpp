@@ -9,6 +9,8 @@
 
 #include <fmt/format.h>
 
+#include "base/interrupt_cleanup.h"
+#include "base/output_file.h"
 #include "cli/args.h"
 #include "cli/diagnostic_stream.h"
 #include "cli/terminal_progress.h"
@@ -16,7 +18,6 @@
 #include "interp/builtins/mesh_commands.h"
 #include "interp/interpreter.h"
 #include "interp/script_test.h"
-#include "io/atomic_file.h"
 
 namespace {
 
@@ -85,12 +86,15 @@ int run(const std::vector<std::string>& argv) {
   sm::lang::Diagnostics diags(sources);
   // Long stages (coastline import, 1D, 2D) report here; General.Verbosity < 4 silences it.
   sm::cli::TerminalProgress progress(stderr, sm::cli::TerminalProgress::style_for(stderr));
-  sm::interp::Interpreter interp(sources, diags, std::cout, settings);
+  // With '-o -' the mesh is standard output, so Printf's lines go to stderr.
+  const bool mesh_to_stdout = a.output == "-";
+  std::ostream& printf_out = mesh_to_stdout ? std::cerr : std::cout;
+  sm::interp::Interpreter interp(sources, diags, printf_out, settings);
   progress.flush_first(stdout);
   interp.kernel().progress = &progress;
   // Diagnostics are printed when the statement that caused them ends (flushing Printf's
   // stdout first and clearing the live progress line), not after the whole run.
-  sm::cli::DiagnosticStream stream(diags, stderr, std::cout, stdout, &progress);
+  sm::cli::DiagnosticStream stream(diags, stderr, printf_out, stdout, &progress);
   stream.set_show_warnings([&interp] { return interp.options().number("General.Verbosity") >= 2; });
   diags.set_sink(stream);
   for (const auto& [name, v] : a.option_numbers) {
@@ -124,7 +128,7 @@ int run(const std::vector<std::string>& argv) {
   // --stats: the statistics of the 2D mesh as JSON, written atomically.
   if (!errors && !a.stats_file.empty()) {
     const std::string& json = interp.kernel().mesh_stats_json;
-    sm::io::AtomicFile out;
+    sm::base::OutputFile out;
     if (json.empty()) {
       std::fprintf(stderr, "stereomesh: --stats: no 2D mesh was made (use -2 or 'Mesh 2;')\n");
       errors = true;
@@ -143,6 +147,9 @@ int run(const std::vector<std::string>& argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Ctrl-C or a kill during a write removes the named temporary file (where the
+  // system has no unnamed ones); the exit status still says which signal it was.
+  sm::base::install_interrupt_cleanup();
   try {
     return run(std::vector<std::string>(argv + 1, argv + argc));
   } catch (const std::bad_alloc&) {

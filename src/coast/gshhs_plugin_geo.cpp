@@ -1,11 +1,9 @@
 // Plugin(GSHHS) compatibility: option mapping and the .geo writer.
 #include "coast/gshhs_plugin_geo.h"
 
-#include <cstdio>
-#include <memory>
-
 #include <fmt/format.h>
 
+#include "base/output_file.h"
 #include "coast/read_gshhs.h"
 #include "coast/read_loops2.h"
 
@@ -204,10 +202,9 @@ Result<GshhsPluginResult> run_gshhs_plugin(const GshhsPluginOptions& opt) {
   if (!model) return model.error();
   res.geo = write_gshhs_plugin_geo(*model, opt, res.cut);
   res.model = std::move(*model);
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(opt.out_file_name.c_str(), "wb"), &std::fclose);
-  if (!f) return CoastError{opt.out_file_name, -1, "Plugin(GSHHS): cannot write the output file", {}};
-  if (std::fwrite(res.geo.data(), 1, res.geo.size(), f.get()) != res.geo.size())
-    return CoastError{opt.out_file_name, -1, "Plugin(GSHHS): write error", {}};
+  base::OutputFile out;
+  if (!out.open(opt.out_file_name) || !out.write(res.geo) || !out.commit())
+    return CoastError{opt.out_file_name, -1, "Plugin(GSHHS): cannot write the output file: " + out.error(), {}};
   return res;
 }
 

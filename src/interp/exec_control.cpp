@@ -147,6 +147,8 @@ std::string Interpreter::find_include(const std::string& name, SourceRange r) {
 Interpreter::Flow Interpreter::exec_include(const Stmt& s, const IncludeStmt& inc) {
   const std::string name = eval_string(inc.path);
   const SourceRange r = ast_.expr(inc.path).range;
+  // A file the script wrote with Printf may be the one it includes.
+  if (!redirects_.empty()) publish_redirects();
   const std::string path = find_include(name, r);
   std::error_code ec;
   const std::string canon = fs::weakly_canonical(path, ec).string();

@@ -1,8 +1,5 @@
 // Printf, Warning, Error (also redirected to a file with > and >>) and the
 // native Assert extension.
-#include <filesystem>
-#include <fstream>
-
 #include <fmt/format.h>
 
 #include "interp/format.h"
@@ -40,15 +37,10 @@ void Interpreter::exec_print(const Stmt& s, const PrintStmt& p) {
   const std::string text = format_args(p.format, p.args, s.range);
   if (p.redirect != Redirect::None) {
     const std::string path = resolve_script_path(env_, eval_string(p.file));
-    std::ofstream f(path, p.redirect == Redirect::Append ? std::ios::app : std::ios::trunc);
-    if (f) f << text << '\n';
-    if (!f) {
-      std::error_code ec;
-      const bool dir_ok = std::filesystem::is_directory(std::filesystem::path(path).parent_path(), ec) ||
-                          std::filesystem::path(path).parent_path().empty();
-      fail_fmt(ast_.expr(p.file).range, Diag::FileWriteError, path,
-               dir_ok ? "cannot open the file for writing" : "its directory does not exist");
-    }
+    const SourceRange where = ast_.expr(p.file).range;
+    std::string reason;
+    if (!redirects_.write_line(path, p.redirect == Redirect::Append, text, where, &reason))
+      fail_fmt(where, Diag::FileWriteError, path, reason);
     return;
   }
   switch (p.kind) {

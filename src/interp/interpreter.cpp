@@ -51,7 +51,7 @@ RunStatus Interpreter::run_file(const std::string& path) {
   }
   std::error_code ec;
   include_stack_.push_back(std::filesystem::weakly_canonical(path, ec).string());
-  const RunStatus st = run_loaded(loaded.file);
+  const RunStatus st = finish_run(run_loaded(loaded.file));
   include_stack_.pop_back();
   return st;
 }
@@ -63,9 +63,24 @@ RunStatus Interpreter::run_buffer(const std::string& name, const std::string& te
     return RunStatus::Errors;
   }
   include_stack_.push_back(name);
-  const RunStatus st = run_loaded(loaded.file);
+  const RunStatus st = finish_run(run_loaded(loaded.file));
   include_stack_.pop_back();
   return st;
+}
+
+RunStatus Interpreter::finish_run(RunStatus st) {
+  if (st == RunStatus::Errors) {
+    redirects_.abandon_all();
+    return st;
+  }
+  const std::size_t errors_before = diags_.error_count();
+  publish_redirects();
+  return diags_.error_count() > errors_before ? RunStatus::Errors : st;
+}
+
+void Interpreter::publish_redirects() {
+  for (const RedirectFiles::Failure& f : redirects_.commit_all())
+    diags_.report(f.where, Diag::FileWriteError, f.path, f.reason);
 }
 
 RunStatus Interpreter::run_loaded(FileId file) {

@@ -15,6 +15,7 @@
 #include "interp/limits.h"
 #include "interp/kernel_state.h"
 #include "interp/options.h"
+#include "interp/redirect_files.h"
 #include "interp/value.h"
 #include "lang/ast.h"
 #include "lang/diagnostics.h"
@@ -111,6 +112,9 @@ class Interpreter {
 
  private:
   RunStatus run_loaded(lang::FileId file);
+  /// The end of a top-level run: Printf's files put in place, or dropped after errors.
+  RunStatus finish_run(RunStatus st);
+  void publish_redirects();
   Flow run_statements(const lang::StmtList& stmts);
   void report(const RuntimeError& e);
   std::vector<lang::DiagNote> frame_notes() const;
@@ -186,6 +190,7 @@ class Interpreter {
   std::uint64_t rand_state_ = 0;
   BuiltinEnv env_;
   KernelState kernel_;
+  RedirectFiles redirects_;   // Printf > file: put in place when the run ends without errors
 
   std::map<std::string, MacroDef, std::less<>> macros_;
   std::map<std::uint32_t, lang::StmtList> parsed_files_;   // FileId value -> statements

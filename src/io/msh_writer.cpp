@@ -11,7 +11,7 @@
 #include <functional>
 #include <numeric>
 
-#include "io/atomic_file.h"
+#include "base/output_file.h"
 
 namespace sm::io {
 namespace {
@@ -19,10 +19,10 @@ namespace {
 constexpr std::uint32_t kUnowned = 0xFFFFFFFFu;
 
 // Buffered byte output that either keeps everything (msh_to_string) or
-// drains to an AtomicFile every few megabytes (large meshes).
+// drains to a base::OutputFile every few megabytes (large meshes).
 class Out {
  public:
-  explicit Out(AtomicFile* file) : file_(file) {}
+  explicit Out(base::OutputFile* file) : file_(file) {}
   void text(std::string_view s) { buf_.append(s); drain(); }
   template <class... A>
   void f(fmt::format_string<A...> pattern, A&&... args) {
@@ -53,7 +53,7 @@ class Out {
       buf_.clear();
     }
   }
-  AtomicFile* file_;
+  base::OutputFile* file_;
   std::string buf_;
 };
 
@@ -349,7 +349,7 @@ bool save_msh(const MeshModel& mesh, const MshOptions& opt, const std::string& p
     *error = "invalid mesh: " + why;
     return false;
   }
-  AtomicFile file;
+  base::OutputFile file;
   if (!file.open(path)) {
     *error = file.error();
     return false;

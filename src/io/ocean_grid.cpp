@@ -8,7 +8,7 @@
 #include <numeric>
 
 #include "geo/sphere.h"
-#include "io/atomic_file.h"
+#include "base/output_file.h"
 
 namespace sm::io {
 namespace {
@@ -114,7 +114,7 @@ std::string check(const MeshModel& m, const OceanGridOptions& opt) {
 }
 
 bool save_text(const std::string& path, const std::string& text, std::string* error) {
-  AtomicFile file;
+  base::OutputFile file;
   if (!file.open(path) || !file.write(text) || !file.commit()) {
     *error = file.error();
     return false;
@@ -192,12 +192,20 @@ bool save_schism(const MeshModel& mesh, const OceanGridOptions& opt, const std::
   }
   const std::size_t slash = gr3_path.find_last_of('/');
   const std::string ll_path = (slash == std::string::npos ? "" : gr3_path.substr(0, slash + 1)) + "hgrid.ll";
-  if (!save_text(gr3_path, write(mesh, opt, Flavour::Schism, false), error)) return false;
-  if (!save_text(ll_path, write(mesh, opt, Flavour::Schism, true), error)) {
-    *error = "hgrid.ll beside it: " + *error;
-    return false;
-  }
-  return true;
+  // Both files or neither: SCHISM reads them as one grid, so a new hgrid.gr3 beside an
+  // old hgrid.ll would be a wrong grid that loads.
+  base::OutputFile gr3, ll;
+  const bool opened = gr3.open(gr3_path) && ll.open(ll_path);
+  const bool written = opened && gr3.write(write(mesh, opt, Flavour::Schism, false)) &&
+                       ll.write(write(mesh, opt, Flavour::Schism, true));
+  base::OutputFile* const both[] = {&gr3, &ll};
+  std::size_t failed = 0;
+  if (written && base::commit_together(both, &failed)) return true;
+  if (!written) failed = gr3.error().empty() ? 1 : 0;
+  *error = failed == 0 ? gr3.error() : "hgrid.ll beside it: " + ll.error();
+  gr3.abandon();
+  ll.abandon();
+  return false;
 }
 
 bool parse_ocean_grid(const std::string& text, OceanGrid* g, std::string* error) {

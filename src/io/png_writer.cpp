@@ -6,7 +6,7 @@
 #include <cmath>
 #include <memory>
 
-#include "io/atomic_file.h"
+#include "base/output_file.h"
 
 namespace sm::io {
 namespace {
@@ -92,7 +92,7 @@ bool save_png(const MeshModel& mesh, const PictureOptions& opt, const std::strin
     *error = why;
     return false;
   }
-  AtomicFile file;
+  base::OutputFile file;
   if (!file.open(path) || !file.write(bytes) || !file.commit()) {
     *error = file.error();
     return false;

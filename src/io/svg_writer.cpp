@@ -3,7 +3,7 @@
 
 #include <fmt/format.h>
 
-#include "io/atomic_file.h"
+#include "base/output_file.h"
 
 namespace sm::io {
 namespace {
@@ -55,7 +55,7 @@ bool save_svg(const MeshModel& mesh, const PictureOptions& opt, const std::strin
     *error = "invalid mesh: " + why;
     return false;
   }
-  AtomicFile file;
+  base::OutputFile file;
   if (!file.open(path) || !file.write(svg_to_string(mesh, opt)) || !file.commit()) {
     *error = file.error();
     return false;

@@ -9,7 +9,7 @@
 #include <cstring>
 #include <numeric>
 
-#include "io/atomic_file.h"
+#include "base/output_file.h"
 #include "io/element_quality.h"
 #include "io/msh_writer.h"
 
@@ -261,7 +261,7 @@ bool save_vtk(const MeshModel& mesh, const VtkOptions& opt, const std::string& p
                            d.values.size(), mesh.xyz.size());
       return false;
     }
-  AtomicFile file;
+  base::OutputFile file;
   if (!file.open(path) || !file.write(vtk_to_string(mesh, opt)) || !file.commit()) {
     *error = file.error();
     return false;

@@ -14,6 +14,7 @@
 
 #include <fmt/format.h>
 
+#include "base/output_file.h"
 #include "interp/builtins/dispatch.h"
 #include "interp/builtins/field_context.h"
 #include "interp/builtins/field_eval.h"
@@ -173,7 +174,10 @@ std::string save_mesh(Interpreter& in, const std::string& path, std::string form
   if (format.empty()) {
     const std::string ext = std::filesystem::path(path).extension().string();
     const int mesh_format = static_cast<int>(o.number("Mesh.Format"));
-    if (mesh_format == 1 || (mesh_format == 10 && ext == ".msh")) format = "msh";
+    // Standard output ('-o -'), a FIFO or a device has no extension: MSH unless
+    // Mesh.Format or -format says otherwise.
+    const bool stream = ext.empty() && base::writes_in_place(path);
+    if (mesh_format == 1 || (mesh_format == 10 && (ext == ".msh" || stream))) format = "msh";
     else if (mesh_format == 16 || (mesh_format == 10 && ext == ".vtk")) format = "vtk";
     else if (mesh_format == 10 && (ext == ".svg" || ext == ".png")) format = ext.substr(1);
     else if (mesh_format == 10 && ext == ".14") format = "fort14";
@@ -181,6 +185,7 @@ std::string save_mesh(Interpreter& in, const std::string& path, std::string form
     else if (ext.empty()) return "the file name has no extension (use .msh, .vtk, .svg, .png, .14 or .gr3)";
     else return fmt::format("unknown file extension '{}' (use .msh, .vtk, .svg, .png, .14 or .gr3)", ext);
   }
+  if (format == "gr3" && base::writes_in_place(path)) return "SCHISM's hgrid.gr3 comes with hgrid.ll beside it: give a file name";
   if (format == "fort14" || format == "gr3") return save_ocean_grid(in, path, format);
   const bool binary = o.number("Mesh.Binary") != 0;
   const bool save_all = o.number("Mesh.SaveAll") != 0;
