@@ -1,4 +1,4 @@
-// Deterministic fork-join parallelism for the kernel (issue 7, `-nt`): work is cut into
+// Deterministic fork-join parallelism for the kernel (`-nt`): work is cut into
 // chunks whose boundaries depend only on the item count, never on the thread count, so a
 // result written per item or per chunk is the same bytes with 1 or 16 threads.
 #pragma once

@@ -1,4 +1,4 @@
-// How long-running kernel stages say how far they are (issue 8): coastline import, 1D and
+// How long-running kernel stages say how far they are: coastline import, 1D and
 // 2D meshing call a Progress the front end supplies; the kernel never prints itself.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Diagnostics printed as a run reports them (issue 8 follow-up): on stderr, after the
+// Diagnostics printed as a run reports them: on stderr, after the
 // Printf output written so far and around the live progress line, as Gmsh does.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The progress display on stderr (issue 8): on a terminal one live line per stage, redrawn
+// The progress display on stderr: on a terminal one live line per stage, redrawn
 // at most ten times a second ("2D  12/40  30%  1.2 s"), a nested stage shown after its
 // outer one on the same line ("2D  0/1  0%  3.1 s  >  2D refine  5/16  31%  2.0 s");
 // elsewhere (a log file, a pipe, CI) one plain line when a stage starts and one when it

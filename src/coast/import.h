@@ -1,4 +1,4 @@
-// The coastline import pipeline (paper section 2.2; issue 4): level filter, cleaning,
+// The coastline import pipeline (paper section 2.2): level filter, cleaning,
 // orientation, region clipping, coarsening with gamma(x), topology on the sphere, and
 // intersection repair. Produces loops in PolarSphere (u,v) coordinates ready to become
 // periodic B-splines; this is the kernel behind `Coastline[n] = ...; loops[] = Coastline{n};`.

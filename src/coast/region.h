@@ -1,6 +1,6 @@
 // Region clipping of shorelines to a lon/lat box on the sphere: coastlines are cut at the
 // box, and the cut coastlines are closed along the box boundary by separate pieces
-// flagged open_boundary (the open-sea boundary of a regional model; issue 4).
+// flagged open_boundary (the open-sea boundary of a regional model).
 #pragma once
 
 #include <cstddef>

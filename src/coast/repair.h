@@ -1,4 +1,4 @@
-// Consistency repair of coarsened coastline loops (issue 4): segments that cross after
+// Consistency repair of coarsened coastline loops: segments that cross after
 // coarsening get their original points back (the source data is self-consistent, so
 // this converges at the latest on the original shoreline); islands below the accuracy
 // that still touch are dropped; narrow straits are listed or closed by merging islands.

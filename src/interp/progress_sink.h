@@ -1,4 +1,4 @@
-// Which Progress the kernel calls of a script get (issue 8): the front end's sink held in
+// Which Progress the kernel calls of a script get: the front end's sink held in
 // KernelState::progress, silenced below General.Verbosity 4 (Gmsh's "info" level, where
 // the mesh summary is printed too), so `-v 0` to `-v 3` show no progress.
 #pragma once

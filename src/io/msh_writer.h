@@ -1,6 +1,6 @@
 // Gmsh MSH writer: versions 2.2 and 4.1, ASCII and binary, with physical
 // groups and names, following the layout Gmsh 4.8.4 itself writes (see
-// ../shared/gmsh-reference.md §7) so that every file loads in Gmsh.
+// Gmsh 4.8.4's reference manual, the MSH format chapter) so that every file loads in Gmsh.
 #pragma once
 
 #include <string>

@@ -1,4 +1,4 @@
-// Which coordinates MSH and VTK files give the nodes of a mesh on the sphere (issue 8):
+// Which coordinates MSH and VTK files give the nodes of a mesh on the sphere:
 // 3D Cartesian (Gmsh's, the default), lon/lat degrees, or the stereographic plane.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Frontal-Delaunay refinement (front2d, Mesh.Algorithm 6; issue 7 / paper
+// Frontal-Delaunay refinement (front2d, Mesh.Algorithm 6; paper
 // section 3.3) after Rebay (1993): points are placed on the Voronoi edges of
 // the active front so that each new triangle is equilateral at the local size.
 #pragma once

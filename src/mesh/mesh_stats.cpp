@@ -1,4 +1,4 @@
-// Mesh statistics of issue 7: quality and size conformity measured on the surface (3D),
+// Mesh statistics: quality and size conformity measured on the surface (3D),
 // formatted for people and for scripts.
 #include "mesh/mesh_stats.h"
 

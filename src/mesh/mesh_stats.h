@@ -1,4 +1,4 @@
-// The statistics printed after meshing (issue 7): nodes, triangles, quality rho = 2 r_in /
+// The statistics printed after meshing: nodes, triangles, quality rho = 2 r_in /
 // r_circ measured in 3D, edge length over the target size, time per stage; as a summary
 // for stderr and as JSON (for --stats FILE.json).
 #pragma once

@@ -1,4 +1,4 @@
-// meshadapt (issue 7 algorithm 1, paper section 3.3; Geuzaine & Remacle
+// meshadapt (Mesh.Algorithm 1, paper section 3.3; Geuzaine & Remacle
 // 2008): local mesh modifications (split long edges, collapse short ones,
 // swap for quality, smooth) until edge lengths measured in the size field
 // lie within [1/sqrt2, sqrt2]. Works in the plane and in the stereographic

@@ -1,4 +1,4 @@
-// Parallel refinement of a large face by domain decomposition (issue 7, `-nt`): a coarse
+// Parallel refinement of a large face by domain decomposition (`-nt`): a coarse
 // serial refinement, recursive coordinate bisection of its triangles into parts, part
 // borders subdivided at the local size, each part refined on its own, then merged.
 #pragma once

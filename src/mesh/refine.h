@@ -1,4 +1,4 @@
-// Delaunay refinement (del2d, issue 7 / paper section 3.3) in a plane:
+// Delaunay refinement (del2d, paper section 3.3) in a plane:
 // repeatedly insert the circumcentre of the triangle with the largest
 // circumradius over target size, reconnecting by Bowyer-Watson cavities that
 // never cross constrained edges, until every triangle is below the bound.

@@ -1,4 +1,4 @@
-// Coastline statements (native extension, paper section 2.2, issue 4): `Coastline[n] = GSHHS;`,
+// Coastline statements (native extension, paper section 2.2): `Coastline[n] = GSHHS;`,
 // `Coastline[n].Option = value;`, `Delete Coastline[n];` and the import `Coastline{n}`, which
 // runs coast::build_coast_model and turns its loops into points, curves and curve loops.
 #include <cmath>

@@ -1,4 +1,4 @@
-// Quality optimisation after 2D refinement (issue 7, paper section 3.3): quality swaps
+// Quality optimisation after 2D refinement (paper section 3.3): quality swaps
 // and optimisation-based smoothing of the vertices of the worst triangles, in rounds,
 // so that the minimum rho of the mesh rises without moving the boundary.
 #pragma once
