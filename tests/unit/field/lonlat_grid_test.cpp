@@ -80,12 +80,12 @@ TEST_CASE("lonlat grid: ESRI headers are checked before anything is allocated") 
 TEST_CASE("lonlat grid: ESRI text from memory, bad data words named by line") {
   const std::string head = "ncols 2\nnrows 2\nxllcenter 0\nyllcenter 0\ncellsize 1\n";
   const LonLatGrid g = parse_esri_ascii_grid(head + "1 2\n3 4\n", "mem.asc");
-  // Sizes an int holds, but 1.6e9 values cannot fit in 8 bytes of data.
+  // Sizes an int holds, but 1.6e9 values cannot fit in 9 bytes of data.
   try {
     parse_esri_ascii_grid("ncols 40000\nnrows 40000\nxllcorner 0\nyllcorner 0\ncellsize 1e-3\n1 2\n3 4\n", "big.asc");
     FAIL("read");
   } catch (const FieldError& e) {
-    CHECK(std::string(e.what()).find("big.asc: the header announces 40000 x 40000 values but only 8 bytes") !=
+    CHECK(std::string(e.what()).find("big.asc: the header announces 40000 x 40000 values but only 9 bytes") !=
           std::string::npos);
   }
   CHECK(g.at(0, 1) == 1);
