@@ -15,6 +15,10 @@
 
 namespace sm::field {
 
+namespace {
+constexpr double kMaxRelief = 1e6;   // metres
+}  // namespace
+
 LonLatGrid hessian_criterion(const LonLatGrid& depth, double depth_ref, double radius) {
   const double deg = std::numbers::pi / 180;
   const double dl = depth.dlon * deg, dp = depth.dlat * deg;
@@ -132,6 +136,17 @@ FieldPtr make(const BuildInputs& in) {
         }
         v = min_depth;
         continue;
+      }
+      // The deepest trench is 11 km and the highest summit 9 km: a relief beyond
+      // 1000 km is a unit or packing error (a scale_factor of 1e300, say).
+      if (std::fabs(v) > kMaxRelief) {
+        FieldError e(FieldErrc::FileError,
+                     fmt::format("{}: relief {} m at lon {}, lat {} is not an Earth depth or height in metres "
+                                 "(check the file's scale_factor, add_offset and units)",
+                                 path.string(), v, g.lon(i), g.lat(j)));
+        e.file = path.string();
+        e.field_id = in.id;
+        throw e;
       }
       v = std::max(sign * v, min_depth);
     }

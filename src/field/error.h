@@ -2,9 +2,12 @@
 // option, file or expression column, so the interpreter can locate it.
 #pragma once
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "base/vec.h"
 
 namespace sm::field {
 
@@ -34,6 +37,7 @@ class FieldError : public std::runtime_error {
   std::vector<int> ids;       ///< MissingField: the missing id; Cycle: the loop, in order
   std::string file;           ///< FileError: the path
   int column = -1;            ///< ParseError: 1-based column in the expression
+  std::optional<Vec3> point;  ///< BadValue from an evaluation: where the field was evaluated
 
  private:
   FieldErrc code_;

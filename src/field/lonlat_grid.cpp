@@ -3,7 +3,11 @@
 #include "field/lonlat_grid.h"
 
 #include <algorithm>
+#include <cctype>
+#include <charconv>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <fstream>
 #include <mutex>
 #include <numbers>
@@ -19,6 +23,10 @@ namespace sm::field {
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180;
+// Bounds on a grid read from a file: LonLatGrid indexes sides with int, and
+// 2^31 nodes (16 GiB of doubles) is far beyond any global relief model in use.
+constexpr std::size_t kMaxGridSide = 2147483647;
+constexpr std::uint64_t kMaxGridValues = std::uint64_t{1} << 31;
 
 [[noreturn]] void file_error(const std::filesystem::path& file, const std::string& what) {
   FieldError e(FieldErrc::FileError, fmt::format("{}: {}", file.string(), what));
@@ -40,6 +48,19 @@ std::pair<double, double> even_axis(const std::filesystem::path& file, const std
                                    "expected {})", name, c[k], k, expect));
   }
   return {c.front(), step};
+}
+
+// The nodes must lie on the globe: latitudes in [-90, 90] and longitudes in
+// [-540, 540] (a grid may run past +-180), with half a cell of slack for grids
+// whose node rows stand for cells that touch a pole.
+void check_extent(const std::filesystem::path& file, const LonLatGrid& g) {
+  const double west = g.lon0, east = g.lon0 + g.dlon * (g.nlon - 1);
+  const double south = g.lat0, north = g.lat0 + g.dlat * (g.nlat - 1);
+  const double slack_lat = 0.5 * g.dlat + 1e-9, slack_lon = 0.5 * g.dlon + 1e-9;
+  if (!(south >= -90 - slack_lat && north <= 90 + slack_lat))
+    file_error(file, fmt::format("the grid's latitudes {} .. {} are not in [-90, 90]", south, north));
+  if (!(west >= -540 - slack_lon && east <= 540 + slack_lon))
+    file_error(file, fmt::format("the grid's longitudes {} .. {} are not in [-540, 540]", west, east));
 }
 
 }  // namespace
@@ -177,6 +198,90 @@ class NcFile {
   int id_ = -1;
 };
 
+std::size_t type_size(nc_type t) {
+  switch (t) {
+    case NC_BYTE: case NC_CHAR: case NC_UBYTE: return 1;
+    case NC_SHORT: case NC_USHORT: return 2;
+    case NC_INT: case NC_FLOAT: case NC_UINT: return 4;
+    case NC_DOUBLE: case NC_INT64: case NC_UINT64: return 8;
+    default: return 0;
+  }
+}
+
+std::uint64_t pad4(std::uint64_t n) { return (n + 3) / 4 * 4; }
+
+// a * b, saturating (hostile headers announce sizes near 2^64).
+std::uint64_t mul_sat(std::uint64_t a, std::uint64_t b) {
+  return a != 0 && b > UINT64_MAX / a ? UINT64_MAX : a * b;
+}
+std::uint64_t add_sat(std::uint64_t a, std::uint64_t b) { return b > UINT64_MAX - a ? UINT64_MAX : a + b; }
+
+// Lower bound of the bytes one attribute list takes in a classic header: tag,
+// count, then per attribute its name, type, count and values padded to 4.
+std::uint64_t classic_atts_bytes(int ncid, int v, int natts, std::uint64_t w) {
+  std::uint64_t n = 4 + w;
+  for (int a = 0; a < natts; ++a) {
+    char name[NC_MAX_NAME + 1];
+    nc_type t;
+    std::size_t len = 0;
+    if (nc_inq_attname(ncid, v, a, name) != NC_NOERR || nc_inq_att(ncid, v, name, &t, &len) != NC_NOERR) continue;
+    n = add_sat(n, w + pad4(std::strlen(name)) + 4 + w + pad4(mul_sat(len, type_size(t))));
+  }
+  return n;
+}
+
+// In a classic (CDF-1/2/5) file the data of variable `zv` lies at or after the
+// header and every fixed-size variable defined before it; libnetcdf reads the
+// bytes a truncated file lacks as zeros, so the length is checked here. The
+// header is serialised without its optional padding and the data unpadded,
+// which makes the result a lower bound of the bytes the variable needs.
+std::uint64_t classic_bytes_needed(int ncid, int format, int zv) {
+  const std::uint64_t w = format == NC_FORMAT_CDF5 ? 8 : 4;   // counts and lengths
+  const std::uint64_t dimid_w = format == NC_FORMAT_CDF5 ? 8 : 4;
+  const std::uint64_t begin_w = format == NC_FORMAT_CLASSIC ? 4 : 8;
+  int ndims = 0, nvars = 0, ngatts = 0, unlim = -1;
+  if (nc_inq(ncid, &ndims, &nvars, &ngatts, &unlim) != NC_NOERR) return 0;
+  std::uint64_t header = 4 + w + 4 + w;   // magic, numrecs, dimension list tag and count
+  for (int d = 0; d < ndims; ++d) {
+    char name[NC_MAX_NAME + 1];
+    if (nc_inq_dimname(ncid, d, name) == NC_NOERR) header = add_sat(header, w + pad4(std::strlen(name)) + w);
+  }
+  header = add_sat(header, classic_atts_bytes(ncid, NC_GLOBAL, ngatts, w));
+  header = add_sat(header, 4 + w);
+  std::size_t nrecs = 0;
+  if (unlim >= 0) nc_inq_dimlen(ncid, unlim, &nrecs);
+  std::vector<std::uint64_t> data(static_cast<std::size_t>(nvars), 0);
+  std::vector<bool> is_record(static_cast<std::size_t>(nvars), false);
+  for (int v = 0; v < nvars; ++v) {
+    char name[NC_MAX_NAME + 1];
+    nc_type t;
+    int nd = 0, natts = 0;
+    int dimids[NC_MAX_VAR_DIMS];
+    if (nc_inq_var(ncid, v, name, &t, &nd, dimids, &natts) != NC_NOERR) continue;
+    header = add_sat(header, w + pad4(std::strlen(name)) + w + dimid_w * static_cast<std::uint64_t>(nd));
+    header = add_sat(header, classic_atts_bytes(ncid, v, natts, w));
+    header = add_sat(header, 4 + w + begin_w);
+    std::uint64_t n = type_size(t);
+    for (int k = 0; k < nd; ++k) {
+      std::size_t len = 0;
+      nc_inq_dimlen(ncid, dimids[k], &len);
+      if (dimids[k] == unlim) is_record[static_cast<std::size_t>(v)] = true;
+      n = mul_sat(n, len);
+    }
+    data[static_cast<std::size_t>(v)] = n;
+  }
+  // Fixed-size variables come first, in definition order; record variables after all of them.
+  std::uint64_t end = header;
+  for (int v = 0; v < nvars; ++v) {
+    if (is_record[static_cast<std::size_t>(v)]) continue;
+    end = add_sat(end, data[static_cast<std::size_t>(v)]);
+    if (v == zv) return end;
+  }
+  for (int v = 0; v < nvars; ++v)
+    if (is_record[static_cast<std::size_t>(v)]) end = add_sat(end, data[static_cast<std::size_t>(v)]);
+  return end;
+}
+
 bool looks_like_lon(const NcFile& nc, int v) {
   const std::string u = nc.text_att(v, "units");
   if (u.find("east") != std::string::npos) return true;
@@ -234,14 +339,40 @@ LonLatGrid read_netcdf_grid(const std::filesystem::path& file, const NetcdfGridS
     file_error(file, fmt::format("'{}' and '{}' are not the 1D coordinates of the dimensions of '{}'",
                                  nc.var_name(lon_v), nc.var_name(lat_v), zname));
   const std::size_t nx = nc.dim_len(lon_dim), ny = nc.dim_len(lat_dim);
+  // Sizes are checked before anything is allocated: against the file length for
+  // the classic formats, against a fixed bound for netCDF-4 (whose compressed
+  // data may be far smaller than the grid; its reads fail on a cut file).
+  if (nx < 2 || ny < 2 || nx > kMaxGridSide || ny > kMaxGridSide || mul_sat(nx, ny) > kMaxGridValues)
+    file_error(file, fmt::format("variable '{}' is a {} x {} grid: each side must be 2 to {} and the grid at "
+                                 "most {} values", zname, ny, nx, kMaxGridSide, kMaxGridValues));
+  int format = 0;
+  nc.check(nc_inq_format(nc.id(), &format), "file format");
+  if (format == NC_FORMAT_CLASSIC || format == NC_FORMAT_64BIT_OFFSET || format == NC_FORMAT_CDF5) {
+    std::error_code ec;
+    const std::uintmax_t have = std::filesystem::file_size(file, ec);
+    const std::uint64_t need = classic_bytes_needed(nc.id(), format, zv);
+    if (!ec && need > have)
+      file_error(file, fmt::format("variable '{}' needs at least {} bytes but the file has {}: the file is "
+                                   "truncated", zname, need, have));
+    for (int cv : {lon_v, lat_v}) {
+      const std::uint64_t need_c = classic_bytes_needed(nc.id(), format, cv);
+      if (!ec && need_c > have)
+        file_error(file, fmt::format("variable '{}' needs at least {} bytes but the file has {}: the file is "
+                                     "truncated", nc.var_name(cv), need_c, have));
+    }
+  }
   const auto [x0, dx] = even_axis(file, nc.var_name(lon_v), nc.read(lon_v, nx));
   const auto [y0, dy] = even_axis(file, nc.var_name(lat_v), nc.read(lat_v, ny));
-  std::vector<double> raw = nc.read(zv, nx * ny);
   double scale = 1, offset = 0, fill = 0, missing = 0;
   const bool has_scale = nc.att(zv, "scale_factor", scale);
   const bool has_offset = nc.att(zv, "add_offset", offset);
   const bool has_fill = nc.att(zv, "_FillValue", fill);
   const bool has_missing = nc.att(zv, "missing_value", missing);
+  if (has_scale && !(std::isfinite(scale) && scale != 0))
+    file_error(file, fmt::format("variable '{}': scale_factor {} must be finite and non-zero", zname, scale));
+  if (has_offset && !std::isfinite(offset))
+    file_error(file, fmt::format("variable '{}': add_offset {} must be finite", zname, offset));
+  std::vector<double> raw = nc.read(zv, nx * ny);
 
   LonLatGrid g;
   g.nlon = static_cast<int>(nx);
@@ -250,6 +381,7 @@ LonLatGrid read_netcdf_grid(const std::filesystem::path& file, const NetcdfGridS
   g.dlat = std::fabs(dy);
   g.lon0 = dx > 0 ? x0 : x0 + dx * static_cast<double>(nx - 1);
   g.lat0 = dy > 0 ? y0 : y0 + dy * static_cast<double>(ny - 1);
+  check_extent(file, g);
   g.v.resize(nx * ny);
   for (std::size_t r = 0; r < ny; ++r)
     for (std::size_t c = 0; c < nx; ++c) {
@@ -263,38 +395,110 @@ LonLatGrid read_netcdf_grid(const std::filesystem::path& file, const NetcdfGridS
       }
       const std::size_t i = dx > 0 ? c : nx - 1 - c;
       const std::size_t j = dy > 0 ? r : ny - 1 - r;
+      if (std::isinf(val))
+        file_error(file, fmt::format("variable '{}': value {} at lon {}, lat {} is not finite (raw {}, "
+                                     "scale_factor {}, add_offset {})", zname, val,
+                                     x0 + dx * static_cast<double>(c), y0 + dy * static_cast<double>(r),
+                                     raw_v, scale, offset));
       g.v[j * nx + i] = val;
     }
   g.detect_wrap();
   return g;
 }
 
-LonLatGrid read_esri_ascii_grid(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) file_error(file, std::filesystem::exists(file) ? "cannot be read" : "no such file");
+namespace {
+
+// Whitespace-separated words of an ESRI ASCII grid, each with its line number.
+class AscWords {
+ public:
+  explicit AscWords(std::string_view text) : s_(text) {}
+  /// The next word, empty at the end of the text; `line` is where it starts.
+  std::string_view next(int& line) {
+    while (pos_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[pos_]))) {
+      if (s_[pos_] == '\n') ++line_;
+      ++pos_;
+    }
+    const std::size_t b = pos_;
+    while (pos_ < s_.size() && !std::isspace(static_cast<unsigned char>(s_[pos_]))) ++pos_;
+    line = line_;
+    return s_.substr(b, pos_ - b);
+  }
+  std::string_view peek() const {
+    std::size_t p = pos_;
+    while (p < s_.size() && std::isspace(static_cast<unsigned char>(s_[p]))) ++p;
+    std::size_t e = p;
+    while (e < s_.size() && !std::isspace(static_cast<unsigned char>(s_[e]))) ++e;
+    return s_.substr(p, e - p);
+  }
+  std::size_t remaining() const { return s_.size() - pos_; }
+
+ private:
+  std::string_view s_;
+  std::size_t pos_ = 0;
+  int line_ = 1;
+};
+
+// The whole word as a finite number.
+bool finite_number(std::string_view w, double& v) {
+  if (!w.empty() && w.front() == '+') w.remove_prefix(1);
+  const auto r = std::from_chars(w.data(), w.data() + w.size(), v);
+  return r.ec == std::errc{} && r.ptr == w.data() + w.size() && std::isfinite(v);
+}
+
+std::string shown(std::string_view w) { return std::string(w.substr(0, 40)); }
+
+}  // namespace
+
+LonLatGrid parse_esri_ascii_grid(std::string_view text, const std::filesystem::path& file) {
   long ncols = -1, nrows = -1;
   double x = NAN, y = NAN, cell = NAN, nodata = NAN;
   bool x_center = false, y_center = false, has_nodata = false;
-  std::string key;
-  // Header keys in any order and case, until the first number.
-  while (in >> std::ws && in.peek() != EOF &&
-         !(std::isdigit(in.peek()) || in.peek() == '-' || in.peek() == '+' || in.peek() == '.')) {
-    in >> key;
+  int line = 1;
+  AscWords words(text);
+  // Header keys in any order and case, until the first word that is not a name.
+  for (std::string_view w = words.peek(); !w.empty() && std::isalpha(static_cast<unsigned char>(w.front()));
+       w = words.peek()) {
+    std::string key(words.next(line));
     std::transform(key.begin(), key.end(), key.begin(), ::tolower);
+    int vline = line;
+    const std::string_view vw = words.next(vline);
     double val;
-    if (!(in >> val)) file_error(file, fmt::format("header '{}' has no numeric value", key));
-    if (key == "ncols") ncols = static_cast<long>(val);
-    else if (key == "nrows") nrows = static_cast<long>(val);
+    if (vw.empty() || vline != line || !finite_number(vw, val))
+      file_error(file, fmt::format("line {}: header '{}' needs a finite number, not '{}'", line, shown(key),
+                                   vline == line ? shown(vw) : std::string()));
+    auto size = [&](long& out) {
+      // Sizes are checked before anything is allocated: a hostile header must not
+      // ask for terabytes.
+      if (!(val >= 2 && val <= 2147483647.0 && val == std::floor(val)))
+        file_error(file, fmt::format("line {}: {} {} must be a whole number from 2 to 2147483647", line, key,
+                                     shown(vw)));
+      out = static_cast<long>(val);
+    };
+    const bool seen = (key == "ncols" && ncols >= 0) || (key == "nrows" && nrows >= 0) ||
+                      ((key == "xllcorner" || key == "xllcenter") && !std::isnan(x)) ||
+                      ((key == "yllcorner" || key == "yllcenter") && !std::isnan(y)) ||
+                      (key == "cellsize" && !std::isnan(cell)) || (key == "nodata_value" && has_nodata);
+    if (seen) file_error(file, fmt::format("line {}: header '{}' given twice", line, key));
+    if (key == "ncols") size(ncols);
+    else if (key == "nrows") size(nrows);
     else if (key == "xllcorner") x = val;
     else if (key == "xllcenter") x = val, x_center = true;
     else if (key == "yllcorner") y = val;
     else if (key == "yllcenter") y = val, y_center = true;
-    else if (key == "cellsize") cell = val;
-    else if (key == "nodata_value") nodata = val, has_nodata = true;
-    else file_error(file, fmt::format("unknown header '{}'", key));
+    else if (key == "cellsize") {
+      if (!(val > 0)) file_error(file, fmt::format("line {}: cellsize {} must be positive", line, shown(vw)));
+      cell = val;
+    } else if (key == "nodata_value") nodata = val, has_nodata = true;
+    else file_error(file, fmt::format("line {}: unknown header '{}'", line, shown(key)));
   }
-  if (ncols < 2 || nrows < 2 || std::isnan(x) || std::isnan(y) || !(cell > 0))
+  if (ncols < 0 || nrows < 0 || std::isnan(x) || std::isnan(y) || std::isnan(cell))
     file_error(file, "incomplete header (need ncols, nrows >= 2, xll*, yll*, cellsize > 0)");
+  // Every value takes at least one character and one separator (the last one may
+  // lack its separator).
+  const auto values = static_cast<unsigned long long>(ncols) * static_cast<unsigned long long>(nrows);
+  if (values > (words.remaining() + 1) / 2)
+    file_error(file, fmt::format("the header announces {} x {} values but only {} bytes of data follow "
+                                 "(truncated file or wrong header)", nrows, ncols, words.remaining()));
   LonLatGrid g;
   g.nlon = static_cast<int>(ncols);
   g.nlat = static_cast<int>(nrows);
@@ -302,20 +506,34 @@ LonLatGrid read_esri_ascii_grid(const std::filesystem::path& file) {
   // Corner registration: node values stand for cell centres.
   g.lon0 = x_center ? x : x + cell / 2;
   g.lat0 = y_center ? y : y + cell / 2;
-  g.v.resize(static_cast<std::size_t>(ncols * nrows));
+  check_extent(file, g);
+  g.v.resize(static_cast<std::size_t>(values));
   for (long r = 0; r < nrows; ++r)
     for (long c = 0; c < ncols; ++c) {
+      const std::string_view w = words.next(line);
       double val;
-      if (!(in >> val))
+      if (w.empty())
         file_error(file, fmt::format("data ends early: row {} column {} of {} x {}", r + 1, c + 1,
                                      nrows, ncols));
+      if (!finite_number(w, val))
+        file_error(file, fmt::format("line {}: row {} column {}: '{}' is not a finite number", line, r + 1,
+                                     c + 1, shown(w)));
       if (has_nodata && val == nodata) val = std::nan("");
       g.at(static_cast<int>(c), static_cast<int>(nrows - 1 - r)) = val;  // first row = north
     }
-  double extra;
-  if (in >> extra) file_error(file, "more values than ncols x nrows");
+  if (!words.next(line).empty()) file_error(file, fmt::format("line {}: more values than ncols x nrows", line));
   g.detect_wrap();
   return g;
+}
+
+LonLatGrid read_esri_ascii_grid(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) file_error(file, std::filesystem::exists(file) ? "cannot be read" : "no such file");
+  std::ostringstream all;
+  all << in.rdbuf();
+  if (in.bad()) file_error(file, "read error");
+  const std::string text = std::move(all).str();
+  return parse_esri_ascii_grid(text, file);
 }
 
 }  // namespace sm::field

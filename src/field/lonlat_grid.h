@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "base/vec.h"
@@ -53,8 +54,13 @@ LonLatGrid read_netcdf_grid(const std::filesystem::path& file, const NetcdfGridS
 
 /// Reads an ESRI ASCII grid (.asc; header ncols, nrows, xll{corner,center},
 /// yll{corner,center}, cellsize, [nodata_value]; first data row = north).
-/// NODATA nodes become NaN. Throws FieldError FileError.
+/// NODATA nodes become NaN. The header is checked before anything is
+/// allocated: finite values, whole sizes >= 2, cellsize > 0, nodes on the globe,
+/// and at least two bytes of data per announced value. Throws FieldError
+/// FileError naming the file, the line and the value.
 LonLatGrid read_esri_ascii_grid(const std::filesystem::path& file);
+/// Same, from the text of a grid already in memory (`file` names it in errors).
+LonLatGrid parse_esri_ascii_grid(std::string_view text, const std::filesystem::path& file);
 
 /// Longitude and latitude (degrees) of a 3D point; `radius` <= 0 uses |p|.
 void lonlat_of(const Vec3& p, double radius, double& lon_deg, double& lat_deg);

@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "field/min_max.h"
+#include "field/size_check.h"
 #include "interp/builtins/dispatch.h"
 #include "interp/builtins/field_context.h"
 #include "interp/interpreter.h"
@@ -234,6 +235,18 @@ void fail_field_error(Interpreter& in, const field::FieldError& e, SourceRange a
       break;
     }
     default: {
+      // A size the mesher met at a point: where on the sphere, when the model has one.
+      if (e.point && !in.kernel().model.geometries().empty()) {
+        const geo::SurfaceGeometry& g = in.kernel().model.geometries().begin()->second;
+        geo::LonLat ll;
+        if (g.polar()) {
+          ll = g.polar()->to_lonlat(*e.point);
+        } else {
+          const Vec2 p = g.param(*e.point);
+          ll = {p.x * geo::kRadToDeg, p.y * geo::kRadToDeg};
+        }
+        message += fmt::format(" (lon {:.6f}, lat {:.6f})", ll.lon, ll.lat);
+      }
       // A bad value is best shown where it was set; the use comes as a note.
       if (const SourceRange* r = option_site(in, e.field_id, e.option)) {
         where = *r;
@@ -292,10 +305,15 @@ field::FieldPtr background_size_field(Interpreter& in, const CurveMeshNodes* mes
       throw;
     }
   }
-  if (!mesh_nodes) return built_fields(in, id, k.background_field_at).shared(id);
+  // The mesher gets the field behind a check of every size it returns (meshing code
+  // that catches the FieldError reports it with fail_field_error at the Background
+  // Field statement).
+  if (!mesh_nodes)
+    return field::checked_size_field(built_fields(in, id, k.background_field_at).shared(id), id, kind_of(in, id));
   check_reference_depth(in, id, k.background_field_at);
   try {
-    return k.fields.build(id, make_build_context(k.model, {}, mesh_nodes)).shared(id);
+    return field::checked_size_field(k.fields.build(id, make_build_context(k.model, {}, mesh_nodes)).shared(id),
+                                     id, kind_of(in, id));
   } catch (const field::FieldError& e) {
     fail_field_error(in, e, k.background_field_at);
   }

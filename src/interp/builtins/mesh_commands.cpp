@@ -106,9 +106,21 @@ void publish_stats(Interpreter& in, const ModelMesh& mesh, const MeshStats& st) 
   }
 }
 
+MeshFailure mesh_model_unchecked(Interpreter& in, int dim, SourceRange where);
+
 // Meshes the model up to `dim` into the kernel state; on failure returns why. The
 // mesher's warnings are reported at `where` (the Mesh statement; none for -1/-2).
+// A background field that gives a bad size stops meshing with a FieldError (see
+// field/size_check.h), reported at the field's definition.
 MeshFailure mesh_model(Interpreter& in, int dim, SourceRange where) {
+  try {
+    return mesh_model_unchecked(in, dim, where);
+  } catch (const field::FieldError& e) {
+    fail_field_error(in, e, in.kernel().background_field_at);
+  }
+}
+
+MeshFailure mesh_model_unchecked(Interpreter& in, int dim, SourceRange where) {
   using Clock = std::chrono::steady_clock;
   KernelState& k = in.kernel();
   const field::FieldPtr background = background_size_field(in);

@@ -235,3 +235,22 @@ TEST_CASE("bathymetry: all shared netCDF grids read with their documented ranges
     CHECK(hi > 2000);
   }
 }
+
+// A finite but absurd scale_factor (1e300: reliefs of -1e302 m) passes the reader's
+// checks (finite, non-zero) and is caught as a relief no Earth has.
+TEST_CASE("bathymetry: a relief beyond 1000 km is an error naming the file and the node") {
+  FieldSet fs;
+  fs.define(1, "Bathymetry");
+  const std::string file = std::string(SM_TEST_DATA) + "/grids/scale_1e300.nc";
+  fs.set(1, "FileName", file);
+  try {
+    fs.build(1, {});
+    FAIL("built");
+  } catch (const FieldError& e) {
+    CHECK(e.code() == FieldErrc::FileError);
+    CHECK(e.field_id == 1);
+    CHECK(std::string(e.what()).find(file + ": relief -1e+302 m at lon 0, lat 40") != std::string::npos);
+  }
+  fs.set(1, "FileName", std::string(SM_TEST_DATA) + "/grids/small.nc");
+  CHECK(eval1(fs, 1, point_of(8, 46, 1)) == doctest::Approx(960));
+}

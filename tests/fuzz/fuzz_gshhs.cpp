@@ -1,0 +1,10 @@
+// libFuzzer target: the gshhs reader on arbitrary bytes (entry in fuzz_gshhs_entry.cpp).
+#include <cstddef>
+#include <cstdint>
+
+#include "fuzz_reader_entries.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  sm::fuzz::run_gshhs_input(data, size);
+  return 0;
+}
