@@ -36,7 +36,7 @@ std::string Interpreter::format_args(ExprId format, const ExprList& args, Source
 void Interpreter::exec_print(const Stmt& s, const PrintStmt& p) {
   const std::string text = format_args(p.format, p.args, s.range);
   if (p.redirect != Redirect::None) {
-    const std::string path = resolve_script_path(env_, eval_string(p.file));
+    const std::string path = script_relative_path(env_, eval_string(p.file));
     const SourceRange where = ast_.expr(p.file).range;
     std::string reason;
     if (!redirects_.write_line(path, p.redirect == Redirect::Append, text, where, &reason))

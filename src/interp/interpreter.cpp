@@ -21,7 +21,7 @@ Interpreter::Interpreter(SourceManager& sources, Diagnostics& diags, std::ostrea
       diags_(diags),
       out_(out),
       settings_(std::move(settings)),
-      env_{symbols_, options_, onelab_numbers_, onelab_strings_, "", rand_state_, &settings_.limits} {}
+      env_{symbols_, options_, onelab_numbers_, onelab_strings_, "", rand_state_, &settings_.limits, &redirects_} {}
 
 std::string Interpreter::preset_number(const std::string& name, double v) {
   if (name.find('.') != std::string::npos) {

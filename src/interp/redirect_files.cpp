@@ -37,8 +37,16 @@ bool RedirectFiles::write_line(const std::string& path, bool append, std::string
   return true;
 }
 
+void RedirectFiles::publish(const std::string& path) {
+  const auto it = files_.find(path);
+  if (it == files_.end()) return;
+  if (!it->second->file.commit()) failed_.push_back({it->second->where, path, it->second->file.error()});
+  files_.erase(it);
+}
+
 std::vector<RedirectFiles::Failure> RedirectFiles::commit_all() {
-  std::vector<Failure> failed;
+  std::vector<Failure> failed = std::move(failed_);
+  failed_.clear();
   for (auto& [path, p] : files_)
     if (!p->file.commit()) failed.push_back({p->where, path, p->file.error()});
   files_.clear();
@@ -48,6 +56,7 @@ std::vector<RedirectFiles::Failure> RedirectFiles::commit_all() {
 void RedirectFiles::abandon_all() {
   for (auto& [path, p] : files_) p->file.abandon();
   files_.clear();
+  failed_.clear();
 }
 
 }  // namespace sm::interp

@@ -2,8 +2,9 @@
 // one base::OutputFile for the whole run and put in place when the run ends
 // without errors, so a failed script or a full disk never leaves a partial
 // file, and a loop of `>>` costs one write per line, not a copy of the file.
-// Before an Include the pending files are put in place, so a script that
-// writes a .geo and then includes it works as in Gmsh.
+// Before an Include, or a builtin that reads the file (ListFromFile,
+// FileExists, ...), a pending file is put in place, so a script that writes a
+// file and then reads it works as in Gmsh.
 #pragma once
 
 #include <map>
@@ -31,7 +32,11 @@ class RedirectFiles {
   bool write_line(const std::string& path, bool append, std::string_view line, lang::SourceRange where,
                   std::string* reason);
 
-  /// Puts every pending file in place; the ones that fail are returned.
+  /// Puts `path` in place now if this run has it pending (a builtin is about
+  /// to read it); a failure is kept for commit_all() to return.
+  void publish(const std::string& path);
+  /// Puts every pending file in place; the ones that fail (now or in an
+  /// earlier publish) are returned.
   std::vector<Failure> commit_all();
   /// Drops every pending file: the targets stay as they were.
   void abandon_all();
@@ -43,6 +48,7 @@ class RedirectFiles {
     lang::SourceRange where;
   };
   std::map<std::string, std::unique_ptr<Pending>, std::less<>> files_;
+  std::vector<Failure> failed_;
 };
 
 }  // namespace sm::interp

@@ -72,11 +72,17 @@ const std::vector<double>& arg_list(const std::vector<Value>& args, int i) {
   return v.nums();
 }
 
-std::string resolve_script_path(const BuiltinEnv& env, const std::string& path) {
+std::string script_relative_path(const BuiltinEnv& env, const std::string& path) {
   namespace fs = std::filesystem;
   const fs::path p(path);
   if (p.is_absolute() || env.script_path.empty()) return path;
   return (fs::path(env.script_path).parent_path() / p).lexically_normal().string();
+}
+
+std::string resolve_script_path(const BuiltinEnv& env, const std::string& path) {
+  std::string resolved = script_relative_path(env, path);
+  if (env.redirects && !env.redirects->empty()) env.redirects->publish(resolved);
+  return resolved;
 }
 
 bool builtin_number_constant(std::string_view name, double& out) {

@@ -11,6 +11,7 @@
 
 #include "interp/limits.h"
 #include "interp/options.h"
+#include "interp/redirect_files.h"
 #include "interp/value.h"
 
 namespace sm::interp {
@@ -25,6 +26,9 @@ struct BuiltinEnv {
   std::string script_path;   ///< file of the statement being run ("" for none)
   std::uint64_t& rand_state;
   const Limits* limits = nullptr;   ///< nullptr: the defaults
+  /// The run's Printf > files: a file the script wrote is put in place before
+  /// a builtin reads it (nullptr: none).
+  RedirectFiles* redirects = nullptr;
 };
 
 /// The run's limits (the defaults when the environment names none).
@@ -61,8 +65,11 @@ double arg_number(const std::vector<Value>& args, int i);
 std::string arg_string(const std::vector<Value>& args, int i);
 /// A numeric argument as a list (a scalar is a one-element list).
 const std::vector<double>& arg_list(const std::vector<Value>& args, int i);
-/// Resolves a script-relative path against the running script's directory.
+/// Resolves a script-relative path against the running script's directory, for
+/// reading: a file this run wrote with Printf > is put in place first.
 std::string resolve_script_path(const BuiltinEnv& env, const std::string& path);
+/// The same path for writing (Printf >): nothing is put in place.
+std::string script_relative_path(const BuiltinEnv& env, const std::string& path);
 
 // Family registration, one per file.
 void add_math_builtins(std::vector<BuiltinInfo>& out);
