@@ -119,6 +119,7 @@ void Interpreter::assign_option(const LValue& t, AffOp op, ExprId value, SourceR
     }
   }
   if (!err.empty()) fail_fmt(vr, Diag::InvalidOptionValue, err);
+  kernel_.option_set_at[std::string(info->name)] = r;
 }
 
 void Interpreter::exec_assign(const Stmt& s, const AssignStmt& a) {

@@ -49,6 +49,9 @@ struct KernelState {
   std::map<int, CoastlineDef> coastlines;
   /// `Plugin(GSHHS).Option = value;` as set so far (plugin_gshhs.cpp), name -> value.
   std::map<std::string, Value, std::less<>> gshhs_plugin_options;
+  /// Option name (canonical) -> the last assignment that set it, for errors found when
+  /// the option is used (Mesh.DepthField naming a field that was never defined).
+  std::map<std::string, lang::SourceRange, std::less<>> option_set_at;
   /// (dim, tag) -> the statement that created the entity (provenance).
   std::map<std::pair<int, int>, lang::SourceRange> created_at;
   /// The mesh of the last `Mesh n;` (builtins/mesh_commands.cpp), what `Save` writes.

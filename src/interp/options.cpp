@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -60,45 +61,25 @@ Color parse_color(std::string_view text) {
   return c;
 }
 
-// Allowed values of the options whose meaning is a choice.
-struct Choice {
+// What set_number accepts for an option (options_checks.def): one of `allowed`, or
+// min <= v <= max (min < v when strict).
+struct ValueCheck {
   std::string_view name;
   std::vector<double> allowed;
+  double min = 0;
+  bool strict = false;
+  double max = 0;
 };
-const std::vector<Choice>& choices() {
-  static const std::vector<Choice> c = {
-      {"Mesh.Algorithm", {1, 2, 3, 5, 6, 7, 8, 9}},
-      {"Mesh.Algorithm3D", {1, 3, 4, 7, 9, 10}},
-      {"Mesh.MshFileVersion", {1, 2, 2.2, 3, 4, 4.1}},
-      {"Mesh.RecombinationAlgorithm", {0, 1, 2, 3}},
-      {"Mesh.SubdivisionAlgorithm", {0, 1, 2, 3}},
-      {"Mesh.QualityType", {0, 1, 2, 3}},
-      {"Mesh.Binary", {0, 1}},
-      {"Mesh.SaveAll", {0, 1}},
-      {"Mesh.RecombineAll", {0, 1}},
-      {"Mesh.SecondOrderLinear", {0, 1}},
-      {"Geometry.OldNewReg", {0, 1}},
-      {"Geometry.AutoCoherence", {0, 1, 2}},
+constexpr double kNoMax = std::numeric_limits<double>::infinity();
+const std::vector<ValueCheck>& value_checks() {
+  static const std::vector<ValueCheck> c = {
+#define CHOICE(name, ...) ValueCheck{name, {__VA_ARGS__}, 0, false, 0},
+#define RANGE(name, lo, strict_lo, hi) ValueCheck{name, {}, lo, strict_lo, hi},
+#include "interp/options_checks.def"
+#undef RANGE
+#undef CHOICE
   };
   return c;
-}
-
-// Lower bounds of numeric options that are sizes, counts or tolerances.
-struct Bound {
-  std::string_view name;
-  double min;
-  bool strict;
-};
-const std::vector<Bound>& bounds() {
-  static const std::vector<Bound> b = {
-      {"Mesh.MeshSizeMin", 0, false},     {"Mesh.MeshSizeMax", 0, true},
-      {"Mesh.MeshSizeFactor", 0, true},   {"Mesh.ElementOrder", 1, false},
-      {"Mesh.Smoothing", 0, false},       {"Mesh.RandomFactor", 0, false},
-      {"Geometry.Tolerance", 0, false},   {"General.NumThreads", 0, false},
-      {"General.Verbosity", 0, false},    {"Geometry.ScalingFactor", 0, true},
-      {"Mesh.LcIntegrationPrecision", 0, true},
-  };
-  return b;
 }
 
 std::string_view kind_name(OptionKind k) {
@@ -202,19 +183,21 @@ std::string Options::set_number(std::string_view name, double v, bool internal) 
     return fmt::format("option '{}' is a {}, not a number", name, kind_name(info.kind));
   if (info.read_only && !internal) return fmt::format("option '{}' is read-only", name);
   if (!std::isfinite(v)) return fmt::format("option '{}' must be finite", name);
-  for (const auto& c : choices()) {
+  for (const ValueCheck& c : value_checks()) {
     if (c.name != info.name) continue;
-    if (std::find(c.allowed.begin(), c.allowed.end(), v) == c.allowed.end()) {
+    if (!c.allowed.empty()) {
+      if (std::find(c.allowed.begin(), c.allowed.end(), v) != c.allowed.end()) break;
       std::string list;
       for (double a : c.allowed) list += fmt::format("{}{}", list.empty() ? "" : ", ", a);
       return fmt::format("invalid value {} for option '{}' (allowed: {})", v, name, list);
     }
-  }
-  for (const auto& b : bounds()) {
-    if (b.name != info.name) continue;
-    if (v < b.min || (b.strict && v == b.min))
-      return fmt::format("invalid value {} for option '{}' (must be {} {})", v, name,
-                         b.strict ? ">" : ">=", b.min);
+    if (v < c.min || (c.strict && v == c.min) || v > c.max) {
+      if (c.max == kNoMax)
+        return fmt::format("invalid value {} for option '{}' (must be {} {})", v, name, c.strict ? ">" : ">=", c.min);
+      return fmt::format("invalid value {} for option '{}' (must be {} {} and <= {})", v, name,
+                         c.strict ? ">" : ">=", c.min, c.max);
+    }
+    break;
   }
   nums_[i] = v;
   return "";

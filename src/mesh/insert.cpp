@@ -1,6 +1,8 @@
 // Constrained Bowyer-Watson point insertion on the flat store.
 #include "mesh/insert.h"
 
+#include <cmath>
+
 #include "mesh/geometry.h"
 
 namespace sm {
@@ -17,6 +19,9 @@ std::uint32_t PointInserter::rand3() {
 }
 
 TriId PointInserter::locate(Vec2 c, TriId hint) {
+  // The predicates are exact for finite inputs only: a constructed point at infinity
+  // (the circumcentre of a triangle flat to double precision) is in no triangle.
+  if (!std::isfinite(c.x) || !std::isfinite(c.y)) return TriId{};
   std::uint32_t t = hint.value;
   for (std::uint32_t steps = 0; steps < (1u << 24); ++steps) {
     const std::uint32_t e0 = rand3();
@@ -36,6 +41,7 @@ TriId PointInserter::locate(Vec2 c, TriId hint) {
 }
 
 InsertOutcome PointInserter::insert(Vec2 c, TriId t0) {
+  if (!std::isfinite(c.x) || !std::isfinite(c.y)) return InsertOutcome::Outside;
   const std::uint32_t nv = m_.num_vertices();
   for (std::uint32_t e = 0; e < 3; ++e)
     if (m_.pos(m_.vertex(t0, e)) == c) return InsertOutcome::Duplicate;

@@ -33,7 +33,7 @@ class PointInserter {
   /// Visibility walk from the live triangle `hint` towards p that never
   /// crosses a constrained or hull edge (random edge order, fixed seed).
   /// Returns a triangle containing p (closed), or kNone when p lies beyond
-  /// such an edge.
+  /// such an edge or is not finite.
   TriId locate(Vec2 p, TriId hint);
 
   /// Inserts p, contained in triangle t: the cavity is the set of triangles
@@ -41,7 +41,8 @@ class PointInserter {
   /// crossing constrained edges; it is refilled by a fan around p. Side
   /// flags of the cavity boundary are kept; out_side is maintained (see
   /// keep_out_side). The
-  /// mesh is unchanged unless the outcome is Inserted.
+  /// mesh is unchanged unless the outcome is Inserted; a point that is not
+  /// finite is Outside.
   InsertOutcome insert(Vec2 p, TriId t);
 
   /// locate() then insert().

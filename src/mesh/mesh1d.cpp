@@ -135,9 +135,19 @@ CurvePrimitive integrate_curve(const geo::Curve& c, const CurveSizeFn& size, dou
   return out;
 }
 
-std::vector<double> place_nodes(const CurvePrimitive& p, int min_segs) {
+double node_count(const CurvePrimitive& p, int min_segs) {
   const double a = p.total();
-  const int n = std::max(min_segs + 1, static_cast<int>(a + 1.99));
+  if (!std::isfinite(a)) return a;
+  return std::max(static_cast<double>(min_segs) + 1, std::floor(a + 1.99));
+}
+
+std::vector<double> place_nodes(const CurvePrimitive& p, int min_segs, int max_nodes) {
+  const double count = node_count(p, min_segs);
+  // The double -> int conversion below is defined only for counts an int holds.
+  if (!(count <= kMaxCurveNodes)) return {};
+  int n = static_cast<int>(count);
+  if (max_nodes > 0) n = std::min(n, std::max(max_nodes, 2));
+  const double a = p.total();
   std::vector<double> out(static_cast<std::size_t>(n));
   out.front() = 0;
   out.back() = 1;
@@ -332,6 +342,49 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
     ~StageEnd() { end(); }
   } stage{opt.progress};
   stage.begin("1D", model.curves().size());
+  // Each curve's size h(t) along it: the policy with the background field, the end
+  // points' sizes and the curvature, times the Bezier stretch.
+  struct CurvePlan {
+    int tag = 0;
+    const geo::ModelCurve* mc = nullptr;
+    std::optional<double> lc0, lc1;
+    double stretch = 1;
+    CurvePrimitive prim;
+    int min_segs = 1;
+    double nodes = 0;
+  };
+  auto size_of = [&](const CurvePlan& cp) {
+    return [&, on = field::EntityRef{1, cp.tag}](std::span<const double> t, std::span<const geo::Jet3> jets,
+                                                 std::span<double> h) {
+      if (opt.background) {
+        pts.resize(t.size());
+        bg.resize(t.size());
+        for (std::size_t i = 0; i < t.size(); ++i) pts[i] = jets[i].p;
+        opt.background->eval_on(on, pts, bg);
+      }
+      field::SizeQuery q;
+      q.bbox_diag = bbox;
+      q.entity_dim = 1;
+      q.end_lc0 = cp.lc0;
+      q.end_lc1 = cp.lc1;
+      const bool curvature = opt.size.from_curvature > 0;
+      for (std::size_t i = 0; i < t.size(); ++i) {
+        q.t = t[i];
+        if (opt.background) q.background = bg[i];
+        if (curvature) {
+          const double d = norm(jets[i].d1);
+          q.curvature = d > 0 ? norm(cross(jets[i].d1, jets[i].d2)) / (d * d * d) : 0.0;
+        }
+        h[i] = cp.stretch * field::final_size(opt.size, q).size;
+      }
+    };
+  };
+  // First every curve's size integral, hence its node count: a count beyond the budget
+  // is refused before any node is placed (a size of 1e-20 asks for 1e20 nodes).
+  std::vector<CurvePlan> plans;
+  plans.reserve(model.curves().size());
+  double total_nodes = 0;
+  std::size_t largest = 0;
   std::uint64_t curves_done = 0;
   for (const auto& [tag, mc] : model.curves()) {
     if (!mc.shape) {
@@ -345,48 +398,88 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
       res.error = make_error(Mesh1dErrorKind::Invalid, tag, tag, fmt::format("curve {} lacks an end point", tag));
       return res;
     }
-    std::optional<double> lc0, lc1;
-    if (vb->lc < geo::kMaxLc) lc0 = vb->lc;
-    if (ve->lc < geo::kMaxLc) lc1 = ve->lc;
-    const field::EntityRef on{1, tag};
-    const bool curvature = opt.size.from_curvature > 0;
+    CurvePlan cp;
+    cp.tag = tag;
+    cp.mc = &mc;
+    if (vb->lc < geo::kMaxLc) cp.lc0 = vb->lc;
+    if (ve->lc < geo::kMaxLc) cp.lc1 = ve->lc;
     // Gmsh 4.8.4 integrates a Bezier curve of degree d with |X'| / d (measured: a
     // 3-point Bezier of length 3 at lc 0.1 gets 16 segments, a 6-point one 7), so its
     // node count is d times smaller than the sizes ask; we follow it for compatibility.
-    const double stretch = shape.kind() == geo::CurveKind::Bezier
-                               ? static_cast<double>(std::max<std::size_t>(1, shape.control_xyz().size() - 1))
-                               : 1.0;
-    auto size = [&](std::span<const double> t, std::span<const geo::Jet3> jets, std::span<double> h) {
-      if (opt.background) {
-        pts.resize(t.size());
-        bg.resize(t.size());
-        for (std::size_t i = 0; i < t.size(); ++i) pts[i] = jets[i].p;
-        opt.background->eval_on(on, pts, bg);
-      }
-      field::SizeQuery q;
-      q.bbox_diag = bbox;
-      q.entity_dim = 1;
-      q.end_lc0 = lc0;
-      q.end_lc1 = lc1;
-      for (std::size_t i = 0; i < t.size(); ++i) {
-        q.t = t[i];
-        if (opt.background) q.background = bg[i];
-        if (curvature) {
-          const double d = norm(jets[i].d1);
-          q.curvature = d > 0 ? norm(cross(jets[i].d1, jets[i].d2)) / (d * d * d) : 0.0;
-        }
-        h[i] = stretch * field::final_size(opt.size, q).size;
-      }
-    };
-    const CurvePrimitive prim = integrate_curve(shape, size, opt.rel_tolerance, opt.abs_tolerance, opt.smooth_ratio);
-    res.stats.size_evaluations += prim.evaluations;
-    if (!std::isfinite(prim.total())) {
+    cp.stretch = shape.kind() == geo::CurveKind::Bezier
+                     ? static_cast<double>(std::max<std::size_t>(1, shape.control_xyz().size() - 1))
+                     : 1.0;
+    cp.prim = integrate_curve(shape, size_of(cp), opt.rel_tolerance, opt.abs_tolerance, opt.smooth_ratio);
+    res.stats.size_evaluations += cp.prim.evaluations;
+    if (!std::isfinite(cp.prim.total())) {
       res.error = make_error(Mesh1dErrorKind::Invalid, tag, tag,
                              fmt::format("curve {}: the size integral is not finite (a size of zero or a degenerate curve)", tag));
       return res;
     }
-    const int min_segs = min_segments(shape, opt);
-    std::vector<double> ts = place_nodes(prim, min_segs);
+    cp.min_segs = min_segments(shape, opt);
+    cp.nodes = node_count(cp.prim, cp.min_segs);
+    const double limit = opt.max_elements > 0 ? std::min(opt.max_elements, kMaxCurveNodes) : kMaxCurveNodes;
+    if (!(cp.nodes <= limit)) {
+      res.error = make_error(Mesh1dErrorKind::LimitExceeded, tag, tag,
+                             fmt::format("curve {} would get about {:.1e} nodes, over the limit of {:g}", tag,
+                                         cp.nodes, limit));
+      res.error.count = cp.nodes;
+      res.error.limit = limit;
+      return res;
+    }
+    total_nodes += cp.nodes;
+    if (plans.empty() || cp.nodes > plans[largest].nodes) largest = plans.size();
+    plans.push_back(std::move(cp));
+    progress_update(opt.progress, ++curves_done);
+  }
+  if (opt.max_elements > 0 && total_nodes > opt.max_elements) {
+    const int tag = plans[largest].tag;
+    res.error = make_error(Mesh1dErrorKind::LimitExceeded, tag, tag,
+                           fmt::format("the curves would get about {:.1e} nodes in all (curve {} the most, {:.1e}), "
+                                       "over the limit of {:g}",
+                                       total_nodes, tag, plans[largest].nodes, opt.max_elements));
+    res.error.count = total_nodes;
+    res.error.limit = opt.max_elements;
+    res.error.all_curves = true;
+    return res;
+  }
+  if (opt.max_elements > 0 && opt.coarse_check && total_nodes > opt.coarse_check_nodes) {
+    ModelMesh coarse;
+    coarse.dim = 1;
+    coarse.nodes = mesh.nodes;
+    coarse.vertex_node = mesh.vertex_node;
+    for (const CurvePlan& cp : plans) {
+      const geo::Curve& shape = *cp.mc->shape;
+      CurveMesh cm;
+      cm.tag = cp.tag;
+      cm.t = place_nodes(cp.prim, cp.min_segs, kCoarseCurveNodes);
+      cm.nodes.push_back(coarse.vertex_node.at(cp.mc->begin));
+      const bool uv = shape.on_surface();
+      for (std::size_t i = 1; i + 1 < cm.t.size(); ++i)
+        cm.nodes.push_back(uv ? coarse.add_node(shape.point(cm.t[i]), shape.eval_uv(cm.t[i]).p)
+                              : coarse.add_node(shape.point(cm.t[i])));
+      cm.nodes.push_back(coarse.vertex_node.at(cp.mc->end));
+      std::vector<geo::Jet3> jets(cm.t.size());
+      for (std::size_t i = 0; i < cm.t.size(); ++i) jets[i] = shape.eval(cm.t[i]);
+      cm.h.resize(cm.t.size());
+      size_of(cp)(cm.t, jets, cm.h);
+      for (double& h : cm.h) h /= cp.stretch;
+      coarse.curves.emplace(cp.tag, std::move(cm));
+    }
+    if (!opt.coarse_check(coarse)) {
+      res.error = make_error(Mesh1dErrorKind::Stopped, 0, 0, "stopped before placing the 1D nodes");
+      return res;
+    }
+  }
+  for (const CurvePlan& cp : plans) {
+    const int tag = cp.tag;
+    const geo::ModelCurve& mc = *cp.mc;
+    const geo::Curve& shape = *mc.shape;
+    const geo::ModelVertex* vb = model.vertex(mc.begin);
+    const double stretch = cp.stretch;
+    const int min_segs = cp.min_segs;
+    const auto size = size_of(cp);
+    std::vector<double> ts = place_nodes(cp.prim, min_segs);
     // Gmsh's filterPoints: an interior node closer than 0.3 h to the previous node kept
     // (noisy curves, tight turns) is dropped, unless that leaves fewer than the minimum.
     // Sizes come one at a time (each depends on the node kept before), so first a batch
@@ -438,7 +531,6 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
       cm.nodes.push_back(uv ? mesh.add_node(shape.point(ts[i]), shape.eval_uv(ts[i]).p) : mesh.add_node(shape.point(ts[i])));
     cm.nodes.push_back(mesh.vertex_node.at(mc.end));
     mesh.curves.emplace(tag, std::move(cm));
-    progress_update(opt.progress, ++curves_done);
   }
   stage.end();
   for (const auto& [tag, mc] : model.curves()) {

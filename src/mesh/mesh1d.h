@@ -35,6 +35,20 @@ struct Mesh1dOptions {
   /// mesher needs; Gmsh's 1D mesh of free curves ignores crossings), or every curve.
   bool repair_all_curves = false;
   std::uint32_t max_repair_rounds = 200;
+  /// Mesh.MaxElements: once every curve's size integral is known (before any node is
+  /// placed), a curve, or all curves together, asking for more nodes than this is a
+  /// LimitExceeded error naming the curve; <= 0: no limit (counts are still refused
+  /// beyond kMaxCurveNodes).
+  double max_elements = 0;
+  /// With max_elements set and more than coarse_check_nodes nodes asked in all, called
+  /// before the nodes are placed with a coarse 1D mesh (each curve at most
+  /// kCoarseCurveNodes nodes at equal increments of its size integral, no repair), so
+  /// that the caller can estimate the faces' triangles without paying for the full 1D
+  /// mesh; returning false stops meshing (kind Stopped, the caller holds the reason).
+  /// From 10^4 nodes: the boundary triangulation of a face with that many nodes on
+  /// straight sides already takes a second (5e4: 20 s).
+  std::function<bool(const ModelMesh& coarse)> coarse_check;
+  double coarse_check_nodes = 1e4;
   /// Reports stage "1D" (one unit per curve) and "1D repair" (no total); null: silent.
   Progress* progress = nullptr;
 };
@@ -55,15 +69,28 @@ struct CurvePrimitive {
 CurvePrimitive integrate_curve(const geo::Curve& c, const CurveSizeFn& size, double rel_tolerance = 1e-4,
                                double abs_tolerance = 1e-5, double smooth_ratio = 0);
 
-/// Gmsh's node count N = max(min_segments + 1, int(a + 1.99)) and parameters of the N
-/// nodes at equal increments a/(N-1) of the primitive (first 0, last 1).
-std::vector<double> place_nodes(const CurvePrimitive& p, int min_segments);
+/// Most nodes one curve may get: node indices are 32-bit.
+inline constexpr double kMaxCurveNodes = 2147483647.0;
+
+/// Nodes per curve of the coarse mesh given to Mesh1dOptions::coarse_check.
+inline constexpr int kCoarseCurveNodes = 64;
+
+/// Gmsh's node count N = max(min_segments + 1, int(a + 1.99)) as a double: not finite
+/// for a primitive that is not, possibly beyond what can be placed.
+double node_count(const CurvePrimitive& p, int min_segments);
+
+/// The parameters of the node_count() nodes at equal increments a/(N-1) of the
+/// primitive (first 0, last 1); with max_nodes > 0 at most that many (a coarse version).
+/// Empty when the count is not finite or over kMaxCurveNodes (callers check node_count).
+std::vector<double> place_nodes(const CurvePrimitive& p, int min_segments, int max_nodes = 0);
 
 /// Minimum number of segments of a curve (Gmsh's minimumMeshSegments): 1 for lines,
 /// MinimumCurveNodes - 1 for splines, a share of MinimumCircleNodes for arcs.
 int min_segments(const geo::Curve& c, const Mesh1dOptions& opt);
 
-enum class Mesh1dErrorKind { None, Intersection, DuplicatePoint, Invalid, NoProgress };
+/// LimitExceeded: more nodes than Mesh1dOptions::max_elements (or kMaxCurveNodes);
+/// Stopped: Mesh1dOptions::coarse_check said no.
+enum class Mesh1dErrorKind { None, Intersection, DuplicatePoint, Invalid, NoProgress, LimitExceeded, Stopped };
 
 /// A located failure: the curves involved (equal for a self-intersection), the place in
 /// space and, on a sphere geometry, in longitude/latitude (degrees).
@@ -74,6 +101,9 @@ struct Mesh1dError {
   bool has_lonlat = false;
   geo::LonLat where;
   std::string message;
+  double count = 0;   ///< LimitExceeded: the nodes asked (of curve_a, or of all curves)
+  double limit = 0;   ///< LimitExceeded: the limit they exceed
+  bool all_curves = false;   ///< LimitExceeded: count is the sum over the curves
 };
 
 struct Mesh1dStats {

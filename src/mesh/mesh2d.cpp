@@ -138,6 +138,8 @@ class FaceMesher {
       if (node < local_of_.size()) local_of_[node] = kNoLocal;
   }
   bool run(const geo::ModelSurface& s);
+  /// Only up to the element budget: run() stops once the estimate is checked.
+  void estimate_only() { estimate_only_ = true; }
 
  private:
   bool fail(std::string msg, std::optional<Vec3> where = std::nullopt);
@@ -148,7 +150,7 @@ class FaceMesher {
   std::uint32_t local(std::uint32_t node);
   Vec2 node_plane(std::uint32_t node) const;
   Vec2 node_param(std::uint32_t node) const;   // on a geometry: the node's (u,v)
-  bool refine(const std::function<void(std::span<const Vec2>, std::span<double>)>& size_at);
+  bool refine(const std::function<void(std::span<const Vec2>, std::span<double>)>& size_at, std::uint64_t estimate);
 
   const geo::Model& model_;
   ModelMesh& mesh_;
@@ -166,6 +168,7 @@ class FaceMesher {
   // Set once the boundary is recovered (the plane and the boundary sizes are final then).
   std::shared_ptr<FaceSizing> sizing_ = std::make_shared<FaceSizing>();
   std::atomic<std::uint64_t> size_evaluations_{0};
+  bool estimate_only_ = false;
 };
 
 // The target size at batches of points of the face's plane: the size policy with the
@@ -480,24 +483,15 @@ void PlaneSizes::operator()(std::span<const Vec2> p, std::span<double> h) {
 // del2d or front2d on the face: in one piece, or in parts (partition.h) when the estimated
 // triangle count reaches opt_.partition.min_triangles. The part count depends on the
 // estimate only, so the mesh is the same for every thread count.
-bool FaceMesher::refine(const std::function<void(std::span<const Vec2>, std::span<double>)>& size_at) {
+bool FaceMesher::refine(const std::function<void(std::span<const Vec2>, std::span<double>)>& size_at,
+                        std::uint64_t estimate) {
   RefineOptions ro;
   ro.max_vertices = opt_.max_vertices_per_face;
   ro.size_at = size_at;
   const bool frontal = opt_.algorithm == Mesh2dAlgorithm::Frontal;
   if (opt_.radius_limit > 0) ro.radius_limit = opt_.radius_limit;
   else if (!frontal) ro.radius_limit = kDel2dRadiusLimit;
-  // The estimate uses its own evaluator: the refiner's walk hints stay as without it.
-  // Without partitioning it is made only for the progress display, and not counted.
   const bool partitioning = opt_.partition.min_triangles > 0;
-  std::uint64_t estimate = 0;
-  if (partitioning || opt_.progress) {
-    PlaneSizes estimate_sizes(*sizing_, partitioning ? &size_evaluations_ : nullptr);
-    const PlaneSizeFn estimate_at = [&estimate_sizes](std::span<const Vec2> p, std::span<double> h) {
-      estimate_sizes(p, h);
-    };
-    estimate = estimate_triangles(m_, estimate_at);
-  }
   if (partitioning && estimate >= opt_.partition.min_triangles) {
     ro.size_at = nullptr;
     const auto make_size = [this]() -> PlaneSizeFn {
@@ -615,8 +609,20 @@ bool FaceMesher::run(const geo::ModelSurface& s) {
     std::vector<double>& bsize = sz.bsize;
     bsize.assign(fixed_count, 0.0);
     std::vector<std::uint32_t> count(fixed_count, 0);
+    // A coarse boundary (the element budget's) carries the 1D sizes at its nodes: those,
+    // not its long edges, are what the real boundary would extend.
+    std::vector<double> node_h;
+    if (estimate_only_) {
+      node_h.assign(mesh_.nodes.size(), 0.0);
+      for (const auto& [ct, cm] : mesh_.curves)
+        for (std::size_t k = 0; k < cm.h.size() && k < cm.nodes.size(); ++k) node_h[cm.nodes[k]] = cm.h[k];
+    }
+    auto edge_length = [&](std::uint32_t ga, std::uint32_t gb) {
+      if (estimate_only_ && node_h[ga] > 0 && node_h[gb] > 0) return 0.5 * (node_h[ga] + node_h[gb]);
+      return norm(mesh_.nodes[ga].xyz - mesh_.nodes[gb].xyz);
+    };
     for (const Edge& e : edges) {
-      const double len = norm(mesh_.nodes[global_[e.first.value]].xyz - mesh_.nodes[global_[e.second.value]].xyz);
+      const double len = edge_length(global_[e.first.value], global_[e.second.value]);
       bsize[e.first.value] += len, bsize[e.second.value] += len;
       ++count[e.first.value], ++count[e.second.value];
     }
@@ -633,7 +639,28 @@ bool FaceMesher::run(const geo::ModelSurface& s) {
       }
     }
   }
+  // The estimated triangle count (run() made it for the budget, the partitioning or the
+  // progress display) uses its own evaluator: the refiner's walk hints stay as without
+  // it. It is counted in the size evaluations only when partitioning uses it.
+  const bool partitioning = opt_.partition.min_triangles > 0 && opt_.algorithm != Mesh2dAlgorithm::MeshAdapt;
+  std::uint64_t estimate = 0;
+  if (partitioning || opt_.progress || opt_.max_elements > 0) {
+    PlaneSizes estimate_sizes(*sizing_, partitioning ? &size_evaluations_ : nullptr);
+    const PlaneSizeFn estimate_at = [&estimate_sizes](std::span<const Vec2> p, std::span<double> h) {
+      estimate_sizes(p, h);
+    };
+    estimate = estimate_triangles(m_, estimate_at);
+    if (opt_.max_elements > 0 && static_cast<double>(estimate) > opt_.max_elements) {
+      fail(fmt::format("it would get about {:.1e} triangles, over the limit of {:g}", static_cast<double>(estimate),
+                       opt_.max_elements));
+      res_.error.kind = Mesh2dErrorKind::LimitExceeded;
+      res_.error.count = static_cast<double>(estimate);
+      res_.error.limit = opt_.max_elements;
+      return false;
+    }
+  }
   res_.stats.seconds_boundary += seconds_since(t0);
+  if (estimate_only_) return true;
 
   t0 = std::chrono::steady_clock::now();
   PlaneSizes sizes(*sizing_, &size_evaluations_);
@@ -649,7 +676,7 @@ bool FaceMesher::run(const geo::ModelSurface& s) {
     if (!ma.ok()) return fail("meshadapt failed: " + ma.error);
     res_.stats.inserted += ma.stats.splits;
     smoothed = true;   // meshadapt smooths in each round
-  } else if (!refine(size_at)) {
+  } else if (!refine(size_at, estimate)) {
     return false;
   }
   res_.stats.size_evaluations += size_evaluations_.exchange(0);
@@ -730,6 +757,26 @@ Mesh2dResult mesh_surfaces(const geo::Model& model, ModelMesh& mesh, const Mesh2
   }
   progress_end(opt.progress);
   mesh.dim = std::max(mesh.dim, 2);
+  return res;
+}
+
+Mesh2dResult check_face_budgets(const geo::Model& model, const ModelMesh& coarse, const Mesh2dOptions& base) {
+  Mesh2dResult res;
+  if (!(base.max_elements > 0)) return res;
+  Mesh2dOptions opt = base;
+  opt.progress = nullptr;
+  ModelMesh mesh = coarse;
+  const double bbox = model_bbox(model, opt.bbox_diag);
+  std::vector<std::uint32_t> local_of;
+  for (const auto& [tag, s] : model.surfaces()) {
+    Mesh2dResult face;
+    FaceMesher fm(model, mesh, opt, bbox, face, local_of);
+    fm.estimate_only();
+    if (!fm.run(s) && face.error.kind == Mesh2dErrorKind::LimitExceeded) {
+      res.error = face.error;
+      return res;
+    }
+  }
   return res;
 }
 

@@ -42,6 +42,10 @@ struct Mesh2dOptions {
   /// default (del2d 0.76, front2d refine.h's 1/sqrt2).
   double radius_limit = 0;
   std::uint32_t max_vertices_per_face = 0xFFFFFFF0u;
+  /// Mesh.MaxElements: a face whose estimated triangle count (estimate_triangles() on its
+  /// recovered boundary triangulation, before any refinement) is over this is a
+  /// LimitExceeded error; <= 0: no limit.
+  double max_elements = 0;
   /// Threads for faces refined in parts and for smoothing (General.NumThreads /
   /// Mesh.MaxNumThreads2D); <= 0: the hardware's. The mesh does not depend on it;
   /// meshadapt is serial.
@@ -55,9 +59,13 @@ struct Mesh2dOptions {
   Progress* progress = nullptr;
 };
 
+enum class Mesh2dErrorKind { Failed, LimitExceeded };
+
 /// A located failure: the surface, and where (3D; lon/lat on a sphere geometry).
 struct Mesh2dError {
   int surface = 0;          // 0: no error
+  Mesh2dErrorKind kind = Mesh2dErrorKind::Failed;
+  double count = 0, limit = 0;   // LimitExceeded: the estimated triangles, the limit
   std::string message;
   Vec3 xyz;
   bool has_lonlat = false;
@@ -102,5 +110,13 @@ std::vector<StageTime> stage_times(const Mesh2dStats& s);
 /// failing one are kept, the failing one is absent. A filling (transfinite) Surface is an
 /// error: it is not meshed yet.
 Mesh2dResult mesh_surfaces(const geo::Model& model, ModelMesh& mesh, const Mesh2dOptions& opt);
+
+/// The element budget of the faces on a coarse 1D mesh (Mesh1dOptions::coarse_check):
+/// each face's estimate_triangles() on its boundary triangulation from `coarse`, against
+/// opt.max_elements. Faces whose coarse boundary cannot be triangulated (coarse curves
+/// may cross where the fine ones do not) are skipped: mesh_surfaces checks them on the
+/// real boundary. Returns the first face over the limit as a LimitExceeded error (with
+/// no warnings, statistics or meshes), or no error.
+Mesh2dResult check_face_budgets(const geo::Model& model, const ModelMesh& coarse, const Mesh2dOptions& opt);
 
 }  // namespace sm

@@ -27,6 +27,10 @@ struct CurveMesh {
   int tag = 0;
   std::vector<std::uint32_t> nodes;   // indices into ModelMesh::nodes
   std::vector<double> t;              // curve parameter of each node
+  /// Only on the coarse meshes made for the element budget (Mesh1dOptions::coarse_check):
+  /// the 1D size at each node, which the face's estimate extends from the boundary in
+  /// place of the coarse edge lengths.
+  std::vector<double> h;
   std::size_t num_edges() const { return nodes.empty() ? 0 : nodes.size() - 1; }
 };
 

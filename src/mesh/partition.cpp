@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 #if defined(__GLIBC__)
@@ -283,12 +284,20 @@ void mesh_part(const Coarse& c, std::uint32_t p, const RefineOptions& base, Part
 
 }  // namespace
 
+std::uint64_t saturated_count(double x) {
+  // 2^64 as a double; llround is defined only below 2^63, so the top half goes by hand.
+  constexpr double kTwo64 = 18446744073709551616.0;
+  if (!(x < kTwo64)) return std::numeric_limits<std::uint64_t>::max();   // NaN, inf, huge
+  if (!(x > 0)) return 0;
+  return static_cast<std::uint64_t>(std::round(x));
+}
+
 std::uint64_t estimate_triangles(const TriangleStore& m, const PlaneSizeFn& size) {
   const std::vector<std::uint32_t> tris = live_triangles(m);
   std::vector<Vec2> c;
   std::vector<double> w;
   estimate_each(m, tris, size, c, w);
-  return static_cast<std::uint64_t>(std::llround(std::accumulate(w.begin(), w.end(), 0.0)));
+  return saturated_count(std::accumulate(w.begin(), w.end(), 0.0));
 }
 
 std::uint32_t part_count(std::uint64_t estimate, const PartitionOptions& opt) {
@@ -355,7 +364,7 @@ std::vector<Vec2> subdivide_segment(Vec2 a, Vec2 b, const PlaneSizeFn& size) {
     cum[i] = cum[i - 1] + 0.5 * (1 / h[i - 1] + 1 / h[i]) * (len / double(steps));
   }
   const double total = cum[steps];
-  const auto n = static_cast<std::size_t>(std::max<long long>(1, std::llround(total)));
+  const auto n = static_cast<std::size_t>(std::max<std::uint64_t>(1, saturated_count(total)));
   std::size_t i = 1;
   for (std::size_t k = 1; k < n; ++k) {
     const double target = total * double(k) / double(n);
@@ -396,7 +405,7 @@ PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, 
   std::vector<double> weight;
   estimate_each(c.m, tris, fine, centre, weight);
   res.stats.coarse_triangles = tris.size();
-  res.stats.estimate = static_cast<std::uint64_t>(std::llround(std::accumulate(weight.begin(), weight.end(), 0.0)));
+  res.stats.estimate = saturated_count(std::accumulate(weight.begin(), weight.end(), 0.0));
   const std::uint32_t k = part_count(res.stats.estimate, opt);
   res.stats.parts = k;
   const std::vector<std::uint32_t> part = bisect_parts(centre, weight, k);

@@ -47,8 +47,13 @@ struct PartitionResult {
   bool ok() const { return error.empty(); }
 };
 
+/// x rounded to a count: 0 for x <= 0, the largest uint64 for NaN, inf or x >= 2^64 (a
+/// count no mesh reaches, so budgets refuse it), never an undefined conversion.
+std::uint64_t saturated_count(double x);
+
 /// The estimated triangle count after refinement at the size: the sum over the live
-/// triangles of area / (h^2 sqrt(3) / 4), 1/h^2 averaged over the edge midpoints (batched).
+/// triangles of area / (h^2 sqrt(3) / 4), 1/h^2 averaged over the edge midpoints (batched),
+/// as saturated_count() (a zero or NaN size gives the largest count).
 std::uint64_t estimate_triangles(const TriangleStore& m, const PlaneSizeFn& size);
 
 /// The part count for an estimate: the power of two nearest estimate / part_triangles,

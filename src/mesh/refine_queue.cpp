@@ -42,14 +42,27 @@ bool RefineDriver::sample_sizes(std::span<const std::uint32_t> tris, std::span<c
   const std::size_t n = tris.size() + verts.size();
   pts_.resize(n);
   h_.resize(n);
+  // A triangle flat to double precision (positive by the exact predicates, but its
+  // cross product rounds to 0) has no representable circumcentre: inf or NaN. Its size is
+  // taken at its centroid instead, while pts_ keeps the circumcentre, so the callers
+  // see an infinite radius (the triangle is unresolved) and never a size field asked
+  // about a point at infinity (which gave "mesh size must be positive and finite (got inf
+  // at (inf, inf))" on two close islands). Plain triangles are evaluated as before.
+  flat_.clear();
   for (std::size_t i = 0; i < tris.size(); ++i) {
     const TriId t{tris[i]};
-    pts_[i] = circumcentre(m_.pos(m_.vertex(t, 0)), m_.pos(m_.vertex(t, 1)), m_.pos(m_.vertex(t, 2)));
+    const Vec2 a = m_.pos(m_.vertex(t, 0)), b = m_.pos(m_.vertex(t, 1)), c = m_.pos(m_.vertex(t, 2));
+    pts_[i] = circumcentre(a, b, c);
+    if (!std::isfinite(pts_[i].x) || !std::isfinite(pts_[i].y)) {
+      flat_.push_back({i, pts_[i]});
+      pts_[i] = (1.0 / 3) * (a + b + c);
+    }
   }
   for (std::size_t i = 0; i < verts.size(); ++i) pts_[tris.size() + i] = m_.pos(verts[i]);
   res_.stats.size_samples += n;
   if (opt_.size_at) opt_.size_at(pts_, h_);
   else std::fill(h_.begin(), h_.end(), opt_.size);
+  for (const auto& [i, cc] : flat_) pts_[i] = cc;
   for (std::size_t i = 0; i < n; ++i) {
     const double h = h_[i];
     if (h > 0 && std::isfinite(h)) continue;

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mesh/insert.h"
@@ -129,6 +130,7 @@ class RefineDriver {
   PointInserter ins_;
   RefineQueue queue_;
   std::vector<Vec2> pts_;
+  std::vector<std::pair<std::size_t, Vec2>> flat_;   // sample_sizes: flat triangles' circumcentres
   std::vector<double> h_;
 
  private:

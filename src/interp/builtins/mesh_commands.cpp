@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <new>
 
 #include <fmt/format.h>
 
@@ -62,20 +63,57 @@ std::vector<DiagNote> curve_notes(const KernelState& k, const Mesh1dError& e) {
   return notes;
 }
 
+std::vector<DiagNote> surface_notes(const KernelState& k, int surface) {
+  const auto it = k.created_at.find({2, surface});
+  if (it == k.created_at.end()) return {};
+  return {{it->second, fmt::format("surface {} was created here", surface)}};
+}
+
 Diag diag_of(const Mesh1dError& e) {
-  return e.kind == Mesh1dErrorKind::Intersection || e.kind == Mesh1dErrorKind::DuplicatePoint
-             ? Diag::MeshCurvesIntersect
-             : Diag::MeshFailed;
+  switch (e.kind) {
+    case Mesh1dErrorKind::Intersection:
+    case Mesh1dErrorKind::DuplicatePoint: return Diag::MeshCurvesIntersect;
+    case Mesh1dErrorKind::LimitExceeded: return Diag::LimitExceeded;
+    default: return Diag::MeshFailed;
+  }
+}
+
+constexpr std::string_view kBudgetFix = "check the mesh sizes, or raise Mesh.MaxElements";
+
+// The limit a count exceeds, as the user can change it.
+std::string over_limit(double limit) {
+  if (limit >= kMaxCurveNodes) return fmt::format("over the {:g} nodes a curve can have: check the mesh sizes", limit);
+  return fmt::format("over Mesh.MaxElements = {:g}: {}", limit, kBudgetFix);
+}
+
+std::string message_of(const Mesh1dError& e) {
+  if (e.kind != Mesh1dErrorKind::LimitExceeded) return e.message;
+  if (e.all_curves)
+    return fmt::format("the curves would get about {:.1e} nodes in all (curve {} the most), {}", e.count, e.curve_a,
+                       over_limit(e.limit));
+  return fmt::format("curve {} would get about {:.1e} nodes, {}", e.curve_a, e.count, over_limit(e.limit));
 }
 
 // A meshing failure on its way to a diagnostic (kind, message, notes at the
-// statements that created the entities involved).
+// statements that created the entities involved, the failing entity's first).
 struct MeshFailure {
   Diag kind = Diag::MeshFailed;
   std::string message;
   std::vector<DiagNote> notes;
   bool failed() const { return !message.empty(); }
 };
+
+MeshFailure failure_of(const KernelState& k, const Mesh2dError& e) {
+  MeshFailure f{Diag::MeshFailed, e.message, surface_notes(k, e.surface)};
+  if (e.kind == Mesh2dErrorKind::LimitExceeded) {
+    f.kind = Diag::LimitExceeded;
+    f.message = fmt::format("surface {} would get about {:.1e} triangles, over Mesh.MaxElements = {:g}: {}", e.surface,
+                            e.count, e.limit, kBudgetFix);
+  } else if (e.has_lonlat) {
+    f.message += fmt::format(" (near lon {:.4f}, lat {:.4f})", e.where.lon, e.where.lat);
+  }
+  return f;
+}
 
 // Mesh.Algorithm -> the 2D algorithms we have; the others are refused by name.
 bool mesh2d_algorithm(int algo, Mesh2dAlgorithm& out) {
@@ -106,37 +144,63 @@ void publish_stats(Interpreter& in, const ModelMesh& mesh, const MeshStats& st) 
   }
 }
 
-MeshFailure mesh_model_unchecked(Interpreter& in, int dim, SourceRange where);
-
 // Meshes the model up to `dim` into the kernel state; on failure returns why. The
 // mesher's warnings are reported at `where` (the Mesh statement; none for -1/-2).
-// A background field that gives a bad size stops meshing with a FieldError (see
-// field/size_check.h), reported at the field's definition.
-MeshFailure mesh_model(Interpreter& in, int dim, SourceRange where) {
-  try {
-    return mesh_model_unchecked(in, dim, where);
-  } catch (const field::FieldError& e) {
-    fail_field_error(in, e, in.kernel().background_field_at);
-  }
-}
-
-MeshFailure mesh_model_unchecked(Interpreter& in, int dim, SourceRange where) {
+MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   using Clock = std::chrono::steady_clock;
   KernelState& k = in.kernel();
   const field::FieldPtr background = background_size_field(in);
+  const double max_elements = in.options().number("Mesh.MaxElements");
   Mesh2dOptions opt2;
   if (dim >= 2) {
     const int algo = static_cast<int>(in.options().number("Mesh.Algorithm"));
-    if (!mesh2d_algorithm(algo, opt2.algorithm))
-      return {Diag::MeshFailed,
-              fmt::format("Mesh.Algorithm {} is not available: use 1 (meshadapt), 2 (automatic), 5 (del2d) or 6 "
-                          "(front2d)",
-                          algo),
-              {}};
+    if (!mesh2d_algorithm(algo, opt2.algorithm)) {
+      MeshFailure f{Diag::MeshFailed,
+                    fmt::format("Mesh.Algorithm {} is not available: use 1 (meshadapt), 2 (automatic), 5 (del2d) or 6 "
+                                "(front2d)",
+                                algo),
+                    {}};
+      if (const auto it = k.option_set_at.find("Mesh.Algorithm"); it != k.option_set_at.end())
+        f.notes.push_back({it->second, "Mesh.Algorithm was set here"});
+      return f;
+    }
+    opt2.size = size_policy_from_options(in.options());
+    opt2.background = background.get();
+    opt2.bbox_diag = model_bbox_diag(k.model);
+    opt2.smoothing = static_cast<int>(in.options().number("Mesh.Smoothing"));
+    opt2.quality_pass = in.options().number("Mesh.QualityPass") != 0;
+    opt2.max_elements = max_elements;
+    // Threads for faces refined in parts: Mesh.MaxNumThreads2D, else General.NumThreads (0:
+    // the hardware's). The mesh is the same for any count; meshadapt stays serial.
+    const int threads_2d = static_cast<int>(in.options().number("Mesh.MaxNumThreads2D"));
+    opt2.threads = threads_2d > 0 ? threads_2d : static_cast<int>(in.options().number("General.NumThreads"));
+  }
+  // The depth field is read only when a fort.14 / hgrid.gr3 is written, after meshing:
+  // one that names no field is refused before the meshing is paid for.
+  const double depth_field = in.options().number("Mesh.DepthField");
+  if (depth_field > 0 && !k.field_defined_at.count(static_cast<int>(depth_field))) {
+    MeshFailure f{Diag::InvalidOptionValue,
+                  fmt::format("Mesh.DepthField = {:g} names no field: define Field[{:g}], or set Mesh.DepthField = 0",
+                              depth_field, depth_field),
+                  {}};
+    if (const auto it = k.option_set_at.find("Mesh.DepthField"); it != k.option_set_at.end())
+      f.notes.push_back({it->second, "Mesh.DepthField was set here"});
+    return f;
   }
   const auto t0 = Clock::now();
-  Mesh1dResult r = mesh_curves(k.model, mesh1d_options(in, background.get()));
-  if (!r.ok()) return {diag_of(r.error), r.error.message, curve_notes(k, r.error)};
+  Mesh1dOptions opt1 = mesh1d_options(in, background.get());
+  opt1.max_elements = max_elements;
+  // Many 1D nodes: the faces' budgets first, on a coarse boundary, before the full 1D
+  // mesh is paid for (a unit square at size 1e-7 has 4e7 boundary nodes, 2e14 triangles).
+  Mesh2dError budget;
+  if (dim >= 2)
+    opt1.coarse_check = [&](const ModelMesh& coarse) {
+      budget = check_face_budgets(k.model, coarse, opt2).error;
+      return budget.surface == 0;
+    };
+  Mesh1dResult r = mesh_curves(k.model, opt1);
+  if (r.error.kind == Mesh1dErrorKind::Stopped) return failure_of(k, budget);
+  if (!r.ok()) return {diag_of(r.error), message_of(r.error), curve_notes(k, r.error)};
   auto mesh = std::make_shared<ModelMesh>(std::move(r.mesh));
   const double seconds_1d = std::chrono::duration<double>(Clock::now() - t0).count();
   if (dim < 2) {
@@ -144,26 +208,9 @@ MeshFailure mesh_model_unchecked(Interpreter& in, int dim, SourceRange where) {
     k.mesh = std::move(mesh);
     return {};
   }
-  opt2.size = size_policy_from_options(in.options());
-  opt2.background = background.get();
-  opt2.bbox_diag = model_bbox_diag(k.model);
-  opt2.smoothing = static_cast<int>(in.options().number("Mesh.Smoothing"));
-  opt2.quality_pass = in.options().number("Mesh.QualityPass") != 0;
   opt2.progress = progress_sink(in);
-  // Threads for faces refined in parts: Mesh.MaxNumThreads2D, else General.NumThreads (0:
-  // the hardware's). The mesh is the same for any count; meshadapt stays serial.
-  const int threads_2d = static_cast<int>(in.options().number("Mesh.MaxNumThreads2D"));
-  opt2.threads = threads_2d > 0 ? threads_2d : static_cast<int>(in.options().number("General.NumThreads"));
   const Mesh2dResult r2 = mesh_surfaces(k.model, *mesh, opt2);
-  if (!r2.ok()) {
-    MeshFailure f{Diag::MeshFailed, r2.error.message, {}};
-    if (r2.error.has_lonlat)
-      f.message += fmt::format(" (near lon {:.4f}, lat {:.4f})", r2.error.where.lon, r2.error.where.lat);
-    const auto it = k.created_at.find({2, r2.error.surface});
-    if (it != k.created_at.end())
-      f.notes.push_back({it->second, fmt::format("surface {} was created here", r2.error.surface)});
-    return f;
-  }
+  if (!r2.ok()) return failure_of(k, r2.error);
   // As diagnostics, so that they print in order with Printf and the progress display
   // (the front end drops them below General.Verbosity 2).
   for (const std::string& w : r2.warnings) in.diags().report_message(where, Diag::MeshWarning, w);
@@ -175,6 +222,24 @@ MeshFailure mesh_model_unchecked(Interpreter& in, int dim, SourceRange where) {
   publish_stats(in, *mesh, st);
   k.mesh = std::move(mesh);
   return {};
+}
+
+// mesh_model_unguarded, with running out of memory anywhere in the meshers (threads
+// included: base/parallel rethrows on the caller) a script error like the others, so
+// nothing is written; and a background field that gives a bad size (a FieldError from
+// field/size_check.h) reported at the field's definition.
+MeshFailure mesh_model(Interpreter& in, int dim, SourceRange where) {
+  try {
+    return mesh_model_unguarded(in, dim, where);
+  } catch (const field::FieldError& e) {
+    fail_field_error(in, e, in.kernel().background_field_at);
+  } catch (const std::bad_alloc&) {
+    return {Diag::OutOfMemory,
+            fmt::format("out of memory while meshing in {}D: check the mesh sizes, or lower Mesh.MaxElements "
+                        "(now {:g})",
+                        dim, in.options().number("Mesh.MaxElements")),
+            {}};
+  }
 }
 
 // Writes the current mesh to `path` in `format` (see mesh_commands.h); "" or why not.
@@ -302,8 +367,10 @@ bool mesh_from_command_line(Interpreter& in, int dim, const std::string& output,
     return false;
   }
   if (f.failed()) {
-    auto h = diags.report_message(SourceRange{}, f.kind, f.message);
-    for (const DiagNote& n : f.notes) h.note(n.range, n.message);
+    // No statement asked for the mesh: the entity's statement is the place to point at.
+    const SourceRange at = f.notes.empty() ? SourceRange{} : f.notes.front().range;
+    auto h = diags.report_message(at, f.kind, f.message);
+    for (std::size_t i = 1; i < f.notes.size(); ++i) h.note(f.notes[i].range, f.notes[i].message);
     return false;
   }
   std::string path = output;
@@ -314,7 +381,15 @@ bool mesh_from_command_line(Interpreter& in, int dim, const std::string& output,
     else p.replace_extension(format == "vtk" || format == "svg" || format == "png" ? "." + format : ".msh");
     path = p.string();
   }
-  if (const std::string err = save_mesh(in, path, format); !err.empty()) {
+  std::string err;
+  try {
+    err = save_mesh(in, path, format);
+  } catch (const RuntimeError& e) {   // e.g. the depth field cannot be built
+    auto h = diags.report_message(e.range, e.kind, e.message);
+    for (const DiagNote& n : e.notes) h.note(n.range, n.message);
+    return false;
+  }
+  if (!err.empty()) {
     diags.report(SourceRange{}, Diag::FileWriteError, path, err);
     return false;
   }

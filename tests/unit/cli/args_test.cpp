@@ -2,12 +2,15 @@
 #include <doctest/doctest.h>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "cli/args.h"
 #include "run_binary.h"
@@ -46,6 +49,19 @@ TEST_CASE("cli: usage errors") {
   CHECK_FALSE(parse_args({"a.geo", "-setnumber", "n"}).ok);
   CHECK_FALSE(parse_args({"a.geo", "-setnumber", "n", "abc"}).ok);
   CHECK_FALSE(parse_args({"a.geo", "-algo", "magic"}).ok);
+  // Gmsh's algorithms the kernel lacks are refused with the list of those it has.
+  for (const char* missing : {"bamg", "delquad", "pack", "initial2d"}) {
+    CAPTURE(missing);
+    const sm::cli::ParseOutcome c = parse_args({"a.geo", "-algo", missing});
+    CHECK_FALSE(c.ok);
+    CHECK(c.error.find("meshadapt, auto, del2d and front2d") != std::string::npos);
+  }
+  for (const auto& [name, number] : std::vector<std::pair<const char*, double>>{
+           {"meshadapt", 1}, {"auto", 2}, {"del2d", 5}, {"front2d", 6}}) {
+    const sm::cli::ParseOutcome c = parse_args({"a.geo", "-algo", name});
+    REQUIRE(c.ok);
+    CHECK(c.args.option_numbers.back() == std::pair<std::string, double>{"Mesh.Algorithm", number});
+  }
   CHECK_FALSE(parse_args({"a.geo", "-format", "stl"}).ok);
   CHECK_FALSE(parse_args({"a.geo", "-coords", "polar"}).ok);
   CHECK_FALSE(parse_args({"a.geo", "-coords"}).ok);
@@ -185,5 +201,28 @@ TEST_CASE("cli: exit statuses of the binary") {
   const std::size_t n = std::fread(buf, 1, sizeof buf - 1, p);
   ::pclose(p);
   CHECK(std::string(buf, n) == "7\n");
+  fs::remove_all(dir);
+}
+
+TEST_CASE("cli: running out of memory while meshing is a located script error, not a crash") {
+  const std::string bin = binary();
+  if (bin.empty()) {
+    MESSAGE("skipped: stereomesh binary not built");
+    return;
+  }
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("sm_cli_oom_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  // 1e9 nodes on one line, within a budget raised to 1e15: placing them needs 8 GB, more
+  // than the 2 GB of address space the shell allows the process.
+  std::ofstream(dir / "oom.geo") << "Point(1) = {0, 0, 0, 1e-9}; Point(2) = {1, 0, 0, 1e-9}; Line(1) = {1, 2};\n"
+                                    "Mesh.MaxElements = 1e15;\nMesh 1;\nSave \"oom.msh\";\n";
+  const std::string cmd = "ulimit -v 2000000; " + bin + " -0 " + (dir / "oom.geo").string();
+  CHECK(run_status("sh -c '" + cmd + "'") == 1);
+  const std::string err = run_stderr("sh -c '" + cmd + "'");
+  CHECK(err.find("oom.geo:3:1: error: out of memory while meshing in 1D") != std::string::npos);
+  CHECK(err.find("[out-of-memory]") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir / "oom.msh"));
   fs::remove_all(dir);
 }

@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "mesh/check.h"
@@ -80,4 +81,24 @@ TEST_CASE("insert: a large cavity (the centre of 40 cocircular points), out_side
   CHECK(check_delaunay(m, PlanarGeometry{&m.xy}, true).ok());
   // Every ring point is now a neighbour of the centre.
   for (std::uint32_t v = 4; v < 44; ++v) CHECK(m.has_edge(ins.last_vertex(), VertexId{v}));
+}
+
+TEST_CASE("insert: a point that is not finite is outside, the mesh unchanged") {
+  TriangleStore m;
+  const Loop l = testing::polygon_loop(m, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.5, false);
+  REQUIRE(testing::boundary_mesh(m, {l}));
+  const std::uint32_t nv = m.num_vertices(), nt = m.num_triangles();
+  PointInserter ins(m);
+  TriId any;
+  for (std::uint32_t t = 0; t < m.num_slots() && !any.valid(); ++t)
+    if (m.alive(TriId{t})) any = TriId{t};
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  for (Vec2 p : {Vec2{inf, inf}, Vec2{-inf, 0.5}, Vec2{nan, 0.5}, Vec2{0.5, nan}}) {
+    CHECK_FALSE(ins.locate(p, any).valid());
+    CHECK(ins.insert_near(p, any) == InsertOutcome::Outside);
+    CHECK(ins.insert(p, any) == InsertOutcome::Outside);
+  }
+  CHECK(m.num_vertices() == nv);
+  CHECK(m.num_triangles() == nt);
+  CHECK(check_topology(m).ok());
 }

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <string>
 #include <vector>
 
 #include "geo/curve_length.h"
@@ -404,4 +406,63 @@ TEST_CASE("mesh1d: nodes closer than 0.3 h to the previous one are filtered out"
   CHECK(c.nodes.size() <= 16);
   for (std::size_t k = 1; k + 1 < c.nodes.size(); ++k)
     CHECK(norm(r.mesh.nodes[c.nodes[k]].xyz - r.mesh.nodes[c.nodes[k - 1]].xyz) >= 0.03 - 1e-12);
+}
+
+TEST_CASE("mesh1d: node_count and place_nodes on absurd integrals are errors, never overflows") {
+  CurvePrimitive p;
+  p.t = {0, 1};
+  p.a = {0, 1e20};
+  CHECK(node_count(p, 1) == doctest::Approx(1e20));
+  CHECK(place_nodes(p, 1).empty());   // beyond kMaxCurveNodes: nothing placed
+  CHECK(place_nodes(p, 1, 10).empty());
+  p.a = {0, std::numeric_limits<double>::infinity()};
+  CHECK_FALSE(std::isfinite(node_count(p, 1)));
+  CHECK(place_nodes(p, 1).empty());
+  p.a = {0, std::numeric_limits<double>::quiet_NaN()};
+  CHECK(std::isnan(node_count(p, 1)));
+  CHECK(place_nodes(p, 1).empty());
+  // Gmsh's count, and a coarse version capped at max_nodes (still from 0 to 1).
+  p.a = {0, 9.5};
+  CHECK(node_count(p, 1) == 11);
+  CHECK(place_nodes(p, 1).size() == 11);
+  const std::vector<double> coarse = place_nodes(p, 1, 4);
+  REQUIRE(coarse.size() == 4);
+  CHECK(coarse.front() == 0);
+  CHECK(coarse.back() == 1);
+  CHECK(coarse[1] == doctest::Approx(1.0 / 3));
+}
+
+TEST_CASE("mesh1d: a curve or all curves over max_elements are refused before nodes are placed") {
+  geo::Model m;
+  REQUIRE(m.add_point(1, {0, 0, 0}, 0.01).ok());
+  REQUIRE(m.add_point(2, {1, 0, 0}, 0.01).ok());
+  REQUIRE(m.add_point(3, {3, 0, 0}, 0.01).ok());
+  REQUIRE(m.add_curve(1, geo::CurveKind::Line, {1, 2}).ok());
+  REQUIRE(m.add_curve(2, geo::CurveKind::Line, {2, 3}).ok());
+  Mesh1dOptions o;
+  o.max_elements = 150;   // curve 1 gets 101 nodes, curve 2 201
+  Mesh1dResult r = mesh_curves(m, o);
+  REQUIRE(r.error.kind == Mesh1dErrorKind::LimitExceeded);
+  CHECK(r.error.curve_a == 2);
+  CHECK_FALSE(r.error.all_curves);
+  CHECK(r.error.count == 201);
+  CHECK(r.error.limit == 150);
+  CHECK(r.mesh.curves.empty());
+  o.max_elements = 250;   // each within, together over
+  r = mesh_curves(m, o);
+  REQUIRE(r.error.kind == Mesh1dErrorKind::LimitExceeded);
+  CHECK(r.error.all_curves);
+  CHECK(r.error.curve_a == 2);
+  CHECK(r.error.count == 302);
+  o.max_elements = 302;
+  r = mesh_curves(m, o);
+  REQUIRE(r.ok());
+  CHECK(r.mesh.nodes.size() == 301);
+  // Without a budget a count beyond what a curve can index is still refused.
+  o.max_elements = 0;
+  o.size.factor = 1e-20;
+  r = mesh_curves(m, o);
+  REQUIRE(r.error.kind == Mesh1dErrorKind::LimitExceeded);
+  CHECK(r.error.limit == kMaxCurveNodes);
+  CHECK(r.error.message.find("curve 1 would get about 1.0e+22 nodes") != std::string::npos);
 }

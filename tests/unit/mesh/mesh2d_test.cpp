@@ -1043,3 +1043,92 @@ TEST_CASE("mesh2d: islands below the mesh size give one warning per surface, nam
   CHECK(used == 1);
   CHECK(edges.size() == 40);
 }
+
+TEST_CASE("mesh2d: the element budget refuses a face from its boundary, before refinement") {
+  // A unit square at lc 1e-3 has 4000 boundary nodes and about 2.3e6 triangles: over a
+  // budget of 1e5, refused (fast: no triangle is inserted) with the estimate and the limit.
+  geo::Model m;
+  const int outer = add_square(m, 0, 0, 1, 1, 1e-3, true);
+  REQUIRE(m.add_plane_surface(1, {outer}).ok());
+  Mesh1dResult r1 = mesh_curves(m, {});
+  REQUIRE(r1.ok());
+  for (Mesh2dAlgorithm alg : kAlgorithms) {
+    CAPTURE(name_of(alg));
+    ModelMesh mesh = r1.mesh;
+    Mesh2dOptions o2;
+    o2.algorithm = alg;
+    o2.max_elements = 1e5;
+    const Mesh2dResult r2 = mesh_surfaces(m, mesh, o2);
+    REQUIRE_FALSE(r2.ok());
+    CHECK(r2.error.surface == 1);
+    CHECK(r2.error.kind == Mesh2dErrorKind::LimitExceeded);
+    CHECK(r2.error.count == doctest::Approx(1 / (1e-6 * std::sqrt(3) / 4)).epsilon(0.05));
+    CHECK(r2.error.limit == 1e5);
+    CHECK(r2.stats.inserted == 0);
+    CHECK(mesh.surfaces.empty());
+  }
+}
+
+TEST_CASE("mesh2d: within the element budget the mesh is the same as without one") {
+  geo::Model m;
+  const int outer = add_square(m, 0, 0, 1, 1, 0.05, true);
+  const int hole = add_circle(m, 0.5, 0.5, 0.2, 0.05);
+  REQUIRE(m.add_plane_surface(1, {outer, hole}).ok());
+  for (Mesh2dAlgorithm alg : kAlgorithms) {
+    CAPTURE(name_of(alg));
+    Mesh2dOptions o2;
+    o2.algorithm = alg;
+    const Meshed a = mesh_model(m, {}, o2);
+    o2.max_elements = 2.0 * static_cast<double>(a.r2.stats.triangles);
+    const Meshed b = mesh_model(m, {}, o2);
+    check_same(a.mesh, b.mesh);
+    CHECK(a.r2.stats.size_evaluations == b.r2.stats.size_evaluations);
+  }
+}
+
+TEST_CASE("mesh2d: check_face_budgets estimates faces on a coarse boundary, skipping what it cannot triangulate") {
+  // The size field asks for 1e-6 everywhere: 1e6 nodes per side, 2.3e12 triangles. On the
+  // coarse 1D mesh (kCoarseCurveNodes per curve) the estimate is the same and cheap.
+  class Uniform : public field::SizeField {
+   public:
+    void eval(std::span<const Vec3>, std::span<double> h) const override {
+      for (double& x : h) x = 1e-6;
+    }
+  } uniform;
+  geo::Model m;
+  const int outer = add_square(m, 0, 0, 1, 1, 1.0, true);
+  REQUIRE(m.add_plane_surface(1, {outer}).ok());
+  Mesh1dOptions o1;
+  o1.background = &uniform;
+  o1.max_elements = 1e12;
+  ModelMesh coarse;
+  std::size_t calls = 0;
+  o1.coarse_check = [&](const ModelMesh& c) {
+    ++calls;
+    coarse = c;
+    return false;
+  };
+  const Mesh1dResult r1 = mesh_curves(m, o1);
+  CHECK(r1.error.kind == Mesh1dErrorKind::Stopped);
+  REQUIRE(calls == 1);
+  CHECK(coarse.curves.size() == 4);
+  for (const auto& [tag, cm] : coarse.curves) CHECK(cm.nodes.size() == static_cast<std::size_t>(kCoarseCurveNodes));
+  Mesh2dOptions o2;
+  o2.background = &uniform;
+  o2.max_elements = 1e12;
+  const Mesh2dResult b = check_face_budgets(m, coarse, o2);
+  REQUIRE_FALSE(b.ok());
+  CHECK(b.error.kind == Mesh2dErrorKind::LimitExceeded);
+  CHECK(b.error.surface == 1);
+  CHECK(b.error.count == doctest::Approx(1 / (1e-12 * std::sqrt(3) / 4)).epsilon(0.05));
+  o2.max_elements = 1e13;
+  CHECK(check_face_budgets(m, coarse, o2).ok());
+  // Below coarse_check_nodes (or without a budget) the check is not called.
+  o1.coarse_check_nodes = 1e6;
+  o1.max_elements = 1e12;
+  calls = 0;
+  Mesh1dOptions o1b = o1;
+  o1b.background = nullptr;
+  CHECK(mesh_curves(m, o1b).ok());
+  CHECK(calls == 0);
+}

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <numeric>
 #include <thread>
 #include <vector>
@@ -241,4 +243,31 @@ TEST_CASE("partition: a non-positive size is an error, not a crash") {
     CHECK_FALSE(r.ok());
     CHECK(r.error.find("positive") != std::string::npos);
   }
+}
+
+TEST_CASE("partition: saturated_count never converts out of range") {
+  CHECK(saturated_count(0) == 0);
+  CHECK(saturated_count(-5) == 0);
+  CHECK(saturated_count(2.5) == 3);
+  CHECK(saturated_count(1e12) == 1000000000000ull);
+  constexpr std::uint64_t kMax = std::numeric_limits<std::uint64_t>::max();
+  CHECK(saturated_count(1e30) == kMax);
+  CHECK(saturated_count(std::numeric_limits<double>::infinity()) == kMax);
+  CHECK(saturated_count(std::numeric_limits<double>::quiet_NaN()) == kMax);
+  CHECK(saturated_count(1.5e19) == 15000000000000000000ull);   // above 2^63, below 2^64
+}
+
+TEST_CASE("partition: estimate_triangles of a vanishing size is the largest count, not a wrapped one") {
+  TriangleStore m;
+  const Loop l = testing::polygon_loop(m, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.25, false);
+  REQUIRE(testing::boundary_mesh(m, {l}));
+  // 1/h^2 overflows to inf (a size of zero is skipped: the refiners refuse it by name).
+  const PlaneSizeFn vanishing = [](std::span<const Vec2>, std::span<double> h) {
+    for (double& x : h) x = 1e-200;
+  };
+  CHECK(estimate_triangles(m, vanishing) == std::numeric_limits<std::uint64_t>::max());
+  const PlaneSizeFn tiny = [](std::span<const Vec2>, std::span<double> h) {
+    for (double& x : h) x = 1e-6;
+  };
+  CHECK(static_cast<double>(estimate_triangles(m, tiny)) == doctest::Approx(1 / (1e-12 * std::sqrt(3) / 4)).epsilon(0.01));
 }

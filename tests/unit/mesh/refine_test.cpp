@@ -3,10 +3,14 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <span>
 
 #include "mesh/check.h"
+#include "mesh/frontal.h"
 #include "mesh/modify/smooth.h"
+#include "mesh/predicates.h"
 #include "mesh/quality.h"
 #include "mesh/refine.h"
 #include "mesh/refine_queue.h"
@@ -212,4 +216,34 @@ TEST_CASE("refine: a spherical cap meshed in the stereographic plane (paper sect
   const double expected = testing::cap_triangles_expected(delta);
   CHECK(m.num_triangles() > 0.9 * expected);
   CHECK(m.num_triangles() < 1.5 * expected);
+}
+
+TEST_CASE("refine: a triangle flat to double precision never sends a point at infinity to the size") {
+  // Counter-clockwise by the exact predicates, but cross(b - a, c - a) rounds to 0, so the
+  // constructed circumcentre is not finite (two close islands met this in front2d: "mesh
+  // size must be positive and finite (got inf at (inf, inf))"). The size function, like
+  // mesh2d's, is not finite there.
+  const Vec2 a{0.30000000000000004, 0.2}, b{0.5550690257394217, 0.695435087091941},
+      c{0.4198045539324276, 0.4327032043167829};
+  REQUIRE(orient2d(a, b, c) == Sign::Positive);
+  const Vec2 cc = circumcentre(a, b, c);
+  REQUIRE_FALSE((std::isfinite(cc.x) && std::isfinite(cc.y)));
+  for (const bool frontal : {false, true}) {
+    CAPTURE(frontal);
+    TriangleStore m;
+    Loop l;
+    for (Vec2 p : {a, b, c}) l.v.push_back(m.add_vertex(p));
+    REQUIRE(testing::boundary_mesh(m, {l}));
+    REQUIRE(m.num_triangles() == 1);
+    RefineOptions opt;
+    opt.size_at = [](std::span<const Vec2> p, std::span<double> h) {
+      for (std::size_t i = 0; i < p.size(); ++i)
+        h[i] = std::isfinite(p[i].x) && std::isfinite(p[i].y) ? 0.05 : std::numeric_limits<double>::infinity();
+    };
+    const RefineResult r = frontal ? RefineResult(refine_front2d(m, opt)) : refine_del2d(m, opt);
+    INFO(r.error);
+    CHECK(r.ok());
+    for (Vec2 p : m.xy) CHECK((std::isfinite(p.x) && std::isfinite(p.y)));
+    CHECK(check_topology(m).ok());
+  }
 }
