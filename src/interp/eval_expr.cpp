@@ -206,7 +206,7 @@ std::string Interpreter::unknown_name_hint(const std::string& name) const {
   if (hint.empty()) {
     // `Sqr(2)` parses as indexing a variable 'Sqr': point at the function.
     std::vector<std::pair<std::string_view, int>> fns;
-    for (const auto& b : all_builtins()) fns.emplace_back(b.name, 0);
+    for (const auto& b : lang::builtin_functions()) fns.emplace_back(b.name, 0);
     hint = suggestion(name, fns);
     if (!hint.empty()) hint.insert(hint.find('\'') , "the function ");
   }
@@ -423,73 +423,51 @@ Value Interpreter::eval_postfix(const Expr& e, const PostfixExpr& p) {
 }
 
 Value Interpreter::eval_call(const Expr& e, const CallExpr& c) {
-  const std::string_view fname = ast_.str(c.func);
-  auto name_arg = [&](std::size_t i) -> std::string {
-    const Expr& a = ast_.expr(c.args[i]);
-    if (const auto* v = std::get_if<VarExpr>(&a.node)) return resolve_name(v->name);
-    if (const auto* w = std::get_if<WholeListExpr>(&a.node)) return resolve_name(w->name);
-    fail_fmt(a.range, Diag::WrongType, fmt::format("'{}' needs a variable name", fname));
-  };
-  auto need_args = [&](std::size_t lo, std::size_t hi) {
-    if (c.args.size() < lo || c.args.size() > hi)
-      fail_fmt(c.func_range, Diag::WrongArgumentCount, fname,
-               lo == hi ? fmt::format("{}", lo)
-                        : (hi == static_cast<std::size_t>(-1) ? fmt::format("at least {}", lo)
-                                                              : fmt::format("{} to {}", lo, hi)),
-               hi == 1 ? "" : "s", c.args.size());
-  };
-  // Functions that take a name, not a value.
-  if (fname == "Exists") {
-    need_args(1, 1);
-    return Value::number(symbols_.exists(name_arg(0)) ? 1 : 0);
-  }
-  if (fname == "NameToString" || fname == "N2S") {
-    need_args(1, 1);
-    return Value::string(name_arg(0));
-  }
-  if (fname == "StringToName" || fname == "S2N") {
-    need_args(1, 1);
-    Name n;
-    n.from_string = c.args[0];
-    return eval_var(e, VarExpr{n});
-  }
-  if (fname == "DefineNumber" || fname == "DefineString") {
-    if (c.args.empty()) need_args(1, 1);
-    return eval(c.args[0]);   // ONELAB attributes are accepted and ignored
-  }
-  if (Value v; eval_field_call(*this, e, c, v)) return v;   // FieldValue, FieldArgmin
-  const BuiltinInfo* fn = find_builtin(fname);
-  if (!fn) {
-    std::string hint;
-    std::size_t best = 3;
-    for (const auto& b : all_builtins()) {
-      const std::size_t d = edit_distance(fname, b.name);
-      if (d < best) {
-        best = d;
-        hint = fmt::format(" (did you mean '{}'?)", b.name);
-      }
-    }
-    fail_fmt(c.func_range, Diag::UnknownFunction, fname, hint);
-  }
-  need_args(static_cast<std::size_t>(fn->min_args),
-            fn->max_args < 0 ? static_cast<std::size_t>(-1) : static_cast<std::size_t>(fn->max_args));
-  const bool list_args = fname == "List" || fname == "Unique" || fname == "Abs" || fname == "Find";
+  const lang::BuiltinFunction& fn = lang::builtin_function(c.fn);   // the parser found the row
+  if (fn.pass == BuiltinPass::Model) return eval_field_call(*this, e, c);
+  const std::size_t lo = static_cast<std::size_t>(fn.min_args);
+  const std::size_t hi = fn.max_args < 0 ? static_cast<std::size_t>(-1) : static_cast<std::size_t>(fn.max_args);
+  if (c.args.size() < lo || c.args.size() > hi)
+    fail_fmt(c.func_range, Diag::WrongArgumentCount, fn.name,
+             lo == hi ? fmt::format("{}", lo)
+                      : (fn.max_args < 0 ? fmt::format("at least {}", lo) : fmt::format("{} to {}", lo, hi)),
+             hi == 1 ? "" : "s", c.args.size());
   std::vector<Value> args;
   args.reserve(c.args.size());
-  const bool concat = fname == "StrCat" || fname == "Str";
   for (ExprId a : c.args) {
-    if (std::string name; concat && physical_group_name(*this, a, name))
-      args.push_back(Value::string(std::move(name)));   // `StrCat("x", Physical Curve{1})`
-    else
-      args.push_back(list_args ? eval_list_arg(a) : eval(a));
+    switch (fn.pass) {
+      case BuiltinPass::Name: {
+        const Expr& x = ast_.expr(a);
+        if (const auto* v = std::get_if<VarExpr>(&x.node)) {
+          args.push_back(Value::string(resolve_name(v->name)));
+        } else if (const auto* w = std::get_if<WholeListExpr>(&x.node)) {
+          args.push_back(Value::string(resolve_name(w->name)));
+        } else {
+          fail_fmt(x.range, Diag::WrongType, fmt::format("'{}' needs a variable name", fn.name));
+        }
+        break;
+      }
+      case BuiltinPass::Lists:
+        args.push_back(eval_list_arg(a));
+        break;
+      case BuiltinPass::Strings:
+        if (std::string name; physical_group_name(*this, a, name))
+          args.push_back(Value::string(std::move(name)));   // `StrCat("x", Physical Curve{1})`
+        else
+          args.push_back(eval(a));
+        break;
+      default:
+        args.push_back(eval(a));
+        break;
+    }
   }
   try {
-    return fn->fn(env_, args);
+    return builtin_impl(c.fn)(env_, args);
   } catch (const BuiltinError& err) {
     const SourceRange where = (err.arg >= 0 && static_cast<std::size_t>(err.arg) < c.args.size())
                                   ? ast_.expr(c.args[static_cast<std::size_t>(err.arg)]).range
                                   : e.range;
-    fail_fmt(where, Diag::BuiltinFailed, fname, err.message);
+    fail_fmt(where, Diag::BuiltinFailed, fn.name, err.message);
   }
 }
 

@@ -198,7 +198,7 @@ Interpreter::Flow Interpreter::exec_command(const Stmt& s, const CommandStmt& c)
       fail_fmt(s.range, Diag::WrongArgumentCount, name, "2", "s", list ? list->items.size() : 0);
     std::vector<Value> args{eval(list->items[0]), eval(list->items[1])};
     try {
-      find_builtin(name)->fn(env_, args);
+      find_builtin(name)(env_, args);
     } catch (const BuiltinError& err) {
       const SourceRange where =
           err.arg >= 0 && err.arg < 2 ? ast_.expr(list->items[static_cast<std::size_t>(err.arg)]).range : s.range;

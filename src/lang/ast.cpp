@@ -1,5 +1,5 @@
-// Ast storage (node arrays, string interning), the built-in constant and
-// function-name tables, and the S-expression dump used by tests.
+// Ast storage (node arrays, string interning), the built-in constant table,
+// and the S-expression dump used by tests.
 #include "lang/ast.h"
 
 #include <algorithm>
@@ -41,20 +41,6 @@ constexpr ConstantEntry kConstants[] = {
     {"CurrentFileName", Constant::CurrentFileName},
     {"GmshExecutableName", Constant::GmshExecutableName},
     {"OnelabAction", Constant::OnelabAction},
-};
-
-// Built-in functions of Gmsh 4.8.4 (math, string, list, query), sorted.
-constexpr std::string_view kFunctionNames[] = {
-    "Abs", "AbsolutePath", "Acos", "ArcCos", "ArcSin", "ArcTan", "ArcTan2", "Asin", "Atan", "Atan2",
-    "Ceil", "Cos", "Cosh", "DefineNumber", "DefineString", "DirName", "Exists", "Exp", "Fabs",
-    "FileExists", "Find", "Floor", "Fmod", "GetEnv", "GetForced", "GetForcedStr", "GetNumber",
-    "GetString", "GetStringValue", "GetValue", "Hypot", "LinSpace", "List", "ListFromFile", "Log",
-    "Log10", "LogSpace", "LowerCase", "LowerCaseIn", "Max", "Min", "Modulo", "N2S", "NameToString",
-    "Rand", "Round", "SetNumber", "SetString", "Sin", "Sinh", "Sprintf", "Sqrt", "Step", "Str",
-    "StrCat", "StrChoice", "StrCmp", "StrFind", "StrLen", "StrPrefix", "StrRelative", "StrReplace",
-    "StrSub", "Tan", "Tanh", "TextAttributes", "Unique", "UpperCase", "Norm", "Sign", "Total",
-    "StrSplit", "Hypot3",
-    "FieldValue", "FieldArgmin",   // native: size fields (interp/builtins/field_eval.cpp)
 };
 
 #define SM_CHECK_KIND(Enum, Variant, kind, Type) \
@@ -171,10 +157,6 @@ std::string_view constant_text(Constant c) {
 }
 
 bool constant_is_string(Constant c) { return c >= Constant::Today && c < Constant::kCount; }
-
-bool is_function_name(std::string_view name) {
-  return std::find(std::begin(kFunctionNames), std::end(kFunctionNames), name) != std::end(kFunctionNames);
-}
 
 ExprId Ast::add_expr(SourceRange range, ExprNode node) {
   exprs_.push_back({range, std::move(node)});

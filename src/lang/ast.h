@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "base/id.h"
+#include "lang/builtin_function.h"
 #include "lang/source.h"
 #include "lang/token.h"
 
@@ -118,12 +119,18 @@ struct LengthExpr { ExprId list; };
 struct ListExpr { ExprList items; };
 /// `from:to` or `from:to:step` (step invalid when absent: ±1 by direction).
 struct RangeExpr { ExprId from, to, step; };
-/// `Func(args)` / `Func[args]` for a built-in function name (is_function_name):
-/// math (Sqrt, Atan2, Min...), strings (StrCat, Sprintf, StrSub...), lists
-/// (Unique, LinSpace, List...), queries (Exists, GetNumber, FileExists...).
-/// Args are as written; the evaluator decides which are names (Exists(x),
-/// NameToString[x]), strings or lists.
-struct CallExpr { StrId func; SourceRange func_range; ExprList args; bool square = false; };
+/// `Func(args)` / `Func[args]` for a built-in function name (the rows of
+/// lang/builtin_functions.def): math (Sqrt, Atan2, Min...), strings (StrCat,
+/// Sprintf, StrSub...), lists (Unique, LinSpace, List...), queries (Exists,
+/// GetNumber, FileExists...). Args are as written; the table's BuiltinPass
+/// says which are names (Exists(x), NameToString[x]), strings or lists.
+struct CallExpr {
+  StrId func;
+  SourceRange func_range;
+  ExprList args;
+  bool square = false;
+  BuiltinId fn = BuiltinId::kNone;   ///< the table row of `func`
+};
 /// Reading an option: `Mesh.Algorithm`, `View[0].Name`, `General.Color.Text`.
 struct OptionExpr { OptionRef option; };
 /// `Point{t}` (coordinates), `Curve{:}` (all tags), `Physical Surface{t}`
@@ -370,10 +377,6 @@ class Ast {
   std::deque<std::string> strings_;  // deque: views into it stay valid as it grows
   std::unordered_map<std::string_view, StrId> string_ids_;
 };
-
-/// Built-in function names that parse as calls `F(args)`/`F[args]`; any
-/// other `name(i)` is indexing (IndexExpr).
-bool is_function_name(std::string_view name);
 
 /// S-expression text of a node, for tests and debugging, e.g.
 /// `(assign = (var x) (binary + (num 1) (num 2)))`.

@@ -387,7 +387,7 @@ StmtId Parser::parse_macro() {
   MacroStmt node;
   if (std::any_of(blocks_.begin(), blocks_.end(), [](const OpenBlock& b) { return b.kind == Block::Macro; }))
     diags_.report(kw.range, Diag::NestedMacro);
-  if (at(Tok::Ident) && !(is_function_name(text(peek())) && (at(Tok::LParen, 1) || at(Tok::LBracket, 1)))) {
+  if (at(Tok::Ident) && call_at() == BuiltinId::kNone) {
     node.name = ast_.intern(text(advance()));
   } else if (at(Tok::String)) {
     const Token s = advance();
@@ -415,7 +415,7 @@ StmtId Parser::parse_return() {
 StmtId Parser::parse_call() {
   const Token kw = advance();
   CallStmt node;
-  if (at(Tok::Ident) && !(is_function_name(text(peek())) && (at(Tok::LParen, 1) || at(Tok::LBracket, 1)))) {
+  if (at(Tok::Ident) && call_at() == BuiltinId::kNone) {
     node.name = ast_.intern(text(advance()));
   } else if (at(Tok::String)) {
     const Token s = advance();

@@ -28,12 +28,6 @@ int binary_prec(Tok k) {
   }
 }
 
-constexpr std::string_view kStringFunctions[] = {
-    "AbsolutePath", "DefineString", "DirName", "GetEnv", "GetForcedStr", "GetString", "GetStringValue",
-    "LowerCase", "N2S", "NameToString", "Sprintf", "Str", "StrCat", "StrChoice", "StrPrefix",
-    "StrRelative", "StrReplace", "StrSub", "UpperCase",
-};
-
 }  // namespace
 
 ExprId Parser::add_expr(const Token& first, ExprNode node) { return ast_.add_expr(since(first), std::move(node)); }
@@ -44,10 +38,13 @@ bool Parser::starts_string_expr(std::size_t n) {
   const Token& t = peek(n);
   if (t.kind == Tok::String) return true;
   if (t.kind == Tok::Constant) return constant_is_string(constant_from_text(text(t)));
-  if (t.kind != Tok::Ident) return false;
-  const std::string_view w = text(t);
-  return std::find(std::begin(kStringFunctions), std::end(kStringFunctions), w) != std::end(kStringFunctions) &&
-         (at(Tok::LParen, n + 1) || at(Tok::LBracket, n + 1));
+  const BuiltinId fn = call_at(n);
+  return fn != BuiltinId::kNone && builtin_function(fn).result == BuiltinResult::Str;
+}
+
+BuiltinId Parser::call_at(std::size_t n) {
+  if (!at(Tok::Ident, n) || !(at(Tok::LParen, n + 1) || at(Tok::LBracket, n + 1))) return BuiltinId::kNone;
+  return find_builtin_function(text(peek(n)));
 }
 
 // expr := or_expr [ "?" expr ":" expr ]
@@ -210,9 +207,8 @@ OptionRef Parser::parse_option_after(const Token& category, ExprId index) {
 //                      | ("["|"(") expr ("]"|")") [ "." word [ "." word ] ] ]
 //               | IDENT "." word [ "." word ]
 ExprId Parser::parse_name_primary() {
+  if (const BuiltinId fn = call_at(); fn != BuiltinId::kNone) return parse_call_args(advance(), fn);
   const Token id = advance();
-  const std::string_view w = text(id);
-  if (is_function_name(w) && (at(Tok::LParen) || at(Tok::LBracket))) return parse_call_args(id);
   if (at(Tok::Dot) && (at(Tok::Ident, 1) || at(Tok::Constant, 1) || is_keyword(kind(1))))
     return add_expr(id, OptionExpr{parse_option_after(id, ExprId{})});
   Name name = parse_name_after(id);
@@ -238,15 +234,15 @@ ExprId Parser::parse_name_primary() {
 
 // call := FUNC ("(" [ items ] ")" | "[" [ items ] "]")
 //       | ("DefineNumber" | "DefineString") ("[" | "(") item { "," onelab_attr } ("]" | ")")
-ExprId Parser::parse_call_args(const Token& func) {
+ExprId Parser::parse_call_args(const Token& func, BuiltinId fn) {
   const Token open = advance();
   CallExpr call;
   call.func = ast_.intern(text(func));
   call.func_range = func.range;
   call.square = open.kind == Tok::LBracket;
+  call.fn = fn;
   const Tok closer = call.square ? Tok::RBracket : Tok::RParen;
-  const std::string_view name = text(func);
-  if ((name == "DefineNumber" || name == "DefineString") && !at(closer)) {
+  if (builtin_function(fn).pass == BuiltinPass::Onelab && !at(closer)) {
     // DefineNumber[value, Name "..", Min 0, Choices{...}]: the value is the only
     // argument; the ONELAB attributes are parsed and ignored.
     call.args.push_back(parse_item());

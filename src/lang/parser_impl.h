@@ -90,7 +90,7 @@ class Parser {
   ExprId parse_postfix();
   ExprId parse_primary();
   ExprId parse_name_primary();
-  ExprId parse_call_args(const Token& func);
+  ExprId parse_call_args(const Token& func, BuiltinId fn);
   ExprId parse_item();
   ExprList parse_items_until(Tok closer, const Token& opener);
   ExprId parse_braced_list();
@@ -105,6 +105,9 @@ class Parser {
   ExprId parse_coastline_query();
   ExprId add_expr(const Token& first, ExprNode node);
   ExprId error_expr(const Token& at);
+  /// The builtin called at token n: a builtin name followed by `(` or `[`
+  /// (kNone otherwise: `name(i)` of any other name is indexing).
+  BuiltinId call_at(std::size_t n = 0);
   bool starts_string_expr(std::size_t n = 0);
 
   // ---- assignments, commands, fields (parser_stmt.cpp)

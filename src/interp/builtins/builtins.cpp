@@ -1,4 +1,5 @@
-// Builtin registry, shared argument helpers and the predefined constants.
+// The builtins' implementation table, shared argument helpers and the
+// predefined constants.
 #include "interp/builtins/builtins.h"
 
 #include <algorithm>
@@ -11,15 +12,14 @@
 namespace sm::interp {
 namespace {
 
-std::vector<BuiltinInfo> build_registry() {
-  std::vector<BuiltinInfo> all;
-  add_math_builtins(all);
-  add_list_builtins(all);
-  add_string_builtins(all);
-  std::sort(all.begin(), all.end(),
-            [](const BuiltinInfo& a, const BuiltinInfo& b) { return a.name < b.name; });
-  return all;
-}
+constexpr BuiltinFn kImpl[] = {
+#define BUILTIN(name, family, result, lo, hi, pass, impl, help) &impl,
+#define MODEL_BUILTIN(name, family, result, lo, hi, help) nullptr,
+#include "lang/builtin_functions.def"
+#undef BUILTIN
+#undef MODEL_BUILTIN
+};
+static_assert(std::size(kImpl) == static_cast<std::size_t>(lang::BuiltinId::kNone));
 
 std::string_view kind_word(const Value& v) {
   switch (v.kind()) {
@@ -33,16 +33,11 @@ std::string_view kind_word(const Value& v) {
 
 }  // namespace
 
-const std::vector<BuiltinInfo>& all_builtins() {
-  static const std::vector<BuiltinInfo> registry = build_registry();
-  return registry;
-}
+BuiltinFn builtin_impl(lang::BuiltinId id) { return kImpl[static_cast<std::size_t>(id)]; }
 
-const BuiltinInfo* find_builtin(std::string_view name) {
-  const auto& all = all_builtins();
-  auto it = std::lower_bound(all.begin(), all.end(), name,
-                             [](const BuiltinInfo& b, std::string_view n) { return b.name < n; });
-  return (it != all.end() && it->name == name) ? &*it : nullptr;
+BuiltinFn find_builtin(std::string_view name) {
+  const lang::BuiltinId id = lang::find_builtin_function(name);
+  return id == lang::BuiltinId::kNone ? nullptr : builtin_impl(id);
 }
 
 const Limits& env_limits(const BuiltinEnv& env) {

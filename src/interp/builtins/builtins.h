@@ -1,6 +1,7 @@
 // Built-in functions callable from expressions (`Sqrt(x)`, `StrCat(a,b)`,
-// `LinSpace[0,1,5]`...), one family per file; the evaluator looks them up by
-// name and calls them with evaluated arguments.
+// `LinSpace[0,1,5]`...), one family per file; the rows of
+// lang/builtin_functions.def name them, and the evaluator calls them with the
+// arguments the row asks for.
 #pragma once
 
 #include <cstdint>
@@ -13,6 +14,7 @@
 #include "interp/options.h"
 #include "interp/redirect_files.h"
 #include "interp/value.h"
+#include "lang/builtin_function.h"
 
 namespace sm::interp {
 
@@ -42,18 +44,21 @@ struct BuiltinError {
 
 using BuiltinFn = Value (*)(BuiltinEnv& env, const std::vector<Value>& args);
 
-struct BuiltinInfo {
-  std::string_view name;
-  int min_args;
-  int max_args;   ///< -1: any number
-  BuiltinFn fn;
-  std::string_view help;
-};
+// The implementations named by lang/builtin_functions.def, one family per file
+// (math.cpp, lists.cpp, strings.cpp, names.cpp, text_attributes.cpp). They get the arguments the
+// table's BuiltinPass describes, already checked against its arity.
+#define BUILTIN(name, family, result, lo, hi, pass, impl, help) \
+  Value impl(BuiltinEnv& env, const std::vector<Value>& args);
+#define MODEL_BUILTIN(name, family, result, lo, hi, help)
+#include "lang/builtin_functions.def"
+#undef BUILTIN
+#undef MODEL_BUILTIN
 
-/// The builtin with this name (synonyms included), or nullptr.
-const BuiltinInfo* find_builtin(std::string_view name);
-/// Every builtin, sorted by name (for docs and suggestions).
-const std::vector<BuiltinInfo>& all_builtins();
+/// The implementation of `id`, or nullptr for a MODEL_BUILTIN (the evaluator
+/// runs those through eval_field_call, builtins/dispatch.h).
+BuiltinFn builtin_impl(lang::BuiltinId id);
+/// The implementation of the builtin called `name`, or nullptr.
+BuiltinFn find_builtin(std::string_view name);
 
 /// The string constants `Today`, `CurrentDirectory`... or false when `name` is none.
 bool builtin_string_constant(std::string_view name, const BuiltinEnv& env, std::string& out);
@@ -70,10 +75,5 @@ const std::vector<double>& arg_list(const std::vector<Value>& args, int i);
 std::string resolve_script_path(const BuiltinEnv& env, const std::string& path);
 /// The same path for writing (Printf >): nothing is put in place.
 std::string script_relative_path(const BuiltinEnv& env, const std::string& path);
-
-// Family registration, one per file.
-void add_math_builtins(std::vector<BuiltinInfo>& out);
-void add_list_builtins(std::vector<BuiltinInfo>& out);
-void add_string_builtins(std::vector<BuiltinInfo>& out);
 
 }  // namespace sm::interp

@@ -18,9 +18,9 @@ class Interpreter;
 void dispatch_model_stmt(Interpreter& in, lang::StmtId s);
 /// Field statements (`Field[1] = Distance;`, options, actions, Background Field).
 void exec_field_stmt(Interpreter& in, lang::StmtId s);
-/// `FieldValue(n, x, y, z)` / `FieldArgmin(...)` (native, field_eval.cpp): sets
-/// `out` and returns true, or returns false for any other function name.
-bool eval_field_call(Interpreter& in, const lang::Expr& e, const lang::CallExpr& c, Value& out);
+/// `FieldValue(n, x, y, z)` / `FieldArgmin(...)` (native, field_eval.cpp): the
+/// MODEL_BUILTIN rows of lang/builtin_functions.def. Checks its own arguments.
+Value eval_field_call(Interpreter& in, const lang::Expr& e, const lang::CallExpr& c);
 /// `Mesh 2;`, `Save "f";`, `Merge`, ... (`CommandStmt`s other than Include).
 /// Returns false for an unknown command name.
 bool exec_mesh_command(Interpreter& in, lang::StmtId s, std::string_view command);

@@ -358,10 +358,9 @@ FieldCallArgs field_call_args(Interpreter& in, const CallExpr& c, std::string_vi
 
 }  // namespace
 
-bool eval_field_call(Interpreter& in, const Expr& e, const CallExpr& c, Value& out) {
+Value eval_field_call(Interpreter& in, const Expr& e, const CallExpr& c) {
   const std::string_view fname = in.ast().str(c.func);
-  const bool value = fname == "FieldValue";
-  if (!value && fname != "FieldArgmin") return false;
+  const bool value = c.fn == BuiltinId::FieldValue;   // else FieldArgmin
   const FieldCallArgs a = field_call_args(in, c, fname);
   const field::BuiltFields& built = built_fields(in, a.id, e.range);
   const field::SizeField& f = *built.get(a.id);
@@ -369,16 +368,14 @@ bool eval_field_call(Interpreter& in, const Expr& e, const CallExpr& c, Value& o
   const field::EntityRef* on = a.on ? &*a.on : nullptr;
   if (value) {
     field::eval_input(f, on, std::span<const Vec3>(&a.p, 1), std::span<double>(&h, 1));
-    out = Value::number(h);
-    return true;
+    return Value::number(h);
   }
   int which = -1;
   if (!field::eval_argmin(f, on, std::span<const Vec3>(&a.p, 1), std::span<double>(&h, 1),
                           std::span<int>(&which, 1)))
     in.fail_fmt(in.ast().expr(c.args[0]).range, Diag::BuiltinFailed, fname,
                 fmt::format("Field[{}] is a {} field, not a Min", a.id, kind_of(in, a.id)));
-  out = Value::number(which);
-  return true;
+  return Value::number(which);
 }
 
 }  // namespace sm::interp

@@ -21,6 +21,16 @@ std::size_t checked_count(const BuiltinEnv& env, double n, int arg) {
   return static_cast<std::size_t>(n);
 }
 
+// n values from a to b, both included (n = 1 gives {a}).
+std::vector<double> linspace(double a, double b, std::size_t n) {
+  std::vector<double> v(n);
+  for (std::size_t i = 0; i < n; ++i)
+    v[i] = n == 1 ? a : a + (b - a) * static_cast<double>(i) / static_cast<double>(n - 1);
+  return v;
+}
+
+}  // namespace
+
 Value f_list(BuiltinEnv&, const std::vector<Value>& a) { return Value::list(arg_list(a, 0)); }
 
 // Sorts and removes duplicates.
@@ -29,14 +39,6 @@ Value f_unique(BuiltinEnv&, const std::vector<Value>& a) {
   std::sort(v.begin(), v.end());
   v.erase(std::unique(v.begin(), v.end()), v.end());
   return Value::list(std::move(v));
-}
-
-// n values from a to b, both included (n = 1 gives {a}).
-std::vector<double> linspace(double a, double b, std::size_t n) {
-  std::vector<double> v(n);
-  for (std::size_t i = 0; i < n; ++i)
-    v[i] = n == 1 ? a : a + (b - a) * static_cast<double>(i) / static_cast<double>(n - 1);
-  return v;
 }
 
 Value f_linspace(BuiltinEnv& env, const std::vector<Value>& a) {
@@ -87,20 +89,6 @@ Value f_find(BuiltinEnv&, const std::vector<Value>& a) {
   for (double x : what)
     if (std::binary_search(where.begin(), where.end(), x)) count += 1;
   return Value::number(count);
-}
-
-}  // namespace
-
-void add_list_builtins(std::vector<BuiltinInfo>& out) {
-  const BuiltinInfo fns[] = {
-      {"List", 1, 1, f_list, "List[l]: a copy of a list"},
-      {"Unique", 1, 1, f_unique, "sorted list without duplicates"},
-      {"LinSpace", 3, 3, f_linspace, "LinSpace[a, b, n]: n evenly spaced values from a to b"},
-      {"LogSpace", 3, 3, f_logspace, "LogSpace[a, b, n]: n values from 10^a to 10^b"},
-      {"ListFromFile", 1, 1, f_list_from_file, "numbers read from a file (relative to the script)"},
-      {"Find", 2, 2, f_find, "Find(l1, l2): how many items of l1 occur in l2"},
-  };
-  out.insert(out.end(), std::begin(fns), std::end(fns));
 }
 
 }  // namespace sm::interp

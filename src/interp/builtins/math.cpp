@@ -16,6 +16,7 @@ namespace {
 
 double x0(const std::vector<Value>& a) { return arg_number(a, 0); }
 double x1(const std::vector<Value>& a) { return arg_number(a, 1); }
+}  // namespace
 
 Value f_sqrt(BuiltinEnv&, const std::vector<Value>& a) {
   const double x = x0(a);
@@ -94,43 +95,5 @@ Value f_rand(BuiltinEnv& env, const std::vector<Value>& a) {
   return Value::number(x0(a) * u);
 }
 Value f_step(BuiltinEnv&, const std::vector<Value>& a) { return Value::number(x0(a) < 0 ? 0 : 1); }
-
-}  // namespace
-
-void add_math_builtins(std::vector<BuiltinInfo>& out) {
-  const BuiltinInfo fns[] = {
-      {"Sqrt", 1, 1, f_sqrt, "square root (argument >= 0)"},
-      {"Exp", 1, 1, f_exp, "e raised to the argument"},
-      {"Log", 1, 1, f_log, "natural logarithm (argument > 0)"},
-      {"Log10", 1, 1, f_log10, "base-10 logarithm (argument > 0)"},
-      {"Sin", 1, 1, f_sin, "sine (radians)"},
-      {"Cos", 1, 1, f_cos, "cosine (radians)"},
-      {"Tan", 1, 1, f_tan, "tangent (radians)"},
-      {"Asin", 1, 1, f_asin, "arc sine, in [-Pi/2,Pi/2]"},
-      {"ArcSin", 1, 1, f_asin, "synonym of Asin"},
-      {"Acos", 1, 1, f_acos, "arc cosine, in [0,Pi]"},
-      {"ArcCos", 1, 1, f_acos, "synonym of Acos"},
-      {"Atan", 1, 1, f_atan, "arc tangent, in [-Pi/2,Pi/2]"},
-      {"ArcTan", 1, 1, f_atan, "synonym of Atan"},
-      {"Atan2", 2, 2, f_atan2, "Atan2(y, x): arc tangent of y/x in [-Pi,Pi]"},
-      {"ArcTan2", 2, 2, f_atan2, "synonym of Atan2"},
-      {"Sinh", 1, 1, f_sinh, "hyperbolic sine"},
-      {"Cosh", 1, 1, f_cosh, "hyperbolic cosine"},
-      {"Tanh", 1, 1, f_tanh, "hyperbolic tangent"},
-      {"Fabs", 1, 1, f_fabs, "absolute value"},
-      {"Abs", 1, 1, f_abs, "absolute value; element by element on a list"},
-      {"Floor", 1, 1, f_floor, "round down"},
-      {"Ceil", 1, 1, f_ceil, "round up"},
-      {"Round", 1, 1, f_round, "floor(x + 0.5): Round(-2.5) = -2"},
-      {"Fmod", 2, 2, f_fmod, "remainder with the sign of the first argument"},
-      {"Modulo", 2, 2, f_fmod, "synonym of Fmod"},
-      {"Hypot", 2, 2, f_hypot, "sqrt(a^2 + b^2)"},
-      {"Min", 2, 2, f_min, "smaller of two numbers"},
-      {"Max", 2, 2, f_max, "larger of two numbers"},
-      {"Rand", 1, 1, f_rand, "uniform random number in [0, argument] (fixed seed)"},
-      {"Step", 1, 1, f_step, "0 if the argument is < 0, else 1 (not in Gmsh 4.8.4)"},
-  };
-  out.insert(out.end(), std::begin(fns), std::end(fns));
-}
 
 }  // namespace sm::interp

@@ -1,6 +1,6 @@
-// String builtins of the Gmsh 4.8.4 manual (§4.2.2 char-expression) and the
+// String builtins of the Gmsh 4.8.4 manual (§4.2.2 char-expression), the
 // numeric ones that read strings (StrLen, StrCmp, StrFind, FileExists,
-// GetNumber, GetValue).
+// GetNumber, GetValue) and the ONELAB-style parameters.
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
@@ -27,6 +27,7 @@ Value checked_string(const BuiltinEnv& env, std::string s) {
   if (s.size() > env_limits(env).max_string_size) too_long(env, s.size());
   return Value::string(std::move(s));
 }
+}  // namespace
 
 Value f_strcat(BuiltinEnv& env, const std::vector<Value>& a) {
   std::string s;
@@ -192,6 +193,10 @@ Value f_getstringvalue(BuiltinEnv&, const std::vector<Value>& a) {
   return Value::string(arg_string(a, 1));
 }
 
+// DefineNumber/DefineString: ONELAB would offer the value in its GUI; a
+// batch run takes it as given (the parser dropped the attributes).
+Value f_define_parameter(BuiltinEnv&, const std::vector<Value>& a) { return a[0]; }
+
 Value f_setnumber(BuiltinEnv& env, const std::vector<Value>& a) {
   const double v = arg_number(a, 1);
   env.onelab_numbers[arg_string(a, 0)] = v;
@@ -202,36 +207,6 @@ Value f_setstring(BuiltinEnv& env, const std::vector<Value>& a) {
   const std::string& v = arg_string(a, 1);
   env.onelab_strings[arg_string(a, 0)] = v;
   return Value::string(v);
-}
-
-}  // namespace
-
-void add_string_builtins(std::vector<BuiltinInfo>& out) {
-  const BuiltinInfo fns[] = {
-      {"StrCat", 0, -1, f_strcat, "concatenation of strings"},
-      {"Str", 0, -1, f_str, "strings joined with newlines"},
-      {"Sprintf", 1, -1, f_sprintf, "formatted string, same rules as Printf"},
-      {"StrLen", 1, 1, f_strlen, "length in bytes"},
-      {"StrCmp", 2, 2, f_strcmp, "-1, 0 or 1 like C strcmp"},
-      {"StrFind", 2, 2, f_strfind, "1 if the second string occurs in the first, else 0"},
-      {"StrPrefix", 1, 1, f_strprefix, "the file name without its extension"},
-      {"StrRelative", 1, 1, f_strrelative, "the file name without its directory"},
-      {"StrSub", 2, 3, f_strsub, "StrSub(s, i <, n>): n characters from index i"},
-      {"StrReplace", 3, 3, f_strreplace, "StrReplace(s, old, new): every occurrence replaced"},
-      {"UpperCase", 1, 1, f_uppercase, "upper-case copy"},
-      {"StrChoice", 3, 3, f_strchoice, "StrChoice(c, a, b): a if c is non-zero, else b"},
-      {"AbsolutePath", 1, 1, f_absolutepath, "absolute path (relative to the script)"},
-      {"DirName", 1, 1, f_dirname, "directory part with its trailing '/'"},
-      {"GetEnv", 1, 1, f_getenv, "environment variable, \"\" when unset"},
-      {"FileExists", 1, 1, f_fileexists, "1 if the file exists (relative to the script)"},
-      {"GetValue", 2, 2, f_getvalue, "GetValue(prompt, default): the default (batch mode)"},
-      {"GetNumber", 1, 2, f_getnumber, "GetNumber(name <, default>): a SetNumber parameter"},
-      {"GetString", 1, 2, f_getstring, "GetString(name <, default>): a SetString parameter"},
-      {"GetStringValue", 2, 2, f_getstringvalue, "GetStringValue(prompt, default): the default"},
-      {"SetNumber", 2, 2, f_setnumber, "SetNumber(name, value): sets a parameter"},
-      {"SetString", 2, 2, f_setstring, "SetString(name, value): sets a string parameter"},
-  };
-  out.insert(out.end(), std::begin(fns), std::end(fns));
 }
 
 }  // namespace sm::interp
