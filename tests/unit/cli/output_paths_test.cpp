@@ -2,7 +2,6 @@
 // output, symbolic links, devices, and the two files of SCHISM's grid.
 #include <doctest/doctest.h>
 
-#include <stdlib.h>
 #include <sys/stat.h>
 
 #include <filesystem>
@@ -11,20 +10,20 @@
 #include <string>
 
 #include "run_binary.h"
+#include "scratch_dir.h"
 
 namespace fs = std::filesystem;
+using sm::testing::read_all;
 using sm::testing::run_output;
+using sm::testing::ScratchDir;
 using sm::testing::run_status;
 using sm::testing::stereomesh_binary;
 
 namespace {
 
-struct ScratchDir {
-  fs::path path;
-  ScratchDir() {
-    std::string t = (fs::temp_directory_path() / "sm-cli-output-XXXXXX").string();
-    REQUIRE(::mkdtemp(t.data()) != nullptr);
-    path = t;
+// A scratch directory holding square.geo: a unit square with a Printf and physical groups.
+struct SquareDir : ScratchDir {
+  SquareDir() {
     std::ofstream(path / "square.geo") << "Printf(\"hello\");\n"
                                           "Point(1) = {0, 0, 0, 0.2}; Point(2) = {1, 0, 0, 0.2};\n"
                                           "Point(3) = {1, 1, 0, 0.2}; Point(4) = {0, 1, 0, 0.2};\n"
@@ -32,24 +31,14 @@ struct ScratchDir {
                                           "Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};\n"
                                           "Physical Curve(\"coast\") = {1, 2, 3, 4}; Physical Surface(1) = {1};\n";
   }
-  ~ScratchDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-  std::string operator/(const std::string& name) const { return (path / name).string(); }
 };
-
-std::string read_all(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 }  // namespace
 
 TEST_CASE("cli output: '-o -' writes the mesh to stdout, Printf to stderr") {
   const std::string bin = stereomesh_binary();
   if (bin.empty()) return;
-  ScratchDir d;
+  SquareDir d;
   const std::string out = run_output(bin + " -2 -v 0 " + (d / "square.geo") + " -o -", "2>/dev/null");
   CHECK(out.rfind("$MeshFormat\n4.1 0 8\n", 0) == 0);
   CHECK(out.find("$EndElements") != std::string::npos);
@@ -63,7 +52,7 @@ TEST_CASE("cli output: '-o -' writes the mesh to stdout, Printf to stderr") {
 TEST_CASE("cli output: a link keeps pointing at its file; a device is not replaced") {
   const std::string bin = stereomesh_binary();
   if (bin.empty()) return;
-  ScratchDir d;
+  SquareDir d;
   std::ofstream(d / "real.msh") << "old";
   fs::create_symlink("real.msh", d / "link.msh");
   REQUIRE(run_status(bin + " -2 -v 0 " + (d / "square.geo") + " -o " + (d / "link.msh")) == 0);
@@ -82,7 +71,7 @@ TEST_CASE("cli output: a link keeps pointing at its file; a device is not replac
 TEST_CASE("cli output: hgrid.gr3 and hgrid.ll are written together or not at all") {
   const std::string bin = stereomesh_binary();
   if (bin.empty()) return;
-  ScratchDir d;
+  SquareDir d;
   std::ofstream(d / "hgrid.gr3") << "old gr3\n";
   fs::create_directory(d / "hgrid.ll");   // hgrid.ll cannot be written
   CHECK(run_status(bin + " -2 -v 0 -format gr3 " + (d / "square.geo") + " -o " + (d / "hgrid.gr3")) == 1);

@@ -2,71 +2,47 @@
 // place when the run ends without errors, readable by a later Include.
 #include <doctest/doctest.h>
 
-#include <stdlib.h>
-
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 
 #include "interp_test_util.h"
+#include "scratch_dir.h"
 
 namespace fs = std::filesystem;
 using sm::interp::testing::run_script;
-
-namespace {
-
-struct ScratchDir {
-  fs::path path;
-  ScratchDir() {
-    std::string t = (fs::temp_directory_path() / "sm-redirect-XXXXXX").string();
-    REQUIRE(::mkdtemp(t.data()) != nullptr);
-    path = t;
-  }
-  ~ScratchDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-  std::string file(const std::string& name) const { return (path / name).string(); }
-  std::size_t count() const { return static_cast<std::size_t>(std::distance(fs::directory_iterator(path), {})); }
-};
-
-std::string read_all(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-}  // namespace
+using sm::testing::read_all;
+using sm::testing::ScratchDir;
 
 TEST_CASE("Printf redirection: > starts the file, >> continues it, one file at the end") {
   ScratchDir d;
-  std::ofstream(d.file("log.txt")) << "before\n";
-  const auto r = run_script("f = \"" + d.file("log.txt") + "\";\n"
+  std::ofstream((d / "log.txt")) << "before\n";
+  const auto r = run_script("f = \"" + (d / "log.txt") + "\";\n"
                             "Printf(\"first\") >> f;\n"
                             "For i In {1:3}\n  Printf(\"line %g\", i) >> f;\nEndFor\n"
-                            "Printf(\"new\") > \"" + d.file("new.txt") + "\";\n"
-                            "Printf(\"again\") > \"" + d.file("new.txt") + "\";\n");
+                            "Printf(\"new\") > \"" + (d / "new.txt") + "\";\n"
+                            "Printf(\"again\") > \"" + (d / "new.txt") + "\";\n");
   REQUIRE(r.ok);
-  CHECK(read_all(d.file("log.txt")) == "before\nfirst\nline 1\nline 2\nline 3\n");
-  CHECK(read_all(d.file("new.txt")) == "again\n");
-  CHECK(d.count() == 2);
+  CHECK(read_all((d / "log.txt")) == "before\nfirst\nline 1\nline 2\nline 3\n");
+  CHECK(read_all((d / "new.txt")) == "again\n");
+  CHECK(d.names().size() == 2);
 }
 
 TEST_CASE("Printf redirection: a script that fails writes no file") {
   ScratchDir d;
-  std::ofstream(d.file("out.txt")) << "old\n";
-  const auto r = run_script("Printf(\"partial\") > \"" + d.file("out.txt") + "\";\n"
-                            "Printf(\"new\") > \"" + d.file("fresh.txt") + "\";\n"
+  std::ofstream((d / "out.txt")) << "old\n";
+  const auto r = run_script("Printf(\"partial\") > \"" + (d / "out.txt") + "\";\n"
+                            "Printf(\"new\") > \"" + (d / "fresh.txt") + "\";\n"
                             "x = 1 / 0;\n");
   CHECK_FALSE(r.ok);
-  CHECK(read_all(d.file("out.txt")) == "old\n");
-  CHECK_FALSE(fs::exists(d.file("fresh.txt")));
-  CHECK(d.count() == 1);
+  CHECK(read_all((d / "out.txt")) == "old\n");
+  CHECK_FALSE(fs::exists((d / "fresh.txt")));
+  CHECK(d.names().size() == 1);
 }
 
 TEST_CASE("Printf redirection: a written .geo can be included by the same script") {
   ScratchDir d;
-  const auto r = run_script("Printf(\"y = 42;\") > \"" + d.file("gen.geo") + "\";\n"
-                            "Include \"" + d.file("gen.geo") + "\";\n"
+  const auto r = run_script("Printf(\"y = 42;\") > \"" + (d / "gen.geo") + "\";\n"
+                            "Include \"" + (d / "gen.geo") + "\";\n"
                             "Printf(\"%g\", y);\n");
   REQUIRE(r.ok);
   CHECK(r.out == "42\n");
