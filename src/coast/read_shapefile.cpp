@@ -11,6 +11,8 @@
 #include <shapefil.h>
 #include <unistd.h>
 
+#include "coast/shapefile_sizes.h"
+
 namespace sm::coast {
 namespace {
 
@@ -83,10 +85,14 @@ Result<Coastline> read_shapefile(const std::string& path, ShapefileInfo* info) {
   shx.replace_extension(".shx");
   fs::path shx_upper = shp;
   shx_upper.replace_extension(".SHX");
+  const bool has_shx = fs::exists(shx, ec) || fs::exists(shx_upper, ec);
+  // shapelib believes the lengths the headers claim (it allocates and seeks by them), so
+  // they are checked against the real sizes first.
+  if (auto e = check_shapefile_sizes(shp, !has_shx ? fs::path() : fs::exists(shx, ec) ? shx : shx_upper)) return *e;
   TempDir tmp;
   std::string open_path = path;
   bool rebuilt = false;
-  if (!fs::exists(shx, ec) && !fs::exists(shx_upper, ec)) {
+  if (!has_shx) {
     tmp.dir = unique_temp_dir();
     fs::create_directories(tmp.dir, ec);
     if (ec) return CoastError{path, -1, "no .shx index and no temporary directory to rebuild it: " + ec.message(), {}};

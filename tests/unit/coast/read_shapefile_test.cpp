@@ -97,7 +97,8 @@ TEST_CASE("shapefile: broken files are located errors") {
     write("t.shx", *shx, shx->size());
     auto r = read_shapefile((dir / "t.shp").string());
     REQUIRE_FALSE(r.ok());
-    CHECK(r.error().record >= 0);
+    // Refused from the .shp header before any record is read.
+    CHECK(r.error().message == "header claims 89652 bytes, the file holds 44826 bytes");
   }
   SUBCASE("truncated .shp without .shx") {
     write("u.shp", *bytes, bytes->size() - 100);
@@ -115,6 +116,90 @@ TEST_CASE("shapefile: broken files are located errors") {
     write("e.shp", junk, 0);
     CHECK_FALSE(read_shapefile((dir / "e.shp").string()).ok());
     CHECK_FALSE(read_shapefile((dir / "missing.shp").string()).ok());
+  }
+  fs::remove_all(dir);
+}
+
+// Lengths a header claims beyond the bytes the file holds: shapelib would allocate or seek
+// by them (a negative record length sent SHPRestoreSHX round in circles for ever), so the
+// reader refuses them first, naming the file and the numbers.
+TEST_CASE("shapefile: header lengths beyond the file are refused before shapelib reads them") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "sm_coast_shp_sizes_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  auto shp = read_file_bytes(kNe + "ne_110m_coastline.shp");
+  auto shx = read_file_bytes(kNe + "ne_110m_coastline.shx");
+  REQUIRE(shp.ok());
+  REQUIRE(shx.ok());
+  auto write = [&](const std::string& name, const std::vector<unsigned char>& b) {
+    std::ofstream f(dir / name, std::ios::binary);
+    f.write(reinterpret_cast<const char*>(b.data()), static_cast<std::streamsize>(b.size()));
+  };
+  auto put_be32 = [](std::vector<unsigned char>& b, std::size_t at, std::uint32_t v) {
+    for (int k = 0; k < 4; ++k) b[at + static_cast<std::size_t>(k)] = static_cast<unsigned char>(v >> (24 - 8 * k));
+  };
+  auto message = [&](const std::string& name) {
+    auto r = read_shapefile((dir / name).string());
+    REQUIRE_FALSE(r.ok());
+    return r.error().to_string();
+  };
+  SUBCASE("the .shp header claims more bytes than the file holds") {
+    auto b = *shp;
+    put_be32(b, 24, 0xFFFFFFFFu);
+    write("a.shp", b);
+    write("a.shx", *shx);
+    CHECK(message("a.shp") == (dir / "a.shp").string() +
+                                  ": header claims 8589934590 bytes, the file holds 89652 bytes");
+  }
+  SUBCASE("the .shx header claims more entries than the file holds") {
+    auto x = *shx;
+    put_be32(x, 24, 0x7FFFFFFFu);
+    write("b.shp", *shp);
+    write("b.shx", x);
+    CHECK(message("b.shp") == (dir / "b.shx").string() +
+                                  ": header claims 4294967294 bytes, the file holds 1172 bytes");
+  }
+  SUBCASE("an index entry points past the records") {
+    auto x = *shx;
+    put_be32(x, 100 + 8 * 5 + 4, 0x40000000u);   // entry 5: a 2 GiB record
+    write("c.shp", *shp);
+    write("c.shx", x);
+    const std::string m = message("c.shp");
+    CHECK(m.find((dir / "c.shx").string() + ": record 5: the index entry claims a record at bytes ") == 0);
+    CHECK(m.find("outside the 89652 bytes of records the .shp header claims") != std::string::npos);
+  }
+  SUBCASE("no .shx and a negative record length (the loop shapelib's index rebuild never left)") {
+    auto b = *shp;
+    const std::size_t second = 100 + 8 + 2 * ((std::size_t{b[104]} << 24 | std::size_t{b[105]} << 16 |
+                                               std::size_t{b[106]} << 8 | b[107]));
+    put_be32(b, second + 4, 0xFFFFFFF0u);   // -16 words: back into the first record
+    write("d.shp", b);
+    CHECK(message("d.shp") == (dir / "d.shp").string() +
+                                  ": record 1: the record header claims a record of -32 bytes, less than its "
+                                  "4-byte shape type");
+  }
+  SUBCASE("no .shx and a record running past the end") {
+    auto b = *shp;
+    put_be32(b, 104, 0x00100000u);
+    write("e.shp", b);
+    const std::string m = message("e.shp");
+    CHECK(m.find((dir / "e.shp").string() + ": record 0: the record header claims a record at bytes 100 to ") == 0);
+  }
+  SUBCASE("a file shorter than its header") {
+    std::vector<unsigned char> b(shp->begin(), shp->begin() + 60);
+    write("f.shp", b);
+    write("f.shx", *shx);
+    CHECK(message("f.shp") == (dir / "f.shp").string() + ": the file holds 60 bytes, less than the 100-byte header");
+  }
+  SUBCASE("the files as they are still read") {
+    write("g.shp", *shp);
+    write("g.shx", *shx);
+    CHECK(read_shapefile((dir / "g.shp").string()).ok());
+    write("h.shp", *shp);
+    ShapefileInfo info;
+    CHECK(read_shapefile((dir / "h.shp").string(), &info).ok());
+    CHECK(info.index_rebuilt);
   }
   fs::remove_all(dir);
 }
