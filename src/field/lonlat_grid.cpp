@@ -17,6 +17,7 @@
 #include <netcdf.h>
 
 #include "field/error.h"
+#include "field/netcdf_header.h"
 
 namespace sm::field {
 
@@ -294,6 +295,8 @@ bool looks_like_lon(const NcFile& nc, int v) {
 
 LonLatGrid read_netcdf_grid(const std::filesystem::path& file, const NetcdfGridSpec& spec) {
   if (!std::filesystem::exists(file)) file_error(file, "no such file");
+  // nc_open allocates what the header declares before it checks the file's length.
+  if (auto why = check_netcdf_header_counts(file)) file_error(file, *why);
   // libnetcdf is not thread-safe: its table of open files is shared, and two reads at once
   // fail ("Not a valid ID") or crash. Every call into it is in this function, so one lock
   // held from open to close makes reads from several threads safe; reads happen when a
