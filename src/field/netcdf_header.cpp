@@ -2,7 +2,7 @@
 // 8 in CDF-5 (counts, lengths, dimension ids, sizes), `begin` 4 bytes in CDF-1 only:
 //
 //   header   = 'C' 'D' 'F' version  numrecs(w)  dim_list  att_list  var_list
-//   list     = tag(4) count(w) item...        (absent: tag 0 and count 0)
+//   list     = tag(4) count(w) item...        (absent: count 0, tag 0 or anything)
 //   name     = length(w) bytes padded to 4
 //   dim      = name length(w)                                   >= 2w bytes
 //   attr     = name type(4) count(w) values padded to 4         >= 2w + 4 bytes
@@ -29,6 +29,11 @@ std::uint64_t value_bytes(std::uint64_t type) {
   constexpr std::uint64_t kSizes[] = {0, 1, 1, 2, 4, 4, 8, 1, 2, 4, 8, 8};
   return type < std::size(kSizes) ? kSizes[type] : 0;
 }
+
+// The types a classic file may hold: NC_BYTE .. NC_DOUBLE, and in CDF-5 up to NC_UINT64.
+// libnetcdf 4.9 accepts NC_STRING (12, a netCDF-4 type of no fixed size) in a CDF-5
+// header and then divides by its size of 0 while checking the variable's size.
+std::uint64_t last_type(int w) { return w == 8 ? 11 : 6; }
 
 std::uint64_t pad4(std::uint64_t n) { return n + (4 - n % 4) % 4; }
 
@@ -89,12 +94,18 @@ struct Walk {
                               of, in.left()));
     return in.skip(pad4(len)) || stop();
   }
+  bool known_type(std::uint64_t type, const std::string& of) {
+    if (type >= 1 && type <= last_type(w)) return true;
+    return stop(fmt::format("{} has type {}, not a type of this format (1 to {})", of, type, last_type(w)));
+  }
   // A list's tag and count; false when it is absent (or the walk stopped).
   bool list(std::uint32_t tag, std::uint64_t& count) {
     std::uint64_t t = 0;
     if (!in.uint(4, t) || !in.uint(w, count)) return stop();
-    if (t == 0 && count == 0) return false;
-    if (t != tag) return stop();   // libnetcdf reports the malformed list
+    // libnetcdf reads an empty list whatever its tag says (a hostile tag with count 0 is
+    // not refused), and refuses a non-empty one whose tag is wrong.
+    if (count == 0) return false;
+    if (t != tag) return stop();
     return true;
   }
   bool attributes(const std::string& of) {
@@ -105,8 +116,8 @@ struct Walk {
       const std::string what = fmt::format("attribute {} of {}", a, of);
       std::uint64_t type = 0, values = 0;
       if (!name(what) || !in.uint(4, type) || !in.uint(w, values)) return stop(refused);
+      if (!known_type(type, what)) return false;
       const std::uint64_t each = value_bytes(type);
-      if (each == 0) return stop();
       if (!fits(values, each, "values in " + what)) return false;
       if (!in.skip(pad4(values * each))) return stop();
     }
@@ -135,7 +146,9 @@ struct Walk {
         if (!fits(ndims, ww, "dimension ids of " + what)) return false;
         if (!in.skip(ndims * ww)) return stop();
         if (!attributes(what)) return false;
-        if (!in.uint(4, type) || !in.uint(w, vsize) || !in.uint(begin_bytes, begin)) return stop();
+        if (!in.uint(4, type)) return stop();
+        if (!known_type(type, what)) return false;
+        if (!in.uint(w, vsize) || !in.uint(begin_bytes, begin)) return stop();
       }
     }
     return !done;

@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // Which count of the header below gets a hostile value.
-enum class Hostile { None, Dims, DimName, GlobalAtts, AttValues, Vars, VarDims, LastVarAtts };
+enum class Hostile { None, Dims, DimName, GlobalAtts, AttValues, Vars, VarDims, LastVarAtts, LastVarType };
 
 // A classic header: dimensions lon = 3, lat = 2; a global text attribute; variables
 // lon(lon) and lat(lat) with a units attribute, z(lat, lon) last. No data follows, and
@@ -52,7 +52,7 @@ std::vector<unsigned char> header(int version, Hostile hostile, std::uint64_t hu
   text("lat"), count(1, Hostile::None), u(1, w), units("degrees_north"), var_tail(6);
   text("z"), count(2, Hostile::None), u(1, w), u(0, w);
   u(0x0C, 4), count(0, Hostile::LastVarAtts);
-  var_tail(5);
+  var_tail(hostile == Hostile::LastVarType ? huge : 5);
   return b;
 }
 
@@ -96,6 +96,31 @@ TEST_CASE("netcdf header: counts beyond the file are refused wherever they are, 
   const auto why = check(header(1, Hostile::Dims, 0xFFFFFFFFu));
   REQUIRE(why.has_value());
   CHECK(why->find("4294967295 dimensions (at least 8 bytes each)") != std::string::npos);
+}
+
+TEST_CASE("netcdf header: types outside the format are refused (NC_STRING in CDF-5 made libnetcdf divide by 0)") {
+  // tests/fuzz/crashes_netcdf/cdf5_string_type_variable.nc is such a file from the fuzzer.
+  const auto cdf5 = check(header(5, Hostile::LastVarType, 12));
+  REQUIRE(cdf5.has_value());
+  CHECK(*cdf5 == "variable 2 has type 12, not a type of this format (1 to 11)");
+  const auto cdf1 = check(header(1, Hostile::LastVarType, 7));
+  REQUIRE(cdf1.has_value());
+  CHECK(*cdf1 == "variable 2 has type 7, not a type of this format (1 to 6)");
+  CHECK_FALSE(check(header(5, Hostile::LastVarType, 11)).has_value());
+}
+
+TEST_CASE("netcdf header: an empty list with any tag is skipped, as libnetcdf reads it") {
+  // tests/fuzz/crashes_netcdf/attribute_count_after_empty_list_with_odd_tag.nc: the global
+  // attribute list has tag 0x00015B00 and count 0, then a variable declares 2818572289
+  // attributes.
+  std::string message;
+  try {
+    read_netcdf_grid(std::string(SM_TEST_DATA) + "/../fuzz/crashes_netcdf/attribute_count_after_empty_list_with_odd_tag.nc",
+                     {});
+  } catch (const FieldError& e) {
+    message = e.what();
+  }
+  CHECK(message.find("the header declares 2818572289 attributes of variable 0") != std::string::npos);
 }
 
 TEST_CASE("netcdf header: the fuzz finding's 2818572289 attributes are refused before nc_open") {
