@@ -1,10 +1,11 @@
 // A fresh, empty temporary directory for a test, removed at the end, and the
-// whole content of a file: for the tests of what the program writes.
+// whole content of a file or stream: for the tests of what the program writes.
 #pragma once
 
 #include <stdlib.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -38,9 +39,19 @@ struct ScratchDir {
   }
 };
 
-inline std::string read_all(const std::string& path) {
+inline std::string read_all(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// Everything written so far to a temporary stream (tmpfile()), from its start.
+inline std::string read_stream(std::FILE* f) {
+  std::fflush(f);
+  std::rewind(f);
+  std::string s;
+  char buf[4096];
+  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) s.append(buf, n);
+  return s;
 }
 
 }  // namespace sm::testing

@@ -81,7 +81,6 @@ namespace {
 
 using sm::testing::run_status;
 
-std::string binary() { return sm::testing::stereomesh_binary(); }
 
 // What the command prints on stderr (stdout dropped).
 std::string run_stderr(const std::string& cmd) { return sm::testing::run_output(cmd, "2>&1 >/dev/null"); }
@@ -89,7 +88,7 @@ std::string run_stderr(const std::string& cmd) { return sm::testing::run_output(
 }  // namespace
 
 TEST_CASE("cli: exit statuses of the binary") {
-  const std::string bin = binary();
+  const std::string bin = sm::testing::stereomesh_binary();
   if (bin.empty()) {
     MESSAGE("skipped: stereomesh binary not built");
     return;
@@ -205,7 +204,7 @@ TEST_CASE("cli: exit statuses of the binary") {
 }
 
 TEST_CASE("cli: running out of memory while meshing is a located script error, not a crash") {
-  const std::string bin = binary();
+  const std::string bin = sm::testing::stereomesh_binary();
   if (bin.empty()) {
     MESSAGE("skipped: stereomesh binary not built");
     return;

@@ -16,6 +16,7 @@
 #include "cli/terminal_progress.h"
 #include "interp/interpreter.h"
 #include "run_binary.h"
+#include "scratch_dir.h"
 
 using sm::cli::DiagnosticStream;
 using sm::cli::TerminalProgress;
@@ -40,14 +41,6 @@ class FileBuf final : public std::streambuf {
   std::FILE* f_;
 };
 
-std::string contents(std::FILE* f) {
-  std::fflush(f);
-  std::rewind(f);
-  std::string s;
-  char buf[4096];
-  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) s.append(buf, n);
-  return s;
-}
 
 // `2>&1`: a "stdout" and a "stderr" FILE* on one open file, each with its own buffer.
 struct SharedPipe {
@@ -62,11 +55,10 @@ struct SharedPipe {
   }
   std::string text() {
     std::fflush(out);
-    return contents(err);
+    return sm::testing::read_stream(err);
   }
 };
 
-std::string binary() { return sm::testing::stereomesh_binary(); }
 
 // stdout and stderr of a command through one pipe (`2>&1`).
 std::string run_merged(const std::string& cmd) { return sm::testing::run_output(cmd, "2>&1"); }
@@ -179,12 +171,12 @@ TEST_CASE("diagnostic stream: without a sink nothing is emitted and flush still 
   std::FILE* f = std::tmpfile();
   REQUIRE(f);
   CHECK(r.diags.flush(f) == 1);
-  CHECK(contents(f).find("warning: kept") != std::string::npos);
+  CHECK(sm::testing::read_stream(f).find("warning: kept") != std::string::npos);
   std::fclose(f);
 }
 
 TEST_CASE("diagnostic stream: the binary shows Printf, the warning and Printf in order through 2>&1") {
-  const std::string bin = binary();
+  const std::string bin = sm::testing::stereomesh_binary();
   if (bin.empty()) {
     MESSAGE("skipped: stereomesh binary not built");
     return;
@@ -221,7 +213,7 @@ TEST_CASE("diagnostic stream: progress lines come after the Printf output writte
 }
 
 TEST_CASE("diagnostic stream: the binary meshing islands: Printf, progress, summary, one island warning, Printf") {
-  const std::string bin = binary();
+  const std::string bin = sm::testing::stereomesh_binary();
   if (bin.empty()) {
     MESSAGE("skipped: stereomesh binary not built");
     return;

@@ -6,20 +6,13 @@
 #include <string>
 
 #include "cli/terminal_progress.h"
+#include "scratch_dir.h"
 
 using sm::cli::TerminalProgress;
 
 namespace {
 
 // Everything written to a temporary FILE*.
-std::string contents(std::FILE* f) {
-  std::fflush(f);
-  std::rewind(f);
-  std::string s;
-  char buf[4096];
-  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) s.append(buf, n);
-  return s;
-}
 
 std::size_t count(const std::string& s, const std::string& what) {
   std::size_t n = 0;
@@ -46,7 +39,7 @@ TEST_CASE("progress: plain lines, one at the start and one at the end of each st
     t += 1;
     // Left open: the destructor finishes it (a failing stage still gets its line).
   }
-  CHECK(contents(f) ==
+  CHECK(sm::testing::read_stream(f) ==
         "stereomesh: 1D: start (250)\n"
         "stereomesh: 1D: done in 2.500 s\n"
         "stereomesh: 1D repair: start\n"
@@ -65,7 +58,7 @@ TEST_CASE("progress: a live line redrawn at most ten times a second") {
   // 1000 updates over 2 s: at most 20 redraws, plus the first and the last.
   for (int i = 1; i <= 1000; ++i) t += 0.002, p.update(i);
   p.end();
-  const std::string s = contents(f);
+  const std::string s = sm::testing::read_stream(f);
   const std::size_t draws = count(s, "\r");
   CHECK(draws >= 15);
   CHECK(draws <= 22);
@@ -100,7 +93,7 @@ TEST_CASE("progress: a stage without a total shows its elapsed time") {
     p.begin("2D", 0);
     p.end();
   }
-  CHECK(contents(f) == "\r1D repair  0.0 s\r1D repair  12.3 s\n\r2D  0.0 s\r2D  0.0 s\n");
+  CHECK(sm::testing::read_stream(f) == "\r1D repair  0.0 s\r1D repair  12.3 s\n\r2D  0.0 s\r2D  0.0 s\n");
   std::fclose(f);
 }
 
@@ -126,7 +119,7 @@ TEST_CASE("progress: a nested stage, in plain lines and on a live line") {
     p.update(2);
     p.end();
   }
-  CHECK(contents(f) ==
+  CHECK(sm::testing::read_stream(f) ==
         "stereomesh: 2D: start (2)\n"
         "stereomesh: 2D refine: start (4)\n"
         "stereomesh: 2D refine: done in 2.000 s\n"
@@ -145,7 +138,7 @@ TEST_CASE("progress: a nested stage, in plain lines and on a live line") {
     p.end();
     // Left open: the destructor ends the stages still open.
   }
-  const std::string s = contents(f);
+  const std::string s = sm::testing::read_stream(f);
   // Back to the outer stage alone: padded over the longer nested line.
   const std::string longest = "2D  0/1  0%  1.5 s  >  2D refine  4/4  100%  0.5 s", outer = "2D  0/1  0%  1.5 s";
   CHECK(s == "\r2D  0/1  0%  0.0 s"

@@ -9,17 +9,11 @@
 #include "coast/read_gshhs.h"
 #include "coast/read_lonlat_text.h"
 #include "coast/region.h"
+#include "coast/constant_accuracy.h"
 
 using namespace sm;
 using namespace sm::coast;
 
-namespace {
-AccuracyFn constant(double g) {
-  return [g](std::span<const Vec3>, std::span<double> out) {
-    for (double& x : out) x = g;
-  };
-}
-}  // namespace
 
 TEST_CASE("coarsen: kept points are at least gamma apart, closing included") {
   auto c = read_lonlat_text(std::string(SM_SHARED_DATA) + "/gshhg/gb_ireland_f.txt");
@@ -28,7 +22,7 @@ TEST_CASE("coarsen: kept points are at least gamma apart, closing included") {
   const double R = geo::kEarthRadius;
   for (double g : {15e3, 1.5e3}) {
     CoarsenOptions o;
-    o.gamma = constant(g);
+    o.gamma = sm::testing::constant_accuracy(g);
     auto r = coarsen(c->rings, o);
     REQUIRE(r.ok());
     for (const CoarseRing& cr : r->rings) {
@@ -76,7 +70,7 @@ TEST_CASE("coarsen: MinArea, bad gamma, spherical areas") {
   }
   CHECK(c->rings[0].area_km2 == doctest::Approx(218585).epsilon(1e-3));   // GB, PROVENANCE.md
   CoarsenOptions o;
-  o.gamma = constant(150);
+  o.gamma = sm::testing::constant_accuracy(150);
   o.min_area_km2 = 10;
   auto r = coarsen(c->rings, o);
   REQUIRE(r.ok());
@@ -87,7 +81,7 @@ TEST_CASE("coarsen: MinArea, bad gamma, spherical areas") {
   CHECK(below == expect);
   CHECK(below > 2000);
   for (double bad : {0.0, -1.0, std::nan("")}) {
-    o.gamma = constant(bad);
+    o.gamma = sm::testing::constant_accuracy(bad);
     CHECK_FALSE(coarsen(c->rings, o).ok());
   }
   CHECK_FALSE(coarsen(c->rings, CoarsenOptions{}).ok());   // no field

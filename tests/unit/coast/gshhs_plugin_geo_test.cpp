@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include "coast/constant_accuracy.h"
 
 using namespace sm;
 using namespace sm::coast;
@@ -17,11 +18,6 @@ using namespace sm::coast;
 namespace {
 namespace fs = std::filesystem;
 
-AccuracyFn constant(double g) {
-  return [g](std::span<const Vec3>, std::span<double> out) {
-    for (double& x : out) x = g;
-  };
-}
 
 std::size_t count(const std::string& text, const std::string& what) {
   std::size_t n = 0;
@@ -65,7 +61,7 @@ TEST_CASE("plugin: world crude GSHHS at 100 km, the .geo text") {
   GshhsPluginOptions o;
   o.in_file_name = std::string(SM_SHARED_DATA) + "/gshhs/gshhs_c.b";
   o.out_file_name = (temp_dir() / "earth.geo").string();
-  o.field = constant(100e3);
+  o.field = sm::testing::constant_accuracy(100e3);
   auto r = run_gshhs_plugin(o);
   REQUIRE_MESSAGE(r.ok(), (r.ok() ? "" : r.error().to_string()));
   const std::string& g = r->geo;
@@ -98,7 +94,7 @@ TEST_CASE("plugin: Gmsh 4.8.4 reads the generated world file") {
   GshhsPluginOptions o;
   o.in_file_name = std::string(SM_SHARED_DATA) + "/gshhs/gshhs_c.b";
   o.out_file_name = (temp_dir() / "world_c.geo").string();
-  o.field = constant(100e3);
+  o.field = sm::testing::constant_accuracy(100e3);
   REQUIRE(run_gshhs_plugin(o).ok());
   std::string out;
   CHECK(run("gmsh '" + o.out_file_name + "' -parse_and_exit", out) == 0);
@@ -157,7 +153,7 @@ TEST_CASE("plugin writer: a regional model (cut coasts closed along the box) mes
   auto c = read_lonlat_text(std::string(SM_SHARED_DATA) + "/gshhg/gb_ireland_f.txt");
   REQUIRE(c.ok());
   ImportOptions io;
-  io.gamma = constant(15e3);
+  io.gamma = sm::testing::constant_accuracy(15e3);
   auto m = build_coast_model(std::move(*c), io);
   REQUIRE(m.ok());
   const std::string geo = write_gshhs_plugin_geo(*m, GshhsPluginOptions{});

@@ -11,16 +11,12 @@
 #include "coast/read_gshhs.h"
 #include "coast/read_lonlat_text.h"
 #include "coast/read_shapefile.h"
+#include "coast/constant_accuracy.h"
 
 using namespace sm;
 using namespace sm::coast;
 
 namespace {
-AccuracyFn constant(double g) {
-  return [g](std::span<const Vec3>, std::span<double> out) {
-    for (double& x : out) x = g;
-  };
-}
 
 Coastline load(const char* name) {
   auto c = read_lonlat_text(std::string(SM_SHARED_DATA) + "/gshhg/" + name);
@@ -73,7 +69,7 @@ void check_model(const CoastModel& m) {
 
 TEST_CASE("import: the world ocean at 100 km is bounded by Antarctica") {
   ImportOptions o;
-  o.gamma = constant(100e3);
+  o.gamma = sm::testing::constant_accuracy(100e3);
   auto m = build_coast_model(load("world_c.txt"), o);
   REQUIRE_MESSAGE(m.ok(), (m.ok() ? "" : m.error().to_string()));
   REQUIRE(m->surfaces.size() == 1);
@@ -91,7 +87,7 @@ TEST_CASE("import: the original GSHHS crude binary (levels 1 + Antarctic ice fro
   auto c = read_gshhs(std::string(SM_SHARED_DATA) + "/gshhs/gshhs_c.b");
   REQUIRE(c.ok());
   ImportOptions o;
-  o.gamma = constant(50e3);
+  o.gamma = sm::testing::constant_accuracy(50e3);
   auto m = build_coast_model(std::move(*c), o);
   REQUIRE_MESSAGE(m.ok(), (m.ok() ? "" : m.error().to_string()));
   REQUIRE(m->surfaces.size() == 1);
@@ -108,7 +104,7 @@ TEST_CASE("import: the original GSHHS crude binary (levels 1 + Antarctic ice fro
 
 TEST_CASE("import: world intermediate at 10 km: crossings made by coarsening are repaired") {
   ImportOptions o;
-  o.gamma = constant(10e3);
+  o.gamma = sm::testing::constant_accuracy(10e3);
   auto m = build_coast_model(load("world_i_A100.txt"), o);
   REQUIRE_MESSAGE(m.ok(), (m.ok() ? "" : m.error().to_string()));
   CHECK(m->report.count(RepairKind::Refined) > 0);
@@ -121,7 +117,7 @@ TEST_CASE("import: world intermediate at 10 km: crossings made by coarsening are
 
 TEST_CASE("import: regions make open-boundary curves") {
   ImportOptions o;
-  o.gamma = constant(1500);
+  o.gamma = sm::testing::constant_accuracy(1500);
   auto m = build_coast_model(load("gb_ireland_f.txt"), o);   // the file's own box closes the French coast
   REQUIRE(m.ok());
   std::size_t open = 0;
@@ -129,7 +125,7 @@ TEST_CASE("import: regions make open-boundary curves") {
   CHECK(open == 2);
   check_model(*m);
   ImportOptions r = o;
-  r.gamma = constant(5000);
+  r.gamma = sm::testing::constant_accuracy(5000);
   r.region = LonLatBox{-4, 9, 50, 58};
   auto ns = build_coast_model(load("northsea_scheldt_f.txt"), r);
   REQUIRE_MESSAGE(ns.ok(), (ns.ok() ? "" : ns.error().to_string()));
@@ -144,7 +140,7 @@ TEST_CASE("import: regions make open-boundary curves") {
 
 TEST_CASE("import: MinArea drops small islands") {
   ImportOptions o;
-  o.gamma = constant(150);
+  o.gamma = sm::testing::constant_accuracy(150);
   o.min_area_km2 = 10;
   auto m = build_coast_model(load("gb_ireland_f.txt"), o);
   REQUIRE(m.ok());
@@ -164,7 +160,7 @@ TEST_CASE("import: Figure 5, Great Britain and Ireland") {
   for (const Row& r : rows) {
     CAPTURE(r.gamma);
     ImportOptions o;
-    o.gamma = constant(r.gamma);
+    o.gamma = sm::testing::constant_accuracy(r.gamma);
     auto m = build_coast_model(load("gb_ireland_f.txt"), o);
     REQUIRE(m.ok());
     REQUIRE(m->surfaces.size() == 1);
@@ -184,7 +180,7 @@ TEST_CASE("import: Natural Earth land (dateline splits merged, Antarctica closed
   auto c = read_shapefile(std::string(SM_SHARED_DATA) + "/naturalearth/ne_110m_land.shp");
   REQUIRE(c.ok());
   ImportOptions o;
-  o.gamma = constant(20e3);
+  o.gamma = sm::testing::constant_accuracy(20e3);
   auto m = build_coast_model(std::move(*c), o);
   REQUIRE_MESSAGE(m.ok(), (m.ok() ? "" : m.error().to_string()));
   REQUIRE(m->surfaces.size() == 1);
@@ -197,7 +193,7 @@ TEST_CASE("import: an islet overlapping the mainland in GSHHG high becomes part 
   // canadian_arctic_h.txt record 3255 (6 points, 107.68W 68.20N) crosses the cut mainland
   // coast (record 13145) in the source itself; at 200 m both survive the coarsening.
   ImportOptions o;
-  o.gamma = constant(200);
+  o.gamma = sm::testing::constant_accuracy(200);
   auto m = build_coast_model(load("canadian_arctic_h.txt"), o);
   REQUIRE_MESSAGE(m.ok(), (m.ok() ? "" : m.error().to_string()));
   bool found = false;
@@ -249,7 +245,7 @@ TEST_CASE("import: Antarctica's grounding line (level 6) absorbs the ice-shelf i
   ImportOptions o;
   o.antarctica_level = 6;
   o.levels = {1, 2, 3};   // lakes become water surfaces of their own, level-3 islands their holes
-  o.gamma = constant(30e3);
+  o.gamma = sm::testing::constant_accuracy(30e3);
   auto m = build_coast_model(std::move(*c), o);
   REQUIRE_MESSAGE(m.ok(), (m.ok() ? "" : m.error().to_string()));
   double min_lat = 0;
@@ -262,7 +258,7 @@ TEST_CASE("import: Antarctica's grounding line (level 6) absorbs the ice-shelf i
 
 TEST_CASE("import: the same input gives the same model, bit for bit") {
   ImportOptions o;
-  o.gamma = constant(5000);
+  o.gamma = sm::testing::constant_accuracy(5000);
   o.close_straits = true;
   auto a = build_coast_model(load("northsea_scheldt_f.txt"), o);
   auto b = build_coast_model(load("northsea_scheldt_f.txt"), o);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include "scratch_dir.h"
 
 using namespace sm;
 using namespace sm::coast;
@@ -14,12 +15,6 @@ using namespace sm::coast;
 namespace {
 const std::string kDir = std::string(SM_SHARED_DATA) + "/gshhg/";
 
-std::string slurp(const std::string& p) {
-  std::ifstream f(p, std::ios::binary);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
 
 std::size_t file_points(const Coastline& c) {
   std::size_t n = 0;
@@ -84,7 +79,7 @@ TEST_CASE("lonlat text: the cut-down standalone file") {
 }
 
 TEST_CASE("lonlat text: hostile input is a located error") {
-  const std::string good = slurp(std::string(SM_TEST_DATA) + "/coast/gb_islands_f.txt");
+  const std::string good = sm::testing::read_all(std::string(SM_TEST_DATA) + "/coast/gb_islands_f.txt");
   SUBCASE("truncated: the announced totals catch it") {
     for (std::size_t cut : {good.size() - 1, good.size() - 25, good.size() / 2, good.size() / 5}) {
       CAPTURE(cut);

@@ -7,16 +7,12 @@
 #include "coast/read_lonlat_text.h"
 
 #include <cmath>
+#include "coast/constant_accuracy.h"
 
 using namespace sm;
 using namespace sm::coast;
 
 namespace {
-AccuracyFn constant(double g) {
-  return [g](std::span<const Vec3>, std::span<double> out) {
-    for (double& x : out) x = g;
-  };
-}
 
 Coastline with_ocean(std::vector<std::vector<geo::LonLat>> islands) {
   Coastline c;
@@ -41,7 +37,7 @@ TEST_CASE("repair: a loop crossing itself in the source loses its twisted sliver
   // (0.6,51) -> (0.4,51.1) and (0.6,51.1) -> (0.4,51.0) cross at (0.5, 51.05).
   auto c = with_ocean({{{0, 50}, {1, 50}, {1, 51}, {0.6, 51}, {0.4, 51.1}, {0.6, 51.1}, {0.4, 51.0}, {0, 51}}});
   ImportOptions o;
-  o.gamma = constant(10);
+  o.gamma = sm::testing::constant_accuracy(10);
   auto m = build_coast_model(std::move(c), o);
   REQUIRE_MESSAGE(m.ok(), (m.ok() ? "" : m.error().to_string()));
   REQUIRE(m->report.count(RepairKind::CutSliver) == 1);
@@ -59,7 +55,7 @@ TEST_CASE("repair: a tiny island overlapping another is dropped; one through a v
   // 100 m square straddling the east coast of `big`.
   const std::vector<geo::LonLat> tiny{{0.9995, 50.5}, {1.0008, 50.5}, {1.0008, 50.5009}, {0.9995, 50.5009}};
   ImportOptions o;
-  o.gamma = constant(80);   // the tiny square's sides (~95 m) survive; its perimeter is < 5 gamma
+  o.gamma = sm::testing::constant_accuracy(80);   // the tiny square's sides (~95 m) survive; its perimeter is < 5 gamma
   auto m = build_coast_model(with_ocean({big, tiny}), o);
   REQUIRE_MESSAGE(m.ok(), (m.ok() ? "" : m.error().to_string()));
   CHECK(m->report.count(RepairKind::DroppedIsland) == 1);
@@ -67,7 +63,7 @@ TEST_CASE("repair: a tiny island overlapping another is dropped; one through a v
   // An island straddling the ring round the South Pole through its vertex (0, -70): a
   // touch plus crossings, which no rule unites.
   const std::vector<geo::LonLat> ice{{0, -70.5}, {1, -70.5}, {1, -69.5}, {0, -69.5}};
-  o.gamma = constant(1000);
+  o.gamma = sm::testing::constant_accuracy(1000);
   auto bad = build_coast_model(with_ocean({ice}), o);
   REQUIRE_FALSE(bad.ok());
   REQUIRE(bad.error().where.has_value());
@@ -80,7 +76,7 @@ TEST_CASE("repair: a strait narrower than gamma is listed, or closed on request"
   const std::vector<geo::LonLat> a{{0, 50}, {0.01, 50}, {0.01, 50.01}, {0, 50.01}};
   const std::vector<geo::LonLat> b{{0.011, 50}, {0.021, 50}, {0.021, 50.01}, {0.011, 50.01}};
   ImportOptions o;
-  o.gamma = constant(100);
+  o.gamma = sm::testing::constant_accuracy(100);
   auto open = build_coast_model(with_ocean({a, b}), o);
   REQUIRE(open.ok());
   REQUIRE(open->report.count(RepairKind::NarrowStrait) == 1);
@@ -105,7 +101,7 @@ TEST_CASE("repair: closing straits at 15 km joins Anglesey to Great Britain acro
   auto c = read_lonlat_text(std::string(SM_SHARED_DATA) + "/gshhg/gb_ireland_f.txt");
   REQUIRE(c.ok());
   ImportOptions o;
-  o.gamma = constant(15e3);
+  o.gamma = sm::testing::constant_accuracy(15e3);
   o.close_straits = true;
   auto m = build_coast_model(std::move(*c), o);
   REQUIRE(m.ok());
@@ -132,7 +128,7 @@ TEST_CASE("repair: random self-crossing shorelines end in a model or an error, n
       islands.push_back(p);
     }
     ImportOptions o;
-    o.gamma = constant(1000 + 50e3 * rnd());
+    o.gamma = sm::testing::constant_accuracy(1000 + 50e3 * rnd());
     o.close_straits = trial % 2 == 1;
     auto m = build_coast_model(with_ocean(islands), o);
     if (m.ok()) {
@@ -150,7 +146,7 @@ TEST_CASE("repair: two islands overlapping in the source are united") {
   const std::vector<geo::LonLat> a{{0, 50}, {1, 50}, {1, 51}, {0, 51}};
   const std::vector<geo::LonLat> b{{0.5, 50.5}, {1.5, 50.5}, {1.5, 51.5}, {0.5, 51.5}};
   ImportOptions o;
-  o.gamma = constant(1000);
+  o.gamma = sm::testing::constant_accuracy(1000);
   auto m = build_coast_model(with_ocean({a, b}), o);
   REQUIRE_MESSAGE(m.ok(), (m.ok() ? "" : m.error().to_string()));
   CHECK(m->report.count(RepairKind::UnitedIslands) == 1);
@@ -173,7 +169,7 @@ TEST_CASE("repair: two islands overlapping in the source are united") {
 TEST_CASE("repair: an island straddling the ring round the South Pole becomes part of Antarctica") {
   const std::vector<geo::LonLat> ice{{3, -70.5}, {4, -70.5}, {4, -69.5}, {3, -69.5}};
   ImportOptions o;
-  o.gamma = constant(1000);
+  o.gamma = sm::testing::constant_accuracy(1000);
   auto m = build_coast_model(with_ocean({ice}), o);
   REQUIRE_MESSAGE(m.ok(), (m.ok() ? "" : m.error().to_string()));
   CHECK(m->report.count(RepairKind::UnitedIslands) == 1);

@@ -51,7 +51,7 @@ CliMesh mesh_cli(const std::string& text, int dim) {
   return r;
 }
 
-const std::string kSquare =
+const std::string kSquareWithLc =
     "Point(1) = {0, 0, 0, lc}; Point(2) = {1, 0, 0, lc}; Point(3) = {1, 1, 0, lc}; Point(4) = {0, 1, 0, lc};\n"
     "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};\n"
     "Curve Loop(1) = {1, 2, 3, 4};\n"
@@ -60,7 +60,7 @@ const std::string kSquare =
 }  // namespace
 
 TEST_CASE("mesh commands: -2 over the element budget is located at the surface's statement") {
-  const CliMesh r = mesh_cli("lc = 1e-5;\n" + kSquare, 2);
+  const CliMesh r = mesh_cli("lc = 1e-5;\n" + kSquareWithLc, 2);
   CHECK_FALSE(r.ok);
   CHECK(r.first == "5:3 limit-exceeded");
   CHECK(r.rendered.find("cli.geo:5:3: error: surface 1 would get about 2.3e+10 triangles, over Mesh.MaxElements = "
@@ -71,7 +71,7 @@ TEST_CASE("mesh commands: -2 over the element budget is located at the surface's
 
 TEST_CASE("mesh commands: a size field of 1e-7 is refused on the coarse boundary, quickly") {
   const auto t0 = std::chrono::steady_clock::now();
-  const CliMesh r = mesh_cli("lc = 1;\n" + kSquare +
+  const CliMesh r = mesh_cli("lc = 1;\n" + kSquareWithLc +
                                  "Field[1] = MathEval; Field[1].F = \"1e-7\"; Background Field = 1;\n",
                              2);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -83,7 +83,7 @@ TEST_CASE("mesh commands: a size field of 1e-7 is refused on the coarse boundary
 }
 
 TEST_CASE("mesh commands: -1 with a size factor of 1e-20 is located at the curve's statement") {
-  const CliMesh r = mesh_cli("lc = 0.1;\nMesh.MeshSizeFactor = 1e-20;\n" + kSquare, 1);
+  const CliMesh r = mesh_cli("lc = 0.1;\nMesh.MeshSizeFactor = 1e-20;\n" + kSquareWithLc, 1);
   CHECK_FALSE(r.ok);
   CHECK(r.first == "4:1 limit-exceeded");
   CHECK(r.rendered.find("curve 1 would get about 1.0e+21 nodes") != std::string::npos);
@@ -93,7 +93,7 @@ TEST_CASE("mesh commands: -1 with a size factor of 1e-20 is located at the curve
 TEST_CASE("mesh commands: a 1D failure from -2 points at the statement of a curve it names") {
   // Two squares touching at a corner through distinct points: distinct nodes at one place.
   CliMesh r = mesh_cli(
-      "lc = 0.5;\n" + kSquare +
+      "lc = 0.5;\n" + kSquareWithLc +
           "Point(5) = {1, 1, 0, lc}; Point(6) = {2, 1, 0, lc}; Point(7) = {2, 2, 0, lc}; Point(8) = {1, 2, 0, lc};\n"
           "Line(5) = {5, 6}; Line(6) = {6, 7}; Line(7) = {7, 8}; Line(8) = {8, 5};\n"
           "Curve Loop(2) = {5, 6, 7, 8}; Plane Surface(2) = {2};\n",
@@ -107,7 +107,7 @@ TEST_CASE("mesh commands: a 1D failure from -2 points at the statement of a curv
 }
 
 TEST_CASE("mesh commands: Mesh.DepthField naming no field is refused before meshing, at its assignment") {
-  const CliMesh r = mesh_cli("lc = 0.5;\n" + kSquare + "Mesh.DepthField = 7;\n", 2);
+  const CliMesh r = mesh_cli("lc = 0.5;\n" + kSquareWithLc + "Mesh.DepthField = 7;\n", 2);
   CHECK_FALSE(r.ok);
   CHECK(r.first == "6:1 invalid-option-value");
   CHECK(r.rendered.find("Mesh.DepthField = 7 names no field") != std::string::npos);
@@ -115,7 +115,7 @@ TEST_CASE("mesh commands: Mesh.DepthField naming no field is refused before mesh
 }
 
 TEST_CASE("mesh commands: an algorithm the kernel lacks is located at the assignment that chose it") {
-  const CliMesh r = mesh_cli("lc = 0.5;\n" + kSquare + "Mesh.Algorithm = 7;\n", 2);
+  const CliMesh r = mesh_cli("lc = 0.5;\n" + kSquareWithLc + "Mesh.Algorithm = 7;\n", 2);
   CHECK_FALSE(r.ok);
   CHECK(r.first == "6:1 mesh-error");
   CHECK(r.rendered.find("Mesh.Algorithm 7 is not available") != std::string::npos);

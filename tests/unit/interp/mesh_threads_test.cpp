@@ -11,17 +11,12 @@
 #include <string>
 
 #include "interp_test_util.h"
+#include "scratch_dir.h"
 
 using sm::interp::testing::run_script;
 
 namespace {
 
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 }  // namespace
 
@@ -57,9 +52,9 @@ TEST_CASE("mesh threads: General.NumThreads 1 and 2 and Mesh.MaxNumThreads2D 4 w
     CHECK(n == first);
   }
   CHECK(first > 250000);
-  const std::string a = slurp(dir / "a.msh");
+  const std::string a = sm::testing::read_all(dir / "a.msh");
   REQUIRE(a.size() > 1000000);
-  CHECK(slurp(dir / "b.msh") == a);
-  CHECK(slurp(dir / "c.msh") == a);
+  CHECK(sm::testing::read_all(dir / "b.msh") == a);
+  CHECK(sm::testing::read_all(dir / "c.msh") == a);
   fs::remove_all(dir);
 }

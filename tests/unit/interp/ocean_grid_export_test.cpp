@@ -11,17 +11,12 @@
 
 #include "interp_test_util.h"
 #include "io/ocean_grid.h"
+#include "scratch_dir.h"
 
 using sm::interp::testing::run_script;
 
 namespace {
 
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 }  // namespace
 
@@ -61,7 +56,7 @@ TEST_CASE("ocean grids: boundaries from the 'open' group, depth from Mesh.DepthF
     CAPTURE(name);
     sm::io::OceanGrid g;
     std::string error;
-    REQUIRE(sm::io::parse_ocean_grid(slurp(dir / name), &g, &error));
+    REQUIRE(sm::io::parse_ocean_grid(sm::testing::read_all(dir / name), &g, &error));
     CHECK(static_cast<int>(g.triangles.size() / 3) == triangles);
     // The box's sides are open boundaries: every open node lies on the box, to
     // within how far the closing curves (drawn in the stereographic plane)

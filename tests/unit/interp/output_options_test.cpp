@@ -11,17 +11,12 @@
 #include <sstream>
 
 #include "interp_test_util.h"
+#include "scratch_dir.h"
 
 using sm::interp::testing::run_script;
 
 namespace {
 
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // A cap of the Earth in Gmsh's PolarSphere plane, about 3,800 km across, meshed at 300 km.
 const char* const kCap =
@@ -57,9 +52,9 @@ TEST_CASE("output options: lon/lat and stereographic node coordinates from a scr
                             "Mesh.NodeCoordinates = 2; Save \"" + d + "uv.msh\";\n");
   INFO(r.rendered);
   REQUIRE(r.ok);
-  const auto xyz = msh22_nodes(slurp(dir / "xyz.msh"));
-  const auto ll = msh22_nodes(slurp(dir / "ll.msh"));
-  const auto uv = msh22_nodes(slurp(dir / "uv.msh"));
+  const auto xyz = msh22_nodes(sm::testing::read_all(dir / "xyz.msh"));
+  const auto ll = msh22_nodes(sm::testing::read_all(dir / "ll.msh"));
+  const auto uv = msh22_nodes(sm::testing::read_all(dir / "uv.msh"));
   REQUIRE(xyz.size() > 20);
   REQUIRE(ll.size() == xyz.size());   // physical groups: the centre point is not written
   REQUIRE(uv.size() == xyz.size());
@@ -109,7 +104,7 @@ TEST_CASE("output options: the stereographic picture of the cap keeps its shape"
                             "Mesh.PictureColour = 2; Save \"" + svg + "\";\n");
   INFO(r.rendered);
   REQUIRE(r.ok);
-  const std::string text = slurp(svg);
+  const std::string text = sm::testing::read_all(svg);
   CHECK(text.find("width=\"602\" height=\"502\"") != std::string::npos);
   std::filesystem::remove(svg);
 }

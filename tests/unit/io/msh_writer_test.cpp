@@ -14,24 +14,19 @@
 
 #include "io/msh_writer.h"
 #include "io/test_meshes.h"
+#include "scratch_dir.h"
 
 using namespace sm;
 using namespace sm::io;
 
 namespace {
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // Rebuilds Gmsh's unit-square mesh from its MSH 4.1 ASCII file (entities,
 // node blocks, element blocks), adding one point element per model point as
 // Gmsh's mesh has them.
 MeshModel load_square() {
-  std::istringstream in(read_file(SM_TEST_DATA "/io/sq41.msh"));
+  std::istringstream in(sm::testing::read_all(SM_TEST_DATA "/io/sq41.msh"));
   std::string line;
   MeshModel m;
   while (std::getline(in, line) && line != "$Entities") {}
@@ -97,7 +92,7 @@ MeshModel load_square() {
   // The ASCII file keeps 16 significant digits; take the exact doubles from
   // Gmsh's binary MSH 2.2 file (records: int tag, 3 doubles), so that the
   // binary outputs can be compared bit for bit too.
-  const std::string bin = read_file(SM_TEST_DATA "/io/sq22b.msh");
+  const std::string bin = sm::testing::read_all(SM_TEST_DATA "/io/sq22b.msh");
   std::size_t at = bin.find("$Nodes\n12\n") + 10;
   for (std::size_t k = 0; k < m.xyz.size(); ++k, at += 4 + 24) {
     int tag;
@@ -117,20 +112,20 @@ TEST_CASE("msh: the square's mesh is valid") {
 }
 
 TEST_CASE("msh 4.1 ASCII: byte-identical to Gmsh 4.8.4") {
-  CHECK(msh_to_string(load_square(), {41, false}) == read_file(SM_TEST_DATA "/io/sq41.msh"));
+  CHECK(msh_to_string(load_square(), {41, false}) == sm::testing::read_all(SM_TEST_DATA "/io/sq41.msh"));
 }
 
 TEST_CASE("msh 4.1 binary: byte-identical to Gmsh 4.8.4") {
-  CHECK(msh_to_string(load_square(), {41, true}) == read_file(SM_TEST_DATA "/io/sq41b.msh"));
+  CHECK(msh_to_string(load_square(), {41, true}) == sm::testing::read_all(SM_TEST_DATA "/io/sq41b.msh"));
 }
 
 TEST_CASE("msh 2.2 ASCII and binary: byte-identical to Gmsh 4.8.4") {
-  CHECK(msh_to_string(load_square(), {22, false}) == read_file(SM_TEST_DATA "/io/sq22.msh"));
-  CHECK(msh_to_string(load_square(), {22, true}) == read_file(SM_TEST_DATA "/io/sq22b.msh"));
+  CHECK(msh_to_string(load_square(), {22, false}) == sm::testing::read_all(SM_TEST_DATA "/io/sq22.msh"));
+  CHECK(msh_to_string(load_square(), {22, true}) == sm::testing::read_all(SM_TEST_DATA "/io/sq22b.msh"));
 }
 
 TEST_CASE("msh 2.2 SaveAll: every entity, physical tags written as 0") {
-  CHECK(msh_to_string(load_square(), {22, false, true}) == read_file(SM_TEST_DATA "/io/sq22all.msh"));
+  CHECK(msh_to_string(load_square(), {22, false, true}) == sm::testing::read_all(SM_TEST_DATA "/io/sq22all.msh"));
 }
 
 TEST_CASE("msh: invalid models are rejected before anything is written") {
@@ -155,7 +150,7 @@ TEST_CASE("msh: atomic save replaces the file, a failed save leaves it intact") 
   const std::string path = dir + "/sq.msh";
   std::string error;
   REQUIRE(save_msh(m, {}, path, &error));
-  CHECK(read_file(path) == read_file(SM_TEST_DATA "/io/sq41.msh"));
+  CHECK(sm::testing::read_all(path) == sm::testing::read_all(SM_TEST_DATA "/io/sq41.msh"));
   // A missing directory: the reason (callers name the file), nothing created.
   CHECK_FALSE(save_msh(m, {}, dir + "/no/such/dir/sq.msh", &error));
   CHECK(error == "No such file or directory");
@@ -164,7 +159,7 @@ TEST_CASE("msh: atomic save replaces the file, a failed save leaves it intact") 
     CHECK_FALSE(save_msh(m, {22, false}, path, &error));
     ::chmod(dir.c_str(), 0755);
   }
-  CHECK(read_file(path) == read_file(SM_TEST_DATA "/io/sq41.msh"));
+  CHECK(sm::testing::read_all(path) == sm::testing::read_all(SM_TEST_DATA "/io/sq41.msh"));
 }
 
 
@@ -173,7 +168,7 @@ TEST_CASE("msh: every variant loads in Gmsh 4.8.4 with the same counts") {
     MESSAGE("python3-gmsh not installed: skipped");
     return;
   }
-  const MeshModel m = testing::grid_square(40);
+  const MeshModel m = sm::io::testing::grid_square(40);
   REQUIRE(validate_mesh_model(m).empty());
   const std::string script = "/tmp/sm_io_load.py";
   // One Python run loads every variant (starting Gmsh's module costs most of the time).
@@ -199,5 +194,5 @@ TEST_CASE("msh: every variant loads in Gmsh 4.8.4 with the same counts") {
       }
   const std::string out = "/tmp/sm_io_load.txt";
   REQUIRE(std::system(("/usr/bin/python3 " + script + paths + " > " + out).c_str()) == 0);
-  CHECK(read_file(out) == want);
+  CHECK(sm::testing::read_all(out) == want);
 }

@@ -15,6 +15,7 @@
 #include "io/node_coordinates.h"
 #include "io/test_meshes.h"
 #include "io/vtk_writer.h"
+#include "scratch_dir.h"
 
 using namespace sm;
 using namespace sm::io;
@@ -27,7 +28,7 @@ constexpr double kDeg = 3.14159265358979323846 / 180;
 // The patch (lon -10..10, lat 40..50 on the Earth's sphere) plus the sphere's centre as a
 // model point, as a PolarSphere script has it.
 MeshModel patch_with_centre() {
-  MeshModel m = testing::sphere_patch(8, kR);
+  MeshModel m = sm::io::testing::sphere_patch(8, kR);
   m.xyz.push_back({0, 0, 0});
   EntityMesh p;
   p.dim = 0, p.tag = 9, p.type = ElementType::Point1;
@@ -37,12 +38,6 @@ MeshModel patch_with_centre() {
   return m;
 }
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 }  // namespace
 
@@ -81,27 +76,27 @@ TEST_CASE("node coordinates: the stereographic plane is Gmsh's PolarSphere (u, v
       CHECK(x.y == doctest::Approx(-std::cos(lat) * std::sin(lon) / (1 + std::sin(lat))).epsilon(1e-12));
       CHECK(x.z == 0);
       const Vec3 back = sphere.point({x.x, x.y});
-      CHECK(norm(back - testing::sphere_patch(8, kR).xyz[j * 9 + i]) < 1e-6);
+      CHECK(norm(back - sm::io::testing::sphere_patch(8, kR).xyz[j * 9 + i]) < 1e-6);
     }
 }
 
 TEST_CASE("node coordinates: planar models, poles, nodes off the sphere, xyz unchanged") {
-  MeshModel plane = testing::grid_square(4);
+  MeshModel plane = sm::io::testing::grid_square(4);
   const MeshModel before = plane;
   const std::string why = convert_node_coordinates(plane, NodeCoordinates::LonLat, std::nullopt);
   CHECK(why.find("planar") != std::string::npos);
   CHECK(plane.xyz == before.xyz);
   CHECK(convert_node_coordinates(plane, NodeCoordinates::Stereographic, std::nullopt).empty());
   CHECK(plane.xyz == before.xyz);
-  MeshModel sphere = testing::sphere_patch(4, kR);
+  MeshModel sphere = sm::io::testing::sphere_patch(4, kR);
   CHECK(convert_node_coordinates(sphere, NodeCoordinates::Xyz, SphereFrame{{0, 0, 0}, kR}).empty());
-  CHECK(sphere.xyz == testing::sphere_patch(4, kR).xyz);
+  CHECK(sphere.xyz == sm::io::testing::sphere_patch(4, kR).xyz);
   // A triangle node at the south pole has no stereographic coordinates.
   sphere.xyz[12] = {0, 0, -kR};
   const std::string pole = convert_node_coordinates(sphere, NodeCoordinates::Stereographic, SphereFrame{{0, 0, 0}, kR});
   CHECK(pole.find("node 13 (lon 0.0000, lat -90.0000) lies at the pole") == 0);
   // A triangle node off the sphere is an error; the mesh is left as it was.
-  MeshModel off = testing::sphere_patch(4, kR);
+  MeshModel off = sm::io::testing::sphere_patch(4, kR);
   off.xyz[12] = off.xyz[12] * 1.01;
   const MeshModel off_before = off;
   CHECK(convert_node_coordinates(off, NodeCoordinates::LonLat, SphereFrame{{0, 0, 0}, kR}).find("node 13") == 0);
@@ -127,7 +122,7 @@ TEST_CASE("node coordinates: MSH files in lon/lat and stereographic load in Gmsh
                            "    xs, ys, zs = xyz[0::3], xyz[1::3], xyz[2::3]\n"
                            "    print(len(tags), sum(len(e) for e in t2), sum(len(e) for e in t1),\n"
                            "          '%.6f %.6f %.6f %.6f %.6f' % (min(xs), max(xs), min(ys), max(ys), max(abs(z) for z in zs)))\n";
-  const MeshModel xyz = testing::sphere_patch(8, kR);
+  const MeshModel xyz = sm::io::testing::sphere_patch(8, kR);
   std::string paths, want_all;
   for (NodeCoordinates mode : {NodeCoordinates::LonLat, NodeCoordinates::Stereographic}) {
     MeshModel m = xyz;
@@ -148,10 +143,10 @@ TEST_CASE("node coordinates: MSH files in lon/lat and stereographic load in Gmsh
     // VTK: the same points as written (legacy ASCII, z = 0 everywhere).
     std::string error;
     REQUIRE(save_vtk(m, {}, "/tmp/sm_io_coords.vtk", &error));
-    const std::string vtk = read_file("/tmp/sm_io_coords.vtk");
+    const std::string vtk = sm::testing::read_all("/tmp/sm_io_coords.vtk");
     CHECK(vtk.find("POINTS 81 double") != std::string::npos);
   }
   const std::string out = "/tmp/sm_io_coords.txt";
   REQUIRE(std::system(("/usr/bin/python3 " + script + paths + " > " + out).c_str()) == 0);
-  CHECK(read_file(out) == want_all);
+  CHECK(sm::testing::read_all(out) == want_all);
 }

@@ -8,18 +8,13 @@
 #include "geo/sphere.h"
 #include "io/ocean_grid.h"
 #include "io/test_meshes.h"
+#include "scratch_dir.h"
 
 using namespace sm;
 using namespace sm::io;
 
 namespace {
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // The grid square mapped onto the unit sphere as a lon/lat patch
 // (lon = 10 + 20 x, lat = 40 + 10 y), with depth = 100 + 50 x.
@@ -30,7 +25,7 @@ struct Patch {
 
 Patch patch() {
   Patch p;
-  p.mesh = testing::grid_square(6);
+  p.mesh = sm::io::testing::grid_square(6);
   const geo::PolarSphere sphere({0, 0, 0}, 1);
   for (Vec3& x : p.mesh.xyz) {
     p.opt.depth.push_back(100 + 50 * x.x);
@@ -54,7 +49,7 @@ TEST_CASE("fort.14: round trip of nodes, depths, triangles and boundaries") {
   std::string error;
   REQUIRE(save_fort14(p.mesh, p.opt, "/tmp/sm_fort.14", &error));
   OceanGrid g;
-  REQUIRE(parse_ocean_grid(slurp("/tmp/sm_fort.14"), &g, &error));
+  REQUIRE(parse_ocean_grid(sm::testing::read_all("/tmp/sm_fort.14"), &g, &error));
   REQUIRE(g.xy.size() == 49);
   CHECK(g.triangles.size() == 72 * 3);
   // Node ids follow entity order (points, curves, surface), so find each
@@ -81,8 +76,8 @@ TEST_CASE("hgrid.gr3 and hgrid.ll: SCHISM flags, loops not repeated") {
   std::string error;
   REQUIRE(save_schism(p.mesh, p.opt, "/tmp/hgrid.gr3", &error));
   OceanGrid gr3, ll;
-  REQUIRE(parse_ocean_grid(slurp("/tmp/hgrid.gr3"), &gr3, &error));
-  REQUIRE(parse_ocean_grid(slurp("/tmp/hgrid.ll"), &ll, &error));
+  REQUIRE(parse_ocean_grid(sm::testing::read_all("/tmp/hgrid.gr3"), &gr3, &error));
+  REQUIRE(parse_ocean_grid(sm::testing::read_all("/tmp/hgrid.ll"), &ll, &error));
   REQUIRE(gr3.land.size() == 2);
   CHECK(gr3.land[0].type == 0);
   CHECK(gr3.land[1].type == 1);

@@ -68,7 +68,7 @@ std::size_t count_reddish(const Image& img) {
 }  // namespace
 
 TEST_CASE("png: planar mesh, signature, size and coastline pixels") {
-  const MeshModel m = testing::grid_square(10);
+  const MeshModel m = sm::io::testing::grid_square(10);
   PictureOptions opt;
   opt.view = PictureView::Plane;
   opt.width_px = 400;
@@ -94,7 +94,7 @@ TEST_CASE("png: planar mesh, signature, size and coastline pixels") {
 }
 
 TEST_CASE("png: sphere mesh in lon/lat view, coastline across the middle") {
-  const MeshModel m = testing::sphere_patch(10);
+  const MeshModel m = sm::io::testing::sphere_patch(10);
   for (PictureColour colour : {PictureColour::None, PictureColour::Quality}) {
     PictureOptions opt;
     opt.view = PictureView::LonLat;
@@ -122,7 +122,7 @@ TEST_CASE("png: sphere mesh in lon/lat view, coastline across the middle") {
 }
 
 TEST_CASE("png: stereographic view and the scene shared with SVG") {
-  const MeshModel m = testing::sphere_patch(6);
+  const MeshModel m = sm::io::testing::sphere_patch(6);
   PictureOptions opt;
   opt.view = PictureView::Stereographic;
   opt.width_px = 300;
@@ -138,7 +138,7 @@ TEST_CASE("png: stereographic view and the scene shared with SVG") {
 }
 
 TEST_CASE("png: a missing directory is a clear error and nothing is written") {
-  const MeshModel m = testing::grid_square(2);
+  const MeshModel m = sm::io::testing::grid_square(2);
   PictureOptions opt;
   opt.view = PictureView::Plane;
   std::string error;
@@ -151,14 +151,14 @@ TEST_CASE("picture: triangle edges only where the triangles are big enough to sh
   opt.view = PictureView::Plane;
   opt.width_px = 200;
   // 100 x 100 cells on 198 px: edges of 2-3 px, too small: fills only.
-  CHECK(build_scene(testing::grid_square(100), opt).edge_width == 0);
+  CHECK(build_scene(sm::io::testing::grid_square(100), opt).edge_width == 0);
   // 10 x 10 cells: 20 px edges, drawn.
-  CHECK(build_scene(testing::grid_square(10), opt).edge_width > 0);
+  CHECK(build_scene(sm::io::testing::grid_square(10), opt).edge_width > 0);
   // The dense picture has no edge colour and no background seams inside the mesh: every
   // pixel is the fill colour (within the rounding of antialiased overlaps).
   std::string error;
   opt.colour = PictureColour::None;
-  REQUIRE(save_png(testing::grid_square(100), opt, "/tmp/sm_png_dense.png", &error));
+  REQUIRE(save_png(sm::io::testing::grid_square(100), opt, "/tmp/sm_png_dense.png", &error));
   const Image img = read_png("/tmp/sm_png_dense.png");
   int fill = 0;
   for (int y = 20; y < 180; ++y)
@@ -171,7 +171,7 @@ TEST_CASE("picture: triangle edges only where the triangles are big enough to sh
 
 TEST_CASE("picture: colouring by size on a log scale, smallest blue, largest red") {
   // grid_square(8) with x stretched quadratically: cells grow from left to right.
-  MeshModel m = testing::grid_square(8);
+  MeshModel m = sm::io::testing::grid_square(8);
   for (Vec3& x : m.xyz) x.x = x.x * x.x * 4;
   PictureOptions opt;
   opt.view = PictureView::Plane;

@@ -34,7 +34,7 @@ std::string count_elements(const std::string& svg_path) {
 }  // namespace
 
 TEST_CASE("svg: planar mesh, one polygon per triangle, one polyline per curve") {
-  const MeshModel m = testing::grid_square(10);
+  const MeshModel m = sm::io::testing::grid_square(10);
   std::string error;
   for (PictureColour colour : {PictureColour::None, PictureColour::Quality}) {
     PictureOptions opt;

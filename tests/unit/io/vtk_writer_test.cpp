@@ -23,7 +23,7 @@ TEST_CASE("quality: rho of equilateral, right and degenerate triangles") {
 }
 
 TEST_CASE("vtk legacy ASCII: header, counts, cell types") {
-  const MeshModel m = testing::grid_square(4);
+  const MeshModel m = sm::io::testing::grid_square(4);
   const std::string s = vtk_to_string(m, {});
   CHECK(s.rfind("# vtk DataFile Version 3.0\n", 0) == 0);
   CHECK(s.find("POINTS 25 double\n") != std::string::npos);
@@ -37,7 +37,7 @@ TEST_CASE("vtk: every variant reads back in meshio with the same data") {
     MESSAGE("python3-meshio not installed: skipped");
     return;
   }
-  const MeshModel m = testing::grid_square(10);
+  const MeshModel m = sm::io::testing::grid_square(10);
   std::vector<double> size(m.xyz.size());
   for (std::size_t i = 0; i < size.size(); ++i) size[i] = 0.1 + m.xyz[i].x;
   const std::string script = "/tmp/sm_vtk_load.py";
@@ -63,7 +63,7 @@ TEST_CASE("vtk: every variant reads back in meshio with the same data") {
 }
 
 TEST_CASE("vtk: node data of the wrong length is an error, nothing written") {
-  const MeshModel m = testing::grid_square(2);
+  const MeshModel m = sm::io::testing::grid_square(2);
   std::string error;
   CHECK_FALSE(save_vtk(m, {false, false, false, {{"size", {1.0, 2.0}}}}, "/tmp/sm_vtk_bad.vtk", &error));
   CHECK(error.find("node data 'size' has 2 values for 9 nodes") != std::string::npos);

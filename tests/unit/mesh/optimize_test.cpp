@@ -21,7 +21,7 @@ using namespace sm;
 
 namespace {
 
-bool same_bytes(const TriangleStore& a, const TriangleStore& b) {
+bool same_points_corners_twins(const TriangleStore& a, const TriangleStore& b) {
   return a.xy.size() == b.xy.size() && std::memcmp(a.xy.data(), b.xy.data(), a.xy.size() * sizeof(Vec2)) == 0 &&
          a.corner == b.corner;
 }
@@ -97,7 +97,7 @@ TEST_CASE("optimize_quality: front2d square with a hole, the worst rho rises abo
   CHECK(after.triangles == before.triangles);
   CHECK(after.share_len_07_14 >= before.share_len_07_14 - 1e-3);
   optimize_quality(copy, s.fixed);
-  CHECK(same_bytes(copy, s.m));
+  CHECK(same_points_corners_twins(copy, s.m));
 }
 
 TEST_CASE("optimize_quality: del2d square with a hole, the worst rho rises from 0.50 to above 0.65") {
@@ -165,7 +165,7 @@ TEST_CASE("optimize_quality: PolarSphere cap measured on the sphere (to_space)")
     TriangleStore copy = m;
     const OptimizeStats st = optimize_quality(m, fixed, opt);
     optimize_quality(copy, fixed, opt);
-    CHECK(same_bytes(copy, m));
+    CHECK(same_points_corners_twins(copy, m));
     check_invariants(m, edges, fixed_xy);
     const auto [min1, share1] = sphere_rho(m);
     MESSAGE(std::string(frontal ? "front2d" : "del2d") << " cap: sphere rho min " << min0 << " -> " << min1 << ", > 0.9 "
@@ -232,7 +232,7 @@ TEST_CASE("optimize_quality: GSHHG crude world coastlines, raw vertices (close b
   CHECK(below1 < below0);
   CHECK(q1.share_rho_09 >= q0.share_rho_09);
   optimize_quality(copy, fixed);
-  CHECK(same_bytes(copy, m));
+  CHECK(same_points_corners_twins(copy, m));
 }
 
 TEST_CASE("optimize_quality: a bare CDT of a many-sided polygon, where only swaps can act") {
