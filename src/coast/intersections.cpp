@@ -10,7 +10,7 @@
 #include <tuple>
 
 #include "coast/place_pairs.h"
-#include "mesh/predicates.h"
+#include "exact/predicates.h"
 
 namespace sm::coast {
 namespace {

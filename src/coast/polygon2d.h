@@ -5,7 +5,7 @@
 #include <span>
 
 #include "base/vec.h"
-#include "mesh/predicates.h"
+#include "exact/predicates.h"
 
 namespace sm::coast {
 

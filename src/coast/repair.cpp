@@ -13,7 +13,7 @@
 #include "coast/intersections.h"
 #include "coast/polygon2d.h"
 #include "coast/spline_check.h"
-#include "mesh/predicates.h"
+#include "exact/predicates.h"
 
 namespace sm::coast {
 namespace {

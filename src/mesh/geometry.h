@@ -8,7 +8,7 @@
 
 #include "base/id.h"
 #include "base/vec.h"
-#include "mesh/predicates.h"
+#include "exact/predicates.h"
 
 namespace sm {
 

@@ -8,7 +8,7 @@
 #include <span>
 #include <vector>
 
-#include "mesh/predicates.h"
+#include "exact/predicates.h"
 #include "mesh/triangulation.h"
 
 namespace sm {

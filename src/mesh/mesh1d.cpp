@@ -13,7 +13,7 @@
 #include <fmt/format.h>
 
 #include "mesh/boundary_recovery.h"
-#include "mesh/predicates.h"
+#include "exact/predicates.h"
 
 namespace sm {
 

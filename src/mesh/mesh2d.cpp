@@ -23,7 +23,7 @@
 #include "mesh/modify/optimize.h"
 #include "mesh/modify/smooth.h"
 #include "mesh/partition.h"
-#include "mesh/predicates.h"
+#include "exact/predicates.h"
 #include "mesh/refine.h"
 
 namespace sm {

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "mesh/predicates.h"
+#include "exact/predicates.h"
 #include "mesh/triangulation.h"
 
 namespace sm {

@@ -9,7 +9,7 @@
 #include <span>
 #include <string>
 
-#include "mesh/predicates.h"
+#include "exact/predicates.h"
 #include "mesh/triangulation.h"
 
 namespace sm {

@@ -20,7 +20,7 @@
 #include "io/from_model_mesh.h"
 #include "io/msh_writer.h"
 #include "mesh/mesh1d.h"
-#include "mesh/predicates.h"
+#include "exact/predicates.h"
 
 using namespace sm;
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "mesh/predicates.h"
+#include "exact/predicates.h"
 #include "mesh/triangulation.h"
 
 namespace sm {

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "mesh/predicates.h"
+#include "exact/predicates.h"
 
 namespace sm {
 namespace {

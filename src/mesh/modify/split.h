@@ -3,7 +3,7 @@
 // beside it each cut in two.
 #pragma once
 
-#include "mesh/predicates.h"
+#include "exact/predicates.h"
 #include "mesh/triangulation.h"
 
 namespace sm {

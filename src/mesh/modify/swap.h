@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "mesh/predicates.h"
+#include "exact/predicates.h"
 #include "mesh/triangulation.h"
 
 namespace sm {

@@ -8,7 +8,7 @@
 #include <set>
 #include <tuple>
 
-#include "mesh/predicates.h"
+#include "exact/predicates.h"
 
 using namespace sm;
 using namespace sm::coast;

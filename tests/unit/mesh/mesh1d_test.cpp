@@ -13,7 +13,7 @@
 
 #include "geo/curve_length.h"
 #include "geo/sphere.h"
-#include "mesh/predicates.h"
+#include "exact/predicates.h"
 
 using namespace sm;
 

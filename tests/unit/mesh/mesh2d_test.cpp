@@ -20,7 +20,7 @@
 #include "field/distance.h"
 #include "mesh/mesh1d.h"
 #include "mesh/mesh_stats.h"
-#include "mesh/predicates.h"
+#include "exact/predicates.h"
 #include "testing_coast.h"
 
 using namespace sm;

@@ -17,7 +17,7 @@
 #include "mesh/frontal.h"
 #include "mesh/geometry.h"
 #include "mesh/modify/smooth.h"
-#include "mesh/predicates.h"
+#include "exact/predicates.h"
 #include "mesh/quality.h"
 #include "testing_domains.h"
 

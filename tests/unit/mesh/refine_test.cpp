@@ -10,7 +10,7 @@
 #include "mesh/check.h"
 #include "mesh/frontal.h"
 #include "mesh/modify/smooth.h"
-#include "mesh/predicates.h"
+#include "exact/predicates.h"
 #include "mesh/quality.h"
 #include "mesh/refine.h"
 #include "mesh/refine_queue.h"

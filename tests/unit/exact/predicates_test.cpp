@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "mesh/predicates.h"
+#include "exact/predicates.h"
 
 using namespace sm;
 

@@ -1,7 +1,7 @@
 // Exact stage of the predicates: floating-point expansion arithmetic
 // (Priest 1991, Shewchuk 1997). An expansion is a sum of non-overlapping
 // doubles stored smallest first; sums and products of expansions are exact.
-#include "mesh/predicates.h"
+#include "exact/predicates.h"
 
 #include <algorithm>
 #include <cmath>
