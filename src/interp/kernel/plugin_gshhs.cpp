@@ -11,8 +11,8 @@
 
 #include "coast/gshhs_plugin_geo.h"
 #include "field/registry.h"
-#include "interp/builtins/dispatch.h"
-#include "interp/builtins/field_eval.h"
+#include "interp/kernel/dispatch.h"
+#include "interp/kernel/field_eval.h"
 #include "interp/interpreter.h"
 
 namespace sm::interp {

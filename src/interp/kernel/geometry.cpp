@@ -6,8 +6,8 @@
 
 #include <fmt/format.h>
 
-#include "interp/builtins/dispatch.h"
-#include "interp/builtins/geometry_shapes.h"
+#include "interp/kernel/dispatch.h"
+#include "interp/kernel/geometry_shapes.h"
 #include "interp/interpreter.h"
 #include "interp/provenance.h"
 

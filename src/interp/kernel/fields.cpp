@@ -7,8 +7,8 @@
 #include <fmt/format.h>
 
 #include "field/error.h"
-#include "interp/builtins/dispatch.h"
-#include "interp/builtins/field_eval.h"
+#include "interp/kernel/dispatch.h"
+#include "interp/kernel/field_eval.h"
 #include "interp/interpreter.h"
 
 namespace sm::interp {
