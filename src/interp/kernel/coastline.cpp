@@ -406,25 +406,6 @@ void exec_coastline_stmt(Interpreter& in, StmtId id) {
       s.node);
 }
 
-bool exec_native_coast_stmt(Interpreter& in, StmtId id) {
-  const Stmt& s = in.ast().stmt(id);
-  const bool coastline = std::visit(
-      [](const auto& n) {
-        if constexpr (requires { n.coastline; }) return n.coastline;
-        return false;
-      },
-      s.node);
-  if (coastline) {
-    exec_coastline_stmt(in, id);
-    return true;
-  }
-  if (const auto* p = std::get_if<PluginStmt>(&s.node); p && in.ast().str(p->plugin) == "GSHHS") {
-    exec_gshhs_plugin_stmt(in, id);
-    return true;
-  }
-  return false;
-}
-
 Value eval_coastline_query(Interpreter& in, ExprId e) {
   const Expr& x = in.ast().expr(e);
   const auto& q = std::get<CoastlineQueryExpr>(x.node);

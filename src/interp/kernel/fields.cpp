@@ -184,9 +184,8 @@ void exec_field_stmt(Interpreter& in, StmtId id) {
         return false;
       },
       s.node);
-  if (coastline) {   // `Coastline[n] = ...`: the coastline importer's statements
-    check_stmt_exprs(in, id);
-    in.not_supported_stmt(id, "Coastline[]");
+  if (coastline) {   // `Coastline[n] = ...`: the same syntax, the coastline importer's statements
+    exec_coastline_stmt(in, id);
     return;
   }
   std::visit(
