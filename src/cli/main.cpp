@@ -15,7 +15,7 @@
 #include "cli/diagnostic_stream.h"
 #include "cli/terminal_progress.h"
 #include "field/registry.h"
-#include "interp/builtins/mesh_commands.h"
+#include "interp/kernel/mesh_commands.h"
 #include "interp/interpreter.h"
 #include "interp/script_test.h"
 

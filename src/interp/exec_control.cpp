@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "interp/builtins/dispatch.h"
+#include "interp/kernel/dispatch.h"
 #include "interp/format.h"
 #include "interp/interpreter.h"
 #include "interp/limits.h"

@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "interp/builtins/dispatch.h"
+#include "interp/kernel/statements.h"
 #include "interp/format.h"
 #include "interp/limits.h"
 #include "lang/parser.h"
@@ -182,8 +182,8 @@ Interpreter::Flow Interpreter::exec(StmtId id) {
           return exec_include(s, n);
         } else if constexpr (std::is_same_v<T, CommandStmt>) {
           return exec_command(s, n);
-        } else if (!exec_native_coast_stmt(*this, id)) {
-          dispatch_model_stmt(*this, id);
+        } else {   // the kernel's statements: one row each in kernel/statements.def
+          exec_kernel_stmt(*this, id);
         }
         return Flow::Normal;
       },

@@ -73,7 +73,7 @@ class Interpreter {
   /// True once Exit/Abort stopped the run: later files are not run.
   bool stopped() const { return stopped_; }
 
-  // ---- used by the statement/expression families and builtins/ ----
+  // ---- used by the statement/expression families, builtins/ and kernel/ ----
   enum class Flow { Normal, Return, Stop };
 
   Value eval(lang::ExprId e);

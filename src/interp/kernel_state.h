@@ -20,7 +20,7 @@
 
 namespace sm::interp {
 
-/// The entities one coastline import created (builtins/coastline.cpp).
+/// The entities one coastline import created (kernel/coastline.cpp).
 struct CoastlineImport;
 
 /// `Coastline[n] = Format; Coastline[n].Option = value;` (native extension),
@@ -34,7 +34,7 @@ struct CoastlineDef {
   std::shared_ptr<const CoastlineImport> imported;
 };
 
-/// Fields built for FieldValue/FieldArgmin (builtins/field_eval.cpp).
+/// Fields built for FieldValue/FieldArgmin (kernel/field_eval.cpp).
 struct FieldCache;
 
 struct KernelState {
@@ -54,7 +54,7 @@ struct KernelState {
   std::map<std::string, lang::SourceRange, std::less<>> option_set_at;
   /// (dim, tag) -> the statement that created the entity (provenance).
   std::map<std::pair<int, int>, lang::SourceRange> created_at;
-  /// The mesh of the last `Mesh n;` (builtins/mesh_commands.cpp), what `Save` writes.
+  /// The mesh of the last `Mesh n;` (kernel/mesh_commands.cpp), what `Save` writes.
   std::shared_ptr<const ModelMesh> mesh;
   /// Statistics of the last `Mesh 2;` as JSON (for `--stats FILE.json`); empty before.
   std::string mesh_stats_json;

@@ -55,7 +55,7 @@ using BuiltinFn = Value (*)(BuiltinEnv& env, const std::vector<Value>& args);
 #undef MODEL_BUILTIN
 
 /// The implementation of `id`, or nullptr for a MODEL_BUILTIN (the evaluator
-/// runs those through eval_field_call, builtins/dispatch.h).
+/// runs those through eval_field_call, kernel/dispatch.h).
 BuiltinFn builtin_impl(lang::BuiltinId id);
 /// The implementation of the builtin called `name`, or nullptr.
 BuiltinFn find_builtin(std::string_view name);

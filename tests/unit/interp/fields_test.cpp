@@ -6,9 +6,9 @@
 #include <cmath>
 #include <sstream>
 
-#include "interp/builtins/field_context.h"
-#include "interp/builtins/field_eval.h"
-#include "interp/builtins/size_policy_from_options.h"
+#include "interp/kernel/field_context.h"
+#include "interp/kernel/field_eval.h"
+#include "interp/kernel/size_policy_from_options.h"
 #include "interp_test_util.h"
 
 using namespace sm;

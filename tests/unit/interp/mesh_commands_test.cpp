@@ -1,7 +1,7 @@
-// interp/builtins/mesh_commands: meshing asked by -1 / -2 (mesh_from_command_line) reports
+// interp/kernel/mesh_commands: meshing asked by -1 / -2 (mesh_from_command_line) reports
 // each mesh-stage failure at the statement that created the entity (file:line:col with the
 // caret), the element budget (Mesh.MaxElements) included, and writes nothing then.
-#include "interp/builtins/mesh_commands.h"
+#include "interp/kernel/mesh_commands.h"
 
 #include <doctest/doctest.h>
 

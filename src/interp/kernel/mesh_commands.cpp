@@ -4,7 +4,7 @@
 // writes the current mesh (MSH 2.2/4.1 or VTK by extension) atomically, and the
 // command line's -1 / -2 do both. The other mesh commands and post-processing
 // statements are reported as not supported.
-#include "interp/builtins/mesh_commands.h"
+#include "interp/kernel/mesh_commands.h"
 
 #include <array>
 #include <chrono>
@@ -16,12 +16,12 @@
 #include <fmt/format.h>
 
 #include "base/output_file.h"
-#include "interp/builtins/dispatch.h"
-#include "interp/builtins/field_context.h"
-#include "interp/builtins/field_eval.h"
-#include "interp/builtins/ocean_grid_export.h"
-#include "interp/builtins/output_options.h"
-#include "interp/builtins/size_policy_from_options.h"
+#include "interp/kernel/dispatch.h"
+#include "interp/kernel/field_context.h"
+#include "interp/kernel/field_eval.h"
+#include "interp/kernel/ocean_grid_export.h"
+#include "interp/kernel/output_options.h"
+#include "interp/kernel/size_policy_from_options.h"
 #include "interp/interpreter.h"
 #include "interp/progress_sink.h"
 #include "io/from_model_mesh.h"

@@ -11,8 +11,8 @@
 
 #include "coast/gshhs_plugin_geo.h"
 #include "field/registry.h"
-#include "interp/builtins/dispatch.h"
-#include "interp/builtins/field_eval.h"
+#include "interp/kernel/dispatch.h"
+#include "interp/kernel/field_eval.h"
 #include "interp/interpreter.h"
 
 namespace sm::interp {
@@ -107,8 +107,6 @@ void run_plugin(Interpreter& in, const Stmt& s) {
     in.diags().report(s.range, Diag::CoastlineRepair, fmt::format("Plugin(GSHHS): {}", line));
 }
 
-}  // namespace
-
 void exec_gshhs_plugin_stmt(Interpreter& in, StmtId id) {
   const Stmt& s = in.ast().stmt(id);
   const auto& p = std::get<PluginStmt>(s.node);
@@ -121,6 +119,15 @@ void exec_gshhs_plugin_stmt(Interpreter& in, StmtId id) {
     in.fail_fmt(p.member_range, Diag::UnknownPluginOption,
                 fmt::format("Plugin(GSHHS) has no action '{}' (its action is 'Run')", member));
   run_plugin(in, s);
+}
+
+}  // namespace
+
+void exec_plugin_stmt(Interpreter& in, StmtId id) {
+  if (in.ast().str(std::get<PluginStmt>(in.ast().stmt(id).node).plugin) == "GSHHS")
+    exec_gshhs_plugin_stmt(in, id);
+  else
+    exec_mesh_stmt(in, id);   // the other plugins: not supported
 }
 
 }  // namespace sm::interp

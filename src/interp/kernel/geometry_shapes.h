@@ -30,7 +30,8 @@ std::vector<geo::DimTag> eval_shape_block(Interpreter& in, const lang::ShapeBloc
 /// A Translate/Rotate/Symmetry/Dilate/Duplicata/Boundary expression as entities.
 std::vector<geo::DimTag> eval_shape_expr(Interpreter& in, lang::ExprId e);
 
-/// Runs a geometry statement; returns the elementary entity it created, if any.
-std::optional<geo::DimTag> exec_geometry_stmt(Interpreter& in, lang::StmtId s);
+/// Runs a geometry statement (exec_geometry_stmt, kernel/dispatch.h); returns the
+/// elementary entity it created, if any, for a creation inside a shape block.
+std::optional<geo::DimTag> create_geometry(Interpreter& in, lang::StmtId s);
 
 }  // namespace sm::interp

@@ -7,8 +7,8 @@
 #include <fmt/format.h>
 
 #include "field/error.h"
-#include "interp/builtins/dispatch.h"
-#include "interp/builtins/field_eval.h"
+#include "interp/kernel/dispatch.h"
+#include "interp/kernel/field_eval.h"
 #include "interp/interpreter.h"
 
 namespace sm::interp {
@@ -184,9 +184,8 @@ void exec_field_stmt(Interpreter& in, StmtId id) {
         return false;
       },
       s.node);
-  if (coastline) {   // `Coastline[n] = ...`: the coastline importer's statements
-    check_stmt_exprs(in, id);
-    in.not_supported_stmt(id, "Coastline[]");
+  if (coastline) {   // `Coastline[n] = ...`: the same syntax, the coastline importer's statements
+    exec_coastline_stmt(in, id);
     return;
   }
   std::visit(

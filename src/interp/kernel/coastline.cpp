@@ -11,9 +11,9 @@
 #include "coast/import.h"
 #include "coast/read.h"
 #include "field/registry.h"
-#include "interp/builtins/dispatch.h"
-#include "interp/builtins/field_eval.h"
-#include "interp/builtins/geometry_shapes.h"
+#include "interp/kernel/dispatch.h"
+#include "interp/kernel/field_eval.h"
+#include "interp/kernel/geometry_shapes.h"
 #include "interp/interpreter.h"
 #include "interp/progress_sink.h"
 #include "interp/provenance.h"
@@ -404,25 +404,6 @@ void exec_coastline_stmt(Interpreter& in, StmtId id) {
         }
       },
       s.node);
-}
-
-bool exec_native_coast_stmt(Interpreter& in, StmtId id) {
-  const Stmt& s = in.ast().stmt(id);
-  const bool coastline = std::visit(
-      [](const auto& n) {
-        if constexpr (requires { n.coastline; }) return n.coastline;
-        return false;
-      },
-      s.node);
-  if (coastline) {
-    exec_coastline_stmt(in, id);
-    return true;
-  }
-  if (const auto* p = std::get_if<PluginStmt>(&s.node); p && in.ast().str(p->plugin) == "GSHHS") {
-    exec_gshhs_plugin_stmt(in, id);
-    return true;
-  }
-  return false;
 }
 
 Value eval_coastline_query(Interpreter& in, ExprId e) {

@@ -6,8 +6,8 @@
 
 #include <fmt/format.h>
 
-#include "interp/builtins/dispatch.h"
-#include "interp/builtins/geometry_shapes.h"
+#include "interp/kernel/dispatch.h"
+#include "interp/kernel/geometry_shapes.h"
 #include "interp/interpreter.h"
 #include "interp/provenance.h"
 
@@ -256,7 +256,7 @@ void exec_split_curve(Interpreter& in, const Stmt& s, const SplitCurveStmt& n) {
 
 }  // namespace
 
-std::optional<geo::DimTag> exec_geometry_stmt(Interpreter& in, StmtId id) {
+std::optional<geo::DimTag> create_geometry(Interpreter& in, StmtId id) {
   const Stmt& s = in.ast().stmt(id);
   sync_geometry_options(in);
   KernelState& k = in.kernel();
@@ -331,37 +331,21 @@ std::optional<geo::DimTag> exec_geometry_stmt(Interpreter& in, StmtId id) {
   return std::nullopt;
 }
 
-void dispatch_model_stmt(Interpreter& in, StmtId id) {
+void exec_geometry_stmt(Interpreter& in, StmtId id) { create_geometry(in, id); }
+
+void exec_set_factory_stmt(Interpreter& in, StmtId id) {
   const Stmt& s = in.ast().stmt(id);
-  switch (s.kind()) {
-    case StmtKind::FieldNew:
-    case StmtKind::FieldOption:
-    case StmtKind::FieldAction:
-    case StmtKind::BackgroundField:
-    case StmtKind::DeleteField:
-      exec_field_stmt(in, id);
-      return;
-    case StmtKind::Plugin:
-    case StmtKind::View:
-    case StmtKind::Color:
-      exec_mesh_stmt(in, id);
-      return;
-    case StmtKind::Coherence:
-      if (std::get<CoherenceStmt>(s.node).what == CoherenceKind::Mesh) {
-        exec_mesh_stmt(in, id);
-        return;
-      }
-      break;
-    case StmtKind::SetFactory: {
-      const std::string name = in.eval_string(std::get<SetFactoryStmt>(s.node).name);
-      if (name == "Built-in" || name == "Gmsh") return;   // the default kernel: nothing to do
-      in.fail_fmt(s.range, Diag::NotSupportedYet, fmt::format("SetFactory(\"{}\")", name),
-                  ": only the built-in kernel exists");
-    }
-    default:
-      break;
-  }
-  exec_geometry_stmt(in, id);
+  const std::string name = in.eval_string(std::get<SetFactoryStmt>(s.node).name);
+  if (name == "Built-in" || name == "Gmsh") return;   // the default kernel: nothing to do
+  in.fail_fmt(s.range, Diag::NotSupportedYet, fmt::format("SetFactory(\"{}\")", name),
+              ": only the built-in kernel exists");
+}
+
+void exec_coherence_stmt(Interpreter& in, StmtId id) {
+  if (std::get<CoherenceStmt>(in.ast().stmt(id).node).what == CoherenceKind::Mesh)
+    exec_mesh_stmt(in, id);
+  else
+    create_geometry(in, id);
 }
 
 double new_tag_constant(Interpreter& in, Constant c) {

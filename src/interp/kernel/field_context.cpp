@@ -1,6 +1,6 @@
 // Model -> field BuildContext: the positions and samples Distance, Restrict and
 // the finite-difference kinds need, computed from geo::Model at build time.
-#include "interp/builtins/field_context.h"
+#include "interp/kernel/field_context.h"
 
 #include <algorithm>
 #include <cstdlib>

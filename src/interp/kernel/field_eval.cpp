@@ -1,7 +1,7 @@
 // Field builds requested by scripts (FieldValue, FieldArgmin) and by the
 // mesher (Background Field), and kernel field errors turned into located
 // diagnostics that point at the statements defining the fields involved.
-#include "interp/builtins/field_eval.h"
+#include "interp/kernel/field_eval.h"
 
 #include <cmath>
 #include <cstdint>
@@ -13,8 +13,8 @@
 
 #include "field/min_max.h"
 #include "field/size_check.h"
-#include "interp/builtins/dispatch.h"
-#include "interp/builtins/field_context.h"
+#include "interp/kernel/dispatch.h"
+#include "interp/kernel/field_context.h"
 #include "interp/interpreter.h"
 
 namespace sm::interp {

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "field/error.h"
-#include "interp/builtins/field_context.h"
+#include "interp/kernel/field_context.h"
 #include "field/field_set.h"
 #include "lang/source.h"
 

@@ -6,8 +6,8 @@
 
 #include <fmt/format.h>
 
-#include "interp/builtins/dispatch.h"
-#include "interp/builtins/geometry_shapes.h"
+#include "interp/kernel/dispatch.h"
+#include "interp/kernel/geometry_shapes.h"
 #include "interp/interpreter.h"
 #include "interp/provenance.h"
 
@@ -200,7 +200,7 @@ std::vector<geo::DimTag> eval_shape_block(Interpreter& in, const ShapeBlock& blo
         break;
       }
       case ShapeItem::Kind::Create:
-        if (auto made = exec_geometry_stmt(in, item.create)) out.push_back(*made);
+        if (auto made = create_geometry(in, item.create)) out.push_back(*made);
         break;
       case ShapeItem::Kind::Nested: {
         const std::vector<geo::DimTag> inner = eval_shape_expr(in, item.nested);

@@ -1,5 +1,5 @@
 // The writers' settings from the script's options (see output_options.h).
-#include "interp/builtins/output_options.h"
+#include "interp/kernel/output_options.h"
 
 #include <fmt/format.h>
 

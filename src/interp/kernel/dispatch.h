@@ -1,6 +1,6 @@
 // Entry points of the statements and expressions that need the geometry model,
-// fields or the mesher. Each family file (geometry.cpp, fields.cpp,
-// mesh_commands.cpp) owns its part, so later issues replace them file by file.
+// fields, coastlines or the mesher: the handlers kernel/statements.def names, and the
+// expressions the evaluator hands over. Each family file owns its part.
 #pragma once
 
 #include <string>
@@ -13,26 +13,35 @@ namespace sm::interp {
 
 class Interpreter;
 
-/// Any statement the core evaluator does not run itself (geometry, physical
-/// groups, mesh constraints, fields, plugins, views).
-void dispatch_model_stmt(Interpreter& in, lang::StmtId s);
-/// Field statements (`Field[1] = Distance;`, options, actions, Background Field).
+// The handlers of kernel/statements.def's rows, each with the rows it serves.
+
+/// Geometry (geometry.cpp): Point ... Physical, transforms as statements, Delete{},
+/// MeshSize, embedding; Surface Loop, Volume and the mesh constraints are reported as
+/// not supported.
+void exec_geometry_stmt(Interpreter& in, lang::StmtId s);
+/// `SetFactory("Built-in");` (geometry.cpp): the only kernel there is.
+void exec_set_factory_stmt(Interpreter& in, lang::StmtId s);
+/// `Coherence;` / `Coherence Point{...}` (geometry.cpp); `Coherence Mesh;` goes to exec_mesh_stmt.
+void exec_coherence_stmt(Interpreter& in, lang::StmtId s);
+/// Field statements (fields.cpp): `Field[1] = Distance;`, options, actions, `Delete
+/// Field[n];`, Background Field; the coastline forms of the same syntax go to
+/// exec_coastline_stmt.
 void exec_field_stmt(Interpreter& in, lang::StmtId s);
+/// `Coastline[n] = Format;`, `Coastline[n].Option = v;`, `Delete Coastline[n];` (coastline.cpp).
+void exec_coastline_stmt(Interpreter& in, lang::StmtId s);
+/// `Plugin(Name)...;` (plugin_gshhs.cpp): Plugin(GSHHS) runs, other plugins go to exec_mesh_stmt.
+void exec_plugin_stmt(Interpreter& in, lang::StmtId s);
+/// Mesh-side statements without a command word (mesh_commands.cpp): Plugin, View, Color,
+/// Coherence Mesh, all reported as not supported.
+void exec_mesh_stmt(Interpreter& in, lang::StmtId s);
+
 /// `FieldValue(n, x, y, z)` / `FieldArgmin(...)` (native, field_eval.cpp): the
 /// MODEL_BUILTIN rows of lang/builtin_functions.def. Checks its own arguments.
 Value eval_field_call(Interpreter& in, const lang::Expr& e, const lang::CallExpr& c);
 /// `Mesh 2;`, `Save "f";`, `Merge`, ... (`CommandStmt`s other than Include).
 /// Returns false for an unknown command name.
 bool exec_mesh_command(Interpreter& in, lang::StmtId s, std::string_view command);
-/// Mesh-side statements without a command word: Plugin, View, Color, Coherence Mesh.
-void exec_mesh_stmt(Interpreter& in, lang::StmtId s);
 
-/// `Coastline[n] = Format;`, `Coastline[n].Option = v;`, `Delete Coastline[n];` and
-/// `Plugin(GSHHS)...;` (coastline.cpp, plugin_gshhs.cpp): runs them and returns true, or
-/// returns false for any other statement.
-bool exec_native_coast_stmt(Interpreter& in, lang::StmtId s);
-void exec_coastline_stmt(Interpreter& in, lang::StmtId s);
-void exec_gshhs_plugin_stmt(Interpreter& in, lang::StmtId s);
 /// `Coastline{n, ...}` (coastline.cpp): imports coastline n on first use and returns its
 /// curve-loop tags (or, with a string item, its "Curves", "OpenCurves", "Points"...).
 Value eval_coastline_query(Interpreter& in, lang::ExprId e);

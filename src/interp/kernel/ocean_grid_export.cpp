@@ -4,7 +4,7 @@
 // mainland string, a hole without open curves an island, and a loop with open
 // curves is cut into alternating open and mainland strings that share their
 // end nodes.
-#include "interp/builtins/ocean_grid_export.h"
+#include "interp/kernel/ocean_grid_export.h"
 
 #include <fmt/format.h>
 
@@ -13,7 +13,7 @@
 #include <filesystem>
 #include <set>
 
-#include "interp/builtins/field_eval.h"
+#include "interp/kernel/field_eval.h"
 #include "interp/interpreter.h"
 #include "io/from_model_mesh.h"
 #include "io/ocean_grid.h"

@@ -1,7 +1,7 @@
 // Mesh.MeshSize{Factor,Min,Max,FromPoints,ExtendFromBoundary,FromCurvature} ->
 // field::SizePolicyOptions. Each CharacteristicLength* alias shares its option's
 // slot in the registry, so reading the current names sees either spelling.
-#include "interp/builtins/size_policy_from_options.h"
+#include "interp/kernel/size_policy_from_options.h"
 
 #include <array>
 #include <string_view>
