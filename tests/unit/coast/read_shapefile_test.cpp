@@ -3,10 +3,12 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
 #include "coast/file_bytes.h"
+#include "scratch_dir.h"
 
 #include <shapefil.h>
 
@@ -26,6 +28,13 @@ Counts count(const Coastline& c) {
     n.points += r.pts.size() + (r.closed && !r.wraps_pole ? 1 : 0);
   }
   return n;
+}
+
+// The first n bytes of b (all of them by default) as the file path.
+void write_bytes(const std::filesystem::path& path, const std::vector<unsigned char>& b,
+                 std::size_t n = static_cast<std::size_t>(-1)) {
+  std::ofstream f(path, std::ios::binary);
+  f.write(reinterpret_cast<const char*>(b.data()), static_cast<std::streamsize>(std::min(n, b.size())));
 }
 }  // namespace
 
@@ -80,17 +89,14 @@ TEST_CASE("shapefile: GSHHS_l_L1.shp without .shx (index rebuilt)") {
 }
 
 TEST_CASE("shapefile: broken files are located errors") {
-  namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / "sm_coast_shp_test";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const sm::testing::ScratchDir scratch;
+  const std::filesystem::path& dir = scratch.path;
   auto bytes = read_file_bytes(kNe + "ne_110m_coastline.shp");
   auto shx = read_file_bytes(kNe + "ne_110m_coastline.shx");
   REQUIRE(bytes.ok());
   REQUIRE(shx.ok());
   auto write = [&](const std::string& name, const std::vector<unsigned char>& b, std::size_t n) {
-    std::ofstream f(dir / name, std::ios::binary);
-    f.write(reinterpret_cast<const char*>(b.data()), static_cast<std::streamsize>(n));
+    write_bytes(dir / name, b, n);
   };
   SUBCASE("truncated .shp with its full .shx") {
     write("t.shp", *bytes, bytes->size() / 2);
@@ -117,25 +123,19 @@ TEST_CASE("shapefile: broken files are located errors") {
     CHECK_FALSE(read_shapefile((dir / "e.shp").string()).ok());
     CHECK_FALSE(read_shapefile((dir / "missing.shp").string()).ok());
   }
-  fs::remove_all(dir);
 }
 
 // Lengths a header claims beyond the bytes the file holds: shapelib would allocate or seek
 // by them (a negative record length sent SHPRestoreSHX round in circles for ever), so the
 // reader refuses them first, naming the file and the numbers.
 TEST_CASE("shapefile: header lengths beyond the file are refused before shapelib reads them") {
-  namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / "sm_coast_shp_sizes_test";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const sm::testing::ScratchDir scratch;
+  const std::filesystem::path& dir = scratch.path;
   auto shp = read_file_bytes(kNe + "ne_110m_coastline.shp");
   auto shx = read_file_bytes(kNe + "ne_110m_coastline.shx");
   REQUIRE(shp.ok());
   REQUIRE(shx.ok());
-  auto write = [&](const std::string& name, const std::vector<unsigned char>& b) {
-    std::ofstream f(dir / name, std::ios::binary);
-    f.write(reinterpret_cast<const char*>(b.data()), static_cast<std::streamsize>(b.size()));
-  };
+  auto write = [&](const std::string& name, const std::vector<unsigned char>& b) { write_bytes(dir / name, b); };
   auto put_be32 = [](std::vector<unsigned char>& b, std::size_t at, std::uint32_t v) {
     for (int k = 0; k < 4; ++k) b[at + static_cast<std::size_t>(k)] = static_cast<unsigned char>(v >> (24 - 8 * k));
   };
@@ -201,7 +201,6 @@ TEST_CASE("shapefile: header lengths beyond the file are refused before shapelib
     CHECK(read_shapefile((dir / "h.shp").string(), &info).ok());
     CHECK(info.index_rebuilt);
   }
-  fs::remove_all(dir);
 }
 
 TEST_CASE("shapefile: PolygonZ and PolyLineZ written from real data read back the same") {
