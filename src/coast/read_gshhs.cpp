@@ -7,18 +7,12 @@
 
 #include <fmt/format.h>
 
+#include "coast/big_endian.h"
 #include "coast/file_bytes.h"
 
 namespace sm::coast {
 namespace {
 
-std::int32_t be32(const unsigned char* p) {
-  return static_cast<std::int32_t>((std::uint32_t{p[0]} << 24) | (std::uint32_t{p[1]} << 16) |
-                                   (std::uint32_t{p[2]} << 8) | std::uint32_t{p[3]});
-}
-std::int16_t be16(const unsigned char* p) {
-  return static_cast<std::int16_t>((std::uint16_t{p[0]} << 8) | std::uint16_t{p[1]});
-}
 
 std::size_t header_size(GshhsLayout l) {
   switch (l) {

@@ -19,6 +19,8 @@
 
 #include <fmt/format.h>
 
+#include "coast/big_endian.h"
+
 namespace sm::coast {
 namespace {
 
@@ -29,12 +31,6 @@ constexpr std::uint64_t kRecordHeaderBytes = 8;
 constexpr std::int64_t kMinContentWords = 2;   // a record's content starts with its 4-byte shape type
 
 using File = std::unique_ptr<std::FILE, int (*)(std::FILE*)>;
-
-std::int64_t be32(const unsigned char* p) {
-  const std::uint32_t u = (std::uint32_t{p[0]} << 24) | (std::uint32_t{p[1]} << 16) | (std::uint32_t{p[2]} << 8) |
-                          std::uint32_t{p[3]};
-  return static_cast<std::int32_t>(u);
-}
 
 CoastError error_in(const fs::path& file, std::int64_t record, std::string message) {
   return CoastError{file.string(), record, std::move(message), {}};
