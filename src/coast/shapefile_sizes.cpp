@@ -88,7 +88,7 @@ std::optional<CoastError> check_shapefile_sizes(const fs::path& shp, const fs::p
       return error_in(shx, -1, "cannot read the index entries");
     for (std::uint64_t k = 0; k < entries; ++k) {
       const unsigned char* p = index.data() + 8 * k;
-      const std::int64_t offset = 2 * be32(p);
+      const std::int64_t offset = 2 * std::int64_t{be32(p)};   // widen first: 2 * 2^30 overflows int32
       if (auto e = check_record(shx, static_cast<std::int64_t>(k), offset, be32(p + 4), shp_claimed, "the index entry"))
         return e;
     }

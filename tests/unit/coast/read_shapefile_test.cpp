@@ -169,6 +169,15 @@ TEST_CASE("shapefile: header lengths beyond the file are refused before shapelib
     CHECK(m.find((dir / "c.shx").string() + ": record 5: the index entry claims a record at bytes ") == 0);
     CHECK(m.find("outside the 89652 bytes of records the .shp header claims") != std::string::npos);
   }
+  SUBCASE("an index offset of 2^30 words or more (a byte offset that does not fit in 32 bits)") {
+    auto x = *shx;
+    put_be32(x, 100 + 8 * 3, 0x40010000u);   // entry 3 at byte 2 * 1073807360
+    write("i.shp", *shp);
+    write("i.shx", x);
+    const std::string m = message("i.shp");
+    CHECK(m.find((dir / "i.shx").string() + ": record 3: the index entry claims a record at bytes 2147614720 to ") ==
+          0);
+  }
   SUBCASE("no .shx and a negative record length (the loop shapelib's index rebuild never left)") {
     auto b = *shp;
     const std::size_t second = 100 + 8 + 2 * ((std::size_t{b[104]} << 24 | std::size_t{b[105]} << 16 |
