@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "io/node_coordinates.h"
+#include "io/output_format.h"
 
 namespace sm::cli {
 
@@ -37,6 +38,7 @@ bool algo_number(const std::string& name, double& out) {
 }  // namespace
 
 std::string usage_text() {
+  // The -format line lists io/output_format.h's rows; its text starts at column 22.
   return "usage: stereomesh [options] FILE.geo...\n"
          "       stereomesh --test DIR|FILE...\n"
          "\n"
@@ -47,8 +49,7 @@ std::string usage_text() {
          "  -1, -2              mesh the curves / the surfaces and write the mesh (-o FILE)\n"
          "  --stats FILE.json   after -2 (or Mesh 2;), write the mesh statistics as JSON\n"
          "  -o FILE             output mesh file\n"
-         "  -format NAME        output format: msh, msh2, msh22, msh4, msh41, vtk, svg or png (a picture),\n"
-         "                      fort14 (ADCIRC), gr3 (SCHISM hgrid.gr3 + hgrid.ll)\n"
+         "  -format NAME        " + io::output_format_help(22, 100) + "\n" +
          "  -bin                binary output (Mesh.Binary = 1)\n"
          "  -coords NAME        node coordinates of MSH/VTK files: xyz (3D, default), lonlat\n"
          "                      (degrees, z = 0) or stereo (stereographic plane) (Mesh.NodeCoordinates)\n"
@@ -112,17 +113,12 @@ ParseOutcome parse_args(const std::vector<std::string>& argv) {
       if (!value("-o", a.output)) return fail("'-o' needs a file name");
     } else if (arg == "-format") {
       if (!value("-format", a.format)) return fail("'-format' needs a format name");
-      static const char* kFormats[] = {"msh", "msh2", "msh22", "msh4", "msh41", "vtk", "svg", "png", "fort14", "gr3"};
-      bool known = false;
-      for (const char* f : kFormats) known = known || a.format == f;
-      if (!known)
-        return fail(fmt::format("unknown format '{}' (msh, msh2, msh22, msh4, msh41, vtk, svg, png, fort14, gr3)", a.format));
-      const bool v2 = a.format == "msh2" || a.format == "msh22";
+      const io::OutputFormat* f = io::find_output_format(a.format);
+      if (!f) return fail(fmt::format("unknown format '{}' ({})", a.format, io::output_format_names()));
       // Gmsh has no mesh format number for the pictures or the ocean-model
       // grids: they are chosen by name.
-      const bool native = a.format == "svg" || a.format == "png" || a.format == "fort14" || a.format == "gr3";
-      if (!native) a.option_numbers.emplace_back("Mesh.Format", a.format == "vtk" ? 16 : 1);
-      if (a.format != "vtk" && a.format != "msh" && !native) a.option_numbers.emplace_back("Mesh.MshFileVersion", v2 ? 2.2 : 4.1);
+      if (f->mesh_format != 0) a.option_numbers.emplace_back("Mesh.Format", f->mesh_format);
+      if (f->msh_file_version != 0) a.option_numbers.emplace_back("Mesh.MshFileVersion", f->msh_file_version);
     } else if (arg == "-coords") {
       std::string name;
       if (!value("-coords", name)) return fail("'-coords' needs xyz, lonlat or stereo");

@@ -72,6 +72,7 @@ SM_CHECK_KIND(StmtKind, StmtNode, IncDec, IncDecStmt)
 SM_CHECK_KIND(StmtKind, StmtNode, DefineConstant, DefineConstantStmt)
 SM_CHECK_KIND(StmtKind, StmtNode, Delete, DeleteStmt)
 SM_CHECK_KIND(StmtKind, StmtNode, DeleteField, DeleteFieldStmt)
+SM_CHECK_KIND(StmtKind, StmtNode, DeleteCoastline, DeleteCoastlineStmt)
 SM_CHECK_KIND(StmtKind, StmtNode, DeleteShapes, DeleteShapesStmt)
 SM_CHECK_KIND(StmtKind, StmtNode, Print, PrintStmt)
 SM_CHECK_KIND(StmtKind, StmtNode, If, IfStmt)
@@ -112,6 +113,9 @@ SM_CHECK_KIND(StmtKind, StmtNode, Compound, CompoundStmt)
 SM_CHECK_KIND(StmtKind, StmtNode, FieldNew, FieldNewStmt)
 SM_CHECK_KIND(StmtKind, StmtNode, FieldOption, FieldOptionStmt)
 SM_CHECK_KIND(StmtKind, StmtNode, FieldAction, FieldActionStmt)
+SM_CHECK_KIND(StmtKind, StmtNode, CoastlineNew, CoastlineNewStmt)
+SM_CHECK_KIND(StmtKind, StmtNode, CoastlineOption, CoastlineOptionStmt)
+SM_CHECK_KIND(StmtKind, StmtNode, CoastlineAction, CoastlineActionStmt)
 SM_CHECK_KIND(StmtKind, StmtNode, BackgroundField, BackgroundFieldStmt)
 SM_CHECK_KIND(StmtKind, StmtNode, Plugin, PluginStmt)
 SM_CHECK_KIND(StmtKind, StmtNode, View, ViewStmt)
@@ -302,7 +306,8 @@ class Dumper {
     static constexpr std::string_view kNames[] = {"Variable", "Variables", "Model", "Physicals", "Meshes", "All", "Options"};
     return "(delete " + std::string(kNames[static_cast<int>(n.what)]) + (n.what == DeleteWhat::Variable ? " " + name(n.name) : "") + ")";
   }
-  std::string node(const DeleteFieldStmt& n) { return std::string(n.coastline ? "(delete-coastline " : "(delete-field ") + expr(n.id) + ")"; }
+  std::string node(const DeleteFieldStmt& n) { return "(delete-field " + expr(n.id) + ")"; }
+  std::string node(const DeleteCoastlineStmt& n) { return "(delete-coastline " + expr(n.id) + ")"; }
   std::string node(const DeleteShapesStmt& n) { return std::string(n.recursive ? "(recursive-delete " : "(delete ") + shapes(n.shapes) + ")"; }
   std::string node(const PrintStmt& n) {
     static constexpr std::string_view kNames[] = {"Printf", "Warning", "Error"};
@@ -372,11 +377,16 @@ class Dumper {
   }
   std::string node(const ReverseMeshStmt& n) { return "(reverse-mesh " + ent(n.ent) + " " + (n.all ? ":" : expr(n.tags)) + ")"; }
   std::string node(const CompoundStmt& n) { return "(compound " + ent(n.ent) + " " + expr(n.tags) + ")"; }
-  std::string node(const FieldNewStmt& n) { return std::string(n.coastline ? "(coastline-new " : "(field-new ") + expr(n.id) + " " + s(n.type) + ")"; }
+  std::string node(const FieldNewStmt& n) { return "(field-new " + expr(n.id) + " " + s(n.type) + ")"; }
   std::string node(const FieldOptionStmt& n) {
-    return std::string(n.coastline ? "(coastline-option " : "(field-option ") + expr(n.id) + " " + s(n.option) + " " + expr(n.value) + ")";
+    return "(field-option " + expr(n.id) + " " + s(n.option) + " " + expr(n.value) + ")";
   }
-  std::string node(const FieldActionStmt& n) { return std::string(n.coastline ? "(coastline-action " : "(field-action ") + expr(n.id) + " " + s(n.action) + ")"; }
+  std::string node(const FieldActionStmt& n) { return "(field-action " + expr(n.id) + " " + s(n.action) + ")"; }
+  std::string node(const CoastlineNewStmt& n) { return "(coastline-new " + expr(n.id) + " " + s(n.format) + ")"; }
+  std::string node(const CoastlineOptionStmt& n) {
+    return "(coastline-option " + expr(n.id) + " " + s(n.option) + " " + expr(n.value) + ")";
+  }
+  std::string node(const CoastlineActionStmt& n) { return "(coastline-action " + expr(n.id) + " " + s(n.action) + ")"; }
   std::string node(const BackgroundFieldStmt& n) { return "(" + s(n.which) + "-field " + expr(n.value) + ")"; }
   std::string node(const PluginStmt& n) { return "(plugin " + s(n.plugin) + " " + s(n.member) + (n.value.valid() ? " " + expr(n.value) : "") + ")"; }
   std::string node(const ViewStmt& n) {

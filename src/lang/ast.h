@@ -210,8 +210,10 @@ struct DefineConstantStmt { std::vector<DefineEntry> entries; };
 enum class DeleteWhat : std::uint8_t { Variable, Variables, Model, Physicals, Meshes, All, Options };
 /// `Delete x;` (Variable: name), `Delete Variables;`, `Delete Model;` ...
 struct DeleteStmt { DeleteWhat what = DeleteWhat::Variable; Name name; };
-/// `Delete Field[n];` (coastline: native `Delete Coastline[n];`)
-struct DeleteFieldStmt { bool coastline = false; ExprId id; };
+/// `Delete Field[n];`
+struct DeleteFieldStmt { ExprId id; };
+/// Native `Delete Coastline[n];`
+struct DeleteCoastlineStmt { ExprId id; };
 /// `Delete { shapes }` / `Recursive Delete { shapes }`
 struct DeleteShapesStmt { bool recursive = false; ShapeBlock shapes; };
 
@@ -303,13 +305,19 @@ struct ReverseMeshStmt { EntityKind ent = EntityKind::Curve; bool all = false; E
 /// `Compound Curve{tags};` / `Compound Surface{tags};` (meshing constraint)
 struct CompoundStmt { EntityKind ent = EntityKind::Curve; ExprId tags; };
 
-/// `Field[id] = Type;` (coastline: native `Coastline[id] = Kind;`)
-struct FieldNewStmt { bool coastline = false; ExprId id; StrId type; SourceRange type_range; };
+/// `Field[id] = Type;`
+struct FieldNewStmt { ExprId id; StrId type; SourceRange type_range; };
 /// `Field[id].Option = value;` value: number/string expression, or a ListExpr
 /// when written in braces (braced = true; Gmsh ignores a bare value for lists).
-struct FieldOptionStmt { bool coastline = false; ExprId id; StrId option; SourceRange option_range; ExprId value; bool braced = false; };
+struct FieldOptionStmt { ExprId id; StrId option; SourceRange option_range; ExprId value; bool braced = false; };
 /// `Field[id].Action;` (a callback, e.g. `Field[1].Run;`)
-struct FieldActionStmt { bool coastline = false; ExprId id; StrId action; SourceRange action_range; };
+struct FieldActionStmt { ExprId id; StrId action; SourceRange action_range; };
+/// Native `Coastline[id] = Format;` (GSHHS, Shapefile, LonLatText, Loops2): written like a field.
+struct CoastlineNewStmt { ExprId id; StrId format; SourceRange format_range; };
+/// Native `Coastline[id].Option = value;` (value as in FieldOptionStmt).
+struct CoastlineOptionStmt { ExprId id; StrId option; SourceRange option_range; ExprId value; bool braced = false; };
+/// Native `Coastline[id].Word;` (no coastline has an action: always an error).
+struct CoastlineActionStmt { ExprId id; StrId action; SourceRange action_range; };
 /// `Background Field = n;` / `BoundaryLayer Field = n;` (which: the first word)
 struct BackgroundFieldStmt { StrId which; ExprId value; };
 /// `Plugin(Name).Option = value;` / `Plugin(Name).Run;` (value invalid: an action)
@@ -323,16 +331,17 @@ struct ColorStmt { ExprId color; ShapeBlock shapes; };
 
 // Keep in the order of StmtNode's alternatives.
 enum class StmtKind : std::uint8_t {
-  Assign, IncDec, DefineConstant, Delete, DeleteField, DeleteShapes, Print, If, For, Macro,
+  Assign, IncDec, DefineConstant, Delete, DeleteField, DeleteCoastline, DeleteShapes, Print, If, For, Macro,
   Call, Return, Exit, Abort, Assert, Include, Command, SetFactory, SetMaxTag, Point, Curve,
   CurveLoop, Surface, SurfaceLoop, Volume, Sphere, ParametricSurface, CoordinatesSurface,
   EuclideanCoordinates, Physical, Coherence, SplitCurve, ShapeExpr, Embed, MeshSize,
   TransfiniteCurve, TransfiniteSurface, Recombine, EntitySetting, Periodic, ReverseMesh,
-  Compound, FieldNew, FieldOption, FieldAction, BackgroundField, Plugin, View, Color
+  Compound, FieldNew, FieldOption, FieldAction, CoastlineNew, CoastlineOption, CoastlineAction,
+  BackgroundField, Plugin, View, Color
 };
 using StmtNode =
     std::variant<AssignStmt, IncDecStmt, DefineConstantStmt, DeleteStmt, DeleteFieldStmt,
-                 DeleteShapesStmt, PrintStmt, IfStmt, ForStmt, MacroStmt, CallStmt, ReturnStmt,
+                 DeleteCoastlineStmt, DeleteShapesStmt, PrintStmt, IfStmt, ForStmt, MacroStmt, CallStmt, ReturnStmt,
                  ExitStmt, AbortStmt, AssertStmt, IncludeStmt, CommandStmt, SetFactoryStmt,
                  SetMaxTagStmt, PointStmt, CurveStmt, CurveLoopStmt, SurfaceStmt, SurfaceLoopStmt,
                  VolumeStmt, SphereStmt, ParametricSurfaceStmt, CoordinatesSurfaceStmt,
@@ -340,7 +349,7 @@ using StmtNode =
                  ShapeExprStmt, EmbedStmt, MeshSizeStmt, TransfiniteCurveStmt,
                  TransfiniteSurfaceStmt, RecombineStmt, EntitySettingStmt, PeriodicStmt,
                  ReverseMeshStmt, CompoundStmt, FieldNewStmt, FieldOptionStmt, FieldActionStmt,
-                 BackgroundFieldStmt, PluginStmt, ViewStmt, ColorStmt>;
+                 CoastlineNewStmt, CoastlineOptionStmt, CoastlineActionStmt, BackgroundFieldStmt, PluginStmt, ViewStmt, ColorStmt>;
 
 struct Stmt {
   SourceRange range;    ///< the whole statement (for a block: keyword to End keyword)

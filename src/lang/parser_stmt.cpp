@@ -280,7 +280,7 @@ StmtId Parser::parse_delete() {
     const ExprId id = parse_expr();
     expect_closing(Tok::RBracket, open);
     expect_semicolon();
-    return add(kw, DeleteFieldStmt{coast, id});
+    return coast ? add(kw, DeleteCoastlineStmt{id}) : add(kw, DeleteFieldStmt{id});
   }
   DeleteStmt node;
   if (at(Tok::Ident) && at(Tok::Semicolon, 1)) {
@@ -308,21 +308,20 @@ StmtId Parser::parse_field_statement() {
   if (accept(Tok::Assign)) {
     const Token type = expect_member_word(coast ? "a coastline kind" : "a field type");
     expect_semicolon();
-    return add(kw, FieldNewStmt{coast, id, ast_.intern(text(type)), type.range});
+    const StrId word = ast_.intern(text(type));
+    return coast ? add(kw, CoastlineNewStmt{id, word, type.range}) : add(kw, FieldNewStmt{id, word, type.range});
   }
   expect(Tok::Dot, "'=' or '.' after ']'");
   const Token opt = expect_member_word(coast ? "a coastline option" : "a field option");
-  if (accept(Tok::Semicolon)) return add(kw, FieldActionStmt{coast, id, ast_.intern(text(opt)), opt.range});
+  const StrId member = ast_.intern(text(opt));
+  if (accept(Tok::Semicolon))
+    return coast ? add(kw, CoastlineActionStmt{id, member, opt.range}) : add(kw, FieldActionStmt{id, member, opt.range});
   expect(Tok::Assign, "'=' after the option name");
-  FieldOptionStmt node{coast, id, ast_.intern(text(opt)), opt.range, ExprId{}, false};
-  if (at(Tok::LBrace)) {
-    node.braced = true;
-    node.value = parse_braced_list();
-  } else {
-    node.value = parse_expr();
-  }
+  const bool braced = at(Tok::LBrace);
+  const ExprId value = braced ? parse_braced_list() : parse_expr();
   expect_semicolon();
-  return add(kw, node);
+  return coast ? add(kw, CoastlineOptionStmt{id, member, opt.range, value, braced})
+               : add(kw, FieldOptionStmt{id, member, opt.range, value, braced});
 }
 
 // background_field := IDENT "Field" "=" list_value ";"    (IDENT: Background | BoundaryLayer)

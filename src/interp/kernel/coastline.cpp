@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "base/check.h"
 #include "coast/import.h"
 #include "coast/read.h"
 #include "field/registry.h"
@@ -95,12 +96,12 @@ CoastlineDef& require_coast(Interpreter& in, int id, SourceRange at, std::string
                                       : fmt::format(" (defined: {})", fmt::join(ids, ", "))));
 }
 
-void exec_coast_new(Interpreter& in, const Stmt& s, const FieldNewStmt& n) {
+void exec_coast_new(Interpreter& in, const Stmt& s, const CoastlineNewStmt& n) {
   const int id = coast_id(in, n.id);
-  const std::string format(in.ast().str(n.type));
+  const std::string format(in.ast().str(n.format));
   const auto parsed = coast::parse_coast_format(format);
   if (!parsed) {
-    in.fail_fmt(n.type_range, Diag::UnknownCoastlineFormat,
+    in.fail_fmt(n.format_range, Diag::UnknownCoastlineFormat,
                 fmt::format("unknown coastline format '{}'{}; the formats are GSHHS, Shapefile, LonLatText and Loops2",
                             format, did_you_mean(format, {"GSHHS", "Shapefile", "LonLatText", "Loops2"})));
   }
@@ -168,7 +169,7 @@ void check_option_value(Interpreter& in, int id, const CoastOption& o, const Val
   }
 }
 
-void exec_coast_option(Interpreter& in, const Stmt& s, const FieldOptionStmt& n) {
+void exec_coast_option(Interpreter& in, const Stmt& s, const CoastlineOptionStmt& n) {
   const int id = coast_id(in, n.id);
   CoastlineDef& d = require_coast(in, id, in.ast().expr(n.id).range, "set an option of");
   const std::string option(in.ast().str(n.option));
@@ -199,7 +200,7 @@ void exec_coast_option(Interpreter& in, const Stmt& s, const FieldOptionStmt& n)
   d.option_at.insert_or_assign(option, s.range);
 }
 
-void exec_delete_coast(Interpreter& in, const DeleteFieldStmt& n) {
+void exec_delete_coast(Interpreter& in, const DeleteCoastlineStmt& n) {
   const int id = coast_id(in, n.id);
   require_coast(in, id, in.ast().expr(n.id).range, "delete");
   in.kernel().coastlines.erase(id);   // the entities an import created stay in the model
@@ -386,24 +387,21 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
 
 void exec_coastline_stmt(Interpreter& in, StmtId id) {
   const Stmt& s = in.ast().stmt(id);
-  std::visit(
-      [&](const auto& n) {
-        using T = std::decay_t<decltype(n)>;
-        if constexpr (std::is_same_v<T, FieldNewStmt>) {
-          exec_coast_new(in, s, n);
-        } else if constexpr (std::is_same_v<T, FieldOptionStmt>) {
-          exec_coast_option(in, s, n);
-        } else if constexpr (std::is_same_v<T, DeleteFieldStmt>) {
-          exec_delete_coast(in, n);
-        } else if constexpr (std::is_same_v<T, FieldActionStmt>) {
-          const int cid = coast_id(in, n.id);
-          require_coast(in, cid, in.ast().expr(n.id).range, "run an action of");
-          in.fail_fmt(n.action_range, Diag::UnknownCoastlineOption,
-                      fmt::format("Coastline[{}] has no action '{}': import it with 'loops[] = Coastline{{{}}};'", cid,
-                                  in.ast().str(n.action), cid));
-        }
-      },
-      s.node);
+  switch (s.kind()) {
+    case StmtKind::CoastlineNew: exec_coast_new(in, s, std::get<CoastlineNewStmt>(s.node)); break;
+    case StmtKind::CoastlineOption: exec_coast_option(in, s, std::get<CoastlineOptionStmt>(s.node)); break;
+    case StmtKind::DeleteCoastline: exec_delete_coast(in, std::get<DeleteCoastlineStmt>(s.node)); break;
+    case StmtKind::CoastlineAction: {
+      const auto& n = std::get<CoastlineActionStmt>(s.node);
+      const int cid = coast_id(in, n.id);
+      require_coast(in, cid, in.ast().expr(n.id).range, "run an action of");
+      in.fail_fmt(n.action_range, Diag::UnknownCoastlineOption,
+                  fmt::format("Coastline[{}] has no action '{}': import it with 'loops[] = Coastline{{{}}};'", cid,
+                              in.ast().str(n.action), cid));
+      break;
+    }
+    default: SM_ASSERT(false, "kernel/statements.def sent a statement that is not a coastline statement");
+  }
 }
 
 Value eval_coastline_query(Interpreter& in, ExprId e) {

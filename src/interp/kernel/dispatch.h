@@ -24,8 +24,7 @@ void exec_set_factory_stmt(Interpreter& in, lang::StmtId s);
 /// `Coherence;` / `Coherence Point{...}` (geometry.cpp); `Coherence Mesh;` goes to exec_mesh_stmt.
 void exec_coherence_stmt(Interpreter& in, lang::StmtId s);
 /// Field statements (fields.cpp): `Field[1] = Distance;`, options, actions, `Delete
-/// Field[n];`, Background Field; the coastline forms of the same syntax go to
-/// exec_coastline_stmt.
+/// Field[n];`, Background Field.
 void exec_field_stmt(Interpreter& in, lang::StmtId s);
 /// `Coastline[n] = Format;`, `Coastline[n].Option = v;`, `Delete Coastline[n];` (coastline.cpp).
 void exec_coastline_stmt(Interpreter& in, lang::StmtId s);

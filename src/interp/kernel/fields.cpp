@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "base/check.h"
 #include "field/error.h"
 #include "interp/kernel/dispatch.h"
 #include "interp/kernel/field_eval.h"
@@ -178,34 +179,14 @@ void exec_background_field(Interpreter& in, StmtId id, const Stmt& s, const Back
 
 void exec_field_stmt(Interpreter& in, StmtId id) {
   const Stmt& s = in.ast().stmt(id);
-  const bool coastline = std::visit(
-      [](const auto& n) {
-        if constexpr (requires { n.coastline; }) return n.coastline;
-        return false;
-      },
-      s.node);
-  if (coastline) {   // `Coastline[n] = ...`: the same syntax, the coastline importer's statements
-    exec_coastline_stmt(in, id);
-    return;
+  switch (s.kind()) {
+    case StmtKind::FieldNew: exec_field_new(in, s, std::get<FieldNewStmt>(s.node)); break;
+    case StmtKind::FieldOption: exec_field_option(in, s, std::get<FieldOptionStmt>(s.node)); break;
+    case StmtKind::FieldAction: exec_field_action(in, std::get<FieldActionStmt>(s.node)); break;
+    case StmtKind::DeleteField: exec_delete_field(in, std::get<DeleteFieldStmt>(s.node)); break;
+    case StmtKind::BackgroundField: exec_background_field(in, id, s, std::get<BackgroundFieldStmt>(s.node)); break;
+    default: SM_ASSERT(false, "kernel/statements.def sent a statement that is not a field statement");
   }
-  std::visit(
-      [&](const auto& n) {
-        using T = std::decay_t<decltype(n)>;
-        if constexpr (std::is_same_v<T, FieldNewStmt>) {
-          exec_field_new(in, s, n);
-        } else if constexpr (std::is_same_v<T, FieldOptionStmt>) {
-          exec_field_option(in, s, n);
-        } else if constexpr (std::is_same_v<T, FieldActionStmt>) {
-          exec_field_action(in, n);
-        } else if constexpr (std::is_same_v<T, DeleteFieldStmt>) {
-          exec_delete_field(in, n);
-        } else if constexpr (std::is_same_v<T, BackgroundFieldStmt>) {
-          exec_background_field(in, id, s, n);
-        } else {
-          in.not_supported_stmt(id, "field statement");
-        }
-      },
-      s.node);
 }
 
 }  // namespace sm::interp

@@ -93,9 +93,10 @@ void check_stmt_exprs(Interpreter& in, StmtId id) {
         } else if constexpr (std::is_same_v<T, ReverseMeshStmt> || std::is_same_v<T, CompoundStmt>) {
           check(n.tags);
         } else if constexpr (std::is_same_v<T, FieldNewStmt> || std::is_same_v<T, FieldActionStmt> ||
-                             std::is_same_v<T, DeleteFieldStmt>) {
+                             std::is_same_v<T, DeleteFieldStmt> || std::is_same_v<T, CoastlineNewStmt> ||
+                             std::is_same_v<T, CoastlineActionStmt> || std::is_same_v<T, DeleteCoastlineStmt>) {
           check(n.id);
-        } else if constexpr (std::is_same_v<T, FieldOptionStmt>) {
+        } else if constexpr (std::is_same_v<T, FieldOptionStmt> || std::is_same_v<T, CoastlineOptionStmt>) {
           check(n.id), check(n.value);
         } else if constexpr (std::is_same_v<T, BackgroundFieldStmt>) {
           check(n.value);

@@ -1,7 +1,7 @@
 // Mesh commands: `Mesh 1;` runs the 1D mesher (mesh/mesh1d) on the model with the
 // script's Mesh.* options and Background Field, `Mesh 2;` then meshes the faces
 // (mesh/mesh2d, Mesh.Algorithm 1, 2, 5 or 6) and prints the statistics, `Save "f";`
-// writes the current mesh (MSH 2.2/4.1 or VTK by extension) atomically, and the
+// writes the current mesh atomically in a format of io/output_format.h, and the
 // command line's -1 / -2 do both. The other mesh commands and post-processing
 // statements are reported as not supported.
 #include "interp/kernel/mesh_commands.h"
@@ -25,10 +25,7 @@
 #include "interp/interpreter.h"
 #include "interp/progress_sink.h"
 #include "io/from_model_mesh.h"
-#include "io/msh_writer.h"
-#include "io/png_writer.h"
-#include "io/svg_writer.h"
-#include "io/vtk_writer.h"
+#include "io/output_format.h"
 #include "mesh/mesh1d.h"
 #include "mesh/mesh2d.h"
 #include "mesh/mesh_stats.h"
@@ -242,53 +239,61 @@ MeshFailure mesh_model(Interpreter& in, int dim, SourceRange where) {
   }
 }
 
+// The format `path` is written in when no -format names one: Mesh.Format's number, or
+// with Mesh.Format 10 (auto) the file's extension; nullptr and why not in *why.
+const io::OutputFormat* guess_output_format(const Options& o, const std::string& path, std::string* why) {
+  const std::string ext = std::filesystem::path(path).extension().string();
+  const int mesh_format = static_cast<int>(o.number("Mesh.Format"));
+  const io::OutputFormat* f = nullptr;
+  if (mesh_format != 10) {
+    f = io::output_format_of_number(mesh_format);
+  } else if (ext.empty() && base::writes_in_place(path)) {
+    // Standard output ('-o -'), a FIFO or a device has no extension: the first format (MSH).
+    f = &io::output_formats().front();
+  } else {
+    f = io::output_format_of_extension(ext);
+  }
+  if (!f)
+    *why = ext.empty() ? fmt::format("the file name has no extension (use {})", io::output_format_extensions())
+                       : fmt::format("unknown file extension '{}' (use {})", ext, io::output_format_extensions());
+  return f;
+}
+
 // Writes the current mesh to `path` in `format` (see mesh_commands.h); "" or why not.
-std::string save_mesh(Interpreter& in, const std::string& path, std::string format) {
+std::string save_mesh(Interpreter& in, const std::string& path, const std::string& format) {
   const KernelState& k = in.kernel();
   const ModelMesh empty;
   io::MeshModel mm = io::from_model_mesh(k.model, k.mesh ? *k.mesh : empty);
   const Options& o = in.options();
+  const io::OutputFormat* f = nullptr;
   if (format.empty()) {
-    const std::string ext = std::filesystem::path(path).extension().string();
-    const int mesh_format = static_cast<int>(o.number("Mesh.Format"));
-    // Standard output ('-o -'), a FIFO or a device has no extension: MSH unless
-    // Mesh.Format or -format says otherwise.
-    const bool stream = ext.empty() && base::writes_in_place(path);
-    if (mesh_format == 1 || (mesh_format == 10 && (ext == ".msh" || stream))) format = "msh";
-    else if (mesh_format == 16 || (mesh_format == 10 && ext == ".vtk")) format = "vtk";
-    else if (mesh_format == 10 && (ext == ".svg" || ext == ".png")) format = ext.substr(1);
-    else if (mesh_format == 10 && ext == ".14") format = "fort14";
-    else if (mesh_format == 10 && ext == ".gr3") format = "gr3";
-    else if (ext.empty()) return "the file name has no extension (use .msh, .vtk, .svg, .png, .14 or .gr3)";
-    else return fmt::format("unknown file extension '{}' (use .msh, .vtk, .svg, .png, .14 or .gr3)", ext);
+    std::string why;
+    f = guess_output_format(o, path, &why);
+    if (!f) return why;
+  } else {
+    f = io::find_output_format(format);
+    if (!f) return fmt::format("unknown format '{}' ({})", format, io::output_format_names());
   }
-  if (format == "gr3" && base::writes_in_place(path)) return "SCHISM's hgrid.gr3 comes with hgrid.ll beside it: give a file name";
-  if (format == "fort14" || format == "gr3") return save_ocean_grid(in, path, format);
-  const bool binary = o.number("Mesh.Binary") != 0;
-  const bool save_all = o.number("Mesh.SaveAll") != 0;
+  if (!f->needs_file_name.empty() && base::writes_in_place(path)) return std::string(f->needs_file_name);
+  io::OutputSettings settings;
+  switch (f->input) {
+    case io::OutputInput::OceanGrid:
+      if (std::string why = ocean_grid_options(in, path, mm, settings.ocean); !why.empty()) return why;
+      break;
+    case io::OutputInput::Picture:
+      if (std::string why = picture_options(in, settings.picture); !why.empty()) return why;
+      break;
+    case io::OutputInput::Mesh:
+      if (std::string why = apply_node_coordinates(in, mm); !why.empty()) return why;
+      break;
+  }
+  settings.binary = o.number("Mesh.Binary") != 0;
+  settings.save_all = o.number("Mesh.SaveAll") != 0;
+  settings.save_parametric = o.number("Mesh.SaveParametric") != 0;
+  const double version = f->msh_file_version != 0 ? f->msh_file_version : o.number("Mesh.MshFileVersion");
+  settings.msh_version = version < 3 ? 22 : 41;
   std::string error;
-  if (format == "svg" || format == "png") {
-    io::PictureOptions po;
-    if (std::string why = picture_options(in, po); !why.empty()) return why;
-    const bool ok = format == "svg" ? io::save_svg(mm, po, path, &error) : io::save_png(mm, po, path, &error);
-    return ok ? std::string{} : error;
-  }
-  if (std::string why = apply_node_coordinates(in, mm); !why.empty()) return why;
-  if (format == "vtk") {
-    io::VtkOptions vo;
-    vo.binary = binary;
-    vo.save_all = save_all;
-    return io::save_vtk(mm, vo, path, &error) ? std::string{} : error;
-  }
-  io::MshOptions mo;
-  if (format == "msh22" || format == "msh2") mo.version = 22;
-  else if (format == "msh41" || format == "msh4") mo.version = 41;
-  else if (format == "msh") mo.version = o.number("Mesh.MshFileVersion") < 3 ? 22 : 41;
-  else return fmt::format("unknown format '{}' (msh41, msh22, msh4, msh2, msh, vtk, svg, png, fort14, gr3)", format);
-  mo.binary = binary;
-  mo.save_all = save_all;
-  mo.save_parametric = o.number("Mesh.SaveParametric") != 0;
-  return io::save_msh(mm, mo, path, &error) ? std::string{} : error;
+  return f->write(mm, settings, path, &error) ? std::string{} : error;
 }
 
 void exec_mesh(Interpreter& in, StmtId id, const CommandStmt& c) {
@@ -376,9 +381,10 @@ bool mesh_from_command_line(Interpreter& in, int dim, const std::string& output,
   std::string path = output;
   if (path.empty()) {
     std::filesystem::path p(first_script);
-    if (format == "fort14") p.replace_filename("fort.14");
-    else if (format == "gr3") p.replace_filename("hgrid.gr3");
-    else p.replace_extension(format == "vtk" || format == "svg" || format == "png" ? "." + format : ".msh");
+    const io::OutputFormat* row = io::find_output_format(format);
+    if (!row) row = &io::output_formats().front();
+    if (!row->default_file_name.empty()) p.replace_filename(std::string(row->default_file_name));
+    else p.replace_extension(std::string(row->extension));
     path = p.string();
   }
   std::string err;

@@ -10,7 +10,7 @@ class Interpreter;
 
 /// `-1` / `-2` after the scripts ran: meshes the model up to `dim` (1 or 2) and
 /// writes it atomically to `output` (default: the first script's name with `.msh`) in
-/// `format` ("msh41", "msh22", "msh4", "msh2", "msh", "vtk"; empty: by the extension).
+/// `format` (a name of io/output_format.h; empty: by Mesh.Format or the extension).
 /// Failures become diagnostics (kernel errors with notes at the statements that created
 /// the entities involved); returns false then.
 bool mesh_from_command_line(Interpreter& in, int dim, const std::string& output, const std::string& format,

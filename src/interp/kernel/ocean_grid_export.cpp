@@ -15,7 +15,6 @@
 
 #include "interp/kernel/field_eval.h"
 #include "interp/interpreter.h"
-#include "io/from_model_mesh.h"
 #include "io/ocean_grid.h"
 
 namespace sm::interp {
@@ -96,11 +95,11 @@ std::string boundary_strings(const geo::Model& model, const ModelMesh& mesh,
 
 }  // namespace
 
-std::string save_ocean_grid(Interpreter& in, const std::string& path, const std::string& format) {
+std::string ocean_grid_options(Interpreter& in, const std::string& path, const io::MeshModel& mm,
+                               io::OceanGridOptions& opt) {
   const KernelState& k = in.kernel();
   if (!k.mesh || k.mesh->surfaces.empty()) return "no 2D mesh to write (mesh with -2 or 'Mesh 2;' first)";
-  const io::MeshModel mm = io::from_model_mesh(k.model, *k.mesh);
-  io::OceanGridOptions opt;
+  opt = {};
   opt.title = fmt::format("stereomesh {}", std::filesystem::path(path).filename().string());
   for (const auto& [tag, g] : k.model.geometries()) {
     opt.centre = g.centre();
@@ -115,10 +114,7 @@ std::string save_ocean_grid(Interpreter& in, const std::string& path, const std:
     opt.depth.resize(mm.xyz.size());
     f->eval(mm.xyz, opt.depth);
   }
-  if (std::string why = boundary_strings(k.model, *k.mesh, opt.boundaries); !why.empty()) return why;
-  std::string error;
-  const bool ok = format == "gr3" ? io::save_schism(mm, opt, path, &error) : io::save_fort14(mm, opt, path, &error);
-  return ok ? std::string{} : error;
+  return boundary_strings(k.model, *k.mesh, opt.boundaries);
 }
 
 }  // namespace sm::interp

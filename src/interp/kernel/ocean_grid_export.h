@@ -6,11 +6,17 @@
 
 #include <string>
 
+#include "io/mesh_model.h"
+#include "io/ocean_grid.h"
+
 namespace sm::interp {
 
 class Interpreter;
 
-/// Writes `path` as "fort14" or "gr3" (with hgrid.ll beside it); "" or why not.
-std::string save_ocean_grid(Interpreter& in, const std::string& path, const std::string& format);
+/// What the fort.14 / hgrid.gr3 writers read besides `mm` (the model's 2D mesh), for the
+/// file `path` (its name is the grid's title): the sphere, depths, boundary strings.
+/// "" or why not (no 2D mesh, a depth field that cannot be built).
+std::string ocean_grid_options(Interpreter& in, const std::string& path, const io::MeshModel& mm,
+                               io::OceanGridOptions& opt);
 
 }  // namespace sm::interp

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cli/args.h"
+#include "io/output_format.h"
 #include "run_binary.h"
 
 using sm::cli::parse_args;
@@ -224,4 +225,25 @@ TEST_CASE("cli: running out of memory while meshing is a located script error, n
   CHECK(err.find("[out-of-memory]") != std::string::npos);
   CHECK_FALSE(fs::exists(dir / "oom.msh"));
   fs::remove_all(dir);
+}
+
+TEST_CASE("cli: -format and --help follow io/output_format.h's table") {
+  const std::string usage = sm::cli::usage_text();
+  const std::size_t line = usage.find("  -format NAME        ");
+  REQUIRE(line != std::string::npos);
+  const std::string section = usage.substr(line, usage.find("  -bin", line) - line);
+  for (const sm::io::OutputFormat& f : sm::io::output_formats()) {
+    CAPTURE(f.name);
+    CHECK(section.find(std::string(f.name)) != std::string::npos);
+    const sm::cli::ParseOutcome c = parse_args({"a.geo", "-format", std::string(f.name)});
+    REQUIRE(c.ok);
+    CHECK(c.args.format == f.name);
+    std::vector<std::pair<std::string, double>> expected;
+    if (f.mesh_format != 0) expected.emplace_back("Mesh.Format", f.mesh_format);
+    if (f.msh_file_version != 0) expected.emplace_back("Mesh.MshFileVersion", f.msh_file_version);
+    CHECK(c.args.option_numbers == expected);
+  }
+  const sm::cli::ParseOutcome bad = parse_args({"a.geo", "-format", "stl"});
+  REQUIRE_FALSE(bad.ok);
+  CHECK(bad.error == "unknown format 'stl' (" + sm::io::output_format_names() + ")");
 }

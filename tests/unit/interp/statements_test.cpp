@@ -30,6 +30,10 @@ TEST_CASE("statements: the evaluator's kinds have no handler, every other kind h
 TEST_CASE("statements: each family's rows name its handler") {
   CHECK((kernel_stmt_handler(StmtKind::FieldNew) == &sm::interp::exec_field_stmt));
   CHECK((kernel_stmt_handler(StmtKind::BackgroundField) == &sm::interp::exec_field_stmt));
+  CHECK((kernel_stmt_handler(StmtKind::CoastlineNew) == &sm::interp::exec_coastline_stmt));
+  CHECK((kernel_stmt_handler(StmtKind::CoastlineOption) == &sm::interp::exec_coastline_stmt));
+  CHECK((kernel_stmt_handler(StmtKind::CoastlineAction) == &sm::interp::exec_coastline_stmt));
+  CHECK((kernel_stmt_handler(StmtKind::DeleteCoastline) == &sm::interp::exec_coastline_stmt));
   CHECK((kernel_stmt_handler(StmtKind::Point) == &sm::interp::exec_geometry_stmt));
   CHECK((kernel_stmt_handler(StmtKind::SetFactory) == &sm::interp::exec_set_factory_stmt));
   CHECK((kernel_stmt_handler(StmtKind::Coherence) == &sm::interp::exec_coherence_stmt));

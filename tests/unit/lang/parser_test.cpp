@@ -134,6 +134,28 @@ TEST_CASE("parser: fields, coastlines, plugins") {
   CHECK(ast_of("Plugin(GSHHS).Run;") == "(plugin GSHHS Run)");
 }
 
+TEST_CASE("parser: Field and Coastline statements are nodes of their own kind") {
+  const auto kind_of = [](const std::string& text) {
+    SourceManager sm;
+    Diagnostics diags(sm);
+    Ast ast;
+    const ParseResult r = parse_file(sm, sm.add_buffer("t.geo", text).file, ast, diags, {});
+    REQUIRE(r.stmts.size() == 1);
+    return ast.stmt(r.stmts[0]).kind();
+  };
+  CHECK(kind_of("Field[1] = Threshold;") == StmtKind::FieldNew);
+  CHECK(kind_of("Field[1].InField = 2;") == StmtKind::FieldOption);
+  CHECK(kind_of("Field[1].Run;") == StmtKind::FieldAction);
+  CHECK(kind_of("Delete Field[1];") == StmtKind::DeleteField);
+  CHECK(kind_of("Coastline[1] = GSHHS;") == StmtKind::CoastlineNew);
+  CHECK(kind_of("Coastline[1].Levels = {1};") == StmtKind::CoastlineOption);
+  CHECK(kind_of("Coastline[1].Run;") == StmtKind::CoastlineAction);
+  CHECK(kind_of("Delete Coastline[1];") == StmtKind::DeleteCoastline);
+  CHECK(ast_of("Coastline[2].Run;") == "(coastline-action 2 Run)");
+  CHECK(ast_of("Delete Coastline[2];") == "(delete-coastline 2)");
+  CHECK(ast_of("Coastline[1].FileName = \"a.b\";") == "(coastline-option 1 FileName \"a.b\")");
+}
+
 namespace {
 // The text of a Gmsh tutorial from the gmsh-doc package (gzipped or not), or "".
 std::string read_tutorial(const std::string& name) {
