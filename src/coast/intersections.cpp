@@ -11,6 +11,7 @@
 
 #include "coast/place_pairs.h"
 #include "exact/predicates.h"
+#include "exact/segments.h"
 
 namespace sm::coast {
 namespace {
@@ -95,15 +96,8 @@ bool adjacent(const Seg& s, const Seg& t) {
   return (s.index + 1) % s.n == t.index || (t.index + 1) % t.n == s.index;
 }
 
-bool on_segment(Vec2 a, Vec2 b, Vec2 p) {   // p collinear with ab: within its box?
-  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
-         p.y <= std::max(a.y, b.y);
-}
-
 // Classifies two segments; false when they are disjoint.
 bool classify(const Seg& s, const Seg& t, HitKind& kind, Vec2& where) {
-  const Sign o1 = orient2d(s.a, s.b, t.a), o2 = orient2d(s.a, s.b, t.b);
-  const Sign o3 = orient2d(t.a, t.b, s.a), o4 = orient2d(t.a, t.b, s.b);
   if (adjacent(s, t)) {
     // Consecutive segments share a vertex; they are wrong only when they fold back
     // (collinear, the far end turning back onto the other segment).
@@ -118,21 +112,22 @@ bool classify(const Seg& s, const Seg& t, HitKind& kind, Vec2& where) {
     }
     return false;
   }
-  if (o1 != Sign::Zero && o1 == o2) return false;
-  if (o3 != Sign::Zero && o3 == o4) return false;
-  if (o1 == Sign::Zero && o2 == Sign::Zero) {   // collinear
-    if (on_segment(s.a, s.b, t.a) || on_segment(s.a, s.b, t.b) || on_segment(t.a, t.b, s.a) ||
-        on_segment(t.a, t.b, s.b)) {
+  const SegmentContact c = segment_contact(s.a, s.b, t.a, t.b);
+  switch (c.kind) {
+    case SegmentContactKind::None:
+      return false;
+    case SegmentContactKind::Overlap:
       kind = HitKind::Overlap;
       where = 0.5 * (s.a + s.b);
       return true;
+    case SegmentContactKind::Touch: {
+      kind = HitKind::Touch;
+      const Vec2 ends[4] = {s.a, s.b, t.a, t.b};
+      where = ends[c.end];
+      return true;
     }
-    return false;
-  }
-  if (o1 == Sign::Zero || o2 == Sign::Zero || o3 == Sign::Zero || o4 == Sign::Zero) {
-    kind = HitKind::Touch;
-    where = o1 == Sign::Zero ? t.a : o2 == Sign::Zero ? t.b : o3 == Sign::Zero ? s.a : s.b;
-    return true;
+    case SegmentContactKind::Cross:
+      break;
   }
   kind = HitKind::Cross;
   const Vec2 r = s.b - s.a, q = t.b - t.a;

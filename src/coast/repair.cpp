@@ -14,6 +14,7 @@
 #include "coast/polygon2d.h"
 #include "coast/spline_check.h"
 #include "exact/predicates.h"
+#include "exact/segments.h"
 
 namespace sm::coast {
 namespace {
@@ -628,19 +629,6 @@ void merge_across(std::vector<WorkCurve>& curves, WorkLoop& la, std::uint32_t ka
 }
 
 double lambda(Vec2 uv, double radius) { return 2.0 * radius / (1.0 + norm2(uv)); }
-
-// Closed segments pq and rs share a point (exact predicates).
-bool segments_meet(Vec2 p, Vec2 q, Vec2 r, Vec2 s) {
-  const Sign o1 = orient2d(p, q, r), o2 = orient2d(p, q, s), o3 = orient2d(r, s, p), o4 = orient2d(r, s, q);
-  if (o1 == Sign::Zero && o2 == Sign::Zero) {
-    auto within = [](Vec2 a, Vec2 b, Vec2 c) {
-      return std::min(a.x, b.x) <= c.x && c.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= c.y &&
-             c.y <= std::max(a.y, b.y);
-    };
-    return within(p, q, r) || within(p, q, s) || within(r, s, p) || within(r, s, q);
-  }
-  return !(o1 != Sign::Zero && o1 == o2) && !(o3 != Sign::Zero && o3 == o4);
-}
 
 }  // namespace
 

@@ -12,6 +12,7 @@
 
 #include "coast/place_pairs.h"
 #include "exact/predicates.h"
+#include "exact/segments.h"
 
 namespace sm::coast {
 namespace {
@@ -82,12 +83,7 @@ bool separated_by(const Hull& a, const Hull& b) {
 bool hulls_overlap(const Hull& a, const Hull& b) {
   if (a.lo.x > b.hi.x || b.lo.x > a.hi.x || a.lo.y > b.hi.y || b.lo.y > a.hi.y) return false;
   if (separated_by(a, b) || separated_by(b, a)) return false;
-  if (a.n == 2 && b.n == 2) {   // two segments: also check the collinear case by extents
-    const Sign o1 = orient2d(a.p[0], a.p[1], b.p[0]), o2 = orient2d(a.p[0], a.p[1], b.p[1]);
-    if (o1 == Sign::Zero && o2 == Sign::Zero) return true;   // boxes overlap and collinear
-    const Sign o3 = orient2d(b.p[0], b.p[1], a.p[0]), o4 = orient2d(b.p[0], b.p[1], a.p[1]);
-    return !(o1 == o2 && o1 != Sign::Zero) && !(o3 == o4 && o3 != Sign::Zero);
-  }
+  if (a.n == 2 && b.n == 2) return segments_meet(a.p[0], a.p[1], b.p[0], b.p[1]);   // two segments
   return true;
 }
 

@@ -6,8 +6,8 @@
 #include <limits>
 #include <numeric>
 
+#include "exact/triangle_rho.h"
 #include "geo/sphere.h"
-#include "io/element_quality.h"
 
 namespace sm::io {
 namespace {
@@ -116,7 +116,7 @@ Scene build_scene(const MeshModel& m, const PictureOptions& opt) {
         const std::uint32_t a = e.connectivity[k], b = e.connectivity[k + 1], c = e.connectivity[k + 2];
         Rgb fill{0xdf, 0xe9, 0xf2};
         if (opt.colour == PictureColour::Quality) {
-          fill = ramp(1 - triangle_rho(m.xyz[a], m.xyz[b], m.xyz[c]));
+          fill = ramp(1 - rho(m.xyz[a], m.xyz[b], m.xyz[c]));
         } else if (opt.colour == PictureColour::NodeValue && opt.node_values.size() == m.xyz.size()) {
           const double v = (opt.node_values[a] + opt.node_values[b] + opt.node_values[c]) / 3;
           fill = ramp((v - vmin) / (vmax - vmin));

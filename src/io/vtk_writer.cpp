@@ -10,7 +10,7 @@
 #include <numeric>
 
 #include "base/output_file.h"
-#include "io/element_quality.h"
+#include "exact/triangle_rho.h"
 #include "io/msh_writer.h"
 
 namespace sm::io {
@@ -84,7 +84,7 @@ CellArrays cell_arrays(const MeshModel& m, const Selection& s) {
     c.types.push_back(static_cast<std::uint8_t>(vtk_cell_type(e.type)));
     c.entity.push_back(e.tag);
     c.physical.push_back(e.physical_tags.empty() ? 0 : e.physical_tags.front());
-    c.quality.push_back(e.type == ElementType::Triangle3 ? triangle_rho(m.xyz[v[0]], m.xyz[v[1]], m.xyz[v[2]]) : 1.0);
+    c.quality.push_back(e.type == ElementType::Triangle3 ? rho(m.xyz[v[0]], m.xyz[v[1]], m.xyz[v[2]]) : 1.0);
   }
   return c;
 }

@@ -9,14 +9,9 @@
 
 #include <fmt/format.h>
 
-namespace sm {
+#include "exact/triangle_rho.h"
 
-double rho3(Vec3 a, Vec3 b, Vec3 c) {
-  const double la = norm(b - c), lb = norm(c - a), lc = norm(a - b);
-  const double area2 = norm2(cross(b - a, c - a));  // (2A)^2
-  const double den = (la + lb + lc) * la * lb * lc;
-  return den > 0 ? 4 * area2 / den : 0.0;
-}
+namespace sm {
 
 namespace {
 
@@ -59,7 +54,7 @@ MeshStats compute_stats(const ModelMesh& mesh, const std::vector<const SizeAt3*>
     const SizeAt3* size = index < size_of.size() ? size_of[index] : nullptr;
     ++index;
     for (const auto& t : sf.triangles) {
-      const double r = rho3(mesh.nodes[t[0]].xyz, mesh.nodes[t[1]].xyz, mesh.nodes[t[2]].xyz);
+      const double r = rho(mesh.nodes[t[0]].xyz, mesh.nodes[t[1]].xyz, mesh.nodes[t[2]].xyz);
       sum += r;
       s.min_rho = std::min(s.min_rho, r);
       if (r > 0.9) ++good;

@@ -37,9 +37,6 @@ struct SurfaceSize {
   SizeAt3 size;
 };
 
-/// 2 r_in / r_circ of a triangle in space: 16 A^2 / ((a + b + c) a b c); 0 if degenerate.
-double rho3(Vec3 a, Vec3 b, Vec3 c);
-
 /// Statistics over every surface triangle of the mesh. With `size`, each distinct
 /// triangle edge's chord length is divided by the size at its midpoint (the callback may
 /// project the midpoint onto the surface).

@@ -167,7 +167,7 @@ std::uint64_t Adapter::split_pass() {
 
 double Adapter::ball_min_rho(const std::vector<Side>& ring, Vec2 p) const {
   double q = 1;
-  for (Side x : ring) q = std::min(q, rho_fast(p, m_.pos(m_.dest(x)), m_.pos(m_.apex(x))));
+  for (Side x : ring) q = std::min(q, rho(p, m_.pos(m_.dest(x)), m_.pos(m_.apex(x))));
   return q;
 }
 
@@ -178,7 +178,7 @@ double Adapter::collapse_quality(VertexId w) const {
     const VertexId a = m_.dest(x), b = m_.apex(x);
     if (a == w || b == w) continue;
     if (length(w, a) > kLongEdge) return -1;
-    q = std::min(q, rho_fast(pw, m_.pos(a), m_.pos(b)));
+    q = std::min(q, rho(pw, m_.pos(a), m_.pos(b)));
   }
   return q;
 }

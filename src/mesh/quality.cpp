@@ -7,14 +7,6 @@
 
 namespace sm {
 
-double rho(Vec2 a, Vec2 b, Vec2 c) {
-  // r_in = 2A / P and r_circ = la lb lc / (4A), so 2 r_in / r_circ = 16 A^2 / (P la lb lc).
-  const double la = norm(b - c), lb = norm(c - a), lc = norm(a - b);
-  const double area = 0.5 * std::fabs(cross(b - a, c - a));
-  const double den = (la + lb + lc) * la * lb * lc;
-  return den > 0 ? 16 * area * area / den : 0.0;
-}
-
 double eta(Vec2 a, Vec2 b, Vec2 c) {
   const double s = norm2(b - c) + norm2(c - a) + norm2(a - b);
   const double area = 0.5 * std::fabs(cross(b - a, c - a));

@@ -1,18 +1,16 @@
-// Triangle quality and mesh statistics: rho = 2 r_in / r_circ (the paper's
-// aspect ratio, Gmsh's gamma), eta (mean ratio), and edge length over the
-// target size (median and 5-95% range).
+// Triangle quality and mesh statistics in the plane: rho (exact/triangle_rho.h), eta
+// (mean ratio), gamma, and edge length over the target size (median and 5-95% range).
 #pragma once
 
 #include <cstdint>
 #include <functional>
 
 #include "base/vec.h"
+#include "exact/triangle_rho.h"
 #include "mesh/triangulation.h"
 
 namespace sm {
 
-/// 2 r_in / r_circ: 1 for an equilateral triangle, 0 for a degenerate one.
-double rho(Vec2 a, Vec2 b, Vec2 c);
 /// Mean ratio 4 sqrt(3) area / (sum of squared edge lengths), in [0, 1].
 double eta(Vec2 a, Vec2 b, Vec2 c);
 /// 2 sqrt(3) r_in / longest edge, in [0, 1]: the 2D form of Gmsh's "gamma"

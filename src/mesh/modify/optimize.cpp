@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "exact/predicates.h"
+#include "exact/triangle_rho.h"
 
 namespace sm {
 namespace {
@@ -21,22 +22,6 @@ constexpr double kGood = 0.9;
 // lost triangle (lifting a bad triangle is worth a few good ones dropping a little, a
 // mediocre one is not), and earlier changes gained as many (Optimizer::bank_).
 constexpr double kTrade = 0.02;
-
-// rho = 2 r_in / r_circ = 16 A^2 / (perimeter * la * lb * lc); -1 unless a, b, c is
-// counter-clockwise in floating point (the exact test comes before anything is kept).
-inline double rho_ccw(Vec2 a, Vec2 b, Vec2 c) {
-  const double area2 = cross(b - a, c - a);
-  if (!(area2 > 0)) return -1;
-  const double la = std::sqrt(norm2(b - c)), lb = std::sqrt(norm2(c - a)), lc = std::sqrt(norm2(a - b));
-  return 4 * area2 * area2 / ((la + lb + lc) * la * lb * lc);
-}
-
-inline double rho_space(Vec3 a, Vec3 b, Vec3 c) {
-  const double area2 = norm(cross(b - a, c - a));
-  const double la = norm(b - c), lb = norm(c - a), lc = norm(a - b);
-  const double den = (la + lb + lc) * la * lb * lc;
-  return den > 0 ? 4 * area2 * area2 / den : 0.0;
-}
 
 // The point p that makes (p, b, c) equilateral and counter-clockwise: on the left of b -> c.
 inline Vec2 ideal_apex(Vec2 b, Vec2 c) {
@@ -130,7 +115,7 @@ class Optimizer {
   double quality(VertexId a, VertexId b, VertexId c) {
     const double q = rho_ccw(m_.pos(a), m_.pos(b), m_.pos(c));
     if (!space_ || q < 0) return q;
-    return rho_space(xyz(a), xyz(b), xyz(c));
+    return rho(xyz(a), xyz(b), xyz(c));
   }
   double tri_quality(TriId t) { return quality(m_.vertex(t, 0), m_.vertex(t, 1), m_.vertex(t, 2)); }
 
@@ -244,16 +229,14 @@ class Optimizer {
       double q;
       if (space_) {
         if (!(cross(e.b - p, e.c - p) > 0)) return -1;
-        q = rho_space(ps, e.sb, e.sc);
+        q = rho(ps, e.sb, e.sc);
         if (!(q > floor)) return -1;
       } else {
         // rho = num / den; the early exit compares without the division.
-        const double area2 = cross(e.b - p, e.c - p);
-        if (!(area2 > 0)) return -1;
-        const double la = std::sqrt(norm2(e.c - e.b)), lb = std::sqrt(norm2(e.c - p)), lc = std::sqrt(norm2(e.b - p));
-        const double num = 4 * area2 * area2, den = (la + lb + lc) * la * lb * lc;
-        if (!(num > floor * den)) return -1;
-        q = num / den;
+        const RhoTerms r = rho_terms(p, e.b, e.c);
+        if (!(r.area2 > 0)) return -1;
+        if (!(r.num > floor * r.den)) return -1;
+        q = r.num / r.den;
       }
       *good += q > kGood;
       if (sorted) sorted->push_back(q);

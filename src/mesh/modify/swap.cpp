@@ -12,8 +12,8 @@ double swap_gain(const TriangleStore& m, Side s, PredicateStats* st) {
   if (!o.valid() || m.constrained(s)) return -1;
   const VertexId a = m.org(s), b = m.dest(s), c = m.apex(s), d = m.apex(o);
   const Vec2 pa = m.pos(a), pb = m.pos(b), pc = m.pos(c), pd = m.pos(d);
-  const double before = std::min(rho_fast(pa, pb, pc), rho_fast(pb, pa, pd));
-  const double after = std::min(rho_fast(pc, pa, pd), rho_fast(pd, pb, pc));
+  const double before = std::min(rho(pa, pb, pc), rho(pb, pa, pd));
+  const double after = std::min(rho(pc, pa, pd), rho(pd, pb, pc));
   if (after <= before) return after - before;
   // Only now the exact test: the new triangles (c, a, d) and (d, b, c).
   if (orient2d(pc, pa, pd, st) != Sign::Positive || orient2d(pd, pb, pc, st) != Sign::Positive) return -1;

@@ -7,18 +7,10 @@
 #include <cstdint>
 
 #include "exact/predicates.h"
+#include "exact/triangle_rho.h"
 #include "mesh/triangulation.h"
 
 namespace sm {
-
-/// rho = 2 r_in / r_circ as quality.h's rho, with plain square roots (the
-/// hot loops of meshadapt call it millions of times; std::hypot is slow).
-inline double rho_fast(Vec2 a, Vec2 b, Vec2 c) {
-  const double la = std::sqrt(norm2(b - c)), lb = std::sqrt(norm2(c - a)), lc = std::sqrt(norm2(a - b));
-  const double area2 = cross(b - a, c - a);  // twice the signed area
-  const double den = (la + lb + lc) * la * lb * lc;
-  return den > 0 ? 4 * area2 * area2 / den : 0.0;
-}
 
 /// The gain in min(rho) of the two triangles beside s if its diagonal were
 /// flipped, or a negative value when it may not be: s constrained or on the

@@ -8,19 +8,11 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/element_quality.h"
 #include "io/test_meshes.h"
 #include "io/vtk_writer.h"
 
 using namespace sm;
 using namespace sm::io;
-
-TEST_CASE("quality: rho of equilateral, right and degenerate triangles") {
-  CHECK(triangle_rho({0, 0, 0}, {1, 0, 0}, {0.5, std::sqrt(3.0) / 2, 0}) == doctest::Approx(1.0));
-  // right isosceles: r_in = (2 - sqrt2)/2, R = sqrt2/2 -> rho = 2 r/R = 2(sqrt2 - 1)
-  CHECK(triangle_rho({0, 0, 0}, {1, 0, 0}, {0, 1, 5e-17}) == doctest::Approx(2 * (std::sqrt(2.0) - 1)));
-  CHECK(triangle_rho({0, 0, 0}, {1, 0, 0}, {2, 0, 0}) == 0);
-}
 
 TEST_CASE("vtk legacy ASCII: header, counts, cell types") {
   const MeshModel m = sm::io::testing::grid_square(4);

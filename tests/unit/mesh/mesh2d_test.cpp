@@ -17,10 +17,11 @@
 
 #include <fmt/format.h>
 
+#include "exact/predicates.h"
+#include "exact/triangle_rho.h"
 #include "field/distance.h"
 #include "mesh/mesh1d.h"
 #include "mesh/mesh_stats.h"
-#include "exact/predicates.h"
 #include "testing_coast.h"
 
 using namespace sm;
@@ -631,7 +632,7 @@ TEST_CASE("mesh2d: world ocean north of 60S from GSHHG crude, shore distance 30 
   // Gmsh); they are few.
   std::size_t poor = 0;
   for (const Tri& t : a.mesh.surfaces.at(1).triangles)
-    if (rho3(a.mesh.nodes[t[0]].xyz, a.mesh.nodes[t[1]].xyz, a.mesh.nodes[t[2]].xyz) < 0.3) ++poor;
+    if (rho(a.mesh.nodes[t[0]].xyz, a.mesh.nodes[t[1]].xyz, a.mesh.nodes[t[2]].xyz) < 0.3) ++poor;
   MESSAGE(poor << " triangles with rho < 0.3");
   CHECK(static_cast<double>(poor) < 0.002 * static_cast<double>(st.triangles));
   CHECK(st.mean_rho > 0.9);

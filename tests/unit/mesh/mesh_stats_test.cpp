@@ -31,13 +31,6 @@ ModelMesh small_mesh() {
 
 }  // namespace
 
-TEST_CASE("mesh_stats: rho of an equilateral, a right isosceles and a flat triangle") {
-  CHECK(rho3({0, 0, 0}, {1, 0, 0}, {0.5, std::sqrt(0.75), 0}) == doctest::Approx(1));
-  CHECK(rho3({0, 0, 0}, {1, 0, 0}, {0, 1, 0}) == doctest::Approx(2 * (2 - std::sqrt(2.0)) / std::sqrt(2.0)));
-  CHECK(rho3({0, 0, 0}, {1, 0, 0}, {2, 0, 0}) == 0);
-  CHECK(rho3({0, 0, 0}, {0, 0, 0}, {2, 0, 0}) == 0);
-}
-
 TEST_CASE("mesh_stats: counts, quality shares and length ratios") {
   ModelMesh m = small_mesh();
   m.add_node({9, 9, 9});   // a model point no triangle uses: not counted

@@ -44,11 +44,8 @@ TriangleStore refined_square(double h, std::vector<Edge>* edges = nullptr, Refin
 
 }  // namespace
 
-TEST_CASE("quality: rho and eta") {
-  CHECK(rho({0, 0}, {1, 0}, {0.5, std::sqrt(0.75)}) == doctest::Approx(1));
+TEST_CASE("quality: eta and gamma") {
   CHECK(eta({0, 0}, {1, 0}, {0.5, std::sqrt(0.75)}) == doctest::Approx(1));
-  CHECK(rho({0, 0}, {1, 0}, {0, 1}) == doctest::Approx(2 * (2 - std::sqrt(2.0)) / std::sqrt(2.0)));
-  CHECK(rho({0, 0}, {1, 0}, {2, 0}) == 0);
   CHECK(gamma({0, 0}, {1, 0}, {0.5, std::sqrt(0.75)}) == doctest::Approx(1));
   // Right isosceles: r_in = (2 - sqrt2) / 2, longest edge sqrt2.
   CHECK(gamma({0, 0}, {1, 0}, {0, 1}) == doctest::Approx(2 * std::sqrt(3.0) * (2 - std::sqrt(2.0)) / 2 / std::sqrt(2.0)));
