@@ -15,7 +15,7 @@ namespace {
 
 using namespace sm;
 
-const std::string kSquare =
+const std::string kSaveSquare =
     "Point(1) = {0, 0, 0, 0.4}; Point(2) = {1, 0, 0, 0.4}; Point(3) = {1, 1, 0, 0.4}; Point(4) = {0, 1, 0, 0.4};\n"
     "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};\n"
     "Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1}; Physical Surface(1) = {1};\n";
@@ -44,8 +44,8 @@ TEST_CASE("save formats: Save by extension writes what -format writes by name") 
     std::string name(f.default_file_name);
     if (name.empty()) name.append("out").append(f.extension);
     testing::ScratchDir by_save, by_name;
-    REQUIRE(run(by_save, kSquare + "Mesh 2;\nSave \"" + name + "\";\n"));
-    REQUIRE(run(by_name, kSquare, std::string(f.name), by_name / name));
+    REQUIRE(run(by_save, kSaveSquare + "Mesh 2;\nSave \"" + name + "\";\n"));
+    REQUIRE(run(by_name, kSaveSquare, std::string(f.name), by_name / name));
     const std::string saved = testing::read_all(by_save / name);
     CHECK(!saved.empty());
     CHECK(saved == testing::read_all(by_name / name));
@@ -56,7 +56,7 @@ TEST_CASE("save formats: the default -o name comes from the row") {
   for (const io::OutputFormat& f : io::output_formats()) {
     CAPTURE(f.name);
     testing::ScratchDir dir;
-    REQUIRE(run(dir, kSquare, std::string(f.name)));
+    REQUIRE(run(dir, kSaveSquare, std::string(f.name)));
     std::string expected(f.default_file_name);
     if (expected.empty()) expected.append("s").append(f.extension);
     CHECK(testing::read_all(dir / expected).size() > 0);
