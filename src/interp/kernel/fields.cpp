@@ -83,11 +83,8 @@ bool option_value(Interpreter& in, const FieldOptionStmt& n, int id, const field
   }
   const bool list = n.braced || v.kind() == Value::Kind::List;
   if (spec && spec->type == field::OptionType::List && !list) {
-    in.diags().report(value_at, Diag::FieldListWithoutBraces,
-                      fmt::format("option '{}' of Field[{}] ({}) takes a list in braces: the value is "
-                                  "ignored, as Gmsh 4.8.4 does; write {{{}}}",
-                                  in.ast().str(n.option), id,
-                                  in.kernel().fields.options(id).kind().name, in.text_of(value_at)));
+    in.diags().report(value_at, Diag::FieldListWithoutBraces, in.ast().str(n.option), id,
+                      in.kernel().fields.options(id).kind().name, in.text_of(value_at));
     return false;
   }
   // Ids and tags become ints in the kernel: they must fit one.
@@ -147,9 +144,8 @@ void exec_field_action(Interpreter& in, const FieldActionStmt& n) {
   require_field(in, id, n.id, "run an action of");
   // No kind declares a callback (Gmsh's are for views and the GUI), so every
   // action is unknown, as Gmsh reports "Unknown callback".
-  in.fail_fmt(n.action_range, Diag::UnknownFieldAction,
-              fmt::format("Field[{}] ({}) has no action '{}'", id,
-                          in.kernel().fields.options(id).kind().name, in.ast().str(n.action)));
+  in.fail_fmt(n.action_range, Diag::UnknownFieldAction, id, in.kernel().fields.options(id).kind().name,
+              in.ast().str(n.action));
 }
 
 void exec_delete_field(Interpreter& in, const DeleteFieldStmt& n) {

@@ -243,8 +243,7 @@ void exec_delete_shapes(Interpreter& in, const Stmt& s, const DeleteShapesStmt& 
   for (const geo::DimTag& d : skipped)
     list += fmt::format("{}{} {}", list.empty() ? "" : ", ", d.dim == 0 ? "point" : d.dim == 1 ? "curve" : "surface",
                         std::abs(d.tag));
-  in.diags().report_message(s.keyword.valid() ? s.keyword : s.range, Diag::GeoDeleteSkipped,
-                            fmt::format("not deleted (still used by a higher-dimensional entity): {}", list));
+  in.diags().report(s.keyword.valid() ? s.keyword : s.range, Diag::GeoDeleteSkipped, list);
 }
 
 void exec_split_curve(Interpreter& in, const Stmt& s, const SplitCurveStmt& n) {
