@@ -1,19 +1,13 @@
 // Hostile inputs: deep nesting, garbage bytes, huge lines and files must give
-// clean errors quickly (no crash, no stack overflow, nothing quadratic).
+// clean errors (no crash, no stack overflow). No wall-clock checks here (they fail on a
+// loaded machine): a quadratic pass on these 50 MB inputs runs into the test timeout
+// that tests/CMakeLists.txt sets.
 #include <doctest/doctest.h>
-
-#include <chrono>
 
 #include "lang_test_util.h"
 
 using namespace sm::lang;
 using sm::lang::testing::parse_text;
-
-namespace {
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-}  // namespace
 
 TEST_CASE("hostile: 100,000 nested parentheses give one nesting error") {
   const std::string text = "x = " + std::string(100000, '(') + "1" + std::string(100000, ')') + ";\ny = 2;\n";
@@ -47,9 +41,7 @@ TEST_CASE("hostile: binary garbage is reported, never crashes, stops at the erro
     seed = seed * 1664525u + 1013904223u;
     text += static_cast<char>(seed >> 24);
   }
-  const auto t0 = std::chrono::steady_clock::now();
   const auto r = parse_text(text);
-  CHECK(seconds_since(t0) < 2.0);
   CHECK_FALSE(r.ok);
   CHECK(r.errors <= Diagnostics::kDefaultMaxErrors + 1);
   CHECK(r.diags.find("too many errors (50), stopping") != std::string::npos);
@@ -64,9 +56,7 @@ TEST_CASE("hostile: a 50 MB line lexes, parses and renders in linear time") {
     text += "\"; // ";
     text.append(50u << 20, 'b');
     text += "\nx = ;\n";
-    const auto t0 = std::chrono::steady_clock::now();
     const auto r = parse_text(text);
-    CHECK(seconds_since(t0) < 5.0);
     CHECK(r.errors == 1);
     CHECK(r.diags.find("t.geo:2:5: error: expected an expression") == 0);
   }
@@ -85,9 +75,7 @@ TEST_CASE("hostile: a list of a million items on one line") {
   std::string text = "L[] = {0";
   for (int i = 0; i < 1000000; ++i) text += ",12345";
   text += "};\nx = ;\n";
-  const auto t0 = std::chrono::steady_clock::now();
   const auto r = parse_text(text);
-  CHECK(seconds_since(t0) < 5.0);
   CHECK(r.errors == 1);
   CHECK(r.diags.find("t.geo:2:5: error: expected an expression") == 0);
 }
