@@ -36,7 +36,7 @@ EndIf
 
 Plane Surface(1) = loops[];
 
-// Reference counts (GSHHG 2.3.7) with the tolerances of the issue's test.
+// Reference counts (GSHHG 2.3.7) with the tolerances tests/scripts/coastline/figure5_*.geo check.
 ref_islands = 0;  ref_points = 0;
 If (gamma == 100000)
   ref_islands = 2;  ref_points = 40;

@@ -1,4 +1,4 @@
-// Benchmark: import + clean + coarsen + repair of real shorelines (issue 4 speed goals:
+// Benchmark: import + clean + coarsen + repair of real shorelines (speed goals:
 // gb_ireland_f.txt at 150 m and world_i_A100.txt at 10 km well under a second each),
 // plus the Figure 5 table. Prints the best of several runs.
 #include <chrono>

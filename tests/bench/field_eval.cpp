@@ -1,4 +1,4 @@
-// Field benchmark (issue 5): Distance to ~1 million coastline samples answering
+// Field benchmark: Distance to ~1 million coastline samples answering
 // 1 million queries, Threshold/Min/MathEval chains, MathEval against the same
 // formula written in C++, bathymetry lookups, gradation build. One thread.
 // Targets: Distance >= 1e6 queries/s; MathEval within 3x of hand-written C++.

@@ -1,4 +1,4 @@
-// Benchmark (issue 3): the whole curve set of GSHHG world_i_A100.txt (192,842 points, 1,440
+// Benchmark: the whole curve set of GSHHG world_i_A100.txt (192,842 points, 1,440
 // coastlines) as closed BSplines in unit-PolarSphere (u,v) coordinates: build the model
 // (points, curves, loops, one Plane Surface with Antarctica outer and the hole checks), then
 // time curve evaluation on the largest curve (Eurasia, 35k control points) against a

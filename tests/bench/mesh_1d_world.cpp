@@ -1,4 +1,4 @@
-// Benchmark (issue 6): 1D meshing of the GSHHG intermediate world coastlines
+// Benchmark: 1D meshing of the GSHHG intermediate world coastlines
 // (world_i_A100.txt) at 10 km on the unit PolarSphere (paper section 3.2). The model is
 // built as a script would: coast reader + import pipeline (accuracy gamma), closed
 // B-splines through the control points, one Plane Surface (Antarctica's loop outer when

@@ -1,4 +1,4 @@
-// The world ocean on an Earth-radius PolarSphere (issue 7): GSHHG shorelines through the
+// The world ocean on an Earth-radius PolarSphere: GSHHG shorelines through the
 // coast import, closed BSplines, shore-distance size 30 to 200 km within 500 km (Distance +
 // linear Threshold), 1D + 2D meshing per algorithm with time per stage and quality; then
 // the same model through `gmsh -2` (the .geo from the coast module's Plugin(GSHHS) writer).

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The side-by-side benchmark (issue 9): our figures next to Gmsh 4.8.4's from the same run,
+# The side-by-side benchmark: our figures next to Gmsh 4.8.4's from the same run,
 # written to docs/benchmarks.md. Not part of the test suite: it takes a few minutes.
 #
 #   tests/bench/run.sh [BUILD_DIR]      (default: build; needs the bench_* programs built)

@@ -1,4 +1,4 @@
-// Native extension: coastline import as curve loops (issue 4).
+// Native extension: coastline import as curve loops.
 Coastline[1] = GSHHS;
 Coastline[1].FileName = "gshhs_c.b";
 Coastline[1].Levels = {1};

@@ -1,4 +1,4 @@
-// The issue's world test: every GSHHG crude coastline of world_c.txt as a closed BSpline
+// The world test: every GSHHG crude coastline of world_c.txt as a closed BSpline
 // through its points in unit-PolarSphere (u, v), Antarctica (curve loop 5) the outer
 // loop of one Plane Surface and the 742 other coastlines its holes
 // (tests/data/geo_scripts/make_world_geo.py wrote the model). The model must accept all

@@ -128,7 +128,7 @@ TEST_CASE("cli: exit statuses of the binary") {
   }
   CHECK(run_status(bin + " -2 -v 0 " + d + "square.geo -o " + d + "square.svg") == 0);
   CHECK(fs::file_size(dir / "square.svg") > 1000);
-  // Progress (issue 8): nothing on stderr with -v 0 (or up to -v 3) for a clean script;
+  // Progress: nothing on stderr with -v 0 (or up to -v 3) for a clean script;
   // plain lines, no \r, when stderr is not a terminal (here a pipe, as in CI and logs).
   CHECK(run_stderr(bin + " -2 -v 0 " + d + "square.geo -o " + d + "q.msh") == "");
   CHECK(run_stderr(bin + " -2 -v 3 " + d + "square.geo -o " + d + "q.msh") == "");
@@ -161,7 +161,7 @@ TEST_CASE("cli: exit statuses of the binary") {
     in.read(head.data(), 8);
     CHECK(head == std::string("\x89PNG\r\n\x1a\n", 8));
   }
-  // A failed write says so once, naming the file and the reason (issue 8).
+  // A failed write says so once, naming the file and the reason.
   CHECK(run_stderr(bin + " -2 -v 0 " + d + "square.geo -o " + d + "no/dir/x.msh") ==
         "stereomesh: error: cannot write '" + d + "no/dir/x.msh': No such file or directory [file-write-error]\n");
   CHECK(run_stderr(bin + " -2 -v 0 " + d + "square.geo -o " + d + "x.msh --stats " + d + "no/s.json") ==

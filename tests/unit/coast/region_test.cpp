@@ -118,7 +118,7 @@ TEST_CASE("region: the Arctic cap closes along the parallel 50N") {
 }
 
 // Box corners listed by the pieces that turn round them, with samples halving in
-// distance towards them (issue 8: the B-splines must not cut the corners).
+// distance towards them (the B-splines must not cut the corners).
 void check_corners(const RegionResult& r, const LonLatBox& box, std::size_t want_corners) {
   std::size_t corners = 0;
   for (const RegionLoop& loop : r.loops)

@@ -1,5 +1,5 @@
 // Geometry statements through the interpreter: the model they build (the world_c script of
-// issue 3), and kernel errors as located diagnostics with provenance notes.
+// tests/scripts/geometry), and kernel errors as located diagnostics with provenance notes.
 #include <doctest/doctest.h>
 
 #include <sstream>

@@ -1,4 +1,4 @@
-// Progress through the interpreter (issue 8): a recording sink in the kernel state sees
+// Progress through the interpreter: a recording sink in the kernel state sees
 // the coastline import, 1D and 2D stages with non-decreasing updates, and nothing once
 // the script sets General.Verbosity below 4.
 #include <doctest/doctest.h>

@@ -1,6 +1,6 @@
 // The open-boundary curves that close a regional model along its lon/lat box follow the
-// box's parallels and meridians within the coastline accuracy gamma (issue 8, item on
-// src/coast/region.cpp): measured on the model curves themselves, densely sampled, for
+// box's parallels and meridians within the coastline accuracy gamma (the box sides src/coast/region.cpp
+// makes): measured on the model curves themselves, densely sampled, for
 // the Irish Sea tutorial's box and the North Sea / Scheldt file's box.
 #include <doctest/doctest.h>
 
