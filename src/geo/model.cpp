@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <initializer_list>
 
@@ -31,6 +32,11 @@ void BoundingBox::add(Vec3 p) {
   hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
 }
 
+void Model::touch() {
+  static std::atomic<std::uint64_t> last{0};
+  revision_ = ++last;
+}
+
 // ---- tags ----
 
 void Model::bump_max(int slot, int tag) { max_tag_[slot] = std::max(max_tag_[slot], tag); }
@@ -52,6 +58,7 @@ int Model::new_loop_tag() const { return options_.old_new_reg ? new_reg() : max_
 int Model::new_surface_tag() const { return options_.old_new_reg ? new_reg() : max_tag_[2] + 1; }
 
 void Model::set_max_tag(int dim, int tag) {
+  touch();
   const int slot = dim < 0 ? kLoopSlot : std::min(dim, 3);
   max_tag_[slot] = tag;
 }
@@ -173,6 +180,7 @@ BoundingBox Model::bounding_box() const {
 // ---- surface geometries ----
 
 GeoStatus Model::add_sphere_geometry(int tag, int centre_point, int pole_point, bool polar) {
+  touch();
   if (tag <= 0 || geometries_.count(tag))
     return check_new_tag(EntityKind::SurfaceGeometry, tag, geometries_.count(tag) > 0);
   const ModelVertex* c = vertex(centre_point);
@@ -194,6 +202,7 @@ GeoStatus Model::add_polar_sphere(int tag, int c, int p) { return add_sphere_geo
 GeoStatus Model::add_lonlat_sphere(int tag, int c, int p) { return add_sphere_geometry(tag, c, p, false); }
 
 GeoStatus Model::set_current_geometry(int tag) {
+  touch();
   if (!geometry(tag)) return missing(EntityKind::SurfaceGeometry, tag, {}, "");
   current_geometry_ = tag;
   return {};
@@ -214,6 +223,7 @@ GeoStatus check_finite(int tag, std::initializer_list<double> values) {
 }  // namespace
 
 GeoStatus Model::add_point(int tag, Vec3 coords, double lc) {
+  touch();
   if (current_geometry_) return add_point_on_geometry(tag, current_geometry_, {coords.x, coords.y}, lc);
   if (auto s = check_new_tag(EntityKind::Point, tag, vertices_.count(tag) > 0); !s) return s;
   if (auto s = check_finite(tag, {coords.x, coords.y, coords.z, lc}); !s) return s;
@@ -227,6 +237,7 @@ GeoStatus Model::add_point(int tag, Vec3 coords, double lc) {
 }
 
 GeoStatus Model::add_point_on_geometry(int tag, int geometry_tag, Vec2 uv, double lc) {
+  touch();
   if (auto s = check_new_tag(EntityKind::Point, tag, vertices_.count(tag) > 0); !s) return s;
   const SurfaceGeometry* g = geometry(geometry_tag);
   if (!g) return missing(EntityKind::SurfaceGeometry, geometry_tag, {tag}, fmt::format(" (for point {})", tag));
@@ -243,6 +254,7 @@ GeoStatus Model::add_point_on_geometry(int tag, int geometry_tag, Vec2 uv, doubl
 }
 
 GeoStatus Model::set_mesh_size(const std::vector<int>& points, double lc) {
+  touch();
   if (!std::isfinite(lc))
     return make_error(GeoErrorKind::BadArgument, EntityKind::Point, points, fmt::format("mesh size {} is not finite", lc));
   for (int p : points)
@@ -273,6 +285,7 @@ GeoResult<Curve> Model::build_shape(const ModelCurve& c) const {
 }
 
 GeoStatus Model::add_curve(int tag, CurveKind kind, const std::vector<int>& points, std::optional<Vec3> plane_normal) {
+  touch();
   if (auto s = check_new_tag(EntityKind::Curve, tag, curves_.count(tag) > 0); !s) return s;
   for (int p : points)
     if (!vertex(p)) return missing(EntityKind::Point, p, {tag}, fmt::format(" used by {} {}", to_string(kind), tag));
@@ -315,6 +328,7 @@ GeoStatus Model::add_curve(int tag, CurveKind kind, const std::vector<int>& poin
 }
 
 GeoStatus Model::rebuild_curves_using(const std::vector<int>& moved_points) {
+  touch();
   std::vector<int> sorted = moved_points;
   std::sort(sorted.begin(), sorted.end());
   GeoStatus status;
@@ -334,6 +348,7 @@ GeoStatus Model::rebuild_curves_using(const std::vector<int>& moved_points) {
 // ---- curve loops ----
 
 GeoStatus Model::add_curve_loop(int tag, const std::vector<int>& curves) {
+  touch();
   if (auto s = check_new_tag(EntityKind::CurveLoop, tag, loops_.count(tag) > 0); !s) return s;
   if (curves.empty())
     return make_error(GeoErrorKind::LoopEmpty, EntityKind::CurveLoop, {tag}, fmt::format("curve loop {} is empty", tag));
@@ -358,6 +373,7 @@ GeoStatus Model::add_curve_loop(int tag, const std::vector<int>& curves) {
 // ---- plane surfaces ----
 
 GeoStatus Model::add_plane_surface(int tag, const std::vector<int>& loops) {
+  touch();
   if (auto s = check_new_tag(EntityKind::Surface, tag, surfaces_.count(tag) > 0); !s) return s;
   if (loops.empty())
     return make_error(GeoErrorKind::LoopEmpty, EntityKind::Surface, {tag},
@@ -411,6 +427,7 @@ GeoStatus Model::add_plane_surface(int tag, const std::vector<int>& loops) {
 
 GeoResult<int> Model::add_physical(int dim, std::optional<int> tag, const std::string& name,
                                    const std::vector<int>& entities, PhysicalOp op) {
+  touch();
   if (dim < 0 || dim > 3)
     return make_error(GeoErrorKind::BadArgument, EntityKind::Physical, {}, fmt::format("bad physical dimension {}", dim));
   for (int e : entities) {
@@ -467,6 +484,7 @@ GeoResult<int> Model::add_physical(int dim, std::optional<int> tag, const std::s
 }
 
 GeoStatus Model::embed(int dim, const std::vector<int>& tags_in, int surface_tag) {
+  touch();
   auto it = surfaces_.find(surface_tag);
   if (it == surfaces_.end()) return missing(EntityKind::Surface, surface_tag, {}, " (embedding target)");
   for (int t : tags_in) {
@@ -540,6 +558,7 @@ GeoResult<std::vector<DimTag>> Model::boundary(const std::vector<DimTag>& entiti
 // ---- filling surfaces ----
 
 GeoStatus Model::add_surface_filling(int tag, const std::vector<int>& loops, std::optional<int> sphere_centre) {
+  touch();
   if (auto s = check_new_tag(EntityKind::Surface, tag, surfaces_.count(tag) > 0); !s) return s;
   if (loops.size() != 1)
     return make_error(GeoErrorKind::BadArgument, EntityKind::Surface, {tag},

@@ -8,6 +8,7 @@
 #include "geo/surface_geometry.h"
 
 #include <array>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -96,7 +97,10 @@ class Model {
   /// "Coordinates Surface g;"
   GeoStatus set_current_geometry(int tag);
   /// "Euclidian Coordinates;"
-  void set_euclidean() { current_geometry_ = 0; }
+  void set_euclidean() {
+    current_geometry_ = 0;
+    touch();
+  }
   int current_geometry() const { return current_geometry_; }
   const SurfaceGeometry* geometry(int tag) const;
   const std::map<int, SurfaceGeometry>& geometries() const { return geometries_; }
@@ -127,7 +131,10 @@ class Model {
                               const std::vector<int>& entities, PhysicalOp op = PhysicalOp::Assign);
   /// "Delete Physicals;": every group goes; newreg and the next auto tag keep counting from
   /// the largest physical tag used so far, as in Gmsh.
-  void clear_physicals() { physicals_.clear(); }
+  void clear_physicals() {
+    physicals_.clear();
+    touch();
+  }
   /// "Point{...} In Surface{s};" (dim 0) and "Curve{...} In Surface{s};" (dim 1).
   GeoStatus embed(int dim, const std::vector<int>& tags, int surface);
   /// "MeshSize{points} = lc;"
@@ -182,6 +189,10 @@ class Model {
   const std::map<int, ModelCurveLoop>& curve_loops() const { return loops_; }
   const std::map<int, ModelSurface>& surfaces() const { return surfaces_; }
   const std::map<std::pair<int, int>, PhysicalGroup>& physicals() const { return physicals_; }
+  /// Changes whenever an entity, geometry or group is added, moved or removed, and two
+  /// different states never share a value (copies of one state do): what is built from
+  /// the model (size fields) is cached by it instead of hashing the model on each use.
+  std::uint64_t revision() const { return revision_; }
 
   // ---- Gmsh's next-tag variables ----
   int new_point_tag() const { return max_tag_[0] + 1; }                           // newp
@@ -212,6 +223,7 @@ class Model {
   void delete_curve(int tag, bool recursive, Usage& u);
   void delete_loop(int tag, bool recursive, Usage& u);
   void delete_surface(int tag, bool recursive, Usage& u);
+  void touch();   // a new revision_ from one counter shared by all models
 
   ModelOptions options_;
   std::map<int, ModelVertex> vertices_;
@@ -224,6 +236,7 @@ class Model {
   // High-water marks as Gmsh keeps them: slots 0..3 = dims, 4 = curve loops.
   std::array<int, 5> max_tag_{0, 0, 0, 0, 0};
   int max_physical_tag_ = 0;   // high-water mark of physical group tags (newreg, auto tags)
+  std::uint64_t revision_ = 0;  // 0: the empty model
 };
 
 }  // namespace sm::geo

@@ -46,6 +46,7 @@ bool used(const std::map<int, int>& m, int tag) {
 
 // Deleted entities leave their physical groups; a group left empty disappears (as in Gmsh).
 void Model::drop_from_groups(int dim, int tag) {
+  touch();
   for (auto it = physicals_.begin(); it != physicals_.end();) {
     auto& e = it->second.entities;
     if (it->second.dim == dim) e.erase(std::remove_if(e.begin(), e.end(), [tag](int x) { return std::abs(x) == tag; }), e.end());
@@ -54,12 +55,14 @@ void Model::drop_from_groups(int dim, int tag) {
 }
 
 void Model::delete_point(int tag) {
+  touch();
   vertices_.erase(tag);
   drop_from_groups(0, tag);
   on_delete(0, tag);
 }
 
 void Model::delete_curve(int tag, bool recursive, Usage& u) {
+  touch();
   const std::vector<int> pts = curves_.at(tag).points;
   curves_.erase(tag);
   drop_from_groups(1, tag);
@@ -71,6 +74,7 @@ void Model::delete_curve(int tag, bool recursive, Usage& u) {
 }
 
 void Model::delete_loop(int tag, bool recursive, Usage& u) {
+  touch();
   const std::vector<int> cs = loops_.at(tag).curves;
   loops_.erase(tag);
   on_delete(kLoopSlot, tag);
@@ -81,6 +85,7 @@ void Model::delete_loop(int tag, bool recursive, Usage& u) {
 }
 
 void Model::delete_surface(int tag, bool recursive, Usage& u) {
+  touch();
   const ModelSurface s = surfaces_.at(tag);
   surfaces_.erase(tag);
   drop_from_groups(2, tag);
@@ -98,6 +103,7 @@ void Model::delete_surface(int tag, bool recursive, Usage& u) {
 }
 
 GeoStatus Model::remove(const std::vector<DimTag>& entities, bool recursive, std::vector<DimTag>* skipped) {
+  touch();
   for (const DimTag& e : entities) {
     const int t = std::abs(e.tag);
     const bool exists = (e.dim == 0 && vertices_.count(t)) || (e.dim == 1 && curves_.count(t)) ||
@@ -127,6 +133,7 @@ GeoStatus Model::remove(const std::vector<DimTag>& entities, bool recursive, std
 // ---- coherence ----
 
 int Model::coherence() {
+  touch();
   if (vertices_.empty()) return 0;
   const double diag = bounding_box().diagonal();
   const double eps = options_.tolerance * (diag > 0 ? diag : 1.0);
@@ -227,6 +234,7 @@ int Model::coherence() {
 // ---- duplicata ----
 
 GeoResult<std::vector<DimTag>> Model::duplicate(const std::vector<DimTag>& entities) {
+  touch();
   for (const DimTag& e : entities) {
     const int t = std::abs(e.tag);
     if ((e.dim == 0 && !vertices_.count(t)) || (e.dim == 1 && !curves_.count(t)) || (e.dim == 2 && !surfaces_.count(t)) ||
@@ -318,6 +326,7 @@ std::vector<int> Model::points_of(const std::vector<DimTag>& entities) const {
 // of the entities use it. A point on a surface geometry stays on it: its moved position is
 // projected back (Gmsh moves the 3D position off the sphere and keeps the old (u,v)).
 GeoStatus Model::transform_points(const std::vector<DimTag>& entities, const std::array<double, 12>& m) {
+  touch();
   for (const DimTag& e : entities) {
     const int t = std::abs(e.tag);
     if ((e.dim == 0 && !vertices_.count(t)) || (e.dim == 1 && !curves_.count(t)) || (e.dim == 2 && !surfaces_.count(t)) ||
@@ -391,6 +400,7 @@ GeoStatus Model::symmetry(const std::vector<DimTag>& entities, double a, double 
 // ---- split ----
 
 GeoResult<std::vector<int>> Model::split_curve(int tag, const std::vector<int>& split_points) {
+  touch();
   auto it = curves_.find(tag);
   if (it == curves_.end()) return make_error(GeoErrorKind::MissingEntity, EntityKind::Curve, {tag}, fmt::format("cannot split unknown curve {}", tag));
   const ModelCurve old = it->second;

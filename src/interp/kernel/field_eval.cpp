@@ -5,7 +5,6 @@
 
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <map>
 #include <set>
 
@@ -21,9 +20,11 @@ namespace sm::interp {
 
 using namespace sm::lang;
 
-/// Built fields by root id, valid for one model state (`model_hash`).
+/// Built fields by root id, valid for one model state (geo::Model::revision: a
+/// FieldValue call in a loop over a 100,000-point coastline costs a lookup, not a walk
+/// over the model).
 struct FieldCache {
-  std::uint64_t model_hash = 0;
+  std::uint64_t model_revision = 0;
   std::map<int, field::BuiltFields> by_root;
 };
 
@@ -42,48 +43,6 @@ Diag diag_of(field::FieldErrc c) {
     case field::FieldErrc::ParseError: return Diag::FieldExpressionError;
   }
   return Diag::BadFieldValue;
-}
-
-// A hash of what field builds read from the model: point positions and the
-// definition of every curve (kind, control points, surface geometry). Any
-// geometry statement or transform that moves or adds an entity changes it.
-// One multiply-xorshift step per 64-bit word keeps a FieldValue call on a
-// million-point coastline model at a few milliseconds.
-class Hasher {
- public:
-  void add(double v) {
-    std::uint64_t w;
-    std::memcpy(&w, &v, sizeof w);
-    mix(w);
-  }
-  void add(std::int64_t v) { mix(static_cast<std::uint64_t>(v)); }
-  void add(int v) { mix(static_cast<std::uint64_t>(static_cast<std::int64_t>(v))); }
-  void add(std::size_t v) { mix(static_cast<std::uint64_t>(v)); }
-  void add(bool v) { mix(v ? 1 : 0); }
-  std::uint64_t value() const { return h_; }
-
- private:
-  void mix(std::uint64_t w) {
-    h_ = (h_ ^ w) * 0x9E3779B97F4A7C15ull;
-    h_ ^= h_ >> 29;
-  }
-  std::uint64_t h_ = 0x243F6A8885A308D3ull;
-};
-
-std::uint64_t model_hash(const geo::Model& m) {
-  Hasher h;
-  h.add(m.vertices().size());
-  for (const auto& [tag, v] : m.vertices()) {
-    h.add(tag), h.add(v.xyz.x), h.add(v.xyz.y), h.add(v.xyz.z), h.add(v.geometry);
-  }
-  h.add(m.curves().size());
-  for (const auto& [tag, c] : m.curves()) {
-    h.add(tag), h.add(static_cast<int>(c.kind)), h.add(c.geometry), h.add(c.shape.has_value());
-    for (int p : c.points) h.add(p);
-    if (c.plane_normal) h.add(c.plane_normal->x), h.add(c.plane_normal->y), h.add(c.plane_normal->z);
-  }
-  h.add(m.surfaces().size());
-  return h.value();
 }
 
 std::string kind_of(Interpreter& in, int id) {
@@ -272,10 +231,10 @@ void invalidate_field_cache(Interpreter& in) { in.kernel().field_cache.reset(); 
 
 const field::BuiltFields& built_fields(Interpreter& in, int root, SourceRange use) {
   KernelState& k = in.kernel();
-  const std::uint64_t hash = model_hash(k.model);
-  if (!k.field_cache || k.field_cache->model_hash != hash) {
+  const std::uint64_t revision = k.model.revision();
+  if (!k.field_cache || k.field_cache->model_revision != revision) {
     k.field_cache = std::make_shared<FieldCache>();
-    k.field_cache->model_hash = hash;
+    k.field_cache->model_revision = revision;
   }
   auto it = k.field_cache->by_root.find(root);
   if (it != k.field_cache->by_root.end()) return it->second;

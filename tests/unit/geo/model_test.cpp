@@ -6,7 +6,9 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 using namespace sm;
@@ -497,4 +499,37 @@ TEST_CASE("Split Curve inside a loop and a physical group (gmsh_queries/split_in
   CHECK(m.tags(1) == std::vector<int>{2, 8, 9});                               // Gmsh: curves 2 8 9
   CHECK(tags_of(*m.boundary({{2, 1}}, false)) == std::vector<int>{8, 9, 2});   // Gmsh: bnd 8 9 2
   CHECK(m.physical_entities(1, 7) == std::vector<int>{8, 9});                  // Gmsh: phys 8 9
+}
+
+TEST_CASE("model: every change gives a new revision, queries and copies keep it") {
+  Model m;
+  CHECK(m.revision() == 0);
+  std::vector<std::uint64_t> seen{m.revision()};
+  auto changed = [&] {
+    const std::uint64_t r = m.revision();
+    const bool fresh = std::find(seen.begin(), seen.end(), r) == seen.end();
+    seen.push_back(r);
+    return fresh;
+  };
+  REQUIRE(m.add_point(1, {0, 0, 0}).ok());
+  CHECK(changed());
+  REQUIRE(m.add_point(2, {1, 0, 0}).ok());
+  CHECK(changed());
+  REQUIRE(m.add_curve(1, CurveKind::Line, {1, 2}).ok());
+  CHECK(changed());
+  const Model copy = m;
+  CHECK(copy.revision() == m.revision());
+  (void)m.bounding_box();
+  (void)m.tags(0);
+  CHECK(m.revision() == copy.revision());
+  REQUIRE(m.translate({{0, 2}}, {0, 1, 0}).ok());
+  CHECK(changed());
+  REQUIRE(m.set_mesh_size({1}, 0.5).ok());
+  CHECK(changed());
+  REQUIRE(m.remove({{1, 1}}, false).ok());
+  CHECK(changed());
+  // Another model's change never reuses a value this one had.
+  Model other;
+  REQUIRE(other.add_point(1, {0, 0, 0}).ok());
+  CHECK(std::find(seen.begin(), seen.end(), other.revision()) == seen.end());
 }
