@@ -13,11 +13,58 @@ If (!Exists(RegionsGeoLoaded))
   RegionArctic[] = {-180, 180, 50, 90};          // Figure 11: north of 50N
   RegionCanadianArchipelago[] = {-130, -60, 60, 84};   // Figure 11's 20 km zone
   RegionNorthPacific[] = {150, 240, 20, 62};     // Figure 10's close-up
+  RegionMediterranean[] = {-5.6, 37, 29, 46.5};  // from Gibraltar; holds the Black Sea's west and the Suez Canal
 
   // Places {lon, lat} (degrees).
   LizardIsland[] = {145.45, -14.67};             // Figure 14's refinement centre
   ScheldtMouth[] = {3.58, 51.42};                // Vlissingen, where the estuary opens
+  CentralMediterranean[] = {18, 35};             // the Ionian Sea, south of Italy
   Antwerp[] = {4.40, 51.23};                     // Figure 13's upstream end (150 m)
+
+  // RegionalSea: the whole set-up of a regional sea (docs/coastlines.md, "Regional seas").
+  // Input: RegionalFile (a LonLatText shoreline file), RegionalBox[] = {W, E, S, N}, and
+  // optionally RegionalAccuracy (m, default 5 km: the coastline's gamma), RegionalSeaAt[] =
+  // {lon, lat, ...} (keep only the seas holding these points), RegionalMinChannelWidth (m:
+  // close passages narrower than this), RegionalDams[] = {lon1, lat1, lon2, lat2, ...} and
+  // RegionalCoastline (the Coastline id, default 1). Needs a PolarSphere (Call EarthSphere).
+  // Makes the sea surfaces and the physical groups "sea", "coast" (shores and dams) and
+  // "open" (the box sides crossing the kept seas). Output: RegionalSurfaces[],
+  // RegionalCoastCurves[], RegionalOpenCurves[], RegionalShorePoints[] (the control
+  // points, for ShoreProximity with ShoreBox[] = RegionalBox[]) and RegionalAccuracyField.
+  Macro RegionalSea
+    If (!Exists(RegionalFile) || !Exists(RegionalBox[]))
+      Error("RegionalSea: set RegionalFile and RegionalBox[] = {W, E, S, N} first");
+      Abort;
+    EndIf
+    regional_id_ = Exists(RegionalCoastline) ? RegionalCoastline : 1;
+    RegionalAccuracyField = newf;
+    Field[RegionalAccuracyField] = MathEval;
+    Field[RegionalAccuracyField].F = Sprintf("%g", Exists(RegionalAccuracy) ? RegionalAccuracy : 5e3);
+    Coastline[regional_id_] = LonLatText;
+    Coastline[regional_id_].FileName = RegionalFile;
+    Coastline[regional_id_].AccuracyField = RegionalAccuracyField;
+    Coastline[regional_id_].Region = {RegionalBox[]};
+    If (Exists(RegionalMinChannelWidth))
+      Coastline[regional_id_].MinChannelWidth = RegionalMinChannelWidth;
+    EndIf
+    If (Exists(RegionalDams[]))
+      Coastline[regional_id_].Dams = {RegionalDams[]};
+    EndIf
+    If (Exists(RegionalSeaAt[]))
+      Coastline[regional_id_].SeaAt = {RegionalSeaAt[]};
+    EndIf
+    RegionalSurfaces[] = Coastline{regional_id_, "Surfaces"};
+    RegionalCoastCurves[] = Coastline{regional_id_, "CoastCurves"};
+    RegionalOpenCurves[] = Coastline{regional_id_, "OpenCurves"};
+    Physical Surface("sea") = {RegionalSurfaces[]};
+    Physical Curve("coast") = {RegionalCoastCurves[]};
+    If (#RegionalOpenCurves[] > 0)
+      Physical Curve("open") = {RegionalOpenCurves[]};
+    EndIf
+    // Every control point of the kept seas: with ShoreBox[] = RegionalBox[], ShoreProximity
+    // leaves out those on the box (open sea).
+    RegionalShorePoints[] = Coastline{regional_id_, "Points"};
+  Return
 
   // InBox: input lon, lat and box[] = {W, E, S, N}; output InBoxResult (1 inside or on the
   // edge, else 0). Longitudes are compared modulo 360, so boxes running past +-180 work.

@@ -50,6 +50,9 @@ struct CoastError {
   std::int64_t record = -1;        // -1: not tied to one record
   std::string message;
   std::optional<geo::LonLat> where;
+  /// The import option at fault ("Dams", "SeaAt"), so that the interpreter can point at
+  /// the line that set it; empty for errors of the data.
+  std::string option = {};
 
   std::string to_string() const;
 };

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "coast/passages.h"
 #include "coast/polygon2d.h"
 #include "coast/repair.h"
 
@@ -34,14 +35,22 @@ const char* describe(RepairKind k) {
     case RepairKind::OutsideWater: return "island outside every water surface dropped";
     case RepairKind::SplineHull: return "original points put back where the B-splines crossed or touched";
     case RepairKind::SplineMayCross: return "the B-splines cross or touch here on the source data";
+    case RepairKind::ClosedPassage: return "passage narrower than MinChannelWidth closed by two dams";
+    case RepairKind::NarrowWater: return "water narrower than MinChannelWidth behind a dam removed";
+    case RepairKind::DamPlaced: return "dam placed across the water";
   }
   return "?";
 }
 
+bool is_passage_kind(RepairKind k) {
+  return k == RepairKind::ClosedPassage || k == RepairKind::NarrowWater || k == RepairKind::DamPlaced;
+}
+
 }  // namespace
 
-std::vector<std::string> ImportReport::lines(std::size_t max_per_kind) const {
+std::vector<std::string> ImportReport::lines(std::size_t max_per_kind, std::vector<std::string>* passages) const {
   std::vector<std::string> out;
+  auto sink = [&](RepairKind k) -> std::vector<std::string>& { return passages && is_passage_kind(k) ? *passages : out; };
   if (!clean.entries.empty()) out.push_back("cleaning: " + clean.summary());
   std::size_t few = 0, small = 0;
   for (const auto& d : dropped) (d.reason == DropReason::TooFewPoints ? few : small)++;
@@ -56,17 +65,21 @@ std::vector<std::string> ImportReport::lines(std::size_t max_per_kind) const {
     }
     ++shown[kind];
     const char* what = describe(e.kind);
-    out.push_back(fmt::format("record {} (id {}) at lon {:.5f} lat {:.5f}: {}{}", e.record, e.id, e.where.lon,
+    sink(e.kind).push_back(fmt::format("record {} (id {}) at lon {:.5f} lat {:.5f}: {}{}", e.record, e.id, e.where.lon,
                               e.where.lat, what,
-                              e.kind == RepairKind::NarrowStrait || e.kind == RepairKind::MergedIslands
+                              e.kind == RepairKind::NarrowStrait || e.kind == RepairKind::MergedIslands ||
+                                      e.kind == RepairKind::ClosedPassage
                                   ? fmt::format(" (width {:.0f} m)", e.value)
+                              : e.kind == RepairKind::NarrowWater ? fmt::format(" (mean width {:.0f} m)", e.value)
+                              : e.kind == RepairKind::DamPlaced ? fmt::format(" ({:.0f} m long)", e.value)
                               : e.kind == RepairKind::Refined || e.kind == RepairKind::SplineHull
                                   ? fmt::format(" ({} points)", e.value)
                                                                  : std::string()));
   }
   for (std::size_t k = 0; k < hidden.size(); ++k)
     if (hidden[k] > 0)
-      out.push_back(fmt::format("... and {} more: {}", hidden[k], describe(static_cast<RepairKind>(k))));
+      sink(static_cast<RepairKind>(k))
+          .push_back(fmt::format("... and {} more: {}", hidden[k], describe(static_cast<RepairKind>(k))));
   return out;
 }
 
@@ -144,6 +157,59 @@ void reverse_curve(WorkCurve& c) {
   std::reverse(c.keep.begin(), c.keep.end());
 }
 
+// Which seas (outer loop o with holes_of[o]) hold one of the points: a point must lie in
+// the water of one of them (strictly inside the smallest outer loop round it and outside
+// its holes); one on land is an error naming the land ring it is in.
+Result<std::vector<char>> seas_at(const std::vector<geo::LonLat>& points, const std::vector<std::vector<Vec2>>& polys,
+                                  const std::vector<std::uint32_t>& outers,
+                                  const std::vector<std::vector<std::uint32_t>>& holes_of,
+                                  const std::vector<Ring>& land_rings, const std::vector<WorkCurve>& curves,
+                                  const std::vector<WorkLoop>& loops) {
+  const geo::PolarSphere ps({0, 0, 0}, 1.0);
+  std::vector<char> kept(outers.size(), 0);
+  auto area = [&](std::uint32_t l) {
+    double a = 0;
+    const auto& p = polys[l];
+    for (std::size_t i = 0; i < p.size(); ++i) a += cross(p[i], p[(i + 1) % p.size()]);
+    return std::abs(a);
+  };
+  for (const geo::LonLat pt : points) {
+    const Vec2 uv = ps.param_from_lonlat(pt);
+    std::size_t best = outers.size();
+    for (std::size_t o = 0; o < outers.size(); ++o)
+      if (point_in_ring(polys[outers[o]], uv) && (best == outers.size() || area(outers[o]) < area(outers[best])))
+        best = o;
+    std::optional<std::uint32_t> hole;
+    if (best < outers.size())
+      for (std::uint32_t h : holes_of[best])
+        if (point_in_ring(polys[h], uv)) hole = h;
+    if (best < outers.size() && !hole) {
+      kept[best] = 1;
+      continue;
+    }
+    std::string which;
+    if (hole) {
+      const WorkCurve& c = curves[loops[*hole].curves[0]];
+      which = fmt::format("island record {} (id {})", c.record, c.id);
+    } else {
+      for (const Ring& r : land_rings) {
+        std::vector<Vec2> xy;
+        for (int k = -1; k <= 1 && which.empty(); ++k) {
+          xy.clear();
+          for (auto p : r.pts) xy.push_back({p.lon + 360.0 * k, p.lat});
+          if (point_in_ring(xy, {pt.lon, pt.lat})) which = fmt::format("land ring record {} (id {})", r.record, r.id);
+        }
+        if (!which.empty()) break;
+      }
+      if (which.empty()) which = "no sea (it is on land or outside the water the import kept)";
+    }
+    CoastError e{"", -1, fmt::format("the SeaAt point (lon {:.6f}, lat {:.6f}) lies in {}", pt.lon, pt.lat, which), pt};
+    e.option = "SeaAt";
+    return e;
+  }
+  return kept;
+}
+
 }  // namespace
 
 Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
@@ -176,6 +242,11 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
     rings = std::move(c.rings);
   }
   rep.reversed = orient_rings(rings);
+  // Land rings in lon/lat, to name the one a SeaAt point falls in.
+  std::vector<Ring> land_rings;
+  if (!opt.sea_at.empty())
+    for (const Ring& r : rings)
+      if (r.closed && !r.wraps_pole && !is_water_level(r.level)) land_rings.push_back(r);
   step_done();
 
   // 3. Region clipping: which rings stay whole, which loops are made of pieces.
@@ -330,6 +401,31 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
       reverse_curve(curves[loop.curves[0]]);
     }
   }
+  // Passages and dams, on the simple loops oriented water on the left; the dams are
+  // checked against the curves like any coast, and the loops they make are oriented by
+  // construction.
+  if (opt.min_channel_width > 0 || !opt.dams.empty()) {
+    PassageOptions po;
+    po.min_width = opt.min_channel_width;
+    po.dams = opt.dams;
+    po.radius = opt.radius;
+    auto closed = close_passages(curves, loops, po, rep.repair);
+    if (!closed) {
+      CoastError e = closed.error();
+      e.option = e.file;
+      e.file = data.file;
+      return e;
+    }
+    if (*closed && opt.check_splines) {
+      auto again = repair_loops(curves, loops, ro, rep.repair);
+      if (!again) {
+        CoastError e = again.error();
+        e.file = data.file;
+        return e;
+      }
+      rep.repair_rounds += *again;
+    }
+  }
   step_done();
 
   // 7. Surfaces: each hole goes to the smallest outer loop that contains it.
@@ -365,6 +461,27 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
       const WorkCurve& c = curves[loops[l].curves[0]];
       rep.repair.push_back({RepairKind::OutsideWater, c.record, c.id, c.full[c.keep[0]], 0});
     }
+  }
+  if (!opt.sea_at.empty()) {
+    auto kept = seas_at(opt.sea_at, polys, outers, holes_of, land_rings, curves, loops);
+    if (!kept) {
+      CoastError e = kept.error();
+      e.file = data.file;
+      return e;
+    }
+    std::vector<std::uint32_t> outers_kept;
+    std::vector<std::vector<std::uint32_t>> holes_kept;
+    for (std::size_t o = 0; o < outers.size(); ++o) {
+      if ((*kept)[o]) {
+        outers_kept.push_back(outers[o]);
+        holes_kept.push_back(std::move(holes_of[o]));
+        continue;
+      }
+      ++model.seas_dropped;
+    }
+    outers = std::move(outers_kept);
+    holes_of = std::move(holes_kept);
+    unassigned.clear();
   }
   step_done();
   // 8. Output, loops numbered surface by surface (outer first, then its holes).

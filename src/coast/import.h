@@ -5,6 +5,7 @@
 #pragma once
 
 #include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,12 @@ struct ImportOptions {
   /// or come within 1e-3 gamma of each other (or of themselves), as far as the source data
   /// allows (spline_check.h: precise test by Bezier subdivision; docs/coastlines.md 6).
   bool check_splines = true;
+  /// Passages of water narrower than this (metres) are closed by dams (passages.h); 0: off.
+  double min_channel_width = 0;
+  /// Dams by hand: each segment between two lon/lat points closes the water it crosses.
+  std::vector<std::pair<geo::LonLat, geo::LonLat>> dams;
+  /// Keep only the seas (surfaces) holding one of these points; empty: every sea.
+  std::vector<geo::LonLat> sea_at;
   int max_repair_rounds = 64;
   RegionOptions region_options;
   /// Reports stage "coastline" with one unit per pipeline step (levels, cleaning,
@@ -75,6 +82,9 @@ enum class RepairKind {
   OutsideWater,   // island outside every outer loop (for instance inland in a region), dropped
   SplineHull,     // original points put back where two B-spline curves crossed or touched
   SplineMayCross, // the B-splines still cross or touch on the source data
+  ClosedPassage,  // a passage narrower than min_channel_width closed by dams (width in metres)
+  NarrowWater,    // water cut off by a closure, all narrower than min_channel_width: dropped (mean width)
+  DamPlaced,      // a dam by hand closing the water it crosses (its length in metres)
 };
 
 struct RepairEntry {
@@ -92,8 +102,10 @@ struct ImportReport {
   std::size_t reversed = 0, points_in = 0, points_out = 0, repair_rounds = 0;
   std::size_t count(RepairKind k) const;
   /// Human-readable warnings, one per change; at most `max_per_kind` entries of each
-  /// repair kind, then one line saying how many more there are.
-  std::vector<std::string> lines(std::size_t max_per_kind = static_cast<std::size_t>(-1)) const;
+  /// repair kind, then one line saying how many more there are. With `passages`, the
+  /// lines of closed passages, dams and removed narrow water go there instead.
+  std::vector<std::string> lines(std::size_t max_per_kind = static_cast<std::size_t>(-1),
+                                 std::vector<std::string>* passages = nullptr) const;
 };
 
 struct CoastModel {
@@ -101,6 +113,7 @@ struct CoastModel {
   std::vector<CoastLoop> loops;
   std::vector<CoastSurface> surfaces;      // outer loop first in each; ocean first
   std::vector<std::uint32_t> unassigned;   // hole loops with no outer (no Antarctica, no region)
+  std::size_t seas_dropped = 0;            // surfaces left out by sea_at
   ImportReport report;
 };
 

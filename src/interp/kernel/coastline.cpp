@@ -28,6 +28,15 @@ struct CoastlineImport {
   std::vector<int> outer;            // the outer loop of each surface
   std::vector<int> loops_per_surface;   // outer + holes of each surface, as in `loops`
   std::vector<int> curves, open_curves, points;
+  std::vector<int> coast_curves;     // curves that are not open boundaries (dams included)
+  /// Per open curve: the sides of the Region box it runs along (bit 0 West, 1 East,
+  /// 2 South, 3 North).
+  std::vector<std::uint8_t> open_sides;
+  std::vector<std::vector<int>> surface_loops;   // loop tags of each sea, outer first
+  /// Plane Surfaces of the seas, made on the first `Coastline{n, "Surfaces"}` (so that
+  /// scripts making their own from "LoopsPerSurface" do not get them twice).
+  mutable std::vector<int> surfaces;
+  mutable bool surfaces_made = false;
   lang::SourceRange at;              // the query that imported
 };
 
@@ -56,6 +65,9 @@ constexpr CoastOption kOptions[] = {
     {"MinStraitsFactor", OptType::Number, false, "straits narrower than factor * gamma are reported (default 1)"},
     {"CloseStraits", OptType::Number, false, "1: merge islands across such straits (default 0: keep them open)"},
     {"CheckSplines", OptType::Number, false, "1 (default): put points back until no two B-splines cross; 0: off"},
+    {"MinChannelWidth", OptType::Number, false, "close passages of water narrower than this (m) by dams (default 0: off)"},
+    {"Dams", OptType::List, false, "{lon1, lat1, lon2, lat2, ...}: dams closing the water each segment crosses"},
+    {"SeaAt", OptType::List, false, "{lon, lat, ...}: keep only the seas holding these points"},
     {"Coordinate", OptType::String, true, "lonlat, lonlat_degrees (default), utm or cartesian"},
     {"UTMZone", OptType::Number, true, "UTM zone of utm coordinates"},
     {"UTMEquatorialRadius", OptType::Number, true, "ellipsoid of utm coordinates (m)"},
@@ -63,8 +75,10 @@ constexpr CoastOption kOptions[] = {
 };
 
 // What `Coastline{n, "What"}` returns.
-constexpr std::string_view kSelectors[] = {"Loops",         "Curves", "OpenCurves",     "Points",
-                                           "ControlPoints", "Outer",  "LoopsPerSurface"};
+constexpr std::string_view kSelectors[] = {"Loops", "Curves", "OpenCurves", "Points", "ControlPoints",
+                                           "Outer", "LoopsPerSurface", "CoastCurves", "Surfaces"};
+// The sides `Coastline{n, "OpenCurves", "West"}` takes, in the bit order of open_sides.
+constexpr std::string_view kSides[] = {"West", "East", "South", "North"};
 
 const CoastOption* find_option(std::string_view name) {
   for (const CoastOption& o : kOptions)
@@ -164,6 +178,17 @@ void check_option_value(Interpreter& in, int id, const CoastOption& o, const Val
     if (x[0] < 0) fail_option(in, at, id, name, "must not be negative");
   } else if (name == "MinStraitsFactor" || name == "UTMEquatorialRadius" || name == "UTMPolarRadius") {
     if (!(x[0] > 0)) fail_option(in, at, id, name, "must be positive");
+  } else if (name == "MinChannelWidth") {
+    if (x[0] < 0) fail_option(in, at, id, name, fmt::format("must not be negative (0 is off), not {}", x[0]));
+  } else if (name == "Dams" || name == "SeaAt") {
+    const std::size_t per = name == "Dams" ? 4 : 2;
+    if (x.empty() || x.size() % per != 0)
+      fail_option(in, at, id, name,
+                  fmt::format("takes {} per {}, not {} number(s)", per == 4 ? "{lon1, lat1, lon2, lat2}" : "{lon, lat}",
+                              per == 4 ? "dam" : "point", x.size()));
+    for (std::size_t i = 1; i < x.size(); i += 2)
+      if (x[i] < -90 || x[i] > 90)
+        fail_option(in, at, id, name, fmt::format("has latitude {} (value {}): latitudes lie in [-90, 90]", x[i], i + 1));
   } else if (name == "CloseStraits" || name == "CheckSplines") {
     if (x[0] != 0 && x[0] != 1) fail_option(in, at, id, name, fmt::format("must be 0 or 1, not {}", x[0]));
   }
@@ -235,6 +260,26 @@ void check_geo(Interpreter& in, SourceRange at, const geo::GeoStatus& st) {
   if (!st) fail_geo(in, at, st.error());
 }
 
+// The sides of box b that an open-boundary curve runs along: a side counts when two
+// consecutive points of the curve lie on it.
+std::uint8_t box_sides(const std::vector<geo::LonLat>& ll, const coast::LonLatBox& b) {
+  constexpr double kOn = 1e-7;   // degrees: region.cpp puts the pieces' points on the box exactly
+  auto lon_at = [&](double lon, double edge) {
+    return std::abs(std::fmod(std::fmod(lon - edge, 360.0) + 540.0, 360.0) - 180.0) < kOn;
+  };
+  std::uint8_t sides = 0;
+  for (std::size_t i = 0; i + 1 < ll.size(); ++i) {
+    const geo::LonLat p = ll[i], q = ll[i + 1];
+    if (b.east - b.west < 360) {
+      if (lon_at(p.lon, b.west) && lon_at(q.lon, b.west)) sides |= 1;
+      if (lon_at(p.lon, b.east) && lon_at(q.lon, b.east)) sides |= 2;
+    }
+    if (std::abs(p.lat - b.south) < kOn && std::abs(q.lat - b.south) < kOn) sides |= 4;
+    if (std::abs(p.lat - b.north) < kOn && std::abs(q.lat - b.north) < kOn) sides |= 8;
+  }
+  return sides;
+}
+
 // Runs the import of Coastline[id] and adds its entities to the model.
 std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id, CoastlineDef& d, SourceRange at) {
   KernelState& k = in.kernel();
@@ -290,6 +335,28 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
   io.strait_factor = number_option(d, "MinStraitsFactor", io.strait_factor);
   io.close_straits = number_option(d, "CloseStraits", 0) != 0;
   io.check_splines = number_option(d, "CheckSplines", 1) != 0;
+  io.min_channel_width = number_option(d, "MinChannelWidth", 0);
+  if (const Value* v = option(d, "Dams")) {
+    const auto& x = v->nums();
+    for (std::size_t i = 0; i + 3 < x.size(); i += 4) io.dams.push_back({{x[i], x[i + 1]}, {x[i + 2], x[i + 3]}});
+  }
+  if (const Value* v = option(d, "SeaAt")) {
+    const auto& x = v->nums();
+    for (std::size_t i = 0; i + 1 < x.size(); i += 2) {
+      if (io.region) {   // longitudes compared modulo 360, as the Region box may run past +-180
+        const coast::LonLatBox& b = *io.region;
+        const double lon = b.west + std::fmod(std::fmod(x[i] - b.west, 360.0) + 360.0, 360.0);
+        if (lon > b.east || x[i + 1] < b.south || x[i + 1] > b.north)
+          in.fail_with_notes(d.option_at.find("SeaAt")->second, Diag::WrongCoastlineOption,
+                             fmt::format("Coastline[{}].SeaAt point (lon {}, lat {}) lies outside the Region {{{}, {}, "
+                                         "{}, {}}}",
+                                         id, x[i], x[i + 1], b.west, b.east, b.south, b.north),
+                             {{d.option_at.find("Region")->second, fmt::format("Coastline[{}].Region is set here", id)},
+                              {at, "the coastline is imported here"}});
+      }
+      io.sea_at.push_back({x[i], x[i + 1]});
+    }
+  }
   io.progress = progress_sink(in);
   coast::Loops2Options l2;
   if (const Value* v = option(d, "Coordinate")) l2.coordinate = *coast::parse_loops2_coordinate(v->strs().front());
@@ -308,10 +375,35 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
     }
   }
   auto built = coast::build_coast_model(std::move(*data), io);
-  if (!built) fail_coast(in, id, d, at, built.error(), true);
+  if (!built) {
+    const coast::CoastError& e = built.error();
+    if (auto o = d.option_at.find(e.option); !e.option.empty() && o != d.option_at.end()) {
+      try {   // a dam or a SeaAt point: located where the option is set
+        fail_coast(in, id, d, o->second, e, false);
+      } catch (RuntimeError& err) {
+        err.notes.insert(err.notes.begin(), DiagNote{at, "the coastline is imported here"});
+        throw;
+      }
+    }
+    fail_coast(in, id, d, at, e, true);
+  }
   const coast::CoastModel& m = *built;
-  for (const std::string& line : m.report.lines(5))
+  // Closed passages are listed whole at -v 5 (General.Verbosity >= 5), else the first 5.
+  const std::size_t passage_max = in.options().number("General.Verbosity") >= 5 ? static_cast<std::size_t>(-1) : 5;
+  std::vector<std::string> passages;
+  const std::vector<std::string> repair_lines = m.report.lines(5, &passages);
+  for (const std::string& line : repair_lines)
     in.diags().report(at, Diag::CoastlineRepair, fmt::format("Coastline[{}]: {}", id, line));
+  if (passage_max != 5) {
+    passages.clear();
+    m.report.lines(passage_max, &passages);
+  }
+  for (const std::string& line : passages)
+    in.diags().report(at, Diag::CoastlinePassage, fmt::format("Coastline[{}]: {}", id, line));
+  if (m.seas_dropped > 0)
+    in.diags().report(d.option_at.find("SeaAt")->second, Diag::CoastlineSeasDropped,
+                      fmt::format("Coastline[{}]: {} sea(s) holding no SeaAt point dropped, {} kept", id,
+                                  m.seas_dropped, m.surfaces.size()));
 
   // Loops surface by surface (outer first), then the holes no outer loop holds.
   std::vector<std::uint32_t> order;
@@ -365,7 +457,12 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
       record_created(k, 1, tag, at);
       curves.push_back(tag);
       imp->curves.push_back(tag);
-      if (cc.open_boundary) imp->open_curves.push_back(tag);
+      if (cc.open_boundary) {
+        imp->open_curves.push_back(tag);
+        imp->open_sides.push_back(io.region ? box_sides(cc.ll, *io.region) : 0);
+      } else {
+        imp->coast_curves.push_back(tag);
+      }
     }
     const int tag = model.new_loop_tag();
     check_geo(in, at, model.add_curve_loop(tag, curves));
@@ -376,6 +473,9 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
     imp->points.insert(imp->points.end(), pts.begin(), pts.end());
   }
   for (const coast::CoastSurface& s : m.surfaces) {
+    std::vector<int> sl{loop_tag[s.outer]};
+    for (std::uint32_t h : s.holes) sl.push_back(loop_tag[h]);
+    imp->surface_loops.push_back(std::move(sl));
     imp->outer.push_back(loop_tag[s.outer]);
     imp->loops_per_surface.push_back(static_cast<int>(1 + s.holes.size()));
   }
@@ -409,10 +509,28 @@ Value eval_coastline_query(Interpreter& in, ExprId e) {
   const auto& q = std::get<CoastlineQueryExpr>(x.node);
   std::vector<std::pair<int, SourceRange>> ids;
   std::string what = "Loops";
+  int side = -1;   // OpenCurves of one side of the Region box (index into kSides)
+  bool have_what = false;
   for (ExprId item : q.ids) {
     const Value v = in.eval(item);
     const SourceRange r = in.ast().expr(item).range;
+    if (v.is_string() && have_what) {
+      const std::string t = v.strs().empty() ? std::string() : v.strs().front();
+      std::vector<std::string> names;
+      for (std::size_t k = 0; k < std::size(kSides); ++k)
+        if (names.emplace_back(kSides[k]), kSides[k] == t) side = static_cast<int>(k);
+      if (what != "OpenCurves")
+        in.fail_fmt(r, Diag::UnknownCoastlineOption,
+                    fmt::format("Coastline{{}} takes a side (\"{}\") only after \"OpenCurves\", not after \"{}\"", t, what));
+      if (side < 0 || v.strs().size() != 1)
+        in.fail_fmt(r, Diag::UnknownCoastlineOption,
+                    fmt::format("Coastline{{}}: \"{}\" is not a side of the Region box{}; the sides are West, East, South "
+                                "and North",
+                                t, did_you_mean(t, names)));
+      continue;
+    }
     if (v.is_string()) {
+      have_what = true;
       what = v.strs().empty() ? std::string() : v.strs().front();
       bool known = false;
       std::vector<std::string> names;
@@ -420,7 +538,8 @@ Value eval_coastline_query(Interpreter& in, ExprId e) {
       if (!known || v.strs().size() != 1)
         in.fail_fmt(r, Diag::UnknownCoastlineOption,
                     fmt::format("Coastline{{}} cannot return \"{}\"{}; it returns {}", what, did_you_mean(what, names),
-                                "Loops, Curves, OpenCurves, Points, ControlPoints, Outer or LoopsPerSurface"));
+                                "Loops, Curves, OpenCurves, Points, ControlPoints, Outer, LoopsPerSurface, CoastCurves or "
+                                "Surfaces"));
       continue;
     }
     for (double d : v.nums()) {
@@ -435,7 +554,28 @@ Value eval_coastline_query(Interpreter& in, ExprId e) {
     CoastlineDef& d = require_coast(in, id, r, "import");
     if (!d.imported) d.imported = import_coastline(in, id, d, x.range);
     const CoastlineImport& imp = *d.imported;
+    if (what == "OpenCurves" && side >= 0) {
+      if (!option(d, "Region"))
+        in.fail_fmt(r, Diag::WrongCoastlineOption,
+                    fmt::format("Coastline{{{}, \"OpenCurves\", \"{}\"}} needs a Region: the sides are those of its box",
+                                id, kSides[side]));
+      for (std::size_t c = 0; c < imp.open_curves.size(); ++c)
+        if (imp.open_sides[c] & (1u << side)) out.push_back(imp.open_curves[c]);
+      continue;
+    }
+    if (what == "Surfaces" && !imp.surfaces_made) {
+      geo::Model& model = in.kernel().model;
+      for (const std::vector<int>& loops : imp.surface_loops) {
+        const int tag = model.new_surface_tag();
+        check_geo(in, x.range, model.add_plane_surface(tag, loops));
+        record_created(in.kernel(), 2, tag, x.range);
+        imp.surfaces.push_back(tag);
+      }
+      imp.surfaces_made = true;
+    }
     const std::vector<int>& list = what == "Curves"          ? imp.curves
+                                   : what == "CoastCurves"   ? imp.coast_curves
+                                   : what == "Surfaces"      ? imp.surfaces
                                    : what == "OpenCurves"    ? imp.open_curves
                                    : what == "Points"        ? imp.points
                                    : what == "ControlPoints" ? imp.loop_points

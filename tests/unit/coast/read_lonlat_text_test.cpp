@@ -13,7 +13,7 @@ using namespace sm;
 using namespace sm::coast;
 
 namespace {
-const std::string kDir = std::string(SM_SHARED_DATA) + "/gshhg/";
+const std::string kLonLatTextDir = std::string(SM_SHARED_DATA) + "/gshhg/";
 
 
 std::size_t file_points(const Coastline& c) {
@@ -31,7 +31,7 @@ TEST_CASE("lonlat text: every shared file matches its announced totals") {
                      {"arctic_i_A10.txt", 2117, 16, 89145, 0},  {"canadian_arctic_h.txt", 13158, 13, 165689, 0}};
   for (const F& f : files) {
     CAPTURE(f.name);
-    auto c = read_lonlat_text(kDir + f.name);
+    auto c = read_lonlat_text(kLonLatTextDir + f.name);
     REQUIRE_MESSAGE(c.ok(), (c.ok() ? "" : c.error().to_string()));
     CHECK(c->rings.size() == f.segs);
     std::size_t open = 0;
@@ -45,7 +45,7 @@ TEST_CASE("lonlat text: every shared file matches its announced totals") {
 }
 
 TEST_CASE("lonlat text: regions, dateline rings, Antarctica") {
-  auto gb = read_lonlat_text(kDir + "gb_ireland_f.txt");
+  auto gb = read_lonlat_text(kLonLatTextDir + "gb_ireland_f.txt");
   REQUIRE(gb.ok());
   REQUIRE(gb->region.has_value());
   CHECK(gb->region->west == -11);
@@ -53,7 +53,7 @@ TEST_CASE("lonlat text: regions, dateline rings, Antarctica") {
   CHECK(gb->region->south == 49);
   CHECK(gb->region->north == 61);
   CHECK(gb->rings[0].pts.size() == 49304);  // GB, closing point not repeated
-  auto w = read_lonlat_text(kDir + "world_c.txt");
+  auto w = read_lonlat_text(kLonLatTextDir + "world_c.txt");
   REQUIRE(w.ok());
   CHECK_FALSE(w->region.has_value());  // -Rd is the whole globe
   auto extent = [](const Ring& r) {

@@ -1,0 +1,533 @@
+// Passage closing and dams (passages.h): loops are flattened into cyclic node lists, cut
+// by 2-opt moves at facing segments, and the changed loops rebuilt into curves.
+#include "coast/passages.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "coast/coarsen.h"
+#include "coast/intersections.h"
+#include "coast/polygon2d.h"
+#include "exact/predicates.h"
+#include "exact/segments.h"
+
+namespace sm::coast {
+namespace {
+
+constexpr double kWidthTolerance = 1e-9;   // relative: "exactly W" stays open
+constexpr double kHalfPi = 1.5707963267948966;
+
+const geo::PolarSphere& unit_sphere() {
+  static const geo::PolarSphere ps({0, 0, 0}, 1.0);
+  return ps;
+}
+
+double lambda_m(Vec2 uv, double radius) { return 2.0 * radius / (1.0 + norm2(uv)); }
+
+Vec2 closest_on_segment(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 d = b - a;
+  const double l2 = norm2(d);
+  if (!(l2 > 0)) return a;
+  const double t = std::clamp(dot(p - a, d) / l2, 0.0, 1.0);
+  return a + t * d;
+}
+
+// One point of a flattened loop; `src` names the curve the segment leaving it belongs to
+// (an index into `curves`, or curves.size() + k for the k-th dam made here).
+struct Node {
+  geo::LonLat ll;
+  Vec2 uv;
+  double gamma;
+  bool kept;
+  std::uint32_t src;
+};
+
+struct FlatLoop {
+  std::vector<Node> nodes;      // cyclic
+  std::vector<std::uint32_t> kept;   // indices of kept nodes: the polygon
+  bool hole = true;
+  bool dead = false;
+  bool changed = false;
+  void index() {
+    kept.clear();
+    for (std::uint32_t i = 0; i < nodes.size(); ++i)
+      if (nodes[i].kept) kept.push_back(i);
+  }
+  Vec2 p(std::size_t j) const { return nodes[kept[j % kept.size()]].uv; }
+};
+
+struct DamInfo {
+  std::size_t record;
+  std::int64_t id;
+};
+
+struct Work {
+  std::vector<WorkCurve>& curves;
+  const std::size_t n_curves;   // curves before this pass
+  std::vector<FlatLoop> flat;
+  std::vector<DamInfo> dams;
+  const PassageOptions& opt;
+};
+
+FlatLoop flatten(const std::vector<WorkCurve>& curves, const WorkLoop& loop) {
+  FlatLoop f;
+  f.hole = loop.hole;
+  f.dead = loop.dead;
+  for (std::uint32_t ci : loop.curves) {
+    const WorkCurve& c = curves[ci];
+    std::vector<char> kept(c.full.size(), 0);
+    for (auto k : c.keep) kept[k] = 1;
+    const std::size_t m = c.periodic ? c.full.size() : c.full.size() - 1;
+    for (std::size_t i = 0; i < m; ++i) f.nodes.push_back({c.full[i], c.uv[i], c.gamma[i], kept[i] != 0, ci});
+  }
+  f.index();
+  return f;
+}
+
+// The nodes from kept position j+1 round to kept position j (inclusive): the loop opened
+// at its segment j, the original points inside that segment dropped.
+std::vector<Node> open_at(const FlatLoop& f, std::size_t j) {
+  const std::size_t n = f.nodes.size();
+  const std::size_t from = f.kept[(j + 1) % f.kept.size()], to = f.kept[j];
+  std::vector<Node> out;
+  for (std::size_t s = 0, len = (to + n - from) % n + 1; s < len; ++s) out.push_back(f.nodes[(from + s) % n]);
+  return out;
+}
+
+double signed_area(const std::vector<Vec2>& p) {
+  double a = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) a += cross(p[i], p[(i + 1) % p.size()]);
+  return 0.5 * a;
+}
+
+// Mean width 2A/P of a loop's water in metres (a strip of width w: about w).
+double mean_width_m(const FlatLoop& f, double radius) {
+  std::vector<Vec2> p;
+  Vec2 mean{0, 0};
+  for (auto k : f.kept) p.push_back(f.nodes[k].uv), mean = mean + f.nodes[k].uv;
+  mean = (1.0 / static_cast<double>(p.size())) * mean;
+  double per = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) per += norm(p[(i + 1) % p.size()] - p[i]);
+  return per > 0 ? 2.0 * std::abs(signed_area(p)) / per * lambda_m(mean, radius) : 0.0;
+}
+
+std::vector<Vec2> polygon(const FlatLoop& f) {
+  std::vector<Vec2> p;
+  for (auto k : f.kept) p.push_back(f.nodes[k].uv);
+  return p;
+}
+
+bool in_box(Vec2 p, Vec2 lo, Vec2 hi) { return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y; }
+
+// Whether the cut at a0->a1, b0->b1 can be made: the other segment on the water side of
+// each, the two dams a0->b1 and b0->a1 crossing nothing (nor `extra` dams already made),
+// and no vertex inside the quad a0 a1 b0 b1 that would become land.
+bool cut_is_clean(const std::vector<FlatLoop>& flat, Vec2 a0, Vec2 a1, Vec2 b0, Vec2 b1,
+                  const std::vector<std::pair<Vec2, Vec2>>& extra) {
+  if (orient2d(a0, a1, b0) != Sign::Positive || orient2d(a0, a1, b1) != Sign::Positive ||
+      orient2d(b0, b1, a0) != Sign::Positive || orient2d(b0, b1, a1) != Sign::Positive)
+    return false;
+  if (segments_meet(a0, b1, b0, a1)) return false;
+  const std::pair<Vec2, Vec2> dams[2] = {{a0, b1}, {b0, a1}};
+  const Vec2 lo{std::min({a0.x, a1.x, b0.x, b1.x}), std::min({a0.y, a1.y, b0.y, b1.y})};
+  const Vec2 hi{std::max({a0.x, a1.x, b0.x, b1.x}), std::max({a0.y, a1.y, b0.y, b1.y})};
+  auto is_corner = [&](Vec2 p) { return p == a0 || p == a1 || p == b0 || p == b1; };
+  auto crosses = [&](Vec2 s0, Vec2 s1) {
+    if (std::max(s0.x, s1.x) < lo.x || std::min(s0.x, s1.x) > hi.x || std::max(s0.y, s1.y) < lo.y ||
+        std::min(s0.y, s1.y) > hi.y)
+      return false;
+    if ((s0 == a0 && s1 == a1) || (s0 == b0 && s1 == b1)) return false;   // the two cut segments
+    for (const auto& d : dams) {
+      if (s0 == d.first || s0 == d.second || s1 == d.first || s1 == d.second) continue;   // its neighbours
+      if (segments_meet(d.first, d.second, s0, s1)) return true;
+    }
+    return false;
+  };
+  for (const auto& e : extra)
+    if (crosses(e.first, e.second)) return false;
+  for (const FlatLoop& f : flat) {
+    if (f.dead) continue;
+    const std::size_t n = f.kept.size();
+    for (std::size_t j = 0; j < n; ++j) {
+      const Vec2 s0 = f.p(j), s1 = f.p(j + 1);
+      if (crosses(s0, s1)) return false;
+      if (!is_corner(s0) && in_box(s0, lo, hi) && orient2d(a0, a1, s0) == Sign::Positive &&
+          orient2d(a1, b0, s0) == Sign::Positive && orient2d(b0, b1, s0) == Sign::Positive &&
+          orient2d(b1, a0, s0) == Sign::Positive)
+        return false;
+    }
+  }
+  return true;
+}
+
+std::uint32_t new_dam(Work& w, const Node& from) {
+  const std::size_t record = from.src < w.n_curves ? w.curves[from.src].record : w.dams[from.src - w.n_curves].record;
+  const std::int64_t id = from.src < w.n_curves ? w.curves[from.src].id : w.dams[from.src - w.n_curves].id;
+  w.dams.push_back({record, id});
+  return static_cast<std::uint32_t>(w.n_curves + w.dams.size() - 1);
+}
+
+FlatLoop make_loop(std::vector<Node> nodes) {
+  FlatLoop f;
+  f.nodes = std::move(nodes);
+  f.changed = true;
+  f.index();
+  f.hole = f.kept.size() >= 3 && ring_orientation(polygon(f)) == Sign::Negative;
+  return f;
+}
+
+struct CutResult {
+  std::vector<std::uint32_t> new_loops;
+};
+
+// The 2-opt at kept segment ja of loop la and jb of loop lb (see passages.h).
+CutResult cut(Work& w, std::uint32_t la, std::size_t ja, std::uint32_t lb, std::size_t jb) {
+  CutResult r;
+  if (la != lb) {
+    std::vector<Node> a = open_at(w.flat[la], ja), b = open_at(w.flat[lb], jb);
+    a.back().src = new_dam(w, a.back());   // a0 -> b1
+    b.back().src = new_dam(w, b.back());   // b0 -> a1
+    a.insert(a.end(), b.begin(), b.end());
+    w.flat[la].dead = w.flat[lb].dead = true;
+    w.flat.push_back(make_loop(std::move(a)));
+    r.new_loops.push_back(static_cast<std::uint32_t>(w.flat.size() - 1));
+    return r;
+  }
+  FlatLoop& f = w.flat[la];
+  const std::uint32_t b0 = f.kept[jb], b1 = f.kept[(jb + 1) % f.kept.size()];
+  std::vector<Node> chain = open_at(f, ja);   // a1 ... b0 b1 ... a0
+  // Positions of b0 and b1 in the chain: it starts at kept position ja + 1.
+  const std::size_t n = f.nodes.size(), start = f.kept[(ja + 1) % f.kept.size()];
+  const std::size_t pb0 = (b0 + n - start) % n, pb1 = (b1 + n - start) % n;
+  std::vector<Node> first(chain.begin(), chain.begin() + static_cast<std::ptrdiff_t>(pb0 + 1));
+  std::vector<Node> second(chain.begin() + static_cast<std::ptrdiff_t>(pb1), chain.end());
+  first.back().src = new_dam(w, first.back());     // b0 -> a1
+  second.back().src = new_dam(w, second.back());   // a0 -> b1
+  f.dead = true;
+  for (auto* part : {&first, &second}) {
+    w.flat.push_back(make_loop(std::move(*part)));
+    r.new_loops.push_back(static_cast<std::uint32_t>(w.flat.size() - 1));
+  }
+  return r;
+}
+
+struct Candidate {
+  double width;
+  std::uint32_t la, sa, lb, sb;
+  Vec2 where;
+};
+
+// Cumulative metres along each kept polygon (entry j: from vertex 0 to vertex j; last: perimeter).
+std::vector<double> ring_metres(const FlatLoop& f, double radius) {
+  std::vector<double> cum{0};
+  for (std::size_t j = 0; j < f.kept.size(); ++j)
+    cum.push_back(cum.back() + chord(f.nodes[f.kept[j]].ll, f.nodes[f.kept[(j + 1) % f.kept.size()]].ll, radius));
+  return cum;
+}
+
+// Drops a new piece of water (counter-clockwise) that is all narrow; logs it.
+void drop_if_narrow(Work& w, std::uint32_t l, std::vector<RepairEntry>& log) {
+  FlatLoop& f = w.flat[l];
+  if (f.kept.size() < 3 || ring_orientation(polygon(f)) == Sign::Zero) {
+    f.dead = true;
+    return;
+  }
+  if (f.hole) return;
+  const double mw = mean_width_m(f, w.opt.radius);
+  if (w.opt.min_width > 0 && mw < w.opt.min_width) {
+    f.dead = true;
+    const Node& n0 = f.nodes[f.kept[0]];
+    const DamInfo info = n0.src < w.n_curves ? DamInfo{w.curves[n0.src].record, w.curves[n0.src].id}
+                                             : w.dams[n0.src - w.n_curves];
+    log.push_back({RepairKind::NarrowWater, info.record, info.id, n0.ll, mw});
+  }
+}
+
+DamInfo info_of(const Work& w, const Node& n) {
+  return n.src < w.n_curves ? DamInfo{w.curves[n.src].record, w.curves[n.src].id} : w.dams[n.src - w.n_curves];
+}
+
+// One round of automatic closures: the narrowest clean cut of each loop. False: none left.
+bool close_round(Work& w, std::vector<RepairEntry>& log) {
+  const double W = w.opt.min_width;
+  const double R = w.opt.radius;
+  std::vector<std::vector<Vec2>> polys(w.flat.size());
+  std::vector<std::vector<double>> width(w.flat.size());
+  std::vector<std::vector<double>> cum(w.flat.size());
+  for (std::size_t l = 0; l < w.flat.size(); ++l) {
+    if (w.flat[l].dead) continue;
+    polys[l] = polygon(w.flat[l]);
+    for (Vec2 p : polys[l]) width[l].push_back(1.01 * W / lambda_m(p, R));
+    cum[l] = ring_metres(w.flat[l], R);
+  }
+  std::vector<Candidate> cands;
+  for (const NearMiss& m : find_near_misses(polys, width)) {
+    const auto& pa = polys[m.loop_a];
+    const auto& pb = polys[m.loop_b];
+    const Vec2 a0 = pa[m.seg_a], a1 = pa[(m.seg_a + 1) % pa.size()];
+    const Vec2 b0 = pb[m.seg_b], b1 = pb[(m.seg_b + 1) % pb.size()];
+    if (dot(a1 - a0, b1 - b0) >= 0) continue;   // not facing
+    const double d = std::min({uv_point_segment_metres(a0, b0, b1, R), uv_point_segment_metres(a1, b0, b1, R),
+                               uv_point_segment_metres(b0, a0, a1, R), uv_point_segment_metres(b1, a0, a1, R)});
+    if (!(d < W * (1 - kWidthTolerance))) continue;
+    if (m.loop_a == m.loop_b) {
+      // Two parts of one ring: a passage only when the way round between them is much
+      // longer than the way across (not the two sides of a corner).
+      const auto& c = cum[m.loop_a];
+      const std::uint32_t i = std::min(m.seg_a, m.seg_b), j = std::max(m.seg_a, m.seg_b);
+      const double inner = c[j] - c[i + 1], outer = c.back() - (c[j + 1] - c[i]);
+      if (!(std::min(inner, outer) > kHalfPi * d)) continue;
+    }
+    cands.push_back({d, m.loop_a, m.seg_a, m.loop_b, m.seg_b, 0.25 * (a0 + a1 + b0 + b1)});
+  }
+  std::stable_sort(cands.begin(), cands.end(), [](const Candidate& x, const Candidate& y) { return x.width < y.width; });
+  std::vector<char> touched(w.flat.size(), 0);
+  std::vector<std::pair<Vec2, Vec2>> made;
+  bool any = false;
+  for (const Candidate& c : cands) {
+    if (touched[c.la] || touched[c.lb]) continue;
+    const auto& pa = polys[c.la];
+    const auto& pb = polys[c.lb];
+    const Vec2 a0 = pa[c.sa], a1 = pa[(c.sa + 1) % pa.size()];
+    const Vec2 b0 = pb[c.sb], b1 = pb[(c.sb + 1) % pb.size()];
+    if (!cut_is_clean(w.flat, a0, a1, b0, b1, made)) continue;
+    touched[c.la] = touched[c.lb] = 1;
+    made.push_back({a0, b1});
+    made.push_back({b0, a1});
+    const DamInfo info = info_of(w, w.flat[c.la].nodes[w.flat[c.la].kept[c.sa]]);
+    const CutResult r = cut(w, c.la, c.sa, c.lb, c.sb);
+    std::size_t dropped = 0;
+    for (std::uint32_t l : r.new_loops) {
+      drop_if_narrow(w, l, log);
+      dropped += w.flat[l].dead;
+    }
+    touched.resize(w.flat.size(), 1);
+    if (dropped == 0)   // a cut that only trims narrow water is listed as NarrowWater
+      log.push_back({RepairKind::ClosedPassage, info.record, info.id, unit_sphere().lonlat_from_param(c.where), c.width});
+    any = true;
+  }
+  return any;
+}
+
+// Inserts a kept node at uv point x on kept segment j of loop f (its original points
+// dropped); returns the new node's index.
+std::uint32_t insert_on(FlatLoop& f, std::size_t j, Vec2 x) {
+  const std::size_t n = f.nodes.size();
+  const std::uint32_t a = f.kept[j], b = f.kept[(j + 1) % f.kept.size()];
+  const Node na = f.nodes[a], nb = f.nodes[b];
+  if (x == na.uv) return a;   // the dam meets the coast at a vertex: no new point
+  if (x == nb.uv) return b;
+  // Drop the originals strictly between a and b (cyclically), then insert after a.
+  std::vector<Node> out;
+  out.reserve(n + 1);
+  std::uint32_t at = 0;
+  for (std::size_t s = 0; s < n; ++s) {
+    const std::size_t i = (b + s) % n;   // from b round to a
+    out.push_back(f.nodes[i]);
+    if (i == a) {
+      const double t = norm(x - na.uv) / std::max(norm(nb.uv - na.uv), 1e-300);
+      out.push_back({unit_sphere().lonlat_from_param(x), x, na.gamma + t * (nb.gamma - na.gamma), true, na.src});
+      at = static_cast<std::uint32_t>(out.size() - 1);
+      break;
+    }
+  }
+  f.nodes = std::move(out);
+  f.changed = true;
+  f.index();
+  return at;
+}
+
+std::size_t kept_position(const FlatLoop& f, std::uint32_t node) {
+  return static_cast<std::size_t>(std::lower_bound(f.kept.begin(), f.kept.end(), node) - f.kept.begin());
+}
+
+// The kept segment of f crossed by p-q closest to x (x was constructed on it).
+std::size_t crossed_segment(const FlatLoop& f, Vec2 p, Vec2 q, Vec2 x) {
+  std::size_t best = 0;
+  double best_d = std::numeric_limits<double>::infinity();
+  for (std::size_t j = 0; j < f.kept.size(); ++j) {
+    if (!segments_meet(f.p(j), f.p(j + 1), p, q)) continue;
+    const double d = norm(closest_on_segment(x, f.p(j), f.p(j + 1)) - x);
+    if (d < best_d) best_d = d, best = j;
+  }
+  return best;
+}
+
+struct Crossing {
+  double t;
+  std::uint32_t loop, seg;
+  bool entering;   // into the water (the dam goes from the segment's right to its left)
+  Vec2 x;
+};
+
+// A dam by hand from p to q: cuts across each stretch of water it crosses.
+Result<std::size_t> place_dam(Work& w, geo::LonLat p_ll, geo::LonLat q_ll, std::vector<RepairEntry>& log) {
+  const Vec2 p = unit_sphere().param_from_lonlat(p_ll), q = unit_sphere().param_from_lonlat(q_ll);
+  std::vector<Crossing> xs;
+  for (std::uint32_t l = 0; l < w.flat.size(); ++l) {
+    const FlatLoop& f = w.flat[l];
+    if (f.dead) continue;
+    for (std::uint32_t j = 0; j < f.kept.size(); ++j) {
+      const Vec2 s0 = f.p(j), s1 = f.p(j + 1);
+      const Sign o0 = orient2d(s0, s1, p), o1 = orient2d(s0, s1, q);
+      const Sign o2 = orient2d(p, q, s0), o3 = orient2d(p, q, s1);
+      if (o0 == Sign::Zero || o1 == Sign::Zero || o0 == o1) continue;   // a dam end on the coast: no crossing
+      // A coast vertex on the dam line counts on its right (as if moved off it), so that
+      // exactly one of its two segments crosses the line where the coast does.
+      if ((o2 == Sign::Positive) == (o3 == Sign::Positive)) continue;
+      const double c1 = cross(s1 - s0, p - s0), c2 = cross(s1 - s0, q - s0);
+      const double t = c1 / (c1 - c2);
+      const Vec2 x = o2 == Sign::Zero ? s0 : o3 == Sign::Zero ? s1 : p + t * (q - p);
+      xs.push_back({t, l, j, o0 == Sign::Negative, x});
+    }
+  }
+  std::stable_sort(xs.begin(), xs.end(), [](const Crossing& a, const Crossing& b) { return a.t < b.t; });
+  std::size_t placed = 0;
+  // Water stretches: an entering crossing followed by a leaving one. Each is cut on the
+  // polygons as they are now; later stretches are found again on the changed loops.
+  for (std::size_t i = 0; i + 1 < xs.size(); ++i) {
+    if (!xs[i].entering || xs[i + 1].entering) continue;
+    const Crossing in = xs[i], out = xs[i + 1];
+    if (w.flat[in.loop].dead || w.flat[out.loop].dead) {
+      // The loop was cut by this dam's previous stretch: place the rest as a new dam.
+      auto rest = place_dam(w, unit_sphere().lonlat_from_param(xs[i].x - 1e-9 * (q - p)), q_ll, log);
+      if (!rest) return rest;
+      return placed + *rest;
+    }
+    const double len = norm(out.x - in.x);
+    // On the segment entered: a0 -> X2 -> X -> a1; on the one left: b0 -> Y -> Y2 -> b1.
+    // The dam Y -> X closes the water, X2 -> Y2 (one dam length away) bounds the removed quad.
+    auto toward = [len](Vec2 from, Vec2 to) {
+      return from + std::min(1.0, len / std::max(norm(to - from), 1e-300)) * 0.5 * (to - from);
+    };
+    FlatLoop& fa = w.flat[in.loop];
+    const std::uint32_t nx = insert_on(fa, in.seg, in.x);
+    const std::size_t jx = kept_position(fa, nx), ka = fa.kept.size();
+    insert_on(fa, (jx + ka - 1) % ka, toward(in.x, fa.p(jx + ka - 1)));
+    FlatLoop& fb = w.flat[out.loop];
+    const std::uint32_t ny = insert_on(fb, crossed_segment(fb, p, q, out.x), out.x);
+    const std::size_t jy = kept_position(fb, ny);
+    insert_on(fb, jy, toward(out.x, fb.p(jy + 1)));
+    // Kept positions of X2 and Y (segments X2 -> X and Y -> Y2).
+    FlatLoop& fa2 = w.flat[in.loop];
+    std::size_t ja = fa2.kept.size(), jb = w.flat[out.loop].kept.size();
+    for (std::size_t j = 0; j < fa2.kept.size(); ++j)
+      if (fa2.p(j + 1) == in.x) ja = j;
+    const FlatLoop& fb2 = w.flat[out.loop];
+    for (std::size_t j = 0; j < fb2.kept.size(); ++j)
+      if (fb2.p(j) == out.x) jb = j;
+    if (ja == fa2.kept.size() || jb == fb2.kept.size() ||
+        !cut_is_clean(w.flat, fa2.p(ja), fa2.p(ja + 1), fb2.p(jb), fb2.p(jb + 1), {}))
+      return CoastError{"Dams", -1,
+                        fmt::format("the dam from (lon {:.6f}, lat {:.6f}) to (lon {:.6f}, lat {:.6f}) cannot close the "
+                                    "water it crosses without crossing another coastline: move its ends onto the "
+                                    "nearest land on each side",
+                                    p_ll.lon, p_ll.lat, q_ll.lon, q_ll.lat),
+                        unit_sphere().lonlat_from_param(0.5 * (in.x + out.x))};
+    const DamInfo info = info_of(w, fa2.nodes[fa2.kept[ja]]);
+    const CutResult r = cut(w, in.loop, ja, out.loop, jb);
+    for (std::uint32_t l : r.new_loops) drop_if_narrow(w, l, log);
+    log.push_back({RepairKind::DamPlaced, info.record, info.id, unit_sphere().lonlat_from_param(0.5 * (in.x + out.x)),
+                   uv_point_segment_metres(in.x, out.x, out.x, w.opt.radius)});
+    ++placed;
+    ++i;
+  }
+  return placed;
+}
+
+// Rebuilds a changed flat loop into curves (one per run of nodes with the same source,
+// each dam a two-point curve) appended to `curves`.
+WorkLoop rebuild(Work& w, const FlatLoop& f) {
+  WorkLoop out;
+  out.hole = f.hole;
+  const std::size_t n = f.nodes.size();
+  std::size_t start = 0;
+  while (start < n && f.nodes[start].src == f.nodes[(start + n - 1) % n].src) ++start;
+  if (start == n) start = 0;
+  std::size_t i = start;
+  do {
+    const std::uint32_t src = f.nodes[i].src;
+    WorkCurve c;
+    c.periodic = false;
+    if (src < w.n_curves) {
+      c.open_boundary = w.curves[src].open_boundary;
+      c.record = w.curves[src].record;
+      c.id = w.curves[src].id;
+    } else {
+      c.record = w.dams[src - w.n_curves].record;
+      c.id = w.dams[src - w.n_curves].id;
+    }
+    std::size_t j = i;
+    do {
+      const Node& nd = f.nodes[j];
+      if (nd.kept || j == i) c.keep.push_back(static_cast<std::uint32_t>(c.full.size()));
+      c.full.push_back(nd.ll);
+      c.uv.push_back(nd.uv);
+      c.gamma.push_back(nd.gamma);
+      j = (j + 1) % n;
+    } while (j != start && f.nodes[j].src == src);
+    const Node& end = f.nodes[j];   // the next curve's first point closes this one
+    c.keep.push_back(static_cast<std::uint32_t>(c.full.size()));
+    c.full.push_back(end.ll);
+    c.uv.push_back(end.uv);
+    c.gamma.push_back(end.gamma);
+    out.curves.push_back(static_cast<std::uint32_t>(w.curves.size()));
+    w.curves.push_back(std::move(c));
+    i = j;
+  } while (i != start);
+  return out;
+}
+
+}  // namespace
+
+double uv_point_segment_metres(Vec2 p, Vec2 a, Vec2 b, double radius) {
+  const Vec2 f = closest_on_segment(p, a, b);
+  return chord(unit_sphere().lonlat_from_param(p), unit_sphere().lonlat_from_param(f), radius);
+}
+
+Result<bool> close_passages(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops, const PassageOptions& opt,
+                            std::vector<RepairEntry>& log) {
+  if (!(opt.min_width > 0) && opt.dams.empty()) return false;
+  Work w{curves, curves.size(), {}, {}, opt};
+  for (const WorkLoop& l : loops) w.flat.push_back(flatten(curves, l));
+  std::size_t vertices = 0;
+  for (const FlatLoop& f : w.flat) vertices += f.dead ? 0 : f.kept.size();
+  for (const auto& [p, q] : opt.dams) {
+    auto placed = place_dam(w, p, q, log);
+    if (!placed) return placed.error();
+    if (*placed == 0)
+      return CoastError{"Dams", -1,
+                        fmt::format("the dam from (lon {:.6f}, lat {:.6f}) to (lon {:.6f}, lat {:.6f}) crosses no water: "
+                                    "both ends and the line between them lie on land (or in one stretch of water)",
+                                    p.lon, p.lat, q.lon, q.lat),
+                        p};
+  }
+  // Each round closes at most one passage per loop, and every cut either drops water or
+  // joins/splits loops; the bound only guards against a geometry that would not settle.
+  if (opt.min_width > 0)
+    for (std::size_t round = 0; round < 4 * vertices + 16; ++round)
+      if (!close_round(w, log)) break;
+  bool changed = false;
+  const std::size_t n_old = loops.size();
+  for (std::size_t l = 0; l < w.flat.size(); ++l) {
+    const FlatLoop& f = w.flat[l];
+    if (l < n_old) {
+      if (f.dead && !loops[l].dead) loops[l].dead = true, changed = true;
+      if (!f.dead && f.changed) {   // a loop changed in place (a dam's points inserted): rebuilt
+        loops[l] = rebuild(w, f);
+        changed = true;
+      }
+      continue;
+    }
+    if (f.dead) continue;
+    loops.push_back(rebuild(w, f));
+    changed = true;
+  }
+  return changed;
+}
+
+}  // namespace sm::coast

@@ -1,0 +1,45 @@
+// Closing narrow passages of water (MinChannelWidth) and dams given by hand (Dams) on the
+// repaired, oriented coastline loops, before the B-splines are made. A closure is a
+// "2-opt" of two facing coast segments a0->a1 and b0->b1 across the water:
+//
+//      a1 <------- a0          the segments are replaced by the two dams a0->b1 and
+//       |  water   :           b0->a1; the quad a0 a1 b0 b1 between them becomes land.
+//       v  (quad)  :           Two loops (island and mainland) become one; one loop
+//      b0 -------> b1          (two sides of a canal or an inlet) becomes two seas.
+//
+// The piece of water a cut separates is dropped when it is all narrow (mean width 2A/P
+// below the width), so repeating the cut at the narrowest place left fills a canal or a
+// dead-end inlet up to its mouths. Every left/right decision is an exact orient2d.
+#pragma once
+
+#include <utility>
+#include <vector>
+
+#include "coast/coastline.h"
+#include "coast/import.h"
+#include "coast/repair.h"
+
+namespace sm::coast {
+
+struct PassageOptions {
+  /// Passages narrower than this (metres on the sphere) are closed; 0: none. A passage
+  /// exactly this wide stays open (widths are compared within a relative 1e-9).
+  double min_width = 0;
+  /// Dams by hand: segments between two lon/lat points, each closing the water it crosses.
+  std::vector<std::pair<geo::LonLat, geo::LonLat>> dams;
+  double radius = geo::kEarthRadius;
+};
+
+/// Closes passages and places dams in place (new loops appended, replaced loops marked
+/// dead, dams appended as two-point curves). Loops must be intersection-free and oriented
+/// water on the left. Appends ClosedPassage / DamPlaced / NarrowWater entries to `log`.
+/// Returns whether anything changed; errors (option "Dams"): a dam crossing no water, or
+/// one whose ends cannot be joined across the water without crossing a coast.
+Result<bool> close_passages(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops,
+                            const PassageOptions& opt, std::vector<RepairEntry>& log);
+
+/// Distance in metres on the sphere of `radius` between the (u,v) point p and the closest
+/// point of the (u,v) segment a-b (measured as the chord between their points on the sphere).
+double uv_point_segment_metres(Vec2 p, Vec2 a, Vec2 b, double radius);
+
+}  // namespace sm::coast

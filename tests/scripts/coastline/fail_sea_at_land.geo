@@ -1,0 +1,14 @@
+// A SeaAt point on land (in Sicily): the error names the island's record.
+R = 6371009;
+Point(1) = {0, 0, 0};
+Point(2) = {0, 0, R};
+PolarSphere(1) = {1, 2};
+Field[1] = MathEval;
+Field[1].F = "5000";
+Coastline[1] = LonLatText;
+Coastline[1].FileName = "../../../../shared/data/gshhg/world_i_A100.txt";
+Coastline[1].AccuracyField = 1;
+Coastline[1].Region = {-5.6, 37, 29, 46.5};
+Coastline[1].SeaAt = {14, 37.5};
+loops[] = Coastline{1};
+// expect error: 12:1: coastline-error

@@ -1,0 +1,232 @@
+// Passage closing (MinChannelWidth), dams by hand and SeaAt through the whole import, on
+// synthetic rings near the equator in the region box {-1, 1, -1, 1} (degrees).
+#include "coast/passages.h"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "coast/constant_accuracy.h"
+#include "coast/import.h"
+#include "coast/intersections.h"
+#include "coast/polygon2d.h"
+
+using namespace sm;
+using namespace sm::coast;
+
+namespace {
+
+constexpr double kPassW = 0.01;   // degrees: the narrow water of every test, about 1112 m
+
+// Appends the points from a to b (excluded) every `step` degrees.
+void pass_line(std::vector<geo::LonLat>& out, geo::LonLat a, geo::LonLat b, double step = 0.02) {
+  const double len = std::hypot(b.lon - a.lon, b.lat - a.lat);
+  const int n = std::max(1, static_cast<int>(std::ceil(len / step)));
+  for (int i = 0; i < n; ++i) out.push_back({a.lon + (b.lon - a.lon) * i / n, a.lat + (b.lat - a.lat) * i / n});
+}
+
+Ring pass_ring(const std::vector<geo::LonLat>& corners, std::int64_t id) {
+  Ring r;
+  for (std::size_t i = 0; i < corners.size(); ++i) pass_line(r.pts, corners[i], corners[(i + 1) % corners.size()]);
+  r.id = id;
+  r.record = static_cast<std::size_t>(id);
+  return r;
+}
+
+// A wall of land across the box (lon -0.2 .. 0.2) cut by an east-west canal of width w at
+// lat 0: the south and north walls are two rings, both cut by the box.
+Coastline pass_canal(double w) {
+  Coastline c;
+  c.file = "canal";
+  c.rings.push_back(pass_ring({{-0.2, -2}, {0.2, -2}, {0.2, -w / 2}, {-0.2, -w / 2}}, 0));
+  c.rings.push_back(pass_ring({{-0.2, w / 2}, {0.2, w / 2}, {0.2, 2}, {-0.2, 2}}, 1));
+  return c;
+}
+
+ImportOptions pass_options(double min_width) {
+  ImportOptions o;
+  o.gamma = testing::constant_accuracy(300);
+  o.region = LonLatBox{-1, 1, -1, 1};
+  o.min_channel_width = min_width;
+  return o;
+}
+
+std::vector<Vec2> pass_loop_uv(const CoastModel& m, std::uint32_t l) {
+  std::vector<Vec2> p;
+  const auto& loop = m.loops[l];
+  for (std::uint32_t c : loop.curves) {
+    const auto& uv = m.curves[c].uv;
+    p.insert(p.end(), uv.begin(), loop.curves.size() > 1 ? uv.end() - 1 : uv.end());
+  }
+  return p;
+}
+
+// The surface whose water holds (lon, lat), or -1.
+int pass_sea_of(const CoastModel& m, geo::LonLat ll) {
+  const Vec2 uv = geo::PolarSphere({0, 0, 0}, 1.0).param_from_lonlat(ll);
+  for (std::size_t s = 0; s < m.surfaces.size(); ++s) {
+    if (!point_in_ring(pass_loop_uv(m, m.surfaces[s].outer), uv)) continue;
+    bool in_hole = false;
+    for (std::uint32_t h : m.surfaces[s].holes) in_hole = in_hole || point_in_ring(pass_loop_uv(m, h), uv);
+    if (!in_hole) return static_cast<int>(s);
+  }
+  return -1;
+}
+
+void pass_check_clean(const CoastModel& m) {
+  std::vector<std::vector<Vec2>> polys;
+  for (std::uint32_t l = 0; l < m.loops.size(); ++l) polys.push_back(pass_loop_uv(m, l));
+  CHECK(find_intersections(polys).empty());
+  for (const CoastSurface& s : m.surfaces) {
+    CHECK(ring_orientation(polys[s.outer]) == Sign::Positive);
+    for (std::uint32_t h : s.holes) CHECK(ring_orientation(polys[h]) == Sign::Negative);
+  }
+}
+
+// Curve points strictly inside the box lon (lo, hi), lat (-w/2, w/2): water left in the canal.
+std::size_t pass_points_in(const CoastModel& m, double lo, double hi, double half) {
+  std::size_t n = 0;
+  for (const CoastCurve& c : m.curves)
+    for (geo::LonLat p : c.ll) n += p.lon > lo && p.lon < hi && std::abs(p.lat) < half;
+  return n;
+}
+
+// The narrowest (vertex, facing segment) distance of the canal, as the kernel measures it.
+double pass_canal_width(double w) {
+  const Coastline c = pass_canal(w);
+  const geo::PolarSphere ps({0, 0, 0}, 1.0);
+  auto side = [&](const Ring& r, double lat) {
+    std::vector<Vec2> uv;
+    for (geo::LonLat p : r.pts)
+      if (p.lat == lat && std::abs(p.lon) <= 0.2) uv.push_back(ps.param_from_lonlat(p));
+    return uv;
+  };
+  const auto s = side(c.rings[0], -w / 2), n = side(c.rings[1], w / 2);
+  double best = 1e300;
+  for (std::size_t i = 0; i < s.size(); ++i)
+    for (std::size_t j = 0; j + 1 < n.size(); ++j) best = std::min(best, uv_point_segment_metres(s[i], n[j], n[j + 1], geo::kEarthRadius));
+  for (std::size_t i = 0; i < n.size(); ++i)
+    for (std::size_t j = 0; j + 1 < s.size(); ++j) best = std::min(best, uv_point_segment_metres(n[i], s[j], s[j + 1], geo::kEarthRadius));
+  return best;
+}
+
+}  // namespace
+
+TEST_CASE("passages: without MinChannelWidth the canal stays one sea") {
+  auto m = build_coast_model(pass_canal(kPassW), pass_options(0));
+  REQUIRE(m.ok());
+  CHECK(m->surfaces.size() == 1);
+  CHECK(m->report.count(RepairKind::ClosedPassage) == 0);
+  CHECK(pass_points_in(*m, -0.15, 0.15, kPassW / 2 + 1e-9) > 0);
+}
+
+TEST_CASE("passages: a canal narrower than W is closed and filled to its mouths: two seas") {
+  auto m = build_coast_model(pass_canal(kPassW), pass_options(1500));
+  REQUIRE(m.ok());
+  pass_check_clean(*m);
+  CHECK(m->surfaces.size() == 2);
+  CHECK(m->report.count(RepairKind::ClosedPassage) >= 1);
+  const int west = pass_sea_of(*m, {-0.6, 0.5}), east = pass_sea_of(*m, {0.6, 0.5});
+  CHECK(west >= 0);
+  CHECK(east >= 0);
+  CHECK(west != east);
+  // No coast point left along the canal beyond a segment (0.02 degrees) from its mouths.
+  CHECK(pass_points_in(*m, -0.2 + 0.045, 0.2 - 0.045, kPassW / 2 + 1e-9) == 0);
+  // Each closure's width was reported, below W and about the canal's.
+  for (const RepairEntry& e : m->report.repair)
+    if (e.kind == RepairKind::ClosedPassage) {
+      CHECK(e.value < 1500);
+      CHECK(e.value > 1000);
+    }
+}
+
+TEST_CASE("passages: a passage exactly W wide stays open; a hair narrower is closed") {
+  const double width = pass_canal_width(kPassW);
+  CHECK(width == doctest::Approx(kPassW * M_PI / 180 * geo::kEarthRadius).epsilon(1e-3));
+  auto open = build_coast_model(pass_canal(kPassW), pass_options(width));
+  REQUIRE(open.ok());
+  CHECK(open->surfaces.size() == 1);
+  CHECK(open->report.count(RepairKind::ClosedPassage) == 0);
+  auto closed = build_coast_model(pass_canal(kPassW), pass_options(width * (1 + 1e-6)));
+  REQUIRE(closed.ok());
+  CHECK(closed->surfaces.size() == 2);
+}
+
+TEST_CASE("passages: a strait between two islands narrower than W merges them") {
+  Coastline c;
+  c.file = "islands";
+  c.rings.push_back(pass_ring({{-0.5, -0.3}, {-kPassW / 2, -0.3}, {-kPassW / 2, 0.3}, {-0.5, 0.3}}, 0));
+  c.rings.push_back(pass_ring({{kPassW / 2, -0.3}, {0.5, -0.3}, {0.5, 0.3}, {kPassW / 2, 0.3}}, 1));
+  auto kept = build_coast_model(c, pass_options(0));
+  REQUIRE(kept.ok());
+  REQUIRE(kept->surfaces.size() == 1);
+  CHECK(kept->surfaces[0].holes.size() == 2);
+  auto m = build_coast_model(c, pass_options(1500));
+  REQUIRE(m.ok());
+  pass_check_clean(*m);
+  REQUIRE(m->surfaces.size() == 1);
+  CHECK(m->surfaces[0].holes.size() == 1);
+  CHECK(m->report.count(RepairKind::ClosedPassage) >= 1);
+  // The strait is land along its whole length but its ends.
+  std::size_t in_strait = 0;
+  for (const CoastCurve& cc : m->curves)
+    for (geo::LonLat p : cc.ll) in_strait += std::abs(p.lon) < kPassW / 2 - 1e-9 && std::abs(p.lat) < 0.3 - 0.045;
+  CHECK(in_strait == 0);
+}
+
+TEST_CASE("passages: a dead-end inlet narrower than W is closed at its mouth") {
+  Coastline c;
+  c.file = "inlet";
+  const double h = kPassW / 2;
+  c.rings.push_back(pass_ring({{-2, -2}, {2, -2}, {2, 0}, {h, 0}, {h, -0.5}, {-h, -0.5}, {-h, 0}, {-2, 0}}, 0));
+  auto open = build_coast_model(c, pass_options(0));
+  REQUIRE(open.ok());
+  std::size_t inside = 0;
+  for (const CoastCurve& cc : open->curves)
+    for (geo::LonLat p : cc.ll) inside += p.lat < -0.05 && std::abs(p.lon) < 0.1;
+  CHECK(inside > 0);
+  auto m = build_coast_model(c, pass_options(1500));
+  REQUIRE(m.ok());
+  pass_check_clean(*m);
+  CHECK(m->surfaces.size() == 1);
+  CHECK(m->report.count(RepairKind::NarrowWater) >= 1);
+  inside = 0;
+  for (const CoastCurve& cc : m->curves)
+    for (geo::LonLat p : cc.ll) inside += p.lat < -0.045 && std::abs(p.lon) < 0.1;
+  CHECK(inside == 0);
+}
+
+TEST_CASE("passages: a dam by hand across the canal makes two seas; one on land is an error") {
+  ImportOptions o = pass_options(0);
+  o.dams = {{{0, -0.5}, {0, 0.5}}};
+  auto m = build_coast_model(pass_canal(kPassW), o);
+  if (!m.ok()) MESSAGE(m.error().to_string());
+  REQUIRE(m.ok());
+  pass_check_clean(*m);
+  CHECK(m->surfaces.size() == 2);
+  CHECK(m->report.count(RepairKind::DamPlaced) == 1);
+  CHECK(pass_sea_of(*m, {-0.6, 0.5}) != pass_sea_of(*m, {0.6, 0.5}));
+
+  o.dams = {{{0, -0.5}, {0, -0.3}}};   // inside the south wall
+  auto bad = build_coast_model(pass_canal(kPassW), o);
+  REQUIRE_FALSE(bad.ok());
+  CHECK(bad.error().option == "Dams");
+  CHECK(bad.error().message.find("crosses no water") != std::string::npos);
+}
+
+TEST_CASE("passages: SeaAt keeps the sea holding the point; a point on land names its ring") {
+  ImportOptions o = pass_options(1500);
+  o.sea_at = {{-0.6, 0.5}};
+  auto m = build_coast_model(pass_canal(kPassW), o);
+  REQUIRE(m.ok());
+  CHECK(m->surfaces.size() == 1);
+  CHECK(m->seas_dropped == 1);
+  CHECK(pass_sea_of(*m, {-0.6, 0.5}) == 0);
+  CHECK(pass_sea_of(*m, {0.6, 0.5}) == -1);
+
+  o.sea_at = {{0, 0.5}};   // in the north wall (record 1)
+  auto bad = build_coast_model(pass_canal(kPassW), o);
+  REQUIRE_FALSE(bad.ok());
+  CHECK(bad.error().option == "SeaAt");
+  CHECK(bad.error().message.find("record 1") != std::string::npos);
+}
