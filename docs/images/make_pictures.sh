@@ -45,4 +45,13 @@ mesh arctic -o "$tmp/arctic.msh"
 /usr/bin/python3 "$here/mesh_picture.py" "$tmp/arctic.msh" "$tmp/arctic.svg" --width 900
 rsvg-convert "$tmp/arctic.svg" -o "$tmp/arctic.png"
 small "$tmp/arctic.png" "$here/arctic.png"
+# The Suez end of examples/mediterranean.geo with the passages left open and closed
+# (docs/coastlines.md, "Passages, dams and seas").
+mesh mediterranean -setnumber RegionalMinChannelWidth 0 -o "$tmp/med_open.msh"
+mesh mediterranean -o "$tmp/med_closed.msh"
+for c in open closed; do
+  /usr/bin/python3 "$here/mesh_picture.py" "$tmp/med_$c.msh" "$tmp/suez_$c.svg" --width 600 --box 31.6 33.4 29.6 31.7
+  rsvg-convert "$tmp/suez_$c.svg" -o "$tmp/suez_$c.png"
+  small "$tmp/suez_$c.png" "$here/suez_$c.png"
+done
 ls -l "$here"/*.png >&2
