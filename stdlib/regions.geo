@@ -14,11 +14,13 @@ If (!Exists(RegionsGeoLoaded))
   RegionCanadianArchipelago[] = {-130, -60, 60, 84};   // Figure 11's 20 km zone
   RegionNorthPacific[] = {150, 240, 20, 62};     // Figure 10's close-up
   RegionMediterranean[] = {-5.6, 37, 29, 46.5};  // from Gibraltar; holds the Black Sea's west and the Suez Canal
+  RegionGulfOfMexico[] = {-98, -76, 7, 31};      // with the western Caribbean; holds the Panama Canal
 
   // Places {lon, lat} (degrees).
   LizardIsland[] = {145.45, -14.67};             // Figure 14's refinement centre
   ScheldtMouth[] = {3.58, 51.42};                // Vlissingen, where the estuary opens
   CentralMediterranean[] = {18, 35};             // the Ionian Sea, south of Italy
+  CentralGulfOfMexico[] = {-90, 25};
   Antwerp[] = {4.40, 51.23};                     // Figure 13's upstream end (150 m)
 
   // RegionalSea: the whole set-up of a regional sea (docs/coastlines.md, "Regional seas").

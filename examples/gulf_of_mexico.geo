@@ -1,0 +1,15 @@
+// The Gulf of Mexico with the western Caribbean (box 98W-76W, 7N-31N): the Panama Canal and
+// the narrow passages of the Florida and Cuban keys closed by MinChannelWidth = 2 km, the
+// Gulf's sea kept by SeaAt, so the Pacific south of the isthmus stays out (docs/coastlines.md).
+//   stereomesh -2 examples/gulf_of_mexico.geo -o gulf.14
+DefineConstant[ ShoreSizeMin = 10e3, ShoreSizeMax = 60e3, ShoreDistMax = 300e3, RegionalAccuracy = 5e3,
+                RegionalMinChannelWidth = 2e3 ];
+Include "regions.geo";
+Include "ocean_fields.geo";
+Call EarthSphere;
+RegionalFile = StrCat(GshhgDir, "world_i_A100.txt");
+RegionalBox[] = {RegionGulfOfMexico[]};
+RegionalSeaAt[] = {CentralGulfOfMexico[]};
+Call RegionalSea;
+ShorePoints[] = RegionalShorePoints[];  ShoreBox[] = RegionalBox[];
+Call ShoreProximity;  OceanFields[] = {ShoreField};  Call OceanSize;
