@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include "coast/passages.h"
-#include "coast/polygon2d.h"
+#include "exact/ring.h"
 #include "coast/repair.h"
 
 namespace sm::coast {

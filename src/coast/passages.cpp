@@ -11,7 +11,7 @@
 
 #include "coast/coarsen.h"
 #include "coast/intersections.h"
-#include "coast/polygon2d.h"
+#include "exact/ring.h"
 #include "exact/predicates.h"
 #include "exact/segments.h"
 

@@ -14,7 +14,7 @@
 
 #include <fmt/format.h>
 
-#include "coast/polygon2d.h"
+#include "exact/ring.h"
 
 namespace sm::coast {
 namespace {

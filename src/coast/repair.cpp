@@ -11,7 +11,7 @@
 #include <fmt/format.h>
 
 #include "coast/intersections.h"
-#include "coast/polygon2d.h"
+#include "exact/ring.h"
 #include "coast/spline_check.h"
 #include "exact/predicates.h"
 #include "exact/segments.h"

@@ -2,6 +2,7 @@
 #include "geo/loop_check.h"
 
 #include "geo/model.h"
+#include "exact/ring.h"
 
 #include <fmt/format.h>
 
@@ -174,11 +175,9 @@ bool PolygonIndex::contains(Vec2 p) const {
   if (m < 3 || p.y < ylo_ || p.y > yhi_) return false;
   bool in = false;
   for (std::size_t i : edges_[band_of(p.y)]) {
-    const Vec2 a = poly_[i], b = poly_[(i + 1) % m];
-    if ((a.y > p.y) != (b.y > p.y)) {
-      const double x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
-      if (x > p.x) in = !in;
-    }
+    const RayCrossing c = ray_crossing(poly_[i], poly_[(i + 1) % m], p);
+    if (c == RayCrossing::OnEdge) return false;
+    if (c == RayCrossing::Crosses) in = !in;
   }
   return in;
 }

@@ -43,9 +43,8 @@ struct PlaneFrame {
 PlaneFrame plane_frame(const std::vector<Vec3>& pts);
 
 /// Even-odd point-in-polygon test against a fixed polygon, with its edges sorted into
-/// horizontal bands so that a query visits about sqrt(n) edges. Floating-point ray crossing
-/// on sampled constructions: a model check, not a mesh decision, so the exact predicates of
-/// src/mesh (which depends on this module) are not used.
+/// horizontal bands so that a query visits about sqrt(n) edges; each edge's ray crossing is
+/// exact (exact/ring.h). A point on the boundary counts as outside.
 class PolygonIndex {
  public:
   explicit PolygonIndex(std::vector<Vec2> polygon);

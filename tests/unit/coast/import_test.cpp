@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "coast/intersections.h"
-#include "coast/polygon2d.h"
+#include "exact/ring.h"
 #include "coast/read_gshhs.h"
 #include "coast/read_lonlat_text.h"
 #include "coast/read_shapefile.h"

@@ -9,7 +9,7 @@
 #include "coast/constant_accuracy.h"
 #include "coast/import.h"
 #include "coast/intersections.h"
-#include "coast/polygon2d.h"
+#include "exact/ring.h"
 
 using namespace sm;
 using namespace sm::coast;

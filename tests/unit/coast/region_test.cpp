@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "coast/clean.h"
-#include "coast/polygon2d.h"
+#include "exact/ring.h"
 #include "coast/read_lonlat_text.h"
 
 using namespace sm;
