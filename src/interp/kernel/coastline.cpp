@@ -115,15 +115,13 @@ void exec_coast_new(Interpreter& in, const Stmt& s, const CoastlineNewStmt& n) {
   const std::string format(in.ast().str(n.format));
   const auto parsed = coast::parse_coast_format(format);
   if (!parsed) {
-    in.fail_fmt(n.format_range, Diag::UnknownCoastlineFormat,
-                fmt::format("unknown coastline format '{}'{}; the formats are GSHHS, Shapefile, LonLatText and Loops2",
-                            format, did_you_mean(format, {"GSHHS", "Shapefile", "LonLatText", "Loops2"})));
+    in.fail_fmt(n.format_range, Diag::UnknownCoastlineFormat, format,
+                did_you_mean(format, {"GSHHS", "Shapefile", "LonLatText", "Loops2"}));
   }
   auto& defs = in.kernel().coastlines;
   if (auto it = defs.find(id); it != defs.end()) {
     try {
-      in.fail_fmt(in.ast().expr(n.id).range, Diag::DuplicateCoastline,
-                  fmt::format("Coastline[{}] is already defined: 'Delete Coastline[{}];' first to redefine it", id, id));
+      in.fail_fmt(in.ast().expr(n.id).range, Diag::DuplicateCoastline, id);
     } catch (RuntimeError& err) {
       err.notes.insert(err.notes.begin(), DiagNote{it->second.defined_at, "first defined here"});
       throw;
@@ -393,7 +391,7 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
   std::vector<std::string> passages;
   const std::vector<std::string> repair_lines = m.report.lines(5, &passages);
   for (const std::string& line : repair_lines)
-    in.diags().report(at, Diag::CoastlineRepair, fmt::format("Coastline[{}]: {}", id, line));
+    in.diags().report(at, Diag::CoastlineRepair, fmt::format("Coastline[{}]", id), line);
   if (passage_max != 5) {
     passages.clear();
     m.report.lines(passage_max, &passages);

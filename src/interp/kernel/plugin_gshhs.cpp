@@ -104,7 +104,7 @@ void run_plugin(Interpreter& in, const Stmt& s) {
     in.fail_fmt(s.range, Diag::FileWriteError, out, ec.message());
   }
   for (const std::string& line : res->model.report.lines(5))
-    in.diags().report(s.range, Diag::CoastlineRepair, fmt::format("Plugin(GSHHS): {}", line));
+    in.diags().report(s.range, Diag::CoastlineRepair, "Plugin(GSHHS)", line);
 }
 
 void exec_gshhs_plugin_stmt(Interpreter& in, StmtId id) {
