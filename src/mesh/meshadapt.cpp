@@ -239,7 +239,7 @@ std::uint64_t Adapter::swap_pass(bool all) {
   };
   stack_.clear();
   if (all) {
-    for (std::uint32_t s = m_.corner.size(); s-- > 0;)
+    for (auto s = static_cast<std::uint32_t>(m_.corner.size()); s-- > 0;)
       if (m_.alive(tri_of(Side{s}))) push(Side{s});
   } else {
     std::sort(dirty_list_.begin(), dirty_list_.end());

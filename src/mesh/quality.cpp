@@ -63,11 +63,13 @@ QualityStats mesh_quality(const TriangleStore& m, const std::function<double(Vec
   q.mean_gamma = sum_gamma / q.triangles;
   q.share_rho_09 = double(good) / q.triangles;
   std::sort(ratio.begin(), ratio.end());
-  auto pct = [&](double f) { return ratio[std::min(ratio.size() - 1, static_cast<std::size_t>(f * ratio.size()))]; };
+  auto pct = [&](double f) {
+    return ratio[std::min(ratio.size() - 1, static_cast<std::size_t>(f * static_cast<double>(ratio.size())))];
+  };
   q.len_median = pct(0.5), q.len_p05 = pct(0.05), q.len_p95 = pct(0.95);
   std::size_t in = 0;
   for (double r : ratio) in += r >= 0.7 && r <= 1.4;
-  q.share_len_07_14 = double(in) / ratio.size();
+  q.share_len_07_14 = double(in) / static_cast<double>(ratio.size());
   return q;
 }
 

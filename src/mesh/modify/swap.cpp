@@ -24,7 +24,7 @@ SwapStats swap_for_quality(TriangleStore& m, double min_gain, std::uint64_t max_
   SwapStats out;
   std::vector<Side> stack;
   std::vector<std::uint8_t> queued(m.corner.size(), 0);
-  for (std::uint32_t s = m.corner.size(); s-- > 0;) {
+  for (auto s = static_cast<std::uint32_t>(m.corner.size()); s-- > 0;) {
     const Side o = m.twin[s];
     if (m.alive(tri_of(Side{s})) && o.valid() && s < o.value && !m.constrained(Side{s})) {
       stack.push_back(Side{s});
