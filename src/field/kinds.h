@@ -9,6 +9,7 @@ namespace sm::field {
 KindSpec ball_kind();
 KindSpec bathymetry_kind();
 KindSpec box_kind();
+KindSpec channel_width_kind();
 KindSpec constant_kind();
 KindSpec curvature_kind();
 KindSpec cylinder_kind();

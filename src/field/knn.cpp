@@ -26,19 +26,27 @@ namespace {
 
 using Tree = flann::KDTreeSingleIndex<flann::L2_Simple<double>>;
 
-/// One nearest neighbour, with an initial squared-distance bound.
+/// One nearest neighbour, with an initial squared-distance bound. Of several
+/// points at exactly the same distance the one with the smallest index wins,
+/// whatever the order of the visit (the seed of the search depends on the other
+/// queries of the batch): worstDist() is a hair above the best distance, so that
+/// FLANN still hands over points at that distance (its leaves test dist < worst).
 class NearestResult final : public flann::ResultSet<double> {
  public:
   explicit NearestResult(double bound_sq) : worst_(bound_sq) {}
   bool full() const override { return true; }
   void addPoint(double dist, std::size_t index) override {
-    if (dist < worst_ || index_ == kNone) {
+    if (dist < worst_ || index_ == kNone || (dist == worst_ && index < index_)) {
       worst_ = dist;
       index_ = index;
     }
   }
-  double worstDist() const override { return worst_; }
+  double worstDist() const override {
+    return index_ == kNone ? worst_ : std::nextafter(worst_, std::numeric_limits<double>::infinity());
+  }
   std::size_t index() const { return index_; }
+  /// The best squared distance (the bound while nothing was found).
+  double best() const { return worst_; }
 
   static constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
 
@@ -70,6 +78,23 @@ class RadiusResult final : public flann::ResultSet<double> {
   std::size_t cap_;
   std::vector<std::uint32_t>& out_;
   bool overflow_ = false;
+};
+
+/// Hands every point to a callback that sets the pruning bound.
+class VisitResult final : public flann::ResultSet<double> {
+ public:
+  VisitResult(double bound2, const std::function<double(std::uint32_t, double)>& visit)
+      : bound2_(bound2), visit_(visit) {}
+  bool full() const override { return true; }
+  void addPoint(double dist, std::size_t index) override {
+    if (!(dist < bound2_)) return;
+    bound2_ = std::min(bound2_, visit_(static_cast<std::uint32_t>(index), dist));
+  }
+  double worstDist() const override { return bound2_; }
+
+ private:
+  double bound2_;
+  const std::function<double(std::uint32_t, double)>& visit_;
 };
 
 /// Spreads the low 21 bits of v to every third bit.
@@ -231,7 +256,7 @@ void KdTree::nearest(std::span<const Vec3> queries, std::span<double> dist,
     if (seed != NearestResult::kNone) bound = norm2(points_[seed] - q) * (1 + 1e-9) + 1e-300;
     NearestResult r(bound);
     impl_->tree.findNeighbors(r, &q.x, params);
-    Found f{r.index(), r.worstDist()};
+    Found f{r.index(), r.best()};
     if (f.index == NearestResult::kNone && seed != NearestResult::kNone && std::isfinite(bound))
       f = {seed, norm2(points_[seed] - q)};
     prev = f.index;
@@ -298,6 +323,13 @@ void KdTree::nearest(std::span<const Vec3> queries, std::span<double> dist,
     dist[i] = std::sqrt(best2);
     if (!index.empty()) index[i] = static_cast<std::uint32_t>(arg);
   }
+}
+
+void KdTree::visit_within(const Vec3& q, double bound2,
+                          const std::function<double(std::uint32_t, double)>& visit) const {
+  if (!impl_ || !(bound2 > 0)) return;
+  VisitResult r(bound2, visit);
+  impl_->tree.findNeighbors(r, &q.x, flann::SearchParams(flann::FLANN_CHECKS_UNLIMITED, 0));
 }
 
 void nearest_brute_force(std::span<const Vec3> points, std::span<const Vec3> queries,

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
@@ -37,6 +38,14 @@ class KdTree {
   /// optionally that point's index. Thread-safe; an empty tree gives 1e22.
   void nearest(std::span<const Vec3> queries, std::span<double> dist,
                std::span<std::uint32_t> index = {}) const;
+
+  /// Calls visit(index, squared distance) for the points within sqrt(bound2)
+  /// of q (every such point unless pruned); visit returns the new squared
+  /// bound, which may only shrink: cells beyond it are skipped. For searches
+  /// whose criterion is not the plain distance but is bounded below by it
+  /// (ChannelWidth's inscribed-ball width).
+  void visit_within(const Vec3& q, double bound2,
+                    const std::function<double(std::uint32_t, double)>& visit) const;
 
  private:
   struct Impl;

@@ -62,6 +62,80 @@ field::BuildContext make_build_context(const geo::Model& model, std::filesystem:
     }
     return distance_curve_samples(*c->shape, n, nodes);
   };
+  // ChannelWidth's coast: runs of the listed curves along each curve loop, in
+  // loop order (a whole loop is a closed ring), then the curves no loop holds.
+  ctx.curve_chains = [m, total](const std::vector<int>& tags) -> std::optional<std::vector<field::CoastChain>> {
+    std::map<int, bool> wanted;   // |tag| -> already chained
+    for (int t : tags) {
+      const geo::ModelCurve* c = m->curve(std::abs(t));
+      if (!c || !c->shape) return std::nullopt;
+      wanted.emplace(std::abs(t), false);
+    }
+    std::vector<field::CoastChain> out;
+    // Samples: kPerPiece per polynomial piece, the end point left to the next curve.
+    constexpr int kPerPiece = 4;
+    auto append = [&](field::CoastChain& chain, int signed_tag) {
+      const geo::Curve& c = *m->curve(std::abs(signed_tag))->shape;
+      const int k = kPerPiece * std::max(c.pieces(), 1);
+      *total += static_cast<std::size_t>(k);
+      if (*total > kMaxCurveSamples) {
+        field::FieldError e(field::FieldErrc::BadValue,
+                            fmt::format("more than {} curve samples in one build", kMaxCurveSamples));
+        throw e;
+      }
+      for (int i = 0; i < k; ++i) chain.points.push_back(c.eval(static_cast<double>(i) / k, signed_tag < 0).p);
+    };
+    auto close_open = [&](field::CoastChain& chain, int last_signed) {
+      const geo::Curve& c = *m->curve(std::abs(last_signed))->shape;
+      chain.points.push_back(c.eval(1.0, last_signed < 0).p);
+    };
+    for (const auto& [ltag, loop] : m->curve_loops()) {
+      const std::size_t n = loop.curves.size();
+      auto in_set = [&](std::size_t i) {
+        const auto it = wanted.find(std::abs(loop.curves[i % n]));
+        return it != wanted.end() && !it->second;
+      };
+      std::size_t first_out = n;
+      for (std::size_t i = 0; i < n; ++i)
+        if (!in_set(i)) {
+          first_out = i;
+          break;
+        }
+      if (first_out == n) {   // the whole loop
+        field::CoastChain chain;
+        chain.closed = true;
+        for (int t : loop.curves) append(chain, t), wanted[std::abs(t)] = true;
+        out.push_back(std::move(chain));
+        continue;
+      }
+      // Runs, starting after a curve outside the set so that none wraps unseen.
+      for (std::size_t k = 1; k <= n; ++k) {
+        const std::size_t i = (first_out + k) % n;
+        if (!in_set(i)) continue;
+        field::CoastChain chain;
+        std::size_t j = i;
+        int last = 0;
+        while (in_set(j) && j != first_out) {
+          append(chain, loop.curves[j]);
+          last = loop.curves[j];
+          wanted[std::abs(last)] = true;
+          j = (j + 1) % n;
+        }
+        close_open(chain, last);
+        out.push_back(std::move(chain));
+      }
+    }
+    for (auto& [tag, used] : wanted) {
+      if (used) continue;
+      field::CoastChain chain;
+      chain.closed = m->curve(tag)->periodic();
+      append(chain, tag);
+      if (!chain.closed) close_open(chain, tag);
+      out.push_back(std::move(chain));
+      used = true;
+    }
+    return out;
+  };
   // Surface point clouds need a surface parametrisation the model does not
   // expose yet (Gmsh >= 4.9 samples only OCC and discrete surfaces anyway):
   // SurfacesList is reported as "cannot be sampled" by the Distance field.
