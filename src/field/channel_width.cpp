@@ -50,6 +50,7 @@ struct ChannelWidths::Impl {
   std::vector<Vec3> side;                        // unit normal to the coast in the surface (0: unknown)
   std::vector<double> spacing;                   // larger of the two segments at the sample
   std::vector<double> w_pos, w_neg;              // width on the +side / -side, at most cap
+  std::vector<int> water;                        // per chain: CoastChain::water_side
   double cap = kMaxLc;
   std::unique_ptr<KdTree> tree;
 
@@ -82,6 +83,7 @@ ChannelWidths::ChannelWidths(std::vector<CoastChain> chains, double cap) : impl_
     const bool wrap = c.closed && n > 2;
     m.length.push_back(wrap ? arc + norm(c.points.front() - c.points.back()) : arc);
     m.closed.push_back(wrap ? 1 : 0);
+    m.water.push_back(c.water_side);
   }
   const std::size_t n = m.pts.size();
   // The surface's normal: a flat model's plane (z constant), else the sphere's
@@ -111,6 +113,12 @@ ChannelWidths::ChannelWidths(std::vector<CoastChain> chains, double cap) : impl_
     const Vec3 p = m.pts[i], side = m.side[i];
     double& wp = m.w_pos[i];
     double& wn = m.w_neg[i];
+    // Where the water side is known, the land side is not searched: it stays at 0
+    // during the search (so that it does not hold the bound up) and gets the water
+    // side's width after it, so that every point near the sample reads that.
+    const int water = m.water[m.chain[i]];
+    if (water > 0) wn = 0;
+    if (water < 0) wp = 0;
     const auto visit = [&](std::uint32_t j, double d2) -> double {
       const double bound = std::max(wp, wn);
       if (d2 == 0) return bound * bound;  // the same coast point in two pieces
@@ -133,6 +141,8 @@ ChannelWidths::ChannelWidths(std::vector<CoastChain> chains, double cap) : impl_
       return b * b;
     };
     m.tree->visit_within(p, m.cap * m.cap, visit);
+    if (water > 0) wn = wp;
+    if (water < 0) wp = wn;
   }
 }
 
@@ -141,19 +151,28 @@ ChannelWidths::~ChannelWidths() = default;
 std::size_t ChannelWidths::samples() const { return impl_->pts.size(); }
 
 void ChannelWidths::width(std::span<const Vec3> pts, std::span<double> w) const {
+  const double all = impl_->cap;
+  width_within(pts, std::span<const double>(&all, 1), w);
+}
+
+void ChannelWidths::width_within(std::span<const Vec3> pts, std::span<const double> max_width,
+                                 std::span<double> w) const {
   const Impl& m = *impl_;
   if (!m.tree) {
     std::fill(w.begin(), w.end(), m.cap);
     return;
   }
+  // Farther than max_width / 2 from the coast the water is wider than that.
+  std::vector<double> radius(max_width.size());
+  for (std::size_t i = 0; i < radius.size(); ++i) radius[i] = 0.5 * std::min(max_width[i], m.cap);
   std::vector<double> dist(pts.size());
   std::vector<std::uint32_t> index(pts.size());
-  m.tree->nearest(pts, dist, index);
+  m.tree->nearest_within(pts, radius, dist, index);
   for (std::size_t k = 0; k < pts.size(); ++k) {
     std::uint32_t i = index[k];
     const Vec3& x = pts[k];
-    if (i >= m.pts.size()) {  // a non-finite point
-      w[k] = std::numeric_limits<double>::quiet_NaN();
+    if (i >= m.pts.size()) {  // far (or a non-finite point: NaN)
+      w[k] = std::isnan(dist[k]) ? dist[k] : m.cap;
       continue;
     }
     // Linear along the coast segment the point projects onto, next side first.
@@ -174,27 +193,33 @@ void ChannelWidths::width(std::span<const Vec3> pts, std::span<double> w) const 
   }
 }
 
+ChannelWidthField::ChannelWidthField(std::vector<CoastChain> chains, const ChannelWidthOptions& o, double cap)
+    : widths_(std::move(chains), cap), o_(o), cap_(cap) {}
+
+double ChannelWidthField::size_of(double w) const {
+  // A width that reached the search cap is "wide": no constraint.
+  const double size = w >= cap_ ? kMaxLc : w / o_.elements_across;
+  return std::clamp(size, o_.size_min, o_.size_max);
+}
+
+void ChannelWidthField::eval(std::span<const Vec3> pts, std::span<double> h) const {
+  widths_.width(pts, h);
+  for (double& v : h) v = size_of(v);
+}
+
+void ChannelWidthField::lower(std::span<const Vec3> pts, std::span<double> h) const {
+  // Only a width below N h can lower h (none at all where h <= SizeMin; any where
+  // SizeMax is below h). Past the limit width_within returns a width >= N h, whose
+  // size is >= h: the min below leaves h as it is, as a full evaluation would.
+  std::vector<double> limit(h.size()), w(h.size());
+  for (std::size_t i = 0; i < h.size(); ++i)
+    limit[i] = !(h[i] > o_.size_min) ? 0 : o_.size_max < h[i] ? cap_ : o_.elements_across * h[i];
+  widths_.width_within(pts, limit, w);
+  for (std::size_t i = 0; i < h.size(); ++i)
+    if (limit[i] > 0) h[i] = std::min(h[i], size_of(w[i]));
+}
+
 namespace {
-
-class ChannelWidthField final : public SizeField {
- public:
-  ChannelWidthField(std::vector<CoastChain> chains, const ChannelWidthOptions& o, double cap)
-      : widths_(std::move(chains), cap), o_(o), cap_(cap) {}
-
-  void eval(std::span<const Vec3> pts, std::span<double> h) const override {
-    widths_.width(pts, h);
-    for (double& v : h) {
-      // A width that reached the search cap is "wide": no constraint.
-      const double size = v >= cap_ ? kMaxLc : v / o_.elements_across;
-      v = std::clamp(size, o_.size_min, o_.size_max);
-    }
-  }
-
- private:
-  ChannelWidths widths_;
-  ChannelWidthOptions o_;
-  double cap_;
-};
 
 // The search radius: N * SizeMax, or without SizeMax a multiple of the median
 // sample spacing (wider channels are not what this field is for, and an
@@ -237,7 +262,8 @@ FieldPtr make(const BuildInputs& in) {
 
 }  // namespace
 
-FieldPtr make_channel_width_field(std::vector<CoastChain> chains, const ChannelWidthOptions& opts) {
+std::shared_ptr<const ChannelWidthField> make_channel_width_field(std::vector<CoastChain> chains,
+                                                                  const ChannelWidthOptions& opts) {
   for (const CoastChain& c : chains)
     for (const Vec3& p : c.points)
       if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))

@@ -33,6 +33,9 @@ class ChannelWidths {
   /// one for points on the coast), interpolated along the coast; at least twice
   /// the distance to the coast, at most the cap.
   void width(std::span<const Vec3> pts, std::span<double> w) const;
+  /// The same where the width is below max_width[i] (one value for all points, or
+  /// one per point); elsewhere some value at least that.
+  void width_within(std::span<const Vec3> pts, std::span<const double> max_width, std::span<double> w) const;
   std::size_t samples() const;
 
  private:
@@ -40,8 +43,27 @@ class ChannelWidths {
   std::unique_ptr<Impl> impl_;
 };
 
+/// The field: clamp(width / ElementsAcross, SizeMin, SizeMax); no constraint
+/// (SizeMax) where the width reaches the search cap.
+class ChannelWidthField final : public SizeField {
+ public:
+  ChannelWidthField(std::vector<CoastChain> chains, const ChannelWidthOptions& o, double cap);
+  void eval(std::span<const Vec3> pts, std::span<double> h) const override;
+  /// h[i] = min(h[i], the field at pts[i]), with the coast searched only as far as
+  /// could still lower h[i]: cheap where h is already small (Mesh.ElementsAcrossChannels
+  /// inside the Min of the background field).
+  void lower(std::span<const Vec3> pts, std::span<double> h) const;
+
+ private:
+  double size_of(double width) const;
+  ChannelWidths widths_;
+  ChannelWidthOptions o_;
+  double cap_;
+};
+
 /// Direct construction (Mesh.ElementsAcrossChannels, tests, benchmarks).
 /// Throws BadValue on a non-finite sample or an option out of range.
-FieldPtr make_channel_width_field(std::vector<CoastChain> chains, const ChannelWidthOptions& opts);
+std::shared_ptr<const ChannelWidthField> make_channel_width_field(std::vector<CoastChain> chains,
+                                                                  const ChannelWidthOptions& opts);
 
 }  // namespace sm::field

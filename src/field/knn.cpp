@@ -39,11 +39,10 @@ class NearestResult final : public flann::ResultSet<double> {
     if (dist < worst_ || index_ == kNone || (dist == worst_ && index < index_)) {
       worst_ = dist;
       index_ = index;
+      bound_ = std::nextafter(worst_, std::numeric_limits<double>::infinity());
     }
   }
-  double worstDist() const override {
-    return index_ == kNone ? worst_ : std::nextafter(worst_, std::numeric_limits<double>::infinity());
-  }
+  double worstDist() const override { return index_ == kNone ? worst_ : bound_; }
   std::size_t index() const { return index_; }
   /// The best squared distance (the bound while nothing was found).
   double best() const { return worst_; }
@@ -52,6 +51,7 @@ class NearestResult final : public flann::ResultSet<double> {
 
  private:
   double worst_;
+  double bound_ = 0;
   std::size_t index_ = kNone;
 };
 
@@ -322,6 +322,53 @@ void KdTree::nearest(std::span<const Vec3> queries, std::span<double> dist,
     prev = arg;
     dist[i] = std::sqrt(best2);
     if (!index.empty()) index[i] = static_cast<std::uint32_t>(arg);
+  }
+}
+
+void KdTree::nearest_within(std::span<const Vec3> queries, std::span<const double> max_dist,
+                            std::span<double> dist, std::span<std::uint32_t> index) const {
+  constexpr std::uint32_t kNoIndex = std::numeric_limits<std::uint32_t>::max();
+  if (!impl_ || max_dist.empty()) {
+    std::fill(dist.begin(), dist.end(), std::numeric_limits<double>::infinity());
+    std::fill(index.begin(), index.end(), kNoIndex);
+    return;
+  }
+  const flann::SearchParams params(flann::FLANN_CHECKS_UNLIMITED, 0);
+  std::vector<std::uint32_t> order;
+  if (opts_.sort_queries && queries.size() > 1) order = morton_order(queries);
+  std::size_t prev = NearestResult::kNone;
+  for (std::size_t k = 0; k < queries.size(); ++k) {
+    const std::size_t i = order.empty() ? k : order[k];
+    const Vec3& q = queries[i];
+    const double r = max_dist.size() == 1 ? max_dist[0] : max_dist[i];
+    const double far2 = r > 0 ? r * r : 0;
+    // Seeded with the previous answer when that is nearer than max_dist (inflated so
+    // that it still qualifies itself).
+    double bound = far2;
+    const double seed2 = prev == NearestResult::kNone ? far2 : norm2(points_[prev] - q) * (1 + 1e-9) + 1e-300;
+    const bool seeded = seed2 < far2;
+    if (seeded) bound = seed2;
+    std::size_t found = NearestResult::kNone;
+    double d2 = 0;
+    if (bound > 0) {
+      NearestResult res(bound);
+      impl_->tree.findNeighbors(res, &q.x, params);
+      found = res.index();
+      d2 = res.best();
+    }
+    if (found == NearestResult::kNone && seeded) {
+      found = prev;
+      d2 = norm2(points_[prev] - q);
+    }
+    if (found == NearestResult::kNone || !(d2 < far2)) {
+      dist[i] = std::isfinite(q.x + q.y + q.z) ? std::numeric_limits<double>::infinity()
+                                              : std::numeric_limits<double>::quiet_NaN();
+      index[i] = kNoIndex;
+      continue;
+    }
+    prev = found;
+    dist[i] = std::sqrt(d2);
+    index[i] = static_cast<std::uint32_t>(found);
   }
 }
 

@@ -39,6 +39,13 @@ class KdTree {
   void nearest(std::span<const Vec3> queries, std::span<double> dist,
                std::span<std::uint32_t> index = {}) const;
 
+  /// As nearest(), but only looking as far as max_dist (one value for every
+  /// query, or one per query): a query with no point nearer gets dist = +infinity
+  /// and index = UINT32_MAX. Far queries then cost one descent of the tree
+  /// (ChannelWidth: beyond what could still lower the size nothing matters).
+  void nearest_within(std::span<const Vec3> queries, std::span<const double> max_dist, std::span<double> dist,
+                      std::span<std::uint32_t> index) const;
+
   /// Calls visit(index, squared distance) for the points within sqrt(bound2)
   /// of q (every such point unless pruned); visit returns the new squared
   /// bound, which may only shrink: cells beyond it are skipped. For searches

@@ -146,7 +146,14 @@ void publish_stats(Interpreter& in, const ModelMesh& mesh, const MeshStats& st) 
 MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   using Clock = std::chrono::steady_clock;
   KernelState& k = in.kernel();
-  const field::FieldPtr background = background_size_field(in);
+  if (std::string why = check_elements_across_channels(in.options()); !why.empty()) {
+    MeshFailure f{Diag::InvalidOptionValue, std::move(why), {}};
+    if (const auto it = k.option_set_at.find("Mesh.ElementsAcrossChannels"); it != k.option_set_at.end())
+      f.notes.push_back({it->second, "Mesh.ElementsAcrossChannels was set here"});
+    return f;
+  }
+  // The background field with the coastlines' channel widths inside its Min.
+  const field::FieldPtr background = with_channel_sizes(in, background_size_field(in));
   const double max_elements = in.options().number("Mesh.MaxElements");
   Mesh2dOptions opt2;
   if (dim >= 2) {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
 
 #include <doctest/doctest.h>
 
@@ -149,4 +150,41 @@ TEST_CASE("channel width: the kind from the registry, its options and errors") {
   CHECK_THROWS_AS(testing::eval1(fs, 1, {0, 1.5, 0}, ctx), FieldError);
   fs.set(1, "CoastlineId", 3.0);   // no coastline_curves in the context
   CHECK_THROWS_AS(testing::eval1(fs, 1, {0, 1.5, 0}, ctx), FieldError);
+}
+
+TEST_CASE("channel width: a known water side leaves the land out, on the coast too") {
+  // The islands of the test above, counter-clockwise: the water is on their right.
+  std::vector<CoastChain> rings = {cw_circle({-2, 0, 0}, 1, 720), cw_circle({2, 0, 0}, 1, 720)};
+  ChannelWidths both(rings, 20);
+  // On the far coast of the western island, both sides count: across the island and
+  // the strait to the other island (4 wide at the axis).
+  CHECK(cw_width(both, {-3, 0, 0}) == doctest::Approx(4).epsilon(1e-3));
+  for (CoastChain& c : rings) c.water_side = -1;
+  ChannelWidths water(rings, 20);
+  CHECK(cw_width(water, {-3, 0, 0}) == doctest::Approx(20));
+  CHECK(cw_width(water, {0, 0, 0}) == doctest::Approx(2).epsilon(1e-3));
+  CHECK(cw_width(water, {-1, 0, 0}) == doctest::Approx(2).epsilon(1e-3));
+  // The wrong side declared: the strait is then "land" and reads the land width.
+  for (CoastChain& c : rings) c.water_side = 1;
+  ChannelWidths wrong(rings, 20);
+  CHECK(cw_width(wrong, {0, 0, 0}) > 3);
+}
+
+TEST_CASE("channel width: lower() gives min(h, field) with the short search") {
+  auto f = make_channel_width_field({cw_circle({-2, 0, 0}, 1, 360), cw_circle({2, 0, 0}, 1, 360)},
+                                    {/*elements_across=*/2, /*size_min=*/0.05, /*size_max=*/3});
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-5, 5), hs(0.01, 4);
+  std::vector<Vec3> q(2000);
+  std::vector<double> h(q.size()), full(q.size());
+  for (std::size_t i = 0; i < q.size(); ++i) q[i] = {u(rng), u(rng), 0}, h[i] = hs(rng);
+  f->eval(q, full);
+  std::vector<double> low = h;
+  f->lower(q, low);
+  int lowered = 0;
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    CHECK(low[i] == std::min(h[i], full[i]));
+    lowered += low[i] < h[i];
+  }
+  CHECK(lowered > 100);
 }
