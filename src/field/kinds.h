@@ -27,5 +27,6 @@ KindSpec param_kind();
 KindSpec restrict_kind();
 KindSpec structured_kind();
 KindSpec threshold_kind();
+KindSpec time_step_kind();
 
 }  // namespace sm::field

@@ -35,7 +35,7 @@ const std::vector<KindSpec>& kinds() {
         curvature_kind(),  cylinder_kind(),   distance_kind(),   gradation_kind(),
         gradient_kind(),   laplacian_kind(),  lonlat_kind(),     math_eval_kind(),
         max_eigen_hessian_kind(), max_kind(), mean_kind(),       min_kind(),
-        param_kind(),      restrict_kind(),   structured_kind(), threshold_kind(),
+        param_kind(),      restrict_kind(),   structured_kind(), threshold_kind(),  time_step_kind(),
     };
     std::sort(v.begin(), v.end(),
               [](const KindSpec& a, const KindSpec& b) { return a.name < b.name; });

@@ -105,6 +105,9 @@ std::vector<int> define_all(FieldSet& fs, std::size_t coast_points) {
   const int depth = def("Bathymetry");
   fs.set(depth, "FileName", shared_data("bathymetry/etopo5_global_1deg.nc"));
   fs.set(depth, "Radius", 1.0);
+  const int step = def("TimeStep");
+  fs.set(step, "DepthField", static_cast<double>(depth));
+  fs.set(step, "Dt", 60.0);
   const int wave = def("Bathymetry");
   fs.set(wave, "FileName", shared_data("bathymetry/etopo5_global_1deg.asc"));
   fs.set(wave, "Output", std::string("wavelength"));
