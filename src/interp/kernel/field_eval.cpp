@@ -115,6 +115,9 @@ const SourceRange* reference_site(Interpreter& in, int id, int ref) {
     } else if (s.role == field::OptionRole::FieldRefList) {
       for (double v : std::get<std::vector<double>>(o.value(static_cast<int>(i))))
         refers = refers || static_cast<int>(v) == ref;
+    } else if (s.type == field::OptionType::Number && o.kind().extra_refs) {
+      // A plain number naming a field only when set (TimeStep's DepthField).
+      refers = static_cast<int>(std::get<double>(o.value(static_cast<int>(i)))) == ref;
     } else if (s.type == field::OptionType::String && o.kind().extra_refs) {
       refers = true;   // MathEval's F<n> live in its expression strings
     }
