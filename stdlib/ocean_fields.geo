@@ -129,6 +129,52 @@ If (!Exists(OceanFieldsGeoLoaded))
     Field[HessianField].DistMax = HessianSizeMax;
   Return
 
+  // The usual physical criteria (not the paper's): the tidal wavelength T sqrt(g H) / N
+  // (T the M2 period; finer on the shelves, where the tide is slow) and the bottom slope
+  // (2 pi / N) H / |grad H| (finer on steep shelf breaks and seamounts), each clamped.
+  // docs/fields.md compares them with the paper's f1, which refines the abyss instead.
+  DefineConstant[ TidalPeriod = 44712, TidalPointsPerWaveLength = 50, TidalSizeMin = 5e3,
+                  TidalSizeMax = 500e3, SlopeParameter = 20, SlopeSizeMin = 5e3,
+                  SlopeSizeMax = 500e3 ];
+
+  // TidalWavelength: input BathyFile. Output: TidalCriterionField (T sqrt(g H) / N,
+  // metres) and TidalField (the size).
+  Macro TidalWavelength
+    TidalCriterionField = newf;
+    Field[TidalCriterionField] = Bathymetry;
+    Field[TidalCriterionField].FileName = BathyFile;
+    Field[TidalCriterionField].Output = "tidal";
+    Field[TidalCriterionField].Period = TidalPeriod;
+    Field[TidalCriterionField].PointsPerWaveLength = TidalPointsPerWaveLength;
+    Field[TidalCriterionField].MinDepth = MinDepth;
+    TidalField = newf;
+    Field[TidalField] = Threshold;
+    Field[TidalField].InField = TidalCriterionField;
+    Field[TidalField].SizeMin = TidalSizeMin;
+    Field[TidalField].SizeMax = TidalSizeMax;
+    Field[TidalField].DistMin = TidalSizeMin;
+    Field[TidalField].DistMax = TidalSizeMax;
+  Return
+
+  // BathySlope: input BathyFile. Output: SlopeCriterionField ((2 pi / N) H / |grad H|,
+  // metres) and SlopeField (the size).
+  Macro BathySlope
+    SlopeCriterionField = newf;
+    Field[SlopeCriterionField] = Bathymetry;
+    Field[SlopeCriterionField].FileName = BathyFile;
+    Field[SlopeCriterionField].Output = "slope";
+    Field[SlopeCriterionField].PointsPerWaveLength = SlopeParameter;
+    Field[SlopeCriterionField].MinDepth = MinDepth;
+    Field[SlopeCriterionField].EarthRadius = EarthRadius;
+    SlopeField = newf;
+    Field[SlopeField] = Threshold;
+    Field[SlopeField].InField = SlopeCriterionField;
+    Field[SlopeField].SizeMin = SlopeSizeMin;
+    Field[SlopeField].SizeMax = SlopeSizeMax;
+    Field[SlopeField].DistMin = SlopeSizeMin;
+    Field[SlopeField].DistMax = SlopeSizeMax;
+  Return
+
   // OceanSize: input OceanFields[] (size fields). Output: SizeField, the Min of them
   // (FieldArgmin(SizeField, ...) tells which criterion controls the size where), limited by
   // a Gradation when GradationRate > 0 (then MinSizeField is the Min), and made the

@@ -17,6 +17,7 @@ namespace sm::field {
 
 namespace {
 constexpr double kMaxRelief = 1e6;   // metres
+constexpr double kGravity = 9.81;    // m/s^2
 }  // namespace
 
 LonLatGrid hessian_criterion(const LonLatGrid& depth, double depth_ref, double radius) {
@@ -65,7 +66,7 @@ LonLatGrid hessian_criterion(const LonLatGrid& depth, double depth_ref, double r
 
 namespace {
 
-enum class Output { Depth, Wavelength, Hessian };
+enum class Output { Depth, Wavelength, Hessian, Tidal, Slope };
 
 class BathymetryField final : public SizeField {
  public:
@@ -79,7 +80,8 @@ class BathymetryField final : public SizeField {
       const double v = grid_.interp(lon, lat);
       // f1 is interpolated through H (not node-wise) so that it is exactly
       // lambda_min/N sqrt(H_ref/H) of the interpolated depth.
-      h[i] = out_ == Output::Wavelength ? scale_ / std::sqrt(v) : v;
+      // So is the tidal size: T sqrt(g H) / N of the interpolated depth.
+      h[i] = out_ == Output::Wavelength ? scale_ / std::sqrt(v) : out_ == Output::Tidal ? scale_ * std::sqrt(v) : v;
     }
   }
 
@@ -90,7 +92,33 @@ class BathymetryField final : public SizeField {
   double scale_;
 };
 
-FieldPtr make(const BuildInputs& in) {
+}  // namespace
+
+LonLatGrid slope_criterion(const LonLatGrid& depth, double n, double radius) {
+  const double deg = std::numbers::pi / 180;
+  const double dl = depth.dlon * deg, dp = depth.dlat * deg;
+  LonLatGrid out = depth;
+  const int nx = depth.nlon, ny = depth.nlat;
+  auto col = [&](int i) { return depth.period ? depth.wrap(i) : std::clamp(i, 0, nx - 1); };
+  for (int j = 0; j < ny; ++j) {
+    const int jm = std::max(j - 1, 0), jp = std::min(j + 1, ny - 1);
+    const double sp = (jp - jm) * dp;
+    // As the Hessian: cos bounded by the half-width of the polar row.
+    const double c = std::max(std::cos(depth.lat(j) * deg), std::sin(dp / 2));
+    for (int i = 0; i < nx; ++i) {
+      const int im = col(i - 1), ip = col(i + 1);
+      const double sl = (depth.period ? 2 : ip - im) * dl;
+      // Gradient in the orthonormal (east, north) frame, metres per metre.
+      const double ge = (depth.at(ip, j) - depth.at(im, j)) / (sl * radius * c);
+      const double gn = (depth.at(i, jp) - depth.at(i, jm)) / (sp * radius);
+      const double g = std::hypot(ge, gn);
+      out.at(i, j) = g > 0 ? std::min(2 * std::numbers::pi / n * depth.at(i, j) / g, kMaxLc) : kMaxLc;
+    }
+  }
+  return out;
+}
+
+LonLatGrid read_depth_grid(const BuildInputs& in) {
   const Options& o = in.opts;
   const std::string& file = o.string("FileName");
   if (file.empty()) in.bad("FileName", "no bathymetry file given");
@@ -109,16 +137,8 @@ FieldPtr make(const BuildInputs& in) {
   }
   const std::string& positive = o.string("Positive");
   if (positive != "up" && positive != "down") in.bad("Positive", "must be \"up\" or \"down\"");
-  const std::string& output = o.string("Output");
-  Output out;
-  if (output == "depth") out = Output::Depth;
-  else if (output == "wavelength") out = Output::Wavelength;
-  else if (output == "hessian") out = Output::Hessian;
-  else in.bad("Output", fmt::format("unknown output '{}' (depth, wavelength or hessian)", output));
   const double min_depth = o.number("MinDepth");
   if (!std::isfinite(min_depth)) in.bad("MinDepth", "must be finite");
-  if (out != Output::Depth && !(min_depth > 0))
-    in.bad("MinDepth", "must be positive for the wavelength and hessian criteria");
   const double sign = positive == "up" ? -1 : 1;
   const bool missing_as_land = o.number("MissingAsLand") != 0;
   for (int j = 0; j < g.nlat; ++j)
@@ -150,6 +170,37 @@ FieldPtr make(const BuildInputs& in) {
       }
       v = std::max(sign * v, min_depth);
     }
+  return g;
+}
+
+std::vector<OptionSpec> depth_grid_options() {
+  return {
+      str_opt("FileName", "", "netCDF file, or ESRI ASCII grid if the name ends in .asc"),
+      str_opt("LonVariable", "", "netCDF longitude variable (empty: detected)"),
+      str_opt("LatVariable", "", "netCDF latitude variable (empty: detected)"),
+      str_opt("ZVariable", "", "netCDF relief variable (empty: the first 2D variable)"),
+      str_opt("Positive", "up", "\"up\": values are elevations (sea floor < 0); \"down\": depths"),
+      num_opt("MinDepth", 10, "depths are clamped to at least this (land included), metres"),
+      num_opt("MissingAsLand", 0, "1: missing/NaN nodes become MinDepth instead of an error"),
+  };
+}
+
+namespace {
+
+FieldPtr make(const BuildInputs& in) {
+  const Options& o = in.opts;
+  LonLatGrid g = read_depth_grid(in);
+  const std::string& output = o.string("Output");
+  Output out;
+  if (output == "depth") out = Output::Depth;
+  else if (output == "wavelength") out = Output::Wavelength;
+  else if (output == "hessian") out = Output::Hessian;
+  else if (output == "tidal") out = Output::Tidal;
+  else if (output == "slope") out = Output::Slope;
+  else in.bad("Output", fmt::format("unknown output '{}' (depth, wavelength, hessian, tidal or slope)", output));
+  const double min_depth = o.number("MinDepth");
+  if (out != Output::Depth && !(min_depth > 0))
+    in.bad("MinDepth", "must be positive for the wavelength, hessian, tidal and slope criteria");
   const double depth_ref = o.number("DepthRef");
   if (!(depth_ref > 0)) in.bad("DepthRef", "must be positive");
   double scale = 0;
@@ -164,6 +215,19 @@ FieldPtr make(const BuildInputs& in) {
     if (!(earth > 0)) in.bad("EarthRadius", "must be positive");
     g = hessian_criterion(g, depth_ref, earth);
   }
+  if (out == Output::Tidal || out == Output::Slope) {
+    const double n = o.number("PointsPerWaveLength");
+    if (!(n > 0)) in.bad("PointsPerWaveLength", "must be positive");
+    if (out == Output::Tidal) {
+      const double period = o.number("Period");
+      if (!(period > 0)) in.bad("Period", "must be positive");
+      scale = period * std::sqrt(kGravity) / n;
+    } else {
+      const double earth = o.number("EarthRadius");
+      if (!(earth > 0)) in.bad("EarthRadius", "must be positive");
+      g = slope_criterion(g, n, earth);
+    }
+  }
   return std::make_shared<BathymetryField>(std::move(g), o.number("Radius"), out, scale);
 }
 
@@ -174,22 +238,27 @@ KindSpec bathymetry_kind() {
           "Relief grid (netCDF or ESRI ASCII .asc) sampled bilinearly at the longitude/latitude "
           "of the point: the depth H = max(depth, MinDepth), the wavelength criterion "
           "f1 = WaveLengthMin/PointsPerWaveLength*sqrt(DepthRef/H), or the Hessian criterion "
-          "f2 = 1/sqrt(|lambda_max|) of the Hessian of H/DepthRef in metres (paper section 3.1). "
-          "Feed it to a Threshold to get a size.",
+          "f2 = 1/sqrt(|lambda_max|) of the Hessian of H/DepthRef in metres (paper section 3.1); "
+          "or the usual physical criteria: the tidal wavelength Period*sqrt(9.81 H)/PointsPerWaveLength "
+          "(finer on shelves) and the slope (2 pi/PointsPerWaveLength) H/|grad H| (gradient on the sphere "
+          "by the Hessian's centred differences). Feed it to a Threshold to get a size.",
           {
               str_opt("FileName", "", "netCDF file, or ESRI ASCII grid if the name ends in .asc"),
               str_opt("LonVariable", "", "netCDF longitude variable (empty: detected)"),
               str_opt("LatVariable", "", "netCDF latitude variable (empty: detected)"),
               str_opt("ZVariable", "", "netCDF relief variable (empty: the first 2D variable)"),
               str_opt("Positive", "up", "\"up\": values are elevations (sea floor < 0); \"down\": depths"),
-              str_opt("Output", "depth", "\"depth\" (H), \"wavelength\" (f1) or \"hessian\" (f2)"),
+              str_opt("Output", "depth",
+                      "\"depth\" (H), \"wavelength\" (f1), \"hessian\" (f2), \"tidal\" (T sqrt(gH)/N) or "
+                      "\"slope\" ((2 pi/N) H/|grad H|)"),
               num_opt("MinDepth", 10, "depths are clamped to at least this (land included), metres"),
               num_opt("DepthRef", 4000, "reference depth H_ref of f1 and f2, metres"),
               num_opt("WaveLengthMin", 1, "lambda_min of f1: smallest wavelength at H_ref"),
-              num_opt("PointsPerWaveLength", 1, "N of f1: sizes per wavelength"),
-              num_opt("EarthRadius", 6371e3, "radius used for the Hessian's metres"),
+              num_opt("PointsPerWaveLength", 1, "N of f1, of the tidal and of the slope criteria"),
+              num_opt("EarthRadius", 6371e3, "radius used for the Hessian's and the slope's metres"),
               num_opt("Radius", 0, "sphere radius for the latitude of a point (0: |X|)"),
               num_opt("MissingAsLand", 0, "1: missing/NaN nodes become MinDepth instead of an error"),
+              num_opt("Period", 44712, "T of the tidal criterion, seconds (the M2 tide: 12.42 h)"),
           },
           make};
 }

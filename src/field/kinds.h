@@ -9,6 +9,7 @@ namespace sm::field {
 KindSpec ball_kind();
 KindSpec bathymetry_kind();
 KindSpec box_kind();
+KindSpec channel_width_kind();
 KindSpec constant_kind();
 KindSpec curvature_kind();
 KindSpec cylinder_kind();
@@ -26,5 +27,6 @@ KindSpec param_kind();
 KindSpec restrict_kind();
 KindSpec structured_kind();
 KindSpec threshold_kind();
+KindSpec time_step_kind();
 
 }  // namespace sm::field

@@ -26,24 +26,32 @@ namespace {
 
 using Tree = flann::KDTreeSingleIndex<flann::L2_Simple<double>>;
 
-/// One nearest neighbour, with an initial squared-distance bound.
+/// One nearest neighbour, with an initial squared-distance bound. Of several
+/// points at exactly the same distance the one with the smallest index wins,
+/// whatever the order of the visit (the seed of the search depends on the other
+/// queries of the batch): worstDist() is a hair above the best distance, so that
+/// FLANN still hands over points at that distance (its leaves test dist < worst).
 class NearestResult final : public flann::ResultSet<double> {
  public:
   explicit NearestResult(double bound_sq) : worst_(bound_sq) {}
   bool full() const override { return true; }
   void addPoint(double dist, std::size_t index) override {
-    if (dist < worst_ || index_ == kNone) {
+    if (dist < worst_ || index_ == kNone || (dist == worst_ && index < index_)) {
       worst_ = dist;
       index_ = index;
+      bound_ = std::nextafter(worst_, std::numeric_limits<double>::infinity());
     }
   }
-  double worstDist() const override { return worst_; }
+  double worstDist() const override { return index_ == kNone ? worst_ : bound_; }
   std::size_t index() const { return index_; }
+  /// The best squared distance (the bound while nothing was found).
+  double best() const { return worst_; }
 
   static constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
 
  private:
   double worst_;
+  double bound_ = 0;
   std::size_t index_ = kNone;
 };
 
@@ -70,6 +78,23 @@ class RadiusResult final : public flann::ResultSet<double> {
   std::size_t cap_;
   std::vector<std::uint32_t>& out_;
   bool overflow_ = false;
+};
+
+/// Hands every point to a callback that sets the pruning bound.
+class VisitResult final : public flann::ResultSet<double> {
+ public:
+  VisitResult(double bound2, const std::function<double(std::uint32_t, double)>& visit)
+      : bound2_(bound2), visit_(visit) {}
+  bool full() const override { return true; }
+  void addPoint(double dist, std::size_t index) override {
+    if (!(dist < bound2_)) return;
+    bound2_ = std::min(bound2_, visit_(static_cast<std::uint32_t>(index), dist));
+  }
+  double worstDist() const override { return bound2_; }
+
+ private:
+  double bound2_;
+  const std::function<double(std::uint32_t, double)>& visit_;
 };
 
 /// Spreads the low 21 bits of v to every third bit.
@@ -231,7 +256,7 @@ void KdTree::nearest(std::span<const Vec3> queries, std::span<double> dist,
     if (seed != NearestResult::kNone) bound = norm2(points_[seed] - q) * (1 + 1e-9) + 1e-300;
     NearestResult r(bound);
     impl_->tree.findNeighbors(r, &q.x, params);
-    Found f{r.index(), r.worstDist()};
+    Found f{r.index(), r.best()};
     if (f.index == NearestResult::kNone && seed != NearestResult::kNone && std::isfinite(bound))
       f = {seed, norm2(points_[seed] - q)};
     prev = f.index;
@@ -298,6 +323,60 @@ void KdTree::nearest(std::span<const Vec3> queries, std::span<double> dist,
     dist[i] = std::sqrt(best2);
     if (!index.empty()) index[i] = static_cast<std::uint32_t>(arg);
   }
+}
+
+void KdTree::nearest_within(std::span<const Vec3> queries, std::span<const double> max_dist,
+                            std::span<double> dist, std::span<std::uint32_t> index) const {
+  constexpr std::uint32_t kNoIndex = std::numeric_limits<std::uint32_t>::max();
+  if (!impl_ || max_dist.empty()) {
+    std::fill(dist.begin(), dist.end(), std::numeric_limits<double>::infinity());
+    std::fill(index.begin(), index.end(), kNoIndex);
+    return;
+  }
+  const flann::SearchParams params(flann::FLANN_CHECKS_UNLIMITED, 0);
+  std::vector<std::uint32_t> order;
+  if (opts_.sort_queries && queries.size() > 1) order = morton_order(queries);
+  std::size_t prev = NearestResult::kNone;
+  for (std::size_t k = 0; k < queries.size(); ++k) {
+    const std::size_t i = order.empty() ? k : order[k];
+    const Vec3& q = queries[i];
+    const double r = max_dist.size() == 1 ? max_dist[0] : max_dist[i];
+    const double far2 = r > 0 ? r * r : 0;
+    // Seeded with the previous answer when that is nearer than max_dist (inflated so
+    // that it still qualifies itself).
+    double bound = far2;
+    const double seed2 = prev == NearestResult::kNone ? far2 : norm2(points_[prev] - q) * (1 + 1e-9) + 1e-300;
+    const bool seeded = seed2 < far2;
+    if (seeded) bound = seed2;
+    std::size_t found = NearestResult::kNone;
+    double d2 = 0;
+    if (bound > 0) {
+      NearestResult res(bound);
+      impl_->tree.findNeighbors(res, &q.x, params);
+      found = res.index();
+      d2 = res.best();
+    }
+    if (found == NearestResult::kNone && seeded) {
+      found = prev;
+      d2 = norm2(points_[prev] - q);
+    }
+    if (found == NearestResult::kNone || !(d2 < far2)) {
+      dist[i] = std::isfinite(q.x + q.y + q.z) ? std::numeric_limits<double>::infinity()
+                                              : std::numeric_limits<double>::quiet_NaN();
+      index[i] = kNoIndex;
+      continue;
+    }
+    prev = found;
+    dist[i] = std::sqrt(d2);
+    index[i] = static_cast<std::uint32_t>(found);
+  }
+}
+
+void KdTree::visit_within(const Vec3& q, double bound2,
+                          const std::function<double(std::uint32_t, double)>& visit) const {
+  if (!impl_ || !(bound2 > 0)) return;
+  VisitResult r(bound2, visit);
+  impl_->tree.findNeighbors(r, &q.x, flann::SearchParams(flann::FLANN_CHECKS_UNLIMITED, 0));
 }
 
 void nearest_brute_force(std::span<const Vec3> points, std::span<const Vec3> queries,

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
@@ -37,6 +38,21 @@ class KdTree {
   /// optionally that point's index. Thread-safe; an empty tree gives 1e22.
   void nearest(std::span<const Vec3> queries, std::span<double> dist,
                std::span<std::uint32_t> index = {}) const;
+
+  /// As nearest(), but only looking as far as max_dist (one value for every
+  /// query, or one per query): a query with no point nearer gets dist = +infinity
+  /// and index = UINT32_MAX. Far queries then cost one descent of the tree
+  /// (ChannelWidth: beyond what could still lower the size nothing matters).
+  void nearest_within(std::span<const Vec3> queries, std::span<const double> max_dist, std::span<double> dist,
+                      std::span<std::uint32_t> index) const;
+
+  /// Calls visit(index, squared distance) for the points within sqrt(bound2)
+  /// of q (every such point unless pruned); visit returns the new squared
+  /// bound, which may only shrink: cells beyond it are skipped. For searches
+  /// whose criterion is not the plain distance but is bounded below by it
+  /// (ChannelWidth's inscribed-ball width).
+  void visit_within(const Vec3& q, double bound2,
+                    const std::function<double(std::uint32_t, double)>& visit) const;
 
  private:
   struct Impl;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "base/vec.h"
+#include "field/coast_chain.h"
 #include "field/field.h"
 #include "field/options.h"
 
@@ -29,6 +30,11 @@ struct BuildContext {
   std::function<std::optional<std::vector<Vec3>>(int tag, int n)> curve_samples;
   /// Point cloud of surface `tag` with spacing about bbox_diag / n.
   std::function<std::optional<std::vector<Vec3>>(int tag, int n)> surface_samples;
+  /// The listed curves (signed tags) sampled and chained into rings along the
+  /// model's curve loops (ChannelWidth); nullopt if a curve does not exist.
+  std::function<std::optional<std::vector<CoastChain>>(const std::vector<int>& curves)> curve_chains;
+  /// The curve tags imported by Coastline[id]; nullopt if it is not imported.
+  std::function<std::optional<std::vector<int>>(int id)> coastline_curves;
   /// Relative data file names (Structured, Bathymetry) resolve against this.
   std::filesystem::path base_dir;
 };

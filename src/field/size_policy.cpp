@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "field/field.h"
 
@@ -59,6 +60,45 @@ SizeResult final_size(const SizePolicyOptions& o, const SizeQuery& q) {
   }
   r.size = lc * q.entity_factor * o.factor;
   return r;
+}
+
+namespace {
+
+class MinOnEntities final : public SizeField {
+ public:
+  MinOnEntities(std::shared_ptr<const SizeField> base, std::shared_ptr<const ChannelWidthField> extra, std::set<int> curves,
+                std::set<int> surfaces)
+      : base_(std::move(base)), extra_(std::move(extra)), curves_(std::move(curves)), surfaces_(std::move(surfaces)) {}
+
+  void eval(std::span<const Vec3> pts, std::span<double> h) const override { run(nullptr, pts, h); }
+  void eval_on(const EntityRef& on, std::span<const Vec3> pts, std::span<double> h) const override {
+    run(&on, pts, h);
+  }
+
+ private:
+  void run(const EntityRef* on, std::span<const Vec3> pts, std::span<double> h) const {
+    if (base_) {
+      eval_input(*base_, on, pts, h);
+    } else {
+      std::fill(h.begin(), h.end(), kMaxLc);
+    }
+    const bool applies = !on || (on->dim == 1 && curves_.count(std::abs(on->tag))) ||
+                         (on->dim == 2 && surfaces_.count(std::abs(on->tag)));
+    if (!applies) return;
+    extra_->lower(pts, h);
+  }
+
+  std::shared_ptr<const SizeField> base_;
+  std::shared_ptr<const ChannelWidthField> extra_;
+  std::set<int> curves_, surfaces_;
+};
+
+}  // namespace
+
+std::shared_ptr<const SizeField> min_on_entities(std::shared_ptr<const SizeField> base,
+                                                 std::shared_ptr<const ChannelWidthField> extra, std::set<int> curves,
+                                                 std::set<int> surfaces) {
+  return std::make_shared<MinOnEntities>(std::move(base), std::move(extra), std::move(curves), std::move(surfaces));
 }
 
 double surface_target(const SizePolicyOptions& o, double final, std::optional<double> boundary_interp) {

@@ -2,8 +2,13 @@
 // bbox lc, point sizes, curvature, background field, Min/Max clamp, factor.
 #pragma once
 
+#include <memory>
 #include <optional>
+#include <set>
 #include <string_view>
+
+#include "field/channel_width.h"
+#include "field/field.h"
 
 namespace sm::field {
 
@@ -48,5 +53,14 @@ SizeResult final_size(const SizePolicyOptions& o, const SizeQuery& q);
 /// With MeshSizeExtendFromBoundary, the 2D target is min(interpolated
 /// boundary size, final size); without, the final size only.
 double surface_target(const SizePolicyOptions& o, double final, std::optional<double> boundary_interp);
+
+/// The background field with an extra criterion inside its Min on some entities only
+/// (Mesh.ElementsAcrossChannels: the ChannelWidth of the coast on the surfaces a
+/// coastline bounds and on their curves). `base` may be null (no background field):
+/// then the extra criterion alone, and "no constraint" (MAX_LC) elsewhere. Points
+/// without an entity get the extra criterion too.
+std::shared_ptr<const SizeField> min_on_entities(std::shared_ptr<const SizeField> base,
+                                                 std::shared_ptr<const ChannelWidthField> extra, std::set<int> curves,
+                                                 std::set<int> surfaces);
 
 }  // namespace sm::field

@@ -139,6 +139,12 @@ std::string format_stats(const MeshStats& s) {
   if (s.has_sizes)
     out += fmt::format("Edge length / size: median {:.3f}, 5-95% [{:.3f}, {:.3f}], {:.2f}% in [0.7, 1.4] ({} edges)\n",
                        s.len_median, s.len_p05, s.len_p95, 100 * s.share_len_07_14, s.edges);
+  if (s.time_step.valid) {
+    const TimeStep& t = s.time_step;
+    out += fmt::format("Time step (Courant 1): dt {:.4g} s", t.dt);
+    if (t.has_lonlat) out += fmt::format(" at lon {:.4f}, lat {:.4f}", t.lon, t.lat);
+    out += fmt::format(" (surface {}, edge {:.4g} m, depth {:.4g} m)\n", t.surface, t.edge, t.depth);
+  }
   if (!s.stages.empty()) {
     out += "Time:";
     double total = 0;
@@ -178,6 +184,12 @@ std::string stats_json(const MeshStats& s) {
                        "\"length_ratio_p95\": {}, \"length_ratio_share_0.7_1.4\": {}",
                        s.edges, json_number(s.len_median), json_number(s.len_p05), json_number(s.len_p95),
                        json_number(s.share_len_07_14));
+  if (s.time_step.valid) {
+    const TimeStep& t = s.time_step;
+    out += fmt::format(", \"dt\": {}, \"dt_edge\": {}, \"dt_depth\": {}, \"dt_surface\": {}", json_number(t.dt),
+                       json_number(t.edge), json_number(t.depth), t.surface);
+    if (t.has_lonlat) out += fmt::format(", \"dt_lon\": {}, \"dt_lat\": {}", json_number(t.lon), json_number(t.lat));
+  }
   out += ", \"stages\": {";
   for (std::size_t i = 0; i < s.stages.size(); ++i)
     out += fmt::format("{}{}: {}", i ? ", " : "", json_string(s.stages[i].name), json_number(s.stages[i].seconds));

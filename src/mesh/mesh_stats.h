@@ -11,6 +11,7 @@
 
 #include "base/vec.h"
 #include "mesh/model_mesh.h"
+#include "mesh/time_step.h"
 
 namespace sm {
 
@@ -26,6 +27,7 @@ struct MeshStats {
   double len_median = 0, len_p05 = 0, len_p95 = 0;     // edge length / target size
   double share_len_07_14 = 0;                          // share of edges with ratio in [0.7, 1.4]
   std::vector<StageTime> stages;                       // filled by the caller
+  TimeStep time_step;                                  // with Mesh.DepthField: set by the caller
 };
 
 /// Target size at 3D points (batched), e.g. one of Mesh2dResult::target_sizes.

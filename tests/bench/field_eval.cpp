@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "field/channel_width.h"
 #include "field/distance.h"
 #include "field/field_set.h"
 #include "field/knn.h"
@@ -72,6 +73,47 @@ std::vector<Vec3> coastline_samples(const std::string& file, std::size_t target)
         out.push_back(point_of(lon0 + w * (lon1 - lon0), lat0 + w * (lat1 - lat0), 1));
       }
     }
+  return out;
+}
+
+/// The rings of a GSHHG text file on the unit sphere, each segment cut into `k` pieces,
+/// as ChannelWidth's coast chains (a repeated closing point dropped).
+std::vector<CoastChain> coastline_rings(const std::string& file, int k) {
+  std::ifstream in(file);
+  std::vector<CoastChain> out;
+  std::vector<std::pair<double, double>> ring;
+  auto flush = [&] {
+    if (ring.size() > 1 && ring.front() == ring.back()) ring.pop_back();
+    if (ring.size() < 3) {
+      ring.clear();
+      return;
+    }
+    CoastChain c;
+    c.closed = true;
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const auto [lon0, lat0] = ring[i];
+      const auto [lon1, lat1] = ring[(i + 1) % ring.size()];
+      const bool jump = std::fabs(lon1 - lon0) > 180;   // the date line: no interpolation across
+      for (int t = 0; t < (jump ? 1 : k); ++t) {
+        const double w = static_cast<double>(t) / k;
+        c.points.push_back(point_of(lon0 + w * (lon1 - lon0), lat0 + w * (lat1 - lat0), 1));
+      }
+    }
+    out.push_back(std::move(c));
+    ring.clear();
+  };
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    if (line[0] == '>') {
+      flush();
+      continue;
+    }
+    std::istringstream ls(line);
+    double lon, lat;
+    if (ls >> lon >> lat) ring.push_back({lon, lat});
+  }
+  flush();
   return out;
 }
 
@@ -194,6 +236,24 @@ int main() {
   t0 = Clock::now();
   built.get(4)->eval(q_coast, h);
   report("MathEval(Min(MathEval, Threshold(Distance)))", nq, seconds_since(t0));
+
+  // --- ChannelWidth: per-sample widths built once, one nearest query per point ---
+  {
+    std::vector<CoastChain> rings = coastline_rings(data + "/gshhg/world_i_A100.txt", 2);
+    std::size_t samples = 0;
+    for (const CoastChain& c : rings) samples += c.points.size();
+    t0 = Clock::now();
+    // Widths up to 2 x 50 km (Mesh.ElementsAcrossChannels 2 with a 50 km largest size).
+    FieldPtr cw = make_channel_width_field(std::move(rings), {2, 0, 50.0 / 6371});
+    std::printf("ChannelWidth build (world_i_A100, %zu samples in rings, widths to 100 km): %.3f s\n", samples,
+                seconds_since(t0));
+    t0 = Clock::now();
+    cw->eval(q_uniform, h);
+    report("ChannelWidth, uniform queries", nq, seconds_since(t0));
+    t0 = Clock::now();
+    cw->eval(q_coast, h);
+    report("ChannelWidth, near-coast queries", nq, seconds_since(t0));
+  }
 
   // --- MathEval against the same formula in C++ --------------------------
   {

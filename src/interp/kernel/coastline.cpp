@@ -585,4 +585,17 @@ Value eval_coastline_query(Interpreter& in, ExprId e) {
   return Value::list(std::move(out));
 }
 
+std::optional<std::vector<int>> coastline_curves(const KernelState& k, int id) {
+  const auto it = k.coastlines.find(id);
+  if (it == k.coastlines.end() || !it->second.imported) return std::nullopt;
+  const CoastlineImport& imp = *it->second.imported;
+  std::vector<int> out;
+  for (int c : imp.curves) {
+    bool open = false;
+    for (int o : imp.open_curves) open = open || o == c;
+    if (!open) out.push_back(c);
+  }
+  return out;
+}
+
 }  // namespace sm::interp

@@ -3,8 +3,10 @@
 // expressions the evaluator hands over. Each family file owns its part.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "interp/value.h"
 #include "lang/ast.h"
@@ -12,6 +14,7 @@
 namespace sm::interp {
 
 class Interpreter;
+struct KernelState;
 
 // The handlers of kernel/statements.def's rows, each with the rows it serves.
 
@@ -44,6 +47,10 @@ bool exec_mesh_command(Interpreter& in, lang::StmtId s, std::string_view command
 /// `Coastline{n, ...}` (coastline.cpp): imports coastline n on first use and returns its
 /// curve-loop tags (or, with a string item, its "Curves", "OpenCurves", "Points"...).
 Value eval_coastline_query(Interpreter& in, lang::ExprId e);
+
+/// The coast curves Coastline[id]'s import created, its open boundaries (region cuts)
+/// left out (coastline.cpp); nullopt if it is not defined or not imported yet (ChannelWidth's CoastlineId, Mesh.ElementsAcrossChannels).
+std::optional<std::vector<int>> coastline_curves(const KernelState& k, int id);
 
 /// Evaluates the expressions of a statement the kernel cannot run yet, so
 /// that mistakes in them (unknown variables, division by zero...) are

@@ -74,6 +74,9 @@ const SourceRange* reference_site(Interpreter& in, int id, int ref) {
     } else if (s.role == field::OptionRole::FieldRefList) {
       for (double v : std::get<std::vector<double>>(o.value(static_cast<int>(i))))
         refers = refers || static_cast<int>(v) == ref;
+    } else if (s.type == field::OptionType::Number && o.kind().extra_refs) {
+      // A plain number naming a field only when set (TimeStep's DepthField).
+      refers = static_cast<int>(std::get<double>(o.value(static_cast<int>(i)))) == ref;
     } else if (s.type == field::OptionType::String && o.kind().extra_refs) {
       refers = true;   // MathEval's F<n> live in its expression strings
     }
@@ -229,6 +232,13 @@ void fail_field_error(Interpreter& in, const field::FieldError& e, SourceRange a
 
 void invalidate_field_cache(Interpreter& in) { in.kernel().field_cache.reset(); }
 
+field::BuildContext kernel_build_context(const KernelState& k, const CurveMeshNodes* mesh_nodes) {
+  field::BuildContext ctx = make_build_context(k.model, {}, mesh_nodes);
+  const KernelState* state = &k;
+  ctx.coastline_curves = [state](int id) { return coastline_curves(*state, id); };
+  return ctx;
+}
+
 const field::BuiltFields& built_fields(Interpreter& in, int root, SourceRange use) {
   KernelState& k = in.kernel();
   const std::uint64_t revision = k.model.revision();
@@ -242,7 +252,7 @@ const field::BuiltFields& built_fields(Interpreter& in, int root, SourceRange us
     in.fail_fmt(use, Diag::MissingField, fmt::format("Field[{}] is not defined", root));
   check_reference_depth(in, root, use);
   try {
-    field::BuildContext ctx = make_build_context(k.model);
+    field::BuildContext ctx = kernel_build_context(k, nullptr);
     return k.field_cache->by_root.emplace(root, k.fields.build(root, ctx)).first->second;
   } catch (const field::FieldError& e) {
     fail_field_error(in, e, use);
@@ -271,7 +281,7 @@ field::FieldPtr background_size_field(Interpreter& in, const CurveMeshNodes* mes
     return field::checked_size_field(built_fields(in, id, k.background_field_at).shared(id), id, kind_of(in, id));
   check_reference_depth(in, id, k.background_field_at);
   try {
-    return field::checked_size_field(k.fields.build(id, make_build_context(k.model, {}, mesh_nodes)).shared(id),
+    return field::checked_size_field(k.fields.build(id, kernel_build_context(k, mesh_nodes)).shared(id),
                                      id, kind_of(in, id));
   } catch (const field::FieldError& e) {
     fail_field_error(in, e, k.background_field_at);

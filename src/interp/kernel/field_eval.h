@@ -11,6 +11,11 @@
 namespace sm::interp {
 
 class Interpreter;
+struct KernelState;
+
+/// make_build_context on the kernel's model, with what only the interpreter knows
+/// (the curves of each imported coastline).
+field::BuildContext kernel_build_context(const KernelState& k, const CurveMeshNodes* mesh_nodes);
 
 /// Reports a kernel field error as a runtime error located at `at`, with notes
 /// at the `Field[n] = ...` and `Field[n].Option = ...` statements involved

@@ -29,6 +29,7 @@
 #include "mesh/mesh1d.h"
 #include "mesh/mesh2d.h"
 #include "mesh/mesh_stats.h"
+#include "mesh/time_step.h"
 
 namespace sm::interp {
 
@@ -133,6 +134,7 @@ void publish_stats(Interpreter& in, const ModelMesh& mesh, const MeshStats& st) 
   o.set_number("Mesh.StatsRhoAbove09", st.share_rho_09, true);
   o.set_number("Mesh.StatsEdgeRatioMedian", st.len_median, true);
   o.set_number("Mesh.StatsEdgeInRange", st.share_len_07_14, true);
+  o.set_number("Mesh.StatsTimeStep", st.time_step.valid ? st.time_step.dt : 0, true);
   in.kernel().mesh_stats_json = stats_json(st);
   if (o.number("General.Verbosity") >= 4) {
     std::fflush(stdout);   // after the Printf output before it when both share a pipe
@@ -141,12 +143,37 @@ void publish_stats(Interpreter& in, const ModelMesh& mesh, const MeshStats& st) 
   }
 }
 
+// The Courant time step of `mesh` with node depths from `depth` (Mesh.DepthField): edges
+// on the model's sphere when it has one (lengths in the model's units, metres for
+// earth.geo), depths raised to Mesh.TimeStepMinDepth.
+TimeStep time_step_of(Interpreter& in, const ModelMesh& mesh, const field::SizeField& depth) {
+  std::vector<Vec3> xyz(mesh.nodes.size());
+  for (std::size_t i = 0; i < xyz.size(); ++i) xyz[i] = mesh.nodes[i].xyz;
+  std::vector<double> h(xyz.size());
+  depth.eval(xyz, h);
+  TimeStepOptions opt;
+  opt.min_depth = in.options().number("Mesh.TimeStepMinDepth");
+  for (const auto& [tag, g] : in.kernel().model.geometries()) {
+    opt.centre = g.centre();
+    opt.radius = g.radius();
+    break;
+  }
+  return courant_time_step(mesh, h, opt);
+}
+
 // Meshes the model up to `dim` into the kernel state; on failure returns why. The
 // mesher's warnings are reported at `where` (the Mesh statement; none for -1/-2).
 MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   using Clock = std::chrono::steady_clock;
   KernelState& k = in.kernel();
-  const field::FieldPtr background = background_size_field(in);
+  if (std::string why = check_elements_across_channels(in.options()); !why.empty()) {
+    MeshFailure f{Diag::InvalidOptionValue, std::move(why), {}};
+    if (const auto it = k.option_set_at.find("Mesh.ElementsAcrossChannels"); it != k.option_set_at.end())
+      f.notes.push_back({it->second, "Mesh.ElementsAcrossChannels was set here"});
+    return f;
+  }
+  // The background field with the coastlines' channel widths inside its Min.
+  const field::FieldPtr background = with_channel_sizes(in, background_size_field(in));
   const double max_elements = in.options().number("Mesh.MaxElements");
   Mesh2dOptions opt2;
   if (dim >= 2) {
@@ -184,6 +211,13 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
       f.notes.push_back({it->second, "Mesh.DepthField was set here"});
     return f;
   }
+  // Built now, so that a depth field that cannot be built is reported before meshing.
+  field::FieldPtr depth;
+  if (depth_field > 0) {
+    const auto it = k.option_set_at.find("Mesh.DepthField");
+    const int id = static_cast<int>(depth_field);
+    depth = built_fields(in, id, it != k.option_set_at.end() ? it->second : SourceRange{}).shared(id);
+  }
   const auto t0 = Clock::now();
   Mesh1dOptions opt1 = mesh1d_options(in, background.get());
   opt1.max_elements = max_elements;
@@ -216,6 +250,7 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   MeshStats st = mesh_stats(*mesh, r2.target_sizes);
   st.stages.push_back({"1D", seconds_1d});
   for (const StageTime& t : stage_times(r2.stats)) st.stages.push_back(t);
+  if (depth) st.time_step = time_step_of(in, *mesh, *depth);
   publish_stats(in, *mesh, st);
   k.mesh = std::move(mesh);
   return {};

@@ -109,7 +109,10 @@ std::string ocean_grid_options(Interpreter& in, const std::string& path, const i
   opt.lonlat = !k.model.geometries().empty();
   const int depth_field = static_cast<int>(in.options().number("Mesh.DepthField"));
   if (depth_field > 0) {
-    const field::SizeField* f = built_fields(in, depth_field, lang::SourceRange{}).get(depth_field);
+    // Located at the assignment: the field may have changed since the mesh was made.
+    const auto at = k.option_set_at.find("Mesh.DepthField");
+    const field::SizeField* f =
+        built_fields(in, depth_field, at != k.option_set_at.end() ? at->second : lang::SourceRange{}).get(depth_field);
     if (!f) return fmt::format("Mesh.DepthField = {}: no such field", depth_field);
     opt.depth.resize(mm.xyz.size());
     f->eval(mm.xyz, opt.depth);

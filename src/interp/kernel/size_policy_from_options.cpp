@@ -1,12 +1,20 @@
 // Mesh.MeshSize{Factor,Min,Max,FromPoints,ExtendFromBoundary,FromCurvature} ->
 // field::SizePolicyOptions. Each CharacteristicLength* alias shares its option's
 // slot in the registry, so reading the current names sees either spelling.
+// Mesh.ElementsAcrossChannels -> field/channel_width.h on the coastlines' surfaces.
 #include "interp/kernel/size_policy_from_options.h"
 
 #include <array>
+#include <set>
 #include <string_view>
 
+#include <fmt/format.h>
+
 #include "base/check.h"
+#include "field/channel_width.h"
+#include "interp/interpreter.h"
+#include "interp/kernel/dispatch.h"
+#include "interp/kernel/field_eval.h"
 
 namespace sm::interp {
 
@@ -21,6 +29,56 @@ field::SizePolicyOptions size_policy_from_options(const Options& options) {
     SM_ASSERT(known, "size option missing from field::set_size_option");
   }
   return out;
+}
+
+std::string check_elements_across_channels(const Options& options) {
+  const double n = options.number("Mesh.ElementsAcrossChannels");
+  if (n > 0 && n < 1)
+    return fmt::format("Mesh.ElementsAcrossChannels = {:g}: a channel needs at least 1 element across (0 turns the "
+                       "criterion off)",
+                       n);
+  return {};
+}
+
+field::FieldPtr with_channel_sizes(Interpreter& in, field::FieldPtr background) {
+  const Options& o = in.options();
+  const double n = o.number("Mesh.ElementsAcrossChannels");
+  if (!(n >= 1)) return background;
+  const KernelState& k = in.kernel();
+  std::vector<int> coast;
+  for (const auto& [id, def] : k.coastlines)
+    if (auto c = coastline_curves(k, id)) coast.insert(coast.end(), c->begin(), c->end());
+  if (coast.empty()) return background;
+  const std::set<int> coast_set = [&] {
+    std::set<int> s;
+    for (int c : coast) s.insert(std::abs(c));
+    return s;
+  }();
+  // The surfaces with a coast curve in a loop, and every curve of their loops (open
+  // boundaries crossing a strait are sized by it too).
+  std::set<int> surfaces, curves = coast_set;
+  for (const auto& [tag, s] : k.model.surfaces()) {
+    bool bounded = false;
+    std::vector<int> own;
+    for (int l : s.loops)
+      if (const geo::ModelCurveLoop* loop = k.model.curve_loop(std::abs(l)))
+        for (int c : loop->curves) {
+          own.push_back(std::abs(c));
+          bounded = bounded || coast_set.count(std::abs(c)) > 0;
+        }
+    if (!bounded) continue;
+    surfaces.insert(tag);
+    curves.insert(own.begin(), own.end());
+  }
+  const field::BuildContext ctx = kernel_build_context(k, nullptr);
+  std::optional<std::vector<field::CoastChain>> chains = ctx.curve_chains(coast);
+  if (!chains) return background;   // a coastline's curve was deleted since the import
+  field::ChannelWidthOptions opts;
+  opts.elements_across = n;
+  opts.size_min = o.number("Mesh.MeshSizeMin");
+  opts.size_max = o.number("Mesh.MeshSizeMax");
+  auto channels = field::make_channel_width_field(std::move(*chains), opts);
+  return field::min_on_entities(std::move(background), std::move(channels), std::move(curves), std::move(surfaces));
 }
 
 }  // namespace sm::interp

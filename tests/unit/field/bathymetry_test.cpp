@@ -155,7 +155,7 @@ TEST_CASE("bathymetry: bad input is rejected with typed, located errors") {
     CHECK(std::string(e.what()).find("no variable 'depth' (variables: lon, lat, z)") != std::string::npos);
   }
   FieldSet out = bathy("etopo5_gbr_5min.nc");
-  out.set(1, "Output", std::string("slope"));
+  out.set(1, "Output", std::string("curl"));
   CHECK_THROWS_AS(out.build(1, {}), FieldError);
   FieldSet pos = bathy("etopo5_gbr_5min.nc");
   pos.set(1, "Positive", std::string("sideways"));
@@ -253,4 +253,75 @@ TEST_CASE("bathymetry: a relief beyond 1000 km is an error naming the file and t
   }
   fs.set(1, "FileName", std::string(SM_TEST_DATA) + "/grids/small.nc");
   CHECK(eval1(fs, 1, point_of(8, 46, 1)) == doctest::Approx(960));
+}
+
+TEST_CASE("bathymetry: the tidal wavelength T sqrt(g H) / N, finer where shallower") {
+  FieldSet fs = bathy("etopo5_gbr_5min.nc");
+  fs.set(1, "Output", std::string("tidal"));
+  fs.set(1, "PointsPerWaveLength", 50.0);
+  const double lat0 = -26 + 100.0 / 12;
+  // Node z(100,150) = -1511 m; a land node reads MinDepth (10 m).
+  CHECK(eval1(fs, 1, point_of(152.5, lat0, 1)) == doctest::Approx(44712 * std::sqrt(9.81 * 1511) / 50));
+  CHECK(eval1(fs, 1, point_of(140 + 50.0 / 12, lat0, 1)) == doctest::Approx(44712 * std::sqrt(9.81 * 10) / 50));
+  fs.set(1, "Period", 86164.0);   // K1
+  CHECK(eval1(fs, 1, point_of(152.5, lat0, 1)) == doctest::Approx(86164 * std::sqrt(9.81 * 1511) / 50));
+  fs.set(1, "Period", 0.0);
+  CHECK_THROWS_AS(eval1(fs, 1, point_of(152.5, lat0, 1)), FieldError);
+}
+
+TEST_CASE("bathymetry: the slope criterion (2 pi / N) H / |grad H| on the sphere") {
+  const double r = 6371e3, deg = 3.141592653589793 / 180;
+  LonLatGrid g;
+  g.nlon = 41;
+  g.nlat = 41;
+  g.lon0 = -10;
+  g.lat0 = 50;
+  g.dlon = g.dlat = 0.5;
+  g.v.resize(41 * 41);
+  // H = 1000 + a * R * lat (radians): |grad H| = a northward, exact for centred
+  // differences; along a parallel at 60N, H = 1000 + a R cos(60) lon: |grad H| = a east.
+  const double a = 1e-3;
+  for (int j = 0; j < 41; ++j)
+    for (int i = 0; i < 41; ++i) g.at(i, j) = 1000 + a * r * (g.lat(j) - 60) * deg;
+  LonLatGrid s = slope_criterion(g, 10, r);
+  CHECK(s.at(20, 20) == doctest::Approx(2 * 3.141592653589793 / 10 * 1000 / a).epsilon(1e-9));
+  for (int j = 0; j < 41; ++j)
+    for (int i = 0; i < 41; ++i) g.at(i, j) = 1000 + a * r * 0.5 * g.lon(i) * deg;
+  s = slope_criterion(g, 10, r);
+  CHECK(s.at(20, 20) == doctest::Approx(2 * 3.141592653589793 / 10 * 1000 / a).epsilon(1e-9));
+  for (double& v : g.v) v = 1234;
+  CHECK(slope_criterion(g, 10, r).at(20, 20) == 1e22);
+  // On the real grid through the kind: positive, finite somewhere, MinDepth required.
+  FieldSet fs = bathy("etopo5_gbr_5min.nc");
+  fs.set(1, "Output", std::string("slope"));
+  fs.set(1, "PointsPerWaveLength", 10.0);
+  fs.set(1, "Radius", 1.0);
+  const double v = eval1(fs, 1, point_of(152.5, -26 + 100.0 / 12, 1));
+  CHECK(v > 0);
+  CHECK(v < 1e22);
+  fs.set(1, "MinDepth", 0.0);
+  CHECK_THROWS_AS(eval1(fs, 1, point_of(152.5, -18, 1)), FieldError);
+}
+
+TEST_CASE("time step field: Dt sqrt(g H) / Courant from a depth field or a grid") {
+  FieldSet fs;
+  fs.define(1, "MathEval");
+  fs.set(1, "F", std::string("100 * x"));
+  fs.define(2, "TimeStep");
+  fs.set(2, "DepthField", 1.0);
+  fs.set(2, "Dt", 30.0);
+  CHECK(eval1(fs, 2, {40, 0, 0}) == doctest::Approx(30 * std::sqrt(9.81 * 4000)));
+  CHECK(eval1(fs, 2, {0, 0, 0}) == doctest::Approx(30 * std::sqrt(9.81 * 10)));   // MinDepth 10
+  fs.set(2, "Courant", 0.5);
+  CHECK(eval1(fs, 2, {40, 0, 0}) == doctest::Approx(60 * std::sqrt(9.81 * 4000)));
+  FieldSet grid;
+  grid.define(1, "TimeStep");
+  grid.set(1, "FileName", shared_data("bathymetry/etopo5_gbr_5min.nc"));
+  grid.set(1, "Dt", 10.0);
+  CHECK(eval1(grid, 1, point_of(152.5, -26 + 100.0 / 12, 1)) == doctest::Approx(10 * std::sqrt(9.81 * 1511)));
+  grid.set(1, "Dt", 0.0);
+  CHECK_THROWS_AS(eval1(grid, 1, point_of(152.5, -18, 1)), FieldError);
+  grid.set(1, "Dt", 10.0);
+  grid.set(1, "DepthField", 1.0);   // both
+  CHECK_THROWS_AS(eval1(grid, 1, point_of(152.5, -18, 1)), FieldError);
 }

@@ -88,6 +88,11 @@ std::vector<int> define_all(FieldSet& fs, std::size_t coast_points) {
   for (std::size_t i = 0; i < tags.size(); ++i) tags[i] = static_cast<double>(i + 1);
   fs.set(dist, "PointsList", tags);
 
+  // The coast as one chain (ctx.curve_chains below), widths searched up to 128 km.
+  const int channel = def("ChannelWidth");
+  fs.set(channel, "CurvesList", std::vector<double>{1});
+  fs.set(channel, "SizeMax", 64e3 / r);
+
   const int thr = def("Threshold");
   fs.set(thr, "InField", static_cast<double>(dist));
   fs.set(thr, "SizeMin", 30e3 / r);
@@ -99,6 +104,9 @@ std::vector<int> define_all(FieldSet& fs, std::size_t coast_points) {
   const int depth = def("Bathymetry");
   fs.set(depth, "FileName", shared_data("bathymetry/etopo5_global_1deg.nc"));
   fs.set(depth, "Radius", 1.0);
+  const int step = def("TimeStep");
+  fs.set(step, "DepthField", static_cast<double>(depth));
+  fs.set(step, "Dt", 60.0);
   const int wave = def("Bathymetry");
   fs.set(wave, "FileName", shared_data("bathymetry/etopo5_global_1deg.asc"));
   fs.set(wave, "Output", std::string("wavelength"));
@@ -192,6 +200,9 @@ TEST_CASE("field threads: every kind gives the serial bits from 4 threads at onc
   ctx.point_position = [&](int tag) -> std::optional<Vec3> {
     if (tag < 1 || tag > static_cast<int>(coast.size())) return std::nullopt;
     return coast[static_cast<std::size_t>(tag - 1)];
+  };
+  ctx.curve_chains = [&](const std::vector<int>&) -> std::optional<std::vector<CoastChain>> {
+    return std::vector<CoastChain>{{coast, false}};
   };
   FieldSet fs;
   const std::vector<int> ids = define_all(fs, coast.size());

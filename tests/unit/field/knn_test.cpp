@@ -1,6 +1,7 @@
 #include "field/knn.h"
 
 #include <cmath>
+#include <limits>
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -84,4 +85,32 @@ TEST_CASE("knn: empty tree gives no constraint") {
   std::vector<double> d(1);
   tree.nearest(q, d);
   CHECK(d[0] == 1e22);
+}
+
+TEST_CASE("knn: nearest_within agrees with brute force inside the radius, +inf beyond") {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<Vec3> pts(5000), q(3000);
+  for (Vec3& p : pts) p = {u(rng), u(rng), 0.1 * u(rng)};
+  for (Vec3& p : q) p = {2 * u(rng), 2 * u(rng), u(rng)};
+  q.push_back(pts[17]);   // on a point
+  const KdTree tree(pts);
+  std::vector<double> d(q.size()), ref(q.size());
+  std::vector<std::uint32_t> idx(q.size()), ref_idx(q.size());
+  const double radius = 0.3;
+  tree.nearest_within(q, std::span<const double>(&radius, 1), d, idx);
+  nearest_brute_force(pts, q, ref, ref_idx);
+  int near = 0;
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    if (ref[i] < 0.3) {
+      ++near;
+      CHECK(d[i] == ref[i]);
+      CHECK(idx[i] == ref_idx[i]);
+    } else {
+      CHECK(std::isinf(d[i]));
+      CHECK(idx[i] == std::numeric_limits<std::uint32_t>::max());
+    }
+  }
+  CHECK(near > 300);
+  CHECK(near < static_cast<int>(q.size()) - 300);
 }

@@ -1,0 +1,295 @@
+// ChannelWidth field. Built once: for every coast sample p and each side of the
+// coast at p, the diameter of the largest ball tangent to the coast at p on that
+// side that holds no coast sample of another piece (the local width of the water,
+// or of the land on the other side). Evaluated with one nearest-sample query.
+//
+//        other bank   x   x   x   x          q: a sample of another piece;
+//                         q                  ball tangent at p on side +m:
+//                       .   .                q inside iff |d|^2 < 2 r (d . m),
+//                      .  o  .  r            d = q - p, so its diameter is
+//                       .   .                min over q of |d|^2 / (d . m)
+//        this bank  x   x   p   x   x
+//
+// Samples of the same ring are "another piece" only when the way round the coast
+// is much longer than the chord (> pi/2 |d|: more than a half circle): otherwise a
+// concave bend of the coast would read as a channel as narrow as its samples.
+#include "field/channel_width.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "field/error.h"
+#include "field/kinds.h"
+#include "field/knn.h"
+
+namespace sm::field {
+
+namespace {
+
+// Along-coast distance over chord above which two samples of one ring face
+// each other across the water (a half circle: pi/2).
+constexpr double kNeighbourRatio = std::numbers::pi / 2;
+// Points closer to the coast than this share of the local sample spacing are on
+// it: their side is unknown, both sides' smaller width applies.
+constexpr double kOnCoast = 0.1;
+// Without SizeMax the widths are searched up to this many median sample spacings.
+constexpr double kDefaultCapSpacings = 64;
+
+}  // namespace
+
+struct ChannelWidths::Impl {
+  std::vector<Vec3> pts;
+  std::vector<std::uint32_t> chain, prev, next;  // per sample; prev/next == self at an open end
+  std::vector<double> s;                         // arc length from the chain's first sample
+  std::vector<double> length;                    // per chain (closed: with the closing segment)
+  std::vector<char> closed;
+  std::vector<Vec3> side;                        // unit normal to the coast in the surface (0: unknown)
+  std::vector<double> spacing;                   // larger of the two segments at the sample
+  std::vector<double> w_pos, w_neg;              // width on the +side / -side, at most cap
+  std::vector<int> water;                        // per chain: CoastChain::water_side
+  double cap = kMaxLc;
+  std::unique_ptr<KdTree> tree;
+
+  double width_at(std::uint32_t i, const Vec3& x) const {
+    const double off = dot(x - pts[i], side[i]);
+    if (std::fabs(off) <= kOnCoast * spacing[i]) return std::min(w_pos[i], w_neg[i]);
+    return off > 0 ? w_pos[i] : w_neg[i];
+  }
+};
+
+ChannelWidths::ChannelWidths(std::vector<CoastChain> chains, double cap) : impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  m.cap = cap;
+  for (const CoastChain& c : chains) {
+    if (c.points.empty()) continue;
+    const auto first = static_cast<std::uint32_t>(m.pts.size());
+    const auto id = static_cast<std::uint32_t>(m.length.size());
+    const std::size_t n = c.points.size();
+    double arc = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (k > 0) arc += norm(c.points[k] - c.points[k - 1]);
+      m.pts.push_back(c.points[k]);
+      m.chain.push_back(id);
+      m.s.push_back(arc);
+      const bool wrap = c.closed && n > 2;
+      const auto at = [&](std::size_t q) { return first + static_cast<std::uint32_t>(q); };
+      m.prev.push_back(k > 0 ? at(k - 1) : wrap ? at(n - 1) : at(k));
+      m.next.push_back(k + 1 < n ? at(k + 1) : wrap ? at(0) : at(k));
+    }
+    const bool wrap = c.closed && n > 2;
+    m.length.push_back(wrap ? arc + norm(c.points.front() - c.points.back()) : arc);
+    m.closed.push_back(wrap ? 1 : 0);
+    m.water.push_back(c.water_side);
+  }
+  const std::size_t n = m.pts.size();
+  // The surface's normal: a flat model's plane (z constant), else the sphere's
+  // radial direction (the PolarSphere models are centred on the origin).
+  double zmin = std::numeric_limits<double>::infinity(), zmax = -zmin, ext = 0;
+  for (const Vec3& p : m.pts) {
+    zmin = std::min(zmin, p.z), zmax = std::max(zmax, p.z);
+    ext = std::max({ext, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+  }
+  const bool flat = n == 0 || zmax - zmin <= 1e-12 * std::max(ext, 1e-300);
+  m.side.resize(n);
+  m.spacing.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3& p = m.pts[i];
+    const Vec3 up = flat || norm(p) == 0 ? Vec3{0, 0, 1} : p / norm(p);
+    const Vec3 t = m.pts[m.next[i]] - m.pts[m.prev[i]];
+    const Vec3 c = cross(up, t);
+    m.side[i] = norm(c) > 0 ? c / norm(c) : Vec3{0, 0, 0};
+    m.spacing[i] = std::max(norm(m.pts[m.next[i]] - p), norm(p - m.pts[m.prev[i]]));
+  }
+  if (!(m.cap > 0)) m.cap = 0;
+  m.w_pos.assign(n, m.cap);
+  m.w_neg.assign(n, m.cap);
+  if (n == 0 || m.cap == 0) return;
+  m.tree = std::make_unique<KdTree>(m.pts);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 p = m.pts[i], side = m.side[i];
+    double& wp = m.w_pos[i];
+    double& wn = m.w_neg[i];
+    // Where the water side is known, the land side is not searched: it stays at 0
+    // during the search (so that it does not hold the bound up) and gets the water
+    // side's width after it, so that every point near the sample reads that.
+    const int water = m.water[m.chain[i]];
+    if (water > 0) wn = 0;
+    if (water < 0) wp = 0;
+    const auto visit = [&](std::uint32_t j, double d2) -> double {
+      const double bound = std::max(wp, wn);
+      if (d2 == 0) return bound * bound;  // the same coast point in two pieces
+      const double d = std::sqrt(d2);
+      if (m.chain[j] == m.chain[i]) {
+        double along = std::fabs(m.s[j] - m.s[i]);
+        if (m.closed[m.chain[i]]) along = std::min(along, m.length[m.chain[i]] - along);
+        if (along <= kNeighbourRatio * d) return bound * bound;
+      }
+      const double dm = dot(m.pts[j] - p, side);
+      if (side == Vec3{0, 0, 0}) {  // no tangent: the nearest other piece, either side
+        wp = std::min(wp, d);
+        wn = std::min(wn, d);
+      } else if (dm > 0) {
+        wp = std::min(wp, d2 / dm);
+      } else if (dm < 0) {
+        wn = std::min(wn, d2 / -dm);
+      }
+      const double b = std::max(wp, wn);
+      return b * b;
+    };
+    m.tree->visit_within(p, m.cap * m.cap, visit);
+    if (water > 0) wn = wp;
+    if (water < 0) wp = wn;
+  }
+}
+
+ChannelWidths::~ChannelWidths() = default;
+
+std::size_t ChannelWidths::samples() const { return impl_->pts.size(); }
+
+void ChannelWidths::width(std::span<const Vec3> pts, std::span<double> w) const {
+  const double all = impl_->cap;
+  width_within(pts, std::span<const double>(&all, 1), w);
+}
+
+void ChannelWidths::width_within(std::span<const Vec3> pts, std::span<const double> max_width,
+                                 std::span<double> w) const {
+  const Impl& m = *impl_;
+  if (!m.tree) {
+    std::fill(w.begin(), w.end(), m.cap);
+    return;
+  }
+  // Farther than max_width / 2 from the coast the water is wider than that.
+  std::vector<double> radius(max_width.size());
+  for (std::size_t i = 0; i < radius.size(); ++i) radius[i] = 0.5 * std::min(max_width[i], m.cap);
+  std::vector<double> dist(pts.size());
+  std::vector<std::uint32_t> index(pts.size());
+  m.tree->nearest_within(pts, radius, dist, index);
+  for (std::size_t k = 0; k < pts.size(); ++k) {
+    std::uint32_t i = index[k];
+    const Vec3& x = pts[k];
+    if (i >= m.pts.size()) {  // far (or a non-finite point: NaN)
+      w[k] = std::isnan(dist[k]) ? dist[k] : m.cap;
+      continue;
+    }
+    // Linear along the coast segment the point projects onto, next side first.
+    double value = m.width_at(i, x);
+    for (const std::uint32_t j : {m.next[i], m.prev[i]}) {
+      if (j == i) continue;
+      const Vec3 e = m.pts[j] - m.pts[i];
+      const double e2 = norm2(e);
+      const double u = e2 > 0 ? dot(x - m.pts[i], e) / e2 : 0;
+      if (u > 0 && u <= 1) {
+        value = (1 - u) * value + u * m.width_at(j, x);
+        break;
+      }
+    }
+    // The ball of radius dist around x holds no coast: the water is at least twice
+    // that wide (also where the samples are too sparse to see it).
+    w[k] = std::min(std::max(value, 2 * dist[k]), m.cap);
+  }
+}
+
+ChannelWidthField::ChannelWidthField(std::vector<CoastChain> chains, const ChannelWidthOptions& o, double cap)
+    : widths_(std::move(chains), cap), o_(o), cap_(cap) {}
+
+double ChannelWidthField::size_of(double w) const {
+  // A width that reached the search cap is "wide": no constraint.
+  const double size = w >= cap_ ? kMaxLc : w / o_.elements_across;
+  return std::clamp(size, o_.size_min, o_.size_max);
+}
+
+void ChannelWidthField::eval(std::span<const Vec3> pts, std::span<double> h) const {
+  widths_.width(pts, h);
+  for (double& v : h) v = size_of(v);
+}
+
+void ChannelWidthField::lower(std::span<const Vec3> pts, std::span<double> h) const {
+  // Only a width below N h can lower h (none at all where h <= SizeMin; any where
+  // SizeMax is below h). Past the limit width_within returns a width >= N h, whose
+  // size is >= h: the min below leaves h as it is, as a full evaluation would.
+  std::vector<double> limit(h.size()), w(h.size());
+  for (std::size_t i = 0; i < h.size(); ++i)
+    limit[i] = !(h[i] > o_.size_min) ? 0 : o_.size_max < h[i] ? cap_ : o_.elements_across * h[i];
+  widths_.width_within(pts, limit, w);
+  for (std::size_t i = 0; i < h.size(); ++i)
+    if (limit[i] > 0) h[i] = std::min(h[i], size_of(w[i]));
+}
+
+namespace {
+
+// The search radius: N * SizeMax, or without SizeMax a multiple of the median
+// sample spacing (wider channels are not what this field is for, and an
+// unbounded search would visit every sample of a world coastline).
+double search_cap(const std::vector<CoastChain>& chains, const ChannelWidthOptions& o) {
+  if (o.size_max < kMaxLc) return o.elements_across * o.size_max;
+  std::vector<double> gaps;
+  for (const CoastChain& c : chains)
+    for (std::size_t k = 1; k < c.points.size(); ++k) gaps.push_back(norm(c.points[k] - c.points[k - 1]));
+  if (gaps.empty()) return 0;
+  std::nth_element(gaps.begin(), gaps.begin() + static_cast<long>(gaps.size() / 2), gaps.end());
+  return kDefaultCapSpacings * gaps[gaps.size() / 2];
+}
+
+FieldPtr make(const BuildInputs& in) {
+  const Options& o = in.opts;
+  ChannelWidthOptions opts;
+  opts.elements_across = o.number("ElementsAcross");
+  opts.size_min = o.number("SizeMin");
+  opts.size_max = o.number("SizeMax");
+  if (!(opts.elements_across >= 1)) in.bad("ElementsAcross", "must be at least 1");
+  if (!(opts.size_min >= 0)) in.bad("SizeMin", "must be positive or zero");
+  if (!(opts.size_max > 0) || opts.size_max < opts.size_min) in.bad("SizeMax", "must be positive and at least SizeMin");
+  const int coast = static_cast<int>(o.number("CoastlineId"));
+  std::vector<int> curves;
+  for (double v : o.list("CurvesList")) curves.push_back(static_cast<int>(v));
+  if (coast != 0 && !curves.empty()) in.bad("CoastlineId", "give either CoastlineId or CurvesList, not both");
+  if (coast != 0) {
+    std::optional<std::vector<int>> c;
+    if (in.ctx.coastline_curves) c = in.ctx.coastline_curves(coast);
+    if (!c) in.bad("CoastlineId", fmt::format("Coastline[{}] does not exist or is not imported yet", coast));
+    curves = std::move(*c);
+  }
+  if (curves.empty()) in.bad("CurvesList", "no curves: set CoastlineId or CurvesList");
+  std::optional<std::vector<CoastChain>> chains;
+  if (in.ctx.curve_chains) chains = in.ctx.curve_chains(curves);
+  if (!chains) in.bad(coast != 0 ? "CoastlineId" : "CurvesList", "a listed curve does not exist");
+  return make_channel_width_field(std::move(*chains), opts);
+}
+
+}  // namespace
+
+std::shared_ptr<const ChannelWidthField> make_channel_width_field(std::vector<CoastChain> chains,
+                                                                  const ChannelWidthOptions& opts) {
+  for (const CoastChain& c : chains)
+    for (const Vec3& p : c.points)
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+        throw FieldError(FieldErrc::BadValue, "ChannelWidth: a coast sample is not finite");
+  if (!(opts.elements_across >= 1))
+    throw FieldError(FieldErrc::BadValue, "ChannelWidth: ElementsAcross must be at least 1");
+  const double cap = search_cap(chains, opts);
+  return std::make_shared<ChannelWidthField>(std::move(chains), opts, cap);
+}
+
+KindSpec channel_width_kind() {
+  return {"ChannelWidth",
+          "Local width w of the water (diameter of the largest empty ball tangent to the coast: the "
+          "medial-axis feature size) divided by ElementsAcross, clamped to [SizeMin, SizeMax]. Samples "
+          "of one ring face each other only when the way round is more than pi/2 times their distance. "
+          "Built once with a k-d tree; one nearest-sample query per point.",
+          {
+              num_opt("CoastlineId", 0, "the coastline whose curves are the coast (Coastline[n], imported)"),
+              list_opt("CurvesList", "coast curve tags (chained into rings through the curve loops)"),
+              num_opt("ElementsAcross", 2, "elements across a channel (at least 1)"),
+              num_opt("SizeMin", 0, "smallest size returned"),
+              num_opt("SizeMax", kMaxLc,
+                      "largest size returned; widths up to ElementsAcross * SizeMax are searched "
+                      "(without it: 64 median coast sample spacings)"),
+          },
+          make};
+}
+
+}  // namespace sm::field

@@ -1,0 +1,69 @@
+// ChannelWidth field: the local width of the water (the diameter of the largest
+// empty ball touching the coast, the medial-axis idea behind OceanMesh2D's feature
+// size) divided by ElementsAcross, so that every channel gets that many elements.
+#pragma once
+
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "base/vec.h"
+#include "field/coast_chain.h"
+#include "field/registry.h"
+
+namespace sm::field {
+
+struct ChannelWidthOptions {
+  double elements_across = 2;  ///< N: elements across a channel (>= 1)
+  double size_min = 0;         ///< the size never goes below this
+  double size_max = kMaxLc;    ///< nor above this; widths beyond N * size_max are not searched
+};
+
+/// The per-sample widths and the evaluation, exposed for tests.
+class ChannelWidths {
+ public:
+  /// `cap`: widths larger than this are not searched for and read as `cap`.
+  ChannelWidths(std::vector<CoastChain> chains, double cap);
+  ~ChannelWidths();
+  ChannelWidths(const ChannelWidths&) = delete;
+  ChannelWidths& operator=(const ChannelWidths&) = delete;
+
+  /// Local width of the water at each point: the width at the nearest coast
+  /// sample, on the side of the coast the point lies on (both sides' smaller
+  /// one for points on the coast), interpolated along the coast; at least twice
+  /// the distance to the coast, at most the cap.
+  void width(std::span<const Vec3> pts, std::span<double> w) const;
+  /// The same where the width is below max_width[i] (one value for all points, or
+  /// one per point); elsewhere some value at least that.
+  void width_within(std::span<const Vec3> pts, std::span<const double> max_width, std::span<double> w) const;
+  std::size_t samples() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// The field: clamp(width / ElementsAcross, SizeMin, SizeMax); no constraint
+/// (SizeMax) where the width reaches the search cap.
+class ChannelWidthField final : public SizeField {
+ public:
+  ChannelWidthField(std::vector<CoastChain> chains, const ChannelWidthOptions& o, double cap);
+  void eval(std::span<const Vec3> pts, std::span<double> h) const override;
+  /// h[i] = min(h[i], the field at pts[i]), with the coast searched only as far as
+  /// could still lower h[i]: cheap where h is already small (Mesh.ElementsAcrossChannels
+  /// inside the Min of the background field).
+  void lower(std::span<const Vec3> pts, std::span<double> h) const;
+
+ private:
+  double size_of(double width) const;
+  ChannelWidths widths_;
+  ChannelWidthOptions o_;
+  double cap_;
+};
+
+/// Direct construction (Mesh.ElementsAcrossChannels, tests, benchmarks).
+/// Throws BadValue on a non-finite sample or an option out of range.
+std::shared_ptr<const ChannelWidthField> make_channel_width_field(std::vector<CoastChain> chains,
+                                                                  const ChannelWidthOptions& opts);
+
+}  // namespace sm::field
