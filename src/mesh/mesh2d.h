@@ -15,6 +15,7 @@
 #include "field/size_policy.h"
 #include "geo/model.h"
 #include "geo/sphere.h"
+#include "mesh/mesh_error.h"
 #include "mesh/mesh_stats.h"
 #include "mesh/model_mesh.h"
 #include "mesh/partition.h"
@@ -59,19 +60,6 @@ struct Mesh2dOptions {
   Progress* progress = nullptr;
 };
 
-enum class Mesh2dErrorKind { Failed, LimitExceeded };
-
-/// A located failure: the surface, and where (3D; lon/lat on a sphere geometry).
-struct Mesh2dError {
-  int surface = 0;          // 0: no error
-  Mesh2dErrorKind kind = Mesh2dErrorKind::Failed;
-  double count = 0, limit = 0;   // LimitExceeded: the estimated triangles, the limit
-  std::string message;
-  Vec3 xyz;
-  bool has_lonlat = false;
-  geo::LonLat where;
-};
-
 struct Mesh2dStats {
   std::uint64_t faces = 0, triangles = 0, new_nodes = 0;
   std::uint64_t inserted = 0, rejected = 0, size_evaluations = 0;
@@ -85,7 +73,9 @@ struct Mesh2dStats {
 };
 
 struct Mesh2dResult {
-  Mesh2dError error;
+  /// A failure names the surface first, then the curves involved; the message starts
+  /// "surface N: " and, with a place, ends "near lon X, lat Y" (or "near (x, y, z)").
+  MeshError error;
   std::vector<std::string> warnings;
   Mesh2dStats stats;
   /// Per meshed surface (tag order), the size its mesher aimed at, at 3D points (the
@@ -94,7 +84,7 @@ struct Mesh2dResult {
   /// for mesh_stats. Valid while opt.background lives; each function keeps its own
   /// scratch, so call it from one thread at a time.
   std::vector<SurfaceSize> target_sizes;
-  bool ok() const { return error.surface == 0; }
+  bool ok() const { return error.ok(); }
 };
 
 /// The 2D stages as named in the statistics summary ("2D boundary", "2D refine", ...).

@@ -23,6 +23,7 @@
 #include "interp/kernel/output_options.h"
 #include "interp/kernel/size_policy_from_options.h"
 #include "interp/interpreter.h"
+#include "interp/provenance.h"
 #include "interp/progress_sink.h"
 #include "io/from_model_mesh.h"
 #include "io/output_format.h"
@@ -49,28 +50,11 @@ Mesh1dOptions mesh1d_options(Interpreter& in, const field::SizeField* background
   return opt;
 }
 
-// "curve 7 was created here" for the curves a mesher error names.
-std::vector<DiagNote> curve_notes(const KernelState& k, const Mesh1dError& e) {
-  std::vector<DiagNote> notes;
-  for (int tag : {e.curve_a, e.curve_b}) {
-    if (tag <= 0 || (tag == e.curve_b && e.curve_a == e.curve_b && !notes.empty())) continue;
-    const auto it = k.created_at.find({1, tag});
-    if (it != k.created_at.end()) notes.push_back({it->second, fmt::format("curve {} was created here", tag)});
-  }
-  return notes;
-}
-
-std::vector<DiagNote> surface_notes(const KernelState& k, int surface) {
-  const auto it = k.created_at.find({2, surface});
-  if (it == k.created_at.end()) return {};
-  return {{it->second, fmt::format("surface {} was created here", surface)}};
-}
-
-Diag diag_of(const Mesh1dError& e) {
+Diag diag_of(const MeshError& e) {
   switch (e.kind) {
-    case Mesh1dErrorKind::Intersection:
-    case Mesh1dErrorKind::DuplicatePoint: return Diag::MeshCurvesIntersect;
-    case Mesh1dErrorKind::LimitExceeded: return Diag::LimitExceeded;
+    case MeshErrorKind::Intersection:
+    case MeshErrorKind::DuplicatePoint: return Diag::MeshCurvesIntersect;
+    case MeshErrorKind::LimitExceeded: return Diag::LimitExceeded;
     default: return Diag::MeshFailed;
   }
 }
@@ -83,12 +67,12 @@ std::string over_limit(double limit) {
   return fmt::format("over Mesh.MaxElements = {:g}: {}", limit, kBudgetFix);
 }
 
-std::string message_of(const Mesh1dError& e) {
-  if (e.kind != Mesh1dErrorKind::LimitExceeded) return e.message;
+std::string message_of(const MeshError& e) {
+  if (e.kind != MeshErrorKind::LimitExceeded) return e.message;
   if (e.all_curves)
-    return fmt::format("the curves would get about {:.1e} nodes in all (curve {} the most), {}", e.count, e.curve_a,
+    return fmt::format("the curves would get about {:.1e} nodes in all (curve {} the most), {}", e.count, e.tag(0),
                        over_limit(e.limit));
-  return fmt::format("curve {} would get about {:.1e} nodes, {}", e.curve_a, e.count, over_limit(e.limit));
+  return fmt::format("curve {} would get about {:.1e} nodes, {}", e.tag(0), e.count, over_limit(e.limit));
 }
 
 // A meshing failure on its way to a diagnostic (kind, message, notes at the
@@ -100,11 +84,11 @@ struct MeshFailure {
   bool failed() const { return !message.empty(); }
 };
 
-MeshFailure failure_of(const KernelState& k, const Mesh2dError& e) {
-  MeshFailure f{Diag::MeshFailed, e.message, surface_notes(k, e.surface)};
-  if (e.kind == Mesh2dErrorKind::LimitExceeded) {
+MeshFailure failure_of(const KernelState& k, const MeshError& e) {
+  MeshFailure f{Diag::MeshFailed, e.message, provenance_notes(k, e)};
+  if (e.kind == MeshErrorKind::LimitExceeded) {
     f.kind = Diag::LimitExceeded;
-    f.message = fmt::format("surface {} would get about {:.1e} triangles, over Mesh.MaxElements = {:g}: {}", e.surface,
+    f.message = fmt::format("surface {} would get about {:.1e} triangles, over Mesh.MaxElements = {:g}: {}", e.tag(0),
                             e.count, e.limit, kBudgetFix);
   } else if (e.has_lonlat) {
     f.message += fmt::format(" (near lon {:.4f}, lat {:.4f})", e.where.lon, e.where.lat);
@@ -189,15 +173,15 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   opt1.max_elements = max_elements;
   // Many 1D nodes: the faces' budgets first, on a coarse boundary, before the full 1D
   // mesh is paid for (a unit square at size 1e-7 has 4e7 boundary nodes, 2e14 triangles).
-  Mesh2dError budget;
+  MeshError budget;
   if (dim >= 2)
     opt1.coarse_check = [&](const ModelMesh& coarse) {
       budget = check_face_budgets(k.model, coarse, opt2).error;
-      return budget.surface == 0;
+      return budget.ok();
     };
   Mesh1dResult r = mesh_curves(k.model, opt1);
-  if (r.error.kind == Mesh1dErrorKind::Stopped) return failure_of(k, budget);
-  if (!r.ok()) return {diag_of(r.error), message_of(r.error), curve_notes(k, r.error)};
+  if (r.error.kind == MeshErrorKind::Stopped) return failure_of(k, budget);
+  if (!r.ok()) return {diag_of(r.error), message_of(r.error), provenance_notes(k, r.error)};
   auto mesh = std::make_shared<ModelMesh>(std::move(r.mesh));
   const double seconds_1d = std::chrono::duration<double>(Clock::now() - t0).count();
   if (dim < 2) {
