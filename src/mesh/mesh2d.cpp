@@ -10,12 +10,14 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 
 #include <fmt/format.h>
 
 #include "base/parallel.h"
+#include "exact/triangle_rho.h"
 #include "mesh/cdt.h"
 #include "mesh/delaunay.h"
 #include "mesh/face_plane.h"
@@ -25,6 +27,7 @@
 #include "mesh/modify/optimize.h"
 #include "mesh/modify/smooth.h"
 #include "mesh/partition.h"
+#include "mesh/quality_floor.h"
 #include "mesh/refine.h"
 
 namespace sm {
@@ -51,6 +54,32 @@ struct Chain {
   std::vector<std::uint32_t> nodes;
   std::vector<int> edge_curve;
 };
+
+// Whether model surface `tag` is bounded by curve c or embeds it.
+bool surface_uses_curve(const geo::Model& model, int tag, int c) {
+  const geo::ModelSurface* s = model.surface(tag);
+  if (!s) return false;
+  for (int l : s->loops)
+    if (const geo::ModelCurveLoop* loop = model.curve_loop(std::abs(l)))
+      for (int lc : loop->curves)
+        if (std::abs(lc) == c) return true;
+  return std::find(s->embedded_curves.begin(), s->embedded_curves.end(), c) != s->embedded_curves.end();
+}
+
+// Splits the triangles of a meshed surface on the edge a - b at node m (orientation kept).
+void split_surface_edge(SurfaceMesh& sm, std::uint32_t a, std::uint32_t b, std::uint32_t m) {
+  const std::size_t n = sm.triangles.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::array<std::uint32_t, 3> t = sm.triangles[i];
+    for (std::size_t e = 0; e < 3; ++e) {
+      const std::uint32_t p = t[e], q = t[(e + 1) % 3], r = t[(e + 2) % 3];
+      if (!((p == a && q == b) || (p == b && q == a))) continue;
+      sm.triangles[i] = {p, m, r};
+      sm.triangles.push_back({m, q, r});
+      break;
+    }
+  }
+}
 
 class FaceMesher {
  public:
@@ -90,6 +119,14 @@ class FaceMesher {
   bool refine(const std::function<void(std::span<const Vec2>, std::span<double>)>& size_at, std::uint64_t estimate);
   void smooth();
   void optimize();
+  /// The quality floor (Mesh2dOptions::quality_floor), then the quality pass again where
+  /// it changed something; its report into res_.quality_warnings.
+  void raise_floor();
+  void report_floor(const QualityFloorResult& r);
+  /// The point in space of local vertex v: its node, or its plane point mapped.
+  Vec3 space_of(VertexId v) const;
+  /// The curve of the face edge between local vertices a and b (0: none).
+  int curve_of(VertexId a, VertexId b) const;
   /// Interior nodes to 3D, triangles oriented, the surface's mesh and target size kept.
   void output();
 
@@ -112,6 +149,15 @@ class FaceMesher {
   std::shared_ptr<FaceSizing> sizing_ = std::make_shared<FaceSizing>();
   std::atomic<std::uint64_t> size_evaluations_{0};
   bool smoothed_ = false;                     // meshadapt smooths in each of its rounds
+  // The quality floor's curve splits: the curve of each boundary edge (local vertex pair,
+  // smaller first; embedded curves too), the split asked last.
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> edge_curve_of_;
+  struct PendingSplit {
+    int curve = 0;
+    std::size_t k = 0;   // between cm.nodes[k] and cm.nodes[k + 1]
+    double t = 0;
+    MeshNode node;
+  } pending_;
   bool estimate_only_ = false;
 };
 
@@ -328,6 +374,10 @@ bool FaceMesher::run(const geo::ModelSurface& s) {
   res_.stats.seconds_optimize += seconds_since(t0);
 
   t0 = std::chrono::steady_clock::now();
+  raise_floor();
+  res_.stats.seconds_floor += seconds_since(t0);
+
+  t0 = std::chrono::steady_clock::now();
   output();
   res_.stats.seconds_output += seconds_since(t0);
   return true;
@@ -449,12 +499,130 @@ void FaceMesher::optimize() {
   optimize_quality(m_, fixed_count_, oo);
 }
 
+Vec3 FaceMesher::space_of(VertexId v) const {
+  if (v.value < global_.size() && global_[v.value] != kNoLocal) return mesh_.nodes[global_[v.value]].xyz;
+  return plane_.to_space(m_.xy[v.value]);
+}
+
+int FaceMesher::curve_of(VertexId a, VertexId b) const {
+  const auto it = edge_curve_of_.find(std::minmax(a.value, b.value));
+  return it == edge_curve_of_.end() ? 0 : it->second;
+}
+
+void FaceMesher::raise_floor() {
+  if (!(opt_.quality_floor > 0)) return;
+  for (std::size_t i = 0; i < edges_.size(); ++i)
+    edge_curve_of_[std::minmax(edges_[i].first.value, edges_[i].second.value)] = edge_curve_[i];
+  std::vector<std::uint32_t> corners;   // global nodes of model vertices, sorted
+  for (const auto& [vt, node] : mesh_.vertex_node) corners.push_back(node);
+  std::sort(corners.begin(), corners.end());
+  FloorFace face;
+  face.space = [this](VertexId v) { return space_of(v); };
+  face.to_space = [this](Vec2 p) { return plane_.to_space(p); };
+  face.is_corner = [this, &corners](VertexId v) {
+    return v.value < global_.size() && std::binary_search(corners.begin(), corners.end(), global_[v.value]);
+  };
+  face.curve_midpoint = [this](VertexId a, VertexId b) -> std::optional<Vec2> {
+    const int c = curve_of(a, b);
+    const geo::ModelCurve* mc = c > 0 ? model_.curve(c) : nullptr;
+    const auto it = mesh_.curves.find(c);
+    if (!mc || !mc->shape || it == mesh_.curves.end()) return std::nullopt;
+    const CurveMesh& cm = it->second;
+    const std::uint32_t ga = global_[a.value], gb = global_[b.value];
+    for (std::size_t k = 0; k + 1 < cm.nodes.size(); ++k) {
+      if (!((cm.nodes[k] == ga && cm.nodes[k + 1] == gb) || (cm.nodes[k] == gb && cm.nodes[k + 1] == ga))) continue;
+      // The parameter midpoint: on the curve itself, so the geometry does not change.
+      pending_.curve = c;
+      pending_.k = k;
+      pending_.t = 0.5 * (cm.t[k] + cm.t[k + 1]);
+      const geo::Curve& shape = *mc->shape;
+      pending_.node = shape.on_surface() ? MeshNode{shape.point(pending_.t), shape.eval_uv(pending_.t).p, true}
+                                         : MeshNode{shape.point(pending_.t), {}, false};
+      return plane_.node_plane(pending_.node);
+    }
+    return std::nullopt;
+  };
+  face.curve_split_done = [this](VertexId a, VertexId b, VertexId v) {
+    const std::uint32_t ga = global_[a.value], gb = global_[b.value];
+    mesh_.nodes.push_back(pending_.node);
+    const std::uint32_t node = static_cast<std::uint32_t>(mesh_.nodes.size() - 1);
+    CurveMesh& cm = mesh_.curves.at(pending_.curve);
+    const auto at = static_cast<std::ptrdiff_t>(pending_.k + 1);
+    cm.nodes.insert(cm.nodes.begin() + at, node);
+    cm.t.insert(cm.t.begin() + at, pending_.t);
+    if (cm.h.size() > pending_.k + 1) cm.h.insert(cm.h.begin() + at, 0.5 * (cm.h[pending_.k] + cm.h[pending_.k + 1]));
+    if (global_.size() <= v.value) global_.resize(v.value + 1, kNoLocal);
+    global_[v.value] = node;
+    edge_curve_of_.erase(std::minmax(a.value, b.value));
+    edge_curve_of_[std::minmax(a.value, v.value)] = pending_.curve;
+    edge_curve_of_[std::minmax(v.value, b.value)] = pending_.curve;
+    // Faces meshed before this one on the same curve get the node on their edge too, so
+    // the mesh stays conforming (faces meshed later see it in the curve's 1D mesh).
+    for (auto& [st, sm] : mesh_.surfaces) {
+      if (st == tag_ || !surface_uses_curve(model_, st, pending_.curve)) continue;
+      split_surface_edge(sm, ga, gb, node);
+    }
+  };
+  QualityFloorOptions fo;
+  fo.floor = opt_.quality_floor;
+  const QualityFloorResult r = raise_quality_floor(m_, face, fo);
+  if (!r.changed()) {
+    report_floor(r);
+    return;
+  }
+  res_.stats.floor_curve_splits += r.curve_splits;
+  res_.stats.floor_points += r.interior_points;
+  optimize();
+  // What is left, measured after the quality pass (no rounds: only the count).
+  QualityFloorOptions count_only = fo;
+  count_only.max_rounds = 0;
+  QualityFloorResult left = raise_quality_floor(m_, face, count_only);
+  left.rounds = r.rounds, left.curve_splits = r.curve_splits, left.interior_points = r.interior_points;
+  left.below_before = r.below_before;
+  report_floor(left);
+}
+
+void FaceMesher::report_floor(const QualityFloorResult& r) {
+  const double q = opt_.quality_floor;
+  auto place = [this](VertexId v) { return where_text(space_of(v)); };
+  if (!r.sharp.empty()) {
+    constexpr std::size_t kListed = 8;
+    std::string list;
+    for (std::size_t i = 0; i < std::min(r.sharp.size(), kListed); ++i)
+      list += fmt::format("{}{:.1f} degrees at {}", i ? "; " : "", r.sharp[i].degrees, place(r.sharp[i].v));
+    if (r.sharp.size() > kListed) list += fmt::format("; and {} more", r.sharp.size() - kListed);
+    res_.quality_warnings.push_back(fmt::format(
+        "surface {}: {} triangle{} below Mesh.QualityFloor = {:g} where the boundary makes an angle too sharp for it "
+        "(under {:.1f} degrees): {}",
+        tag_, r.at_sharp, r.at_sharp == 1 ? "" : "s", q, sharp_angle_limit(q) * 180 / geo::kPi, list));
+  }
+  const std::uint32_t rest = r.below_after - r.at_sharp;
+  if (rest > 0) {
+    // The worst of them, for the place.
+    double worst = 2;
+    TriId wt;
+    for (std::uint32_t t = 0; t < m_.num_slots(); ++t) {
+      if (!m_.alive(TriId{t})) continue;
+      const double rt = rho(space_of(m_.vertex(TriId{t}, 0)), space_of(m_.vertex(TriId{t}, 1)),
+                            space_of(m_.vertex(TriId{t}, 2)));
+      if (rt < worst) worst = rt, wt = TriId{t};
+    }
+    const Vec3 c = (space_of(m_.vertex(wt, 0)) + space_of(m_.vertex(wt, 1)) + space_of(m_.vertex(wt, 2))) / 3.0;
+    res_.quality_warnings.push_back(fmt::format(
+        "surface {}: {} triangle{} still below Mesh.QualityFloor = {:g} after {} round{} and {} new points (the work "
+        "is bounded); the worst, rho {:.4f}, near {}",
+        tag_, rest, rest == 1 ? "" : "s", q, r.rounds, r.rounds == 1 ? "" : "s", r.curve_splits + r.interior_points,
+        worst, where_text(c)));
+  }
+}
+
 void FaceMesher::output() {
   SurfaceMesh sm_out;
   sm_out.tag = tag_;
   const std::uint32_t nv = m_.num_vertices();
-  global_.resize(nv);
+  global_.resize(nv, kNoLocal);   // the floor's curve nodes have theirs already
   for (std::uint32_t v = fixed_count_; v < nv; ++v) {
+    if (global_[v] != kNoLocal) continue;
     const Vec2 p = m_.xy[v];
     global_[v] = plane_.geom ? mesh_.add_node(plane_.to_space(p), plane_.to_param(p)) : mesh_.add_node(plane_.to_space(p));
     sm_out.interior_nodes.push_back(global_[v]);
@@ -467,7 +635,7 @@ void FaceMesher::output() {
                         c = global_[m_.vertex(TriId{t}, 2).value];
     sm_out.triangles.push_back(flip ? std::array<std::uint32_t, 3>{a, c, b} : std::array<std::uint32_t, 3>{a, b, c});
   }
-  res_.stats.new_nodes += nv - fixed_count_;
+  res_.stats.new_nodes += sm_out.interior_nodes.size();
   res_.stats.triangles += sm_out.triangles.size();
   ++res_.stats.faces;
   mesh_.surfaces[tag_] = std::move(sm_out);
@@ -527,6 +695,7 @@ std::vector<StageTime> stage_times(const Mesh2dStats& s) {
           {"2D refine", s.seconds_refine},
           {"2D smooth", s.seconds_smooth},
           {"2D optimise", s.seconds_optimize},
+          {"2D quality floor", s.seconds_floor},
           {"2D output", s.seconds_output}};
 }
 

@@ -42,6 +42,13 @@ struct Mesh2dOptions {
   /// r cos(lat) in a Sphere's Mercator plane). 0: the algorithm's
   /// default (del2d 0.76, front2d refine.h's 1/sqrt2).
   double radius_limit = 0;
+  /// Mesh.QualityFloor: after the quality pass, triangles with rho < this (in space) are
+  /// worked on by raise_quality_floor (quality_floor.h): curve edges split at their
+  /// curve's parameter midpoint (the curve's 1D mesh and every face on it get the node),
+  /// interior points inserted, then the quality pass again. Triangles at corners too sharp
+  /// for it, and any left when the bounded work runs out, are reported in
+  /// Mesh2dResult::quality_warnings. <= 0: off.
+  double quality_floor = 0;
   std::uint32_t max_vertices_per_face = 0xFFFFFFF0u;
   /// Mesh.MaxElements: a face whose estimated triangle count (estimate_triangles() on its
   /// recovered boundary triangulation, before any refinement) is over this is a
@@ -69,6 +76,8 @@ struct Mesh2dStats {
   double seconds_refine = 0;
   double seconds_smooth = 0;
   double seconds_optimize = 0;  // optimize_quality
+  double seconds_floor = 0;     // the quality floor (its quality pass included)
+  std::uint64_t floor_curve_splits = 0, floor_points = 0;   // what the floor inserted
   double seconds_output = 0;     // nodes mapped to 3D, triangles oriented
 };
 
@@ -77,6 +86,9 @@ struct Mesh2dResult {
   /// "surface N: " and, with a place, ends "near lon X, lat Y" (or "near (x, y, z)").
   MeshError error;
   std::vector<std::string> warnings;
+  /// One line per surface left below Mesh2dOptions::quality_floor (sharp corners; work
+  /// bounded), each starting "surface N: ".
+  std::vector<std::string> quality_warnings;
   Mesh2dStats stats;
   /// Per meshed surface (tag order), the size its mesher aimed at, at 3D points (the
   /// points go radially onto a sphere): the size policy with the background field and

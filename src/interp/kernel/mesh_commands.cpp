@@ -150,6 +150,7 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
     opt2.bbox_diag = model_bbox_diag(k.model);
     opt2.smoothing = static_cast<int>(in.options().number("Mesh.Smoothing"));
     opt2.quality_pass = in.options().number("Mesh.QualityPass") != 0;
+    opt2.quality_floor = in.options().number("Mesh.QualityFloor");
     opt2.max_elements = max_elements;
     // Threads for faces refined in parts: Mesh.MaxNumThreads2D, else General.NumThreads (0:
     // the hardware's). The mesh is the same for any count; meshadapt stays serial.
@@ -195,9 +196,23 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   // As diagnostics, so that they print in order with Printf and the progress display
   // (the front end drops them below General.Verbosity 2).
   for (const std::string& w : r2.warnings) in.diags().report_message(where, Diag::MeshWarning, w);
+  for (const std::string& w : r2.quality_warnings) in.diags().report_message(where, Diag::MeshQualityFloor, w);
   // Statistics against the size each face's mesher aimed at (with the extension from
   // the boundary where it is on).
   MeshStats st = mesh_stats(*mesh, r2.target_sizes);
+  // The worst triangle's place in longitude/latitude when its surface is on a sphere.
+  if (const geo::ModelSurface* ws = st.min_rho_surface ? k.model.surface(st.min_rho_surface) : nullptr)
+    if (const geo::SurfaceGeometry* g = ws->geometry ? k.model.geometry(ws->geometry) : nullptr) {
+      geo::LonLat ll;
+      if (g->polar()) {
+        ll = g->polar()->to_lonlat(st.min_rho_at);
+      } else {
+        const Vec2 uv = g->param(st.min_rho_at);
+        ll = {uv.x * geo::kRadToDeg, uv.y * geo::kRadToDeg};
+      }
+      st.has_min_rho_lonlat = true;
+      st.min_rho_lon = ll.lon, st.min_rho_lat = ll.lat;
+    }
   st.stages.push_back({"1D", seconds_1d});
   for (const StageTime& t : stage_times(r2.stats)) st.stages.push_back(t);
   publish_stats(in, *mesh, st);
