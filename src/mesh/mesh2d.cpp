@@ -572,7 +572,15 @@ void FaceMesher::raise_floor() {
   }
   res_.stats.floor_curve_splits += r.curve_splits;
   res_.stats.floor_points += r.interior_points;
-  optimize();
+  if (opt_.smoothing > 0 && opt_.quality_pass) {
+    // The quality pass again, on what the floor changed: only triangles below the floor
+    // (and a margin) are worked on; the rest of the face was optimised already.
+    OptimizeOptions oo;
+    oo.threshold = std::min(0.9, opt_.quality_floor + 0.2);
+    oo.sacrifice_below = oo.threshold;
+    oo.compound_below = opt_.quality_floor + 0.1;
+    optimize_quality(m_, fixed_count_, oo);
+  }
   // What is left, measured after the quality pass (no rounds: only the count).
   QualityFloorOptions count_only = fo;
   count_only.max_rounds = 0;

@@ -82,10 +82,10 @@ class Floor {
   /// Splits the curve edge of s at its curve midpoint unless a triangle it makes would
   /// have rho <= must_beat (the bad triangle's: the worst never gets worse).
   bool split_curve_edge(Side s, double must_beat);
-  /// Whether the boundary may go from a - b to a - p - b with p beyond a - b (outside the
-  /// face there): no constrained edge meets a - p or p - b (but at a and b) and no vertex
-  /// lies in the triangle a, p, b.
-  bool bulge_is_clear(VertexId a, VertexId b, Vec2 p) const;
+  /// Whether the boundary may go from a - b (the edge of s) to a - p - b with p beyond it
+  /// (outside the face there): no constrained edge near it meets a - p or p - b (but at a
+  /// and b) and no vertex near it lies in the triangle a, p, b.
+  bool bulge_is_clear(Side s, Vec2 p);
   void touched(VertexId v);
 
   TriangleStore& m_;
@@ -96,6 +96,7 @@ class Floor {
   std::vector<TriId> touched_;
   double worst_start_ = 1;
   std::vector<SharpCorner> sharp_all_;
+  std::vector<TriId> near_;
   QualityFloorResult res_;
 };
 
@@ -158,26 +159,47 @@ void Floor::touched(VertexId v) {
   }
 }
 
-bool Floor::bulge_is_clear(VertexId a, VertexId b, Vec2 p) const {
+bool Floor::bulge_is_clear(Side s, Vec2 p) {
+  // What could lie in the bulge is near the edge: the triangles within kRings steps of it
+  // (across any edge; the bulge is no larger than its chord, and the triangles there are
+  // no smaller than the bad one being worked on) are searched, not the whole face.
+  constexpr int kRings = 4;
+  const VertexId a = m_.org(s), b = m_.dest(s);
   const Vec2 pa = m_.pos(a), pb = m_.pos(b);
-  for (std::uint32_t v = 0; v < m_.num_vertices(); ++v) {
-    if (v == a.value || v == b.value || !m_.out_side_ok(VertexId{v})) continue;
-    const Vec2 x = m_.xy[v];
-    // Closed triangle b, a, p (counter-clockwise when p is beyond a - b).
-    if (orient2d(pb, pa, x) != Sign::Negative && orient2d(pa, p, x) != Sign::Negative &&
-        orient2d(p, pb, x) != Sign::Negative)
-      return false;
+  near_.clear();
+  near_.push_back(tri_of(s));
+  m_.tri_flags[tri_of(s).value] |= kMark;
+  for (std::size_t begin = 0, ring = 0; ring < kRings; ++ring) {
+    const std::size_t end = near_.size();
+    for (std::size_t i = begin; i < end; ++i)
+      for (std::uint32_t e = 0; e < 3; ++e) {
+        const Side o = m_.twin[side_of(near_[i], e).value];
+        if (!o.valid() || (m_.tri_flags[tri_of(o).value] & kMark)) continue;
+        m_.tri_flags[tri_of(o).value] |= kMark;
+        near_.push_back(tri_of(o));
+      }
+    begin = end;
   }
-  for (std::uint32_t i = 0; i < m_.corner.size(); ++i) {
-    const Side s{i};
-    if (!m_.alive(tri_of(s)) || !m_.constrained(s)) continue;
-    const Side o = m_.twin[i];
-    if (o.valid() && o.value < i) continue;   // each edge once
-    const VertexId u = m_.org(s), w = m_.dest(s);
-    if (u == a || u == b || w == a || w == b) continue;
-    if (segments_meet(pa, p, m_.pos(u), m_.pos(w)) || segments_meet(p, pb, m_.pos(u), m_.pos(w))) return false;
+  bool clear = true;
+  for (const TriId t : near_) {
+    m_.tri_flags[t.value] &= static_cast<std::uint8_t>(~kMark);
+    for (std::uint32_t e = 0; e < 3 && clear; ++e) {
+      const VertexId v = m_.vertex(t, e);
+      if (v != a && v != b) {
+        const Vec2 x = m_.pos(v);
+        // Closed triangle b, a, p (counter-clockwise when p is beyond a - b).
+        if (orient2d(pb, pa, x) != Sign::Negative && orient2d(pa, p, x) != Sign::Negative &&
+            orient2d(p, pb, x) != Sign::Negative)
+          clear = false;
+      }
+      const Side x = side_of(t, e);
+      if (!m_.constrained(x)) continue;
+      const VertexId u = m_.org(x), w = m_.dest(x);
+      if (u == a || u == b || w == a || w == b) continue;
+      if (segments_meet(pa, p, m_.pos(u), m_.pos(w)) || segments_meet(p, pb, m_.pos(u), m_.pos(w))) clear = false;
+    }
   }
-  return true;
+  return clear;
 }
 
 bool Floor::split_curve_edge(Side s, double must_beat) {
@@ -186,7 +208,7 @@ bool Floor::split_curve_edge(Side s, double must_beat) {
   const std::optional<Vec2> p = face_.curve_midpoint(a, b);
   if (!p) return false;
   // The face lies left of a -> b (its triangle tri_of(s)); a point to the right widens it.
-  if (orient2d(m_.pos(a), m_.pos(b), *p) == Sign::Negative && !bulge_is_clear(a, b, *p)) return false;
+  if (orient2d(m_.pos(a), m_.pos(b), *p) == Sign::Negative && !bulge_is_clear(s, *p)) return false;
   const Vec3 xp = face_.to_space(*p);
   for (const Side side : {s, m_.twin[s.value]}) {
     if (!side.valid()) continue;

@@ -621,7 +621,7 @@ TEST_CASE("mesh2d: world ocean north of 60S from GSHHG crude, shore distance 30 
   check_on_sphere(m, a.mesh, 1, kR);
   MeshStats st = mesh_stats(a.mesh, target);
   st.stages = stage_times(a.r2.stats);
-  REQUIRE(st.stages.size() == 5);
+  REQUIRE(st.stages.size() == 6);
   CHECK(st.stages[1].name == "2D refine");
   CHECK(st.stages[1].seconds > 0);
   MESSAGE(name_of(alg) << ": " << format_stats(st));
