@@ -66,21 +66,6 @@ bool surface_uses_curve(const geo::Model& model, int tag, int c) {
   return std::find(s->embedded_curves.begin(), s->embedded_curves.end(), c) != s->embedded_curves.end();
 }
 
-// Splits the triangles of a meshed surface on the edge a - b at node m (orientation kept).
-void split_surface_edge(SurfaceMesh& sm, std::uint32_t a, std::uint32_t b, std::uint32_t m) {
-  const std::size_t n = sm.triangles.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::array<std::uint32_t, 3> t = sm.triangles[i];
-    for (std::size_t e = 0; e < 3; ++e) {
-      const std::uint32_t p = t[e], q = t[(e + 1) % 3], r = t[(e + 2) % 3];
-      if (!((p == a && q == b) || (p == b && q == a))) continue;
-      sm.triangles[i] = {p, m, r};
-      sm.triangles.push_back({m, q, r});
-      break;
-    }
-  }
-}
-
 class FaceMesher {
  public:
   /// local_of: global node -> local vertex, all kNoLocal; left so again on return.
@@ -158,6 +143,7 @@ class FaceMesher {
     double t = 0;
     MeshNode node;
   } pending_;
+  std::vector<std::pair<int, std::uint32_t>> floor_nodes_;   // (curve, node) the floor added
   bool estimate_only_ = false;
 };
 
@@ -527,6 +513,11 @@ void FaceMesher::raise_floor() {
     const geo::ModelCurve* mc = c > 0 ? model_.curve(c) : nullptr;
     const auto it = mesh_.curves.find(c);
     if (!mc || !mc->shape || it == mesh_.curves.end()) return std::nullopt;
+    // A curve a face meshed before this one also holds stays as it is: that face's
+    // triangle on the edge would have to be cut in two, unoptimised (a fan of slivers
+    // after a few splits). Faces meshed later see the new nodes in the curve's 1D mesh.
+    for (const auto& [st, sm] : mesh_.surfaces)
+      if (st != tag_ && surface_uses_curve(model_, st, c)) return std::nullopt;
     const CurveMesh& cm = it->second;
     const std::uint32_t ga = global_[a.value], gb = global_[b.value];
     for (std::size_t k = 0; k + 1 < cm.nodes.size(); ++k) {
@@ -543,48 +534,73 @@ void FaceMesher::raise_floor() {
     return std::nullopt;
   };
   face.curve_split_done = [this](VertexId a, VertexId b, VertexId v) {
-    const std::uint32_t ga = global_[a.value], gb = global_[b.value];
     mesh_.nodes.push_back(pending_.node);
     const std::uint32_t node = static_cast<std::uint32_t>(mesh_.nodes.size() - 1);
     CurveMesh& cm = mesh_.curves.at(pending_.curve);
     const auto at = static_cast<std::ptrdiff_t>(pending_.k + 1);
     cm.nodes.insert(cm.nodes.begin() + at, node);
     cm.t.insert(cm.t.begin() + at, pending_.t);
+    floor_nodes_.emplace_back(pending_.curve, node);
     if (cm.h.size() > pending_.k + 1) cm.h.insert(cm.h.begin() + at, 0.5 * (cm.h[pending_.k] + cm.h[pending_.k + 1]));
     if (global_.size() <= v.value) global_.resize(v.value + 1, kNoLocal);
     global_[v.value] = node;
     edge_curve_of_.erase(std::minmax(a.value, b.value));
     edge_curve_of_[std::minmax(a.value, v.value)] = pending_.curve;
     edge_curve_of_[std::minmax(v.value, b.value)] = pending_.curve;
-    // Faces meshed before this one on the same curve get the node on their edge too, so
-    // the mesh stays conforming (faces meshed later see it in the curve's 1D mesh).
-    for (auto& [st, sm] : mesh_.surfaces) {
-      if (st == tag_ || !surface_uses_curve(model_, st, pending_.curve)) continue;
-      split_surface_edge(sm, ga, gb, node);
-    }
   };
-  QualityFloorOptions fo;
-  fo.floor = opt_.quality_floor;
-  const QualityFloorResult r = raise_quality_floor(m_, face, fo);
-  if (!r.changed()) {
-    report_floor(r);
-    return;
+  // First with transient losses allowed (a split may leave a triangle at half the one
+  // worked on, for the next rounds to mend); if the face ends worse than it started (its
+  // worst rho lower, or more triangles below q), everything is put back and the floor
+  // runs again never going below the face's starting worst.
+  const auto space = [this](VertexId v) { return space_of(v); };
+  double worst_start = 1;
+  const std::uint32_t below_start = count_below(m_, space, opt_.quality_floor, &worst_start);
+  if (below_start == 0) return;
+  const TriangleStore before = m_;
+  const std::size_t nodes_start = mesh_.nodes.size(), global_start = global_.size();
+  QualityFloorResult r, left;
+  for (const bool never_worse : {false, true}) {
+    if (never_worse) {
+      // Undo: the triangulation, the curve nodes (appended last, so the node array is cut
+      // back) and the bookkeeping.
+      m_ = before;
+      for (auto it = floor_nodes_.rbegin(); it != floor_nodes_.rend(); ++it) {
+        CurveMesh& cm = mesh_.curves.at(it->first);
+        const auto k = std::find(cm.nodes.begin(), cm.nodes.end(), it->second) - cm.nodes.begin();
+        cm.nodes.erase(cm.nodes.begin() + k);
+        cm.t.erase(cm.t.begin() + k);
+        if (static_cast<std::size_t>(k) < cm.h.size()) cm.h.erase(cm.h.begin() + k);
+      }
+      floor_nodes_.clear();
+      mesh_.nodes.resize(nodes_start);
+      global_.resize(global_start);
+      edge_curve_of_.clear();
+      for (std::size_t i = 0; i < edges_.size(); ++i)
+        edge_curve_of_[std::minmax(edges_[i].first.value, edges_[i].second.value)] = edge_curve_[i];
+    }
+    QualityFloorOptions fo;
+    fo.floor = opt_.quality_floor;
+    fo.never_below_start = never_worse;
+    r = raise_quality_floor(m_, face, fo);
+    if (r.changed() && opt_.smoothing > 0 && opt_.quality_pass) {
+      // The quality pass again, on what the floor changed: only triangles below the floor
+      // (and a margin) are worked on; the rest of the face was optimised already.
+      OptimizeOptions oo;
+      oo.threshold = std::min(0.9, opt_.quality_floor + 0.2);
+      oo.sacrifice_below = oo.threshold;
+      oo.compound_below = opt_.quality_floor + 0.1;
+      optimize_quality(m_, fixed_count_, oo);
+    }
+    // What is left, measured after the quality pass (no rounds: only the count).
+    QualityFloorOptions count_only = fo;
+    count_only.max_rounds = 0;
+    left = raise_quality_floor(m_, face, count_only);
+    double worst_end = 1;
+    count_below(m_, space, opt_.quality_floor, &worst_end);
+    if (!r.changed() || (worst_end >= worst_start && left.below_after <= below_start)) break;
   }
   res_.stats.floor_curve_splits += r.curve_splits;
   res_.stats.floor_points += r.interior_points;
-  if (opt_.smoothing > 0 && opt_.quality_pass) {
-    // The quality pass again, on what the floor changed: only triangles below the floor
-    // (and a margin) are worked on; the rest of the face was optimised already.
-    OptimizeOptions oo;
-    oo.threshold = std::min(0.9, opt_.quality_floor + 0.2);
-    oo.sacrifice_below = oo.threshold;
-    oo.compound_below = opt_.quality_floor + 0.1;
-    optimize_quality(m_, fixed_count_, oo);
-  }
-  // What is left, measured after the quality pass (no rounds: only the count).
-  QualityFloorOptions count_only = fo;
-  count_only.max_rounds = 0;
-  QualityFloorResult left = raise_quality_floor(m_, face, count_only);
   left.rounds = r.rounds, left.curve_splits = r.curve_splits, left.interior_points = r.interior_points;
   left.below_before = r.below_before;
   report_floor(left);

@@ -44,10 +44,12 @@ struct Mesh2dOptions {
   double radius_limit = 0;
   /// Mesh.QualityFloor: after the quality pass, triangles with rho < this (in space) are
   /// worked on by raise_quality_floor (quality_floor.h): curve edges split at their
-  /// curve's parameter midpoint (the curve's 1D mesh and every face on it get the node),
-  /// interior points inserted, then the quality pass again. Triangles at corners too sharp
-  /// for it, and any left when the bounded work runs out, are reported in
-  /// Mesh2dResult::quality_warnings. <= 0: off.
+  /// curve's parameter midpoint (the curve's 1D mesh gets the node, so faces meshed later
+  /// do too; a curve a face meshed before holds is left alone), interior points inserted,
+  /// then the quality pass again; a face that would end worse is put back and done again
+  /// never below its starting worst. Triangles at corners too sharp for it, and any left
+  /// when the bounded work runs out, are reported in Mesh2dResult::quality_warnings.
+  /// <= 0: off.
   double quality_floor = 0;
   std::uint32_t max_vertices_per_face = 0xFFFFFFF0u;
   /// Mesh.MaxElements: a face whose estimated triangle count (estimate_triangles() on its

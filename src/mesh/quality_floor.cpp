@@ -60,7 +60,8 @@ double wedge_angle(const TriangleStore& m, TriId t, std::uint32_t e) {
 class Floor {
  public:
   Floor(TriangleStore& m, const FloorFace& face, const QualityFloorOptions& opt)
-      : m_(m), face_(face), q_(opt.floor), limit_(sharp_angle_limit(opt.floor)), ins_(m) {}
+      : m_(m), face_(face), q_(opt.floor), limit_(sharp_angle_limit(opt.floor)),
+        never_below_start_(opt.never_below_start), ins_(m) {}
 
   QualityFloorResult run(const QualityFloorOptions& opt);
 
@@ -91,6 +92,7 @@ class Floor {
   TriangleStore& m_;
   const FloorFace& face_;
   double q_, limit_;
+  bool never_below_start_;
   PointInserter ins_;
   std::vector<Vec3> x_;
   std::vector<TriId> touched_;
@@ -231,8 +233,8 @@ bool Floor::improve(TriId t) {
   std::sort(by_len, by_len + 3);
   const Side longest = side_of(t, by_len[0].second);
   // A split may make a triangle worse than t (the next rounds split on), but never worse
-  // than half of t nor than the worst triangle the floor started with.
-  const double r = std::max(0.5 * rho3(t), worst_start_);
+  // than half of t (nor, with never_below_start, than the worst triangle at the start).
+  const double r = never_below_start_ ? std::max(0.5 * rho3(t), worst_start_) : 0.5 * rho3(t);
   if (m_.constrained(longest) && split_curve_edge(longest, r)) return true;
   // A sliver between two coasts: its circumcentre lies far beyond them; a triangle near
   // a curve: its circumcentre may crowd the curve. Either way the curve edge is split.
@@ -243,8 +245,8 @@ bool Floor::improve(TriId t) {
     for (std::uint32_t e = 0; e < 3; ++e) {
       const Side s = side_of(u, e);
       if (!m_.constrained(s)) continue;
-      const Vec2 p = m_.pos(m_.org(s)), r = m_.pos(m_.dest(s));
-      if (dot(p - cc, r - cc) < 0) return s;   // inside the edge's diametral circle
+      const Vec2 e0 = m_.pos(m_.org(s)), e1 = m_.pos(m_.dest(s));
+      if (dot(e0 - cc, e1 - cc) < 0) return s;   // inside the edge's diametral circle
     }
     return Side{};
   };

@@ -1,7 +1,7 @@
 // The quality floor (Mesh.QualityFloor): after a face is refined and optimised, every
 // triangle below rho = q (measured in space: exact/triangle_rho.h) is worked on in
 // bounded rounds: a curve edge is split at its curve's parameter midpoint (the face
-// tells where: the geometry does not change and a neighbouring face sees the same node),
+// tells where: the geometry does not change and faces meshed later see the same node),
 // an interior triangle gets its circumcentre inserted (Delaunay insertion, exact
 // predicates) unless that point is beyond or encroaches a curve edge, which is then split
 // instead. Triangles at a corner where the input curves meet at an angle too sharp for q
@@ -25,6 +25,9 @@ struct QualityFloorOptions {
   /// Points (curve splits and interior points) a face may get; 0: 16 per triangle
   /// below q at the start, plus 256.
   std::uint32_t max_points = 0;
+  /// A change may leave a triangle at half the rho of the one worked on (the next rounds
+  /// mend it); with this set, also never below the worst triangle at the start.
+  bool never_below_start = false;
 };
 
 /// What the floor needs from the face it works on (the 2D mesher's face).

@@ -173,3 +173,35 @@ TEST_CASE("quality floor: a curve split for one face shows in the face beside it
   CHECK(both.min_rho >= 0.3);
   CHECK(qf_conforming(both.mesh));
 }
+
+TEST_CASE("quality floor: a strip 0.01 wide under a face sharing its side never ends worse") {
+  // The strip (face 2) shares its top with face 1, meshed before it: that curve is not
+  // split (face 1's triangles on it would be cut unoptimised), the bottom alone cannot
+  // mend the strip's slivers, and the first, loss-allowing run ends worse: the floor puts
+  // everything back and its never-worse run changes nothing it cannot improve.
+  geo::Model m;
+  REQUIRE(m.add_point(1, {0, 0, 0}, 1).ok());
+  REQUIRE(m.add_point(2, {1, 0, 0}, 1).ok());
+  REQUIRE(m.add_point(3, {1, 0.01, 0}, 1).ok());
+  REQUIRE(m.add_point(4, {0, 0.01, 0}, 1).ok());
+  REQUIRE(m.add_point(5, {1, 1, 0}, 1).ok());
+  REQUIRE(m.add_point(6, {0, 1, 0}, 1).ok());
+  const std::vector<std::pair<int, int>> lines = {{1, 2}, {2, 3}, {3, 4}, {4, 1}, {3, 5}, {5, 6}, {6, 4}};
+  for (std::size_t i = 0; i < lines.size(); ++i)
+    REQUIRE(m.add_curve(static_cast<int>(i + 1), geo::CurveKind::Line, {lines[i].first, lines[i].second}).ok());
+  REQUIRE(m.add_curve_loop(1, {-3, 5, 6, 7}).ok());
+  REQUIRE(m.add_plane_surface(1, {1}).ok());
+  REQUIRE(m.add_curve_loop(2, {1, 2, 3, 4}).ok());
+  REQUIRE(m.add_plane_surface(2, {2}).ok());
+  const QfMeshed off = qf_mesh(m, 0);
+  const QfMeshed on = qf_mesh(m, 0.3);
+  MESSAGE("strip: rho min " << off.min_rho << " -> " << on.min_rho << ", " << on.r2.quality_warnings.size()
+                            << " warnings");
+  REQUIRE(off.min_rho < 0.3);
+  CHECK(on.min_rho >= off.min_rho);
+  CHECK(on.mesh.curves.at(3).nodes == off.mesh.curves.at(3).nodes);   // the shared curve kept
+  CHECK(qf_conforming(on.mesh));
+  REQUIRE(on.r2.quality_warnings.size() == 1);
+  CHECK(on.r2.quality_warnings[0].rfind("surface 2: ", 0) == 0);
+  CHECK(on.r2.quality_warnings[0].find("still below Mesh.QualityFloor = 0.3") != std::string::npos);
+}
