@@ -107,6 +107,16 @@ std::vector<lang::DiagNote> provenance_notes(const KernelState& k, const geo::Ge
   return notes;
 }
 
+std::vector<lang::DiagNote> provenance_notes(const KernelState& k, const MeshError& e) {
+  std::vector<lang::DiagNote> notes;
+  for (const MeshEntity& x : e.entities) {
+    const auto it = k.created_at.find({x.dim, x.tag});
+    if (it == k.created_at.end()) continue;
+    notes.push_back({it->second, fmt::format("{} {} was created here", key_name(x.dim), x.tag)});
+  }
+  return notes;
+}
+
 void fail_geo(Interpreter& in, lang::SourceRange at, const geo::GeoError& e) {
   in.fail_with_notes(at, diag_of(e.kind), e.message, provenance_notes(in.kernel(), e));
 }

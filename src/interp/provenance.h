@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "geo/error.h"
+#include "mesh/mesh_error.h"
 #include "interp/kernel_state.h"
 #include "lang/diagnostics.h"
 
@@ -26,6 +27,10 @@ lang::Diag diag_of(geo::GeoErrorKind kind);
 
 /// "point 3 was created here" notes for the existing entities an error names.
 std::vector<lang::DiagNote> provenance_notes(const KernelState& k, const geo::GeoError& e);
+
+/// "curve 7 was created here" / "surface 1 was created here" notes for the entities a
+/// mesher error names, in its order.
+std::vector<lang::DiagNote> provenance_notes(const KernelState& k, const MeshError& e);
 
 /// Reports a kernel error at `at` (the statement or expression that failed) and stops it.
 [[noreturn]] void fail_geo(Interpreter& in, lang::SourceRange at, const geo::GeoError& e);

@@ -189,10 +189,11 @@ struct CurveJob {
   const geo::Curve* shape = nullptr;
 };
 
-Mesh1dError make_error(Mesh1dErrorKind kind, int a, int b, std::string msg) {
-  Mesh1dError e;
+MeshError make_error(MeshErrorKind kind, int a, int b, std::string msg) {
+  MeshError e;
   e.kind = kind;
-  e.curve_a = a, e.curve_b = b;
+  e.add_entity(1, a);
+  e.add_entity(1, b);
   e.message = std::move(msg);
   return e;
 }
@@ -215,7 +216,7 @@ bool all_collinear(const std::vector<Vec2>& p) {
   return true;
 }
 
-Mesh1dError repair_group(const geo::Model& model, const PlaneGroup& g, ModelMesh& mesh, const Mesh1dOptions& opt,
+MeshError repair_group(const geo::Model& model, const PlaneGroup& g, ModelMesh& mesh, const Mesh1dOptions& opt,
                          Mesh1dStats& st) {
   const geo::SurfaceGeometry* geom = g.geometry ? model.geometry(g.geometry) : nullptr;
   auto plane_of = [&](const MeshNode& n) { return geom ? n.uv : Vec2{n.xyz.x, n.xyz.y}; };
@@ -254,11 +255,11 @@ Mesh1dError repair_group(const geo::Model& model, const PlaneGroup& g, ModelMesh
   st.repair_rounds += br.rounds;
   st.repair_splits += br.splits;
   if (!br.ok()) {
-    Mesh1dErrorKind kind = Mesh1dErrorKind::Invalid;
-    if (br.error.kind == BoundaryErrorKind::Intersection) kind = Mesh1dErrorKind::Intersection;
-    if (br.error.kind == BoundaryErrorKind::DuplicatePoint) kind = Mesh1dErrorKind::DuplicatePoint;
-    if (br.error.kind == BoundaryErrorKind::NoProgress) kind = Mesh1dErrorKind::NoProgress;
-    Mesh1dError e = make_error(kind, static_cast<int>(br.error.curve_a), static_cast<int>(br.error.curve_b), "");
+    MeshErrorKind kind = MeshErrorKind::Invalid;
+    if (br.error.kind == BoundaryErrorKind::Intersection) kind = MeshErrorKind::Intersection;
+    if (br.error.kind == BoundaryErrorKind::DuplicatePoint) kind = MeshErrorKind::DuplicatePoint;
+    if (br.error.kind == BoundaryErrorKind::NoProgress) kind = MeshErrorKind::NoProgress;
+    MeshError e = make_error(kind, static_cast<int>(br.error.curve_a), static_cast<int>(br.error.curve_b), "");
     const Vec2 w = br.error.where;
     e.xyz = geom ? geom->point(w) : Vec3{w.x, w.y, g.z};
     if (geom && geom->polar()) {
@@ -270,11 +271,12 @@ Mesh1dError repair_group(const geo::Model& model, const PlaneGroup& g, ModelMesh
     }
     const std::string place = e.has_lonlat ? fmt::format("lon {:.6f}, lat {:.6f}", e.where.lon, e.where.lat)
                                            : fmt::format("({}, {}, {})", e.xyz.x, e.xyz.y, e.xyz.z);
-    if (kind == Mesh1dErrorKind::Intersection)
-      e.message = e.curve_a == e.curve_b ? fmt::format("curve {} intersects itself near {}", e.curve_a, place)
-                                         : fmt::format("curves {} and {} intersect near {}", e.curve_a, e.curve_b, place);
-    else if (kind == Mesh1dErrorKind::DuplicatePoint)
-      e.message = fmt::format("curves {} and {} have distinct nodes at the same place near {}", e.curve_a, e.curve_b, place);
+    const std::uint32_t ca = br.error.curve_a, cb = br.error.curve_b;
+    if (kind == MeshErrorKind::Intersection)
+      e.message = ca == cb ? fmt::format("curve {} intersects itself near {}", ca, place)
+                           : fmt::format("curves {} and {} intersect near {}", ca, cb, place);
+    else if (kind == MeshErrorKind::DuplicatePoint)
+      e.message = fmt::format("curves {} and {} have distinct nodes at the same place near {}", ca, cb, place);
     else
       e.message = br.error.message;
     return e;
@@ -388,14 +390,14 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
   std::uint64_t curves_done = 0;
   for (const auto& [tag, mc] : model.curves()) {
     if (!mc.shape) {
-      res.error = make_error(Mesh1dErrorKind::Invalid, tag, tag, fmt::format("curve {} has no geometry", tag));
+      res.error = make_error(MeshErrorKind::Invalid, tag, tag, fmt::format("curve {} has no geometry", tag));
       return res;
     }
     const geo::Curve& shape = *mc.shape;
     const geo::ModelVertex* vb = model.vertex(mc.begin);
     const geo::ModelVertex* ve = model.vertex(mc.end);
     if (!vb || !ve) {
-      res.error = make_error(Mesh1dErrorKind::Invalid, tag, tag, fmt::format("curve {} lacks an end point", tag));
+      res.error = make_error(MeshErrorKind::Invalid, tag, tag, fmt::format("curve {} lacks an end point", tag));
       return res;
     }
     CurvePlan cp;
@@ -412,7 +414,7 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
     cp.prim = integrate_curve(shape, size_of(cp), opt.rel_tolerance, opt.abs_tolerance, opt.smooth_ratio);
     res.stats.size_evaluations += cp.prim.evaluations;
     if (!std::isfinite(cp.prim.total())) {
-      res.error = make_error(Mesh1dErrorKind::Invalid, tag, tag,
+      res.error = make_error(MeshErrorKind::Invalid, tag, tag,
                              fmt::format("curve {}: the size integral is not finite (a size of zero or a degenerate curve)", tag));
       return res;
     }
@@ -420,7 +422,7 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
     cp.nodes = node_count(cp.prim, cp.min_segs);
     const double limit = opt.max_elements > 0 ? std::min(opt.max_elements, kMaxCurveNodes) : kMaxCurveNodes;
     if (!(cp.nodes <= limit)) {
-      res.error = make_error(Mesh1dErrorKind::LimitExceeded, tag, tag,
+      res.error = make_error(MeshErrorKind::LimitExceeded, tag, tag,
                              fmt::format("curve {} would get about {:.1e} nodes, over the limit of {:g}", tag,
                                          cp.nodes, limit));
       res.error.count = cp.nodes;
@@ -434,7 +436,7 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
   }
   if (opt.max_elements > 0 && total_nodes > opt.max_elements) {
     const int tag = plans[largest].tag;
-    res.error = make_error(Mesh1dErrorKind::LimitExceeded, tag, tag,
+    res.error = make_error(MeshErrorKind::LimitExceeded, tag, tag,
                            fmt::format("the curves would get about {:.1e} nodes in all (curve {} the most, {:.1e}), "
                                        "over the limit of {:g}",
                                        total_nodes, tag, plans[largest].nodes, opt.max_elements));
@@ -467,7 +469,7 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
       coarse.curves.emplace(cp.tag, std::move(cm));
     }
     if (!opt.coarse_check(coarse)) {
-      res.error = make_error(Mesh1dErrorKind::Stopped, 0, 0, "stopped before placing the 1D nodes");
+      res.error = make_error(MeshErrorKind::Stopped, 0, 0, "stopped before placing the 1D nodes");
       return res;
     }
   }

@@ -13,6 +13,7 @@
 #include "field/field.h"
 #include "field/size_policy.h"
 #include "geo/model.h"
+#include "mesh/mesh_error.h"
 #include "mesh/model_mesh.h"
 
 namespace sm {
@@ -88,24 +89,6 @@ std::vector<double> place_nodes(const CurvePrimitive& p, int min_segments, int m
 /// MinimumCurveNodes - 1 for splines, a share of MinimumCircleNodes for arcs.
 int min_segments(const geo::Curve& c, const Mesh1dOptions& opt);
 
-/// LimitExceeded: more nodes than Mesh1dOptions::max_elements (or kMaxCurveNodes);
-/// Stopped: Mesh1dOptions::coarse_check said no.
-enum class Mesh1dErrorKind { None, Intersection, DuplicatePoint, Invalid, NoProgress, LimitExceeded, Stopped };
-
-/// A located failure: the curves involved (equal for a self-intersection), the place in
-/// space and, on a sphere geometry, in longitude/latitude (degrees).
-struct Mesh1dError {
-  Mesh1dErrorKind kind = Mesh1dErrorKind::None;
-  int curve_a = 0, curve_b = 0;
-  Vec3 xyz;
-  bool has_lonlat = false;
-  geo::LonLat where;
-  std::string message;
-  double count = 0;   ///< LimitExceeded: the nodes asked (of curve_a, or of all curves)
-  double limit = 0;   ///< LimitExceeded: the limit they exceed
-  bool all_curves = false;   ///< LimitExceeded: count is the sum over the curves
-};
-
 struct Mesh1dStats {
   std::uint64_t curves = 0, nodes = 0, edges = 0;
   std::uint64_t size_evaluations = 0;   // points at which the size was evaluated
@@ -115,9 +98,10 @@ struct Mesh1dStats {
 
 struct Mesh1dResult {
   ModelMesh mesh;
-  Mesh1dError error;
+  /// A failure names the curve (both curves of a crossing: entities of dimension 1).
+  MeshError error;
   Mesh1dStats stats;
-  bool ok() const { return error.kind == Mesh1dErrorKind::None; }
+  bool ok() const { return error.ok(); }
 };
 
 /// Meshes every model vertex and curve (in tag order, deterministic). On failure the

@@ -10,20 +10,24 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 
 #include <fmt/format.h>
 
 #include "base/parallel.h"
+#include "exact/triangle_rho.h"
 #include "mesh/cdt.h"
 #include "mesh/delaunay.h"
+#include "mesh/face_plane.h"
+#include "mesh/face_sizing.h"
 #include "mesh/frontal.h"
 #include "mesh/meshadapt.h"
 #include "mesh/modify/optimize.h"
 #include "mesh/modify/smooth.h"
 #include "mesh/partition.h"
-#include "exact/predicates.h"
+#include "mesh/quality_floor.h"
 #include "mesh/refine.h"
 
 namespace sm {
@@ -45,87 +49,22 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// The face's parameter plane: a PolarSphere's (u,v); for a lon/lat Sphere its Mercator
-// plane (x, y) = (lon, asinh(tan lat)), conformal with factor r cos lat = r / cosh y, so
-// the anisotropic metric J^T J = diag(r^2 cos^2 lat, r^2) of (lon, lat) becomes isotropic
-// and the same refiners apply; or a Euclidean plane with an orthonormal basis (e1, e2)
-// such that e1 x e2 is the outer loop's Newell normal, so the outer loop runs
-// counter-clockwise in the plane. For a loop in z = const the basis is (x, +-y) and the
-// coordinates are exact.
-struct FacePlane {
-  const geo::SurfaceGeometry* geom = nullptr;
-  bool mercator = false;
-  Vec3 o, e1, e2, n;
-  bool ccw_is_outward = true;   // on a geometry: counter-clockwise triangles face outwards
-
-  Vec2 to_plane(Vec3 x) const { return {dot(x - o, e1), dot(x - o, e2)}; }
-  /// Plane point of surface parameters (u,v) (lon/lat in radians on a Sphere).
-  Vec2 from_param(Vec2 uv) const { return mercator ? Vec2{uv.x, std::asinh(std::tan(uv.y))} : uv; }
-  /// Surface parameters of a plane point.
-  Vec2 to_param(Vec2 p) const { return mercator ? Vec2{p.x, std::atan(std::sinh(p.y))} : p; }
-  Vec3 to_space(Vec2 p) const { return geom ? geom->point(to_param(p)) : o + p.x * e1 + p.y * e2; }
-  double lambda(Vec2 p) const {
-    if (!geom) return 1.0;
-    if (const geo::PolarSphere* ps = geom->polar()) return ps->lambda(p);
-    return geom->radius() / std::cosh(p.y);
-  }
-};
-
-// What a face's target size depends on (the one definition, for the refiners and for the
-// statistics after meshing): the size policy with the background field and, with
-// Mesh.MeshSizeExtendFromBoundary, the extension of the boundary sizes into the face: the
-// recovered boundary triangulation `bg` and per vertex the mean length of its boundary
-// edges (inf: none). Outlives its FaceMesher when kept in Mesh2dResult::target_sizes.
-struct FaceSizing {
-  int tag = 0;
-  double bbox = 0;
-  field::SizePolicyOptions size;
-  const field::SizeField* background = nullptr;
-  FacePlane plane;
-  TriangleStore bg;
-  std::vector<double> bsize;
-};
-
-// Laplacian smoothing as smooth_laplacian (Jacobi passes, a move undone where it would
-// invert or flatten a triangle, then Delaunay flips) but with vertices [0, fixed_count)
-// pinned: embedded points are on no constrained edge and must not move.
-void smooth_pinned(TriangleStore& m, std::uint32_t fixed_count, int passes) {
-  const std::uint32_t nv = m.num_vertices();
-  std::vector<Vec2> sum(nv), old(nv);
-  std::vector<std::uint32_t> count(nv);
-  for (int pass = 0; pass < passes; ++pass) {
-    std::fill(sum.begin(), sum.end(), Vec2{0, 0});
-    std::fill(count.begin(), count.end(), 0u);
-    for (std::uint32_t s = 0; s < m.corner.size(); ++s) {
-      if (!m.alive(tri_of(Side{s}))) continue;
-      const std::uint32_t v = m.corner[s].value;
-      sum[v] += m.pos(m.dest(Side{s}));
-      ++count[v];
-    }
-    old = m.xy;
-    for (std::uint32_t v = fixed_count; v < nv; ++v)
-      if (count[v]) m.xy[v] = sum[v] / static_cast<double>(count[v]);
-    // Undo moves around inverted or flat triangles until none is left (each round puts at
-    // least one vertex back, so this ends).
-    for (bool again = true; again;) {
-      again = false;
-      for (std::uint32_t t = 0; t < m.num_slots(); ++t) {
-        if (!m.alive(TriId{t})) continue;
-        const VertexId a = m.vertex(TriId{t}, 0), b = m.vertex(TriId{t}, 1), c = m.vertex(TriId{t}, 2);
-        if (orient2d(m.pos(a), m.pos(b), m.pos(c)) == Sign::Positive) continue;
-        for (VertexId v : {a, b, c})
-          if (m.xy[v.value] != old[v.value]) m.xy[v.value] = old[v.value], again = true;
-      }
-    }
-    make_delaunay(m);
-  }
-}
-
 // One closed chain of global nodes (first not repeated) with the curve of each edge.
 struct Chain {
   std::vector<std::uint32_t> nodes;
   std::vector<int> edge_curve;
 };
+
+// Whether model surface `tag` is bounded by curve c or embeds it.
+bool surface_uses_curve(const geo::Model& model, int tag, int c) {
+  const geo::ModelSurface* s = model.surface(tag);
+  if (!s) return false;
+  for (int l : s->loops)
+    if (const geo::ModelCurveLoop* loop = model.curve_loop(std::abs(l)))
+      for (int lc : loop->curves)
+        if (std::abs(lc) == c) return true;
+  return std::find(s->embedded_curves.begin(), s->embedded_curves.end(), c) != s->embedded_curves.end();
+}
 
 class FaceMesher {
  public:
@@ -137,20 +76,44 @@ class FaceMesher {
     for (std::uint32_t node : global_)
       if (node < local_of_.size()) local_of_[node] = kNoLocal;
   }
+  /// The pipeline: collect_loops, make_plane, triangulate_boundary, make_sizing,
+  /// check_budget, then refine_face, smooth, optimize and output.
   bool run(const geo::ModelSurface& s);
   /// Only up to the element budget: run() stops once the estimate is checked.
   void estimate_only() { estimate_only_ = true; }
 
  private:
-  bool fail(std::string msg, std::optional<Vec3> where = std::nullopt);
+  /// Sets the error: this surface, then `curves`, the message, the place.
+  bool fail(std::string msg, std::optional<Vec3> where = std::nullopt, std::initializer_list<int> curves = {});
   /// "lon X, lat Y" of a point of the face (on a geometry), else "(x, y, z)".
   std::string where_text(Vec3 p) const;
   bool collect_loops(const geo::ModelSurface& s);
   bool make_plane();
   std::uint32_t local(std::uint32_t node);
-  Vec2 node_plane(std::uint32_t node) const;
-  Vec2 node_param(std::uint32_t node) const;   // on a geometry: the node's (u,v)
+  /// Local vertices (loops, embedded curves, embedded points, first occurrence order),
+  /// Delaunay of them, edge recovery and hole removal.
+  bool triangulate_boundary();
+  /// The face's sizing once its boundary is recovered (the plane and boundary sizes are
+  /// final then).
+  void make_sizing();
+  /// The estimated triangle count when something needs it (the budget, the partitioning,
+  /// the progress display); false when it is over Mesh.MaxElements.
+  bool check_budget(std::uint64_t& estimate);
+  /// Refinement (del2d / front2d, in parts for a large face) or meshadapt.
+  bool refine_face(std::uint64_t estimate);
   bool refine(const std::function<void(std::span<const Vec2>, std::span<double>)>& size_at, std::uint64_t estimate);
+  void smooth();
+  void optimize();
+  /// The quality floor (Mesh2dOptions::quality_floor), then the quality pass again where
+  /// it changed something; its report into res_.quality_warnings.
+  void raise_floor();
+  void report_floor(const QualityFloorResult& r);
+  /// The point in space of local vertex v: its node, or its plane point mapped.
+  Vec3 space_of(VertexId v) const;
+  /// The curve of the face edge between local vertices a and b (0: none).
+  int curve_of(VertexId a, VertexId b) const;
+  /// Interior nodes to 3D, triangles oriented, the surface's mesh and target size kept.
+  void output();
 
   const geo::Model& model_;
   ModelMesh& mesh_;
@@ -164,68 +127,40 @@ class FaceMesher {
   std::vector<Chain> emb_curves_;             // open chains (edge i joins nodes i, i+1)
   std::vector<std::uint32_t> global_;         // local vertex -> global node
   std::vector<std::uint32_t>& local_of_;      // global node -> local vertex (shared scratch)
+  std::vector<Edge> edges_;                   // boundary and embedded edges (local vertices)
+  std::vector<int> edge_curve_;               // the curve of each
+  std::uint32_t fixed_count_ = 0;             // local vertices [0, fixed_count_): the input nodes
   TriangleStore m_;
-  // Set once the boundary is recovered (the plane and the boundary sizes are final then).
   std::shared_ptr<FaceSizing> sizing_ = std::make_shared<FaceSizing>();
   std::atomic<std::uint64_t> size_evaluations_{0};
+  bool smoothed_ = false;                     // meshadapt smooths in each of its rounds
+  // The quality floor's curve splits: the curve of each boundary edge (local vertex pair,
+  // smaller first; embedded curves too), the split asked last.
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> edge_curve_of_;
+  struct PendingSplit {
+    int curve = 0;
+    std::size_t k = 0;   // between cm.nodes[k] and cm.nodes[k + 1]
+    double t = 0;
+    MeshNode node;
+  } pending_;
+  std::vector<std::pair<int, std::uint32_t>> floor_nodes_;   // (curve, node) the floor added
   bool estimate_only_ = false;
 };
 
-// The target size at batches of points of the face's plane: the size policy with the
-// background field and the extension from the boundary (FaceSizing). Holds its own
-// scratch and walk hint, so each part of a partitioned face gets its own and none writes
-// another's; the face data it reads is not modified while it lives.
-class PlaneSizes {
- public:
-  /// evaluations: counts the points evaluated (shared by the parts), may be null.
-  explicit PlaneSizes(const FaceSizing& f, std::atomic<std::uint64_t>* evaluations = nullptr)
-      : f_(f), evaluations_(evaluations) {}
-  /// h[i] = the size in the plane at p[i]: the size on the surface divided by lambda.
-  void operator()(std::span<const Vec2> p, std::span<double> h);
-  /// h[i] = the size on the surface (3D lengths) at p[i].
-  void on_surface(std::span<const Vec2> p, std::span<double> h);
-
- private:
-  std::optional<double> boundary_size(Vec2 p);
-
-  const FaceSizing& f_;
-  std::atomic<std::uint64_t>* evaluations_;
-  TriId hint_;
-  std::uint32_t walk_turn_ = 0;
-  std::vector<Vec3> pts3_;
-  std::vector<double> field_;
-};
-
-// The face's target size at 3D points for the statistics: each point is taken to the
-// face's plane (radially onto a sphere first) and given PlaneSizes::on_surface there.
-SizeAt3 target_size_fn(std::shared_ptr<const FaceSizing> sizing) {
-  auto sizes = std::make_shared<PlaneSizes>(*sizing);
-  auto plane_pts = std::make_shared<std::vector<Vec2>>();
-  return [sizing, sizes, plane_pts](std::span<const Vec3> x, std::span<double> h) {
-    const FacePlane& fp = sizing->plane;
-    plane_pts->resize(x.size());
-    for (std::size_t i = 0; i < x.size(); ++i)
-      (*plane_pts)[i] = fp.geom ? fp.from_param(fp.geom->param(x[i])) : fp.to_plane(x[i]);
-    sizes->on_surface(*plane_pts, h);
-  };
-}
-
-bool FaceMesher::fail(std::string msg, std::optional<Vec3> where) {
-  res_.error.surface = tag_;
-  res_.error.message = fmt::format("surface {}: {}", tag_, msg);
+bool FaceMesher::fail(std::string msg, std::optional<Vec3> where, std::initializer_list<int> curves) {
+  MeshError& e = res_.error;
+  e.kind = MeshErrorKind::Failed;
+  e.add_entity(2, tag_);
+  for (int c : curves) e.add_entity(1, c);
+  e.message = fmt::format("surface {}: {}", tag_, msg);
   if (where) {
-    res_.error.xyz = *where;
+    e.xyz = *where;
     if (plane_.geom) {
-      res_.error.has_lonlat = true;
-      if (plane_.geom->polar()) {
-        res_.error.where = plane_.geom->polar()->to_lonlat(*where);
-      } else {
-        const Vec2 ll = plane_.geom->param(*where);
-        res_.error.where = {ll.x * geo::kRadToDeg, ll.y * geo::kRadToDeg};
-      }
-      res_.error.message += fmt::format(" near lon {:.6f}, lat {:.6f}", res_.error.where.lon, res_.error.where.lat);
+      e.has_lonlat = true;
+      e.where = plane_.lonlat(*where);
+      e.message += fmt::format(" near lon {:.6f}, lat {:.6f}", e.where.lon, e.where.lat);
     } else {
-      res_.error.message += fmt::format(" near ({}, {}, {})", where->x, where->y, where->z);
+      e.message += fmt::format(" near ({}, {}, {})", where->x, where->y, where->z);
     }
   }
   return false;
@@ -233,13 +168,7 @@ bool FaceMesher::fail(std::string msg, std::optional<Vec3> where) {
 
 std::string FaceMesher::where_text(Vec3 p) const {
   if (!plane_.geom) return fmt::format("({:.6g}, {:.6g}, {:.6g})", p.x, p.y, p.z);
-  geo::LonLat ll;
-  if (plane_.geom->polar()) {
-    ll = plane_.geom->polar()->to_lonlat(p);
-  } else {
-    const Vec2 uv = plane_.geom->param(p);
-    ll = {uv.x * geo::kRadToDeg, uv.y * geo::kRadToDeg};
-  }
+  const geo::LonLat ll = plane_.lonlat(p);
   return fmt::format("lon {:.4f}, lat {:.4f}", ll.lon, ll.lat);
 }
 
@@ -325,159 +254,21 @@ bool FaceMesher::collect_loops(const geo::ModelSurface& s) {
 }
 
 bool FaceMesher::make_plane() {
-  if (plane_.geom) {
-    plane_.mercator = plane_.geom->lonlat() != nullptr;
-    Vec2 uv{0, 0};
-    for (const auto* group : {&chains_, &emb_curves_})
-      for (const Chain& ch : *group)
-        for (std::uint32_t v : ch.nodes) {
-          uv = node_param(v);
-          if (plane_.mercator && !(std::abs(uv.y) < 0.5 * geo::kPi - 1e-9))
-            return fail("a lon/lat Sphere face cannot reach a pole (its parametrisation is singular there); "
-                        "use a PolarSphere",
-                        mesh_.nodes[v].xyz);
-        }
-    uv = node_param(chains_[0].nodes[0]);
-    Vec3 du, dv;
-    plane_.geom->tangents(uv, du, dv);
-    // Mercator keeps the orientation of (lon, lat): dy/dlat = 1 / cos lat > 0.
-    plane_.ccw_is_outward = dot(cross(du, dv), plane_.geom->point(uv) - plane_.geom->centre()) > 0;
-    return true;
-  }
-  // Newell's normal of the outer loop and its centroid.
-  Vec3 n{0, 0, 0}, c{0, 0, 0};
-  const std::vector<std::uint32_t>& L = chains_[0].nodes;
-  for (std::size_t i = 0; i < L.size(); ++i) {
-    const Vec3 a = mesh_.nodes[L[i]].xyz, b = mesh_.nodes[L[(i + 1) % L.size()]].xyz;
-    n = n + Vec3{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y)};
-    c = c + a;
-  }
-  c = c / static_cast<double>(L.size());
-  const double nn = norm(n);
-  if (!(nn > 0)) return fail("the outer loop encloses no area", mesh_.nodes[L[0]].xyz);
-  n = n / nn;
-  if (n.x == 0 && n.y == 0) {
-    plane_.o = {0, 0, c.z};
-    plane_.e1 = {1, 0, 0};
-    plane_.e2 = {0, n.z > 0 ? 1.0 : -1.0, 0};
-    plane_.n = {0, 0, n.z > 0 ? 1.0 : -1.0};
-    plane_.o.z = mesh_.nodes[L[0]].xyz.z;
-  } else {
-    const Vec3 axis = std::abs(n.z) < 0.9 ? Vec3{0, 0, 1} : Vec3{1, 0, 0};
-    plane_.e1 = cross(axis, n);
-    plane_.e1 = plane_.e1 / norm(plane_.e1);
-    plane_.e2 = cross(n, plane_.e1);
-    plane_.o = c;
-    plane_.n = n;
-  }
-  // Every boundary node must lie in that plane (Gmsh's Plane Surface is planar).
-  const double tol = std::max(model_.options().tolerance * bbox_, 1e-12 * bbox_);
-  auto check = [&](std::uint32_t node) {
-    const Vec3 x = mesh_.nodes[node].xyz;
-    return std::abs(dot(x - plane_.o, plane_.n)) <= tol;
-  };
+  std::vector<const std::vector<std::uint32_t>*> curves;
   for (const auto* group : {&chains_, &emb_curves_})
-    for (const Chain& ch : *group)
-      for (std::uint32_t v : ch.nodes)
-        if (!check(v)) return fail("the boundary is not planar", mesh_.nodes[v].xyz);
-  for (std::uint32_t v : emb_points_)
-    if (!check(v)) return fail("an embedded point is not in the surface's plane", mesh_.nodes[v].xyz);
-  return true;
-}
-
-Vec2 FaceMesher::node_param(std::uint32_t node) const {
-  const MeshNode& n = mesh_.nodes[node];
-  return n.has_uv ? n.uv : plane_.geom->param(n.xyz);
-}
-
-Vec2 FaceMesher::node_plane(std::uint32_t node) const {
-  if (plane_.geom) return plane_.from_param(node_param(node));
-  return plane_.to_plane(mesh_.nodes[node].xyz);
+    for (const Chain& ch : *group) curves.push_back(&ch.nodes);
+  const double tol = std::max(model_.options().tolerance * bbox_, 1e-12 * bbox_);
+  const std::optional<FacePlaneProblem> p = make_face_plane(plane_, mesh_, curves, emb_points_, tol);
+  return p ? fail(p->message, p->where) : true;
 }
 
 std::uint32_t FaceMesher::local(std::uint32_t node) {
   if (local_of_[node] == kNoLocal) {
     local_of_[node] = static_cast<std::uint32_t>(global_.size());
     global_.push_back(node);
-    m_.add_vertex(node_plane(node));
+    m_.add_vertex(plane_.node_plane(mesh_.nodes[node]));
   }
   return local_of_[node];
-}
-
-// Barycentric interpolation of the boundary sizes in the recovered boundary
-// triangulation: a visibility walk from the last hit that stops at the domain's boundary
-// (the point is then clamped to the last triangle).
-std::optional<double> PlaneSizes::boundary_size(Vec2 p) {
-  const TriangleStore& bg = f_.bg;
-  const std::vector<double>& bsize = f_.bsize;
-  if (!hint_.valid() || !bg.alive(hint_)) {
-    hint_ = TriId{};
-    for (std::uint32_t t = 0; t < bg.num_slots(); ++t)
-      if (bg.alive(TriId{t})) {
-        hint_ = TriId{t};
-        break;
-      }
-    if (!hint_.valid()) return std::nullopt;
-  }
-  TriId t = hint_;
-  const std::uint32_t cap = 4 * bg.num_slots() + 16;
-  for (std::uint32_t step = 0; step < cap; ++step) {
-    bool moved = false;
-    walk_turn_ = (walk_turn_ + 1) % 3;
-    for (std::uint32_t k = 0; k < 3 && !moved; ++k) {
-      const Side s = side_of(t, (walk_turn_ + k) % 3);
-      if (orient2d(bg.pos(bg.org(s)), bg.pos(bg.dest(s)), p) != Sign::Negative) continue;
-      const Side o = bg.twin[s.value];
-      if (!o.valid()) continue;   // beyond the boundary: try another edge, else stop here
-      t = tri_of(o);
-      moved = true;
-    }
-    if (!moved) break;
-  }
-  hint_ = t;
-  const Vec2 a = bg.pos(bg.vertex(t, 0)), b = bg.pos(bg.vertex(t, 1)), c = bg.pos(bg.vertex(t, 2));
-  const double area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-  double w[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
-  if (area > 0) {
-    w[0] = ((b.x - p.x) * (c.y - p.y) - (b.y - p.y) * (c.x - p.x)) / area;
-    w[1] = ((c.x - p.x) * (a.y - p.y) - (c.y - p.y) * (a.x - p.x)) / area;
-    w[2] = ((a.x - p.x) * (b.y - p.y) - (a.y - p.y) * (b.x - p.x)) / area;
-  }
-  double sum_w = 0, sum = 0;
-  for (std::uint32_t e = 0; e < 3; ++e) {
-    const double h = bsize[bg.vertex(t, e).value];
-    const double wi = std::max(0.0, w[e]);
-    if (!std::isfinite(h)) continue;
-    sum_w += wi;
-    sum += wi * h;
-  }
-  if (sum_w > 0) return sum / sum_w;
-  double lo = std::numeric_limits<double>::infinity();
-  for (std::uint32_t e = 0; e < 3; ++e) lo = std::min(lo, bsize[bg.vertex(t, e).value]);
-  return std::isfinite(lo) ? std::optional<double>(lo) : std::nullopt;
-}
-
-void PlaneSizes::on_surface(std::span<const Vec2> p, std::span<double> h) {
-  pts3_.resize(p.size());
-  field_.resize(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i) pts3_[i] = f_.plane.to_space(p[i]);
-  if (f_.background) f_.background->eval_on(field::EntityRef{2, f_.tag}, pts3_, field_);
-  field::SizeQuery q;
-  q.bbox_diag = f_.bbox;
-  q.entity_dim = 2;
-  const bool extend = f_.size.extend_from_boundary != 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (f_.background) q.background = field_[i];
-    double size = field::final_size(f_.size, q).size;
-    if (extend) size = field::surface_target(f_.size, size, boundary_size(p[i]));
-    h[i] = size;
-  }
-  if (evaluations_) evaluations_->fetch_add(p.size(), std::memory_order_relaxed);
-}
-
-void PlaneSizes::operator()(std::span<const Vec2> p, std::span<double> h) {
-  on_surface(p, h);
-  for (std::size_t i = 0; i < p.size(); ++i) h[i] /= f_.plane.lambda(p[i]);
 }
 
 // del2d or front2d on the face: in one piece, or in parts (partition.h) when the estimated
@@ -548,31 +339,57 @@ bool FaceMesher::run(const geo::ModelSurface& s) {
   plane_.geom = s.geometry ? model_.geometry(s.geometry) : nullptr;
   if (s.geometry && !plane_.geom) return fail(fmt::format("surface geometry {} does not exist", s.geometry));
   auto t0 = std::chrono::steady_clock::now();
-  if (!collect_loops(s) || !make_plane()) return false;
+  if (!collect_loops(s) || !make_plane() || !triangulate_boundary()) return false;
+  make_sizing();
+  std::uint64_t estimate = 0;
+  if (!check_budget(estimate)) return false;
+  res_.stats.seconds_boundary += seconds_since(t0);
+  if (estimate_only_) return true;
 
-  // Local vertices: loops, embedded curves, embedded points (first occurrence order).
+  t0 = std::chrono::steady_clock::now();
+  if (!refine_face(estimate)) return false;
+  res_.stats.size_evaluations += size_evaluations_.exchange(0);
+  res_.stats.seconds_refine += seconds_since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  smooth();
+  res_.stats.seconds_smooth += seconds_since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  optimize();
+  res_.stats.seconds_optimize += seconds_since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  raise_floor();
+  res_.stats.seconds_floor += seconds_since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  output();
+  res_.stats.seconds_output += seconds_since(t0);
+  return true;
+}
+
+bool FaceMesher::triangulate_boundary() {
   // The scratch map is shared by all faces and reset entry by entry (O(face) per face).
   local_of_.resize(mesh_.nodes.size(), kNoLocal);
   std::vector<Loop> loops;
-  std::vector<Edge> edges;
-  std::vector<int> edge_curve;
   for (std::size_t ci = 0; ci < chains_.size(); ++ci) {
     Loop L;
     L.hole = ci > 0;
     for (std::uint32_t node : chains_[ci].nodes) L.v.push_back(VertexId{local(node)});
     for (std::size_t k = 0; k < L.v.size(); ++k) {
-      edges.push_back({L.v[k], L.v[(k + 1) % L.v.size()]});
-      edge_curve.push_back(chains_[ci].edge_curve[k]);
+      edges_.push_back({L.v[k], L.v[(k + 1) % L.v.size()]});
+      edge_curve_.push_back(chains_[ci].edge_curve[k]);
     }
     loops.push_back(std::move(L));
   }
   for (const Chain& ch : emb_curves_)
     for (std::size_t k = 0; k + 1 < ch.nodes.size(); ++k) {
-      edges.push_back({VertexId{local(ch.nodes[k])}, VertexId{local(ch.nodes[k + 1])}});
-      edge_curve.push_back(ch.edge_curve[k]);
+      edges_.push_back({VertexId{local(ch.nodes[k])}, VertexId{local(ch.nodes[k + 1])}});
+      edge_curve_.push_back(ch.edge_curve[k]);
     }
   for (std::uint32_t node : emb_points_) local(node);
-  const std::uint32_t fixed_count = m_.num_vertices();
+  fixed_count_ = m_.num_vertices();
 
   const DelaunayResult dr = delaunay(m_);
   if (!dr.ok()) return fail("Delaunay of the boundary nodes failed: " + dr.error);
@@ -581,136 +398,255 @@ bool FaceMesher::run(const geo::ModelSurface& s) {
     return fail(fmt::format("two distinct boundary nodes ({} and {}) at the same place", a, b), mesh_.nodes[a].xyz);
   }
   const PlanarGeometry g{&m_.xy};
-  const RecoverResult rr = recover_edges(m_, g, edges);
+  const RecoverResult rr = recover_edges(m_, g, edges_);
   if (!rr.ok()) return fail("boundary recovery failed: " + rr.error);
   if (!rr.crossings.empty()) {
     const EdgeCrossing& x = rr.crossings[0];
-    const Edge e = edges[x.edge];
-    const int other = x.other != kNoEdge ? edge_curve[x.other] : 0;
-    return fail(fmt::format("boundary edges of curves {} and {} cross", edge_curve[x.edge], other),
-                mesh_.nodes[global_[e.first.value]].xyz);
+    const Edge e = edges_[x.edge];
+    const int other = x.other != kNoEdge ? edge_curve_[x.other] : 0;
+    return fail(fmt::format("boundary edges of curves {} and {} cross", edge_curve_[x.edge], other),
+                mesh_.nodes[global_[e.first.value]].xyz, {edge_curve_[x.edge], other});
   }
   if (!rr.touching.empty()) {
     const VertexOnEdge& x = rr.touching[0];
-    return fail(fmt::format("a boundary node lies on an edge of curve {}", edge_curve[x.edge]),
-                mesh_.nodes[global_[x.v.value]].xyz);
+    return fail(fmt::format("a boundary node lies on an edge of curve {}", edge_curve_[x.edge]),
+                mesh_.nodes[global_[x.v.value]].xyz, {edge_curve_[x.edge]});
   }
   const DomainResult dom = remove_outside(m_, g, loops);
   if (!dom.ok()) return fail("hole removal failed: " + dom.error);
+  return true;
+}
 
+void FaceMesher::make_sizing() {
   FaceSizing& sz = *sizing_;
   sz.tag = tag_;
   sz.bbox = bbox_;
   sz.size = opt_.size;
   sz.background = opt_.background;
   sz.plane = plane_;
-  if (opt_.size.extend_from_boundary != 0) {
-    sz.bg = m_;
-    std::vector<double>& bsize = sz.bsize;
-    bsize.assign(fixed_count, 0.0);
-    std::vector<std::uint32_t> count(fixed_count, 0);
-    // A coarse boundary (the element budget's) carries the 1D sizes at its nodes: those,
-    // not its long edges, are what the real boundary would extend.
-    std::vector<double> node_h;
-    if (estimate_only_) {
-      node_h.assign(mesh_.nodes.size(), 0.0);
-      for (const auto& [ct, cm] : mesh_.curves)
-        for (std::size_t k = 0; k < cm.h.size() && k < cm.nodes.size(); ++k) node_h[cm.nodes[k]] = cm.h[k];
-    }
-    auto edge_length = [&](std::uint32_t ga, std::uint32_t gb) {
-      if (estimate_only_ && node_h[ga] > 0 && node_h[gb] > 0) return 0.5 * (node_h[ga] + node_h[gb]);
-      return norm(mesh_.nodes[ga].xyz - mesh_.nodes[gb].xyz);
-    };
-    for (const Edge& e : edges) {
-      const double len = edge_length(global_[e.first.value], global_[e.second.value]);
-      bsize[e.first.value] += len, bsize[e.second.value] += len;
-      ++count[e.first.value], ++count[e.second.value];
-    }
-    for (std::uint32_t v = 0; v < fixed_count; ++v) {
-      bsize[v] = count[v] ? bsize[v] / count[v] : std::numeric_limits<double>::infinity();
-      if (!count[v]) {
-        // An embedded point with a prescribed size keeps it.
-        for (const auto& [vt, node] : mesh_.vertex_node)
-          if (node == global_[v]) {
-            const geo::ModelVertex* mv = model_.vertex(vt);
-            if (mv && opt_.size.from_points && mv->lc < geo::kMaxLc) bsize[v] = mv->lc * opt_.size.factor;
-            break;
-          }
-      }
-    }
-  }
-  // The estimated triangle count (run() made it for the budget, the partitioning or the
-  // progress display) uses its own evaluator: the refiner's walk hints stay as without
-  // it. It is counted in the size evaluations only when partitioning uses it.
-  const bool partitioning = opt_.partition.min_triangles > 0 && opt_.algorithm != Mesh2dAlgorithm::MeshAdapt;
-  std::uint64_t estimate = 0;
-  if (partitioning || opt_.progress || opt_.max_elements > 0) {
-    PlaneSizes estimate_sizes(*sizing_, partitioning ? &size_evaluations_ : nullptr);
-    const PlaneSizeFn estimate_at = [&estimate_sizes](std::span<const Vec2> p, std::span<double> h) {
-      estimate_sizes(p, h);
-    };
-    estimate = estimate_triangles(m_, estimate_at);
-    if (opt_.max_elements > 0 && static_cast<double>(estimate) > opt_.max_elements) {
-      fail(fmt::format("it would get about {:.1e} triangles, over the limit of {:g}", static_cast<double>(estimate),
-                       opt_.max_elements));
-      res_.error.kind = Mesh2dErrorKind::LimitExceeded;
-      res_.error.count = static_cast<double>(estimate);
-      res_.error.limit = opt_.max_elements;
-      return false;
-    }
-  }
-  res_.stats.seconds_boundary += seconds_since(t0);
-  if (estimate_only_) return true;
+  set_boundary_sizes(sz, m_, fixed_count_, edges_, global_, mesh_, model_, estimate_only_);
+}
 
-  t0 = std::chrono::steady_clock::now();
-  PlaneSizes sizes(*sizing_, &size_evaluations_);
-  const auto size_at = [&sizes](std::span<const Vec2> p, std::span<double> h) { sizes(p, h); };
-  bool smoothed = false;
-  if (opt_.algorithm == Mesh2dAlgorithm::MeshAdapt) {
-    // Meshadapt is serial: its rounds of split/collapse/swap act on the whole face.
-    MeshAdaptOptions mo;
-    mo.size_at = size_at;
-    mo.smoothing_passes = std::max(0, opt_.smoothing);
-    mo.max_vertices = opt_.max_vertices_per_face;
-    const MeshAdaptResult ma = mesh_adapt(m_, mo);
-    if (!ma.ok()) return fail("meshadapt failed: " + ma.error);
-    res_.stats.inserted += ma.stats.splits;
-    smoothed = true;   // meshadapt smooths in each round
-  } else if (!refine(size_at, estimate)) {
+bool FaceMesher::check_budget(std::uint64_t& estimate) {
+  // The estimate uses its own evaluator: the refiner's walk hints stay as without it. It
+  // is counted in the size evaluations only when partitioning uses it.
+  const bool partitioning = opt_.partition.min_triangles > 0 && opt_.algorithm != Mesh2dAlgorithm::MeshAdapt;
+  if (!(partitioning || opt_.progress || opt_.max_elements > 0)) return true;
+  PlaneSizes estimate_sizes(*sizing_, partitioning ? &size_evaluations_ : nullptr);
+  const PlaneSizeFn estimate_at = [&estimate_sizes](std::span<const Vec2> p, std::span<double> h) {
+    estimate_sizes(p, h);
+  };
+  estimate = estimate_triangles(m_, estimate_at);
+  if (opt_.max_elements > 0 && static_cast<double>(estimate) > opt_.max_elements) {
+    fail(fmt::format("it would get about {:.1e} triangles, over the limit of {:g}", static_cast<double>(estimate),
+                     opt_.max_elements));
+    res_.error.kind = MeshErrorKind::LimitExceeded;
+    res_.error.count = static_cast<double>(estimate);
+    res_.error.limit = opt_.max_elements;
     return false;
   }
-  res_.stats.size_evaluations += size_evaluations_.exchange(0);
-  res_.stats.seconds_refine += seconds_since(t0);
+  return true;
+}
 
-  t0 = std::chrono::steady_clock::now();
-  if (opt_.smoothing > 0 && !smoothed) {
-    // smooth_laplacian keeps vertices of constrained edges in place; an isolated
-    // embedded point is not on one and would move: such faces pin every input vertex.
-    if (emb_points_.empty()) smooth_laplacian(m_, opt_.smoothing, resolve_thread_count(opt_.threads));
-    else smooth_pinned(m_, fixed_count, opt_.smoothing);
+bool FaceMesher::refine_face(std::uint64_t estimate) {
+  PlaneSizes sizes(*sizing_, &size_evaluations_);
+  const auto size_at = [&sizes](std::span<const Vec2> p, std::span<double> h) { sizes(p, h); };
+  if (opt_.algorithm != Mesh2dAlgorithm::MeshAdapt) return refine(size_at, estimate);
+  // Meshadapt is serial: its rounds of split/collapse/swap act on the whole face.
+  MeshAdaptOptions mo;
+  mo.size_at = size_at;
+  mo.smoothing_passes = std::max(0, opt_.smoothing);
+  mo.max_vertices = opt_.max_vertices_per_face;
+  const MeshAdaptResult ma = mesh_adapt(m_, mo);
+  if (!ma.ok()) return fail("meshadapt failed: " + ma.error);
+  res_.stats.inserted += ma.stats.splits;
+  smoothed_ = true;
+  return true;
+}
+
+void FaceMesher::smooth() {
+  if (opt_.smoothing <= 0 || smoothed_) return;
+  // smooth_laplacian keeps vertices of constrained edges in place; an isolated embedded
+  // point is on none and would move: such faces pin every input vertex.
+  const std::uint32_t pinned = emb_points_.empty() ? 0 : fixed_count_;
+  smooth_laplacian(m_, opt_.smoothing, resolve_thread_count(opt_.threads), pinned);
+}
+
+void FaceMesher::optimize() {
+  if (opt_.smoothing <= 0 || !opt_.quality_pass) return;
+  OptimizeOptions oo;
+  if (opt_.algorithm == Mesh2dAlgorithm::Del2d || opt_.algorithm == Mesh2dAlgorithm::Automatic) {
+    // del2d's many triangles just under 0.9 would cost ~4x the refinement to lift
+    // (square: 87% -> 99% rho > 0.9); work on the bad ones only (~20% of refinement).
+    oo.threshold = 0.75;
+    oo.sacrifice_below = 0.7;
+    oo.max_share_loss = 1e-4;
   }
-  res_.stats.seconds_smooth += seconds_since(t0);
+  optimize_quality(m_, fixed_count_, oo);
+}
 
-  t0 = std::chrono::steady_clock::now();
-  if (opt_.smoothing > 0 && opt_.quality_pass) {
-    OptimizeOptions oo;
-    if (opt_.algorithm == Mesh2dAlgorithm::Del2d || opt_.algorithm == Mesh2dAlgorithm::Automatic) {
-      // del2d's many triangles just under 0.9 would cost ~4x the refinement to lift
-      // (square: 87% -> 99% rho > 0.9); work on the bad ones only (~20% of refinement).
-      oo.threshold = 0.75;
-      oo.sacrifice_below = 0.7;
-      oo.max_share_loss = 1e-4;
+Vec3 FaceMesher::space_of(VertexId v) const {
+  if (v.value < global_.size() && global_[v.value] != kNoLocal) return mesh_.nodes[global_[v.value]].xyz;
+  return plane_.to_space(m_.xy[v.value]);
+}
+
+int FaceMesher::curve_of(VertexId a, VertexId b) const {
+  const auto it = edge_curve_of_.find(std::minmax(a.value, b.value));
+  return it == edge_curve_of_.end() ? 0 : it->second;
+}
+
+void FaceMesher::raise_floor() {
+  if (!(opt_.quality_floor > 0)) return;
+  for (std::size_t i = 0; i < edges_.size(); ++i)
+    edge_curve_of_[std::minmax(edges_[i].first.value, edges_[i].second.value)] = edge_curve_[i];
+  std::vector<std::uint32_t> corners;   // global nodes of model vertices, sorted
+  for (const auto& [vt, node] : mesh_.vertex_node) corners.push_back(node);
+  std::sort(corners.begin(), corners.end());
+  FloorFace face;
+  face.space = [this](VertexId v) { return space_of(v); };
+  face.to_space = [this](Vec2 p) { return plane_.to_space(p); };
+  face.is_corner = [this, &corners](VertexId v) {
+    return v.value < global_.size() && std::binary_search(corners.begin(), corners.end(), global_[v.value]);
+  };
+  face.curve_midpoint = [this](VertexId a, VertexId b) -> std::optional<Vec2> {
+    const int c = curve_of(a, b);
+    const geo::ModelCurve* mc = c > 0 ? model_.curve(c) : nullptr;
+    const auto it = mesh_.curves.find(c);
+    if (!mc || !mc->shape || it == mesh_.curves.end()) return std::nullopt;
+    // A curve a face meshed before this one also holds stays as it is: that face's
+    // triangle on the edge would have to be cut in two, unoptimised (a fan of slivers
+    // after a few splits). Faces meshed later see the new nodes in the curve's 1D mesh.
+    for (const auto& [st, sm] : mesh_.surfaces)
+      if (st != tag_ && surface_uses_curve(model_, st, c)) return std::nullopt;
+    const CurveMesh& cm = it->second;
+    const std::uint32_t ga = global_[a.value], gb = global_[b.value];
+    for (std::size_t k = 0; k + 1 < cm.nodes.size(); ++k) {
+      if (!((cm.nodes[k] == ga && cm.nodes[k + 1] == gb) || (cm.nodes[k] == gb && cm.nodes[k + 1] == ga))) continue;
+      // The parameter midpoint: on the curve itself, so the geometry does not change.
+      pending_.curve = c;
+      pending_.k = k;
+      pending_.t = 0.5 * (cm.t[k] + cm.t[k + 1]);
+      const geo::Curve& shape = *mc->shape;
+      pending_.node = shape.on_surface() ? MeshNode{shape.point(pending_.t), shape.eval_uv(pending_.t).p, true}
+                                         : MeshNode{shape.point(pending_.t), {}, false};
+      return plane_.node_plane(pending_.node);
     }
-    optimize_quality(m_, fixed_count, oo);
+    return std::nullopt;
+  };
+  face.curve_split_done = [this](VertexId a, VertexId b, VertexId v) {
+    mesh_.nodes.push_back(pending_.node);
+    const std::uint32_t node = static_cast<std::uint32_t>(mesh_.nodes.size() - 1);
+    CurveMesh& cm = mesh_.curves.at(pending_.curve);
+    const auto at = static_cast<std::ptrdiff_t>(pending_.k + 1);
+    cm.nodes.insert(cm.nodes.begin() + at, node);
+    cm.t.insert(cm.t.begin() + at, pending_.t);
+    floor_nodes_.emplace_back(pending_.curve, node);
+    if (cm.h.size() > pending_.k + 1) cm.h.insert(cm.h.begin() + at, 0.5 * (cm.h[pending_.k] + cm.h[pending_.k + 1]));
+    if (global_.size() <= v.value) global_.resize(v.value + 1, kNoLocal);
+    global_[v.value] = node;
+    edge_curve_of_.erase(std::minmax(a.value, b.value));
+    edge_curve_of_[std::minmax(a.value, v.value)] = pending_.curve;
+    edge_curve_of_[std::minmax(v.value, b.value)] = pending_.curve;
+  };
+  // First with transient losses allowed (a split may leave a triangle at half the one
+  // worked on, for the next rounds to mend); if the face ends worse than it started (its
+  // worst rho lower, or more triangles below q), everything is put back and the floor
+  // runs again never going below the face's starting worst.
+  const auto space = [this](VertexId v) { return space_of(v); };
+  double worst_start = 1;
+  const std::uint32_t below_start = count_below(m_, space, opt_.quality_floor, &worst_start);
+  if (below_start == 0) return;
+  const TriangleStore before = m_;
+  const std::size_t nodes_start = mesh_.nodes.size(), global_start = global_.size();
+  QualityFloorResult r, left;
+  for (const bool never_worse : {false, true}) {
+    if (never_worse) {
+      // Undo: the triangulation, the curve nodes (appended last, so the node array is cut
+      // back) and the bookkeeping.
+      m_ = before;
+      for (auto it = floor_nodes_.rbegin(); it != floor_nodes_.rend(); ++it) {
+        CurveMesh& cm = mesh_.curves.at(it->first);
+        const auto k = std::find(cm.nodes.begin(), cm.nodes.end(), it->second) - cm.nodes.begin();
+        cm.nodes.erase(cm.nodes.begin() + k);
+        cm.t.erase(cm.t.begin() + k);
+        if (static_cast<std::size_t>(k) < cm.h.size()) cm.h.erase(cm.h.begin() + k);
+      }
+      floor_nodes_.clear();
+      mesh_.nodes.resize(nodes_start);
+      global_.resize(global_start);
+      edge_curve_of_.clear();
+      for (std::size_t i = 0; i < edges_.size(); ++i)
+        edge_curve_of_[std::minmax(edges_[i].first.value, edges_[i].second.value)] = edge_curve_[i];
+    }
+    QualityFloorOptions fo;
+    fo.floor = opt_.quality_floor;
+    fo.never_below_start = never_worse;
+    r = raise_quality_floor(m_, face, fo);
+    if (r.changed() && opt_.smoothing > 0 && opt_.quality_pass) {
+      // The quality pass again, on what the floor changed: only triangles below the floor
+      // (and a margin) are worked on; the rest of the face was optimised already.
+      OptimizeOptions oo;
+      oo.threshold = std::min(0.9, opt_.quality_floor + 0.2);
+      oo.sacrifice_below = oo.threshold;
+      oo.compound_below = opt_.quality_floor + 0.1;
+      optimize_quality(m_, fixed_count_, oo);
+    }
+    // What is left, measured after the quality pass (no rounds: only the count).
+    QualityFloorOptions count_only = fo;
+    count_only.max_rounds = 0;
+    left = raise_quality_floor(m_, face, count_only);
+    double worst_end = 1;
+    count_below(m_, space, opt_.quality_floor, &worst_end);
+    if (!r.changed() || (worst_end >= worst_start && left.below_after <= below_start)) break;
   }
-  res_.stats.seconds_optimize += seconds_since(t0);
+  res_.stats.floor_curve_splits += r.curve_splits;
+  res_.stats.floor_points += r.interior_points;
+  left.rounds = r.rounds, left.curve_splits = r.curve_splits, left.interior_points = r.interior_points;
+  left.below_before = r.below_before;
+  report_floor(left);
+}
 
-  t0 = std::chrono::steady_clock::now();
+void FaceMesher::report_floor(const QualityFloorResult& r) {
+  const double q = opt_.quality_floor;
+  auto place = [this](VertexId v) { return where_text(space_of(v)); };
+  if (!r.sharp.empty()) {
+    constexpr std::size_t kListed = 8;
+    std::string list;
+    for (std::size_t i = 0; i < std::min(r.sharp.size(), kListed); ++i)
+      list += fmt::format("{}{:.1f} degrees at {}", i ? "; " : "", r.sharp[i].degrees, place(r.sharp[i].v));
+    if (r.sharp.size() > kListed) list += fmt::format("; and {} more", r.sharp.size() - kListed);
+    res_.quality_warnings.push_back(fmt::format(
+        "surface {}: {} triangle{} below Mesh.QualityFloor = {:g} where the boundary makes an angle too sharp for it "
+        "(under {:.1f} degrees): {}",
+        tag_, r.at_sharp, r.at_sharp == 1 ? "" : "s", q, sharp_angle_limit(q) * 180 / geo::kPi, list));
+  }
+  const std::uint32_t rest = r.below_after - r.at_sharp;
+  if (rest > 0) {
+    // The worst of them, for the place.
+    double worst = 2;
+    TriId wt;
+    for (std::uint32_t t = 0; t < m_.num_slots(); ++t) {
+      if (!m_.alive(TriId{t})) continue;
+      const double rt = rho(space_of(m_.vertex(TriId{t}, 0)), space_of(m_.vertex(TriId{t}, 1)),
+                            space_of(m_.vertex(TriId{t}, 2)));
+      if (rt < worst) worst = rt, wt = TriId{t};
+    }
+    const Vec3 c = (space_of(m_.vertex(wt, 0)) + space_of(m_.vertex(wt, 1)) + space_of(m_.vertex(wt, 2))) / 3.0;
+    res_.quality_warnings.push_back(fmt::format(
+        "surface {}: {} triangle{} still below Mesh.QualityFloor = {:g} after {} round{} and {} new points (the work "
+        "is bounded); the worst, rho {:.4f}, near {}",
+        tag_, rest, rest == 1 ? "" : "s", q, r.rounds, r.rounds == 1 ? "" : "s", r.curve_splits + r.interior_points,
+        worst, where_text(c)));
+  }
+}
+
+void FaceMesher::output() {
   SurfaceMesh sm_out;
   sm_out.tag = tag_;
   const std::uint32_t nv = m_.num_vertices();
-  global_.resize(nv);
-  for (std::uint32_t v = fixed_count; v < nv; ++v) {
+  global_.resize(nv, kNoLocal);   // the floor's curve nodes have theirs already
+  for (std::uint32_t v = fixed_count_; v < nv; ++v) {
+    if (global_[v] != kNoLocal) continue;
     const Vec2 p = m_.xy[v];
     global_[v] = plane_.geom ? mesh_.add_node(plane_.to_space(p), plane_.to_param(p)) : mesh_.add_node(plane_.to_space(p));
     sm_out.interior_nodes.push_back(global_[v]);
@@ -723,13 +659,11 @@ bool FaceMesher::run(const geo::ModelSurface& s) {
                         c = global_[m_.vertex(TriId{t}, 2).value];
     sm_out.triangles.push_back(flip ? std::array<std::uint32_t, 3>{a, c, b} : std::array<std::uint32_t, 3>{a, b, c});
   }
-  res_.stats.new_nodes += nv - fixed_count;
+  res_.stats.new_nodes += sm_out.interior_nodes.size();
   res_.stats.triangles += sm_out.triangles.size();
   ++res_.stats.faces;
   mesh_.surfaces[tag_] = std::move(sm_out);
   res_.target_sizes.push_back({tag_, target_size_fn(sizing_)});
-  res_.stats.seconds_output += seconds_since(t0);
-  return true;
 }
 
 double model_bbox(const geo::Model& model, double given) {
@@ -772,7 +706,7 @@ Mesh2dResult check_face_budgets(const geo::Model& model, const ModelMesh& coarse
     Mesh2dResult face;
     FaceMesher fm(model, mesh, opt, bbox, face, local_of);
     fm.estimate_only();
-    if (!fm.run(s) && face.error.kind == Mesh2dErrorKind::LimitExceeded) {
+    if (!fm.run(s) && face.error.kind == MeshErrorKind::LimitExceeded) {
       res.error = face.error;
       return res;
     }
@@ -785,6 +719,7 @@ std::vector<StageTime> stage_times(const Mesh2dStats& s) {
           {"2D refine", s.seconds_refine},
           {"2D smooth", s.seconds_smooth},
           {"2D optimise", s.seconds_optimize},
+          {"2D quality floor", s.seconds_floor},
           {"2D output", s.seconds_output}};
 }
 

@@ -15,6 +15,7 @@
 #include "field/size_policy.h"
 #include "geo/model.h"
 #include "geo/sphere.h"
+#include "mesh/mesh_error.h"
 #include "mesh/mesh_stats.h"
 #include "mesh/model_mesh.h"
 #include "mesh/partition.h"
@@ -41,6 +42,15 @@ struct Mesh2dOptions {
   /// r cos(lat) in a Sphere's Mercator plane). 0: the algorithm's
   /// default (del2d 0.76, front2d refine.h's 1/sqrt2).
   double radius_limit = 0;
+  /// Mesh.QualityFloor: after the quality pass, triangles with rho < this (in space) are
+  /// worked on by raise_quality_floor (quality_floor.h): curve edges split at their
+  /// curve's parameter midpoint (the curve's 1D mesh gets the node, so faces meshed later
+  /// do too; a curve a face meshed before holds is left alone), interior points inserted,
+  /// then the quality pass again; a face that would end worse is put back and done again
+  /// never below its starting worst. Triangles at corners too sharp for it, and any left
+  /// when the bounded work runs out, are reported in Mesh2dResult::quality_warnings.
+  /// <= 0: off.
+  double quality_floor = 0;
   std::uint32_t max_vertices_per_face = 0xFFFFFFF0u;
   /// Mesh.MaxElements: a face whose estimated triangle count (estimate_triangles() on its
   /// recovered boundary triangulation, before any refinement) is over this is a
@@ -59,19 +69,6 @@ struct Mesh2dOptions {
   Progress* progress = nullptr;
 };
 
-enum class Mesh2dErrorKind { Failed, LimitExceeded };
-
-/// A located failure: the surface, and where (3D; lon/lat on a sphere geometry).
-struct Mesh2dError {
-  int surface = 0;          // 0: no error
-  Mesh2dErrorKind kind = Mesh2dErrorKind::Failed;
-  double count = 0, limit = 0;   // LimitExceeded: the estimated triangles, the limit
-  std::string message;
-  Vec3 xyz;
-  bool has_lonlat = false;
-  geo::LonLat where;
-};
-
 struct Mesh2dStats {
   std::uint64_t faces = 0, triangles = 0, new_nodes = 0;
   std::uint64_t inserted = 0, rejected = 0, size_evaluations = 0;
@@ -81,12 +78,19 @@ struct Mesh2dStats {
   double seconds_refine = 0;
   double seconds_smooth = 0;
   double seconds_optimize = 0;  // optimize_quality
+  double seconds_floor = 0;     // the quality floor (its quality pass included)
+  std::uint64_t floor_curve_splits = 0, floor_points = 0;   // what the floor inserted
   double seconds_output = 0;     // nodes mapped to 3D, triangles oriented
 };
 
 struct Mesh2dResult {
-  Mesh2dError error;
+  /// A failure names the surface first, then the curves involved; the message starts
+  /// "surface N: " and, with a place, ends "near lon X, lat Y" (or "near (x, y, z)").
+  MeshError error;
   std::vector<std::string> warnings;
+  /// One line per surface left below Mesh2dOptions::quality_floor (sharp corners; work
+  /// bounded), each starting "surface N: ".
+  std::vector<std::string> quality_warnings;
   Mesh2dStats stats;
   /// Per meshed surface (tag order), the size its mesher aimed at, at 3D points (the
   /// points go radially onto a sphere): the size policy with the background field and
@@ -94,7 +98,7 @@ struct Mesh2dResult {
   /// for mesh_stats. Valid while opt.background lives; each function keeps its own
   /// scratch, so call it from one thread at a time.
   std::vector<SurfaceSize> target_sizes;
-  bool ok() const { return error.surface == 0; }
+  bool ok() const { return error.ok(); }
 };
 
 /// The 2D stages as named in the statistics summary ("2D boundary", "2D refine", ...).

@@ -56,7 +56,11 @@ MeshStats compute_stats(const ModelMesh& mesh, const std::vector<const SizeAt3*>
     for (const auto& t : sf.triangles) {
       const double r = rho(mesh.nodes[t[0]].xyz, mesh.nodes[t[1]].xyz, mesh.nodes[t[2]].xyz);
       sum += r;
-      s.min_rho = std::min(s.min_rho, r);
+      if (r < s.min_rho || s.min_rho_surface == 0) {
+        s.min_rho = std::min(s.min_rho, r);
+        s.min_rho_surface = tag;
+        s.min_rho_at = (mesh.nodes[t[0]].xyz + mesh.nodes[t[1]].xyz + mesh.nodes[t[2]].xyz) / 3.0;
+      }
       if (r > 0.9) ++good;
       ++s.triangles;
     }
@@ -134,7 +138,13 @@ MeshStats mesh_stats(const ModelMesh& mesh, const std::vector<SurfaceSize>& size
 
 std::string format_stats(const MeshStats& s) {
   std::string out = fmt::format("Mesh: {} nodes, {} triangles\n", s.nodes, s.triangles);
-  out += fmt::format("Quality: rho min {:.4f}, mean {:.4f}, {:.2f}% above 0.9\n", s.min_rho, s.mean_rho,
+  std::string worst;
+  if (s.min_rho_surface && s.has_min_rho_lonlat)
+    worst = fmt::format(" (surface {} near lon {:.4f}, lat {:.4f})", s.min_rho_surface, s.min_rho_lon, s.min_rho_lat);
+  else if (s.min_rho_surface)
+    worst = fmt::format(" (surface {} near ({:.6g}, {:.6g}, {:.6g}))", s.min_rho_surface, s.min_rho_at.x,
+                        s.min_rho_at.y, s.min_rho_at.z);
+  out += fmt::format("Quality: rho min {:.4f}{}, mean {:.4f}, {:.2f}% above 0.9\n", s.min_rho, worst, s.mean_rho,
                      100 * s.share_rho_09);
   if (s.has_sizes)
     out += fmt::format("Edge length / size: median {:.3f}, 5-95% [{:.3f}, {:.3f}], {:.2f}% in [0.7, 1.4] ({} edges)\n",
@@ -179,6 +189,13 @@ std::string stats_json(const MeshStats& s) {
   out += fmt::format("\"nodes\": {}, \"triangles\": {}, ", s.nodes, s.triangles);
   out += fmt::format("\"rho_min\": {}, \"rho_mean\": {}, \"rho_share_above_0.9\": {}", json_number(s.min_rho),
                      json_number(s.mean_rho), json_number(s.share_rho_09));
+  if (s.min_rho_surface) {
+    out += fmt::format(", \"rho_min_surface\": {}, \"rho_min_xyz\": [{}, {}, {}]", s.min_rho_surface,
+                       json_number(s.min_rho_at.x), json_number(s.min_rho_at.y), json_number(s.min_rho_at.z));
+    if (s.has_min_rho_lonlat)
+      out += fmt::format(", \"rho_min_lon\": {}, \"rho_min_lat\": {}", json_number(s.min_rho_lon),
+                         json_number(s.min_rho_lat));
+  }
   if (s.has_sizes)
     out += fmt::format(", \"edges\": {}, \"length_ratio_median\": {}, \"length_ratio_p05\": {}, "
                        "\"length_ratio_p95\": {}, \"length_ratio_share_0.7_1.4\": {}",

@@ -23,6 +23,10 @@ struct StageTime {
 struct MeshStats {
   std::uint64_t nodes = 0, triangles = 0, edges = 0;   // nodes: those of the triangles
   double min_rho = 0, mean_rho = 0, share_rho_09 = 0;   // share of triangles with rho > 0.9
+  int min_rho_surface = 0;                             // the worst triangle: its surface,
+  Vec3 min_rho_at;                                     // its centroid and, set by the caller
+  bool has_min_rho_lonlat = false;                     // on a sphere geometry, its lon/lat
+  double min_rho_lon = 0, min_rho_lat = 0;
   bool has_sizes = false;                              // the length ratios below are set
   double len_median = 0, len_p05 = 0, len_p95 = 0;     // edge length / target size
   double share_len_07_14 = 0;                          // share of edges with ratio in [0.7, 1.4]

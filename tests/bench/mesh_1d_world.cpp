@@ -103,7 +103,7 @@ Built build(const std::string& path, double gamma_m, geo::CurveKind kind) {
 
 // Independent check of a reported intersection: both splines sampled densely (64 points
 // per piece) in (u,v) near the place, segments tested pairwise with exact orient2d.
-std::size_t sampled_crossings(const geo::Model& m, const Mesh1dError& e) {
+std::size_t sampled_crossings(const geo::Model& m, const MeshError& e) {
   const geo::PolarSphere ps = *m.geometry(1)->polar();
   const Vec2 at = ps.param_from_lonlat(e.where);
   auto samples = [&](int tag) {
@@ -118,10 +118,11 @@ std::size_t sampled_crossings(const geo::Model& m, const Mesh1dError& e) {
     }
     return segs;
   };
-  const auto a = samples(e.curve_a), b = samples(e.curve_b);
+  const int ca = e.tag(0), cb = e.tag(1) ? e.tag(1) : e.tag(0);   // one curve: it meets itself
+  const auto a = samples(ca), b = samples(cb);
   std::size_t n = 0;
   for (std::size_t i = 0; i < a.size(); ++i)
-    for (std::size_t j = e.curve_a == e.curve_b ? i + 2 : 0; j < b.size(); ++j) {
+    for (std::size_t j = ca == cb ? i + 2 : 0; j < b.size(); ++j) {
       const auto [p, q] = a[i];
       const auto [r, s] = b[j];
       const Sign s1 = orient2d(p, q, r), s2 = orient2d(p, q, s), s3 = orient2d(r, s, p), s4 = orient2d(r, s, q);

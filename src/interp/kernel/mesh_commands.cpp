@@ -23,6 +23,7 @@
 #include "interp/kernel/output_options.h"
 #include "interp/kernel/size_policy_from_options.h"
 #include "interp/interpreter.h"
+#include "interp/provenance.h"
 #include "interp/progress_sink.h"
 #include "io/from_model_mesh.h"
 #include "io/output_format.h"
@@ -50,28 +51,11 @@ Mesh1dOptions mesh1d_options(Interpreter& in, const field::SizeField* background
   return opt;
 }
 
-// "curve 7 was created here" for the curves a mesher error names.
-std::vector<DiagNote> curve_notes(const KernelState& k, const Mesh1dError& e) {
-  std::vector<DiagNote> notes;
-  for (int tag : {e.curve_a, e.curve_b}) {
-    if (tag <= 0 || (tag == e.curve_b && e.curve_a == e.curve_b && !notes.empty())) continue;
-    const auto it = k.created_at.find({1, tag});
-    if (it != k.created_at.end()) notes.push_back({it->second, fmt::format("curve {} was created here", tag)});
-  }
-  return notes;
-}
-
-std::vector<DiagNote> surface_notes(const KernelState& k, int surface) {
-  const auto it = k.created_at.find({2, surface});
-  if (it == k.created_at.end()) return {};
-  return {{it->second, fmt::format("surface {} was created here", surface)}};
-}
-
-Diag diag_of(const Mesh1dError& e) {
+Diag diag_of(const MeshError& e) {
   switch (e.kind) {
-    case Mesh1dErrorKind::Intersection:
-    case Mesh1dErrorKind::DuplicatePoint: return Diag::MeshCurvesIntersect;
-    case Mesh1dErrorKind::LimitExceeded: return Diag::LimitExceeded;
+    case MeshErrorKind::Intersection:
+    case MeshErrorKind::DuplicatePoint: return Diag::MeshCurvesIntersect;
+    case MeshErrorKind::LimitExceeded: return Diag::LimitExceeded;
     default: return Diag::MeshFailed;
   }
 }
@@ -84,12 +68,12 @@ std::string over_limit(double limit) {
   return fmt::format("over Mesh.MaxElements = {:g}: {}", limit, kBudgetFix);
 }
 
-std::string message_of(const Mesh1dError& e) {
-  if (e.kind != Mesh1dErrorKind::LimitExceeded) return e.message;
+std::string message_of(const MeshError& e) {
+  if (e.kind != MeshErrorKind::LimitExceeded) return e.message;
   if (e.all_curves)
-    return fmt::format("the curves would get about {:.1e} nodes in all (curve {} the most), {}", e.count, e.curve_a,
+    return fmt::format("the curves would get about {:.1e} nodes in all (curve {} the most), {}", e.count, e.tag(0),
                        over_limit(e.limit));
-  return fmt::format("curve {} would get about {:.1e} nodes, {}", e.curve_a, e.count, over_limit(e.limit));
+  return fmt::format("curve {} would get about {:.1e} nodes, {}", e.tag(0), e.count, over_limit(e.limit));
 }
 
 // A meshing failure on its way to a diagnostic (kind, message, notes at the
@@ -101,11 +85,11 @@ struct MeshFailure {
   bool failed() const { return !message.empty(); }
 };
 
-MeshFailure failure_of(const KernelState& k, const Mesh2dError& e) {
-  MeshFailure f{Diag::MeshFailed, e.message, surface_notes(k, e.surface)};
-  if (e.kind == Mesh2dErrorKind::LimitExceeded) {
+MeshFailure failure_of(const KernelState& k, const MeshError& e) {
+  MeshFailure f{Diag::MeshFailed, e.message, provenance_notes(k, e)};
+  if (e.kind == MeshErrorKind::LimitExceeded) {
     f.kind = Diag::LimitExceeded;
-    f.message = fmt::format("surface {} would get about {:.1e} triangles, over Mesh.MaxElements = {:g}: {}", e.surface,
+    f.message = fmt::format("surface {} would get about {:.1e} triangles, over Mesh.MaxElements = {:g}: {}", e.tag(0),
                             e.count, e.limit, kBudgetFix);
   } else if (e.has_lonlat) {
     f.message += fmt::format(" (near lon {:.4f}, lat {:.4f})", e.where.lon, e.where.lat);
@@ -193,6 +177,7 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
     opt2.bbox_diag = model_bbox_diag(k.model);
     opt2.smoothing = static_cast<int>(in.options().number("Mesh.Smoothing"));
     opt2.quality_pass = in.options().number("Mesh.QualityPass") != 0;
+    opt2.quality_floor = in.options().number("Mesh.QualityFloor");
     opt2.max_elements = max_elements;
     // Threads for faces refined in parts: Mesh.MaxNumThreads2D, else General.NumThreads (0:
     // the hardware's). The mesh is the same for any count; meshadapt stays serial.
@@ -223,15 +208,15 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   opt1.max_elements = max_elements;
   // Many 1D nodes: the faces' budgets first, on a coarse boundary, before the full 1D
   // mesh is paid for (a unit square at size 1e-7 has 4e7 boundary nodes, 2e14 triangles).
-  Mesh2dError budget;
+  MeshError budget;
   if (dim >= 2)
     opt1.coarse_check = [&](const ModelMesh& coarse) {
       budget = check_face_budgets(k.model, coarse, opt2).error;
-      return budget.surface == 0;
+      return budget.ok();
     };
   Mesh1dResult r = mesh_curves(k.model, opt1);
-  if (r.error.kind == Mesh1dErrorKind::Stopped) return failure_of(k, budget);
-  if (!r.ok()) return {diag_of(r.error), message_of(r.error), curve_notes(k, r.error)};
+  if (r.error.kind == MeshErrorKind::Stopped) return failure_of(k, budget);
+  if (!r.ok()) return {diag_of(r.error), message_of(r.error), provenance_notes(k, r.error)};
   auto mesh = std::make_shared<ModelMesh>(std::move(r.mesh));
   const double seconds_1d = std::chrono::duration<double>(Clock::now() - t0).count();
   if (dim < 2) {
@@ -245,9 +230,23 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   // As diagnostics, so that they print in order with Printf and the progress display
   // (the front end drops them below General.Verbosity 2).
   for (const std::string& w : r2.warnings) in.diags().report_message(where, Diag::MeshWarning, w);
+  for (const std::string& w : r2.quality_warnings) in.diags().report_message(where, Diag::MeshQualityFloor, w);
   // Statistics against the size each face's mesher aimed at (with the extension from
   // the boundary where it is on).
   MeshStats st = mesh_stats(*mesh, r2.target_sizes);
+  // The worst triangle's place in longitude/latitude when its surface is on a sphere.
+  if (const geo::ModelSurface* ws = st.min_rho_surface ? k.model.surface(st.min_rho_surface) : nullptr)
+    if (const geo::SurfaceGeometry* g = ws->geometry ? k.model.geometry(ws->geometry) : nullptr) {
+      geo::LonLat ll;
+      if (g->polar()) {
+        ll = g->polar()->to_lonlat(st.min_rho_at);
+      } else {
+        const Vec2 uv = g->param(st.min_rho_at);
+        ll = {uv.x * geo::kRadToDeg, uv.y * geo::kRadToDeg};
+      }
+      st.has_min_rho_lonlat = true;
+      st.min_rho_lon = ll.lon, st.min_rho_lat = ll.lat;
+    }
   st.stages.push_back({"1D", seconds_1d});
   for (const StageTime& t : stage_times(r2.stats)) st.stages.push_back(t);
   if (depth) st.time_step = time_step_of(in, *mesh, *depth);

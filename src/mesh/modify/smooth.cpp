@@ -12,19 +12,11 @@ namespace {
 // Vertices (or triangles) per chunk of the parallel loops: fixed, so chunk boundaries
 // and results do not depend on the thread count.
 constexpr std::size_t kSmoothChunk = 16384;
-}  // namespace
 
-std::uint64_t make_delaunay(TriangleStore& m) {
+// Lawson flips from the edges on `stack` (each marked in `queued`, keyed by the smaller
+// side of the pair) until every edge reached is locally Delaunay.
+std::uint64_t flip_from(TriangleStore& m, std::vector<Side>& stack, std::vector<std::uint8_t>& queued) {
   const PlanarGeometry g{&m.xy};
-  std::vector<Side> stack;
-  std::vector<std::uint8_t> queued(m.corner.size(), 0);
-  for (std::uint32_t s = 0; s < m.corner.size(); ++s) {
-    const Side o = m.twin[s];
-    if (m.alive(tri_of(Side{s})) && o.valid() && s < o.value && !m.constrained(Side{s})) {
-      stack.push_back(Side{s});
-      queued[s] = 1;
-    }
-  }
   std::uint64_t flips = 0;
   while (!stack.empty()) {
     const Side s = stack.back();
@@ -48,7 +40,37 @@ std::uint64_t make_delaunay(TriangleStore& m) {
   return flips;
 }
 
-SmoothStats smooth_laplacian(TriangleStore& m, int passes, int threads) {
+}  // namespace
+
+std::uint64_t make_delaunay(TriangleStore& m) {
+  std::vector<Side> stack;
+  std::vector<std::uint8_t> queued(m.corner.size(), 0);
+  for (std::uint32_t s = 0; s < m.corner.size(); ++s) {
+    const Side o = m.twin[s];
+    if (m.alive(tri_of(Side{s})) && o.valid() && s < o.value && !m.constrained(Side{s})) {
+      stack.push_back(Side{s});
+      queued[s] = 1;
+    }
+  }
+  return flip_from(m, stack, queued);
+}
+
+std::uint64_t make_delaunay_around(TriangleStore& m, std::span<const TriId> tris) {
+  std::vector<Side> stack;
+  std::vector<std::uint8_t> queued(m.corner.size(), 0);
+  for (const TriId t : tris) {
+    if (!m.alive(t)) continue;
+    for (std::uint32_t e = 0; e < 3; ++e) {
+      const Side s = side_of(t, e), o = m.twin[s.value];
+      if (!o.valid() || m.constrained(s)) continue;
+      const Side key = s.value < o.value ? s : o;
+      if (!queued[key.value]) queued[key.value] = 1, stack.push_back(key);
+    }
+  }
+  return flip_from(m, stack, queued);
+}
+
+SmoothStats smooth_laplacian(TriangleStore& m, int passes, int threads, std::uint32_t pinned) {
   // Jacobi form: all free vertices move at once to the average of their neighbours from
   // the previous positions. Each vertex gathers its own fan (so vertices are independent
   // and split into chunks across threads) and sums its neighbours in increasing side
@@ -59,6 +81,7 @@ SmoothStats smooth_laplacian(TriangleStore& m, int passes, int threads) {
   SmoothStats st;
   const std::uint32_t nv = m.num_vertices();
   std::vector<std::uint8_t> fixed(nv, 0);
+  std::fill(fixed.begin(), fixed.begin() + std::min(pinned, nv), std::uint8_t{1});
   for (std::uint32_t s = 0; s < m.corner.size(); ++s) {
     if (!m.alive(tri_of(Side{s}))) continue;
     if (m.constrained(Side{s}) || !m.twin[s].valid()) fixed[m.corner[s].value] = fixed[m.dest(Side{s}).value] = 1;

@@ -102,6 +102,16 @@ TEST_CASE("mesh commands: a 1D failure from -2 points at the statement of a curv
   CHECK_FALSE(r.wrote);
 }
 
+TEST_CASE("mesh commands: a 2D failure notes the surface and the curve it names (one mesh error shape)") {
+  // An embedded point on a boundary edge: the face's edge recovery finds it touching curve 1.
+  const CliMesh r = mesh_cli("lc = 10;\n" + kSquareWithLc + "Point(5) = {0.5, 0, 0, lc};\nPoint{5} In Surface{1};\n", 2);
+  CHECK_FALSE(r.ok);
+  CHECK(r.first == "5:3 mesh-error");   // -2: at the statement that created the surface
+  CHECK(r.rendered.find("surface 1: a boundary node lies on an edge of curve 1") != std::string::npos);
+  CHECK(r.rendered.find("cli.geo:3:1: note: curve 1 was created here") != std::string::npos);
+  CHECK_FALSE(r.wrote);
+}
+
 TEST_CASE("mesh commands: Mesh.DepthField naming no field is refused before meshing, at its assignment") {
   const CliMesh r = mesh_cli("lc = 0.5;\n" + kSquareWithLc + "Mesh.DepthField = 7;\n", 2);
   CHECK_FALSE(r.ok);

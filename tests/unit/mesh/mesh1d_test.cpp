@@ -271,9 +271,8 @@ TEST_CASE("mesh1d: a self-intersecting coastline fails with the curves and the p
   opt.size.max = 0.5 * geo::kDegToRad;
   const Mesh1dResult r = mesh_curves(m, opt);
   REQUIRE_FALSE(r.ok());
-  CHECK(r.error.kind == Mesh1dErrorKind::Intersection);
-  CHECK(r.error.curve_a == c);
-  CHECK(r.error.curve_b == c);
+  CHECK(r.error.kind == MeshErrorKind::Intersection);
+  CHECK(r.error.entities == std::vector<MeshEntity>{{1, c}});
   REQUIRE(r.error.has_lonlat);
   CHECK(r.error.where.lon == doctest::Approx(10).epsilon(0.01));
   CHECK(r.error.where.lat == doctest::Approx(40).epsilon(0.01));
@@ -290,9 +289,9 @@ TEST_CASE("mesh1d: two crossing coastlines name both curves") {
   opt.size.max = 0.2 * geo::kDegToRad;
   const Mesh1dResult r = mesh_curves(m, opt);
   REQUIRE_FALSE(r.ok());
-  CHECK(r.error.kind == Mesh1dErrorKind::Intersection);
-  CHECK(std::min(r.error.curve_a, r.error.curve_b) == a);
-  CHECK(std::max(r.error.curve_a, r.error.curve_b) == b);
+  CHECK(r.error.kind == MeshErrorKind::Intersection);
+  CHECK(std::min(r.error.tag(0), r.error.tag(1)) == a);
+  CHECK(std::max(r.error.tag(0), r.error.tag(1)) == b);
   CHECK(r.error.where.lon == doctest::Approx(0.75).epsilon(0.02));
 }
 
@@ -324,7 +323,7 @@ TEST_CASE("mesh1d: only curves of surfaces are repaired unless asked") {
   }
   const Mesh1dResult r = mesh_curves(m, opt);
   REQUIRE_FALSE(r.ok());
-  CHECK(r.error.kind == Mesh1dErrorKind::Intersection);
+  CHECK(r.error.kind == MeshErrorKind::Intersection);
 }
 
 TEST_CASE("mesh1d: Bezier node counts as gmsh 4.8.4 (|X'| divided by the degree)") {
@@ -442,17 +441,17 @@ TEST_CASE("mesh1d: a curve or all curves over max_elements are refused before no
   Mesh1dOptions o;
   o.max_elements = 150;   // curve 1 gets 101 nodes, curve 2 201
   Mesh1dResult r = mesh_curves(m, o);
-  REQUIRE(r.error.kind == Mesh1dErrorKind::LimitExceeded);
-  CHECK(r.error.curve_a == 2);
+  REQUIRE(r.error.kind == MeshErrorKind::LimitExceeded);
+  CHECK(r.error.tag(0) == 2);
   CHECK_FALSE(r.error.all_curves);
   CHECK(r.error.count == 201);
   CHECK(r.error.limit == 150);
   CHECK(r.mesh.curves.empty());
   o.max_elements = 250;   // each within, together over
   r = mesh_curves(m, o);
-  REQUIRE(r.error.kind == Mesh1dErrorKind::LimitExceeded);
+  REQUIRE(r.error.kind == MeshErrorKind::LimitExceeded);
   CHECK(r.error.all_curves);
-  CHECK(r.error.curve_a == 2);
+  CHECK(r.error.tag(0) == 2);
   CHECK(r.error.count == 302);
   o.max_elements = 302;
   r = mesh_curves(m, o);
@@ -462,7 +461,7 @@ TEST_CASE("mesh1d: a curve or all curves over max_elements are refused before no
   o.max_elements = 0;
   o.size.factor = 1e-20;
   r = mesh_curves(m, o);
-  REQUIRE(r.error.kind == Mesh1dErrorKind::LimitExceeded);
+  REQUIRE(r.error.kind == MeshErrorKind::LimitExceeded);
   CHECK(r.error.limit == kMaxCurveNodes);
   CHECK(r.error.message.find("curve 1 would get about 1.0e+22 nodes") != std::string::npos);
 }

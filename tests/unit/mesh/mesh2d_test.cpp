@@ -452,7 +452,7 @@ TEST_CASE("mesh2d: a lon/lat Sphere face through a pole is a located error") {
   REQUIRE(r1.ok());
   const Mesh2dResult r2 = mesh_surfaces(m, r1.mesh, {});
   CHECK_FALSE(r2.ok());
-  CHECK(r2.error.surface == 1);
+  CHECK(r2.error.entities.front() == MeshEntity{2, 1});
   CHECK(r2.error.message.find("pole") != std::string::npos);
   CHECK(r2.error.has_lonlat);
   CHECK(r2.error.where.lat == doctest::Approx(90));
@@ -582,9 +582,9 @@ TEST_CASE("mesh2d: world ocean north of 60S from GSHHG crude, shore distance 30 
     wp->size = std::make_unique<ThresholdOf>(field::make_distance_field(wp->coast), 30, 200, 0, 500);
     const Mesh1dResult r1 = mesh_curves(wp->m, world_options(wp->size.get()));
     if (r1.ok()) break;
-    REQUIRE(r1.error.kind == Mesh1dErrorKind::Intersection);
+    REQUIRE(r1.error.kind == MeshErrorKind::Intersection);
     std::size_t pick = rings.size();
-    for (int c : {r1.error.curve_a, r1.error.curve_b}) {
+    for (int c : {r1.error.tag(0), r1.error.tag(1)}) {
       const auto it = wp->ring_of_curve.find(c);
       if (it != wp->ring_of_curve.end() && (pick == rings.size() || rings[it->second].lon.size() < rings[pick].lon.size()))
         pick = it->second;
@@ -621,7 +621,7 @@ TEST_CASE("mesh2d: world ocean north of 60S from GSHHG crude, shore distance 30 
   check_on_sphere(m, a.mesh, 1, kR);
   MeshStats st = mesh_stats(a.mesh, target);
   st.stages = stage_times(a.r2.stats);
-  REQUIRE(st.stages.size() == 5);
+  REQUIRE(st.stages.size() == 6);
   CHECK(st.stages[1].name == "2D refine");
   CHECK(st.stages[1].seconds > 0);
   MESSAGE(name_of(alg) << ": " << format_stats(st));
@@ -743,7 +743,7 @@ TEST_CASE("mesh2d: a non-planar boundary and an embedded curve crossing the boun
     REQUIRE(r1.ok());
     const Mesh2dResult r2 = mesh_surfaces(m, r1.mesh, {});
     CHECK_FALSE(r2.ok());
-    CHECK(r2.error.surface == 1);
+    CHECK(r2.error.entities.front() == MeshEntity{2, 1});
     CHECK(r2.error.message.find("not planar") != std::string::npos);
   }
   {
@@ -760,7 +760,7 @@ TEST_CASE("mesh2d: a non-planar boundary and an embedded curve crossing the boun
     REQUIRE(r1.ok());
     const Mesh2dResult r2 = mesh_surfaces(m, r1.mesh, {});
     CHECK_FALSE(r2.ok());
-    CHECK(r2.error.surface == 1);
+    CHECK(r2.error.entities.front() == MeshEntity{2, 1});
     CHECK(r2.error.message.find("cross") != std::string::npos);
     CHECK(r2.error.message.find("near (") != std::string::npos);
     CHECK(r1.mesh.surfaces.empty());
@@ -1061,8 +1061,8 @@ TEST_CASE("mesh2d: the element budget refuses a face from its boundary, before r
     o2.max_elements = 1e5;
     const Mesh2dResult r2 = mesh_surfaces(m, mesh, o2);
     REQUIRE_FALSE(r2.ok());
-    CHECK(r2.error.surface == 1);
-    CHECK(r2.error.kind == Mesh2dErrorKind::LimitExceeded);
+    CHECK(r2.error.entities.front() == MeshEntity{2, 1});
+    CHECK(r2.error.kind == MeshErrorKind::LimitExceeded);
     CHECK(r2.error.count == doctest::Approx(1 / (1e-6 * std::sqrt(3) / 4)).epsilon(0.05));
     CHECK(r2.error.limit == 1e5);
     CHECK(r2.stats.inserted == 0);
@@ -1110,7 +1110,7 @@ TEST_CASE("mesh2d: check_face_budgets estimates faces on a coarse boundary, skip
     return false;
   };
   const Mesh1dResult r1 = mesh_curves(m, o1);
-  CHECK(r1.error.kind == Mesh1dErrorKind::Stopped);
+  CHECK(r1.error.kind == MeshErrorKind::Stopped);
   REQUIRE(calls == 1);
   CHECK(coarse.curves.size() == 4);
   for (const auto& [tag, cm] : coarse.curves) CHECK(cm.nodes.size() == static_cast<std::size_t>(kCoarseCurveNodes));
@@ -1119,8 +1119,8 @@ TEST_CASE("mesh2d: check_face_budgets estimates faces on a coarse boundary, skip
   o2.max_elements = 1e12;
   const Mesh2dResult b = check_face_budgets(m, coarse, o2);
   REQUIRE_FALSE(b.ok());
-  CHECK(b.error.kind == Mesh2dErrorKind::LimitExceeded);
-  CHECK(b.error.surface == 1);
+  CHECK(b.error.kind == MeshErrorKind::LimitExceeded);
+  CHECK(b.error.entities.front() == MeshEntity{2, 1});
   CHECK(b.error.count == doctest::Approx(1 / (1e-12 * std::sqrt(3) / 4)).epsilon(0.05));
   o2.max_elements = 1e13;
   CHECK(check_face_budgets(m, coarse, o2).ok());

@@ -40,3 +40,25 @@ TEST_CASE("smooth: one and three passes after del2d on a square with a hole") {
   REQUIRE(check_delaunay(m, PlanarGeometry{&m.xy}, true).ok());
   CHECK(mesh_quality(m).share_rho_09 >= after.share_rho_09);
 }
+
+TEST_CASE("smooth: pinned vertices stay, the others move as without pinning") {
+  // The face mesher pins its input vertices when it has embedded points (on no
+  // constrained edge): the same smoothing, one implementation.
+  TriangleStore m;
+  const Loop sq = testing::polygon_loop(m, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.05, false);
+  REQUIRE(testing::boundary_mesh(m, {sq}, nullptr));
+  RefineOptions opt;
+  opt.size = 0.05;
+  REQUIRE(refine_del2d(m, opt).ok());
+  const std::uint32_t pinned = static_cast<std::uint32_t>(sq.v.size()) + 5;   // 5 interior vertices too
+  TriangleStore free_copy = m;
+  const std::vector<Vec2> before = m.xy;
+  smooth_laplacian(m, 1, 1, pinned);
+  smooth_laplacian(free_copy, 1);
+  for (std::uint32_t v = 0; v < pinned; ++v) CHECK(m.xy[v] == before[v]);
+  std::uint32_t moved_free = 0;
+  for (std::uint32_t v = sq.v.size(); v < pinned; ++v) moved_free += !(free_copy.xy[v] == before[v]);
+  CHECK(moved_free > 0);   // without the pin they would have moved
+  REQUIRE(check_topology(m).ok());
+  REQUIRE(check_delaunay(m, PlanarGeometry{&m.xy}, true).ok());
+}

@@ -1,0 +1,135 @@
+// The target size of a face in its plane (face_sizing.h): the boundary sizes, their
+// barycentric interpolation in the recovered boundary triangulation, the size policy.
+#include "mesh/face_sizing.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "exact/predicates.h"
+
+namespace sm {
+
+void set_boundary_sizes(FaceSizing& f, const TriangleStore& recovered, std::uint32_t fixed_count,
+                        std::span<const Edge> edges, std::span<const std::uint32_t> global, const ModelMesh& mesh,
+                        const geo::Model& model, bool coarse) {
+  if (f.size.extend_from_boundary == 0) return;
+  f.bg = recovered;
+  std::vector<double>& bsize = f.bsize;
+  bsize.assign(fixed_count, 0.0);
+  std::vector<std::uint32_t> count(fixed_count, 0);
+  std::vector<double> node_h;
+  if (coarse) {
+    node_h.assign(mesh.nodes.size(), 0.0);
+    for (const auto& [ct, cm] : mesh.curves)
+      for (std::size_t k = 0; k < cm.h.size() && k < cm.nodes.size(); ++k) node_h[cm.nodes[k]] = cm.h[k];
+  }
+  auto edge_length = [&](std::uint32_t ga, std::uint32_t gb) {
+    if (coarse && node_h[ga] > 0 && node_h[gb] > 0) return 0.5 * (node_h[ga] + node_h[gb]);
+    return norm(mesh.nodes[ga].xyz - mesh.nodes[gb].xyz);
+  };
+  for (const Edge& e : edges) {
+    const double len = edge_length(global[e.first.value], global[e.second.value]);
+    bsize[e.first.value] += len, bsize[e.second.value] += len;
+    ++count[e.first.value], ++count[e.second.value];
+  }
+  for (std::uint32_t v = 0; v < fixed_count; ++v) {
+    bsize[v] = count[v] ? bsize[v] / count[v] : std::numeric_limits<double>::infinity();
+    if (!count[v]) {
+      for (const auto& [vt, node] : mesh.vertex_node)
+        if (node == global[v]) {
+          const geo::ModelVertex* mv = model.vertex(vt);
+          if (mv && f.size.from_points && mv->lc < geo::kMaxLc) bsize[v] = mv->lc * f.size.factor;
+          break;
+        }
+    }
+  }
+}
+
+// Barycentric interpolation of the boundary sizes in the recovered boundary
+// triangulation: a visibility walk from the last hit that stops at the domain's boundary
+// (the point is then clamped to the last triangle).
+std::optional<double> PlaneSizes::boundary_size(Vec2 p) {
+  const TriangleStore& bg = f_.bg;
+  const std::vector<double>& bsize = f_.bsize;
+  if (!hint_.valid() || !bg.alive(hint_)) {
+    hint_ = TriId{};
+    for (std::uint32_t t = 0; t < bg.num_slots(); ++t)
+      if (bg.alive(TriId{t})) {
+        hint_ = TriId{t};
+        break;
+      }
+    if (!hint_.valid()) return std::nullopt;
+  }
+  TriId t = hint_;
+  const std::uint32_t cap = 4 * bg.num_slots() + 16;
+  for (std::uint32_t step = 0; step < cap; ++step) {
+    bool moved = false;
+    walk_turn_ = (walk_turn_ + 1) % 3;
+    for (std::uint32_t k = 0; k < 3 && !moved; ++k) {
+      const Side s = side_of(t, (walk_turn_ + k) % 3);
+      if (orient2d(bg.pos(bg.org(s)), bg.pos(bg.dest(s)), p) != Sign::Negative) continue;
+      const Side o = bg.twin[s.value];
+      if (!o.valid()) continue;   // beyond the boundary: try another edge, else stop here
+      t = tri_of(o);
+      moved = true;
+    }
+    if (!moved) break;
+  }
+  hint_ = t;
+  const Vec2 a = bg.pos(bg.vertex(t, 0)), b = bg.pos(bg.vertex(t, 1)), c = bg.pos(bg.vertex(t, 2));
+  const double area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+  double w[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
+  if (area > 0) {
+    w[0] = ((b.x - p.x) * (c.y - p.y) - (b.y - p.y) * (c.x - p.x)) / area;
+    w[1] = ((c.x - p.x) * (a.y - p.y) - (c.y - p.y) * (a.x - p.x)) / area;
+    w[2] = ((a.x - p.x) * (b.y - p.y) - (a.y - p.y) * (b.x - p.x)) / area;
+  }
+  double sum_w = 0, sum = 0;
+  for (std::uint32_t e = 0; e < 3; ++e) {
+    const double h = bsize[bg.vertex(t, e).value];
+    const double wi = std::max(0.0, w[e]);
+    if (!std::isfinite(h)) continue;
+    sum_w += wi;
+    sum += wi * h;
+  }
+  if (sum_w > 0) return sum / sum_w;
+  double lo = std::numeric_limits<double>::infinity();
+  for (std::uint32_t e = 0; e < 3; ++e) lo = std::min(lo, bsize[bg.vertex(t, e).value]);
+  return std::isfinite(lo) ? std::optional<double>(lo) : std::nullopt;
+}
+
+void PlaneSizes::on_surface(std::span<const Vec2> p, std::span<double> h) {
+  pts3_.resize(p.size());
+  field_.resize(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) pts3_[i] = f_.plane.to_space(p[i]);
+  if (f_.background) f_.background->eval_on(field::EntityRef{2, f_.tag}, pts3_, field_);
+  field::SizeQuery q;
+  q.bbox_diag = f_.bbox;
+  q.entity_dim = 2;
+  const bool extend = f_.size.extend_from_boundary != 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (f_.background) q.background = field_[i];
+    double size = field::final_size(f_.size, q).size;
+    if (extend) size = field::surface_target(f_.size, size, boundary_size(p[i]));
+    h[i] = size;
+  }
+  if (evaluations_) evaluations_->fetch_add(p.size(), std::memory_order_relaxed);
+}
+
+void PlaneSizes::operator()(std::span<const Vec2> p, std::span<double> h) {
+  on_surface(p, h);
+  for (std::size_t i = 0; i < p.size(); ++i) h[i] /= f_.plane.lambda(p[i]);
+}
+
+SizeAt3 target_size_fn(std::shared_ptr<const FaceSizing> sizing) {
+  auto sizes = std::make_shared<PlaneSizes>(*sizing);
+  auto plane_pts = std::make_shared<std::vector<Vec2>>();
+  return [sizing, sizes, plane_pts](std::span<const Vec3> x, std::span<double> h) {
+    plane_pts->resize(x.size());
+    for (std::size_t i = 0; i < x.size(); ++i) (*plane_pts)[i] = sizing->plane.plane_of_space(x[i]);
+    sizes->on_surface(*plane_pts, h);
+  };
+}
+
+}  // namespace sm

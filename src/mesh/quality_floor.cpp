@@ -1,0 +1,390 @@
+// The quality floor (quality_floor.h): rounds over the triangles below q, worst first.
+#include "mesh/quality_floor.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "exact/predicates.h"
+#include "exact/segments.h"
+#include "exact/triangle_rho.h"
+#include "mesh/insert.h"
+#include "mesh/modify/smooth.h"
+#include "mesh/modify/split.h"
+#include "mesh/quality.h"
+
+namespace sm {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// rho of the isoceles triangle with apex angle a: 8 sin(a/2) sin^2((pi - a)/4).
+double isoceles_rho(double a) {
+  const double s = std::sin(0.25 * (kPi - a));
+  return 8 * std::sin(0.5 * a) * s * s;
+}
+
+// The plane angle at corner e of triangle t (at its vertex e, between its two edges).
+double corner_angle(const TriangleStore& m, TriId t, std::uint32_t e) {
+  const Vec2 p = m.pos(m.vertex(t, e)), a = m.pos(m.vertex(t, (e + 1) % 3)), b = m.pos(m.vertex(t, (e + 2) % 3));
+  return std::atan2(std::abs(cross(a - p, b - p)), dot(a - p, b - p));
+}
+
+// The angle of the domain at corner e of t: the sum of the plane angles at that vertex of
+// the triangles of its wedge, the fan reached from t without crossing a constrained (or
+// hull) edge.
+double wedge_angle(const TriangleStore& m, TriId t, std::uint32_t e) {
+  double sum = corner_angle(m, t, e);
+  const VertexId v = m.vertex(t, e);
+  // Around v one way across the side of t leaving v, the other way across the side
+  // arriving at v. A closed fan (no constrained edge at v) comes back to t.
+  for (int dir = 0; dir < 2; ++dir) {
+    Side s = dir == 0 ? side_of(t, e) : side_of(t, (e + 2) % 3);
+    for (std::uint32_t guard = 0; guard < m.corner.size(); ++guard) {
+      if (m.constrained(s)) break;
+      const Side o = m.twin[s.value];
+      if (!o.valid()) break;
+      const TriId u = tri_of(o);
+      if (u == t) return 2 * kPi;
+      std::uint32_t ev = 0;
+      while (m.vertex(u, ev) != v) ++ev;
+      sum += corner_angle(m, u, ev);
+      // Entered across the side of u arriving at v (dir 0) or leaving it (dir 1): leave
+      // across the other one.
+      s = dir == 0 ? side_of(u, ev) : side_of(u, (ev + 2) % 3);
+    }
+  }
+  return sum;
+}
+
+class Floor {
+ public:
+  Floor(TriangleStore& m, const FloorFace& face, const QualityFloorOptions& opt)
+      : m_(m), face_(face), q_(opt.floor), limit_(sharp_angle_limit(opt.floor)),
+        never_below_start_(opt.never_below_start), ins_(m) {}
+
+  QualityFloorResult run(const QualityFloorOptions& opt);
+
+ private:
+  void sync_space() {
+    for (std::uint32_t v = static_cast<std::uint32_t>(x_.size()); v < m_.num_vertices(); ++v)
+      x_.push_back(face_.space(VertexId{v}));
+  }
+  double rho3(TriId t) const {
+    return rho(x_[m_.vertex(t, 0).value], x_[m_.vertex(t, 1).value], x_[m_.vertex(t, 2).value]);
+  }
+  double len3(Side s) const { return norm(x_[m_.org(s).value] - x_[m_.dest(s).value]); }
+  /// The sharp corner of t (kNone when none), its wedge angle in *angle.
+  VertexId sharp_corner(TriId t, double* angle) const;
+  /// Every corner whose wedge is narrower than limit_ (sharp_all_, by vertex id).
+  void find_sharp_corners();
+  /// One change for the bad triangle t; false when none could be made.
+  bool improve(TriId t);
+  /// Splits the curve edge of s at its curve midpoint unless a triangle it makes would
+  /// have rho <= must_beat (the bad triangle's: the worst never gets worse).
+  bool split_curve_edge(Side s, double must_beat);
+  /// Whether the boundary may go from a - b (the edge of s) to a - p - b with p beyond it
+  /// (outside the face there): no constrained edge near it meets a - p or p - b (but at a
+  /// and b) and no vertex near it lies in the triangle a, p, b.
+  bool bulge_is_clear(Side s, Vec2 p);
+  void touched(VertexId v);
+
+  TriangleStore& m_;
+  const FloorFace& face_;
+  double q_, limit_;
+  bool never_below_start_;
+  PointInserter ins_;
+  std::vector<Vec3> x_;
+  std::vector<TriId> touched_;
+  double worst_start_ = 1;
+  std::vector<SharpCorner> sharp_all_;
+  std::vector<TriId> near_;
+  QualityFloorResult res_;
+};
+
+VertexId Floor::sharp_corner(TriId t, double* angle) const {
+  for (std::uint32_t e = 0; e < 3; ++e) {
+    const VertexId v = m_.vertex(t, e);
+    if (!face_.is_corner(v)) continue;
+    const double a = wedge_angle(m_, t, e);
+    if (a < limit_) {
+      *angle = a;
+      return v;
+    }
+  }
+  // Near a sharp corner the wedge is too narrow for its triangles' edges as well (their
+  // corners lie on both sides of it): those within two of their longest edges of it
+  // belong to it. Splitting there would only grade towards a corner that cannot be met.
+  const Vec2 p[3] = {m_.pos(m_.vertex(t, 0)), m_.pos(m_.vertex(t, 1)), m_.pos(m_.vertex(t, 2))};
+  const double reach = 2 * std::sqrt(std::max({norm2(p[1] - p[0]), norm2(p[2] - p[1]), norm2(p[0] - p[2])}));
+  for (const SharpCorner& c : sharp_all_) {
+    const Vec2 x = m_.pos(c.v);
+    if (std::min({norm(p[0] - x), norm(p[1] - x), norm(p[2] - x)}) <= reach) {
+      *angle = c.degrees * kPi / 180;
+      return c.v;
+    }
+  }
+  return VertexId{};
+}
+
+void Floor::find_sharp_corners() {
+  for (std::uint32_t t = 0; t < m_.num_slots(); ++t) {
+    if (!m_.alive(TriId{t})) continue;
+    for (std::uint32_t e = 0; e < 3; ++e) {
+      const VertexId v = m_.vertex(TriId{t}, e);
+      if (!face_.is_corner(v)) continue;
+      const double a = wedge_angle(m_, TriId{t}, e);
+      if (a < limit_) sharp_all_.push_back({v, a * 180 / kPi});
+    }
+  }
+  std::sort(sharp_all_.begin(), sharp_all_.end(), [](const SharpCorner& a, const SharpCorner& b) {
+    return a.v.value != b.v.value ? a.v.value < b.v.value : a.degrees < b.degrees;
+  });
+  sharp_all_.erase(std::unique(sharp_all_.begin(), sharp_all_.end(),
+                               [](const SharpCorner& a, const SharpCorner& b) { return a.v == b.v; }),
+                   sharp_all_.end());
+}
+
+void Floor::touched(VertexId v) {
+  // Every live triangle round v (its fan, open on a constrained edge's side).
+  const Side start = m_.out_side[v.value];
+  if (!m_.out_side_ok(v)) return;
+  for (int dir = 0; dir < 2; ++dir) {
+    Side s = start;
+    for (std::uint32_t guard = 0; guard < m_.corner.size(); ++guard) {
+      touched_.push_back(tri_of(s));
+      const Side o = dir == 0 ? m_.twin[prev(s).value] : m_.twin[s.value];
+      if (!o.valid()) break;
+      s = dir == 0 ? o : next(o);
+      if (s == start) return;
+    }
+  }
+}
+
+bool Floor::bulge_is_clear(Side s, Vec2 p) {
+  // What could lie in the bulge is near the edge: the triangles within kRings steps of it
+  // (across any edge; the bulge is no larger than its chord, and the triangles there are
+  // no smaller than the bad one being worked on) are searched, not the whole face.
+  constexpr int kRings = 4;
+  const VertexId a = m_.org(s), b = m_.dest(s);
+  const Vec2 pa = m_.pos(a), pb = m_.pos(b);
+  near_.clear();
+  near_.push_back(tri_of(s));
+  m_.tri_flags[tri_of(s).value] |= kMark;
+  for (std::size_t begin = 0, ring = 0; ring < kRings; ++ring) {
+    const std::size_t end = near_.size();
+    for (std::size_t i = begin; i < end; ++i)
+      for (std::uint32_t e = 0; e < 3; ++e) {
+        const Side o = m_.twin[side_of(near_[i], e).value];
+        if (!o.valid() || (m_.tri_flags[tri_of(o).value] & kMark)) continue;
+        m_.tri_flags[tri_of(o).value] |= kMark;
+        near_.push_back(tri_of(o));
+      }
+    begin = end;
+  }
+  bool clear = true;
+  for (const TriId t : near_) {
+    m_.tri_flags[t.value] &= static_cast<std::uint8_t>(~kMark);
+    for (std::uint32_t e = 0; e < 3 && clear; ++e) {
+      const VertexId v = m_.vertex(t, e);
+      if (v != a && v != b) {
+        const Vec2 x = m_.pos(v);
+        // Closed triangle b, a, p (counter-clockwise when p is beyond a - b).
+        if (orient2d(pb, pa, x) != Sign::Negative && orient2d(pa, p, x) != Sign::Negative &&
+            orient2d(p, pb, x) != Sign::Negative)
+          clear = false;
+      }
+      const Side x = side_of(t, e);
+      if (!m_.constrained(x)) continue;
+      const VertexId u = m_.org(x), w = m_.dest(x);
+      if (u == a || u == b || w == a || w == b) continue;
+      if (segments_meet(pa, p, m_.pos(u), m_.pos(w)) || segments_meet(p, pb, m_.pos(u), m_.pos(w))) clear = false;
+    }
+  }
+  return clear;
+}
+
+bool Floor::split_curve_edge(Side s, double must_beat) {
+  if (!face_.curve_midpoint) return false;
+  const VertexId a = m_.org(s), b = m_.dest(s);
+  const std::optional<Vec2> p = face_.curve_midpoint(a, b);
+  if (!p) return false;
+  // The face lies left of a -> b (its triangle tri_of(s)); a point to the right widens it.
+  if (orient2d(m_.pos(a), m_.pos(b), *p) == Sign::Negative && !bulge_is_clear(s, *p)) return false;
+  const Vec3 xp = face_.to_space(*p);
+  for (const Side side : {s, m_.twin[s.value]}) {
+    if (!side.valid()) continue;
+    const Vec3 xa = x_[m_.org(side).value], xb = x_[m_.dest(side).value], xc = x_[m_.apex(side).value];
+    if (!(std::min(rho(xa, xp, xc), rho(xp, xb, xc)) > must_beat)) return false;
+  }
+  const VertexId v = split_edge(m_, s, *p, /*allow_constrained=*/true);
+  if (!v.valid()) return false;
+  face_.curve_split_done(a, b, v);
+  ++res_.curve_splits;
+  sync_space();
+  touched(v);
+  return true;
+}
+
+bool Floor::improve(TriId t) {
+  // The sides of t, longest first (in space), id order on ties.
+  std::pair<double, std::uint32_t> by_len[3];
+  for (std::uint32_t e = 0; e < 3; ++e) by_len[e] = {-len3(side_of(t, e)), e};
+  std::sort(by_len, by_len + 3);
+  const Side longest = side_of(t, by_len[0].second);
+  // A split may make a triangle worse than t (the next rounds split on), but never worse
+  // than half of t (nor, with never_below_start, than the worst triangle at the start).
+  const double r = never_below_start_ ? std::max(0.5 * rho3(t), worst_start_) : 0.5 * rho3(t);
+  if (m_.constrained(longest) && split_curve_edge(longest, r)) return true;
+  // A sliver between two coasts: its circumcentre lies far beyond them; a triangle near
+  // a curve: its circumcentre may crowd the curve. Either way the curve edge is split.
+  const Vec2 a = m_.pos(m_.vertex(t, 0)), b = m_.pos(m_.vertex(t, 1)), c = m_.pos(m_.vertex(t, 2));
+  const Vec2 cc = circumcentre(a, b, c);
+  const TriId at = std::isfinite(cc.x) && std::isfinite(cc.y) ? ins_.locate(cc, t) : TriId{};
+  auto encroached = [&](TriId u) {
+    for (std::uint32_t e = 0; e < 3; ++e) {
+      const Side s = side_of(u, e);
+      if (!m_.constrained(s)) continue;
+      const Vec2 e0 = m_.pos(m_.org(s)), e1 = m_.pos(m_.dest(s));
+      if (dot(e0 - cc, e1 - cc) < 0) return s;   // inside the edge's diametral circle
+    }
+    return Side{};
+  };
+  if (at.valid()) {
+    const Side enc = encroached(at);
+    if (enc.valid() && split_curve_edge(enc, r)) return true;
+    if (!enc.valid() && ins_.insert(cc, at) == InsertOutcome::Inserted) {
+      ++res_.interior_points;
+      sync_space();
+      for (std::uint32_t slot : ins_.created()) touched_.push_back(TriId{slot});
+      return true;
+    }
+  }
+  for (const auto& [neg_len, e] : by_len)
+    if (m_.constrained(side_of(t, e)) && split_curve_edge(side_of(t, e), r)) return true;
+  // All three corners on the coast across a strait narrower than the coast's edges (or
+  // the circumcentre beyond the coast): the coast edges at its corners are split, longest
+  // first, so that their spacing comes down to the width. (Splitting the sliver's own
+  // edges at their midpoints would only make thinner slivers.)
+  Side cand[16];
+  std::uint32_t nc = 0;
+  for (std::uint32_t e = 0; e < 3; ++e) {
+    const VertexId v = m_.vertex(t, e);
+    if (!m_.out_side_ok(v)) continue;
+    const Side start = m_.out_side[v.value];
+    // Around v (both ways, the fan may be open): the constrained sides leaving or reaching v.
+    for (int dir = 0; dir < 2 && nc + 2 <= 16; ++dir) {
+      Side x = start;
+      for (std::uint32_t guard = 0; guard < 64 && nc + 2 <= 16; ++guard) {
+        if (m_.constrained(x)) cand[nc++] = x;
+        if (m_.constrained(prev(x))) cand[nc++] = prev(x);
+        const Side o = dir == 0 ? m_.twin[prev(x).value] : m_.twin[x.value];
+        if (!o.valid()) break;
+        x = dir == 0 ? o : next(o);
+        if (x == start) break;
+      }
+    }
+  }
+  std::sort(cand, cand + nc, [&](Side p, Side q) {
+    const double lp = len3(p), lq = len3(q);
+    return lp != lq ? lp > lq : p.value < q.value;
+  });
+  for (std::uint32_t i = 0; i < nc; ++i) {
+    if (i > 0 && cand[i] == cand[i - 1]) continue;
+    // Only edges longer than the triangle's longest: shorter ones are not what makes it thin.
+    if (len3(cand[i]) <= -by_len[0].first) break;
+    if (split_curve_edge(cand[i], r)) return true;
+  }
+  return false;
+}
+
+QualityFloorResult Floor::run(const QualityFloorOptions& opt) {
+  sync_space();
+  find_sharp_corners();
+  std::vector<std::pair<double, std::uint32_t>> bad;
+  auto collect = [&](bool count_sharp) {
+    bad.clear();
+    res_.at_sharp = 0;
+    std::uint32_t below = 0;
+    for (std::uint32_t t = 0; t < m_.num_slots(); ++t) {
+      if (!m_.alive(TriId{t})) continue;
+      const double r = rho3(TriId{t});
+      worst_start_ = std::min(worst_start_, r);
+      if (!(r < q_)) continue;
+      ++below;
+      double angle = 0;
+      const VertexId v = sharp_corner(TriId{t}, &angle);
+      if (v.valid()) {
+        ++res_.at_sharp;
+        if (count_sharp) res_.sharp.push_back({v, angle * 180 / kPi});
+        continue;
+      }
+      bad.push_back({r, t});
+    }
+    std::sort(bad.begin(), bad.end());
+    return below;
+  };
+  res_.below_before = collect(false);
+  const std::uint32_t budget = opt.max_points ? opt.max_points : 16 * res_.below_before + 256;
+  for (int round = 0; round < opt.max_rounds && !bad.empty(); ++round) {
+    ++res_.rounds;
+    touched_.clear();
+    bool any = false;
+    for (const auto& [r0, slot] : bad) {
+      if (res_.curve_splits + res_.interior_points >= budget) break;
+      const TriId t{slot};
+      // Earlier changes this round may have removed or mended it (or reused its slot).
+      double angle = 0;
+      if (!m_.alive(t) || !(rho3(t) < q_) || sharp_corner(t, &angle).valid()) continue;
+      any |= improve(t);
+    }
+    make_delaunay_around(m_, touched_);
+    collect(false);
+    if (!any || res_.curve_splits + res_.interior_points >= budget) break;
+  }
+  res_.out_of_budget = !bad.empty();
+  res_.below_after = collect(true);
+  // One entry per corner (the smallest wedge angle seen there), by vertex id.
+  std::sort(res_.sharp.begin(), res_.sharp.end(), [](const SharpCorner& a, const SharpCorner& b) {
+    return a.v.value != b.v.value ? a.v.value < b.v.value : a.degrees < b.degrees;
+  });
+  res_.sharp.erase(std::unique(res_.sharp.begin(), res_.sharp.end(),
+                               [](const SharpCorner& a, const SharpCorner& b) { return a.v == b.v; }),
+                   res_.sharp.end());
+  return res_;
+}
+
+}  // namespace
+
+double sharp_angle_limit(double q) {
+  if (!(q > 0)) return 0;
+  // isoceles_rho rises from 0 at a = 0 to 1 at a = pi/3: bisection.
+  double lo = 0, hi = kPi / 3;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (isoceles_rho(mid) < q ? lo : hi) = mid;
+  }
+  return hi;
+}
+
+QualityFloorResult raise_quality_floor(TriangleStore& m, const FloorFace& face, const QualityFloorOptions& opt) {
+  if (!(opt.floor > 0)) return {};
+  Floor f(m, face, opt);
+  return f.run(opt);
+}
+
+std::uint32_t count_below(const TriangleStore& m, const std::function<Vec3(VertexId)>& space, double q,
+                          double* worst) {
+  std::uint32_t n = 0;
+  double w = 1;
+  for (std::uint32_t t = 0; t < m.num_slots(); ++t) {
+    if (!m.alive(TriId{t})) continue;
+    const double r = rho(space(m.vertex(TriId{t}, 0)), space(m.vertex(TriId{t}, 1)), space(m.vertex(TriId{t}, 2)));
+    n += r < q;
+    w = std::min(w, r);
+  }
+  if (worst) *worst = w;
+  return n;
+}
+
+}  // namespace sm

@@ -1,0 +1,81 @@
+// The quality floor (Mesh.QualityFloor): after a face is refined and optimised, every
+// triangle below rho = q (measured in space: exact/triangle_rho.h) is worked on in
+// bounded rounds: a curve edge is split at its curve's parameter midpoint (the face
+// tells where: the geometry does not change and faces meshed later see the same node),
+// an interior triangle gets its circumcentre inserted (Delaunay insertion, exact
+// predicates) unless that point is beyond or encroaches a curve edge, which is then split
+// instead. Triangles at a corner where the input curves meet at an angle too sharp for q
+// are left alone and reported.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "base/vec.h"
+#include "mesh/triangulation.h"
+
+namespace sm {
+
+struct QualityFloorOptions {
+  double floor = 0.3;   ///< q: work on triangles with rho < q; <= 0: do nothing
+  /// Rounds over the triangles still below q (each round handles every one once).
+  int max_rounds = 12;
+  /// Points (curve splits and interior points) a face may get; 0: 16 per triangle
+  /// below q at the start, plus 256.
+  std::uint32_t max_points = 0;
+  /// A change may leave a triangle at half the rho of the one worked on (the next rounds
+  /// mend it); with this set, also never below the worst triangle at the start.
+  bool never_below_start = false;
+};
+
+/// What the floor needs from the face it works on (the 2D mesher's face).
+struct FloorFace {
+  /// The point in space of a vertex: its mesh node, or its plane point mapped to space.
+  std::function<Vec3(VertexId)> space;
+  /// The point in space of a plane point (to judge a change before making it).
+  std::function<Vec3(Vec2)> to_space;
+  /// The plane point of the curve point halfway (in the curve's parameter) between the
+  /// ends of the constrained edge a - b; none when the edge is not a curve edge.
+  std::function<std::optional<Vec2>(VertexId a, VertexId b)> curve_midpoint;
+  /// That split was made in the triangulation: v (at the point curve_midpoint gave last)
+  /// now lies between a and b.
+  std::function<void(VertexId a, VertexId b, VertexId v)> curve_split_done;
+  /// Whether v is a model vertex's node, where input curves may meet at a corner.
+  std::function<bool(VertexId)> is_corner;
+};
+
+/// A corner of the face (a model vertex) whose angle between the constrained edges is
+/// too sharp for the floor: a triangle there has that corner's angle or less, so rho <=
+/// the rho of the isoceles triangle with that apex.
+struct SharpCorner {
+  VertexId v;
+  double degrees = 0;
+};
+
+struct QualityFloorResult {
+  std::uint32_t below_before = 0;   ///< triangles with rho < q at the start
+  std::uint32_t below_after = 0;    ///< at the end, those at sharp corners included
+  std::uint32_t at_sharp = 0;       ///< of below_after: those at a sharp corner
+  std::uint32_t rounds = 0, curve_splits = 0, interior_points = 0;
+  bool out_of_budget = false;       ///< stopped by max_rounds or max_points with work left
+  std::vector<SharpCorner> sharp;   ///< distinct corners, by vertex id
+  bool changed() const { return curve_splits + interior_points > 0; }
+};
+
+/// The smallest apex angle (radians) of an isoceles triangle with rho >= q: below it no
+/// triangle with an angle that small reaches q (rho = 8 sin(A/2) sin(B/2) sin(C/2)).
+double sharp_angle_limit(double q);
+
+/// Raises the triangles of `m` (a face's refined triangulation, constrained edges its
+/// curves) to rho >= opt.floor where it can, as described at the top of this file.
+/// Vertices keep their ids; new ones are appended. Deterministic: triangles are handled
+/// by increasing (rho, slot), one at a time. Constrained edges stay (split into two).
+QualityFloorResult raise_quality_floor(TriangleStore& m, const FloorFace& face, const QualityFloorOptions& opt);
+
+/// Triangles of `m` with rho < q measured by `space`, and the worst rho (1 when none).
+std::uint32_t count_below(const TriangleStore& m, const std::function<Vec3(VertexId)>& space, double q,
+                          double* worst = nullptr);
+
+}  // namespace sm

@@ -1,0 +1,207 @@
+// The quality floor (mesh/quality_floor.h) through the 2D mesher: a narrow inlet reaches
+// the floor by splitting its sides on their curves; a 5-degree corner is reported with
+// its angle, once, and the work stays bounded; faces sharing a split curve stay conforming.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "exact/triangle_rho.h"
+#include "geo/model.h"
+#include "mesh/mesh1d.h"
+#include "mesh/mesh2d.h"
+#include "mesh/quality_floor.h"
+
+using namespace sm;
+
+namespace {
+
+// A closed polygon of Lines through `pts` (counter-clockwise) as a Plane Surface.
+int qf_add_polygon(geo::Model& m, const std::vector<Vec2>& pts, double lc) {
+  const int p = m.new_point_tag();
+  const int n = static_cast<int>(pts.size());
+  for (int i = 0; i < n; ++i) REQUIRE(m.add_point(p + i, {pts[i].x, pts[i].y, 0}, lc).ok());
+  const int c = m.new_curve_tag();
+  std::vector<int> curves;
+  for (int i = 0; i < n; ++i) {
+    REQUIRE(m.add_curve(c + i, geo::CurveKind::Line, {p + i, p + (i + 1) % n}).ok());
+    curves.push_back(c + i);
+  }
+  const int l = m.new_loop_tag();
+  REQUIRE(m.add_curve_loop(l, curves).ok());
+  const int s = m.new_surface_tag();
+  REQUIRE(m.add_plane_surface(s, {l}).ok());
+  return s;
+}
+
+struct QfMeshed {
+  ModelMesh mesh;
+  Mesh2dResult r2;
+  double min_rho = 1;
+};
+
+// Meshed at one size everywhere (no sizes from points, none extended from the boundary),
+// as a coast is: the curves' nodes do not see how narrow the water between them is.
+QfMeshed qf_mesh(const geo::Model& m, double floor, double size = 0.115) {
+  QfMeshed out;
+  Mesh1dOptions o1;
+  o1.size.from_points = false;
+  o1.size.extend_from_boundary = 0;
+  o1.size.max = size;
+  Mesh1dResult r1 = mesh_curves(m, o1);
+  REQUIRE(r1.ok());
+  out.mesh = std::move(r1.mesh);
+  Mesh2dOptions o2;
+  o2.size = o1.size;
+  o2.quality_floor = floor;
+  out.r2 = mesh_surfaces(m, out.mesh, o2);
+  INFO(out.r2.error.message);
+  REQUIRE(out.r2.ok());
+  for (const auto& [tag, sf] : out.mesh.surfaces)
+    for (const auto& t : sf.triangles)
+      out.min_rho = std::min(out.min_rho, rho(out.mesh.nodes[t[0]].xyz, out.mesh.nodes[t[1]].xyz, out.mesh.nodes[t[2]].xyz));
+  return out;
+}
+
+// A unit square with an inlet 0.01 wide and 0.4 deep cut into its top, at size 0.115: the
+// triangles at its end have edges ten times its width.
+std::vector<Vec2> qf_inlet() {
+  return {{0, 0}, {1, 0}, {1, 1}, {0.505, 1}, {0.505, 0.6}, {0.495, 0.6}, {0.495, 1}, {0, 1}};
+}
+
+// Every interior edge in exactly two triangles, every boundary edge in one, over all faces.
+bool qf_conforming(const ModelMesh& mesh) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
+  for (const auto& [tag, sf] : mesh.surfaces)
+    for (const auto& t : sf.triangles)
+      for (int e = 0; e < 3; ++e) ++uses[std::minmax(t[e], t[(e + 1) % 3])];
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> on_curve;
+  for (const auto& [tag, cm] : mesh.curves)
+    for (std::size_t k = 0; k + 1 < cm.nodes.size(); ++k) ++on_curve[std::minmax(cm.nodes[k], cm.nodes[k + 1])];
+  for (const auto& [e, n] : uses) {
+    const int expected = on_curve.count(e) ? (n == 2 ? 2 : 1) : 2;
+    if (n != expected) return false;
+    if (n == 1 && !on_curve.count(e)) return false;   // a boundary edge that no curve holds
+  }
+  return true;
+}
+
+}  // namespace
+
+TEST_CASE("quality floor: the isoceles limit of 0.3 is about 9.5 degrees") {
+  CHECK(sharp_angle_limit(0.3) * 180 / 3.14159265358979 == doctest::Approx(9.45).epsilon(0.01));
+  CHECK(sharp_angle_limit(0) == 0);
+}
+
+TEST_CASE("quality floor: a face with a narrow inlet reaches rho >= 0.3") {
+  geo::Model m;
+  qf_add_polygon(m, qf_inlet(), 0.1);
+  const QfMeshed off = qf_mesh(m, 0);
+  MESSAGE("without the floor: rho min " << off.min_rho);
+  REQUIRE(off.min_rho < 0.3);   // the test can fail: the inlet makes slivers
+  const QfMeshed on = qf_mesh(m, 0.3);
+  MESSAGE("with the floor: rho min " << on.min_rho << ", " << on.r2.stats.floor_curve_splits << " curve splits, "
+                                     << on.r2.stats.floor_points << " points");
+  CHECK(on.min_rho >= 0.3);
+  CHECK(on.r2.quality_warnings.empty());
+  CHECK(on.r2.stats.floor_curve_splits + on.r2.stats.floor_points > 0);
+  // The inlet's sides gained nodes on their own lines: the geometry did not change.
+  for (const auto& [tag, cm] : on.mesh.curves)
+    for (std::uint32_t node : cm.nodes) {
+      const Vec3 x = on.mesh.nodes[node].xyz;
+      const geo::ModelCurve* mc = m.curve(tag);
+      const Vec3 a = mc->shape->point(0), b = mc->shape->point(1);
+      CHECK(norm(cross(b - a, x - a)) <= 1e-12 * norm(b - a));
+    }
+  CHECK(qf_conforming(on.mesh));
+}
+
+TEST_CASE("quality floor: a 5-degree corner is reported once, with its angle, and not looped on") {
+  geo::Model m;
+  const double a = 5 * 3.14159265358979 / 180;
+  qf_add_polygon(m, {{0, 0}, {1, 0}, {std::cos(a), std::sin(a)}}, 0.1);
+  const QfMeshed on = qf_mesh(m, 0.3);
+  REQUIRE(on.r2.quality_warnings.size() == 1);
+  const std::string& w = on.r2.quality_warnings[0];
+  MESSAGE(w);
+  CHECK(w.rfind("surface ", 0) == 0);
+  CHECK(w.find("too sharp") != std::string::npos);
+  CHECK(w.find("5.0 degrees at (0, 0, 0)") != std::string::npos);
+  // Bounded: nothing is inserted for the corner's own triangle.
+  CHECK(on.r2.stats.floor_curve_splits + on.r2.stats.floor_points < 300);
+}
+
+TEST_CASE("quality floor: a curve split for one face shows in the face beside it") {
+  // Two squares side by side; the left one (meshed second) has a slot from their common
+  // side x = 1, whose mouth is the right face's: splits of the common curves made for the
+  // left face must reach the right one, meshed before it.
+  geo::Model two;
+  const double lc = 0.1;
+  REQUIRE(two.add_point(1, {0, 0, 0}, lc).ok());
+  REQUIRE(two.add_point(2, {1, 0, 0}, lc).ok());
+  REQUIRE(two.add_point(3, {1, 1, 0}, lc).ok());
+  REQUIRE(two.add_point(4, {0, 1, 0}, lc).ok());
+  REQUIRE(two.add_point(5, {1, 0.505, 0}, lc).ok());
+  REQUIRE(two.add_point(6, {0.6, 0.505, 0}, lc).ok());
+  REQUIRE(two.add_point(7, {0.55, 0.495, 0}, lc).ok());
+  REQUIRE(two.add_point(8, {1, 0.495, 0}, lc).ok());
+  REQUIRE(two.add_point(9, {2, 0, 0}, lc).ok());
+  REQUIRE(two.add_point(10, {2, 1, 0}, lc).ok());
+  // Face 1 (meshed first): the right square, sharing x = 1 from y 0.51 to 1 (curve 3).
+  REQUIRE(two.add_curve(1, geo::CurveKind::Line, {2, 9}).ok());
+  REQUIRE(two.add_curve(2, geo::CurveKind::Line, {9, 10}).ok());
+  REQUIRE(two.add_curve(3, geo::CurveKind::Line, {10, 3}).ok());
+  REQUIRE(two.add_curve(4, geo::CurveKind::Line, {3, 5}).ok());
+  REQUIRE(two.add_curve(5, geo::CurveKind::Line, {5, 8}).ok());
+  REQUIRE(two.add_curve(6, geo::CurveKind::Line, {8, 2}).ok());
+  REQUIRE(two.add_curve_loop(1, {1, 2, 3, 4, 5, 6}).ok());
+  REQUIRE(two.add_plane_surface(1, {1}).ok());
+  // Face 2: the left square with a slot 0.02 wide from x = 1 into it.
+  REQUIRE(two.add_curve(7, geo::CurveKind::Line, {1, 2}).ok());
+  REQUIRE(two.add_curve(8, geo::CurveKind::Line, {5, 6}).ok());
+  REQUIRE(two.add_curve(9, geo::CurveKind::Line, {6, 7}).ok());
+  REQUIRE(two.add_curve(10, geo::CurveKind::Line, {7, 8}).ok());
+  REQUIRE(two.add_curve(11, geo::CurveKind::Line, {4, 1}).ok());
+  REQUIRE(two.add_curve(12, geo::CurveKind::Line, {3, 4}).ok());
+  REQUIRE(two.add_curve_loop(2, {7, -6, -10, -9, -8, -4, 12, 11}).ok());
+  REQUIRE(two.add_plane_surface(2, {2}).ok());
+  const QfMeshed both = qf_mesh(two, 0.3);
+  MESSAGE("two faces: rho min " << both.min_rho << ", " << both.r2.stats.floor_curve_splits << " curve splits, "
+                                  << both.r2.stats.floor_points << " points");
+  CHECK(both.min_rho >= 0.3);
+  CHECK(qf_conforming(both.mesh));
+}
+
+TEST_CASE("quality floor: a strip 0.01 wide under a face sharing its side never ends worse") {
+  // The strip (face 2) shares its top with face 1, meshed before it: that curve is not
+  // split (face 1's triangles on it would be cut unoptimised), the bottom alone cannot
+  // mend the strip's slivers, and the first, loss-allowing run ends worse: the floor puts
+  // everything back and its never-worse run changes nothing it cannot improve.
+  geo::Model m;
+  REQUIRE(m.add_point(1, {0, 0, 0}, 1).ok());
+  REQUIRE(m.add_point(2, {1, 0, 0}, 1).ok());
+  REQUIRE(m.add_point(3, {1, 0.01, 0}, 1).ok());
+  REQUIRE(m.add_point(4, {0, 0.01, 0}, 1).ok());
+  REQUIRE(m.add_point(5, {1, 1, 0}, 1).ok());
+  REQUIRE(m.add_point(6, {0, 1, 0}, 1).ok());
+  const std::vector<std::pair<int, int>> lines = {{1, 2}, {2, 3}, {3, 4}, {4, 1}, {3, 5}, {5, 6}, {6, 4}};
+  for (std::size_t i = 0; i < lines.size(); ++i)
+    REQUIRE(m.add_curve(static_cast<int>(i + 1), geo::CurveKind::Line, {lines[i].first, lines[i].second}).ok());
+  REQUIRE(m.add_curve_loop(1, {-3, 5, 6, 7}).ok());
+  REQUIRE(m.add_plane_surface(1, {1}).ok());
+  REQUIRE(m.add_curve_loop(2, {1, 2, 3, 4}).ok());
+  REQUIRE(m.add_plane_surface(2, {2}).ok());
+  const QfMeshed off = qf_mesh(m, 0);
+  const QfMeshed on = qf_mesh(m, 0.3);
+  MESSAGE("strip: rho min " << off.min_rho << " -> " << on.min_rho << ", " << on.r2.quality_warnings.size()
+                            << " warnings");
+  REQUIRE(off.min_rho < 0.3);
+  CHECK(on.min_rho >= off.min_rho);
+  CHECK(on.mesh.curves.at(3).nodes == off.mesh.curves.at(3).nodes);   // the shared curve kept
+  CHECK(qf_conforming(on.mesh));
+  REQUIRE(on.r2.quality_warnings.size() == 1);
+  CHECK(on.r2.quality_warnings[0].rfind("surface 2: ", 0) == 0);
+  CHECK(on.r2.quality_warnings[0].find("still below Mesh.QualityFloor = 0.3") != std::string::npos);
+}
