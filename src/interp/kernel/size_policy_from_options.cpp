@@ -4,6 +4,7 @@
 // Mesh.ElementsAcrossChannels -> field/channel_width.h on the coastlines' surfaces.
 #include "interp/kernel/size_policy_from_options.h"
 
+#include <algorithm>
 #include <array>
 #include <set>
 #include <string_view>
@@ -75,7 +76,29 @@ field::FieldPtr with_channel_sizes(Interpreter& in, field::FieldPtr background) 
   if (!chains) return background;   // a coastline's curve was deleted since the import
   field::ChannelWidthOptions opts;
   opts.elements_across = n;
-  opts.size_min = o.number("Mesh.MeshSizeMin");
+  // A channel narrower than the coastline's accuracy gamma is not in the coast as drawn
+  // (the coarsening moved the shore by up to gamma), so the criterion never asks for
+  // elements smaller than the smallest gamma on the coast: without this floor the straits
+  // of metres the data keeps open refine the world ocean's mesh at no gain in fidelity.
+  double gamma_floor = field::kMaxLc;
+  for (const auto& [id, def] : k.coastlines) {
+    const auto curves_of = coastline_curves(k, id);
+    const auto f = def.options.find("AccuracyField");
+    const auto at = def.option_at.find("AccuracyField");
+    if (!curves_of || curves_of->empty() || f == def.options.end() || at == def.option_at.end()) continue;
+    const auto own = ctx.curve_chains(*curves_of);
+    if (!own) continue;
+    if (f->second.nums().empty()) continue;
+    const int field_id = static_cast<int>(f->second.nums().front());
+    const field::FieldPtr gamma = built_fields(in, field_id, at->second).shared(field_id);
+    for (const field::CoastChain& c : *own) {
+      std::vector<double> g(c.points.size());
+      field::eval_input(*gamma, nullptr, c.points, g);
+      for (double v : g)
+        if (v > 0) gamma_floor = std::min(gamma_floor, v);
+    }
+  }
+  opts.size_min = std::max(o.number("Mesh.MeshSizeMin"), gamma_floor < field::kMaxLc ? gamma_floor : 0.0);
   opts.size_max = o.number("Mesh.MeshSizeMax");
   auto channels = field::make_channel_width_field(std::move(*chains), opts);
   return field::min_on_entities(std::move(background), std::move(channels), std::move(curves), std::move(surfaces));

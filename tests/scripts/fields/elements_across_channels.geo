@@ -9,9 +9,11 @@ Point(2) = {0, 0, R};
 PolarSphere(1) = {1, 2};
 Field[1] = MathEval;
 Field[1].F = "20e3";
+Field[2] = MathEval;   // the coast's accuracy: the criterion never goes below it
+Field[2].F = "2e3";
 Coastline[1] = Loops2;
 Coastline[1].FileName = "../../data/field/strait_loops2.txt";
-Coastline[1].AccuracyField = 1;
+Coastline[1].AccuracyField = 2;
 Coastline[1].CurveType = "Line";
 Coastline[1].Region = {-0.5, 1.6, -0.5, 1.0};
 loops[] = Coastline{1};
@@ -29,5 +31,10 @@ Printf("more coast nodes: %g", on - off >= 10 && on - off <= 30);   // expect: m
 Mesh.ElementsAcrossChannels = 4;
 Mesh 1;
 Printf("more with 4: %g", Mesh.NbNodes > on);   // expect: more with 4: 1
+// With the accuracy at 20 km the strait (11 km) is narrower than the coast is drawn: no
+// refinement for it.
+Field[2].F = "20e3";
+Mesh 1;
+Printf("none below the accuracy: %g", Mesh.NbNodes == off);   // expect: none below the accuracy: 1
 Mesh 2;
 Printf("meshed: %g", Mesh.NbTriangles > 0);     // expect: meshed: 1
