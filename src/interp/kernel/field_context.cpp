@@ -149,7 +149,9 @@ field::BuildContext make_build_context(const geo::Model& model, std::filesystem:
       const geo::Curve& c = *m->curve(std::abs(last_signed))->shape;
       chain.points.push_back(c.eval(1.0, last_signed < 0).p);
     };
-    for (const auto& [ltag, loop] : m->curve_loops()) {
+    for (const auto& entry : m->curve_loops()) {
+      const int ltag = entry.first;   // not a structured binding: clang 14 lambdas cannot capture one
+      const geo::ModelCurveLoop& loop = entry.second;
       const std::size_t n = loop.curves.size();
       auto in_set = [&](std::size_t i) {
         const auto it = wanted.find(std::abs(loop.curves[i % n]));
