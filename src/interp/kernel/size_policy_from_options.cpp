@@ -46,9 +46,32 @@ field::FieldPtr with_channel_sizes(Interpreter& in, field::FieldPtr background) 
   const double n = o.number("Mesh.ElementsAcrossChannels");
   if (!(n >= 1)) return background;
   const KernelState& k = in.kernel();
+  // The coast curves, and the smallest accuracy gamma at their control points. A channel
+  // narrower than gamma is not in the coast as drawn (the coarsening moved the shore by up
+  // to gamma), so the criterion never asks for elements smaller than that: without this
+  // floor the straits of metres the data keeps open refine the world ocean's mesh at no
+  // gain in fidelity.
   std::vector<int> coast;
-  for (const auto& [id, def] : k.coastlines)
-    if (auto c = coastline_curves(k, id)) coast.insert(coast.end(), c->begin(), c->end());
+  double gamma_floor = field::kMaxLc;
+  for (const auto& [id, def] : k.coastlines) {
+    const auto own = coastline_curves(k, id);
+    if (!own) continue;
+    coast.insert(coast.end(), own->begin(), own->end());
+    const auto f = def.options.find("AccuracyField");
+    const auto at = def.option_at.find("AccuracyField");
+    if (f == def.options.end() || f->second.nums().empty() || at == def.option_at.end()) continue;
+    std::vector<Vec3> pts;
+    for (int c : *own)
+      if (const geo::ModelCurve* mc = k.model.curve(std::abs(c)))
+        for (int v : mc->points)
+          if (const geo::ModelVertex* mv = k.model.vertex(v)) pts.push_back(mv->xyz);
+    const int field_id = static_cast<int>(f->second.nums().front());
+    const field::FieldPtr gamma = built_fields(in, field_id, at->second).shared(field_id);
+    std::vector<double> g(pts.size());
+    field::eval_input(*gamma, nullptr, pts, g);
+    for (double v : g)
+      if (v > 0) gamma_floor = std::min(gamma_floor, v);
+  }
   if (coast.empty()) return background;
   const std::set<int> coast_set = [&] {
     std::set<int> s;
@@ -76,28 +99,6 @@ field::FieldPtr with_channel_sizes(Interpreter& in, field::FieldPtr background) 
   if (!chains) return background;   // a coastline's curve was deleted since the import
   field::ChannelWidthOptions opts;
   opts.elements_across = n;
-  // A channel narrower than the coastline's accuracy gamma is not in the coast as drawn
-  // (the coarsening moved the shore by up to gamma), so the criterion never asks for
-  // elements smaller than the smallest gamma on the coast: without this floor the straits
-  // of metres the data keeps open refine the world ocean's mesh at no gain in fidelity.
-  double gamma_floor = field::kMaxLc;
-  for (const auto& [id, def] : k.coastlines) {
-    const auto curves_of = coastline_curves(k, id);
-    const auto f = def.options.find("AccuracyField");
-    const auto at = def.option_at.find("AccuracyField");
-    if (!curves_of || curves_of->empty() || f == def.options.end() || at == def.option_at.end()) continue;
-    const auto own = ctx.curve_chains(*curves_of);
-    if (!own) continue;
-    if (f->second.nums().empty()) continue;
-    const int field_id = static_cast<int>(f->second.nums().front());
-    const field::FieldPtr gamma = built_fields(in, field_id, at->second).shared(field_id);
-    for (const field::CoastChain& c : *own) {
-      std::vector<double> g(c.points.size());
-      field::eval_input(*gamma, nullptr, c.points, g);
-      for (double v : g)
-        if (v > 0) gamma_floor = std::min(gamma_floor, v);
-    }
-  }
   opts.size_min = std::max(o.number("Mesh.MeshSizeMin"), gamma_floor < field::kMaxLc ? gamma_floor : 0.0);
   opts.size_max = o.number("Mesh.MeshSizeMax");
   auto channels = field::make_channel_width_field(std::move(*chains), opts);
