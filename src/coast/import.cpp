@@ -366,26 +366,24 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
   ro.strait_factor = opt.strait_factor;
   ro.close_straits = opt.close_straits;
   ro.check_splines = opt.check_splines;
-  auto rounds = repair_loops(curves, loops, ro, rep.repair);
-  if (!rounds) {
-    CoastError e = rounds.error();
-    e.file = data.file;
-    return e;
-  }
-  rep.repair_rounds = *rounds;
+  // One repair pass over the loops, its rounds counted; errors name the shoreline file.
+  auto repair = [&]() -> std::optional<CoastError> {
+    auto rounds = repair_loops(curves, loops, ro, rep.repair);
+    if (!rounds) {
+      CoastError e = rounds.error();
+      e.file = data.file;
+      return e;
+    }
+    rep.repair_rounds += *rounds;
+    return std::nullopt;
+  };
+  if (auto e = repair()) return *e;
   const std::size_t merged_before = rep.count(RepairKind::MergedIslands);
   handle_straits(curves, loops, ro, rep.repair);
   // A merge across a strait adds two bridge edges, checked against the polygons only: the
   // curves through them are checked again.
-  if (opt.check_splines && rep.count(RepairKind::MergedIslands) > merged_before) {
-    auto again = repair_loops(curves, loops, ro, rep.repair);
-    if (!again) {
-      CoastError e = again.error();
-      e.file = data.file;
-      return e;
-    }
-    rep.repair_rounds += *again;
-  }
+  if (opt.check_splines && rep.count(RepairKind::MergedIslands) > merged_before)
+    if (auto e = repair()) return *e;
 
   // Orientation once the loops are simple (the extreme-vertex test needs a simple
   // polygon): water on the left, outer loops counter-clockwise, holes clockwise.
@@ -416,15 +414,8 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
       e.file = data.file;
       return e;
     }
-    if (*closed && opt.check_splines) {
-      auto again = repair_loops(curves, loops, ro, rep.repair);
-      if (!again) {
-        CoastError e = again.error();
-        e.file = data.file;
-        return e;
-      }
-      rep.repair_rounds += *again;
-    }
+    if (*closed && opt.check_splines)
+      if (auto e = repair()) return *e;
   }
   step_done();
 
