@@ -18,27 +18,58 @@ namespace sm::field {
 namespace {
 constexpr double kMaxRelief = 1e6;   // metres
 constexpr double kGravity = 9.81;    // m/s^2
+
+// The centred differences the Hessian and slope criteria take on one grid, so that both
+// see the depth the same way: neighbour columns wrapped on a global grid and one-sided
+// (clamped) at the edges of a regional one; neighbour rows clamped; cos(lat) bounded
+// below by the half-width of the polar row, where the longitude derivatives would blow
+// up with 1/cos.
+struct GridStencil {
+  static constexpr double kDeg = std::numbers::pi / 180;
+  explicit GridStencil(const LonLatGrid& grid)
+      : g(grid), dl(grid.dlon * kDeg), dp(grid.dlat * kDeg) {}
+  struct Row {
+    int jm, jp;
+    double sp;    // latitude span of the centred difference (radians)
+    double phi;   // latitude (radians)
+    double c;     // bounded cos(phi)
+  };
+  struct Column {
+    int im, ip;
+    double sl;    // longitude span of the centred difference (radians)
+  };
+  int col(int i) const { return g.period ? g.wrap(i) : std::clamp(i, 0, g.nlon - 1); }
+  Row row(int j) const {
+    const int jm = std::max(j - 1, 0), jp = std::min(j + 1, g.nlat - 1);
+    const double phi = g.lat(j) * kDeg;
+    return {jm, jp, (jp - jm) * dp, phi, std::max(std::cos(phi), std::sin(dp / 2))};
+  }
+  Column column(int i) const {
+    const int im = col(i - 1), ip = col(i + 1);
+    return {im, ip, (g.period ? 2 : ip - im) * dl};
+  }
+
+  const LonLatGrid& g;
+  const double dl, dp;   // grid steps (radians)
+};
+
 }  // namespace
 
 LonLatGrid hessian_criterion(const LonLatGrid& depth, double depth_ref, double radius) {
-  const double deg = std::numbers::pi / 180;
-  const double dl = depth.dlon * deg, dp = depth.dlat * deg;
+  const GridStencil st(depth);
+  const double dl = st.dl, dp = st.dp;
   LonLatGrid out = depth;
   const int nx = depth.nlon, ny = depth.nlat;
-  // Neighbour column: wrapped on a global grid, one-sided (clamped) at the
-  // edges of a regional one.
-  auto col = [&](int i) { return depth.period ? depth.wrap(i) : std::clamp(i, 0, nx - 1); };
+  auto col = [&](int i) { return st.col(i); };
   for (int j = 0; j < ny; ++j) {
-    const int jm = std::max(j - 1, 0), jp = std::min(j + 1, ny - 1);
-    const double sp = (jp - jm) * dp;  // latitude span of the centred difference
-    const double phi = depth.lat(j) * deg;
-    // Near a pole the longitude derivatives blow up with 1/cos; bound cos by
-    // the half-width of the polar row.
-    const double c = std::max(std::cos(phi), std::sin(dp / 2));
-    const double t = std::sin(phi) / c;
+    const GridStencil::Row r = st.row(j);
+    const int jm = r.jm, jp = r.jp;
+    const double sp = r.sp, c = r.c;
+    const double t = std::sin(r.phi) / c;
     for (int i = 0; i < nx; ++i) {
-      const int im = col(i - 1), ip = col(i + 1);
-      const double sl = (depth.period ? 2 : ip - im) * dl;
+      const GridStencil::Column k = st.column(i);
+      const int im = k.im, ip = k.ip;
+      const double sl = k.sl;
       auto h = [&](int a, int b) { return depth.at(a, b) / depth_ref; };
       const double hl = (h(ip, j) - h(im, j)) / sl;
       const double hp = (h(i, jp) - h(i, jm)) / sp;
@@ -95,19 +126,17 @@ class BathymetryField final : public SizeField {
 }  // namespace
 
 LonLatGrid slope_criterion(const LonLatGrid& depth, double n, double radius) {
-  const double deg = std::numbers::pi / 180;
-  const double dl = depth.dlon * deg, dp = depth.dlat * deg;
+  const GridStencil st(depth);
   LonLatGrid out = depth;
   const int nx = depth.nlon, ny = depth.nlat;
-  auto col = [&](int i) { return depth.period ? depth.wrap(i) : std::clamp(i, 0, nx - 1); };
   for (int j = 0; j < ny; ++j) {
-    const int jm = std::max(j - 1, 0), jp = std::min(j + 1, ny - 1);
-    const double sp = (jp - jm) * dp;
-    // As the Hessian: cos bounded by the half-width of the polar row.
-    const double c = std::max(std::cos(depth.lat(j) * deg), std::sin(dp / 2));
+    const GridStencil::Row r = st.row(j);
+    const int jm = r.jm, jp = r.jp;
+    const double sp = r.sp, c = r.c;
     for (int i = 0; i < nx; ++i) {
-      const int im = col(i - 1), ip = col(i + 1);
-      const double sl = (depth.period ? 2 : ip - im) * dl;
+      const GridStencil::Column k = st.column(i);
+      const int im = k.im, ip = k.ip;
+      const double sl = k.sl;
       // Gradient in the orthonormal (east, north) frame, metres per metre.
       const double ge = (depth.at(ip, j) - depth.at(im, j)) / (sl * radius * c);
       const double gn = (depth.at(i, jp) - depth.at(i, jm)) / (sp * radius);
