@@ -12,6 +12,7 @@
 #include "coast/read_lonlat_text.h"
 #include "coast/read_shapefile.h"
 #include "coast/constant_accuracy.h"
+#include "coast/loop_uv.h"
 
 using namespace sm;
 using namespace sm::coast;
@@ -24,20 +25,10 @@ Coastline load(const char* name) {
   return std::move(*c);
 }
 
-std::vector<Vec2> loop_uv(const CoastModel& m, std::uint32_t l) {
-  std::vector<Vec2> p;
-  const auto& loop = m.loops[l];
-  for (std::uint32_t c : loop.curves) {
-    const auto& uv = m.curves[c].uv;
-    p.insert(p.end(), uv.begin(), loop.curves.size() > 1 ? uv.end() - 1 : uv.end());
-  }
-  return p;
-}
-
 // Invariants every model must satisfy.
 void check_model(const CoastModel& m) {
   std::vector<std::vector<Vec2>> polys;
-  for (std::uint32_t l = 0; l < m.loops.size(); ++l) polys.push_back(loop_uv(m, l));
+  for (std::uint32_t l = 0; l < m.loops.size(); ++l) polys.push_back(testing::loop_uv(m, l));
   CHECK(find_intersections(polys).empty());
   for (const CoastSurface& s : m.surfaces) {
     CHECK(ring_orientation(polys[s.outer]) == Sign::Positive);

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "coast/constant_accuracy.h"
+#include "coast/loop_uv.h"
 #include "coast/import.h"
 #include "coast/intersections.h"
 #include "exact/ring.h"
@@ -51,23 +52,13 @@ ImportOptions pass_options(double min_width) {
   return o;
 }
 
-std::vector<Vec2> pass_loop_uv(const CoastModel& m, std::uint32_t l) {
-  std::vector<Vec2> p;
-  const auto& loop = m.loops[l];
-  for (std::uint32_t c : loop.curves) {
-    const auto& uv = m.curves[c].uv;
-    p.insert(p.end(), uv.begin(), loop.curves.size() > 1 ? uv.end() - 1 : uv.end());
-  }
-  return p;
-}
-
 // The surface whose water holds (lon, lat), or -1.
 int pass_sea_of(const CoastModel& m, geo::LonLat ll) {
   const Vec2 uv = geo::PolarSphere({0, 0, 0}, 1.0).param_from_lonlat(ll);
   for (std::size_t s = 0; s < m.surfaces.size(); ++s) {
-    if (!point_in_ring(pass_loop_uv(m, m.surfaces[s].outer), uv)) continue;
+    if (!point_in_ring(testing::loop_uv(m, m.surfaces[s].outer), uv)) continue;
     bool in_hole = false;
-    for (std::uint32_t h : m.surfaces[s].holes) in_hole = in_hole || point_in_ring(pass_loop_uv(m, h), uv);
+    for (std::uint32_t h : m.surfaces[s].holes) in_hole = in_hole || point_in_ring(testing::loop_uv(m, h), uv);
     if (!in_hole) return static_cast<int>(s);
   }
   return -1;
@@ -75,7 +66,7 @@ int pass_sea_of(const CoastModel& m, geo::LonLat ll) {
 
 void pass_check_clean(const CoastModel& m) {
   std::vector<std::vector<Vec2>> polys;
-  for (std::uint32_t l = 0; l < m.loops.size(); ++l) polys.push_back(pass_loop_uv(m, l));
+  for (std::uint32_t l = 0; l < m.loops.size(); ++l) polys.push_back(testing::loop_uv(m, l));
   CHECK(find_intersections(polys).empty());
   for (const CoastSurface& s : m.surfaces) {
     CHECK(ring_orientation(polys[s.outer]) == Sign::Positive);
