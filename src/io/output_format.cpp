@@ -7,6 +7,7 @@
 #include "io/msh_writer.h"
 #include "io/png_writer.h"
 #include "io/svg_writer.h"
+#include "io/ugrid_writer.h"
 #include "io/vtk_writer.h"
 
 namespace sm::io {
@@ -45,11 +46,15 @@ bool write_gr3(const MeshModel& m, const OutputSettings& s, const std::string& p
   return save_schism(m, s.ocean, path, error);
 }
 
+bool write_ugrid(const MeshModel& m, const OutputSettings& s, const std::string& path, std::string* error) {
+  return save_ugrid(m, s.ocean, path, error);
+}
+
 using In = OutputInput;
 
 // MSH holds everything Gmsh meshes; legacy VTK cells and point data but no partitions;
 // the pictures draw any polygon; ADCIRC's fort.14 is triangles only, SCHISM's hgrid.gr3
-// takes quadrangles too.
+// takes quadrangles too; UGRID netCDF holds mixed faces and node variables.
 //  name      ext     default file  Mesh.Format version input       writer        quads  parts  data   note
 constexpr OutputFormat kFormats[] = {
     {"msh",    ".msh", "",          1,  0,   In::Mesh,      &write_msh,    true,  true,  true,  "", ""},
@@ -63,6 +68,7 @@ constexpr OutputFormat kFormats[] = {
     {"fort14", ".14",  "fort.14",   0,  0,   In::OceanGrid, &write_fort14, false, false, false, "ADCIRC", ""},
     {"gr3",    ".gr3", "hgrid.gr3", 0,  0,   In::OceanGrid, &write_gr3,    true,  false, false,
      "SCHISM hgrid.gr3 + hgrid.ll", "SCHISM's hgrid.gr3 comes with hgrid.ll beside it: give a file name"},
+    {"ugrid",  ".nc",  "",          0,  0,   In::OceanGrid, &write_ugrid,  true,  false, true,  "UGRID netCDF", ""},
 };
 
 }  // namespace

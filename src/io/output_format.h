@@ -17,7 +17,7 @@ namespace sm::io {
 enum class OutputInput {
   Mesh,        ///< the mesh with its node coordinates as Mesh.NodeCoordinates asks (MSH, VTK)
   Picture,     ///< PictureOptions (SVG, PNG)
-  OceanGrid,   ///< OceanGridOptions: depths and boundary strings (fort.14, hgrid.gr3)
+  OceanGrid,   ///< OceanGridOptions: depths and boundary strings (fort.14, hgrid.gr3, UGRID)
 };
 
 /// Everything any writer reads; each reads its part (OutputFormat::input).

@@ -168,7 +168,7 @@ TEST_CASE("cli: exit statuses of the binary") {
         "stereomesh: error: cannot write '" + d + "no/s.json': No such file or directory\n");
   CHECK(run_stderr(bin + " -2 -v 0 " + d + "square.geo -o " + d + "noext") ==
         "stereomesh: error: cannot write '" + d + "noext': the file name has no extension (use .msh, .vtk, .svg, "
-        ".png, .14 or .gr3) [file-write-error]\n");
+        ".png, .14, .gr3 or .nc) [file-write-error]\n");
   // Lon/lat node coordinates of a planar model: a clear error, no file.
   CHECK(run_stderr(bin + " -2 -v 0 -coords lonlat " + d + "square.geo -o " + d + "ll.msh") ==
         "stereomesh: error: cannot write '" + d + "ll.msh': lon/lat node coordinates need a mesh on a sphere "

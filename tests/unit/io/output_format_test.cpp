@@ -36,8 +36,8 @@ TEST_CASE("output formats: Mesh.Format numbers and extensions pick the first row
   CHECK(output_format_of_extension(".gr3")->name == "gr3");
   CHECK(output_format_of_extension("") == nullptr);
   CHECK(output_format_of_extension(".txt") == nullptr);
-  CHECK(output_format_extensions() == ".msh, .vtk, .svg, .png, .14 or .gr3");
-  CHECK(output_format_names() == "msh, msh2, msh22, msh4, msh41, vtk, svg, png, fort14, gr3");
+  CHECK(output_format_extensions() == ".msh, .vtk, .svg, .png, .14, .gr3 or .nc");
+  CHECK(output_format_names() == "msh, msh2, msh22, msh4, msh41, vtk, svg, png, fort14, gr3, ugrid");
 }
 
 TEST_CASE("output formats: what each can hold") {
@@ -51,7 +51,7 @@ TEST_CASE("output formats: what each can hold") {
 TEST_CASE("output formats: the help lists every name, rows sharing a note together, within the width") {
   const std::string help = output_format_help(22, 100);
   CHECK(help == "output format: msh, msh2, msh22, msh4, msh41, vtk, svg or png (a picture),\n"
-                "                      fort14 (ADCIRC), gr3 (SCHISM hgrid.gr3 + hgrid.ll)");
+                "                      fort14 (ADCIRC), gr3 (SCHISM hgrid.gr3 + hgrid.ll), ugrid (UGRID netCDF)");
   for (const OutputFormat& f : output_formats()) CHECK(help.find(f.name) != std::string::npos);
   // Narrower: more lines, none past the width (a line starts after the 22 columns of the flag).
   const std::string narrow = output_format_help(22, 60);
