@@ -13,3 +13,11 @@ RegionalSeaAt[] = {CentralGulfOfMexico[]};
 Call RegionalSea;
 ShorePoints[] = RegionalShorePoints[];  ShoreBox[] = RegionalBox[];
 Call ShoreProximity;  OceanFields[] = {ShoreField};  Call OceanSize;
+// ETOPO5 depths at the nodes of the fort.14 / hgrid.gr3 / UGRID file (5 m at least: the
+// shallowest water a wetting-free run takes), and the Courant time step in the summary.
+GulfDepth = newf;
+Field[GulfDepth] = Bathymetry;
+Field[GulfDepth].FileName = StrCat(BathyDir, "etopo5_global_0.25deg.nc");
+Field[GulfDepth].Output = "depth";
+Field[GulfDepth].MinDepth = 5;
+Mesh.DepthField = GulfDepth;

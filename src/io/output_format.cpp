@@ -55,6 +55,7 @@ using In = OutputInput;
 // MSH holds everything Gmsh meshes; legacy VTK cells and point data but no partitions;
 // the pictures draw any polygon; ADCIRC's fort.14 is triangles only, SCHISM's hgrid.gr3
 // takes quadrangles too; UGRID netCDF holds mixed faces and node variables.
+// fort.14 and hgrid.gr3 give every node a depth (the last column: depth required).
 //  name      ext     default file  Mesh.Format version input       writer        quads  parts  data   note
 constexpr OutputFormat kFormats[] = {
     {"msh",    ".msh", "",          1,  0,   In::Mesh,      &write_msh,    true,  true,  true,  "", ""},
@@ -65,9 +66,9 @@ constexpr OutputFormat kFormats[] = {
     {"vtk",    ".vtk", "",          16, 0,   In::Mesh,      &write_vtk,    true,  false, true,  "", ""},
     {"svg",    ".svg", "",          0,  0,   In::Picture,   &write_svg,    true,  false, false, "a picture", ""},
     {"png",    ".png", "",          0,  0,   In::Picture,   &write_png,    true,  false, false, "a picture", ""},
-    {"fort14", ".14",  "fort.14",   0,  0,   In::OceanGrid, &write_fort14, false, false, false, "ADCIRC", ""},
+    {"fort14", ".14",  "fort.14",   0,  0,   In::OceanGrid, &write_fort14, false, false, false, "ADCIRC", "", true},
     {"gr3",    ".gr3", "hgrid.gr3", 0,  0,   In::OceanGrid, &write_gr3,    true,  false, false,
-     "SCHISM hgrid.gr3 + hgrid.ll", "SCHISM's hgrid.gr3 comes with hgrid.ll beside it: give a file name"},
+     "SCHISM hgrid.gr3 + hgrid.ll", "SCHISM's hgrid.gr3 comes with hgrid.ll beside it: give a file name", true},
     {"ugrid",  ".nc",  "",          0,  0,   In::OceanGrid, &write_ugrid,  true,  false, true,  "UGRID netCDF", ""},
 };
 

@@ -49,6 +49,7 @@ struct OutputFormat {
   std::string_view note;               ///< --help: "(a picture)" after the name; rows in a run with the
                                        ///< same note are listed "a or b (note)"
   std::string_view needs_file_name;    ///< why standard output or a FIFO will not do, "" when it will
+  bool depth_required = false;         ///< every node has a depth (all 0 without Mesh.DepthField)
 };
 
 /// Every format, in the order --help lists them; the first is the default (MSH).

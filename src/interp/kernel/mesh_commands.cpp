@@ -341,14 +341,24 @@ void exec_mesh(Interpreter& in, StmtId id, const CommandStmt& c) {
   if (f.failed()) in.fail_with_notes(s.range, f.kind, f.message, f.notes);
 }
 
+// An ocean-model grid (fort.14, hgrid.gr3) holds a depth per node that the model runs on:
+// written without Mesh.DepthField it is all zeros, which loads and is wrong, so say so.
+void warn_if_no_depth(Interpreter& in, const io::OutputFormat& f, const std::string& path, SourceRange at) {
+  if (f.depth_required && !(in.options().number("Mesh.DepthField") > 0))
+    in.diags().report(at, Diag::OutputWithoutDepth, path, f.name);
+}
+
 void exec_save(Interpreter& in, StmtId id, const CommandStmt& c) {
   const Stmt& s = in.ast().stmt(id);
   std::string name = in.eval_string(c.arg);
   // Relative to the script (Gmsh: relative to the directory of the file being parsed).
   std::filesystem::path p(name);
   if (p.is_relative()) p = std::filesystem::path(in.sources().path(s.range.file)).parent_path() / p;
+  const SourceRange at = c.arg.valid() ? in.ast().expr(c.arg).range : s.range;
+  std::string why;
+  if (const io::OutputFormat* f = guess_output_format(in.options(), p.string(), &why)) warn_if_no_depth(in, *f, name, at);
   if (const std::string err = save_mesh(in, p.string(), ""); !err.empty())
-    in.fail_fmt(c.arg.valid() ? in.ast().expr(c.arg).range : s.range, Diag::FileWriteError, name, err);
+    in.fail_fmt(at, Diag::FileWriteError, name, err);
 }
 
 }  // namespace
@@ -397,6 +407,26 @@ bool mesh_from_command_line(Interpreter& in, int dim, const std::string& output,
     diags.report_message(SourceRange{}, Diag::NotSupportedYet, "'-3' is not supported: stereomesh meshes surfaces");
     return false;
   }
+  // The file and its format are known before meshing: a name that picks no format is
+  // refused now rather than after minutes of meshing, and a depthless ocean grid said.
+  std::string path = output;
+  if (path.empty()) {
+    std::filesystem::path p(first_script);
+    const io::OutputFormat* row = io::find_output_format(format);
+    if (!row) row = &io::output_formats().front();
+    if (!row->default_file_name.empty()) p.replace_filename(std::string(row->default_file_name));
+    else p.replace_extension(std::string(row->extension));
+    path = p.string();
+  }
+  {
+    std::string why;
+    const io::OutputFormat* row = format.empty() ? guess_output_format(in.options(), path, &why) : io::find_output_format(format);
+    if (!row) {
+      diags.report(SourceRange{}, Diag::FileWriteError, path, why.empty() ? "unknown format '" + format + "'" : why);
+      return false;
+    }
+    warn_if_no_depth(in, *row, path, SourceRange{});
+  }
   MeshFailure f;
   try {
     f = mesh_model(in, dim, SourceRange{});
@@ -411,15 +441,6 @@ bool mesh_from_command_line(Interpreter& in, int dim, const std::string& output,
     auto h = diags.report_message(at, f.kind, f.message);
     for (std::size_t i = 1; i < f.notes.size(); ++i) h.note(f.notes[i].range, f.notes[i].message);
     return false;
-  }
-  std::string path = output;
-  if (path.empty()) {
-    std::filesystem::path p(first_script);
-    const io::OutputFormat* row = io::find_output_format(format);
-    if (!row) row = &io::output_formats().front();
-    if (!row->default_file_name.empty()) p.replace_filename(std::string(row->default_file_name));
-    else p.replace_extension(std::string(row->extension));
-    path = p.string();
   }
   std::string err;
   try {

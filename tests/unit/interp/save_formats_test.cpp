@@ -62,3 +62,58 @@ TEST_CASE("save formats: the default -o name comes from the row") {
     CHECK(testing::read_all(dir / expected).size() > 0);
   }
 }
+
+namespace {
+
+// Runs `text` as `dir`/s.geo, then meshes and writes `file` as `-2 -o file` does; the
+// diagnostics' text, and whether meshing started (the mesh statistics were set).
+struct CliRun {
+  bool ok = false, meshed = false;
+  std::string rendered;
+};
+
+CliRun run_cli(const testing::ScratchDir& dir, const std::string& text, const std::string& file) {
+  lang::SourceManager sources;
+  lang::Diagnostics diags(sources);
+  std::ostringstream printed;
+  interp::Interpreter in(sources, diags, printed, {});
+  const std::string script = dir.path / "s.geo";
+  CliRun r;
+  if (in.run_buffer(script, text) != interp::RunStatus::Errors)
+    r.ok = interp::mesh_from_command_line(in, 2, (dir.path / file).string(), "", script);
+  r.meshed = in.options().number("Mesh.NbTriangles") > 0;
+  r.rendered = diags.render_all();
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("save formats: checks before meshing: a name that picks no format, an ocean grid without depths") {
+  testing::ScratchDir dir;
+  CliRun bad = run_cli(dir, kSaveSquare, "mesh.foo");
+  CHECK(!bad.ok);
+  CHECK(!bad.meshed);   // refused before the mesh was made
+  CHECK(bad.rendered.find("unknown file extension '.foo'") != std::string::npos);
+
+  CliRun no_depth = run_cli(dir, kSaveSquare, "fort.14");
+  CHECK(no_depth.ok);
+  CHECK(no_depth.rendered.find("no Mesh.DepthField is set, so every depth in this fort14 file is 0") != std::string::npos);
+  CliRun with_depth = run_cli(dir, kSaveSquare + "Field[1] = MathEval; Field[1].F = \"50\"; Mesh.DepthField = 1;\n",
+                              "hgrid.gr3");
+  CHECK(with_depth.ok);
+  CHECK(with_depth.rendered.find("output-without-depth") == std::string::npos);
+  // UGRID has no depth column to fill: a depth variable is written only with a depth field.
+  CliRun ugrid = run_cli(dir, kSaveSquare, "mesh.nc");
+  CHECK(ugrid.ok);
+  CHECK(ugrid.rendered.find("output-without-depth") == std::string::npos);
+
+  // Save in a script: the warning at the Save statement's file name.
+  const std::string saved = (dir.path / "saved.gr3").string();
+  lang::SourceManager sources;
+  lang::Diagnostics diags(sources);
+  std::ostringstream printed;
+  interp::Interpreter in(sources, diags, printed, {});
+  REQUIRE(in.run_buffer((dir.path / "t.geo").string(), kSaveSquare + "Mesh 2;\nSave \"" + saved + "\";\n") !=
+          interp::RunStatus::Errors);
+  CHECK(diags.render_all().find("t.geo:5:6: warning: '" + saved + "': no Mesh.DepthField") != std::string::npos);
+}
