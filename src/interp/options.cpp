@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "base/check.h"
+#include "interp/node_data_names.h"
 
 namespace sm::interp {
 namespace {
@@ -210,6 +211,10 @@ std::string Options::set_string(std::string_view name, std::string v, bool inter
   if (info.kind != OptionKind::String)
     return fmt::format("option '{}' is a {}, not a string", name, kind_name(info.kind));
   if (info.read_only && !internal) return fmt::format("option '{}' is read-only", name);
+  if (name == "Mesh.NodeData") {
+    std::string why;
+    if (split_node_data_names(v, &why).empty() && !why.empty()) return why;
+  }
   strs_[i] = std::move(v);
   return "";
 }

@@ -111,6 +111,25 @@ void write_physical_names(Out& o, const MeshModel& m) {
 
 // ---- MSH 2.2 ---------------------------------------------------------------
 
+// One $NodeData section per field, over the written nodes (tag, node) in tag order: one
+// string tag (the name), one real tag (time 0), three integer tags (time step 0, one
+// component, the node count); in binary the tag is an int and the value a double.
+void write_node_data(Out& o, const std::vector<NodeData>& data,
+                     const std::vector<std::pair<std::uint64_t, std::uint32_t>>& written, bool binary) {
+  for (const NodeData& d : data) {
+    o.f("$NodeData\n1\n\"{}\"\n1\n0\n3\n0\n1\n{}\n", d.name, written.size());
+    for (const auto& [t, n] : written) {
+      if (binary) {
+        o.bin<int>(static_cast<int>(t));
+        o.bin<double>(d.values[n]);
+      } else {
+        o.f("{} {:.16g}\n", t, d.values[n]);
+      }
+    }
+    o.text(binary ? "\n$EndNodeData\n" : "$EndNodeData\n");
+  }
+}
+
 void write_msh22(Out& o, const MeshModel& m, const MshOptions& opt, const Plan& p) {
   // Only nodes used by written elements are output, numbered in the order of
   // their owning entities.
@@ -174,6 +193,11 @@ void write_msh22(Out& o, const MeshModel& m, const MshOptions& opt, const Plan& 
   }
   if (opt.binary) o.text("\n");
   o.text("$EndElements\n");
+  if (!opt.node_data.empty()) {
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> written;
+    for (std::uint32_t n : node_order) written.emplace_back(tag[n], n);
+    write_node_data(o, opt.node_data, written, opt.binary);
+  }
 }
 
 // ---- MSH 4.1 ---------------------------------------------------------------
@@ -324,6 +348,13 @@ void write_msh41(Out& o, const MeshModel& m, const MshOptions& opt, const Plan& 
     }
   }
   o.text(opt.binary ? "\n$EndElements\n" : "$EndElements\n");
+  if (!opt.node_data.empty()) {
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> written;
+    for (std::size_t i : p.order)
+      if (node_block[i])
+        for (std::uint32_t n : m.entities[i].nodes) written.emplace_back(tag[n], n);
+    write_node_data(o, opt.node_data, written, opt.binary);
+  }
 }
 
 void write_all(Out& o, const MeshModel& m, const MshOptions& opt) {

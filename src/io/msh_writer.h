@@ -6,6 +6,7 @@
 #include <string>
 
 #include "io/mesh_model.h"
+#include "io/node_data.h"
 
 namespace sm::io {
 
@@ -14,6 +15,7 @@ struct MshOptions {
   bool binary = false;           // Mesh.Binary
   bool save_all = false;         // Mesh.SaveAll: also entities outside physical groups
   bool save_parametric = false;  // Mesh.SaveParametric (4.1 only): curve t, surface u v
+  std::vector<NodeData> node_data{};  // Mesh.NodeData: one $NodeData section each (time 0, step 0)
 };
 
 /// Serialises to a string (tests, small meshes).

@@ -20,6 +20,7 @@ bool write_msh(const MeshModel& m, const OutputSettings& s, const std::string& p
   o.binary = s.binary;
   o.save_all = s.save_all;
   o.save_parametric = s.save_parametric;
+  o.node_data = s.node_data;
   return save_msh(m, o, path, error);
 }
 
@@ -27,6 +28,7 @@ bool write_vtk(const MeshModel& m, const OutputSettings& s, const std::string& p
   VtkOptions o;
   o.binary = s.binary;
   o.save_all = s.save_all;
+  o.node_data = s.node_data;
   return save_vtk(m, o, path, error);
 }
 
@@ -47,7 +49,7 @@ bool write_gr3(const MeshModel& m, const OutputSettings& s, const std::string& p
 }
 
 bool write_ugrid(const MeshModel& m, const OutputSettings& s, const std::string& path, std::string* error) {
-  return save_ugrid(m, s.ocean, path, error);
+  return save_ugrid(m, s.ocean, s.node_data, path, error);
 }
 
 using In = OutputInput;

@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "io/mesh_model.h"
+#include "io/node_data.h"
 #include "io/ocean_grid.h"
 #include "io/picture.h"
 
@@ -28,6 +29,7 @@ struct OutputSettings {
   int msh_version = 41;           ///< 22 or 41, from OutputFormat::msh_file_version or Mesh.MshFileVersion
   PictureOptions picture;
   OceanGridOptions ocean;
+  std::vector<NodeData> node_data;  ///< Mesh.NodeData, for the rows that hold node data
 };
 
 /// Writes `mesh` to `path` atomically; false with *error (without the path) on failure.

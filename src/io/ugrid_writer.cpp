@@ -194,7 +194,8 @@ class NcFile {
 
 }  // namespace
 
-std::string ugrid_to_bytes(const MeshModel& mesh, const OceanGridOptions& opt, std::string* error) {
+std::string ugrid_to_bytes(const MeshModel& mesh, const OceanGridOptions& opt, std::string* error,
+                           const std::vector<NodeData>& node_data) {
   if (std::string why = validate_mesh_model(mesh); !why.empty()) {
     *error = why;
     return {};
@@ -249,6 +250,13 @@ std::string ugrid_to_bytes(const MeshModel& mesh, const OceanGridOptions& opt, s
   if (!opt.depth.empty()) {
     vdepth = node_var("mesh2d_node_depth", "sea_floor_depth_below_geoid", "depth at the mesh nodes (Mesh.DepthField)", "m");
     nc.text(vdepth, "positive", "down");
+  }
+  // Mesh.NodeData's fields; its depth is the one above (the same Mesh.DepthField).
+  std::vector<std::pair<int, const NodeData*>> extra;
+  for (const NodeData& d : node_data) {
+    if (d.name == "depth" && vdepth >= 0) continue;
+    const std::string name = "mesh2d_node_" + d.name;
+    extra.emplace_back(node_var(name.c_str(), "", d.long_name.c_str(), d.units.c_str()), &d);
   }
   const int vf = nc.var("mesh2d_face_nodes", NC_INT, {d_face, d_max});
   nc.text(vf, "cf_role", "face_node_connectivity");
@@ -314,6 +322,10 @@ std::string ugrid_to_bytes(const MeshModel& mesh, const OceanGridOptions& opt, s
     for (std::size_t i = 0; i < nn; ++i) x[i] = opt.depth[u.nodes[i]];
     nc.put(vdepth, x);
   }
+  for (const auto& [var, d] : extra) {
+    for (std::size_t i = 0; i < nn; ++i) x[i] = d->values[u.nodes[i]];
+    nc.put(var, x);
+  }
   nc.put(vf, u.face_nodes);
   if (ne) {
     nc.put(ve, u.edge_nodes);
@@ -325,8 +337,9 @@ std::string ugrid_to_bytes(const MeshModel& mesh, const OceanGridOptions& opt, s
   return bytes;
 }
 
-bool save_ugrid(const MeshModel& mesh, const OceanGridOptions& opt, const std::string& path, std::string* error) {
-  const std::string bytes = ugrid_to_bytes(mesh, opt, error);
+bool save_ugrid(const MeshModel& mesh, const OceanGridOptions& opt, const std::vector<NodeData>& node_data,
+                const std::string& path, std::string* error) {
+  const std::string bytes = ugrid_to_bytes(mesh, opt, error, node_data);
   if (bytes.empty()) return false;
   base::OutputFile out;
   if (!out.open(path) || !out.write(bytes) || !out.commit()) {

@@ -11,15 +11,19 @@
 #include <string>
 
 #include "io/mesh_model.h"
+#include "io/node_data.h"
 #include "io/ocean_grid.h"
 
 namespace sm::io {
 
 /// The file's bytes (the netCDF file built in memory): tests, and the writer below.
 /// Empty with *error on failure.
-std::string ugrid_to_bytes(const MeshModel& mesh, const OceanGridOptions& opt, std::string* error);
+/// `node_data`: more node variables, mesh2d_node_<name> (Mesh.NodeData).
+std::string ugrid_to_bytes(const MeshModel& mesh, const OceanGridOptions& opt, std::string* error,
+                           const std::vector<NodeData>& node_data = {});
 
 /// Writes `path` atomically (base/output_file.h); *error is the reason, without the path.
-bool save_ugrid(const MeshModel& mesh, const OceanGridOptions& opt, const std::string& path, std::string* error);
+bool save_ugrid(const MeshModel& mesh, const OceanGridOptions& opt, const std::vector<NodeData>& node_data,
+                const std::string& path, std::string* error);
 
 }  // namespace sm::io

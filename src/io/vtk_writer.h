@@ -7,14 +7,9 @@
 #include <vector>
 
 #include "io/mesh_model.h"
+#include "io/node_data.h"
 
 namespace sm::io {
-
-/// A scalar per node of MeshModel::xyz (for example the size field).
-struct NodeData {
-  std::string name;
-  std::vector<double> values;
-};
 
 struct VtkOptions {
   bool xml = false;      // .vtu instead of legacy .vtk

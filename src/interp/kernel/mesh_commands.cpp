@@ -19,6 +19,7 @@
 #include "interp/kernel/dispatch.h"
 #include "interp/kernel/field_context.h"
 #include "interp/kernel/field_eval.h"
+#include "interp/kernel/node_data_export.h"
 #include "interp/kernel/ocean_grid_export.h"
 #include "interp/kernel/output_options.h"
 #include "interp/kernel/size_policy_from_options.h"
@@ -310,6 +311,9 @@ std::string save_mesh(Interpreter& in, const std::string& path, const std::strin
   }
   if (!f->needs_file_name.empty() && base::writes_in_place(path)) return std::string(f->needs_file_name);
   io::OutputSettings settings;
+  // In space, before the node coordinates are rewritten for the Mesh rows.
+  if (f->holds_node_data)
+    if (std::string why = node_data_for_output(in, mm, settings.node_data); !why.empty()) return why;
   switch (f->input) {
     case io::OutputInput::OceanGrid:
       if (std::string why = ocean_grid_options(in, path, mm, settings.ocean); !why.empty()) return why;

@@ -43,7 +43,7 @@ TEST_CASE("vtk: every variant reads back in meshio with the same data") {
     for (bool binary : {false, true}) {
       const std::string path = fmt::format("/tmp/sm_vtk_{}.{}", binary ? "bin" : "ascii", xml ? "vtu" : "vtk");
       std::string error;
-      REQUIRE(save_vtk(m, {xml, binary, false, {{"size", size}}}, path, &error));
+      REQUIRE(save_vtk(m, {xml, binary, false, {{"size", "m", "", size}}}, path, &error));
       REQUIRE(std::system(fmt::format("/usr/bin/python3 {} {} > /tmp/sm_vtk_out.txt", script, path).c_str()) == 0);
       std::ifstream in("/tmp/sm_vtk_out.txt");
       std::stringstream got;
@@ -57,6 +57,6 @@ TEST_CASE("vtk: every variant reads back in meshio with the same data") {
 TEST_CASE("vtk: node data of the wrong length is an error, nothing written") {
   const MeshModel m = sm::io::testing::grid_square(2);
   std::string error;
-  CHECK_FALSE(save_vtk(m, {false, false, false, {{"size", {1.0, 2.0}}}}, "/tmp/sm_vtk_bad.vtk", &error));
+  CHECK_FALSE(save_vtk(m, {false, false, false, {{"size", "m", "", {1.0, 2.0}}}}, "/tmp/sm_vtk_bad.vtk", &error));
   CHECK(error.find("node data 'size' has 2 values for 9 nodes") != std::string::npos);
 }
