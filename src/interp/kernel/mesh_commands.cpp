@@ -424,10 +424,10 @@ std::vector<StageTime> run_stages(Interpreter& in) {
   return fold_small_stages(out, "field ", kMinFieldSeconds, "fields");
 }
 
-std::string finish_run(Interpreter& in) {
+std::string finish_run(Interpreter& in, bool print_time) {
   KernelState& k = in.kernel();
   const std::vector<StageTime> stages = run_stages(in);
-  if (in.options().number("General.Verbosity") >= 4) {
+  if (print_time && in.options().number("General.Verbosity") >= 4) {
     std::fflush(stdout);
     std::fputs(format_time_line(stages).c_str(), stderr);
     std::fflush(stderr);

@@ -30,9 +30,10 @@ inline constexpr double kMinFieldSeconds = 0.1;
 /// started.
 std::vector<StageTime> run_stages(Interpreter& in);
 
-/// The end of a run (after the scripts and -1/-2's meshing and writing): prints the
-/// account as the `Time:` line on stderr at General.Verbosity 4 and returns the last 2D
-/// mesh's statistics as JSON with the same stages ("" when no 2D mesh was made).
-std::string finish_run(Interpreter& in);
+/// The end of a run (after the scripts and -1/-2's meshing and writing): with
+/// `print_time`, prints the account as the `Time:` line on stderr at General.Verbosity 4;
+/// returns the last 2D mesh's statistics as JSON with the same stages ("" when no 2D
+/// mesh was made).
+std::string finish_run(Interpreter& in, bool print_time = true);
 
 }  // namespace sm::interp
