@@ -125,9 +125,10 @@ int run(const std::vector<std::string>& argv) {
   if (!errors && !interp.stopped() && interp.exit_request() < 0 && a.mesh_dim >= 1 && !a.files.empty() &&
       !sm::interp::mesh_from_command_line(interp, a.mesh_dim, a.output, a.format, a.files.front()))
     errors = true;
-  // --stats: the statistics of the 2D mesh as JSON, written atomically.
+  // The run's time account (the Time: line; a failed run ends with its errors instead),
+  // and the statistics with it as JSON for --stats, written atomically.
+  const std::string json = sm::interp::finish_run(interp, !errors);
   if (!errors && !a.stats_file.empty()) {
-    const std::string& json = interp.kernel().mesh_stats_json;
     sm::base::OutputFile out;
     if (json.empty()) {
       std::fprintf(stderr, "stereomesh: --stats: no 2D mesh was made (use -2 or 'Mesh 2;')\n");

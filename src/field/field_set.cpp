@@ -136,6 +136,12 @@ void FieldSet::build_into(int id, const BuildContext& ctx, BuiltFields& out,
                    }
                    return f;
                  }};
+  // The kind's own set-up time (its references were built above, each in its own stage).
+  struct SetupStage {
+    Progress* p;
+    ~SetupStage() { progress_end(p); }
+  } stage{ctx.setup_clock};
+  progress_begin(ctx.setup_clock, "field " + opts.kind().name, 0);
   try {
     out.fields_.emplace(id, opts.kind().make(in));
   } catch (FieldError& e) {

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "base/progress.h"
 #include "base/vec.h"
 #include "field/coast_chain.h"
 #include "field/field.h"
@@ -37,6 +38,9 @@ struct BuildContext {
   std::function<std::optional<std::vector<int>>(int id)> coastline_curves;
   /// Relative data file names (Structured, Bathymetry) resolve against this.
   std::filesystem::path base_dir;
+  /// Told of each kind's set-up as a stage "field <Kind>" (the run's time account); may be
+  /// null.
+  Progress* setup_clock = nullptr;
 };
 
 using FieldPtr = std::shared_ptr<const SizeField>;

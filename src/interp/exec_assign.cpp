@@ -344,8 +344,17 @@ void Interpreter::exec_delete(const Stmt& s, const DeleteStmt& d) {
     case DeleteWhat::Model:
     case DeleteWhat::All:
       // Gmsh 4.8.4 destroys the geometry with its tags and the fields: newp, newreg and newf
-      // start again at 1.
-      kernel_ = KernelState{};
+      // start again at 1. The run's time account and the progress display are the
+      // run's, not the model's: they carry on.
+      {
+        StageClock clock = std::move(kernel_.clock);
+        std::vector<StageTime> parts = std::move(kernel_.mesh2d_parts);
+        Progress* progress = kernel_.progress;
+        kernel_ = KernelState{};
+        kernel_.clock = std::move(clock);
+        kernel_.mesh2d_parts = std::move(parts);
+        kernel_.progress = progress;
+      }
       return;
     case DeleteWhat::Physicals: kernel_.model.clear_physicals(); return;
     default: break;

@@ -14,6 +14,7 @@
 #include "base/progress.h"
 #include "field/field_set.h"
 #include "geo/model.h"
+#include "interp/stage_clock.h"
 #include "interp/value.h"
 #include "lang/source.h"
 #include "mesh/model_mesh.h"
@@ -56,8 +57,17 @@ struct KernelState {
   std::map<std::pair<int, int>, lang::SourceRange> created_at;
   /// The mesh of the last `Mesh n;` (kernel/mesh_commands.cpp), what `Save` writes.
   std::shared_ptr<const ModelMesh> mesh;
-  /// Statistics of the last `Mesh 2;` as JSON (for `--stats FILE.json`); empty before.
-  std::string mesh_stats_json;
+  /// Statistics of the last `Mesh 2;` (for `--stats FILE.json` and the end of the run's
+  /// account, mesh_commands.h); has_mesh_stats is false before.
+  MeshStats mesh_stats;
+  bool has_mesh_stats = false;
+  /// Where the run's wall time went (interp/stage_clock.h): the script's evaluation, the
+  /// import, the field set-up by kind, 1D, 2D, the statistics, the writing. Mutable:
+  /// building fields from a const state still spends time that the account charges.
+  mutable StageClock clock;
+  /// The 2D mesher's own stages (boundary, refine, ...) summed over the run's `Mesh 2`s:
+  /// the account shows them in place of its one "2D" stage.
+  std::vector<StageTime> mesh2d_parts;
   /// Where long kernel stages report (the CLI's stderr display); null: nobody listens.
   /// Kernel calls take it through progress_sink() (interp/progress_sink.h).
   Progress* progress = nullptr;

@@ -15,12 +15,20 @@ namespace sm {
 
 namespace {
 
-double quantile(const std::vector<double>& sorted, double q) {
-  if (sorted.empty()) return 0;
-  const double pos = q * static_cast<double>(sorted.size() - 1);
+// The q-quantile of `v` (linear between the two order statistics around q (n - 1)), as
+// from the sorted values; `v` is reordered. Selection instead of a sort: linear in the
+// edges, where sorting the 2.9 million of the 3 km world took a tenth of the statistics.
+double quantile(std::vector<double>& v, double q) {
+  if (v.empty()) return 0;
+  const double pos = q * static_cast<double>(v.size() - 1);
   const std::size_t i = static_cast<std::size_t>(pos);
   const double f = pos - static_cast<double>(i);
-  return i + 1 < sorted.size() ? sorted[i] * (1 - f) + sorted[i + 1] * f : sorted[i];
+  const auto at = v.begin() + static_cast<std::ptrdiff_t>(i);
+  std::nth_element(v.begin(), at, v.end());
+  if (i + 1 >= v.size()) return *at;
+  // The next order statistic: the smallest of those after the i-th.
+  const double next = *std::min_element(at + 1, v.end());
+  return *at * (1 - f) + next * f;
 }
 
 }  // namespace
@@ -111,7 +119,6 @@ MeshStats compute_stats(const ModelMesh& mesh, const std::vector<const SizeAt3*>
   s.edges = ratio.size();
   if (ratio.empty()) return s;
   s.share_len_07_14 = static_cast<double>(in_range) / static_cast<double>(ratio.size());
-  std::sort(ratio.begin(), ratio.end());
   s.len_median = quantile(ratio, 0.5);
   s.len_p05 = quantile(ratio, 0.05);
   s.len_p95 = quantile(ratio, 0.95);

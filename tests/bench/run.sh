@@ -3,6 +3,7 @@
 # written to docs/benchmarks.md. Not part of the test suite: it takes a few minutes.
 #
 #   tests/bench/run.sh [BUILD_DIR]      (default: build; needs the bench_* programs built)
+#   tests/bench/run.sh --scale [BUILD_DIR [WORLD_TXT]]   (the full world's stages only)
 #
 # What it runs, each case through both command lines on the same .geo, one thread
 # (`stereomesh -2 -nt 1 -algo A X.geo` and `gmsh -2 -nt 1 -algo A X.geo`), timed and its peak
@@ -24,6 +25,12 @@
 # beside the checkout (it stops with a message otherwise).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
+# --scale [BUILD_DIR [WORLD_TXT]]: the full-resolution world's stages at 30, 10 and 3 km
+# (scale_stages.sh), printed, instead of the side-by-side run.
+if [[ ${1:-} == --scale ]]; then
+  shift
+  exec "$here/scale_stages.sh" "$@"
+fi
 root="$(cd "$here/../.." && pwd)"
 build="$(cd "${1:-$root/build}" && pwd)"
 out="$root/docs/benchmarks.md"

@@ -3,6 +3,7 @@
 // runs coast::build_coast_model and turns its loops into points, curves and curve loops.
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -362,6 +363,9 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
   l2.utm_equatorial_radius = number_option(d, "UTMEquatorialRadius", l2.utm_equatorial_radius);
   l2.utm_polar_radius = number_option(d, "UTMPolarRadius", l2.utm_polar_radius);
 
+  // The kernel's reading and building is the account's "import" stage; making the
+  // script's entities from its loops below is the script's own time.
+  std::optional<StageScope> import_stage(std::in_place, &in.kernel().clock, nullptr, "import");
   auto data = coast::read_coastline(*coast::parse_coast_format(d.format), file->strs().front(), l2);
   if (!data) {
     auto f = d.option_at.find("FileName");
@@ -373,6 +377,7 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
     }
   }
   auto built = coast::build_coast_model(std::move(*data), io);
+  import_stage.reset();
   if (!built) {
     const coast::CoastError& e = built.error();
     if (auto o = d.option_at.find(e.option); !e.option.empty() && o != d.option_at.end()) {

@@ -234,6 +234,7 @@ void invalidate_field_cache(Interpreter& in) { in.kernel().field_cache.reset(); 
 
 field::BuildContext kernel_build_context(const KernelState& k, const CurveMeshNodes* mesh_nodes) {
   field::BuildContext ctx = make_build_context(k.model, {}, mesh_nodes);
+  ctx.setup_clock = &k.clock;
   const KernelState* state = &k;
   ctx.coastline_curves = [state](int id) { return coastline_curves(*state, id); };
   return ctx;
@@ -252,6 +253,7 @@ const field::BuiltFields& built_fields(Interpreter& in, int root, SourceRange us
     in.fail_fmt(use, Diag::MissingField, fmt::format("Field[{}] is not defined", root));
   check_reference_depth(in, root, use);
   try {
+    const StageScope stage(&k.clock, nullptr, "fields");
     field::BuildContext ctx = kernel_build_context(k, nullptr);
     return k.field_cache->by_root.emplace(root, k.fields.build(root, ctx)).first->second;
   } catch (const field::FieldError& e) {
@@ -281,6 +283,7 @@ field::FieldPtr background_size_field(Interpreter& in, const CurveMeshNodes* mes
     return field::checked_size_field(built_fields(in, id, k.background_field_at).shared(id), id, kind_of(in, id));
   check_reference_depth(in, id, k.background_field_at);
   try {
+    const StageScope stage(&k.clock, nullptr, "fields");
     return field::checked_size_field(k.fields.build(id, kernel_build_context(k, mesh_nodes)).shared(id),
                                      id, kind_of(in, id));
   } catch (const field::FieldError& e) {

@@ -109,6 +109,16 @@ bool mesh2d_algorithm(int algo, Mesh2dAlgorithm& out) {
   }
 }
 
+// `t` summed into the entry of its name in `times` (appended when there is none).
+void add_stage_time(std::vector<StageTime>& times, const StageTime& t) {
+  for (StageTime& have : times)
+    if (have.name == t.name) {
+      have.seconds += t.seconds;
+      return;
+    }
+  times.push_back(t);
+}
+
 // Publishes the statistics as read-only options and prints the summary.
 void publish_stats(Interpreter& in, const ModelMesh& mesh, const MeshStats& st) {
   Options& o = in.options();
@@ -120,7 +130,8 @@ void publish_stats(Interpreter& in, const ModelMesh& mesh, const MeshStats& st) 
   o.set_number("Mesh.StatsEdgeRatioMedian", st.len_median, true);
   o.set_number("Mesh.StatsEdgeInRange", st.share_len_07_14, true);
   o.set_number("Mesh.StatsTimeStep", st.time_step.valid ? st.time_step.dt : 0, true);
-  in.kernel().mesh_stats_json = stats_json(st);
+  in.kernel().mesh_stats = st;
+  in.kernel().has_mesh_stats = true;
   if (o.number("General.Verbosity") >= 4) {
     std::fflush(stdout);   // after the Printf output before it when both share a pipe
     std::fputs(format_stats(st).c_str(), stderr);
@@ -149,7 +160,6 @@ TimeStep time_step_of(Interpreter& in, const ModelMesh& mesh, const field::SizeF
 // Meshes the model up to `dim` into the kernel state; on failure returns why. The
 // mesher's warnings are reported at `where` (the Mesh statement; none for -1/-2).
 MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
-  using Clock = std::chrono::steady_clock;
   KernelState& k = in.kernel();
   if (std::string why = check_elements_across_channels(in.options()); !why.empty()) {
     MeshFailure f{Diag::InvalidOptionValue, std::move(why), {}};
@@ -158,7 +168,11 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
     return f;
   }
   // The background field with the coastlines' channel widths inside its Min.
+  // Shown as a stage when there is a field to set up (not for a model with sizes at points).
+  const bool has_fields = (k.background_field && *k.background_field > 0) || !k.coastlines.empty();
+  std::optional<StageScope> fields_stage(std::in_place, &k.clock, has_fields ? progress_sink(in) : nullptr, "fields");
   const field::FieldPtr background = with_channel_sizes(in, background_size_field(in));
+  fields_stage.reset();
   const double max_elements = in.options().number("Mesh.MaxElements");
   Mesh2dOptions opt2;
   if (dim >= 2) {
@@ -204,7 +218,6 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
     const int id = static_cast<int>(depth_field);
     depth = built_fields(in, id, it != k.option_set_at.end() ? it->second : SourceRange{}).shared(id);
   }
-  const auto t0 = Clock::now();
   Mesh1dOptions opt1 = mesh1d_options(in, background.get());
   opt1.max_elements = max_elements;
   // Many 1D nodes: the faces' budgets first, on a coarse boundary, before the full 1D
@@ -215,25 +228,30 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
       budget = check_face_budgets(k.model, coarse, opt2).error;
       return budget.ok();
     };
+  std::optional<StageScope> stage_1d(std::in_place, &k.clock, nullptr, "1D");
   Mesh1dResult r = mesh_curves(k.model, opt1);
+  stage_1d.reset();
   if (r.error.kind == MeshErrorKind::Stopped) return failure_of(k, budget);
   if (!r.ok()) return {diag_of(r.error), message_of(r.error), provenance_notes(k, r.error)};
   auto mesh = std::make_shared<ModelMesh>(std::move(r.mesh));
-  const double seconds_1d = std::chrono::duration<double>(Clock::now() - t0).count();
   if (dim < 2) {
     in.options().set_number("Mesh.NbNodes", static_cast<double>(mesh->nodes.size()), /*internal=*/true);
     k.mesh = std::move(mesh);
     return {};
   }
   opt2.progress = progress_sink(in);
+  std::optional<StageScope> stage_2d(std::in_place, &k.clock, nullptr, "2D");
   const Mesh2dResult r2 = mesh_surfaces(k.model, *mesh, opt2);
+  stage_2d.reset();
   if (!r2.ok()) return failure_of(k, r2.error);
+  for (const StageTime& t : stage_times(r2.stats)) add_stage_time(k.mesh2d_parts, t);
   // As diagnostics, so that they print in order with Printf and the progress display
   // (the front end drops them below General.Verbosity 2).
   for (const std::string& w : r2.warnings) in.diags().report_message(where, Diag::MeshWarning, w);
   for (const std::string& w : r2.quality_warnings) in.diags().report_message(where, Diag::MeshQualityFloor, w);
   // Statistics against the size each face's mesher aimed at (with the extension from
   // the boundary where it is on).
+  const StageScope stage_stats(&k.clock, progress_sink(in), "statistics");
   MeshStats st = mesh_stats(*mesh, r2.target_sizes);
   // The worst triangle's place in longitude/latitude when its surface is on a sphere.
   if (const geo::ModelSurface* ws = st.min_rho_surface ? k.model.surface(st.min_rho_surface) : nullptr)
@@ -248,8 +266,6 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
       st.has_min_rho_lonlat = true;
       st.min_rho_lon = ll.lon, st.min_rho_lat = ll.lat;
     }
-  st.stages.push_back({"1D", seconds_1d});
-  for (const StageTime& t : stage_times(r2.stats)) st.stages.push_back(t);
   if (depth) st.time_step = time_step_of(in, *mesh, *depth);
   publish_stats(in, *mesh, st);
   k.mesh = std::move(mesh);
@@ -331,6 +347,7 @@ std::string save_mesh(Interpreter& in, const std::string& path, const std::strin
   const double version = f->msh_file_version != 0 ? f->msh_file_version : o.number("Mesh.MshFileVersion");
   settings.msh_version = version < 3 ? 22 : 41;
   std::string error;
+  const StageScope stage(&in.kernel().clock, progress_sink(in), "writing");
   return f->write(mm, settings, path, &error) ? std::string{} : error;
 }
 
@@ -402,6 +419,37 @@ void exec_mesh_stmt(Interpreter& in, StmtId id) {
     case StmtKind::Color: in.not_supported_stmt(id, "Color"); break;
     default: in.not_supported_stmt(id, "Coherence Mesh"); break;
   }
+}
+
+std::vector<StageTime> run_stages(Interpreter& in) {
+  const KernelState& k = in.kernel();
+  std::vector<StageTime> out;
+  for (const StageTime& t : k.clock.stages()) {
+    if (t.name != "2D") {
+      out.push_back(t);
+      continue;
+    }
+    // The mesher's own stages, and what it spent outside them (its set-up, the checks
+    // between stages) so that the parts still add up to the "2D" stage.
+    double parts = 0;
+    for (const StageTime& p : k.mesh2d_parts) out.push_back(p), parts += p.seconds;
+    if (t.seconds - parts >= 0.0005) out.push_back({"2D other", t.seconds - parts});
+  }
+  return fold_small_stages(out, "field ", kMinFieldSeconds, "fields");
+}
+
+std::string finish_run(Interpreter& in, bool print_time) {
+  KernelState& k = in.kernel();
+  const std::vector<StageTime> stages = run_stages(in);
+  if (print_time && in.options().number("General.Verbosity") >= 4) {
+    std::fflush(stdout);
+    std::fputs(format_time_line(stages).c_str(), stderr);
+    std::fflush(stderr);
+  }
+  if (!k.has_mesh_stats) return {};
+  MeshStats st = k.mesh_stats;
+  st.stages = stages;
+  return stats_json(st);
 }
 
 bool mesh_from_command_line(Interpreter& in, int dim, const std::string& output, const std::string& format,

@@ -3,6 +3,9 @@
 #pragma once
 
 #include <string>
+#include <vector>
+
+#include "mesh/mesh_stats.h"
 
 namespace sm::interp {
 
@@ -15,5 +18,22 @@ class Interpreter;
 /// the entities involved); returns false then.
 bool mesh_from_command_line(Interpreter& in, int dim, const std::string& output, const std::string& format,
                             const std::string& first_script);
+
+/// A field kind whose set-up took less than this (seconds) is counted in the account's
+/// "fields" stage instead of having its own.
+inline constexpr double kMinFieldSeconds = 0.1;
+
+/// Where the run's time went so far (interp/stage_clock.h): the script's evaluation, the
+/// import, "fields" (looking fields up and the kinds under kMinFieldSeconds), each other
+/// kind as "field <Kind>", 1D, the 2D mesher's stages, the statistics and the writing,
+/// each once in the order it first ran; they add up to the time since the interpreter
+/// started.
+std::vector<StageTime> run_stages(Interpreter& in);
+
+/// The end of a run (after the scripts and -1/-2's meshing and writing): with
+/// `print_time`, prints the account as the `Time:` line on stderr at General.Verbosity 4;
+/// returns the last 2D mesh's statistics as JSON with the same stages ("" when no 2D
+/// mesh was made).
+std::string finish_run(Interpreter& in, bool print_time = true);
 
 }  // namespace sm::interp

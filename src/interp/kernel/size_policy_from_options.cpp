@@ -94,6 +94,8 @@ field::FieldPtr with_channel_sizes(Interpreter& in, field::FieldPtr background) 
     surfaces.insert(tag);
     curves.insert(own.begin(), own.end());
   }
+  // Its set-up (the chains along every coast, their widths) is this kind's stage.
+  const StageScope stage(&k.clock, nullptr, "field ChannelWidth");
   const field::BuildContext ctx = kernel_build_context(k, nullptr);
   std::optional<std::vector<field::CoastChain>> chains = ctx.curve_chains(coast);
   if (!chains) return background;   // a coastline's curve was deleted since the import

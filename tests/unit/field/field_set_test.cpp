@@ -269,3 +269,38 @@ TEST_CASE("field set: MathEval parse errors carry field id, option and column") 
     CHECK(e.column == 8);
   }
 }
+
+namespace {
+
+// The set-up stages a build reports: "begin NAME" and "end", in order.
+class SetupStageLog final : public Progress {
+ public:
+  std::vector<std::string> events;
+  void begin(std::string_view name, std::uint64_t) override { events.push_back("begin " + std::string(name)); }
+  void update(std::uint64_t) override {}
+  void end() override { events.push_back("end"); }
+};
+
+}  // namespace
+
+TEST_CASE("field set: each kind's set-up is one stage, its references' stages before it, not nested") {
+  FieldSet fs;
+  fs.define(1, "Ball");
+  fs.set(1, "Radius", 1.0);
+  fs.define(2, "MathEval");
+  fs.set(2, "F", std::string("F1 + 1"));
+  fs.define(3, "Max");
+  fs.set(3, "FieldsList", std::vector<double>{1, 2});
+  SetupStageLog log;
+  BuildContext ctx;
+  ctx.setup_clock = &log;
+  fs.build(3, ctx);
+  CHECK(log.events == std::vector<std::string>{"begin field Ball", "end", "begin field MathEval", "end",
+                                               "begin field Max", "end"});
+  // A kind that fails still ends its stage.
+  fs.define(4, "Structured");
+  fs.set(4, "FileName", std::string("/nonexistent/grid.dat"));
+  log.events.clear();
+  CHECK_THROWS_AS(fs.build(4, ctx), FieldError);
+  CHECK(log.events == std::vector<std::string>{"begin field Structured", "end"});
+}
