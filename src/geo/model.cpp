@@ -438,37 +438,63 @@ GeoStatus Model::add_plane_surface(int tag, const std::vector<int>& loops) {
   std::vector<LoopPolygon> probes;   // each loop probed once, then tried as a hole of each outer candidate
   probes.reserve(loops.size());
   for (std::size_t i = 1; i < loops.size(); ++i) probes.push_back(probe_loop(*this, loops_.at(std::abs(loops[i])), g, 16));
-  // The index of the first loop not inside loops[outer_index], or loops.size() when all are.
-  auto first_outside = [&](std::size_t outer_index) {
+  // Where each other loop lies with loops[outer_index] as the outer one: the loops wholly
+  // outside it and those partly outside (some probe points in, some out).
+  struct Placement {
+    std::vector<std::size_t> outside, crossing;
+  };
+  auto place = [&](std::size_t outer_index) {
     LoopPolygon outer = sample_loop(*this, loops_.at(std::abs(loops[outer_index])), g);
     PlaneFrame frame = g ? PlaneFrame{} : plane_frame(outer.xyz);
     const PolygonIndex outer2(g ? outer.uv : frame.project(outer.xyz));
+    Placement p;
     for (std::size_t i = 0; i < loops.size(); ++i) {
       if (i == outer_index) continue;
-      const LoopPolygon probe =
-          i == 0 ? probe_loop(*this, loops_.at(std::abs(loops[0])), g, 16) : probes[i - 1];
-      if (!polygon_inside(g ? probe.uv : frame.project(probe.xyz), outer2)) return i;
+      const LoopPolygon probe = i == 0 ? probe_loop(*this, loops_.at(std::abs(loops[0])), g, 16) : probes[i - 1];
+      const std::vector<Vec2> pts = g ? probe.uv : frame.project(probe.xyz);
+      const std::size_t in = static_cast<std::size_t>(
+          std::count_if(pts.begin(), pts.end(), [&](Vec2 q) { return outer2.contains(q); }));
+      if (in == 0) p.outside.push_back(i);
+      else if (in < pts.size()) p.crossing.push_back(i);
     }
-    return loops.size();
+    return p;
   };
-  const std::size_t bad = first_outside(0);
-  if (bad != loops.size()) {
-    // Gmsh meshes the region the loops bound whatever their order: when a later loop
-    // encloses all the others, it is the outer one. Otherwise the holes cross or lie
-    // outside, and Gmsh's mesh would be wrong: that stays an error.
-    std::size_t outer = 1;
-    while (outer < loops.size() && first_outside(outer) != loops.size()) ++outer;
+  Placement first = place(0);
+  if (!first.outside.empty() || !first.crossing.empty()) {
+    // Gmsh meshes the region the loops bound whatever their order: the loop that encloses
+    // all the others is the outer one. Failing that, one that has no other loop wholly
+    // outside it: Gmsh meshes the curves as discretised, and a hole that crosses the outer
+    // loop only at a scale below the mesh size meshes (benchmarks/2d_large/mediterranean.geo).
+    // The 1D mesher refuses mesh edges that cross (mesh/boundary_recovery.cpp). A loop wholly
+    // outside the outer one would leave a wrong mesh in Gmsh: that stays an error.
+    std::size_t outer = loops.size();
+    Placement chosen;
+    for (int pass = 0; pass < 2 && outer == loops.size(); ++pass)
+      for (std::size_t i = 0; i < loops.size() && outer == loops.size(); ++i) {
+        Placement p = i == 0 ? first : place(i);
+        if (p.outside.empty() && (pass == 1 || p.crossing.empty())) {
+          outer = i;
+          chosen = std::move(p);
+        }
+      }
     if (outer == loops.size()) {
+      const std::size_t bad = first.outside.empty() ? first.crossing.front() : first.outside.front();
       const int l = std::abs(loops[bad]);
       return make_error(GeoErrorKind::HoleOutside, EntityKind::Surface, {tag, l, std::abs(loops[0])},
                         fmt::format("plane surface {}: hole (curve loop {}) is not inside the outer curve loop {}", tag,
                                     l, std::abs(loops[0])));
     }
-    note_compat(fmt::format("plane surface {}: curve loop {} encloses the others but is listed after curve loop {}; Gmsh "
-                            "finds the enclosing loop, and so do we: curve loop {} is the outer one",
-                            tag, std::abs(loops[outer]), std::abs(loops[0]), std::abs(loops[outer])));
-    std::rotate(s.loops.begin(), s.loops.begin() + static_cast<std::ptrdiff_t>(outer),
-                s.loops.begin() + static_cast<std::ptrdiff_t>(outer) + 1);
+    if (outer != 0) {
+      note_compat(fmt::format("plane surface {}: curve loop {} encloses the others but is listed after curve loop {}; "
+                              "Gmsh finds the enclosing loop, and so do we: curve loop {} is the outer one",
+                              tag, std::abs(loops[outer]), std::abs(loops[0]), std::abs(loops[outer])));
+      std::rotate(s.loops.begin(), s.loops.begin() + static_cast<std::ptrdiff_t>(outer),
+                  s.loops.begin() + static_cast<std::ptrdiff_t>(outer) + 1);
+    }
+    for (std::size_t i : chosen.crossing)
+      note_compat(fmt::format("plane surface {}: hole (curve loop {}) crosses the outer curve loop {}: Gmsh meshes "
+                              "them as discretised, and so do we (the 1D mesh refuses mesh edges that cross)",
+                              tag, std::abs(loops[i]), std::abs(loops[outer])));
   }
   surfaces_.emplace(tag, std::move(s));
   bump_max(2, tag);

@@ -159,9 +159,9 @@ class Model {
   /// Mirror in the plane a x + b y + c z + d = 0.
   GeoStatus symmetry(const std::vector<DimTag>& entities, double a, double b, double c, double d);
   /// "Split Curve{c} Point{...};": pieces between the listed control points (others are
-  /// skipped with a compat note, as Gmsh skips them); a periodic curve is rotated to start
-  /// at the first of them. The curve is replaced by its pieces, also inside curve loops.
-  /// Returns the new curve tags.
+  /// skipped with a compat note, as Gmsh skips them); a closed curve's pieces start at the
+  /// first listed point met after its start point, in the curve's order. The curve is
+  /// replaced by its pieces, also inside curve loops. Returns the new curve tags.
   GeoResult<std::vector<int>> split_curve(int curve, const std::vector<int>& points);
 
   // ---- queries ----

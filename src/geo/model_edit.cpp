@@ -443,10 +443,13 @@ GeoResult<std::vector<int>> Model::split_curve(int tag, const std::vector<int>& 
   }
   std::vector<int> pts = old.points;
   if (old.periodic() && pts.size() > 2 && !split_points.empty()) {
-    // Rotate the closed list to start at the first split point (Gmsh does the same).
+    // A closed curve starts at the first split point met after its start point, in the
+    // curve's order (not the list's): Gmsh walks it from there round to that point again,
+    // and its start point is then an ordinary split point (Geo/Geo.cpp, SplitCurve).
+    std::size_t k = 1;
+    while (k + 1 < pts.size() && !contains(split_points, pts[k])) ++k;
     pts.pop_back();
-    const auto first = std::find(pts.begin(), pts.end(), split_points.front());
-    std::rotate(pts.begin(), first, pts.end());
+    std::rotate(pts.begin(), pts.begin() + static_cast<std::ptrdiff_t>(k % pts.size()), pts.end());
     pts.push_back(pts.front());
   }
   std::vector<std::vector<int>> pieces(1);

@@ -203,7 +203,11 @@ TEST_CASE("plane surfaces: holes inside, holes outside, shared curves") {
   REQUIRE_FALSE(out);
   CHECK(out.error().kind == GeoErrorKind::HoleOutside);
   CHECK(out.error().tags == std::vector<int>{2, 20, 1});
-  CHECK(m.add_plane_surface(3, {1, 30}).error().kind == GeoErrorKind::HoleOutside);
+  // A hole that crosses the outer loop: Gmsh meshes the discretised curves, so the model
+  // keeps it with a compat note and leaves the crossing to the 1D mesher's check.
+  m.take_compat_notes();
+  REQUIRE(m.add_plane_surface(3, {1, 30}));
+  CHECK(m.take_compat_notes().size() == 1);
   auto shared = m.add_plane_surface(4, {1, 1});
   REQUIRE_FALSE(shared);
   CHECK(shared.error().kind == GeoErrorKind::SharedBoundary);
