@@ -490,6 +490,7 @@ GeoStatus Model::add_plane_surface(int tag, const std::vector<int>& loops) {
                               tag, std::abs(loops[outer]), std::abs(loops[0]), std::abs(loops[outer])));
       std::rotate(s.loops.begin(), s.loops.begin() + static_cast<std::ptrdiff_t>(outer),
                   s.loops.begin() + static_cast<std::ptrdiff_t>(outer) + 1);
+      s.listed_outer = outer;
     }
     for (std::size_t i : chosen.crossing)
       note_compat(fmt::format("plane surface {}: hole (curve loop {}) crosses the outer curve loop {}: Gmsh meshes "
@@ -596,11 +597,14 @@ GeoResult<std::vector<DimTag>> Model::boundary(const std::vector<DimTag>& entiti
     } else if (e.dim == 2) {
       const ModelSurface* s = surface(a);
       if (!s) return missing(EntityKind::Surface, e.tag, {}, " in Boundary");
-      for (std::size_t i = 0; i < s->loops.size(); ++i) {
-        // As Gmsh lists them (setSurfaceGeneratrices): a hole reversed (its curves negated,
-        // in reverse order) so that holes run against the outer loop; the sign of the
-        // surface tag itself is ignored.
-        const int l = s->loops[i];
+      // In the script's order (an outer loop listed after a hole moved to the front).
+      std::vector<int> listed = s->loops;
+      std::rotate(listed.begin(), listed.begin() + 1, listed.begin() + static_cast<std::ptrdiff_t>(s->listed_outer) + 1);
+      for (std::size_t i = 0; i < listed.size(); ++i) {
+        // As Gmsh lists them (setSurfaceGeneratrices): every loop after the first listed one
+        // reversed (its curves negated, in reverse order), so that holes run against the
+        // outer loop; the sign of the surface tag itself is ignored.
+        const int l = listed[i];
         const auto& cs = loops_.at(std::abs(l)).curves;
         const int sign = (l > 0) == (i == 0) ? 1 : -1;
         if (sign > 0)

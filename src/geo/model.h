@@ -51,6 +51,7 @@ struct ModelSurface {
   bool filling = false;              // "Surface" (transfinite patch) rather than "Plane Surface"
   int sphere_centre = 0;             // filling: "In Sphere{c}" point tag, 0 if none
   std::vector<int> loops;            // signed loop tags: [0] outer boundary, then holes
+  std::size_t listed_outer = 0;      // where the script listed loops[0] (see add_plane_surface)
   int geometry = 0;                  // parametric on this surface geometry (0: planar)
   std::vector<int> embedded_points;  // Point{...} In Surface{tag}
   std::vector<int> embedded_curves;  // Curve{...} In Surface{tag}

@@ -9,8 +9,23 @@ Curve Loop(2) = {5, 6, 7, 8};
 Curve Loop(3) = {-8, -7, -6, -5};
 Plane Surface(1) = {2, 1};
 Plane Surface(2) = {3};
+// Boundary keeps the script's order: the first listed loop as is, the others reversed.
 b[] = Boundary{Surface{1};};
-Printf("%g", #b[]);  // expect: 8
+Printf("%g", #b[]);
+For i In {0:#b[] - 1}
+  Printf("%g", b[i]);
+EndFor
 s[] = Surface{:};
-Printf("%g %g", s[0], s[1]);  // expect: 1 2
+Printf("%g %g", s[0], s[1]);
 // expect warning: 10:1: gmsh-compat: plane surface 1: curve loop 1 encloses the others but is listed after curve loop 2; Gmsh finds the enclosing loop, and so do we: curve loop 1 is the outer one
+// gmsh 4.8.4 -0 output:
+// expect: 8
+// expect: 5
+// expect: 6
+// expect: 7
+// expect: 8
+// expect: -4
+// expect: -3
+// expect: -2
+// expect: -1
+// expect: 1 2
