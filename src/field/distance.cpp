@@ -23,6 +23,14 @@ class DistanceField final : public SizeField {
   KdTree tree_;
 };
 
+// A listed point or curve that does not exist: Gmsh's Distance skips it (Mesh/Field.cpp).
+void skip_missing(const BuildInputs& in, std::string_view option, std::string_view what, int tag) {
+  if (!in.ctx.compat_note) in.bad(option, fmt::format("{} {} does not exist", what, tag));
+  in.ctx.compat_note(in.id, option,
+                     fmt::format("Field[{}].{} lists {} {}, which does not exist: Gmsh skips it, and so do we", in.id,
+                                 option, what, tag));
+}
+
 FieldPtr make(const BuildInputs& in) {
   const Options& o = in.opts;
   std::vector<Vec3> samples;
@@ -30,8 +38,10 @@ FieldPtr make(const BuildInputs& in) {
     const int tag = static_cast<int>(v);
     std::optional<Vec3> p;
     if (in.ctx.point_position) p = in.ctx.point_position(tag);
-    if (!p) in.bad("PointsList", fmt::format("Point {} does not exist", tag));
-    samples.push_back(*p);
+    if (p)
+      samples.push_back(*p);
+    else
+      skip_missing(in, "PointsList", "Point", tag);
   }
   const int n = static_cast<int>(o.number("NumPointsPerCurve"));
   if (n < 1 && !o.list("CurvesList").empty()) in.bad("NumPointsPerCurve", "must be at least 1");
@@ -39,8 +49,10 @@ FieldPtr make(const BuildInputs& in) {
     const int tag = static_cast<int>(v);
     std::optional<std::vector<Vec3>> s;
     if (in.ctx.curve_samples) s = in.ctx.curve_samples(tag, n);
-    if (!s) in.bad("CurvesList", fmt::format("Curve {} does not exist", tag));
-    samples.insert(samples.end(), s->begin(), s->end());
+    if (s)
+      samples.insert(samples.end(), s->begin(), s->end());
+    else
+      skip_missing(in, "CurvesList", "Curve", tag);
   }
   for (double v : o.list("SurfacesList")) {
     const int tag = static_cast<int>(v);

@@ -41,6 +41,11 @@ struct BuildContext {
   /// Told of each kind's set-up as a stage "field <Kind>" (the run's time account); may be
   /// null.
   Progress* setup_clock = nullptr;
+  /// Where Gmsh is lenient (a Distance field listing a point or curve that does not
+  /// exist: Gmsh skips it), a factory that finds this set calls it with its field id, the
+  /// option and a sentence saying what Gmsh does and what was done, and goes on; without
+  /// it, that is an error. The interpreter reports the sentences as gmsh-compat warnings.
+  std::function<void(int field_id, std::string_view option, const std::string& sentence)> compat_note;
 };
 
 using FieldPtr = std::shared_ptr<const SizeField>;

@@ -63,7 +63,13 @@ void Model::set_max_tag(int dim, int tag) {
   max_tag_[slot] = tag;
 }
 
-GeoStatus Model::check_new_tag(EntityKind kind, int tag, bool exists) const {
+GeoStatus Model::check_new_tag(EntityKind kind, int tag, bool exists) {
+  // Gmsh takes tag 0 for points and physical groups (they are never referred to with a
+  // sign); a curve, loop or surface 0 could not be reversed as -0, so those stay errors.
+  if (tag == 0 && !exists && (kind == EntityKind::Point || kind == EntityKind::Physical)) {
+    note_compat(fmt::format("{} tag 0: Gmsh accepts it; so do we, but tags are meant to be positive", to_string(kind)));
+    return {};
+  }
   if (tag <= 0)
     return make_error(GeoErrorKind::InvalidTag, kind, {tag},
                       fmt::format("{} tag {} is invalid: tags must be positive", to_string(kind), tag));
@@ -257,9 +263,13 @@ GeoStatus Model::set_mesh_size(const std::vector<int>& points, double lc) {
   touch();
   if (!std::isfinite(lc))
     return make_error(GeoErrorKind::BadArgument, EntityKind::Point, points, fmt::format("mesh size {} is not finite", lc));
-  for (int p : points)
-    if (!vertex(p)) return missing(EntityKind::Point, p, {}, " in MeshSize");
-  for (int p : points) vertices_[p].lc = lc > 0 ? lc : kMaxLc;
+  for (int p : points) {
+    if (vertex(p)) {
+      vertices_[p].lc = lc > 0 ? lc : kMaxLc;
+    } else {
+      note_compat(fmt::format("MeshSize of point {}, which does not exist: Gmsh ignores it; so do we", p));
+    }
+  }
   return {};
 }
 
@@ -289,6 +299,19 @@ GeoStatus Model::add_curve(int tag, CurveKind kind, const std::vector<int>& poin
   if (auto s = check_new_tag(EntityKind::Curve, tag, curves_.count(tag) > 0); !s) return s;
   for (int p : points)
     if (!vertex(p)) return missing(EntityKind::Point, p, {tag}, fmt::format(" used by {} {}", to_string(kind), tag));
+  if (points.size() == 2 && points[0] == points[1]) {
+    if (kind == CurveKind::Line) {
+      // Gmsh keeps such a line as a degenerate curve that gets no mesh elements. We
+      // create no curve (a later use of it is an error) but take its tag, as Gmsh does.
+      note_compat(fmt::format("line {} goes from point {} to itself: Gmsh keeps it as a degenerate curve with no "
+                              "mesh elements; we do not create it (only its tag is taken)",
+                              tag, points[0]));
+      bump_max(1, tag);
+      return {};
+    }
+    return make_error(GeoErrorKind::SelfReference, EntityKind::Curve, {tag, points[0]},
+                      fmt::format("{} {} starts and ends at point {}", to_string(kind), tag, points[0]));
+  }
   // A zero-length piece of a Line or Spline: the same point twice in a row. (B-splines and
   // Bezier curves may repeat control points: Gmsh uses that to sharpen them.)
   const bool interpolating = kind == CurveKind::Line || kind == CurveKind::Spline;
@@ -296,19 +319,25 @@ GeoStatus Model::add_curve(int tag, CurveKind kind, const std::vector<int>& poin
     if (points[i] == points[i + 1])
       return make_error(GeoErrorKind::SelfReference, EntityKind::Curve, {tag, points[i]},
                         fmt::format("{} {} uses point {} twice in a row", to_string(kind), tag, points[i]));
-  if (points.size() == 2 && points[0] == points[1])
-    return make_error(GeoErrorKind::SelfReference, EntityKind::Curve, {tag, points[0]},
-                      fmt::format("{} {} starts and ends at point {}", to_string(kind), tag, points[0]));
   if ((kind == CurveKind::Circle || kind == CurveKind::Ellipse) && points.size() >= 3) {
     const int centre = points[1];
     if (points.front() == centre || points.back() == centre || points.front() == points.back())
       return make_error(GeoErrorKind::SelfReference, EntityKind::Curve, {tag},
                         fmt::format("{} {} repeats a point among start, centre and end", to_string(kind), tag));
   }
+  std::vector<int> control = points;
+  if (kind == CurveKind::Ellipse && points.size() == 4 && vertices_.at(points[2]).xyz == vertices_.at(points[1]).xyz) {
+    // Gmsh's ellipse then measures the major axis's angle from a zero vector, which is
+    // 0: the direction of the start point. We use the start point as the major-axis point.
+    note_compat(fmt::format("ellipse {}: the major-axis point {} is the centre: Gmsh then takes the direction of the "
+                            "start point {} as the major axis, and so do we",
+                            tag, points[2], points[0]));
+    control[2] = points[0];
+  }
   ModelCurve c;
   c.tag = tag;
   c.kind = kind;
-  c.points = points;
+  c.points = control;
   c.plane_normal = plane_normal;
   if (!points.empty()) {
     c.begin = points.front();
@@ -406,17 +435,67 @@ GeoStatus Model::add_plane_surface(int tag, const std::vector<int>& loops) {
   s.geometry = std::max(geometry_tag, 0);
   // Holes must lie inside the outer loop: checked in the surface's parameter plane.
   const SurfaceGeometry* g = s.geometry ? &geometries_.at(s.geometry) : nullptr;
-  LoopPolygon outer = sample_loop(*this, loops_.at(std::abs(loops[0])), g);
-  PlaneFrame frame = g ? PlaneFrame{} : plane_frame(outer.xyz);
-  const PolygonIndex outer2(g ? outer.uv : frame.project(outer.xyz));
-  for (std::size_t i = 1; i < loops.size(); ++i) {
-    const int l = std::abs(loops[i]);
-    const LoopPolygon hole = probe_loop(*this, loops_.at(l), g, 16);
-    const std::vector<Vec2> hole2 = g ? hole.uv : frame.project(hole.xyz);
-    if (!polygon_inside(hole2, outer2))
+  std::vector<LoopPolygon> probes;   // each loop probed once, then tried as a hole of each outer candidate
+  probes.reserve(loops.size());
+  for (std::size_t i = 1; i < loops.size(); ++i) probes.push_back(probe_loop(*this, loops_.at(std::abs(loops[i])), g, 16));
+  // Where each other loop lies with loops[outer_index] as the outer one: the loops wholly
+  // outside it and those partly outside (some probe points in, some out).
+  struct Placement {
+    std::vector<std::size_t> outside, crossing;
+  };
+  auto place = [&](std::size_t outer_index) {
+    LoopPolygon outer = sample_loop(*this, loops_.at(std::abs(loops[outer_index])), g);
+    PlaneFrame frame = g ? PlaneFrame{} : plane_frame(outer.xyz);
+    const PolygonIndex outer2(g ? outer.uv : frame.project(outer.xyz));
+    Placement p;
+    for (std::size_t i = 0; i < loops.size(); ++i) {
+      if (i == outer_index) continue;
+      const LoopPolygon probe = i == 0 ? probe_loop(*this, loops_.at(std::abs(loops[0])), g, 16) : probes[i - 1];
+      const std::vector<Vec2> pts = g ? probe.uv : frame.project(probe.xyz);
+      const std::size_t in = static_cast<std::size_t>(
+          std::count_if(pts.begin(), pts.end(), [&](Vec2 q) { return outer2.contains(q); }));
+      if (in == 0) p.outside.push_back(i);
+      else if (in < pts.size()) p.crossing.push_back(i);
+    }
+    return p;
+  };
+  Placement first = place(0);
+  if (!first.outside.empty() || !first.crossing.empty()) {
+    // Gmsh meshes the region the loops bound whatever their order: the loop that encloses
+    // all the others is the outer one. Failing that, one that has no other loop wholly
+    // outside it: Gmsh meshes the curves as discretised, and a hole that crosses the outer
+    // loop only at a scale below the mesh size meshes (benchmarks/2d_large/mediterranean.geo).
+    // The 1D mesher refuses mesh edges that cross (mesh/boundary_recovery.cpp). A loop wholly
+    // outside the outer one would leave a wrong mesh in Gmsh: that stays an error.
+    std::size_t outer = loops.size();
+    Placement chosen;
+    for (int pass = 0; pass < 2 && outer == loops.size(); ++pass)
+      for (std::size_t i = 0; i < loops.size() && outer == loops.size(); ++i) {
+        Placement p = i == 0 ? first : place(i);
+        if (p.outside.empty() && (pass == 1 || p.crossing.empty())) {
+          outer = i;
+          chosen = std::move(p);
+        }
+      }
+    if (outer == loops.size()) {
+      const std::size_t bad = first.outside.empty() ? first.crossing.front() : first.outside.front();
+      const int l = std::abs(loops[bad]);
       return make_error(GeoErrorKind::HoleOutside, EntityKind::Surface, {tag, l, std::abs(loops[0])},
                         fmt::format("plane surface {}: hole (curve loop {}) is not inside the outer curve loop {}", tag,
                                     l, std::abs(loops[0])));
+    }
+    if (outer != 0) {
+      note_compat(fmt::format("plane surface {}: curve loop {} encloses the others but is listed after curve loop {}; "
+                              "Gmsh finds the enclosing loop, and so do we: curve loop {} is the outer one",
+                              tag, std::abs(loops[outer]), std::abs(loops[0]), std::abs(loops[outer])));
+      std::rotate(s.loops.begin(), s.loops.begin() + static_cast<std::ptrdiff_t>(outer),
+                  s.loops.begin() + static_cast<std::ptrdiff_t>(outer) + 1);
+      s.listed_outer = outer;
+    }
+    for (std::size_t i : chosen.crossing)
+      note_compat(fmt::format("plane surface {}: hole (curve loop {}) crosses the outer curve loop {}: Gmsh meshes "
+                              "them as discretised, and so do we (the 1D mesh refuses mesh edges that cross)",
+                              tag, std::abs(loops[i]), std::abs(loops[outer])));
   }
   surfaces_.emplace(tag, std::move(s));
   bump_max(2, tag);
@@ -438,7 +517,8 @@ GeoResult<int> Model::add_physical(int dim, std::optional<int> tag, const std::s
   int t = 0;
   if (tag) {
     t = *tag;
-    if (t <= 0) return check_new_tag(EntityKind::Physical, t, false).error();
+    if (t < 0 || (t == 0 && physicals_.count({dim, 0}) == 0))
+      if (auto st = check_new_tag(EntityKind::Physical, t, false); !st) return st.error();
   } else {
     // A name alone reuses the group of that name in this dimension, else takes 1 + the
     // largest physical tag of any dimension.
@@ -517,11 +597,14 @@ GeoResult<std::vector<DimTag>> Model::boundary(const std::vector<DimTag>& entiti
     } else if (e.dim == 2) {
       const ModelSurface* s = surface(a);
       if (!s) return missing(EntityKind::Surface, e.tag, {}, " in Boundary");
-      for (std::size_t i = 0; i < s->loops.size(); ++i) {
-        // As Gmsh lists them (setSurfaceGeneratrices): a hole reversed (its curves negated,
-        // in reverse order) so that holes run against the outer loop; the sign of the
-        // surface tag itself is ignored.
-        const int l = s->loops[i];
+      // In the script's order (an outer loop listed after a hole moved to the front).
+      std::vector<int> listed = s->loops;
+      std::rotate(listed.begin(), listed.begin() + 1, listed.begin() + static_cast<std::ptrdiff_t>(s->listed_outer) + 1);
+      for (std::size_t i = 0; i < listed.size(); ++i) {
+        // As Gmsh lists them (setSurfaceGeneratrices): every loop after the first listed one
+        // reversed (its curves negated, in reverse order), so that holes run against the
+        // outer loop; the sign of the surface tag itself is ignored.
+        const int l = listed[i];
         const auto& cs = loops_.at(std::abs(l)).curves;
         const int sign = (l > 0) == (i == 0) ? 1 : -1;
         if (sign > 0)

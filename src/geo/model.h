@@ -51,6 +51,7 @@ struct ModelSurface {
   bool filling = false;              // "Surface" (transfinite patch) rather than "Plane Surface"
   int sphere_centre = 0;             // filling: "In Sphere{c}" point tag, 0 if none
   std::vector<int> loops;            // signed loop tags: [0] outer boundary, then holes
+  std::size_t listed_outer = 0;      // where the script listed loops[0] (see add_plane_surface)
   int geometry = 0;                  // parametric on this surface geometry (0: planar)
   std::vector<int> embedded_points;  // Point{...} In Surface{tag}
   std::vector<int> embedded_curves;  // Curve{...} In Surface{tag}
@@ -149,17 +150,19 @@ class Model {
   /// tag survives), then curves with the same kind and control points. Returns the number
   /// of entities merged.
   int coherence();
-  /// "Duplicata{...}": copies (new tags, in order), sharing copied points between copied
-  /// curves and copied curves between copied surfaces. Returns the new entities.
+  /// "Duplicata{...}": copies with new tags taken in Gmsh's order (see model_edit.cpp),
+  /// sharing copied points between copied curves; a missing entity is skipped with a
+  /// compat note. Returns the new entities.
   GeoResult<std::vector<DimTag>> duplicate(const std::vector<DimTag>& entities);
   GeoStatus translate(const std::vector<DimTag>& entities, Vec3 d);
   GeoStatus rotate(const std::vector<DimTag>& entities, Vec3 axis, Vec3 point, double angle);
   GeoStatus dilate(const std::vector<DimTag>& entities, Vec3 centre, Vec3 factors);
   /// Mirror in the plane a x + b y + c z + d = 0.
   GeoStatus symmetry(const std::vector<DimTag>& entities, double a, double b, double c, double d);
-  /// "Split Curve{c} Point{...};": pieces between the listed control points (a periodic
-  /// curve is rotated to start at the first of them); the curve is replaced by its pieces,
-  /// also inside curve loops. Returns the new curve tags.
+  /// "Split Curve{c} Point{...};": pieces between the listed control points (others are
+  /// skipped with a compat note, as Gmsh skips them); a closed curve's pieces start at the
+  /// first listed point met after its start point, in the curve's order. The curve is
+  /// replaced by its pieces, also inside curve loops. Returns the new curve tags.
   GeoResult<std::vector<int>> split_curve(int curve, const std::vector<int>& points);
 
   // ---- queries ----
@@ -203,9 +206,16 @@ class Model {
   /// "SetMaxTag Point(n);" etc. (dim 0..3; -1: curve loops).
   void set_max_tag(int dim, int tag);
 
+  // ---- Gmsh-compatible leniencies ----
+  /// Where Gmsh accepts a statement that is wrong on its face (a hole listed before its
+  /// outer loop, tag 0, a split at a point that is not on the curve...) the kernel does
+  /// what Gmsh does and leaves a sentence saying what Gmsh does and what was done; the
+  /// interpreter reports each as a located gmsh-compat warning. Taking them empties the list.
+  std::vector<std::string> take_compat_notes() { return std::exchange(compat_notes_, {}); }
+
  private:
   GeoStatus add_sphere_geometry(int tag, int centre_point, int pole_point, bool polar);
-  GeoStatus check_new_tag(EntityKind kind, int tag, bool exists) const;
+  GeoStatus check_new_tag(EntityKind kind, int tag, bool exists);   // notes a tag 0 it accepts
   GeoResult<Curve> build_shape(const ModelCurve& c) const;
   GeoStatus rebuild_curves_using(const std::vector<int>& moved_points);
   void bump_max(int slot, int tag);
@@ -224,6 +234,7 @@ class Model {
   void delete_loop(int tag, bool recursive, Usage& u);
   void delete_surface(int tag, bool recursive, Usage& u);
   void touch();   // a new revision_ from one counter shared by all models
+  void note_compat(std::string sentence) { compat_notes_.push_back(std::move(sentence)); }
 
   ModelOptions options_;
   std::map<int, ModelVertex> vertices_;
@@ -237,6 +248,9 @@ class Model {
   std::array<int, 5> max_tag_{0, 0, 0, 0, 0};
   int max_physical_tag_ = 0;   // high-water mark of physical group tags (newreg, auto tags)
   std::uint64_t revision_ = 0;  // 0: the empty model
+  std::vector<std::string> compat_notes_;   // see take_compat_notes()
+  int hidden_loop_tag_ = 0;   // loops of duplicated surfaces: counted down from INT_MAX (see duplicate())
+  bool duplicate_took_spare_points_ = false;   // see coherence()
 };
 
 }  // namespace sm::geo

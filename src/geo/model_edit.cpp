@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <limits>
 #include <tuple>
 
 namespace sm::geo {
@@ -225,9 +226,11 @@ int Model::coherence() {
   // Measured on gmsh 4.8.4: with Geometry.OldNewReg = 1 the next tags after a merge follow
   // the largest surviving tag; with OldNewReg = 0 the high-water marks stay.
   if (options_.old_new_reg) {
-    if (!replace.empty()) max_tag_[0] = vertices_.empty() ? 0 : vertices_.rbegin()->first;
+    // The point tags a Duplicata took for copies Gmsh makes and merges here count as merged.
+    if (!replace.empty() || duplicate_took_spare_points_) max_tag_[0] = vertices_.empty() ? 0 : vertices_.rbegin()->first;
     if (!curve_replace.empty()) max_tag_[1] = curves_.empty() ? 0 : curves_.rbegin()->first;
   }
+  duplicate_took_spare_points_ = false;
   return merged;
 }
 
@@ -235,61 +238,81 @@ int Model::coherence() {
 
 GeoResult<std::vector<DimTag>> Model::duplicate(const std::vector<DimTag>& entities) {
   touch();
-  for (const DimTag& e : entities) {
-    const int t = std::abs(e.tag);
-    if ((e.dim == 0 && !vertices_.count(t)) || (e.dim == 1 && !curves_.count(t)) || (e.dim == 2 && !surfaces_.count(t)) ||
-        e.dim < 0 || e.dim > 2)
-      return make_error(GeoErrorKind::MissingEntity, e.dim >= 0 && e.dim <= 2 ? static_cast<EntityKind>(e.dim) : EntityKind::None,
-                        {e.tag}, fmt::format("cannot duplicate unknown entity {} of dimension {}", t, e.dim));
-  }
-  std::map<int, int> point_copy, curve_copy;
+  // Tags are taken in Gmsh 4.8.4's order (Geo/Geo.cpp, DuplicateCurve/DuplicateSurface):
+  // a surface takes its tag before its curves; a curve takes its tag, then one new point
+  // per control point and two more for its end points, every time, even for a point
+  // already copied. Each source point has one copy here (the first one taken; the
+  // others are tags Gmsh creates and its coherence merges away), and the copied
+  // surface's curve loops, which Gmsh does not have, take tags that no next-tag
+  // variable sees.
+  std::map<int, int> point_copy;
   auto copy_point = [&](int p) {
-    if (auto it = point_copy.find(p); it != point_copy.end()) return it->second;
+    const int t = new_point_tag();
+    bump_max(0, t);
+    if (auto it = point_copy.find(p); it != point_copy.end()) {
+      duplicate_took_spare_points_ = true;
+      return it->second;
+    }
     ModelVertex v = vertices_.at(p);
-    v.tag = new_point_tag();
-    vertices_.emplace(v.tag, v);
-    bump_max(0, v.tag);
-    point_copy[p] = v.tag;
-    return v.tag;
+    v.tag = t;
+    vertices_.emplace(t, v);
+    point_copy[p] = t;
+    return t;
   };
-  auto copy_curve = [&](int c) {
-    if (auto it = curve_copy.find(c); it != curve_copy.end()) return it->second;
+  auto copy_curve = [&](int signed_curve) {
+    const int c = std::abs(signed_curve);
     ModelCurve n = curves_.at(c);
-    for (int& p : n.points) p = copy_point(p);
+    n.tag = new_curve_tag();
+    bump_max(1, n.tag);
+    std::vector<int> copies(n.points.size());
+    // A reversed curve is walked from its end, as Gmsh's reversed curve lists its points.
+    for (std::size_t i = 0; i < n.points.size(); ++i) {
+      const std::size_t k = signed_curve > 0 ? i : n.points.size() - 1 - i;
+      copies[k] = copy_point(n.points[k]);
+    }
+    copy_point(n.begin);
+    copy_point(n.end);
+    n.points = std::move(copies);
     n.begin = n.points.front();
     n.end = n.points.back();
-    n.tag = new_curve_tag();
     const int tag = n.tag;
     curves_.emplace(tag, std::move(n));
-    bump_max(1, tag);
-    curve_copy[c] = tag;
     return tag;
   };
   std::vector<DimTag> out;
   for (const DimTag& e : entities) {
     const int t = std::abs(e.tag);
-    if (e.dim == 0) {
+    if (e.dim == 0 && vertices_.count(t)) {
       out.push_back({0, copy_point(t)});
-    } else if (e.dim == 1) {
+    } else if (e.dim == 1 && curves_.count(t)) {
       out.push_back({1, copy_curve(t)});
-    } else {
+    } else if (e.dim == 2 && surfaces_.count(t)) {
       ModelSurface s = surfaces_.at(t);
+      s.tag = new_surface_tag();
+      bump_max(2, s.tag);
+      std::map<int, int> curve_copy;   // a seam listed twice in a loop stays one curve
       for (int& l : s.loops) {
         ModelCurveLoop nl = loops_.at(std::abs(l));
-        for (int& c : nl.curves) c = c > 0 ? copy_curve(c) : -copy_curve(-c);
-        nl.tag = new_loop_tag();
+        for (int& c : nl.curves) {
+          auto [it, fresh] = curve_copy.emplace(std::abs(c), 0);
+          if (fresh) it->second = copy_curve(c);
+          c = c > 0 ? it->second : -it->second;
+        }
+        nl.tag = std::numeric_limits<int>::max() - hidden_loop_tag_++;
         const int lt = nl.tag;
         loops_.emplace(lt, std::move(nl));
-        bump_max(kLoopSlot, lt);
         l = l > 0 ? lt : -lt;
       }
-      for (int& p : s.embedded_points) p = copy_point(p);
-      for (int& c : s.embedded_curves) c = copy_curve(c);
-      s.tag = new_surface_tag();
+      // Gmsh's copy keeps no embedded entities.
+      s.embedded_points.clear();
+      s.embedded_curves.clear();
       const int st = s.tag;
       surfaces_.emplace(st, std::move(s));
-      bump_max(2, st);
       out.push_back({2, st});
+    } else {
+      note_compat(fmt::format("Duplicata of {} {}, which does not exist: Gmsh reports an error and copies the other "
+                              "entities; we copy the others and warn",
+                              e.dim == 0 ? "point" : e.dim == 1 ? "curve" : e.dim == 2 ? "surface" : "entity", t));
     }
   }
   return out;
@@ -399,7 +422,7 @@ GeoStatus Model::symmetry(const std::vector<DimTag>& entities, double a, double 
 
 // ---- split ----
 
-GeoResult<std::vector<int>> Model::split_curve(int tag, const std::vector<int>& split_points) {
+GeoResult<std::vector<int>> Model::split_curve(int tag, const std::vector<int>& requested_points) {
   touch();
   auto it = curves_.find(tag);
   if (it == curves_.end()) return make_error(GeoErrorKind::MissingEntity, EntityKind::Curve, {tag}, fmt::format("cannot split unknown curve {}", tag));
@@ -408,16 +431,25 @@ GeoResult<std::vector<int>> Model::split_curve(int tag, const std::vector<int>& 
     return make_error(GeoErrorKind::BadArgument, EntityKind::Curve, {tag},
                       fmt::format("cannot split {} {}: only Line, Spline, BSpline and Bezier curves split at control points",
                                   to_string(old.kind), tag));
-  for (int p : split_points)
-    if (!contains(old.points, p))
-      return make_error(GeoErrorKind::BadArgument, EntityKind::Curve, {tag, p},
-                        fmt::format("cannot split curve {} at point {}: not one of its control points", tag, p));
+  std::vector<int> split_points;
+  for (int p : requested_points) {
+    if (contains(old.points, p)) {
+      split_points.push_back(p);
+    } else {
+      note_compat(fmt::format("curve {} is not split at point {}, which is not one of its control points: Gmsh skips "
+                              "such a point, and so do we",
+                              tag, p));
+    }
+  }
   std::vector<int> pts = old.points;
   if (old.periodic() && pts.size() > 2 && !split_points.empty()) {
-    // Rotate the closed list to start at the first split point (Gmsh does the same).
+    // A closed curve starts at the first split point met after its start point, in the
+    // curve's order (not the list's): Gmsh walks it from there round to that point again,
+    // and its start point is then an ordinary split point (Geo/Geo.cpp, SplitCurve).
+    std::size_t k = 1;
+    while (k + 1 < pts.size() && !contains(split_points, pts[k])) ++k;
     pts.pop_back();
-    const auto first = std::find(pts.begin(), pts.end(), split_points.front());
-    std::rotate(pts.begin(), first, pts.end());
+    std::rotate(pts.begin(), pts.begin() + static_cast<std::ptrdiff_t>(k % pts.size()), pts.end());
     pts.push_back(pts.front());
   }
   std::vector<std::vector<int>> pieces(1);

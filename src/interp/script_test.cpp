@@ -81,24 +81,41 @@ ScriptTestResult run_script_test(const std::string& path, const RunSettings& set
   Interpreter interp(sources, diags, out, settings);
   interp.run_file(path);
 
+  // Each diagnostic as "[warning ]line:col: kebab: message"; an expectation without the
+  // message ("line:col: kebab") matches any message of that kind there.
   std::vector<std::string> got;
   for (const auto& d : diags.all()) {
     if (d.severity == lang::Severity::Note) continue;
     const lang::LineCol lc = d.range.valid() ? sources.line_col(d.range.begin_loc()) : lang::LineCol{};
-    got.push_back(fmt::format("{}{}:{}: {}", d.severity == lang::Severity::Warning ? "warning " : "",
-                              lc.line, lc.col, lang::diag_info(d.kind).kebab));
+    got.push_back(fmt::format("{}{}:{}: {}: {}", d.severity == lang::Severity::Warning ? "warning " : "",
+                              lc.line, lc.col, lang::diag_info(d.kind).kebab, d.message));
   }
   std::sort(got.begin(), got.end());
+  std::vector<std::string> unmatched = got;
+  std::vector<std::string> missing;
+  for (const std::string& e : ex.diagnostics) {
+    auto it = std::find_if(unmatched.begin(), unmatched.end(), [&](const std::string& g) {
+      return g == e || (g.size() > e.size() + 2 && g.compare(0, e.size(), e) == 0 && g.compare(e.size(), 2, ": ") == 0);
+    });
+    if (it == unmatched.end())
+      missing.push_back(e);
+    else
+      unmatched.erase(it);
+  }
   std::string why;
+  const auto differ = [&] {
+    return fmt::format("diagnostics differ:\n  expected but not given: {}\n  given but not expected: {}\n",
+                       fmt::join(missing, " | "), fmt::join(unmatched, " | "));
+  };
   if (expect_fail) {
     if (ex.diagnostics.empty()) why += "a fail_ script must list its '// expect error:' lines\n";
-    if (got != ex.diagnostics)
-      why += fmt::format("diagnostics differ:\n  expected: {}\n  got:      {}\n", fmt::join(ex.diagnostics, " | "),
-                         fmt::join(got, " | "));
+    if (!missing.empty() || !unmatched.empty()) why += differ();
   } else {
     const bool has_error = std::any_of(diags.all().begin(), diags.all().end(),
                                        [](const auto& d) { return d.severity == lang::Severity::Error; });
     if (has_error) why += "unexpected errors:\n" + diags.render_all();
+    // A script that lists '// expect warning:' lines gets exactly those warnings.
+    else if (!ex.diagnostics.empty() && (!missing.empty() || !unmatched.empty())) why += differ();
   }
   const std::vector<std::string> lines = split_lines(out.str());
   if (lines != ex.stdout_lines) {

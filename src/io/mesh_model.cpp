@@ -41,7 +41,8 @@ std::string validate_mesh_model(const MeshModel& m) {
     return fmt::format("entity (dim {}, tag {}) listed twice", d->first, d->second);
   for (std::size_t i = 0; i < m.entities.size(); ++i) {
     const EntityMesh& e = m.entities[i];
-    if (e.dim < 0 || e.dim > 3 || e.tag <= 0)
+    // Point 0 is valid: Gmsh takes it in scripts and reads it back from MSH files.
+    if (e.dim < 0 || e.dim > 3 || e.tag < 0 || (e.tag == 0 && e.dim != 0))
       return fmt::format("invalid entity (dim {}, tag {})", e.dim, e.tag);
     for (std::uint32_t n : e.nodes) {
       if (n >= m.xyz.size()) return fmt::format("entity ({}, {}) owns node {} out of range", e.dim, e.tag, n);

@@ -108,13 +108,17 @@ bool builtin_number_constant(std::string_view name, double& out) {
   return false;
 }
 
+std::string gmsh_today(const std::tm& local) {
+  char buf[64];
+  std::strftime(buf, sizeof buf, "%a %b %e %H:%M:%S %Y", &local);
+  return buf;
+}
+
 bool builtin_string_constant(std::string_view name, const BuiltinEnv& env, std::string& out) {
   namespace fs = std::filesystem;
   if (name == "Today") {
     const std::time_t now = std::time(nullptr);
-    char buf[64];
-    std::strftime(buf, sizeof buf, "%a %b %d %H:%M:%S %Y", std::localtime(&now));
-    out = buf;
+    out = gmsh_today(*std::localtime(&now));
     return true;
   }
   if (name == "CurrentDirectory" || name == "CurrentDir") {

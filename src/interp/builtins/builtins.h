@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <ctime>
 #include <map>
 #include <string>
 #include <string_view>
@@ -59,6 +60,10 @@ using BuiltinFn = Value (*)(BuiltinEnv& env, const std::vector<Value>& args);
 BuiltinFn builtin_impl(lang::BuiltinId id);
 /// The implementation of the builtin called `name`, or nullptr.
 BuiltinFn find_builtin(std::string_view name);
+
+/// `Today` for a given local time, as Gmsh prints it (C's ctime layout: the day of the
+/// month padded with a space, "Wed Dec  2 12:05:03 2026").
+std::string gmsh_today(const std::tm& local);
 
 /// The string constants `Today`, `CurrentDirectory`... or false when `name` is none.
 bool builtin_string_constant(std::string_view name, const BuiltinEnv& env, std::string& out);

@@ -240,6 +240,24 @@ field::BuildContext kernel_build_context(const KernelState& k, const CurveMeshNo
   return ctx;
 }
 
+namespace {
+
+// The build context of the interpreter's fields: their gmsh-compat sentences become
+// warnings at the option statement they name (else at `use`), each once.
+field::BuildContext interp_build_context(Interpreter& in, const CurveMeshNodes* mesh_nodes, SourceRange use) {
+  field::BuildContext ctx = kernel_build_context(in.kernel(), mesh_nodes);
+  Interpreter* interp = &in;
+  ctx.compat_note = [interp, use](int id, std::string_view option, const std::string& sentence) {
+    KernelState& k = interp->kernel();
+    if (!k.field_compat_reported.insert(sentence).second) return;
+    auto it = k.field_option_at.find({id, std::string(option)});
+    interp->diags().report(it != k.field_option_at.end() ? it->second : use, Diag::GmshCompat, sentence);
+  };
+  return ctx;
+}
+
+}  // namespace
+
 const field::BuiltFields& built_fields(Interpreter& in, int root, SourceRange use) {
   KernelState& k = in.kernel();
   const std::uint64_t revision = k.model.revision();
@@ -254,7 +272,7 @@ const field::BuiltFields& built_fields(Interpreter& in, int root, SourceRange us
   check_reference_depth(in, root, use);
   try {
     const StageScope stage(&k.clock, nullptr, "fields");
-    field::BuildContext ctx = kernel_build_context(k, nullptr);
+    field::BuildContext ctx = interp_build_context(in, nullptr, use);
     return k.field_cache->by_root.emplace(root, k.fields.build(root, ctx)).first->second;
   } catch (const field::FieldError& e) {
     fail_field_error(in, e, use);
@@ -284,7 +302,7 @@ field::FieldPtr background_size_field(Interpreter& in, const CurveMeshNodes* mes
   check_reference_depth(in, id, k.background_field_at);
   try {
     const StageScope stage(&k.clock, nullptr, "fields");
-    return field::checked_size_field(k.fields.build(id, kernel_build_context(k, mesh_nodes)).shared(id),
+    return field::checked_size_field(k.fields.build(id, interp_build_context(in, mesh_nodes, k.background_field_at)).shared(id),
                                      id, kind_of(in, id));
   } catch (const field::FieldError& e) {
     fail_field_error(in, e, k.background_field_at);

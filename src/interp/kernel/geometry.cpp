@@ -256,8 +256,30 @@ void exec_split_curve(Interpreter& in, const Stmt& s, const SplitCurveStmt& n) {
 
 }  // namespace
 
+void report_compat_notes(Interpreter& in, SourceRange at) {
+  for (std::string& note : in.kernel().model.take_compat_notes()) in.diags().report(at, Diag::GmshCompat, note);
+}
+
+namespace {
+
+// Reports the notes of a statement when it ends, also when it fails after leaving some.
+class CompatNotesAtEnd {
+ public:
+  CompatNotesAtEnd(Interpreter& in, SourceRange at) : in_(in), at_(at) {}
+  CompatNotesAtEnd(const CompatNotesAtEnd&) = delete;
+  CompatNotesAtEnd& operator=(const CompatNotesAtEnd&) = delete;
+  ~CompatNotesAtEnd() { report_compat_notes(in_, at_); }
+
+ private:
+  Interpreter& in_;
+  SourceRange at_;
+};
+
+}  // namespace
+
 std::optional<geo::DimTag> create_geometry(Interpreter& in, StmtId id) {
   const Stmt& s = in.ast().stmt(id);
+  const CompatNotesAtEnd notes{in, where(s)};
   sync_geometry_options(in);
   KernelState& k = in.kernel();
   geo::Model& m = k.model;

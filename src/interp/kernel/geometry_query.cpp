@@ -83,6 +83,7 @@ std::vector<geo::DimTag> apply_transform(Interpreter& in, const Expr& x, const T
     }
     case TransformKind::Duplicata: {
       auto r = m.duplicate(ents);
+      report_compat_notes(in, at);
       if (!r) fail_geo(in, at, r.error());
       for (const geo::DimTag& d : *r) record_created(in.kernel(), d.dim, std::abs(d.tag), at);
       return std::move(*r);

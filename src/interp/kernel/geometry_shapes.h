@@ -30,6 +30,10 @@ std::vector<geo::DimTag> eval_shape_block(Interpreter& in, const lang::ShapeBloc
 /// A Translate/Rotate/Symmetry/Dilate/Duplicata/Boundary expression as entities.
 std::vector<geo::DimTag> eval_shape_expr(Interpreter& in, lang::ExprId e);
 
+/// Reports the kernel's compat notes (geo::Model::take_compat_notes) as gmsh-compat
+/// warnings at `at`.
+void report_compat_notes(Interpreter& in, lang::SourceRange at);
+
 /// Runs a geometry statement (exec_geometry_stmt, kernel/dispatch.h); returns the
 /// elementary entity it created, if any, for a creation inside a shape block.
 std::optional<geo::DimTag> create_geometry(Interpreter& in, lang::StmtId s);

@@ -67,3 +67,24 @@ TEST_CASE("distance: missing entities and non-finite samples are rejected") {
   empty.define(1, "Distance");
   CHECK(eval1(empty, 1, {1, 2, 3}) == 1e22);
 }
+
+TEST_CASE("distance: with a compat_note callback, missing points and curves are skipped as Gmsh skips them") {
+  BuildContext ctx;
+  ctx.point_position = [](int tag) -> std::optional<Vec3> {
+    if (tag == 1) return Vec3{0, 0, 1};
+    return std::nullopt;
+  };
+  ctx.curve_samples = [](int, int) -> std::optional<std::vector<Vec3>> { return std::nullopt; };
+  std::vector<std::string> notes;
+  ctx.compat_note = [&](int id, std::string_view option, const std::string& sentence) {
+    notes.push_back(std::to_string(id) + " " + std::string(option) + ": " + sentence);
+  };
+  FieldSet fs;
+  fs.define(1, "Distance");
+  fs.set(1, "PointsList", std::vector<double>{4, 1});
+  fs.set(1, "CurvesList", std::vector<double>{7});
+  CHECK(eval1(fs, 1, {0, 0, 3}, ctx) == doctest::Approx(2));   // the distance to point 1 only
+  REQUIRE(notes.size() == 2);
+  CHECK(notes[0] == "1 PointsList: Field[1].PointsList lists Point 4, which does not exist: Gmsh skips it, and so do we");
+  CHECK(notes[1] == "1 CurvesList: Field[1].CurvesList lists Curve 7, which does not exist: Gmsh skips it, and so do we");
+}

@@ -142,3 +142,18 @@ TEST_CASE("builtins: constants") {
   CHECK(builtin_string_constant("CurrentFileName", e.env, str));
   CHECK(str == "main.geo");
 }
+
+TEST_CASE("builtins: Today is laid out as Gmsh prints it (ctime: the day padded with a space)") {
+  std::tm t{};
+  t.tm_year = 2026 - 1900;
+  t.tm_mon = 11;
+  t.tm_mday = 2;
+  t.tm_wday = 3;
+  t.tm_hour = 9;
+  t.tm_min = 5;
+  t.tm_sec = 3;
+  CHECK(gmsh_today(t) == "Wed Dec  2 09:05:03 2026");
+  t.tm_mday = 12;
+  t.tm_wday = 6;
+  CHECK(gmsh_today(t) == "Sat Dec 12 09:05:03 2026");
+}

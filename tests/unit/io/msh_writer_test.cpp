@@ -128,6 +128,20 @@ TEST_CASE("msh 2.2 SaveAll: every entity, physical tags written as 0") {
   CHECK(msh_to_string(load_square(), {22, false, true}) == sm::testing::read_all(SM_TEST_DATA "/io/sq22all.msh"));
 }
 
+TEST_CASE("msh: a point entity may have tag 0 (Gmsh writes and reads it), no other entity may") {
+  MeshModel m = load_square();
+  REQUIRE(m.entities[0].dim == 0);
+  m.entities[0].tag = 0;
+  CHECK(validate_mesh_model(m).empty());
+  MeshModel curve0 = load_square();
+  for (EntityMesh& e : curve0.entities)
+    if (e.dim == 1) {
+      e.tag = 0;
+      break;
+    }
+  CHECK(validate_mesh_model(curve0).find("invalid entity (dim 1, tag 0)") != std::string::npos);
+}
+
 TEST_CASE("msh: invalid models are rejected before anything is written") {
   MeshModel m = load_square();
   m.entities[0].nodes.push_back(m.entities[5].nodes[0]);  // a node owned twice
