@@ -52,7 +52,7 @@ double longitude_winding(const std::vector<geo::LonLat>& pts) {
 
 bool same_point(geo::LonLat a, geo::LonLat b) {
   if (a.lat != b.lat) return false;
-  if (std::abs(a.lat) == 90.0) return true;
+  if (a.lon == b.lon || std::abs(a.lat) == 90.0) return true;   // the first test spares the fmod
   return wrap_delta(a.lon, b.lon) == 0.0;
 }
 

@@ -237,7 +237,7 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
   {
     Coastline c;
     c.rings = std::move(rings);
-    rep.clean = clean(c);
+    rep.clean = clean(c, opt.threads);
     merge_touching_rings(c, rep.clean);
     rings = std::move(c.rings);
   }
