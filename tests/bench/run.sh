@@ -3,6 +3,7 @@
 # written to docs/benchmarks.md. Not part of the test suite: it takes a few minutes.
 #
 #   tests/bench/run.sh [BUILD_DIR]      (default: build; needs the bench_* programs built)
+#   tests/bench/run.sh --scale [BUILD_DIR] [THREADS]   (the full GSHHG: tests/bench/scale.sh)
 #
 # What it runs, each case through both command lines on the same .geo, one thread
 # (`stereomesh -2 -nt 1 -algo A X.geo` and `gmsh -2 -nt 1 -algo A X.geo`), timed and its peak
@@ -24,6 +25,8 @@
 # beside the checkout (it stops with a message otherwise).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
+# --scale: the full GSHHG at 30, 10 and 3 km instead (tests/bench/scale.sh; prints a report).
+if [[ ${1:-} == --scale ]]; then shift; exec "$here/scale.sh" "$@"; fi
 root="$(cd "$here/../.." && pwd)"
 build="$(cd "${1:-$root/build}" && pwd)"
 out="$root/docs/benchmarks.md"
