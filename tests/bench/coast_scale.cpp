@@ -133,10 +133,16 @@ int main(int argc, char** argv) {
     return 1;
   }
   std::size_t control = 0;
-  for (const CoastCurve& c : m->curves) control += c.ll.size();
+  std::uint64_t hash = 1469598103934665603ull;   // FNV-1a of every control point's bytes
+  for (const CoastCurve& c : m->curves) {
+    control += c.ll.size();
+    const auto* b = reinterpret_cast<const unsigned char*>(c.ll.data());
+    for (std::size_t i = 0; i < c.ll.size() * sizeof(geo::LonLat); ++i) hash = (hash ^ b[i]) * 1099511628211ull;
+  }
   std::printf("%s: %zu points in, gamma %.0f m, %d thread(s): %zu loops, %zu control points, %zu repair rounds\n",
               file.c_str(), points, gamma, threads, m->loops.size(), control, m->report.repair_rounds);
-  std::printf("points as lon/lat doubles: %.0f MB\n", static_cast<double>(points) * 16.0 / 1048576.0);
+  std::printf("points as lon/lat doubles: %.0f MB; model hash %016llx (the same for every thread count)\n",
+              static_cast<double>(points) * 16.0 / 1048576.0, static_cast<unsigned long long>(hash));
   std::printf("%-12s %8s %8s %9s\n", "step", "wall_s", "cpu_s", "peak_MB");
   double wall = 0, cpu = 0;
   for (const Row& r : rows) {

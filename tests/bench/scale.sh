@@ -7,7 +7,7 @@
 #     peak memory after each), from the text and from the GSHHS binary;
 #   - the whole run (stereomesh -2 -nt THREADS): wall and CPU seconds, peak memory,
 #     triangles, bytes of peak memory per triangle, triangles per wall second.
-#   tests/bench/run.sh --scale [BUILD_DIR] [THREADS]      (THREADS default 1)
+#   tests/bench/run.sh --scale [BUILD_DIR] [THREADS] > docs/benchmarks_scale.md   (THREADS default 1)
 # Takes a few minutes (the 3 km mesh alone about 1.5 minutes of CPU); needs /usr/bin/time.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
