@@ -31,8 +31,9 @@ struct CleanReport {
   std::string summary() const;   // one line: counts per action
 };
 
-/// Cleans every ring in place; dropped rings are erased. Deterministic (ring order kept).
-CleanReport clean(Coastline& c);
+/// Cleans every ring in place; dropped rings are erased. Deterministic (ring order kept),
+/// the same for every number of `threads` (<= 0: the hardware concurrency).
+CleanReport clean(Coastline& c, int threads = 1);
 
 /// Joins closed rings of the same level that share an edge run in opposite directions
 /// (shapefiles split polygons at the dateline: GSHHS_l_L1.shp, Natural Earth's Fiji and

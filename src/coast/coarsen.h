@@ -25,6 +25,9 @@ struct CoarsenOptions {
   /// rule of the paper's tool (a ring of 3 points spaced >= gamma has a perimeter >= 3 gamma);
   /// it reproduces Figure 5 (docs/coastlines.md).
   std::size_t min_points = 3;
+  /// Threads for the walk over the rings (the accuracy field is still called from the
+  /// calling thread only); the result is the same for every count. <= 0: all cores.
+  int threads = 1;
 };
 
 /// One ring after coarsening. The full-resolution ring is kept with the indices of the

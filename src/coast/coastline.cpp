@@ -28,8 +28,11 @@ void unwrap_longitudes(std::vector<geo::LonLat>& pts) {
   double lo = pts[0].lon, hi = pts[0].lon;
   for (std::size_t i = 1; i < pts.size(); ++i) {
     // Shift by a whole number of turns (never accumulate differences: a ring that
-    // comes back to its start must come back to the same double).
-    pts[i].lon += 360.0 * std::round((pts[i - 1].lon - pts[i].lon) / 360.0);
+    // comes back to its start must come back to the same double). A step under 180
+    // degrees rounds to no turn, so the usual case skips the division (a zero longitude
+    // takes the formula still: adding +-0 may change the sign of its zero).
+    const double step = pts[i - 1].lon - pts[i].lon;
+    if (!(std::abs(step) < 180.0) || pts[i].lon == 0.0) pts[i].lon += 360.0 * std::round(step / 360.0);
     lo = std::min(lo, pts[i].lon);
     hi = std::max(hi, pts[i].lon);
   }
@@ -52,7 +55,7 @@ double longitude_winding(const std::vector<geo::LonLat>& pts) {
 
 bool same_point(geo::LonLat a, geo::LonLat b) {
   if (a.lat != b.lat) return false;
-  if (std::abs(a.lat) == 90.0) return true;
+  if (a.lon == b.lon || std::abs(a.lat) == 90.0) return true;   // the first test spares the fmod
   return wrap_delta(a.lon, b.lon) == 0.0;
 }
 

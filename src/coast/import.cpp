@@ -237,7 +237,7 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
   {
     Coastline c;
     c.rings = std::move(rings);
-    rep.clean = clean(c);
+    rep.clean = clean(c, opt.threads);
     merge_touching_rings(c, rep.clean);
     rings = std::move(c.rings);
   }
@@ -299,6 +299,7 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
   co.radius = opt.radius;
   co.min_area_km2 = opt.min_area_km2;
   co.min_points = opt.min_points;
+  co.threads = opt.threads;
   const std::size_t n_whole = piece_span.empty() ? to_coarsen.size() : piece_span.front().first;
   std::vector<Ring> whole(std::make_move_iterator(to_coarsen.begin()),
                           std::make_move_iterator(to_coarsen.begin() + static_cast<long>(n_whole)));

@@ -44,6 +44,10 @@ struct ImportOptions {
   /// Keep only the seas (surfaces) holding one of these points; empty: every sea.
   std::vector<geo::LonLat> sea_at;
   int max_repair_rounds = 64;
+  /// Threads for the steps that work ring by ring (cleaning, coarsening; the accuracy field
+  /// is called from the calling thread only): the result is
+  /// the same for every count (base/parallel.h). <= 0: the hardware concurrency.
+  int threads = 1;
   RegionOptions region_options;
   /// Reports stage "coastline" with one unit per pipeline step (levels, cleaning,
   /// clipping, coarsening, curves, repair, surfaces, output: 8); null: silent.

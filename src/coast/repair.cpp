@@ -606,21 +606,32 @@ void merge_across(std::vector<WorkCurve>& curves, WorkLoop& la, std::uint32_t ka
   M.periodic = true;
   M.record = A.record;
   M.id = A.id;
-  auto append = [&M](const WorkCurve& c, std::uint32_t k) {
-    // From keep[k+1] round to keep[k] (inclusive), keeping the retained flags.
+  // From keep[k+1] round to keep[k] (inclusive): every retained point of the curve lies on
+  // that run, in the order of the keep list from k+1 on. The merged curve is sized
+  // exactly first: Eurasia (1.2 million points) merged across a hundred straits would
+  // otherwise grow by doubling each time (the full GSHHG's peak memory at 30 km).
+  auto run_length = [](const WorkCurve& c, std::uint32_t k) {
     const std::size_t n = c.full.size();
-    const std::size_t from = c.keep[(k + 1) % c.keep.size()];
-    const std::size_t to = c.keep[k];
-    const std::size_t len = (to + n - from) % n + 1;
-    std::vector<char> kept(n, 0);
-    for (auto i : c.keep) kept[i] = 1;
+    return (c.keep[k] + n - c.keep[(k + 1) % c.keep.size()]) % n + 1;
+  };
+  const std::size_t total = run_length(A, ka) + run_length(B, kb);
+  M.full.reserve(total);
+  M.uv.reserve(total);
+  M.gamma.reserve(total);
+  M.keep.reserve(A.keep.size() + B.keep.size());
+  auto append = [&M, &run_length](const WorkCurve& c, std::uint32_t k) {
+    const std::size_t n = c.full.size(), nk = c.keep.size();
+    const std::size_t from = c.keep[(k + 1) % nk];
+    const std::size_t len = run_length(c, k);
+    const std::size_t base = M.full.size();
     for (std::size_t s = 0; s < len; ++s) {
       const std::size_t i = (from + s) % n;
-      if (kept[i]) M.keep.push_back(static_cast<std::uint32_t>(M.full.size()));
       M.full.push_back(c.full[i]);
       M.uv.push_back(c.uv[i]);
       M.gamma.push_back(c.gamma[i]);
     }
+    for (std::size_t j = 0; j < nk; ++j)
+      M.keep.push_back(static_cast<std::uint32_t>(base + (c.keep[(k + 1 + j) % nk] + n - from) % n));
   };
   append(A, ka);
   append(B, kb);

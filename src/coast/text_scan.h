@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <string_view>
 
 namespace sm::coast::detail {
@@ -26,6 +27,40 @@ inline void skip_space(std::string_view& s) {
 inline bool take_double(std::string_view& s, double& v) {
   skip_space(s);
   if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+  // Fast path for the plain decimals of the shoreline files ("-12.345678"): at most 15
+  // digits make an integer m < 2^53 and at most 22 decimals a power 10^k, both exact
+  // doubles, so m / 10^k is one correctly rounded operation: the value from_chars gives
+  // (Clinger 1990). Anything else (exponents, more digits, no digit before the point)
+  // goes to from_chars.
+  {
+    static constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                        1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+    const char* p = s.data();
+    const char* const end = p + s.size();
+    const bool negative = p != end && *p == '-';
+    if (negative) ++p;
+    const char* const first = p;
+    std::uint64_t m = 0;
+    int digits = 0, decimals = 0;
+    while (p != end && *p >= '0' && *p <= '9') {
+      m = m * 10 + static_cast<unsigned>(*p++ - '0');
+      ++digits;
+    }
+    if (p != first && p != end && *p == '.') {
+      ++p;
+      while (p != end && *p >= '0' && *p <= '9') {
+        m = m * 10 + static_cast<unsigned>(*p++ - '0');
+        ++digits;
+        ++decimals;
+      }
+    }
+    if (p != first && digits <= 15 && (p == end || (*p != 'e' && *p != 'E'))) {
+      const double x = static_cast<double>(m) / kPow10[decimals];
+      v = negative ? -x : x;
+      s.remove_prefix(static_cast<std::size_t>(p - s.data()));
+      return true;
+    }
+  }
   const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
   if (r.ec != std::errc{} || !std::isfinite(v)) return false;
   s.remove_prefix(static_cast<std::size_t>(r.ptr - s.data()));

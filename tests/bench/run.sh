@@ -3,7 +3,8 @@
 # written to docs/benchmarks.md. Not part of the test suite: it takes a few minutes.
 #
 #   tests/bench/run.sh [BUILD_DIR]      (default: build; needs the bench_* programs built)
-#   tests/bench/run.sh --scale [BUILD_DIR [WORLD_TXT]]   (the full world's stages only)
+#   tests/bench/run.sh --scale [BUILD_DIR] [THREADS]   (the full GSHHG: tests/bench/scale.sh,
+#                                                     then each stage: scale_stages.sh)
 #
 # What it runs, each case through both command lines on the same .geo, one thread
 # (`stereomesh -2 -nt 1 -algo A X.geo` and `gmsh -2 -nt 1 -algo A X.geo`), timed and its peak
@@ -25,11 +26,14 @@
 # beside the checkout (it stops with a message otherwise).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-# --scale [BUILD_DIR [WORLD_TXT]]: the full-resolution world's stages at 30, 10 and 3 km
-# (scale_stages.sh), printed, instead of the side-by-side run.
+# --scale: the full GSHHG at 30, 10 and 3 km instead of the side-by-side run: the import
+# step by step and the whole runs (tests/bench/scale.sh), then every stage of the runs'
+# time account (tests/bench/scale_stages.sh, on the text world_full.sh exported).
 if [[ ${1:-} == --scale ]]; then
   shift
-  exec "$here/scale_stages.sh" "$@"
+  "$here/scale.sh" "$@"
+  scale_build="$(cd "${1:-$here/../../build}" && pwd)"
+  exec "$here/scale_stages.sh" "$scale_build" "$scale_build/data/world_full.txt"
 fi
 root="$(cd "$here/../.." && pwd)"
 build="$(cd "${1:-$root/build}" && pwd)"

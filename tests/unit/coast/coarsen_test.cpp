@@ -99,3 +99,37 @@ TEST_CASE("coarsen: Antarctica keeps its pole-side area") {
       CHECK(a < 15e6);
     }
 }
+
+TEST_CASE("coarsen and clean: the same rings for every thread count, the field called as with one") {
+  auto c = read_lonlat_text(std::string(SM_SHARED_DATA) + "/gshhg/world_i_A100.txt");
+  REQUIRE(c.ok());
+  // A field that varies with the place and counts its calls: the calls (their sizes, in
+  // order) must be those of one thread, from the calling thread.
+  auto run = [&](int threads, std::vector<std::size_t>& calls) {
+    Coastline copy = *c;
+    const CleanReport rep = clean(copy, threads);
+    CoarsenOptions o;
+    o.threads = threads;
+    o.min_area_km2 = 50;
+    o.gamma = [&calls](std::span<const Vec3> p, std::span<double> g) {
+      calls.push_back(p.size());
+      for (std::size_t i = 0; i < p.size(); ++i) g[i] = 20e3 + 15e3 * std::sin(1e-6 * p[i].x) * std::cos(1e-6 * p[i].z);
+    };
+    auto r = coarsen(copy.rings, o);
+    REQUIRE(r.ok());
+    return std::make_pair(rep.entries.size(), std::move(*r));
+  };
+  std::vector<std::size_t> calls1, calls4;
+  const auto one = run(1, calls1);
+  const auto four = run(4, calls4);
+  CHECK(calls1 == calls4);
+  CHECK(one.first == four.first);
+  REQUIRE(one.second.rings.size() == four.second.rings.size());
+  CHECK(one.second.dropped.size() == four.second.dropped.size());
+  CHECK(one.second.points_out == four.second.points_out);
+  CHECK(one.second.dropped.size() > 0);
+  for (std::size_t k = 0; k < one.second.rings.size(); ++k) {
+    CHECK(one.second.rings[k].keep == four.second.rings[k].keep);
+    CHECK(one.second.rings[k].ring.record == four.second.rings[k].ring.record);
+  }
+}

@@ -126,3 +126,62 @@ TEST_CASE("lonlat text: hostile input is a located error") {
     CHECK(r->rings[0].pts.size() == 3);
   }
 }
+
+namespace {
+// Rings equal to the last bit (the block reader must read what the text reader reads).
+bool same_coastline(const Coastline& a, const Coastline& b) {
+  if (a.rings.size() != b.rings.size()) return false;
+  for (std::size_t k = 0; k < a.rings.size(); ++k) {
+    const Ring& x = a.rings[k];
+    const Ring& y = b.rings[k];
+    if (x.id != y.id || x.level != y.level || x.closed != y.closed || x.pts.size() != y.pts.size()) return false;
+    for (std::size_t i = 0; i < x.pts.size(); ++i)
+      if (x.pts[i].lon != y.pts[i].lon || x.pts[i].lat != y.pts[i].lat) return false;
+  }
+  return true;
+}
+}  // namespace
+
+TEST_CASE("lonlat text: a file of many blocks reads as the same text in memory") {
+  // Over 4 MB (several FileBlocks blocks), with CRLF lines, lines cut by the block ends
+  // wherever they fall, numbers in every form the fast path and from_chars take.
+  std::string text = "# -R-180/180/-90/90 test\n";
+  const char* forms[] = {"%.6f %.6f", "%.3f %.9f", "%g %g", "%.2e %.17g", "+%.6f\t%.6f ", "%.0f. %.1f"};
+  int seg = 0;
+  for (int i = 0; text.size() < 9'000'000; ++i) {
+    if (i % 5000 == 0) text += "> seg=" + std::to_string(++seg) + " level=1\r\n";
+    char line[96];
+    const double lon = -170.0 + 340.0 * std::fmod(i * 0.6180339887, 1.0);
+    const double lat = -80.0 + 160.0 * std::fmod(i * 0.3819660113, 1.0);
+    std::snprintf(line, sizeof line, forms[i % 6], lon, lat);
+    text += line;
+    text += i % 3 == 0 ? "\r\n" : "\n";
+  }
+  sm::testing::ScratchDir dir;
+  const std::string path = dir / "big.txt";
+  std::ofstream(path, std::ios::binary) << text;
+  auto from_file = read_lonlat_text(path);
+  auto from_text = read_lonlat_text_string(text, path);
+  REQUIRE_MESSAGE(from_file.ok(), (from_file.ok() ? "" : from_file.error().to_string()));
+  REQUIRE(from_text.ok());
+  CHECK(from_file->rings.size() == static_cast<std::size_t>(seg));
+  CHECK(same_coastline(*from_file, *from_text));
+  REQUIRE(from_file->region.has_value());
+  // Cut inside the last number: the same error from both.
+  text.resize(text.size() - 3);
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << text;
+  auto cut_file = read_lonlat_text(path);
+  auto cut_text = read_lonlat_text_string(text, path);
+  REQUIRE_FALSE(cut_file.ok());
+  REQUIRE_FALSE(cut_text.ok());
+  CHECK(cut_file.error().message == cut_text.error().message);
+  // A bad line deep in the file: the same located error.
+  text += "\n";
+  text.insert(text.size() / 2 + (text.size() / 2 - text.rfind('\n', text.size() / 2)), "1.5x 2\n");
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << text;
+  auto bad_file = read_lonlat_text(path);
+  auto bad_text = read_lonlat_text_string(text, path);
+  REQUIRE_FALSE(bad_file.ok());
+  REQUIRE_FALSE(bad_text.ok());
+  CHECK(bad_file.error().to_string() == bad_text.error().to_string());
+}
