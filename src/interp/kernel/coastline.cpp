@@ -356,6 +356,8 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
       io.sea_at.push_back({x[i], x[i + 1]});
     }
   }
+  // Cleaning and coarsening ring by ring on -nt threads (the same rings for every count).
+  io.threads = static_cast<int>(in.options().number("General.NumThreads"));
   io.progress = progress_sink(in);
   coast::Loops2Options l2;
   if (const Value* v = option(d, "Coordinate")) l2.coordinate = *coast::parse_loops2_coordinate(v->strs().front());
