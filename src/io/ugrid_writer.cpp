@@ -11,11 +11,11 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
-#include <map>
 #include <set>
 #include <utility>
 
 #include "base/output_file.h"
+#include "io/boundary_edges.h"
 #include "exact/predicates.h"
 #include "geo/sphere.h"
 
@@ -50,14 +50,10 @@ struct Ugrid {
 
 Ugrid gather(const MeshModel& m, const OceanGridOptions& opt) {
   Ugrid u;
-  std::vector<const EntityMesh*> faces, curves;
-  for (const EntityMesh& e : m.entities) {
+  std::vector<const EntityMesh*> faces;
+  for (const EntityMesh& e : m.entities)
     if (e.dim == 2 && (e.type == ElementType::Triangle3 || e.type == ElementType::Quad4)) faces.push_back(&e);
-    if (e.dim == 1 && e.type == ElementType::Line2) curves.push_back(&e);
-  }
-  const auto by_tag = [](const EntityMesh* a, const EntityMesh* b) { return a->tag < b->tag; };
-  std::sort(faces.begin(), faces.end(), by_tag);
-  std::sort(curves.begin(), curves.end(), by_tag);
+  std::sort(faces.begin(), faces.end(), [](const EntityMesh* a, const EntityMesh* b) { return a->tag < b->tag; });
   for (const EntityMesh* f : faces)
     if (f->type == ElementType::Quad4) u.max_face_nodes = 4;
 
@@ -71,9 +67,7 @@ Ugrid gather(const MeshModel& m, const OceanGridOptions& opt) {
       u.nodes.push_back(v);
     }
 
-  // Faces, anticlockwise seen from outside the sphere (or from +z on a plane), and the
-  // number of faces on each edge (1: a boundary edge).
-  std::map<Edge, int> faces_on;
+  // Faces, anticlockwise seen from outside the sphere (or from +z on a plane).
   for (const EntityMesh* f : faces) {
     const std::size_t k = static_cast<std::size_t>(nodes_per_element(f->type));
     for (std::size_t i = 0; i + k <= f->connectivity.size(); i += k) {
@@ -83,7 +77,6 @@ Ugrid gather(const MeshModel& m, const OceanGridOptions& opt) {
       const Sign s = opt.lonlat ? orient3d(a, b, c, opt.centre) : orient2d({a.x, a.y}, {b.x, b.y}, {c.x, c.y});
       if (s == Sign::Negative) std::reverse(v.begin() + 1, v.end());
       for (std::size_t j = 0; j < u.max_face_nodes; ++j) u.face_nodes.push_back(j < k ? file_id[v[j]] : -1);
-      for (std::size_t j = 0; j < k; ++j) ++faces_on[edge_key(v[j], v[(j + 1) % k])];
     }
   }
 
@@ -100,20 +93,12 @@ Ugrid gather(const MeshModel& m, const OceanGridOptions& opt) {
   }
   std::set<int> used_groups;
   bool any_ungrouped = false;
-  std::set<Edge> written;
-  for (const EntityMesh* c : curves) {
-    const int group = c->physical_tags.empty() ? 0 : *std::min_element(c->physical_tags.begin(), c->physical_tags.end());
-    for (std::size_t i = 0; i + 2 <= c->connectivity.size(); i += 2) {
-      const std::uint32_t a = c->connectivity[i], b = c->connectivity[i + 1];
-      const Edge e = edge_key(a, b);
-      const auto it = faces_on.find(e);
-      if (it == faces_on.end() || it->second != 1 || !written.insert(e).second) continue;
-      u.edge_nodes.push_back(file_id[a]);
-      u.edge_nodes.push_back(file_id[b]);
-      u.edge_kind.push_back(open.count(e) ? kOpen : (on_island[a] && on_island[b] ? kIsland : kMainland));
-      u.edge_physical.push_back(group);
-      if (group) used_groups.insert(group); else any_ungrouped = true;
-    }
+  for (const BoundaryEdge& e : boundary_edges(m)) {
+    u.edge_nodes.push_back(file_id[e.a]);
+    u.edge_nodes.push_back(file_id[e.b]);
+    u.edge_kind.push_back(open.count(edge_key(e.a, e.b)) ? kOpen : (on_island[e.a] && on_island[e.b] ? kIsland : kMainland));
+    u.edge_physical.push_back(e.physical);
+    if (e.physical) used_groups.insert(e.physical); else any_ungrouped = true;
   }
   if (any_ungrouped) u.curve_groups.emplace_back(0, "none");
   for (const PhysicalGroup& g : m.physicals)

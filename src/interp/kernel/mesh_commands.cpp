@@ -452,13 +452,34 @@ std::string finish_run(Interpreter& in, bool print_time) {
   return stats_json(st);
 }
 
-bool mesh_from_command_line(Interpreter& in, int dim, const std::string& output, const std::string& format,
-                            const std::string& first_script) {
+bool mesh_after_scripts(Interpreter& in, int dim) {
   Diagnostics& diags = in.diags();
   if (dim >= 3) {
     diags.report_message(SourceRange{}, Diag::NotSupportedYet, "'-3' is not supported: stereomesh meshes surfaces");
     return false;
   }
+  MeshFailure f;
+  try {
+    f = mesh_model(in, dim, SourceRange{});
+  } catch (const RuntimeError& err) {   // e.g. the background field cannot be built
+    auto h = diags.report_message(err.range, err.kind, err.message);
+    for (const DiagNote& n : err.notes) h.note(n.range, n.message);
+    return false;
+  }
+  if (f.failed()) {
+    // No statement asked for the mesh: the entity's statement is the place to point at.
+    const SourceRange at = f.notes.empty() ? SourceRange{} : f.notes.front().range;
+    auto h = diags.report_message(at, f.kind, f.message);
+    for (std::size_t i = 1; i < f.notes.size(); ++i) h.note(f.notes[i].range, f.notes[i].message);
+    return false;
+  }
+  return true;
+}
+
+bool mesh_from_command_line(Interpreter& in, int dim, const std::string& output, const std::string& format,
+                            const std::string& first_script) {
+  Diagnostics& diags = in.diags();
+  if (dim >= 3) return mesh_after_scripts(in, dim);   // refused there
   // The file and its format are known before meshing: a name that picks no format is
   // refused now rather than after minutes of meshing, and a depthless ocean grid said.
   std::string path = output;
@@ -479,21 +500,7 @@ bool mesh_from_command_line(Interpreter& in, int dim, const std::string& output,
     }
     warn_if_no_depth(in, *row, path, SourceRange{});
   }
-  MeshFailure f;
-  try {
-    f = mesh_model(in, dim, SourceRange{});
-  } catch (const RuntimeError& err) {   // e.g. the background field cannot be built
-    auto h = diags.report_message(err.range, err.kind, err.message);
-    for (const DiagNote& n : err.notes) h.note(n.range, n.message);
-    return false;
-  }
-  if (f.failed()) {
-    // No statement asked for the mesh: the entity's statement is the place to point at.
-    const SourceRange at = f.notes.empty() ? SourceRange{} : f.notes.front().range;
-    auto h = diags.report_message(at, f.kind, f.message);
-    for (std::size_t i = 1; i < f.notes.size(); ++i) h.note(f.notes[i].range, f.notes[i].message);
-    return false;
-  }
+  if (!mesh_after_scripts(in, dim)) return false;
   std::string err;
   try {
     err = save_mesh(in, path, format);

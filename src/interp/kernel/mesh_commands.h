@@ -19,6 +19,10 @@ class Interpreter;
 bool mesh_from_command_line(Interpreter& in, int dim, const std::string& output, const std::string& format,
                             const std::string& first_script);
 
+/// The meshing half of mesh_from_command_line, writing nothing (the Python module keeps
+/// the mesh in memory): false, with the failure reported, when the mesh cannot be made.
+bool mesh_after_scripts(Interpreter& in, int dim);
+
 /// A field kind whose set-up took less than this (seconds) is counted in the account's
 /// "fields" stage instead of having its own.
 inline constexpr double kMinFieldSeconds = 0.1;

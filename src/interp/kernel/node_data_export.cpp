@@ -21,6 +21,12 @@ std::string node_data_for_output(Interpreter& in, const io::MeshModel& mm, std::
   std::string why;
   const std::vector<std::string> names = split_node_data_names(in.options().string("Mesh.NodeData"), &why);
   if (!why.empty()) return why;
+  return node_data_named(in, mm, names, out);
+}
+
+std::string node_data_named(Interpreter& in, const io::MeshModel& mm, const std::vector<std::string>& names,
+                            std::vector<io::NodeData>& out) {
+  out.clear();
   if (names.empty()) return {};
   const KernelState& k = in.kernel();
   const std::size_t n = mm.xyz.size();

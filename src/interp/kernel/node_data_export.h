@@ -17,4 +17,8 @@ class Interpreter;
 /// node coordinates), into `out`; "" or why not (no depth field, no size field).
 std::string node_data_for_output(Interpreter& in, const io::MeshModel& mm, std::vector<io::NodeData>& out);
 
+/// The same for the names given (depth, size, criterion) instead of Mesh.NodeData's.
+std::string node_data_named(Interpreter& in, const io::MeshModel& mm, const std::vector<std::string>& names,
+                            std::vector<io::NodeData>& out);
+
 }  // namespace sm::interp
