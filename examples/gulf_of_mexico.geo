@@ -12,7 +12,9 @@ RegionalBox[] = {RegionGulfOfMexico[]};
 RegionalSeaAt[] = {CentralGulfOfMexico[]};
 Call RegionalSea;
 ShorePoints[] = RegionalShorePoints[];  ShoreBox[] = RegionalBox[];
-Call ShoreProximity;  OceanFields[] = {ShoreField};  Call OceanSize;
+Call ShoreProximity;
+OceanFields[] = {ShoreField};
+Call OceanSize;
 // ETOPO5 depths at the nodes of the fort.14 / hgrid.gr3 / UGRID file (5 m at least: the
 // shallowest water a wetting-free run takes), and the Courant time step in the summary.
 GulfDepth = newf;
