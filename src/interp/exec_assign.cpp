@@ -3,8 +3,10 @@
 // with zeros, options are typed and validated; DefineConstant and Delete.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "interp/format.h"
 #include "interp/interpreter.h"
@@ -300,11 +302,60 @@ void Interpreter::exec_incdec(const Stmt& s, const IncDecStmt& a) {
   }
 }
 
+// The value of a defined name as a script would write it: 30000, {1, 2}, "a".
+std::string Interpreter::value_text(std::string_view name) const {
+  if (const auto* s = symbols_.find_str(name)) return s->size() == 1 ? "\"" + s->front() + "\"" : "a string list";
+  const NumSymbol* n = symbols_.find_num(name);
+  if (!n) return "nothing";
+  if (!n->is_list && n->values.size() == 1) return fmt::format("{:g}", n->values[0]);
+  return fmt::format("{{{:g}}}", fmt::join(n->values, ", "));
+}
+
+void Interpreter::note_ignored_define(const DefineEntry& entry, const std::string& name) {
+  // Only where a template the script included set the name first and the script then asks
+  // for another value: the other order (the script's value first, the template's default
+  // ignored) is how templates are meant to be used.
+  const auto at = defined_at_.find(name);
+  if (at == defined_at_.end() || !entry.value.valid() || at->second.file.value == entry.range.file.value) return;
+  if (options_.number("General.WarnOnIgnoredDefineConstant") == 0 || options_.number("General.Verbosity") < 5) return;
+  bool included = false;
+  for (auto it = included_by_.find(at->second.file.value); it != included_by_.end() && !included;
+       it = included_by_.find(it->second))
+    included = it->second == entry.range.file.value;
+  if (!included || reported_define_ignored_.count(name)) return;
+  std::string asked;
+  try {
+    const Value v = eval(entry.value);
+    if (v.is_string()) {
+      const auto* kept = symbols_.find_str(name);
+      if (kept && v.strs() == *kept) return;
+      asked = v.strs().size() == 1 ? "\"" + v.strs().front() + "\"" : "a string list";
+    } else {
+      const NumSymbol* kept = symbols_.find_num(name);
+      if (kept && kept->values == v.nums()) return;
+      asked = v.nums().size() == 1 ? fmt::format("{:g}", v.nums()[0]) : fmt::format("{{{:g}}}", fmt::join(v.nums(), ", "));
+    }
+  } catch (const RuntimeError&) {
+    return;   // a value Gmsh would not evaluate either: nothing to compare
+  }
+  reported_define_ignored_.insert(name);
+  const lang::LineCol lc = sources_.line_col(at->second.begin_loc());
+  diags_.report(entry.range, Diag::DefineConstantIgnored,
+                fmt::format("{} keeps {} from {}:{}; this value ({}) is ignored: set it before the Include "
+                            "(General.WarnOnIgnoredDefineConstant = 0 silences this)",
+                            name, value_text(name), std::filesystem::path(sources_.path(at->second.file)).filename().string(),
+                            lc.line, asked));
+}
+
 void Interpreter::exec_define_constant(const DefineConstantStmt& d) {
   for (const DefineEntry& entry : d.entries) {
     const std::string name = resolve_name(entry.name);
     // First definition wins; -setnumber values were defined before the script.
-    if (symbols_.exists(name)) continue;
+    if (symbols_.exists(name)) {
+      note_ignored_define(entry, name);
+      continue;
+    }
+    defined_at_.emplace(name, entry.range);
     if (!entry.value.valid()) {
       symbols_.set_num(name, NumSymbol{{0.0}, false});
       continue;

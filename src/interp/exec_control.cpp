@@ -180,6 +180,7 @@ Interpreter::Flow Interpreter::exec_include(const Stmt& s, const IncludeStmt& in
     }
     parsed = parsed_files_.emplace(file.value, std::move(pr.stmts)).first;
   }
+  if (file.value != s.range.file.value) included_by_.emplace(file.value, s.range.file.value);
   frames_.push_back(Frame{s.range, fmt::format("included file '{}'", name)});
   PopGuard<std::vector<Frame>> guard{frames_};
   include_stack_.push_back(canon);

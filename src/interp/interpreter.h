@@ -154,6 +154,8 @@ class Interpreter {
   void exec_macro(const lang::Stmt& s, const lang::MacroStmt& m);
   Flow exec_call(const lang::Stmt& s, const lang::CallStmt& c);
   Flow exec_include(const lang::Stmt& s, const lang::IncludeStmt& inc);
+  std::string value_text(std::string_view name) const;
+  void note_ignored_define(const lang::DefineEntry& entry, const std::string& name);
   Flow exec_command(const lang::Stmt& s, const lang::CommandStmt& c);
   std::string find_include(const std::string& name, lang::SourceRange r);
 
@@ -196,6 +198,9 @@ class Interpreter {
   std::map<std::uint32_t, lang::StmtList> parsed_files_;   // FileId value -> statements
   std::vector<Frame> frames_;
   std::vector<std::string> include_stack_;                 // canonical paths
+  std::map<std::uint32_t, std::uint32_t> included_by_;     // FileId value -> the file that first included it
+  std::map<std::string, lang::SourceRange, std::less<>> defined_at_;   // name -> the DefineConstant entry that set it
+  std::set<std::string, std::less<>> reported_define_ignored_;
   std::vector<lang::FileId> file_stack_;
   std::set<std::string, std::less<>> reported_unsupported_;
   lang::StmtId current_stmt_;   // the statement being run, for reports
