@@ -3,6 +3,7 @@
 #include "mesh/mesh_stats.h"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <map>
 #include <utility>
@@ -219,6 +220,30 @@ std::string stats_json(const MeshStats& s) {
     out += fmt::format("{}{}: {}", i ? ", " : "", json_string(s.stages[i].name), json_number(s.stages[i].seconds));
   out += "}}\n";
   return out;
+}
+
+CurveStats curve_stats(const ModelMesh& mesh) {
+  CurveStats s;
+  std::vector<char> on_curve(mesh.nodes.size(), 0);
+  double lo = std::numeric_limits<double>::infinity(), hi = 0;
+  for (const auto& [tag, c] : mesh.curves) {
+    if (c.num_edges() == 0) continue;
+    ++s.curves;
+    s.edges += c.num_edges();
+    for (std::uint32_t v : c.nodes) s.nodes += on_curve[v] ? 0 : 1, on_curve[v] = 1;
+    for (std::size_t i = 0; i + 1 < c.nodes.size(); ++i) {
+      const double l = norm(mesh.nodes[c.nodes[i + 1]].xyz - mesh.nodes[c.nodes[i]].xyz);
+      lo = std::min(lo, l);
+      hi = std::max(hi, l);
+    }
+  }
+  if (s.edges) s.shortest = lo, s.longest = hi;
+  return s;
+}
+
+std::string format_curve_stats(const CurveStats& s) {
+  return fmt::format("Mesh: {} nodes, {} line elements on {} curve{}; edges from {:.6g} to {:.6g} (model units)\n",
+                     s.nodes, s.edges, s.curves, s.curves == 1 ? "" : "s", s.shortest, s.longest);
 }
 
 }  // namespace sm

@@ -55,6 +55,16 @@ MeshStats mesh_stats(const ModelMesh& mesh, const std::vector<SurfaceSize>& size
 
 /// A few lines for stderr.
 std::string format_stats(const MeshStats& s);
+
+/// The 1D mesh's figures (what `-1` prints): curves with mesh edges, the nodes on them, edges, and
+/// the shortest and longest edge (chord, model units).
+struct CurveStats {
+  std::size_t curves = 0, nodes = 0, edges = 0;
+  double shortest = 0, longest = 0;
+};
+CurveStats curve_stats(const ModelMesh& mesh);
+/// "Mesh: 1204 nodes, 1198 line elements on 106 curves; edges from 412.3 to 30112 (model units)\n"
+std::string format_curve_stats(const CurveStats& s);
 /// One JSON object (keys as the summary's words: nodes, triangles, rho_min, ...).
 std::string stats_json(const MeshStats& s);
 

@@ -236,6 +236,12 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   auto mesh = std::make_shared<ModelMesh>(std::move(r.mesh));
   if (dim < 2) {
     in.options().set_number("Mesh.NbNodes", static_cast<double>(mesh->nodes.size()), /*internal=*/true);
+    // -1's summary, as -2 prints the 2D statistics.
+    if (in.options().number("General.Verbosity") >= 4) {
+      std::fflush(stdout);
+      std::fputs(format_curve_stats(curve_stats(*mesh)).c_str(), stderr);
+      std::fflush(stderr);
+    }
     k.mesh = std::move(mesh);
     return {};
   }

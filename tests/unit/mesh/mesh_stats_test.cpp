@@ -98,3 +98,24 @@ TEST_CASE("mesh_stats: a target size per surface, shared edges measured once by 
   const MeshStats none = mesh_stats(m, std::vector<SurfaceSize>{});
   CHECK_FALSE(none.has_sizes);
 }
+
+TEST_CASE("curve_stats: the 1D summary of -1 (curves with edges, nodes, shortest and longest edge)") {
+  ModelMesh m;
+  for (double x : {0.0, 1.0, 3.0, 6.0}) m.add_node({x, 0, 0});
+  m.add_node({0, 2, 0});
+  m.add_node({9, 9, 9});                 // on no curve: not counted
+  CurveMesh a;
+  a.tag = 1, a.nodes = {0, 1, 2, 3};   // edges 1, 2, 3
+  CurveMesh b;
+  b.tag = 2, b.nodes = {0, 4};         // edge 2
+  CurveMesh none;
+  none.tag = 3;                          // no mesh: not counted
+  m.curves[1] = a, m.curves[2] = b, m.curves[3] = none;
+  const CurveStats s = curve_stats(m);
+  CHECK(s.curves == 2);
+  CHECK(s.nodes == 5);
+  CHECK(s.edges == 4);
+  CHECK(s.shortest == 1.0);
+  CHECK(s.longest == 3.0);
+  CHECK(format_curve_stats(s) == "Mesh: 5 nodes, 4 line elements on 2 curves; edges from 1 to 3 (model units)\n");
+}
