@@ -302,13 +302,24 @@ void Interpreter::exec_incdec(const Stmt& s, const IncDecStmt& a) {
   }
 }
 
-// The value of a defined name as a script would write it: 30000, {1, 2}, "a".
+namespace {
+
+// Values as a script would write them, for messages: 30000, {1, 2}, "a".
+std::string numbers_text(const std::vector<double>& v, bool list) {
+  if (!list && v.size() == 1) return fmt::format("{:g}", v[0]);
+  return fmt::format("{{{:g}}}", fmt::join(v, ", "));
+}
+
+std::string strings_text(const std::vector<std::string>& v) {
+  return v.size() == 1 ? "\"" + v.front() + "\"" : "a string list";
+}
+
+}  // namespace
+
 std::string Interpreter::value_text(std::string_view name) const {
-  if (const auto* s = symbols_.find_str(name)) return s->size() == 1 ? "\"" + s->front() + "\"" : "a string list";
+  if (const auto* s = symbols_.find_str(name)) return strings_text(*s);
   const NumSymbol* n = symbols_.find_num(name);
-  if (!n) return "nothing";
-  if (!n->is_list && n->values.size() == 1) return fmt::format("{:g}", n->values[0]);
-  return fmt::format("{{{:g}}}", fmt::join(n->values, ", "));
+  return n ? numbers_text(n->values, n->is_list) : "nothing";
 }
 
 void Interpreter::note_ignored_define(const DefineEntry& entry, const std::string& name) {
@@ -329,11 +340,11 @@ void Interpreter::note_ignored_define(const DefineEntry& entry, const std::strin
     if (v.is_string()) {
       const auto* kept = symbols_.find_str(name);
       if (kept && v.strs() == *kept) return;
-      asked = v.strs().size() == 1 ? "\"" + v.strs().front() + "\"" : "a string list";
+      asked = strings_text(v.strs());
     } else {
       const NumSymbol* kept = symbols_.find_num(name);
       if (kept && kept->values == v.nums()) return;
-      asked = v.nums().size() == 1 ? fmt::format("{:g}", v.nums()[0]) : fmt::format("{{{:g}}}", fmt::join(v.nums(), ", "));
+      asked = numbers_text(v.nums(), v.nums().size() != 1);
     }
   } catch (const RuntimeError&) {
     return;   // a value Gmsh would not evaluate either: nothing to compare

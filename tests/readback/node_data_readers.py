@@ -9,28 +9,21 @@ bounds, criterion the ids of the size criteria).
 Exit 0: all checks hold; 1: a check failed (each is printed); 77: a reader is missing.
 """
 import os
-import subprocess
 import sys
 import tempfile
 
+from readback import check, finish, run_script  # exits 77 when a reader is missing
+import gmsh
+import netCDF4
+import numpy as np
+
 try:
-    import gmsh
     import meshio
-    import netCDF4
-    import numpy as np
-except ImportError as e:  # the CI installs them (.ci/deps)
+except ImportError as e:  # the CI installs it (.ci/deps)
     print(f"skipped: {e}")
     sys.exit(77)
 
-here = os.path.dirname(os.path.abspath(__file__))
-failures = []
 NAMES = ["depth", "size", "criterion"]
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
 
 
 def same(a, b):
@@ -59,11 +52,7 @@ def gmsh_views(path):
 
 def main():
     with tempfile.TemporaryDirectory() as tmp:
-        run = subprocess.run([sys.argv[1], "-0", os.path.join(here, "node_data_gulf.geo"), "-setstring", "OutDir", tmp],
-                             capture_output=True, text=True)
-        if run.returncode != 0:
-            print(run.stdout, run.stderr)
-            check(False, "stereomesh ran")
+        if not run_script(sys.argv[1], "node_data_gulf.geo", tmp):
             return
         nc = netCDF4.Dataset(os.path.join(tmp, "gulf.nc"))
         cart = np.stack([nc.variables[f"mesh2d_node_cartesian_{c}"][:] for c in "xyz"], axis=1)
@@ -91,6 +80,4 @@ def main():
 
 
 main()
-if failures:
-    print(f"{len(failures)} check(s) failed")
-    sys.exit(1)
+finish()

@@ -6,38 +6,19 @@ as MSH and as UGRID (ugrid_gulf.geo); python3-netcdf4 reads the .nc, Gmsh's own 
     ugrid_netcdf4.py STEREOMESH
 Exit 0: all checks hold; 1: a check failed (each is printed); 77: a reader is missing.
 """
-import math
 import os
-import subprocess
 import sys
 import tempfile
 
-try:
-    import gmsh
-    import netCDF4
-    import numpy as np
-except ImportError as e:  # the CI installs both (.ci/deps)
-    print(f"skipped: {e}")
-    sys.exit(77)
-
-here = os.path.dirname(os.path.abspath(__file__))
-failures = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
+from readback import check, finish, run_script  # exits 77 when a reader is missing
+import gmsh
+import netCDF4
+import numpy as np
 
 
 def main():
-    stereomesh = sys.argv[1]
     with tempfile.TemporaryDirectory() as tmp:
-        run = subprocess.run([stereomesh, "-0", os.path.join(here, "ugrid_gulf.geo"), "-setstring", "OutDir", tmp],
-                             capture_output=True, text=True)
-        if run.returncode != 0:
-            print(run.stdout, run.stderr)
-            check(False, "stereomesh ran")
+        if not run_script(sys.argv[1], "ugrid_gulf.geo", tmp):
             return
         compare(os.path.join(tmp, "gulf.msh"), os.path.join(tmp, "gulf.nc"))
 
@@ -127,6 +108,4 @@ def compare(msh_path, nc_path):
 
 
 main()
-if failures:
-    print(f"{len(failures)} check(s) failed")
-    sys.exit(1)
+finish()

@@ -368,4 +368,15 @@ Value eval_field_call(Interpreter& in, const Expr& e, const CallExpr& c) {
   return Value::number(which);
 }
 
+std::string depth_at(Interpreter& in, std::span<const Vec3> xyz, std::vector<double>& depth) {
+  const KernelState& k = in.kernel();
+  const int id = static_cast<int>(in.options().number("Mesh.DepthField"));
+  const auto at = k.option_set_at.find("Mesh.DepthField");
+  const field::SizeField* f = built_fields(in, id, at != k.option_set_at.end() ? at->second : SourceRange{}).get(id);
+  if (!f) return fmt::format("Mesh.DepthField = {}: no such field", id);
+  depth.resize(xyz.size());
+  f->eval(xyz, depth);
+  return {};
+}
+
 }  // namespace sm::interp

@@ -3,6 +3,11 @@
 // Background Field the mesher asks for.
 #pragma once
 
+#include <span>
+#include <string>
+#include <vector>
+
+#include "base/vec.h"
 #include "field/error.h"
 #include "interp/kernel/field_context.h"
 #include "field/field_set.h"
@@ -36,5 +41,10 @@ void invalidate_field_cache(Interpreter& in);
 /// `mesh_nodes` (the 1D mesh, for 2D meshing) Distance samples meshed curves
 /// as Gmsh does; that build is not cached.
 field::FieldPtr background_size_field(Interpreter& in, const CurveMeshNodes* mesh_nodes = nullptr);
+
+/// The depth of Mesh.DepthField (> 0: the caller checks) at `xyz` into `depth`, built
+/// with its errors located at the option's assignment (the field may have changed since
+/// the mesh was made); "" or why not.
+std::string depth_at(Interpreter& in, std::span<const Vec3> xyz, std::vector<double>& depth);
 
 }  // namespace sm::interp

@@ -4,8 +4,6 @@
 // (field/size_policy.h). The criterion is the id of the Min's input that attains it.
 #include "interp/kernel/node_data_export.h"
 
-#include <fmt/format.h>
-
 #include "field/min_max.h"
 #include "field/size_policy.h"
 #include "interp/interpreter.h"
@@ -48,13 +46,9 @@ std::string node_data_named(Interpreter& in, const io::MeshModel& mm, const std:
   for (const std::string& name : names) {
     std::vector<double> values(n);
     if (name == "depth") {
-      const int depth_field = static_cast<int>(in.options().number("Mesh.DepthField"));
-      if (depth_field <= 0) return "Mesh.NodeData: depth needs Mesh.DepthField (a field giving the depth)";
-      const auto at = k.option_set_at.find("Mesh.DepthField");
-      const field::SizeField* f =
-          built_fields(in, depth_field, at != k.option_set_at.end() ? at->second : lang::SourceRange{}).get(depth_field);
-      if (!f) return fmt::format("Mesh.DepthField = {}: no such field", depth_field);
-      f->eval(mm.xyz, values);
+      if (!(in.options().number("Mesh.DepthField") > 0))
+        return "Mesh.NodeData: depth needs Mesh.DepthField (a field giving the depth)";
+      if (std::string w = depth_at(in, mm.xyz, values); !w.empty()) return w;
       out.push_back({name, "m", "depth at the mesh nodes (Mesh.DepthField), positive down", std::move(values)});
     } else if (name == "size") {
       if (std::string w = sizes(); !w.empty()) return w;

@@ -107,16 +107,8 @@ std::string ocean_grid_options(Interpreter& in, const std::string& path, const i
     break;
   }
   opt.lonlat = !k.model.geometries().empty();
-  const int depth_field = static_cast<int>(in.options().number("Mesh.DepthField"));
-  if (depth_field > 0) {
-    // Located at the assignment: the field may have changed since the mesh was made.
-    const auto at = k.option_set_at.find("Mesh.DepthField");
-    const field::SizeField* f =
-        built_fields(in, depth_field, at != k.option_set_at.end() ? at->second : lang::SourceRange{}).get(depth_field);
-    if (!f) return fmt::format("Mesh.DepthField = {}: no such field", depth_field);
-    opt.depth.resize(mm.xyz.size());
-    f->eval(mm.xyz, opt.depth);
-  }
+  if (in.options().number("Mesh.DepthField") > 0)
+    if (std::string why = depth_at(in, mm.xyz, opt.depth); !why.empty()) return why;
   return boundary_strings(k.model, *k.mesh, opt.boundaries);
 }
 

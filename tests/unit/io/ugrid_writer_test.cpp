@@ -8,6 +8,7 @@
 #include <cmath>
 #include <fstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "geo/sphere.h"
@@ -38,20 +39,19 @@ struct UgridRead {
     int v = -1;
     return nc_inq_varid(id, var, &v) == NC_NOERR;
   }
-  std::vector<int> ints(const char* var, std::size_t n) const {
+  template <class T>
+  std::vector<T> values(const char* var, std::size_t n) const {
     int v = -1;
     REQUIRE(nc_inq_varid(id, var, &v) == NC_NOERR);
-    std::vector<int> out(n);
-    REQUIRE(nc_get_var_int(id, v, out.data()) == NC_NOERR);
+    std::vector<T> out(n);
+    if constexpr (std::is_same_v<T, int>)
+      REQUIRE(nc_get_var_int(id, v, out.data()) == NC_NOERR);
+    else
+      REQUIRE(nc_get_var_double(id, v, out.data()) == NC_NOERR);
     return out;
   }
-  std::vector<double> doubles(const char* var, std::size_t n) const {
-    int v = -1;
-    REQUIRE(nc_inq_varid(id, var, &v) == NC_NOERR);
-    std::vector<double> out(n);
-    REQUIRE(nc_get_var_double(id, v, out.data()) == NC_NOERR);
-    return out;
-  }
+  std::vector<int> ints(const char* var, std::size_t n) const { return values<int>(var, n); }
+  std::vector<double> doubles(const char* var, std::size_t n) const { return values<double>(var, n); }
   std::string text(const char* var, const char* att) const {
     int v = NC_GLOBAL;
     if (*var) REQUIRE(nc_inq_varid(id, var, &v) == NC_NOERR);

@@ -1,0 +1,39 @@
+"""What the read-back checks share: the readers (a missing one skips the check with exit
+77), a check() that prints each result, running stereomesh on a script of this folder with
+OutDir set, and the exit status."""
+import os
+import subprocess
+import sys
+
+try:
+    import gmsh  # noqa: F401  (the checks import what they use from here)
+    import netCDF4  # noqa: F401
+    import numpy as np  # noqa: F401
+except ImportError as e:  # the CI installs them (.ci/deps)
+    print(f"skipped: {e}")
+    sys.exit(77)
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+failures = []
+
+
+def check(ok, what):
+    print(("ok   " if ok else "FAIL ") + what)
+    if not ok:
+        failures.append(what)
+
+
+def run_script(stereomesh, script, out_dir):
+    """stereomesh -0 SCRIPT -setstring OutDir OUT_DIR; False (a failed check) if it fails."""
+    run = subprocess.run([stereomesh, "-0", os.path.join(HERE, script), "-setstring", "OutDir", out_dir],
+                         capture_output=True, text=True)
+    if run.returncode != 0:
+        print(run.stdout, run.stderr)
+        check(False, "stereomesh ran")
+    return run.returncode == 0
+
+
+def finish():
+    if failures:
+        print(f"{len(failures)} check(s) failed")
+        sys.exit(1)
