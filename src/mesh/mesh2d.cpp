@@ -508,7 +508,7 @@ void FaceMesher::raise_floor() {
   face.is_corner = [this, &corners](VertexId v) {
     return v.value < global_.size() && std::binary_search(corners.begin(), corners.end(), global_[v.value]);
   };
-  face.curve_midpoint = [this](VertexId a, VertexId b) -> std::optional<Vec2> {
+  face.curve_point = [this](VertexId a, VertexId b, double f) -> std::optional<Vec2> {
     const int c = curve_of(a, b);
     const geo::ModelCurve* mc = c > 0 ? model_.curve(c) : nullptr;
     const auto it = mesh_.curves.find(c);
@@ -522,10 +522,11 @@ void FaceMesher::raise_floor() {
     const std::uint32_t ga = global_[a.value], gb = global_[b.value];
     for (std::size_t k = 0; k + 1 < cm.nodes.size(); ++k) {
       if (!((cm.nodes[k] == ga && cm.nodes[k + 1] == gb) || (cm.nodes[k] == gb && cm.nodes[k + 1] == ga))) continue;
-      // The parameter midpoint: on the curve itself, so the geometry does not change.
+      // On the curve itself, so the geometry does not change; f from the node of a.
       pending_.curve = c;
       pending_.k = k;
-      pending_.t = 0.5 * (cm.t[k] + cm.t[k + 1]);
+      const double fk = cm.nodes[k] == ga ? f : 1 - f;
+      pending_.t = (1 - fk) * cm.t[k] + fk * cm.t[k + 1];
       const geo::Curve& shape = *mc->shape;
       pending_.node = shape.on_surface() ? MeshNode{shape.point(pending_.t), shape.eval_uv(pending_.t).p, true}
                                          : MeshNode{shape.point(pending_.t), {}, false};

@@ -88,6 +88,10 @@ class Floor {
   /// and b) and no vertex near it lies in the triangle a, p, b.
   bool bulge_is_clear(Side s, Vec2 p);
   void touched(VertexId v);
+  /// Walks straight from the centroid of t towards p: the first constrained (or hull)
+  /// side crossed, or none with *reached the triangle holding p. Both none when the walk
+  /// gives up (p not finite, a degenerate path).
+  Side blocking_side(TriId t, Vec2 p, TriId* reached) const;
 
   TriangleStore& m_;
   const FloorFace& face_;
@@ -204,26 +208,63 @@ bool Floor::bulge_is_clear(Side s, Vec2 p) {
   return clear;
 }
 
-bool Floor::split_curve_edge(Side s, double must_beat) {
-  if (!face_.curve_midpoint) return false;
-  const VertexId a = m_.org(s), b = m_.dest(s);
-  const std::optional<Vec2> p = face_.curve_midpoint(a, b);
-  if (!p) return false;
-  // The face lies left of a -> b (its triangle tri_of(s)); a point to the right widens it.
-  if (orient2d(m_.pos(a), m_.pos(b), *p) == Sign::Negative && !bulge_is_clear(s, *p)) return false;
-  const Vec3 xp = face_.to_space(*p);
-  for (const Side side : {s, m_.twin[s.value]}) {
-    if (!side.valid()) continue;
-    const Vec3 xa = x_[m_.org(side).value], xb = x_[m_.dest(side).value], xc = x_[m_.apex(side).value];
-    if (!(std::min(rho(xa, xp, xc), rho(xp, xb, xc)) > must_beat)) return false;
+Side Floor::blocking_side(TriId t, Vec2 p, TriId* reached) const {
+  *reached = TriId{};
+  if (!std::isfinite(p.x) || !std::isfinite(p.y)) return Side{};
+  const Vec2 g = (m_.pos(m_.vertex(t, 0)) + m_.pos(m_.vertex(t, 1)) + m_.pos(m_.vertex(t, 2))) / 3.0;
+  TriId u = t;
+  Side entry;
+  for (std::uint32_t step = 0; step < 4 * m_.num_slots() + 16; ++step) {
+    Side exit;
+    for (std::uint32_t e = 0; e < 3 && !exit.valid(); ++e) {
+      const Side s = side_of(u, e);
+      if (entry.valid() && s == entry) continue;
+      const Vec2 a = m_.pos(m_.org(s)), b = m_.pos(m_.dest(s));
+      // p strictly beyond the side (u is left of a -> b) and the segment g -> p passes
+      // between its ends (a vertex on the path counts on one side only).
+      if (orient2d(a, b, p) != Sign::Negative) continue;
+      const Sign sa = orient2d(g, p, a), sb = orient2d(g, p, b);
+      if (sa != Sign::Negative && sb == Sign::Negative) exit = s;
+    }
+    if (!exit.valid()) {
+      *reached = u;
+      return Side{};
+    }
+    if (m_.constrained(exit) || !m_.twin[exit.value].valid()) return exit;
+    entry = m_.twin[exit.value];
+    u = tri_of(entry);
   }
-  const VertexId v = split_edge(m_, s, *p, /*allow_constrained=*/true);
-  if (!v.valid()) return false;
-  face_.curve_split_done(a, b, v);
-  ++res_.curve_splits;
-  sync_space();
-  touched(v);
-  return true;
+  return Side{};
+}
+
+bool Floor::split_curve_edge(Side s, double must_beat) {
+  if (!face_.curve_point) return false;
+  const VertexId a = m_.org(s), b = m_.dest(s);
+  // The curve's parameter midpoint first; where the curve bulges so far from its chord that
+  // a triangle beside it would turn over (a narrow inlet's tip between two nodes), points
+  // nearer the ends, which bulge less.
+  for (const double f : {0.5, 0.25, 0.75}) {
+    const std::optional<Vec2> p = face_.curve_point(a, b, f);
+    if (!p) return false;
+    // The face lies left of a -> b (its triangle tri_of(s)); a point to the right widens it.
+    if (orient2d(m_.pos(a), m_.pos(b), *p) == Sign::Negative && !bulge_is_clear(s, *p)) continue;
+    const Vec3 xp = face_.to_space(*p);
+    bool good = true;
+    for (const Side side : {s, m_.twin[s.value]}) {
+      if (!side.valid()) continue;
+      const Vec3 xa = x_[m_.org(side).value], xb = x_[m_.dest(side).value], xc = x_[m_.apex(side).value];
+      good = good && std::min(rho(xa, xp, xc), rho(xp, xb, xc)) > must_beat;
+    }
+    if (!good) continue;
+    const VertexId v = split_edge(m_, s, *p, /*allow_constrained=*/true);
+    if (!v.valid()) continue;
+    face_.curve_split_done(a, b, v);
+    ++res_.curve_splits;
+    sync_space();
+    touched(v);
+    return true;
+  }
+  return false;
 }
 
 bool Floor::improve(TriId t) {
@@ -232,22 +273,42 @@ bool Floor::improve(TriId t) {
   for (std::uint32_t e = 0; e < 3; ++e) by_len[e] = {-len3(side_of(t, e)), e};
   std::sort(by_len, by_len + 3);
   const Side longest = side_of(t, by_len[0].second);
-  // A split may make a triangle worse than t (the next rounds split on), but never worse
-  // than half of t (nor, with never_below_start, than the worst triangle at the start).
-  const double r = never_below_start_ ? std::max(0.5 * rho3(t), worst_start_) : 0.5 * rho3(t);
+  // A change may make a triangle worse than t, as Ruppert's refinement does: a narrow
+  // inlet's coast is split down to its width through slivers the next rounds split on.
+  // With never_below_start (the second try of a face that ended worse than it started),
+  // never worse than half of t nor than the worst triangle at the start.
+  const double r = never_below_start_ ? std::max(0.5 * rho3(t), worst_start_) : 0.0;
   if (m_.constrained(longest) && split_curve_edge(longest, r)) return true;
   // A sliver between two coasts: its circumcentre lies far beyond them; a triangle near
   // a curve: its circumcentre may crowd the curve. Either way the curve edge is split.
   const Vec2 a = m_.pos(m_.vertex(t, 0)), b = m_.pos(m_.vertex(t, 1)), c = m_.pos(m_.vertex(t, 2));
   const Vec2 cc = circumcentre(a, b, c);
-  const TriId at = std::isfinite(cc.x) && std::isfinite(cc.y) ? ins_.locate(cc, t) : TriId{};
+  // Ruppert's rule: a circumcentre beyond a curve, as seen from t, is not inserted; the
+  // curve edge in the way is split.
+  TriId at;
+  const Side blocked = blocking_side(t, cc, &at);
+  if (blocked.valid() && split_curve_edge(blocked, r)) return true;
+  // A curve edge whose diametral circle holds cc, among the sides of the triangles within
+  // two steps of `u` (the point's cavity reaches them; a point that close to a curve
+  // would leave a sliver on it): Ruppert's encroachment, which splits the edge instead.
   auto encroached = [&](TriId u) {
-    for (std::uint32_t e = 0; e < 3; ++e) {
-      const Side s = side_of(u, e);
-      if (!m_.constrained(s)) continue;
-      const Vec2 e0 = m_.pos(m_.org(s)), e1 = m_.pos(m_.dest(s));
-      if (dot(e0 - cc, e1 - cc) < 0) return s;   // inside the edge's diametral circle
-    }
+    TriId ring[1 + 3 + 6];
+    std::uint32_t n = 0;
+    ring[n++] = u;
+    for (std::uint32_t i = 0; i < n && i < 4; ++i)
+      for (std::uint32_t e = 0; e < 3; ++e) {
+        const Side s = side_of(ring[i], e);
+        if (m_.constrained(s) || !m_.twin[s.value].valid()) continue;
+        const TriId w = tri_of(m_.twin[s.value]);
+        if (std::find(ring, ring + n, w) == ring + n && n < 10) ring[n++] = w;
+      }
+    for (std::uint32_t i = 0; i < n; ++i)
+      for (std::uint32_t e = 0; e < 3; ++e) {
+        const Side s = side_of(ring[i], e);
+        if (!m_.constrained(s)) continue;
+        const Vec2 e0 = m_.pos(m_.org(s)), e1 = m_.pos(m_.dest(s));
+        if (dot(e0 - cc, e1 - cc) < 0) return s;   // inside the edge's diametral circle
+      }
     return Side{};
   };
   if (at.valid()) {
@@ -260,8 +321,12 @@ bool Floor::improve(TriId t) {
       return true;
     }
   }
+  // Its other curve sides, longest first; never one much shorter than the longest: that
+  // is the short side of a needle, and halving it makes two needles (a fan of them
+  // round the far corner, round after round).
   for (const auto& [neg_len, e] : by_len)
-    if (m_.constrained(side_of(t, e)) && split_curve_edge(side_of(t, e), r)) return true;
+    if (neg_len < 0.5 * by_len[0].first && m_.constrained(side_of(t, e)) && split_curve_edge(side_of(t, e), r))
+      return true;
   // All three corners on the coast across a strait narrower than the coast's edges (or
   // the circumcentre beyond the coast): the coast edges at its corners are split, longest
   // first, so that their spacing comes down to the width. (Splitting the sliver's own

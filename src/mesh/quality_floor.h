@@ -1,11 +1,13 @@
 // The quality floor (Mesh.QualityFloor): after a face is refined and optimised, every
 // triangle below rho = q (measured in space: exact/triangle_rho.h) is worked on in
-// bounded rounds: a curve edge is split at its curve's parameter midpoint (the face
-// tells where: the geometry does not change and faces meshed later see the same node),
-// an interior triangle gets its circumcentre inserted (Delaunay insertion, exact
-// predicates) unless that point is beyond or encroaches a curve edge, which is then split
-// instead. Triangles at a corner where the input curves meet at an angle too sharp for q
-// are left alone and reported.
+// bounded rounds, after Ruppert's refinement: a curve edge is split at a point of its
+// curve (the parameter midpoint, or a quarter from an end where the midpoint would turn a
+// triangle over; the face tells where: the geometry does not change and faces meshed
+// later see the same node), an interior triangle gets its circumcentre inserted (Delaunay
+// insertion, exact predicates) unless that point lies beyond a curve edge seen from the
+// triangle or inside the diametral circle of one nearby, which is then split instead.
+// Triangles at a corner where the input curves meet at an angle too sharp for q are left
+// alone and reported.
 #pragma once
 
 #include <cstdint>
@@ -20,13 +22,14 @@ namespace sm {
 
 struct QualityFloorOptions {
   double floor = 0.3;   ///< q: work on triangles with rho < q; <= 0: do nothing
-  /// Rounds over the triangles still below q (each round handles every one once).
-  int max_rounds = 12;
+  /// Rounds over the triangles still below q (each round handles every one once). A
+  /// narrow inlet's coast takes a round per halving of its edges down to its width.
+  int max_rounds = 40;
   /// Points (curve splits and interior points) a face may get; 0: 16 per triangle
   /// below q at the start, plus 256.
   std::uint32_t max_points = 0;
-  /// A change may leave a triangle at half the rho of the one worked on (the next rounds
-  /// mend it); with this set, also never below the worst triangle at the start.
+  /// A change may leave triangles worse than the one worked on (the next rounds mend
+  /// them); with this set, never below half of its rho nor the worst one at the start.
   bool never_below_start = false;
 };
 
@@ -36,10 +39,11 @@ struct FloorFace {
   std::function<Vec3(VertexId)> space;
   /// The point in space of a plane point (to judge a change before making it).
   std::function<Vec3(Vec2)> to_space;
-  /// The plane point of the curve point halfway (in the curve's parameter) between the
-  /// ends of the constrained edge a - b; none when the edge is not a curve edge.
-  std::function<std::optional<Vec2>(VertexId a, VertexId b)> curve_midpoint;
-  /// That split was made in the triangulation: v (at the point curve_midpoint gave last)
+  /// The plane point of the curve point at fraction f (in the curve's parameter) from a
+  /// to b, the ends of the constrained edge a - b; none when the edge is not a curve edge
+  /// (or its curve may not change).
+  std::function<std::optional<Vec2>(VertexId a, VertexId b, double f)> curve_point;
+  /// That split was made in the triangulation: v (at the point curve_point gave last)
   /// now lies between a and b.
   std::function<void(VertexId a, VertexId b, VertexId v)> curve_split_done;
   /// Whether v is a model vertex's node, where input curves may meet at a corner.
