@@ -123,11 +123,80 @@ std::vector<Vec2> polygon(const FlatLoop& f) {
 
 bool in_box(Vec2 p, Vec2 lo, Vec2 hi) { return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y; }
 
+// The segments of the loops at the start of a closing round, binned on a uniform grid of
+// the (u,v) plane, so that a cut looks only at the segments near its quad instead of every
+// coast segment (hundreds of cuts on the world's coast at 30 km).
+class SegmentGrid {
+ public:
+  explicit SegmentGrid(const std::vector<std::vector<Vec2>>& polys) : polys_(polys) {
+    std::size_t n = 0;
+    lo_ = {1e300, 1e300};
+    Vec2 hi{-1e300, -1e300};
+    for (const auto& p : polys)
+      for (Vec2 x : p) {
+        lo_ = {std::min(lo_.x, x.x), std::min(lo_.y, x.y)};
+        hi = {std::max(hi.x, x.x), std::max(hi.y, x.y)};
+        ++n;
+      }
+    if (n == 0) return;
+    // About one segment per cell on average.
+    side_ = static_cast<std::uint32_t>(std::clamp(std::sqrt(static_cast<double>(n)), 1.0, 2048.0));
+    cell_ = std::max({hi.x - lo_.x, hi.y - lo_.y, 1e-300}) / side_;
+    cells_.assign(static_cast<std::size_t>(side_) * side_, {});
+    for (std::uint32_t l = 0; l < polys.size(); ++l)
+      for (std::uint32_t j = 0; j < polys[l].size(); ++j) {
+        const Vec2 a = polys[l][j], b = polys[l][(j + 1) % polys[l].size()];
+        const auto [x0, y0] = at({std::min(a.x, b.x), std::min(a.y, b.y)});
+        const auto [x1, y1] = at({std::max(a.x, b.x), std::max(a.y, b.y)});
+        for (std::uint32_t y = y0; y <= y1; ++y)
+          for (std::uint32_t x = x0; x <= x1; ++x) cells_[std::size_t{y} * side_ + x].push_back({l, j});
+      }
+    seen_.assign(n, 0);
+    first_.resize(polys.size());
+    for (std::size_t l = 0, k = 0; l < polys.size(); k += polys[l].size(), ++l) first_[l] = k;
+  }
+  /// Calls f(s0, s1) once for every segment whose box may meet the box [lo, hi].
+  template <class F>
+  bool any_near(Vec2 lo, Vec2 hi, F&& f) {
+    if (cells_.empty()) return false;
+    ++stamp_;
+    const auto [x0, y0] = at(lo);
+    const auto [x1, y1] = at(hi);
+    for (std::uint32_t y = y0; y <= y1; ++y)
+      for (std::uint32_t x = x0; x <= x1; ++x)
+        for (const auto& [l, j] : cells_[std::size_t{y} * side_ + x]) {
+          std::uint32_t& mark = seen_[first_[l] + j];
+          if (mark == stamp_) continue;
+          mark = stamp_;
+          const auto& p = polys_[l];
+          if (f(p[j], p[(j + 1) % p.size()])) return true;
+        }
+    return false;
+  }
+
+ private:
+  std::pair<std::uint32_t, std::uint32_t> at(Vec2 p) const {
+    auto c = [&](double v, double o) {
+      return static_cast<std::uint32_t>(std::clamp((v - o) / cell_, 0.0, static_cast<double>(side_ - 1)));
+    };
+    return {c(p.x, lo_.x), c(p.y, lo_.y)};
+  }
+  const std::vector<std::vector<Vec2>>& polys_;
+  Vec2 lo_{0, 0};
+  double cell_ = 1;
+  std::uint32_t side_ = 0, stamp_ = 0;
+  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> cells_;
+  std::vector<std::uint32_t> seen_;
+  std::vector<std::size_t> first_;
+};
+
 // Whether the cut at a0->a1, b0->b1 can be made: the other segment on the water side of
 // each, the two dams a0->b1 and b0->a1 crossing nothing (nor `extra` dams already made),
-// and no vertex inside the quad a0 a1 b0 b1 that would become land.
-bool cut_is_clean(const std::vector<FlatLoop>& flat, Vec2 a0, Vec2 a1, Vec2 b0, Vec2 b1,
-                  const std::vector<std::pair<Vec2, Vec2>>& extra) {
+// and no vertex inside the quad a0 a1 b0 b1 that would become land. `for_segments(lo, hi,
+// f)` calls f on every coast segment that may meet the box [lo, hi] until f says true.
+template <class ForSegments>
+bool cut_is_clean_near(ForSegments&& for_segments, Vec2 a0, Vec2 a1, Vec2 b0, Vec2 b1,
+                       const std::vector<std::pair<Vec2, Vec2>>& extra) {
   if (orient2d(a0, a1, b0) != Sign::Positive || orient2d(a0, a1, b1) != Sign::Positive ||
       orient2d(b0, b1, a0) != Sign::Positive || orient2d(b0, b1, a1) != Sign::Positive)
     return false;
@@ -149,19 +218,26 @@ bool cut_is_clean(const std::vector<FlatLoop>& flat, Vec2 a0, Vec2 a1, Vec2 b0, 
   };
   for (const auto& e : extra)
     if (crosses(e.first, e.second)) return false;
-  for (const FlatLoop& f : flat) {
-    if (f.dead) continue;
-    const std::size_t n = f.kept.size();
-    for (std::size_t j = 0; j < n; ++j) {
-      const Vec2 s0 = f.p(j), s1 = f.p(j + 1);
-      if (crosses(s0, s1)) return false;
-      if (!is_corner(s0) && in_box(s0, lo, hi) && orient2d(a0, a1, s0) == Sign::Positive &&
-          orient2d(a1, b0, s0) == Sign::Positive && orient2d(b0, b1, s0) == Sign::Positive &&
-          orient2d(b1, a0, s0) == Sign::Positive)
-        return false;
+  return !for_segments(lo, hi, [&](Vec2 s0, Vec2 s1) {
+    if (crosses(s0, s1)) return true;
+    return !is_corner(s0) && in_box(s0, lo, hi) && orient2d(a0, a1, s0) == Sign::Positive &&
+           orient2d(a1, b0, s0) == Sign::Positive && orient2d(b0, b1, s0) == Sign::Positive &&
+           orient2d(b1, a0, s0) == Sign::Positive;
+  });
+}
+
+// cut_is_clean_near over every segment of the live loops.
+bool cut_is_clean(const std::vector<FlatLoop>& flat, Vec2 a0, Vec2 a1, Vec2 b0, Vec2 b1,
+                  const std::vector<std::pair<Vec2, Vec2>>& extra) {
+  auto all = [&](Vec2, Vec2, auto&& f) {
+    for (const FlatLoop& l : flat) {
+      if (l.dead) continue;
+      for (std::size_t j = 0; j < l.kept.size(); ++j)
+        if (f(l.p(j), l.p(j + 1))) return true;
     }
-  }
-  return true;
+    return false;
+  };
+  return cut_is_clean_near(all, a0, a1, b0, b1, extra);
 }
 
 std::uint32_t new_dam(Work& w, const Node& from) {
@@ -285,6 +361,11 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
     cands.push_back({d, m.loop_a, m.seg_a, m.loop_b, m.seg_b, 0.25 * (a0 + a1 + b0 + b1)});
   }
   std::stable_sort(cands.begin(), cands.end(), [](const Candidate& x, const Candidate& y) { return x.width < y.width; });
+  // The round's segments as they were at its start: the cuts made since only replaced two
+  // segments by two dams (in `made`) or dropped water, so checking against the start's
+  // segments too is the same or stricter (a stricter refusal is retried next round).
+  SegmentGrid grid(polys);
+  auto near = [&](Vec2 lo, Vec2 hi, auto&& f) { return grid.any_near(lo, hi, f); };
   std::vector<char> touched(w.flat.size(), 0);
   std::vector<std::pair<Vec2, Vec2>> made;
   bool any = false;
@@ -294,7 +375,7 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
     const auto& pb = polys[c.lb];
     const Vec2 a0 = pa[c.sa], a1 = pa[(c.sa + 1) % pa.size()];
     const Vec2 b0 = pb[c.sb], b1 = pb[(c.sb + 1) % pb.size()];
-    if (!cut_is_clean(w.flat, a0, a1, b0, b1, made)) continue;
+    if (!cut_is_clean_near(near, a0, a1, b0, b1, made)) continue;
     touched[c.la] = touched[c.lb] = 1;
     made.push_back({a0, b1});
     made.push_back({b0, a1});
