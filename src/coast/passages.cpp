@@ -58,6 +58,13 @@ struct FlatLoop {
       if (nodes[i].kept) kept.push_back(i);
   }
   Vec2 p(std::size_t j) const { return nodes[kept[j % kept.size()]].uv; }
+  /// Dead: nothing reads it again, so its points are freed (a continent's ring is copied
+  /// by every cut of it: hundreds of copies of the world's coast otherwise, 380 MB).
+  void kill() {
+    dead = true;
+    std::vector<Node>().swap(nodes);
+    std::vector<std::uint32_t>().swap(kept);
+  }
 };
 
 struct DamInfo {
@@ -268,7 +275,8 @@ CutResult cut(Work& w, std::uint32_t la, std::size_t ja, std::uint32_t lb, std::
     a.back().src = new_dam(w, a.back());   // a0 -> b1
     b.back().src = new_dam(w, b.back());   // b0 -> a1
     a.insert(a.end(), b.begin(), b.end());
-    w.flat[la].dead = w.flat[lb].dead = true;
+    w.flat[la].kill();
+    w.flat[lb].kill();
     w.flat.push_back(make_loop(std::move(a)));
     r.new_loops.push_back(static_cast<std::uint32_t>(w.flat.size() - 1));
     return r;
@@ -283,7 +291,7 @@ CutResult cut(Work& w, std::uint32_t la, std::size_t ja, std::uint32_t lb, std::
   std::vector<Node> second(chain.begin() + static_cast<std::ptrdiff_t>(pb1), chain.end());
   first.back().src = new_dam(w, first.back());     // b0 -> a1
   second.back().src = new_dam(w, second.back());   // a0 -> b1
-  f.dead = true;
+  f.kill();
   for (auto* part : {&first, &second}) {
     w.flat.push_back(make_loop(std::move(*part)));
     r.new_loops.push_back(static_cast<std::uint32_t>(w.flat.size() - 1));
@@ -309,17 +317,17 @@ std::vector<double> ring_metres(const FlatLoop& f, double radius) {
 void drop_if_narrow(Work& w, std::uint32_t l, std::vector<RepairEntry>& log) {
   FlatLoop& f = w.flat[l];
   if (f.kept.size() < 3 || ring_orientation(polygon(f)) == Sign::Zero) {
-    f.dead = true;
+    f.kill();
     return;
   }
   if (f.hole) return;
   const double mw = mean_width_m(f, w.opt.radius);
   if (w.opt.min_width > 0 && mw < w.opt.min_width) {
-    f.dead = true;
     const Node& n0 = f.nodes[f.kept[0]];
     const DamInfo info = n0.src < w.n_curves ? DamInfo{w.curves[n0.src].record, w.curves[n0.src].id}
                                              : w.dams[n0.src - w.n_curves];
     log.push_back({RepairKind::NarrowWater, info.record, info.id, n0.ll, mw});
+    f.kill();
   }
 }
 
