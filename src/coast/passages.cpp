@@ -3,6 +3,10 @@
 #include "coast/passages.h"
 
 #include <algorithm>
+#include <bit>
+#include <map>
+#include <optional>
+#include <tuple>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -336,18 +340,57 @@ DamInfo info_of(const Work& w, const Node& n) {
 }
 
 // One round of automatic closures: the narrowest clean cut of each loop. False: none left.
+// Where the kept segments of the loops made during a round are: a cut leaves every other
+// segment as it was (in a new loop, at a new position), so a candidate found at the
+// round's start is followed into the loops made since by its segments' start points.
+class SegmentIndex {
+ public:
+  void add(const std::vector<FlatLoop>& flat, std::uint32_t l) {
+    const FlatLoop& f = flat[l];
+    for (std::uint32_t j = 0; j < f.kept.size(); ++j) at_[key(f.p(j))] = {l, j};
+  }
+  /// The live loop and kept position of the segment s0 -> s1 (none when it is gone).
+  std::optional<std::pair<std::uint32_t, std::uint32_t>> find(const std::vector<FlatLoop>& flat, Vec2 s0,
+                                                               Vec2 s1) const {
+    const auto it = at_.find(key(s0));
+    if (it == at_.end()) return std::nullopt;
+    const auto [l, j] = it->second;
+    if (flat[l].dead || !(flat[l].p(j) == s0) || !(flat[l].p(j + 1) == s1)) return std::nullopt;
+    return it->second;
+  }
+
+ private:
+  static std::pair<std::uint64_t, std::uint64_t> key(Vec2 p) {
+    return {std::bit_cast<std::uint64_t>(p.x), std::bit_cast<std::uint64_t>(p.y)};
+  }
+  std::map<std::pair<std::uint64_t, std::uint64_t>, std::pair<std::uint32_t, std::uint32_t>> at_;
+};
+
 bool close_round(Work& w, std::vector<RepairEntry>& log) {
   const double W = w.opt.min_width;
   const double R = w.opt.radius;
   std::vector<std::vector<Vec2>> polys(w.flat.size());
   std::vector<std::vector<double>> width(w.flat.size());
-  std::vector<std::vector<double>> cum(w.flat.size());
   for (std::size_t l = 0; l < w.flat.size(); ++l) {
     if (w.flat[l].dead) continue;
     polys[l] = polygon(w.flat[l]);
     for (Vec2 p : polys[l]) width[l].push_back(1.01 * W / lambda_m(p, R));
-    cum[l] = ring_metres(w.flat[l], R);
   }
+  // Cumulative metres round a loop, made when a candidate on one loop asks for them.
+  std::map<std::uint32_t, std::vector<double>> cum;
+  auto ring = [&](std::uint32_t l) -> const std::vector<double>& {
+    auto it = cum.find(l);
+    if (it == cum.end()) it = cum.emplace(l, ring_metres(w.flat[l], R)).first;
+    return it->second;
+  };
+  // Two parts of one ring (kept segments i and j): a passage only when the way round
+  // between them is much longer than the way across (not the two sides of a corner).
+  auto passage_on_one_ring = [&](std::uint32_t l, std::uint32_t sa, std::uint32_t sb, double d) {
+    const auto& c = ring(l);
+    const std::uint32_t i = std::min(sa, sb), j = std::max(sa, sb);
+    const double inner = c[j] - c[i + 1], outer = c.back() - (c[j + 1] - c[i]);
+    return std::min(inner, outer) > kHalfPi * d;
+  };
   std::vector<Candidate> cands;
   for (const NearMiss& m : find_near_misses(polys, width)) {
     const auto& pa = polys[m.loop_a];
@@ -358,14 +401,7 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
     const double d = std::min({uv_point_segment_metres(a0, b0, b1, R), uv_point_segment_metres(a1, b0, b1, R),
                                uv_point_segment_metres(b0, a0, a1, R), uv_point_segment_metres(b1, a0, a1, R)});
     if (!(d < W * (1 - kWidthTolerance))) continue;
-    if (m.loop_a == m.loop_b) {
-      // Two parts of one ring: a passage only when the way round between them is much
-      // longer than the way across (not the two sides of a corner).
-      const auto& c = cum[m.loop_a];
-      const std::uint32_t i = std::min(m.seg_a, m.seg_b), j = std::max(m.seg_a, m.seg_b);
-      const double inner = c[j] - c[i + 1], outer = c.back() - (c[j + 1] - c[i]);
-      if (!(std::min(inner, outer) > kHalfPi * d)) continue;
-    }
+    if (m.loop_a == m.loop_b && !passage_on_one_ring(m.loop_a, m.seg_a, m.seg_b, d)) continue;
     cands.push_back({d, m.loop_a, m.seg_a, m.loop_b, m.seg_b, 0.25 * (a0 + a1 + b0 + b1)});
   }
   std::stable_sort(cands.begin(), cands.end(), [](const Candidate& x, const Candidate& y) { return x.width < y.width; });
@@ -374,27 +410,39 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
   // segments too is the same or stricter (a stricter refusal is retried next round).
   SegmentGrid grid(polys);
   auto near = [&](Vec2 lo, Vec2 hi, auto&& f) { return grid.any_near(lo, hi, f); };
-  std::vector<char> touched(w.flat.size(), 0);
+  SegmentIndex moved;
   std::vector<std::pair<Vec2, Vec2>> made;
   bool any = false;
   for (const Candidate& c : cands) {
-    if (touched[c.la] || touched[c.lb]) continue;
     const auto& pa = polys[c.la];
     const auto& pb = polys[c.lb];
     const Vec2 a0 = pa[c.sa], a1 = pa[(c.sa + 1) % pa.size()];
     const Vec2 b0 = pb[c.sb], b1 = pb[(c.sb + 1) % pb.size()];
+    // Its segments where they are now: as found, or in the loops a cut made this round
+    // (where the one-ring test is made again, as the next round would).
+    std::uint32_t la = c.la, sa = c.sa, lb = c.lb, sb = c.sb;
+    if (w.flat[la].dead || w.flat[lb].dead) {
+      const auto fa = moved.find(w.flat, a0, a1), fb = moved.find(w.flat, b0, b1);
+      const auto here = [&](std::uint32_t l, std::uint32_t j) {
+        return std::optional<std::pair<std::uint32_t, std::uint32_t>>{{l, j}};
+      };
+      const auto ra = w.flat[la].dead ? fa : here(la, sa), rb = w.flat[lb].dead ? fb : here(lb, sb);
+      if (!ra || !rb) continue;
+      std::tie(la, sa) = *ra;
+      std::tie(lb, sb) = *rb;
+      if (la == lb && (sa == sb || !passage_on_one_ring(la, sa, sb, c.width))) continue;
+    }
     if (!cut_is_clean_near(near, a0, a1, b0, b1, made)) continue;
-    touched[c.la] = touched[c.lb] = 1;
     made.push_back({a0, b1});
     made.push_back({b0, a1});
-    const DamInfo info = info_of(w, w.flat[c.la].nodes[w.flat[c.la].kept[c.sa]]);
-    const CutResult r = cut(w, c.la, c.sa, c.lb, c.sb);
+    const DamInfo info = info_of(w, w.flat[la].nodes[w.flat[la].kept[sa]]);
+    const CutResult r = cut(w, la, sa, lb, sb);
     std::size_t dropped = 0;
     for (std::uint32_t l : r.new_loops) {
       drop_if_narrow(w, l, log);
       dropped += w.flat[l].dead;
+      if (!w.flat[l].dead) moved.add(w.flat, l);
     }
-    touched.resize(w.flat.size(), 1);
     if (dropped == 0)   // a cut that only trims narrow water is listed as NarrowWater
       log.push_back({RepairKind::ClosedPassage, info.record, info.id, unit_sphere().lonlat_from_param(c.where), c.width});
     any = true;

@@ -187,6 +187,35 @@ TEST_CASE("passages: a dead-end inlet narrower than W is closed at its mouth") {
   CHECK(inside == 0);
 }
 
+TEST_CASE("passages: several inlets of one coast are closed, a wider one stays open") {
+  // One ring with four dead-end inlets going south from lat 0 at lon -0.6, -0.2, 0.2 and
+  // 0.6 (in the box): three narrower than W, the one at 0.2 three times W wide. A round follows the
+  // inlets still to close into the loops the first cuts made.
+  Coastline c;
+  c.file = "comb";
+  const double h = kPassW / 2;
+  const double centres[4] = {-0.6, -0.2, 0.2, 0.6};
+  std::vector<geo::LonLat> corners{{-2, -2}, {2, -2}, {2, 0}};
+  for (int k = 3; k >= 0; --k) {
+    const double x = centres[k], half = k == 2 ? 3 * h : h;
+    for (geo::LonLat p : {geo::LonLat{x + half, 0}, {x + half, -0.5}, {x - half, -0.5}, {x - half, 0}})
+      corners.push_back(p);
+  }
+  corners.push_back({-2, 0});
+  c.rings.push_back(pass_ring(corners, 0));
+  auto m = build_coast_model(c, pass_options(1500));
+  REQUIRE(m.ok());
+  pass_check_clean(*m);
+  CHECK(m->surfaces.size() == 1);
+  CHECK(m->report.count(RepairKind::NarrowWater) >= 3);
+  for (int k = 0; k < 4; ++k) {
+    std::size_t inside = 0;
+    for (const CoastCurve& cc : m->curves)
+      for (geo::LonLat p : cc.ll) inside += p.lat < -0.045 && std::abs(p.lon - centres[k]) < 0.1;
+    CHECK_MESSAGE((inside > 0) == (k == 2), "inlet at lon ", centres[k]);
+  }
+}
+
 TEST_CASE("passages: a dam by hand across the canal makes two seas; one on land is an error") {
   ImportOptions o = pass_options(0);
   o.dams = {{{0, -0.5}, {0, 0.5}}};
