@@ -14,6 +14,7 @@ DefineConstant[ gamma = 15000, CoastSize = 5e3, FarSize = 30e3, ShoreReach = 200
 DefineConstant[ ShoreSizeMin = CoastSize, ShoreSizeMax = FarSize, ShoreDistMax = ShoreReach ];
 quiet = Quiet;
 EarthRadius = 6371009;                         // the radius gb_ireland_coarsening.geo uses
+MeshAtAccuracy = 0;                            // the sizes are the shore field's below
 Include "gb_ireland_coarsening.geo";           // PolarSphere(1), Coastline[1], Plane Surface(1)
 Include "earth.geo";
 Include "ocean_fields.geo";

@@ -6,7 +6,9 @@
 // against our reference counts on GSHHG 2.3.7 (docs/coastlines.md section 8, paper's in
 // brackets): 100 km 2 / 40 [2], 15 km 16 / 594 [~15], 1.5 km 155 / 10,332 [152],
 // 150 m 2,438 / 81,848 [2,176 / 83,277].
-DefineConstant[ gamma = 15000, quiet = 0 ];   // quiet: no Printf (the script tests include this file)
+DefineConstant[ gamma = 15000, quiet = 0, MeshAtAccuracy = 1 ];
+// quiet: no Printf (the script tests include this file); MeshAtAccuracy = 0: no mesh sizes
+// (examples/gb_ireland.geo includes this file and sets its own).
 
 R = 6371009;                       // metres: the accuracy field is evaluated on this sphere
 Point(1) = {0, 0, 0};
@@ -35,6 +37,14 @@ If (!quiet)
 EndIf
 
 Plane Surface(1) = loops[];
+// Meshed (-2), the coast as coarsened is drawn to gamma: edges of that size follow it (no
+// smaller than 5 km, so that the 150 m panel stays near 100,000 triangles). Without a size
+// the curves get 150 km chords that cut across their own bays, and the mesh has slivers
+// no split on the curve can mend (rho 0).
+If (MeshAtAccuracy)
+  Mesh.MeshSizeMax = Max(gamma, 5e3);
+  Mesh.MeshSizeExtendFromBoundary = 0;
+EndIf
 
 // Reference counts (GSHHG 2.3.7) with the tolerances tests/scripts/coastline/figure5_*.geo check.
 ref_islands = 0;  ref_points = 0;
