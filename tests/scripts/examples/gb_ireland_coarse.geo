@@ -28,3 +28,6 @@ Printf("2D: triangles within 10%% of 18301: %g, rho > 0.9 share >= 0.902: %g, ed
        Fabs(Mesh.NbTriangles - 18301) < 0.1 * 18301, Mesh.StatsRhoAbove09 >= 0.902,
        Mesh.StatsEdgeInRange >= 0.954);
 // expect: 2D: triangles within 10% of 18301: 1, rho > 0.9 share >= 0.902: 1, edges in range >= 0.954: 1
+// Mesh.QualityFloor (0.3 by default): no triangle below it on this real coast.
+Printf("rho min >= 0.3: %g", Mesh.StatsRhoMin >= 0.3);
+// expect: rho min >= 0.3: 1

@@ -33,3 +33,6 @@ Printf("2D: triangles within 10%% of 4558: %g, rho > 0.9 share >= 0.853: %g, edg
        Fabs(Mesh.NbTriangles - 4558) < 0.1 * 4558, Mesh.StatsRhoAbove09 >= 0.853,
        Mesh.StatsEdgeInRange >= 0.931);
 // expect: 2D: triangles within 10% of 4558: 1, rho > 0.9 share >= 0.853: 1, edges in range >= 0.931: 1
+// Mesh.QualityFloor (0.3 by default): no triangle below it on this real coast.
+Printf("rho min >= 0.3: %g", Mesh.StatsRhoMin >= 0.3);
+// expect: rho min >= 0.3: 1

@@ -22,3 +22,6 @@ Printf("%g coast points in the Gulf of Panama", pacific);
 Mesh 2;
 Printf("triangles within 10%% of 16478: %g", Fabs(Mesh.NbTriangles - 16478) < 0.1 * 16478);
 // expect: triangles within 10% of 16478: 1
+// Mesh.QualityFloor (0.3 by default): no triangle below it on this real coast.
+Printf("rho min >= 0.3: %g", Mesh.StatsRhoMin >= 0.3);
+// expect: rho min >= 0.3: 1

@@ -11,3 +11,6 @@ Printf("%g sea(s), %g open curve(s), %g on the West side", #RegionalSurfaces[], 
 Mesh 2;
 Printf("triangles within 10%% of 20381: %g", Fabs(Mesh.NbTriangles - 20381) < 0.1 * 20381);
 // expect: triangles within 10% of 20381: 1
+// Mesh.QualityFloor (0.3 by default): no triangle below it on this real coast.
+Printf("rho min >= 0.3: %g", Mesh.StatsRhoMin >= 0.3);
+// expect: rho min >= 0.3: 1

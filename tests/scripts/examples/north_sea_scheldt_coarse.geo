@@ -27,3 +27,6 @@ Printf("2D: triangles within 10%% of 3072: %g, rho > 0.9 share >= 0.824: %g, edg
        Fabs(Mesh.NbTriangles - 3072) < 0.1 * 3072, Mesh.StatsRhoAbove09 >= 0.824,
        Mesh.StatsEdgeInRange >= 0.887);
 // expect: 2D: triangles within 10% of 3072: 1, rho > 0.9 share >= 0.824: 1, edges in range >= 0.887: 1
+// Mesh.QualityFloor (0.3 by default): no triangle below it on this real coast.
+Printf("rho min >= 0.3: %g", Mesh.StatsRhoMin >= 0.3);
+// expect: rho min >= 0.3: 1
