@@ -39,13 +39,12 @@ Coastline[1].AntarcticaLevel = 5;            // the ice front, as GSHHS level 5
 // Straits narrower than gamma closed (the two islands merged): without this the coasts'
 // 1D mesh crosses itself in the Singapore Strait at 30 km (curves near 101.46E 1.75N).
 Coastline[1].CloseStraits = CloseStraits;
-// Water narrower than gamma inside one coast (the Coorong lagoon, the Suez Canal's ends,
-// fjords) is not in the coast as drawn either: left open, its triangles have all three
-// nodes on the coast (rho 0.018, 14 below the 0.3 floor); closed at its narrowest place and
-// filled (418 closures, 2.2 s of import), the worst triangle is rho 0.20, at the 6.3 degree
-// corner of the Curonian Spit that the floor reports. 12 seas instead of 1 (the Black Sea,
-// the Baltic, ... become their own surfaces).
+// Water narrower than gamma that ends (the Coorong lagoon, the Suez Canal's ends, fjords)
+// is not in the coast as drawn either: left open, its triangles have all three nodes on
+// the coast, below the 0.3 floor. It is filled up to its mouth; passages between two waters
+// (Gibraltar, the Bosporus) stay open.
 Coastline[1].MinChannelWidth = CloseNarrowWater ? CoastAccuracy : 0;
+Coastline[1].KeepPassages = 1;
 
 OceanLoops[] = Coastline{1};
 OceanLoopsPerSurface[] = Coastline{1, "LoopsPerSurface"};

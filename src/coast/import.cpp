@@ -406,6 +406,7 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
   if (opt.min_channel_width > 0 || !opt.dams.empty()) {
     PassageOptions po;
     po.min_width = opt.min_channel_width;
+    po.keep_passages = opt.keep_passages;
     po.dams = opt.dams;
     po.radius = opt.radius;
     auto closed = close_passages(curves, loops, po, rep.repair);

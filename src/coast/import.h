@@ -39,6 +39,9 @@ struct ImportOptions {
   bool check_splines = true;
   /// Passages of water narrower than this (metres) are closed by dams (passages.h); 0: off.
   double min_channel_width = 0;
+  /// With min_channel_width: only water that ends is closed (inlets, lagoons, a canal's
+  /// dead ends); a passage between two waters or a strait between two coasts stays open.
+  bool keep_passages = false;
   /// Dams by hand: each segment between two lon/lat points closes the water it crosses.
   std::vector<std::pair<geo::LonLat, geo::LonLat>> dams;
   /// Keep only the seas (surfaces) holding one of these points; empty: every sea.

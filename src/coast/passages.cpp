@@ -271,6 +271,19 @@ struct CutResult {
   std::vector<std::uint32_t> new_loops;
 };
 
+// The two loops a 2-opt at kept segments ja and jb of one loop makes (before their dams
+// are numbered): a1 ... b0 and b1 ... a0.
+std::pair<std::vector<Node>, std::vector<Node>> split_at(const FlatLoop& f, std::size_t ja, std::size_t jb) {
+  const std::uint32_t b0 = f.kept[jb], b1 = f.kept[(jb + 1) % f.kept.size()];
+  std::vector<Node> chain = open_at(f, ja);   // a1 ... b0 b1 ... a0
+  // Positions of b0 and b1 in the chain: it starts at kept position ja + 1.
+  const std::size_t n = f.nodes.size(), start = f.kept[(ja + 1) % f.kept.size()];
+  const std::size_t pb0 = (b0 + n - start) % n, pb1 = (b1 + n - start) % n;
+  std::vector<Node> first(chain.begin(), chain.begin() + static_cast<std::ptrdiff_t>(pb0 + 1));
+  std::vector<Node> second(chain.begin() + static_cast<std::ptrdiff_t>(pb1), chain.end());
+  return {std::move(first), std::move(second)};
+}
+
 // The 2-opt at kept segment ja of loop la and jb of loop lb (see passages.h).
 CutResult cut(Work& w, std::uint32_t la, std::size_t ja, std::uint32_t lb, std::size_t jb) {
   CutResult r;
@@ -286,13 +299,7 @@ CutResult cut(Work& w, std::uint32_t la, std::size_t ja, std::uint32_t lb, std::
     return r;
   }
   FlatLoop& f = w.flat[la];
-  const std::uint32_t b0 = f.kept[jb], b1 = f.kept[(jb + 1) % f.kept.size()];
-  std::vector<Node> chain = open_at(f, ja);   // a1 ... b0 b1 ... a0
-  // Positions of b0 and b1 in the chain: it starts at kept position ja + 1.
-  const std::size_t n = f.nodes.size(), start = f.kept[(ja + 1) % f.kept.size()];
-  const std::size_t pb0 = (b0 + n - start) % n, pb1 = (b1 + n - start) % n;
-  std::vector<Node> first(chain.begin(), chain.begin() + static_cast<std::ptrdiff_t>(pb0 + 1));
-  std::vector<Node> second(chain.begin() + static_cast<std::ptrdiff_t>(pb1), chain.end());
+  auto [first, second] = split_at(f, ja, jb);
   first.back().src = new_dam(w, first.back());     // b0 -> a1
   second.back().src = new_dam(w, second.back());   // a0 -> b1
   f.kill();
@@ -333,6 +340,19 @@ void drop_if_narrow(Work& w, std::uint32_t l, std::vector<RepairEntry>& log) {
     log.push_back({RepairKind::NarrowWater, info.record, info.id, n0.ll, mw});
     f.kill();
   }
+}
+
+// Whether the 2-opt at kept segments ja and jb of loop l leaves a piece that
+// drop_if_narrow removes (a degenerate piece, or water all narrower than the width): a
+// dead end filled rather than a passage cut in two.
+bool cut_fills_dead_end(const Work& w, std::uint32_t l, std::size_t ja, std::size_t jb) {
+  auto [first, second] = split_at(w.flat[l], ja, jb);
+  for (auto* part : {&first, &second}) {
+    const FlatLoop f = make_loop(std::move(*part));
+    if (f.kept.size() < 3 || ring_orientation(polygon(f)) == Sign::Zero) return true;
+    if (!f.hole && mean_width_m(f, w.opt.radius) < w.opt.min_width) return true;
+  }
+  return false;
 }
 
 DamInfo info_of(const Work& w, const Node& n) {
@@ -432,7 +452,9 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
       std::tie(lb, sb) = *rb;
       if (la == lb && (sa == sb || !passage_on_one_ring(la, sa, sb, c.width))) continue;
     }
+    if (w.opt.keep_passages && la != lb) continue;   // a strait between two coasts
     if (!cut_is_clean_near(near, a0, a1, b0, b1, made)) continue;
+    if (w.opt.keep_passages && !cut_fills_dead_end(w, la, sa, sb)) continue;   // a passage
     made.push_back({a0, b1});
     made.push_back({b0, a1});
     const DamInfo info = info_of(w, w.flat[la].nodes[w.flat[la].kept[sa]]);

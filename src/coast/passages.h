@@ -25,6 +25,9 @@ struct PassageOptions {
   /// Passages narrower than this (metres on the sphere) are closed; 0: none. A passage
   /// exactly this wide stays open (widths are compared within a relative 1e-9).
   double min_width = 0;
+  /// Only cuts that drop narrow water (a dead end filled): none that joins two loops or
+  /// leaves two waters.
+  bool keep_passages = false;
   /// Dams by hand: segments between two lon/lat points, each closing the water it crosses.
   std::vector<std::pair<geo::LonLat, geo::LonLat>> dams;
   double radius = geo::kEarthRadius;

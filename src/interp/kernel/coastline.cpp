@@ -67,6 +67,7 @@ constexpr CoastOption kOptions[] = {
     {"CloseStraits", OptType::Number, false, "1: merge islands across such straits (default 0: keep them open)"},
     {"CheckSplines", OptType::Number, false, "1 (default): put points back until no two B-splines cross; 0: off"},
     {"MinChannelWidth", OptType::Number, false, "close passages of water narrower than this (m) by dams (default 0: off)"},
+    {"KeepPassages", OptType::Number, false, "1: MinChannelWidth fills only water that ends (inlets, lagoons); passages and straits stay open (default 0)"},
     {"Dams", OptType::List, false, "{lon1, lat1, lon2, lat2, ...}: dams closing the water each segment crosses"},
     {"SeaAt", OptType::List, false, "{lon, lat, ...}: keep only the seas holding these points"},
     {"Coordinate", OptType::String, true, "lonlat, lonlat_degrees (default), utm or cartesian"},
@@ -335,6 +336,7 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
   io.close_straits = number_option(d, "CloseStraits", 0) != 0;
   io.check_splines = number_option(d, "CheckSplines", 1) != 0;
   io.min_channel_width = number_option(d, "MinChannelWidth", 0);
+  io.keep_passages = number_option(d, "KeepPassages", 0) != 0;
   if (const Value* v = option(d, "Dams")) {
     const auto& x = v->nums();
     for (std::size_t i = 0; i + 3 < x.size(); i += 4) io.dams.push_back({{x[i], x[i + 1]}, {x[i + 2], x[i + 3]}});

@@ -216,6 +216,43 @@ TEST_CASE("passages: several inlets of one coast are closed, a wider one stays o
   }
 }
 
+TEST_CASE("passages: KeepPassages fills the inlets and keeps the canal and the strait open") {
+  auto keep = [](double w) {
+    ImportOptions o = pass_options(w);
+    o.keep_passages = true;
+    return o;
+  };
+  // The canal between two seas: one sea, the canal's coast kept.
+  auto canal = build_coast_model(pass_canal(kPassW), keep(1500));
+  REQUIRE(canal.ok());
+  pass_check_clean(*canal);
+  CHECK(canal->surfaces.size() == 1);
+  CHECK(canal->report.count(RepairKind::ClosedPassage) == 0);
+  CHECK(pass_points_in(*canal, -0.2 + 0.045, 0.2 - 0.045, kPassW / 2 + 1e-9) > 0);
+  // Two islands across a narrow strait: still two holes.
+  Coastline isl;
+  isl.file = "islands";
+  isl.rings.push_back(pass_ring({{-0.5, -0.3}, {-kPassW / 2, -0.3}, {-kPassW / 2, 0.3}, {-0.5, 0.3}}, 0));
+  isl.rings.push_back(pass_ring({{kPassW / 2, -0.3}, {0.5, -0.3}, {0.5, 0.3}, {kPassW / 2, 0.3}}, 1));
+  auto islands = build_coast_model(isl, keep(1500));
+  REQUIRE(islands.ok());
+  REQUIRE(islands->surfaces.size() == 1);
+  CHECK(islands->surfaces[0].holes.size() == 2);
+  // A dead-end inlet: filled to its mouth, as without KeepPassages.
+  Coastline c;
+  c.file = "inlet";
+  const double h = kPassW / 2;
+  c.rings.push_back(pass_ring({{-2, -2}, {2, -2}, {2, 0}, {h, 0}, {h, -0.5}, {-h, -0.5}, {-h, 0}, {-2, 0}}, 0));
+  auto inlet = build_coast_model(c, keep(1500));
+  REQUIRE(inlet.ok());
+  pass_check_clean(*inlet);
+  CHECK(inlet->report.count(RepairKind::NarrowWater) >= 1);
+  std::size_t inside = 0;
+  for (const CoastCurve& cc : inlet->curves)
+    for (geo::LonLat p : cc.ll) inside += p.lat < -0.045 && std::abs(p.lon) < 0.1;
+  CHECK(inside == 0);
+}
+
 TEST_CASE("passages: a dam by hand across the canal makes two seas; one on land is an error") {
   ImportOptions o = pass_options(0);
   o.dams = {{{0, -0.5}, {0, 0.5}}};
