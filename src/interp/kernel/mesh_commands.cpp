@@ -6,6 +6,7 @@
 // statements are reported as not supported.
 #include "interp/kernel/mesh_commands.h"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstdio>
@@ -157,10 +158,46 @@ TimeStep time_step_of(Interpreter& in, const ModelMesh& mesh, const field::SizeF
   return courant_time_step(mesh, h, opt);
 }
 
+// The notes pointing at where `option` was set, if a statement set it.
+std::vector<DiagNote> set_here(const KernelState& k, const std::string& option) {
+  std::vector<DiagNote> notes;
+  if (const auto it = k.option_set_at.find(option); it != k.option_set_at.end())
+    notes.push_back({it->second, option + " was set here"});
+  return notes;
+}
+
+// Mesh.NbPartitions > 0: the 2D mesh partitioned with METIS as Gmsh 4.8.4 does
+// (io/mesh_partition.h), kept for the writers and summed up in `st`.
+MeshFailure partition_into(Interpreter& in, const ModelMesh& mesh, MeshStats& st) {
+  KernelState& k = in.kernel();
+  const Options& o = in.options();
+  const double parts = o.number("Mesh.NbPartitions");
+  if (!(parts > 0)) return {};
+  const StageScope stage(&k.clock, progress_sink(in), "partitions");
+  const io::MeshModel mm = io::from_model_mesh(k.model, mesh);
+  io::MeshPartitionOptions po;
+  po.parts = static_cast<int>(parts);
+  po.algorithm = static_cast<int>(o.number("Mesh.MetisAlgorithm"));
+  po.ufactor = static_cast<int>(o.number("Mesh.MetisMaxLoadImbalance"));
+  auto partition = std::make_shared<io::MeshPartition>();
+  std::string why;
+  if (!io::partition_mesh(mm, po, partition.get(), &why))
+    return {Diag::InvalidOptionValue, fmt::format("Mesh.NbPartitions = {:g}: {}", parts, why),
+            set_here(k, "Mesh.NbPartitions")};
+  st.partitions = partition->parts;
+  st.partition_edge_cut = partition->edge_cut;
+  st.partition_imbalance = partition->imbalance;
+  st.partition_min = *std::min_element(partition->part_elements.begin(), partition->part_elements.end());
+  st.partition_max = *std::max_element(partition->part_elements.begin(), partition->part_elements.end());
+  k.partition = std::move(partition);
+  return {};
+}
+
 // Meshes the model up to `dim` into the kernel state; on failure returns why. The
 // mesher's warnings are reported at `where` (the Mesh statement; none for -1/-2).
 MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   KernelState& k = in.kernel();
+  k.partition.reset();
   if (std::string why = check_elements_across_channels(in.options()); !why.empty()) {
     MeshFailure f{Diag::InvalidOptionValue, std::move(why), {}};
     if (const auto it = k.option_set_at.find("Mesh.ElementsAcrossChannels"); it != k.option_set_at.end())
@@ -235,6 +272,11 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   if (!r.ok()) return {diag_of(r.error), message_of(r.error), provenance_notes(k, r.error)};
   auto mesh = std::make_shared<ModelMesh>(std::move(r.mesh));
   if (dim < 2) {
+    if (in.options().number("Mesh.NbPartitions") > 0)
+      return {Diag::InvalidOptionValue,
+              fmt::format("Mesh.NbPartitions = {:g}: partitions are made of the 2D mesh (mesh with -2 or 'Mesh 2;')",
+                          in.options().number("Mesh.NbPartitions")),
+              set_here(k, "Mesh.NbPartitions")};
     in.options().set_number("Mesh.NbNodes", static_cast<double>(mesh->nodes.size()), /*internal=*/true);
     // -1's summary, as -2 prints the 2D statistics.
     if (in.options().number("General.Verbosity") >= 4) {
@@ -273,6 +315,7 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
       st.min_rho_lon = ll.lon, st.min_rho_lat = ll.lat;
     }
   if (depth) st.time_step = time_step_of(in, *mesh, *depth);
+  if (MeshFailure f = partition_into(in, *mesh, st); f.failed()) return f;
   publish_stats(in, *mesh, st);
   k.mesh = std::move(mesh);
   return {};
@@ -294,6 +337,20 @@ MeshFailure mesh_model(Interpreter& in, int dim, SourceRange where) {
                         dim, in.options().number("Mesh.MaxElements")),
             {}};
   }
+}
+
+// Whether `f` as the options write it has a place for partitions (MSH only as 4.1).
+bool holds_partitions(const io::OutputFormat& f, const Options& o) {
+  if (!f.holds_partitions) return false;
+  if (f.mesh_format != 1) return true;
+  const double version = f.msh_file_version != 0 ? f.msh_file_version : o.number("Mesh.MshFileVersion");
+  return version >= 4;
+}
+
+// A partitioned mesh asked for in a format that cannot hold it: an error at the Save
+// statement's file name, or for -o before meshing, rather than partitions dropped.
+bool partitions_unheld(Interpreter& in, const io::OutputFormat& f) {
+  return in.options().number("Mesh.NbPartitions") > 0 && !holds_partitions(f, in.options());
 }
 
 // The format `path` is written in when no -format names one: Mesh.Format's number, or
@@ -333,6 +390,17 @@ std::string save_mesh(Interpreter& in, const std::string& path, const std::strin
   }
   if (!f->needs_file_name.empty() && base::writes_in_place(path)) return std::string(f->needs_file_name);
   io::OutputSettings settings;
+  if (k.partition) {
+    if (!holds_partitions(*f, o))
+      return fmt::format("{} cannot hold the {} partitions Mesh.NbPartitions asked for (write MSH 4.1, VTK or UGRID "
+                         "netCDF)",
+                         f->name, k.partition->parts);
+    settings.partition = k.partition.get();
+    settings.split_files = o.number("Mesh.PartitionSplitMeshFiles") != 0;
+    if (settings.split_files && base::writes_in_place(path) && f->input == io::OutputInput::Mesh &&
+        f->mesh_format == 1)
+      return "Mesh.PartitionSplitMeshFiles writes one file per partition beside the name: give a file name";
+  }
   // In space, before the node coordinates are rewritten for the Mesh rows.
   if (f->holds_node_data)
     if (std::string why = node_data_for_output(in, mm, settings.node_data); !why.empty()) return why;
@@ -383,7 +451,11 @@ void exec_save(Interpreter& in, StmtId id, const CommandStmt& c) {
   if (p.is_relative()) p = std::filesystem::path(in.sources().path(s.range.file)).parent_path() / p;
   const SourceRange at = c.arg.valid() ? in.ast().expr(c.arg).range : s.range;
   std::string why;
-  if (const io::OutputFormat* f = guess_output_format(in.options(), p.string(), &why)) warn_if_no_depth(in, *f, name, at);
+  if (const io::OutputFormat* f = guess_output_format(in.options(), p.string(), &why)) {
+    warn_if_no_depth(in, *f, name, at);
+    if (partitions_unheld(in, *f))
+      in.fail_fmt(at, Diag::PartitionsNotHeld, name, f->name, in.options().number("Mesh.NbPartitions"));
+  }
   if (const std::string err = save_mesh(in, p.string(), ""); !err.empty())
     in.fail_fmt(at, Diag::FileWriteError, name, err);
 }
@@ -505,6 +577,10 @@ bool mesh_from_command_line(Interpreter& in, int dim, const std::string& output,
       return false;
     }
     warn_if_no_depth(in, *row, path, SourceRange{});
+    if (partitions_unheld(in, *row)) {
+      diags.report(SourceRange{}, Diag::PartitionsNotHeld, path, row->name, in.options().number("Mesh.NbPartitions"));
+      return false;
+    }
   }
   if (!mesh_after_scripts(in, dim)) return false;
   std::string err;
