@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstring>
 #include <functional>
+#include <map>
 #include <numeric>
 
 #include "base/output_file.h"
@@ -219,6 +220,14 @@ void write_entities41(Out& o, const MeshModel& m, const MshOptions& opt, const P
   std::size_t count[4] = {0, 0, 0, 0};
   for (const EntityMesh& e : m.entities)
     if (listed(e)) ++count[std::clamp(e.dim, 0, 3)];
+  // A partitioned mesh's model entities hold no mesh: their boxes are their pieces'.
+  std::map<std::pair<int, int>, Box> piece_boxes;
+  if (m.num_partitions > 0 && !partitioned)
+    for (const EntityMesh& e : m.entities)
+      if (!e.partitions.empty() && e.parent_dim == e.dim) {
+        Box& b = piece_boxes[{e.dim, e.parent_tag}];
+        for (std::uint32_t n : e.connectivity) b.add(m.xyz[n]);
+      }
   o.text(partitioned ? "$PartitionedEntities\n" : "$Entities\n");
   if (opt.binary) {
     if (partitioned) o.bin<std::uint64_t>(static_cast<std::uint64_t>(m.num_partitions)), o.bin<std::uint64_t>(0);
@@ -233,6 +242,8 @@ void write_entities41(Out& o, const MeshModel& m, const MshOptions& opt, const P
     Box box;
     for (std::uint32_t n : e.nodes) box.add(m.xyz[n]);
     for (std::uint32_t n : e.connectivity) box.add(m.xyz[n]);
+    if (const auto it = piece_boxes.find({e.dim, e.tag}); it != piece_boxes.end())
+      box.add(it->second.lo), box.add(it->second.hi);
     if (box.empty()) box.add(Vec3{0, 0, 0});
     if (opt.binary) {
       o.bin<int>(e.tag);

@@ -299,7 +299,7 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   for (const std::string& w : r2.quality_warnings) in.diags().report_message(where, Diag::MeshQualityFloor, w);
   // Statistics against the size each face's mesher aimed at (with the extension from
   // the boundary where it is on).
-  const StageScope stage_stats(&k.clock, progress_sink(in), "statistics");
+  std::optional<StageScope> stage_stats(std::in_place, &k.clock, progress_sink(in), "statistics");
   MeshStats st = mesh_stats(*mesh, r2.target_sizes);
   // The worst triangle's place in longitude/latitude when its surface is on a sphere.
   if (const geo::ModelSurface* ws = st.min_rho_surface ? k.model.surface(st.min_rho_surface) : nullptr)
@@ -315,6 +315,7 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
       st.min_rho_lon = ll.lon, st.min_rho_lat = ll.lat;
     }
   if (depth) st.time_step = time_step_of(in, *mesh, *depth);
+  stage_stats.reset();   // a stage of its own, not counted twice in the time line
   if (MeshFailure f = partition_into(in, *mesh, st); f.failed()) return f;
   publish_stats(in, *mesh, st);
   k.mesh = std::move(mesh);
