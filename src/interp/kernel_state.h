@@ -64,6 +64,7 @@ struct KernelState {
   std::shared_ptr<const ModelMesh> mesh;
   /// Mesh.NbPartitions' partition of `mesh`, made when it was meshed; null without.
   std::shared_ptr<const io::MeshPartition> partition;
+  io::MeshPartitionOptions partition_options;   ///< what `partition` was made with
   /// Statistics of the last `Mesh 2;` (for `--stats FILE.json` and the end of the run's
   /// account, mesh_commands.h); has_mesh_stats is false before.
   MeshStats mesh_stats;

@@ -6,6 +6,7 @@
 #include <metis.h>
 
 #include <algorithm>
+#include <map>
 #include <tuple>
 
 #include <fmt/format.h>
@@ -25,11 +26,21 @@ struct SideKey {
 
 }  // namespace
 
-std::size_t count_2d_elements(const MeshModel& mesh) {
-  std::size_t n = 0;
-  for (const EntityMesh& e : mesh.entities)
-    if (e.dim == 2) n += e.connectivity.size() / nodes_per_element(e.type);
-  return n;
+MeshPartition aligned_partition(const MeshPartition& partition, const MeshModel& mesh) {
+  MeshPartition out = partition;
+  std::map<std::pair<int, int>, std::size_t> row;
+  for (std::size_t i = 0; i < partition.entities.size(); ++i) row.emplace(partition.entities[i], i);
+  out.element_part.clear();
+  out.entities.clear();
+  for (const EntityMesh& e : mesh.entities) {
+    const std::size_t n = e.connectivity.size() / nodes_per_element(e.type);
+    const auto it = row.find({e.dim, e.tag});
+    std::vector<int> parts = it != row.end() ? partition.element_part[it->second] : std::vector<int>{};
+    parts.resize(n, 1);
+    out.element_part.push_back(std::move(parts));
+    out.entities.emplace_back(e.dim, e.tag);
+  }
+  return out;
 }
 
 bool partition_mesh(const MeshModel& mesh, const MeshPartitionOptions& opt, MeshPartition* out, std::string* error) {
@@ -71,6 +82,7 @@ bool partition_mesh(const MeshModel& mesh, const MeshPartitionOptions& opt, Mesh
   for (std::size_t i = 0; i < mesh.entities.size(); ++i) {
     const EntityMesh& e = mesh.entities[i];
     r.element_part[i].assign(e.connectivity.size() / nodes_per_element(e.type), 0);
+    r.entities.emplace_back(e.dim, e.tag);
   }
   r.part_elements.assign(opt.parts, 0);
   for (std::size_t v = 0; v < g.size(); ++v) {

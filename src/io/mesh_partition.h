@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "io/mesh_model.h"
@@ -21,6 +22,7 @@ struct MeshPartitionOptions {
 struct MeshPartition {
   int parts = 0;
   std::vector<std::vector<int>> element_part;  ///< per MeshModel entity, per element
+  std::vector<std::pair<int, int>> entities;   ///< (dim, tag) of each element_part row
   std::vector<int> node_part;                  ///< per node: the smallest part of an element using it; 0: none
   std::vector<std::uint64_t> part_elements;    ///< 2D elements in each part (index 0 is part 1)
   std::uint64_t edge_cut = 0;                  ///< dual-graph edges between two parts
@@ -32,7 +34,9 @@ struct MeshPartition {
 /// seeded, the graph in a fixed order), never on threads.
 bool partition_mesh(const MeshModel& mesh, const MeshPartitionOptions& opt, MeshPartition* out, std::string* error);
 
-/// The number of 2D elements `mesh` has (the most parts it can take).
-std::size_t count_2d_elements(const MeshModel& mesh);
+/// `partition` with its rows in the order of `mesh`'s entities, matched by (dim, tag): for a
+/// MeshModel built from the same mesh but with entities left out or reordered since (a
+/// writer's node coordinates drop the points off the sphere). An entity it lacks gets part 1.
+MeshPartition aligned_partition(const MeshPartition& partition, const MeshModel& mesh);
 
 }  // namespace sm::io

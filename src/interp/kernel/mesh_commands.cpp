@@ -168,6 +168,14 @@ std::vector<DiagNote> set_here(const KernelState& k, const std::string& option) 
 
 // Mesh.NbPartitions > 0: the 2D mesh partitioned with METIS as Gmsh 4.8.4 does
 // (io/mesh_partition.h), kept for the writers and summed up in `st`.
+io::MeshPartitionOptions partition_options(const Options& o) {
+  io::MeshPartitionOptions po;
+  po.parts = static_cast<int>(o.number("Mesh.NbPartitions"));
+  po.algorithm = static_cast<int>(o.number("Mesh.MetisAlgorithm"));
+  po.ufactor = static_cast<int>(o.number("Mesh.MetisMaxLoadImbalance"));
+  return po;
+}
+
 MeshFailure partition_into(Interpreter& in, const ModelMesh& mesh, MeshStats& st) {
   KernelState& k = in.kernel();
   const Options& o = in.options();
@@ -175,10 +183,7 @@ MeshFailure partition_into(Interpreter& in, const ModelMesh& mesh, MeshStats& st
   if (!(parts > 0)) return {};
   const StageScope stage(&k.clock, progress_sink(in), "partitions");
   const io::MeshModel mm = io::from_model_mesh(k.model, mesh);
-  io::MeshPartitionOptions po;
-  po.parts = static_cast<int>(parts);
-  po.algorithm = static_cast<int>(o.number("Mesh.MetisAlgorithm"));
-  po.ufactor = static_cast<int>(o.number("Mesh.MetisMaxLoadImbalance"));
+  const io::MeshPartitionOptions po = partition_options(o);
   auto partition = std::make_shared<io::MeshPartition>();
   std::string why;
   if (!io::partition_mesh(mm, po, partition.get(), &why))
@@ -190,6 +195,7 @@ MeshFailure partition_into(Interpreter& in, const ModelMesh& mesh, MeshStats& st
   st.partition_min = *std::min_element(partition->part_elements.begin(), partition->part_elements.end());
   st.partition_max = *std::max_element(partition->part_elements.begin(), partition->part_elements.end());
   k.partition = std::move(partition);
+  k.partition_options = po;
   return {};
 }
 
@@ -376,7 +382,7 @@ const io::OutputFormat* guess_output_format(const Options& o, const std::string&
 
 // Writes the current mesh to `path` in `format` (see mesh_commands.h); "" or why not.
 std::string save_mesh(Interpreter& in, const std::string& path, const std::string& format) {
-  const KernelState& k = in.kernel();
+  KernelState& k = in.kernel();
   const ModelMesh empty;
   io::MeshModel mm = io::from_model_mesh(k.model, k.mesh ? *k.mesh : empty);
   const Options& o = in.options();
@@ -391,12 +397,22 @@ std::string save_mesh(Interpreter& in, const std::string& path, const std::strin
   }
   if (!f->needs_file_name.empty() && base::writes_in_place(path)) return std::string(f->needs_file_name);
   io::OutputSettings settings;
-  if (k.partition) {
+  io::MeshPartition aligned;
+  if (o.number("Mesh.NbPartitions") > 0) {
     if (!holds_partitions(*f, o))
-      return fmt::format("{} cannot hold the {} partitions Mesh.NbPartitions asked for (write MSH 4.1, VTK or UGRID "
+      return fmt::format("{} cannot hold the {:g} partitions Mesh.NbPartitions asks for (write MSH 4.1, VTK or UGRID "
                          "netCDF)",
-                         f->name, k.partition->parts);
-    settings.partition = k.partition.get();
+                         f->name, o.number("Mesh.NbPartitions"));
+    // Partitioned when meshed; again when the partition options changed since (as Gmsh's
+    // PartitionMesh after a mesh), so a Save never writes other parts than the options say.
+    const io::MeshPartitionOptions want = partition_options(o);
+    const io::MeshPartitionOptions& have = k.partition_options;
+    if (!k.partition || have.parts != want.parts || have.algorithm != want.algorithm || have.ufactor != want.ufactor) {
+      if (!k.mesh) return "Mesh.NbPartitions: there is no 2D mesh to partition (mesh with -2 or 'Mesh 2;' first)";
+      MeshStats unused;
+      if (const MeshFailure pf = partition_into(in, *k.mesh, unused); pf.failed()) return pf.message;
+    }
+    settings.partition = &aligned;   // filled below, once the node coordinates dropped what they drop
     settings.split_files = o.number("Mesh.PartitionSplitMeshFiles") != 0;
     if (settings.split_files && base::writes_in_place(path) && f->input == io::OutputInput::Mesh &&
         f->mesh_format == 1)
@@ -416,6 +432,7 @@ std::string save_mesh(Interpreter& in, const std::string& path, const std::strin
       if (std::string why = apply_node_coordinates(in, mm); !why.empty()) return why;
       break;
   }
+  if (settings.partition) aligned = io::aligned_partition(*k.partition, mm);
   settings.binary = o.number("Mesh.Binary") != 0;
   settings.save_all = o.number("Mesh.SaveAll") != 0;
   settings.save_parametric = o.number("Mesh.SaveParametric") != 0;

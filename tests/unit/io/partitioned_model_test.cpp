@@ -167,3 +167,20 @@ TEST_CASE("partitioned model: one part's file holds that part's triangles and th
   }
   CHECK(total == 200);
 }
+
+TEST_CASE("mesh partition: realigned to a mesh model with an entity left out") {
+  const sm::io::MeshModel m = sm::io::testing::grid_square(4);
+  const sm::io::MeshPartition p = partition_of(m, 2);
+  sm::io::MeshModel fewer = m;
+  fewer.entities.erase(fewer.entities.begin());   // point 1, as the lon/lat coordinates drop a centre point
+  std::swap(fewer.entities[0], fewer.entities[1]);
+  const sm::io::MeshPartition a = sm::io::aligned_partition(p, fewer);
+  REQUIRE(a.element_part.size() == fewer.entities.size());
+  for (std::size_t i = 0; i < fewer.entities.size(); ++i) {
+    const auto key = std::make_pair(fewer.entities[i].dim, fewer.entities[i].tag);
+    CHECK(a.entities[i] == key);
+    const std::size_t row = static_cast<std::size_t>(std::find(p.entities.begin(), p.entities.end(), key) - p.entities.begin());
+    CHECK(a.element_part[i] == p.element_part[row]);
+  }
+  CHECK(a.node_part == p.node_part);
+}
