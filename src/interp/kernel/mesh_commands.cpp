@@ -23,6 +23,7 @@
 #include "interp/kernel/node_data_export.h"
 #include "interp/kernel/ocean_grid_export.h"
 #include "interp/kernel/output_options.h"
+#include "interp/kernel/partition_export.h"
 #include "interp/kernel/size_policy_from_options.h"
 #include "interp/interpreter.h"
 #include "interp/provenance.h"
@@ -166,39 +167,6 @@ std::vector<DiagNote> set_here(const KernelState& k, const std::string& option) 
   return notes;
 }
 
-// Mesh.NbPartitions > 0: the 2D mesh partitioned with METIS as Gmsh 4.8.4 does
-// (io/mesh_partition.h), kept for the writers and summed up in `st`.
-io::MeshPartitionOptions partition_options(const Options& o) {
-  io::MeshPartitionOptions po;
-  po.parts = static_cast<int>(o.number("Mesh.NbPartitions"));
-  po.algorithm = static_cast<int>(o.number("Mesh.MetisAlgorithm"));
-  po.ufactor = static_cast<int>(o.number("Mesh.MetisMaxLoadImbalance"));
-  return po;
-}
-
-MeshFailure partition_into(Interpreter& in, const ModelMesh& mesh, MeshStats& st) {
-  KernelState& k = in.kernel();
-  const Options& o = in.options();
-  const double parts = o.number("Mesh.NbPartitions");
-  if (!(parts > 0)) return {};
-  const StageScope stage(&k.clock, progress_sink(in), "partitions");
-  const io::MeshModel mm = io::from_model_mesh(k.model, mesh);
-  const io::MeshPartitionOptions po = partition_options(o);
-  auto partition = std::make_shared<io::MeshPartition>();
-  std::string why;
-  if (!io::partition_mesh(mm, po, partition.get(), &why))
-    return {Diag::InvalidOptionValue, fmt::format("Mesh.NbPartitions = {:g}: {}", parts, why),
-            set_here(k, "Mesh.NbPartitions")};
-  st.partitions = partition->parts;
-  st.partition_edge_cut = partition->edge_cut;
-  st.partition_imbalance = partition->imbalance;
-  st.partition_min = *std::min_element(partition->part_elements.begin(), partition->part_elements.end());
-  st.partition_max = *std::max_element(partition->part_elements.begin(), partition->part_elements.end());
-  k.partition = std::move(partition);
-  k.partition_options = po;
-  return {};
-}
-
 // Meshes the model up to `dim` into the kernel state; on failure returns why. The
 // mesher's warnings are reported at `where` (the Mesh statement; none for -1/-2).
 MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
@@ -322,7 +290,8 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
     }
   if (depth) st.time_step = time_step_of(in, *mesh, *depth);
   stage_stats.reset();   // a stage of its own, not counted twice in the time line
-  if (MeshFailure f = partition_into(in, *mesh, st); f.failed()) return f;
+  if (std::string why = partition_mesh_now(in, *mesh, &st); !why.empty())
+    return {Diag::InvalidOptionValue, std::move(why), set_here(k, "Mesh.NbPartitions")};
   publish_stats(in, *mesh, st);
   k.mesh = std::move(mesh);
   return {};
@@ -344,14 +313,6 @@ MeshFailure mesh_model(Interpreter& in, int dim, SourceRange where) {
                         dim, in.options().number("Mesh.MaxElements")),
             {}};
   }
-}
-
-// Whether `f` as the options write it has a place for partitions (MSH only as 4.1).
-bool holds_partitions(const io::OutputFormat& f, const Options& o) {
-  if (!f.holds_partitions) return false;
-  if (f.mesh_format != 1) return true;
-  const double version = f.msh_file_version != 0 ? f.msh_file_version : o.number("Mesh.MshFileVersion");
-  return version >= 4;
 }
 
 // A partitioned mesh asked for in a format that cannot hold it: an error at the Save
@@ -382,7 +343,7 @@ const io::OutputFormat* guess_output_format(const Options& o, const std::string&
 
 // Writes the current mesh to `path` in `format` (see mesh_commands.h); "" or why not.
 std::string save_mesh(Interpreter& in, const std::string& path, const std::string& format) {
-  KernelState& k = in.kernel();
+  const KernelState& k = in.kernel();
   const ModelMesh empty;
   io::MeshModel mm = io::from_model_mesh(k.model, k.mesh ? *k.mesh : empty);
   const Options& o = in.options();
@@ -405,13 +366,7 @@ std::string save_mesh(Interpreter& in, const std::string& path, const std::strin
                          f->name, o.number("Mesh.NbPartitions"));
     // Partitioned when meshed; again when the partition options changed since (as Gmsh's
     // PartitionMesh after a mesh), so a Save never writes other parts than the options say.
-    const io::MeshPartitionOptions want = partition_options(o);
-    const io::MeshPartitionOptions& have = k.partition_options;
-    if (!k.partition || have.parts != want.parts || have.algorithm != want.algorithm || have.ufactor != want.ufactor) {
-      if (!k.mesh) return "Mesh.NbPartitions: there is no 2D mesh to partition (mesh with -2 or 'Mesh 2;' first)";
-      MeshStats unused;
-      if (const MeshFailure pf = partition_into(in, *k.mesh, unused); pf.failed()) return pf.message;
-    }
+    if (std::string why = current_partition(in); !why.empty()) return why;
     settings.partition = &aligned;   // filled below, once the node coordinates dropped what they drop
     settings.split_files = o.number("Mesh.PartitionSplitMeshFiles") != 0;
     if (settings.split_files && base::writes_in_place(path) && f->input == io::OutputInput::Mesh &&
