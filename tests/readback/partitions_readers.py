@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Mesh partitions read back by other programs' readers (partitions_gulf.geo): Gmsh
 (python3-gmsh) must see 4 partitions in the partitioned MSH 4.1, every triangle in exactly
-one partitioned surface of one part, the parts within 3% of the mean, and in each
+one partitioned surface of one part, the parts within 3% of the mean, the same in binary
+MSH 4.1, and in each
 split file x_N.msh exactly part N's triangles; meshio (python3-meshio) reads the VTK
 partition arrays and netCDF4-python the UGRID ones, which must agree with the MSH; the
 edge cut in --stats is the count of triangle sides between parts; and the files are the
@@ -29,7 +30,7 @@ except ImportError as e:  # the CI installs it (.ci/deps)
     sys.exit(77)
 
 PARTS = 4
-FILES = ["gulf.msh", "gulf.vtk", "gulf.nc"] + [f"split_{k}.msh" for k in range(1, PARTS + 1)]
+FILES = ["gulf.msh", "gulf_bin.msh", "gulf.vtk", "gulf.nc"] + [f"split_{k}.msh" for k in range(1, PARTS + 1)]
 
 
 def run(stereomesh, out_dir, threads):
@@ -103,6 +104,9 @@ def main():
               f"--stats: imbalance {stats['partition_imbalance']}")
         cut = sides_between_parts(parts)
         check(stats["partition_edge_cut"] == cut, f"--stats: edge cut {stats['partition_edge_cut']}, {cut} sides")
+
+        binary, _, _ = triangles_by_part(os.path.join(one, "gulf_bin.msh"))
+        check(binary == parts, "binary MSH 4.1: the same partitioned triangles as ASCII")
 
         # One file per part: Gmsh reads each, holding exactly that part's triangles.
         for k in range(1, PARTS + 1):
