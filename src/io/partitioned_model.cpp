@@ -70,6 +70,116 @@ std::vector<int> curve_ends(const EntityMesh& c, const std::map<std::uint32_t, i
   return out;
 }
 
+// Connected pieces of an entity's elements: 2D elements joined by a shared side, lines
+// by a shared node (union-find over sorted keys); the piece of each element, numbered in
+// the order of their first element, and the count in *count.
+std::vector<std::uint32_t> connected_pieces(const EntityMesh& e, std::uint32_t* count) {
+  const int npe = nodes_per_element(e.type);
+  const std::size_t ne = e.connectivity.size() / npe;
+  std::vector<std::uint32_t> root(ne);
+  std::iota(root.begin(), root.end(), 0u);
+  auto find = [&](std::uint32_t x) {
+    while (root[x] != x) x = root[x] = root[root[x]];
+    return x;
+  };
+  std::vector<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>> keys;   // (lo, hi, element)
+  for (std::size_t k = 0; k < ne; ++k) {
+    const std::uint32_t* c = &e.connectivity[k * npe];
+    const auto el = static_cast<std::uint32_t>(k);
+    if (e.dim == 2) {
+      for (int j = 0; j < npe; ++j) keys.emplace_back(std::min(c[j], c[(j + 1) % npe]), std::max(c[j], c[(j + 1) % npe]), el);
+    } else {
+      for (int j = 0; j < npe; ++j) keys.emplace_back(c[j], 0u, el);
+    }
+  }
+  std::sort(keys.begin(), keys.end());
+  for (std::size_t i = 1; i < keys.size(); ++i)
+    if (std::get<0>(keys[i]) == std::get<0>(keys[i - 1]) && std::get<1>(keys[i]) == std::get<1>(keys[i - 1])) {
+      const std::uint32_t a = find(std::get<2>(keys[i])), b = find(std::get<2>(keys[i - 1]));
+      if (a != b) root[std::max(a, b)] = std::min(a, b);
+    }
+  std::vector<std::uint32_t> piece(ne), number(ne, UINT32_MAX);
+  std::uint32_t n = 0;
+  for (std::size_t k = 0; k < ne; ++k) {
+    const std::uint32_t r = find(static_cast<std::uint32_t>(k));
+    if (number[r] == UINT32_MAX) number[r] = n++;
+    piece[k] = number[r];
+  }
+  *count = n;
+  return piece;
+}
+
+// Each partitioned entity of `dim` whose elements are not connected becomes one entity per
+// connected piece, each with a new tag (as Gmsh 4.8.4's divideNonConnectedEntities); the
+// first piece takes the entity's place in the list.
+void divide_disconnected(MeshModel& m, int dim, int& next_tag) {
+  const std::size_t n = m.entities.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (m.entities[i].partitions.empty() || m.entities[i].dim != dim) continue;
+    std::uint32_t count = 0;
+    const std::vector<std::uint32_t> piece = connected_pieces(m.entities[i], &count);
+    if (count < 2) continue;
+    EntityMesh whole = std::move(m.entities[i]);
+    const int npe = nodes_per_element(whole.type);
+    std::vector<EntityMesh> parts(count);
+    for (EntityMesh& p : parts) {
+      p.dim = whole.dim;
+      p.tag = next_tag++;
+      p.type = whole.type;
+      p.physical_tags = whole.physical_tags;
+      p.partitions = whole.partitions;
+      p.parent_dim = whole.parent_dim;
+      p.parent_tag = whole.parent_tag;
+    }
+    for (std::size_t k = 0; k < piece.size(); ++k)
+      parts[piece[k]].connectivity.insert(parts[piece[k]].connectivity.end(), &whole.connectivity[k * npe],
+                                          &whole.connectivity[k * npe] + npe);
+    m.entities[i] = std::move(parts[0]);
+    for (std::uint32_t k = 1; k < count; ++k) m.entities.push_back(std::move(parts[k]));
+  }
+}
+
+// The partitioned entities' boundaries: a surface's are the partitioned curves with a line
+// on a side of its elements, + where the line runs as the element's side and - against it,
+// in tag order; a curve's are its chain ends (curve_ends).
+void set_boundaries(MeshModel& m, const std::map<std::uint32_t, int>& point_at) {
+  struct SideOf {
+    std::uint32_t lo, hi, a;
+    std::size_t surface;
+  };
+  std::vector<SideOf> sides;
+  for (std::size_t i = 0; i < m.entities.size(); ++i) {
+    const EntityMesh& e = m.entities[i];
+    if (e.partitions.empty() || e.dim != 2) continue;
+    const int npe = nodes_per_element(e.type);
+    for (std::size_t k = 0; k + npe <= e.connectivity.size(); k += npe)
+      for (int j = 0; j < npe; ++j) {
+        const std::uint32_t a = e.connectivity[k + j], b = e.connectivity[k + (j + 1) % npe];
+        sides.push_back({std::min(a, b), std::max(a, b), a, i});
+      }
+  }
+  const auto less = [](const SideOf& x, const SideOf& y) { return std::tie(x.lo, x.hi) < std::tie(y.lo, y.hi); };
+  std::stable_sort(sides.begin(), sides.end(), less);
+  std::map<std::size_t, std::map<int, int>> bounded_by;   // surface index -> curve tag -> sign
+  for (EntityMesh& c : m.entities) {
+    if (c.partitions.empty() || c.dim != 1) continue;
+    for (std::size_t k = 0; k + 1 < c.connectivity.size(); k += 2) {
+      const std::uint32_t a = c.connectivity[k], b = c.connectivity[k + 1];
+      const SideOf key{std::min(a, b), std::max(a, b), 0, 0};
+      for (auto it = std::lower_bound(sides.begin(), sides.end(), key, less);
+           it != sides.end() && it->lo == key.lo && it->hi == key.hi; ++it)
+        bounded_by[it->surface].emplace(c.tag, it->a == a ? 1 : -1);
+    }
+    c.boundary = curve_ends(c, point_at);
+  }
+  for (std::size_t i = 0; i < m.entities.size(); ++i) {
+    EntityMesh& e = m.entities[i];
+    if (e.partitions.empty() || e.dim != 2) continue;
+    e.boundary.clear();
+    for (const auto& [tag, sign] : bounded_by[i]) e.boundary.push_back(sign * tag);
+  }
+}
+
 }  // namespace
 
 MeshModel partitioned_model(const MeshModel& mesh, const MeshPartition& partition) {
@@ -88,8 +198,7 @@ MeshModel partitioned_model(const MeshModel& mesh, const MeshPartition& partitio
     copy.connectivity.clear();
     out.entities.push_back(std::move(copy));
   }
-  // Pieces: (model entity index, part) -> entity index in `out`.
-  std::map<std::pair<std::size_t, int>, std::size_t> piece_of;
+  // Pieces: each model entity's elements of each part.
   for (std::size_t i : order) {
     const EntityMesh& e = mesh.entities[i];
     const int npe = nodes_per_element(e.type);
@@ -107,11 +216,12 @@ MeshModel partitioned_model(const MeshModel& mesh, const MeshPartition& partitio
       piece.partitions = {p};
       piece.parent_dim = e.dim;
       piece.parent_tag = e.tag;
-      piece_of[{i, p}] = out.entities.size();
       out.entities.push_back(std::move(piece));
     }
   }
-  // Interfaces: the sides of 2D elements in different parts.
+  for (int d = 2; d >= 0; --d) divide_disconnected(out, d, next_tag[d]);
+  // Interfaces: the sides of 2D elements in different parts, oriented as the side of the
+  // lower part's element.
   struct Side {
     std::uint32_t lo, hi, a, b;
     std::size_t entity;
@@ -132,36 +242,30 @@ MeshModel partitioned_model(const MeshModel& mesh, const MeshPartition& partitio
   }
   std::stable_sort(sides.begin(), sides.end(),
                    [](const Side& x, const Side& y) { return std::tie(x.lo, x.hi) < std::tie(y.lo, y.hi); });
-  struct Interface {
-    std::vector<std::uint32_t> lines;
-    std::set<std::pair<std::size_t, int>> sides;   // (piece index in out, sign)
-  };
-  std::map<std::tuple<int, int, int>, Interface> interfaces;   // (parent surface tag, p, q)
+  std::map<std::tuple<int, int, int>, std::vector<std::uint32_t>> interfaces;   // (parent surface tag, p, q)
   for (std::size_t i = 0; i < sides.size();) {
     std::size_t j = i + 1;
     while (j < sides.size() && sides[j].lo == sides[i].lo && sides[j].hi == sides[i].hi) ++j;
     if (j - i == 2 && sides[i].part != sides[i + 1].part) {
       const Side& ref = sides[i].part < sides[i + 1].part ? sides[i] : sides[i + 1];
       const Side& other = &ref == &sides[i] ? sides[i + 1] : sides[i];
-      Interface& f = interfaces[{mesh.entities[ref.entity].tag, ref.part, other.part}];
-      f.lines.push_back(ref.a), f.lines.push_back(ref.b);
-      f.sides.insert({piece_of.at({ref.entity, ref.part}), 1});
-      f.sides.insert({piece_of.at({other.entity, other.part}), -1});
+      std::vector<std::uint32_t>& lines = interfaces[{mesh.entities[ref.entity].tag, ref.part, other.part}];
+      lines.push_back(ref.a), lines.push_back(ref.b);
     }
     i = j;
   }
-  for (auto& [key, f] : interfaces) {
+  for (auto& [key, lines] : interfaces) {
     EntityMesh c;
     c.dim = 1;
     c.tag = next_tag[1]++;
     c.type = ElementType::Line2;
-    c.connectivity = std::move(f.lines);
+    c.connectivity = std::move(lines);
     c.partitions = {std::get<1>(key), std::get<2>(key)};
     c.parent_dim = 2;
     c.parent_tag = std::get<0>(key);
-    for (const auto& [piece, sign] : f.sides) out.entities[piece].boundary.push_back(sign * c.tag);
     out.entities.push_back(std::move(c));
   }
+  divide_disconnected(out, 1, next_tag[1]);
   // Partition points: nodes on curves of different partitioned entities whose parts differ.
   std::map<std::uint32_t, std::vector<std::size_t>> curves_at;
   std::map<std::uint32_t, int> point_at;   // node -> tag of the point entity on it
@@ -192,28 +296,7 @@ MeshModel partitioned_model(const MeshModel& mesh, const MeshPartition& partitio
     point_at[n] = pt.tag;
     out.entities.push_back(std::move(pt));
   }
-  // Boundaries: a surface piece bounded by the pieces of its curves in the same part
-  // (with the model's signs) and by its interfaces (added above); curves by their ends.
-  std::map<int, std::size_t> curve_index;   // model curve tag -> entity index
-  for (std::size_t j = 0; j < mesh.entities.size(); ++j)
-    if (mesh.entities[j].dim == 1) curve_index.emplace(mesh.entities[j].tag, j);
-  for (const auto& [key, idx] : piece_of) {
-    const EntityMesh& e = mesh.entities[key.first];
-    EntityMesh& piece = out.entities[idx];
-    if (e.dim == 2) {
-      std::vector<int> bnd;
-      for (int signed_tag : e.boundary) {
-        const auto c = curve_index.find(std::abs(signed_tag));
-        if (c == curve_index.end()) continue;
-        if (const auto it = piece_of.find({c->second, key.second}); it != piece_of.end())
-          bnd.push_back(signed_tag < 0 ? -out.entities[it->second].tag : out.entities[it->second].tag);
-      }
-      bnd.insert(bnd.end(), piece.boundary.begin(), piece.boundary.end());
-      piece.boundary = std::move(bnd);
-    }
-  }
-  for (EntityMesh& e : out.entities)
-    if (!e.partitions.empty() && e.dim == 1) e.boundary = curve_ends(e, point_at);
+  set_boundaries(out, point_at);
   classify_nodes(out);
   return out;
 }

@@ -18,7 +18,10 @@ namespace sm::io {
 ///    parent the surface of the part-p side, partitions {p, q}, its lines oriented as that
 ///    side's element, no physical group;
 ///  - a partition point per node where curves of different parts meet (when no piece of a
-///    model point is there already): partitions all the parts of those curves.
+///    model point is there already): partitions all the parts of those curves;
+///  - an entity whose elements are not connected divided into one per connected piece.
+/// Surfaces are bounded by the partitioned curves along their elements' sides (+ along the
+/// side, - against it), curves by the points at their chain ends.
 /// New tags follow the model's largest tag of each dimension. Each node belongs to the
 /// first entity, in (dim, tag) order, with an element using it, as Gmsh assigns them.
 MeshModel partitioned_model(const MeshModel& mesh, const MeshPartition& partition);

@@ -184,3 +184,53 @@ TEST_CASE("mesh partition: realigned to a mesh model with an entity left out") {
   }
   CHECK(a.node_part == p.node_part);
 }
+
+TEST_CASE("partitioned model: a part in two pieces gives two entities, as Gmsh divides them") {
+  // A 3 x 3 grid: rows 0 and 2 in part 1, row 1 in part 2; lines and points take their
+  // triangles' parts.
+  const int n = 3;
+  const sm::io::MeshModel m = sm::io::testing::grid_square(n);
+  sm::io::MeshPartition p;
+  p.parts = 2;
+  const auto row_part = [](int row) { return row == 1 ? 2 : 1; };
+  for (const sm::io::EntityMesh& e : m.entities) {
+    std::vector<int> parts;
+    const int npe = sm::io::nodes_per_element(e.type);
+    for (std::size_t k = 0; k < e.connectivity.size(); k += npe) {
+      double y = 0;   // the element's row from its mean y
+      for (int j = 0; j < npe; ++j) y += m.xyz[e.connectivity[k + j]].y / npe;
+      parts.push_back(row_part(std::min(n - 1, static_cast<int>(y * n))));
+    }
+    p.element_part.push_back(parts);
+    p.entities.emplace_back(e.dim, e.tag);
+  }
+  const sm::io::MeshModel pm = sm::io::partitioned_model(m, p);
+  CHECK(sm::io::validate_mesh_model(pm).empty());
+  std::map<int, int> surfaces_of_part, interfaces;
+  std::map<int, const sm::io::EntityMesh*> by_tag;
+  for (const sm::io::EntityMesh& e : pm.entities) {
+    if (e.partitions.empty()) continue;
+    if (e.dim == 2) ++surfaces_of_part[e.partitions[0]], by_tag[e.tag] = &e;
+    if (e.dim == 1 && e.partitions.size() == 2) {
+      ++interfaces[e.tag];
+      CHECK(e.connectivity.size() == 2 * n);   // one row boundary: n lines, connected
+    }
+  }
+  CHECK(surfaces_of_part == std::map<int, int>{{1, 2}, {2, 1}});
+  CHECK(interfaces.size() == 2);
+  // Each piece of part 1 is bounded by one interface, the piece of part 2 by both, with
+  // opposite signs on the two sides.
+  std::map<int, int> sign_sum;
+  for (const auto& [tag, s] : by_tag) {
+    int count = 0;
+    for (int b : s->boundary)
+      if (interfaces.count(std::abs(b))) ++count, sign_sum[std::abs(b)] += b > 0 ? 1 : -1;
+    CHECK(count == (s->partitions[0] == 1 ? 1 : 2));
+  }
+  for (const auto& [tag, sum] : sign_sum) CHECK(sum == 0);
+  // The right and left curves' part-1 lines are two pieces each.
+  std::map<int, int> pieces_of_curve;
+  for (const sm::io::EntityMesh& e : pm.entities)
+    if (e.dim == 1 && e.partitions == std::vector<int>{1}) ++pieces_of_curve[e.parent_tag];
+  CHECK(pieces_of_curve == std::map<int, int>{{1, 1}, {2, 2}, {3, 1}, {4, 2}});
+}
