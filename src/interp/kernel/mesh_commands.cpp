@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -435,6 +436,26 @@ void exec_save(Interpreter& in, StmtId id, const CommandStmt& c) {
 
 }  // namespace
 
+// `PartitionMesh N;` (Gmsh's GModel::partitionMesh): Mesh.NbPartitions = N, and the 2D mesh
+// partitioned now; an error at the statement without a 2D mesh or with a bad N.
+void exec_partition_mesh(Interpreter& in, StmtId id, const CommandStmt& c) {
+  const Stmt& s = in.ast().stmt(id);
+  const double n = in.eval_number(c.arg);
+  const SourceRange at = in.ast().expr(c.arg).range;
+  if (!(n >= 1) || n != std::floor(n))
+    in.fail_fmt(at, Diag::InvalidOptionValue, fmt::format("PartitionMesh {:g}: give a whole number of partitions, 1 or more", n));
+  if (std::string err = in.options().set_number("Mesh.NbPartitions", n); !err.empty())
+    in.fail_fmt(at, Diag::InvalidOptionValue, err);
+  KernelState& k = in.kernel();
+  k.option_set_at["Mesh.NbPartitions"] = s.range;
+  if (!k.mesh || !k.has_mesh_stats)
+    in.fail_fmt(s.range, Diag::InvalidOptionValue,
+                std::string("PartitionMesh: there is no 2D mesh to partition (put it after 'Mesh 2;')"));
+  k.partition.reset();
+  if (std::string why = partition_mesh_now(in, *k.mesh, &k.mesh_stats); !why.empty())
+    in.fail_fmt(s.range, Diag::InvalidOptionValue, why);
+}
+
 bool exec_mesh_command(Interpreter& in, StmtId id, std::string_view command) {
   const Stmt& s = in.ast().stmt(id);
   if (const auto* c = std::get_if<CommandStmt>(&s.node)) {
@@ -444,6 +465,10 @@ bool exec_mesh_command(Interpreter& in, StmtId id, std::string_view command) {
     }
     if (command == "Save" && c->arg.valid()) {
       exec_save(in, id, *c);
+      return true;
+    }
+    if (command == "PartitionMesh" && c->arg.valid()) {
+      exec_partition_mesh(in, id, *c);
       return true;
     }
   }

@@ -126,6 +126,9 @@ TEST_CASE("save formats: a Save writes the partitions the options ask for then")
   CHECK(testing::read_all(dir / "p3.msh").find("$PartitionedEntities\n3\n0\n") != std::string::npos);
   CHECK(testing::read_all(dir / "p2.msh").find("$PartitionedEntities\n2\n0\n") != std::string::npos);
   CHECK(testing::read_all(dir / "p0.msh").find("$PartitionedEntities") == std::string::npos);
+  // PartitionMesh N (Gmsh's statement) partitions the mesh there and sets the option.
+  REQUIRE(run(dir, kSaveSquare + "Mesh 2;\nPartitionMesh 3;\nAssert(Mesh.NbPartitions == 3);\nSave \"pm3.msh\";\n"));
+  CHECK(testing::read_all(dir / "pm3.msh") == testing::read_all(dir / "p3.msh"));
   // -part's way (the option before meshing) writes the same bytes as the Save's.
   testing::ScratchDir cli;
   REQUIRE(run(cli, kSaveSquare + "Mesh.NbPartitions = 3;\n", "msh", cli / "p3.msh"));
