@@ -34,6 +34,7 @@ struct OutputSettings {
   /// Mesh.NbPartitions' partition of the mesh, for the rows that hold partitions; nullptr: none.
   const MeshPartition* partition = nullptr;
   bool split_files = false;       ///< Mesh.PartitionSplitMeshFiles: MSH one file per part
+  bool partition_topology = true; ///< Mesh.PartitionCreateTopology: MSH interface curves and points
 };
 
 /// The file of part `part` (1-based) with Mesh.PartitionSplitMeshFiles: "dir/x.msh" ->

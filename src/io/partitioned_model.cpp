@@ -182,7 +182,7 @@ void set_boundaries(MeshModel& m, const std::map<std::uint32_t, int>& point_at) 
 
 }  // namespace
 
-MeshModel partitioned_model(const MeshModel& mesh, const MeshPartition& partition) {
+MeshModel partitioned_model(const MeshModel& mesh, const MeshPartition& partition, bool topology) {
   MeshModel out;
   out.xyz = mesh.xyz;
   out.physicals = mesh.physicals;
@@ -220,6 +220,11 @@ MeshModel partitioned_model(const MeshModel& mesh, const MeshPartition& partitio
     }
   }
   for (int d = 2; d >= 0; --d) divide_disconnected(out, d, next_tag[d]);
+  if (!topology) {
+    set_boundaries(out, {});
+    classify_nodes(out);
+    return out;
+  }
   // Interfaces: the sides of 2D elements in different parts, oriented as the side of the
   // lower part's element.
   struct Side {

@@ -24,7 +24,9 @@ namespace sm::io {
 /// side, - against it), curves by the points at their chain ends.
 /// New tags follow the model's largest tag of each dimension. Each node belongs to the
 /// first entity, in (dim, tag) order, with an element using it, as Gmsh assigns them.
-MeshModel partitioned_model(const MeshModel& mesh, const MeshPartition& partition);
+/// With `topology` false (Mesh.PartitionCreateTopology = 0) no interface curve and no
+/// partition point are made: the pieces only, as Gmsh then writes them.
+MeshModel partitioned_model(const MeshModel& mesh, const MeshPartition& partition, bool topology = true);
 
 /// One part's file for Mesh.PartitionSplitMeshFiles: the partitioned entities of
 /// `partitioned` (from partitioned_model) that are in `part`, boundaries kept to those,

@@ -370,6 +370,7 @@ std::string save_mesh(Interpreter& in, const std::string& path, const std::strin
     if (std::string why = current_partition(in); !why.empty()) return why;
     settings.partition = &aligned;   // filled below, once the node coordinates dropped what they drop
     settings.split_files = o.number("Mesh.PartitionSplitMeshFiles") != 0;
+    settings.partition_topology = o.number("Mesh.PartitionCreateTopology") != 0;
     if (settings.split_files && base::writes_in_place(path) && f->input == io::OutputInput::Mesh &&
         f->mesh_format == 1)
       return "Mesh.PartitionSplitMeshFiles writes one file per partition beside the name: give a file name";

@@ -234,3 +234,18 @@ TEST_CASE("partitioned model: a part in two pieces gives two entities, as Gmsh d
     if (e.dim == 1 && e.partitions == std::vector<int>{1}) ++pieces_of_curve[e.parent_tag];
   CHECK(pieces_of_curve == std::map<int, int>{{1, 1}, {2, 2}, {3, 1}, {4, 2}});
 }
+
+TEST_CASE("partitioned model: without topology, the pieces only") {
+  const sm::io::MeshModel m = sm::io::testing::grid_square(8);
+  const sm::io::MeshPartition p = partition_of(m, 3);
+  const sm::io::MeshModel pm = sm::io::partitioned_model(m, p, /*topology=*/false);
+  CHECK(sm::io::validate_mesh_model(pm).empty());
+  std::size_t triangles = 0;
+  for (const sm::io::EntityMesh& e : pm.entities) {
+    if (e.partitions.empty()) continue;
+    CHECK(e.partitions.size() == 1);   // no interface, no partition point
+    CHECK(e.parent_dim == e.dim);
+    if (e.dim == 2) triangles += e.connectivity.size() / 3;
+  }
+  CHECK(triangles == 128);
+}
