@@ -1,8 +1,9 @@
 // Mesh commands: `Mesh 1;` runs the 1D mesher (mesh/mesh1d) on the model with the
 // script's Mesh.* options and Background Field, `Mesh 2;` then meshes the faces
 // (mesh/mesh2d, Mesh.Algorithm 1, 2, 5 or 6) and prints the statistics, `Save "f";`
-// writes the current mesh atomically in a format of io/output_format.h, and the
-// command line's -1 / -2 do both. The other mesh commands and post-processing
+// writes the current mesh atomically in a format of io/output_format.h, `PartitionMesh N;`
+// partitions it (interp/kernel/partition_export.h), and the command line's -1 / -2 mesh
+// and write. The other mesh commands and post-processing
 // statements are reported as not supported.
 #include "interp/kernel/mesh_commands.h"
 
@@ -435,8 +436,6 @@ void exec_save(Interpreter& in, StmtId id, const CommandStmt& c) {
     in.fail_fmt(at, Diag::FileWriteError, name, err);
 }
 
-}  // namespace
-
 // `PartitionMesh N;` (Gmsh's GModel::partitionMesh): Mesh.NbPartitions = N, and the 2D mesh
 // partitioned now; an error at the statement without a 2D mesh or with a bad N.
 void exec_partition_mesh(Interpreter& in, StmtId id, const CommandStmt& c) {
@@ -444,7 +443,8 @@ void exec_partition_mesh(Interpreter& in, StmtId id, const CommandStmt& c) {
   const double n = in.eval_number(c.arg);
   const SourceRange at = in.ast().expr(c.arg).range;
   if (!(n >= 1) || n != std::floor(n))
-    in.fail_fmt(at, Diag::InvalidOptionValue, fmt::format("PartitionMesh {:g}: give a whole number of partitions, 1 or more", n));
+    in.fail_fmt(at, Diag::InvalidOptionValue,
+                fmt::format("PartitionMesh {:g}: give a whole number of partitions, 1 or more", n));
   if (std::string err = in.options().set_number("Mesh.NbPartitions", n); !err.empty())
     in.fail_fmt(at, Diag::InvalidOptionValue, err);
   KernelState& k = in.kernel();
@@ -456,6 +456,8 @@ void exec_partition_mesh(Interpreter& in, StmtId id, const CommandStmt& c) {
   if (std::string why = partition_mesh_now(in, *k.mesh, &k.mesh_stats); !why.empty())
     in.fail_fmt(s.range, Diag::InvalidOptionValue, why);
 }
+
+}  // namespace
 
 bool exec_mesh_command(Interpreter& in, StmtId id, std::string_view command) {
   const Stmt& s = in.ast().stmt(id);
