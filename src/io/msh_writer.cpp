@@ -76,8 +76,14 @@ Plan make_plan(const MeshModel& m, const MshOptions& opt) {
   });
   for (const EntityMesh& e : m.entities) p.has_physicals |= !e.physical_tags.empty();
   p.saved.resize(m.entities.size());
-  for (std::size_t i = 0; i < m.entities.size(); ++i)
-    p.saved[i] = opt.save_all || !p.has_physicals || !m.entities[i].physical_tags.empty();
+  // A partition's interface curves and points (io/partitioned_model.h) are written with
+  // their elements, as Gmsh 4.8.4 writes them (it gives them their parent surface's groups,
+  // which would read back as a curve group that is not the script's; they have none here).
+  for (std::size_t i = 0; i < m.entities.size(); ++i) {
+    const EntityMesh& e = m.entities[i];
+    const bool interface = !e.partitions.empty() && e.parent_dim != e.dim;
+    p.saved[i] = opt.save_all || !p.has_physicals || !e.physical_tags.empty() || interface;
+  }
   p.owner.assign(m.xyz.size(), kUnowned);
   for (std::size_t i = 0; i < m.entities.size(); ++i)
     for (std::uint32_t n : m.entities[i].nodes) p.owner[n] = static_cast<std::uint32_t>(i);

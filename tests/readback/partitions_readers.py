@@ -54,9 +54,13 @@ def triangles_by_part(path):
     xyz = {t: tuple(np.round(c, 3)) for t, c in zip(tags.tolist(), coords.reshape(-1, 3))}
     parts = collections.defaultdict(list)
     seen_parts = set()
+    interface_lines = 0
     for dim, tag in gmsh.model.getEntities():
         p = list(gmsh.model.getPartitions(dim, tag))
         seen_parts.update(p)
+        if dim == 1 and len(p) == 2:
+            check(gmsh.model.getParent(dim, tag)[0] == 2, f"{path}: interface curve {tag}'s parent is a surface")
+            interface_lines += sum(len(t) for t in gmsh.model.mesh.getElements(1, tag)[1])
         if dim != 2:
             continue
         _, _, enodes = gmsh.model.mesh.getElements(2, tag)
@@ -66,6 +70,7 @@ def triangles_by_part(path):
                 check(len(p) == 1, f"{path}: surface {tag} with triangles is in one partition ({p})")
                 parts[p[0] if p else 0] += tri
     gmsh.finalize()
+    triangles_by_part.interface_lines = interface_lines
     return parts, n_parts, seen_parts
 
 
@@ -104,6 +109,8 @@ def main():
               f"--stats: imbalance {stats['partition_imbalance']}")
         cut = sides_between_parts(parts)
         check(stats["partition_edge_cut"] == cut, f"--stats: edge cut {stats['partition_edge_cut']}, {cut} sides")
+        lines = triangles_by_part.interface_lines
+        check(lines == cut, f"the interface curves between parts hold {lines} lines, one per cut side")
 
         binary, _, _ = triangles_by_part(os.path.join(one, "gulf_bin.msh"))
         check(binary == parts, "binary MSH 4.1: the same partitioned triangles as ASCII")
