@@ -120,12 +120,12 @@ Mesh run(const py::object& error_type, const std::string& path, const std::map<s
   const interp::KernelState& k = in.kernel();
   const ModelMesh empty;
   io::MeshModel mm = io::from_model_mesh(k.model, k.mesh ? *k.mesh : empty);
-  // Mesh.NbPartitions' parts of each surface's triangles, by (dim, tag): the entities are
-  // filtered below.
+  // Mesh.NbPartitions' parts of each surface's triangles, by (dim, tag) (the entities are
+  // filtered below).
   std::map<std::pair<int, int>, std::vector<int>> parts_of;
   if (k.partition)
-    for (std::size_t i = 0; i < mm.entities.size(); ++i)
-      if (mm.entities[i].dim == 2) parts_of[{2, mm.entities[i].tag}] = k.partition->element_part[i];
+    for (std::size_t i = 0; i < k.partition->entities.size(); ++i)
+      if (k.partition->entities[i].first == 2) parts_of[k.partition->entities[i]] = k.partition->element_part[i];
   // With triangles, only the nodes they use (the curves of an island left out of the 2D
   // mesh keep theirs in the model); renumbered in the model's order.
   {
