@@ -58,6 +58,7 @@ std::string usage_text() {
          "  -clmin X, -clmax X  Mesh.MeshSizeMin / Mesh.MeshSizeMax\n"
          "  -clscale X          Mesh.MeshSizeFactor\n"
          "  -algo NAME          meshadapt, auto, del2d, front2d\n"
+         "  -part N             partition the 2D mesh into N parts with METIS (Mesh.NbPartitions)\n"
          "  -nt N               General.NumThreads\n"
          "  -v N                General.Verbosity (0 silent ... 5 default, <2 hides warnings,\n"
          "                      <4 hides the progress display and the mesh summary)\n"
@@ -144,6 +145,14 @@ ParseOutcome parse_args(const std::vector<std::string>& argv) {
       if (!number_opt("Mesh.MeshSizeMax")) return fail("'-clmax' needs a number");
     } else if (arg == "-clscale") {
       if (!number_opt("Mesh.MeshSizeFactor")) return fail("'-clscale' needs a number");
+    } else if (arg == "-part") {
+      // Gmsh's -part N: Mesh.NbPartitions = N, the 2D mesh partitioned after meshing.
+      std::string text;
+      double d = 0;
+      if (!value("-part", text) || !parse_number(text, d) || d < 1 || d != std::floor(d) || d > 1e6)
+        return fail(fmt::format("'-part' needs a whole number of partitions, 1 or more{}",
+                                text.empty() ? "" : fmt::format(" (not '{}')", text)));
+      a.option_numbers.emplace_back("Mesh.NbPartitions", d);
     } else if (arg == "-nt") {
       if (!number_opt("General.NumThreads")) return fail("'-nt' needs a number");
     } else if (arg == "-v") {

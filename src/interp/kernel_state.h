@@ -18,6 +18,7 @@
 #include "interp/stage_clock.h"
 #include "interp/value.h"
 #include "lang/source.h"
+#include "io/mesh_partition.h"
 #include "mesh/model_mesh.h"
 
 namespace sm::interp {
@@ -61,6 +62,9 @@ struct KernelState {
   std::map<std::pair<int, int>, lang::SourceRange> created_at;
   /// The mesh of the last `Mesh n;` (kernel/mesh_commands.cpp), what `Save` writes.
   std::shared_ptr<const ModelMesh> mesh;
+  /// Mesh.NbPartitions' partition of `mesh`, made when it was meshed; null without.
+  std::shared_ptr<const io::MeshPartition> partition;
+  io::MeshPartitionOptions partition_options;   ///< what `partition` was made with
   /// Statistics of the last `Mesh 2;` (for `--stats FILE.json` and the end of the run's
   /// account, mesh_commands.h); has_mesh_stats is false before.
   MeshStats mesh_stats;

@@ -70,13 +70,16 @@ struct ValueCheck {
   double min = 0;
   bool strict = false;
   double max = 0;
+  bool whole = false;
 };
 constexpr double kNoMax = std::numeric_limits<double>::infinity();
 const std::vector<ValueCheck>& value_checks() {
   static const std::vector<ValueCheck> c = {
 #define CHOICE(name, ...) ValueCheck{name, {__VA_ARGS__}, 0, false, 0},
 #define RANGE(name, lo, strict_lo, hi) ValueCheck{name, {}, lo, strict_lo, hi},
+#define WHOLE(name, lo, hi) ValueCheck{name, {}, lo, false, hi, true},
 #include "interp/options_checks.def"
+#undef WHOLE
 #undef RANGE
 #undef CHOICE
   };
@@ -192,6 +195,9 @@ std::string Options::set_number(std::string_view name, double v, bool internal) 
       for (double a : c.allowed) list += fmt::format("{}{}", list.empty() ? "" : ", ", a);
       return fmt::format("invalid value {} for option '{}' (allowed: {})", v, name, list);
     }
+    if (c.whole && (v != std::floor(v) || v < c.min || v > c.max))
+      return fmt::format("invalid value {} for option '{}' (must be a whole number from {} to {})", v, name, c.min,
+                         c.max);
     if (v < c.min || (c.strict && v == c.min) || v > c.max) {
       if (c.max == kNoMax)
         return fmt::format("invalid value {} for option '{}' (must be {} {})", v, name, c.strict ? ">" : ">=", c.min);

@@ -27,6 +27,12 @@ struct EntityMesh {
   std::vector<double> params;            // empty, or dim values per node (curve t; surface u v)
   ElementType type = ElementType::Point1;
   std::vector<std::uint32_t> connectivity;  // nodes_per_element(type) node indices per element
+  // A partitioned entity (io/partitioned_model.h; MSH 4.1's $PartitionedEntities): the
+  // parts it is in (1..MeshModel::num_partitions) and its model entity; empty for the
+  // model's own entities.
+  std::vector<int> partitions{};
+  int parent_dim = 0;
+  int parent_tag = 0;
 };
 
 struct PhysicalGroup {
@@ -39,6 +45,7 @@ struct MeshModel {
   std::vector<Vec3> xyz;                 // every node, in any order
   std::vector<EntityMesh> entities;      // any order: writers sort by (dim, tag)
   std::vector<PhysicalGroup> physicals;
+  int num_partitions = 0;                // > 0: the mesh is in the partitioned entities
 
   std::size_t element_count() const;
 };

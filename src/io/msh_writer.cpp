@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstring>
 #include <functional>
+#include <map>
 #include <numeric>
 
 #include "base/output_file.h"
@@ -75,8 +76,14 @@ Plan make_plan(const MeshModel& m, const MshOptions& opt) {
   });
   for (const EntityMesh& e : m.entities) p.has_physicals |= !e.physical_tags.empty();
   p.saved.resize(m.entities.size());
-  for (std::size_t i = 0; i < m.entities.size(); ++i)
-    p.saved[i] = opt.save_all || !p.has_physicals || !m.entities[i].physical_tags.empty();
+  // A partition's interface curves and points (io/partitioned_model.h) are written with
+  // their elements, as Gmsh 4.8.4 writes them (it gives them their parent surface's groups,
+  // which would read back as a curve group that is not the script's; they have none here).
+  for (std::size_t i = 0; i < m.entities.size(); ++i) {
+    const EntityMesh& e = m.entities[i];
+    const bool interface = !e.partitions.empty() && e.parent_dim != e.dim;
+    p.saved[i] = opt.save_all || !p.has_physicals || !e.physical_tags.empty() || interface;
+  }
   p.owner.assign(m.xyz.size(), kUnowned);
   for (std::size_t i = 0; i < m.entities.size(); ++i)
     for (std::uint32_t n : m.entities[i].nodes) p.owner[n] = static_cast<std::uint32_t>(i);
@@ -211,23 +218,46 @@ struct Box {
   bool empty() const { return lo.x > hi.x; }
 };
 
-void write_entities41(Out& o, const MeshModel& m, const MshOptions& opt, const Plan& p) {
+// $Entities (the model's own entities) or, for a partitioned mesh, $PartitionedEntities
+// (the entities with partitions: partition count, no ghost entities, then per entity its
+// parent's dim and tag and its partitions before the usual fields), as Gmsh 4.8.4 writes.
+void write_entities41(Out& o, const MeshModel& m, const MshOptions& opt, const Plan& p, bool partitioned) {
+  auto listed = [&](const EntityMesh& e) { return e.partitions.empty() != partitioned; };
   std::size_t count[4] = {0, 0, 0, 0};
-  for (const EntityMesh& e : m.entities) ++count[std::clamp(e.dim, 0, 3)];
-  o.text("$Entities\n");
+  for (const EntityMesh& e : m.entities)
+    if (listed(e)) ++count[std::clamp(e.dim, 0, 3)];
+  // A partitioned mesh's model entities hold no mesh: their boxes are their pieces'.
+  std::map<std::pair<int, int>, Box> piece_boxes;
+  if (m.num_partitions > 0 && !partitioned)
+    for (const EntityMesh& e : m.entities)
+      if (!e.partitions.empty() && e.parent_dim == e.dim) {
+        Box& b = piece_boxes[{e.dim, e.parent_tag}];
+        for (std::uint32_t n : e.connectivity) b.add(m.xyz[n]);
+      }
+  o.text(partitioned ? "$PartitionedEntities\n" : "$Entities\n");
   if (opt.binary) {
+    if (partitioned) o.bin<std::uint64_t>(static_cast<std::uint64_t>(m.num_partitions)), o.bin<std::uint64_t>(0);
     for (std::size_t c : count) o.bin<std::uint64_t>(c);
   } else {
+    if (partitioned) o.f("{}\n0\n", m.num_partitions);
     o.f("{} {} {} {}\n", count[0], count[1], count[2], count[3]);
   }
   for (std::size_t i : p.order) {
     const EntityMesh& e = m.entities[i];
+    if (!listed(e)) continue;
     Box box;
     for (std::uint32_t n : e.nodes) box.add(m.xyz[n]);
     for (std::uint32_t n : e.connectivity) box.add(m.xyz[n]);
+    if (const auto it = piece_boxes.find({e.dim, e.tag}); it != piece_boxes.end())
+      box.add(it->second.lo), box.add(it->second.hi);
     if (box.empty()) box.add(Vec3{0, 0, 0});
     if (opt.binary) {
       o.bin<int>(e.tag);
+      if (partitioned) {
+        o.bin<int>(e.parent_dim), o.bin<int>(e.parent_tag);
+        o.bin<std::uint64_t>(e.partitions.size());
+        for (int q : e.partitions) o.bin<int>(q);
+      }
       if (e.dim == 0) {
         o.bin(box.lo.x), o.bin(box.lo.y), o.bin(box.lo.z);
       } else {
@@ -241,6 +271,10 @@ void write_entities41(Out& o, const MeshModel& m, const MshOptions& opt, const P
       }
     } else {
       o.f("{} ", e.tag);
+      if (partitioned) {
+        o.f("{} {} {} ", e.parent_dim, e.parent_tag, e.partitions.size());
+        for (int q : e.partitions) o.f("{} ", q);
+      }
       if (e.dim == 0) {
         o.f("{:.16g} {:.16g} {:.16g} ", box.lo.x, box.lo.y, box.lo.z);
       } else {
@@ -256,11 +290,13 @@ void write_entities41(Out& o, const MeshModel& m, const MshOptions& opt, const P
       o.text("\n");
     }
   }
-  o.text(opt.binary ? "\n$EndEntities\n" : "$EndEntities\n");
+  o.text(opt.binary ? "\n" : "");
+  o.text(partitioned ? "$EndPartitionedEntities\n" : "$EndEntities\n");
 }
 
 void write_msh41(Out& o, const MeshModel& m, const MshOptions& opt, const Plan& p) {
-  write_entities41(o, m, opt, p);
+  write_entities41(o, m, opt, p, /*partitioned=*/false);
+  if (m.num_partitions > 0) write_entities41(o, m, opt, p, /*partitioned=*/true);
 
   // Node blocks: every saved entity, plus every entity owning a node that a
   // saved element uses (the boundary of a physical surface, say).
@@ -375,11 +411,24 @@ std::string msh_to_string(const MeshModel& mesh, const MshOptions& opt) {
   return o.take();
 }
 
-bool save_msh(const MeshModel& mesh, const MshOptions& opt, const std::string& path, std::string* error) {
+namespace {
+
+bool check_msh(const MeshModel& mesh, const MshOptions& opt, std::string* error) {
   if (std::string why = validate_mesh_model(mesh); !why.empty()) {
     *error = "invalid mesh: " + why;
     return false;
   }
+  if (mesh.num_partitions > 0 && opt.version == 22) {
+    *error = "partitions are written in MSH 4.1 only: set Mesh.MshFileVersion = 4.1";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool save_msh(const MeshModel& mesh, const MshOptions& opt, const std::string& path, std::string* error) {
+  if (!check_msh(mesh, opt, error)) return false;
   base::OutputFile file;
   if (!file.open(path)) {
     *error = file.error();
@@ -389,6 +438,33 @@ bool save_msh(const MeshModel& mesh, const MshOptions& opt, const std::string& p
   write_all(o, mesh, opt);
   if (!o.finish() || !file.commit()) {
     *error = file.error();
+    return false;
+  }
+  return true;
+}
+
+bool save_msh_files(const std::vector<const MeshModel*>& meshes, const MshOptions& opt,
+                    const std::vector<std::string>& paths, std::string* error) {
+  for (const MeshModel* m : meshes)
+    if (!check_msh(*m, opt, error)) return false;
+  std::vector<base::OutputFile> files(meshes.size());
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    if (!files[i].open(paths[i])) {
+      *error = files[i].error();
+      return false;
+    }
+    Out o(&files[i]);
+    write_all(o, *meshes[i], opt);
+    if (!o.finish()) {
+      *error = files[i].error();
+      return false;
+    }
+  }
+  std::vector<base::OutputFile*> all;
+  for (base::OutputFile& f : files) all.push_back(&f);
+  std::size_t failed = 0;
+  if (!base::commit_together(all, &failed)) {
+    *error = fmt::format("{}: {}", paths[failed], files[failed].error());
     return false;
   }
   return true;

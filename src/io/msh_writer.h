@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "io/mesh_model.h"
 #include "io/node_data.h"
@@ -25,5 +26,11 @@ std::string msh_to_string(const MeshModel& mesh, const MshOptions& opt);
 /// reason, without the path (as every save_* here: callers say "cannot write
 /// 'PATH': REASON"); the target path is then untouched.
 bool save_msh(const MeshModel& mesh, const MshOptions& opt, const std::string& path, std::string* error);
+
+/// Writes meshes[i] to paths[i], all renamed into place only once every one is complete
+/// (Mesh.PartitionSplitMeshFiles: one file per part); on failure *error names the file
+/// that failed and no target is touched.
+bool save_msh_files(const std::vector<const MeshModel*>& meshes, const MshOptions& opt,
+                    const std::vector<std::string>& paths, std::string* error);
 
 }  // namespace sm::io

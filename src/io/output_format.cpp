@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "io/msh_writer.h"
+#include "io/partitioned_model.h"
 #include "io/png_writer.h"
 #include "io/svg_writer.h"
 #include "io/ugrid_writer.h"
@@ -21,14 +22,38 @@ bool write_msh(const MeshModel& m, const OutputSettings& s, const std::string& p
   o.save_all = s.save_all;
   o.save_parametric = s.save_parametric;
   o.node_data = s.node_data;
-  return save_msh(m, o, path, error);
+  if (!s.partition) return save_msh(m, o, path, error);
+  const MeshModel partitioned = partitioned_model(m, *s.partition, s.partition_topology);
+  if (!s.split_files) return save_msh(partitioned, o, path, error);
+  std::vector<MeshModel> pieces;
+  std::vector<std::string> paths;
+  for (int p = 1; p <= s.partition->parts; ++p) {
+    pieces.push_back(partition_piece(partitioned, p));
+    paths.push_back(partition_file_name(path, p));
+  }
+  // Node data are per node of the whole mesh: each file's $NodeData holds its own nodes.
+  std::vector<const MeshModel*> all;
+  for (const MeshModel& piece : pieces) all.push_back(&piece);
+  return save_msh_files(all, o, paths, error);
+}
+
+// The partition of each node as one more node value, beside Mesh.NodeData's.
+std::vector<NodeData> with_node_partition(const OutputSettings& s) {
+  std::vector<NodeData> data = s.node_data;
+  if (s.partition) {
+    NodeData d{"partition", "1", "partition of the node: the smallest of its elements' (Mesh.NbPartitions)", {}};
+    d.values.assign(s.partition->node_part.begin(), s.partition->node_part.end());
+    data.push_back(std::move(d));
+  }
+  return data;
 }
 
 bool write_vtk(const MeshModel& m, const OutputSettings& s, const std::string& path, std::string* error) {
   VtkOptions o;
   o.binary = s.binary;
   o.save_all = s.save_all;
-  o.node_data = s.node_data;
+  o.node_data = with_node_partition(s);
+  if (s.partition) o.element_part = &s.partition->element_part;
   return save_vtk(m, o, path, error);
 }
 
@@ -49,34 +74,43 @@ bool write_gr3(const MeshModel& m, const OutputSettings& s, const std::string& p
 }
 
 bool write_ugrid(const MeshModel& m, const OutputSettings& s, const std::string& path, std::string* error) {
-  return save_ugrid(m, s.ocean, s.node_data, path, error);
+  return save_ugrid(m, s.ocean, with_node_partition(s), s.partition ? &s.partition->element_part : nullptr, path,
+                    error);
 }
 
 using In = OutputInput;
 
-// MSH holds everything Gmsh meshes; legacy VTK cells and point data but no partitions;
+// MSH 4.1 holds everything Gmsh meshes, partitions included (MSH 2.2's partition tags are
+// not written); VTK and UGRID a partition per cell and per node;
 // the pictures draw any polygon; ADCIRC's fort.14 is triangles only, SCHISM's hgrid.gr3
 // takes quadrangles too; UGRID netCDF holds mixed faces and node variables.
 // fort.14 and hgrid.gr3 give every node a depth (the last column: depth required).
 //  name      ext     default file  Mesh.Format version input       writer        quads  parts  data   note
 constexpr OutputFormat kFormats[] = {
     {"msh",    ".msh", "",          1,  0,   In::Mesh,      &write_msh,    true,  true,  true,  "", ""},
-    {"msh2",   ".msh", "",          1,  2.2, In::Mesh,      &write_msh,    true,  true,  true,  "", ""},
-    {"msh22",  ".msh", "",          1,  2.2, In::Mesh,      &write_msh,    true,  true,  true,  "", ""},
+    {"msh2",   ".msh", "",          1,  2.2, In::Mesh,      &write_msh,    true,  false, true,  "", ""},
+    {"msh22",  ".msh", "",          1,  2.2, In::Mesh,      &write_msh,    true,  false, true,  "", ""},
     {"msh4",   ".msh", "",          1,  4.1, In::Mesh,      &write_msh,    true,  true,  true,  "", ""},
     {"msh41",  ".msh", "",          1,  4.1, In::Mesh,      &write_msh,    true,  true,  true,  "", ""},
-    {"vtk",    ".vtk", "",          16, 0,   In::Mesh,      &write_vtk,    true,  false, true,  "", ""},
+    {"vtk",    ".vtk", "",          16, 0,   In::Mesh,      &write_vtk,    true,  true,  true,  "", ""},
     {"svg",    ".svg", "",          0,  0,   In::Picture,   &write_svg,    true,  false, false, "a picture", ""},
     {"png",    ".png", "",          0,  0,   In::Picture,   &write_png,    true,  false, false, "a picture", ""},
     {"fort14", ".14",  "fort.14",   0,  0,   In::OceanGrid, &write_fort14, false, false, false, "ADCIRC", "", true},
     {"gr3",    ".gr3", "hgrid.gr3", 0,  0,   In::OceanGrid, &write_gr3,    true,  false, false,
      "SCHISM hgrid.gr3 + hgrid.ll", "SCHISM's hgrid.gr3 comes with hgrid.ll beside it: give a file name", true},
-    {"ugrid",  ".nc",  "",          0,  0,   In::OceanGrid, &write_ugrid,  true,  false, true,  "UGRID netCDF", ""},
+    {"ugrid",  ".nc",  "",          0,  0,   In::OceanGrid, &write_ugrid,  true,  true,  true,  "UGRID netCDF", ""},
 };
 
 }  // namespace
 
 std::span<const OutputFormat> output_formats() { return kFormats; }
+
+std::string partition_file_name(const std::string& path, int part) {
+  const std::size_t slash = path.find_last_of('/');
+  const std::size_t dot = path.find_last_of('.');
+  const bool has_ext = dot != std::string::npos && (slash == std::string::npos || dot > slash);
+  return fmt::format("{}_{}.msh", has_ext ? path.substr(0, dot) : path, part);
+}
 
 const OutputFormat* find_output_format(std::string_view name) {
   for (const OutputFormat& f : kFormats)

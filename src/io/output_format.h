@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "io/mesh_model.h"
+#include "io/mesh_partition.h"
 #include "io/node_data.h"
 #include "io/ocean_grid.h"
 #include "io/picture.h"
@@ -30,7 +31,15 @@ struct OutputSettings {
   PictureOptions picture;
   OceanGridOptions ocean;
   std::vector<NodeData> node_data;  ///< Mesh.NodeData, for the rows that hold node data
+  /// Mesh.NbPartitions' partition of the mesh, for the rows that hold partitions; nullptr: none.
+  const MeshPartition* partition = nullptr;
+  bool split_files = false;       ///< Mesh.PartitionSplitMeshFiles: MSH one file per part
+  bool partition_topology = true; ///< Mesh.PartitionCreateTopology: MSH interface curves and points
 };
+
+/// The file of part `part` (1-based) with Mesh.PartitionSplitMeshFiles: "dir/x.msh" ->
+/// "dir/x_3.msh" (the extension replaced by _N.msh), as Gmsh 4.8.4 names them.
+std::string partition_file_name(const std::string& path, int part);
 
 /// Writes `mesh` to `path` atomically; false with *error (without the path) on failure.
 using OutputWriter = bool (*)(const MeshModel& mesh, const OutputSettings& settings, const std::string& path,

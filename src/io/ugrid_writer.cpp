@@ -45,10 +45,11 @@ struct Ugrid {
   std::size_t max_face_nodes = 3;
   std::vector<int> edge_nodes;          // 2 per boundary edge
   std::vector<int> edge_kind, edge_physical;
+  std::vector<int> face_part;           // per face, when partitioned
   std::vector<std::pair<int, std::string>> curve_groups;   // dim-1 physical groups (tag, flag word)
 };
 
-Ugrid gather(const MeshModel& m, const OceanGridOptions& opt) {
+Ugrid gather(const MeshModel& m, const OceanGridOptions& opt, const std::vector<std::vector<int>>* element_part) {
   Ugrid u;
   std::vector<const EntityMesh*> faces;
   for (const EntityMesh& e : m.entities)
@@ -77,6 +78,7 @@ Ugrid gather(const MeshModel& m, const OceanGridOptions& opt) {
       const Sign s = opt.lonlat ? orient3d(a, b, c, opt.centre) : orient2d({a.x, a.y}, {b.x, b.y}, {c.x, c.y});
       if (s == Sign::Negative) std::reverse(v.begin() + 1, v.end());
       for (std::size_t j = 0; j < u.max_face_nodes; ++j) u.face_nodes.push_back(j < k ? file_id[v[j]] : -1);
+      if (element_part) u.face_part.push_back((*element_part)[static_cast<std::size_t>(f - m.entities.data())][i / k]);
     }
   }
 
@@ -180,12 +182,13 @@ class NcFile {
 }  // namespace
 
 std::string ugrid_to_bytes(const MeshModel& mesh, const OceanGridOptions& opt, std::string* error,
-                           const std::vector<NodeData>& node_data) {
+                           const std::vector<NodeData>& node_data,
+                           const std::vector<std::vector<int>>* element_part) {
   if (std::string why = validate_mesh_model(mesh); !why.empty()) {
     *error = why;
     return {};
   }
-  const Ugrid u = gather(mesh, opt);
+  const Ugrid u = gather(mesh, opt, element_part);
   if (u.nodes.empty()) {
     *error = "no 2D mesh to write (mesh with -2 or 'Mesh 2;' first)";
     return {};
@@ -242,6 +245,13 @@ std::string ugrid_to_bytes(const MeshModel& mesh, const OceanGridOptions& opt, s
     if (d.name == "depth" && vdepth >= 0) continue;
     const std::string name = "mesh2d_node_" + d.name;
     extra.emplace_back(node_var(name.c_str(), "", d.long_name.c_str(), d.units.c_str()), &d);
+  }
+  int vpart = -1;
+  if (!u.face_part.empty()) {
+    vpart = nc.var("mesh2d_face_partition", NC_INT, {d_face});
+    nc.text(vpart, "long_name", "partition of each face (Mesh.NbPartitions, METIS), 1 to the number of partitions");
+    nc.text(vpart, "mesh", "mesh2d");
+    nc.text(vpart, "location", "face");
   }
   const int vf = nc.var("mesh2d_face_nodes", NC_INT, {d_face, d_max});
   nc.text(vf, "cf_role", "face_node_connectivity");
@@ -312,6 +322,7 @@ std::string ugrid_to_bytes(const MeshModel& mesh, const OceanGridOptions& opt, s
     nc.put(var, x);
   }
   nc.put(vf, u.face_nodes);
+  if (vpart >= 0) nc.put(vpart, u.face_part);
   if (ne) {
     nc.put(ve, u.edge_nodes);
     nc.put(vkind, u.edge_kind);
@@ -323,8 +334,8 @@ std::string ugrid_to_bytes(const MeshModel& mesh, const OceanGridOptions& opt, s
 }
 
 bool save_ugrid(const MeshModel& mesh, const OceanGridOptions& opt, const std::vector<NodeData>& node_data,
-                const std::string& path, std::string* error) {
-  const std::string bytes = ugrid_to_bytes(mesh, opt, error, node_data);
+                const std::vector<std::vector<int>>* element_part, const std::string& path, std::string* error) {
+  const std::string bytes = ugrid_to_bytes(mesh, opt, error, node_data, element_part);
   if (bytes.empty()) return false;
   base::OutputFile out;
   if (!out.open(path) || !out.write(bytes) || !out.commit()) {

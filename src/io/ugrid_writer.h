@@ -19,11 +19,14 @@ namespace sm::io {
 /// The file's bytes (the netCDF file built in memory): tests, and the writer below.
 /// Empty with *error on failure.
 /// `node_data`: more node variables, mesh2d_node_<name> (Mesh.NodeData).
+/// `element_part`: per entity, per element, its partition (io/mesh_partition.h), written
+/// as the face variable mesh2d_face_partition; nullptr: none.
 std::string ugrid_to_bytes(const MeshModel& mesh, const OceanGridOptions& opt, std::string* error,
-                           const std::vector<NodeData>& node_data = {});
+                           const std::vector<NodeData>& node_data = {},
+                           const std::vector<std::vector<int>>* element_part = nullptr);
 
 /// Writes `path` atomically (base/output_file.h); *error is the reason, without the path.
 bool save_ugrid(const MeshModel& mesh, const OceanGridOptions& opt, const std::vector<NodeData>& node_data,
-                const std::string& path, std::string* error);
+                const std::vector<std::vector<int>>* element_part, const std::string& path, std::string* error);
 
 }  // namespace sm::io

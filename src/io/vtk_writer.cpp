@@ -70,10 +70,10 @@ Selection select(const MeshModel& m, const VtkOptions& opt) {
 struct CellArrays {
   std::vector<std::int64_t> connectivity, offsets;
   std::vector<std::uint8_t> types;
-  std::vector<double> entity, physical, quality;
+  std::vector<double> entity, physical, quality, partition;
 };
 
-CellArrays cell_arrays(const MeshModel& m, const Selection& s) {
+CellArrays cell_arrays(const MeshModel& m, const Selection& s, const VtkOptions& opt) {
   CellArrays c;
   for (auto [ei, k] : s.cells) {
     const EntityMesh& e = m.entities[ei];
@@ -85,6 +85,7 @@ CellArrays cell_arrays(const MeshModel& m, const Selection& s) {
     c.entity.push_back(e.tag);
     c.physical.push_back(e.physical_tags.empty() ? 0 : e.physical_tags.front());
     c.quality.push_back(e.type == ElementType::Triangle3 ? rho(m.xyz[v[0]], m.xyz[v[1]], m.xyz[v[2]]) : 1.0);
+    if (opt.element_part) c.partition.push_back((*opt.element_part)[ei][k]);
   }
   return c;
 }
@@ -111,7 +112,7 @@ void legacy_scalars(std::string& out, const std::string& name, const std::vector
 
 std::string legacy(const MeshModel& m, const VtkOptions& opt) {
   const Selection s = select(m, opt);
-  const CellArrays c = cell_arrays(m, s);
+  const CellArrays c = cell_arrays(m, s, opt);
   std::string out = "# vtk DataFile Version 3.0\nstereomesh mesh\n";
   out += opt.binary ? "BINARY\n" : "ASCII\n";
   out += fmt::format("DATASET UNSTRUCTURED_GRID\nPOINTS {} double\n", s.nodes.size());
@@ -150,6 +151,7 @@ std::string legacy(const MeshModel& m, const VtkOptions& opt) {
   legacy_scalars(out, "entity", c.entity, opt.binary);
   legacy_scalars(out, "physical", c.physical, opt.binary);
   legacy_scalars(out, "quality_rho", c.quality, opt.binary);
+  if (!c.partition.empty()) legacy_scalars(out, "partition", c.partition, opt.binary);
   if (!opt.node_data.empty()) {
     out += fmt::format("POINT_DATA {}\n", s.nodes.size());
     for (const NodeData& d : opt.node_data) {
@@ -213,7 +215,7 @@ void xml_array(std::string& out, const char* type, const std::string& name, int 
 std::string xml(const MeshModel& m, const VtkOptions& opt) {
   static_assert(std::endian::native == std::endian::little, "VTU binary output assumes a little-endian host");
   const Selection s = select(m, opt);
-  const CellArrays c = cell_arrays(m, s);
+  const CellArrays c = cell_arrays(m, s, opt);
   std::string out =
       "<?xml version=\"1.0\"?>\n"
       "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\" header_type=\"UInt32\">\n"
@@ -232,6 +234,7 @@ std::string xml(const MeshModel& m, const VtkOptions& opt) {
   xml_array(out, "Float64", "entity", 1, c.entity, opt.binary);
   xml_array(out, "Float64", "physical", 1, c.physical, opt.binary);
   xml_array(out, "Float64", "quality_rho", 1, c.quality, opt.binary);
+  if (!c.partition.empty()) xml_array(out, "Float64", "partition", 1, c.partition, opt.binary);
   out += "      </CellData>\n      <Points>\n";
   std::vector<double> xyz;
   for (std::uint32_t v : s.nodes) xyz.insert(xyz.end(), {m.xyz[v].x, m.xyz[v].y, m.xyz[v].z});

@@ -16,6 +16,9 @@ struct VtkOptions {
   bool binary = false;   // legacy: big-endian binary; xml: base64 "binary"
   bool save_all = false; // as Mesh.SaveAll: also entities outside physical groups
   std::vector<NodeData> node_data;
+  /// Per entity, per element: its partition (io/mesh_partition.h), written as the cell
+  /// data "partition"; nullptr: none.
+  const std::vector<std::vector<int>>* element_part = nullptr;
 };
 
 /// Writes the elements of the highest dimension present (triangles of a 2D

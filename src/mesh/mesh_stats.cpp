@@ -157,6 +157,9 @@ std::string format_stats(const MeshStats& s) {
   if (s.has_sizes)
     out += fmt::format("Edge length / size: median {:.3f}, 5-95% [{:.3f}, {:.3f}], {:.2f}% in [0.7, 1.4] ({} edges)\n",
                        s.len_median, s.len_p05, s.len_p95, 100 * s.share_len_07_14, s.edges);
+  if (s.partitions > 0)
+    out += fmt::format("Partitions: {} (METIS), {} to {} elements, imbalance {:.4f}, edge cut {}\n", s.partitions,
+                       s.partition_min, s.partition_max, s.partition_imbalance, s.partition_edge_cut);
   if (s.time_step.valid) {
     const TimeStep& t = s.time_step;
     out += fmt::format("Time step (Courant 1): dt {:.4g} s", t.dt);
@@ -215,6 +218,11 @@ std::string stats_json(const MeshStats& s) {
                        json_number(t.edge), json_number(t.depth), t.surface);
     if (t.has_lonlat) out += fmt::format(", \"dt_lon\": {}, \"dt_lat\": {}", json_number(t.lon), json_number(t.lat));
   }
+  if (s.partitions > 0)
+    out += fmt::format(", \"partitions\": {}, \"partition_edge_cut\": {}, \"partition_imbalance\": {}, "
+                       "\"partition_min\": {}, \"partition_max\": {}",
+                       s.partitions, s.partition_edge_cut, json_number(s.partition_imbalance), s.partition_min,
+                       s.partition_max);
   out += ", \"stages\": {";
   for (std::size_t i = 0; i < s.stages.size(); ++i)
     out += fmt::format("{}{}: {}", i ? ", " : "", json_string(s.stages[i].name), json_number(s.stages[i].seconds));

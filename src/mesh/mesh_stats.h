@@ -32,6 +32,12 @@ struct MeshStats {
   double share_len_07_14 = 0;                          // share of edges with ratio in [0.7, 1.4]
   std::vector<StageTime> stages;                       // filled by the caller
   TimeStep time_step;                                  // with Mesh.DepthField: set by the caller
+  // With Mesh.NbPartitions (io/mesh_partition.h), set by the caller: the part count, the
+  // dual-graph edges cut, the largest part over the mean, and the smallest and largest part.
+  int partitions = 0;
+  std::uint64_t partition_edge_cut = 0;
+  double partition_imbalance = 1;
+  std::uint64_t partition_min = 0, partition_max = 0;
 };
 
 /// Target size at 3D points (batched), e.g. one of Mesh2dResult::target_sizes.

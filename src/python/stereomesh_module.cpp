@@ -2,7 +2,8 @@
 // `stereomesh -2 x.geo` does, and hands the mesh over as numpy arrays instead of a file:
 //   m = stereomesh.run("x.geo", setnumber={"CoastAccuracy": 10e3}, algo="front2d", threads=2)
 //   m.nodes_lonlat, m.nodes_xyz, m.triangles, m.boundary_edges, m.boundary_physical,
-//   m.depth, m.size, m.stats (dict), m.diagnostics (list of dicts), m.printed (Printf text)
+//   m.depth, m.size, m.partition, m.node_partition (Mesh.NbPartitions), m.stats (dict),
+//   m.diagnostics (list of dicts), m.printed (Printf text)
 // A script or meshing error raises stereomesh.ScriptError (file, line, column, message).
 #include <pybind11/eval.h>
 #include <pybind11/numpy.h>
@@ -36,6 +37,7 @@ const std::map<std::string, int, std::less<>> kAlgorithms = {
 // What run() returns: plain attributes, numpy arrays for the mesh.
 struct Mesh {
   py::object nodes_xyz, nodes_lonlat, triangles, boundary_edges, boundary_physical, depth, size;
+  py::object partition, node_partition;
   py::object stats, diagnostics;
   std::string printed;
 };
@@ -118,6 +120,12 @@ Mesh run(const py::object& error_type, const std::string& path, const std::map<s
   const interp::KernelState& k = in.kernel();
   const ModelMesh empty;
   io::MeshModel mm = io::from_model_mesh(k.model, k.mesh ? *k.mesh : empty);
+  // Mesh.NbPartitions' parts of each surface's triangles, by (dim, tag) (the entities are
+  // filtered below).
+  std::map<std::pair<int, int>, std::vector<int>> parts_of;
+  if (k.partition)
+    for (std::size_t i = 0; i < k.partition->entities.size(); ++i)
+      if (k.partition->entities[i].first == 2) parts_of[k.partition->entities[i]] = k.partition->element_part[i];
   // With triangles, only the nodes they use (the curves of an island left out of the 2D
   // mesh keep theirs in the model); renumbered in the model's order.
   {
@@ -165,12 +173,33 @@ Mesh run(const py::object& error_type, const std::string& path, const std::map<s
     break;
   }
   std::vector<std::int64_t> tri;
+  std::vector<std::int32_t> tri_part;
   for (const io::EntityMesh& e : mm.entities)
-    if (e.dim == 2 && e.type == io::ElementType::Triangle3)
+    if (e.dim == 2 && e.type == io::ElementType::Triangle3) {
       for (std::uint32_t v : e.connectivity) tri.push_back(v);
+      if (const auto it = parts_of.find({2, e.tag}); it != parts_of.end())
+        tri_part.insert(tri_part.end(), it->second.begin(), it->second.end());
+    }
   py::array_t<std::int64_t> t({static_cast<py::ssize_t>(tri.size() / 3), py::ssize_t{3}});
   std::copy(tri.begin(), tri.end(), t.mutable_data());
   m.triangles = t;
+  // The partition of each triangle, and of each node the smallest of its triangles' (as
+  // the VTK and UGRID partition arrays); None without Mesh.NbPartitions.
+  m.partition = py::none();
+  m.node_partition = py::none();
+  if (k.partition && tri_part.size() * 3 == tri.size()) {
+    py::array_t<std::int32_t> tp(static_cast<py::ssize_t>(tri_part.size()));
+    std::copy(tri_part.begin(), tri_part.end(), tp.mutable_data());
+    std::vector<std::int32_t> node_part(mm.xyz.size(), 0);
+    for (std::size_t i = 0; i < tri.size(); ++i) {
+      std::int32_t& p = node_part[static_cast<std::size_t>(tri[i])];
+      if (p == 0 || tri_part[i / 3] < p) p = tri_part[i / 3];
+    }
+    py::array_t<std::int32_t> np_(static_cast<py::ssize_t>(node_part.size()));
+    std::copy(node_part.begin(), node_part.end(), np_.mutable_data());
+    m.partition = tp;
+    m.node_partition = np_;
+  }
   const std::vector<io::BoundaryEdge> edges = io::boundary_edges(mm);
   py::array_t<std::int64_t> be({static_cast<py::ssize_t>(edges.size()), py::ssize_t{2}});
   py::array_t<std::int64_t> bp(static_cast<py::ssize_t>(edges.size()));
@@ -224,6 +253,10 @@ class ScriptError(RuntimeError):
       .def_readonly("boundary_physical", &Mesh::boundary_physical, "(E,) int64: physical curve group (0: none)")
       .def_readonly("depth", &Mesh::depth, "(N,) float64 from Mesh.DepthField, else None")
       .def_readonly("size", &Mesh::size, "(N,) float64 target size at the nodes, else None")
+      .def_readonly("partition", &Mesh::partition,
+                    "(T,) int32 partition 1..N of each triangle with Mesh.NbPartitions (METIS), else None")
+      .def_readonly("node_partition", &Mesh::node_partition,
+                    "(N,) int32 the smallest partition of each node's triangles, else None")
       .def_readonly("stats", &Mesh::stats, "the statistics of --stats as a dict (None without a 2D mesh)")
       .def_readonly("diagnostics", &Mesh::diagnostics, "warnings and notes: dicts (severity, kind, message, file, line, column)")
       .def_readonly("printed", &Mesh::printed, "what the script's Printf wrote")

@@ -71,6 +71,32 @@ def test_same_mesh_as_the_command_line(gulf):
     assert ours == theirs
 
 
+def test_partitions(gulf):
+    """Mesh.NbPartitions: the triangles' parts as the VTK file of the executable has them,
+    each node's the smallest of its triangles'; None without."""
+    assert gulf.partition is None and gulf.node_partition is None
+    m = stereomesh.run(GULF, setnumber={"ShoreSizeMin": 20e3, "Mesh.NbPartitions": 3}, algo="front2d", threads=2)
+    assert m.partition.shape == (len(m.triangles),) and m.node_partition.shape == (len(m.nodes_xyz),)
+    counts = np.bincount(m.partition)[1:]
+    assert len(counts) == 3 and counts.max() <= 1.03 * len(m.triangles) / 3
+    assert m.stats["partitions"] == 3 and m.stats["partition_edge_cut"] > 0
+    smallest = np.full(len(m.nodes_xyz), 4)
+    for k in range(3):
+        np.minimum.at(smallest, m.triangles[:, k], m.partition)
+    assert np.array_equal(smallest, m.node_partition)
+    meshio = pytest.importorskip("meshio")
+    with tempfile.TemporaryDirectory() as tmp:
+        out = os.path.join(tmp, "gulf.vtk")
+        subprocess.run([os.environ["STEREOMESH"], "-2", "-v", "0", "-nt", "2", "-algo", "front2d", "-part", "3", GULF,
+                        "-setnumber", "ShoreSizeMin", "20e3", "-o", out], check=True)
+        vtk = meshio.read(out)
+    point = lambda p: tuple(np.round(p, 3))
+    ours = {frozenset(point(m.nodes_xyz[v]) for v in t): p for t, p in zip(m.triangles, m.partition)}
+    theirs = {frozenset(point(vtk.points[v]) for v in t): int(p)
+              for t, p in zip(vtk.cells[0].data, np.ravel(vtk.cell_data["partition"][0]))}
+    assert ours == theirs
+
+
 def test_evaluate_only_and_printf():
     with tempfile.TemporaryDirectory() as tmp:
         geo = os.path.join(tmp, "p.geo")

@@ -1,13 +1,16 @@
 // Mesh commands: `Mesh 1;` runs the 1D mesher (mesh/mesh1d) on the model with the
 // script's Mesh.* options and Background Field, `Mesh 2;` then meshes the faces
 // (mesh/mesh2d, Mesh.Algorithm 1, 2, 5 or 6) and prints the statistics, `Save "f";`
-// writes the current mesh atomically in a format of io/output_format.h, and the
-// command line's -1 / -2 do both. The other mesh commands and post-processing
+// writes the current mesh atomically in a format of io/output_format.h, `PartitionMesh N;`
+// partitions it (interp/kernel/partition_export.h), and the command line's -1 / -2 mesh
+// and write. The other mesh commands and post-processing
 // statements are reported as not supported.
 #include "interp/kernel/mesh_commands.h"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -22,6 +25,7 @@
 #include "interp/kernel/node_data_export.h"
 #include "interp/kernel/ocean_grid_export.h"
 #include "interp/kernel/output_options.h"
+#include "interp/kernel/partition_export.h"
 #include "interp/kernel/size_policy_from_options.h"
 #include "interp/interpreter.h"
 #include "interp/provenance.h"
@@ -157,10 +161,19 @@ TimeStep time_step_of(Interpreter& in, const ModelMesh& mesh, const field::SizeF
   return courant_time_step(mesh, h, opt);
 }
 
+// The notes pointing at where `option` was set, if a statement set it.
+std::vector<DiagNote> set_here(const KernelState& k, const std::string& option) {
+  std::vector<DiagNote> notes;
+  if (const auto it = k.option_set_at.find(option); it != k.option_set_at.end())
+    notes.push_back({it->second, option + " was set here"});
+  return notes;
+}
+
 // Meshes the model up to `dim` into the kernel state; on failure returns why. The
 // mesher's warnings are reported at `where` (the Mesh statement; none for -1/-2).
 MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   KernelState& k = in.kernel();
+  k.partition.reset();
   if (std::string why = check_elements_across_channels(in.options()); !why.empty()) {
     MeshFailure f{Diag::InvalidOptionValue, std::move(why), {}};
     if (const auto it = k.option_set_at.find("Mesh.ElementsAcrossChannels"); it != k.option_set_at.end())
@@ -235,6 +248,11 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   if (!r.ok()) return {diag_of(r.error), message_of(r.error), provenance_notes(k, r.error)};
   auto mesh = std::make_shared<ModelMesh>(std::move(r.mesh));
   if (dim < 2) {
+    if (in.options().number("Mesh.NbPartitions") > 0)
+      return {Diag::InvalidOptionValue,
+              fmt::format("Mesh.NbPartitions = {:g}: partitions are made of the 2D mesh (mesh with -2 or 'Mesh 2;')",
+                          in.options().number("Mesh.NbPartitions")),
+              set_here(k, "Mesh.NbPartitions")};
     in.options().set_number("Mesh.NbNodes", static_cast<double>(mesh->nodes.size()), /*internal=*/true);
     // -1's summary, as -2 prints the 2D statistics.
     if (in.options().number("General.Verbosity") >= 4) {
@@ -257,7 +275,7 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   for (const std::string& w : r2.quality_warnings) in.diags().report_message(where, Diag::MeshQualityFloor, w);
   // Statistics against the size each face's mesher aimed at (with the extension from
   // the boundary where it is on).
-  const StageScope stage_stats(&k.clock, progress_sink(in), "statistics");
+  std::optional<StageScope> stage_stats(std::in_place, &k.clock, progress_sink(in), "statistics");
   MeshStats st = mesh_stats(*mesh, r2.target_sizes);
   // The worst triangle's place in longitude/latitude when its surface is on a sphere.
   if (const geo::ModelSurface* ws = st.min_rho_surface ? k.model.surface(st.min_rho_surface) : nullptr)
@@ -273,6 +291,9 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
       st.min_rho_lon = ll.lon, st.min_rho_lat = ll.lat;
     }
   if (depth) st.time_step = time_step_of(in, *mesh, *depth);
+  stage_stats.reset();   // a stage of its own, not counted twice in the time line
+  if (std::string why = partition_mesh_now(in, *mesh, &st); !why.empty())
+    return {Diag::InvalidOptionValue, std::move(why), set_here(k, "Mesh.NbPartitions")};
   publish_stats(in, *mesh, st);
   k.mesh = std::move(mesh);
   return {};
@@ -294,6 +315,12 @@ MeshFailure mesh_model(Interpreter& in, int dim, SourceRange where) {
                         dim, in.options().number("Mesh.MaxElements")),
             {}};
   }
+}
+
+// A partitioned mesh asked for in a format that cannot hold it: an error at the Save
+// statement's file name, or for -o before meshing, rather than partitions dropped.
+bool partitions_unheld(Interpreter& in, const io::OutputFormat& f) {
+  return in.options().number("Mesh.NbPartitions") > 0 && !holds_partitions(f, in.options());
 }
 
 // The format `path` is written in when no -format names one: Mesh.Format's number, or
@@ -333,6 +360,22 @@ std::string save_mesh(Interpreter& in, const std::string& path, const std::strin
   }
   if (!f->needs_file_name.empty() && base::writes_in_place(path)) return std::string(f->needs_file_name);
   io::OutputSettings settings;
+  io::MeshPartition aligned;
+  if (o.number("Mesh.NbPartitions") > 0) {
+    if (!holds_partitions(*f, o))
+      return fmt::format("{} cannot hold the {:g} partitions Mesh.NbPartitions asks for (write MSH 4.1, VTK or UGRID "
+                         "netCDF)",
+                         f->name, o.number("Mesh.NbPartitions"));
+    // Partitioned when meshed; again when the partition options changed since (as Gmsh's
+    // PartitionMesh after a mesh), so a Save never writes other parts than the options say.
+    if (std::string why = current_partition(in); !why.empty()) return why;
+    settings.partition = &aligned;   // filled below, once the node coordinates dropped what they drop
+    settings.split_files = o.number("Mesh.PartitionSplitMeshFiles") != 0;
+    settings.partition_topology = o.number("Mesh.PartitionCreateTopology") != 0;
+    if (settings.split_files && base::writes_in_place(path) && f->input == io::OutputInput::Mesh &&
+        f->mesh_format == 1)
+      return "Mesh.PartitionSplitMeshFiles writes one file per partition beside the name: give a file name";
+  }
   // In space, before the node coordinates are rewritten for the Mesh rows.
   if (f->holds_node_data)
     if (std::string why = node_data_for_output(in, mm, settings.node_data); !why.empty()) return why;
@@ -347,6 +390,7 @@ std::string save_mesh(Interpreter& in, const std::string& path, const std::strin
       if (std::string why = apply_node_coordinates(in, mm); !why.empty()) return why;
       break;
   }
+  if (settings.partition) aligned = io::aligned_partition(*k.partition, mm);
   settings.binary = o.number("Mesh.Binary") != 0;
   settings.save_all = o.number("Mesh.SaveAll") != 0;
   settings.save_parametric = o.number("Mesh.SaveParametric") != 0;
@@ -383,9 +427,34 @@ void exec_save(Interpreter& in, StmtId id, const CommandStmt& c) {
   if (p.is_relative()) p = std::filesystem::path(in.sources().path(s.range.file)).parent_path() / p;
   const SourceRange at = c.arg.valid() ? in.ast().expr(c.arg).range : s.range;
   std::string why;
-  if (const io::OutputFormat* f = guess_output_format(in.options(), p.string(), &why)) warn_if_no_depth(in, *f, name, at);
+  if (const io::OutputFormat* f = guess_output_format(in.options(), p.string(), &why)) {
+    warn_if_no_depth(in, *f, name, at);
+    if (partitions_unheld(in, *f))
+      in.fail_fmt(at, Diag::PartitionsNotHeld, name, f->name, in.options().number("Mesh.NbPartitions"));
+  }
   if (const std::string err = save_mesh(in, p.string(), ""); !err.empty())
     in.fail_fmt(at, Diag::FileWriteError, name, err);
+}
+
+// `PartitionMesh N;` (Gmsh's GModel::partitionMesh): Mesh.NbPartitions = N, and the 2D mesh
+// partitioned now; an error at the statement without a 2D mesh or with a bad N.
+void exec_partition_mesh(Interpreter& in, StmtId id, const CommandStmt& c) {
+  const Stmt& s = in.ast().stmt(id);
+  const double n = in.eval_number(c.arg);
+  const SourceRange at = in.ast().expr(c.arg).range;
+  if (!(n >= 1) || n != std::floor(n))
+    in.fail_fmt(at, Diag::InvalidOptionValue,
+                fmt::format("PartitionMesh {:g}: give a whole number of partitions, 1 or more", n));
+  if (std::string err = in.options().set_number("Mesh.NbPartitions", n); !err.empty())
+    in.fail_fmt(at, Diag::InvalidOptionValue, err);
+  KernelState& k = in.kernel();
+  k.option_set_at["Mesh.NbPartitions"] = s.range;
+  if (!k.mesh || !k.has_mesh_stats)
+    in.fail_fmt(s.range, Diag::InvalidOptionValue,
+                std::string("PartitionMesh: there is no 2D mesh to partition (put it after 'Mesh 2;')"));
+  k.partition.reset();
+  if (std::string why = partition_mesh_now(in, *k.mesh, &k.mesh_stats); !why.empty())
+    in.fail_fmt(s.range, Diag::InvalidOptionValue, why);
 }
 
 }  // namespace
@@ -399,6 +468,10 @@ bool exec_mesh_command(Interpreter& in, StmtId id, std::string_view command) {
     }
     if (command == "Save" && c->arg.valid()) {
       exec_save(in, id, *c);
+      return true;
+    }
+    if (command == "PartitionMesh" && c->arg.valid()) {
+      exec_partition_mesh(in, id, *c);
       return true;
     }
   }
@@ -505,6 +578,10 @@ bool mesh_from_command_line(Interpreter& in, int dim, const std::string& output,
       return false;
     }
     warn_if_no_depth(in, *row, path, SourceRange{});
+    if (partitions_unheld(in, *row)) {
+      diags.report(SourceRange{}, Diag::PartitionsNotHeld, path, row->name, in.options().number("Mesh.NbPartitions"));
+      return false;
+    }
   }
   if (!mesh_after_scripts(in, dim)) return false;
   std::string err;

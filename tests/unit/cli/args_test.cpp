@@ -204,6 +204,67 @@ TEST_CASE("cli: exit statuses of the binary") {
   fs::remove_all(dir);
 }
 
+TEST_CASE("cli: -part N is Mesh.NbPartitions, a whole number from 1") {
+  const sm::cli::ParseOutcome c = parse_args({"a.geo", "-part", "4"});
+  REQUIRE(c.ok);
+  CHECK(c.args.option_numbers.back() == std::pair<std::string, double>{"Mesh.NbPartitions", 4});
+  for (const char* bad : {"0", "-1", "2.5", "four", "1e9"}) {
+    CAPTURE(bad);
+    const sm::cli::ParseOutcome b = parse_args({"a.geo", "-part", bad});
+    CHECK_FALSE(b.ok);
+    CHECK(b.error.find("'-part' needs a whole number of partitions, 1 or more") != std::string::npos);
+  }
+  CHECK_FALSE(parse_args({"a.geo", "-part"}).ok);
+}
+
+TEST_CASE("cli: partitions asked for in a format without them are refused before meshing") {
+  const std::string bin = sm::testing::stereomesh_binary();
+  if (bin.empty()) {
+    MESSAGE("skipped: stereomesh binary not built");
+    return;
+  }
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "sm_cli_part_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "sq.geo") << "Point(1) = {0, 0, 0, 0.2}; Point(2) = {1, 0, 0, 0.2};\n"
+                                   "Point(3) = {1, 1, 0, 0.2}; Point(4) = {0, 1, 0, 0.2};\n"
+                                   "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};\n"
+                                   "Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};\n";
+  const std::string geo = (dir / "sq.geo").string();
+  for (const std::string out : {"sq.14", "sq.svg", "sq.png", "sq.gr3"}) {
+    CAPTURE(out);
+    const std::string cmd = bin + " -2 -part 2 " + geo + " -o " + (dir / out).string();
+    const std::string err = run_stderr(cmd);
+    CHECK(err.find("cannot hold the 2 partitions") != std::string::npos);
+    CHECK(err.find("[partitions-not-held]") != std::string::npos);
+    CHECK(err.find("2D: start") == std::string::npos);   // said before meshing
+    CHECK(run_status(cmd) == 1);
+    CHECK_FALSE(fs::exists(dir / out));
+  }
+  CHECK(run_status(bin + " -2 -v 0 -part 2 -format msh22 " + geo + " -o " + (dir / "sq2.msh").string()) == 1);
+  CHECK(run_status(bin + " -2 -v 0 -part 2 -setnumber Mesh.MshFileVersion 2.2 " + geo + " -o " +
+                   (dir / "sq2.msh").string()) == 1);
+  CHECK_FALSE(fs::exists(dir / "sq2.msh"));
+  // More parts than triangles: after meshing, nothing written.
+  const std::string many = bin + " -2 -part 100000 " + geo + " -o " + (dir / "many.msh").string();
+  CHECK(run_stderr(many).find("100000 partitions of ") != std::string::npos);
+  CHECK(run_status(many) == 1);
+  CHECK_FALSE(fs::exists(dir / "many.msh"));
+  // The formats that hold them.
+  for (const std::string out : {"sq.msh", "sq.vtk", "sq.nc"}) {
+    CAPTURE(out);
+    CHECK(run_status(bin + " -2 -v 0 -part 3 " + geo + " -o " + (dir / out).string()) == 0);
+    CHECK(fs::exists(dir / out));
+  }
+  // One file per part, named as Gmsh names them, and not the file itself.
+  CHECK(run_status(bin + " -2 -v 0 -part 3 -setnumber Mesh.PartitionSplitMeshFiles 1 " + geo + " -o " +
+                   (dir / "split.msh").string()) == 0);
+  for (const char* f : {"split_1.msh", "split_2.msh", "split_3.msh"}) CHECK(fs::exists(dir / f));
+  CHECK_FALSE(fs::exists(dir / "split.msh"));
+  fs::remove_all(dir);
+}
+
 TEST_CASE("cli: running out of memory while meshing is a located script error, not a crash") {
   const std::string bin = sm::testing::stereomesh_binary();
   if (bin.empty()) {

@@ -117,3 +117,20 @@ TEST_CASE("save formats: checks before meshing: a name that picks no format, an 
           interp::RunStatus::Errors);
   CHECK(diags.render_all().find("t.geo:5:6: warning: '" + saved + "': no Mesh.DepthField") != std::string::npos);
 }
+
+TEST_CASE("save formats: a Save writes the partitions the options ask for then") {
+  testing::ScratchDir dir;
+  // Set after Mesh 2: partitioned at the Save; set to 0 again: not partitioned.
+  REQUIRE(run(dir, kSaveSquare + "Mesh 2;\nMesh.NbPartitions = 3;\nSave \"p3.msh\";\nMesh.NbPartitions = 2;\n"
+                                 "Save \"p2.msh\";\nMesh.NbPartitions = 0;\nSave \"p0.msh\";\n"));
+  CHECK(testing::read_all(dir / "p3.msh").find("$PartitionedEntities\n3\n0\n") != std::string::npos);
+  CHECK(testing::read_all(dir / "p2.msh").find("$PartitionedEntities\n2\n0\n") != std::string::npos);
+  CHECK(testing::read_all(dir / "p0.msh").find("$PartitionedEntities") == std::string::npos);
+  // PartitionMesh N (Gmsh's statement) partitions the mesh there and sets the option.
+  REQUIRE(run(dir, kSaveSquare + "Mesh 2;\nPartitionMesh 3;\nAssert(Mesh.NbPartitions == 3);\nSave \"pm3.msh\";\n"));
+  CHECK(testing::read_all(dir / "pm3.msh") == testing::read_all(dir / "p3.msh"));
+  // -part's way (the option before meshing) writes the same bytes as the Save's.
+  testing::ScratchDir cli;
+  REQUIRE(run(cli, kSaveSquare + "Mesh.NbPartitions = 3;\n", "msh", cli / "p3.msh"));
+  CHECK(testing::read_all(cli / "p3.msh") == testing::read_all(dir / "p3.msh"));
+}

@@ -43,9 +43,20 @@ TEST_CASE("output formats: Mesh.Format numbers and extensions pick the first row
 TEST_CASE("output formats: what each can hold") {
   const OutputFormat& msh = *find_output_format("msh41");
   CHECK((msh.holds_quads && msh.holds_partitions && msh.holds_node_data));
-  CHECK_FALSE(find_output_format("vtk")->holds_partitions);
+  CHECK(find_output_format("vtk")->holds_partitions);     // cell and point arrays
+  CHECK(find_output_format("ugrid")->holds_partitions);
+  CHECK_FALSE(find_output_format("msh22")->holds_partitions);   // its partition tags are not written
+  CHECK_FALSE(find_output_format("fort14")->holds_partitions);
+  CHECK_FALSE(find_output_format("gr3")->holds_partitions);
+  CHECK_FALSE(find_output_format("svg")->holds_partitions);
   CHECK_FALSE(find_output_format("fort14")->holds_quads);   // ADCIRC: triangles only
   CHECK_FALSE(find_output_format("png")->holds_node_data);
+}
+
+TEST_CASE("output formats: split partition files are named as Gmsh names them") {
+  CHECK(partition_file_name("out/gulf.msh", 3) == "out/gulf_3.msh");
+  CHECK(partition_file_name("a.b/gulf", 1) == "a.b/gulf_1.msh");
+  CHECK(partition_file_name("gulf.mesh.msh", 12) == "gulf.mesh_12.msh");
 }
 
 TEST_CASE("output formats: the help lists every name, rows sharing a note together, within the width") {

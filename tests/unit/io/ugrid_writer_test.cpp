@@ -155,10 +155,10 @@ TEST_CASE("UGRID: refused without a 2D mesh; a failed save leaves the old file")
   const sm::testing::ScratchDir dir;
   const std::string path = (dir.path / "old.nc").string();
   { std::ofstream(path) << "old"; }
-  CHECK(!save_ugrid(empty, opt, {}, path, &error));
+  CHECK(!save_ugrid(empty, opt, {}, nullptr, path, &error));
   CHECK(sm::testing::read_all(path) == "old");
   MeshModel sq = sm::io::testing::grid_square(2);
   opt.lonlat = false;
-  REQUIRE(save_ugrid(sq, opt, {}, path, &error));
+  REQUIRE(save_ugrid(sq, opt, {}, nullptr, path, &error));
   CHECK(sm::testing::read_all(path).substr(0, 3) == "CDF");
 }

@@ -1,0 +1,7 @@
+// PartitionMesh partitions the 2D mesh there is: before Mesh 2, an error at the statement.
+Point(1) = {0, 0, 0, 0.3}; Point(2) = {1, 0, 0, 0.3}; Point(3) = {1, 1, 0, 0.3};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 1};
+Curve Loop(1) = {1, 2, 3};
+Plane Surface(1) = {1};
+PartitionMesh 2;   // expect error: 6:1: invalid-option-value
+// compare_with_gmsh: skip

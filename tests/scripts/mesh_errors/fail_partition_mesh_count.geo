@@ -1,0 +1,8 @@
+// PartitionMesh takes a whole number of partitions from 1: an error at the number.
+Point(1) = {0, 0, 0, 0.3}; Point(2) = {1, 0, 0, 0.3}; Point(3) = {1, 1, 0, 0.3};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 1};
+Curve Loop(1) = {1, 2, 3};
+Plane Surface(1) = {1};
+Mesh 2;
+PartitionMesh 1.5;   // expect error: 7:15: invalid-option-value
+// compare_with_gmsh: skip

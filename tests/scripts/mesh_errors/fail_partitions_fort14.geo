@@ -1,0 +1,11 @@
+// A partitioned mesh saved as ADCIRC fort.14, which has no place for partitions: an
+// error at the file name, before anything is written (not the partitions dropped).
+Mesh.NbPartitions = 2;
+Point(1) = {0, 0, 0, 0.3}; Point(2) = {1, 0, 0, 0.3}; Point(3) = {1, 1, 0, 0.3};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 1};
+Curve Loop(1) = {1, 2, 3};
+Plane Surface(1) = {1};
+Mesh 2;
+Save "partitioned.14";   // expect warning: 9:6: output-without-depth
+// expect error: 9:6: partitions-not-held
+// compare_with_gmsh: skip
