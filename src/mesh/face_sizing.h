@@ -37,13 +37,14 @@ struct FaceSizing {
 };
 
 /// With f.size.extend_from_boundary set: f.bg = `recovered` (the face's boundary
-/// triangulation after edge recovery and hole removal, its first `fixed_count` vertices
-/// the boundary and embedded nodes `global[v]`) and f.bsize per such vertex the mean
+/// triangulation after edge recovery, before hole removal: the walk that locates a point
+/// must not stop at a hole; its first `fixed_count` vertices the boundary and embedded
+/// nodes `global[v]`) and f.bsize per such vertex the mean
 /// length of its `edges`. An embedded point on no edge keeps the size its model vertex
 /// prescribes (Mesh.MeshSizeFromPoints), else gets none (inf). `coarse`: the boundary is
 /// the element budget's coarse one, whose curves carry their 1D sizes (CurveMesh::h):
 /// those, not its long edges, are what the real boundary would extend.
-void set_boundary_sizes(FaceSizing& f, const TriangleStore& recovered, std::uint32_t fixed_count,
+void set_boundary_sizes(FaceSizing& f, TriangleStore recovered, std::uint32_t fixed_count,
                         std::span<const Edge> edges, std::span<const std::uint32_t> global, const ModelMesh& mesh,
                         const geo::Model& model, bool coarse);
 

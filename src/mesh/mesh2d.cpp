@@ -131,6 +131,7 @@ class FaceMesher {
   std::vector<int> edge_curve_;               // the curve of each
   std::uint32_t fixed_count_ = 0;             // local vertices [0, fixed_count_): the input nodes
   TriangleStore m_;
+  TriangleStore hull_;                        // m_ before hole removal (extension from the boundary)
   std::shared_ptr<FaceSizing> sizing_ = std::make_shared<FaceSizing>();
   std::atomic<std::uint64_t> size_evaluations_{0};
   bool smoothed_ = false;                     // meshadapt smooths in each of its rounds
@@ -412,6 +413,11 @@ bool FaceMesher::triangulate_boundary() {
     return fail(fmt::format("a boundary node lies on an edge of curve {}", edge_curve_[x.edge]),
                 mesh_.nodes[global_[x.v.value]].xyz, {edge_curve_[x.edge]});
   }
+  // The sizes extended from the boundary are interpolated in the whole recovered
+  // triangulation, holes and the hull outside the face included: a walk in it always
+  // reaches the point, where one in the face alone stops at a hole and would give the
+  // hole's sizes to everything behind it.
+  if (opt_.size.extend_from_boundary != 0) hull_ = m_;
   const DomainResult dom = remove_outside(m_, g, loops);
   if (!dom.ok()) return fail("hole removal failed: " + dom.error);
   return true;
@@ -424,7 +430,8 @@ void FaceMesher::make_sizing() {
   sz.size = opt_.size;
   sz.background = opt_.background;
   sz.plane = plane_;
-  set_boundary_sizes(sz, m_, fixed_count_, edges_, global_, mesh_, model_, estimate_only_);
+  set_boundary_sizes(sz, std::move(hull_), fixed_count_, edges_, global_, mesh_, model_, estimate_only_);
+  hull_ = TriangleStore{};
 }
 
 bool FaceMesher::check_budget(std::uint64_t& estimate) {
