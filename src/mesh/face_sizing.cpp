@@ -102,6 +102,15 @@ std::optional<double> PlaneSizes::boundary_size(Vec2 p) {
 }
 
 void PlaneSizes::on_surface(std::span<const Vec2> p, std::span<double> h) {
+  if (part_ == Part::ExtensionOnly) {
+    const bool extend = f_.size.extend_from_boundary != 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const std::optional<double> b = extend ? boundary_size(p[i]) : std::nullopt;
+      h[i] = b ? *b : std::numeric_limits<double>::infinity();
+    }
+    if (evaluations_) evaluations_->fetch_add(p.size(), std::memory_order_relaxed);
+    return;
+  }
   pts3_.resize(p.size());
   field_.resize(p.size());
   for (std::size_t i = 0; i < p.size(); ++i) pts3_[i] = f_.plane.to_space(p[i]);
@@ -109,7 +118,7 @@ void PlaneSizes::on_surface(std::span<const Vec2> p, std::span<double> h) {
   field::SizeQuery q;
   q.bbox_diag = f_.bbox;
   q.entity_dim = 2;
-  const bool extend = f_.size.extend_from_boundary != 0;
+  const bool extend = f_.size.extend_from_boundary != 0 && part_ == Part::All;
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (f_.background) q.background = field_[i];
     double size = field::final_size(f_.size, q).size;
