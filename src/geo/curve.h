@@ -60,6 +60,7 @@ class Curve {
 
   /// The arc frame of a Circle (nullptr for other kinds).
   const CircleArc* circle() const { return kind_ == CurveKind::Circle ? &circle_ : nullptr; }
+  const EllipseArc* ellipse() const { return kind_ == CurveKind::Ellipse ? &ellipse_ : nullptr; }
 
   Vec3 begin_point() const { return point(0.0); }
   Vec3 end_point() const { return point(1.0); }

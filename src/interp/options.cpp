@@ -31,7 +31,16 @@ struct NameIndex {
   std::vector<std::pair<std::string_view, std::size_t>> entries;
   NameIndex() {
     const auto& t = build_table();
-    for (std::size_t i = 0; i < t.size(); ++i) entries.emplace_back(t[i].name, i);
+    // A name that is an alias names its canonical option, even where the manual also
+    // lists it on its own (Mesh.MinimumElementsPerTwoPi, a second name of
+    // Mesh.MeshSizeFromCurvature in 4.8.4).
+    const auto is_alias = [](std::string_view name) {
+      for (const auto& a : Options::aliases())
+        if (a.first == name) return true;
+      return false;
+    };
+    for (std::size_t i = 0; i < t.size(); ++i)
+      if (!is_alias(t[i].name)) entries.emplace_back(t[i].name, i);
     for (const auto& [alias, canon] : Options::aliases()) {
       for (std::size_t i = 0; i < t.size(); ++i)
         if (t[i].name == canon) entries.emplace_back(alias, i);
@@ -110,6 +119,10 @@ const std::vector<std::pair<std::string_view, std::string_view>>& Options::alias
       {"Mesh.CharacteristicLengthFromCurvature", "Mesh.MeshSizeFromCurvature"},
       {"Mesh.CharacteristicLengthFromParametricPoints", "Mesh.MeshSizeFromParametricPoints"},
       {"Mesh.CharacteristicLengthExtendFromBoundary", "Mesh.MeshSizeExtendFromBoundary"},
+      // 4.8.4's deprecated names of the same settings (DefaultOptions.h: one variable each).
+      {"Mesh.MinimumCirclePoints", "Mesh.MinimumCircleNodes"},
+      {"Mesh.MinimumCurvePoints", "Mesh.MinimumCurveNodes"},
+      {"Mesh.MinimumElementsPerTwoPi", "Mesh.MeshSizeFromCurvature"},
       // Pre-4.0 "Line"/"Numbers" names that 4.8.4 still accepts (t4.geo uses
       // Geometry.DoubleClickedLineCommand); checked with gmsh -0.
       {"Geometry.DoubleClickedLineCommand", "Geometry.DoubleClickedCurveCommand"},

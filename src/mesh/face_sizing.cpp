@@ -10,11 +10,11 @@
 
 namespace sm {
 
-void set_boundary_sizes(FaceSizing& f, const TriangleStore& recovered, std::uint32_t fixed_count,
+void set_boundary_sizes(FaceSizing& f, TriangleStore recovered, std::uint32_t fixed_count,
                         std::span<const Edge> edges, std::span<const std::uint32_t> global, const ModelMesh& mesh,
                         const geo::Model& model, bool coarse) {
   if (f.size.extend_from_boundary == 0) return;
-  f.bg = recovered;
+  f.bg = std::move(recovered);
   std::vector<double>& bsize = f.bsize;
   bsize.assign(fixed_count, 0.0);
   std::vector<std::uint32_t> count(fixed_count, 0);
@@ -47,8 +47,8 @@ void set_boundary_sizes(FaceSizing& f, const TriangleStore& recovered, std::uint
 }
 
 // Barycentric interpolation of the boundary sizes in the recovered boundary
-// triangulation: a visibility walk from the last hit that stops at the domain's boundary
-// (the point is then clamped to the last triangle).
+// triangulation (holes and hull included): a visibility walk from the last hit that stops
+// only at the convex hull (the point is then clamped to the last triangle).
 std::optional<double> PlaneSizes::boundary_size(Vec2 p) {
   const TriangleStore& bg = f_.bg;
   const std::vector<double>& bsize = f_.bsize;
@@ -87,7 +87,8 @@ std::optional<double> PlaneSizes::boundary_size(Vec2 p) {
   }
   double sum_w = 0, sum = 0;
   for (std::uint32_t e = 0; e < 3; ++e) {
-    const double h = bsize[bg.vertex(t, e).value];
+    const std::uint32_t v = bg.vertex(t, e).value;
+    const double h = v < bsize.size() ? bsize[v] : std::numeric_limits<double>::infinity();
     const double wi = std::max(0.0, w[e]);
     if (!std::isfinite(h)) continue;
     sum_w += wi;
@@ -95,11 +96,21 @@ std::optional<double> PlaneSizes::boundary_size(Vec2 p) {
   }
   if (sum_w > 0) return sum / sum_w;
   double lo = std::numeric_limits<double>::infinity();
-  for (std::uint32_t e = 0; e < 3; ++e) lo = std::min(lo, bsize[bg.vertex(t, e).value]);
+  for (std::uint32_t e = 0; e < 3; ++e)
+    if (bg.vertex(t, e).value < bsize.size()) lo = std::min(lo, bsize[bg.vertex(t, e).value]);
   return std::isfinite(lo) ? std::optional<double>(lo) : std::nullopt;
 }
 
 void PlaneSizes::on_surface(std::span<const Vec2> p, std::span<double> h) {
+  if (part_ == Part::ExtensionOnly) {
+    const bool extend = f_.size.extend_from_boundary != 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const std::optional<double> b = extend ? boundary_size(p[i]) : std::nullopt;
+      h[i] = b ? *b : std::numeric_limits<double>::infinity();
+    }
+    if (evaluations_) evaluations_->fetch_add(p.size(), std::memory_order_relaxed);
+    return;
+  }
   pts3_.resize(p.size());
   field_.resize(p.size());
   for (std::size_t i = 0; i < p.size(); ++i) pts3_[i] = f_.plane.to_space(p[i]);
@@ -107,7 +118,7 @@ void PlaneSizes::on_surface(std::span<const Vec2> p, std::span<double> h) {
   field::SizeQuery q;
   q.bbox_diag = f_.bbox;
   q.entity_dim = 2;
-  const bool extend = f_.size.extend_from_boundary != 0;
+  const bool extend = f_.size.extend_from_boundary != 0 && part_ == Part::All;
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (f_.background) q.background = field_[i];
     double size = field::final_size(f_.size, q).size;

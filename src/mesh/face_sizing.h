@@ -37,13 +37,14 @@ struct FaceSizing {
 };
 
 /// With f.size.extend_from_boundary set: f.bg = `recovered` (the face's boundary
-/// triangulation after edge recovery and hole removal, its first `fixed_count` vertices
-/// the boundary and embedded nodes `global[v]`) and f.bsize per such vertex the mean
+/// triangulation after edge recovery, before hole removal: the walk that locates a point
+/// must not stop at a hole; its first `fixed_count` vertices the boundary and embedded
+/// nodes `global[v]`) and f.bsize per such vertex the mean
 /// length of its `edges`. An embedded point on no edge keeps the size its model vertex
 /// prescribes (Mesh.MeshSizeFromPoints), else gets none (inf). `coarse`: the boundary is
 /// the element budget's coarse one, whose curves carry their 1D sizes (CurveMesh::h):
 /// those, not its long edges, are what the real boundary would extend.
-void set_boundary_sizes(FaceSizing& f, const TriangleStore& recovered, std::uint32_t fixed_count,
+void set_boundary_sizes(FaceSizing& f, TriangleStore recovered, std::uint32_t fixed_count,
                         std::span<const Edge> edges, std::span<const std::uint32_t> global, const ModelMesh& mesh,
                         const geo::Model& model, bool coarse);
 
@@ -52,9 +53,14 @@ void set_boundary_sizes(FaceSizing& f, const TriangleStore& recovered, std::uint
 /// another's; the face data it reads is not modified while it lives.
 class PlaneSizes {
  public:
+  /// What operator() and on_surface give: the whole target size, or its two halves for
+  /// refiners that size triangles by their vertices (RefineOptions::vertex_size_at): the
+  /// size without the extension from the boundary, and the extension alone (inf where
+  /// there is none, or with Mesh.MeshSizeExtendFromBoundary = 0).
+  enum class Part { All, WithoutExtension, ExtensionOnly };
   /// evaluations: counts the points evaluated (shared by the parts), may be null.
-  explicit PlaneSizes(const FaceSizing& f, std::atomic<std::uint64_t>* evaluations = nullptr)
-      : f_(f), evaluations_(evaluations) {}
+  explicit PlaneSizes(const FaceSizing& f, std::atomic<std::uint64_t>* evaluations = nullptr, Part part = Part::All)
+      : f_(f), evaluations_(evaluations), part_(part) {}
   /// h[i] = the size in the plane at p[i]: the size on the surface divided by lambda.
   void operator()(std::span<const Vec2> p, std::span<double> h);
   /// h[i] = the size on the surface (3D lengths) at p[i].
@@ -65,6 +71,7 @@ class PlaneSizes {
 
   const FaceSizing& f_;
   std::atomic<std::uint64_t>* evaluations_;
+  Part part_ = Part::All;
   TriId hint_;
   std::uint32_t walk_turn_ = 0;
   std::vector<Vec3> pts3_;

@@ -45,6 +45,7 @@ InsertOutcome PointInserter::insert(Vec2 c, TriId t0) {
   const std::uint32_t nv = m_.num_vertices();
   for (std::uint32_t e = 0; e < 3; ++e)
     if (m_.pos(m_.vertex(t0, e)) == c) return InsertOutcome::Duplicate;
+  for (std::uint32_t e = 0; e < 3; ++e) container_[e] = m_.vertex(t0, e);
   cavity_.clear();
   bound_.clear();
   stack_.assign(1, t0.value);

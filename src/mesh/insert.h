@@ -4,6 +4,7 @@
 // meshadapt later).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -53,6 +54,8 @@ class PointInserter {
 
   /// The vertex made by the last successful insertion.
   VertexId last_vertex() const { return last_; }
+  /// The corners of the triangle that contained it (counter-clockwise; still vertices).
+  const std::array<VertexId, 3>& last_container() const { return container_; }
   /// Slots of the triangles made by the last successful insertion.
   std::span<const std::uint32_t> created() const { return {cavity_.data(), created_}; }
 
@@ -74,6 +77,7 @@ class PointInserter {
   PredicateStats* st_;
   std::uint64_t rng_;
   VertexId last_;
+  std::array<VertexId, 3> container_{};
   std::size_t created_ = 0;
   std::vector<std::uint32_t> stack_, cavity_, vmap_;
   std::vector<Bound> bound_;

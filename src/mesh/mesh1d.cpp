@@ -172,7 +172,9 @@ int min_segments(const geo::Curve& c, const Mesh1dOptions& opt) {
     case geo::CurveKind::Line: np = 1; break;
     case geo::CurveKind::Circle:
     case geo::CurveKind::Ellipse: {
-      const double angle = c.kind() == geo::CurveKind::Circle ? std::abs(c.circle()->angle) : 2 * std::numbers::pi;
+      // The arc's share of a full turn (an ellipse's in its eccentric angle), as Gmsh
+      // 4.8.4 counts Mesh.MinimumCircleNodes for both: a quarter ellipse gets a quarter.
+      const double angle = c.kind() == geo::CurveKind::Circle ? std::abs(c.circle()->angle) : std::abs(c.ellipse()->sweep);
       const double n = opt.min_circle_nodes;
       np = angle > 6.28 ? static_cast<int>(n) : static_cast<int>(0.99 + (n - 1) * angle / (2 * std::numbers::pi));
       break;

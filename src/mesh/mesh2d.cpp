@@ -102,6 +102,8 @@ class FaceMesher {
   /// Refinement (del2d / front2d, in parts for a large face) or meshadapt.
   bool refine_face(std::uint64_t estimate);
   bool refine(const std::function<void(std::span<const Vec2>, std::span<double>)>& size_at, std::uint64_t estimate);
+  /// RefineOptions::vertex_size_scale of this face: 1 / lambda on a sphere, null on a plane.
+  PlaneSizeFn plane_scale() const;
   void smooth();
   void optimize();
   /// The quality floor (Mesh2dOptions::quality_floor), then the quality pass again where
@@ -131,6 +133,7 @@ class FaceMesher {
   std::vector<int> edge_curve_;               // the curve of each
   std::uint32_t fixed_count_ = 0;             // local vertices [0, fixed_count_): the input nodes
   TriangleStore m_;
+  TriangleStore hull_;                        // m_ before hole removal (extension from the boundary)
   std::shared_ptr<FaceSizing> sizing_ = std::make_shared<FaceSizing>();
   std::atomic<std::uint64_t> size_evaluations_{0};
   bool smoothed_ = false;                     // meshadapt smooths in each of its rounds
@@ -274,17 +277,46 @@ std::uint32_t FaceMesher::local(std::uint32_t node) {
 // del2d or front2d on the face: in one piece, or in parts (partition.h) when the estimated
 // triangle count reaches opt_.partition.min_triangles. The part count depends on the
 // estimate only, so the mesh is the same for every thread count.
+PlaneSizeFn FaceMesher::plane_scale() const {
+  if (!plane_.geom) return nullptr;
+  const std::shared_ptr<const FaceSizing> sizing = sizing_;
+  return [sizing](std::span<const Vec2> p, std::span<double> h) {
+    for (std::size_t i = 0; i < p.size(); ++i) h[i] = 1 / sizing->plane.lambda(p[i]);
+  };
+}
+
 bool FaceMesher::refine(const std::function<void(std::span<const Vec2>, std::span<double>)>& size_at,
                         std::uint64_t estimate) {
   RefineOptions ro;
   ro.max_vertices = opt_.max_vertices_per_face;
   ro.size_at = size_at;
+  // The boundary sizes extended into the face size a triangle by its vertices, as Gmsh's
+  // refiners do (RefineOptions::vertex_size_at); the rest of the size at its circumcentre.
+  std::shared_ptr<PlaneSizes> without_ext, ext_only;
+  if (opt_.size.extend_from_boundary != 0) {
+    without_ext = std::make_shared<PlaneSizes>(*sizing_, &size_evaluations_, PlaneSizes::Part::WithoutExtension);
+    ext_only = std::make_shared<PlaneSizes>(*sizing_, &size_evaluations_, PlaneSizes::Part::ExtensionOnly);
+    ro.size_at = [without_ext](std::span<const Vec2> p, std::span<double> h) { (*without_ext)(p, h); };
+    ro.vertex_size_at = [ext_only](std::span<const Vec2> p, std::span<double> h) { ext_only->on_surface(p, h); };
+    ro.vertex_size_scale = plane_scale();
+  }
   const bool frontal = opt_.algorithm == Mesh2dAlgorithm::Frontal;
   if (opt_.radius_limit > 0) ro.radius_limit = opt_.radius_limit;
   else if (!frontal) ro.radius_limit = kDel2dRadiusLimit;
   const bool partitioning = opt_.partition.min_triangles > 0;
   if (partitioning && estimate >= opt_.partition.min_triangles) {
     ro.size_at = nullptr;
+    ro.vertex_size_at = nullptr;
+    // Each part carries the extension by its vertices too, with functions of its own.
+    std::function<void(RefineOptions&)> part_sizes;
+    if (opt_.size.extend_from_boundary != 0)
+      part_sizes = [this](RefineOptions& o) {
+        auto w = std::make_shared<PlaneSizes>(*sizing_, &size_evaluations_, PlaneSizes::Part::WithoutExtension);
+        auto x = std::make_shared<PlaneSizes>(*sizing_, &size_evaluations_, PlaneSizes::Part::ExtensionOnly);
+        o.size_at = [w](std::span<const Vec2> p, std::span<double> h) { (*w)(p, h); };
+        o.vertex_size_at = [x](std::span<const Vec2> p, std::span<double> h) { x->on_surface(p, h); };
+        o.vertex_size_scale = plane_scale();
+      };
     const auto make_size = [this]() -> PlaneSizeFn {
       auto sizes = std::make_shared<PlaneSizes>(*sizing_, &size_evaluations_);
       return [sizes](std::span<const Vec2> p, std::span<double> h) { (*sizes)(p, h); };
@@ -299,7 +331,7 @@ bool FaceMesher::refine(const std::function<void(std::span<const Vec2>, std::spa
     };
     const PartitionResult pr = refine_partitioned(m_, ro, frontal ? PartRefiner::Frontal : PartRefiner::Del2d,
                                                   make_size, opt_.partition, resolve_thread_count(opt_.threads),
-                                                  on_parts);
+                                                  on_parts, part_sizes);
     if (nested) progress_end(opt_.progress);
     res_.stats.inserted += pr.stats.refine.inserted;
     res_.stats.rejected += pr.stats.refine.rejected;
@@ -412,6 +444,11 @@ bool FaceMesher::triangulate_boundary() {
     return fail(fmt::format("a boundary node lies on an edge of curve {}", edge_curve_[x.edge]),
                 mesh_.nodes[global_[x.v.value]].xyz, {edge_curve_[x.edge]});
   }
+  // The sizes extended from the boundary are interpolated in the whole recovered
+  // triangulation, holes and the hull outside the face included: a walk in it always
+  // reaches the point, where one in the face alone stops at a hole and would give the
+  // hole's sizes to everything behind it.
+  if (opt_.size.extend_from_boundary != 0) hull_ = m_;
   const DomainResult dom = remove_outside(m_, g, loops);
   if (!dom.ok()) return fail("hole removal failed: " + dom.error);
   return true;
@@ -424,7 +461,8 @@ void FaceMesher::make_sizing() {
   sz.size = opt_.size;
   sz.background = opt_.background;
   sz.plane = plane_;
-  set_boundary_sizes(sz, m_, fixed_count_, edges_, global_, mesh_, model_, estimate_only_);
+  set_boundary_sizes(sz, std::move(hull_), fixed_count_, edges_, global_, mesh_, model_, estimate_only_);
+  hull_ = TriangleStore{};
 }
 
 bool FaceMesher::check_budget(std::uint64_t& estimate) {

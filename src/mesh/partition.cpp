@@ -378,7 +378,8 @@ std::vector<Vec2> subdivide_segment(Vec2 a, Vec2 b, const PlaneSizeFn& size) {
 PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, PartRefiner kind,
                                    const std::function<PlaneSizeFn()>& make_size, const PartitionOptions& opt,
                                    int threads,
-                                   const std::function<void(std::uint32_t, std::uint32_t)>& on_parts) {
+                                   const std::function<void(std::uint32_t, std::uint32_t)>& on_parts,
+                                   const std::function<void(RefineOptions&)>& part_sizes) {
   PartitionResult res;
   auto t0 = std::chrono::steady_clock::now();
   const PlaneSizeFn fine = make_size();
@@ -388,6 +389,7 @@ PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, 
   c.m = m;
   {
     RefineOptions co = base;
+    co.vertex_size_at = nullptr;
     const double f = opt.coarse_factor;
     co.size_at = [&fine, f](std::span<const Vec2> p, std::span<double> h) {
       fine(p, h);
@@ -454,6 +456,12 @@ PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, 
       threads, k, 1,
       [&](std::size_t b, std::size_t e) {
         for (std::size_t p = b; p < e; ++p) {
+          if (part_sizes) {
+            RefineOptions ro = base;
+            part_sizes(ro);
+            mesh_part(c, static_cast<std::uint32_t>(p), ro, kind, ro.size_at, parts[p]);
+            continue;
+          }
           const PlaneSizeFn size = make_size();
           mesh_part(c, static_cast<std::uint32_t>(p), base, kind, size, parts[p]);
         }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "mesh/geometry.h"
 #include "mesh/quality.h"
@@ -34,6 +35,14 @@ bool RefineDriver::maybe_sort(std::vector<std::uint32_t>& new_slot, std::vector<
   if (m_.num_triangles() < next_sort_) return false;
   m_.sort_spatially(first_movable_, new_slot, new_vertex);
   queue_.renumber(new_slot, m_.num_slots());
+  if (!vsize_at_.empty()) {
+    // Every vertex is sized by now (each insertion's sample_sizes sized it); one that is
+    // not starts again from scratch rather than read another's size.
+    std::vector<double> moved(new_vertex.size(), std::numeric_limits<double>::quiet_NaN());
+    for (std::size_t v = 0; v < vsize_at_.size() && v < new_vertex.size(); ++v) moved[new_vertex[v]] = vsize_at_[v];
+    if (vsize_at_.size() != new_vertex.size()) moved.clear();
+    vsize_at_.swap(moved);
+  }
   next_sort_ = m_.num_triangles() > 0x7FFFFFFFu ? 0xFFFFFFFFu : 2 * m_.num_triangles();
   return true;
 }
@@ -62,6 +71,14 @@ bool RefineDriver::sample_sizes(std::span<const std::uint32_t> tris, std::span<c
   res_.stats.size_samples += n;
   if (opt_.size_at) opt_.size_at(pts_, h_);
   else std::fill(h_.begin(), h_.end(), opt_.size);
+  if (opt_.vertex_size_at) {
+    if (!size_new_vertices()) return false;
+    scale_.assign(n, 1.0);
+    if (opt_.vertex_size_scale) opt_.vertex_size_scale(pts_, scale_);
+    for (std::size_t i = 0; i < tris.size(); ++i) h_[i] = std::min(h_[i], scale_[i] * vertex_mean(TriId{tris[i]}));
+    for (std::size_t i = 0; i < verts.size(); ++i)
+      h_[tris.size() + i] = std::min(h_[tris.size() + i], scale_[tris.size() + i] * vsize_at_[verts[i].value]);
+  }
   for (const auto& [i, cc] : flat_) pts_[i] = cc;
   for (std::size_t i = 0; i < n; ++i) {
     const double h = h_[i];
@@ -72,6 +89,35 @@ bool RefineDriver::sample_sizes(std::span<const std::uint32_t> tris, std::span<c
     return false;
   }
   return true;
+}
+
+bool RefineDriver::size_new_vertices() {
+  const std::uint32_t first = static_cast<std::uint32_t>(vsize_at_.size()), nv = m_.num_vertices();
+  if (first >= nv) return true;
+  vpts_.resize(nv - first);
+  vh_.resize(nv - first);
+  for (std::uint32_t v = first; v < nv; ++v) vpts_[v - first] = m_.pos(VertexId{v});
+  opt_.vertex_size_at(vpts_, vh_);
+  res_.stats.size_samples += vpts_.size();
+  for (std::size_t i = 0; i < vh_.size(); ++i) {
+    if (vh_[i] > 0) continue;   // inf (no size there) included
+    if (res_.error.empty())
+      res_.error = "mesh size must be positive (got " + std::to_string(vh_[i]) + " at (" + std::to_string(vpts_[i].x) +
+                   ", " + std::to_string(vpts_[i].y) + ") in the parameter plane)";
+    return false;
+  }
+  vsize_at_.insert(vsize_at_.end(), vh_.begin(), vh_.end());
+  return true;
+}
+
+double RefineDriver::vertex_mean(TriId t) const {
+  double sum = 0;
+  int n = 0;
+  for (std::uint32_t e = 0; e < 3; ++e) {
+    const double h = vsize_at_[m_.vertex(t, e).value];
+    if (std::isfinite(h)) sum += h, ++n;
+  }
+  return n ? sum / n : std::numeric_limits<double>::infinity();
 }
 
 std::vector<std::uint32_t> RefineDriver::live_triangles() const {
@@ -90,6 +136,25 @@ bool RefineDriver::at_vertex_limit() {
 
 void RefineDriver::inserted() {
   ++res_.stats.inserted;
+  if (opt_.vertex_size_at) {
+    const VertexId v = ins_.last_vertex();
+    const std::array<VertexId, 3>& c = ins_.last_container();
+    const Vec2 p = m_.pos(v), a = m_.pos(c[0]), b = m_.pos(c[1]), d = m_.pos(c[2]);
+    const double area = (b.x - a.x) * (d.y - a.y) - (b.y - a.y) * (d.x - a.x);
+    double w[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
+    if (area > 0) {
+      w[0] = std::max(0.0, ((b.x - p.x) * (d.y - p.y) - (b.y - p.y) * (d.x - p.x)) / area);
+      w[1] = std::max(0.0, ((d.x - p.x) * (a.y - p.y) - (d.y - p.y) * (a.x - p.x)) / area);
+      w[2] = std::max(0.0, ((a.x - p.x) * (b.y - p.y) - (a.y - p.y) * (b.x - p.x)) / area);
+    }
+    double sum = 0, sum_w = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double h = c[k].value < vsize_at_.size() ? vsize_at_[c[k].value] : std::numeric_limits<double>::infinity();
+      if (std::isfinite(h)) sum += w[k] * h, sum_w += w[k];
+    }
+    if (vsize_at_.size() <= v.value) vsize_at_.resize(v.value + 1, std::numeric_limits<double>::infinity());
+    vsize_at_[v.value] = sum_w > 0 ? sum / sum_w : std::numeric_limits<double>::infinity();
+  }
   queue_.grow(m_.num_slots());
   if (opt_.on_progress && res_.stats.inserted % std::max<std::uint64_t>(opt_.progress_every, 1) == 0)
     opt_.on_progress(m_.num_triangles());

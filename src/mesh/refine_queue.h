@@ -134,6 +134,17 @@ class RefineDriver {
   std::vector<double> h_;
 
  private:
+  /// RefineOptions::vertex_size_at at every vertex not sized yet: those present on entry
+  /// (inserted() sizes the others from their triangle; vertex ids only grow, and
+  /// maybe_sort moves the sizes with their vertices). False on a size that is not
+  /// positive (inf is "none").
+  bool size_new_vertices();
+  /// The mean of the finite vertex sizes of t (inf when none is).
+  double vertex_mean(TriId t) const;
+
+  std::vector<double> vsize_at_;   // per vertex: RefineOptions::vertex_size_at
+  std::vector<Vec2> vpts_;
+  std::vector<double> vh_, scale_;
   static constexpr std::uint32_t kFirstSort = 1u << 15;
   std::uint32_t first_movable_ = 0;
   std::uint32_t next_sort_ = kFirstSort;
