@@ -48,6 +48,10 @@ Mesh1dOptions mesh1d_options(Interpreter& in, const field::SizeField* background
   opt.min_curve_nodes = static_cast<int>(o.number("Mesh.MinimumCurveNodes"));
   opt.min_circle_nodes = static_cast<int>(o.number("Mesh.MinimumCircleNodes"));
   opt.smooth_ratio = o.number("Mesh.SmoothRatio");
+  // Threads over curves: Mesh.MaxNumThreads1D, else General.NumThreads (0: the
+  // hardware's); the 1D mesh is the same for any count.
+  const int threads_1d = static_cast<int>(o.number("Mesh.MaxNumThreads1D"));
+  opt.threads = threads_1d > 0 ? threads_1d : static_cast<int>(o.number("General.NumThreads"));
   opt.progress = progress_sink(in);
   return opt;
 }
