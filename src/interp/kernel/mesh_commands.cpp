@@ -262,7 +262,7 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   // Statistics against the size each face's mesher aimed at (with the extension from
   // the boundary where it is on).
   const StageScope stage_stats(&k.clock, progress_sink(in), "statistics");
-  MeshStats st = mesh_stats(*mesh, r2.target_sizes);
+  MeshStats st = mesh_stats(*mesh, r2.target_sizes, static_cast<int>(in.options().number("General.NumThreads")));
   // The worst triangle's place in longitude/latitude when its surface is on a sphere.
   if (const geo::ModelSurface* ws = st.min_rho_surface ? k.model.surface(st.min_rho_surface) : nullptr)
     if (const geo::SurfaceGeometry* g = ws->geometry ? k.model.geometry(ws->geometry) : nullptr) {
