@@ -21,6 +21,7 @@ bool write_msh(const MeshModel& m, const OutputSettings& s, const std::string& p
   o.save_all = s.save_all;
   o.save_parametric = s.save_parametric;
   o.node_data = s.node_data;
+  o.threads = s.threads;
   return save_msh(m, o, path, error);
 }
 

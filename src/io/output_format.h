@@ -30,6 +30,7 @@ struct OutputSettings {
   PictureOptions picture;
   OceanGridOptions ocean;
   std::vector<NodeData> node_data;  ///< Mesh.NodeData, for the rows that hold node data
+  int threads = 1;                  ///< General.NumThreads, for the writers that use threads (MSH)
 };
 
 /// Writes `mesh` to `path` atomically; false with *error (without the path) on failure.

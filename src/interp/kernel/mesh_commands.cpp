@@ -356,6 +356,7 @@ std::string save_mesh(Interpreter& in, const std::string& path, const std::strin
   settings.save_parametric = o.number("Mesh.SaveParametric") != 0;
   const double version = f->msh_file_version != 0 ? f->msh_file_version : o.number("Mesh.MshFileVersion");
   settings.msh_version = version < 3 ? 22 : 41;
+  settings.threads = static_cast<int>(o.number("General.NumThreads"));
   std::string error;
   const StageScope stage(&in.kernel().clock, progress_sink(in), "writing");
   return f->write(mm, settings, path, &error) ? std::string{} : error;
