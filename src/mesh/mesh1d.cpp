@@ -31,15 +31,19 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// Integrand |X'(t)| / h(t) at a batch of parameters.
+// Integrand |X'(t)| / h(t) at a batch of parameters, and |X'(t)| (the smoothing needs it).
 void integrand(const geo::Curve& c, const CurveSizeFn& size, std::span<const double> t, std::vector<geo::Jet3>& jets,
-               std::vector<double>& h, std::vector<double>& f) {
+               std::vector<double>& h, std::vector<double>& f, std::vector<double>& xp) {
   jets.resize(t.size());
   h.resize(t.size());
   f.resize(t.size());
+  xp.resize(t.size());
   for (std::size_t i = 0; i < t.size(); ++i) jets[i] = c.eval(t[i]);
   size(t, jets, h);
-  for (std::size_t i = 0; i < t.size(); ++i) f[i] = norm(jets[i].d1) / h[i];
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    xp[i] = norm(jets[i].d1);
+    f[i] = xp[i] / h[i];
+  }
 }
 
 }  // namespace
@@ -83,15 +87,15 @@ CurvePrimitive integrate_curve(const geo::Curve& c, const CurveSizeFn& size, dou
   const int pieces = std::max(1, c.pieces());
   const int per_piece = std::max(2, (32 + pieces - 1) / pieces);
   const std::size_t n0 = static_cast<std::size_t>(pieces) * static_cast<std::size_t>(per_piece);
-  std::vector<double> t(n0 + 1), f;
+  std::vector<double> t(n0 + 1), f, xp;
   for (std::size_t i = 0; i <= n0; ++i) t[i] = static_cast<double>(i) / static_cast<double>(n0);
   std::vector<geo::Jet3> jets;
   std::vector<double> h;
   CurvePrimitive out;
-  integrand(c, size, t, jets, h, f);
+  integrand(c, size, t, jets, h, f, xp);
   out.evaluations += t.size();
   std::vector<std::uint8_t> active(n0, 1);   // per interval
-  std::vector<double> mid_t, mid_f, nt, nf;
+  std::vector<double> mid_t, mid_f, mid_xp, nt, nf, nxp;
   std::vector<std::uint8_t> nactive;
   constexpr int kMaxPasses = 40;
   for (int pass = 0; pass < kMaxPasses; ++pass) {
@@ -99,36 +103,35 @@ CurvePrimitive integrate_curve(const geo::Curve& c, const CurveSizeFn& size, dou
     for (std::size_t i = 0; i + 1 < t.size(); ++i)
       if (active[i]) mid_t.push_back(0.5 * (t[i] + t[i + 1]));
     if (mid_t.empty()) break;
-    integrand(c, size, mid_t, jets, h, mid_f);
+    integrand(c, size, mid_t, jets, h, mid_f, mid_xp);
     out.evaluations += mid_t.size();
-    nt.clear(), nf.clear(), nactive.clear();
+    nt.clear(), nf.clear(), nxp.clear(), nactive.clear();
     std::size_t k = 0;
     for (std::size_t i = 0; i + 1 < t.size(); ++i) {
       nt.push_back(t[i]);
       nf.push_back(f[i]);
+      nxp.push_back(xp[i]);
       if (!active[i]) {
         nactive.push_back(0);
         continue;
       }
-      const double w = t[i + 1] - t[i], fm = mid_f[k], tm = mid_t[k];
+      const double w = t[i + 1] - t[i], fm = mid_f[k], tm = mid_t[k], xm = mid_xp[k];
       ++k;
       const double t1 = 0.5 * w * (f[i] + f[i + 1]);
       const double t2 = 0.25 * w * (f[i] + 2 * fm + f[i + 1]);
       const bool again = std::abs(t1 - t2) > rel_tolerance * std::abs(t2) + abs_tolerance && 0.5 * w > 1e-13;
       nt.push_back(tm);
       nf.push_back(fm);
+      nxp.push_back(xm);
       nactive.push_back(again);
       nactive.push_back(again);
     }
     nt.push_back(t.back());
     nf.push_back(f.back());
-    t.swap(nt), f.swap(nf), active.swap(nactive);
+    nxp.push_back(xp.back());
+    t.swap(nt), f.swap(nf), xp.swap(nxp), active.swap(nactive);
   }
-  if (smooth_ratio > 1) {
-    std::vector<double> xp(t.size());
-    for (std::size_t i = 0; i < t.size(); ++i) xp[i] = norm(c.eval(t[i]).d1);
-    smooth_sizes(t, xp, f, std::sqrt(smooth_ratio));
-  }
+  if (smooth_ratio > 1) smooth_sizes(t, xp, f, std::sqrt(smooth_ratio));
   out.t = std::move(t);
   out.a.resize(out.t.size());
   out.a[0] = 0;
@@ -522,9 +525,10 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
     // (noisy curves, tight turns) is dropped, unless that leaves fewer than the minimum.
     // Sizes come one at a time (each depends on the node kept before), so first a batch
     // screen with every node kept decides whether the curve needs it at all.
+    std::vector<Vec3> x;   // the nodes' positions while ts is unfiltered
     if (ts.size() > 2) {
       const std::size_t n = ts.size();
-      std::vector<Vec3> x(n);
+      x.resize(n);
       x[0] = cp.moves_vertex ? shape.point(0) : vb->xyz;
       for (std::size_t i = 1; i + 1 < n; ++i) x[i] = shape.point(ts[i]);
       std::vector<double> tm(n - 2), hm(n - 2);
@@ -556,6 +560,7 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
           for (std::size_t i = 0; i < n; ++i)
             if (!drop[i]) kept.push_back(ts[i]);
           ts.swap(kept);
+          x.clear();
         }
       }
     }
@@ -564,7 +569,7 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
     cp.xyz.resize(interior);
     if (on_surface) cp.uv.resize(interior);
     for (std::size_t i = 0; i < interior; ++i) {
-      cp.xyz[i] = shape.point(ts[i + 1]);
+      cp.xyz[i] = x.empty() ? shape.point(ts[i + 1]) : x[i + 1];
       if (on_surface) cp.uv[i] = shape.eval_uv(ts[i + 1]).p;
     }
     cp.ts = std::move(ts);
