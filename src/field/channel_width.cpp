@@ -249,6 +249,7 @@ FieldPtr make(const BuildInputs& in) {
   opts.elements_across = o.number("ElementsAcross");
   opts.size_min = o.number("SizeMin");
   opts.size_max = o.number("SizeMax");
+  opts.threads = in.ctx.threads;
   if (!(opts.elements_across >= 1)) in.bad("ElementsAcross", "must be at least 1");
   if (!(opts.size_min >= 0)) in.bad("SizeMin", "must be positive or zero");
   if (!(opts.size_max > 0) || opts.size_max < opts.size_min) in.bad("SizeMax", "must be positive and at least SizeMin");
