@@ -22,6 +22,7 @@
 
 #include <fmt/format.h>
 
+#include "base/parallel.h"
 #include "field/error.h"
 #include "field/kinds.h"
 #include "field/knn.h"
@@ -61,7 +62,8 @@ struct ChannelWidths::Impl {
   }
 };
 
-ChannelWidths::ChannelWidths(std::vector<CoastChain> chains, double cap) : impl_(std::make_unique<Impl>()) {
+ChannelWidths::ChannelWidths(std::vector<CoastChain> chains, double cap, int threads)
+    : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   m.cap = cap;
   for (const CoastChain& c : chains) {
@@ -109,10 +111,11 @@ ChannelWidths::ChannelWidths(std::vector<CoastChain> chains, double cap) : impl_
   m.w_neg.assign(n, m.cap);
   if (n == 0 || m.cap == 0) return;
   m.tree = std::make_unique<KdTree>(m.pts);
-  for (std::size_t i = 0; i < n; ++i) {
+  // Each sample's search reads the tree and writes only its own widths: samples are
+  // independent, so chunks of them run on `threads` threads with the same result.
+  const auto search = [&m](std::size_t i) {
     const Vec3 p = m.pts[i], side = m.side[i];
-    double& wp = m.w_pos[i];
-    double& wn = m.w_neg[i];
+    double wp = m.w_pos[i], wn = m.w_neg[i];
     // Where the water side is known, the land side is not searched: it stays at 0
     // during the search (so that it does not hold the bound up) and gets the water
     // side's width after it, so that every point near the sample reads that.
@@ -143,7 +146,13 @@ ChannelWidths::ChannelWidths(std::vector<CoastChain> chains, double cap) : impl_
     m.tree->visit_within(p, m.cap * m.cap, visit);
     if (water > 0) wn = wp;
     if (water < 0) wp = wn;
-  }
+    m.w_pos[i] = wp;
+    m.w_neg[i] = wn;
+  };
+  constexpr std::size_t kSamplesPerChunk = 2048;
+  parallel_for_chunks(resolve_thread_count(threads), n, kSamplesPerChunk, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) search(i);
+  });
 }
 
 ChannelWidths::~ChannelWidths() = default;
@@ -194,7 +203,7 @@ void ChannelWidths::width_within(std::span<const Vec3> pts, std::span<const doub
 }
 
 ChannelWidthField::ChannelWidthField(std::vector<CoastChain> chains, const ChannelWidthOptions& o, double cap)
-    : widths_(std::move(chains), cap), o_(o), cap_(cap) {}
+    : widths_(std::move(chains), cap, o.threads), o_(o), cap_(cap) {}
 
 double ChannelWidthField::size_of(double w) const {
   // A width that reached the search cap is "wide": no constraint.
@@ -240,6 +249,7 @@ FieldPtr make(const BuildInputs& in) {
   opts.elements_across = o.number("ElementsAcross");
   opts.size_min = o.number("SizeMin");
   opts.size_max = o.number("SizeMax");
+  opts.threads = in.ctx.threads;
   if (!(opts.elements_across >= 1)) in.bad("ElementsAcross", "must be at least 1");
   if (!(opts.size_min >= 0)) in.bad("SizeMin", "must be positive or zero");
   if (!(opts.size_max > 0) || opts.size_max < opts.size_min) in.bad("SizeMax", "must be positive and at least SizeMin");

@@ -17,13 +17,17 @@ struct ChannelWidthOptions {
   double elements_across = 2;  ///< N: elements across a channel (>= 1)
   double size_min = 0;         ///< the size never goes below this
   double size_max = kMaxLc;    ///< nor above this; widths beyond N * size_max are not searched
+  /// Threads for the set-up's searches (General.NumThreads; <= 0: the hardware's). The
+  /// widths are the same for any count.
+  int threads = 1;
 };
 
 /// The per-sample widths and the evaluation, exposed for tests.
 class ChannelWidths {
  public:
-  /// `cap`: widths larger than this are not searched for and read as `cap`.
-  ChannelWidths(std::vector<CoastChain> chains, double cap);
+  /// `cap`: widths larger than this are not searched for and read as `cap`. The samples'
+  /// searches run on `threads` threads (<= 0: the hardware's); the widths do not depend on it.
+  ChannelWidths(std::vector<CoastChain> chains, double cap, int threads = 1);
   ~ChannelWidths();
   ChannelWidths(const ChannelWidths&) = delete;
   ChannelWidths& operator=(const ChannelWidths&) = delete;

@@ -108,6 +108,21 @@ std::uint64_t spread3(std::uint64_t v) {
   return v;
 }
 
+// LSD radix sort of (key, index) pairs by key, 8 bits a pass (stable, so equal keys stay
+// in index order, as a sort of the pairs would give); passes where every key has the same
+// digit are skipped. Several times faster than std::sort on large batches.
+void radix_sort(std::vector<std::pair<std::uint64_t, std::uint32_t>>& keys) {
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> tmp(keys.size());
+  for (int shift = 0; shift < 64; shift += 8) {
+    std::size_t count[257] = {};
+    for (const auto& k : keys) ++count[((k.first >> shift) & 0xff) + 1];
+    if (count[((keys[0].first >> shift) & 0xff) + 1] == keys.size()) continue;
+    for (int d = 0; d < 256; ++d) count[d + 1] += count[d];
+    for (const auto& k : keys) tmp[count[(k.first >> shift) & 0xff]++] = k;
+    keys.swap(tmp);
+  }
+}
+
 /// Query order along a Morton curve of the batch's bounding box.
 std::vector<std::uint32_t> morton_order(std::span<const Vec3> q) {
   Vec3 lo = q[0], hi = q[0];
@@ -126,17 +141,14 @@ std::vector<std::uint32_t> morton_order(std::span<const Vec3> q) {
                    spread3(cell(q[i].z, lo.z)) << 2,
                static_cast<std::uint32_t>(i)};
   }
-  // LSD radix sort, 8 bits a pass (stable, so equal keys stay in index
-  // order, as a sort of the pairs would give); passes where every key has
-  // the same digit are skipped. Several times faster than std::sort here.
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> tmp(q.size());
-  for (int shift = 0; shift < 64; shift += 8) {
-    std::size_t count[257] = {};
-    for (const auto& k : keys) ++count[((k.first >> shift) & 0xff) + 1];
-    if (count[((keys[0].first >> shift) & 0xff) + 1] == keys.size()) continue;
-    for (int d = 0; d < 256; ++d) count[d + 1] += count[d];
-    for (const auto& k : keys) tmp[count[(k.first >> shift) & 0xff]++] = k;
-    keys.swap(tmp);
+  // A small batch (the 1D integrator's, along one curve: tens of points) is sorted as
+  // pairs: the radix sort's eight passes over 257 counters would cost more than the
+  // points. The order is the same, since the indices make every pair distinct.
+  constexpr std::size_t kRadixFrom = 256;
+  if (q.size() < kRadixFrom) {
+    std::sort(keys.begin(), keys.end());
+  } else {
+    radix_sort(keys);
   }
   std::vector<std::uint32_t> order(q.size());
   for (std::size_t i = 0; i < q.size(); ++i) order[i] = keys[i].second;

@@ -38,6 +38,9 @@ struct BuildContext {
   std::function<std::optional<std::vector<int>>(int id)> coastline_curves;
   /// Relative data file names (Structured, Bathymetry) resolve against this.
   std::filesystem::path base_dir;
+  /// Threads a factory may use for its set-up (General.NumThreads; <= 0: the hardware's);
+  /// the field built does not depend on it (ChannelWidth's searches).
+  int threads = 1;
   /// Told of each kind's set-up as a stage "field <Kind>" (the run's time account); may be
   /// null.
   Progress* setup_clock = nullptr;

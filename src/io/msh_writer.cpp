@@ -3,6 +3,7 @@
 // order, as Gmsh does, so the same mesh always gives the same bytes.
 #include "io/msh_writer.h"
 
+#include <fmt/compile.h>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -13,6 +14,7 @@
 #include <numeric>
 
 #include "base/output_file.h"
+#include "base/parallel.h"
 
 namespace sm::io {
 namespace {
@@ -23,7 +25,7 @@ constexpr std::uint32_t kUnowned = 0xFFFFFFFFu;
 // drains to a base::OutputFile every few megabytes (large meshes).
 class Out {
  public:
-  explicit Out(base::OutputFile* file) : file_(file) {}
+  Out(base::OutputFile* file, int threads) : file_(file), threads_(resolve_thread_count(threads)) {}
   void text(std::string_view s) { buf_.append(s); drain(); }
   template <class... A>
   void f(fmt::format_string<A...> pattern, A&&... args) {
@@ -47,6 +49,39 @@ class Out {
   }
   std::string take() { return std::move(buf_); }
 
+  /// The text of items [0, n), fill(begin, end, out) appending that of [begin, end) to out:
+  /// made in chunks of fixed bounds on the writer's threads, a wave of chunks at a time
+  /// (so that at most a few chunks are held beyond the buffer), and appended in item order,
+  /// so the bytes do not depend on the thread count.
+  template <class Fill>
+  void items(std::size_t n, const Fill& fill) {
+    constexpr std::size_t kItems = 1 << 14;
+    const std::size_t chunks = (n + kItems - 1) / kItems;
+    if (threads_ <= 1 || chunks <= 1) {
+      for (std::size_t c = 0; c < chunks; ++c) {
+        fill(c * kItems, std::min(n, (c + 1) * kItems), buf_);
+        drain();
+      }
+      return;
+    }
+    const std::size_t wave = static_cast<std::size_t>(threads_) * 4;
+    std::vector<std::string> parts(std::min(chunks, wave));
+    for (std::size_t c0 = 0; c0 < chunks; c0 += wave) {
+      const std::size_t nc = std::min(wave, chunks - c0);
+      parallel_for_chunks(threads_, nc, 1, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t c = begin; c < end; ++c) {
+          parts[c].clear();
+          const std::size_t lo = (c0 + c) * kItems;
+          fill(lo, std::min(n, lo + kItems), parts[c]);
+        }
+      });
+      for (std::size_t c = 0; c < nc; ++c) {
+        buf_.append(parts[c]);
+        drain();
+      }
+    }
+  }
+
  private:
   void drain() {
     if (file_ && buf_.size() > (4u << 20)) {
@@ -55,6 +90,7 @@ class Out {
     }
   }
   base::OutputFile* file_;
+  int threads_ = 1;
   std::string buf_;
 };
 
@@ -159,14 +195,21 @@ void write_msh22(Out& o, const MeshModel& m, const MshOptions& opt, const Plan& 
       }
 
   o.f("$Nodes\n{}\n", node_order.size());
-  for (std::uint32_t n : node_order) {
-    const Vec3 x = m.xyz[n];
-    if (opt.binary) {
+  if (opt.binary) {
+    for (std::uint32_t n : node_order) {
+      const Vec3 x = m.xyz[n];
       o.bin<int>(static_cast<int>(tag[n]));
       o.bin(x.x), o.bin(x.y), o.bin(x.z);
-    } else {
-      o.f("{} {:.16g} {:.16g} {:.16g}\n", tag[n], x.x, x.y, x.z);
     }
+  } else {
+    o.items(node_order.size(), [&](std::size_t begin, std::size_t end, std::string& out) {
+      auto it = std::back_inserter(out);
+      for (std::size_t k = begin; k < end; ++k) {
+        const std::uint32_t n = node_order[k];
+        const Vec3 x = m.xyz[n];
+        it = fmt::format_to(it, FMT_COMPILE("{} {:.16g} {:.16g} {:.16g}\n"), tag[n], x.x, x.y, x.z);
+      }
+    });
   }
   if (opt.binary) o.text("\n");
   o.text("$EndNodes\n");
@@ -181,20 +224,29 @@ void write_msh22(Out& o, const MeshModel& m, const MshOptions& opt, const Plan& 
     // SaveAll drops the physical tags in MSH2 (written as 0).
     std::vector<int> phys = opt.save_all || e.physical_tags.empty() ? std::vector<int>{0} : e.physical_tags;
     for (int ph : phys) {
+      if (!opt.binary) {
+        const int first = elm;
+        o.items(ne, [&](std::size_t begin, std::size_t end, std::string& out) {
+          auto it = std::back_inserter(out);
+          for (std::size_t k = begin; k < end; ++k) {
+            const std::uint32_t* c = &e.connectivity[k * npe];
+            it = fmt::format_to(it, FMT_COMPILE("{} {} 2 {} {}"), first + static_cast<int>(k) + 1,
+                                static_cast<int>(e.type), ph, e.tag);
+            for (int j = 0; j < npe; ++j) it = fmt::format_to(it, FMT_COMPILE(" {}"), tag[c[j]]);
+            *it++ = '\n';
+          }
+        });
+        elm += static_cast<int>(ne);
+        continue;
+      }
       for (std::size_t k = 0; k < ne; ++k) {
         ++elm;
         const std::uint32_t* c = &e.connectivity[k * npe];
-        if (opt.binary) {
-          // Gmsh writes a one-element block header (type, 1, 2 tags) before
-          // every element; readers accept any block size, we match Gmsh.
-          o.bin<int>(static_cast<int>(e.type)), o.bin<int>(1), o.bin<int>(2);
-          o.bin<int>(elm), o.bin<int>(ph), o.bin<int>(e.tag);
-          for (int j = 0; j < npe; ++j) o.bin<int>(static_cast<int>(tag[c[j]]));
-        } else {
-          o.f("{} {} 2 {} {}", elm, static_cast<int>(e.type), ph, e.tag);
-          for (int j = 0; j < npe; ++j) o.f(" {}", tag[c[j]]);
-          o.text("\n");
-        }
+        // Gmsh writes a one-element block header (type, 1, 2 tags) before
+        // every element; readers accept any block size, we match Gmsh.
+        o.bin<int>(static_cast<int>(e.type)), o.bin<int>(1), o.bin<int>(2);
+        o.bin<int>(elm), o.bin<int>(ph), o.bin<int>(e.tag);
+        for (int j = 0; j < npe; ++j) o.bin<int>(static_cast<int>(tag[c[j]]));
       }
     }
   }
@@ -336,14 +388,20 @@ void write_msh41(Out& o, const MeshModel& m, const MshOptions& opt, const Plan& 
       }
     } else {
       o.f("{} {} {} {}\n", e.dim, e.tag, param ? 1 : 0, e.nodes.size());
-      for (std::uint32_t n : e.nodes) o.f("{}\n", tag[n]);
-      for (std::size_t k = 0; k < e.nodes.size(); ++k) {
-        const Vec3 x = m.xyz[e.nodes[k]];
-        o.f("{:.16g} {:.16g} {:.16g}", x.x, x.y, x.z);
-        if (param)
-          for (int d = 0; d < e.dim; ++d) o.f(" {:.16g}", e.params[k * e.dim + d]);
-        o.text("\n");
-      }
+      o.items(e.nodes.size(), [&](std::size_t begin, std::size_t end, std::string& out) {
+        auto it = std::back_inserter(out);
+        for (std::size_t k = begin; k < end; ++k) it = fmt::format_to(it, FMT_COMPILE("{}\n"), tag[e.nodes[k]]);
+      });
+      o.items(e.nodes.size(), [&](std::size_t begin, std::size_t end, std::string& out) {
+        auto it = std::back_inserter(out);
+        for (std::size_t k = begin; k < end; ++k) {
+          const Vec3 x = m.xyz[e.nodes[k]];
+          it = fmt::format_to(it, FMT_COMPILE("{:.16g} {:.16g} {:.16g}"), x.x, x.y, x.z);
+          if (param)
+            for (int d = 0; d < e.dim; ++d) it = fmt::format_to(it, FMT_COMPILE(" {:.16g}"), e.params[k * e.dim + d]);
+          *it++ = '\n';
+        }
+      });
     }
   }
   o.text(opt.binary ? "\n$EndNodes\n" : "$EndNodes\n");
@@ -370,17 +428,25 @@ void write_msh41(Out& o, const MeshModel& m, const MshOptions& opt, const Plan& 
     } else {
       o.f("{} {} {} {}\n", e.dim, e.tag, static_cast<int>(e.type), ne);
     }
+    if (!opt.binary) {
+      const std::uint64_t first = elm;
+      o.items(ne, [&](std::size_t begin, std::size_t end, std::string& out) {
+        auto it = std::back_inserter(out);
+        for (std::size_t k = begin; k < end; ++k) {
+          const std::uint32_t* c = &e.connectivity[k * npe];
+          it = fmt::format_to(it, FMT_COMPILE("{} "), first + k + 1);
+          for (int j = 0; j < npe; ++j) it = fmt::format_to(it, FMT_COMPILE("{} "), tag[c[j]]);
+          *it++ = '\n';
+        }
+      });
+      elm += ne;
+      continue;
+    }
     for (std::size_t k = 0; k < ne; ++k) {
       ++elm;
       const std::uint32_t* c = &e.connectivity[k * npe];
-      if (opt.binary) {
-        o.bin<std::uint64_t>(elm);
-        for (int j = 0; j < npe; ++j) o.bin<std::uint64_t>(tag[c[j]]);
-      } else {
-        o.f("{} ", elm);
-        for (int j = 0; j < npe; ++j) o.f("{} ", tag[c[j]]);
-        o.text("\n");
-      }
+      o.bin<std::uint64_t>(elm);
+      for (int j = 0; j < npe; ++j) o.bin<std::uint64_t>(tag[c[j]]);
     }
   }
   o.text(opt.binary ? "\n$EndElements\n" : "$EndElements\n");
@@ -406,7 +472,7 @@ void write_all(Out& o, const MeshModel& m, const MshOptions& opt) {
 }  // namespace
 
 std::string msh_to_string(const MeshModel& mesh, const MshOptions& opt) {
-  Out o(nullptr);
+  Out o(nullptr, opt.threads);
   write_all(o, mesh, opt);
   return o.take();
 }
@@ -434,7 +500,7 @@ bool save_msh(const MeshModel& mesh, const MshOptions& opt, const std::string& p
     *error = file.error();
     return false;
   }
-  Out o(&file);
+  Out o(&file, opt.threads);
   write_all(o, mesh, opt);
   if (!o.finish() || !file.commit()) {
     *error = file.error();

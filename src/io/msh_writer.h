@@ -17,6 +17,9 @@ struct MshOptions {
   bool save_all = false;         // Mesh.SaveAll: also entities outside physical groups
   bool save_parametric = false;  // Mesh.SaveParametric (4.1 only): curve t, surface u v
   std::vector<NodeData> node_data{};  // Mesh.NodeData: one $NodeData section each (time 0, step 0)
+  /// ASCII text is formatted on this many threads (General.NumThreads; <= 0: the
+  /// hardware's) in chunks of fixed bounds, appended in order: the same bytes for any count.
+  int threads = 1;
 };
 
 /// Serialises to a string (tests, small meshes).

@@ -22,6 +22,7 @@ bool write_msh(const MeshModel& m, const OutputSettings& s, const std::string& p
   o.save_all = s.save_all;
   o.save_parametric = s.save_parametric;
   o.node_data = s.node_data;
+  o.threads = s.threads;
   if (!s.partition) return save_msh(m, o, path, error);
   const MeshModel partitioned = partitioned_model(m, *s.partition, s.partition_topology);
   if (!s.split_files) return save_msh(partitioned, o, path, error);

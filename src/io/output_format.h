@@ -35,6 +35,7 @@ struct OutputSettings {
   const MeshPartition* partition = nullptr;
   bool split_files = false;       ///< Mesh.PartitionSplitMeshFiles: MSH one file per part
   bool partition_topology = true; ///< Mesh.PartitionCreateTopology: MSH interface curves and points
+  int threads = 1;                  ///< General.NumThreads, for the writers that use threads (MSH)
 };
 
 /// The file of part `part` (1-based) with Mesh.PartitionSplitMeshFiles: "dir/x.msh" ->

@@ -134,12 +134,14 @@ void PlaneSizes::operator()(std::span<const Vec2> p, std::span<double> h) {
 }
 
 SizeAt3 target_size_fn(std::shared_ptr<const FaceSizing> sizing) {
-  auto sizes = std::make_shared<PlaneSizes>(*sizing);
-  auto plane_pts = std::make_shared<std::vector<Vec2>>();
-  return [sizing, sizes, plane_pts](std::span<const Vec3> x, std::span<double> h) {
-    plane_pts->resize(x.size());
-    for (std::size_t i = 0; i < x.size(); ++i) (*plane_pts)[i] = sizing->plane.plane_of_space(x[i]);
-    sizes->on_surface(*plane_pts, h);
+  // A PlaneSizes per call (its walk hint and scratch are the call's own), so that the
+  // statistics can call it from several threads on batches of fixed bounds: the sizes of
+  // a batch then do not depend on which batches ran before on the same thread.
+  return [sizing](std::span<const Vec3> x, std::span<double> h) {
+    std::vector<Vec2> plane_pts(x.size());
+    for (std::size_t i = 0; i < x.size(); ++i) plane_pts[i] = sizing->plane.plane_of_space(x[i]);
+    PlaneSizes sizes(*sizing);
+    sizes.on_surface(plane_pts, h);
   };
 }
 

@@ -6,12 +6,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <numbers>
 #include <optional>
 
 #include <fmt/format.h>
 
+#include "base/parallel.h"
 #include "mesh/boundary_recovery.h"
 #include "exact/predicates.h"
 
@@ -29,15 +31,19 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// Integrand |X'(t)| / h(t) at a batch of parameters.
+// Integrand |X'(t)| / h(t) at a batch of parameters, and |X'(t)| (the smoothing needs it).
 void integrand(const geo::Curve& c, const CurveSizeFn& size, std::span<const double> t, std::vector<geo::Jet3>& jets,
-               std::vector<double>& h, std::vector<double>& f) {
+               std::vector<double>& h, std::vector<double>& f, std::vector<double>& xp) {
   jets.resize(t.size());
   h.resize(t.size());
   f.resize(t.size());
+  xp.resize(t.size());
   for (std::size_t i = 0; i < t.size(); ++i) jets[i] = c.eval(t[i]);
   size(t, jets, h);
-  for (std::size_t i = 0; i < t.size(); ++i) f[i] = norm(jets[i].d1) / h[i];
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    xp[i] = norm(jets[i].d1);
+    f[i] = xp[i] / h[i];
+  }
 }
 
 }  // namespace
@@ -81,15 +87,15 @@ CurvePrimitive integrate_curve(const geo::Curve& c, const CurveSizeFn& size, dou
   const int pieces = std::max(1, c.pieces());
   const int per_piece = std::max(2, (32 + pieces - 1) / pieces);
   const std::size_t n0 = static_cast<std::size_t>(pieces) * static_cast<std::size_t>(per_piece);
-  std::vector<double> t(n0 + 1), f;
+  std::vector<double> t(n0 + 1), f, xp;
   for (std::size_t i = 0; i <= n0; ++i) t[i] = static_cast<double>(i) / static_cast<double>(n0);
   std::vector<geo::Jet3> jets;
   std::vector<double> h;
   CurvePrimitive out;
-  integrand(c, size, t, jets, h, f);
+  integrand(c, size, t, jets, h, f, xp);
   out.evaluations += t.size();
   std::vector<std::uint8_t> active(n0, 1);   // per interval
-  std::vector<double> mid_t, mid_f, nt, nf;
+  std::vector<double> mid_t, mid_f, mid_xp, nt, nf, nxp;
   std::vector<std::uint8_t> nactive;
   constexpr int kMaxPasses = 40;
   for (int pass = 0; pass < kMaxPasses; ++pass) {
@@ -97,36 +103,35 @@ CurvePrimitive integrate_curve(const geo::Curve& c, const CurveSizeFn& size, dou
     for (std::size_t i = 0; i + 1 < t.size(); ++i)
       if (active[i]) mid_t.push_back(0.5 * (t[i] + t[i + 1]));
     if (mid_t.empty()) break;
-    integrand(c, size, mid_t, jets, h, mid_f);
+    integrand(c, size, mid_t, jets, h, mid_f, mid_xp);
     out.evaluations += mid_t.size();
-    nt.clear(), nf.clear(), nactive.clear();
+    nt.clear(), nf.clear(), nxp.clear(), nactive.clear();
     std::size_t k = 0;
     for (std::size_t i = 0; i + 1 < t.size(); ++i) {
       nt.push_back(t[i]);
       nf.push_back(f[i]);
+      nxp.push_back(xp[i]);
       if (!active[i]) {
         nactive.push_back(0);
         continue;
       }
-      const double w = t[i + 1] - t[i], fm = mid_f[k], tm = mid_t[k];
+      const double w = t[i + 1] - t[i], fm = mid_f[k], tm = mid_t[k], xm = mid_xp[k];
       ++k;
       const double t1 = 0.5 * w * (f[i] + f[i + 1]);
       const double t2 = 0.25 * w * (f[i] + 2 * fm + f[i + 1]);
       const bool again = std::abs(t1 - t2) > rel_tolerance * std::abs(t2) + abs_tolerance && 0.5 * w > 1e-13;
       nt.push_back(tm);
       nf.push_back(fm);
+      nxp.push_back(xm);
       nactive.push_back(again);
       nactive.push_back(again);
     }
     nt.push_back(t.back());
     nf.push_back(f.back());
-    t.swap(nt), f.swap(nf), active.swap(nactive);
+    nxp.push_back(xp.back());
+    t.swap(nt), f.swap(nf), xp.swap(nxp), active.swap(nactive);
   }
-  if (smooth_ratio > 1) {
-    std::vector<double> xp(t.size());
-    for (std::size_t i = 0; i < t.size(); ++i) xp[i] = norm(c.eval(t[i]).d1);
-    smooth_sizes(t, xp, f, std::sqrt(smooth_ratio));
-  }
+  if (smooth_ratio > 1) smooth_sizes(t, xp, f, std::sqrt(smooth_ratio));
   out.t = std::move(t);
   out.a.resize(out.t.size());
   out.a[0] = 0;
@@ -328,8 +333,6 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
     if (mc.end != mc.begin) ++curves_at[mc.end];
   }
   auto moves_vertex = [&](const geo::ModelCurve& mc) { return mc.begin == mc.end && curves_at[mc.begin] == 1; };
-  std::vector<Vec3> pts;
-  std::vector<double> bg;
   // Ends the stage on every return, errors included.
   struct StageEnd {
     Progress* p;
@@ -346,20 +349,41 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
     ~StageEnd() { end(); }
   } stage{opt.progress};
   stage.begin("1D", model.curves().size());
-  // Each curve's size h(t) along it: the policy with the background field, the end
-  // points' sizes and the curvature, times the Bezier stretch.
+  // One plan per curve in tag order. The curves are independent until their nodes are
+  // numbered: the integral, the placement and the nodes' coordinates are computed on
+  // opt.threads threads, each curve into its own plan; errors and exceptions are kept in
+  // the plan and taken up in tag order afterwards, so that the first failing curve is the
+  // one a serial loop would report and the nodes are numbered as one thread numbers them.
   struct CurvePlan {
     int tag = 0;
     const geo::ModelCurve* mc = nullptr;
+    bool moves_vertex = false;
     std::optional<double> lc0, lc1;
     double stretch = 1;
     CurvePrimitive prim;
     int min_segs = 1;
     double nodes = 0;
+    MeshError error;              // no shape, no end point
+    std::exception_ptr thrown;    // from the background field
+    std::vector<double> ts;       // the nodes' parameters, first 0 and last 1
+    std::vector<Vec3> xyz;        // interior nodes
+    std::vector<Vec2> uv;         // interior nodes, on a surface's curve
   };
+  std::vector<CurvePlan> plans;
+  plans.reserve(model.curves().size());
+  for (const auto& [tag, mc] : model.curves()) {
+    CurvePlan& cp = plans.emplace_back();
+    cp.tag = tag;
+    cp.mc = &mc;
+    cp.moves_vertex = moves_vertex(mc);
+  }
+  const int threads = resolve_thread_count(opt.threads);
+  // Each curve's size h(t) along it: the policy with the background field, the end
+  // points' sizes and the curvature, times the Bezier stretch. The scratch for the field's
+  // points is the function's own (one per curve and pass, so per thread).
   auto size_of = [&](const CurvePlan& cp) {
-    return [&, on = field::EntityRef{1, cp.tag}](std::span<const double> t, std::span<const geo::Jet3> jets,
-                                                 std::span<double> h) {
+    return [&, on = field::EntityRef{1, cp.tag}, pts = std::vector<Vec3>(), bg = std::vector<double>()](
+               std::span<const double> t, std::span<const geo::Jet3> jets, std::span<double> h) mutable {
       if (opt.background) {
         pts.resize(t.size());
         bg.resize(t.size());
@@ -385,26 +409,20 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
   };
   // First every curve's size integral, hence its node count: a count beyond the budget
   // is refused before any node is placed (a size of 1e-20 asks for 1e20 nodes).
-  std::vector<CurvePlan> plans;
-  plans.reserve(model.curves().size());
-  double total_nodes = 0;
-  std::size_t largest = 0;
-  std::uint64_t curves_done = 0;
-  for (const auto& [tag, mc] : model.curves()) {
+  auto integrate_plan = [&](CurvePlan& cp) {
+    const int tag = cp.tag;
+    const geo::ModelCurve& mc = *cp.mc;
     if (!mc.shape) {
-      res.error = make_error(MeshErrorKind::Invalid, tag, tag, fmt::format("curve {} has no geometry", tag));
-      return res;
+      cp.error = make_error(MeshErrorKind::Invalid, tag, tag, fmt::format("curve {} has no geometry", tag));
+      return;
     }
     const geo::Curve& shape = *mc.shape;
     const geo::ModelVertex* vb = model.vertex(mc.begin);
     const geo::ModelVertex* ve = model.vertex(mc.end);
     if (!vb || !ve) {
-      res.error = make_error(MeshErrorKind::Invalid, tag, tag, fmt::format("curve {} lacks an end point", tag));
-      return res;
+      cp.error = make_error(MeshErrorKind::Invalid, tag, tag, fmt::format("curve {} lacks an end point", tag));
+      return;
     }
-    CurvePlan cp;
-    cp.tag = tag;
-    cp.mc = &mc;
     if (vb->lc < geo::kMaxLc) cp.lc0 = vb->lc;
     if (ve->lc < geo::kMaxLc) cp.lc1 = ve->lc;
     // Gmsh 4.8.4 integrates a Bezier curve of degree d with |X'| / d (measured: a
@@ -413,15 +431,37 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
     cp.stretch = shape.kind() == geo::CurveKind::Bezier
                      ? static_cast<double>(std::max<std::size_t>(1, shape.control_xyz().size() - 1))
                      : 1.0;
-    cp.prim = integrate_curve(shape, size_of(cp), opt.rel_tolerance, opt.abs_tolerance, opt.smooth_ratio);
+    try {
+      cp.prim = integrate_curve(shape, size_of(cp), opt.rel_tolerance, opt.abs_tolerance, opt.smooth_ratio);
+    } catch (...) {
+      cp.thrown = std::current_exception();
+      return;
+    }
+    cp.min_segs = min_segments(shape, opt);
+    cp.nodes = node_count(cp.prim, cp.min_segs);
+  };
+  parallel_for_chunks(
+      threads, plans.size(), 1,
+      [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) integrate_plan(plans[i]);
+      },
+      [&](std::size_t done) { progress_update(opt.progress, done); });
+  double total_nodes = 0;
+  std::size_t largest = 0;
+  for (std::size_t i = 0; i < plans.size(); ++i) {
+    CurvePlan& cp = plans[i];
+    const int tag = cp.tag;
+    if (cp.thrown) std::rethrow_exception(cp.thrown);
+    if (!cp.error.ok()) {
+      res.error = std::move(cp.error);
+      return res;
+    }
     res.stats.size_evaluations += cp.prim.evaluations;
     if (!std::isfinite(cp.prim.total())) {
       res.error = make_error(MeshErrorKind::Invalid, tag, tag,
                              fmt::format("curve {}: the size integral is not finite (a size of zero or a degenerate curve)", tag));
       return res;
     }
-    cp.min_segs = min_segments(shape, opt);
-    cp.nodes = node_count(cp.prim, cp.min_segs);
     const double limit = opt.max_elements > 0 ? std::min(opt.max_elements, kMaxCurveNodes) : kMaxCurveNodes;
     if (!(cp.nodes <= limit)) {
       res.error = make_error(MeshErrorKind::LimitExceeded, tag, tag,
@@ -432,9 +472,7 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
       return res;
     }
     total_nodes += cp.nodes;
-    if (plans.empty() || cp.nodes > plans[largest].nodes) largest = plans.size();
-    plans.push_back(std::move(cp));
-    progress_update(opt.progress, ++curves_done);
+    if (i == 0 || cp.nodes > plans[largest].nodes) largest = i;
   }
   if (opt.max_elements > 0 && total_nodes > opt.max_elements) {
     const int tag = plans[largest].tag;
@@ -475,23 +513,25 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
       return res;
     }
   }
-  for (const CurvePlan& cp : plans) {
-    const int tag = cp.tag;
+  // The nodes of each curve (parameters and coordinates), in parallel; then numbered.
+  auto place_plan = [&](CurvePlan& cp) {
     const geo::ModelCurve& mc = *cp.mc;
     const geo::Curve& shape = *mc.shape;
     const geo::ModelVertex* vb = model.vertex(mc.begin);
     const double stretch = cp.stretch;
     const int min_segs = cp.min_segs;
-    const auto size = size_of(cp);
+    auto size = size_of(cp);
     std::vector<double> ts = place_nodes(cp.prim, min_segs);
+    cp.prim = {};   // not needed any more: its samples are the largest part of a plan
     // Gmsh's filterPoints: an interior node closer than 0.3 h to the previous node kept
     // (noisy curves, tight turns) is dropped, unless that leaves fewer than the minimum.
     // Sizes come one at a time (each depends on the node kept before), so first a batch
     // screen with every node kept decides whether the curve needs it at all.
+    std::vector<Vec3> x;   // the nodes' positions while ts is unfiltered
     if (ts.size() > 2) {
       const std::size_t n = ts.size();
-      std::vector<Vec3> x(n);
-      x[0] = moves_vertex(mc) ? shape.point(0) : vb->xyz;
+      x.resize(n);
+      x[0] = cp.moves_vertex ? shape.point(0) : vb->xyz;
       for (std::size_t i = 1; i + 1 < n; ++i) x[i] = shape.point(ts[i]);
       std::vector<double> tm(n - 2), hm(n - 2);
       std::vector<geo::Jet3> jm(n - 2);
@@ -522,19 +562,40 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
           for (std::size_t i = 0; i < n; ++i)
             if (!drop[i]) kept.push_back(ts[i]);
           ts.swap(kept);
+          x.clear();
         }
       }
     }
+    const bool on_surface = shape.on_surface();
+    const std::size_t interior = ts.size() >= 2 ? ts.size() - 2 : 0;
+    cp.xyz.resize(interior);
+    if (on_surface) cp.uv.resize(interior);
+    for (std::size_t i = 0; i < interior; ++i) {
+      cp.xyz[i] = x.empty() ? shape.point(ts[i + 1]) : x[i + 1];
+      if (on_surface) cp.uv[i] = shape.eval_uv(ts[i + 1]).p;
+    }
+    cp.ts = std::move(ts);
+  };
+  parallel_for_chunks(threads, plans.size(), 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) try {
+        place_plan(plans[i]);
+      } catch (...) {
+        plans[i].thrown = std::current_exception();
+      }
+  });
+  for (CurvePlan& cp : plans) {
+    if (cp.thrown) std::rethrow_exception(cp.thrown);
+    const geo::ModelCurve& mc = *cp.mc;
     CurveMesh cm;
-    cm.tag = tag;
-    cm.t = ts;
-    cm.nodes.reserve(ts.size());
+    cm.tag = cp.tag;
+    cm.nodes.reserve(cp.ts.size());
     cm.nodes.push_back(mesh.vertex_node.at(mc.begin));
-    const bool uv = shape.on_surface();
-    for (std::size_t i = 1; i + 1 < ts.size(); ++i)
-      cm.nodes.push_back(uv ? mesh.add_node(shape.point(ts[i]), shape.eval_uv(ts[i]).p) : mesh.add_node(shape.point(ts[i])));
+    for (std::size_t i = 0; i < cp.xyz.size(); ++i)
+      cm.nodes.push_back(cp.uv.empty() ? mesh.add_node(cp.xyz[i]) : mesh.add_node(cp.xyz[i], cp.uv[i]));
     cm.nodes.push_back(mesh.vertex_node.at(mc.end));
-    mesh.curves.emplace(tag, std::move(cm));
+    cm.t = std::move(cp.ts);
+    cp.xyz = {}, cp.uv = {};
+    mesh.curves.emplace(cp.tag, std::move(cm));
   }
   stage.end();
   for (const auto& [tag, mc] : model.curves()) {

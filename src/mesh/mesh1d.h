@@ -50,7 +50,13 @@ struct Mesh1dOptions {
   /// straight sides already takes a second (5e4: 20 s).
   std::function<bool(const ModelMesh& coarse)> coarse_check;
   double coarse_check_nodes = 1e4;
+  /// Threads over curves (Mesh.MaxNumThreads1D, else General.NumThreads); <= 0: the
+  /// hardware's. Each curve's integral and nodes are computed on their own and the nodes
+  /// numbered in tag order afterwards, so the mesh is the same bytes for any count. The
+  /// background field is called from these threads (SizeField is thread-safe).
+  int threads = 1;
   /// Reports stage "1D" (one unit per curve) and "1D repair" (no total); null: silent.
+  /// Called on the calling thread only.
   Progress* progress = nullptr;
 };
 

@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "base/parallel.h"
 #include "exact/triangle_rho.h"
 
 namespace sm {
@@ -39,10 +40,11 @@ namespace {
 using EdgeKey = std::pair<std::uint32_t, std::uint32_t>;
 
 // The statistics with size_of[k] the target size of the k-th surface in tag order (null:
-// none). Surfaces are measured one at a time, so the scratch is one surface's edges: an
-// edge is measured by the first surface that holds it; only edges on a surface's border
-// (in one of its triangles) can belong to another, so the borders seen so far are kept.
-MeshStats compute_stats(const ModelMesh& mesh, const std::vector<const SizeAt3*>& size_of) {
+// none), on `threads` threads (the same figures for any count). Surfaces are measured one
+// at a time, so the scratch is one surface's edges: an edge is measured by the first
+// surface that holds it; only edges on a surface's border (in one of its triangles) can
+// belong to another, so the borders seen so far are kept.
+MeshStats compute_stats(const ModelMesh& mesh, const std::vector<const SizeAt3*>& size_of, int threads) {
   MeshStats s;
   // Nodes of the triangles, as a mesh file holds them: the model points that
   // no triangle uses (B-spline control points, a sphere's centre) do not count.
@@ -55,15 +57,24 @@ MeshStats compute_stats(const ModelMesh& mesh, const std::vector<const SizeAt3*>
   s.min_rho = 1;
   std::vector<EdgeKey> edges, border, seen_border, merged;
   std::vector<double> ratio;
-  constexpr std::size_t kBatch = 4096;
-  std::vector<Vec3> mid;
-  std::vector<double> h;
+  constexpr std::size_t kBatch = 4096, kRhoChunk = 1 << 14;
+  std::vector<double> rhos;
   std::size_t index = 0;
   for (const auto& [tag, sf] : mesh.surfaces) {
     const SizeAt3* size = index < size_of.size() ? size_of[index] : nullptr;
     ++index;
-    for (const auto& t : sf.triangles) {
-      const double r = rho(mesh.nodes[t[0]].xyz, mesh.nodes[t[1]].xyz, mesh.nodes[t[2]].xyz);
+    // The qualities on `threads` threads, then summed in triangle order as one thread
+    // would (the same mean to the last bit for any count).
+    rhos.resize(sf.triangles.size());
+    parallel_for_chunks(threads, sf.triangles.size(), kRhoChunk, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t k = begin; k < end; ++k) {
+        const auto& t = sf.triangles[k];
+        rhos[k] = rho(mesh.nodes[t[0]].xyz, mesh.nodes[t[1]].xyz, mesh.nodes[t[2]].xyz);
+      }
+    });
+    for (std::size_t k = 0; k < sf.triangles.size(); ++k) {
+      const auto& t = sf.triangles[k];
+      const double r = rhos[k];
       sum += r;
       if (r < s.min_rho || s.min_rho_surface == 0) {
         s.min_rho = std::min(s.min_rho, r);
@@ -95,19 +106,28 @@ MeshStats compute_stats(const ModelMesh& mesh, const std::vector<const SizeAt3*>
     std::merge(seen_border.begin(), seen_border.end(), border.begin(), border.end(), merged.begin());
     merged.erase(std::unique(merged.begin(), merged.end()), merged.end());
     seen_border.swap(merged);
-    for (std::size_t i = 0; i < edges.size(); i += kBatch) {
-      const std::size_t n = std::min(kBatch, edges.size() - i);
-      mid.resize(n);
-      h.resize(n);
-      for (std::size_t k = 0; k < n; ++k)
-        mid[k] = 0.5 * (mesh.nodes[edges[i + k].first].xyz + mesh.nodes[edges[i + k].second].xyz);
+    // The sizes at the midpoints in batches of fixed bounds on `threads` threads (the size
+    // function is thread-safe, Mesh2dResult::target_sizes), each ratio in its edge's slot.
+    const std::size_t first = ratio.size();
+    ratio.resize(first + edges.size());
+    const std::size_t batches = (edges.size() + kBatch - 1) / kBatch;
+    std::vector<std::uint64_t> batch_in_range(batches, 0);
+    parallel_for_chunks(threads, edges.size(), kBatch, [&](std::size_t begin, std::size_t end) {
+      std::vector<Vec3> mid(end - begin);
+      std::vector<double> h(end - begin);
+      for (std::size_t k = begin; k < end; ++k)
+        mid[k - begin] = 0.5 * (mesh.nodes[edges[k].first].xyz + mesh.nodes[edges[k].second].xyz);
       (*size)(mid, h);
-      for (std::size_t k = 0; k < n; ++k) {
-        const double len = norm(mesh.nodes[edges[i + k].first].xyz - mesh.nodes[edges[i + k].second].xyz);
-        ratio.push_back(len / h[k]);
-        if (ratio.back() >= 0.7 && ratio.back() <= 1.4) ++in_range;
+      std::uint64_t in = 0;
+      for (std::size_t k = begin; k < end; ++k) {
+        const double len = norm(mesh.nodes[edges[k].first].xyz - mesh.nodes[edges[k].second].xyz);
+        const double r = len / h[k - begin];
+        ratio[first + k] = r;
+        if (r >= 0.7 && r <= 1.4) ++in;
       }
-    }
+      batch_in_range[begin / kBatch] = in;
+    });
+    for (std::uint64_t in : batch_in_range) in_range += in;
   }
   if (s.triangles == 0) {
     s.min_rho = 0;
@@ -129,10 +149,10 @@ MeshStats compute_stats(const ModelMesh& mesh, const std::vector<const SizeAt3*>
 }  // namespace
 
 MeshStats mesh_stats(const ModelMesh& mesh, const SizeAt3& size) {
-  return compute_stats(mesh, std::vector<const SizeAt3*>(mesh.surfaces.size(), size ? &size : nullptr));
+  return compute_stats(mesh, std::vector<const SizeAt3*>(mesh.surfaces.size(), size ? &size : nullptr), 1);
 }
 
-MeshStats mesh_stats(const ModelMesh& mesh, const std::vector<SurfaceSize>& sizes) {
+MeshStats mesh_stats(const ModelMesh& mesh, const std::vector<SurfaceSize>& sizes, int threads) {
   std::map<int, const SizeAt3*> by_tag;
   for (const SurfaceSize& ss : sizes)
     if (ss.size) by_tag.emplace(ss.surface, &ss.size);
@@ -141,7 +161,7 @@ MeshStats mesh_stats(const ModelMesh& mesh, const std::vector<SurfaceSize>& size
     const auto it = by_tag.find(tag);
     size_of.push_back(it == by_tag.end() ? nullptr : it->second);
   }
-  return compute_stats(mesh, size_of);
+  return compute_stats(mesh, size_of, resolve_thread_count(threads));
 }
 
 std::string format_stats(const MeshStats& s) {

@@ -57,7 +57,10 @@ MeshStats mesh_stats(const ModelMesh& mesh, const SizeAt3& size = nullptr);
 /// As above with a target size per surface: each distinct edge is measured against the
 /// size of the first surface (in tag order) that holds it and has an entry in `sizes`;
 /// edges of surfaces without one are left out of the length ratios (and of `edges`).
-MeshStats mesh_stats(const ModelMesh& mesh, const std::vector<SurfaceSize>& sizes);
+/// The qualities and the sizes are computed on `threads` threads (<= 0: the hardware's),
+/// so the size functions must be thread-safe (Mesh2dResult::target_sizes are); the
+/// figures are the same for any count.
+MeshStats mesh_stats(const ModelMesh& mesh, const std::vector<SurfaceSize>& sizes, int threads = 1);
 
 /// A few lines for stderr.
 std::string format_stats(const MeshStats& s);

@@ -7,7 +7,7 @@
 #   tests/bench/scale_stages.sh [BUILD_DIR [WORLD_TXT]]   (run.sh --scale calls it)
 #
 # WORLD_TXT: the whole GSHHG full resolution as lon/lat text (default ../data/world_full.txt
-# beside the checkout; never committed). Each case: stereomesh -2 -nt 1
+# beside the checkout; never committed). Each case: stereomesh -2 -nt SCALE_THREADS (default 1)
 # examples/world_ocean.geo with CoastAccuracy = ShoreSizeMin = gamma, ShoreSizeMax 100 km,
 # ShoreDistMax 300 km. The 3 km case takes about 90 s of CPU and 1 GB.
 set -euo pipefail
@@ -27,7 +27,7 @@ trap 'rm -rf "$tmp"' EXIT
 for gamma in ${SCALE_GAMMAS:-30e3 10e3 3e3}; do
   echo "scale_stages.sh: gamma $gamma" >&2
   rc=0
-  (cd "$tmp" && /usr/bin/time -f "%e %U %M" -o "$tmp/$gamma.time" "$build/stereomesh" -2 -nt 1 \
+  (cd "$tmp" && /usr/bin/time -f "%e %U %M" -o "$tmp/$gamma.time" "$build/stereomesh" -2 -nt "${SCALE_THREADS:-1}" \
      "$root/examples/world_ocean.geo" -setstring CoastFile "$coast" -setnumber CoastAccuracy "$gamma" \
      -setnumber ShoreSizeMin "$gamma" -setnumber ShoreSizeMax 100e3 -setnumber ShoreDistMax 300e3 \
      -o "$tmp/w.msh" > "$tmp/$gamma.log" 2>&1) || rc=$?

@@ -246,6 +246,7 @@ namespace {
 // warnings at the option statement they name (else at `use`), each once.
 field::BuildContext interp_build_context(Interpreter& in, const CurveMeshNodes* mesh_nodes, SourceRange use) {
   field::BuildContext ctx = kernel_build_context(in.kernel(), mesh_nodes);
+  ctx.threads = static_cast<int>(in.options().number("General.NumThreads"));
   Interpreter* interp = &in;
   ctx.compat_note = [interp, use](int id, std::string_view option, const std::string& sentence) {
     KernelState& k = interp->kernel();

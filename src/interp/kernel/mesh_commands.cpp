@@ -52,6 +52,10 @@ Mesh1dOptions mesh1d_options(Interpreter& in, const field::SizeField* background
   opt.min_curve_nodes = static_cast<int>(o.number("Mesh.MinimumCurveNodes"));
   opt.min_circle_nodes = static_cast<int>(o.number("Mesh.MinimumCircleNodes"));
   opt.smooth_ratio = o.number("Mesh.SmoothRatio");
+  // Threads over curves: Mesh.MaxNumThreads1D, else General.NumThreads (0: the
+  // hardware's); the 1D mesh is the same for any count.
+  const int threads_1d = static_cast<int>(o.number("Mesh.MaxNumThreads1D"));
+  opt.threads = threads_1d > 0 ? threads_1d : static_cast<int>(o.number("General.NumThreads"));
   opt.progress = progress_sink(in);
   return opt;
 }
@@ -276,7 +280,7 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   // Statistics against the size each face's mesher aimed at (with the extension from
   // the boundary where it is on).
   std::optional<StageScope> stage_stats(std::in_place, &k.clock, progress_sink(in), "statistics");
-  MeshStats st = mesh_stats(*mesh, r2.target_sizes);
+  MeshStats st = mesh_stats(*mesh, r2.target_sizes, static_cast<int>(in.options().number("General.NumThreads")));
   // The worst triangle's place in longitude/latitude when its surface is on a sphere.
   if (const geo::ModelSurface* ws = st.min_rho_surface ? k.model.surface(st.min_rho_surface) : nullptr)
     if (const geo::SurfaceGeometry* g = ws->geometry ? k.model.geometry(ws->geometry) : nullptr) {
@@ -396,6 +400,7 @@ std::string save_mesh(Interpreter& in, const std::string& path, const std::strin
   settings.save_parametric = o.number("Mesh.SaveParametric") != 0;
   const double version = f->msh_file_version != 0 ? f->msh_file_version : o.number("Mesh.MshFileVersion");
   settings.msh_version = version < 3 ? 22 : 41;
+  settings.threads = static_cast<int>(o.number("General.NumThreads"));
   std::string error;
   const StageScope stage(&in.kernel().clock, progress_sink(in), "writing");
   return f->write(mm, settings, path, &error) ? std::string{} : error;

@@ -103,6 +103,7 @@ field::FieldPtr with_channel_sizes(Interpreter& in, field::FieldPtr background) 
   opts.elements_across = n;
   opts.size_min = std::max(o.number("Mesh.MeshSizeMin"), gamma_floor < field::kMaxLc ? gamma_floor : 0.0);
   opts.size_max = o.number("Mesh.MeshSizeMax");
+  opts.threads = static_cast<int>(o.number("General.NumThreads"));
   auto channels = field::make_channel_width_field(std::move(*chains), opts);
   return field::min_on_entities(std::move(background), std::move(channels), std::move(curves), std::move(surfaces));
 }
