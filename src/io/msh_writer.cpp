@@ -519,7 +519,7 @@ bool save_msh_files(const std::vector<const MeshModel*>& meshes, const MshOption
       *error = files[i].error();
       return false;
     }
-    Out o(&files[i]);
+    Out o(&files[i], opt.threads);
     write_all(o, *meshes[i], opt);
     if (!o.finish()) {
       *error = files[i].error();
