@@ -65,10 +65,13 @@ MeshStats compute_stats(const ModelMesh& mesh, const std::vector<const SizeAt3*>
     ++index;
     // The qualities on `threads` threads, then summed in triangle order as one thread
     // would (the same mean to the last bit for any count).
-    rhos.resize(sf.triangles.size());
-    parallel_for_chunks(threads, sf.triangles.size(), kRhoChunk, [&](std::size_t begin, std::size_t end) {
+    // (A named reference: a lambda may not capture a structured binding before C++20's
+    // P1091 in clang 15.)
+    const auto& triangles = sf.triangles;
+    rhos.resize(triangles.size());
+    parallel_for_chunks(threads, triangles.size(), kRhoChunk, [&](std::size_t begin, std::size_t end) {
       for (std::size_t k = begin; k < end; ++k) {
-        const auto& t = sf.triangles[k];
+        const auto& t = triangles[k];
         rhos[k] = rho(mesh.nodes[t[0]].xyz, mesh.nodes[t[1]].xyz, mesh.nodes[t[2]].xyz);
       }
     });

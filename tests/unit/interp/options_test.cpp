@@ -63,7 +63,9 @@ TEST_CASE("options: the table has unique names and every alias resolves") {
   std::sort(names.begin(), names.end());
   CHECK(std::adjacent_find(names.begin(), names.end()) == names.end());
   Options o;
-  for (const auto& [alias, canon] : Options::aliases()) {
+  for (const auto& pair : Options::aliases()) {
+    const auto& alias = pair.first;
+    const auto& canon = pair.second;
     CAPTURE(alias);
     REQUIRE(o.find(canon) != nullptr);
     CHECK(o.find(alias) == o.find(canon));
