@@ -10,12 +10,7 @@
 namespace sm::io {
 
 DualGraph dual_graph_2d(const MeshModel& mesh) {
-  std::vector<std::size_t> order(mesh.entities.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    const EntityMesh &ea = mesh.entities[a], &eb = mesh.entities[b];
-    return std::tie(ea.dim, ea.tag) < std::tie(eb.dim, eb.tag);
-  });
+  const std::vector<std::size_t> order = entity_order(mesh);
   DualGraph g;
   struct Side {
     std::uint32_t lo, hi, element;

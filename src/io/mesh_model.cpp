@@ -2,6 +2,7 @@
 #include "io/mesh_model.h"
 
 #include <algorithm>
+#include <numeric>
 #include <utility>
 
 #include <fmt/format.h>
@@ -60,6 +61,16 @@ std::string validate_mesh_model(const MeshModel& m) {
       if (owner[n] == kNoOwner) return fmt::format("node {} is used by an element but owned by no entity", n);
     }
   return {};
+}
+
+std::vector<std::size_t> entity_order(const MeshModel& m) {
+  std::vector<std::size_t> order(m.entities.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const EntityMesh &ea = m.entities[a], &eb = m.entities[b];
+    return ea.dim != eb.dim ? ea.dim < eb.dim : ea.tag < eb.tag;
+  });
+  return order;
 }
 
 }  // namespace sm::io

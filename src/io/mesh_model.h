@@ -55,4 +55,8 @@ struct MeshModel {
 /// when valid, else what is wrong; writers refuse invalid models.
 std::string validate_mesh_model(const MeshModel& mesh);
 
+/// The indices of mesh.entities by increasing (dim, tag): the order every writer and
+/// the partitioning go through them in (the tags are unique in a valid model).
+std::vector<std::size_t> entity_order(const MeshModel& mesh);
+
 }  // namespace sm::io

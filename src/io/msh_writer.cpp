@@ -104,12 +104,7 @@ struct Plan {
 
 Plan make_plan(const MeshModel& m, const MshOptions& opt) {
   Plan p;
-  p.order.resize(m.entities.size());
-  std::iota(p.order.begin(), p.order.end(), std::size_t{0});
-  std::sort(p.order.begin(), p.order.end(), [&](std::size_t a, std::size_t b) {
-    const EntityMesh &ea = m.entities[a], &eb = m.entities[b];
-    return ea.dim != eb.dim ? ea.dim < eb.dim : ea.tag < eb.tag;
-  });
+  p.order = entity_order(m);
   for (const EntityMesh& e : m.entities) p.has_physicals |= !e.physical_tags.empty();
   p.saved.resize(m.entities.size());
   // A partition's interface curves and points (io/partitioned_model.h) are written with

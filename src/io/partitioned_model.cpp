@@ -13,22 +13,12 @@
 namespace sm::io {
 namespace {
 
-std::vector<std::size_t> dim_tag_order(const MeshModel& m) {
-  std::vector<std::size_t> order(m.entities.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    const EntityMesh &ea = m.entities[a], &eb = m.entities[b];
-    return std::tie(ea.dim, ea.tag) < std::tie(eb.dim, eb.tag);
-  });
-  return order;
-}
-
 // The partitioned entities' nodes: each used node goes to the first of them, in (dim,
 // tag) order, with an element using it; the model's own entities keep only the nodes no
 // element uses.
 void classify_nodes(MeshModel& m) {
   std::vector<char> owned(m.xyz.size(), 0);
-  for (std::size_t i : dim_tag_order(m)) {
+  for (std::size_t i : entity_order(m)) {
     EntityMesh& e = m.entities[i];
     if (e.partitions.empty()) continue;
     e.nodes.clear();
@@ -187,7 +177,7 @@ MeshModel partitioned_model(const MeshModel& mesh, const MeshPartition& partitio
   out.xyz = mesh.xyz;
   out.physicals = mesh.physicals;
   out.num_partitions = partition.parts;
-  const std::vector<std::size_t> order = dim_tag_order(mesh);
+  const std::vector<std::size_t> order = entity_order(mesh);
   int next_tag[4] = {1, 1, 1, 1};
   for (const EntityMesh& e : mesh.entities) {
     const int d = std::clamp(e.dim, 0, 3);

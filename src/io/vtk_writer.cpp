@@ -42,12 +42,7 @@ Selection select(const MeshModel& m, const VtkOptions& opt) {
     has_physicals |= !e.physical_tags.empty();
     if (!e.connectivity.empty()) top = std::max(top, e.dim);
   }
-  std::vector<std::size_t> order(m.entities.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    const EntityMesh &ea = m.entities[a], &eb = m.entities[b];
-    return ea.dim != eb.dim ? ea.dim < eb.dim : ea.tag < eb.tag;
-  });
+  const std::vector<std::size_t> order = entity_order(m);
   std::vector<char> used(m.xyz.size(), 0);
   for (std::size_t i : order) {
     const EntityMesh& e = m.entities[i];
