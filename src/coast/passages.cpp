@@ -324,34 +324,37 @@ std::vector<double> ring_metres(const FlatLoop& f, double radius) {
   return cum;
 }
 
-// Drops a new piece of water (counter-clockwise) that is all narrow; logs it.
+// What becomes of a new loop: kept, or dropped as degenerate (fewer than 3 points or no
+// area) or as water (counter-clockwise) all narrower than the width.
+enum class Fate { Kept, Degenerate, Narrow };
+Fate fate_of(const Work& w, const FlatLoop& f, double* mean_width = nullptr) {
+  if (f.kept.size() < 3 || ring_orientation(polygon(f)) == Sign::Zero) return Fate::Degenerate;
+  if (f.hole) return Fate::Kept;
+  const double mw = mean_width_m(f, w.opt.radius);
+  if (mean_width) *mean_width = mw;
+  return w.opt.min_width > 0 && mw < w.opt.min_width ? Fate::Narrow : Fate::Kept;
+}
+
+// Drops a new loop that fate_of drops; logs narrow water.
 void drop_if_narrow(Work& w, std::uint32_t l, std::vector<RepairEntry>& log) {
   FlatLoop& f = w.flat[l];
-  if (f.kept.size() < 3 || ring_orientation(polygon(f)) == Sign::Zero) {
-    f.kill();
-    return;
-  }
-  if (f.hole) return;
-  const double mw = mean_width_m(f, w.opt.radius);
-  if (w.opt.min_width > 0 && mw < w.opt.min_width) {
+  double mw = 0;
+  const Fate fate = fate_of(w, f, &mw);
+  if (fate == Fate::Narrow) {
     const Node& n0 = f.nodes[f.kept[0]];
     const DamInfo info = n0.src < w.n_curves ? DamInfo{w.curves[n0.src].record, w.curves[n0.src].id}
                                              : w.dams[n0.src - w.n_curves];
     log.push_back({RepairKind::NarrowWater, info.record, info.id, n0.ll, mw});
-    f.kill();
   }
+  if (fate != Fate::Kept) f.kill();
 }
 
 // Whether the 2-opt at kept segments ja and jb of loop l leaves a piece that
-// drop_if_narrow removes (a degenerate piece, or water all narrower than the width): a
-// dead end filled rather than a passage cut in two.
+// drop_if_narrow removes: a dead end filled rather than a passage cut in two.
 bool cut_fills_dead_end(const Work& w, std::uint32_t l, std::size_t ja, std::size_t jb) {
   auto [first, second] = split_at(w.flat[l], ja, jb);
-  for (auto* part : {&first, &second}) {
-    const FlatLoop f = make_loop(std::move(*part));
-    if (f.kept.size() < 3 || ring_orientation(polygon(f)) == Sign::Zero) return true;
-    if (!f.hole && mean_width_m(f, w.opt.radius) < w.opt.min_width) return true;
-  }
+  for (auto* part : {&first, &second})
+    if (fate_of(w, make_loop(std::move(*part))) != Fate::Kept) return true;
   return false;
 }
 
@@ -440,18 +443,16 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
     const Vec2 b0 = pb[c.sb], b1 = pb[(c.sb + 1) % pb.size()];
     // Its segments where they are now: as found, or in the loops a cut made this round
     // (where the one-ring test is made again, as the next round would).
-    std::uint32_t la = c.la, sa = c.sa, lb = c.lb, sb = c.sb;
-    if (w.flat[la].dead || w.flat[lb].dead) {
-      const auto fa = moved.find(w.flat, a0, a1), fb = moved.find(w.flat, b0, b1);
-      const auto here = [&](std::uint32_t l, std::uint32_t j) {
-        return std::optional<std::pair<std::uint32_t, std::uint32_t>>{{l, j}};
-      };
-      const auto ra = w.flat[la].dead ? fa : here(la, sa), rb = w.flat[lb].dead ? fb : here(lb, sb);
-      if (!ra || !rb) continue;
-      std::tie(la, sa) = *ra;
-      std::tie(lb, sb) = *rb;
-      if (la == lb && (sa == sb || !passage_on_one_ring(la, sa, sb, c.width))) continue;
-    }
+    const auto where = [&](std::uint32_t l, std::uint32_t j, Vec2 s0, Vec2 s1) {
+      return w.flat[l].dead ? moved.find(w.flat, s0, s1)
+                            : std::optional<std::pair<std::uint32_t, std::uint32_t>>{{l, j}};
+    };
+    const auto ra = where(c.la, c.sa, a0, a1), rb = where(c.lb, c.sb, b0, b1);
+    if (!ra || !rb) continue;
+    const auto [la, sa] = *ra;
+    const auto [lb, sb] = *rb;
+    const bool followed = w.flat[c.la].dead || w.flat[c.lb].dead;
+    if (followed && la == lb && (sa == sb || !passage_on_one_ring(la, sa, sb, c.width))) continue;
     if (w.opt.keep_passages && la != lb) continue;   // a strait between two coasts
     if (!cut_is_clean_near(near, a0, a1, b0, b1, made)) continue;
     if (w.opt.keep_passages && !cut_fills_dead_end(w, la, sa, sb)) continue;   // a passage
