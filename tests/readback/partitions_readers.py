@@ -14,33 +14,24 @@ Exit 0: all checks hold; 1: a check failed (each is printed); 77: a reader is mi
 import collections
 import json
 import os
-import subprocess
 import sys
 import tempfile
 
-from readback import HERE, check, finish  # exits 77 when a reader is missing
+from readback import check, finish, reader, run_script  # exits 77 when a reader is missing
 import gmsh
 import netCDF4
 import numpy as np
 
-try:
-    import meshio
-except ImportError as e:  # the CI installs it (.ci/deps)
-    print(f"skipped: {e}")
-    sys.exit(77)
+meshio = reader("meshio")
 
 PARTS = 4
 FILES = ["gulf.msh", "gulf_bin.msh", "gulf.vtk", "gulf.nc"] + [f"split_{k}.msh" for k in range(1, PARTS + 1)]
 
 
 def run(stereomesh, out_dir, threads):
-    stats = os.path.join(out_dir, "stats.json")
-    r = subprocess.run([stereomesh, "-0", "-nt", str(threads), os.path.join(HERE, "partitions_gulf.geo"),
-                        "-setstring", "OutDir", out_dir, "--stats", stats], capture_output=True, text=True)
-    if r.returncode != 0:
-        print(r.stdout, r.stderr)
-    check(r.returncode == 0, f"stereomesh -nt {threads} ran")
-    return r.returncode == 0
+    return run_script(stereomesh, "partitions_gulf.geo", out_dir,
+                      extra=["-nt", str(threads), "--stats", os.path.join(out_dir, "stats.json")],
+                      what=f"stereomesh -nt {threads} ran")
 
 
 def triangles_by_part(path):

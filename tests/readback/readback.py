@@ -1,6 +1,7 @@
 """What the read-back checks share: the readers (a missing one skips the check with exit
 77), a check() that prints each result, running stereomesh on a script of this folder with
 OutDir set, and the exit status."""
+import importlib
 import os
 import subprocess
 import sys
@@ -23,14 +24,25 @@ def check(ok, what):
         failures.append(what)
 
 
-def run_script(stereomesh, script, out_dir):
-    """stereomesh -0 SCRIPT -setstring OutDir OUT_DIR; False (a failed check) if it fails."""
-    run = subprocess.run([stereomesh, "-0", os.path.join(HERE, script), "-setstring", "OutDir", out_dir],
+def run_script(stereomesh, script, out_dir, extra=(), what=None):
+    """stereomesh -0 SCRIPT -setstring OutDir OUT_DIR [EXTRA...]; False (a failed check) if
+    it fails. With `what`, its success is a check of that name too."""
+    run = subprocess.run([stereomesh, "-0", os.path.join(HERE, script), "-setstring", "OutDir", out_dir, *extra],
                          capture_output=True, text=True)
     if run.returncode != 0:
         print(run.stdout, run.stderr)
-        check(False, "stereomesh ran")
+    if run.returncode != 0 or what:
+        check(run.returncode == 0, what or "stereomesh ran")
     return run.returncode == 0
+
+
+def reader(name):
+    """The module `name`, or exit 77 (the check is skipped) when it is not installed."""
+    try:
+        return importlib.import_module(name)
+    except ImportError as e:  # the CI installs it (.ci/deps)
+        print(f"skipped: {e}")
+        sys.exit(77)
 
 
 def finish():
