@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <utility>
 
 #include "exact/predicates.h"
@@ -57,6 +58,10 @@ double wedge_angle(const TriangleStore& m, TriId t, std::uint32_t e) {
   return sum;
 }
 
+// Where a curve edge is split, as fractions of its curve parameter from its origin: the
+// midpoint first, then points nearer the ends (split_curve_edge says why).
+constexpr double kSplitFractions[] = {0.5, 0.25, 0.75};
+
 class Floor {
  public:
   Floor(TriangleStore& m, const FloorFace& face, const QualityFloorOptions& opt)
@@ -82,7 +87,17 @@ class Floor {
   bool improve(TriId t);
   /// Splits the curve edge of s at its curve midpoint unless a triangle it makes would
   /// have rho <= must_beat (the bad triangle's: the worst never gets worse).
-  bool split_curve_edge(Side s, double must_beat);
+  bool split_curve_edge(Side s, double must_beat, std::span<const double> fractions = kSplitFractions);
+  /// A triangle alone in a corner's wedge (its two sides at a model vertex are curve
+  /// edges) with legs of unequal length: the longer one cut at the shorter one's length
+  /// from the corner. See the definition.
+  bool equalise_corner(TriId t, double must_beat);
+  /// The split of the curve edge a - b at its curve point p (either side of the chord).
+  /// Where the curve bends into the face further than the triangle there reaches (a thin
+  /// triangle on a long coast edge: p beyond its far sides, so the two halves would turn
+  /// over), those far sides are flipped first, at most kMaxFlips of them; everything is
+  /// put back when no triangle can hold p or a triangle made would be <= must_beat.
+  VertexId split_with_flips(VertexId a, VertexId b, Vec2 p, double must_beat);
   /// Whether the boundary may go from a - b (the edge of s) to a - p - b with p beyond it
   /// (outside the face there): no constrained edge near it meets a - p or p - b (but at a
   /// and b) and no vertex near it lies in the triangle a, p, b.
@@ -237,32 +252,143 @@ Side Floor::blocking_side(TriId t, Vec2 p, TriId* reached) const {
   return Side{};
 }
 
-bool Floor::split_curve_edge(Side s, double must_beat) {
+VertexId Floor::split_with_flips(VertexId a, VertexId b, Vec2 p, double must_beat) {
+  constexpr int kMaxFlips = 4;
+  // What the flips change, to put back exactly (the same triangle in the same slot: the
+  // caller holds triangle and side ids): the two slots of each flip and the out_side of
+  // their corners, saved before a slot first changes.
+  struct SavedSlot {
+    std::uint32_t slot;
+    VertexId corner[3];
+    Side twin[3];
+    std::uint8_t flags[3];
+  };
+  SavedSlot saved[2 * kMaxFlips];
+  std::pair<VertexId, Side> saved_out[6 * kMaxFlips];
+  int n_saved = 0, n_out = 0;
+  const auto save = [&](TriId t) {
+    for (int i = 0; i < n_saved; ++i)
+      if (saved[i].slot == t.value) return;
+    SavedSlot& k = saved[n_saved++];
+    k.slot = t.value;
+    for (std::uint32_t e = 0; e < 3; ++e) {
+      const Side x = side_of(t, e);
+      k.corner[e] = m_.corner[x.value], k.twin[e] = m_.twin[x.value], k.flags[e] = m_.side_flags[x.value];
+      saved_out[n_out++] = {k.corner[e], m_.out_side[k.corner[e].value]};
+    }
+  };
+  const auto put_back = [&] {
+    for (int i = 0; i < n_saved; ++i)
+      for (std::uint32_t e = 0; e < 3; ++e) {
+        const Side x = side_of(TriId{saved[i].slot}, e);
+        m_.corner[x.value] = saved[i].corner[e], m_.side_flags[x.value] = saved[i].flags[e];
+      }
+    for (int i = 0; i < n_saved; ++i)
+      for (std::uint32_t e = 0; e < 3; ++e) m_.link(side_of(TriId{saved[i].slot}, e), saved[i].twin[e]);
+    for (int i = n_out - 1; i >= 0; --i) m_.out_side[saved_out[i].first.value] = saved_out[i].second;
+  };
+  TriId kept[kMaxFlips];   // the triangle of each flip that the split leaves as it is
+  int flips = 0;
+  const Vec3 xp = face_.to_space(p);
+  for (;;) {
+    // The side of a - b whose triangle must hold p: the face's side where p is on it (a
+    // point beyond a hull edge widens the face: split_curve_edge checked the bulge).
+    Side s = m_.side_between(a, b);
+    if (!s.valid()) s = m_.side_between(b, a);
+    if (!s.valid()) break;
+    if (orient2d(m_.pos(m_.org(s)), m_.pos(m_.dest(s)), p) == Sign::Negative && m_.twin[s.value].valid())
+      s = m_.twin[s.value];
+    const VertexId x = m_.org(s), y = m_.dest(s), z = m_.apex(s);
+    // A far side p is not strictly left of: flipped (not a constraint, the quad strictly
+    // convex), so that the triangle on a - b reaches further into the face.
+    Side far;
+    if (orient2d(m_.pos(y), m_.pos(z), p) != Sign::Positive) far = next(s);
+    else if (orient2d(m_.pos(z), m_.pos(x), p) != Sign::Positive) far = prev(s);
+    if (!far.valid()) {
+      bool good = true;
+      for (const Side side : {s, m_.twin[s.value]}) {
+        if (!side.valid()) continue;
+        const Vec3 xa = x_[m_.org(side).value], xb = x_[m_.dest(side).value], xc = x_[m_.apex(side).value];
+        good = good && std::min(rho(xa, xp, xc), rho(xp, xb, xc)) > must_beat;
+      }
+      for (int i = 0; i < flips && good; ++i) good = rho3(kept[i]) > must_beat;
+      const VertexId v = good ? split_edge(m_, s, p, /*allow_constrained=*/true) : VertexId{};
+      if (!v.valid()) break;
+      for (int i = 0; i < flips; ++i) touched_.push_back(kept[i]);
+      return v;
+    }
+    if (flips == kMaxFlips || m_.constrained(far) || !m_.twin[far.value].valid()) break;
+    const Side o = m_.twin[far.value];
+    const Vec2 f0 = m_.pos(m_.org(far)), f1 = m_.pos(m_.dest(far)), c = m_.pos(m_.apex(far)), d = m_.pos(m_.apex(o));
+    if (orient2d(c, f0, d) != Sign::Positive || orient2d(d, f1, c) != Sign::Positive) break;
+    save(tri_of(far));
+    save(tri_of(o));
+    const Side made = m_.flip(far);
+    // Of the two new triangles, the one without the edge a - b.
+    const TriId t1 = tri_of(made), t2 = tri_of(m_.twin[made.value]);
+    bool t1_has_ab = false;
+    for (std::uint32_t e = 0; e < 3; ++e) {
+      const VertexId u = m_.vertex(t1, e), w = m_.vertex(t1, (e + 1) % 3);
+      t1_has_ab = t1_has_ab || (u == a && w == b) || (u == b && w == a);
+    }
+    kept[flips++] = t1_has_ab ? t2 : t1;
+  }
+  put_back();
+  return VertexId{};
+}
+
+bool Floor::split_curve_edge(Side s, double must_beat, std::span<const double> fractions) {
   if (!face_.curve_point) return false;
   const VertexId a = m_.org(s), b = m_.dest(s);
   // The curve's parameter midpoint first; where the curve bulges so far from its chord that
   // a triangle beside it would turn over (a narrow inlet's tip between two nodes), points
   // nearer the ends, which bulge less.
-  for (const double f : {0.5, 0.25, 0.75}) {
+  for (const double f : fractions) {
     const std::optional<Vec2> p = face_.curve_point(a, b, f);
     if (!p) return false;
     // The face lies left of a -> b (its triangle tri_of(s)); a point to the right widens it.
     if (orient2d(m_.pos(a), m_.pos(b), *p) == Sign::Negative && !bulge_is_clear(s, *p)) continue;
-    const Vec3 xp = face_.to_space(*p);
-    bool good = true;
-    for (const Side side : {s, m_.twin[s.value]}) {
-      if (!side.valid()) continue;
-      const Vec3 xa = x_[m_.org(side).value], xb = x_[m_.dest(side).value], xc = x_[m_.apex(side).value];
-      good = good && std::min(rho(xa, xp, xc), rho(xp, xb, xc)) > must_beat;
-    }
-    if (!good) continue;
-    const VertexId v = split_edge(m_, s, *p, /*allow_constrained=*/true);
+    const VertexId v = split_with_flips(a, b, *p, must_beat);
     if (!v.valid()) continue;
     face_.curve_split_done(a, b, v);
     ++res_.curve_splits;
     sync_space();
     touched(v);
     return true;
+  }
+  return false;
+}
+
+bool Floor::equalise_corner(TriId t, double must_beat) {
+  // In a wedge of 13 degrees, legs 1 : 2 give rho 0.09 and halving the longer leg only
+  // moves the ratio between 1 : 2 and 2 : 1, round after round, towards the corner; legs
+  // of equal length give the isoceles triangle of the wedge's angle, which reaches q when
+  // the wedge is wider than the sharp limit (narrower ones are not worked on). Wedges
+  // wider than 120 degrees are left to the other changes: their isoceles triangle is flat.
+  constexpr double kLegRatio = 1.5, kWidestWedge = 2 * kPi / 3;
+  for (std::uint32_t e = 0; e < 3; ++e) {
+    const VertexId v = m_.vertex(t, e);
+    const Side out = side_of(t, e), in = side_of(t, (e + 2) % 3);   // v -> w, u -> v
+    if (!face_.is_corner(v) || !m_.constrained(out) || !m_.constrained(in)) continue;
+    const double angle = corner_angle(m_, t, e);
+    if (!(angle > limit_ && angle < kWidestWedge)) continue;
+    const double lo = len3(out), li = len3(in);
+    const double shorter = std::min(lo, li), longer = std::max(lo, li);
+    if (!(longer > kLegRatio * shorter)) continue;
+    const Side leg = lo > li ? out : in;
+    const VertexId w = lo > li ? m_.dest(out) : m_.org(in);
+    // The curve point at `shorter` from v (in space), by bisection on the parameter.
+    const Vec3 xv = x_[v.value];
+    double f0 = 0, f1 = 1;
+    for (int i = 0; i < 40; ++i) {
+      const double f = 0.5 * (f0 + f1);
+      const std::optional<Vec2> p = face_.curve_point(v, w, f);
+      if (!p) return false;
+      (norm(face_.to_space(*p) - xv) < shorter ? f0 : f1) = f;
+    }
+    const double from_v = 0.5 * (f0 + f1);
+    const double from_org[] = {m_.org(leg) == v ? from_v : 1 - from_v};
+    if (split_curve_edge(leg, must_beat, from_org)) return true;
   }
   return false;
 }
@@ -278,6 +404,7 @@ bool Floor::improve(TriId t) {
   // With never_below_start (the second try of a face that ended worse than it started),
   // never worse than half of t nor than the worst triangle at the start.
   const double r = never_below_start_ ? std::max(0.5 * rho3(t), worst_start_) : 0.0;
+  if (equalise_corner(t, r)) return true;
   if (m_.constrained(longest) && split_curve_edge(longest, r)) return true;
   // A sliver between two coasts: its circumcentre lies far beyond them; a triangle near
   // a curve: its circumcentre may crowd the curve. Either way the curve edge is split.

@@ -6,8 +6,11 @@
 // later see the same node), an interior triangle gets its circumcentre inserted (Delaunay
 // insertion, exact predicates) unless that point lies beyond a curve edge seen from the
 // triangle or inside the diametral circle of one nearby, which is then split instead.
-// Triangles at a corner where the input curves meet at an angle too sharp for q are left
-// alone and reported.
+// A triangle alone in a corner's wedge gets legs of equal length (its longer curve edge cut
+// at the shorter one's length from the corner); a curve point beyond the far side of the
+// triangle on its edge (the curve bending into the face) is reached by flipping that side
+// first. Triangles at a corner where the input curves meet at an angle too sharp for q are
+// left alone and reported.
 #pragma once
 
 #include <cstdint>

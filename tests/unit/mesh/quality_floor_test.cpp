@@ -205,3 +205,60 @@ TEST_CASE("quality floor: a strip 0.01 wide under a face sharing its side never 
   CHECK(on.r2.quality_warnings[0].rfind("surface 2: ", 0) == 0);
   CHECK(on.r2.quality_warnings[0].find("still below Mesh.QualityFloor = 0.3") != std::string::npos);
 }
+
+TEST_CASE("quality floor: a 13-degree corner with legs 1 : 2.6 gets the isoceles triangle of its angle") {
+  // Above the sharp limit (9.5 degrees) but narrow: one triangle fills the wedge, and
+  // halving its longer leg only moves the legs' ratio between 1 : 2 and 2 : 1 (rho 0.09
+  // to 0.25) round after round towards the corner. The corner's short leg is a curve
+  // shorter than the size (one edge, 0.045), the long one the x axis at size 0.115.
+  geo::Model m;
+  const double a = 13 * 3.14159265358979 / 180, leg = 0.045;
+  qf_add_polygon(m, {{0, 0}, {1, 0}, {1, 0.5}, {leg * std::cos(a), leg * std::sin(a)}}, 0.1);
+  const QfMeshed off = qf_mesh(m, 0);
+  const QfMeshed on = qf_mesh(m, 0.3);
+  MESSAGE("13-degree corner: rho min " << off.min_rho << " -> " << on.min_rho << ", "
+                                       << on.r2.stats.floor_curve_splits << " curve splits");
+  REQUIRE(off.min_rho < 0.3);
+  CHECK(on.min_rho >= 0.3);
+  CHECK(on.r2.quality_warnings.empty());
+  CHECK(on.r2.stats.floor_curve_splits < 40);
+  CHECK(qf_conforming(on.mesh));
+}
+
+TEST_CASE("quality floor: a short open side between two coasts that bend into the face") {
+  // As where a box side cuts a coast 100 m wide (the Arctic at Vancouver Island): a side
+  // 0.01 long at the bottom, and from its ends two B-spline coasts 1 long that bend
+  // inwards. The triangle on the short side is a needle whose long side is a coast edge.
+  // (The Arctic's needle also needed a flip before its cut, which this shape does not:
+  // tests/scripts/examples/arctic_floor.geo is that case on the real coast.)
+  geo::Model m;
+  const double lc = 0.1;
+  const std::vector<Vec2> left = {{0, 0}, {0.03, 0.3}, {0.05, 0.6}, {-0.2, 1}};
+  const std::vector<Vec2> right = {{0.01, 0}, {0.06, 0.3}, {0.1, 0.6}, {0.6, 1}};
+  int tag = 1;
+  for (const Vec2& p : left) REQUIRE(m.add_point(tag++, {p.x, p.y, 0}, lc).ok());   // 1..4
+  for (const Vec2& p : right) REQUIRE(m.add_point(tag++, {p.x, p.y, 0}, lc).ok());  // 5..8
+  REQUIRE(m.add_curve(1, geo::CurveKind::Line, {1, 5}).ok());            // the short open side
+  REQUIRE(m.add_curve(2, geo::CurveKind::BSpline, {5, 6, 7, 8}).ok());   // right coast, upwards
+  REQUIRE(m.add_curve(3, geo::CurveKind::Line, {8, 4}).ok());            // the top
+  REQUIRE(m.add_curve(4, geo::CurveKind::BSpline, {4, 3, 2, 1}).ok());   // left coast, downwards
+  REQUIRE(m.add_curve_loop(1, {1, 2, 3, 4}).ok());
+  REQUIRE(m.add_plane_surface(1, {1}).ok());
+  const QfMeshed off = qf_mesh(m, 0);
+  const QfMeshed on = qf_mesh(m, 0.3);
+  MESSAGE("short open side: rho min " << off.min_rho << " -> " << on.min_rho << ", "
+                                      << on.r2.stats.floor_curve_splits << " curve splits, "
+                                      << on.r2.quality_warnings.size() << " warnings");
+  REQUIRE(off.min_rho < 0.3);
+  CHECK(on.min_rho >= 0.3);
+  CHECK(on.r2.quality_warnings.empty());
+  CHECK(qf_conforming(on.mesh));
+  // The new coast nodes lie on the B-splines themselves.
+  for (const int c : {2, 4}) {
+    const geo::ModelCurve* mc = m.curve(c);
+    for (std::size_t k = 0; k < on.mesh.curves.at(c).nodes.size(); ++k) {
+      const Vec3 x = on.mesh.nodes[on.mesh.curves.at(c).nodes[k]].xyz;
+      CHECK(norm(mc->shape->point(on.mesh.curves.at(c).t[k]) - x) <= 1e-12);
+    }
+  }
+}
