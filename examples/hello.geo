@@ -1,6 +1,6 @@
 // hello.geo: a first stereomesh script, `stereomesh -0 examples/hello.geo`.
-// Until meshing arrives it exercises the language: an Include from stdlib/,
-// DefineConstant, a macro, lists, loops and Printf. It prints where a few
+// It meshes nothing (docs/tutorial.md makes a mesh): it shows the language, an
+// Include from stdlib/, DefineConstant, a macro, lists, loops and Printf. It prints where a few
 // coastal cities land in the stereographic plane that PolarSphere uses
 // (gmsh-reference §3.1: u = -x/(r+z), v = -y/(r+z) on a sphere of radius r).
 Include "earth.geo";

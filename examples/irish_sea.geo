@@ -1,50 +1,55 @@
-// The tutorial's model (docs/tutorial.md): the Irish Sea, from nothing to a regional ocean
-// mesh with the stdlib templates. 2 km on the coasts to 15 km at 100 km from them; the
-// coastline kept at the 2 km accuracy; the box's sides are the "open" boundary.
-//   stereomesh -0 examples/irish_sea.geo          (evaluate and check)
-//   stereomesh -1 examples/irish_sea.geo -o irish_sea.msh   (1D mesh of the coasts)
+// The tutorial's model (docs/tutorial.md): the Irish Sea, from nothing to a mesh an ocean
+// model runs. This file is the tutorial's geo blocks in their order; tests/tutorial/
+// run_tutorial.py (CTest `tutorial`) checks that the two stay the same.
+//   stereomesh -0 examples/irish_sea.geo                 (evaluate and check)
+//   stereomesh -2 examples/irish_sea.geo -o irish_sea.14 (ADCIRC fort.14 with depths)
+// The Irish Sea: 2 km on the coasts to 15 km at 100 km from them (docs/tutorial.md).
 DefineConstant[ CoastSize = 2e3, FarSize = 15e3, Reach = 100e3 ];
-DefineConstant[ ShoreSizeMin = CoastSize, ShoreSizeMax = FarSize, ShoreDistMax = Reach ];
-Include "earth.geo";
+Include "earth.geo";          // found in stdlib/ through the search path
 Include "ocean_fields.geo";
-
-// 1. The Earth: a sphere of radius 6371 km, meshed in its stereographic plane.
+Include "regions.geo";
 Call EarthSphere;
 
-// 2. The coastline: GSHHG full resolution, cut to a lon/lat box, coarsened to CoastSize.
-box[] = {-7, -2.5, 51.5, 55.5};
-Field[1] = MathEval;
-Field[1].F = Sprintf("%g", CoastSize);
-Coastline[1] = LonLatText;
-Coastline[1].FileName = StrCat(GshhgDir, "gb_ireland_f.txt");
-Coastline[1].AccuracyField = 1;
-Coastline[1].Region = {box[]};
+RegionalFile = StrCat(GshhgDir, "gb_ireland_f.txt");   // GSHHG full resolution
+RegionalBox[] = {-7, -2.5, 51.5, 55.5};                 // W, E, S, N in degrees
+RegionalAccuracy = CoastSize;          // gamma: one control point about every 2 km
+RegionalMinChannelWidth = CoastSize;   // close passages narrower than that
+RegionalSeaAt[] = {-5.4, 53.35};       // keep the sea holding this point
+Call RegionalSea;
+Printf("%g sea, %g coast curves, %g open-boundary curves",
+       #RegionalSurfaces[], #RegionalCoastCurves[], #RegionalOpenCurves[]);
 
-// 3. The sea surface(s) and the physical groups a model needs.
-OceanLoops[] = Coastline{1};
-OceanLoopsPerSurface[] = Coastline{1, "LoopsPerSurface"};
-Call OceanSurfaces;
-open[] = Coastline{1, "OpenCurves"};
-coast[] = Coastline{1, "Curves"};
-coast[] -= open[];
-Physical Surface("sea") = {OceanSurfaces[]};
-Physical Curve("coast") = {coast[]};
-Physical Curve("open") = {open[]};
-
-// 4. The size field: shore proximity, measured to the coast's points (not the box's).
-ShorePoints[] = Coastline{1, "Points"};
-ShoreBox[] = box[];
+ShoreSizeMin = CoastSize;          // on the coast
+ShoreSizeMax = FarSize;            // at ShoreDistMax from it, and beyond
+ShoreDistMax = Reach;
+ShorePoints[] = RegionalShorePoints[];
+ShoreBox[] = RegionalBox[];        // the box's sides are sea, not coast
 Call ShoreProximity;
-OceanFields[] = {ShoreField};
-Call OceanSize;
 
-// 5. Check before meshing: the size mid-channel between Dublin and Holyhead.
-lon = -5.4;  lat = 53.35;
+// The tide: T sqrt(g H) / N (T the M2 period), finer where the water is shallow.
+BathyFile = StrCat(BathyDir, "etopo5_nw_europe_5min.nc");
+TidalPointsPerWaveLength = 150;
+TidalSizeMin = CoastSize;
+TidalSizeMax = FarSize;
+Call TidalWavelength;
+
+OceanFields[] = {ShoreField, TidalField};
+Call OceanSize;                    // the Min of the criteria -> Background Field
+
+lon = -5.4;  lat = 53.35;                      // mid-channel, Dublin-Holyhead
 Call LonLatToXYZ;
 h = FieldValue(SizeField, x, y, z);
-Printf("%g sea(s), %g islands, %g open-boundary curves; mid-channel size %.1f km",
-       #OceanSurfaces[], #OceanLoops[] - #OceanSurfaces[], #open[], h / Km);
+Printf("mid-channel: %.1f km, set by the %s", h / Km,
+       FieldArgmin(MinSizeField, x, y, z) == ShoreField ? "shore" : "tide");
+lon = -3.6;  lat = 53.6;                       // Liverpool Bay
+Call LonLatToXYZ;
+Printf("Liverpool Bay: %.1f km, set by the %s", FieldValue(SizeField, x, y, z) / Km,
+       FieldArgmin(MinSizeField, x, y, z) == ShoreField ? "shore" : "tide");
 Assert(h > CoastSize && h <= FarSize, "mid-channel size %g m", h);
 
-// 6. The mesh: `stereomesh -2 examples/irish_sea.geo -o irish_sea.msh`, or, in the script,
-//    Mesh 2; Save "irish_sea.msh";  (once stereomesh has Mesh 2)
+Depth = newf;
+Field[Depth] = Bathymetry;
+Field[Depth].FileName = BathyFile;
+Field[Depth].Output = "depth";     // metres, positive down
+Field[Depth].MinDepth = 5;         // the shallowest water the model runs
+Mesh.DepthField = Depth;
