@@ -215,7 +215,7 @@ LIST
   echo "  150 m, 85,322 control points, Gmsh's 1D alone took 112 s of wall time and 21 s of CPU). 15 km is"
   echo "  Figure 8's and the table's setting; 1.5 km adds the cost of 13 times the control"
   echo "  points. The paper: 18,698 / 19,514 / 17,154 triangles, 93.2% / 88.1% / 84.5% with"
-  echo "  rho > 0.9, 0.7 / 0.5 / 5.7 s (del2d / frontal / meshadapt, the Gmsh of 2008 on a 2008"
+  echo "  rho > 0.9, 0.7 / 0.5 / 5.7 s (frontal / del2d / meshadapt: the paper's panels a, b, c; the Gmsh of 2008 on a 2008"
   echo "  laptop)."
   echo
   echo "The coastline models:"
