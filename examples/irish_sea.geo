@@ -45,7 +45,7 @@ lon = -3.6;  lat = 53.6;                       // Liverpool Bay
 Call LonLatToXYZ;
 Printf("Liverpool Bay: %.1f km, set by the %s", FieldValue(SizeField, x, y, z) / Km,
        FieldArgmin(MinSizeField, x, y, z) == ShoreField ? "shore" : "tide");
-Assert(h > CoastSize && h <= FarSize, "mid-channel size %g m", h);
+Assert(h >= CoastSize && h <= FarSize, "mid-channel size %g m", h);
 
 Depth = newf;
 Field[Depth] = Bathymetry;

@@ -24,7 +24,7 @@ struct Deviation {
   std::size_t curves = 0;
 };
 
-// Runs `script` (which must Printf the open curves' tags, one per line) and measures how
+// Runs `script` (which must Printf the open curves' tags, one per line, among its output) and measures how
 // far those curves stray from the box {west, east, south, north}.
 Deviation measure(const std::string& script, const double box[4]) {
   lang::SourceManager sources;
@@ -40,8 +40,12 @@ Deviation measure(const std::string& script, const double box[4]) {
   const auto& [gtag, g] = *model.geometries().begin();
   const geo::PolarSphere sphere(g.centre(), g.radius());
   Deviation d;
-  std::istringstream tags(out.str());
-  for (int tag; tags >> tag;) {
+  // The tags are the lines that are a whole number (the script may print more).
+  std::vector<int> tag_list;
+  std::istringstream lines(out.str());
+  for (std::string line; std::getline(lines, line);)
+    if (!line.empty() && line.find_first_not_of("0123456789") == std::string::npos) tag_list.push_back(std::stoi(line));
+  for (const int tag : tag_list) {
     const geo::ModelCurve* c = model.curve(tag);
     REQUIRE(c);
     ++d.curves;
@@ -75,7 +79,7 @@ TEST_CASE("region box: the Irish Sea tutorial's open curves follow the box withi
     CAPTURE(gamma);
     const Deviation d = measure("CoastSize = " + std::to_string(gamma) + "; FarSize = 60e3" +
                                     "; Include \"irish_sea.geo\";\n"
-                                    "For i In {0 : #open[] - 1}  Printf(\"%g\", open[i]);  EndFor\n",
+                                    "For i In {0 : #RegionalOpenCurves[] - 1}  Printf(\"%g\", RegionalOpenCurves[i]);  EndFor\n",
                                 box);
     CHECK(d.curves > 0);
     MESSAGE("gamma ", gamma, " m: ", d.curves, " open curves, max deviation ", d.max_m, " m (", d.max_deg, " deg) at ", d.where.lon, " ", d.where.lat);
