@@ -102,6 +102,17 @@ struct RepairEntry {
   double value = 0;   // refined: points added; strait: width in metres
 };
 
+/// One line of the import report with its parts, so that a diagnostic listing many
+/// of them can show each briefly (its place and its figure) and count them by sort.
+struct ReportLine {
+  std::string text;        ///< the whole line, as lines() prints it
+  std::string what;        ///< the sort of change ("strait narrower than the accuracy kept open"); "" for the summaries
+  std::string figure;      ///< the figure that matters ("width 1234 m"), or ""
+  bool has_place = false;  ///< `where` is the change's place
+  geo::LonLat where;
+  bool passage = false;    ///< a closed passage, a dam or removed narrow water
+};
+
 struct ImportReport {
   CleanReport clean;
   std::vector<DroppedRing> dropped;
@@ -113,6 +124,8 @@ struct ImportReport {
   /// lines of closed passages, dams and removed narrow water go there instead.
   std::vector<std::string> lines(std::size_t max_per_kind = static_cast<std::size_t>(-1),
                                  std::vector<std::string>* passages = nullptr) const;
+  /// Every line of lines(), nothing cut, in the same order, with its parts.
+  std::vector<ReportLine> items() const;
 };
 
 struct CoastModel {
