@@ -85,29 +85,6 @@ std::vector<ReportLine> ImportReport::items() const {
   return out;
 }
 
-std::vector<std::string> ImportReport::lines(std::size_t max_per_kind, std::vector<std::string>* passages) const {
-  std::vector<std::string> out;
-  auto sink = [&](RepairKind k) -> std::vector<std::string>& { return passages && is_passage_kind(k) ? *passages : out; };
-  const std::vector<ReportLine> all = items();
-  const std::size_t summaries = all.size() - repair.size();   // the cleaning and coarsening lines come first
-  for (std::size_t i = 0; i < summaries; ++i) out.push_back(all[i].text);
-  std::vector<std::size_t> shown(16, 0), hidden(16, 0);
-  for (std::size_t i = 0; i < repair.size(); ++i) {
-    const auto kind = static_cast<std::size_t>(repair[i].kind);
-    if (shown[kind] >= max_per_kind) {
-      ++hidden[kind];
-      continue;
-    }
-    ++shown[kind];
-    sink(repair[i].kind).push_back(all[summaries + i].text);
-  }
-  for (std::size_t k = 0; k < hidden.size(); ++k)
-    if (hidden[k] > 0)
-      sink(static_cast<RepairKind>(k))
-          .push_back(fmt::format("... and {} more: {}", hidden[k], describe(static_cast<RepairKind>(k))));
-  return out;
-}
-
 namespace {
 
 bool is_water_level(int level) { return level == 2 || level == 4; }
