@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/flags.h"
 #include "io/node_coordinates.h"
 #include "io/output_format.h"
 
@@ -38,39 +39,51 @@ bool algo_number(const std::string& name, double& out) {
 }  // namespace
 
 std::string usage_text() {
-  // The -format line lists io/output_format.h's rows; its text starts at column 22.
-  return "usage: stereomesh [options] FILE.geo...\n"
-         "       stereomesh --test DIR|FILE...\n"
-         "\n"
-         "Runs Gmsh 4.8.4-compatible .geo scripts (Printf output on stdout,\n"
-         "diagnostics on stderr).\n"
-         "\n"
-         "  -0                  evaluate the scripts only, write nothing\n"
-         "  -1, -2              mesh the curves / the surfaces and write the mesh (-o FILE)\n"
-         "  --stats FILE.json   after -2 (or Mesh 2;), write the mesh statistics as JSON\n"
-         "  -o FILE             output mesh file\n"
-         "  -format NAME        " + io::output_format_help(22, 100) + "\n" +
-         "  -bin                binary output (Mesh.Binary = 1)\n"
-         "  -coords NAME        node coordinates of MSH/VTK files: xyz (3D, default), lonlat\n"
-         "                      (degrees, z = 0) or stereo (stereographic plane) (Mesh.NodeCoordinates)\n"
-         "  -setnumber NAME V   define variable NAME (wins over DefineConstant) or set option NAME\n"
-         "  -setstring NAME S   the same with a string\n"
-         "  -clmin X, -clmax X  Mesh.MeshSizeMin / Mesh.MeshSizeMax\n"
-         "  -clscale X          Mesh.MeshSizeFactor\n"
-         "  -algo NAME          meshadapt, auto, del2d, front2d\n"
-         "  -part N             partition the 2D mesh into N parts with METIS (Mesh.NbPartitions)\n"
-         "  -nt N               General.NumThreads\n"
-         "  -v N                General.Verbosity (0 silent ... 5 default, <2 hides warnings,\n"
-         "                      <4 hides the progress display and the mesh summary)\n"
-         "  -I DIR              add DIR to the Include search path\n"
-         "  --test PATH...      run the script tests under PATH (see docs/interpreter.md)\n"
-         "  --help-fields       list the size-field kinds and their options (docs/fields.md)\n"
-         "  --help, --version\n"
-         "\n"
-         "Include search order: the including file's directory, -I directories,\n"
-         "$STEREOMESH_PATH (':'-separated), the installed stdlib/.\n"
-         "Exit status: 0 success, 1 script error, 2 usage error, 3 internal error\n"
-         "(Exit n; in a script exits with n).\n";
+  // Each flag as "  SHOWN" padded to column kHelpColumn, then its help wrapped before
+  // kHelpWidth columns and continued at kHelpColumn.
+  constexpr std::size_t kHelpColumn = 22, kHelpWidth = 100;
+  std::string out =
+      "usage: stereomesh [options] FILE.geo...\n"
+      "       stereomesh --test DIR|FILE...\n"
+      "\n"
+      "Runs Gmsh 4.8.4-compatible .geo scripts (Printf output on stdout,\n"
+      "diagnostics on stderr).\n"
+      "\n";
+  for (const CliFlag& f : cli_flags()) {
+    std::string line = "  " + std::string(f.shown);
+    if (line.size() + 2 > kHelpColumn) {   // too long to share its line with the help
+      out += line + "\n";
+      line.clear();
+    }
+    line.resize(kHelpColumn, ' ');
+    std::size_t column = kHelpColumn;
+    bool first = true;
+    for (std::size_t i = 0; i < f.help.size();) {
+      const std::size_t j = std::min(f.help.find(' ', i), f.help.size());
+      const std::string_view word(f.help.data() + i, j - i);
+      i = j + 1;
+      if (word.empty()) continue;
+      if (!first && column + 1 + word.size() > kHelpWidth) {
+        out += line + "\n";
+        line.assign(kHelpColumn, ' ');
+        column = kHelpColumn;
+      } else if (!first) {
+        line += ' ';
+        ++column;
+      }
+      line += word;
+      column += word.size();
+      first = false;
+    }
+    out += line + "\n";
+  }
+  out +=
+      "\n"
+      "Include search order: the including file's directory, -I directories,\n"
+      "$STEREOMESH_PATH (':'-separated), the installed stdlib/.\n"
+      "Exit status: 0 success, 1 script error, 2 usage error, 3 internal error\n"
+      "(Exit n; in a script exits with n).\n";
+  return out;
 }
 
 ParseOutcome parse_args(const std::vector<std::string>& argv) {
@@ -96,7 +109,11 @@ ParseOutcome parse_args(const std::vector<std::string>& argv) {
       a.option_numbers.emplace_back(option_name, d);
       return true;
     };
-    if (a.test && !arg.empty() && arg[0] != '-') {
+    // Only the table's flags exist (the one exception: -IDIR, -I glued to its value).
+    const bool flag = !arg.empty() && arg[0] == '-';
+    if (flag && !find_flag(arg) && !(arg.size() > 2 && arg.rfind("-I", 0) == 0))
+      return fail(fmt::format("unknown option '{}'", arg));
+    if (a.test && !flag) {
       a.files.push_back(arg);
     } else if (arg == "--help" || arg == "-help" || arg == "-h") {
       a.help = true;
@@ -110,6 +127,8 @@ ParseOutcome parse_args(const std::vector<std::string>& argv) {
       a.mesh_dim = arg[1] - '0';
     } else if (arg == "--stats") {
       if (!value("--stats", a.stats_file)) return fail("'--stats' needs a file name");
+    } else if (arg == "--diagnostics") {
+      if (!value("--diagnostics", a.diagnostics_file)) return fail("'--diagnostics' needs a file name");
     } else if (arg == "-o") {
       if (!value("-o", a.output)) return fail("'-o' needs a file name");
     } else if (arg == "-format") {
@@ -170,8 +189,9 @@ ParseOutcome parse_args(const std::vector<std::string>& argv) {
       a.include_dirs.push_back(dir);
     } else if (arg.size() > 2 && arg.rfind("-I", 0) == 0) {
       a.include_dirs.push_back(arg.substr(2));
-    } else if (!arg.empty() && arg[0] == '-') {
-      return fail(fmt::format("unknown option '{}'", arg));
+    } else if (flag) {
+      // In the table but handled by no branch above: a flag added to flags.cpp only.
+      return fail(fmt::format("option '{}' is not implemented", arg));
     } else {
       a.files.push_back(arg);
     }

@@ -13,6 +13,7 @@ struct CliArgs {
   int mesh_dim = -1;                     ///< -0: 0, -1: 1, -2: 2; -1 when not given
   std::string output;                    ///< -o
   std::string stats_file;                ///< --stats FILE.json
+  std::string diagnostics_file;          ///< --diagnostics FILE: every diagnostic as JSON lines
   std::string format;                    ///< -format
   std::vector<std::pair<std::string, double>> set_numbers;        ///< -setnumber, in order
   std::vector<std::pair<std::string, std::string>> set_strings;   ///< -setstring

@@ -18,6 +18,7 @@
 #include "interp/kernel/mesh_commands.h"
 #include "interp/interpreter.h"
 #include "interp/script_test.h"
+#include "lang/diagnostics_json.h"
 
 namespace {
 
@@ -40,6 +41,19 @@ std::vector<std::string> split_path_list(const char* s) {
     }
   }
   return out;
+}
+
+// --diagnostics FILE: every diagnostic as a JSON line, written atomically.
+bool write_diagnostics(const sm::lang::Diagnostics& diags, const std::string& path) {
+  sm::base::OutputFile out;
+  bool ok = out.open(path);
+  for (const sm::lang::Diagnostic& d : diags.all()) {
+    if (!ok) break;
+    ok = out.write(sm::lang::diagnostic_json_line(diags.sources(), d));
+  }
+  if (ok && out.commit()) return true;
+  std::fprintf(stderr, "stereomesh: error: cannot write '%s': %s\n", path.c_str(), out.error().c_str());
+  return false;
 }
 
 int run(const std::vector<std::string>& argv) {
@@ -96,6 +110,8 @@ int run(const std::vector<std::string>& argv) {
   // stdout first and clearing the live progress line), not after the whole run.
   sm::cli::DiagnosticStream stream(diags, stderr, printf_out, stdout, &progress);
   stream.set_show_warnings([&interp] { return interp.options().number("General.Verbosity") >= 2; });
+  stream.set_list_all(
+      [&interp] { return interp.options().number("General.Verbosity") >= sm::cli::kVerbosityListAll; });
   diags.set_sink(stream);
   for (const auto& [name, v] : a.option_numbers) {
     if (auto err = interp.options().set_number(name, v); !err.empty()) {
@@ -131,7 +147,7 @@ int run(const std::vector<std::string>& argv) {
   if (!errors && !a.stats_file.empty()) {
     sm::base::OutputFile out;
     if (json.empty()) {
-      std::fprintf(stderr, "stereomesh: --stats: no 2D mesh was made (use -2 or 'Mesh 2;')\n");
+      std::fprintf(stderr, "stereomesh: --stats: no mesh was made (use -1, -2, 'Mesh 1;' or 'Mesh 2;')\n");
       errors = true;
     } else if (!out.open(a.stats_file) || !out.write(json) || !out.write("\n") || !out.commit()) {
       std::fprintf(stderr, "stereomesh: error: cannot write '%s': %s\n", a.stats_file.c_str(), out.error().c_str());
@@ -139,6 +155,9 @@ int run(const std::vector<std::string>& argv) {
     }
   }
   diags.emit_pending();
+  // Every diagnostic of the run, nothing grouped or cut, whatever the verbosity; written
+  // when the run failed too, since that is when they are wanted.
+  if (!a.diagnostics_file.empty() && !write_diagnostics(diags, a.diagnostics_file)) errors = true;
   std::cout.flush();
   if (interp.exit_request() >= 0) return interp.exit_request();
   if (errors) return kExitScriptError;

@@ -46,40 +46,42 @@ bool is_passage_kind(RepairKind k) {
   return k == RepairKind::ClosedPassage || k == RepairKind::NarrowWater || k == RepairKind::DamPlaced;
 }
 
+// The figure each kind of change is told with ("" when its place says it all).
+std::string figure_of(const RepairEntry& e) {
+  switch (e.kind) {
+    case RepairKind::NarrowStrait:
+    case RepairKind::MergedIslands:
+    case RepairKind::ClosedPassage: return fmt::format("width {:.0f} m", e.value);
+    case RepairKind::NarrowWater: return fmt::format("mean width {:.0f} m", e.value);
+    case RepairKind::DamPlaced: return fmt::format("{:.0f} m long", e.value);
+    case RepairKind::Refined:
+    case RepairKind::SplineHull: return fmt::format("{} point{}", e.value, e.value == 1 ? "" : "s");
+    default: return {};
+  }
+}
+
 }  // namespace
 
-std::vector<std::string> ImportReport::lines(std::size_t max_per_kind, std::vector<std::string>* passages) const {
-  std::vector<std::string> out;
-  auto sink = [&](RepairKind k) -> std::vector<std::string>& { return passages && is_passage_kind(k) ? *passages : out; };
-  if (!clean.entries.empty()) out.push_back("cleaning: " + clean.summary());
+std::vector<ReportLine> ImportReport::items() const {
+  std::vector<ReportLine> out;
+  if (!clean.entries.empty()) out.push_back({"cleaning: " + clean.summary(), {}, {}, false, {}, false});
   std::size_t few = 0, small = 0;
   for (const auto& d : dropped) (d.reason == DropReason::TooFewPoints ? few : small)++;
   if (few + small > 0)
-    out.push_back(fmt::format("coarsening: {} rings too small for the accuracy and {} below MinArea dropped", few, small));
-  std::vector<std::size_t> shown(16, 0), hidden(16, 0);
+    out.push_back({fmt::format("coarsening: {} rings too small for the accuracy and {} below MinArea dropped", few,
+                               small),
+                   {}, {}, false, {}, false});
   for (const auto& e : repair) {
-    const auto kind = static_cast<std::size_t>(e.kind);
-    if (shown[kind] >= max_per_kind) {
-      ++hidden[kind];
-      continue;
-    }
-    ++shown[kind];
-    const char* what = describe(e.kind);
-    sink(e.kind).push_back(fmt::format("record {} (id {}) at lon {:.5f} lat {:.5f}: {}{}", e.record, e.id, e.where.lon,
-                              e.where.lat, what,
-                              e.kind == RepairKind::NarrowStrait || e.kind == RepairKind::MergedIslands ||
-                                      e.kind == RepairKind::ClosedPassage
-                                  ? fmt::format(" (width {:.0f} m)", e.value)
-                              : e.kind == RepairKind::NarrowWater ? fmt::format(" (mean width {:.0f} m)", e.value)
-                              : e.kind == RepairKind::DamPlaced ? fmt::format(" ({:.0f} m long)", e.value)
-                              : e.kind == RepairKind::Refined || e.kind == RepairKind::SplineHull
-                                  ? fmt::format(" ({} points)", e.value)
-                                                                 : std::string()));
+    ReportLine l;
+    l.what = describe(e.kind);
+    l.figure = figure_of(e);
+    l.has_place = true;
+    l.where = e.where;
+    l.passage = is_passage_kind(e.kind);
+    l.text = fmt::format("record {} (id {}) at lon {:.5f} lat {:.5f}: {}{}", e.record, e.id, e.where.lon, e.where.lat,
+                         l.what, l.figure.empty() ? std::string() : " (" + l.figure + ")");
+    out.push_back(std::move(l));
   }
-  for (std::size_t k = 0; k < hidden.size(); ++k)
-    if (hidden[k] > 0)
-      sink(static_cast<RepairKind>(k))
-          .push_back(fmt::format("... and {} more: {}", hidden[k], describe(static_cast<RepairKind>(k))));
   return out;
 }
 

@@ -102,17 +102,26 @@ struct RepairEntry {
   double value = 0;   // refined: points added; strait: width in metres
 };
 
+/// One line of the import report with its parts, so that a diagnostic listing many
+/// of them can show each briefly (its place and its figure) and count them by sort.
+struct ReportLine {
+  std::string text;        ///< the whole line ("record 12 (id 345) at lon ... lat ...: what (figure)")
+  std::string what;        ///< the sort of change ("strait narrower than the accuracy kept open"); "" for the summaries
+  std::string figure;      ///< the figure that matters ("width 1234 m"), or ""
+  bool has_place = false;  ///< `where` is the change's place
+  geo::LonLat where;
+  bool passage = false;    ///< a closed passage, a dam or removed narrow water
+};
+
 struct ImportReport {
   CleanReport clean;
   std::vector<DroppedRing> dropped;
   std::vector<RepairEntry> repair;
   std::size_t reversed = 0, points_in = 0, points_out = 0, repair_rounds = 0;
   std::size_t count(RepairKind k) const;
-  /// Human-readable warnings, one per change; at most `max_per_kind` entries of each
-  /// repair kind, then one line saying how many more there are. With `passages`, the
-  /// lines of closed passages, dams and removed narrow water go there instead.
-  std::vector<std::string> lines(std::size_t max_per_kind = static_cast<std::size_t>(-1),
-                                 std::vector<std::string>* passages = nullptr) const;
+  /// The human-readable report, nothing cut: the cleaning and coarsening summaries,
+  /// then one line per repair entry in `repair`'s order, each with its parts.
+  std::vector<ReportLine> items() const;
 };
 
 struct CoastModel {

@@ -69,6 +69,10 @@ struct KernelState {
   /// account, mesh_commands.h); has_mesh_stats is false before.
   MeshStats mesh_stats;
   bool has_mesh_stats = false;
+  /// The 1D figures of the last `Mesh 1;` (or -1), when that was the last mesh made;
+  /// has_curve_stats and has_mesh_stats are never both true.
+  CurveStats curve_stats;
+  bool has_curve_stats = false;
   /// Where the run's wall time went (interp/stage_clock.h): the script's evaluation, the
   /// import, the field set-up by kind, 1D, 2D, the statistics, the writing. Mutable:
   /// building fields from a const state still spends time that the account charges.

@@ -86,19 +86,24 @@ Diagnostics::Handle& Diagnostics::Handle::note(SourceRange range, std::string me
   return *this;
 }
 
+Diagnostics::Handle& Diagnostics::Handle::item(DiagItem item) {
+  if (index_ != kDropped) owner_->diags_[index_].item = std::move(item);
+  return *this;
+}
+
 Diagnostics::Handle Diagnostics::report_message(SourceRange range, Diag kind, std::string message) {
   if (stopped_) return Handle(this, Handle::kDropped);
   const Severity sev = diag_info(kind).severity;
   if (sev == Severity::Error && max_errors_ != 0 && errors_ >= max_errors_) {
     stopped_ = true;
     diags_.push_back({Diag::TooManyErrors, Severity::Error, range,
-                      fmt::format(fmt::runtime(diag_info(Diag::TooManyErrors).format), errors_), {}});
+                      fmt::format(fmt::runtime(diag_info(Diag::TooManyErrors).format), errors_), {}, {}});
     ++errors_;
     return Handle(this, Handle::kDropped);
   }
   if (sev == Severity::Error) ++errors_;
   if (sev == Severity::Warning) ++warnings_;
-  diags_.push_back({kind, sev, range, std::move(message), {}});
+  diags_.push_back({kind, sev, range, std::move(message), {}, {}});
   return Handle(this, diags_.size() - 1);
 }
 
@@ -185,14 +190,12 @@ std::size_t Diagnostics::flush(std::FILE* out) {
 
 std::size_t Diagnostics::emit_pending() {
   if (!sink_) return 0;
-  const std::size_t n = diags_.size() - flushed_;
-  // The cursor moves before the call so that a sink which reports (or throws) does not
-  // see the same diagnostic twice.
-  while (flushed_ < diags_.size()) {
-    const Diagnostic d = diags_[flushed_++];  // a copy: the sink may report more
-    sink_(d);
-  }
-  return n;
+  // A copy (the sink may report more), and the cursor moved before the call, so that a
+  // sink which reports (or throws) does not see the same diagnostic twice.
+  const std::vector<Diagnostic> batch(diags_.begin() + static_cast<std::ptrdiff_t>(flushed_), diags_.end());
+  flushed_ = diags_.size();
+  if (!batch.empty()) sink_(batch);
+  return batch.size();
 }
 
 }  // namespace sm::lang

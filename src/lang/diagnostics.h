@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <functional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -39,12 +40,23 @@ struct DiagNote {
   std::string message;
 };
 
+/// The parts of a diagnostic that is one of many of its statement (a coastline import
+/// reports one per repaired place): a grouped listing shows the place and the figure and
+/// counts the diagnostics by `what`; --diagnostics FILE writes them as fields.
+struct DiagItem {
+  std::string what;         ///< the sort of thing ("strait narrower than the accuracy kept open"), or ""
+  std::string figure;       ///< the figure that matters ("width 1234 m"), or ""
+  bool has_lonlat = false;  ///< lon/lat (degrees) are the place it is about
+  double lon = 0, lat = 0;
+};
+
 struct Diagnostic {
   Diag kind = Diag::kCount;
   Severity severity = Severity::Error;
   SourceRange range;
   std::string message;  ///< formatted, without the [kebab] suffix
   std::vector<DiagNote> notes;
+  DiagItem item;
 };
 
 /// Collects diagnostics for one run. Errors are counted; after max_errors
@@ -59,6 +71,8 @@ class Diagnostics {
   class Handle {
    public:
     Handle& note(SourceRange range, std::string message);
+    /// Sets the diagnostic's place and figure (see DiagItem).
+    Handle& item(DiagItem item);
     bool dropped() const { return index_ == kDropped; }
 
    private:
@@ -104,12 +118,13 @@ class Diagnostics {
   std::size_t flush(std::FILE* out);
 
   /// Where diagnostics go as a run reports them (the CLI prints them on stderr), while
-  /// all() keeps collecting them for the --test driver and the unit tests.
-  using Sink = std::function<void(const Diagnostic&)>;
+  /// all() keeps collecting them for the --test driver and the unit tests. The sink gets
+  /// them a statement at a time, so that it can group the many of one statement.
+  using Sink = std::function<void(std::span<const Diagnostic>)>;
   void set_sink(Sink sink) { sink_ = std::move(sink); }
   /// Hands the diagnostics reported since the last flush/emit to the sink, in report
-  /// order, and returns how many; nothing without a sink. The interpreter calls it after
-  /// each statement, once the statement's notes are attached.
+  /// order and in one call, and returns how many; nothing without a sink. The
+  /// interpreter calls it after each statement, once the statement's notes are attached.
   std::size_t emit_pending();
 
  private:

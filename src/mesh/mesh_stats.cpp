@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "base/json_text.h"
 #include "base/parallel.h"
 #include "exact/triangle_rho.h"
 
@@ -201,22 +202,8 @@ std::string format_stats(const MeshStats& s) {
   return out;
 }
 
-namespace {
-
-std::string json_string(const std::string& in) {
-  std::string out = "\"";
-  for (char c : in) {
-    if (c == '"' || c == '\\') out += '\\', out += c;
-    else if (static_cast<unsigned char>(c) < 0x20) out += fmt::format("\\u{:04x}", static_cast<unsigned>(c));
-    else out += c;
-  }
-  return out + "\"";
-}
-
-// Finite numbers as the shortest round-trip text; JSON has no NaN or infinity.
-std::string json_number(double v) { return std::isfinite(v) ? fmt::format("{}", v) : "null"; }
-
-}  // namespace
+using base::json_number;
+using base::json_string;
 
 std::string stats_json(const MeshStats& s) {
   std::string out = "{";
@@ -253,28 +240,59 @@ std::string stats_json(const MeshStats& s) {
   return out;
 }
 
-CurveStats curve_stats(const ModelMesh& mesh) {
+CurveStats curve_stats(const ModelMesh& mesh, Vec3 centre, double radius) {
   CurveStats s;
   std::vector<char> on_curve(mesh.nodes.size(), 0);
-  double lo = std::numeric_limits<double>::infinity(), hi = 0;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  double chord_lo = kInf, chord_hi = 0, arc_lo = kInf, arc_hi = 0;
+  // A node is on the sphere when its distance from the centre is the radius to within
+  // what the projection's round-off leaves (relative 1e-9).
+  auto on_sphere = [&](Vec3 p) { return std::abs(norm(p - centre) - radius) <= 1e-9 * radius; };
+  bool all_on_sphere = radius > 0;
   for (const auto& [tag, c] : mesh.curves) {
     if (c.num_edges() == 0) continue;
     ++s.curves;
     s.edges += c.num_edges();
     for (std::uint32_t v : c.nodes) s.nodes += on_curve[v] ? 0 : 1, on_curve[v] = 1;
     for (std::size_t i = 0; i + 1 < c.nodes.size(); ++i) {
-      const double l = norm(mesh.nodes[c.nodes[i + 1]].xyz - mesh.nodes[c.nodes[i]].xyz);
-      lo = std::min(lo, l);
-      hi = std::max(hi, l);
+      const Vec3 a = mesh.nodes[c.nodes[i]].xyz, b = mesh.nodes[c.nodes[i + 1]].xyz;
+      const double chord = norm(b - a);
+      chord_lo = std::min(chord_lo, chord);
+      chord_hi = std::max(chord_hi, chord);
+      all_on_sphere = all_on_sphere && on_sphere(a) && on_sphere(b);
+      if (!all_on_sphere) continue;
+      const double arc = 2 * radius * std::asin(std::min(1.0, chord / (2 * radius)));
+      arc_lo = std::min(arc_lo, arc);
+      arc_hi = std::max(arc_hi, arc);
     }
   }
-  if (s.edges) s.shortest = lo, s.longest = hi;
+  if (s.edges == 0) return s;
+  // One edge off the sphere (a mixed model): chords for all, so that the figures compare.
+  s.on_sphere = all_on_sphere;
+  s.shortest = s.on_sphere ? arc_lo : chord_lo;
+  s.longest = s.on_sphere ? arc_hi : chord_hi;
   return s;
 }
 
 std::string format_curve_stats(const CurveStats& s) {
-  return fmt::format("Mesh: {} nodes, {} line elements on {} curve{}; edges from {:.6g} to {:.6g} (model units)\n",
-                     s.nodes, s.edges, s.curves, s.curves == 1 ? "" : "s", s.shortest, s.longest);
+  const std::string counts = fmt::format("Mesh: {} nodes, {} line elements on {} curve{}", s.nodes, s.edges, s.curves,
+                                         s.curves == 1 ? "" : "s");
+  if (s.on_sphere)
+    return fmt::format("{}; edges from {:.4g} km to {:.4g} km on the sphere\n", counts, s.shortest / 1000,
+                       s.longest / 1000);
+  return fmt::format("{}; edges from {:.6g} to {:.6g} (model units)\n", counts, s.shortest, s.longest);
+}
+
+std::string curve_stats_json(const CurveStats& s, const std::vector<StageTime>& stages) {
+  std::string out = fmt::format("{{\"nodes\": {}, \"line_elements\": {}, \"curves\": {}, \"edge_min\": {}, "
+                                "\"edge_max\": {}, \"edge_units\": {}",
+                                s.nodes, s.edges, s.curves, json_number(s.shortest), json_number(s.longest),
+                                json_string(s.on_sphere ? "m" : "model"));
+  out += ", \"stages\": {";
+  for (std::size_t i = 0; i < stages.size(); ++i)
+    out += fmt::format("{}{}: {}", i ? ", " : "", json_string(stages[i].name), json_number(stages[i].seconds));
+  out += "}}\n";
+  return out;
 }
 
 }  // namespace sm

@@ -65,15 +65,24 @@ MeshStats mesh_stats(const ModelMesh& mesh, const std::vector<SurfaceSize>& size
 /// A few lines for stderr.
 std::string format_stats(const MeshStats& s);
 
-/// The 1D mesh's figures (what `-1` prints): curves with mesh edges, the nodes on them, edges, and
-/// the shortest and longest edge (chord, model units).
+/// The 1D mesh's figures (what `-1` prints): curves with mesh edges, the nodes on them,
+/// edges, and the shortest and longest edge: great-circle arcs when every edge lies on
+/// the model's sphere (metres with earth.geo, as the time step's edges), else chords in
+/// model units.
 struct CurveStats {
   std::size_t curves = 0, nodes = 0, edges = 0;
   double shortest = 0, longest = 0;
+  bool on_sphere = false;   ///< the lengths are arcs on the sphere (metres)
 };
-CurveStats curve_stats(const ModelMesh& mesh);
-/// "Mesh: 1204 nodes, 1198 line elements on 106 curves; edges from 412.3 to 30112 (model units)\n"
+/// With radius > 0, an edge whose two nodes lie on the sphere (centre, radius) is
+/// measured along it.
+CurveStats curve_stats(const ModelMesh& mesh, Vec3 centre = {}, double radius = 0);
+/// "Mesh: 1204 nodes, 1198 line elements on 106 curves; edges from 412.3 to 30112 (model units)\n",
+/// or "...; edges from 8.1 km to 31.4 km on the sphere\n".
 std::string format_curve_stats(const CurveStats& s);
+/// The same figures as one JSON object: {"nodes", "line_elements", "curves",
+/// "edge_min", "edge_max", "edge_units" ("m" on the sphere, else "model"), "stages"}.
+std::string curve_stats_json(const CurveStats& s, const std::vector<StageTime>& stages);
 /// One JSON object (keys as the summary's words: nodes, triangles, rho_min, ...).
 std::string stats_json(const MeshStats& s);
 

@@ -57,6 +57,14 @@ py::dict diagnostic_dict(const lang::SourceManager& sources, const lang::Diagnos
     out["line"] = py::none();
     out["column"] = py::none();
   }
+  // One change among many of its statement (a coastline repair): its place and figure,
+  // as --diagnostics FILE writes them.
+  if (d.item.has_lonlat) {
+    out["lon"] = d.item.lon;
+    out["lat"] = d.item.lat;
+  }
+  if (!d.item.what.empty()) out["what"] = d.item.what;
+  if (!d.item.figure.empty()) out["figure"] = d.item.figure;
   return out;
 }
 

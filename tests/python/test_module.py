@@ -109,6 +109,18 @@ def test_evaluate_only_and_printf():
     assert len(m.triangles) == 0 and m.stats is None
 
 
+def test_curves_only_stats_and_repairs_with_places():
+    # dim=1: the 1D figures as -1 prints them, along the Earth's sphere; each coastline
+    # repair is a diagnostic with its lon/lat, as --diagnostics FILE writes it.
+    m = stereomesh.run(GULF, dim=1)
+    assert m.stats["line_elements"] > 100 and m.stats["edge_units"] == "m"
+    assert 0 < m.stats["edge_min"] < m.stats["edge_max"] < 100e3
+    repairs = [d for d in m.diagnostics if d["kind"] in ("coastline-repair", "coastline-passage")]
+    placed = [d for d in repairs if "what" in d]
+    assert len(placed) > 20
+    assert all(-98.01 < d["lon"] < -75.99 and 6.99 < d["lat"] < 31.01 for d in placed)
+
+
 def test_script_error_carries_the_place():
     with tempfile.TemporaryDirectory() as tmp:
         geo = os.path.join(tmp, "bad.geo")

@@ -13,6 +13,7 @@
 #include "coast/import.h"
 #include "coast/read.h"
 #include "field/registry.h"
+#include "interp/kernel/coastline_report.h"
 #include "interp/kernel/dispatch.h"
 #include "interp/kernel/field_eval.h"
 #include "interp/kernel/geometry_shapes.h"
@@ -395,18 +396,14 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
     fail_coast(in, id, d, at, e, true);
   }
   const coast::CoastModel& m = *built;
-  // Closed passages are listed whole at -v 5 (General.Verbosity >= 5), else the first 5.
-  const std::size_t passage_max = in.options().number("General.Verbosity") >= 5 ? static_cast<std::size_t>(-1) : 5;
-  std::vector<std::string> passages;
-  const std::vector<std::string> repair_lines = m.report.lines(5, &passages);
-  for (const std::string& line : repair_lines)
-    in.diags().report(at, Diag::CoastlineRepair, fmt::format("Coastline[{}]", id), line);
-  if (passage_max != 5) {
-    passages.clear();
-    m.report.lines(passage_max, &passages);
+  // Every change, each with its place and figure: the terminal groups the many of this
+  // statement (cli/diagnostic_stream.h), --diagnostics FILE keeps every one.
+  for (const coast::ReportLine& line : m.report.items()) {
+    const std::string name = fmt::format("Coastline[{}]", id);
+    auto h = line.passage ? in.diags().report(at, Diag::CoastlinePassage, fmt::format("{}: {}", name, line.text))
+                          : in.diags().report(at, Diag::CoastlineRepair, name, line.text);
+    h.item(coastline_item(line));
   }
-  for (const std::string& line : passages)
-    in.diags().report(at, Diag::CoastlinePassage, fmt::format("Coastline[{}]: {}", id, line));
   if (m.seas_dropped > 0)
     in.diags().report(d.option_at.find("SeaAt")->second, Diag::CoastlineSeasDropped,
                       fmt::format("Coastline[{}]: {} sea(s) holding no SeaAt point dropped, {} kept", id,

@@ -140,6 +140,7 @@ void publish_stats(Interpreter& in, const ModelMesh& mesh, const MeshStats& st) 
   o.set_number("Mesh.StatsTimeStep", st.time_step.valid ? st.time_step.dt : 0, true);
   in.kernel().mesh_stats = st;
   in.kernel().has_mesh_stats = true;
+  in.kernel().has_curve_stats = false;
   if (o.number("General.Verbosity") >= 4) {
     std::fflush(stdout);   // after the Printf output before it when both share a pipe
     std::fputs(format_stats(st).c_str(), stderr);
@@ -258,10 +259,21 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
                           in.options().number("Mesh.NbPartitions")),
               set_here(k, "Mesh.NbPartitions")};
     in.options().set_number("Mesh.NbNodes", static_cast<double>(mesh->nodes.size()), /*internal=*/true);
-    // -1's summary, as -2 prints the 2D statistics.
+    // -1's summary, as -2 prints the 2D statistics: edges along the model's sphere
+    // when it has one (metres with earth.geo, as the time step measures them).
+    Vec3 centre{};
+    double radius = 0;
+    for (const auto& [tag, g] : k.model.geometries()) {
+      centre = g.centre();
+      radius = g.radius();
+      break;
+    }
+    k.curve_stats = curve_stats(*mesh, centre, radius);
+    k.has_curve_stats = true;
+    k.has_mesh_stats = false;
     if (in.options().number("General.Verbosity") >= 4) {
       std::fflush(stdout);
-      std::fputs(format_curve_stats(curve_stats(*mesh)).c_str(), stderr);
+      std::fputs(format_curve_stats(k.curve_stats).c_str(), stderr);
       std::fflush(stderr);
     }
     k.mesh = std::move(mesh);
@@ -530,6 +542,7 @@ std::string finish_run(Interpreter& in, bool print_time) {
     std::fputs(format_time_line(stages).c_str(), stderr);
     std::fflush(stderr);
   }
+  if (k.has_curve_stats) return curve_stats_json(k.curve_stats, stages);
   if (!k.has_mesh_stats) return {};
   MeshStats st = k.mesh_stats;
   st.stages = stages;

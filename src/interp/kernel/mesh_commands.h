@@ -36,8 +36,9 @@ std::vector<StageTime> run_stages(Interpreter& in);
 
 /// The end of a run (after the scripts and -1/-2's meshing and writing): with
 /// `print_time`, prints the account as the `Time:` line on stderr at General.Verbosity 4;
-/// returns the last 2D mesh's statistics as JSON with the same stages ("" when no 2D
-/// mesh was made).
+/// returns the last mesh's statistics as JSON with the same stages: the 2D figures, or
+/// the 1D ones (mesh/mesh_stats.h curve_stats_json) when the last mesh was `Mesh 1;`/-1
+/// ("" when no mesh was made).
 std::string finish_run(Interpreter& in, bool print_time = true);
 
 }  // namespace sm::interp

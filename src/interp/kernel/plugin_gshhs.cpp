@@ -11,6 +11,7 @@
 
 #include "coast/gshhs_plugin_geo.h"
 #include "field/registry.h"
+#include "interp/kernel/coastline_report.h"
 #include "interp/kernel/dispatch.h"
 #include "interp/kernel/field_eval.h"
 #include "interp/interpreter.h"
@@ -103,8 +104,8 @@ void run_plugin(Interpreter& in, const Stmt& s) {
     std::filesystem::remove(opt.out_file_name, ec);
     in.fail_fmt(s.range, Diag::FileWriteError, out, ec.message());
   }
-  for (const std::string& line : res->model.report.lines(5))
-    in.diags().report(s.range, Diag::CoastlineRepair, "Plugin(GSHHS)", line);
+  for (const coast::ReportLine& line : res->model.report.items())
+    in.diags().report(s.range, Diag::CoastlineRepair, "Plugin(GSHHS)", line.text).item(coastline_item(line));
 }
 
 void exec_gshhs_plugin_stmt(Interpreter& in, StmtId id) {

@@ -15,6 +15,7 @@
 #include "cli/args.h"
 #include "io/output_format.h"
 #include "run_binary.h"
+#include "scratch_dir.h"
 
 using sm::cli::parse_args;
 
@@ -175,14 +176,18 @@ TEST_CASE("cli: exit statuses of the binary") {
         "(PolarSphere or Sphere), and this model is planar [file-write-error]\n");
   CHECK_FALSE(fs::exists(dir / "ll.msh"));
   CHECK(run_status(bin + " -2 -v 0 -coords stereo " + d + "square.geo -o " + d + "st.msh") == 0);
-  // A script error while meshing leaves no output file; --stats without a 2D mesh is an error.
+  // A script error while meshing leaves no output file; --stats without a mesh is an error.
   std::ofstream(dir / "badalgo.geo") << "Mesh.Algorithm = 7;\nPoint(1) = {0, 0, 0, 0.1}; Point(2) = {1, 0, 0, 0.1};\n"
                                         "Point(3) = {0, 1, 0, 0.1}; Line(1) = {1, 2}; Line(2) = {2, 3};\n"
                                         "Line(3) = {3, 1}; Curve Loop(1) = {1, 2, 3}; Plane Surface(1) = {1};\n";
   CHECK(run_status(bin + " -2 -v 0 " + d + "badalgo.geo -o " + d + "badalgo.msh") == 1);
   CHECK_FALSE(fs::exists(dir / "badalgo.msh"));
-  CHECK(run_status(bin + " -1 -v 0 " + d + "square.geo -o " + d + "sq1.msh --stats " + d + "s1.json") == 1);
-  CHECK_FALSE(fs::exists(dir / "s1.json"));
+  // --stats after -1 holds the 1D figures (a plane: model units); with -0 there is no mesh.
+  CHECK(run_status(bin + " -1 -v 0 " + d + "square.geo -o " + d + "sq1.msh --stats " + d + "s1.json") == 0);
+  CHECK(sm::testing::read_all(dir / "s1.json").find("\"line_elements\": ") != std::string::npos);
+  CHECK(sm::testing::read_all(dir / "s1.json").find("\"edge_units\": \"model\"") != std::string::npos);
+  CHECK(run_status(bin + " -0 -v 0 " + d + "square.geo --stats " + d + "s0.json") == 1);
+  CHECK_FALSE(fs::exists(dir / "s0.json"));
   CHECK(run_status(bin + " --bogus " + d + "ok.geo") == 2);
   CHECK(run_status(bin + " -0 -setnumber Mesh.Algoritm 5 " + d + "ok.geo") == 2);
   CHECK(run_status(bin + " --test " + d + "nowhere") == 2);

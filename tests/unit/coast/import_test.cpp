@@ -99,10 +99,18 @@ TEST_CASE("import: world intermediate at 10 km: crossings made by coarsening are
   auto m = build_coast_model(load("world_i_A100.txt"), o);
   REQUIRE_MESSAGE(m.ok(), (m.ok() ? "" : m.error().to_string()));
   CHECK(m->report.count(RepairKind::Refined) > 0);
-  CHECK_FALSE(m->report.lines().empty());
-  const auto brief = m->report.lines(3);
-  CHECK(brief.size() < m->report.lines().size());
-  CHECK(brief.back().rfind("... and ", 0) == 0);
+  // One line per repair (each with its place and figure) after the summaries.
+  const auto items = m->report.items();
+  REQUIRE(items.size() > m->report.repair.size());
+  const std::size_t summaries = items.size() - m->report.repair.size();
+  for (std::size_t i = 0; i < m->report.repair.size(); ++i) {
+    const ReportLine& l = items[summaries + i];
+    CHECK(l.has_place);
+    CHECK(l.where.lon == m->report.repair[i].where.lon);
+    CHECK_FALSE(l.what.empty());
+    CHECK(l.text.find(l.what) != std::string::npos);
+    if (m->report.repair[i].kind == RepairKind::Refined) CHECK(l.figure.find(" point") != std::string::npos);
+  }
   check_model(*m);
 }
 
@@ -260,5 +268,7 @@ TEST_CASE("import: the same input gives the same model, bit for bit") {
     REQUIRE(a->curves[i].uv.size() == b->curves[i].uv.size());
     for (std::size_t k = 0; k < a->curves[i].uv.size(); ++k) CHECK(a->curves[i].uv[k] == b->curves[i].uv[k]);
   }
-  CHECK(a->report.lines() == b->report.lines());
+  const auto ia = a->report.items(), ib = b->report.items();
+  REQUIRE(ia.size() == ib.size());
+  for (std::size_t i = 0; i < ia.size(); ++i) CHECK(ia[i].text == ib[i].text);
 }

@@ -119,3 +119,34 @@ TEST_CASE("curve_stats: the 1D summary of -1 (curves with edges, nodes, shortest
   CHECK(s.longest == 3.0);
   CHECK(format_curve_stats(s) == "Mesh: 5 nodes, 4 line elements on 2 curves; edges from 1 to 3 (model units)\n");
 }
+
+TEST_CASE("curve_stats: on the model's sphere the edges are great-circle arcs, in km; JSON for --stats") {
+  const double r = 6371e3, pi = std::acos(-1.0);
+  ModelMesh m;
+  // A quarter of the equator in 2 edges of 45 degrees, and one of 10 degrees along a meridian.
+  for (double deg : {0.0, 45.0, 90.0}) m.add_node({r * std::cos(deg * pi / 180), r * std::sin(deg * pi / 180), 0});
+  m.add_node({r * std::cos(10 * pi / 180), 0, r * std::sin(10 * pi / 180)});
+  CurveMesh a;
+  a.tag = 1, a.nodes = {0, 1, 2};
+  CurveMesh b;
+  b.tag = 2, b.nodes = {0, 3};
+  m.curves[1] = a, m.curves[2] = b;
+  const CurveStats s = curve_stats(m, Vec3{0, 0, 0}, r);
+  CHECK(s.on_sphere);
+  CHECK(s.shortest == doctest::Approx(r * 10 * pi / 180).epsilon(1e-12));
+  CHECK(s.longest == doctest::Approx(r * 45 * pi / 180).epsilon(1e-12));
+  // 5003.8 km along the sphere where the chord is 4876 km.
+  CHECK(format_curve_stats(s) == "Mesh: 4 nodes, 3 line elements on 2 curves; edges from 1112 km to 5004 km on the sphere\n");
+  const std::string json = curve_stats_json(s, {{"1D", 0.5}});
+  CHECK(json.find("\"nodes\": 4, \"line_elements\": 3, \"curves\": 2, \"edge_min\": ") == 1);
+  CHECK(json.find("\"edge_units\": \"m\", \"stages\": {\"1D\": 0.5}}") != std::string::npos);
+  // A node off the sphere: chords in model units for every edge.
+  m.add_node({0, 0, 0});
+  CurveMesh c;
+  c.tag = 3, c.nodes = {3, 4};
+  m.curves[3] = c;
+  const CurveStats mixed = curve_stats(m, Vec3{0, 0, 0}, r);
+  CHECK_FALSE(mixed.on_sphere);
+  CHECK(mixed.longest == doctest::Approx(r));
+  CHECK(format_curve_stats(mixed).find("(model units)") != std::string::npos);
+}

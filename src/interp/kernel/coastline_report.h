@@ -1,0 +1,13 @@
+// A coastline import's report line (coast/import.h) as the parts of a diagnostic, shared
+// by Coastline{} and Plugin(GSHHS), which report one diagnostic per line.
+#pragma once
+
+#include "coast/import.h"
+#include "lang/diagnostics.h"
+
+namespace sm::interp {
+
+/// The sort of change, its figure and its lon/lat, for lang::Diagnostics::Handle::item.
+lang::DiagItem coastline_item(const coast::ReportLine& line);
+
+}  // namespace sm::interp
