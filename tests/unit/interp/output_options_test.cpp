@@ -147,3 +147,24 @@ TEST_CASE("output options: Mesh.PictureBox zooms, is read back, and refuses boxe
     CHECK(e.rendered.find("[invalid-option-value]") != std::string::npos);
   }
 }
+
+TEST_CASE("output options: Mesh.PictureColour 3 colours by the Min's input that sets the size, named") {
+  // Two criteria in a Min: FineField (smaller for x < 0.4) and CoarseField. The legend names
+  // both, through the Min behind the mesher's checked background field.
+  const std::string svg = std::filesystem::temp_directory_path() / ("sm_oo_crit_" + std::to_string(::getpid()) + ".svg");
+  const auto r = run_script(
+      "Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {1, 1, 0}; Point(4) = {0, 1, 0};\n"
+      "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};\n"
+      "Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};\n"
+      "CoarseField = 1; FineField = 2;\n"
+      "Field[1] = MathEval; Field[1].F = \"0.1\";\n"
+      "Field[2] = MathEval; Field[2].F = \"0.02 + 0.2 * x\";\n"
+      "Field[3] = Min; Field[3].FieldsList = {1, 2}; Background Field = 3;\n"
+      "Mesh 2; Mesh.PictureColour = 3; Save \"" + svg + "\";\n");
+  INFO(r.rendered);
+  REQUIRE(r.ok);
+  const std::string text = sm::testing::read_all(svg);
+  CHECK(text.find(">CoarseField: Field[1] (MathEval)</text>") != std::string::npos);
+  CHECK(text.find(">FineField: Field[2] (MathEval)</text>") != std::string::npos);
+  std::filesystem::remove(svg);
+}
