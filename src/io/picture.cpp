@@ -260,6 +260,7 @@ Scene build_scene(const MeshModel& m, const PictureOptions& opt) {
   if (opt.colour == PictureColour::NodeValue && !opt.node_values.empty()) {
     const auto [lo, hi] = std::minmax_element(opt.node_values.begin(), opt.node_values.end());
     vmin = *lo, vmax = *hi > *lo ? *hi : *lo + 1;
+    if (opt.colour_max > opt.colour_min) vmin = opt.colour_min, vmax = opt.colour_max;
   }
   auto mean_edge = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
     return (norm(m.xyz[b] - m.xyz[a]) + norm(m.xyz[c] - m.xyz[b]) + norm(m.xyz[a] - m.xyz[c])) / 3;
@@ -320,6 +321,7 @@ Scene build_scene(const MeshModel& m, const PictureOptions& opt) {
       const double l = mean_edge(d.v[0], d.v[1], d.v[2]);
       if (l > 0) lo = std::min(lo, l), hi = std::max(hi, l);
     }
+    if (opt.colour_max > opt.colour_min && opt.colour_min > 0) lo = 1000 * opt.colour_min, hi = 1000 * opt.colour_max;
     if (hi > 0) log_lo = std::log(lo), log_span = hi > lo ? std::log(hi / lo) : 1, size_lo = lo, size_hi = hi;
   }
   if (opt.draw_triangles) {
@@ -492,8 +494,15 @@ Scene build_scene(const MeshModel& m, const PictureOptions& opt) {
       for (int j = 0; j <= 180; ++j) g.p.push_back(px(proj.view_of(lon_lo + (lon_hi - lon_lo) * j / 180, v)));
       sc.graticule.push_back(std::move(g));
     }
-    // Each label where its line first enters the map, nudged inside.
+    // Each label where its line first enters the map, nudged inside; one that would
+    // overlap a label already placed is left out (parallels crowd near a pole).
     const double lf = 0.8 * font;
+    std::vector<std::array<double, 4>> placed;   // x0, y0, x1, y1
+    auto overlaps = [&](const std::array<double, 4>& r) {
+      return std::any_of(placed.begin(), placed.end(), [&](const std::array<double, 4>& o) {
+        return r[0] < o[2] && o[0] < r[2] && r[1] < o[3] && o[1] < r[3];
+      });
+    };
     for (const Scene::GridLine& g : sc.graticule) {
       const std::string text = g.meridian ? lon_label(g.value) : lat_label(g.value);
       for (const Vec2& q : g.p) {
@@ -504,7 +513,11 @@ Scene build_scene(const MeshModel& m, const PictureOptions& opt) {
         const double left = sc.map.lo.x + 0.2 * lf, top = sc.map.lo.y + lf;
         const Vec2 at{std::clamp(q.x + 0.25 * lf, left, std::max(left, sc.map.hi.x - w)),
                       std::clamp(q.y - 0.3 * lf, top, std::max(top, sc.map.hi.y - 0.3 * lf))};
-        sc.map_labels.push_back({at, text, lf, Scene::Anchor::Start, kTextColour, true});
+        const std::array<double, 4> rect{at.x - 0.2 * lf, at.y - lf, at.x + w + 0.2 * lf, at.y + 0.3 * lf};
+        if (!overlaps(rect)) {
+          placed.push_back(rect);
+          sc.map_labels.push_back({at, text, lf, Scene::Anchor::Start, kTextColour, true});
+        }
         break;
       }
     }

@@ -49,6 +49,9 @@ struct PictureOptions {
   /// Category: the legend's text per value ("12 ShoreField (Threshold)"); values not
   /// listed are named by their number.
   std::vector<std::pair<double, std::string>> category_names;
+  /// Size (km) and NodeValue: the values at the colour bar's ends, for pictures compared
+  /// side by side; values beyond are drawn in the end colours. 0, 0: the drawn range.
+  double colour_min = 0, colour_max = 0;
   std::optional<PictureBox> box;    // the zoom; none: the whole mesh
   int worst = 0;                    // this many lowest-rho triangles drawn are circled
   double width_px = 1600;

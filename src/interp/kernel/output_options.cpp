@@ -119,6 +119,14 @@ std::string picture_options(Interpreter& in, const io::MeshModel& mm, io::Pictur
   }
   po.worst = static_cast<int>(in.options().number("Mesh.PictureWorst"));
   po.draw_points = in.options().number("Mesh.PicturePoints") != 0;
+  po.colour_min = in.options().number("Mesh.PictureColourMin");
+  po.colour_max = in.options().number("Mesh.PictureColourMax");
+  if ((po.colour_min != 0 || po.colour_max != 0) && !(po.colour_max > po.colour_min))
+    return fmt::format("Mesh.PictureColourMin = {:g} must be below Mesh.PictureColourMax = {:g}", po.colour_min,
+                       po.colour_max);
+  if (colour == 2 && po.colour_max > po.colour_min && !(po.colour_min > 0))
+    return fmt::format("Mesh.PictureColourMin = {:g}: a size scale is logarithmic, give a size above 0 km",
+                       po.colour_min);
   po.save_all = in.options().number("Mesh.SaveAll") != 0;
   po.width_px = in.options().number("Mesh.PictureWidth");
   if (!(po.width_px >= 16 && po.width_px <= io::kMaxPicturePx))

@@ -173,6 +173,12 @@ TEST_CASE("picture: the colour bar's title and range") {
   CHECK(s.bar_title == "size: mean edge length (km, log scale)");
   CHECK(s.bar_min == doctest::Approx(lo / 1000));
   CHECK(s.bar_max == doctest::Approx(hi / 1000));
+  // A fixed range, as for two pictures compared side by side.
+  opt.colour_min = 20, opt.colour_max = 200;
+  const Scene fixed = build_scene(m, opt);
+  CHECK(fixed.bar_min == 20);
+  CHECK(fixed.bar_max == 200);
+  opt.colour_min = opt.colour_max = 0;
   // A node field: its own range and title.
   opt.colour = PictureColour::NodeValue;
   opt.node_values.assign(m.xyz.size(), 0);
