@@ -575,7 +575,7 @@ Scene build_scene(const MeshModel& m, const PictureOptions& opt) {
     double left = pad, bottom = top;
     if (bar_colour) {
       const double bar_w = std::min(0.45 * sc.width - pad, 22 * font), bar_h = font;
-      const double bar_y = top + 1.3 * font;
+      const double bar_y = top + 1.5 * font;
       sc.texts.push_back({{pad, top + font}, sc.bar_title, font, Scene::Anchor::Start, kTextColour, false});
       constexpr int kCells = 64;
       for (int i = 0; i < kCells; ++i)
