@@ -109,6 +109,10 @@ std::string png_to_string(const Scene& sc, std::string* error) {
     }
   }
   if (!sc.graticule.empty()) {
+    // A faint solid line of the background colour under the dashes (as the SVG's halo).
+    cairo_set_line_width(cr, 3 * sc.graticule_width);
+    cairo_set_source_rgba(cr, sc.background.r / 255.0, sc.background.g / 255.0, sc.background.b / 255.0, 0.6);
+    for (const Scene::GridLine& g : sc.graticule) polyline(cr, g.p);
     cairo_set_line_width(cr, sc.graticule_width);
     const double dash[2] = {4 * sc.graticule_width, 3 * sc.graticule_width};
     cairo_set_dash(cr, dash, 2, 0);

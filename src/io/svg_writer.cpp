@@ -72,6 +72,13 @@ std::string svg_to_string(const Scene& sc) {
     out += "</g>\n";
   }
   if (!sc.graticule.empty()) {
+    // Under the dashes a faint solid line of the background colour, so that the graticule
+    // reads on a dense dark mesh as on land.
+    out += fmt::format("<g id=\"graticule-halo\" fill=\"none\" stroke=\"{}\" stroke-width=\"{:.3f}\" "
+                       "stroke-opacity=\"0.6\">\n",
+                       hex(sc.background), 3 * sc.graticule_width);
+    for (const Scene::GridLine& g : sc.graticule) out += fmt::format("<polyline points=\"{}\"/>\n", points(g.p));
+    out += "</g>\n";
     out += fmt::format("<g id=\"graticule\" fill=\"none\" stroke=\"{}\" stroke-width=\"{:.3f}\" "
                        "stroke-dasharray=\"{:.2f} {:.2f}\">\n",
                        hex(sc.graticule_colour), sc.graticule_width, 4 * sc.graticule_width, 3 * sc.graticule_width);
