@@ -52,6 +52,10 @@ Value Interpreter::read_option(const OptionRef& o) {
       const Color& c = options_.color(info->name);
       return Value::list({c[0], c[1], c[2], c[3]});
     }
+    case OptionKind::Box: {
+      const LonLatBox& b = options_.box(info->name);
+      return Value::list({b[0], b[1], b[2], b[3]});
+    }
   }
   return Value();
 }
@@ -117,6 +121,16 @@ void Interpreter::assign_option(const LValue& t, AffOp op, ExprId value, SourceR
         std::copy(rgba.begin(), rgba.end(), c.begin());
       }
       err = options_.set_color(name, c);
+      break;
+    }
+    case OptionKind::Box: {
+      if (op != AffOp::Assign)
+        fail_fmt(r, Diag::InvalidOperation, fmt::format("box option '{}' only takes '='", name));
+      const std::vector<double> v = eval_numbers(value);
+      if (v.size() != 4)
+        fail_fmt(vr, Diag::InvalidOptionValue,
+                 fmt::format("'{}' is a box {{west, east, south, north}} in degrees, found {} numbers", name, v.size()));
+      err = options_.set_box(name, {v[0], v[1], v[2], v[3]});
       break;
     }
   }

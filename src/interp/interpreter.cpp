@@ -2,6 +2,7 @@
 // Call/Include stack, and the hang-prevention counters (limits.h).
 #include "interp/interpreter.h"
 
+#include <cstdlib>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -37,10 +38,34 @@ std::string Interpreter::preset_string(const std::string& name, const std::strin
   if (name.find('.') != std::string::npos) {
     if (!options_.find(name))
       return fmt::format("unknown option '{}' (did you mean '{}'?)", name, options_.closest(name));
+    if (options_.find(name)->kind == OptionKind::Box) return preset_box(name, v);
     return options_.set_string(name, v);
   }
   symbols_.set_str(name, {v});
   return "";
+}
+
+// `-setstring Mesh.PictureBox "W,E,S,N"`: four numbers separated by commas or spaces.
+std::string Interpreter::preset_box(const std::string& name, const std::string& v) {
+  std::vector<double> numbers;
+  std::string item;
+  bool bad = false;
+  auto take = [&] {
+    if (item.empty()) return;
+    char* end = nullptr;
+    const double x = std::strtod(item.c_str(), &end);
+    bad |= end != item.c_str() + item.size();
+    numbers.push_back(x);
+    item.clear();
+  };
+  for (char c : v) {
+    if (c == ',' || c == ' ' || c == '{' || c == '}') take();
+    else item += c;
+  }
+  take();
+  if (bad || numbers.size() != 4)
+    return fmt::format("'{}' is a box: give four numbers \"west,east,south,north\" in degrees, not '{}'", name, v);
+  return options_.set_box(name, {numbers[0], numbers[1], numbers[2], numbers[3]});
 }
 
 RunStatus Interpreter::run_file(const std::string& path) {

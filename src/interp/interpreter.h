@@ -111,6 +111,7 @@ class Interpreter {
   BuiltinEnv& builtin_env() { return env_; }
 
  private:
+  std::string preset_box(const std::string& name, const std::string& v);
   RunStatus run_loaded(lang::FileId file);
   /// The end of a top-level run: Printf's files put in place, or dropped after errors.
   RunStatus finish_run(RunStatus st);

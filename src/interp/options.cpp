@@ -12,6 +12,7 @@
 
 #include "base/check.h"
 #include "interp/node_data_names.h"
+#include "io/picture.h"
 
 namespace sm::interp {
 namespace {
@@ -100,6 +101,7 @@ std::string_view kind_name(OptionKind k) {
     case OptionKind::Number: return "number";
     case OptionKind::String: return "string";
     case OptionKind::Color: return "color";
+    case OptionKind::Box: return "box {W, E, S, N}";
   }
   return "?";
 }
@@ -151,11 +153,13 @@ void Options::reset() {
   nums_.assign(t.size(), 0.0);
   strs_.assign(t.size(), std::string());
   colors_.assign(t.size(), Color{0, 0, 0, 255});
+  boxes_.assign(t.size(), LonLatBox{0, 0, 0, 0});
   for (std::size_t i = 0; i < t.size(); ++i) {
     switch (t[i].kind) {
       case OptionKind::Number: nums_[i] = std::atof(std::string(t[i].default_text).c_str()); break;
       case OptionKind::String: strs_[i] = std::string(t[i].default_text); break;
       case OptionKind::Color: colors_[i] = parse_color(t[i].default_text); break;
+      case OptionKind::Box: break;   // all 0: no box
     }
   }
 }
@@ -191,6 +195,8 @@ const std::string& Options::string(std::string_view name) const {
 const Color& Options::color(std::string_view name) const {
   return colors_[index_of(name, OptionKind::Color)];
 }
+
+const LonLatBox& Options::box(std::string_view name) const { return boxes_[index_of(name, OptionKind::Box)]; }
 
 std::string Options::set_number(std::string_view name, double v, bool internal) {
   const std::size_t i = name_index().find(name);
@@ -247,6 +253,19 @@ std::string Options::set_color(std::string_view name, const Color& c) {
   for (double x : c)
     if (!(x >= 0 && x <= 255)) return fmt::format("color components of '{}' must be in 0..255", name);
   colors_[i] = c;
+  return "";
+}
+
+std::string Options::set_box(std::string_view name, const LonLatBox& b) {
+  const std::size_t i = name_index().find(name);
+  if (i == NameIndex::kNotFound) return fmt::format("unknown option '{}'", name);
+  const OptionInfo& info = table()[i];
+  if (info.kind != OptionKind::Box) return fmt::format("option '{}' is a {}, not a box", name, kind_name(info.kind));
+  if (b != LonLatBox{0, 0, 0, 0}) {
+    io::PictureBox normalised;
+    if (std::string why = io::normalise_picture_box(b[0], b[1], b[2], b[3], &normalised); !why.empty()) return why;
+  }
+  boxes_[i] = b;
   return "";
 }
 

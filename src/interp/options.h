@@ -13,7 +13,7 @@
 
 namespace sm::interp {
 
-enum class OptionKind { Number, String, Color };
+enum class OptionKind { Number, String, Color, Box };
 
 struct OptionInfo {
   OptionKind kind;
@@ -25,6 +25,8 @@ struct OptionInfo {
 
 /// RGBA components 0..255.
 using Color = std::array<double, 4>;
+/// A lon/lat box {west, east, south, north} in degrees (Mesh.PictureBox); all 0: none.
+using LonLatBox = std::array<double, 4>;
 
 /// All option values of one run. A plain value passed in the interpreter's
 /// context: no global state, so two runs never see each other's settings.
@@ -41,6 +43,7 @@ class Options {
   double number(std::string_view name) const;
   const std::string& string(std::string_view name) const;
   const Color& color(std::string_view name) const;
+  const LonLatBox& box(std::string_view name) const;
 
   /// Setters return "" or the reason the value is refused (unknown option,
   /// wrong kind, read-only, outside the allowed set). `internal` lets the
@@ -48,6 +51,9 @@ class Options {
   std::string set_number(std::string_view name, double v, bool internal = false);
   std::string set_string(std::string_view name, std::string v, bool internal = false);
   std::string set_color(std::string_view name, const Color& c);
+  /// {W, E, S, N}, or all 0 for none; refused when it frames nothing (S >= N, a latitude
+  /// outside [-90, 90], W = E; io/picture.h's normalise_picture_box).
+  std::string set_box(std::string_view name, const LonLatBox& b);
 
   /// Back to the defaults (`Delete Options;`).
   void reset();
@@ -62,6 +68,7 @@ class Options {
   std::vector<double> nums_;
   std::vector<std::string> strs_;
   std::vector<Color> colors_;
+  std::vector<LonLatBox> boxes_;
 };
 
 /// Named colours accepted on the right of `X.Color.Y = Name;` ("Red", ...).

@@ -1,9 +1,14 @@
-// The scene of a mesh picture (see picture.h): projection, frame, colours.
+// The scene of a mesh picture (see picture.h): projection, box and frame, colours, the
+// graticule, the worst triangles, and the layout of the colour bar and legend.
 #include "io/picture.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
 
 #include "exact/triangle_rho.h"
@@ -12,23 +17,7 @@
 namespace sm::io {
 namespace {
 
-// Maps node positions into the view's plane (y up; flipped into pixels later).
-std::vector<Vec2> project(const MeshModel& m, const PictureOptions& opt) {
-  std::vector<Vec2> p(m.xyz.size());
-  const geo::PolarSphere sphere(opt.centre, opt.radius);
-  for (std::size_t i = 0; i < m.xyz.size(); ++i) {
-    switch (opt.view) {
-      case PictureView::Plane: p[i] = {m.xyz[i].x, m.xyz[i].y}; break;
-      case PictureView::LonLat: {
-        const geo::LonLat ll = sphere.to_lonlat(m.xyz[i]);
-        p[i] = {ll.lon, ll.lat};
-        break;
-      }
-      case PictureView::Stereographic: p[i] = sphere.param(m.xyz[i]); break;
-    }
-  }
-  return p;
-}
+constexpr double kEps = 1e-9;
 
 // Colour ramp for values in [0, 1]: blue (low) to red (high) through white,
 // readable in print and by most colour-blind readers.
@@ -43,104 +32,314 @@ Rgb ramp(double t) {
   return {mix(247, 165, s), mix(247, 0, s), mix(247, 38, s)};
 }
 
+// Distinct colours for categories (size criteria) and for physical curve groups other than
+// "coast" (the coastline red) and "open" (green): none close to the blue-white-red ramp's
+// middle, so that they read on any fill.
+constexpr std::array<Rgb, 8> kCategoryColours = {{{0x1b, 0x9e, 0x77}, {0xd9, 0x5f, 0x02}, {0x75, 0x70, 0xb3},
+                                                  {0xe7, 0x29, 0x8a}, {0x66, 0xa6, 0x1e}, {0xe6, 0xab, 0x02},
+                                                  {0xa6, 0x76, 0x1d}, {0x66, 0x66, 0x66}}};
+constexpr std::array<Rgb, 6> kGroupColours = {{{0xe0, 0x82, 0x14}, {0x76, 0x2a, 0x83}, {0x01, 0x66, 0x5e},
+                                               {0x00, 0x00, 0x00}, {0x8c, 0x51, 0x0a}, {0xc5, 0x1b, 0x7d}}};
+constexpr Rgb kCoastColour{0xb2, 0x18, 0x2b};
+constexpr Rgb kOpenColour{0x1a, 0x98, 0x50};
+constexpr Rgb kTextColour{0x20, 0x20, 0x20};
+constexpr Rgb kMarkColour{0x00, 0x00, 0x00};
+constexpr Rgb kPointColour{0x08, 0x30, 0x6b};
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+
+// "0.5°E", "10°W", "0°", "180°": a meridian's label, any longitude brought into (-180, 180].
+std::string lon_label(double lon) {
+  lon = std::remainder(lon, 360.0);
+  if (lon <= -180 + kEps) lon = 180;
+  const double a = std::round(std::abs(lon) * 1e6) / 1e6;
+  if (a == 0 || a == 180) return fmt::format("{:g}\u00b0", a);
+  return fmt::format("{:g}\u00b0{}", a, lon < 0 ? 'W' : 'E');
+}
+
+std::string lat_label(double lat) {
+  const double a = std::round(std::abs(lat) * 1e6) / 1e6;
+  if (a == 0) return "0\u00b0";
+  return fmt::format("{:g}\u00b0{}", a, lat < 0 ? 'S' : 'N');
+}
+
+// Text width estimate for the layout (a sans-serif font averages about 0.55 em per
+// character); UTF-8 continuation bytes do not count.
+double text_width(const std::string& s, double size) {
+  std::size_t n = 0;
+  for (unsigned char c : s) n += (c & 0xC0) != 0x80;
+  return 0.55 * size * static_cast<double>(n);
+}
+
+// Ticks for a linear scale from lo to hi: multiples of 1, 2 or 5 x 10^k, about five.
+std::vector<double> linear_ticks(double lo, double hi) {
+  std::vector<double> ticks;
+  if (!(hi > lo)) return {lo};
+  const double raw = (hi - lo) / 5;
+  const double p = std::pow(10.0, std::floor(std::log10(raw)));
+  double step = 10 * p;
+  for (double m : {1.0, 2.0, 5.0})
+    if (m * p >= raw) {
+      step = m * p;
+      break;
+    }
+  for (double v = std::ceil(lo / step - kEps) * step; v <= hi + kEps * step; v += step)
+    ticks.push_back(std::abs(v) < 1e-12 * step ? 0.0 : v);
+  return ticks;
+}
+
+// Ticks for a log scale from lo to hi (> 0): 1, 2, 5 x 10^k, only the powers of ten when
+// that gives too many; the two ends when fewer than two fall inside.
+std::vector<double> log_ticks(double lo, double hi) {
+  std::vector<double> ticks;
+  for (const std::vector<double>& mantissas : {std::vector<double>{1, 2, 5}, std::vector<double>{1}}) {
+    ticks.clear();
+    for (int k = static_cast<int>(std::floor(std::log10(lo))); k <= static_cast<int>(std::ceil(std::log10(hi))); ++k)
+      for (double m : mantissas) {
+        const double v = m * std::pow(10.0, k);
+        if (v >= lo * (1 - 1e-9) && v <= hi * (1 + 1e-9)) ticks.push_back(v);
+      }
+    if (ticks.size() <= 8) break;
+  }
+  if (ticks.size() < 2) ticks = {lo, hi};
+  return ticks;
+}
+
+// The vertices' positions in the view's plane (y up; flipped into pixels later). In lon/lat
+// a longitude is taken within 180 degrees of `lon_centre`, the middle of the box.
+struct Projection {
+  const MeshModel& m;
+  const PictureOptions& opt;
+  geo::PolarSphere sphere;
+  double lon_centre = 0;
+  std::vector<Vec2> p;       // view coordinates
+  std::vector<Vec2> ll;      // lon (near lon_centre), lat; the plane view: x, y
+
+  Projection(const MeshModel& mesh, const PictureOptions& o)
+      : m(mesh), opt(o), sphere(o.centre, o.radius), lon_centre(o.box ? 0.5 * (o.box->west + o.box->east) : 0.0) {
+    p.resize(m.xyz.size());
+    ll.resize(m.xyz.size());
+    for (std::size_t i = 0; i < m.xyz.size(); ++i) {
+      if (opt.view == PictureView::Plane) {
+        p[i] = ll[i] = {m.xyz[i].x, m.xyz[i].y};
+        continue;
+      }
+      const geo::LonLat g = sphere.to_lonlat(m.xyz[i]);
+      ll[i] = {lon_centre + std::remainder(g.lon - lon_centre, 360.0), g.lat};
+      p[i] = opt.view == PictureView::LonLat ? ll[i] : sphere.param(m.xyz[i]);
+    }
+  }
+  bool on_sphere() const { return opt.view != PictureView::Plane; }
+  // A lon/lat point in the view's plane.
+  Vec2 view_of(double lon, double lat) const {
+    if (opt.view == PictureView::Stereographic) return sphere.param_from_lonlat({lon, lat});
+    return {lon, lat};
+  }
+};
+
+// Whether the lon/lat (or plane x, y) bounding box of `q` meets the box.
+template <std::size_t N>
+bool meets_box(const PictureBox& b, const std::array<Vec2, N>& q) {
+  double x0 = q[0].x, x1 = q[0].x, y0 = q[0].y, y1 = q[0].y;
+  for (const Vec2& r : q) x0 = std::min(x0, r.x), x1 = std::max(x1, r.x), y0 = std::min(y0, r.y), y1 = std::max(y1, r.y);
+  return x1 >= b.west && x0 <= b.east && y1 >= b.south && y0 <= b.north;
+}
+
 }  // namespace
 
+std::string normalise_picture_box(double west, double east, double south, double north, PictureBox* out) {
+  for (double v : {west, east, south, north})
+    if (!std::isfinite(v)) return "Mesh.PictureBox: the box {W, E, S, N} must be finite numbers";
+  if (west < -360 || west > 360 || east < -360 || east > 360)
+    return fmt::format("Mesh.PictureBox: longitudes west {:g} and east {:g} must lie in [-360, 360]", west, east);
+  if (south < -90 || north > 90)
+    return fmt::format("Mesh.PictureBox: latitudes south {:g} and north {:g} must lie in [-90, 90]", south, north);
+  if (!(south < north))
+    return fmt::format("Mesh.PictureBox: south {:g} must be below north {:g} (the box is {{W, E, S, N}})", south,
+                       north);
+  if (west == east) return fmt::format("Mesh.PictureBox: west and east are both {:g}: the box has no width", west);
+  // W > E: the box crosses the dateline (170, -170 is 170 to 190).
+  const double e = west > east ? east + 360 : east;
+  if (e - west > 360)
+    return fmt::format("Mesh.PictureBox: from west {:g} to east {:g} is more than 360 degrees", west, east);
+  *out = {west, e, south, north};
+  return {};
+}
+
+double graticule_step(double extent) {
+  static constexpr double kSteps[] = {0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1, 2, 5, 10, 15, 30, 45, 60, 90};
+  for (double s : kSteps)
+    if (extent / s <= 6 + kEps) return s;
+  return 90;
+}
+
 Scene build_scene(const MeshModel& m, const PictureOptions& opt) {
-  const std::vector<Vec2> p = project(m, opt);
+  const Projection proj(m, opt);
+  const std::vector<Vec2>& p = proj.p;
+  const std::vector<Vec2>& ll = proj.ll;
   bool has_physicals = false;
   for (const EntityMesh& e : m.entities) has_physicals |= !e.physical_tags.empty();
   auto saved = [&](const EntityMesh& e) { return opt.save_all || !has_physicals || !e.physical_tags.empty(); };
-  std::vector<std::size_t> order(m.entities.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    const EntityMesh &ea = m.entities[a], &eb = m.entities[b];
-    return ea.dim != eb.dim ? ea.dim < eb.dim : ea.tag < eb.tag;
-  });
+  const std::vector<std::size_t> order = entity_order(m);
+  const bool lonlat = opt.view == PictureView::LonLat;
 
-  // The picture's extent: the used nodes, at most the whole longitude range in
-  // lon/lat. Model points (a PolarSphere's centre and pole, say) are not drawn
-  // and do not count: the frame is that of the drawn curves and triangles.
+  // A triangle's copies in the view: in lon/lat one across the seam (lon_centre + 180)
+  // has vertices on both sides; it is drawn shifted to either side and the frame clips it.
+  // Each copy in lon/lat (or x, y) for the box test, and the shifts it is drawn with.
+  auto unwrap = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c, std::array<Vec2, 3>& q) {
+    q = {ll[a], ll[b], ll[c]};
+    if (!proj.on_sphere()) return false;
+    const double lo = std::min({q[0].x, q[1].x, q[2].x}), hi = std::max({q[0].x, q[1].x, q[2].x});
+    if (hi - lo <= 180) return false;
+    for (Vec2& r : q)
+      if (r.x < proj.lon_centre) r.x += 360;
+    return true;
+  };
+  auto shifted = [](std::array<Vec2, 3> q, double s) {
+    for (Vec2& r : q) r.x += s;
+    return q;
+  };
+
+  // The frame in view coordinates: the box's, or that of the drawn curves and triangles (at
+  // most the whole longitude range in lon/lat). Model points (a PolarSphere's centre and
+  // pole, say) are not drawn and do not count.
   double x0 = std::numeric_limits<double>::max(), y0 = x0, x1 = -x0, y1 = -x0;
-  for (const EntityMesh& e : m.entities) {
-    if (e.type == ElementType::Point1) continue;
-    for (std::uint32_t v : e.connectivity) {
-      x0 = std::min(x0, p[v].x), x1 = std::max(x1, p[v].x);
-      y0 = std::min(y0, p[v].y), y1 = std::max(y1, p[v].y);
+  auto grow = [&](Vec2 q) {
+    if (!std::isfinite(q.x) || !std::isfinite(q.y)) return;
+    x0 = std::min(x0, q.x), x1 = std::max(x1, q.x), y0 = std::min(y0, q.y), y1 = std::max(y1, q.y);
+  };
+  if (opt.box && opt.view != PictureView::Stereographic) {
+    x0 = opt.box->west, x1 = opt.box->east, y0 = opt.box->south, y1 = opt.box->north;
+  } else if (opt.box) {
+    // The box's image: a grid over it (the pole of the projection excluded).
+    constexpr int kSamples = 32;
+    for (int i = 0; i <= kSamples; ++i)
+      for (int j = 0; j <= kSamples; ++j) {
+        const double lon = opt.box->west + (opt.box->east - opt.box->west) * i / kSamples;
+        const double lat = std::max(-89.0, opt.box->south + (opt.box->north - opt.box->south) * j / kSamples);
+        grow(proj.view_of(lon, lat));
+      }
+  } else {
+    for (const EntityMesh& e : m.entities) {
+      if (e.type == ElementType::Point1 || !saved(e)) continue;
+      for (std::uint32_t v : e.connectivity) grow(p[v]);
     }
+    if (lonlat) x0 = std::max(x0, -180.0), x1 = std::min(x1, 180.0);
   }
-  if (opt.view == PictureView::LonLat) x0 = std::max(x0, -180.0), x1 = std::min(x1, 180.0);
   if (!(x1 > x0)) x0 = 0, x1 = 1;
   if (!(y1 > y0)) y0 = 0, y1 = 1;
+  // A regional lon/lat frame keeps shapes at its middle latitude true.
+  const double kx = lonlat && x1 - x0 < 180 ? std::max(0.05, std::cos(0.5 * (y0 + y1) * geo::kDegToRad)) : 1.0;
+
   // A margin as wide as the coastlines, so that curves on the frame are drawn whole.
   const double curve_width = std::max(1.0, opt.width_px / 1000.0);
   const double margin = curve_width;
-  double scale = std::max(1.0, opt.width_px - 2 * margin) / (x1 - x0);
+  const double font = std::clamp(opt.width_px / 60, 9.0, 32.0);
+  double scale = std::max(1.0, opt.width_px - 2 * margin) / ((x1 - x0) * kx);
   if ((y1 - y0) * scale + 2 * margin > kMaxPicturePx) scale = (kMaxPicturePx - 2 * margin) / (y1 - y0);
 
   Scene sc;
-  sc.width = (x1 - x0) * scale + 2 * margin;
+  sc.width = (x1 - x0) * kx * scale + 2 * margin;
   sc.height = (y1 - y0) * scale + 2 * margin;
+  sc.map = {{margin, margin}, {sc.width - margin, sc.height - margin}, {}};
   sc.draw_triangles = opt.draw_triangles;
   sc.edge_width = std::max(0.15, opt.width_px / 8000.0);
   // Coastlines a few pixels wide whatever the mesh's density, so they stand out.
   sc.curve_width = curve_width;
-  auto px = [&](Vec2 q, double shift) { return Vec2{margin + (q.x + shift - x0) * scale, margin + (y1 - q.y) * scale}; };
+  sc.graticule_width = std::max(0.6, opt.width_px / 1200.0);
+  auto px = [&](Vec2 q) { return Vec2{margin + (q.x - x0) * kx * scale, margin + (y1 - q.y) * scale}; };
+  // A copy's view coordinates: in lon/lat its shifted lon/lat, else the projection.
+  auto view3 = [&](const std::array<std::uint32_t, 3>& v, const std::array<Vec2, 3>& q) {
+    return lonlat ? q : std::array<Vec2, 3>{p[v[0]], p[v[1]], p[v[2]]};
+  };
 
   double vmin = 0, vmax = 1;
   if (opt.colour == PictureColour::NodeValue && !opt.node_values.empty()) {
     const auto [lo, hi] = std::minmax_element(opt.node_values.begin(), opt.node_values.end());
     vmin = *lo, vmax = *hi > *lo ? *hi : *lo + 1;
+    if (opt.colour_max > opt.colour_min) vmin = opt.colour_min, vmax = opt.colour_max;
   }
-
   auto mean_edge = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
     return (norm(m.xyz[b] - m.xyz[a]) + norm(m.xyz[c] - m.xyz[b]) + norm(m.xyz[a] - m.xyz[c])) / 3;
   };
-  double log_lo = 0, log_span = 1;   // PictureColour::Size: log of the edge length range
-  if (opt.colour == PictureColour::Size) {
-    double lo = std::numeric_limits<double>::max(), hi = 0;
-    for (const EntityMesh& e : m.entities) {
-      if (e.type != ElementType::Triangle3 || !saved(e)) continue;
-      for (std::size_t k = 0; k + 2 < e.connectivity.size(); k += 3) {
-        const double l = mean_edge(e.connectivity[k], e.connectivity[k + 1], e.connectivity[k + 2]);
-        if (l > 0) lo = std::min(lo, l), hi = std::max(hi, l);
+  // Categories: the value most of a triangle's nodes have (the smallest of three different).
+  auto category_of = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    const double va = opt.node_values[a], vb = opt.node_values[b], vc = opt.node_values[c];
+    if (va == vb || va == vc) return va;
+    if (vb == vc) return vb;
+    return std::min({va, vb, vc});
+  };
+  const bool categories = opt.colour == PictureColour::Category && opt.node_values.size() == m.xyz.size();
+
+  // The triangles drawn: those of the saved surfaces whose lon/lat box meets the box.
+  struct Drawn {
+    std::array<std::uint32_t, 3> v;
+    std::array<Vec2, 3> px;   // the first copy drawn, for its mark
+    std::size_t first_tri = 0, copies = 0;   // its copies in sc.triangles
+  };
+  std::vector<Drawn> drawn;
+  std::map<double, std::size_t> category_index;   // value -> colour, by increasing value
+  for (std::size_t i : order) {
+    const EntityMesh& e = m.entities[i];
+    if (e.type != ElementType::Triangle3 || !saved(e)) continue;
+    for (std::size_t k = 0; k + 2 < e.connectivity.size(); k += 3) {
+      const std::array<std::uint32_t, 3> v{e.connectivity[k], e.connectivity[k + 1], e.connectivity[k + 2]};
+      std::array<Vec2, 3> q;
+      const bool wraps = unwrap(v[0], v[1], v[2], q);
+      std::array<bool, 2> keep{true, wraps};
+      for (int c = 0; c < 2; ++c)
+        if (keep[c] && opt.box) keep[c] = meets_box(*opt.box, shifted(q, c == 0 ? 0.0 : -360.0));
+      if (!keep[0] && !keep[1]) continue;
+      if (categories) category_index.emplace(category_of(v[0], v[1], v[2]), 0);
+      Drawn d{v, {}, sc.triangles.size(), 0};
+      bool first = true;
+      // In the stereographic view a triangle has one place, however it wraps in lon/lat.
+      for (int c = 0; c < (lonlat ? 2 : 1); ++c) {
+        if (lonlat && !keep[c]) continue;
+        const std::array<Vec2, 3> w = view3(v, shifted(q, c == 0 ? 0.0 : -360.0));
+        const std::array<Vec2, 3> t{px(w[0]), px(w[1]), px(w[2])};
+        if (first) d.px = t, first = false;
+        if (opt.draw_triangles) sc.triangles.push_back({t, Rgb{}}), ++d.copies;
       }
+      drawn.push_back(d);
     }
-    if (hi > 0) log_lo = std::log(lo), log_span = hi > lo ? std::log(hi / lo) : 1;
+  }
+  {
+    std::size_t n = 0;
+    for (auto& [value, index] : category_index) index = n++;
   }
 
+  // Fills, now that the ranges are known.
+  double log_lo = 0, log_span = 1;   // PictureColour::Size: log of the edge length range
+  double size_lo = 0, size_hi = 0;
+  if (opt.colour == PictureColour::Size) {
+    double lo = std::numeric_limits<double>::max(), hi = 0;
+    for (const Drawn& d : drawn) {
+      const double l = mean_edge(d.v[0], d.v[1], d.v[2]);
+      if (l > 0) lo = std::min(lo, l), hi = std::max(hi, l);
+    }
+    if (opt.colour_max > opt.colour_min && opt.colour_min > 0) lo = 1000 * opt.colour_min, hi = 1000 * opt.colour_max;
+    if (hi > 0) log_lo = std::log(lo), log_span = hi > lo ? std::log(hi / lo) : 1, size_lo = lo, size_hi = hi;
+  }
   if (opt.draw_triangles) {
-    for (std::size_t i : order) {
-      const EntityMesh& e = m.entities[i];
-      if (e.type != ElementType::Triangle3 || !saved(e)) continue;
-      for (std::size_t k = 0; k + 2 < e.connectivity.size(); k += 3) {
-        const std::uint32_t a = e.connectivity[k], b = e.connectivity[k + 1], c = e.connectivity[k + 2];
-        Rgb fill{0xdf, 0xe9, 0xf2};
-        if (opt.colour == PictureColour::Quality) {
-          fill = ramp(1 - rho(m.xyz[a], m.xyz[b], m.xyz[c]));
-        } else if (opt.colour == PictureColour::NodeValue && opt.node_values.size() == m.xyz.size()) {
-          const double v = (opt.node_values[a] + opt.node_values[b] + opt.node_values[c]) / 3;
-          fill = ramp((v - vmin) / (vmax - vmin));
-        } else if (opt.colour == PictureColour::Size) {
-          const double l = mean_edge(a, b, c);
-          fill = ramp(l > 0 ? (std::log(l) - log_lo) / log_span : 0.0);
-        }
-        // In lon/lat a triangle across the dateline has vertices on both
-        // sides: draw it shifted to either side and let the frame clip it.
-        Vec2 q[3] = {p[a], p[b], p[c]};
-        bool wraps = false;
-        if (opt.view == PictureView::LonLat) {
-          const double lo = std::min({q[0].x, q[1].x, q[2].x}), hi = std::max({q[0].x, q[1].x, q[2].x});
-          if (hi - lo > 180) {
-            wraps = true;
-            for (Vec2& r : q)
-              if (r.x < 0) r.x += 360;
-          }
-        }
-        for (int copy = 0; copy < (wraps ? 2 : 1); ++copy) {
-          const double shift = copy == 0 ? 0.0 : -360.0;
-          sc.triangles.push_back({{px(q[0], shift), px(q[1], shift), px(q[2], shift)}, fill});
-        }
+    for (const Drawn& d : drawn) {
+      const auto [a, b, c] = d.v;
+      Rgb fill{0xdf, 0xe9, 0xf2};
+      if (opt.colour == PictureColour::Quality) {
+        fill = ramp(1 - rho(m.xyz[a], m.xyz[b], m.xyz[c]));
+      } else if (opt.colour == PictureColour::NodeValue && opt.node_values.size() == m.xyz.size()) {
+        const double v = (opt.node_values[a] + opt.node_values[b] + opt.node_values[c]) / 3;
+        fill = ramp((v - vmin) / (vmax - vmin));
+      } else if (opt.colour == PictureColour::Size) {
+        const double l = mean_edge(a, b, c);
+        fill = ramp(l > 0 ? (std::log(l) - log_lo) / log_span : 0.0);
+      } else if (categories) {
+        fill = kCategoryColours[category_index.at(category_of(a, b, c)) % kCategoryColours.size()];
       }
+      for (std::size_t k = 0; k < d.copies; ++k) sc.triangles[d.first_tri + k].fill = fill;
     }
   }
 
@@ -151,28 +350,268 @@ Scene build_scene(const MeshModel& m, const PictureOptions& opt) {
     if (sum / (3.0 * static_cast<double>(sc.triangles.size())) < kMinEdgePx) sc.edge_width = 0;
   }
 
+  // Curve styles: [0] the curves of no physical group, then one per physical curve group
+  // (by tag) that has a drawn segment; an entity in several groups is drawn in its first.
+  sc.curve_styles.push_back({kCoastColour, "boundary curves"});
+  std::vector<const PhysicalGroup*> groups;
+  for (const PhysicalGroup& g : m.physicals)
+    if (g.dim == 1) groups.push_back(&g);
+  std::sort(groups.begin(), groups.end(), [](const PhysicalGroup* a, const PhysicalGroup* b) { return a->tag < b->tag; });
+  std::map<int, std::uint32_t> style_of_group;   // physical tag -> curve style
+  std::size_t next_group_colour = 0;
+  auto style_for = [&](const EntityMesh& e) -> std::uint32_t {
+    const PhysicalGroup* first = nullptr;
+    for (const PhysicalGroup* g : groups)
+      if (std::find(e.physical_tags.begin(), e.physical_tags.end(), g->tag) != e.physical_tags.end()) {
+        first = g;
+        break;
+      }
+    if (!first) return 0;
+    if (auto it = style_of_group.find(first->tag); it != style_of_group.end()) return it->second;
+    const std::string name = first->name.empty() ? fmt::format("Physical Curve {}", first->tag) : first->name;
+    Rgb colour = kGroupColours[next_group_colour % kGroupColours.size()];
+    if (lower(first->name) == "coast") colour = kCoastColour;
+    else if (lower(first->name) == "open") colour = kOpenColour;
+    else ++next_group_colour;
+    sc.curve_styles.push_back({colour, name});
+    return style_of_group[first->tag] = static_cast<std::uint32_t>(sc.curve_styles.size() - 1);
+  };
+  std::vector<bool> style_used(1, false);
   for (std::size_t i : order) {
     const EntityMesh& e = m.entities[i];
     if (e.type != ElementType::Line2 || !saved(e)) continue;
-    // Consecutive segments of a curve share nodes: emit maximal chains,
-    // breaking them where the lon/lat view wraps at the dateline.
+    // Consecutive segments of a curve share nodes: emit maximal chains, breaking them
+    // where the lon/lat view wraps at the seam and where a segment is outside the box.
     std::vector<Vec2> chain;
     std::uint32_t last = 0xFFFFFFFFu;
+    std::uint32_t style = 0xFFFFFFFFu;
     auto flush = [&] {
-      if (!chain.empty()) sc.polylines.push_back(std::move(chain));
+      if (chain.size() > 1) sc.polylines.push_back({std::move(chain), style});
       chain.clear();
     };
     for (std::size_t k = 0; k + 1 < e.connectivity.size(); k += 2) {
       const std::uint32_t a = e.connectivity[k], b = e.connectivity[k + 1];
-      const bool jump = opt.view == PictureView::LonLat && std::abs(p[a].x - p[b].x) > 180;
-      if (a != last || jump) {
-        flush();
-        if (!jump) chain.push_back(px(p[a], 0));
+      const bool seam = proj.on_sphere() && std::abs(ll[a].x - ll[b].x) > 180;
+      const bool jump = seam && lonlat;
+      bool outside = false;
+      if (opt.box && !jump) {
+        std::array<Vec2, 2> q{ll[a], ll[b]};
+        if (seam)
+          for (Vec2& r : q)
+            if (r.x < proj.lon_centre) r.x += 360;
+        outside = !meets_box(*opt.box, q) && !(seam && meets_box(*opt.box, std::array<Vec2, 2>{
+                                                                    Vec2{q[0].x - 360, q[0].y}, Vec2{q[1].x - 360, q[1].y}}));
       }
-      if (!jump) chain.push_back(px(p[b], 0));
-      last = jump ? 0xFFFFFFFFu : b;
+      if (jump || outside) {
+        flush();
+        last = 0xFFFFFFFFu;
+        continue;
+      }
+      if (style == 0xFFFFFFFFu) {
+        style = style_for(e);
+        style_used.resize(sc.curve_styles.size(), false);
+        style_used[style] = true;
+      }
+      if (a != last) {
+        flush();
+        chain.push_back(px(p[a]));
+      }
+      chain.push_back(px(p[b]));
+      last = b;
     }
     flush();
+  }
+  style_used.resize(sc.curve_styles.size(), false);
+
+  // The model points as dots (those on the sphere: a PolarSphere's centre is not), inside
+  // the box when there is one.
+  std::size_t point_count = 0;
+  if (opt.draw_points) {
+    const double r = std::max(1.5, 1.5 * curve_width);
+    for (std::size_t i : order) {
+      const EntityMesh& e = m.entities[i];
+      if (e.type != ElementType::Point1 || !saved(e)) continue;
+      for (std::uint32_t v : e.connectivity) {
+        if (proj.on_sphere() && std::abs(norm(m.xyz[v] - opt.centre) - opt.radius) > 1e-6 * opt.radius) continue;
+        if (!std::isfinite(p[v].x) || !std::isfinite(p[v].y)) continue;
+        if (opt.box && !meets_box(*opt.box, std::array<Vec2, 1>{ll[v]})) continue;
+        sc.points.push_back({px(p[v]), r, kPointColour, 0});
+        ++point_count;
+      }
+    }
+  }
+
+  // The worst triangles drawn, circled: by increasing rho, ties by drawing order.
+  if (opt.worst > 0 && !drawn.empty()) {
+    std::vector<std::pair<double, std::size_t>> by_rho(drawn.size());
+    for (std::size_t i = 0; i < drawn.size(); ++i)
+      by_rho[i] = {rho(m.xyz[drawn[i].v[0]], m.xyz[drawn[i].v[1]], m.xyz[drawn[i].v[2]]), i};
+    const std::size_t n = std::min(by_rho.size(), static_cast<std::size_t>(opt.worst));
+    std::partial_sort(by_rho.begin(), by_rho.begin() + static_cast<std::ptrdiff_t>(n), by_rho.end());
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::array<Vec2, 3>& t = drawn[by_rho[k].second].px;
+      const Vec2 c = (t[0] + t[1] + t[2]) / 3.0;
+      const double r = std::max({0.7 * font, norm(t[0] - c), norm(t[1] - c), norm(t[2] - c)}) + 2;
+      sc.marks.push_back({c, r, kMarkColour, std::max(1.0, font / 8)});
+    }
+    sc.legend.push_back(n == 1 ? fmt::format("the worst triangle (rho {:.2f})", by_rho[0].first)
+                               : fmt::format("the {} worst triangles (rho {:.2f} to {:.2f})", n, by_rho[0].first,
+                                             by_rho[n - 1].first));
+  }
+
+  // The graticule: meridians and parallels at a round step over the frame's lon/lat range
+  // (the box's; in the stereographic view without a box, that of the drawn nodes).
+  if (opt.decorations && proj.on_sphere()) {
+    double lon_lo = x0, lon_hi = x1, lat_lo = y0, lat_hi = y1;
+    if (opt.view == PictureView::Stereographic) {
+      if (opt.box) {
+        lon_lo = opt.box->west, lon_hi = opt.box->east, lat_lo = opt.box->south, lat_hi = opt.box->north;
+      } else {
+        lon_lo = lat_lo = std::numeric_limits<double>::max(), lon_hi = lat_hi = -lon_lo;
+        for (const Drawn& d : drawn)
+          for (std::uint32_t v : d.v)
+            lon_lo = std::min(lon_lo, ll[v].x), lon_hi = std::max(lon_hi, ll[v].x), lat_lo = std::min(lat_lo, ll[v].y),
+            lat_hi = std::max(lat_hi, ll[v].y);
+        if (drawn.empty()) lon_lo = -180, lon_hi = 180, lat_lo = -90, lat_hi = 90;
+        if (lon_hi - lon_lo > 180) lon_lo = -180, lon_hi = 180;
+      }
+    }
+    const bool whole_circle = lon_hi - lon_lo >= 360 - kEps;
+    const double lon_step = graticule_step(lon_hi - lon_lo), lat_step = graticule_step(lat_hi - lat_lo);
+    // In lon/lat lines on the frame's edges are the frame; in the stereographic view only the
+    // meridian at the end of a whole circle repeats the first.
+    const bool skip_edges = lonlat;
+    const double s_lo = std::max(lat_lo, -89.0), s_hi = std::min(lat_hi, 90.0);
+    for (double v = std::ceil(lon_lo / lon_step - kEps) * lon_step; v <= lon_hi + kEps; v += lon_step) {
+      if ((skip_edges && (v < lon_lo + kEps || v > lon_hi - kEps)) || (whole_circle && v > lon_hi - kEps)) continue;
+      Scene::GridLine g{{}, true, v};
+      for (int j = 0; j <= 64; ++j) g.p.push_back(px(proj.view_of(v, s_lo + (s_hi - s_lo) * j / 64)));
+      sc.graticule.push_back(std::move(g));
+    }
+    for (double v = std::ceil(lat_lo / lat_step - kEps) * lat_step; v <= lat_hi + kEps; v += lat_step) {
+      if ((skip_edges && (v < lat_lo + kEps || v > lat_hi - kEps)) || std::abs(v) >= 90 - kEps || v < -89) continue;
+      Scene::GridLine g{{}, false, v};
+      for (int j = 0; j <= 180; ++j) g.p.push_back(px(proj.view_of(lon_lo + (lon_hi - lon_lo) * j / 180, v)));
+      sc.graticule.push_back(std::move(g));
+    }
+    // Each label where its line first enters the map, nudged inside; one that would
+    // overlap a label already placed is left out (parallels crowd near a pole).
+    const double lf = 0.8 * font;
+    std::vector<std::array<double, 4>> placed;   // x0, y0, x1, y1
+    auto overlaps = [&](const std::array<double, 4>& r) {
+      return std::any_of(placed.begin(), placed.end(), [&](const std::array<double, 4>& o) {
+        return r[0] < o[2] && o[0] < r[2] && r[1] < o[3] && o[1] < r[3];
+      });
+    };
+    for (const Scene::GridLine& g : sc.graticule) {
+      const std::string text = g.meridian ? lon_label(g.value) : lat_label(g.value);
+      for (const Vec2& q : g.p) {
+        if (!(q.x >= sc.map.lo.x - kEps && q.x <= sc.map.hi.x + kEps && q.y >= sc.map.lo.y - kEps &&
+              q.y <= sc.map.hi.y + kEps))
+          continue;
+        const double w = text_width(text, lf);
+        const double left = sc.map.lo.x + 0.2 * lf, top = sc.map.lo.y + lf;
+        const Vec2 at{std::clamp(q.x + 0.25 * lf, left, std::max(left, sc.map.hi.x - w)),
+                      std::clamp(q.y - 0.3 * lf, top, std::max(top, sc.map.hi.y - 0.3 * lf))};
+        const std::array<double, 4> rect{at.x - 0.2 * lf, at.y - lf, at.x + w + 0.2 * lf, at.y + 0.3 * lf};
+        if (!overlaps(rect)) {
+          placed.push_back(rect);
+          sc.map_labels.push_back({at, text, lf, Scene::Anchor::Start, kTextColour, true});
+        }
+        break;
+      }
+    }
+  }
+
+  // The colour bar's scale.
+  std::vector<std::pair<double, std::string>> ticks;   // position 0..1 along the bar, label
+  Rgb (*bar_colour)(double) = nullptr;
+  if (opt.draw_triangles && !drawn.empty()) {
+    if (opt.colour == PictureColour::Quality) {
+      sc.bar_title = "quality rho = 2 r_in / r_circ (1: equilateral)";
+      sc.bar_min = 0, sc.bar_max = 1;
+      for (double v : {0.0, 0.2, 0.4, 0.6, 0.8, 1.0}) ticks.push_back({v, fmt::format("{:g}", v)});
+      bar_colour = [](double s) { return ramp(1 - s); };
+    } else if (opt.colour == PictureColour::Size && size_hi > 0) {
+      sc.bar_title = "size: mean edge length (km, log scale)";
+      sc.bar_min = size_lo / 1000, sc.bar_max = size_hi / 1000;
+      for (double v : log_ticks(sc.bar_min, sc.bar_max))
+        ticks.push_back({size_hi > size_lo ? std::log(v / sc.bar_min) / std::log(sc.bar_max / sc.bar_min) : 0.5,
+                         fmt::format("{:.3g}", v)});
+      bar_colour = [](double s) { return ramp(s); };
+    } else if (opt.colour == PictureColour::NodeValue && opt.node_values.size() == m.xyz.size()) {
+      sc.bar_title = opt.node_values_title.empty() ? "node value" : opt.node_values_title;
+      sc.bar_min = vmin, sc.bar_max = vmax;
+      for (double v : linear_ticks(vmin, vmax)) ticks.push_back({(v - vmin) / (vmax - vmin), fmt::format("{:.4g}", v)});
+      bar_colour = [](double s) { return ramp(s); };
+    }
+  }
+
+  // The legend's entries after the worst triangles' (pushed above): the curve groups, then
+  // the categories.
+  struct Entry {
+    enum Kind { Curve, Mark, Swatch, Dot } kind;
+    Rgb colour;
+    std::string text;
+  };
+  std::vector<Entry> entries;
+  if (!sc.marks.empty()) entries.push_back({Entry::Mark, kMarkColour, sc.legend.front()});
+  sc.legend.clear();
+  for (std::size_t s = 0; s < sc.curve_styles.size(); ++s)
+    if (style_used[s]) entries.push_back({Entry::Curve, sc.curve_styles[s].colour, sc.curve_styles[s].name});
+  if (point_count > 0) entries.push_back({Entry::Dot, kPointColour, fmt::format("{} model points", point_count)});
+  if (categories && opt.draw_triangles)
+    for (const auto& [value, index] : category_index) {
+      std::string text = fmt::format("{:g}", value);
+      for (const auto& [v, name] : opt.category_names)
+        if (v == value) text = name;
+      entries.push_back({Entry::Swatch, kCategoryColours[index % kCategoryColours.size()], text});
+    }
+  for (const Entry& e : entries) sc.legend.push_back(e.text);
+
+  // The strip below the map: the colour bar on the left, the entries flowing to its right.
+  if (opt.decorations && (bar_colour || !entries.empty())) {
+    const double pad = 0.6 * font, top = sc.height + pad;
+    double left = pad, bottom = top;
+    if (bar_colour) {
+      const double bar_w = std::min(0.45 * sc.width - pad, 22 * font), bar_h = font;
+      const double bar_y = top + 1.5 * font;
+      sc.texts.push_back({{pad, top + font}, sc.bar_title, font, Scene::Anchor::Start, kTextColour, false});
+      constexpr int kCells = 64;
+      for (int i = 0; i < kCells; ++i)
+        sc.boxes.push_back({{pad + bar_w * i / kCells, bar_y}, {pad + bar_w * (i + 1) / kCells, bar_y + bar_h},
+                            bar_colour((i + 0.5) / kCells)});
+      for (const auto& [pos, label] : ticks) {
+        const double x = pad + bar_w * pos;
+        sc.lines.push_back({{{x, bar_y + bar_h}, {x, bar_y + bar_h + 0.3 * font}}, kTextColour, 1});
+        sc.texts.push_back({{x, bar_y + bar_h + 1.3 * font}, label, 0.85 * font, Scene::Anchor::Middle, kTextColour, false});
+      }
+      sc.lines.push_back({{{pad, bar_y}, {pad + bar_w, bar_y}, {pad + bar_w, bar_y + bar_h}, {pad, bar_y + bar_h}, {pad, bar_y}},
+                          kTextColour, 1});
+      left = pad + bar_w + 2 * font;
+      bottom = bar_y + bar_h + 1.6 * font;
+    }
+    const double row_h = 1.5 * font;
+    double x = left, y = top + font;   // y: the baseline of the row
+    for (const Entry& e : entries) {
+      const double w = 2.2 * font + text_width(e.text, font) + 1.5 * font;
+      if (x > left && x + w > sc.width - pad) x = left, y += row_h;
+      const Vec2 c{x + 0.8 * font, y - 0.35 * font};
+      switch (e.kind) {
+        case Entry::Curve:
+          sc.lines.push_back({{{x, c.y}, {x + 1.6 * font, c.y}}, e.colour, std::max(2.0, 2 * curve_width)});
+          break;
+        case Entry::Mark: sc.circles.push_back({c, 0.5 * font, e.colour, std::max(1.0, font / 8)}); break;
+        case Entry::Dot: sc.circles.push_back({c, 0.3 * font, e.colour, 0}); break;
+        case Entry::Swatch:
+          sc.boxes.push_back({{x + 0.2 * font, c.y - 0.5 * font}, {x + 1.4 * font, c.y + 0.5 * font}, e.colour});
+          break;
+      }
+      sc.texts.push_back({{x + 2.0 * font, y}, e.text, font, Scene::Anchor::Start, kTextColour, false});
+      x += w;
+    }
+    if (!entries.empty()) bottom = std::max(bottom, y + 0.6 * font);
+    sc.height = std::min(kMaxPicturePx, bottom + pad);
   }
   return sc;
 }

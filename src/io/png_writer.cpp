@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "base/output_file.h"
 
@@ -25,6 +27,45 @@ cairo_status_t append_bytes(void* closure, const unsigned char* data, unsigned i
   return CAIRO_STATUS_SUCCESS;
 }
 
+void polyline(cairo_t* cr, const std::vector<Vec2>& p) {
+  if (p.empty()) return;
+  cairo_move_to(cr, p[0].x, p[0].y);
+  for (std::size_t k = 1; k < p.size(); ++k) cairo_line_to(cr, p[k].x, p[k].y);
+  cairo_stroke(cr);
+}
+
+// A circle outlined `width` wide, or a filled dot when the width is 0.
+void circle(cairo_t* cr, const Scene::Circle& c) {
+  cairo_new_sub_path(cr);
+  cairo_arc(cr, c.centre.x, c.centre.y, c.radius, 0, 6.283185307179586);
+  set_colour(cr, c.colour);
+  if (c.width > 0) {
+    cairo_set_line_width(cr, c.width);
+    cairo_stroke(cr);
+  } else {
+    cairo_fill(cr);
+  }
+}
+
+// A label at its anchor, with a halo in `halo` when asked (labels on the map).
+void text(cairo_t* cr, const Scene::Text& t, Rgb halo) {
+  cairo_set_font_size(cr, t.size);
+  cairo_text_extents_t ext;
+  cairo_text_extents(cr, t.text.c_str(), &ext);
+  double x = t.at.x;
+  if (t.anchor == Scene::Anchor::Middle) x -= ext.x_advance / 2;
+  if (t.anchor == Scene::Anchor::End) x -= ext.x_advance;
+  cairo_move_to(cr, x, t.at.y);
+  cairo_text_path(cr, t.text.c_str());
+  if (t.halo) {
+    set_colour(cr, halo);
+    cairo_set_line_width(cr, t.size / 4);
+    cairo_stroke_preserve(cr);
+  }
+  set_colour(cr, t.colour);
+  cairo_fill(cr);
+}
+
 }  // namespace
 
 std::string png_to_string(const Scene& sc, std::string* error) {
@@ -40,6 +81,11 @@ std::string png_to_string(const Scene& sc, std::string* error) {
   set_colour(cr, sc.background);
   cairo_paint(cr);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  // The map, clipped to its frame (and the coastlines' margin around it), as the SVG's clipPath.
+  cairo_save(cr);
+  cairo_rectangle(cr, sc.map.lo.x - sc.curve_width, sc.map.lo.y - sc.curve_width,
+                  sc.map.hi.x - sc.map.lo.x + 2 * sc.curve_width, sc.map.hi.y - sc.map.lo.y + 2 * sc.curve_width);
+  cairo_clip(cr);
   if (sc.draw_triangles) {
     // Each triangle is filled then outlined, in scene order, as the SVG back end
     // draws its polygons, so both pictures look alike.
@@ -62,15 +108,41 @@ std::string png_to_string(const Scene& sc, std::string* error) {
       }
     }
   }
+  if (!sc.graticule.empty()) {
+    // A faint solid line of the background colour under the dashes (as the SVG's halo).
+    cairo_set_line_width(cr, 3 * sc.graticule_width);
+    cairo_set_source_rgba(cr, sc.background.r / 255.0, sc.background.g / 255.0, sc.background.b / 255.0, 0.6);
+    for (const Scene::GridLine& g : sc.graticule) polyline(cr, g.p);
+    cairo_set_line_width(cr, sc.graticule_width);
+    const double dash[2] = {4 * sc.graticule_width, 3 * sc.graticule_width};
+    cairo_set_dash(cr, dash, 2, 0);
+    set_colour(cr, sc.graticule_colour);
+    for (const Scene::GridLine& g : sc.graticule) polyline(cr, g.p);
+    cairo_set_dash(cr, nullptr, 0, 0);
+  }
   cairo_set_line_width(cr, sc.curve_width);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
-  set_colour(cr, sc.curve);
-  for (const std::vector<Vec2>& line : sc.polylines) {
-    if (line.empty()) continue;
-    cairo_move_to(cr, line[0].x, line[0].y);
-    for (std::size_t k = 1; k < line.size(); ++k) cairo_line_to(cr, line[k].x, line[k].y);
-    cairo_stroke(cr);
+  for (const Scene::Curve& c : sc.polylines) {
+    set_colour(cr, sc.curve_styles[c.style].colour);
+    polyline(cr, c.p);
   }
+  for (const Scene::Circle& c : sc.points) circle(cr, c);
+  for (const Scene::Circle& c : sc.marks) circle(cr, c);
+  cairo_restore(cr);
+  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  for (const Scene::Text& t : sc.map_labels) text(cr, t, sc.background);
+  for (const Scene::Box& b : sc.boxes) {
+    cairo_rectangle(cr, b.lo.x, b.lo.y, b.hi.x - b.lo.x, b.hi.y - b.lo.y);
+    set_colour(cr, b.fill);
+    cairo_fill(cr);
+  }
+  for (const Scene::Line& l : sc.lines) {
+    cairo_set_line_width(cr, l.width);
+    set_colour(cr, l.colour);
+    polyline(cr, l.p);
+  }
+  for (const Scene::Circle& c : sc.circles) circle(cr, c);
+  for (const Scene::Text& t : sc.texts) text(cr, t, sc.background);
   cairo_surface_flush(surface.get());
   std::string bytes;
   const cairo_status_t st = cairo_surface_write_to_png_stream(surface.get(), append_bytes, &bytes);

@@ -400,7 +400,7 @@ std::string save_mesh(Interpreter& in, const std::string& path, const std::strin
       if (std::string why = ocean_grid_options(in, path, mm, settings.ocean); !why.empty()) return why;
       break;
     case io::OutputInput::Picture:
-      if (std::string why = picture_options(in, settings.picture); !why.empty()) return why;
+      if (std::string why = picture_options(in, mm, settings.picture); !why.empty()) return why;
       break;
     case io::OutputInput::Mesh:
       if (std::string why = apply_node_coordinates(in, mm); !why.empty()) return why;

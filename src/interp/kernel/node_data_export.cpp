@@ -65,7 +65,11 @@ std::string node_data_named(Interpreter& in, const io::MeshModel& mm, const std:
       if (std::string w = sizes(); !w.empty()) return w;
       std::vector<int> which(n, -1);
       std::vector<double> h(n);
-      const bool is_min = base && field::eval_argmin(*base, nullptr, mm.xyz, h, which);
+      // The Min itself, not the mesher's checked wrapper of it (background_size_field),
+      // which hides its inputs from eval_argmin.
+      const field::FieldPtr min =
+          base ? built_fields(in, *k.background_field, k.background_field_at).shared(*k.background_field) : nullptr;
+      const bool is_min = min && field::eval_argmin(*min, nullptr, mm.xyz, h, which);
       const int whole = base && k.background_field ? *k.background_field : -1;
       for (std::size_t i = 0; i < n; ++i) {
         // The coast's channel width is inside the Min only where it is smaller.

@@ -5,8 +5,11 @@
 
 #include <cmath>
 #include <optional>
+#include <set>
+#include <string_view>
 
 #include "interp/interpreter.h"
+#include "interp/kernel/node_data_export.h"
 #include "io/node_coordinates.h"
 
 namespace sm::interp {
@@ -30,6 +33,38 @@ std::optional<io::SphereFrame> model_sphere(const geo::Model& model, std::string
   return frame;
 }
 
+// The legend's names of the size criteria found at the nodes: 0 the coast's channel width,
+// -1 none, else the field's id and kind, after the script's variables naming it (those
+// ending in "Field", as stdlib/ocean_fields.geo's ShoreField, WaveField, HessianField).
+std::vector<std::pair<double, std::string>> criterion_names(Interpreter& in, const std::vector<double>& values) {
+  std::set<double> seen(values.begin(), values.end());
+  std::vector<std::pair<double, std::string>> names;
+  const field::FieldSet& fields = in.kernel().fields;
+  for (double v : seen) {
+    if (v == 0) {
+      names.push_back({v, "channel width (Mesh.ElementsAcrossChannels)"});
+      continue;
+    }
+    if (v < 0) {
+      names.push_back({v, "no size criterion"});
+      continue;
+    }
+    const int id = static_cast<int>(v);
+    std::string vars;
+    for (const auto& [name, sym] : in.symbols().nums()) {
+      constexpr std::string_view kSuffix = "Field";
+      if (sym.is_list || sym.values.size() != 1 || sym.values[0] != v || name.size() <= kSuffix.size() ||
+          name.compare(name.size() - kSuffix.size(), kSuffix.size(), kSuffix) != 0)
+        continue;
+      vars += (vars.empty() ? "" : "/") + name;
+    }
+    const std::string kind = fields.contains(id) ? fields.options(id).kind().name : "?";
+    names.push_back({v, vars.empty() ? fmt::format("Field[{}] ({})", id, kind)
+                                     : fmt::format("{}: Field[{}] ({})", vars, id, kind)});
+  }
+  return names;
+}
+
 }  // namespace
 
 std::string apply_node_coordinates(Interpreter& in, io::MeshModel& mm) {
@@ -44,7 +79,7 @@ std::string apply_node_coordinates(Interpreter& in, io::MeshModel& mm) {
   return io::convert_node_coordinates(mm, static_cast<io::NodeCoordinates>(static_cast<int>(v)), sphere);
 }
 
-std::string picture_options(Interpreter& in, io::PictureOptions& po) {
+std::string picture_options(Interpreter& in, const io::MeshModel& mm, io::PictureOptions& po) {
   po = {};
   const double view = in.options().number("Mesh.PictureView");
   if (view != 0 && view != 1)
@@ -57,9 +92,41 @@ std::string picture_options(Interpreter& in, io::PictureOptions& po) {
     break;
   }
   const double colour = in.options().number("Mesh.PictureColour");
-  if (colour != 0 && colour != 1 && colour != 2)
-    return fmt::format("Mesh.PictureColour = {:g}: use 0 (plain), 1 (quality) or 2 (triangle size)", colour);
+  if (colour != 0 && colour != 1 && colour != 2 && colour != 3 && colour != 4)
+    return fmt::format(
+        "Mesh.PictureColour = {:g}: use 0 (plain), 1 (quality), 2 (triangle size), 3 (size criterion) or 4 (depth)",
+        colour);
   po.colour = colour == 0 ? io::PictureColour::None : colour == 1 ? io::PictureColour::Quality : io::PictureColour::Size;
+  if (colour == 3 || colour == 4) {
+    std::vector<io::NodeData> data;
+    if (std::string why = node_data_named(in, mm, {colour == 3 ? "criterion" : "depth"}, data); !why.empty())
+      return fmt::format("Mesh.PictureColour = {:g}: {}", colour,
+                         why.rfind("Mesh.NodeData: ", 0) == 0 ? why.substr(15) : why);
+    po.node_values = std::move(data.front().values);
+    if (colour == 3) {
+      po.colour = io::PictureColour::Category;
+      po.category_names = criterion_names(in, po.node_values);
+    } else {
+      po.colour = io::PictureColour::NodeValue;
+      po.node_values_title = "depth (m)";
+    }
+  }
+  const interp::LonLatBox& box = in.options().box("Mesh.PictureBox");
+  if (box != interp::LonLatBox{0, 0, 0, 0}) {
+    io::PictureBox b;
+    if (std::string why = io::normalise_picture_box(box[0], box[1], box[2], box[3], &b); !why.empty()) return why;
+    po.box = b;
+  }
+  po.worst = static_cast<int>(in.options().number("Mesh.PictureWorst"));
+  po.draw_points = in.options().number("Mesh.PicturePoints") != 0;
+  po.colour_min = in.options().number("Mesh.PictureColourMin");
+  po.colour_max = in.options().number("Mesh.PictureColourMax");
+  if ((po.colour_min != 0 || po.colour_max != 0) && !(po.colour_max > po.colour_min))
+    return fmt::format("Mesh.PictureColourMin = {:g} must be below Mesh.PictureColourMax = {:g}", po.colour_min,
+                       po.colour_max);
+  if (colour == 2 && po.colour_max > po.colour_min && !(po.colour_min > 0))
+    return fmt::format("Mesh.PictureColourMin = {:g}: a size scale is logarithmic, give a size above 0 km",
+                       po.colour_min);
   po.save_all = in.options().number("Mesh.SaveAll") != 0;
   po.width_px = in.options().number("Mesh.PictureWidth");
   if (!(po.width_px >= 16 && po.width_px <= io::kMaxPicturePx))

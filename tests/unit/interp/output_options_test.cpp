@@ -105,6 +105,66 @@ TEST_CASE("output options: the stereographic picture of the cap keeps its shape"
   INFO(r.rendered);
   REQUIRE(r.ok);
   const std::string text = sm::testing::read_all(svg);
-  CHECK(text.find("width=\"602\" height=\"502\"") != std::string::npos);
+  // The map's frame (the clip rectangle, margins included); the legend strip is below it.
+  CHECK(text.find("<rect x=\"0.00\" y=\"0.00\" width=\"602.00\" height=\"502.00\"/>") != std::string::npos);
+  CHECK(text.find(">size: mean edge length (km, log scale)</text>") != std::string::npos);
+  std::filesystem::remove(svg);
+}
+
+TEST_CASE("output options: Mesh.PictureBox zooms, is read back, and refuses boxes that frame nothing") {
+  // The cap spans about lon -45..45 around the pole; a box over part of it draws fewer
+  // triangles than the whole picture, in a lon/lat frame of the box's shape.
+  const std::string dir = std::filesystem::temp_directory_path() / ("sm_oo_box_" + std::to_string(::getpid()));
+  const auto r = run_script(std::string(kCap) + "Mesh.PictureWidth = 500; Save \"" + dir + "_whole.svg\";\n" +
+                            "Mesh.PictureBox = {170, -170, 60, 80};\n"
+                            "b[] = Mesh.PictureBox; Printf(\"%g %g %g %g\", b[0], b[1], b[2], b[3]);\n"
+                            "Mesh.PictureBox = {0, 40, 65, 80}; Save \"" + dir + "_zoom.svg\";\n");
+  INFO(r.rendered);
+  REQUIRE(r.ok);
+  CHECK(r.out.find("170 -170 60 80") != std::string::npos);
+  auto count = [](const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+  };
+  const std::string whole = sm::testing::read_all(dir + "_whole.svg");
+  const std::string zoom = sm::testing::read_all(dir + "_zoom.svg");
+  CHECK(count(zoom, "<polygon") > 0);
+  CHECK(count(zoom, "<polygon") < count(whole, "<polygon"));
+  CHECK(zoom.find(">20\u00b0E</text>") != std::string::npos);   // a labelled meridian of the box
+  // Colour by criterion without a size field: an error at that Save, naming the option.
+  const auto c = run_script(std::string(kCap) + "Mesh.PictureColour = 3; Save \"" + dir + "_criterion.svg\";\n");
+  CHECK_FALSE(c.ok);
+  CHECK(c.rendered.find("Mesh.PictureColour = 3: size and criterion need a size field") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir + "_criterion.svg"));
+  for (const char* suffix : {"_whole.svg", "_zoom.svg"}) std::filesystem::remove(dir + suffix);
+  for (const char* bad : {"Mesh.PictureBox = {0, 10, 40, 30};", "Mesh.PictureBox = {0, 10, -95, 30};",
+                          "Mesh.PictureBox = {0, 10, 40};", "Mesh.PictureBox = {5, 5, 0, 1};"}) {
+    CAPTURE(bad);
+    const auto e = run_script(std::string(bad) + "\n");
+    CHECK_FALSE(e.ok);
+    CHECK(e.rendered.find("1:19: error:") != std::string::npos);
+    CHECK(e.rendered.find("[invalid-option-value]") != std::string::npos);
+  }
+}
+
+TEST_CASE("output options: Mesh.PictureColour 3 colours by the Min's input that sets the size, named") {
+  // Two criteria in a Min: FineField (smaller for x < 0.4) and CoarseField. The legend names
+  // both, through the Min behind the mesher's checked background field.
+  const std::string svg = std::filesystem::temp_directory_path() / ("sm_oo_crit_" + std::to_string(::getpid()) + ".svg");
+  const auto r = run_script(
+      "Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {1, 1, 0}; Point(4) = {0, 1, 0};\n"
+      "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};\n"
+      "Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};\n"
+      "CoarseField = 1; FineField = 2;\n"
+      "Field[1] = MathEval; Field[1].F = \"0.1\";\n"
+      "Field[2] = MathEval; Field[2].F = \"0.02 + 0.2 * x\";\n"
+      "Field[3] = Min; Field[3].FieldsList = {1, 2}; Background Field = 3;\n"
+      "Mesh 2; Mesh.PictureColour = 3; Save \"" + svg + "\";\n");
+  INFO(r.rendered);
+  REQUIRE(r.ok);
+  const std::string text = sm::testing::read_all(svg);
+  CHECK(text.find(">CoarseField: Field[1] (MathEval)</text>") != std::string::npos);
+  CHECK(text.find(">FineField: Field[2] (MathEval)</text>") != std::string::npos);
   std::filesystem::remove(svg);
 }

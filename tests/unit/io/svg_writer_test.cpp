@@ -1,5 +1,5 @@
 // SVG pictures: well-formed XML (read by Python's parser) with one polygon
-// per triangle and one polyline per boundary curve.
+// per triangle and one polyline per boundary curve (picture_test.cpp tests the scene).
 #include <doctest/doctest.h>
 
 #include <fmt/format.h>
@@ -22,7 +22,8 @@ std::string count_elements(const std::string& svg_path) {
   std::ofstream(script) << "import sys, xml.etree.ElementTree as ET\n"
                            "ns = '{http://www.w3.org/2000/svg}'\n"
                            "root = ET.parse(sys.argv[1]).getroot()\n"
-                           "print(len(root.findall('.//' + ns + 'polygon')), len(root.findall('.//' + ns + 'polyline')))\n";
+                           "g = {e.get('id'): e for e in root.iter(ns + 'g')}\n"
+                           "print(len(g['triangles'].findall(ns + 'polygon')), len(g['curves'].findall(ns + 'polyline')))\n";
   const std::string out = "/tmp/sm_svg_count.txt";
   if (std::system(fmt::format("python3 {} {} > {}", script, svg_path, out).c_str()) != 0) return "parse error";
   std::ifstream in(out);
@@ -82,6 +83,8 @@ TEST_CASE("svg: model points (a sphere's centre) do not stretch the frame") {
   m.entities = {p, s};
   PictureOptions opt;
   opt.width_px = 1000;
+  opt.decorations = false;
   const std::string svg = svg_to_string(m, opt);
-  CHECK(svg.find("height=\"1000\"") != std::string::npos);  // 10 x 10 degrees
+  // 10 x 10 degrees, x shrunk by cos(55 degrees): 998 px wide, 998 / cos(55) tall, plus the margins.
+  CHECK(svg.find("height=\"1742\"") != std::string::npos);
 }

@@ -1,0 +1,3 @@
+// Latitudes beyond the poles are refused where the box is set.
+Mesh.PictureBox = {0, 10, -95, 30};   // expect error: 2:19: invalid-option-value
+// compare_with_gmsh: skip (native option)
