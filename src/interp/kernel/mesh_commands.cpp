@@ -1,6 +1,7 @@
 // Mesh commands: `Mesh 1;` runs the 1D mesher (mesh/mesh1d) on the model with the
 // script's Mesh.* options and Background Field, `Mesh 2;` then meshes the faces
-// (mesh/mesh2d, Mesh.Algorithm 1, 2, 5 or 6) and prints the statistics, `Save "f";`
+// (mesh/mesh2d, Mesh.Algorithm 1, 2, 5, 6 or 8, with the structured constraints of
+// KernelState::constraints) and prints the statistics, `Save "f";`
 // writes the current mesh atomically in a format of io/output_format.h, `PartitionMesh N;`
 // partitions it (interp/kernel/partition_export.h), and the command line's -1 / -2 mesh
 // and write. The other mesh commands and post-processing
