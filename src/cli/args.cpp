@@ -23,11 +23,12 @@ bool parse_number(const std::string& s, double& out) {
 }
 
 // -algo names of Gmsh for the 2D algorithms the kernel has (mesh/mesh2d.h's
-// Mesh2dAlgorithm), mapped to Mesh.Algorithm. Gmsh's initial2d, bamg, delquad and pack
-// are refused here rather than accepted and refused once the script has run.
+// Mesh2dAlgorithm), mapped to Mesh.Algorithm; delquad (8) is our front2d, recombined where
+// asked (interp/kernel/mesh_commands.cpp). Gmsh's initial2d, bamg and pack are refused here
+// rather than accepted and refused once the script has run.
 bool algo_number(const std::string& name, double& out) {
   static const std::pair<const char*, double> kAlgos[] = {
-      {"meshadapt", 1}, {"auto", 2}, {"del2d", 5}, {"front2d", 6}};
+      {"meshadapt", 1}, {"auto", 2}, {"del2d", 5}, {"front2d", 6}, {"delquad", 8}};
   for (const auto& [n, v] : kAlgos)
     if (name == n) {
       out = v;
@@ -181,7 +182,7 @@ ParseOutcome parse_args(const std::vector<std::string>& argv) {
       double d = 0;
       if (!value("-algo", name)) return fail("'-algo' needs an algorithm name");
       if (!algo_number(name, d))
-        return fail(fmt::format("unknown algorithm '{}': stereomesh has meshadapt, auto, del2d and front2d", name));
+        return fail(fmt::format("unknown algorithm '{}': stereomesh has meshadapt, auto, del2d, front2d and delquad", name));
       a.option_numbers.emplace_back("Mesh.Algorithm", d);
     } else if (arg == "-I") {
       std::string dir;

@@ -26,7 +26,7 @@ const std::vector<CliFlag>& cli_flags() {
       {{"-setstring"}, "-setstring NAME S", "the same with a string"},
       {{"-clmin", "-clmax"}, "-clmin X, -clmax X", "Mesh.MeshSizeMin / Mesh.MeshSizeMax"},
       {{"-clscale"}, "-clscale X", "Mesh.MeshSizeFactor"},
-      {{"-algo"}, "-algo NAME", "meshadapt, auto, del2d, front2d (Mesh.Algorithm)"},
+      {{"-algo"}, "-algo NAME", "meshadapt, auto, del2d, front2d, delquad (Mesh.Algorithm; delquad: front2d recombined where Recombine asks)"},
       {{"-part"}, "-part N", "partition the 2D mesh into N parts with METIS (Mesh.NbPartitions)"},
       {{"-nt"}, "-nt N", "General.NumThreads"},
       {{"-v"}, "-v N",

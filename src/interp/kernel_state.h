@@ -19,6 +19,7 @@
 #include "interp/value.h"
 #include "lang/source.h"
 #include "io/mesh_partition.h"
+#include "mesh/mesh_constraints.h"
 #include "mesh/model_mesh.h"
 
 namespace sm::interp {
@@ -42,6 +43,9 @@ struct FieldCache;
 
 struct KernelState {
   geo::Model model;
+  /// `Transfinite ...;` and `Recombine ...;` as set so far (kernel/mesh_constraints.cpp);
+  /// Mesh.RecombineAll and Mesh.RecombinationAlgorithm are added when meshing.
+  MeshConstraints constraints;
   field::FieldSet fields;
   std::optional<int> background_field;                  // `Background Field = n;`
   std::map<int, lang::SourceRange> field_defined_at;    // Field[n] = ... statement

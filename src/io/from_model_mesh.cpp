@@ -74,6 +74,24 @@ MeshModel from_model_mesh(const geo::Model& model, const ModelMesh& mesh) {
       if (uv)
         for (std::uint32_t n : sm.interior_nodes) e.params.insert(e.params.end(), {mesh.nodes[n].uv.x, mesh.nodes[n].uv.y});
       for (const auto& t : sm.triangles) e.connectivity.insert(e.connectivity.end(), t.begin(), t.end());
+      if (!sm.quads.empty()) {
+        // Quadrangles only: the entity's one block is theirs. Both kinds: a second record of
+        // the same entity holds the quadrangles (no nodes: the first owns them), as MSH 4.1
+        // writes a block per element type.
+        EntityMesh q;
+        q.dim = 2, q.tag = tag, q.type = ElementType::Quad4;
+        q.physical_tags = e.physical_tags;
+        q.boundary = e.boundary;
+        for (const auto& f : sm.quads) q.connectivity.insert(q.connectivity.end(), f.begin(), f.end());
+        if (sm.triangles.empty()) {
+          e.type = ElementType::Quad4;
+          e.connectivity = std::move(q.connectivity);
+        } else {
+          out.entities.push_back(std::move(e));
+          out.entities.push_back(std::move(q));
+          continue;
+        }
+      }
     }
     out.entities.push_back(std::move(e));
   }

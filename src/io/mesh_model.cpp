@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <tuple>
 #include <utility>
 
 #include <fmt/format.h>
@@ -34,12 +35,19 @@ std::string validate_mesh_model(const MeshModel& m) {
   if (m.xyz.size() >= kNoOwner) return "too many nodes for 32-bit node indices";
   std::vector<std::uint32_t> owner(m.xyz.size(), kNoOwner);
   // Sorted (dim, tag) pairs: a world 1D mesh has ~10^5 point entities.
-  std::vector<std::pair<int, int>> keys;
+  std::vector<std::tuple<int, int, int, std::size_t>> keys;   // dim, tag, type, index
   keys.reserve(m.entities.size());
-  for (const EntityMesh& e : m.entities) keys.emplace_back(e.dim, e.tag);
+  for (std::size_t i = 0; i < m.entities.size(); ++i)
+    keys.emplace_back(m.entities[i].dim, m.entities[i].tag, static_cast<int>(m.entities[i].type), i);
   std::sort(keys.begin(), keys.end());
-  if (const auto d = std::adjacent_find(keys.begin(), keys.end()); d != keys.end())
-    return fmt::format("entity (dim {}, tag {}) listed twice", d->first, d->second);
+  for (std::size_t k = 1; k < keys.size(); ++k) {
+    const auto& [d0, t0, y0, i0] = keys[k - 1];
+    const auto& [d1, t1, y1, i1] = keys[k];
+    if (d0 != d1 || t0 != t1) continue;
+    if (y0 == y1) return fmt::format("entity (dim {}, tag {}) listed twice", d1, t1);
+    if (!m.entities[i1].nodes.empty())
+      return fmt::format("entity (dim {}, tag {}): its second element block owns nodes", d1, t1);
+  }
   for (std::size_t i = 0; i < m.entities.size(); ++i) {
     const EntityMesh& e = m.entities[i];
     // Point 0 is valid: Gmsh takes it in scripts and reads it back from MSH files.
@@ -68,9 +76,16 @@ std::vector<std::size_t> entity_order(const MeshModel& m) {
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     const EntityMesh &ea = m.entities[a], &eb = m.entities[b];
-    return ea.dim != eb.dim ? ea.dim < eb.dim : ea.tag < eb.tag;
+    if (ea.dim != eb.dim) return ea.dim < eb.dim;
+    return ea.tag != eb.tag ? ea.tag < eb.tag : static_cast<int>(ea.type) < static_cast<int>(eb.type);
   });
   return order;
+}
+
+bool is_extra_block(const MeshModel& m, const std::vector<std::size_t>& order, std::size_t k) {
+  if (k == 0) return false;
+  const EntityMesh &a = m.entities[order[k - 1]], &b = m.entities[order[k]];
+  return a.dim == b.dim && a.tag == b.tag && a.partitions == b.partitions && a.parent_tag == b.parent_tag;
 }
 
 }  // namespace sm::io

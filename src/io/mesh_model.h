@@ -16,7 +16,10 @@ enum class ElementType : int { Line2 = 1, Triangle3 = 2, Quad4 = 3, Point1 = 15 
 
 int nodes_per_element(ElementType type);
 
-/// The mesh of one model entity. Node indices refer to MeshModel::xyz.
+/// The mesh of one model entity, or one more block of elements of another type of an
+/// entity listed before (a surface with triangles and quadrangles: its second record has
+/// the same dim and tag, type Quad4, no nodes; see is_extra_block). Node indices refer
+/// to MeshModel::xyz.
 struct EntityMesh {
   int dim = 0;                           // 0 point, 1 curve, 2 surface
   int tag = 0;                           // model tag (> 0)
@@ -51,12 +54,18 @@ struct MeshModel {
 };
 
 /// Checks the model (every used node owned by exactly one entity, element
-/// node indices in range, tags positive and unique). Returns an empty string
+/// node indices in range, tags positive and unique per element type, an entity's
+/// extra blocks without nodes). Returns an empty string
 /// when valid, else what is wrong; writers refuse invalid models.
 std::string validate_mesh_model(const MeshModel& mesh);
 
-/// The indices of mesh.entities by increasing (dim, tag): the order every writer and
-/// the partitioning go through them in (the tags are unique in a valid model).
+/// The indices of mesh.entities by increasing (dim, tag, element type): the order every
+/// writer and the partitioning go through them in ((dim, tag, type) is unique in a valid
+/// model).
 std::vector<std::size_t> entity_order(const MeshModel& mesh);
+
+/// In entity_order, whether order[k] continues the entity of order[k - 1] (another block
+/// of its elements): writers list the entity and its nodes once.
+bool is_extra_block(const MeshModel& mesh, const std::vector<std::size_t>& order, std::size_t k);
 
 }  // namespace sm::io

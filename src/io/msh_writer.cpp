@@ -270,9 +270,12 @@ struct Box {
 // parent's dim and tag and its partitions before the usual fields), as Gmsh 4.8.4 writes.
 void write_entities41(Out& o, const MeshModel& m, const MshOptions& opt, const Plan& p, bool partitioned) {
   auto listed = [&](const EntityMesh& e) { return e.partitions.empty() != partitioned; };
+  // An entity's second element block (quadrangles beside triangles) is not listed again.
+  std::vector<char> extra(m.entities.size(), 0);
+  for (std::size_t k = 0; k < p.order.size(); ++k) extra[p.order[k]] = is_extra_block(m, p.order, k) ? 1 : 0;
   std::size_t count[4] = {0, 0, 0, 0};
-  for (const EntityMesh& e : m.entities)
-    if (listed(e)) ++count[std::clamp(e.dim, 0, 3)];
+  for (std::size_t i = 0; i < m.entities.size(); ++i)
+    if (listed(m.entities[i]) && !extra[i]) ++count[std::clamp(m.entities[i].dim, 0, 3)];
   // A partitioned mesh's model entities hold no mesh: their boxes are their pieces'.
   std::map<std::pair<int, int>, Box> piece_boxes;
   if (m.num_partitions > 0 && !partitioned)
@@ -289,12 +292,15 @@ void write_entities41(Out& o, const MeshModel& m, const MshOptions& opt, const P
     if (partitioned) o.f("{}\n0\n", m.num_partitions);
     o.f("{} {} {} {}\n", count[0], count[1], count[2], count[3]);
   }
-  for (std::size_t i : p.order) {
+  for (std::size_t k = 0; k < p.order.size(); ++k) {
+    const std::size_t i = p.order[k];
     const EntityMesh& e = m.entities[i];
-    if (!listed(e)) continue;
+    if (!listed(e) || extra[i]) continue;
     Box box;
     for (std::uint32_t n : e.nodes) box.add(m.xyz[n]);
     for (std::uint32_t n : e.connectivity) box.add(m.xyz[n]);
+    for (std::size_t j = k + 1; j < p.order.size() && extra[p.order[j]]; ++j)
+      for (std::uint32_t n : m.entities[p.order[j]].connectivity) box.add(m.xyz[n]);
     if (const auto it = piece_boxes.find({e.dim, e.tag}); it != piece_boxes.end())
       box.add(it->second.lo), box.add(it->second.hi);
     if (box.empty()) box.add(Vec3{0, 0, 0});
@@ -353,6 +359,15 @@ void write_msh41(Out& o, const MeshModel& m, const MshOptions& opt, const Plan& 
     node_block[i] = 1;
     for (std::uint32_t n : m.entities[i].connectivity) node_block[p.owner[n]] = 1;
   }
+  // An entity's second element block holds no nodes: its first block's node block is
+  // the entity's (written when either is saved).
+  for (std::size_t k = 1; k < p.order.size(); ++k)
+    if (is_extra_block(m, p.order, k) && node_block[p.order[k]]) {
+      node_block[p.order[k]] = 0;
+      std::size_t first = k - 1;
+      while (first > 0 && is_extra_block(m, p.order, first)) --first;
+      node_block[p.order[first]] = 1;
+    }
   std::vector<std::uint64_t> tag(m.xyz.size(), 0);
   std::size_t n_blocks = 0, n_nodes = 0;
   for (std::size_t i : p.order) {

@@ -15,7 +15,8 @@ namespace {
 
 enum class Flavour { Adcirc, Schism };
 
-// Nodes used by the triangles, numbered from 1 in entity order.
+// Nodes used by the surface elements (triangles, and SCHISM's quadrangles), numbered
+// from 1 in entity order.
 struct Numbering {
   std::vector<std::uint32_t> order;  // output position -> MeshModel node
   std::vector<std::uint32_t> id;     // MeshModel node -> 1-based id (0: not written)
@@ -24,15 +25,10 @@ struct Numbering {
 
 Numbering number(const MeshModel& m) {
   Numbering n;
-  std::vector<std::size_t> order(m.entities.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    const EntityMesh &ea = m.entities[a], &eb = m.entities[b];
-    return ea.dim != eb.dim ? ea.dim < eb.dim : ea.tag < eb.tag;
-  });
+  const std::vector<std::size_t> order = entity_order(m);
   std::vector<char> used(m.xyz.size(), 0);
   for (std::size_t i : order)
-    if (m.entities[i].type == ElementType::Triangle3) {
+    if (m.entities[i].type == ElementType::Triangle3 || m.entities[i].type == ElementType::Quad4) {
       n.surfaces.push_back(&m.entities[i]);
       for (std::uint32_t v : m.entities[i].connectivity) used[v] = 1;
     }
@@ -50,7 +46,7 @@ std::string write(const MeshModel& m, const OceanGridOptions& opt, Flavour flavo
   const Numbering n = number(m);
   const geo::PolarSphere sphere(opt.centre, opt.radius);
   std::size_t ne = 0;
-  for (const EntityMesh* s : n.surfaces) ne += s->connectivity.size() / 3;
+  for (const EntityMesh* s : n.surfaces) ne += s->connectivity.size() / nodes_per_element(s->type);
   std::string out = opt.title + "\n";
   out += fmt::format("{} {}\n", ne, n.order.size());
   for (std::uint32_t v : n.order) {
@@ -63,10 +59,15 @@ std::string write(const MeshModel& m, const OceanGridOptions& opt, Flavour flavo
     fmt::format_to(std::back_inserter(out), "{} {:.15g} {:.15g} {:.15g}\n", n.id[v], x, y, h);
   }
   std::size_t e = 0;
-  for (const EntityMesh* s : n.surfaces)
-    for (std::size_t k = 0; k + 2 < s->connectivity.size(); k += 3)
-      fmt::format_to(std::back_inserter(out), "{} 3 {} {} {}\n", ++e, n.id[s->connectivity[k]],
-                     n.id[s->connectivity[k + 1]], n.id[s->connectivity[k + 2]]);
+  // SCHISM reads "id nodes n1 .. n(nodes)" with 3 or 4 nodes (its mixed grids).
+  for (const EntityMesh* s : n.surfaces) {
+    const std::size_t npe = static_cast<std::size_t>(nodes_per_element(s->type));
+    for (std::size_t k = 0; k + npe <= s->connectivity.size(); k += npe) {
+      fmt::format_to(std::back_inserter(out), "{} {}", ++e, npe);
+      for (std::size_t j = 0; j < npe; ++j) fmt::format_to(std::back_inserter(out), " {}", n.id[s->connectivity[k + j]]);
+      out += '\n';
+    }
+  }
 
   using Kind = BoundaryString::Kind;
   std::vector<const BoundaryString*> open, land;
@@ -100,9 +101,18 @@ std::string write(const MeshModel& m, const OceanGridOptions& opt, Flavour flavo
   return out;
 }
 
-// Checks what the writers cannot represent before any file is created.
-std::string check(const MeshModel& m, const OceanGridOptions& opt) {
+// Checks what the writers cannot represent before any file is created: ADCIRC's fort.14
+// holds triangles only.
+std::string check(const MeshModel& m, const OceanGridOptions& opt, Flavour flavour) {
   if (std::string why = validate_mesh_model(m); !why.empty()) return "invalid mesh: " + why;
+  if (flavour == Flavour::Adcirc)
+    for (std::size_t i : entity_order(m)) {
+      const EntityMesh& e = m.entities[i];
+      if (e.type == ElementType::Quad4 && !e.connectivity.empty())
+        return fmt::format("fort.14 (ADCIRC) holds triangles only, and surface {} has {} quadrangles: write "
+                           "hgrid.gr3 (SCHISM reads quadrangles), MSH or VTK, or mesh it without Recombine",
+                           e.tag, e.connectivity.size() / 4);
+    }
   if (!opt.depth.empty() && opt.depth.size() != m.xyz.size())
     return fmt::format("depth has {} values for {} nodes", opt.depth.size(), m.xyz.size());
   const Numbering n = number(m);
@@ -178,7 +188,7 @@ std::string gr3_to_string(const MeshModel& mesh, const OceanGridOptions& opt) {
 }
 
 bool save_fort14(const MeshModel& mesh, const OceanGridOptions& opt, const std::string& path, std::string* error) {
-  if (std::string why = check(mesh, opt); !why.empty()) {
+  if (std::string why = check(mesh, opt, Flavour::Adcirc); !why.empty()) {
     *error = why;
     return false;
   }
@@ -186,7 +196,7 @@ bool save_fort14(const MeshModel& mesh, const OceanGridOptions& opt, const std::
 }
 
 bool save_schism(const MeshModel& mesh, const OceanGridOptions& opt, const std::string& gr3_path, std::string* error) {
-  if (std::string why = check(mesh, opt); !why.empty()) {
+  if (std::string why = check(mesh, opt, Flavour::Schism); !why.empty()) {
     *error = why;
     return false;
   }
@@ -224,11 +234,14 @@ bool parse_ocean_grid(const std::string& text, OceanGrid* g, std::string* error)
     g->depth[i] = v[3];
   }
   for (std::size_t i = 0; i < n_elems; ++i) {
-    if (!in.next(v, 5, error)) return false;
-    if (v[1] != 3) return in.fail(error, "only triangles are supported");
-    for (int k = 2; k < 5; ++k) {
+    if (!in.next(v, 5, error, 6)) return false;
+    if (v[1] != 3 && v[1] != 4) return in.fail(error, "only triangles and quadrangles are supported");
+    const int npe = static_cast<int>(v[1]);
+    if (static_cast<int>(v.size()) < 2 + npe) return in.fail(error, "a quadrangle needs 4 nodes");
+    std::vector<std::uint32_t>& into = npe == 3 ? g->triangles : g->quads;
+    for (int k = 2; k < 2 + npe; ++k) {
       if (v[k] < 1 || v[k] > np) return in.fail(error, "element node out of range");
-      g->triangles.push_back(static_cast<std::uint32_t>(v[k] - 1));
+      into.push_back(static_cast<std::uint32_t>(v[k] - 1));
     }
   }
   for (auto* strings : {&g->open, &g->land}) {

@@ -1,6 +1,6 @@
 // Grid files of the unstructured ocean models (ocean-tools §4): ADCIRC
 // fort.14 and SCHISM hgrid.gr3 / hgrid.ll. Nodes in lon/lat degrees, depth
-// positive down, triangles, and the open / land / island boundary strings the
+// positive down, triangles (and hgrid.gr3's quadrangles), and the open / land / island boundary strings the
 // models force and close.
 #pragma once
 
@@ -47,6 +47,7 @@ struct OceanGrid {
   std::vector<Vec2> xy;
   std::vector<double> depth;
   std::vector<std::uint32_t> triangles;  // 0-based, 3 per triangle
+  std::vector<std::uint32_t> quads;      // 0-based, 4 per quadrangle (hgrid.gr3)
   struct String {
     int type = 0;                        // IBTYPE (ADCIRC) or land flag (SCHISM); -1 for open
     std::vector<std::uint32_t> nodes;    // 0-based

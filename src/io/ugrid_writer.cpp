@@ -54,7 +54,7 @@ Ugrid gather(const MeshModel& m, const OceanGridOptions& opt, const std::vector<
   std::vector<const EntityMesh*> faces;
   for (const EntityMesh& e : m.entities)
     if (e.dim == 2 && (e.type == ElementType::Triangle3 || e.type == ElementType::Quad4)) faces.push_back(&e);
-  std::sort(faces.begin(), faces.end(), [](const EntityMesh* a, const EntityMesh* b) { return a->tag < b->tag; });
+  std::stable_sort(faces.begin(), faces.end(), [](const EntityMesh* a, const EntityMesh* b) { return a->tag < b->tag; });
   for (const EntityMesh* f : faces)
     if (f->type == ElementType::Quad4) u.max_face_nodes = 4;
 

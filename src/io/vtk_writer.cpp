@@ -12,6 +12,7 @@
 #include "base/output_file.h"
 #include "exact/triangle_rho.h"
 #include "io/msh_writer.h"
+#include "mesh/recombine.h"
 
 namespace sm::io {
 namespace {
@@ -79,7 +80,9 @@ CellArrays cell_arrays(const MeshModel& m, const Selection& s, const VtkOptions&
     c.types.push_back(static_cast<std::uint8_t>(vtk_cell_type(e.type)));
     c.entity.push_back(e.tag);
     c.physical.push_back(e.physical_tags.empty() ? 0 : e.physical_tags.front());
-    c.quality.push_back(e.type == ElementType::Triangle3 ? rho(m.xyz[v[0]], m.xyz[v[1]], m.xyz[v[2]]) : 1.0);
+    c.quality.push_back(e.type == ElementType::Triangle3 ? rho(m.xyz[v[0]], m.xyz[v[1]], m.xyz[v[2]])
+                        : e.type == ElementType::Quad4 ? quad_quality(m.xyz[v[0]], m.xyz[v[1]], m.xyz[v[2]], m.xyz[v[3]])
+                                                       : 1.0);
     if (opt.element_part) c.partition.push_back((*opt.element_part)[ei][k]);
   }
   return c;

@@ -15,6 +15,7 @@
 
 #include "base/parallel.h"
 #include "mesh/boundary_recovery.h"
+#include "mesh/transfinite_curve.h"
 #include "exact/predicates.h"
 
 namespace sm {
@@ -152,6 +153,11 @@ std::vector<double> place_nodes(const CurvePrimitive& p, int min_segs, int max_n
   if (!(count <= kMaxCurveNodes)) return {};
   int n = static_cast<int>(count);
   if (max_nodes > 0) n = std::min(n, std::max(max_nodes, 2));
+  return place_n_nodes(p, n);
+}
+
+std::vector<double> place_n_nodes(const CurvePrimitive& p, int n) {
+  n = std::max(n, 2);
   const double a = p.total();
   std::vector<double> out(static_cast<std::size_t>(n));
   out.front() = 0;
@@ -368,14 +374,31 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
     std::vector<double> ts;       // the nodes' parameters, first 0 and last 1
     std::vector<Vec3> xyz;        // interior nodes
     std::vector<Vec2> uv;         // interior nodes, on a surface's curve
+    const TransfiniteCurveSpec* transfinite = nullptr;
+    bool odd = false;             // bounds a recombined surface: an odd node count
   };
   std::vector<CurvePlan> plans;
   plans.reserve(model.curves().size());
+  // Curves bounding a recombined surface (Gmsh's forced odd count: meshGEdge.cpp).
+  std::vector<int> odd_curves;
+  if (const MeshConstraints* mc = opt.constraints; mc && mc->algorithm == RecombineAlgorithm::Matching) {
+    for (const auto& [stag, s] : model.surfaces()) {
+      if (!mc->recombines(stag)) continue;
+      for (int l : s.loops)
+        if (const geo::ModelCurveLoop* loop = model.curve_loop(std::abs(l)))
+          for (int c : loop->curves) odd_curves.push_back(std::abs(c));
+    }
+    std::sort(odd_curves.begin(), odd_curves.end());
+  }
   for (const auto& [tag, mc] : model.curves()) {
     CurvePlan& cp = plans.emplace_back();
     cp.tag = tag;
     cp.mc = &mc;
     cp.moves_vertex = moves_vertex(mc);
+    if (opt.constraints)
+      if (const auto it = opt.constraints->curves.find(tag); it != opt.constraints->curves.end())
+        cp.transfinite = &it->second;
+    cp.odd = !cp.transfinite && std::binary_search(odd_curves.begin(), odd_curves.end(), tag);
   }
   const int threads = resolve_thread_count(opt.threads);
   // Each curve's size h(t) along it: the policy with the background field, the end
@@ -428,6 +451,10 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
     // Gmsh 4.8.4 integrates a Bezier curve of degree d with |X'| / d (measured: a
     // 3-point Bezier of length 3 at lc 0.1 gets 16 segments, a 6-point one 7), so its
     // node count is d times smaller than the sizes ask; we follow it for compatibility.
+    if (cp.transfinite) {   // the count is the script's, the law places the nodes
+      cp.nodes = std::max(cp.transfinite->nodes, 2);
+      return;
+    }
     cp.stretch = shape.kind() == geo::CurveKind::Bezier
                      ? static_cast<double>(std::max<std::size_t>(1, shape.control_xyz().size() - 1))
                      : 1.0;
@@ -439,6 +466,7 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
     }
     cp.min_segs = min_segments(shape, opt);
     cp.nodes = node_count(cp.prim, cp.min_segs);
+    if (cp.odd && cp.nodes <= kMaxCurveNodes - 1 && std::fmod(cp.nodes, 2.0) == 0) cp.nodes += 1;
   };
   parallel_for_chunks(
       threads, plans.size(), 1,
@@ -494,7 +522,8 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
       const geo::Curve& shape = *cp.mc->shape;
       CurveMesh cm;
       cm.tag = cp.tag;
-      cm.t = place_nodes(cp.prim, cp.min_segs, kCoarseCurveNodes);
+      cm.t = cp.transfinite ? transfinite_parameters(shape, *cp.transfinite)
+                            : place_n_nodes(cp.prim, static_cast<int>(std::min<double>(cp.nodes, kCoarseCurveNodes)));
       cm.nodes.push_back(coarse.vertex_node.at(cp.mc->begin));
       const bool uv = shape.on_surface();
       for (std::size_t i = 1; i + 1 < cm.t.size(); ++i)
@@ -521,14 +550,17 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
     const double stretch = cp.stretch;
     const int min_segs = cp.min_segs;
     auto size = size_of(cp);
-    std::vector<double> ts = place_nodes(cp.prim, min_segs);
+    std::vector<double> ts =
+        cp.transfinite ? transfinite_parameters(shape, *cp.transfinite) : place_n_nodes(cp.prim, static_cast<int>(cp.nodes));
     cp.prim = {};   // not needed any more: its samples are the largest part of a plan
     // Gmsh's filterPoints: an interior node closer than 0.3 h to the previous node kept
     // (noisy curves, tight turns) is dropped, unless that leaves fewer than the minimum.
     // Sizes come one at a time (each depends on the node kept before), so first a batch
     // screen with every node kept decides whether the curve needs it at all.
     std::vector<Vec3> x;   // the nodes' positions while ts is unfiltered
-    if (ts.size() > 2) {
+    // No filter on a transfinite curve (its count is the script's) nor on a forced odd
+    // count (dropping a node would make it even again).
+    if (ts.size() > 2 && !cp.transfinite && !cp.odd) {
       const std::size_t n = ts.size();
       x.resize(n);
       x[0] = cp.moves_vertex ? shape.point(0) : vb->xyz;

@@ -13,6 +13,7 @@
 #include "field/field.h"
 #include "field/size_policy.h"
 #include "geo/model.h"
+#include "mesh/mesh_constraints.h"
 #include "mesh/mesh_error.h"
 #include "mesh/model_mesh.h"
 
@@ -62,6 +63,12 @@ struct Mesh1dOptions {
   /// Reports stage "1D" (one unit per curve) and "1D repair" (no total); null: silent.
   /// Called on the calling thread only.
   Progress* progress = nullptr;
+  /// Transfinite curves (their node counts and laws, transfinite_curve.h) and the
+  /// recombined surfaces: with Mesh.RecombinationAlgorithm 1 a curve that is not
+  /// transfinite and bounds a recombined surface (any surface with Mesh.RecombineAll)
+  /// gets an odd node count, as in Gmsh 4.8.4 (an even number of boundary edges lets the
+  /// matching pair every triangle). Null: none.
+  const MeshConstraints* constraints = nullptr;
 };
 
 /// The integrand's size h(t) along one curve: for `t`, the curve jets at t, sets h (> 0).
@@ -94,6 +101,9 @@ double node_count(const CurvePrimitive& p, int min_segments);
 /// primitive (first 0, last 1); with max_nodes > 0 at most that many (a coarse version).
 /// Empty when the count is not finite or over kMaxCurveNodes (callers check node_count).
 std::vector<double> place_nodes(const CurvePrimitive& p, int min_segments, int max_nodes = 0);
+
+/// The parameters of exactly n >= 2 nodes at equal increments of the primitive.
+std::vector<double> place_n_nodes(const CurvePrimitive& p, int n);
 
 /// Minimum number of segments of a curve (Gmsh's minimumMeshSegments): 1 for lines,
 /// MinimumCurveNodes - 1 for splines, a share of MinimumCircleNodes for arcs.

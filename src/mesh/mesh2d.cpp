@@ -17,6 +17,7 @@
 #include <fmt/format.h>
 
 #include "base/parallel.h"
+#include "exact/predicates.h"
 #include "exact/triangle_rho.h"
 #include "mesh/cdt.h"
 #include "mesh/delaunay.h"
@@ -28,7 +29,9 @@
 #include "mesh/modify/smooth.h"
 #include "mesh/partition.h"
 #include "mesh/quality_floor.h"
+#include "mesh/recombine.h"
 #include "mesh/refine.h"
+#include "mesh/transfinite_surface.h"
 
 namespace sm {
 namespace {
@@ -114,8 +117,13 @@ class FaceMesher {
   Vec3 space_of(VertexId v) const;
   /// The curve of the face edge between local vertices a and b (0: none).
   int curve_of(VertexId a, VertexId b) const;
-  /// Interior nodes to 3D, triangles oriented, the surface's mesh and target size kept.
+  /// Interior nodes to 3D, triangles oriented (paired into quadrangles where the surface
+  /// is recombined), the surface's mesh and target size kept.
   void output();
+  /// A transfinite surface: its boundary chain filled (transfinite_surface.h), in place
+  /// of the unstructured pipeline.
+  bool run_transfinite(const geo::ModelSurface& s, const TransfiniteSurfaceSpec& spec);
+  bool recombined() const { return opt_.constraints && opt_.constraints->recombines(tag_); }
 
   const geo::Model& model_;
   ModelMesh& mesh_;
@@ -367,7 +375,14 @@ bool FaceMesher::refine(const std::function<void(std::span<const Vec2>, std::spa
 
 bool FaceMesher::run(const geo::ModelSurface& s) {
   tag_ = s.tag;
-  if (s.filling) return fail("transfinite (filling) surfaces are not meshed by the 2D mesher yet");
+  if (opt_.constraints)
+    if (const auto it = opt_.constraints->surfaces.find(s.tag); it != opt_.constraints->surfaces.end()) {
+      if (estimate_only_) return true;   // a grid: its count is the curves' product
+      return run_transfinite(s, it->second);
+    }
+  if (s.filling)
+    return fail("a filling 'Surface' is meshed only as a transfinite one: add 'Transfinite Surface{" +
+                std::to_string(s.tag) + "};' (or use 'Plane Surface')");
   plane_.geom = s.geometry ? model_.geometry(s.geometry) : nullptr;
   if (s.geometry && !plane_.geom) return fail(fmt::format("surface geometry {} does not exist", s.geometry));
   auto t0 = std::chrono::steady_clock::now();
@@ -691,18 +706,134 @@ void FaceMesher::output() {
     sm_out.interior_nodes.push_back(global_[v]);
   }
   const bool flip = plane_.geom && !plane_.ccw_is_outward;
-  sm_out.triangles.reserve(m_.num_triangles());
+  // Local triangles, counter-clockwise in the plane.
+  std::vector<std::array<std::uint32_t, 3>> local;
+  local.reserve(m_.num_triangles());
   for (std::uint32_t t = 0; t < m_.num_slots(); ++t) {
     if (!m_.alive(TriId{t})) continue;
-    const std::uint32_t a = global_[m_.vertex(TriId{t}, 0).value], b = global_[m_.vertex(TriId{t}, 1).value],
-                        c = global_[m_.vertex(TriId{t}, 2).value];
+    local.push_back({m_.vertex(TriId{t}, 0).value, m_.vertex(TriId{t}, 1).value, m_.vertex(TriId{t}, 2).value});
+  }
+  std::vector<std::array<std::uint32_t, 4>> local_quads;
+  if (recombined()) {
+    std::vector<Vec3> xyz(nv);
+    for (std::uint32_t v = 0; v < nv; ++v) xyz[v] = mesh_.nodes[global_[v]].xyz;
+    // Embedded curves stay edges of the mesh.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> fixed;
+    for (const Chain& ch : emb_curves_)
+      for (std::size_t k = 0; k + 1 < ch.nodes.size(); ++k)
+        fixed.push_back(std::minmax(local_of_[ch.nodes[k]], local_of_[ch.nodes[k + 1]]));
+    std::sort(fixed.begin(), fixed.end());
+    RecombineOptions ro;
+    ro.algorithm = opt_.constraints->algorithm;
+    RecombineResult rr = recombine(local, xyz, m_.xy, fixed, ro);
+    local = std::move(rr.triangles);
+    local_quads = std::move(rr.quads);
+  }
+  sm_out.triangles.reserve(local.size());
+  for (const auto& t : local) {
+    const std::uint32_t a = global_[t[0]], b = global_[t[1]], c = global_[t[2]];
     sm_out.triangles.push_back(flip ? std::array<std::uint32_t, 3>{a, c, b} : std::array<std::uint32_t, 3>{a, b, c});
+  }
+  for (const auto& q : local_quads) {
+    const std::uint32_t a = global_[q[0]], b = global_[q[1]], c = global_[q[2]], d = global_[q[3]];
+    sm_out.quads.push_back(flip ? std::array<std::uint32_t, 4>{a, d, c, b} : std::array<std::uint32_t, 4>{a, b, c, d});
   }
   res_.stats.new_nodes += sm_out.interior_nodes.size();
   res_.stats.triangles += sm_out.triangles.size();
+  res_.stats.quads += sm_out.quads.size();
   ++res_.stats.faces;
   mesh_.surfaces[tag_] = std::move(sm_out);
   res_.target_sizes.push_back({tag_, target_size_fn(sizing_)});
+}
+
+bool FaceMesher::run_transfinite(const geo::ModelSurface& s, const TransfiniteSurfaceSpec& spec) {
+  if (!collect_loops(s)) return false;
+  if (chains_.size() != 1) {
+    const std::size_t holes = chains_.size() - 1;
+    return fail(fmt::format("is transfinite but has {} hole{}", holes, holes == 1 ? "" : "s"));
+  }
+  const Chain& ch = chains_[0];
+  const std::size_t n = ch.nodes.size();
+  // A filling Surface has no plane: it is interpolated in space (onto its sphere when it
+  // has one); a Plane Surface in its plane (a PolarSphere's stereographic plane).
+  const bool in_plane = !s.filling;
+  if (in_plane && !make_plane()) return false;
+  TransfiniteBoundary b;
+  b.coords.reserve(n), b.xyz.reserve(n);
+  for (std::uint32_t node : ch.nodes) {
+    const MeshNode& mn = mesh_.nodes[node];
+    b.xyz.push_back(mn.xyz);
+    if (in_plane) {
+      const Vec2 p = plane_.node_plane(mn);
+      b.coords.push_back({p.x, p.y, 0.0});
+    } else {
+      b.coords.push_back(mn.xyz);
+    }
+  }
+  if (spec.corners.empty()) {
+    std::vector<std::size_t> starts;
+    for (std::size_t k = 0; k < n; ++k)
+      if (k == 0 || ch.edge_curve[k] != ch.edge_curve[k - 1]) starts.push_back(k);
+    b.corners = implicit_transfinite_corners(starts, n);
+  } else {
+    for (int corner : spec.corners) {
+      const auto it = mesh_.vertex_node.find(corner);
+      const auto at = it == mesh_.vertex_node.end() ? ch.nodes.end() : std::find(ch.nodes.begin(), ch.nodes.end(), it->second);
+      if (at == ch.nodes.end())
+        return fail(fmt::format("transfinite corner {} is not a point of its boundary", corner));
+      b.corners.push_back(static_cast<std::size_t>(at - ch.nodes.begin()));
+    }
+  }
+  const int smoothing = opt_.smoothing > 1 ? opt_.smoothing : 0;   // Gmsh: with Mesh.Smoothing > 1
+  TransfiniteResult r = fill_transfinite(b, spec.arrangement, recombined(), smoothing);
+  if (!r.ok()) return fail(r.error);
+  std::optional<Vec3> centre;
+  double radius = 0;
+  if (s.filling && s.sphere_centre)
+    if (const geo::ModelVertex* c = model_.vertex(s.sphere_centre)) centre = c->xyz, radius = norm(b.xyz[0] - c->xyz);
+  SurfaceMesh out;
+  out.tag = tag_;
+  std::vector<std::uint32_t> id(ch.nodes.begin(), ch.nodes.end());
+  for (const Vec3& p : r.interior) {
+    std::uint32_t node;
+    if (in_plane) {
+      const Vec2 q{p.x, p.y};
+      node = plane_.geom ? mesh_.add_node(plane_.to_space(q), plane_.to_param(q)) : mesh_.add_node(plane_.to_space(q));
+    } else {
+      Vec3 x = p;
+      if (centre && norm(x - *centre) > 0) x = *centre + (radius / norm(x - *centre)) * (x - *centre);
+      node = mesh_.add_node(x);
+    }
+    id.push_back(node);
+    out.interior_nodes.push_back(node);
+  }
+  // Counter-clockwise in the plane: the elements run as the boundary chain does, which a
+  // Euclidean plane's basis makes counter-clockwise; on a geometry the chain may turn
+  // either way, so the elements' own majority decides. Then the orientation rule of
+  // output(). A filling surface keeps its loop's orientation.
+  bool flip = false;
+  if (in_plane && plane_.geom) {
+    long turn = 0;
+    auto P = [&](std::uint32_t k) {
+      return k < n ? Vec2{b.coords[k].x, b.coords[k].y} : Vec2{r.interior[k - n].x, r.interior[k - n].y};
+    };
+    for (const auto& t : r.triangles) turn += static_cast<int>(orient2d(P(t[0]), P(t[1]), P(t[2])));
+    for (const auto& q : r.quads) turn += static_cast<int>(orient2d(P(q[0]), P(q[1]), P(q[2])));
+    flip = (turn < 0) != !plane_.ccw_is_outward;
+  }
+  for (const auto& t : r.triangles)
+    out.triangles.push_back(flip ? std::array<std::uint32_t, 3>{id[t[0]], id[t[2]], id[t[1]]}
+                                 : std::array<std::uint32_t, 3>{id[t[0]], id[t[1]], id[t[2]]});
+  for (const auto& q : r.quads)
+    out.quads.push_back(flip ? std::array<std::uint32_t, 4>{id[q[0]], id[q[3]], id[q[2]], id[q[1]]}
+                             : std::array<std::uint32_t, 4>{id[q[0]], id[q[1]], id[q[2]], id[q[3]]});
+  res_.stats.new_nodes += out.interior_nodes.size();
+  res_.stats.triangles += out.triangles.size();
+  res_.stats.quads += out.quads.size();
+  ++res_.stats.faces;
+  ++res_.stats.transfinite_faces;
+  mesh_.surfaces[tag_] = std::move(out);
+  return true;
 }
 
 double model_bbox(const geo::Model& model, double given) {

@@ -15,6 +15,7 @@
 #include "field/size_policy.h"
 #include "geo/model.h"
 #include "geo/sphere.h"
+#include "mesh/mesh_constraints.h"
 #include "mesh/mesh_error.h"
 #include "mesh/mesh_stats.h"
 #include "mesh/model_mesh.h"
@@ -67,10 +68,15 @@ struct Mesh2dOptions {
   /// estimated at 65536 triangles or more gets a nested "2D refine" in estimated
   /// triangles instead. Reported from the calling thread only; null: nobody listens.
   Progress* progress = nullptr;
+  /// Transfinite surfaces (filled by transfinite_surface.h instead of the algorithm, also
+  /// a filling `Surface`) and recombined ones (their triangles paired by recombine.h
+  /// after the quality passes). Null: none.
+  const MeshConstraints* constraints = nullptr;
 };
 
 struct Mesh2dStats {
   std::uint64_t faces = 0, triangles = 0, new_nodes = 0;
+  std::uint64_t quads = 0, transfinite_faces = 0;   // quadrangles made; faces filled transfinite
   std::uint64_t inserted = 0, rejected = 0, size_evaluations = 0;
   std::uint64_t partitioned_faces = 0, parts = 0;   // faces refined in parts, their parts
   std::uint64_t estimated_triangles = 0;            // of those faces, from their coarse meshes
@@ -111,8 +117,8 @@ std::vector<StageTime> stage_times(const Mesh2dStats& s);
 /// faces sharing curves share nodes; interior nodes get their (u,v) on a surface geometry.
 /// Triangles are oriented with the outward normal on a sphere and by the right-hand rule
 /// of the outer loop on a plane. Deterministic. On failure, surfaces meshed before the
-/// failing one are kept, the failing one is absent. A filling (transfinite) Surface is an
-/// error: it is not meshed yet.
+/// failing one are kept, the failing one is absent. A filling Surface is meshed only when
+/// it is transfinite (else an error).
 Mesh2dResult mesh_surfaces(const geo::Model& model, ModelMesh& mesh, const Mesh2dOptions& opt);
 
 /// The element budget of the faces on a coarse 1D mesh (Mesh1dOptions::coarse_check):

@@ -13,6 +13,7 @@
 #include "base/json_text.h"
 #include "base/parallel.h"
 #include "exact/triangle_rho.h"
+#include "mesh/recombine.h"
 
 namespace sm {
 
@@ -51,9 +52,12 @@ MeshStats compute_stats(const ModelMesh& mesh, const std::vector<const SizeAt3*>
   // no triangle uses (B-spline control points, a sphere's centre) do not count.
   std::vector<char> used(mesh.nodes.size(), 0);
   for (const auto& [tag, sf] : mesh.surfaces)
+  {
     for (const auto& t : sf.triangles) used[t[0]] = used[t[1]] = used[t[2]] = 1;
+    for (const auto& q : sf.quads) used[q[0]] = used[q[1]] = used[q[2]] = used[q[3]] = 1;
+  }
   s.nodes = static_cast<std::uint64_t>(std::count(used.begin(), used.end(), 1));
-  double sum = 0;
+  double sum = 0, quad_sum = 0;
   std::uint64_t good = 0, in_range = 0;
   s.min_rho = 1;
   std::vector<EdgeKey> edges, border, seen_border, merged;
@@ -88,11 +92,19 @@ MeshStats compute_stats(const ModelMesh& mesh, const std::vector<const SizeAt3*>
       if (r > 0.9) ++good;
       ++s.triangles;
     }
+    for (const auto& q : sf.quads) {
+      const double qq = quad_quality(mesh.nodes[q[0]].xyz, mesh.nodes[q[1]].xyz, mesh.nodes[q[2]].xyz, mesh.nodes[q[3]].xyz);
+      quad_sum += qq;
+      s.quad_min = s.quads == 0 ? qq : std::min(s.quad_min, qq);
+      ++s.quads;
+    }
     if (!size) continue;
     s.has_sizes = true;
     edges.clear();
     for (const auto& t : sf.triangles)
       for (int e = 0; e < 3; ++e) edges.push_back(std::minmax(t[e], t[(e + 1) % 3]));
+    for (const auto& q : sf.quads)
+      for (int e = 0; e < 4; ++e) edges.push_back(std::minmax(q[e], q[(e + 1) % 4]));
     std::sort(edges.begin(), edges.end());
     // Edges in one triangle only (the border), then each distinct edge once, less those
     // an earlier surface measured.
@@ -133,13 +145,18 @@ MeshStats compute_stats(const ModelMesh& mesh, const std::vector<const SizeAt3*>
     });
     for (std::uint64_t in : batch_in_range) in_range += in;
   }
-  if (s.triangles == 0) {
+  if (s.quads > 0) s.quad_mean = quad_sum / static_cast<double>(s.quads);
+  if (s.triangles == 0 && s.quads == 0) {
     s.min_rho = 0;
     s.has_sizes = false;
     return s;
   }
-  s.mean_rho = sum / static_cast<double>(s.triangles);
-  s.share_rho_09 = static_cast<double>(good) / static_cast<double>(s.triangles);
+  if (s.triangles == 0) {
+    s.min_rho = 0;
+  } else {
+    s.mean_rho = sum / static_cast<double>(s.triangles);
+    s.share_rho_09 = static_cast<double>(good) / static_cast<double>(s.triangles);
+  }
   if (!s.has_sizes) return s;
   s.edges = ratio.size();
   if (ratio.empty()) return s;
@@ -169,15 +186,20 @@ MeshStats mesh_stats(const ModelMesh& mesh, const std::vector<SurfaceSize>& size
 }
 
 std::string format_stats(const MeshStats& s) {
-  std::string out = fmt::format("Mesh: {} nodes, {} triangles\n", s.nodes, s.triangles);
+  std::string out = fmt::format("Mesh: {} nodes, {} triangles", s.nodes, s.triangles);
+  out += s.quads ? fmt::format(", {} quadrangles\n", s.quads) : std::string("\n");
   std::string worst;
   if (s.min_rho_surface && s.has_min_rho_lonlat)
     worst = fmt::format(" (surface {} near lon {:.4f}, lat {:.4f})", s.min_rho_surface, s.min_rho_lon, s.min_rho_lat);
   else if (s.min_rho_surface)
     worst = fmt::format(" (surface {} near ({:.6g}, {:.6g}, {:.6g}))", s.min_rho_surface, s.min_rho_at.x,
                         s.min_rho_at.y, s.min_rho_at.z);
-  out += fmt::format("Quality: rho min {:.4f}{}, mean {:.4f}, {:.2f}% above 0.9\n", s.min_rho, worst, s.mean_rho,
-                     100 * s.share_rho_09);
+  if (s.triangles || !s.quads)
+    out += fmt::format("Quality: rho min {:.4f}{}, mean {:.4f}, {:.2f}% above 0.9\n", s.min_rho, worst, s.mean_rho,
+                       100 * s.share_rho_09);
+  if (s.quads)
+    out += fmt::format("Quadrangles: corner quality (1 - max |90 - angle| / 90) min {:.4f}, mean {:.4f}\n",
+                       s.quad_min, s.quad_mean);
   if (s.has_sizes)
     out += fmt::format("Edge length / size: median {:.3f}, 5-95% [{:.3f}, {:.3f}], {:.2f}% in [0.7, 1.4] ({} edges)\n",
                        s.len_median, s.len_p05, s.len_p95, 100 * s.share_len_07_14, s.edges);
@@ -217,6 +239,9 @@ std::string stats_json(const MeshStats& s) {
       out += fmt::format(", \"rho_min_lon\": {}, \"rho_min_lat\": {}", json_number(s.min_rho_lon),
                          json_number(s.min_rho_lat));
   }
+  if (s.quads)
+    out += fmt::format(", \"quadrangles\": {}, \"quad_quality_min\": {}, \"quad_quality_mean\": {}", s.quads,
+                       json_number(s.quad_min), json_number(s.quad_mean));
   if (s.has_sizes)
     out += fmt::format(", \"edges\": {}, \"length_ratio_median\": {}, \"length_ratio_p05\": {}, "
                        "\"length_ratio_p95\": {}, \"length_ratio_share_0.7_1.4\": {}",

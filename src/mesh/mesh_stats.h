@@ -21,7 +21,11 @@ struct StageTime {
 };
 
 struct MeshStats {
-  std::uint64_t nodes = 0, triangles = 0, edges = 0;   // nodes: those of the triangles
+  std::uint64_t nodes = 0, triangles = 0, edges = 0;   // nodes: those of the elements
+  /// Quadrangles (transfinite or recombined surfaces) and their corner quality
+  /// (recombine.h's quad_quality: 1 - max |90 - corner angle| / 90, in space).
+  std::uint64_t quads = 0;
+  double quad_min = 0, quad_mean = 0;
   double min_rho = 0, mean_rho = 0, share_rho_09 = 0;   // share of triangles with rho > 0.9
   int min_rho_surface = 0;                             // the worst triangle: its surface,
   Vec3 min_rho_at;                                     // its centroid and, set by the caller
@@ -49,8 +53,8 @@ struct SurfaceSize {
   SizeAt3 size;
 };
 
-/// Statistics over every surface triangle of the mesh. With `size`, each distinct
-/// triangle edge's chord length is divided by the size at its midpoint (the callback may
+/// Statistics over every surface element of the mesh (rho over the triangles, the corner
+/// quality over the quadrangles). With `size`, each distinct element edge's chord length is divided by the size at its midpoint (the callback may
 /// project the midpoint onto the surface).
 MeshStats mesh_stats(const ModelMesh& mesh, const SizeAt3& size = nullptr);
 

@@ -34,11 +34,13 @@ struct CurveMesh {
   std::size_t num_edges() const { return nodes.empty() ? 0 : nodes.size() - 1; }
 };
 
-/// Triangles of one model surface (filled by the 2D meshers).
+/// Triangles and quadrangles of one model surface (filled by the 2D meshers; quadrangles
+/// from a transfinite or recombined surface, mesh/recombine.h), all oriented alike.
 struct SurfaceMesh {
   int tag = 0;
   std::vector<std::uint32_t> interior_nodes;          // nodes classified on the surface
   std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::vector<std::array<std::uint32_t, 4>> quads;
 };
 
 struct ModelMesh {

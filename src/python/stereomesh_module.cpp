@@ -1,7 +1,7 @@
 // `import stereomesh`: runs a .geo script and meshes it in the Python process, as
 // `stereomesh -2 x.geo` does, and hands the mesh over as numpy arrays instead of a file:
 //   m = stereomesh.run("x.geo", setnumber={"CoastAccuracy": 10e3}, algo="front2d", threads=2)
-//   m.nodes_lonlat, m.nodes_xyz, m.triangles, m.boundary_edges, m.boundary_physical,
+//   m.nodes_lonlat, m.nodes_xyz, m.triangles, m.quads, m.boundary_edges, m.boundary_physical,
 //   m.depth, m.size, m.partition, m.node_partition (Mesh.NbPartitions), m.stats (dict),
 //   m.diagnostics (list of dicts), m.printed (Printf text)
 // A script or meshing error raises stereomesh.ScriptError (file, line, column, message).
@@ -36,7 +36,7 @@ const std::map<std::string, int, std::less<>> kAlgorithms = {
 
 // What run() returns: plain attributes, numpy arrays for the mesh.
 struct Mesh {
-  py::object nodes_xyz, nodes_lonlat, triangles, boundary_edges, boundary_physical, depth, size;
+  py::object nodes_xyz, nodes_lonlat, triangles, quads, boundary_edges, boundary_physical, depth, size;
   py::object partition, node_partition;
   py::object stats, diagnostics;
   std::string printed;
@@ -191,6 +191,12 @@ Mesh run(const py::object& error_type, const std::string& path, const std::map<s
   py::array_t<std::int64_t> t({static_cast<py::ssize_t>(tri.size() / 3), py::ssize_t{3}});
   std::copy(tri.begin(), tri.end(), t.mutable_data());
   m.triangles = t;
+  std::vector<std::int64_t> quad;
+  for (const io::EntityMesh& e : mm.entities)
+    if (e.dim == 2 && e.type == io::ElementType::Quad4) quad.insert(quad.end(), e.connectivity.begin(), e.connectivity.end());
+  py::array_t<std::int64_t> qa({static_cast<py::ssize_t>(quad.size() / 4), py::ssize_t{4}});
+  std::copy(quad.begin(), quad.end(), qa.mutable_data());
+  m.quads = qa;
   // The partition of each triangle, and of each node the smallest of its triangles' (as
   // the VTK and UGRID partition arrays); None without Mesh.NbPartitions.
   m.partition = py::none();
@@ -257,6 +263,7 @@ class ScriptError(RuntimeError):
       .def_readonly("nodes_xyz", &Mesh::nodes_xyz, "(N, 3) float64: node coordinates as meshed")
       .def_readonly("nodes_lonlat", &Mesh::nodes_lonlat, "(N, 2) float64 lon/lat degrees on a sphere, else None")
       .def_readonly("triangles", &Mesh::triangles, "(T, 3) int64: 0-based node indices")
+      .def_readonly("quads", &Mesh::quads, "(Q, 4) int64: 0-based node indices of the quadrangles (Recombine)")
       .def_readonly("boundary_edges", &Mesh::boundary_edges, "(E, 2) int64: the mesh boundary's edges")
       .def_readonly("boundary_physical", &Mesh::boundary_physical, "(E,) int64: physical curve group (0: none)")
       .def_readonly("depth", &Mesh::depth, "(N,) float64 from Mesh.DepthField, else None")

@@ -56,7 +56,7 @@ def our_errors(stderr):
 
 
 def read_msh41(path):
-    """Physical groups {(dim, tag)}, element counts by type and triangle rho (min, mean)."""
+    """Physical groups {(dim, tag)}, element counts by type, triangle rho (min, mean), node count."""
     with open(path, errors="replace") as f:
         lines = f.read().splitlines()
     i = 0
@@ -97,7 +97,7 @@ def read_msh41(path):
                 i += count
     rhos = [rho(nodes[a], nodes[b], nodes[c]) for a, b, c in triangles]
     quality = (min(rhos), sum(rhos) / len(rhos)) if rhos else None
-    return physicals, counts, quality
+    return physicals, counts, quality, len(nodes)
 
 
 def rho(a, b, c):
@@ -117,10 +117,10 @@ def mesh(cmd, cwd, out, timeout):
     if rc != 0 or not os.path.exists(out):
         errs = gmsh_errors(stdout, stderr) or our_errors(stderr)
         return {"status": "error", "why": errs[0] if errs else f"exit {rc}", "secs": secs}
-    physicals, counts, quality = read_msh41(out)
+    physicals, counts, quality, nodes = read_msh41(out)
     os.remove(out)
     return {"status": "ok", "secs": secs, "physicals": physicals, "lines": counts.get(1, 0),
-            "triangles": counts.get(2, 0), "quality": quality}
+            "triangles": counts.get(2, 0), "quads": counts.get(3, 0), "nodes": nodes, "quality": quality}
 
 
 def short(text, n=110):
@@ -145,6 +145,8 @@ def report_one(path, gmsh, sm, timeout):
         same = grc is not None and gmsh_printf(gout) == sout.splitlines()
         r["eval"] = "agrees" if same else "differs"
         r["printf_lines"] = len(sout.splitlines())
+    with open(path, errors="replace") as f:
+        r["structured"] = "Transfinite" in f.read()
     if r["eval"] in ("agrees", "differs"):
         out = os.path.join(cwd, "report_out.msh")
         r["gmsh2"] = mesh([gmsh, "-2", name, "-format", "msh41", "-o", out], cwd, out, timeout)
@@ -156,7 +158,9 @@ def cell_mesh(m):
     if m["status"] != "ok":
         return m["status"]
     q = m["quality"]
-    return f"{m['lines']} / {m['triangles']}" + (f" / {q[0]:.2f}, {q[1]:.3f}" if q else "") + f" / {m['secs']:.1f} s"
+    quads = f" + {m['quads']} quads" if m.get("quads") else ""
+    return f"{m['lines']} / {m['triangles']}{quads}" + (f" / {q[0]:.2f}, {q[1]:.3f}" if q else "") + \
+        f" / {m['secs']:.1f} s"
 
 
 def write_markdown(results, out, timeout):
@@ -189,6 +193,16 @@ def write_markdown(results, out, timeout):
     if ratios:
         lines.append(f"  Our triangle count divided by gmsh's: median {ratios[len(ratios) // 2]:.2f}, "
                      f"range {ratios[0]:.2f} to {ratios[-1]:.2f}.")
+    # Scripts with Transfinite constraints: their grids are Gmsh's, so the counts must be equal.
+    structured = [(name, r) for name, r in results if r.get("structured") and "sm2" in r
+                  and r["sm2"]["status"] == "ok" and r["gmsh2"]["status"] == "ok"]
+    if structured:
+        keys = ("nodes", "lines", "triangles", "quads")
+        equal = [os.path.basename(n) for n, r in structured if all(r["sm2"][k] == r["gmsh2"][k] for k in keys)]
+        differ = [os.path.basename(n) for n, r in structured if os.path.basename(n) not in equal]
+        lines.append(f"- **{len(equal)} of {len(structured)}** meshed scripts with `Transfinite` constraints have "
+                     "gmsh's node, line, triangle and quadrangle counts exactly"
+                     + (f" (not: {', '.join(differ)})." if differ else "."))
     # Why the others stop: the first error's kind (and, for 'not supported yet', the statement).
     reasons = {}
     for name, r in results:
@@ -204,7 +218,7 @@ def write_markdown(results, out, timeout):
         lines.append(f"- {short(kind, 80)}: {len(names)} ({', '.join(names)})")
     lines += [
         "",
-        "Mesh columns: 1D elements / triangles / rho min, mean (2 inradius / circumradius) / wall time of",
+        "Mesh columns: 1D elements / triangles (+ quadrangles) / rho min, mean (2 inradius / circumradius) / wall time of",
         "that run (one run on a shared machine: noisy). A script with no triangles has no 2D physical",
         "group, or no surface. *eval* is `agrees` (same Printf lines), `differs`, or our first error.",
         "`gmsh -0 errors` counts the `Error` lines gmsh prints while it goes on.",

@@ -139,3 +139,13 @@ def test_bad_arguments():
         stereomesh.run(GULF, algo="delaunay")
     with pytest.raises(ValueError, match="dim"):
         stereomesh.run(GULF, dim=3)
+
+
+def test_quadrangles():
+    """A transfinite recombined rectangle: its 8 x 4 quadrangles, no triangle; the ocean
+    mesh has none."""
+    script = os.path.join(ROOT, "tests", "scripts", "structured", "transfinite_square.geo")
+    m = stereomesh.run(script)
+    assert m.quads.shape == (32, 4) and m.triangles.shape == (0, 3)
+    assert m.quads.min() == 0 and m.quads.max() == len(m.nodes_xyz) - 1
+    assert m.stats["quadrangles"] == 32

@@ -19,9 +19,12 @@ struct KernelState;
 // The handlers of kernel/statements.def's rows, each with the rows it serves.
 
 /// Geometry (geometry.cpp): Point ... Physical, transforms as statements, Delete{},
-/// MeshSize, embedding; Surface Loop, Volume and the mesh constraints are reported as
-/// not supported.
+/// MeshSize, embedding; Surface Loop, Volume and the mesh constraints other than
+/// Transfinite and Recombine are reported as not supported.
 void exec_geometry_stmt(Interpreter& in, lang::StmtId s);
+/// `Transfinite Curve|Surface ...;`, `Recombine Surface{...};` (mesh_constraints.cpp): the
+/// kernel state's mesh constraints.
+void exec_mesh_constraint_stmt(Interpreter& in, lang::StmtId s);
 /// `SetFactory("Built-in");` (geometry.cpp): the only kernel there is.
 void exec_set_factory_stmt(Interpreter& in, lang::StmtId s);
 /// `Coherence;` / `Coherence Point{...}` (geometry.cpp); `Coherence Mesh;` goes to exec_mesh_stmt.

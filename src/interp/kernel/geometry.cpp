@@ -346,8 +346,9 @@ std::optional<geo::DimTag> create_geometry(Interpreter& in, StmtId id) {
   }
   if (s.kind() == StmtKind::Curve) return std::nullopt;   // a kind reported as not supported
   // Surface Loop, Volume, Parametric Surface, Coherence Point{}, embedding in a volume and
-  // the mesh constraints (Transfinite, Recombine, MeshAlgorithm, Smoother, Periodic,
-  // ReverseMesh, Compound): the model has no place for them yet.
+  // the mesh constraints other than Transfinite and Recombine (MeshAlgorithm, Smoother,
+  // Periodic, ReverseMesh, Compound; mesh_constraints.cpp has those two): the model has
+  // no place for them yet.
   check_stmt_exprs(in, id);
   in.not_supported_stmt(id, stmt_name(in, id));
   return std::nullopt;

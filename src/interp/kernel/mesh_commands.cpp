@@ -1,6 +1,7 @@
 // Mesh commands: `Mesh 1;` runs the 1D mesher (mesh/mesh1d) on the model with the
 // script's Mesh.* options and Background Field, `Mesh 2;` then meshes the faces
-// (mesh/mesh2d, Mesh.Algorithm 1, 2, 5 or 6) and prints the statistics, `Save "f";`
+// (mesh/mesh2d, Mesh.Algorithm 1, 2, 5, 6 or 8, with the structured constraints of
+// KernelState::constraints) and prints the statistics, `Save "f";`
 // writes the current mesh atomically in a format of io/output_format.h, `PartitionMesh N;`
 // partitions it (interp/kernel/partition_export.h), and the command line's -1 / -2 mesh
 // and write. The other mesh commands and post-processing
@@ -113,6 +114,10 @@ bool mesh2d_algorithm(int algo, Mesh2dAlgorithm& out) {
     case 2: out = Mesh2dAlgorithm::Automatic; return true;
     case 5: out = Mesh2dAlgorithm::Del2d; return true;
     case 6: out = Mesh2dAlgorithm::Frontal; return true;
+    // Gmsh's Frontal-Delaunay for Quads: our frontal mesher, its triangles paired where
+    // the surface is recombined (as Gmsh pairs them only there too); Gmsh's cross-field
+    // aligned right triangles are not made (docs/kernel.md).
+    case 8: out = Mesh2dAlgorithm::Frontal; return true;
     default: return false;
   }
 }
@@ -132,6 +137,7 @@ void publish_stats(Interpreter& in, const ModelMesh& mesh, const MeshStats& st) 
   Options& o = in.options();
   o.set_number("Mesh.NbNodes", static_cast<double>(mesh.nodes.size()), /*internal=*/true);
   o.set_number("Mesh.NbTriangles", static_cast<double>(st.triangles), true);
+  o.set_number("Mesh.NbQuadrangles", static_cast<double>(st.quads), true);
   o.set_number("Mesh.StatsRhoMin", st.min_rho, true);
   o.set_number("Mesh.StatsRhoMean", st.mean_rho, true);
   o.set_number("Mesh.StatsRhoAbove09", st.share_rho_09, true);
@@ -197,8 +203,8 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
     const int algo = static_cast<int>(in.options().number("Mesh.Algorithm"));
     if (!mesh2d_algorithm(algo, opt2.algorithm)) {
       MeshFailure f{Diag::MeshFailed,
-                    fmt::format("Mesh.Algorithm {} is not available: use 1 (meshadapt), 2 (automatic), 5 (del2d) or 6 "
-                                "(front2d)",
+                    fmt::format("Mesh.Algorithm {} is not available: use 1 (meshadapt), 2 (automatic), 5 (del2d), 6 "
+                                "(front2d) or 8 (front2d for quadrangles)",
                                 algo),
                     {}};
       if (const auto it = k.option_set_at.find("Mesh.Algorithm"); it != k.option_set_at.end())
@@ -236,8 +242,22 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
     const int id = static_cast<int>(depth_field);
     depth = built_fields(in, id, it != k.option_set_at.end() ? it->second : SourceRange{}).shared(id);
   }
+  // The structured constraints with the Mesh.* options that complete them.
+  MeshConstraints& constraints = k.constraints;
+  constraints.recombine_all = in.options().number("Mesh.RecombineAll") != 0;
+  const int recombination = static_cast<int>(in.options().number("Mesh.RecombinationAlgorithm"));
+  const bool recombining = constraints.recombine_all || !constraints.recombine.empty();
+  if (dim >= 2 && recombining && recombination > 1)
+    return {Diag::InvalidOptionValue,
+            fmt::format("Mesh.RecombinationAlgorithm {} (full-quad: Gmsh recombines a coarser mesh and splits it) is "
+                        "not available: use 0 (simple) or 1 (blossom-quality matching)",
+                        recombination),
+            set_here(k, "Mesh.RecombinationAlgorithm")};
+  constraints.algorithm = recombination == 0 ? RecombineAlgorithm::Simple : RecombineAlgorithm::Matching;
+  opt2.constraints = &constraints;
   Mesh1dOptions opt1 = mesh1d_options(in, background.get());
   opt1.max_elements = max_elements;
+  opt1.constraints = &constraints;   // -1 too: Gmsh's odd counts are made in 1D
   // Many 1D nodes: the faces' budgets first, on a coarse boundary, before the full 1D
   // mesh is paid for (a unit square at size 1e-7 has 4e7 boundary nodes, 2e14 triangles).
   MeshError budget;

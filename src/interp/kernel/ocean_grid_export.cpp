@@ -55,6 +55,7 @@ std::string boundary_strings(const geo::Model& model, const ModelMesh& mesh,
     // mesh2d left it out with a warning, and it has no boundary string.
     std::set<std::uint32_t> used;
     for (const auto& t : sm->second.triangles) used.insert(t.begin(), t.end());
+    for (const auto& q : sm->second.quads) used.insert(q.begin(), q.end());
     for (std::size_t k = 0; k < s.loops.size(); ++k) {
       const geo::ModelCurveLoop* loop = model.curve_loop(std::abs(s.loops[k]));
       if (!loop) return fmt::format("surface {}: curve loop {} is missing", tag, s.loops[k]);

@@ -24,6 +24,13 @@ std::string partition_mesh_now(Interpreter& in, const ModelMesh& mesh, MeshStats
   KernelState& k = in.kernel();
   const io::MeshPartitionOptions po = partition_options(in.options());
   if (po.parts <= 0) return {};
+  // The partitioned entities are made per (entity, one element type): a surface with
+  // quadrangles is not split into them yet.
+  for (const auto& [tag, s] : mesh.surfaces)
+    if (!s.quads.empty())
+      return fmt::format("Mesh.NbPartitions = {}: surface {} has quadrangles, which are not partitioned yet (mesh it "
+                         "without Recombine, or set Mesh.NbPartitions = 0)",
+                         po.parts, tag);
   const StageScope stage(&k.clock, progress_sink(in), "partitions");
   const io::MeshModel mm = io::from_model_mesh(k.model, mesh);
   auto partition = std::make_shared<io::MeshPartition>();

@@ -3,8 +3,8 @@
 Point(1) = {0, 0, 0};
 Point(2) = {1, 0, 0};
 Line(1) = {1, 2};
-Transfinite Curve{1} = 10;
-Transfinite Curve{1} = 20;
+ReverseMesh Curve{1};
+ReverseMesh Curve{1};
 Surface Loop(1) = {1};
 Printf("%g", newp);  // expect: 3
 // expect error: 6:1: not-supported-yet

@@ -210,3 +210,30 @@ TEST_CASE("msh: every variant loads in Gmsh 4.8.4 with the same counts") {
   REQUIRE(std::system(("/usr/bin/python3 " + script + paths + " > " + out).c_str()) == 0);
   CHECK(sm::testing::read_all(out) == want);
 }
+
+TEST_CASE("msh 4.1: a surface with triangles and quadrangles is one entity, one node block, two element blocks") {
+  sm::io::MeshModel m = sm::io::testing::grid_square(2);
+  // The first row of cells as quadrangles: a second record of surface 1, no nodes.
+  sm::io::EntityMesh& tri = m.entities.back();
+  sm::io::EntityMesh quad;
+  quad.dim = 2, quad.tag = 1, quad.type = sm::io::ElementType::Quad4, quad.physical_tags = tri.physical_tags;
+  quad.boundary = tri.boundary;
+  quad.connectivity = {0, 1, 4, 3, 1, 2, 5, 4};
+  tri.connectivity.erase(tri.connectivity.begin(), tri.connectivity.begin() + 12);
+  m.entities.push_back(quad);
+  CHECK(sm::io::validate_mesh_model(m).empty());
+  sm::io::MshOptions o;
+  const std::string s = sm::io::msh_to_string(m, o);
+  // $Entities: 4 points, 4 curves, 1 surface.
+  CHECK(s.find("$Entities\n4 4 1 0\n") != std::string::npos);
+  // Element blocks (the physical entities): 4 curves, the surface's triangles and its quadrangles.
+  CHECK(s.find("$Elements\n6 ") != std::string::npos);
+  CHECK(s.find("\n2 1 2 4\n") != std::string::npos);   // 4 triangles
+  CHECK(s.find("\n2 1 3 2\n") != std::string::npos);   // 2 quadrangles
+  // One node block for the surface (its one interior node).
+  CHECK(s.find("\n2 1 0 1\n") != std::string::npos);
+  CHECK(s.find("\n2 1 0 0\n") == std::string::npos);
+  // A second block that owns nodes is refused.
+  m.entities.back().nodes = {4};
+  CHECK_FALSE(sm::io::validate_mesh_model(m).empty());
+}

@@ -1,0 +1,49 @@
+// The structured-meshing constraints of a script (Gmsh's meshAttributes): transfinite
+// curves and surfaces, recombined surfaces, the recombination algorithm. Plain data: the
+// interpreter fills it from `Transfinite ...;`, `Recombine ...;` and Mesh.* options, the
+// 1D and 2D meshers read it.
+#pragma once
+
+#include <map>
+#include <set>
+#include <vector>
+
+namespace sm {
+
+/// Gmsh's `Using Progression | Bump | Beta` (meshGEdge.cpp's typeTransfinite 1, 2, 3).
+enum class TransfiniteLaw { Progression = 1, Bump = 2, Beta = 3 };
+
+/// `Transfinite Curve {c} = nodes Using law coef;` on the curve's own direction: a
+/// negative tag in the statement sets `reversed` (the law runs from the curve's end).
+struct TransfiniteCurveSpec {
+  int nodes = 2;              // at least 2, as Gmsh
+  TransfiniteLaw law = TransfiniteLaw::Progression;
+  double coef = 1.0;          // |coef| as written; 1: equal spacing
+  bool reversed = false;
+};
+
+/// `Transfinite Surface {s} = {corners} Left|Right|...;`: which diagonal splits each
+/// grid cell into two triangles (Gmsh's transfiniteArrangement: Left -1, Right 1,
+/// Alternate / AlternateRight 2, AlternateLeft -2).
+enum class TriangleArrangement { Left = -1, Right = 1, AlternateRight = 2, AlternateLeft = -2 };
+
+struct TransfiniteSurfaceSpec {
+  std::vector<int> corners;   // 3 or 4 model vertex tags; empty: the loop's curve ends
+  TriangleArrangement arrangement = TriangleArrangement::Left;
+};
+
+/// Mesh.RecombinationAlgorithm 0 (simple) and 1 (blossom-quality; see recombine.h).
+enum class RecombineAlgorithm { Simple = 0, Matching = 1 };
+
+struct MeshConstraints {
+  std::map<int, TransfiniteCurveSpec> curves;       // curve tag (> 0) -> its law
+  std::map<int, TransfiniteSurfaceSpec> surfaces;   // surface tag -> its corners
+  std::set<int> recombine;                          // `Recombine Surface{...};`
+  bool recombine_all = false;                       // Mesh.RecombineAll
+  RecombineAlgorithm algorithm = RecombineAlgorithm::Matching;
+
+  bool recombines(int surface) const { return recombine_all || recombine.count(surface) > 0; }
+  bool empty() const { return curves.empty() && surfaces.empty() && recombine.empty() && !recombine_all; }
+};
+
+}  // namespace sm
