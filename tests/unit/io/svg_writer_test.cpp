@@ -11,6 +11,7 @@
 #include "geo/sphere.h"
 #include "io/svg_writer.h"
 #include "io/test_meshes.h"
+#include "scratch_dir.h"
 
 using namespace sm;
 using namespace sm::io;
@@ -18,13 +19,15 @@ using namespace sm::io;
 namespace {
 
 std::string count_elements(const std::string& svg_path) {
-  const std::string script = "/tmp/sm_svg_count.py";
+  // A folder of its own: parallel test runs (other build folders) must not share files.
+  const sm::testing::ScratchDir dir;
+  const std::string script = dir / "count.py";
   std::ofstream(script) << "import sys, xml.etree.ElementTree as ET\n"
                            "ns = '{http://www.w3.org/2000/svg}'\n"
                            "root = ET.parse(sys.argv[1]).getroot()\n"
                            "g = {e.get('id'): e for e in root.iter(ns + 'g')}\n"
                            "print(len(g['triangles'].findall(ns + 'polygon')), len(g['curves'].findall(ns + 'polyline')))\n";
-  const std::string out = "/tmp/sm_svg_count.txt";
+  const std::string out = dir / "count.txt";
   if (std::system(fmt::format("python3 {} {} > {}", script, svg_path, out).c_str()) != 0) return "parse error";
   std::ifstream in(out);
   std::stringstream s;
@@ -41,8 +44,9 @@ TEST_CASE("svg: planar mesh, one polygon per triangle, one polyline per curve") 
     PictureOptions opt;
     opt.view = PictureView::Plane;
     opt.colour = colour;
-    REQUIRE(save_svg(m, opt, "/tmp/sm_svg_plane.svg", &error));
-    CHECK(count_elements("/tmp/sm_svg_plane.svg") == "200 4\n");
+    const sm::testing::ScratchDir dir;
+    REQUIRE(save_svg(m, opt, dir / "plane.svg", &error));
+    CHECK(count_elements(dir / "plane.svg") == "200 4\n");
   }
 }
 
@@ -63,8 +67,9 @@ TEST_CASE("svg: lon/lat view draws a triangle across the dateline on both sides"
   opt.colour = PictureColour::NodeValue;
   opt.node_values = {1, 2, 3, 4, 5, 6};
   std::string error;
-  REQUIRE(save_svg(m, opt, "/tmp/sm_svg_ll.svg", &error));
-  CHECK(count_elements("/tmp/sm_svg_ll.svg") == "3 0\n");
+  const sm::testing::ScratchDir dir;
+  REQUIRE(save_svg(m, opt, dir / "ll.svg", &error));
+  CHECK(count_elements(dir / "ll.svg") == "3 0\n");
   const std::string svg = svg_to_string(m, opt);
   CHECK(svg.find("width=\"1600\"") != std::string::npos);
 }

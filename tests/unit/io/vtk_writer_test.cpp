@@ -10,6 +10,7 @@
 
 #include "io/test_meshes.h"
 #include "io/vtk_writer.h"
+#include "scratch_dir.h"
 
 using namespace sm;
 using namespace sm::io;
@@ -32,7 +33,9 @@ TEST_CASE("vtk: every variant reads back in meshio with the same data") {
   const MeshModel m = sm::io::testing::grid_square(10);
   std::vector<double> size(m.xyz.size());
   for (std::size_t i = 0; i < size.size(); ++i) size[i] = 0.1 + m.xyz[i].x;
-  const std::string script = "/tmp/sm_vtk_load.py";
+  // A folder of its own: parallel test runs (other build folders) must not share files.
+  const sm::testing::ScratchDir dir;
+  const std::string script = dir / "load.py";
   std::ofstream(script) << "import sys, meshio\n"
                            "m = meshio.read(sys.argv[1])\n"
                            "tri = sum(len(c.data) for c in m.cells if c.type == 'triangle')\n"
@@ -41,11 +44,12 @@ TEST_CASE("vtk: every variant reads back in meshio with the same data") {
                            "print(len(m.points), tri, '%.6f' % h.sum(), '%.6f' % q.min())\n";
   for (bool xml : {false, true})
     for (bool binary : {false, true}) {
-      const std::string path = fmt::format("/tmp/sm_vtk_{}.{}", binary ? "bin" : "ascii", xml ? "vtu" : "vtk");
+      const std::string path = dir / fmt::format("{}.{}", binary ? "bin" : "ascii", xml ? "vtu" : "vtk");
+      const std::string out = dir / "out.txt";
       std::string error;
       REQUIRE(save_vtk(m, {xml, binary, false, {{"size", "m", "", size}}}, path, &error));
-      REQUIRE(std::system(fmt::format("/usr/bin/python3 {} {} > /tmp/sm_vtk_out.txt", script, path).c_str()) == 0);
-      std::ifstream in("/tmp/sm_vtk_out.txt");
+      REQUIRE(std::system(fmt::format("/usr/bin/python3 {} {} > {}", script, path, out).c_str()) == 0);
+      std::ifstream in(out);
       std::stringstream got;
       got << in.rdbuf();
       CAPTURE(path);
@@ -56,7 +60,9 @@ TEST_CASE("vtk: every variant reads back in meshio with the same data") {
 
 TEST_CASE("vtk: node data of the wrong length is an error, nothing written") {
   const MeshModel m = sm::io::testing::grid_square(2);
+  const sm::testing::ScratchDir dir;
   std::string error;
-  CHECK_FALSE(save_vtk(m, {false, false, false, {{"size", "m", "", {1.0, 2.0}}}}, "/tmp/sm_vtk_bad.vtk", &error));
+  CHECK_FALSE(save_vtk(m, {false, false, false, {{"size", "m", "", {1.0, 2.0}}}}, dir / "bad.vtk", &error));
+  CHECK(dir.names().empty());
   CHECK(error.find("node data 'size' has 2 values for 9 nodes") != std::string::npos);
 }
