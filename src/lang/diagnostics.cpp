@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <array>
 
+#include "base/utf8.h"
+
 namespace sm::lang {
 
 namespace {
@@ -20,20 +22,6 @@ constexpr std::array<DiagInfo, static_cast<std::size_t>(Diag::kCount)> kDiagInfo
 constexpr std::size_t kMaxShownLine = 160;
 constexpr std::size_t kContextBeforeCaret = 60;
 
-// Length of the valid UTF-8 sequence starting at s[i], or 0 if invalid.
-std::size_t utf8_length(std::string_view s, std::size_t i) {
-  const auto c = static_cast<unsigned char>(s[i]);
-  std::size_t n;
-  if (c >= 0xC2 && c <= 0xDF) n = 2;
-  else if (c >= 0xE0 && c <= 0xEF) n = 3;
-  else if (c >= 0xF0 && c <= 0xF4) n = 4;
-  else return 0;
-  if (i + n > s.size()) return 0;
-  for (std::size_t k = 1; k < n; ++k)
-    if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) return 0;
-  return n;
-}
-
 // Appends the printable form of s[b, e) to `shown`, and to `marks` one char per
 // displayed column ('\t' for a tab so that the caret line stays aligned).
 void append_display(std::string_view s, std::size_t b, std::size_t e, std::string& shown,
@@ -47,7 +35,7 @@ void append_display(std::string_view s, std::size_t b, std::size_t e, std::strin
       shown += '?';
     } else if (c < 0x80) {
       shown += static_cast<char>(c);
-    } else if (std::size_t n = utf8_length(s, i); n > 0 && i + n <= e) {
+    } else if (std::size_t n = base::utf8_sequence_length(s, i); n > 0 && i + n <= e) {
       shown.append(s.substr(i, n));
       len = n;
     } else {
