@@ -4,13 +4,12 @@
 // variable SM_UPDATE_CLI_DOCS is set.
 #include <doctest/doctest.h>
 
-#include <cstdlib>
-#include <fstream>
 #include <sstream>
 #include <string>
 
 #include "cli/args.h"
 #include "cli/flags.h"
+#include "generated_docs.h"
 
 TEST_CASE("cli flags: every flag of the table is parsed, every spelling is in --help") {
   const std::string help = sm::cli::usage_text();
@@ -36,25 +35,7 @@ TEST_CASE("cli flags: --help lines stay within 100 columns") {
 }
 
 TEST_CASE("docs/interpreter.md holds the generated --help") {
-  const std::string path = std::string(SM_SOURCE_DIR) + "/docs/interpreter.md";
-  std::ifstream in(path);
-  REQUIRE(in);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string text = ss.str();
-  const std::string begin = "<!-- BEGIN GENERATED: stereomesh --help (sm::cli::usage_text()) -->\n```text\n";
-  const std::string end = "```\n<!-- END GENERATED -->";
-  // The file has other generated parts: the end is the first after this begin.
-  const auto b = text.find(begin);
-  REQUIRE(b != std::string::npos);
-  const auto e = text.find(end, b);
-  REQUIRE(e != std::string::npos);
-  const std::string current = text.substr(b + begin.size(), e - b - begin.size());
-  const std::string generated = sm::cli::usage_text();
-  if (std::getenv("SM_UPDATE_CLI_DOCS") && current != generated) {
-    std::ofstream out(path);
-    out << text.substr(0, b + begin.size()) << generated << text.substr(e);
-    return;
-  }
-  CHECK_MESSAGE(current == generated, "docs/interpreter.md is stale: run SM_UPDATE_CLI_DOCS=1 build/tests/unit_cli");
+  sm::testing::check_generated_section(std::string(SM_SOURCE_DIR) + "/docs/interpreter.md",
+                                       "<!-- BEGIN GENERATED: stereomesh --help (sm::cli::usage_text()) -->\n```text\n",
+                                       "```\n<!-- END GENERATED -->", sm::cli::usage_text(), "SM_UPDATE_CLI_DOCS");
 }

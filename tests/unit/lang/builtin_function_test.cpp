@@ -3,12 +3,11 @@
 // verbatim (rewritten when the environment variable SM_UPDATE_BUILTIN_DOCS is set).
 #include <doctest/doctest.h>
 
-#include <cstdlib>
-#include <fstream>
 #include <sstream>
 
 #include "lang/builtin_function.h"
 #include "lang_test_util.h"
+#include "generated_docs.h"
 
 using namespace sm::lang;
 using sm::lang::testing::ast_of;
@@ -43,25 +42,7 @@ TEST_CASE("builtin table: a string-valued call names a macro") {
 }
 
 TEST_CASE("docs/interpreter.md holds the generated builtin reference") {
-  const std::string path = std::string(SM_SOURCE_DIR) + "/docs/interpreter.md";
-  std::ifstream in(path);
-  REQUIRE(in);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string text = ss.str();
-  const std::string begin = "<!-- BEGIN GENERATED: sm::lang::builtin_functions_markdown() -->\n";
-  const std::string end = "<!-- END GENERATED -->";
-  const auto b = text.find(begin);
-  REQUIRE(b != std::string::npos);
-  const auto e = text.find(end, b);
-  REQUIRE(e != std::string::npos);
-  const std::string current = text.substr(b + begin.size(), e - b - begin.size());
-  const std::string generated = builtin_functions_markdown();
-  if (std::getenv("SM_UPDATE_BUILTIN_DOCS") && current != generated) {
-    std::ofstream out(path);
-    out << text.substr(0, b + begin.size()) << generated << text.substr(e);
-    return;
-  }
-  CHECK_MESSAGE(current == generated,
-                "docs/interpreter.md is stale: run SM_UPDATE_BUILTIN_DOCS=1 build/tests/unit_lang");
+  sm::testing::check_generated_section(std::string(SM_SOURCE_DIR) + "/docs/interpreter.md",
+                                       "<!-- BEGIN GENERATED: sm::lang::builtin_functions_markdown() -->\n",
+                                       "<!-- END GENERATED -->", builtin_functions_markdown(), "SM_UPDATE_BUILTIN_DOCS");
 }
