@@ -58,6 +58,22 @@ struct Chain {
   std::vector<int> edge_curve;
 };
 
+// Appends the face's elements to `out`, their corners mapped by `node` (local -> global
+// node) and reversed when `flip` (the plane's counter-clockwise is not the outward normal).
+template <class NodeOf>
+void append_elements(SurfaceMesh& out, const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                     const std::vector<std::array<std::uint32_t, 4>>& quads, bool flip, const NodeOf& node) {
+  out.triangles.reserve(out.triangles.size() + triangles.size());
+  for (const auto& t : triangles) {
+    const std::uint32_t a = node(t[0]), b = node(t[1]), c = node(t[2]);
+    out.triangles.push_back(flip ? std::array<std::uint32_t, 3>{a, c, b} : std::array<std::uint32_t, 3>{a, b, c});
+  }
+  for (const auto& q : quads) {
+    const std::uint32_t a = node(q[0]), b = node(q[1]), c = node(q[2]), d = node(q[3]);
+    out.quads.push_back(flip ? std::array<std::uint32_t, 4>{a, d, c, b} : std::array<std::uint32_t, 4>{a, b, c, d});
+  }
+}
+
 // Whether model surface `tag` is bounded by curve c or embeds it.
 bool surface_uses_curve(const geo::Model& model, int tag, int c) {
   const geo::ModelSurface* s = model.surface(tag);
@@ -729,15 +745,7 @@ void FaceMesher::output() {
     local = std::move(rr.triangles);
     local_quads = std::move(rr.quads);
   }
-  sm_out.triangles.reserve(local.size());
-  for (const auto& t : local) {
-    const std::uint32_t a = global_[t[0]], b = global_[t[1]], c = global_[t[2]];
-    sm_out.triangles.push_back(flip ? std::array<std::uint32_t, 3>{a, c, b} : std::array<std::uint32_t, 3>{a, b, c});
-  }
-  for (const auto& q : local_quads) {
-    const std::uint32_t a = global_[q[0]], b = global_[q[1]], c = global_[q[2]], d = global_[q[3]];
-    sm_out.quads.push_back(flip ? std::array<std::uint32_t, 4>{a, d, c, b} : std::array<std::uint32_t, 4>{a, b, c, d});
-  }
+  append_elements(sm_out, local, local_quads, flip, [this](std::uint32_t v) { return global_[v]; });
   res_.stats.new_nodes += sm_out.interior_nodes.size();
   res_.stats.triangles += sm_out.triangles.size();
   res_.stats.quads += sm_out.quads.size();
@@ -821,12 +829,7 @@ bool FaceMesher::run_transfinite(const geo::ModelSurface& s, const TransfiniteSu
     for (const auto& q : r.quads) turn += static_cast<int>(orient2d(P(q[0]), P(q[1]), P(q[2])));
     flip = (turn < 0) != !plane_.ccw_is_outward;
   }
-  for (const auto& t : r.triangles)
-    out.triangles.push_back(flip ? std::array<std::uint32_t, 3>{id[t[0]], id[t[2]], id[t[1]]}
-                                 : std::array<std::uint32_t, 3>{id[t[0]], id[t[1]], id[t[2]]});
-  for (const auto& q : r.quads)
-    out.quads.push_back(flip ? std::array<std::uint32_t, 4>{id[q[0]], id[q[3]], id[q[2]], id[q[1]]}
-                             : std::array<std::uint32_t, 4>{id[q[0]], id[q[1]], id[q[2]], id[q[3]]});
+  append_elements(out, r.triangles, r.quads, flip, [&id](std::uint32_t k) { return id[k]; });
   res_.stats.new_nodes += out.interior_nodes.size();
   res_.stats.triangles += out.triangles.size();
   res_.stats.quads += out.quads.size();
