@@ -19,7 +19,7 @@ Field[1] = MathEval;
 Field[1].F = Sprintf("%.17g", gamma);
 
 Coastline[1] = LonLatText;
-Coastline[1].FileName = "../../shared/data/gshhg/gb_ireland_f.txt";
+Coastline[1].FileName = "../data/gshhg/gb_ireland_f.txt";
 Coastline[1].AccuracyField = 1;
 // No Region: the file's own -R box (-11/2/49/61) closes the cut French coast.
 

@@ -17,12 +17,13 @@ If (!Exists(EarthGeoLoaded))
   Km = 1000;                                 // metres per kilometre: 30 * Km
   Nm = 1852;                                 // metres per nautical mile
 
-  // DataDir: the shared real data (GSHHG shorelines, ETOPO5 relief), with a trailing slash.
-  // The default is resolved from this file's own directory (stdlib/ of the source tree sits
-  // next to ../shared/data in the project's layout), so it does not depend on where a
-  // script or the working directory is. An installed stdlib or another checkout sets it:
-  // `stereomesh -setstring DataDir /path/to/data/ model.geo`.
-  DefineConstant[ DataDir = StrCat(CurrentDirectory, "../../shared/data/") ];
+  // DataDir: the data the project ships (ETOPO5 relief, small GSHHG exports: data/ of the
+  // repository, data/PROVENANCE.md), with a trailing slash. It sits beside this stdlib in
+  // the source tree, the build tree and an installed prefix (share/stereomesh/{stdlib,data}),
+  // so the default is resolved from this file's own directory, whatever the working
+  // directory or the script's place. Another data folder: `-setstring DataDir /path/ x.geo`.
+  // The full shoreline database comes from the system instead: `Coastline[n] = GSHHG;`.
+  DefineConstant[ DataDir = StrCat(CurrentDirectory, "../data/") ];
   GshhgDir = StrCat(DataDir, "gshhg/");
   BathyDir = StrCat(DataDir, "bathymetry/");
 

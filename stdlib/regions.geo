@@ -1,6 +1,6 @@
 // Lon/lat boxes {W, E, S, N} (degrees) of the regions of Lambrechts et al. (2008), section 4,
 // and places the examples refine around; the boxes match the regional GSHHG cuts in
-// shared/data/gshhg (data/README.md). `Include "regions.geo";`, then e.g.
+// data/gshhg (data/PROVENANCE.md). `Include "regions.geo";`, then e.g.
 // `Coastline[1].Region = {RegionGBR[]};` or `box[] = RegionArctic[]; Call InBox;`.
 //
 // Included twice (e.g. by a script and by another stdlib file), the second Include does

@@ -7,6 +7,9 @@
 
 namespace sm {
 
+/// "No such element" in a plain uint32_t index array (typed ids use Id::kNone).
+inline constexpr std::uint32_t kNoIndex = 0xFFFFFFFFu;
+
 template <class Tag>
 struct Id {
   static constexpr std::uint32_t kNone = 0xFFFFFFFFu;

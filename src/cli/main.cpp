@@ -11,6 +11,7 @@
 
 #include "base/interrupt_cleanup.h"
 #include "base/output_file.h"
+#include "base/share_dir.h"
 #include "cli/args.h"
 #include "cli/diagnostic_stream.h"
 #include "cli/terminal_progress.h"
@@ -71,23 +72,22 @@ int run(const std::vector<std::string>& argv) {
     std::fputs(sm::field::registry_markdown().c_str(), stdout);
     return kExitOk;
   }
+  // The stdlib and the shipped data sit beside the binary (installed prefix or build tree).
+  const std::filesystem::path share = sm::base::find_share_dir(sm::base::executable_path());
   if (a.version) {
     std::printf("stereomesh %s (Gmsh 4.8.4-compatible .geo language)\n", STEREOMESH_VERSION);
+    if (share.empty()) {
+      std::printf("stdlib: not found (no share/stereomesh/stdlib beside %s)\n",
+                  sm::base::executable_path().string().c_str());
+    } else {
+      std::printf("stdlib: %s\ndata:   %s\n", (share / "stdlib").string().c_str(),
+                  (share / "data").string().c_str());
+    }
     return kExitOk;
   }
   sm::interp::RunSettings settings;
   settings.include_dirs = a.include_dirs;
-  {
-    // The stdlib compiled in is the source tree's; an installed binary finds
-    // its copy in <prefix>/share/stereomesh/stdlib instead.
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    if (!fs::is_directory(settings.stdlib_dir, ec)) {
-      const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-      const fs::path installed = exe.parent_path().parent_path() / "share" / "stereomesh" / "stdlib";
-      if (!ec && fs::is_directory(installed, ec)) settings.stdlib_dir = installed.string();
-    }
-  }
+  if (!share.empty()) settings.stdlib_dir = (share / "stdlib").string();
   settings.search_path = split_path_list(std::getenv("STEREOMESH_PATH"));
   if (a.test) {
     const int failed = sm::interp::run_script_tests(a.files, settings, std::cout);

@@ -1,5 +1,5 @@
-// Cleaning of raw shoreline rings before coarsening (shared/data/README.md "Known
-// artefacts"): consecutive duplicates, zero-width spikes a->b->a, degenerate rings, and
+// Cleaning of raw shoreline rings before coarsening (the artefacts the real
+// files hold, data/PROVENANCE.md): consecutive duplicates, zero-width spikes a->b->a, degenerate rings, and
 // vertices on the projection's singular point (the South Pole).
 #pragma once
 

@@ -1,5 +1,5 @@
 // Reader for the native GSHHS/GSHHG binary shoreline files, versions 1.x to 2.3
-// (Wessel & Smith 1996; layout in shared/data/PROVENANCE.md section 2.3).
+// (Wessel & Smith 1996; layout in docs/coastlines.md section 2).
 #pragma once
 
 #include <cstdint>

@@ -1,4 +1,4 @@
-// GMT multi-segment lon/lat text reader (format in shared/data/README.md).
+// GMT multi-segment lon/lat text reader (format in data/PROVENANCE.md and docs/coastlines.md).
 #include "coast/read_lonlat_text.h"
 
 #include <fmt/format.h>

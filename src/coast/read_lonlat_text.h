@@ -1,4 +1,4 @@
-// Reader for GMT multi-segment lon/lat text (shared/data/gshhg/*.txt, `gmt coast -M`):
+// Reader for GMT multi-segment lon/lat text (data/gshhg/*.txt, `gmt coast -M`):
 // '#' comments, '>' segment headers with key=value words, one "lon lat" pair per line.
 #pragma once
 

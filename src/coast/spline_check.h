@@ -2,7 +2,7 @@
 // 2.2: a B-spline stays in the convex hulls of its consecutive control points). A span of a
 // uniform cubic B-spline lies in the convex hull of its 4 control points; where the hulls
 // of two spans overlap, the curves there may cross even though the control polygons do not
-// (thin islands, narrow straits: shared/data/README.md). find_spline_crossings decides it:
+// (thin islands, narrow straits). find_spline_crossings decides it:
 // Bezier form of each span, de Casteljau halving while the hulls overlap.
 #pragma once
 

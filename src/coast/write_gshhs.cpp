@@ -1,5 +1,5 @@
 // GSHHS 2.x writer: the inverse of read_gshhs for closed rings (layout in
-// shared/data/PROVENANCE.md section 2.3).
+// docs/coastlines.md section 2).
 #include "coast/write_gshhs.h"
 
 #include <algorithm>

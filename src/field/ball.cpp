@@ -24,7 +24,7 @@ class BallField final : public SizeField {
   double r_, thick_, v_in_, v_out_;
 };
 
-FieldPtr make(const BuildInputs& in) {
+FieldPtr make_ball(const BuildInputs& in) {
   const Options& o = in.opts;
   if (o.number("Radius") < 0) in.bad("Radius", "must not be negative");
   return std::make_shared<BallField>(
@@ -45,7 +45,7 @@ KindSpec ball_kind() {
               num_opt("XCenter", 0, "x of the centre"), num_opt("YCenter", 0, "y of the centre"),
               num_opt("ZCenter", 0, "z of the centre"),
           },
-          make};
+          make_ball};
 }
 
 }  // namespace sm::field

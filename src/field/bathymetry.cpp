@@ -216,7 +216,7 @@ std::vector<OptionSpec> depth_grid_options() {
 
 namespace {
 
-FieldPtr make(const BuildInputs& in) {
+FieldPtr make_bathymetry(const BuildInputs& in) {
   const Options& o = in.opts;
   LonLatGrid g = read_depth_grid(in);
   const std::string& output = o.string("Output");
@@ -289,7 +289,7 @@ KindSpec bathymetry_kind() {
               num_opt("MissingAsLand", 0, "1: missing/NaN nodes become MinDepth instead of an error"),
               num_opt("Period", 44712, "T of the tidal criterion, seconds (the M2 tide: 12.42 h)"),
           },
-          make};
+          make_bathymetry};
 }
 
 }  // namespace sm::field

@@ -30,7 +30,7 @@ class BoxField final : public SizeField {
   double thick_, v_in_, v_out_;
 };
 
-FieldPtr make(const BuildInputs& in) {
+FieldPtr make_box(const BuildInputs& in) {
   const Options& o = in.opts;
   return std::make_shared<BoxField>(Vec3{o.number("XMin"), o.number("YMin"), o.number("ZMin")},
                                     Vec3{o.number("XMax"), o.number("YMax"), o.number("ZMax")},
@@ -51,7 +51,7 @@ KindSpec box_kind() {
               num_opt("ZMin", 0, "lower z bound"), num_opt("ZMax", 0, "upper z bound"),
               num_opt("Thickness", 0, "width of the VIn-to-VOut transition outside the box"),
           },
-          make};
+          make_box};
 }
 
 }  // namespace sm::field

@@ -26,6 +26,7 @@
 #include "field/error.h"
 #include "field/kinds.h"
 #include "field/knn.h"
+#include "field/min_grid.h"
 
 namespace sm::field {
 
@@ -54,6 +55,10 @@ struct ChannelWidths::Impl {
   std::vector<int> water;                        // per chain: CoastChain::water_side
   double cap = kMaxLc;
   std::unique_ptr<KdTree> tree;
+  // Per cell, the smallest width that a point there can read: a point reads the
+  // widths of its nearest sample and of one of that sample's neighbours along the
+  // coast, so sample i carries the smallest of both sides' widths at i, prev and next.
+  std::unique_ptr<MinGrid> narrowest;
 
   double width_at(std::uint32_t i, const Vec3& x) const {
     const double off = dot(x - pts[i], side[i]);
@@ -153,6 +158,14 @@ ChannelWidths::ChannelWidths(std::vector<CoastChain> chains, double cap, int thr
   parallel_for_chunks(resolve_thread_count(threads), n, kSamplesPerChunk, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) search(i);
   });
+  std::vector<double> least(n);
+  for (std::size_t i = 0; i < n; ++i)
+    least[i] = std::min({m.w_pos[i], m.w_neg[i], m.w_pos[m.prev[i]], m.w_neg[m.prev[i]], m.w_pos[m.next[i]],
+                         m.w_neg[m.next[i]]});
+  // Level-0 cells of about the median spacing: finer cells would only hold one sample.
+  std::vector<double> gaps = m.spacing;
+  std::nth_element(gaps.begin(), gaps.begin() + static_cast<long>(n / 2), gaps.end());
+  m.narrowest = std::make_unique<MinGrid>(m.pts, least, gaps[n / 2]);
 }
 
 ChannelWidths::~ChannelWidths() = default;
@@ -202,6 +215,18 @@ void ChannelWidths::width_within(std::span<const Vec3> pts, std::span<const doub
   }
 }
 
+bool ChannelWidths::certainly_at_least(const Vec3& x, double max_width) const {
+  const Impl& m = *impl_;
+  if (!m.narrowest) return false;
+  // width_within finds the nearest sample within r = min(max_width, cap) / 2 and reads
+  // at least the smallest width the grid holds for it (interpolation between two
+  // widths stays above the smaller one up to rounding, hence the margin); without
+  // a sample that near it reads the cap.
+  const double wanted = std::min(max_width, m.cap);
+  constexpr double kRounding = 1e-9;
+  return m.narrowest->lower_bound(x, 0.5 * wanted) >= wanted * (1 + kRounding);
+}
+
 ChannelWidthField::ChannelWidthField(std::vector<CoastChain> chains, const ChannelWidthOptions& o, double cap)
     : widths_(std::move(chains), cap, o.threads), o_(o), cap_(cap) {}
 
@@ -220,12 +245,24 @@ void ChannelWidthField::lower(std::span<const Vec3> pts, std::span<double> h) co
   // Only a width below N h can lower h (none at all where h <= SizeMin; any where
   // SizeMax is below h). Past the limit width_within returns a width >= N h, whose
   // size is >= h: the min below leaves h as it is, as a full evaluation would.
-  std::vector<double> limit(h.size()), w(h.size());
-  for (std::size_t i = 0; i < h.size(); ++i)
-    limit[i] = !(h[i] > o_.size_min) ? 0 : o_.size_max < h[i] ? cap_ : o_.elements_across * h[i];
-  widths_.width_within(pts, limit, w);
-  for (std::size_t i = 0; i < h.size(); ++i)
-    if (limit[i] > 0) h[i] = std::min(h[i], size_of(w[i]));
+  // Where h <= SizeMax and the grid of smallest widths shows none below N h within
+  // reach, that width is >= min(N h, cap), whose size is >= h: no search needed.
+  std::vector<std::uint32_t> which;
+  std::vector<Vec3> at;
+  std::vector<double> limit;
+  for (std::size_t i = 0; i < h.size(); ++i) {
+    if (!(h[i] > o_.size_min)) continue;
+    const bool capped = o_.size_max < h[i];
+    const double lim = capped ? cap_ : o_.elements_across * h[i];
+    if (!capped && widths_.certainly_at_least(pts[i], lim)) continue;
+    which.push_back(static_cast<std::uint32_t>(i));
+    at.push_back(pts[i]);
+    limit.push_back(lim);
+  }
+  if (which.empty()) return;
+  std::vector<double> w(which.size());
+  widths_.width_within(at, limit, w);
+  for (std::size_t k = 0; k < which.size(); ++k) h[which[k]] = std::min(h[which[k]], size_of(w[k]));
 }
 
 namespace {
@@ -243,7 +280,7 @@ double search_cap(const std::vector<CoastChain>& chains, const ChannelWidthOptio
   return kDefaultCapSpacings * gaps[gaps.size() / 2];
 }
 
-FieldPtr make(const BuildInputs& in) {
+FieldPtr make_channel_width(const BuildInputs& in) {
   const Options& o = in.opts;
   ChannelWidthOptions opts;
   opts.elements_across = o.number("ElementsAcross");
@@ -299,7 +336,7 @@ KindSpec channel_width_kind() {
                       "largest size returned; widths up to ElementsAcross * SizeMax are searched "
                       "(without it: 64 median coast sample spacings)"),
           },
-          make};
+          make_channel_width};
 }
 
 }  // namespace sm::field

@@ -40,6 +40,10 @@ class ChannelWidths {
   /// The same where the width is below max_width[i] (one value for all points, or
   /// one per point); elsewhere some value at least that.
   void width_within(std::span<const Vec3> pts, std::span<const double> max_width, std::span<double> w) const;
+  /// True only where width_within(x, max_width) is certainly at least min(max_width,
+  /// the cap), known from a grid of the samples' smallest widths without a search
+  /// (false where the grid cannot tell).
+  bool certainly_at_least(const Vec3& x, double max_width) const;
   std::size_t samples() const;
 
  private:

@@ -25,7 +25,7 @@ class ConstantField final : public SizeField {
   EntityLists lists_;
 };
 
-FieldPtr make(const BuildInputs& in) {
+FieldPtr make_constant(const BuildInputs& in) {
   return std::make_shared<ConstantField>(in.opts.number("VIn"), in.opts.number("VOut"),
                                          EntityLists(in.opts));
 }
@@ -43,7 +43,7 @@ KindSpec constant_kind() {
               list_opt("SurfacesList", "surface tags", {"FacesList"}),
               list_opt("VolumesList", "volume tags", {"RegionsList"}),
           },
-          make};
+          make_constant};
 }
 
 }  // namespace sm::field

@@ -8,7 +8,7 @@
 namespace sm::field {
 namespace {
 
-FieldPtr make(const BuildInputs& in) {
+FieldPtr make_curvature(const BuildInputs& in) {
   const double d = stencil_delta(in);
   // For each of the six points x +- d/2 e_a, the six points of a central
   // gradient around it: offset index = (2a + side) * 6 + (2b + side').
@@ -44,7 +44,7 @@ KindSpec curvature_kind() {
               field_opt("InField", 1, "field whose level-set curvature is computed", {"IField"}),
               num_opt("Delta", 0, "finite-difference step (0: bbox diagonal / 1e4)"),
           },
-          make};
+          make_curvature};
 }
 
 }  // namespace sm::field

@@ -30,7 +30,7 @@ class CylinderField final : public SizeField {
   double r_, v_in_, v_out_;
 };
 
-FieldPtr make(const BuildInputs& in) {
+FieldPtr make_cylinder(const BuildInputs& in) {
   const Options& o = in.opts;
   const Vec3 axis{o.number("XAxis"), o.number("YAxis"), o.number("ZAxis")};
   if (norm2(axis) == 0) in.bad("ZAxis", "the axis vector must not be zero");
@@ -52,7 +52,7 @@ KindSpec cylinder_kind() {
               num_opt("XCenter", 0, "x of the centre"), num_opt("YCenter", 0, "y of the centre"),
               num_opt("ZCenter", 0, "z of the centre"),
           },
-          make};
+          make_cylinder};
 }
 
 }  // namespace sm::field

@@ -31,7 +31,7 @@ void skip_missing(const BuildInputs& in, std::string_view option, std::string_vi
                                  option, what, tag));
 }
 
-FieldPtr make(const BuildInputs& in) {
+FieldPtr make_distance(const BuildInputs& in) {
   const Options& o = in.opts;
   std::vector<Vec3> samples;
   for (double v : o.list("PointsList")) {
@@ -92,7 +92,7 @@ KindSpec distance_kind() {
               num_opt("FieldY", -1, "ignored (deprecated in Gmsh)"),
               num_opt("FieldZ", -1, "ignored (deprecated in Gmsh)"),
           },
-          make};
+          make_distance};
 }
 
 }  // namespace sm::field

@@ -79,7 +79,7 @@ class GradationField final : public SizeField {
   double radius_;
 };
 
-FieldPtr make(const BuildInputs& in) {
+FieldPtr make_gradation(const BuildInputs& in) {
   const Options& o = in.opts;
   const double rate = o.number("Rate"), radius = o.number("Radius"), res = o.number("Resolution");
   if (!(rate > 0) || !std::isfinite(rate)) in.bad("Rate", "must be a positive slope");
@@ -132,7 +132,7 @@ KindSpec gradation_kind() {
               num_opt("LatMin", -90, "south edge (degrees)"),
               num_opt("LatMax", 90, "north edge (degrees)"),
           },
-          make};
+          make_gradation};
 }
 
 }  // namespace sm::field

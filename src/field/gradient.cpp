@@ -8,7 +8,7 @@
 namespace sm::field {
 namespace {
 
-FieldPtr make(const BuildInputs& in) {
+FieldPtr make_gradient(const BuildInputs& in) {
   const double d = stencil_delta(in);
   const int kind = static_cast<int>(in.opts.number("Kind"));
   if (kind < 0 || kind > 3) in.bad("Kind", "must be 0 (x), 1 (y), 2 (z) or 3 (norm)");
@@ -37,7 +37,7 @@ KindSpec gradient_kind() {
               num_opt("Kind", 3, "component: 0 = x, 1 = y, 2 = z, 3 = norm"),
               num_opt("Delta", 0, "finite-difference step (0: bbox diagonal / 1e4)"),
           },
-          make};
+          make_gradient};
 }
 
 }  // namespace sm::field

@@ -5,7 +5,7 @@
 namespace sm::field {
 namespace {
 
-FieldPtr make(const BuildInputs& in) {
+FieldPtr make_laplacian(const BuildInputs& in) {
   const double d = stencil_delta(in);
   std::vector<Vec3> off = {Vec3{}};
   for (int a = 0; a < 3; ++a) {
@@ -27,7 +27,7 @@ KindSpec laplacian_kind() {
               field_opt("InField", 1, "field to differentiate", {"IField"}),
               num_opt("Delta", 0.1, "finite-difference step (Gmsh 4.8.4 default 0.1; 0: bbox/1e4)"),
           },
-          make};
+          make_laplacian};
 }
 
 }  // namespace sm::field

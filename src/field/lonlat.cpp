@@ -39,7 +39,7 @@ class LonLatField final : public CompositeField {
   double r_;
 };
 
-FieldPtr make(const BuildInputs& in) {
+FieldPtr make_lonlat(const BuildInputs& in) {
   const double r = in.opts.number("RadiusStereo");
   if (!(r > 0) || !std::isfinite(r)) in.bad("RadiusStereo", "must be a positive radius");
   return std::make_shared<LonLatField>(in.input("InField"), in.opts.number("FromStereo") != 0, r);
@@ -58,7 +58,7 @@ KindSpec lonlat_kind() {
               num_opt("RadiusStereo", 6371e3,
                       "sphere radius used for the latitude (and the stereographic map)"),
           },
-          make};
+          make_lonlat};
 }
 
 }  // namespace sm::field

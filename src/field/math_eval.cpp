@@ -41,7 +41,7 @@ MathExpr compile_f(const Options& o) {
 
 std::vector<int> refs(const Options& o) { return compile_f(o).field_refs(); }
 
-FieldPtr make(const BuildInputs& in) {
+FieldPtr make_math_eval(const BuildInputs& in) {
   MathExpr e = compile_f(in.opts);
   std::vector<FieldPtr> inputs;
   for (int id : e.field_refs()) inputs.push_back(in.field(id, "F"));
@@ -57,7 +57,7 @@ KindSpec math_eval_kind() {
           "sin sinh sqrt tan tanh atanh floor ceil round trunc sign step deg rad fac min max sum "
           "med rand.",
           {str_opt("F", "F2 + Sin(z)", "the expression (MathEx syntax, not the .geo grammar)")},
-          make, refs};
+          make_math_eval, refs};
 }
 
 }  // namespace sm::field

@@ -25,7 +25,7 @@ double max_eigenvalue(double a, double b, double c, double d, double e, double f
   return q + 2 * p * std::cos(std::acos(r) / 3);
 }
 
-FieldPtr make(const BuildInputs& in) {
+FieldPtr make_max_eigen_hessian(const BuildInputs& in) {
   const double d = stencil_delta(in);
   // 0: centre; 1..6: +-d along x, y, z; then for (x,y), (x,z), (y,z) the
   // four diagonal points (+,+), (-,-), (-,+), (+,-) at half steps.
@@ -61,7 +61,7 @@ KindSpec max_eigen_hessian_kind() {
               field_opt("InField", 1, "field whose Hessian is computed", {"IField"}),
               num_opt("Delta", 0, "finite-difference step (0: bbox diagonal / 1e4)"),
           },
-          make};
+          make_max_eigen_hessian};
 }
 
 }  // namespace sm::field

@@ -5,7 +5,7 @@
 namespace sm::field {
 namespace {
 
-FieldPtr make(const BuildInputs& in) {
+FieldPtr make_mean(const BuildInputs& in) {
   const double d = stencil_delta(in);
   std::vector<Vec3> off = {Vec3{}};
   for (int a = 0; a < 3; ++a) {
@@ -25,7 +25,7 @@ KindSpec mean_kind() {
               field_opt("InField", 1, "field to smooth", {"IField"}),
               num_opt("Delta", 0, "distance of the neighbours (0: bbox diagonal / 1e4)"),
           },
-          make};
+          make_mean};
 }
 
 }  // namespace sm::field

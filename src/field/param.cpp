@@ -30,7 +30,7 @@ class ParamField final : public CompositeField {
   std::array<MathExpr, 3> f_;
 };
 
-FieldPtr make(const BuildInputs& in) {
+FieldPtr make_param(const BuildInputs& in) {
   // An empty expression keeps the coordinate (Gmsh would fail to parse it).
   auto expr = [&](const char* opt, const char* ident) {
     const std::string& s = in.opts.string(opt);
@@ -57,7 +57,7 @@ KindSpec param_kind() {
               str_opt("FY", "", "new y as an expression in x, y, z (empty: y)"),
               str_opt("FZ", "", "new z as an expression in x, y, z (empty: z)"),
           },
-          make};
+          make_param};
 }
 
 }  // namespace sm::field

@@ -28,7 +28,7 @@ class RestrictField final : public SizeField {
   EntityLists lists_;
 };
 
-FieldPtr make(const BuildInputs& in) {
+FieldPtr make_restrict(const BuildInputs& in) {
   return std::make_shared<RestrictField>(in.input("InField"), EntityLists(in.opts));
 }
 
@@ -45,7 +45,7 @@ KindSpec restrict_kind() {
               list_opt("SurfacesList", "surface tags", {"FacesList"}),
               list_opt("VolumesList", "volume tags", {"RegionsList"}),
           },
-          make};
+          make_restrict};
 }
 
 }  // namespace sm::field

@@ -132,7 +132,7 @@ class StructuredField final : public SizeField {
   double outside_;
 };
 
-FieldPtr make(const BuildInputs& in) {
+FieldPtr make_structured(const BuildInputs& in) {
   const std::string& file = in.opts.string("FileName");
   if (file.empty()) in.bad("FileName", "no grid file given");
   const auto path = in.path(file);
@@ -166,7 +166,7 @@ KindSpec structured_kind() {
               num_opt("SetOutsideValue", 0, "1: return OutsideValue outside the grid; 0: extend edges"),
               num_opt("OutsideValue", 0, "value outside the grid when SetOutsideValue = 1"),
           },
-          make};
+          make_structured};
 }
 
 }  // namespace sm::field

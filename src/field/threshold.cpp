@@ -39,7 +39,7 @@ class ThresholdField final : public CompositeField {
   bool sigmoid_, stop_;
 };
 
-FieldPtr make(const BuildInputs& in) {
+FieldPtr make_threshold(const BuildInputs& in) {
   const Options& o = in.opts;
   const double smin = o.number("SizeMin"), smax = o.number("SizeMax");
   const double dmin = o.number("DistMin"), dmax = o.number("DistMax");
@@ -67,7 +67,7 @@ KindSpec threshold_kind() {
               num_opt("Sigmoid", 0, "1: sigmoid ramp e^(12r-6)/(1+e^(12r-6)) instead of linear"),
               num_opt("StopAtDistMax", 0, "1: return 1e22 (no constraint) where input >= DistMax"),
           },
-          make};
+          make_threshold};
 }
 
 }  // namespace sm::field

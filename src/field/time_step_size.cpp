@@ -39,7 +39,7 @@ class TimeStepSize final : public CompositeField {
   double radius_, scale_, min_depth_;
 };
 
-FieldPtr make(const BuildInputs& in) {
+FieldPtr make_time_step_size(const BuildInputs& in) {
   const Options& o = in.opts;
   const double dt = o.number("Dt"), courant = o.number("Courant"), min_depth = o.number("MinDepth");
   if (!(dt > 0)) in.bad("Dt", "must be positive (seconds)");
@@ -78,7 +78,7 @@ KindSpec time_step_kind() {
           "The smallest size allowed for an explicit time step: Dt*sqrt(9.81 H)/Courant, H the depth "
           "(DepthField, or the relief grid of FileName as Bathymetry reads it) raised to MinDepth. "
           "Use it in a Max with the other criteria so that the mesh runs at Dt.",
-          std::move(opts), make, depth_ref};
+          std::move(opts), make_time_step_size, depth_ref};
 }
 
 }  // namespace sm::field

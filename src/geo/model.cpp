@@ -16,8 +16,6 @@ namespace sm::geo {
 
 namespace {
 
-constexpr int kLoopSlot = 4;
-
 GeoError missing(EntityKind k, int tag, std::vector<int> context, const std::string& where) {
   std::vector<int> tags{tag};
   tags.insert(tags.end(), context.begin(), context.end());

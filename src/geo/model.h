@@ -244,7 +244,8 @@ class Model {
   std::map<int, SurfaceGeometry> geometries_;
   std::map<std::pair<int, int>, PhysicalGroup> physicals_;   // (dim, tag)
   int current_geometry_ = 0;
-  // High-water marks as Gmsh keeps them: slots 0..3 = dims, 4 = curve loops.
+  // High-water marks as Gmsh keeps them: slots 0..3 = dims, kLoopSlot = curve loops.
+  static constexpr int kLoopSlot = 4;
   std::array<int, 5> max_tag_{0, 0, 0, 0, 0};
   int max_physical_tag_ = 0;   // high-water mark of physical group tags (newreg, auto tags)
   std::uint64_t revision_ = 0;  // 0: the empty model

@@ -14,8 +14,6 @@ namespace sm::geo {
 
 namespace {
 
-constexpr int kLoopSlot = 4;
-
 bool contains(const std::vector<int>& v, int x) { return std::find(v.begin(), v.end(), x) != v.end(); }
 
 }  // namespace

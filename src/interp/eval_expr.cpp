@@ -16,16 +16,6 @@ using namespace sm::lang;
 
 namespace {
 
-std::string_view kind_word(const Value& v) {
-  switch (v.kind()) {
-    case Value::Kind::Number: return "a number";
-    case Value::Kind::List: return "a list";
-    case Value::Kind::String: return "a string";
-    case Value::Kind::StringList: return "a string list";
-  }
-  return "?";
-}
-
 std::string_view op_text(Tok op) {
   switch (op) {
     case Tok::Caret: return "^";
@@ -88,7 +78,7 @@ std::string Interpreter::resolve_name(const Name& n) {
 double Interpreter::eval_number(ExprId e) {
   const Value v = eval(e);
   if (!v.is_numeric())
-    fail_fmt(ast_.expr(e).range, Diag::WrongType, fmt::format("expected a number, found {}", kind_word(v)));
+    fail_fmt(ast_.expr(e).range, Diag::WrongType, fmt::format("expected a number, found {}", kind_phrase(v)));
   if (v.nums().empty())
     fail_fmt(ast_.expr(e).range, Diag::WrongType, "expected a number, found an empty list");
   return v.nums()[0];
@@ -98,7 +88,7 @@ std::string Interpreter::eval_string(ExprId e) {
   if (std::string name; physical_group_name(*this, e, name)) return name;
   const Value v = eval(e);
   if (!v.is_string())
-    fail_fmt(ast_.expr(e).range, Diag::WrongType, fmt::format("expected a string, found {}", kind_word(v)));
+    fail_fmt(ast_.expr(e).range, Diag::WrongType, fmt::format("expected a string, found {}", kind_phrase(v)));
   if (v.kind() == Value::Kind::StringList) return join_lines(v.strs());
   return v.strs()[0];
 }
@@ -116,7 +106,7 @@ Value Interpreter::eval_list_arg(ExprId e) {
 std::vector<double> Interpreter::eval_numbers(ExprId e) {
   Value v = eval(e);
   if (!v.is_numeric())
-    fail_fmt(ast_.expr(e).range, Diag::WrongType, fmt::format("expected numbers, found {}", kind_word(v)));
+    fail_fmt(ast_.expr(e).range, Diag::WrongType, fmt::format("expected numbers, found {}", kind_phrase(v)));
   return std::move(v.nums());
 }
 
@@ -250,7 +240,7 @@ Value Interpreter::eval_unary(const Expr& e, const UnaryExpr& u) {
   Value v = eval(u.operand);
   if (!v.is_numeric())
     fail_fmt(e.range, Diag::WrongType,
-             fmt::format("operator '{}' needs a number, found {}", op_text(u.op), kind_word(v)));
+             fmt::format("operator '{}' needs a number, found {}", op_text(u.op), kind_phrase(v)));
   for (double& x : v.nums()) {
     if (u.op == Tok::Minus) x = -x;
     else if (u.op == Tok::Not) x = (x == 0) ? 1 : 0;
@@ -280,8 +270,8 @@ Value Interpreter::eval_binary(const Expr& e, const BinaryExpr& b) {
 Value Interpreter::apply_binary(const Expr& e, const BinaryExpr& b, const Value& l, const Value& r) {
   if (!l.is_numeric() || !r.is_numeric())
     fail_fmt(e.range, Diag::WrongType,
-             fmt::format("operator '{}' needs numbers, found {} and {}", op_text(b.op), kind_word(l),
-                         kind_word(r)));
+             fmt::format("operator '{}' needs numbers, found {} and {}", op_text(b.op), kind_phrase(l),
+                         kind_phrase(r)));
   const SourceRange rr = ast_.expr(b.rhs).range;
   const SourceRange lr = ast_.expr(b.lhs).range;
   auto apply = [&](double x, double y) -> double {

@@ -27,7 +27,7 @@ namespace sm::interp {
 struct RunSettings {
   std::vector<std::string> include_dirs;   ///< `-I DIR`, searched after the including file's dir
   std::vector<std::string> search_path;    ///< $STEREOMESH_PATH entries
-  std::string stdlib_dir = STEREOMESH_STDLIB_DIR;
+  std::string stdlib_dir;                  ///< the stdlib templates, searched last (base/share_dir.h)
   Limits limits;                           ///< hang and memory guards (limits.h)
 };
 

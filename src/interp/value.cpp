@@ -59,6 +59,16 @@ std::string join_lines(const std::vector<std::string>& strs) {
   return s;
 }
 
+std::string_view kind_phrase(const Value& v) {
+  switch (v.kind()) {
+    case Value::Kind::Number: return "a number";
+    case Value::Kind::List: return "a list";
+    case Value::Kind::String: return "a string";
+    case Value::Kind::StringList: return "a string list";
+  }
+  return "?";
+}
+
 std::string suffixed_name(std::string_view base, double index) {
   return fmt::format("{}_{}", base, static_cast<long long>(std::trunc(index)));
 }

@@ -77,6 +77,9 @@ class Symbols {
   std::map<std::string, std::vector<std::string>, std::less<>> strs_;
 };
 
+/// What the value is, for messages: "a number", "a list", "a string", "a string list".
+std::string_view kind_phrase(const Value& v);
+
 /// A string list as one string, its items joined with newlines (what a string
 /// list becomes where one string is expected: `s = Str("a", "b");`).
 std::string join_lines(const std::vector<std::string>& strs);

@@ -28,7 +28,6 @@ namespace sm {
 namespace {
 
 constexpr std::uint32_t kGhost = 0xFFFFFFFEu;
-constexpr std::uint32_t kNo = 0xFFFFFFFFu;
 
 // xorshift64*: small, fast, and the same on every platform.
 struct Rng {
@@ -284,7 +283,7 @@ void Builder::insert(std::uint32_t p, std::uint32_t t0) {
       link(cavity_[i] << 2 | 1, cavity_[j] << 2 | 2);
     }
   } else {
-    std::uint32_t ghost_tri = kNo;
+    std::uint32_t ghost_tri = kNoIndex;
     // Every b below is the a of the next boundary edge, written just before:
     // the map needs no clearing, and exists only once a large cavity occurs.
     if (vmap_.empty()) vmap_.resize(pts_.size());
@@ -323,12 +322,12 @@ void Builder::run() {
   pts_.resize(n);
   for (std::uint32_t k = 0; k < n; ++k) pts_[k] = m_.xy[orig_[k]];
   // Initial triangle: the first three points in order that are not collinear.
-  std::uint32_t i0 = n == 0 ? kNo : 0, i1 = kNo, i2 = kNo;
-  for (std::uint32_t k = 1; k < n && i1 == kNo; ++k)
+  std::uint32_t i0 = n == 0 ? kNoIndex : 0, i1 = kNoIndex, i2 = kNoIndex;
+  for (std::uint32_t k = 1; k < n && i1 == kNoIndex; ++k)
     if (!(pos(k) == pos(i0))) i1 = k;
-  for (std::uint32_t k = i1 + 1; k < n && i1 != kNo && i2 == kNo; ++k)
+  for (std::uint32_t k = i1 + 1; k < n && i1 != kNoIndex && i2 == kNoIndex; ++k)
     if (orient2d(pos(i0), pos(i1), pos(k), stats_) != Sign::Zero) i2 = k;
-  if (i2 == kNo) {
+  if (i2 == kNoIndex) {
     res_.error = n < 3 ? "fewer than three points to triangulate" : "all points are collinear or coincident";
     return;
   }
@@ -353,10 +352,10 @@ void Builder::run() {
     if (!is_ghost(tri_[t0])) {
       const std::uint32_t* tc = tri_[t0].v;
       const Vec2 q = pos(p);
-      std::uint32_t same = kNo;
+      std::uint32_t same = kNoIndex;
       for (int e = 0; e < 3; ++e)
         if (pos(tc[e]) == q) same = tc[e];
-      if (same != kNo) {
+      if (same != kNoIndex) {
         res_.duplicates.push_back({VertexId{orig_[p]}, VertexId{orig_[same]}});
         continue;
       }
@@ -392,7 +391,7 @@ void Builder::finish() {
   for (std::uint32_t g : ghosts)
     for (std::uint32_t e = 0; e < 3; ++e) {
       const std::uint32_t o = tri_[g].n[e];
-      if (!is_ghost(tri_[o >> 2])) tri_[o >> 2].n[o & 3] = kNo;
+      if (!is_ghost(tri_[o >> 2])) tri_[o >> 2].n[o & 3] = kNoIndex;
     }
   const std::uint32_t nt = slots - static_cast<std::uint32_t>(ghosts.size());
   std::uint32_t mover = slots;
@@ -403,7 +402,7 @@ void Builder::finish() {
     tri_[g] = tri_[mover];
     for (std::uint32_t e = 0; e < 3; ++e) {
       const std::uint32_t o = tri_[g].n[e];
-      if (o != kNo) tri_[o >> 2].n[o & 3] = g << 2 | e;
+      if (o != kNoIndex) tri_[o >> 2].n[o & 3] = g << 2 | e;
     }
   }
   m_.corner.resize(3 * std::size_t{nt});
@@ -418,7 +417,7 @@ void Builder::finish() {
       const std::uint32_t o = tri_[t].n[e];
       const std::uint32_t k = tri_[t].v[e];
       m_.corner[3 * t + e] = VertexId{orig_[k]};
-      m_.twin[3 * t + e] = o == kNo ? Side{} : Side{3 * (o >> 2) + (o & 3)};
+      m_.twin[3 * t + e] = o == kNoIndex ? Side{} : Side{3 * (o >> 2) + (o & 3)};
       out_local[k] = Side{3 * t + e};
     }
   }

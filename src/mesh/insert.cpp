@@ -8,7 +8,6 @@
 namespace sm {
 
 namespace {
-constexpr std::uint32_t kNo = 0xFFFFFFFFu;
 // Visited triangles are found by scanning up to this many slots.
 constexpr std::size_t kScanned = 16;
 }
@@ -129,7 +128,7 @@ InsertOutcome PointInserter::insert(Vec2 c, TriId t0) {
       m_.link(Side{3 * cavity_[i] + 1}, Side{3 * cavity_[j] + 2});
     }
   } else {
-    if (vmap_.size() < m_.num_vertices()) vmap_.resize(m_.num_vertices() + m_.num_vertices() / 2, kNo);
+    if (vmap_.size() < m_.num_vertices()) vmap_.resize(m_.num_vertices() + m_.num_vertices() / 2, kNoIndex);
     for (std::size_t i = 0; i < k; ++i) vmap_[bound_[i].a.value] = cavity_[i];
     for (std::size_t i = 0; i < k; ++i) m_.link(Side{3 * cavity_[i] + 1}, Side{3 * vmap_[bound_[i].b.value] + 2});
   }

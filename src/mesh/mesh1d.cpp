@@ -13,6 +13,7 @@
 
 #include <fmt/format.h>
 
+#include "base/elapsed.h"
 #include "base/parallel.h"
 #include "mesh/boundary_recovery.h"
 #include "mesh/transfinite_curve.h"
@@ -27,10 +28,6 @@ std::size_t ModelMesh::num_curve_edges() const {
 }
 
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 // Integrand |X'(t)| / h(t) at a batch of parameters, and |X'(t)| (the smoothing needs it).
 void integrand(const geo::Curve& c, const CurveSizeFn& size, std::span<const double> t, std::vector<geo::Jet3>& jets,

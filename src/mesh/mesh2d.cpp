@@ -16,6 +16,7 @@
 
 #include <fmt/format.h>
 
+#include "base/elapsed.h"
 #include "base/parallel.h"
 #include "exact/predicates.h"
 #include "exact/triangle_rho.h"
@@ -47,10 +48,6 @@ constexpr double kDel2dRadiusLimit = 0.73;
 // A face refined in one piece gets its own progress stage from this estimated size on
 // (smaller ones refine in well under a tenth of a second).
 constexpr std::uint64_t kNestedProgressTriangles = 65536;
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 // One closed chain of global nodes (first not repeated) with the curve of each edge.
 struct Chain {

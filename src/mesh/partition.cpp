@@ -15,6 +15,7 @@
 
 #include <fmt/format.h>
 
+#include "base/elapsed.h"
 #include "base/parallel.h"
 #include "mesh/cdt.h"
 #include "mesh/delaunay.h"
@@ -23,7 +24,6 @@
 namespace sm {
 namespace {
 
-constexpr std::uint32_t kNone = 0xFFFFFFFFu;
 constexpr double kEquilateralArea = 0.4330127018922193;  // sqrt(3)/4: equilateral of side 1
 constexpr std::size_t kBatch = 4096;
 
@@ -35,10 +35,6 @@ void release_free_memory() {
 #if defined(__GLIBC__)
   malloc_trim(0);
 #endif
-}
-
-double since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 double area(const TriangleStore& m, std::uint32_t t) {
@@ -108,10 +104,10 @@ struct Coarse {
   TriangleStore m;
   std::vector<std::uint32_t> part_of;         // per slot
   std::vector<std::vector<std::uint32_t>> part_tris;
-  std::vector<std::uint32_t> border_of_side;  // per side: index into borders, or kNone
+  std::vector<std::uint32_t> border_of_side;  // per side: index into borders, or kNoIndex
   std::vector<Border> borders;
   std::vector<Vec2> border_xy;
-  // Per coarse vertex: its id in the result, kNone for a vertex inside a part (dropped:
+  // Per coarse vertex: its id in the result, kNoIndex for a vertex inside a part (dropped:
   // a part is refined from its boundary alone, so fronts meet no stray vertex). The input
   // vertices keep their ids; border vertices follow in coarse id order, then border points.
   std::vector<std::uint32_t> new_id;
@@ -140,7 +136,7 @@ void mesh_part(const Coarse& c, std::uint32_t p, const RefineOptions& base, Part
   std::vector<std::uint32_t> cv;
   for (std::uint32_t t : tris)
     for (std::uint32_t e = 0; e < 3; ++e)
-      if (c.new_id[cm.vertex(TriId{t}, e).value] != kNone) cv.push_back(cm.vertex(TriId{t}, e).value);
+      if (c.new_id[cm.vertex(TriId{t}, e).value] != kNoIndex) cv.push_back(cm.vertex(TriId{t}, e).value);
   std::sort(cv.begin(), cv.end());
   cv.erase(std::unique(cv.begin(), cv.end()), cv.end());
   auto local = [&](VertexId v) {
@@ -411,14 +407,14 @@ PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, 
   const std::uint32_t k = part_count(res.stats.estimate, opt);
   res.stats.parts = k;
   const std::vector<std::uint32_t> part = bisect_parts(centre, weight, k);
-  c.part_of.assign(c.m.num_slots(), kNone);
+  c.part_of.assign(c.m.num_slots(), kNoIndex);
   c.part_tris.resize(k);
   for (std::size_t i = 0; i < tris.size(); ++i) {
     c.part_of[tris[i]] = part[i];
     c.part_tris[part[i]].push_back(tris[i]);
   }
   // Border edges: subdivided once, from the smaller vertex id.
-  c.border_of_side.assign(c.m.corner.size(), kNone);
+  c.border_of_side.assign(c.m.corner.size(), kNoIndex);
   for (std::uint32_t t : tris)
     for (std::uint32_t e = 0; e < 3; ++e) {
       const Side s = side_of(TriId{t}, e);
@@ -433,17 +429,17 @@ PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, 
       c.borders.push_back(br);
     }
   const std::uint32_t n0 = m.num_vertices();
-  c.new_id.assign(c.m.num_vertices(), kNone);
+  c.new_id.assign(c.m.num_vertices(), kNoIndex);
   for (std::uint32_t v = 0; v < n0; ++v) c.new_id[v] = v;
   for (const Border& br : c.borders)
     for (VertexId v : {br.a, br.b})
       if (v.value >= n0) c.new_id[v.value] = 0;   // kept; numbered below
   c.n_kept = n0;
   for (std::uint32_t v = n0; v < c.m.num_vertices(); ++v)
-    if (c.new_id[v] != kNone) c.new_id[v] = c.n_kept++;
+    if (c.new_id[v] != kNoIndex) c.new_id[v] = c.n_kept++;
   res.stats.border_edges = c.borders.size();
   res.stats.border_points = c.border_xy.size();
-  res.stats.seconds_coarse = since(t0);
+  res.stats.seconds_coarse = seconds_since(t0);
 
   t0 = std::chrono::steady_clock::now();
   std::vector<PartOut> parts(k);
@@ -471,7 +467,7 @@ PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, 
     add_stats(res.stats.refine, parts[p].stats);
     if (!parts[p].error.empty() && res.error.empty()) res.error = fmt::format("part {}: {}", p, parts[p].error);
   }
-  res.stats.seconds_parts = since(t0);
+  res.stats.seconds_parts = seconds_since(t0);
   if (!res.ok()) return res;
 
   // Merge: vertices and triangles in part order, twins inside parts kept, twins across
@@ -483,7 +479,7 @@ PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, 
     vbase[p + 1] = vbase[p] + (parts[p].st.num_vertices() - parts[p].n_init);
     tbase[p + 1] = tbase[p] + parts[p].st.num_slots();
   }
-  if (vbase[k] > base.max_vertices || 3 * tbase[k] >= kNone) {
+  if (vbase[k] > base.max_vertices || 3 * tbase[k] >= kNoIndex) {
     res.error = "refinement stopped at the vertex limit";
     return res;
   }
@@ -493,7 +489,7 @@ PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, 
   TriangleStore out;
   out.xy.reserve(vbase[k]);
   for (std::uint32_t v = 0; v < c.m.num_vertices(); ++v)
-    if (c.new_id[v] != kNone) out.xy.push_back(c.m.xy[v]);
+    if (c.new_id[v] != kNoIndex) out.xy.push_back(c.m.xy[v]);
   out.xy.insert(out.xy.end(), c.border_xy.begin(), c.border_xy.end());
   out.corner.reserve(3 * tbase[k]);
   out.twin.reserve(3 * tbase[k]);
@@ -560,7 +556,7 @@ PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, 
   if (!res.ok()) return res;
   out.rebuild_out_side();
   m = std::move(out);
-  res.stats.seconds_merge = since(t0);
+  res.stats.seconds_merge = seconds_since(t0);
   return res;
 }
 

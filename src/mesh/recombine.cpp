@@ -6,12 +6,11 @@
 #include <cmath>
 #include <numbers>
 
+#include "base/id.h"
 #include "exact/predicates.h"
 
 namespace sm {
 namespace {
-
-constexpr std::uint32_t kNone = 0xFFFFFFFFu;
 
 double corner_deviation(Vec3 prev, Vec3 at, Vec3 next) {
   const Vec3 a = prev - at, b = next - at;
@@ -81,11 +80,11 @@ RecombineResult recombine(std::span<const std::array<std::uint32_t, 3>> tris, st
   std::sort(pairs.begin(), pairs.end(), [](const Pair& x, const Pair& y) {
     return x.deviation != y.deviation ? x.deviation < y.deviation : (x.t1 != y.t1 ? x.t1 < y.t1 : x.t2 < y.t2);
   });
-  std::vector<std::uint32_t> mate(nt, kNone);     // triangle -> its partner
-  std::vector<std::uint32_t> mate_pair(nt, kNone);   // triangle -> its pair's index
+  std::vector<std::uint32_t> mate(nt, kNoIndex);     // triangle -> its partner
+  std::vector<std::uint32_t> mate_pair(nt, kNoIndex);   // triangle -> its pair's index
   for (std::uint32_t i = 0; i < pairs.size(); ++i) {
     const Pair& p = pairs[i];
-    if (mate[p.t1] != kNone || mate[p.t2] != kNone) continue;
+    if (mate[p.t1] != kNoIndex || mate[p.t2] != kNoIndex) continue;
     mate[p.t1] = p.t2, mate[p.t2] = p.t1;
     mate_pair[p.t1] = mate_pair[p.t2] = i;
   }
@@ -108,7 +107,7 @@ RecombineResult recombine(std::span<const std::array<std::uint32_t, 3>> tris, st
     std::uint32_t cur = 0, mark_stamp = 0, blossom_stamp = 0;
     auto touch = [&](std::uint32_t v) {
       if (stamp[v] == cur) return;
-      stamp[v] = cur, parent[v] = kNone, base[v] = v, used[v] = 0;
+      stamp[v] = cur, parent[v] = kNoIndex, base[v] = v, used[v] = 0;
       touched.push_back(v);
     };
     auto lca = [&](std::uint32_t a, std::uint32_t b) {
@@ -116,7 +115,7 @@ RecombineResult recombine(std::span<const std::array<std::uint32_t, 3>> tris, st
       while (true) {
         a = base[a];
         mark[a] = mark_stamp;
-        if (mate[a] == kNone) break;
+        if (mate[a] == kNoIndex) break;
         a = parent[mate[a]];
       }
       while (true) {
@@ -141,14 +140,14 @@ RecombineResult recombine(std::span<const std::array<std::uint32_t, 3>> tris, st
       used[root] = 1;
       queue.assign(1, root);
       for (std::size_t q = 0; q < queue.size(); ++q) {
-        if (touched.size() > opt.max_search) return kNone;
+        if (touched.size() > opt.max_search) return kNoIndex;
         const std::uint32_t v = queue[q];
         for (std::uint32_t k = start[v]; k < start[v + 1]; ++k) {
           const std::uint32_t to = other(adj[k], v);
           touch(to);
-          if (mate[to] != kNone) touch(mate[to]);
+          if (mate[to] != kNoIndex) touch(mate[to]);
           if (base[v] == base[to] || mate[v] == to) continue;
-          if (to == root || (mate[to] != kNone && parent[mate[to]] != kNone)) {
+          if (to == root || (mate[to] != kNoIndex && parent[mate[to]] != kNoIndex)) {
             const std::uint32_t b = lca(v, to);
             ++blossom_stamp;
             mark_path(v, b, to);
@@ -158,21 +157,21 @@ RecombineResult recombine(std::span<const std::array<std::uint32_t, 3>> tris, st
                 base[i] = b;
                 if (!used[i]) used[i] = 1, queue.push_back(i);
               }
-          } else if (parent[to] == kNone) {
+          } else if (parent[to] == kNoIndex) {
             parent[to] = v;
-            if (mate[to] == kNone) return to;
+            if (mate[to] == kNoIndex) return to;
             used[mate[to]] = 1;
             queue.push_back(mate[to]);
           }
         }
       }
-      return kNone;
+      return kNoIndex;
     };
     for (std::uint32_t root = 0; root < nt; ++root) {
-      if (mate[root] != kNone || start[root] == start[root + 1]) continue;
+      if (mate[root] != kNoIndex || start[root] == start[root + 1]) continue;
       const std::uint32_t end = search(root);
-      if (end == kNone) continue;
-      for (std::uint32_t v = end; v != kNone;) {
+      if (end == kNoIndex) continue;
+      for (std::uint32_t v = end; v != kNoIndex;) {
         const std::uint32_t pv = parent[v], next = mate[pv];
         mate[v] = pv, mate[pv] = v;
         v = next;
@@ -181,14 +180,14 @@ RecombineResult recombine(std::span<const std::array<std::uint32_t, 3>> tris, st
     }
     // The pair of each matched triangle.
     for (std::uint32_t t = 0; t < nt; ++t) {
-      mate_pair[t] = kNone;
-      if (mate[t] == kNone) continue;
+      mate_pair[t] = kNoIndex;
+      if (mate[t] == kNoIndex) continue;
       for (std::uint32_t k = start[t]; k < start[t + 1]; ++k)
         if (other(adj[k], t) == mate[t]) mate_pair[t] = adj[k];
     }
   }
   for (std::uint32_t t = 0; t < nt; ++t) {
-    if (mate[t] == kNone) {
+    if (mate[t] == kNoIndex) {
       res.triangles.push_back(tris[t]);
     } else if (t < mate[t]) {
       res.quads.push_back(pairs[mate_pair[t]].quad);

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "base/share_dir.h"
 #include "geo/sphere.h"
 #include "interp/interpreter.h"
 #include "interp/kernel_state.h"
@@ -93,6 +94,10 @@ Mesh run(const py::object& error_type, const std::string& path, const std::map<s
          const std::map<std::string, std::string>& setstring, const std::optional<std::string>& algo,
          std::optional<int> threads, int dim) {
   interp::RunSettings settings;
+  // The stdlib beside this module (build/python/../share/stereomesh, or the prefix's share/).
+  static const int anchor = 0;
+  if (const auto share = base::find_share_dir(base::object_path_of(&anchor)); !share.empty())
+    settings.stdlib_dir = (share / "stdlib").string();
   lang::SourceManager sources;
   lang::Diagnostics diags(sources);
   std::ostringstream printed;

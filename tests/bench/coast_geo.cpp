@@ -3,7 +3,7 @@
 // tests/bench/run.sh. The import is the one of the Coastline statement (the file's own -R box
 // closes a regional coast), with a constant accuracy gamma.
 // Usage: bench_coast_geo FILE GAMMA_M OUT.geo [--no-check-splines]
-//   FILE: a name under shared/data/gshhg (GMT lon/lat text). The import's B-spline crossing
+//   FILE: a name under data/gshhg (GMT lon/lat text). The import's B-spline crossing
 //   check is on, as in the Coastline statement (CheckSplines = 1): points are put back until
 //   no two splines cross, so Gmsh's 1D mesh of the same splines cannot stop on a crossing;
 //   --no-check-splines turns it off.
@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: bench_coast_geo FILE GAMMA_M OUT.geo [--no-check-splines]\n");
     return 2;
   }
-  const std::string path = std::string(SM_SHARED_DATA) + "/gshhg/" + argv[1];
+  const std::string path = std::string(SM_DATA_DIR) + "/gshhg/" + argv[1];
   const double gamma = std::atof(argv[2]);
   if (!(gamma > 0)) return std::fprintf(stderr, "bench_coast_geo: GAMMA_M must be positive\n"), 2;
   bool check_splines = sm::coast::ImportOptions{}.check_splines;

@@ -62,7 +62,7 @@ Run best_of(const std::string& file, double gamma, int n) {
 }  // namespace
 
 int main() {
-  const std::string dir = std::string(SM_SHARED_DATA) + "/gshhg/";
+  const std::string dir = std::string(SM_DATA_DIR) + "/gshhg/";
   std::printf("coast_import: read + clean + orient + clip + coarsen + repair (best of 5)\n");
   std::printf("%-22s %9s %8s %8s %8s %7s %7s\n", "file", "gamma", "read_s", "model_s", "total_s", "loops", "rounds");
   const struct { const char* file; double gamma; } cases[] = {

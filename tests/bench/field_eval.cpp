@@ -148,7 +148,7 @@ void report(const char* what, std::size_t n, double s) {
 }  // namespace
 
 int main() {
-  const std::string data = SM_SHARED_DATA;
+  const std::string data = SM_DATA_DIR;
   const std::size_t nq = 1000000;
 
   auto t0 = Clock::now();

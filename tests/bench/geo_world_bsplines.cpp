@@ -48,7 +48,7 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 }  // namespace
 
 int main() {
-  const std::string path = std::string(SM_SHARED_DATA) + "/gshhg/world_i_A100.txt";
+  const std::string path = std::string(SM_DATA_DIR) + "/gshhg/world_i_A100.txt";
   auto t0 = std::chrono::steady_clock::now();
   const std::vector<Segment> segs = read_segments(path);
   const double t_read = seconds_since(t0);

@@ -195,7 +195,7 @@ int main(int argc, char** argv) {
   std::vector<double> gammas_km;
   for (int i = 2; i < argc; ++i) gammas_km.push_back(std::atof(argv[i]));
   if (gammas_km.empty()) gammas_km = {10.0, 1.0};
-  const std::string path = std::string(SM_SHARED_DATA) + "/gshhg/world_i_A100.txt";
+  const std::string path = std::string(SM_DATA_DIR) + "/gshhg/world_i_A100.txt";
   const double h = size_km * 1e3 / geo::kEarthRadius;   // on the unit sphere
   const ConstantField field(h);
   std::printf("mesh_1d_world: %s meshed at %.1f km (unit PolarSphere, constant background field)\n",

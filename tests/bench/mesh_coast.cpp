@@ -23,7 +23,7 @@ int main(int argc, char** argv) {
   const std::string file = argc > 1 ? argv[1] : "world_i_A100.txt";
   const double step = argc > 2 ? std::atof(argv[2]) : 10.0;
   auto t0 = std::chrono::steady_clock::now();
-  const auto rings = sm::testing::read_gshhg(std::string(SM_SHARED_DATA) + "/gshhg/" + file);
+  const auto rings = sm::testing::read_gshhg(std::string(SM_DATA_DIR) + "/gshhg/" + file);
   std::vector<sm::testing::RingCurve> curves;
   for (const auto& r : rings) curves.emplace_back(r);
   sm::BoundaryProblem p = sm::testing::coast_problem(curves, step);

@@ -252,7 +252,7 @@ int main(int argc, char** argv) {
   const std::string algos = argc > 3 ? argv[3] : "5,6";
   const bool with_gmsh = argc > 4 ? std::atoi(argv[4]) != 0 : true;
   const std::string out_msh = argc > 5 ? argv[5] : "";
-  const std::string path = std::string(SM_SHARED_DATA) + "/gshhg/" + file;
+  const std::string path = std::string(SM_DATA_DIR) + "/gshhg/" + file;
   const double radius = sm::geo::kEarthRadius;
 
   auto t0 = std::chrono::steady_clock::now();

@@ -9,7 +9,7 @@
 # What it runs, each case through both command lines on the same .geo, one thread
 # (`stereomesh -2 -nt 1 -algo A X.geo` and `gmsh -2 -nt 1 -algo A X.geo`), timed and its peak
 # memory taken by /usr/bin/time, both meshes measured by Gmsh's own reader
-# (../shared/tools/meshstats.py, python3-gmsh):
+# (tests/tools/mesh_check.py, python3-gmsh):
 #   - the unit square: del2d and front2d at h = 0.002, meshadapt at h = 0.005 (Gmsh's
 #     meshadapt takes ~250 s at 0.002);
 #   - the world ocean: GSHHG low at gamma 30 km (the import's B-spline crossing check, so
@@ -22,7 +22,7 @@
 # Then our stage details (bench_mesh_square, bench_mesh_world_ocean without Gmsh) and the
 # paper's examples through the stereomesh command line (wall time, peak memory, triangles
 # and quality, the paper's figures beside them).
-# Needs gmsh 4.8.4 with python3-gmsh for /usr/bin/python3 and ../shared/tools/meshstats.py
+# Needs gmsh 4.8.4 with python3-gmsh for /usr/bin/python3 (tests/tools/mesh_check.py)
 # beside the checkout (it stops with a message otherwise).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -48,7 +48,7 @@ done
 timer=(/usr/bin/time -f "%e %U %S %M")
 [[ -x /usr/bin/time ]] || { echo "run.sh: /usr/bin/time is missing (apt-get install time)" >&2; exit 2; }
 gmsh_bin="$(command -v gmsh || true)"
-meshstats="$root/../shared/tools/meshstats.py"
+meshstats="$root/tests/tools/mesh_check.py"
 [[ -n "$gmsh_bin" && -x /usr/bin/python3 && -f "$meshstats" ]] ||
   { echo "run.sh: gmsh, /usr/bin/python3 (python3-gmsh) and $meshstats are needed" >&2; exit 2; }
 gmsh_note="Gmsh 4.8.4 ($gmsh_bin)"
@@ -186,7 +186,7 @@ LIST
   echo "(maximum resident set) are taken the same way for both, by \`/usr/bin/time -f '%e %U %S %M'\`,"
   echo "for the whole run: reading the script, building the geometry, 1D and 2D meshing and"
   echo "writing the mesh. Both meshes are measured by Gmsh's own reader"
-  echo "(\`shared/tools/meshstats.py\`): rho = 2 r_in / r_circ in 3D. In brackets: Gmsh / stereomesh."
+  echo "(\`tests/tools/mesh_check.py\`): rho = 2 r_in / r_circ in 3D. In brackets: Gmsh / stereomesh."
   echo "The last column is each program's own 1D and 2D wall time from its log."
   echo
   "${report[@]}" table "$tmp/runs.jsonl"

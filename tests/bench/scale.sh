@@ -22,9 +22,9 @@ mapfile -t data < <("$here/data/world_full.sh" "$build")
 text="${data[0]}" binary="${data[1]}"
 tmp="$(mktemp -d "${TMPDIR:-/tmp}/sm-scale.XXXXXX")"
 trap 'rm -rf "$tmp"' EXIT
-# world_ocean.geo names its file relative to the shared GSHHG folder.
+# world_ocean.geo names its file relative to the stdlib's GshhgDir (data/gshhg).
 coast_file="$(python3 -c 'import os, sys; print(os.path.relpath(sys.argv[1], sys.argv[2]))' \
-  "$text" "$root/../shared/data/gshhg")"
+  "$text" "$root/data/gshhg")"
 
 echo "# Scale: the full GSHHG through examples/world_ocean.geo"
 echo

@@ -19,7 +19,7 @@ world="${2:-$root/../data/world_full.txt}"
 [[ -f "$world" ]] || { echo "scale_stages.sh: $world is missing (the GSHHG full world as lon/lat text)" >&2; exit 2; }
 [[ -x /usr/bin/time ]] || { echo "scale_stages.sh: /usr/bin/time is missing (apt-get install time)" >&2; exit 2; }
 # The script names its coast file relative to stdlib/earth.geo's GshhgDir.
-gshhg="$root/../shared/data/gshhg"
+gshhg="$root/data/gshhg"
 coast="$(python3 -c 'import os, sys; print(os.path.relpath(sys.argv[1], sys.argv[2]))' "$world" "$gshhg")"
 tmp="$(mktemp -d "${TMPDIR:-/tmp}/sm-scale.XXXXXX")"
 trap 'rm -rf "$tmp"' EXIT

@@ -21,16 +21,6 @@ constexpr BuiltinFn kImpl[] = {
 };
 static_assert(std::size(kImpl) == static_cast<std::size_t>(lang::BuiltinId::kNone));
 
-std::string_view kind_word(const Value& v) {
-  switch (v.kind()) {
-    case Value::Kind::Number: return "a number";
-    case Value::Kind::List: return "a list";
-    case Value::Kind::String: return "a string";
-    case Value::Kind::StringList: return "a string list";
-  }
-  return "?";
-}
-
 }  // namespace
 
 BuiltinFn builtin_impl(lang::BuiltinId id) { return kImpl[static_cast<std::size_t>(id)]; }
@@ -48,7 +38,7 @@ const Limits& env_limits(const BuiltinEnv& env) {
 double arg_number(const std::vector<Value>& args, int i) {
   const Value& v = args[static_cast<std::size_t>(i)];
   if (!v.is_numeric())
-    throw BuiltinError{fmt::format("argument {} must be a number, not {}", i + 1, kind_word(v)), i};
+    throw BuiltinError{fmt::format("argument {} must be a number, not {}", i + 1, kind_phrase(v)), i};
   if (v.nums().empty()) throw BuiltinError{fmt::format("argument {} is an empty list", i + 1), i};
   return v.nums()[0];   // Gmsh: a list used as a scalar is its element 0
 }
@@ -56,14 +46,14 @@ double arg_number(const std::vector<Value>& args, int i) {
 std::string arg_string(const std::vector<Value>& args, int i) {
   const Value& v = args[static_cast<std::size_t>(i)];
   if (!v.is_string())
-    throw BuiltinError{fmt::format("argument {} must be a string, not {}", i + 1, kind_word(v)), i};
+    throw BuiltinError{fmt::format("argument {} must be a string, not {}", i + 1, kind_phrase(v)), i};
   return join_lines(v.strs());
 }
 
 const std::vector<double>& arg_list(const std::vector<Value>& args, int i) {
   const Value& v = args[static_cast<std::size_t>(i)];
   if (!v.is_numeric())
-    throw BuiltinError{fmt::format("argument {} must be a list of numbers, not {}", i + 1, kind_word(v)), i};
+    throw BuiltinError{fmt::format("argument {} must be a list of numbers, not {}", i + 1, kind_phrase(v)), i};
   return v.nums();
 }
 

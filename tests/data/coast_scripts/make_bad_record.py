@@ -6,7 +6,7 @@ import os
 
 here = os.path.dirname(os.path.abspath(__file__))
 segs = []
-for line in open(os.path.join(here, "../../../../shared/data/gshhg/world_c.txt")):
+for line in open(os.path.join(here, "../../../data/gshhg/world_c.txt")):
     if line.startswith("#"):
         continue
     if line.startswith(">"):

@@ -1,13 +1,13 @@
 #!/usr/bin/env python3
 """Writes islands_loops2.txt (Gmsh 2.x loops2, lonlat_degrees): Islay, Anglesey and the Isle
-of Man copied from GSHHG 2.3.7 full (shared/data/gshhg/gb_ireland_f.txt, segments 9, 11 and
+of Man copied from GSHHG 2.3.7 full (data/gshhg/gb_ireland_f.txt, segments 9, 11 and
 the first ring of 100 to 5,000 points whose box holds 54.2N 4.5W), for tests/scripts/coastline/loops2.geo.
 Usage: make_islands_loops2.py [path/to/gb_ireland_f.txt]"""
 import os
 import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
-src = sys.argv[1] if len(sys.argv) > 1 else os.path.join(here, "../../../../shared/data/gshhg/gb_ireland_f.txt")
+src = sys.argv[1] if len(sys.argv) > 1 else os.path.join(here, "../../../data/gshhg/gb_ireland_f.txt")
 segs = []
 for line in open(src):
     if line.startswith("#"):

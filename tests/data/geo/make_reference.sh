@@ -11,7 +11,7 @@ done
 # All 1,440 coastlines of world_i_A100.txt as closed BSplines (Eurasia: 35,321 control
 # points), meshed by gmsh at lc = 0.05 on the unit sphere; only the curve nodes are kept:
 # "curve t x y z" per line (the full .msh41 would be 33 MB with every control point).
-/usr/bin/python3 make_world_geo.py ../../../../shared/data/gshhg/world_i_A100.txt /tmp/world_i_$$.geo 0.05
+/usr/bin/python3 make_world_geo.py ../../../data/gshhg/world_i_A100.txt /tmp/world_i_$$.geo 0.05
 gmsh /tmp/world_i_$$.geo -1 -format msh41 -save_parametric -o /tmp/world_i_$$.msh41 > /dev/null
 /usr/bin/python3 - /tmp/world_i_$$.msh41 > world_i_bspline_nodes.txt <<'PY'
 import sys

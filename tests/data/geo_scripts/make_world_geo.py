@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""Writes the issue-3 world script from a GSHHG text export (../shared/data/gshhg/*.txt).
+"""Writes the issue-3 world script from a GSHHG text export (data/gshhg/*.txt).
 
-Usage: make_world_geo.py ../../../../shared/data/gshhg/world_c.txt > world_c.geo
+Usage: make_world_geo.py ../../../data/gshhg/world_c.txt > world_c.geo
 
 The script is the paper's world model (Lambrechts et al. 2008, section 2, Fig. 4) as Gmsh
 4.8.4 reads it: a unit PolarSphere, every coastline vertex as a Point given by its (u, v)

@@ -7,7 +7,7 @@ PolarSphere(1) = {1, 2};
 Field[1] = MathEval;
 Field[1].F = "10000";
 Coastline[2] = LonLatText;
-Coastline[2].FileName = "../../../../shared/data/gshhg/world_c.txt";
+Coastline[2].FileName = "../../../data/gshhg/world_c.txt";
 Coastline[2].AccuracyField = 5;
 loops[] = Coastline{2};
 // expect error: 11:1: missing-field

@@ -10,7 +10,7 @@ PolarSphere(1) = {1, 2};
 Field[1] = MathEval;
 Field[1].F = "200e3";
 Coastline[1] = GSHHS;
-Coastline[1].FileName = "../../../../shared/data/gshhs/gshhs_c.b";
+Coastline[1].FileName = "../../../data/gshhs/gshhs_c.b";
 Coastline[1].Levels = {1};
 Coastline[1].AccuracyField = 1;
 loops[] = Coastline{1};
@@ -34,7 +34,7 @@ Printf("points between 790 and 1070: %g", #pts[] >= 790 && #pts[] <= 1070);
 // level-3 islands kept they would be its holes). GSHHG 2.3 crude at 200 km: the ocean
 // with its 39 islands, then 25 lakes (the Caspian Sea, the Great Lakes, ...).
 Coastline[2] = GSHHS;
-Coastline[2].FileName = "../../../../shared/data/gshhs/gshhs_c.b";
+Coastline[2].FileName = "../../../data/gshhs/gshhs_c.b";
 Coastline[2].Levels = {1, 2};
 Coastline[2].AccuracyField = 1;
 all[] = Coastline{2};

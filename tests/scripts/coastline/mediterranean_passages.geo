@@ -14,7 +14,7 @@ Field[1] = MathEval;
 Field[1].F = "5000";
 For c In {1 : 3}
   Coastline[c] = LonLatText;
-  Coastline[c].FileName = "../../../../shared/data/gshhg/world_i_A100.txt";
+  Coastline[c].FileName = "../../../data/gshhg/world_i_A100.txt";
   Coastline[c].AccuracyField = 1;
   Coastline[c].Region = {-5.6, 37, 29, 46.5};
   Coastline[c].SeaAt = {18, 35};

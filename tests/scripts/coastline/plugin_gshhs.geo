@@ -8,7 +8,7 @@ If (!Exists(out))
 EndIf
 Field[1] = MathEval;
 Field[1].F = "500e3";
-Plugin(GSHHS).InFileName = "../../../../shared/data/gshhs/gshhs_c.b";
+Plugin(GSHHS).InFileName = "../../../data/gshhs/gshhs_c.b";
 Plugin(GSHHS).OutFileName = out;
 Plugin(GSHHS).iField = 1;
 Plugin(GSHHS).Format = "gshhs";

@@ -12,7 +12,7 @@ Field[1] = MathEval;
 Field[1].F = "15000";
 For c In {1 : 3}
   Coastline[c] = LonLatText;
-  Coastline[c].FileName = "../../../../shared/data/gshhg/gb_ireland_f.txt";
+  Coastline[c].FileName = "../../../data/gshhg/gb_ireland_f.txt";
   Coastline[c].AccuracyField = 1;
 EndFor
 Coastline[2].CloseStraits = 1;

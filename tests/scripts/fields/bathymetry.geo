@@ -2,7 +2,7 @@
 // data around the Great Barrier Reef, on a unit sphere. Node values read with
 // `ncdump -v z etopo5_gbr_5min.nc`: z(150E, 15S) = -1856,
 // z(150.0833E, 15S) = -1776, z(140E, 26S) = 75 (land).
-gbr = "../../../../shared/data/bathymetry/etopo5_gbr_5min.nc";
+gbr = "../../../data/bathymetry/etopo5_gbr_5min.nc";
 d2r = Pi / 180;
 Macro Sphere
   px = Cos(lat * d2r) * Cos(lon * d2r);  py = Cos(lat * d2r) * Sin(lon * d2r);  pz = Sin(lat * d2r);
@@ -20,14 +20,14 @@ Printf("%.6g", FieldValue(1, px, py, pz));   // expect: 10
 
 // The same grid as an ESRI ASCII file (first row north).
 Field[10] = Bathymetry;
-Field[10].FileName = "../../../../shared/data/bathymetry/etopo5_gbr_5min.asc";
+Field[10].FileName = "../../../data/bathymetry/etopo5_gbr_5min.asc";
 lon = 150; lat = -15; Call Sphere;
 Printf("%.6g", FieldValue(10, px, py, pz));   // expect: 1856
 // The global 1-degree grid across the dateline (float values, as ncdump shows
 // them): z(179E, 10S) = -4568.657,
 // z(180, 10S) = z(-180, 10S) = -3880.569, z(-179E, 10S) = -4051.445.
 Field[11] = Bathymetry;
-Field[11].FileName = "../../../../shared/data/bathymetry/etopo5_global_1deg.nc";
+Field[11].FileName = "../../../data/bathymetry/etopo5_global_1deg.nc";
 lon = 179.5; lat = -10; Call Sphere;
 Printf("%.2f", FieldValue(11, px, py, pz));   // expect: 4224.61
 lon = -179.5; Call Sphere;

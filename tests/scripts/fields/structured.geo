@@ -2,7 +2,7 @@
 // grid, the same nodes as bathymetry.geo: z(150E, 15S) = -1856,
 // z(150.0833E, 15S) = -1776, z(140E, 26S) = 75; x = lon, y = lat in degrees.
 Field[1] = Structured;
-Field[1].FileName = "../../../../shared/data/bathymetry/etopo5_gbr_5min.gmsh_structured.txt";
+Field[1].FileName = "../../../data/bathymetry/etopo5_gbr_5min.gmsh_structured.txt";
 Field[1].TextFormat = 1;
 Printf("%.6g", FieldValue(1, 150, -15, 0));          // expect: -1856
 Printf("%.6g", FieldValue(1, 150 + 1/24, -15, 0));   // expect: -1816

@@ -1,5 +1,5 @@
 // Cleaning: synthetic duplicates/spikes/seams, and the artefact counts of the real files
-// (shared/data/README.md "Known artefacts").
+// (data/PROVENANCE.md; the rings with fewer than 3 distinct points).
 #include "coast/clean.h"
 
 #include <doctest/doctest.h>
@@ -49,7 +49,7 @@ TEST_CASE("clean: the artefacts of the GSHHG text exports") {
                      {"northsea_scheldt_f.txt", 0, 0}, {"gbr_lizard_f.txt", 0, 0}};
   for (const F& f : files) {
     CAPTURE(f.name);
-    auto c = read_lonlat_text(std::string(SM_SHARED_DATA) + "/gshhg/" + f.name);
+    auto c = read_lonlat_text(std::string(SM_DATA_DIR) + "/gshhg/" + f.name);
     REQUIRE(c.ok());
     const CleanReport rep = clean(*c);
     CHECK(rep.count(CleanAction::Spike) == f.spikes);
@@ -59,7 +59,7 @@ TEST_CASE("clean: the artefacts of the GSHHG text exports") {
 }
 
 TEST_CASE("clean: Natural Earth Antarctica closed along the South Pole") {
-  auto c = read_shapefile(std::string(SM_SHARED_DATA) + "/naturalearth/ne_110m_land.shp");
+  auto c = read_shapefile(std::string(SM_DATA_DIR) + "/naturalearth/ne_110m_land.shp");
   REQUIRE(c.ok());
   const CleanReport rep = clean(*c);
   CHECK(rep.count(CleanAction::PoleVertex) >= 1);
@@ -96,7 +96,7 @@ TEST_CASE("clean: rings sharing an edge are merged (polygons split at the dateli
   struct F { const char* path; std::size_t merges; };
   for (const F& f : {F{"/gshhs_shp/GSHHS_l_L1.shp", 5}, F{"/naturalearth/ne_110m_land.shp", 3}}) {
     CAPTURE(f.path);
-    auto c = read_shapefile(std::string(SM_SHARED_DATA) + f.path);
+    auto c = read_shapefile(std::string(SM_DATA_DIR) + f.path);
     REQUIRE(c.ok());
     const std::size_t before = c->rings.size();
     CleanReport r = clean(*c);

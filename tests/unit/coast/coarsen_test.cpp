@@ -16,7 +16,7 @@ using namespace sm::coast;
 
 
 TEST_CASE("coarsen: kept points are at least gamma apart, closing included") {
-  auto c = read_lonlat_text(std::string(SM_SHARED_DATA) + "/gshhg/gb_ireland_f.txt");
+  auto c = read_lonlat_text(std::string(SM_DATA_DIR) + "/gshhg/gb_ireland_f.txt");
   REQUIRE(c.ok());
   clean(*c);
   const double R = geo::kEarthRadius;
@@ -43,7 +43,7 @@ TEST_CASE("coarsen: kept points are at least gamma apart, closing included") {
 }
 
 TEST_CASE("coarsen: a variable gamma keeps more points where it is small") {
-  auto c = read_lonlat_text(std::string(SM_SHARED_DATA) + "/gshhg/gb_ireland_f.txt");
+  auto c = read_lonlat_text(std::string(SM_DATA_DIR) + "/gshhg/gb_ireland_f.txt");
   REQUIRE(c.ok());
   clean(*c);
   std::vector<Ring> gb{c->rings[0]};
@@ -61,7 +61,7 @@ TEST_CASE("coarsen: a variable gamma keeps more points where it is small") {
 }
 
 TEST_CASE("coarsen: MinArea, bad gamma, spherical areas") {
-  auto c = read_gshhs(std::string(SM_SHARED_DATA) + "/gshhs/gshhs_f_gb_ireland_generated.b");
+  auto c = read_gshhs(std::string(SM_DATA_DIR) + "/gshhs/gshhs_f_gb_ireland_generated.b");
   REQUIRE(c.ok());
   // The generated file's header areas are spherical areas on the authalic sphere.
   for (std::size_t i : {0u, 1u, 57u}) {
@@ -88,7 +88,7 @@ TEST_CASE("coarsen: MinArea, bad gamma, spherical areas") {
 }
 
 TEST_CASE("coarsen: Antarctica keeps its pole-side area") {
-  auto c = read_lonlat_text(std::string(SM_SHARED_DATA) + "/gshhg/world_c.txt");
+  auto c = read_lonlat_text(std::string(SM_DATA_DIR) + "/gshhg/world_c.txt");
   REQUIRE(c.ok());
   clean(*c);
   orient_rings(c->rings);
@@ -101,7 +101,7 @@ TEST_CASE("coarsen: Antarctica keeps its pole-side area") {
 }
 
 TEST_CASE("coarsen and clean: the same rings for every thread count, the field called as with one") {
-  auto c = read_lonlat_text(std::string(SM_SHARED_DATA) + "/gshhg/world_i_A100.txt");
+  auto c = read_lonlat_text(std::string(SM_DATA_DIR) + "/gshhg/world_i_A100.txt");
   REQUIRE(c.ok());
   // A field that varies with the place and counts its calls: the calls (their sizes, in
   // order) must be those of one thread, from the calling thread.

@@ -59,7 +59,7 @@ fs::path temp_dir() {
 
 TEST_CASE("plugin: world crude GSHHS at 100 km, the .geo text") {
   GshhsPluginOptions o;
-  o.in_file_name = std::string(SM_SHARED_DATA) + "/gshhs/gshhs_c.b";
+  o.in_file_name = std::string(SM_DATA_DIR) + "/gshhs/gshhs_c.b";
   o.out_file_name = (temp_dir() / "earth.geo").string();
   o.field = sm::testing::constant_accuracy(100e3);
   auto r = run_gshhs_plugin(o);
@@ -92,7 +92,7 @@ TEST_CASE("plugin: Gmsh 4.8.4 reads the generated world file") {
     return;
   }
   GshhsPluginOptions o;
-  o.in_file_name = std::string(SM_SHARED_DATA) + "/gshhs/gshhs_c.b";
+  o.in_file_name = std::string(SM_DATA_DIR) + "/gshhs/gshhs_c.b";
   o.out_file_name = (temp_dir() / "world_c.geo").string();
   o.field = sm::testing::constant_accuracy(100e3);
   REQUIRE(run_gshhs_plugin(o).ok());
@@ -150,7 +150,7 @@ TEST_CASE("plugin: loops2 input, WritePolarSphere = 0 and -2, bad options") {
 }
 
 TEST_CASE("plugin writer: a regional model (cut coasts closed along the box) meshes in Gmsh 4.8.4") {
-  auto c = read_lonlat_text(std::string(SM_SHARED_DATA) + "/gshhg/gb_ireland_f.txt");
+  auto c = read_lonlat_text(std::string(SM_DATA_DIR) + "/gshhg/gb_ireland_f.txt");
   REQUIRE(c.ok());
   ImportOptions io;
   io.gamma = sm::testing::constant_accuracy(15e3);
@@ -177,7 +177,7 @@ TEST_CASE("plugin writer: a regional model (cut coasts closed along the box) mes
 
 TEST_CASE("plugin: a negative field value cuts loops (Gmsh 2.6's way to crop to a region)") {
   GshhsPluginOptions o;
-  o.in_file_name = std::string(SM_SHARED_DATA) + "/gshhs/gshhs_c.b";
+  o.in_file_name = std::string(SM_DATA_DIR) + "/gshhs/gshhs_c.b";
   o.out_file_name = (temp_dir() / "crop.geo").string();
   // 20 km inside -12/3/48/62 (around Great Britain), -1 outside.
   o.field = [](std::span<const Vec3> pts, std::span<double> g) {

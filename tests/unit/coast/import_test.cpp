@@ -20,7 +20,7 @@ using namespace sm::coast;
 namespace {
 
 Coastline load(const char* name) {
-  auto c = read_lonlat_text(std::string(SM_SHARED_DATA) + "/gshhg/" + name);
+  auto c = read_lonlat_text(std::string(SM_DATA_DIR) + "/gshhg/" + name);
   REQUIRE(c.ok());
   return std::move(*c);
 }
@@ -75,7 +75,7 @@ TEST_CASE("import: the world ocean at 100 km is bounded by Antarctica") {
 }
 
 TEST_CASE("import: the original GSHHS crude binary (levels 1 + Antarctic ice front)") {
-  auto c = read_gshhs(std::string(SM_SHARED_DATA) + "/gshhs/gshhs_c.b");
+  auto c = read_gshhs(std::string(SM_DATA_DIR) + "/gshhs/gshhs_c.b");
   REQUIRE(c.ok());
   ImportOptions o;
   o.gamma = sm::testing::constant_accuracy(50e3);
@@ -86,7 +86,7 @@ TEST_CASE("import: the original GSHHS crude binary (levels 1 + Antarctic ice fro
   check_model(*m);
   ImportOptions no_ant = o;
   no_ant.antarctica_level = 0;
-  auto c2 = read_gshhs(std::string(SM_SHARED_DATA) + "/gshhs/gshhs_c.b");
+  auto c2 = read_gshhs(std::string(SM_DATA_DIR) + "/gshhs/gshhs_c.b");
   auto m2 = build_coast_model(std::move(*c2), no_ant);
   REQUIRE(m2.ok());
   CHECK(m2->surfaces.empty());          // no loop round the singular point: no outer boundary
@@ -176,7 +176,7 @@ TEST_CASE("import: Figure 5, Great Britain and Ireland") {
 }
 
 TEST_CASE("import: Natural Earth land (dateline splits merged, Antarctica closed at the pole)") {
-  auto c = read_shapefile(std::string(SM_SHARED_DATA) + "/naturalearth/ne_110m_land.shp");
+  auto c = read_shapefile(std::string(SM_DATA_DIR) + "/naturalearth/ne_110m_land.shp");
   REQUIRE(c.ok());
   ImportOptions o;
   o.gamma = sm::testing::constant_accuracy(20e3);
@@ -239,7 +239,7 @@ TEST_CASE("import: a region across the dateline with a variable accuracy field")
 }
 
 TEST_CASE("import: Antarctica's grounding line (level 6) absorbs the ice-shelf islands it crosses") {
-  auto c = read_gshhs(std::string(SM_SHARED_DATA) + "/gshhs/gshhs_c.b");
+  auto c = read_gshhs(std::string(SM_DATA_DIR) + "/gshhs/gshhs_c.b");
   REQUIRE(c.ok());
   ImportOptions o;
   o.antarctica_level = 6;

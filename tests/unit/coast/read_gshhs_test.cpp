@@ -15,7 +15,7 @@ using namespace sm;
 using namespace sm::coast;
 
 namespace {
-const std::string kDir = std::string(SM_SHARED_DATA) + "/gshhs/";
+const std::string kDir = std::string(SM_DATA_DIR) + "/gshhs/";
 
 void put_be32(std::vector<unsigned char>& out, std::int32_t v) {
   const auto u = static_cast<std::uint32_t>(v);

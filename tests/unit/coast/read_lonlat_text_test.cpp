@@ -1,4 +1,4 @@
-// GMT multi-segment text reader on every shared/data/gshhg file, plus hostile text.
+// GMT multi-segment text reader on every data/gshhg file, plus hostile text.
 #include "coast/read_lonlat_text.h"
 
 #include <doctest/doctest.h>
@@ -13,7 +13,7 @@ using namespace sm;
 using namespace sm::coast;
 
 namespace {
-const std::string kLonLatTextDir = std::string(SM_SHARED_DATA) + "/gshhg/";
+const std::string kLonLatTextDir = std::string(SM_DATA_DIR) + "/gshhg/";
 
 
 std::size_t file_points(const Coastline& c) {

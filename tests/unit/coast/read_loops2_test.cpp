@@ -30,7 +30,7 @@ TEST_CASE("loops2: the standalone file equals its GMT text twin") {
 }
 
 TEST_CASE("loops2: radians, UTM and cartesian coordinates") {
-  auto gb = read_lonlat_text(std::string(SM_SHARED_DATA) + "/gshhg/gb_ireland_f.txt");
+  auto gb = read_lonlat_text(std::string(SM_DATA_DIR) + "/gshhg/gb_ireland_f.txt");
   REQUIRE(gb.ok());
   const Ring& ring = gb->rings[5];
   std::string rad = fmt::format("{} 1\n", ring.pts.size()), utm = rad;

@@ -16,7 +16,7 @@ using namespace sm;
 using namespace sm::coast;
 
 namespace {
-const std::string kNe = std::string(SM_SHARED_DATA) + "/naturalearth/";
+const std::string kNe = std::string(SM_DATA_DIR) + "/naturalearth/";
 
 struct Counts { std::size_t records = 0, parts = 0, points = 0; };
 Counts count(const Coastline& c) {
@@ -78,7 +78,7 @@ TEST_CASE("shapefile: Natural Earth polygons and polylines") {
 
 TEST_CASE("shapefile: GSHHS_l_L1.shp without .shx (index rebuilt)") {
   ShapefileInfo info;
-  auto c = read_shapefile(std::string(SM_SHARED_DATA) + "/gshhs_shp/GSHHS_l_L1.shp", &info);
+  auto c = read_shapefile(std::string(SM_DATA_DIR) + "/gshhs_shp/GSHHS_l_L1.shp", &info);
   REQUIRE_MESSAGE(c.ok(), (c.ok() ? "" : c.error().to_string()));
   CHECK(info.index_rebuilt);
   CHECK(info.records == 5706);

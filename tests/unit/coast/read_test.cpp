@@ -13,7 +13,7 @@ TEST_CASE("read: format names and dispatch") {
   CHECK(parse_coast_format("Loops2") == CoastFormat::Loops2);
   CHECK_FALSE(parse_coast_format("GeoJSON").has_value());
   CHECK(std::string(coast_format_name(CoastFormat::LonLatText)) == "LonLatText");
-  const std::string d = SM_SHARED_DATA;
+  const std::string d = SM_DATA_DIR;
   auto g = read_coastline(CoastFormat::Gshhs, d + "/gshhs/gshhs_c.b");
   auto s = read_coastline(CoastFormat::Shapefile, d + "/naturalearth/ne_110m_land.shp");
   auto t = read_coastline(CoastFormat::LonLatText, d + "/gshhg/world_c.txt");

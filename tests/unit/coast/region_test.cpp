@@ -14,7 +14,7 @@ using namespace sm::coast;
 
 namespace {
 std::vector<Ring> load(const char* name) {
-  auto c = read_lonlat_text(std::string(SM_SHARED_DATA) + "/gshhg/" + name);
+  auto c = read_lonlat_text(std::string(SM_DATA_DIR) + "/gshhg/" + name);
   REQUIRE(c.ok());
   clean(*c);
   orient_rings(c->rings);

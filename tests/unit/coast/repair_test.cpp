@@ -98,7 +98,7 @@ TEST_CASE("repair: a strait narrower than gamma is listed, or closed on request"
 }
 
 TEST_CASE("repair: closing straits at 15 km joins Anglesey to Great Britain across the Menai Strait") {
-  auto c = read_lonlat_text(std::string(SM_SHARED_DATA) + "/gshhg/gb_ireland_f.txt");
+  auto c = read_lonlat_text(std::string(SM_DATA_DIR) + "/gshhg/gb_ireland_f.txt");
   REQUIRE(c.ok());
   ImportOptions o;
   o.gamma = sm::testing::constant_accuracy(15e3);

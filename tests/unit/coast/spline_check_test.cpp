@@ -239,7 +239,7 @@ TEST_CASE("spline crossings: real coastlines import with no two B-splines crossi
                         Case{"gb_ireland_f.txt", 15000, false}, Case{"gb_ireland_f.txt", 1000, true}}) {
     CAPTURE(k.file);
     CAPTURE(k.gamma);
-    auto data = read_lonlat_text(std::string(SM_SHARED_DATA) + "/gshhg/" + k.file);
+    auto data = read_lonlat_text(std::string(SM_DATA_DIR) + "/gshhg/" + k.file);
     REQUIRE(data.ok());
     ImportOptions o;
     o.gamma = gamma_of(k.gamma);

@@ -38,7 +38,7 @@ void check_same_rings(const Coastline& a, const Coastline& b) {
 }  // namespace
 
 TEST_CASE("write_gshhs: GSHHG text (GB and Ireland, full) round trip") {
-  auto text = read_lonlat_text(std::string(SM_SHARED_DATA) + "/gshhg/gb_ireland_f.txt");
+  auto text = read_lonlat_text(std::string(SM_DATA_DIR) + "/gshhg/gb_ireland_f.txt");
   REQUIRE_MESSAGE(text.ok(), (text.ok() ? "" : text.error().to_string()));
   // The file's box-closed rings are closed; keep those only (GSHHS holds closed rings).
   Coastline closed;
@@ -60,7 +60,7 @@ TEST_CASE("write_gshhs: GSHHG text (GB and Ireland, full) round trip") {
 }
 
 TEST_CASE("write_gshhs: the original crude GSHHS file round trip (Antarctica round the pole)") {
-  auto c = read_gshhs(std::string(SM_SHARED_DATA) + "/gshhs/gshhs_c.b");
+  auto c = read_gshhs(std::string(SM_DATA_DIR) + "/gshhs/gshhs_c.b");
   REQUIRE(c.ok());
   auto bytes = gshhs_bytes(*c);
   REQUIRE(bytes.ok());

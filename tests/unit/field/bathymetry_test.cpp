@@ -12,14 +12,14 @@
 using namespace sm;
 using namespace sm::field;
 using sm::field::testing::eval1;
-using sm::field::testing::shared_data;
+using sm::field::testing::repo_data;
 
 namespace {
 
 FieldSet bathy(const std::string& rel) {
   FieldSet fs;
   fs.define(1, "Bathymetry");
-  fs.set(1, "FileName", shared_data("bathymetry/" + rel));
+  fs.set(1, "FileName", repo_data("bathymetry/" + rel));
   return fs;
 }
 
@@ -45,8 +45,8 @@ TEST_CASE("bathymetry: GBR netCDF depth at nodes and midpoints, unit and Earth s
 
 TEST_CASE("bathymetry: the ESRI ASCII grids equal the netCDF ones (first row north)") {
   for (const char* base : {"etopo5_gbr_5min", "etopo5_global_1deg", "etopo5_nw_europe_5min"}) {
-    const LonLatGrid nc = read_netcdf_grid(shared_data(std::string("bathymetry/") + base + ".nc"), {});
-    const LonLatGrid asc = read_esri_ascii_grid(shared_data(std::string("bathymetry/") + base + ".asc"));
+    const LonLatGrid nc = read_netcdf_grid(repo_data(std::string("bathymetry/") + base + ".nc"), {});
+    const LonLatGrid asc = read_esri_ascii_grid(repo_data(std::string("bathymetry/") + base + ".asc"));
     REQUIRE(asc.nlon == nc.nlon);
     REQUIRE(asc.nlat == nc.nlat);
     CHECK(asc.lon0 == doctest::Approx(nc.lon0));
@@ -215,7 +215,7 @@ TEST_CASE("bathymetry: all shared netCDF grids read with their documented ranges
   };
   for (const Case& c : cases) {
     CAPTURE(c.file);
-    const LonLatGrid g = read_netcdf_grid(shared_data(std::string("bathymetry/") + c.file), {});
+    const LonLatGrid g = read_netcdf_grid(repo_data(std::string("bathymetry/") + c.file), {});
     CHECK(g.nlon == c.nlon);
     CHECK(g.nlat == c.nlat);
     CHECK(g.period == c.period);
@@ -316,7 +316,7 @@ TEST_CASE("time step field: Dt sqrt(g H) / Courant from a depth field or a grid"
   CHECK(eval1(fs, 2, {40, 0, 0}) == doctest::Approx(60 * std::sqrt(9.81 * 4000)));
   FieldSet grid;
   grid.define(1, "TimeStep");
-  grid.set(1, "FileName", shared_data("bathymetry/etopo5_gbr_5min.nc"));
+  grid.set(1, "FileName", repo_data("bathymetry/etopo5_gbr_5min.nc"));
   grid.set(1, "Dt", 10.0);
   CHECK(eval1(grid, 1, point_of(152.5, -26 + 100.0 / 12, 1)) == doctest::Approx(10 * std::sqrt(9.81 * 1511)));
   grid.set(1, "Dt", 0.0);

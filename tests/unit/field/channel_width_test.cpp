@@ -188,3 +188,32 @@ TEST_CASE("channel width: lower() gives min(h, field) with the short search") {
   }
   CHECK(lowered > 100);
 }
+
+TEST_CASE("channel width: lower() on the sphere equals min(h, field) where the grid skips the search") {
+  // Two parallels of latitude 0.5 degrees apart (a strait about 55 km wide) and
+  // points around them with sizes from 100 m to 300 km: the grid of smallest widths
+  // rules most of them out; every result must equal the full evaluation's.
+  const double r = 6371e3, deg = std::numbers::pi / 180;
+  auto at = [&](double lat, double lon) {
+    return Vec3{r * std::cos(lat * deg) * std::cos(lon * deg), r * std::cos(lat * deg) * std::sin(lon * deg),
+                r * std::sin(lat * deg)};
+  };
+  std::vector<CoastChain> coast(2);
+  for (double lon = -5; lon <= 5 + 1e-9; lon += 0.02) coast[0].points.push_back(at(10, lon)), coast[1].points.push_back(at(10.5, lon));
+  auto f = make_channel_width_field(coast, {/*elements_across=*/3, /*size_min=*/200, /*size_max=*/200e3});
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> lat(8, 12.5), lon(-7, 7), lh(2, 5.5);
+  std::vector<Vec3> q(4000);
+  std::vector<double> h(q.size()), full(q.size());
+  for (std::size_t i = 0; i < q.size(); ++i) q[i] = at(lat(rng), lon(rng)), h[i] = std::pow(10.0, lh(rng));
+  f->eval(q, full);
+  std::vector<double> low = h;
+  f->lower(q, low);
+  int lowered = 0;
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    CHECK(low[i] == std::min(h[i], full[i]));
+    lowered += low[i] < h[i];
+  }
+  CHECK(lowered > 200);
+  CHECK(lowered < 3800);
+}

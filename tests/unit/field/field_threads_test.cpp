@@ -22,14 +22,14 @@
 
 using namespace sm;
 using namespace sm::field;
-using sm::field::testing::shared_data;
+using sm::field::testing::repo_data;
 
 namespace {
 
 constexpr int kThreads = 4;
 
 std::vector<Vec3> read_coast(const std::string& rel) {
-  std::ifstream in(shared_data(rel));
+  std::ifstream in(repo_data(rel));
   REQUIRE(in);
   std::vector<Vec3> coast;
   std::string line;
@@ -102,18 +102,18 @@ std::vector<int> define_all(FieldSet& fs, std::size_t coast_points) {
   fs.set(thr, "Sigmoid", 1.0);
 
   const int depth = def("Bathymetry");
-  fs.set(depth, "FileName", shared_data("bathymetry/etopo5_global_1deg.nc"));
+  fs.set(depth, "FileName", repo_data("bathymetry/etopo5_global_1deg.nc"));
   fs.set(depth, "Radius", 1.0);
   const int step = def("TimeStep");
   fs.set(step, "DepthField", static_cast<double>(depth));
   fs.set(step, "Dt", 60.0);
   const int wave = def("Bathymetry");
-  fs.set(wave, "FileName", shared_data("bathymetry/etopo5_global_1deg.asc"));
+  fs.set(wave, "FileName", repo_data("bathymetry/etopo5_global_1deg.asc"));
   fs.set(wave, "Output", std::string("wavelength"));
   fs.set(wave, "WaveLengthMin", 20e3 / r);
   fs.set(wave, "DepthRef", 1000.0);
   const int hess = def("Bathymetry");
-  fs.set(hess, "FileName", shared_data("bathymetry/etopo5_global_1deg.nc"));
+  fs.set(hess, "FileName", repo_data("bathymetry/etopo5_global_1deg.nc"));
   fs.set(hess, "Output", std::string("hessian"));
 
   // Field inputs, variadic functions and rand() (a hash of the point, no generator state).
@@ -162,7 +162,7 @@ std::vector<int> define_all(FieldSet& fs, std::size_t coast_points) {
 
   // Structured on the GBR relief, reached through LonLat (radians) and Param (degrees).
   const int grid = def("Structured");
-  fs.set(grid, "FileName", shared_data("bathymetry/etopo5_gbr_5min.gmsh_structured.txt"));
+  fs.set(grid, "FileName", repo_data("bathymetry/etopo5_gbr_5min.gmsh_structured.txt"));
   fs.set(grid, "TextFormat", 1.0);
   const int param = def("Param");
   fs.set(param, "InField", static_cast<double>(grid));
@@ -313,8 +313,8 @@ TEST_CASE("field threads: the size policy from 4 threads equals the serial sizes
 // crash); read_netcdf_grid serialises its calls, so grids may be read from any thread.
 TEST_CASE("field threads: netCDF grids read from 8 threads at once equal the serial reads") {
   const std::vector<std::string> files = {
-      shared_data("bathymetry/etopo5_global_1deg.nc"), shared_data("bathymetry/etopo5_gbr_5min.nc"),
-      shared_data("bathymetry/etopo60.cdf"), shared_data("bathymetry/etopo5_nw_europe_5min.nc")};
+      repo_data("bathymetry/etopo5_global_1deg.nc"), repo_data("bathymetry/etopo5_gbr_5min.nc"),
+      repo_data("bathymetry/etopo60.cdf"), repo_data("bathymetry/etopo5_nw_europe_5min.nc")};
   std::vector<LonLatGrid> serial;
   for (const std::string& f : files) serial.push_back(read_netcdf_grid(f, {}));
   constexpr std::size_t kReaders = 8, kReads = 64;

@@ -48,7 +48,7 @@ TEST_CASE("knn: FLANN k-d tree equals brute force on random points") {
 }
 
 TEST_CASE("knn: real coastline samples on the unit sphere (world_c) against brute force") {
-  std::ifstream in(sm::field::testing::shared_data("gshhg/world_c.txt"));
+  std::ifstream in(sm::field::testing::repo_data("gshhg/world_c.txt"));
   REQUIRE(in);
   std::vector<Vec3> pts;
   std::string line;

@@ -13,10 +13,10 @@
 
 using namespace sm;
 using namespace sm::field;
-using sm::field::testing::shared_data;
+using sm::field::testing::repo_data;
 
 TEST_CASE("paper recipe: f1, f2, f3 on the Great Barrier Reef, Min, argmin, Gradation") {
-  std::ifstream in(shared_data("gshhg/gbr_lizard_f.txt"));
+  std::ifstream in(repo_data("gshhg/gbr_lizard_f.txt"));
   REQUIRE(in);
   std::vector<Vec3> coast;
   std::string line;
@@ -34,7 +34,7 @@ TEST_CASE("paper recipe: f1, f2, f3 on the Great Barrier Reef, Min, argmin, Grad
     return coast[static_cast<std::size_t>(tag - 1)];
   };
   const double r = 6371e3;
-  const std::string nc = shared_data("bathymetry/etopo5_gbr_5min.nc");
+  const std::string nc = repo_data("bathymetry/etopo5_gbr_5min.nc");
   FieldSet fs;
   fs.define(1, "Distance");
   std::vector<double> tags(coast.size());

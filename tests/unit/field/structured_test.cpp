@@ -11,7 +11,7 @@
 using namespace sm;
 using namespace sm::field;
 using sm::field::testing::eval1;
-using sm::field::testing::shared_data;
+using sm::field::testing::repo_data;
 
 namespace {
 
@@ -26,9 +26,9 @@ FieldSet structured(const std::string& file, bool text) {
 }  // namespace
 
 TEST_CASE("structured: Gmsh text grid of the GBR relief equals the netCDF grid") {
-  const std::string txt = shared_data("bathymetry/etopo5_gbr_5min.gmsh_structured.txt");
+  const std::string txt = repo_data("bathymetry/etopo5_gbr_5min.gmsh_structured.txt");
   FieldSet fs = structured(txt, true);
-  const LonLatGrid nc = read_netcdf_grid(shared_data("bathymetry/etopo5_gbr_5min.nc"), {});
+  const LonLatGrid nc = read_netcdf_grid(repo_data("bathymetry/etopo5_gbr_5min.nc"), {});
   // Nodes (ncdump: z(100,150) = -1511 at lon 152.5, lat -17.6667) and midpoints.
   CHECK(eval1(fs, 1, {152.5, -26 + 100.0 / 12, 0}) == doctest::Approx(-1511));
   CHECK(eval1(fs, 1, {152.5 + 1.0 / 24, -26 + 100.5 / 12, 0}) ==
@@ -96,7 +96,7 @@ TEST_CASE("structured: binary format, and bad files") {
     CHECK(e.code() == FieldErrc::FileError);
     CHECK(e.field_id == 1);
   }
-  FieldSet wrong = structured(shared_data("bathymetry/etopo5_gbr_5min.gmsh_structured.txt"), false);
+  FieldSet wrong = structured(repo_data("bathymetry/etopo5_gbr_5min.gmsh_structured.txt"), false);
   CHECK_THROWS_AS(wrong.build(1, {}), FieldError);
   std::filesystem::remove_all(dir);
 }

@@ -20,6 +20,6 @@ inline double eval1(const FieldSet& fs, int id, Vec3 p, const BuildContext& ctx 
   return eval_field(fs, id, {p}, ctx)[0];
 }
 
-inline std::string shared_data(const std::string& rel) { return std::string(SM_SHARED_DATA) + "/" + rel; }
+inline std::string repo_data(const std::string& rel) { return std::string(SM_DATA_DIR) + "/" + rel; }
 
 }  // namespace sm::field::testing

@@ -82,7 +82,7 @@ int build_world(Model& m, const std::vector<Segment>& segs, int& outer, std::vec
 }  // namespace
 
 TEST_CASE("world model: world_l.txt (5,741 low-resolution coastlines) gives one valid face") {
-  const std::vector<Segment> segs = read_segments(std::string(SM_SHARED_DATA) + "/gshhg/world_l.txt");
+  const std::vector<Segment> segs = read_segments(std::string(SM_DATA_DIR) + "/gshhg/world_l.txt");
   REQUIRE(segs.size() == 5741);
   Model m;
   int outer = 0;
@@ -94,7 +94,7 @@ TEST_CASE("world model: world_l.txt (5,741 low-resolution coastlines) gives one 
 }
 
 TEST_CASE("world model: world_c.txt as closed BSplines on a PolarSphere, Antarctica outer") {
-  const std::vector<Segment> segs = read_segments(std::string(SM_SHARED_DATA) + "/gshhg/world_c.txt");
+  const std::vector<Segment> segs = read_segments(std::string(SM_DATA_DIR) + "/gshhg/world_c.txt");
   REQUIRE(segs.size() == 743);
   Model m;
   REQUIRE(m.add_point(1, {0, 0, 0}));
@@ -172,7 +172,7 @@ TEST_CASE("world_i_A100 coastlines as closed BSplines match gmsh 4.8.4 at its 2,
   // 1D mesh (lc 0.05 on the unit sphere) of the whole file as closed BSplines in Plugin(GSHHS)
   // (u,v) (make_world_geo.py, make_reference.sh). Curve k is segment k; Eurasia (k = 1) has
   // 35,321 control points.
-  const std::vector<Segment> segs = read_segments(std::string(SM_SHARED_DATA) + "/gshhg/world_i_A100.txt");
+  const std::vector<Segment> segs = read_segments(std::string(SM_DATA_DIR) + "/gshhg/world_i_A100.txt");
   REQUIRE(segs.size() == 1440);
   const PolarSphere ps({0, 0, 0}, 1.0);
   std::vector<Curve> curves;

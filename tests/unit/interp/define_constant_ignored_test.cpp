@@ -33,7 +33,9 @@ DciRun dci_run(const std::string& main_text, double preset = -1) {
   sm::lang::SourceManager sources;
   sm::lang::Diagnostics diags(sources);
   std::ostringstream printed;
-  sm::interp::Interpreter in(sources, diags, printed, {});
+  sm::interp::RunSettings settings;
+  settings.stdlib_dir = SM_SOURCE_DIR "/stdlib";   // the binary finds it beside itself
+  sm::interp::Interpreter in(sources, diags, printed, settings);
   if (preset >= 0) REQUIRE(in.preset_number("Size", preset).empty());
   REQUIRE(in.run_file(main) == sm::interp::RunStatus::Ok);
   std::filesystem::remove_all(dir);

@@ -23,6 +23,8 @@ inline RunOutput run_script(const std::string& text, const std::string& name = "
   lang::SourceManager sources;
   lang::Diagnostics diags(sources);
   std::ostringstream out;
+  // The binary finds its stdlib beside itself; a test binary takes the source tree's.
+  if (settings.stdlib_dir.empty()) settings.stdlib_dir = SM_SOURCE_DIR "/stdlib";
   Interpreter in(sources, diags, out, settings);
   in.run_buffer(name, text);
   RunOutput r;

@@ -24,7 +24,7 @@ TEST_CASE("ocean grids: boundaries from the 'open' group, depth from Mesh.DepthF
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("sm_ocean_grid_" + std::to_string(::getpid()));
   fs::create_directories(dir);
-  const std::string data = SM_SHARED_DATA;
+  const std::string data = SM_DATA_DIR;
   const std::string script =
       "Point(1) = {0, 0, 0}; Point(2) = {0, 0, 6371009};\n"
       "PolarSphere(1) = {1, 2};\n"

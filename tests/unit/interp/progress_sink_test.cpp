@@ -154,7 +154,7 @@ TEST_CASE("progress: a failing 1D mesh still ends its stage") {
 }
 
 TEST_CASE("progress: coastline import on real data, one unit per pipeline step") {
-  const std::string data = SM_SHARED_DATA;
+  const std::string data = SM_DATA_DIR;
   RecordingProgress p;
   const Run r = run_with(
       "Point(1) = {0, 0, 0}; Point(2) = {0, 0, 6371009};\n"

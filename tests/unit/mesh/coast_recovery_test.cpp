@@ -10,7 +10,7 @@ using namespace sm;
 namespace {
 
 void run_world(const char* file, double step_km) {
-  const auto rings = testing::read_gshhg(std::string(SM_SHARED_DATA) + "/gshhg/" + file);
+  const auto rings = testing::read_gshhg(std::string(SM_DATA_DIR) + "/gshhg/" + file);
   REQUIRE(rings.size() > 100);
   std::vector<testing::RingCurve> curves;
   for (const auto& r : rings) curves.emplace_back(r);
@@ -50,7 +50,7 @@ TEST_CASE("coast recovery: a genuinely self-intersecting real coastline fails, l
   // GSHHG low, raw vertices: the Antarctic ice-front ring (segment 6) crosses
   // itself near lon 162.4, lat -76.1 (its edges 32-33 and 34-35 intersect in
   // lon/lat: a simplification defect of the source data).
-  const auto rings = testing::read_gshhg(std::string(SM_SHARED_DATA) + "/gshhg/world_l.txt");
+  const auto rings = testing::read_gshhg(std::string(SM_DATA_DIR) + "/gshhg/world_l.txt");
   std::vector<testing::RingCurve> curves;
   for (const auto& r : rings) curves.emplace_back(r);
   BoundaryProblem p = testing::coast_problem(curves, 0);

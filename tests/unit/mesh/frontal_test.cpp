@@ -223,7 +223,7 @@ TEST_CASE("front2d: the world ocean from GSHHG crude shorelines at 150 km in the
   // Real data: every ring resampled at 150 km, recovered (paper section
   // 3.2), Antarctica's ring (round the projection pole) the outer loop,
   // every other ring an island; uniform 150 km on the sphere.
-  const auto rings = testing::read_gshhg(std::string(SM_SHARED_DATA) + "/gshhg/world_c.txt");
+  const auto rings = testing::read_gshhg(std::string(SM_DATA_DIR) + "/gshhg/world_c.txt");
   REQUIRE(rings.size() > 100);
   std::vector<testing::RingCurve> curves;
   for (const auto& r : rings) curves.emplace_back(r);

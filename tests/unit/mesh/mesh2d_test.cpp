@@ -569,7 +569,7 @@ void build_world(World& w, const std::vector<testing::Ring>& rings, const std::s
 
 TEST_CASE("mesh2d: world ocean north of 60S from GSHHG crude, shore distance 30 to 200 km") {
   constexpr double kR = 6371.0;   // km: the test works on a sphere of radius 6371
-  std::vector<testing::Ring> rings = testing::read_gshhg(std::string(SM_SHARED_DATA) + "/gshhg/world_c.txt");
+  std::vector<testing::Ring> rings = testing::read_gshhg(std::string(SM_DATA_DIR) + "/gshhg/world_c.txt");
   REQUIRE(rings.size() > 500);
   // BSplines through crude data may cross where islands nearly touch (1D meshing reports
   // them, located): drop the smaller ring of each such pair and rebuild.

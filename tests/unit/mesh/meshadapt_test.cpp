@@ -289,7 +289,7 @@ TEST_CASE("meshadapt: the world ocean from GSHHG crude shorelines on the sphere 
   // South Pole (Antarctica's ring, round the pole, is the outer loop), the
   // ocean meshed at delta = 150 km: delta_u = delta / lambda(u).
   const double step_km = 150, delta = step_km / 6371.0;
-  const auto rings = testing::read_gshhg(std::string(SM_SHARED_DATA) + "/gshhg/world_c.txt");
+  const auto rings = testing::read_gshhg(std::string(SM_DATA_DIR) + "/gshhg/world_c.txt");
   REQUIRE(rings.size() > 100);
   std::vector<testing::RingCurve> curves;
   for (const auto& r : rings) curves.emplace_back(r);

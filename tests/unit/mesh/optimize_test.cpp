@@ -184,7 +184,7 @@ TEST_CASE("optimize_quality: GSHHG crude world coastlines, raw vertices (close b
   // The ocean of world_c.txt in the stereographic plane with every raw coast vertex as a
   // boundary node, refined by front2d at 150 km: triangles of three coast nodes stay
   // (forced by the 1D mesh), the others must be lifted.
-  const auto rings = testing::read_gshhg(std::string(SM_SHARED_DATA) + "/gshhg/world_c.txt");
+  const auto rings = testing::read_gshhg(std::string(SM_DATA_DIR) + "/gshhg/world_c.txt");
   REQUIRE(rings.size() > 100);
   std::vector<testing::RingCurve> curves;
   for (const auto& r : rings) curves.emplace_back(r);

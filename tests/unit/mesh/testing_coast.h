@@ -1,4 +1,4 @@
-// Test/bench helper: GSHHG text rings (../shared/data/gshhg) as a
+// Test/bench helper: GSHHG text rings (data/gshhg) as a
 // BoundaryProblem in the paper's stereographic plane (unit sphere, from the
 // South Pole), either on the raw vertices or resampled at a uniform step.
 #pragma once

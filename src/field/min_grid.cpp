@@ -1,0 +1,134 @@
+// Cells are keyed by their level and integer coordinates in one 64-bit word and kept
+// in one open-addressing table: the levels together hold at most about twice as many
+// cells as there are points (each level has at most the cells of the one below),
+// and a query reads at most 8 of them.
+#include "field/min_grid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <tuple>
+#include <utility>
+
+namespace sm::field {
+
+namespace {
+
+constexpr int kCoordBits = 19;
+constexpr std::int64_t kCells = std::int64_t{1} << kCoordBits;  // per axis and level
+constexpr int kMaxLevels = 31;                                     // level 31 is the empty key's
+constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
+// Relative enlargement of a query ball: covers the rounding of the ball's bounds,
+// of the points' cell coordinates and of the distances the caller compares with r.
+constexpr double kMargin = 1e-9;
+
+std::int64_t cell_of(double offset, double cell) { return static_cast<std::int64_t>(std::floor(offset / cell)); }
+
+}  // namespace
+
+std::uint64_t MinGrid::key(int level, std::int64_t i, std::int64_t j, std::int64_t k) const {
+  return (static_cast<std::uint64_t>(level) << (3 * kCoordBits)) | (static_cast<std::uint64_t>(i) << (2 * kCoordBits)) |
+         (static_cast<std::uint64_t>(j) << kCoordBits) | static_cast<std::uint64_t>(k);
+}
+
+MinGrid::MinGrid(std::span<const Vec3> pts, std::span<const double> value, double finest_cell) {
+  if (pts.empty()) return;
+  Vec3 lo = pts[0], hi = pts[0];
+  for (const Vec3& p : pts) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  origin_ = lo;
+  const double extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+  scale_ = std::max({std::fabs(lo.x), std::fabs(lo.y), std::fabs(lo.z), std::fabs(hi.x), std::fabs(hi.y),
+                     std::fabs(hi.z)}) +
+           extent;
+  // Every point's level-0 coordinate must stay below kCells (two cells to spare).
+  finest_ = std::max(finest_cell, extent / static_cast<double>(kCells - 2));
+  if (!(finest_ > 0) || !std::isfinite(finest_)) finest_ = std::max(extent, 1.0);
+  // Levels up to the first whose cells are wider than twice the extent.
+  levels_ = 1;
+  while (levels_ < kMaxLevels && std::ldexp(finest_, levels_ - 1) <= 2 * extent) ++levels_;
+
+  // Level 0 from the points, each further level from the cells of the one below.
+  struct Cell {
+    std::int64_t i, j, k;
+    double min;
+  };
+  std::vector<Cell> level(pts.size());
+  for (std::size_t n = 0; n < pts.size(); ++n) {
+    const Vec3 d = pts[n] - origin_;
+    level[n] = {cell_of(d.x, finest_), cell_of(d.y, finest_), cell_of(d.z, finest_), value[n]};
+  }
+  const auto same = [](const Cell& a, const Cell& b) { return a.i == b.i && a.j == b.j && a.k == b.k; };
+  const auto before = [](const Cell& a, const Cell& b) {
+    return std::tie(a.i, a.j, a.k) < std::tie(b.i, b.j, b.k);
+  };
+  std::vector<std::pair<std::uint64_t, double>> all;
+  for (int l = 0; l < levels_; ++l) {
+    if (l > 0)
+      for (Cell& c : level) c = {c.i >> 1, c.j >> 1, c.k >> 1, c.min};
+    std::sort(level.begin(), level.end(), before);
+    std::size_t out = 0;
+    for (std::size_t n = 0; n < level.size(); ++n) {
+      if (out > 0 && same(level[out - 1], level[n])) {
+        level[out - 1].min = std::min(level[out - 1].min, level[n].min);
+      } else {
+        level[out++] = level[n];
+      }
+    }
+    level.resize(out);
+    for (const Cell& c : level) all.emplace_back(key(l, c.i, c.j, c.k), c.min);
+  }
+  entries_ = all.size();
+  std::size_t capacity = 16;
+  int bits = 4;
+  while (capacity < 2 * entries_) capacity *= 2, ++bits;
+  shift_ = 64 - bits;
+  keys_.assign(capacity, kEmpty);
+  minima_.assign(capacity, 0);
+  for (const auto& [k, v] : all) {
+    std::size_t slot = static_cast<std::size_t>((k * 0x9E3779B97F4A7C15ull) >> shift_);
+    while (keys_[slot] != kEmpty) slot = (slot + 1) & (capacity - 1);
+    keys_[slot] = k;
+    minima_[slot] = v;
+  }
+}
+
+double MinGrid::find(std::uint64_t k) const {
+  const std::size_t mask = keys_.size() - 1;
+  for (std::size_t slot = static_cast<std::size_t>((k * 0x9E3779B97F4A7C15ull) >> shift_);; slot = (slot + 1) & mask) {
+    if (keys_[slot] == k) return minima_[slot];
+    if (keys_[slot] == kEmpty) return std::numeric_limits<double>::infinity();
+  }
+}
+
+double MinGrid::lower_bound(const Vec3& x, double r) const {
+  constexpr double kNone = -std::numeric_limits<double>::infinity();
+  if (keys_.empty()) return std::numeric_limits<double>::infinity();
+  if (!std::isfinite(x.x) || !std::isfinite(x.y) || !std::isfinite(x.z) || !(r >= 0)) return kNone;
+  const double reach = r * (1 + kMargin) + kMargin * (scale_ + std::fabs(x.x) + std::fabs(x.y) + std::fabs(x.z));
+  int l = 0;
+  double cell = finest_;
+  while (cell < 2 * reach) {
+    if (++l >= levels_) return kNone;
+    cell *= 2;
+  }
+  std::int64_t from[3], to[3];
+  const double at[3] = {x.x - origin_.x, x.y - origin_.y, x.z - origin_.z};
+  for (int a = 0; a < 3; ++a) {
+    // Outside the indexed range a cell holds no point; clamped before the casts.
+    const double lo = std::floor((at[a] - reach) / cell), hi = std::floor((at[a] + reach) / cell);
+    const double top = static_cast<double>((kCells >> l) - 1);
+    if (hi < 0 || lo > top) return std::numeric_limits<double>::infinity();
+    from[a] = static_cast<std::int64_t>(std::max(lo, 0.0));
+    to[a] = static_cast<std::int64_t>(std::min(hi, top));
+  }
+  double low = std::numeric_limits<double>::infinity();
+  for (std::int64_t i = from[0]; i <= to[0]; ++i)
+    for (std::int64_t j = from[1]; j <= to[1]; ++j)
+      for (std::int64_t k = from[2]; k <= to[2]; ++k) low = std::min(low, find(key(l, i, j, k)));
+  return low;
+}
+
+}  // namespace sm::field

@@ -1,0 +1,46 @@
+// Per-cell minima of a value carried by points, on nested cubic grids whose cells
+// double in size level by level. It answers "can a point within r of x carry a
+// value below v?" from at most 8 cells of one level, without visiting the points:
+// the ChannelWidth field uses it to skip the nearest-sample query wherever no
+// sample near x is narrow enough to lower the size there (field/channel_width.cpp).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "base/vec.h"
+
+namespace sm::field {
+
+class MinGrid {
+ public:
+  /// `value[i]` is carried by `pts[i]` (finite points). `finest_cell`: the cell size
+  /// of level 0 (raised where the points' extent needs it to fit the cell index);
+  /// level k has cells of finest_cell * 2^k, up to one that holds every point.
+  MinGrid(std::span<const Vec3> pts, std::span<const double> value, double finest_cell);
+
+  /// A lower bound on the values of the points within distance r of x: the minimum
+  /// over the cells of the smallest level whose cells are at least 2r wide that
+  /// meet the ball's bounding box (slightly enlarged, so that rounding never leaves
+  /// a point out). +inf where no point is that near; -inf where x is not finite or
+  /// the ball is wider than the coarsest level (no bound).
+  double lower_bound(const Vec3& x, double r) const;
+
+  std::size_t cells() const { return entries_; }
+
+ private:
+  std::uint64_t key(int level, std::int64_t i, std::int64_t j, std::int64_t k) const;
+  double find(std::uint64_t key) const;
+
+  Vec3 origin_{};
+  double finest_ = 0;
+  double scale_ = 0;  // |x| + extent: the rounding margin's reference
+  int levels_ = 0;
+  std::size_t entries_ = 0;
+  std::vector<std::uint64_t> keys_;  // open addressing, linear probing; kEmpty marks a free slot
+  std::vector<double> minima_;
+  int shift_ = 64;
+};
+
+}  // namespace sm::field

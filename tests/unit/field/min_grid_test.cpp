@@ -1,0 +1,55 @@
+#include "field/min_grid.h"
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include <doctest/doctest.h>
+
+using namespace sm;
+using namespace sm::field;
+
+TEST_CASE("min grid: the bound never exceeds the smallest value within r, on a plane and on a sphere") {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1), val(0, 10), lr(-6, 0.5);
+  for (const bool sphere : {false, true}) {
+    std::vector<Vec3> pts(3000);
+    std::vector<double> v(pts.size());
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      Vec3 p{u(rng), u(rng), sphere ? u(rng) : 0.25};
+      if (sphere) p = (6.371e6 / norm(p)) * p;
+      pts[i] = p;
+      v[i] = val(rng);
+    }
+    const double scale = sphere ? 6.371e6 : 1;
+    MinGrid grid(pts, v, 0.01 * scale);
+    CHECK(grid.cells() >= pts.size());
+    int bounded = 0;
+    for (int q = 0; q < 3000; ++q) {
+      // Queries near the points (some exactly on one) and far from them.
+      Vec3 x = q % 3 == 0 ? pts[static_cast<std::size_t>(q)] : Vec3{u(rng), u(rng), u(rng)} * (1.5 * scale);
+      const double r = std::pow(10.0, lr(rng)) * scale;
+      double least = std::numeric_limits<double>::infinity();
+      for (std::size_t i = 0; i < pts.size(); ++i)
+        if (norm(pts[i] - x) <= r) least = std::min(least, v[i]);
+      const double b = grid.lower_bound(x, r);
+      CHECK(b <= least);
+      bounded += std::isfinite(b) && b > 0;
+    }
+    // The grid is not trivially -inf: small balls get real bounds.
+    CHECK(bounded > 500);
+  }
+}
+
+TEST_CASE("min grid: a point exactly r away is inside, a far ball is empty, bad queries give no bound") {
+  const std::vector<Vec3> pts{{0, 0, 0}, {1, 0, 0}};
+  const std::vector<double> v{5, 2};
+  MinGrid grid(pts, v, 0.1);
+  CHECK(grid.lower_bound({0.5, 0, 0}, 0.5) == 2);
+  CHECK(grid.lower_bound({-0.3, 0, 0}, 0.3) == 5);
+  CHECK(grid.lower_bound({40, 40, 40}, 0.3) == std::numeric_limits<double>::infinity());
+  CHECK(grid.lower_bound({0, 0, 0}, 1e9) == -std::numeric_limits<double>::infinity());
+  CHECK(grid.lower_bound({std::nan(""), 0, 0}, 0.1) == -std::numeric_limits<double>::infinity());
+  MinGrid empty({}, {}, 1);
+  CHECK(empty.lower_bound({0, 0, 0}, 1) == std::numeric_limits<double>::infinity());
+}
