@@ -672,7 +672,7 @@ void FaceMesher::raise_floor() {
       OptimizeOptions oo;
       oo.threshold = std::min(0.9, opt_.quality_floor + 0.2);
       oo.sacrifice_below = oo.threshold;
-      oo.compound_below = opt_.quality_floor + 0.1;
+      oo.compound_below = std::min(oo.threshold, opt_.quality_floor + 0.1);
       optimize_quality(m_, fixed_count_, oo);
     }
     // What is left, measured after the quality pass (no rounds: only the count).

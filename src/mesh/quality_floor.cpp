@@ -562,9 +562,9 @@ QualityFloorResult Floor::run(const QualityFloorOptions& opt) {
     return below;
   };
   res_.below_before = collect(false);
-  const std::uint32_t budget = opt.max_points ? opt.max_points : 16 * res_.below_before + 256;
+  const std::uint32_t budget = opt.max_points ? opt.max_points : 4 * res_.below_before + 256;
   budget_ = opt.max_work ? opt.max_work
-                         : 64 * std::uint64_t{res_.below_before} + 64 * std::uint64_t(std::max(opt.max_rounds, 0)) + 1024;
+                         : 16 * std::uint64_t{res_.below_before} + 64 * std::uint64_t(std::max(opt.max_rounds, 0)) + 1024;
   res_.work_budget = budget_;
   for (int round = 0; round < opt.max_rounds && !bad.empty() && !stopped(); ++round) {
     ++res_.rounds;
