@@ -92,9 +92,27 @@ InsertOutcome PointInserter::insert(Vec2 c, TriId t0) {
   if (marked)
     for (std::uint32_t t : cavity_) m_.tri_flags[t] &= static_cast<std::uint8_t>(~kMark);
   if (!visible) return InsertOutcome::NotVisible;
+  // The boundary must close: each edge's end is the start of another (j_of). It always
+  // does in a consistent triangulation; twins that do not match (a corrupt store) would
+  // otherwise send the search below past the end of bound_. Checked before any change.
+  const std::size_t k = bound_.size();
+  if (k > 32 && vmap_.size() < m_.num_vertices() + 1)
+    vmap_.resize(m_.num_vertices() + m_.num_vertices() / 2 + 1, kNoIndex);
+  if (k > 32)
+    for (std::size_t i = 0; i < k; ++i) vmap_[bound_[i].a.value] = static_cast<std::uint32_t>(i);
+  const auto j_of = [&](std::size_t i) -> std::size_t {
+    if (k > 32) {
+      const std::uint32_t j = vmap_[bound_[i].b.value];
+      return j < k && bound_[j].a == bound_[i].b ? j : k;
+    }
+    std::size_t j = 0;
+    while (j < k && bound_[j].a != bound_[i].b) ++j;
+    return j;
+  };
+  for (std::size_t i = 0; i < k; ++i)
+    if (j_of(i) == k) return InsertOutcome::NotVisible;
   stats.cavity_triangles += cavity_.size();
   const VertexId v = m_.add_vertex(c);
-  const std::size_t k = bound_.size();
   // Slots: the cavity's, then dead ones, then new ones (k = cavity + 2).
   while (cavity_.size() < k) {
     std::uint32_t t;
@@ -121,17 +139,7 @@ InsertOutcome PointInserter::insert(Vec2 c, TriId t0) {
   }
   if (keep_out_side) m_.out_side[v.value] = Side{3 * cavity_[0] + 2};
   // Link b -> v of the triangle on (a, b) with v -> b of the one on (b, c).
-  if (k <= 32) {
-    for (std::size_t i = 0; i < k; ++i) {
-      std::size_t j = 0;
-      while (bound_[j].a != bound_[i].b) ++j;
-      m_.link(Side{3 * cavity_[i] + 1}, Side{3 * cavity_[j] + 2});
-    }
-  } else {
-    if (vmap_.size() < m_.num_vertices()) vmap_.resize(m_.num_vertices() + m_.num_vertices() / 2, kNoIndex);
-    for (std::size_t i = 0; i < k; ++i) vmap_[bound_[i].a.value] = cavity_[i];
-    for (std::size_t i = 0; i < k; ++i) m_.link(Side{3 * cavity_[i] + 1}, Side{3 * vmap_[bound_[i].b.value] + 2});
-  }
+  for (std::size_t i = 0; i < k; ++i) m_.link(Side{3 * cavity_[i] + 1}, Side{3 * cavity_[j_of(i)] + 2});
   last_ = v;
   created_ = k;
   return InsertOutcome::Inserted;

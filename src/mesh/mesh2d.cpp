@@ -626,42 +626,57 @@ void FaceMesher::raise_floor() {
   const TriangleStore before = m_;
   const std::size_t nodes_start = mesh_.nodes.size(), global_start = global_.size();
   QualityFloorResult r, left;
-  for (const bool never_worse : {false, true}) {
-    if (never_worse) {
-      // Undo: the triangulation, the curve nodes (appended last, so the node array is cut
-      // back) and the bookkeeping.
-      m_ = before;
-      for (auto it = floor_nodes_.rbegin(); it != floor_nodes_.rend(); ++it) {
-        CurveMesh& cm = mesh_.curves.at(it->first);
-        const auto k = std::find(cm.nodes.begin(), cm.nodes.end(), it->second) - cm.nodes.begin();
-        cm.nodes.erase(cm.nodes.begin() + k);
-        cm.t.erase(cm.t.begin() + k);
-        if (static_cast<std::size_t>(k) < cm.h.size()) cm.h.erase(cm.h.begin() + k);
-      }
-      floor_nodes_.clear();
-      mesh_.nodes.resize(nodes_start);
-      global_.resize(global_start);
-      edge_curve_of_.clear();
-      for (std::size_t i = 0; i < edges_.size(); ++i)
-        edge_curve_of_[std::minmax(edges_[i].first.value, edges_[i].second.value)] = edge_curve_[i];
+  // Undo: the triangulation, the curve nodes (appended last, so the node array is cut
+  // back) and the bookkeeping.
+  const auto put_back = [&] {
+    m_ = before;
+    for (auto it = floor_nodes_.rbegin(); it != floor_nodes_.rend(); ++it) {
+      CurveMesh& cm = mesh_.curves.at(it->first);
+      const auto k = std::find(cm.nodes.begin(), cm.nodes.end(), it->second) - cm.nodes.begin();
+      cm.nodes.erase(cm.nodes.begin() + k);
+      cm.t.erase(cm.t.begin() + k);
+      if (static_cast<std::size_t>(k) < cm.h.size()) cm.h.erase(cm.h.begin() + k);
     }
+    floor_nodes_.clear();
+    mesh_.nodes.resize(nodes_start);
+    global_.resize(global_start);
+    edge_curve_of_.clear();
+    for (std::size_t i = 0; i < edges_.size(); ++i)
+      edge_curve_of_[std::minmax(edges_[i].first.value, edges_[i].second.value)] = edge_curve_[i];
+  };
+  // An internal error of the floor (a walk that did not end: the triangulation is not
+  // consistent there) puts the face back as it was before the floor, a valid mesh, and is
+  // reported with its place.
+  const auto faulted = [&](const QualityFloorResult& f) {
+    if (f.fault.empty()) return false;
+    const std::string at = where_text(space_of(f.fault_at));
+    put_back();
+    res_.quality_warnings.push_back(fmt::format(
+        "surface {}: internal error: {} near {}; the face is left as it was before Mesh.QualityFloor", tag_, f.fault,
+        at));
+    return true;
+  };
+  for (const bool never_worse : {false, true}) {
+    if (never_worse) put_back();
     QualityFloorOptions fo;
     fo.floor = opt_.quality_floor;
     fo.never_below_start = never_worse;
     r = raise_quality_floor(m_, face, fo);
+    if (faulted(r)) return;
     if (r.changed() && opt_.smoothing > 0 && opt_.quality_pass) {
       // The quality pass again, on what the floor changed: only triangles below the floor
       // (and a margin) are worked on; the rest of the face was optimised already.
       OptimizeOptions oo;
       oo.threshold = std::min(0.9, opt_.quality_floor + 0.2);
       oo.sacrifice_below = oo.threshold;
-      oo.compound_below = opt_.quality_floor + 0.1;
+      oo.compound_below = std::min(oo.threshold, opt_.quality_floor + 0.1);
       optimize_quality(m_, fixed_count_, oo);
     }
     // What is left, measured after the quality pass (no rounds: only the count).
     QualityFloorOptions count_only = fo;
     count_only.max_rounds = 0;
     left = raise_quality_floor(m_, face, count_only);
+    if (faulted(left)) return;
     double worst_end = 1;
     count_below(m_, space, opt_.quality_floor, &worst_end);
     if (!r.changed() || (worst_end >= worst_start && left.below_after <= below_start)) break;
@@ -670,6 +685,7 @@ void FaceMesher::raise_floor() {
   res_.stats.floor_points += r.interior_points;
   left.rounds = r.rounds, left.curve_splits = r.curve_splits, left.interior_points = r.interior_points;
   left.below_before = r.below_before;
+  left.out_of_work = r.out_of_work, left.work = r.work, left.work_budget = r.work_budget;
   report_floor(left);
 }
 
@@ -701,9 +717,10 @@ void FaceMesher::report_floor(const QualityFloorResult& r) {
     const Vec3 c = (space_of(m_.vertex(wt, 0)) + space_of(m_.vertex(wt, 1)) + space_of(m_.vertex(wt, 2))) / 3.0;
     res_.quality_warnings.push_back(fmt::format(
         "surface {}: {} triangle{} still below Mesh.QualityFloor = {:g} after {} round{} and {} new points (the work "
-        "is bounded); the worst, rho {:.4f}, near {}",
+        "is bounded{}); the worst, rho {:.4f}, near {}",
         tag_, rest, rest == 1 ? "" : "s", q, r.rounds, r.rounds == 1 ? "" : "s", r.curve_splits + r.interior_points,
-        worst, where_text(c)));
+        r.out_of_work ? fmt::format(": its budget of {} operations ran out", r.work_budget) : std::string(), worst,
+        where_text(c)));
   }
 }
 

@@ -34,14 +34,20 @@ double corner_angle(const TriangleStore& m, TriId t, std::uint32_t e) {
 // The angle of the domain at corner e of t: the sum of the plane angles at that vertex of
 // the triangles of its wedge, the fan reached from t without crossing a constrained (or
 // hull) edge.
-double wedge_angle(const TriangleStore& m, TriId t, std::uint32_t e) {
+// At most num_slots() steps each way (a fan holds each triangle once); *overrun when a
+// corrupt fan does not end.
+double wedge_angle(const TriangleStore& m, TriId t, std::uint32_t e, bool* overrun) {
   double sum = corner_angle(m, t, e);
   const VertexId v = m.vertex(t, e);
   // Around v one way across the side of t leaving v, the other way across the side
   // arriving at v. A closed fan (no constrained edge at v) comes back to t.
   for (int dir = 0; dir < 2; ++dir) {
     Side s = dir == 0 ? side_of(t, e) : side_of(t, (e + 2) % 3);
-    for (std::uint32_t guard = 0; guard < m.corner.size(); ++guard) {
+    for (std::uint32_t guard = 0;; ++guard) {
+      if (guard > m.num_slots()) {
+        *overrun = true;
+        return sum;
+      }
       if (m.constrained(s)) break;
       const Side o = m.twin[s.value];
       if (!o.valid()) break;
@@ -71,6 +77,29 @@ class Floor {
   QualityFloorResult run(const QualityFloorOptions& opt);
 
  private:
+  /// An internal error near v (a walk that did not end): the floor stops (stopped()).
+  void fault(const char* what, VertexId v) {
+    if (res_.fault.empty()) res_.fault = what, res_.fault_at = v;
+  }
+  bool stopped() const { return !res_.fault.empty() || work_ >= budget_; }
+  /// One operation of the work budget spent; false when none is left (or after a fault).
+  bool spend() {
+    if (stopped()) return false;
+    ++work_;
+    return true;
+  }
+  double wedge(TriId t, std::uint32_t e) {
+    bool overrun = false;
+    const double a = wedge_angle(m_, t, e, &overrun);
+    if (overrun) fault("the walk round a vertex of the quality floor did not end", m_.vertex(t, e));
+    return a;
+  }
+  Side side_between(VertexId a, VertexId b) {
+    bool overrun = false;
+    const Side s = m_.side_between(a, b, &overrun);
+    if (overrun) fault("the walk round a vertex of the quality floor did not end", a);
+    return s;
+  }
   void sync_space() {
     for (std::uint32_t v = static_cast<std::uint32_t>(x_.size()); v < m_.num_vertices(); ++v)
       x_.push_back(face_.space(VertexId{v}));
@@ -80,7 +109,7 @@ class Floor {
   }
   double len3(Side s) const { return norm(x_[m_.org(s).value] - x_[m_.dest(s).value]); }
   /// The sharp corner of t (kNone when none), its wedge angle in *angle.
-  VertexId sharp_corner(TriId t, double* angle) const;
+  VertexId sharp_corner(TriId t, double* angle);
   /// Every corner whose wedge is narrower than limit_ (sharp_all_, by vertex id).
   void find_sharp_corners();
   /// One change for the bad triangle t; false when none could be made.
@@ -106,7 +135,7 @@ class Floor {
   /// Walks straight from the centroid of t towards p: the first constrained (or hull)
   /// side crossed, or none with *reached the triangle holding p. Both none when the walk
   /// gives up (p not finite, a degenerate path).
-  Side blocking_side(TriId t, Vec2 p, TriId* reached) const;
+  Side blocking_side(TriId t, Vec2 p, TriId* reached);
 
   TriangleStore& m_;
   const FloorFace& face_;
@@ -119,13 +148,14 @@ class Floor {
   std::vector<SharpCorner> sharp_all_;
   std::vector<TriId> near_;
   QualityFloorResult res_;
+  std::uint64_t work_ = 0, budget_ = ~std::uint64_t{0};
 };
 
-VertexId Floor::sharp_corner(TriId t, double* angle) const {
+VertexId Floor::sharp_corner(TriId t, double* angle) {
   for (std::uint32_t e = 0; e < 3; ++e) {
     const VertexId v = m_.vertex(t, e);
     if (!face_.is_corner(v)) continue;
-    const double a = wedge_angle(m_, t, e);
+    const double a = wedge(t, e);
     if (a < limit_) {
       *angle = a;
       return v;
@@ -152,7 +182,7 @@ void Floor::find_sharp_corners() {
     for (std::uint32_t e = 0; e < 3; ++e) {
       const VertexId v = m_.vertex(TriId{t}, e);
       if (!face_.is_corner(v)) continue;
-      const double a = wedge_angle(m_, TriId{t}, e);
+      const double a = wedge(TriId{t}, e);
       if (a < limit_) sharp_all_.push_back({v, a * 180 / kPi});
     }
   }
@@ -170,7 +200,11 @@ void Floor::touched(VertexId v) {
   if (!m_.out_side_ok(v)) return;
   for (int dir = 0; dir < 2; ++dir) {
     Side s = start;
-    for (std::uint32_t guard = 0; guard < m_.corner.size(); ++guard) {
+    for (std::uint32_t guard = 0;; ++guard) {
+      if (guard > m_.num_slots()) {
+        fault("the walk round a new vertex of the quality floor did not end", v);
+        return;
+      }
       touched_.push_back(tri_of(s));
       const Side o = dir == 0 ? m_.twin[prev(s).value] : m_.twin[s.value];
       if (!o.valid()) break;
@@ -223,7 +257,7 @@ bool Floor::bulge_is_clear(Side s, Vec2 p) {
   return clear;
 }
 
-Side Floor::blocking_side(TriId t, Vec2 p, TriId* reached) const {
+Side Floor::blocking_side(TriId t, Vec2 p, TriId* reached) {
   *reached = TriId{};
   if (!std::isfinite(p.x) || !std::isfinite(p.y)) return Side{};
   const Vec2 g = (m_.pos(m_.vertex(t, 0)) + m_.pos(m_.vertex(t, 1)) + m_.pos(m_.vertex(t, 2))) / 3.0;
@@ -249,43 +283,54 @@ Side Floor::blocking_side(TriId t, Vec2 p, TriId* reached) const {
     entry = m_.twin[exit.value];
     u = tri_of(entry);
   }
+  // A straight walk crosses each triangle once: a longer one is a corrupt triangulation.
+  fault("the walk through the face of the quality floor did not end", m_.vertex(t, 0));
   return Side{};
 }
 
 VertexId Floor::split_with_flips(VertexId a, VertexId b, Vec2 p, double must_beat) {
   constexpr int kMaxFlips = 4;
+  if (!spend()) return VertexId{};
   // What the flips change, to put back exactly (the same triangle in the same slot: the
-  // caller holds triangle and side ids): the two slots of each flip and the out_side of
-  // their corners, saved before a slot first changes.
-  struct SavedSlot {
-    std::uint32_t slot;
-    VertexId corner[3];
-    Side twin[3];
-    std::uint8_t flags[3];
+  // caller holds triangle and side ids): an undo log of every value a flip writes (the
+  // corners and flags of its two slots, the twin of their sides and of the sides across
+  // the quad, the out_side of its four corners), replayed backwards. (Saving each slot
+  // once, when first flipped, is not enough: a slot first flipped by the second flip may
+  // have had its twins rewritten by the first, and putting those back left twins pointing
+  // at the wrong sides, cavities that do not close and fans that never end.)
+  struct Undo {
+    enum Kind : std::uint8_t { Corner, Flags, Twin, Out } kind;
+    std::uint32_t at;
+    std::uint32_t value;
   };
-  SavedSlot saved[2 * kMaxFlips];
-  std::pair<VertexId, Side> saved_out[6 * kMaxFlips];
-  int n_saved = 0, n_out = 0;
-  const auto save = [&](TriId t) {
-    for (int i = 0; i < n_saved; ++i)
-      if (saved[i].slot == t.value) return;
-    SavedSlot& k = saved[n_saved++];
-    k.slot = t.value;
-    for (std::uint32_t e = 0; e < 3; ++e) {
-      const Side x = side_of(t, e);
-      k.corner[e] = m_.corner[x.value], k.twin[e] = m_.twin[x.value], k.flags[e] = m_.side_flags[x.value];
-      saved_out[n_out++] = {k.corner[e], m_.out_side[k.corner[e].value]};
-    }
+  constexpr int kPerFlip = 6 + 6 + 10 + 4;
+  Undo undo[kMaxFlips * kPerFlip];
+  int n_undo = 0;
+  const auto log_flip = [&](Side far) {
+    const Side o = m_.twin[far.value];
+    for (const TriId t : {tri_of(far), tri_of(o)})
+      for (std::uint32_t e = 0; e < 3; ++e) {
+        const Side x = side_of(t, e);
+        undo[n_undo++] = {Undo::Corner, x.value, m_.corner[x.value].value};
+        undo[n_undo++] = {Undo::Flags, x.value, m_.side_flags[x.value]};
+        undo[n_undo++] = {Undo::Twin, x.value, m_.twin[x.value].value};
+        const Side y = m_.twin[x.value];
+        if (y.valid() && tri_of(y) != tri_of(far) && tri_of(y) != tri_of(o))
+          undo[n_undo++] = {Undo::Twin, y.value, m_.twin[y.value].value};
+      }
+    for (const VertexId v : {m_.org(far), m_.dest(far), m_.apex(far), m_.apex(o)})
+      undo[n_undo++] = {Undo::Out, v.value, m_.out_side[v.value].value};
   };
   const auto put_back = [&] {
-    for (int i = 0; i < n_saved; ++i)
-      for (std::uint32_t e = 0; e < 3; ++e) {
-        const Side x = side_of(TriId{saved[i].slot}, e);
-        m_.corner[x.value] = saved[i].corner[e], m_.side_flags[x.value] = saved[i].flags[e];
+    for (int i = n_undo - 1; i >= 0; --i) {
+      const Undo& u = undo[i];
+      switch (u.kind) {
+        case Undo::Corner: m_.corner[u.at] = VertexId{u.value}; break;
+        case Undo::Flags: m_.side_flags[u.at] = static_cast<std::uint8_t>(u.value); break;
+        case Undo::Twin: m_.twin[u.at] = Side{u.value}; break;
+        case Undo::Out: m_.out_side[u.at] = Side{u.value}; break;
       }
-    for (int i = 0; i < n_saved; ++i)
-      for (std::uint32_t e = 0; e < 3; ++e) m_.link(side_of(TriId{saved[i].slot}, e), saved[i].twin[e]);
-    for (int i = n_out - 1; i >= 0; --i) m_.out_side[saved_out[i].first.value] = saved_out[i].second;
+    }
   };
   TriId kept[kMaxFlips];   // the triangle of each flip that the split leaves as it is
   int flips = 0;
@@ -293,8 +338,8 @@ VertexId Floor::split_with_flips(VertexId a, VertexId b, Vec2 p, double must_bea
   for (;;) {
     // The side of a - b whose triangle must hold p: the face's side where p is on it (a
     // point beyond a hull edge widens the face: split_curve_edge checked the bulge).
-    Side s = m_.side_between(a, b);
-    if (!s.valid()) s = m_.side_between(b, a);
+    Side s = side_between(a, b);
+    if (!s.valid()) s = side_between(b, a);
     if (!s.valid()) break;
     if (orient2d(m_.pos(m_.org(s)), m_.pos(m_.dest(s)), p) == Sign::Negative && m_.twin[s.value].valid())
       s = m_.twin[s.value];
@@ -321,8 +366,7 @@ VertexId Floor::split_with_flips(VertexId a, VertexId b, Vec2 p, double must_bea
     const Side o = m_.twin[far.value];
     const Vec2 f0 = m_.pos(m_.org(far)), f1 = m_.pos(m_.dest(far)), c = m_.pos(m_.apex(far)), d = m_.pos(m_.apex(o));
     if (orient2d(c, f0, d) != Sign::Positive || orient2d(d, f1, c) != Sign::Positive) break;
-    save(tri_of(far));
-    save(tri_of(o));
+    log_flip(far);
     const Side made = m_.flip(far);
     // Of the two new triangles, the one without the edge a - b.
     const TriId t1 = tri_of(made), t2 = tri_of(m_.twin[made.value]);
@@ -394,6 +438,7 @@ bool Floor::equalise_corner(TriId t, double must_beat) {
 }
 
 bool Floor::improve(TriId t) {
+  if (!spend()) return false;
   // The sides of t, longest first (in space), id order on ties.
   std::pair<double, std::uint32_t> by_len[3];
   for (std::uint32_t e = 0; e < 3; ++e) by_len[e] = {-len3(side_of(t, e)), e};
@@ -441,7 +486,7 @@ bool Floor::improve(TriId t) {
   if (at.valid()) {
     const Side enc = encroached(at);
     if (enc.valid() && split_curve_edge(enc, r)) return true;
-    if (!enc.valid() && ins_.insert(cc, at) == InsertOutcome::Inserted) {
+    if (!enc.valid() && spend() && ins_.insert(cc, at) == InsertOutcome::Inserted) {
       ++res_.interior_points;
       sync_space();
       for (std::uint32_t slot : ins_.created()) touched_.push_back(TriId{slot});
@@ -517,24 +562,31 @@ QualityFloorResult Floor::run(const QualityFloorOptions& opt) {
     return below;
   };
   res_.below_before = collect(false);
-  const std::uint32_t budget = opt.max_points ? opt.max_points : 16 * res_.below_before + 256;
-  for (int round = 0; round < opt.max_rounds && !bad.empty(); ++round) {
+  const std::uint32_t budget = opt.max_points ? opt.max_points : 4 * res_.below_before + 256;
+  budget_ = opt.max_work ? opt.max_work
+                         : 16 * std::uint64_t{res_.below_before} + 64 * std::uint64_t(std::max(opt.max_rounds, 0)) + 1024;
+  res_.work_budget = budget_;
+  for (int round = 0; round < opt.max_rounds && !bad.empty() && !stopped(); ++round) {
     ++res_.rounds;
     touched_.clear();
     bool any = false;
     for (const auto& [r0, slot] : bad) {
-      if (res_.curve_splits + res_.interior_points >= budget) break;
+      if (res_.curve_splits + res_.interior_points >= budget || stopped()) break;
       const TriId t{slot};
       // Earlier changes this round may have removed or mended it (or reused its slot).
       double angle = 0;
       if (!m_.alive(t) || !(rho3(t) < q_) || sharp_corner(t, &angle).valid()) continue;
       any |= improve(t);
     }
+    if (!res_.fault.empty()) break;
     make_delaunay_around(m_, touched_);
     collect(false);
     if (!any || res_.curve_splits + res_.interior_points >= budget) break;
   }
+  res_.work = work_;
+  res_.out_of_work = work_ >= budget_ && !bad.empty();
   res_.out_of_budget = !bad.empty();
+  if (!res_.fault.empty()) return res_;   // the caller puts the face back
   res_.below_after = collect(true);
   // One entry per corner (the smallest wedge angle seen there), by vertex id.
   std::sort(res_.sharp.begin(), res_.sharp.end(), [](const SharpCorner& a, const SharpCorner& b) {

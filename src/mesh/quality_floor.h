@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "base/vec.h"
@@ -31,6 +32,10 @@ struct QualityFloorOptions {
   /// Points (curve splits and interior points) a face may get; 0: 16 per triangle
   /// below q at the start, plus 256.
   std::uint32_t max_points = 0;
+  /// Operations (changes tried: improve, split and insert attempts) the floor may spend;
+  /// 0: 64 per triangle below q at the start plus 64 per round of max_rounds plus 1024.
+  /// Each operation is local (its walks bounded), so the whole floor is bounded.
+  std::uint64_t max_work = 0;
   /// A change may leave triangles worse than the one worked on (the next rounds mend
   /// them); with this set, never below half of its rho nor the worst one at the start.
   bool never_below_start = false;
@@ -66,7 +71,15 @@ struct QualityFloorResult {
   std::uint32_t below_after = 0;    ///< at the end, those at sharp corners included
   std::uint32_t at_sharp = 0;       ///< of below_after: those at a sharp corner
   std::uint32_t rounds = 0, curve_splits = 0, interior_points = 0;
-  bool out_of_budget = false;       ///< stopped by max_rounds or max_points with work left
+  bool out_of_budget = false;       ///< stopped by max_rounds, max_points or max_work with work left
+  bool out_of_work = false;         ///< of out_of_budget: max_work was reached
+  std::uint64_t work = 0, work_budget = 0;   ///< operations spent, and allowed
+  /// An internal error (a walk round a vertex or through the face that did not end within
+  /// the store's size: the triangulation is not consistent there): what, and the vertex
+  /// near which it happened. The floor stops at once; the caller should put the face back
+  /// as it was before the floor and report it.
+  std::string fault;
+  VertexId fault_at;
   std::vector<SharpCorner> sharp;   ///< distinct corners, by vertex id
   bool changed() const { return curve_splits + interior_points > 0; }
 };

@@ -78,24 +78,32 @@ void TriangleStore::clear_edge_flags(Side s, std::uint8_t f) {
   if (o.valid()) side_flags[o.value] &= static_cast<std::uint8_t>(~f);
 }
 
-Side TriangleStore::side_between(VertexId a, VertexId b) const {
+Side TriangleStore::side_between(VertexId a, VertexId b, bool* overrun) const {
   const Side start = out_side[a.value];
   if (!start.valid()) return Side{};
+  // Each triangle of a's fan is met once each way: a longer walk is a corrupt fan.
+  const std::uint32_t limit = num_slots() + 1;
   // Counter-clockwise around a: twin(prev(s)) leaves a in the next triangle.
   Side s = start;
+  std::uint32_t steps = 0;
   do {
     if (dest(s) == b) return s;
     s = twin[prev(s).value];
-  } while (s.valid() && s != start);
-  if (s.valid()) return Side{};
+  } while (s.valid() && s != start && ++steps < limit);
+  if (s.valid()) {
+    if (s != start && overrun) *overrun = true;
+    return Side{};
+  }
   // Hit the hull: go clockwise from the start, next(twin(s)) leaves a.
   s = start;
-  for (;;) {
+  for (steps = 0; steps < limit; ++steps) {
     const Side o = twin[s.value];
     if (!o.valid()) return Side{};
     s = next(o);
     if (dest(s) == b) return s;
   }
+  if (overrun) *overrun = true;
+  return Side{};
 }
 
 Side TriangleStore::flip(Side s) {

@@ -73,7 +73,9 @@ struct TriangleStore {
   void clear_edge_flags(Side s, std::uint8_t f);
 
   /// The side running a -> b, or kNone (on the hull only b -> a may exist).
-  Side side_between(VertexId a, VertexId b) const;
+  /// At most num_slots() + 1 steps round a (a fan holds each triangle once): when a
+  /// corrupt fan does not end, none, with *overrun set when given.
+  Side side_between(VertexId a, VertexId b, bool* overrun = nullptr) const;
   bool has_edge(VertexId a, VertexId b) const { return side_between(a, b).valid() || side_between(b, a).valid(); }
 
   /// Flips the diagonal of the quad formed by the triangles on both sides of

@@ -7,7 +7,8 @@
 #   tests/fuzz/run.sh --no-build [--target T] SECONDS BIN  run an already built fuzz_T (CTest fuzz_short_geo,
 #                                                          fuzz_short_<reader>)
 #
-# T is geo (the default) or a reader: gshhs, lonlat_text, loops2, shapefile, netcdf, esri.
+# T is geo (the default), a reader: gshhs, lonlat_text, loops2, shapefile, netcdf, esri, or
+# floor (the quality floor on random coasts, tests/fuzz/fuzz_floor_entry.cpp).
 # The seed corpus (geo: tests/fuzz/corpus, tests/fuzz/crashes, tests/scripts, examples; a
 # reader: tests/fuzz/corpus_T, tests/fuzz/crashes_T) is copied to a
 # scratch directory, so the repository is never modified. Set SM_FUZZ_CORPUS=DIR to keep the
@@ -31,7 +32,7 @@ target=geo
 if [[ "${1:-}" == "--no-build" ]]; then build=0; shift; fi
 if [[ "${1:-}" == "--target" ]]; then target="${2:-}"; shift 2 || usage; fi
 case "$target" in
-  geo|gshhs|lonlat_text|loops2|shapefile|netcdf|esri) ;;
+  geo|gshhs|lonlat_text|loops2|shapefile|netcdf|esri|floor) ;;
   *) usage ;;
 esac
 [[ $# -ge 1 && "$1" =~ ^[0-9]+$ ]] || usage

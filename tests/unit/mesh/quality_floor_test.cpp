@@ -262,3 +262,25 @@ TEST_CASE("quality floor: a short open side between two coasts that bend into th
     }
   }
 }
+
+TEST_CASE("quality floor: every floor in [0, 0.9] ends with a conforming mesh or a located report") {
+  // Issue 33: floors above the default crashed or never ended on the World Ocean. On the
+  // narrow inlet every floor ends within its work budget: a conforming mesh, and whatever
+  // is left below it reported with its place (tests/fuzz/fuzz_floor_entry.cpp tries
+  // random coasts).
+  geo::Model m;
+  qf_add_polygon(m, qf_inlet(), 0.1);
+  for (int qi = 0; qi <= 9; ++qi) {
+    const double q = 0.1 * qi;
+    const QfMeshed on = qf_mesh(m, q);
+    INFO("floor " << q << ": rho min " << on.min_rho);
+    CHECK(qf_conforming(on.mesh));
+    if (on.min_rho < q - 1e-9) {
+      bool reported = false;
+      for (const std::string& w : on.r2.quality_warnings)
+        reported = reported || (w.find("Mesh.QualityFloor") != std::string::npos && w.find(" (") != std::string::npos);
+      CHECK(reported);
+    }
+    for (const std::string& w : on.r2.quality_warnings) CHECK(w.find("internal error") == std::string::npos);
+  }
+}

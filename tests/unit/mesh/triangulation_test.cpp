@@ -218,3 +218,23 @@ TEST_CASE("triangulation: sort_spatially on an empty store, with an isolated ver
   CHECK(m.xy[4] == Vec2{0, 0});
   CHECK(m.num_triangles() == 2);
 }
+
+TEST_CASE("side_between: a corrupt fan that never comes back ends, with the overrun said") {
+  // Issue 33: the quality floor's undo once left twins that sent the walk round a vertex
+  // into a cycle without its start; side_between looped for ever. Now it gives up after
+  // the store's size, and says so.
+  TriangleStore m = grid3();
+  const VertexId c{4};   // the centre: a closed fan of six triangles
+  REQUIRE(m.out_side_ok(c));
+  const Side s0 = m.out_side[c.value];
+  const Side s1 = m.twin[prev(s0).value];
+  const Side s2 = m.twin[prev(s1).value];
+  const Side s3 = m.twin[prev(s2).value];
+  REQUIRE((s1.valid() && s2.valid() && s3.valid()));
+  bool overrun = false;
+  CHECK(!m.side_between(c, VertexId{2}, &overrun).valid());   // 2 is no neighbour of 4
+  CHECK(!overrun);
+  m.twin[prev(s3).value] = s1;   // s1 -> s2 -> s3 -> s1 -> ...: never back to s0
+  CHECK(!m.side_between(c, VertexId{2}, &overrun).valid());
+  CHECK(overrun);
+}
