@@ -25,6 +25,7 @@ constexpr Reader kReaders[] = {
     {"gshhs", &sm::fuzz::run_gshhs_input},       {"lonlat_text", &sm::fuzz::run_lonlat_text_input},
     {"loops2", &sm::fuzz::run_loops2_input},     {"shapefile", &sm::fuzz::run_shapefile_input},
     {"netcdf", &sm::fuzz::run_netcdf_input},     {"esri", &sm::fuzz::run_esri_input},
+    {"gshhg_binned", &sm::fuzz::run_gshhg_binned_input},
 };
 
 }  // namespace
@@ -35,7 +36,7 @@ int main(int argc, char** argv) {
     for (const Reader& r : kReaders)
       if (std::strcmp(argv[1], r.name) == 0) reader = &r;
   if (!reader) {
-    std::fprintf(stderr, "usage: fuzz_readers_replay gshhs|lonlat_text|loops2|shapefile|netcdf|esri DIR...\n");
+    std::fprintf(stderr, "usage: fuzz_readers_replay gshhs|lonlat_text|loops2|shapefile|netcdf|esri|gshhg_binned DIR...\n");
     return 2;
   }
   std::vector<std::filesystem::path> files;

@@ -306,3 +306,32 @@ TEST_CASE("gshhg binned: truncated and corrupted copies of the crude file are er
     CHECK(msg.find(e.expect) != std::string::npos);
   }
 }
+
+TEST_CASE("gshhg binned: the fuzz seed, a polygon cut by the dateline and a triangle inside one bin") {
+  const std::string dir = std::string(SM_SOURCE_DIR) + "/tests/fuzz/corpus_gshhg_binned/";
+  for (const char* f : {"two_bins_classic.nc", "two_bins_nc4.nc"}) {
+    CAPTURE(f);
+    auto c = read_gshhg_binned(dir + f);
+    REQUIRE_MESSAGE(c.ok(), (c.ok() ? "" : c.error().to_string()));
+    REQUIRE(c->rings.size() == 2);
+    const Ring& a = c->rings[0];   // the two pieces joined across lon 180: 4 points
+    CHECK(a.id == 0);
+    CHECK(a.pts.size() == 4);
+    CHECK_FALSE(a.wraps_pole);
+    for (const geo::LonLat& p : a.pts) CHECK(std::fabs(p.lon - 180) < 90);   // contiguous across the dateline
+    CHECK(a.area_km2 == 1000);
+    const Ring& t = c->rings[1];
+    CHECK(t.pts.size() == 3);
+    CHECK(t.area_km2 == 50);
+    GshhgBinnedOptions o;
+    o.min_area_km2 = 100;
+    auto big = read_gshhg_binned(dir + f, o);
+    REQUIRE(big.ok());
+    CHECK(big->rings.size() == 1);
+    o.region = LonLatBox{10, 20, 0, 10};   // bin 0 only: the polygon comes whole from both bins
+    auto box = read_gshhg_binned(dir + f, o);
+    REQUIRE(box.ok());
+    REQUIRE(box->rings.size() == 1);
+    CHECK(box->rings[0].pts.size() == 4);
+  }
+}
