@@ -81,15 +81,18 @@ class NcFile {
   /// Values [start, start + out.size()) of a variable whose length is `expect`.
   template <class T>
   void read(const char* name, std::uint64_t expect, std::size_t start, std::vector<T>& out) const {
+    read(name, expect, start, out.size(), out.data());
+  }
+  template <class T>
+  void read(const char* name, std::uint64_t expect, std::size_t start, std::size_t count, T* out) const {
     int var = 0;
     const std::uint64_t len = vector(name, type_of<T>(), var);
     if (len != expect)
       throw Fail{fmt::format("variable '{}' has {} values where the file declares {}", name, len, expect)};
-    if (start > len || out.size() > len - start)
-      throw Fail{fmt::format("values {}..{} of '{}' lie past its end ({})", start, start + out.size(), name, len)};
-    if (out.empty()) return;
-    const std::size_t count = out.size();
-    check(get(var, start, count, out.data()), name);
+    if (start > len || count > len - start)
+      throw Fail{fmt::format("values {}..{} of '{}' lie past its end ({})", start, start + count, name, len)};
+    if (count == 0) return;
+    check(get(var, start, count, out), name);
   }
 
  private:
@@ -294,12 +297,10 @@ Coastline read(const std::string& path, const GshhgBinnedOptions& opt, std::uint
     }
     dx.assign(static_cast<std::size_t>(n_pt), 0);
     dy.assign(static_cast<std::size_t>(n_pt), 0);
-    for (const auto& [a, e] : runs) {
-      std::vector<short> bx(static_cast<std::size_t>(e - a)), by(bx.size());
-      nc.read("Relative_longitude_from_SW_corner_of_bin", static_cast<std::uint64_t>(n_pt), static_cast<std::size_t>(a), bx);
-      nc.read("Relative_latitude_from_SW_corner_of_bin", static_cast<std::uint64_t>(n_pt), static_cast<std::size_t>(a), by);
-      std::copy(bx.begin(), bx.end(), dx.begin() + a);
-      std::copy(by.begin(), by.end(), dy.begin() + a);
+    for (const auto& [a, e] : runs) {   // straight into place: the points are 2 x 22 MB at full resolution
+      const auto at = static_cast<std::size_t>(a), count = static_cast<std::size_t>(e - a);
+      nc.read("Relative_longitude_from_SW_corner_of_bin", static_cast<std::uint64_t>(n_pt), at, count, dx.data() + at);
+      nc.read("Relative_latitude_from_SW_corner_of_bin", static_cast<std::uint64_t>(n_pt), at, count, dy.data() + at);
     }
   }
   auto ux = [&](std::int64_t i) { return static_cast<std::uint16_t>(dx[static_cast<std::size_t>(i)]); };
