@@ -239,18 +239,22 @@ Coastline read(const std::string& path, const GshhgBinnedOptions& opt, std::uint
                                         std::fabs(area[static_cast<std::size_t>(continent)])))
       continent = seg_poly[s];
 
-  // The level a segment's ring gets, 0 when it is not wanted.
+  // The level a segment's ring gets, 0 when it is not wanted. Levels 5 and 6 may also be
+  // asked for in `levels` (the import keeps a ring whose level is listed there too).
+  auto listed = [&](int l) { return std::find(opt.levels.begin(), opt.levels.end(), l) != opt.levels.end(); };
+  const bool want_ice = opt.antarctica_level == kLevelIce || listed(kLevelIce);
+  const bool want_ground = opt.antarctica_level == kLevelGround || listed(kLevelGround);
   auto ring_level = [&](std::size_t s) -> int {
     int level = (info[s] >> 6) & 7;
     if (ant[s]) level = kLevelIce;
     if (std::fabs(area[static_cast<std::size_t>(seg_poly[s])]) < opt.min_area_km2) return 0;
     if (level == kLevelIce) {
-      if (opt.antarctica_level == kLevelIce) return kLevelIce;
-      if (opt.antarctica_level == kLevelGround && seg_poly[s] != continent) return kLevelGround;
+      if (want_ice) return kLevelIce;
+      if (want_ground && seg_poly[s] != continent) return kLevelGround;
       return 0;
     }
-    if (level == kLevelGround) return opt.antarctica_level == kLevelGround ? kLevelGround : 0;
-    if (level >= 1 && level <= 4) return std::find(opt.levels.begin(), opt.levels.end(), level) != opt.levels.end() ? level : 0;
+    if (level == kLevelGround) return want_ground ? kLevelGround : 0;
+    if (level >= 1 && level <= 4) return listed(level) ? level : 0;
     throw Fail{fmt::format("segment {} has level {} (1-6)", s, level), static_cast<std::int64_t>(s)};
   };
 

@@ -17,7 +17,8 @@ namespace sm::coast {
 inline constexpr std::string_view kGshhgSystemDir = "/usr/share/gmt-gshhg";
 
 struct GshhgBinnedOptions {
-  /// GSHHS levels kept among 1 land, 2 lake, 3 island in lake, 4 pond.
+  /// GSHHS levels kept among 1 land, 2 lake, 3 island in lake, 4 pond (5 and 6 listed
+  /// here keep Antarctica's ice front or grounding line as antarctica_level does).
   std::vector<int> levels{1};
   /// Antarctica: 5 the ice front (GMT's default, -A+ai), 6 the grounding line (-A+ag),
   /// 0 none. Its rings come out with that level (see read_gshhg_binned).

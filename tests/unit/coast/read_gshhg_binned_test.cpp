@@ -145,6 +145,12 @@ TEST_CASE("gshhg binned: Antarctica's two coasts and the other levels") {
   REQUIRE(ground.ok());
   CHECK(count(*ground, 5, true) == 0);
   CHECK(count(*ground, 6, true) == 1);
+  o.antarctica_level = 5;
+  o.levels = {1, 6};   // as the import reads Levels: both coasts
+  auto both = read_gshhg_binned(gshhg_binned_file('c'), o);
+  REQUIRE(both.ok());
+  CHECK(count(*both, 5, true) == 1);
+  CHECK(count(*both, 6, true) == 1);
   o.antarctica_level = 0;
   o.levels = {1, 2, 3, 4};
   auto none = read_gshhg_binned(gshhg_binned_file('c'), o);
