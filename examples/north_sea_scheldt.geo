@@ -1,7 +1,7 @@
 // Figure 13 of Lambrechts et al. (2008), section 4.2: a multiscale mesh of the North Sea and
 // the Scheldt estuary, from about 150 m in the river near Antwerp to about 50 km far from the
-// coasts (paper: 27,472 elements). Coastlines: GSHHG 2.3.7 full resolution cut by GMT to
-// -4/9/48/58 (northsea_scheldt_f.txt), closed along that box (the "open" boundary).
+// coasts (paper: 27,472 elements). Coastlines: GSHHG 2.3.7 full resolution from the system
+// (Debian gmt-gshhg-full), cut to the box -4/9/48/58 and closed along it (the "open" boundary).
 // Size field: the Min of
 //   estuary: distance to points along the Scheldt, EstuarySize (150 m) within 3 km of
 //            them, growing linearly to OffshoreSize (50 km) at EstuaryReach (400 km);
@@ -44,10 +44,11 @@ Field[3].F = Sprintf("%.17g", CoastSize);
 Field[4] = Min;                               // the coastline accuracy gamma
 Field[4].FieldsList = {2, 3};
 
-Coastline[1] = LonLatText;
-Coastline[1].FileName = StrCat(GshhgDir, "northsea_scheldt_f.txt");
+Coastline[1] = GSHHG;
+Coastline[1].Resolution = "f";
 Coastline[1].AccuracyField = 4;
-// No Region: the file's own -R box closes the cut coasts (Brittany to Denmark, Norway).
+// The box closes the cut coasts (Brittany to Denmark, Norway).
+Coastline[1].Region = {RegionNorthSeaScheldt[]};
 OceanLoops[] = Coastline{1};
 OceanLoopsPerSurface[] = Coastline{1, "LoopsPerSurface"};
 open[] = Coastline{1, "OpenCurves"};
