@@ -60,9 +60,10 @@ bool write_diagnostics(const sm::lang::Diagnostics& diags, const std::string& pa
 
 // Outputs that would replace an input or each other, known before the run: -o (or the
 // mesh's default name, beside the first script), --stats and --diagnostics against the
-// scripts and against each other (the same file through any links or names), and "-"
-// for more than one of them. Included and data files are known only as they are read:
-// OutputFile refuses those when the output is written. "" when all is well.
+// scripts and against each other (the same file through any links or names; a device or
+// FIFO such as /dev/null may be shared), and "-" for more than one of them. Included and
+// data files are known only as they are read: OutputFile refuses those when the output
+// is written. "" when all is well.
 std::string clobber_check(const sm::cli::CliArgs& a) {
   if (a.test) return {};
   struct Out {
@@ -84,6 +85,9 @@ std::string clobber_check(const sm::cli::CliArgs& a) {
                                  outs[i].path)
                    : fmt::format("{} '{}' is the script '{}': an output may not replace an input", outs[i].flag,
                                  outs[i].path, f);
+    // Two outputs to one device or FIFO (/dev/null) write in turn, in place: only '-' and
+    // files (replaced whole at commit) may not be shared.
+    if (outs[i].path != "-" && sm::base::writes_in_place(outs[i].path)) continue;
     for (std::size_t j = 0; j < i; ++j)
       if (id == sm::base::file_identity(outs[j].path))
         return outs[i].path == "-"
