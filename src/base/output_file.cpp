@@ -125,7 +125,7 @@ bool OutputFile::open(const std::string& path) {
   target_ = resolve_links(path);
   if (target_.empty()) return fail("", errno);
   // A file this run read (the script, an Included file, a data file) is never replaced.
-  if (const std::string in = input_named_by(path); !in.empty()) {
+  if (const std::string in = allow_inputs_ ? std::string() : input_named_by(path); !in.empty()) {
     error_ = in == path ? "it is an input of this run" : "it is '" + in + "', an input of this run";
     failed_ = true;
     return false;
