@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Outputs never replace inputs or each other (issue 33): -o, --stats and --diagnostics
 naming the script (directly, through a symbolic link or another spelling), an Included
-file, a data file the run reads (ListFromFile), or one another are refused, '-' may be
+file, a data file the run reads (ListFromFile), or one another are refused, as is a
+script's Save naming an Included file, '-' may be
 used by one output only, '-o ""' is a usage error, and a script named x.msh meshed
 without -o is not replaced. Each refused run leaves every file as it was.
 
@@ -61,6 +62,8 @@ def main(stereomesh):
         write("top.geo", 'Include "inc.geo";\n')
         write("nums.txt", "1 2 3\n")
         write("data.geo", SCRIPT + 'n[] = ListFromFile("nums.txt");\nPrintf("%g numbers", #n[]);\n')
+        write("part.msh", SCRIPT)   # a script with a mesh's name, Included
+        write("saver.geo", 'Include "part.msh";\nMesh 2;\nSave "part.msh";\n')
         os.symlink("t.geo", os.path.join(d, "link.msh"))
         os.mkdir(os.path.join(d, "sub"))
         usage = 2
@@ -92,6 +95,8 @@ def main(stereomesh):
                 "-o naming a data file the run reads")
         refused(stereomesh, d, ["-0", "data.geo", "--diagnostics", "nums.txt"], 1, "an input of this run",
                 "--diagnostics naming a data file the run reads")
+        refused(stereomesh, d, ["-0", "saver.geo"], 1, "an input of this run",
+                "Save in a script naming an Included file")
         # What is allowed still works: distinct outputs, one of them '-'.
         r = run(stereomesh, d, ["-2", "t.geo", "-o", "-", "--stats", "s.json", "--diagnostics", "d.jsonl"])
         check(r.returncode == 0 and r.stdout.startswith("$MeshFormat") and os.path.exists(os.path.join(d, "s.json")),
