@@ -2,6 +2,8 @@
 // place (see output_file.h for the table of cases).
 #include "base/output_file.h"
 
+#include "base/file_identity.h"
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -122,6 +124,12 @@ bool OutputFile::open(const std::string& path) {
   }
   target_ = resolve_links(path);
   if (target_.empty()) return fail("", errno);
+  // A file this run read (the script, an Included file, a data file) is never replaced.
+  if (const std::string in = allow_inputs_ ? std::string() : input_named_by(path); !in.empty()) {
+    error_ = in == path ? "it is an input of this run" : "it is '" + in + "', an input of this run";
+    failed_ = true;
+    return false;
+  }
   struct stat st {};
   const bool exists = ::stat(target_.c_str(), &st) == 0;
   if (exists && S_ISDIR(st.st_mode)) {

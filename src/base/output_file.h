@@ -35,6 +35,10 @@ class OutputFile {
   /// ("Permission denied", "is a directory", "too many levels of symbolic
   /// links"): the reason only, callers say "cannot write 'PATH': REASON" once.
   bool open(const std::string& path);
+  /// By default open() refuses a file the run read (base/file_identity.h, when input
+  /// tracking is on). Printf > FILE may write one: a script that Includes what it wrote
+  /// and writes it again is Gmsh's way of generating files.
+  void allow_inputs(bool on = true) { allow_inputs_ = on; }
   bool write(const void* data, std::size_t size);
   bool write(std::string_view text) { return write(text.data(), text.size()); }
 
@@ -66,6 +70,7 @@ class OutputFile {
   bool anonymous_ = false;   // O_TMPFILE: no name until publish()
   bool prepared_ = false;
   bool failed_ = false;
+  bool allow_inputs_ = false;
   int cleanup_slot_ = -1;    // the interrupt-cleanup entry of a named temporary
   std::string target_;
   std::string temp_path_;

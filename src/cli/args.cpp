@@ -128,10 +128,13 @@ ParseOutcome parse_args(const std::vector<std::string>& argv) {
       a.mesh_dim = arg[1] - '0';
     } else if (arg == "--stats") {
       if (!value("--stats", a.stats_file)) return fail("'--stats' needs a file name");
+      if (a.stats_file.empty()) return fail("'--stats' needs a file name, not an empty one");
     } else if (arg == "--diagnostics") {
       if (!value("--diagnostics", a.diagnostics_file)) return fail("'--diagnostics' needs a file name");
+      if (a.diagnostics_file.empty()) return fail("'--diagnostics' needs a file name, not an empty one");
     } else if (arg == "-o") {
       if (!value("-o", a.output)) return fail("'-o' needs a file name");
+      if (a.output.empty()) return fail("'-o' needs a file name, not an empty one");
     } else if (arg == "-format") {
       if (!value("-format", a.format)) return fail("'-format' needs a format name");
       const io::OutputFormat* f = io::find_output_format(a.format);

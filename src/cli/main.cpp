@@ -6,9 +6,11 @@
 #include <filesystem>
 #include <iostream>
 #include <new>
+#include <string_view>
 
 #include <fmt/format.h>
 
+#include "base/file_identity.h"
 #include "base/interrupt_cleanup.h"
 #include "base/output_file.h"
 #include "base/share_dir.h"
@@ -57,6 +59,47 @@ bool write_diagnostics(const sm::lang::Diagnostics& diags, const std::string& pa
   return false;
 }
 
+// Outputs that would replace an input or each other, known before the run: -o (or the
+// mesh's default name, beside the first script), --stats and --diagnostics against the
+// scripts and against each other (the same file through any links or names; a device or
+// FIFO such as /dev/null may be shared), and "-" for more than one of them. Included and
+// data files are known only as they are read: OutputFile refuses those when the output
+// is written. "" when all is well.
+std::string clobber_check(const sm::cli::CliArgs& a) {
+  if (a.test) return {};
+  struct Out {
+    const char* flag;
+    std::string path;
+  };
+  std::vector<Out> outs;
+  if (!a.output.empty()) outs.push_back({"-o", a.output});
+  else if (a.mesh_dim >= 1 && !a.files.empty())
+    outs.push_back({"the mesh (no -o)", sm::interp::default_mesh_output(a.files.front(), a.format)});
+  if (!a.stats_file.empty()) outs.push_back({"--stats", a.stats_file});
+  if (!a.diagnostics_file.empty()) outs.push_back({"--diagnostics", a.diagnostics_file});
+  for (std::size_t i = 0; i < outs.size(); ++i) {
+    const std::string id = sm::base::file_identity(outs[i].path);
+    for (const std::string& f : a.files)
+      if (id == sm::base::file_identity(f))
+        return std::string_view(outs[i].flag) == "the mesh (no -o)"
+                   ? fmt::format("the mesh would be written to '{}', which is the script: name the mesh file with -o",
+                                 outs[i].path)
+                   : fmt::format("{} '{}' is the script '{}': an output may not replace an input", outs[i].flag,
+                                 outs[i].path, f);
+    // Two outputs to one device or FIFO (/dev/null) write in turn, in place: only '-' and
+    // files (replaced whole at commit) may not be shared.
+    if (outs[i].path != "-" && sm::base::writes_in_place(outs[i].path)) continue;
+    for (std::size_t j = 0; j < i; ++j)
+      if (id == sm::base::file_identity(outs[j].path))
+        return outs[i].path == "-"
+                   ? fmt::format("{} and {} both write to standard output ('-'): only one output may", outs[j].flag,
+                                 outs[i].flag)
+                   : fmt::format("{} '{}' and {} '{}' are the same file: each output needs its own", outs[j].flag,
+                                 outs[j].path, outs[i].flag, outs[i].path);
+  }
+  return {};
+}
+
 int run(const std::vector<std::string>& argv) {
   const sm::cli::ParseOutcome parsed = sm::cli::parse_args(argv);
   if (!parsed.ok) {
@@ -85,6 +128,10 @@ int run(const std::vector<std::string>& argv) {
     }
     return kExitOk;
   }
+  if (const std::string why = clobber_check(a); !why.empty()) {
+    std::fprintf(stderr, "stereomesh: %s\n%s", why.c_str(), "try 'stereomesh --help'\n");
+    return kExitUsage;
+  }
   sm::interp::RunSettings settings;
   settings.include_dirs = a.include_dirs;
   if (!share.empty()) settings.stdlib_dir = (share / "stdlib").string();
@@ -96,6 +143,9 @@ int run(const std::vector<std::string>& argv) {
     return failed == 0 ? kExitOk : kExitScriptError;
   }
 
+  // From here on every file the run reads is noted, and no output may replace one. (Not
+  // for --test above: its scripts are separate runs in one process.)
+  sm::base::track_inputs(true);
   sm::lang::SourceManager sources;
   sm::lang::Diagnostics diags(sources);
   // Long stages (coastline import, 1D, 2D) report here; General.Verbosity < 4 silences it.

@@ -1,5 +1,6 @@
 // Block reading with POSIX read/pread (no stdio buffer in between).
 #include "coast/file_blocks.h"
+#include "base/file_identity.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -18,6 +19,7 @@ std::optional<CoastError> FileBlocks::open(const std::string& path) {
   path_ = path;
   fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd_ < 0) return CoastError{path, -1, std::string("cannot open: ") + std::strerror(errno), {}};
+  base::note_input_file(path);
   struct stat st {};
   if (::fstat(fd_, &st) != 0) return CoastError{path, -1, std::string("cannot open: ") + std::strerror(errno), {}};
   if (S_ISDIR(st.st_mode)) return CoastError{path, -1, "cannot open: Is a directory", {}};

@@ -1,5 +1,6 @@
 // Whole-file reading with a located error.
 #include "coast/file_bytes.h"
+#include "base/file_identity.h"
 
 #include <sys/stat.h>
 
@@ -14,6 +15,7 @@ namespace sm::coast {
 Result<std::vector<unsigned char>> read_file_bytes(const std::string& path) {
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
   if (!f) return CoastError{path, -1, std::string("cannot open: ") + std::strerror(errno), {}};
+  base::note_input_file(path);
   // Straight into the vector, sized from the file when it has a size (a regular file),
   // grown by doubling otherwise (a pipe): no copy through a small buffer.
   std::vector<unsigned char> out;

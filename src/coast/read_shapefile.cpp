@@ -1,6 +1,7 @@
 // Shapefile reader. shapelib prints its errors through a hook; they are captured here and
 // returned in the CoastError instead of reaching stderr.
 #include "coast/read_shapefile.h"
+#include "base/file_identity.h"
 
 #include <atomic>
 #include <cmath>
@@ -109,6 +110,7 @@ Result<Coastline> read_shapefile(const std::string& path, ShapefileInfo* info) {
   t_shp_error.clear();
   std::unique_ptr<SHPInfo, ShpCloser> h(SHPOpenLL(open_path.c_str(), "rb", &hooks));
   if (!h) return CoastError{path, -1, "not a readable shapefile: " + t_shp_error, {}};
+  base::note_input_file(path);
   int n = 0, type = 0;
   double lo[4], hi[4];
   SHPGetInfo(h.get(), &n, &type, lo, hi);

@@ -7,6 +7,7 @@
 //   28  int32 version (little-endian)    8 content: shape type (int32 LE), then the shape
 //   32  int32 shape type (little-endian)
 #include "coast/shapefile_sizes.h"
+#include "base/file_identity.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -44,6 +45,7 @@ std::optional<CoastError> read_header(const fs::path& file, File& f, std::uint64
   if (ec) return error_in(file, -1, "cannot read its size: " + ec.message());
   f.reset(std::fopen(file.c_str(), "rb"));
   if (!f) return error_in(file, -1, std::string("cannot open: ") + std::strerror(errno));
+  base::note_input_file(file.string());
   if (size < kHeaderBytes)
     return error_in(file, -1, fmt::format("the file holds {} bytes, less than the {}-byte header", size, kHeaderBytes));
   unsigned char h[kHeaderBytes];

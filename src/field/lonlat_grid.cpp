@@ -1,6 +1,7 @@
 // Lon/lat grid readers (netCDF through libnetcdf, ESRI ASCII by hand) and
 // bilinear interpolation.
 #include "field/lonlat_grid.h"
+#include "base/file_identity.h"
 
 #include <algorithm>
 #include <cctype>
@@ -123,6 +124,7 @@ class NcFile {
  public:
   explicit NcFile(const std::filesystem::path& file) : file_(file) {
     const int st = nc_open(file.c_str(), NC_NOWRITE, &id_);
+    base::note_input_file(file.string());
     if (st != NC_NOERR) file_error(file, fmt::format("cannot open as netCDF: {}", nc_strerror(st)));
   }
   ~NcFile() { nc_close(id_); }
@@ -532,6 +534,7 @@ LonLatGrid parse_esri_ascii_grid(std::string_view text, const std::filesystem::p
 LonLatGrid read_esri_ascii_grid(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) file_error(file, std::filesystem::exists(file) ? "cannot be read" : "no such file");
+  base::note_input_file(file.string());
   std::ostringstream all;
   all << in.rdbuf();
   if (in.bad()) file_error(file, "read error");

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "field/error.h"
+#include "base/file_identity.h"
 #include "field/kinds.h"
 
 namespace sm::field {
@@ -41,6 +42,7 @@ void check_header(const std::filesystem::path& file, const Grid3& g) {
 Grid3 read_text(const std::filesystem::path& file) {
   std::ifstream in(file);
   if (!in) file_error(file, "cannot be read");
+  base::note_input_file(file.string());
   Grid3 g;
   for (double& x : g.o) in >> x;
   for (double& x : g.d) in >> x;
@@ -65,6 +67,7 @@ Grid3 read_text(const std::filesystem::path& file) {
 Grid3 read_binary(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) file_error(file, "cannot be read");
+  base::note_input_file(file.string());
   Grid3 g;
   in.read(reinterpret_cast<char*>(g.o.data()), sizeof(double) * 3);
   in.read(reinterpret_cast<char*>(g.d.data()), sizeof(double) * 3);

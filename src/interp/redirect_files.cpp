@@ -16,6 +16,7 @@ bool RedirectFiles::write_line(const std::string& path, bool append, std::string
   }
   if (it == files_.end()) {
     auto p = std::make_unique<Pending>();
+    p->file.allow_inputs();   // Printf > FILE may rewrite a file the script Included
     if (!p->file.open(path)) {
       *reason = p->file.error();
       return false;

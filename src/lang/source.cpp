@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "base/check.h"
+#include "base/file_identity.h"
 
 namespace sm::lang {
 
@@ -44,6 +45,7 @@ SourceManager::LoadResult SourceManager::load_file(const std::string& path) {
   if (std::filesystem::is_directory(path, ec)) return {FileId{}, "cannot read '" + path + "': is a directory"};
   std::FILE* f = std::fopen(path.c_str(), "rb");
   if (!f) return {FileId{}, "cannot open '" + path + "': " + std::strerror(errno)};
+  base::note_input_file(path);
   std::string text;
   char buf[1 << 16];
   std::size_t n;

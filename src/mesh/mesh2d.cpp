@@ -656,11 +656,25 @@ void FaceMesher::raise_floor() {
         at));
     return true;
   };
+  // Above the floor that Ruppert's refinement can reach (its 20.7-degree angle bound,
+  // rho 0.59: higher floors make sharp_angle_limit wider) the loss-allowing run cannot
+  // converge and only spends its budget: the never-worse run alone.
+  constexpr double kRefinementAngle = 20.7 * geo::kPi / 180;
+  const bool beyond_refinement = sharp_angle_limit(opt_.quality_floor) > kRefinementAngle;
+  bool worse = false;
   for (const bool never_worse : {false, true}) {
-    if (never_worse) put_back();
+    if (!never_worse && beyond_refinement) continue;
+    if (never_worse && !beyond_refinement) put_back();
     QualityFloorOptions fo;
     fo.floor = opt_.quality_floor;
     fo.never_below_start = never_worse;
+    if (beyond_refinement) {
+      // Most of what is below such a floor stays below it: a quarter of the budgets (one
+      // point per triangle below it at the start), so that the run stays within about
+      // twice the floor-off time (measured on the examples at 0.9).
+      fo.max_points = below_start + 256;
+      fo.max_work = 4 * std::uint64_t{below_start} + 64 * std::uint64_t(fo.max_rounds) + 1024;
+    }
     r = raise_quality_floor(m_, face, fo);
     if (faulted(r)) return;
     if (r.changed() && opt_.smoothing > 0 && opt_.quality_pass) {
@@ -679,7 +693,25 @@ void FaceMesher::raise_floor() {
     if (faulted(left)) return;
     double worst_end = 1;
     count_below(m_, space, opt_.quality_floor, &worst_end);
-    if (!r.changed() || (worst_end >= worst_start && left.below_after <= below_start)) break;
+    worse = r.changed() && !(worst_end >= worst_start && left.below_after <= below_start);
+    if (!worse) break;
+  }
+  if (worse) {
+    // Even the never-worse run (its quality pass may lose) left more triangles below the
+    // floor, or a worse one, than the face started with: the face goes back as it was.
+    const std::uint32_t ended = left.below_after;
+    put_back();
+    QualityFloorOptions count_only;
+    count_only.floor = opt_.quality_floor;
+    count_only.max_rounds = 0;
+    left = raise_quality_floor(m_, face, count_only);
+    if (faulted(left)) return;
+    res_.quality_warnings.push_back(fmt::format(
+        "surface {}: Mesh.QualityFloor = {:g} left {} triangles below it where the face had {} (after {} round{} and "
+        "{} new points); the face is left as it was before the floor",
+        tag_, opt_.quality_floor, ended, below_start, r.rounds, r.rounds == 1 ? "" : "s",
+        r.curve_splits + r.interior_points));
+    r = QualityFloorResult{};
   }
   res_.stats.floor_curve_splits += r.curve_splits;
   res_.stats.floor_points += r.interior_points;

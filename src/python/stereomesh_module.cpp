@@ -119,9 +119,17 @@ Mesh run(const py::object& error_type, const std::string& path, const std::map<s
   if (threads) in.options().set_number("General.NumThreads", *threads);
   if (dim < 0 || dim > 2) refuse("dim must be 0, 1 or 2");
 
-  bool ok = in.run_file(path) != interp::RunStatus::Errors;
-  if (ok && !in.stopped() && in.exit_request() < 0 && dim >= 1) ok = interp::mesh_after_scripts(in, dim);
-  const std::string stats_json = ok ? interp::finish_run(in, false) : std::string{};
+  // The script, the meshing and the statistics are C++ alone (Printf goes to `printed`,
+  // nothing calls back into Python): the GIL is released for them, so that other Python
+  // threads, and other run() calls, go on meanwhile. Each run has its own interpreter.
+  bool ok = false;
+  std::string stats_json;
+  {
+    py::gil_scoped_release nogil;
+    ok = in.run_file(path) != interp::RunStatus::Errors;
+    if (ok && !in.stopped() && in.exit_request() < 0 && dim >= 1) ok = interp::mesh_after_scripts(in, dim);
+    stats_json = ok ? interp::finish_run(in, false) : std::string{};
+  }
   py::list all;
   for (const lang::Diagnostic& d : diags.all()) all.append(diagnostic_dict(sources, d));
   if (!ok || diags.error_count() > 0) raise_script_error(error_type, sources, diags, all);

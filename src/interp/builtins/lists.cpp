@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "interp/builtins/builtins.h"
+#include "base/file_identity.h"
 #include "interp/limits.h"
 
 namespace sm::interp {
@@ -65,6 +66,7 @@ Value f_list_from_file(BuiltinEnv& env, const std::vector<Value>& a) {
     throw BuiltinError{fmt::format("'{}' is larger than {} bytes", path, max_bytes), 0};
   std::ifstream in(path);
   if (!in) throw BuiltinError{fmt::format("cannot open '{}'", path), 0};
+  base::note_input_file(path);
   std::vector<double> v;
   std::string tok;
   while (in >> tok) {

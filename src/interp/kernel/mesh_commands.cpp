@@ -593,21 +593,22 @@ bool mesh_after_scripts(Interpreter& in, int dim) {
   return true;
 }
 
+std::string default_mesh_output(const std::string& first_script, const std::string& format) {
+  std::filesystem::path p(first_script);
+  const io::OutputFormat* row = io::find_output_format(format);
+  if (!row) row = &io::output_formats().front();
+  if (!row->default_file_name.empty()) p.replace_filename(std::string(row->default_file_name));
+  else p.replace_extension(std::string(row->extension));
+  return p.string();
+}
+
 bool mesh_from_command_line(Interpreter& in, int dim, const std::string& output, const std::string& format,
                             const std::string& first_script) {
   Diagnostics& diags = in.diags();
   if (dim >= 3) return mesh_after_scripts(in, dim);   // refused there
   // The file and its format are known before meshing: a name that picks no format is
   // refused now rather than after minutes of meshing, and a depthless ocean grid said.
-  std::string path = output;
-  if (path.empty()) {
-    std::filesystem::path p(first_script);
-    const io::OutputFormat* row = io::find_output_format(format);
-    if (!row) row = &io::output_formats().front();
-    if (!row->default_file_name.empty()) p.replace_filename(std::string(row->default_file_name));
-    else p.replace_extension(std::string(row->extension));
-    path = p.string();
-  }
+  const std::string path = output.empty() ? default_mesh_output(first_script, format) : output;
   {
     std::string why;
     const io::OutputFormat* row = format.empty() ? guess_output_format(in.options(), path, &why) : io::find_output_format(format);

@@ -19,6 +19,11 @@ class Interpreter;
 bool mesh_from_command_line(Interpreter& in, int dim, const std::string& output, const std::string& format,
                             const std::string& first_script);
 
+/// The file -1/-2 write without -o: the first script's name with the format's extension
+/// (or the format's fixed name, fort.14), beside it. (For a script named x.msh that is
+/// the script itself: the command line refuses that before the run.)
+std::string default_mesh_output(const std::string& first_script, const std::string& format);
+
 /// The meshing half of mesh_from_command_line, writing nothing (the Python module keeps
 /// the mesh in memory): false, with the failure reported, when the mesh cannot be made.
 bool mesh_after_scripts(Interpreter& in, int dim);

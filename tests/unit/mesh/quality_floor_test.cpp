@@ -3,8 +3,10 @@
 // its angle, once, and the work stays bounded; faces sharing a split curve stay conforming.
 #include <doctest/doctest.h>
 
+#include <array>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -283,4 +285,37 @@ TEST_CASE("quality floor: every floor in [0, 0.9] ends with a conforming mesh or
     }
     for (const std::string& w : on.r2.quality_warnings) CHECK(w.find("internal error") == std::string::npos);
   }
+}
+
+TEST_CASE("quality floor: the work budget stops it and says so") {
+  // Issue 33: the floor is bounded by a budget of operations, not only by rounds and
+  // points. A strip of slivers between two rows of points (no curve to split): with a
+  // budget of 10 operations it stops after 10, with the slivers still below the floor.
+  TriangleStore m;
+  std::vector<Vec2> xy;
+  for (int i = 0; i <= 10; ++i) xy.push_back({0.1 * i, 0});
+  for (int i = 0; i <= 10; ++i) xy.push_back({0.1 * i, 0.01});
+  std::vector<std::array<std::uint32_t, 3>> tris;
+  for (std::uint32_t i = 0; i < 10; ++i) {
+    tris.push_back({i, i + 1, i + 12});
+    tris.push_back({i, i + 12, i + 11});
+  }
+  REQUIRE(build_triangulation(xy, tris, m));
+  FloorFace face;
+  face.space = [&m](VertexId v) { return Vec3{m.pos(v).x, m.pos(v).y, 0}; };
+  face.to_space = [](Vec2 p) { return Vec3{p.x, p.y, 0}; };
+  face.curve_point = [](VertexId, VertexId, double) { return std::optional<Vec2>{}; };
+  face.curve_split_done = [](VertexId, VertexId, VertexId) {};
+  face.is_corner = [](VertexId) { return false; };
+  QualityFloorOptions opt;
+  opt.floor = 0.3;
+  opt.max_work = 10;
+  const QualityFloorResult r = raise_quality_floor(m, face, opt);
+  CHECK(r.below_before == 20);
+  CHECK(r.work <= 10);
+  CHECK(r.work_budget == 10);
+  CHECK(r.out_of_work);
+  CHECK(r.out_of_budget);
+  CHECK(r.fault.empty());
+  CHECK(r.below_after > 0);
 }
