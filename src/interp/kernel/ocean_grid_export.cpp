@@ -3,7 +3,7 @@
 // follow the coast as the model does: an outer loop without open curves is one
 // mainland string, a hole without open curves an island, and a loop with open
 // curves is cut into alternating open and mainland strings that share their
-// end nodes.
+// end nodes. The strings are in the MeshModel's node numbering (node_index).
 #include "interp/kernel/ocean_grid_export.h"
 
 #include <fmt/format.h>
@@ -42,12 +42,17 @@ void extend(std::vector<std::uint32_t>& chain, const std::vector<std::uint32_t>&
 }
 
 std::string boundary_strings(const geo::Model& model, const ModelMesh& mesh,
-                             std::vector<io::BoundaryString>& out) {
+                             const std::vector<std::uint32_t>& node_index, std::vector<io::BoundaryString>& out) {
   std::set<int> open;
   for (const auto& [key, g] : model.physicals())
     if (g.dim == 1 && is_open_group(g.name))
       for (int c : g.entities) open.insert(std::abs(c));
   using Kind = io::BoundaryString::Kind;
+  // ModelMesh nodes -> the MeshModel's (io/from_model_mesh.h): the writers' numbering.
+  auto to_model = [&](io::BoundaryString b) {
+    for (std::uint32_t& v : b.nodes) v = node_index.at(v);
+    return b;
+  };
   for (const auto& [tag, s] : model.surfaces()) {
     const auto sm = mesh.surfaces.find(tag);
     if (sm == mesh.surfaces.end()) continue;
@@ -70,7 +75,7 @@ std::string boundary_strings(const geo::Model& model, const ModelMesh& mesh,
         for (int c : curves) extend(b.nodes, curve_nodes(mesh, c));
         if (b.nodes.size() > 1 && b.nodes.front() == b.nodes.back()) b.nodes.pop_back();
         const bool meshed = std::all_of(b.nodes.begin(), b.nodes.end(), [&](std::uint32_t v) { return used.count(v); });
-        if (meshed) out.push_back(std::move(b));
+        if (meshed) out.push_back(to_model(std::move(b)));
         continue;
       }
       // Start at an open/land switch so that no string wraps round the start.
@@ -87,7 +92,7 @@ std::string boundary_strings(const geo::Model& model, const ModelMesh& mesh,
           extend(b.nodes, curve_nodes(mesh, curves[i]));
           i = (i + 1) % curves.size();
         } while (i != start % curves.size() && (open.count(std::abs(curves[i])) != 0) == is_open);
-        out.push_back(std::move(b));
+        out.push_back(to_model(std::move(b)));
       } while (i != start % curves.size());
     }
   }
@@ -97,7 +102,7 @@ std::string boundary_strings(const geo::Model& model, const ModelMesh& mesh,
 }  // namespace
 
 std::string ocean_grid_options(Interpreter& in, const std::string& path, const io::MeshModel& mm,
-                               io::OceanGridOptions& opt) {
+                               const std::vector<std::uint32_t>& node_index, io::OceanGridOptions& opt) {
   const KernelState& k = in.kernel();
   if (!k.mesh || k.mesh->surfaces.empty()) return "no 2D mesh to write (mesh with -2 or 'Mesh 2;' first)";
   opt = {};
@@ -110,7 +115,7 @@ std::string ocean_grid_options(Interpreter& in, const std::string& path, const i
   opt.lonlat = !k.model.geometries().empty();
   if (in.options().number("Mesh.DepthField") > 0)
     if (std::string why = depth_at(in, mm.xyz, opt.depth); !why.empty()) return why;
-  return boundary_strings(k.model, *k.mesh, opt.boundaries);
+  return boundary_strings(k.model, *k.mesh, node_index, opt.boundaries);
 }
 
 }  // namespace sm::interp
