@@ -71,9 +71,13 @@ std::string boundary_strings(const geo::Model& model, const ModelMesh& mesh,
       }
       const bool any_open = std::any_of(curves.begin(), curves.end(), [&](int c) { return open.count(std::abs(c)); });
       if (!any_open) {
+        // A closed loop: an island lists it without repeating its first node (the writers
+        // close it as each format does); a mainland loop (the outer loop of a face without
+        // open boundaries: the World Ocean's Antarctic coast) keeps the first node again at
+        // the end, so that its closing edge is listed too.
         io::BoundaryString b{k == 0 ? Kind::Mainland : Kind::Island, {}};
         for (int c : curves) extend(b.nodes, curve_nodes(mesh, c));
-        if (b.nodes.size() > 1 && b.nodes.front() == b.nodes.back()) b.nodes.pop_back();
+        if (b.kind == Kind::Island && b.nodes.size() > 1 && b.nodes.front() == b.nodes.back()) b.nodes.pop_back();
         const bool meshed = std::all_of(b.nodes.begin(), b.nodes.end(), [&](std::uint32_t v) { return used.count(v); });
         if (meshed) out.push_back(to_model(std::move(b)));
         continue;
