@@ -3,7 +3,8 @@
 // follow the coast as the model does: an outer loop without open curves is one
 // mainland string, a hole without open curves an island, and a loop with open
 // curves is cut into alternating open and mainland strings that share their
-// end nodes. The strings are in the MeshModel's node numbering (node_index).
+// end nodes; a curve between two meshed faces is in no string (it cuts the loop as an
+// open/land switch does). The strings are in the MeshModel's node numbering (node_index).
 #include "interp/kernel/ocean_grid_export.h"
 
 #include <fmt/format.h>
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <map>
 #include <set>
 
 #include "interp/kernel/field_eval.h"
@@ -53,6 +55,22 @@ std::string boundary_strings(const geo::Model& model, const ModelMesh& mesh,
     for (std::uint32_t& v : b.nodes) v = node_index.at(v);
     return b;
   };
+  // A curve in the loops of two meshed surfaces lies between them, not on the mesh's
+  // boundary: it is in no string (a loop is cut there as at an open/land switch).
+  std::map<int, int> faces_of;
+  for (const auto& [tag, s] : model.surfaces()) {
+    if (!mesh.surfaces.count(tag)) continue;
+    std::set<int> mine;
+    for (int l : s.loops)
+      if (const geo::ModelCurveLoop* loop = model.curve_loop(std::abs(l)))
+        for (int c : loop->curves) mine.insert(std::abs(c));
+    for (int c : mine) ++faces_of[c];
+  }
+  enum class Side { Land, Open, Between };
+  auto side = [&](int c) {
+    if (faces_of[std::abs(c)] > 1) return Side::Between;
+    return open.count(std::abs(c)) ? Side::Open : Side::Land;
+  };
   for (const auto& [tag, s] : model.surfaces()) {
     const auto sm = mesh.surfaces.find(tag);
     if (sm == mesh.surfaces.end()) continue;
@@ -69,8 +87,8 @@ std::string boundary_strings(const geo::Model& model, const ModelMesh& mesh,
         std::reverse(curves.begin(), curves.end());
         for (int& c : curves) c = -c;
       }
-      const bool any_open = std::any_of(curves.begin(), curves.end(), [&](int c) { return open.count(std::abs(c)); });
-      if (!any_open) {
+      const bool all_land = std::all_of(curves.begin(), curves.end(), [&](int c) { return side(c) == Side::Land; });
+      if (all_land) {
         // A closed loop: an island lists it without repeating its first node (the writers
         // close it as each format does); a mainland loop (the outer loop of a face without
         // open boundaries: the World Ocean's Antarctic coast) keeps the first node again at
@@ -82,21 +100,19 @@ std::string boundary_strings(const geo::Model& model, const ModelMesh& mesh,
         if (meshed) out.push_back(to_model(std::move(b)));
         continue;
       }
-      // Start at an open/land switch so that no string wraps round the start.
+      // Start at an open/land/between switch so that no string wraps round the start.
       std::size_t start = 0;
-      while (start < curves.size() &&
-             (open.count(std::abs(curves[start])) != 0) ==
-                 (open.count(std::abs(curves[(start + curves.size() - 1) % curves.size()])) != 0))
+      while (start < curves.size() && side(curves[start]) == side(curves[(start + curves.size() - 1) % curves.size()]))
         ++start;
       std::size_t i = start % curves.size();
       do {
-        const bool is_open = open.count(std::abs(curves[i])) != 0;
-        io::BoundaryString b{is_open ? Kind::Open : Kind::Mainland, {}};
+        const Side here = side(curves[i]);
+        io::BoundaryString b{here == Side::Open ? Kind::Open : Kind::Mainland, {}};
         do {
           extend(b.nodes, curve_nodes(mesh, curves[i]));
           i = (i + 1) % curves.size();
-        } while (i != start % curves.size() && (open.count(std::abs(curves[i])) != 0) == is_open);
-        out.push_back(to_model(std::move(b)));
+        } while (i != start % curves.size() && side(curves[i]) == here);
+        if (here != Side::Between) out.push_back(to_model(std::move(b)));
       } while (i != start % curves.size());
     }
   }

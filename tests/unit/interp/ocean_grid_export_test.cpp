@@ -170,3 +170,45 @@ TEST_CASE("ocean grids: every boundary edge listed once, closed loops closed, le
   }
   fs::remove_all(dir);
 }
+
+TEST_CASE("ocean grids: a curve between two meshed faces is in no boundary list") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("sm_ocean_two_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  // Two squares side by side sharing Line(2); the right one's far side open.
+  const std::string script =
+      "lc = 0.2;\n"
+      "Point(1) = {0, 0, 0, lc}; Point(2) = {1, 0, 0, lc}; Point(3) = {2, 0, 0, lc};\n"
+      "Point(4) = {2, 1, 0, lc}; Point(5) = {1, 1, 0, lc}; Point(6) = {0, 1, 0, lc};\n"
+      "Line(1) = {1, 2}; Line(2) = {2, 5}; Line(3) = {5, 6}; Line(4) = {6, 1};\n"
+      "Line(5) = {2, 3}; Line(6) = {3, 4}; Line(7) = {4, 5};\n"
+      "Curve Loop(1) = {1, 2, 3, 4}; Curve Loop(2) = {5, 6, 7, -2};\n"
+      "Plane Surface(1) = {1}; Plane Surface(2) = {2};\n"
+      "Physical Curve(\"open\") = {6};\n"
+      "Mesh 2;\n"
+      "Save \"" + (dir / "fort.14").string() + "\";\n"
+      "Save \"" + (dir / "hgrid.gr3").string() + "\";\n";
+  const auto r = run_script(script);
+  INFO(r.rendered);
+  REQUIRE(r.ok);
+  for (const char* name : {"fort.14", "hgrid.gr3"}) {
+    CAPTURE(name);
+    sm::io::OceanGrid g;
+    std::string error;
+    REQUIRE(sm::io::parse_ocean_grid(sm::testing::read_all(dir / name), &g, &error));
+    REQUIRE(g.open.size() == 1);
+    CHECK(g.land.size() == 3);   // the left square's three sides, the right one's bottom and top
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> listed;
+    for (const auto* strings : {&g.open, &g.land})
+      for (const auto& s : *strings)
+        for (std::size_t k = 0; k + 1 < s.nodes.size(); ++k)
+          ++listed[{std::min(s.nodes[k], s.nodes[k + 1]), std::max(s.nodes[k], s.nodes[k + 1])}];
+    const auto boundary = boundary_of(g);
+    CHECK(listed.size() == boundary.size());
+    for (const auto& [e, n] : listed) {
+      CHECK(n == 1);
+      CHECK(boundary.count(e) == 1);
+    }
+  }
+  fs::remove_all(dir);
+}
