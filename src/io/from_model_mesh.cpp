@@ -5,11 +5,86 @@
 #include <algorithm>
 #include <cstdlib>
 #include <map>
+#include <set>
 #include <utility>
 
 namespace sm::io {
 
-MeshModel from_model_mesh(const geo::Model& model, const ModelMesh& mesh) {
+namespace {
+
+constexpr std::uint32_t kDropped = 0xFFFFFFFFu;
+
+// Leaves out what the 2D mesher left out, and numbers the nodes as the MSH writer does.
+// Curves of a meshed surface's loops whose nodes no 2D element uses (the closed curves of
+// islands smaller than the mesh size: mesh2d drops their hole loops with a warning), and
+// the points that no kept curve or face uses, are removed; then the nodes are
+// renumbered 0.. in entity order ((dim, tag), each entity's own nodes in order), keeping
+// only the nodes some kept entity owns. Returns old node -> new node (kDropped: gone).
+std::vector<std::uint32_t> keep_mesh_only(const geo::Model& model, MeshModel& out) {
+  std::vector<char> in_2d(out.xyz.size(), 0);
+  std::set<int> meshed_surfaces;
+  for (const EntityMesh& e : out.entities)
+    if (e.dim == 2 && !e.connectivity.empty()) {
+      meshed_surfaces.insert(e.tag);
+      for (std::uint32_t v : e.connectivity) in_2d[v] = 1;
+    }
+  std::set<int> bounding;   // curves in the loops of the surfaces that have elements
+  for (int tag : meshed_surfaces)
+    if (const auto it = model.surfaces().find(tag); it != model.surfaces().end())
+      for (int l : it->second.loops)
+        if (const geo::ModelCurveLoop* loop = model.curve_loop(std::abs(l)))
+          for (int c : loop->curves) bounding.insert(std::abs(c));
+  std::vector<char> dropped_entity(out.entities.size(), 0);
+  std::vector<char> on_dropped(out.xyz.size(), 0);
+  for (std::size_t i = 0; i < out.entities.size(); ++i) {
+    const EntityMesh& e = out.entities[i];
+    if (e.dim != 1 || e.connectivity.empty() || !bounding.count(e.tag)) continue;
+    if (std::none_of(e.connectivity.begin(), e.connectivity.end(), [&](std::uint32_t v) { return in_2d[v] != 0; })) {
+      dropped_entity[i] = 1;
+      for (std::uint32_t v : e.connectivity) on_dropped[v] = 1;
+    }
+  }
+  // A point no kept curve or face uses goes, once there is a 2D mesh: the ends of the
+  // dropped curves, and the construction points (a PolarSphere's centre and pole, a
+  // circle's centre), which are no part of the mesh. A point in a physical group stays (it
+  // was asked for by name, as Gmsh writes it), unless it ended a dropped curve.
+  std::vector<char> used_by_kept(out.xyz.size(), 0);
+  for (std::size_t i = 0; i < out.entities.size(); ++i)
+    if (!dropped_entity[i] && out.entities[i].dim > 0)
+      for (std::uint32_t v : out.entities[i].connectivity) used_by_kept[v] = 1;
+  if (!meshed_surfaces.empty())
+    for (std::size_t i = 0; i < out.entities.size(); ++i) {
+      const EntityMesh& e = out.entities[i];
+      if (e.dim == 0 && e.nodes.size() == 1 && !used_by_kept[e.nodes[0]] &&
+          (e.physical_tags.empty() || on_dropped[e.nodes[0]]))
+        dropped_entity[i] = 1;
+    }
+  std::vector<EntityMesh> kept;
+  kept.reserve(out.entities.size());
+  for (std::size_t i = 0; i < out.entities.size(); ++i)
+    if (!dropped_entity[i]) kept.push_back(std::move(out.entities[i]));
+  out.entities = std::move(kept);
+
+  std::vector<std::uint32_t> index(out.xyz.size(), kDropped);
+  std::vector<Vec3> xyz;
+  xyz.reserve(out.xyz.size());
+  for (std::size_t i : entity_order(out))
+    for (std::uint32_t v : out.entities[i].nodes)
+      if (index[v] == kDropped) {
+        index[v] = static_cast<std::uint32_t>(xyz.size());
+        xyz.push_back(out.xyz[v]);
+      }
+  for (EntityMesh& e : out.entities) {
+    for (std::uint32_t& v : e.nodes) v = index[v];
+    for (std::uint32_t& v : e.connectivity) v = index[v];   // every used node is owned (validate_mesh_model)
+  }
+  out.xyz = std::move(xyz);
+  return index;
+}
+
+}  // namespace
+
+MeshModel from_model_mesh(const geo::Model& model, const ModelMesh& mesh, std::vector<std::uint32_t>* node_index) {
   MeshModel out;
   out.xyz.reserve(mesh.nodes.size());
   for (const MeshNode& n : mesh.nodes) out.xyz.push_back(n.xyz);
@@ -95,6 +170,8 @@ MeshModel from_model_mesh(const geo::Model& model, const ModelMesh& mesh) {
     }
     out.entities.push_back(std::move(e));
   }
+  std::vector<std::uint32_t> index = keep_mesh_only(model, out);
+  if (node_index) *node_index = std::move(index);
   return out;
 }
 

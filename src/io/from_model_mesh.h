@@ -3,6 +3,9 @@
 // entity, physical groups of the model, parametric coordinates (curve t, surface u v).
 #pragma once
 
+#include <cstdint>
+#include <vector>
+
 #include "geo/model.h"
 #include "io/mesh_model.h"
 #include "mesh/model_mesh.h"
@@ -14,6 +17,18 @@ namespace sm::io {
 /// (u,v) when known, Triangle3 elements; none before 2D meshing), in tag order, with the
 /// model's physical groups. Which entities a file then holds is the writer's rule
 /// (Gmsh's: only those in physical groups when there are any, unless SaveAll).
-MeshModel from_model_mesh(const geo::Model& model, const ModelMesh& mesh);
+///
+/// The mesh and only the mesh, the one place every writer and the Python module read it
+/// from: once there are 2D elements, a curve of a meshed surface's loops that no 2D
+/// element touches (the closed curve of an island smaller than the mesh size, whose hole
+/// loop mesh2d left out with a warning) is not in the model, nor are the points at its
+/// ends that nothing kept uses, nor their nodes. The nodes are numbered in the one order
+/// every file uses: entity order ((dim, tag): points, curves, surfaces; each entity's own
+/// nodes in order), which is the MSH writers' numbering, so MeshModel node i is node i + 1
+/// of the .msh, fort.14 and hgrid.gr3 and node i of VTK, UGRID and the Python arrays.
+/// `node_index`, when given, receives ModelMesh node -> MeshModel node (0xFFFFFFFF: left
+/// out), for what is built from the ModelMesh directly (the ocean grids' boundary strings).
+MeshModel from_model_mesh(const geo::Model& model, const ModelMesh& mesh,
+                          std::vector<std::uint32_t>* node_index = nullptr);
 
 }  // namespace sm::io

@@ -375,13 +375,26 @@ void write_msh41(Out& o, const MeshModel& m, const MshOptions& opt, const Plan& 
     ++n_blocks;
     for (std::uint32_t n : m.entities[i].nodes) tag[n] = ++n_nodes;
   }
+  // The partitioned entities list the nodes in another order than the model's: their tags
+  // stay the MeshModel's numbering (node i is tag i + 1, as in the unpartitioned file and
+  // every other format; io/from_model_mesh.h), so blocks need not run in tag order, and a
+  // split file keeps the whole mesh's tags (as Gmsh writes them).
+  std::uint64_t min_tag = n_nodes ? 1 : 0, max_tag = n_nodes;
+  if (m.num_partitions > 0 && n_nodes > 0) {
+    min_tag = ~std::uint64_t{0}, max_tag = 0;
+    for (std::size_t i : p.order)
+      if (node_block[i])
+        for (std::uint32_t n : m.entities[i].nodes) {
+          tag[n] = std::uint64_t{n} + 1;
+          min_tag = std::min(min_tag, tag[n]), max_tag = std::max(max_tag, tag[n]);
+        }
+  }
   o.text("$Nodes\n");
-  const std::uint64_t min_tag = n_nodes ? 1 : 0;
   if (opt.binary) {
     o.bin<std::uint64_t>(n_blocks), o.bin<std::uint64_t>(n_nodes), o.bin<std::uint64_t>(min_tag),
-        o.bin<std::uint64_t>(n_nodes);
+        o.bin<std::uint64_t>(max_tag);
   } else {
-    o.f("{} {} {} {}\n", n_blocks, n_nodes, min_tag, n_nodes);
+    o.f("{} {} {} {}\n", n_blocks, n_nodes, min_tag, max_tag);
   }
   for (std::size_t i : p.order) {
     if (!node_block[i]) continue;
@@ -465,6 +478,7 @@ void write_msh41(Out& o, const MeshModel& m, const MshOptions& opt, const Plan& 
     for (std::size_t i : p.order)
       if (node_block[i])
         for (std::uint32_t n : m.entities[i].nodes) written.emplace_back(tag[n], n);
+    std::sort(written.begin(), written.end());   // in tag order (partitioned: not block order)
     write_node_data(o, opt.node_data, written, opt.binary);
   }
 }

@@ -18,7 +18,8 @@ namespace sm::io {
 struct BoundaryString {
   enum class Kind { Open, Mainland, Island };
   Kind kind = Kind::Mainland;
-  std::vector<std::uint32_t> nodes;  // islands: the closed loop, first node not repeated
+  std::vector<std::uint32_t> nodes;  // islands: the closed loop, first node not repeated;
+                                     // a closed mainland loop: first node repeated at the end
 };
 
 struct OceanGridOptions {
@@ -30,10 +31,12 @@ struct OceanGridOptions {
   std::vector<BoundaryString> boundaries;
 };
 
-/// The grid as ADCIRC reads it (fort.14): mainland strings have IBTYPE 20,
+/// The grid as ADCIRC reads it (fort.14): mainland strings have IBTYPE 20 (a closed one
+/// repeats its first node at the end, as given),
 /// islands IBTYPE 21 with the first node repeated at the end (closed).
 std::string fort14_to_string(const MeshModel& mesh, const OceanGridOptions& opt);
-/// SCHISM's hgrid.gr3 layout (land flag 0, island flag 1, loops not repeated).
+/// SCHISM's hgrid.gr3 layout (land flag 0, island flag 1: island loops not repeated, a closed
+/// mainland loop as given, its first node repeated).
 std::string gr3_to_string(const MeshModel& mesh, const OceanGridOptions& opt);
 
 /// Writes atomically; *error is the reason on failure, without the path (see msh_writer.h).

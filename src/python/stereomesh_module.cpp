@@ -141,38 +141,13 @@ Mesh run(const py::object& error_type, const std::string& path, const std::map<s
   const interp::KernelState& k = in.kernel();
   const ModelMesh empty;
   io::MeshModel mm = io::from_model_mesh(k.model, k.mesh ? *k.mesh : empty);
-  // Mesh.NbPartitions' parts of each surface's triangles, by (dim, tag) (the entities are
-  // filtered below).
+  // Mesh.NbPartitions' parts of each surface's triangles, by (dim, tag).
   std::map<std::pair<int, int>, std::vector<int>> parts_of;
   if (k.partition)
     for (std::size_t i = 0; i < k.partition->entities.size(); ++i)
       if (k.partition->entities[i].first == 2) parts_of[k.partition->entities[i]] = k.partition->element_part[i];
-  // With triangles, only the nodes they use (the curves of an island left out of the 2D
-  // mesh keep theirs in the model); renumbered in the model's order.
-  {
-    std::vector<char> used(mm.xyz.size(), 0);
-    bool any = false;
-    for (const io::EntityMesh& e : mm.entities)
-      if (e.dim == 2)
-        for (std::uint32_t v : e.connectivity) used[v] = 1, any = true;
-    std::vector<std::uint32_t> index(mm.xyz.size());
-    std::vector<Vec3> xyz_kept;
-    for (std::uint32_t v = 0; v < mm.xyz.size(); ++v)
-      if (!any || used[v]) index[v] = static_cast<std::uint32_t>(xyz_kept.size()), xyz_kept.push_back(mm.xyz[v]);
-    if (any) {
-      std::vector<io::EntityMesh> entities;
-      for (io::EntityMesh& e : mm.entities) {
-        bool inside = true;
-        for (std::uint32_t v : e.connectivity) inside = inside && used[v];
-        if (!inside) continue;   // a curve of a left-out island
-        for (std::uint32_t& v : e.connectivity) v = index[v];
-        e.nodes.clear();
-        entities.push_back(std::move(e));
-      }
-      mm.entities = std::move(entities);
-      mm.xyz = std::move(xyz_kept);
-    }
-  }
+  // The mesh and only the mesh, numbered as every file (io/from_model_mesh.h): node i
+  // here is node i + 1 of the .msh, fort.14 and hgrid.gr3 and node i of VTK and UGRID.
   const auto n = static_cast<py::ssize_t>(mm.xyz.size());
   py::array_t<double> xyz({n, py::ssize_t{3}});
   auto x = xyz.mutable_unchecked<2>();

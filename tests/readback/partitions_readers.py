@@ -65,6 +65,17 @@ def triangles_by_part(path):
     return parts, n_parts, seen_parts
 
 
+def nodes_by_tag(path):
+    """Gmsh's reader: the node tags and their coordinates, by tag."""
+    gmsh.initialize(["-v", "0"])
+    gmsh.option.setNumber("General.Verbosity", 0)
+    gmsh.open(path)
+    tags, coords, _ = gmsh.model.mesh.getNodes()
+    gmsh.finalize()
+    order = np.argsort(tags)
+    return tags[order], coords.reshape(-1, 3)[order]
+
+
 def sides_between_parts(parts):
     owner = collections.defaultdict(set)
     for p, tris in parts.items():
@@ -127,8 +138,20 @@ def main():
             np.minimum.at(smallest, tri[:, k], cell_part.astype(int))
         check(np.array_equal(smallest, point_part.astype(int)), "VTK point partition: the smallest of its cells'")
 
+        # One node order (as unpartitioned, io/from_model_mesh.h): MSH node tag t is VTK point
+        # and UGRID node t - 1, in the partitioned file and in each split file.
+        tags, xyz = nodes_by_tag(os.path.join(one, "gulf.msh"))
+        check(np.array_equal(tags, np.arange(1, len(vtk.points) + 1)) and np.allclose(xyz, vtk.points, rtol=0, atol=1e-3),
+              f"partitioned MSH node tag t is VTK point t - 1 ({len(tags)} nodes)")
+        for k in range(1, PARTS + 1):
+            tags, xyz = nodes_by_tag(os.path.join(one, f"split_{k}.msh"))
+            check(np.allclose(xyz, vtk.points[tags - 1], rtol=0, atol=1e-3),
+                  f"split_{k}.msh: node tag t is VTK point t - 1 ({len(tags)} nodes)")
+
         # netCDF4: the UGRID face and node partitions.
         nc = netCDF4.Dataset(os.path.join(one, "gulf.nc"))
+        cart = np.stack([nc.variables[f"mesh2d_node_cartesian_{c}"][:] for c in "xyz"], axis=1)
+        check(np.allclose(cart, vtk.points, rtol=0, atol=1e-3), "UGRID node i is VTK point i")
         face_part = np.asarray(nc.variables["mesh2d_face_partition"][:])
         nc_counts = {int(p): int(n) for p, n in zip(*np.unique(face_part, return_counts=True))}
         check(nc_counts == counts, f"UGRID face partitions {nc_counts}")

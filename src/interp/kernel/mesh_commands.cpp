@@ -135,7 +135,9 @@ void add_stage_time(std::vector<StageTime>& times, const StageTime& t) {
 // Publishes the statistics as read-only options and prints the summary.
 void publish_stats(Interpreter& in, const ModelMesh& mesh, const MeshStats& st) {
   Options& o = in.options();
-  o.set_number("Mesh.NbNodes", static_cast<double>(mesh.nodes.size()), /*internal=*/true);
+  // The nodes of the 2D elements, as the summary and every written file count them
+  // (io/from_model_mesh.h): not the left-out islands' curves nor construction points.
+  o.set_number("Mesh.NbNodes", static_cast<double>(st.nodes), /*internal=*/true);
   o.set_number("Mesh.NbTriangles", static_cast<double>(st.triangles), true);
   o.set_number("Mesh.NbQuadrangles", static_cast<double>(st.quads), true);
   o.set_number("Mesh.StatsRhoMin", st.min_rho, true);
@@ -383,7 +385,8 @@ const io::OutputFormat* guess_output_format(const Options& o, const std::string&
 std::string save_mesh(Interpreter& in, const std::string& path, const std::string& format) {
   const KernelState& k = in.kernel();
   const ModelMesh empty;
-  io::MeshModel mm = io::from_model_mesh(k.model, k.mesh ? *k.mesh : empty);
+  std::vector<std::uint32_t> node_index;   // ModelMesh -> mm node, for the ocean grids' boundary strings
+  io::MeshModel mm = io::from_model_mesh(k.model, k.mesh ? *k.mesh : empty, &node_index);
   const Options& o = in.options();
   const io::OutputFormat* f = nullptr;
   if (format.empty()) {
@@ -417,7 +420,7 @@ std::string save_mesh(Interpreter& in, const std::string& path, const std::strin
     if (std::string why = node_data_for_output(in, mm, settings.node_data); !why.empty()) return why;
   switch (f->input) {
     case io::OutputInput::OceanGrid:
-      if (std::string why = ocean_grid_options(in, path, mm, settings.ocean); !why.empty()) return why;
+      if (std::string why = ocean_grid_options(in, path, mm, node_index, settings.ocean); !why.empty()) return why;
       break;
     case io::OutputInput::Picture:
       if (std::string why = picture_options(in, mm, settings.picture); !why.empty()) return why;

@@ -3,7 +3,8 @@
 // follow the coast as the model does: an outer loop without open curves is one
 // mainland string, a hole without open curves an island, and a loop with open
 // curves is cut into alternating open and mainland strings that share their
-// end nodes.
+// end nodes; a curve between two meshed faces is in no string (it cuts the loop as an
+// open/land switch does). The strings are in the MeshModel's node numbering (node_index).
 #include "interp/kernel/ocean_grid_export.h"
 
 #include <fmt/format.h>
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <map>
 #include <set>
 
 #include "interp/kernel/field_eval.h"
@@ -42,12 +44,33 @@ void extend(std::vector<std::uint32_t>& chain, const std::vector<std::uint32_t>&
 }
 
 std::string boundary_strings(const geo::Model& model, const ModelMesh& mesh,
-                             std::vector<io::BoundaryString>& out) {
+                             const std::vector<std::uint32_t>& node_index, std::vector<io::BoundaryString>& out) {
   std::set<int> open;
   for (const auto& [key, g] : model.physicals())
     if (g.dim == 1 && is_open_group(g.name))
       for (int c : g.entities) open.insert(std::abs(c));
   using Kind = io::BoundaryString::Kind;
+  // ModelMesh nodes -> the MeshModel's (io/from_model_mesh.h): the writers' numbering.
+  auto to_model = [&](io::BoundaryString b) {
+    for (std::uint32_t& v : b.nodes) v = node_index.at(v);
+    return b;
+  };
+  // A curve in the loops of two meshed surfaces lies between them, not on the mesh's
+  // boundary: it is in no string (a loop is cut there as at an open/land switch).
+  std::map<int, int> faces_of;
+  for (const auto& [tag, s] : model.surfaces()) {
+    if (!mesh.surfaces.count(tag)) continue;
+    std::set<int> mine;
+    for (int l : s.loops)
+      if (const geo::ModelCurveLoop* loop = model.curve_loop(std::abs(l)))
+        for (int c : loop->curves) mine.insert(std::abs(c));
+    for (int c : mine) ++faces_of[c];
+  }
+  enum class Side { Land, Open, Between };
+  auto side = [&](int c) {
+    if (faces_of[std::abs(c)] > 1) return Side::Between;
+    return open.count(std::abs(c)) ? Side::Open : Side::Land;
+  };
   for (const auto& [tag, s] : model.surfaces()) {
     const auto sm = mesh.surfaces.find(tag);
     if (sm == mesh.surfaces.end()) continue;
@@ -64,30 +87,32 @@ std::string boundary_strings(const geo::Model& model, const ModelMesh& mesh,
         std::reverse(curves.begin(), curves.end());
         for (int& c : curves) c = -c;
       }
-      const bool any_open = std::any_of(curves.begin(), curves.end(), [&](int c) { return open.count(std::abs(c)); });
-      if (!any_open) {
+      const bool all_land = std::all_of(curves.begin(), curves.end(), [&](int c) { return side(c) == Side::Land; });
+      if (all_land) {
+        // A closed loop: an island lists it without repeating its first node (the writers
+        // close it as each format does); a mainland loop (the outer loop of a face without
+        // open boundaries: the World Ocean's Antarctic coast) keeps the first node again at
+        // the end, so that its closing edge is listed too.
         io::BoundaryString b{k == 0 ? Kind::Mainland : Kind::Island, {}};
         for (int c : curves) extend(b.nodes, curve_nodes(mesh, c));
-        if (b.nodes.size() > 1 && b.nodes.front() == b.nodes.back()) b.nodes.pop_back();
+        if (b.kind == Kind::Island && b.nodes.size() > 1 && b.nodes.front() == b.nodes.back()) b.nodes.pop_back();
         const bool meshed = std::all_of(b.nodes.begin(), b.nodes.end(), [&](std::uint32_t v) { return used.count(v); });
-        if (meshed) out.push_back(std::move(b));
+        if (meshed) out.push_back(to_model(std::move(b)));
         continue;
       }
-      // Start at an open/land switch so that no string wraps round the start.
+      // Start at an open/land/between switch so that no string wraps round the start.
       std::size_t start = 0;
-      while (start < curves.size() &&
-             (open.count(std::abs(curves[start])) != 0) ==
-                 (open.count(std::abs(curves[(start + curves.size() - 1) % curves.size()])) != 0))
+      while (start < curves.size() && side(curves[start]) == side(curves[(start + curves.size() - 1) % curves.size()]))
         ++start;
       std::size_t i = start % curves.size();
       do {
-        const bool is_open = open.count(std::abs(curves[i])) != 0;
-        io::BoundaryString b{is_open ? Kind::Open : Kind::Mainland, {}};
+        const Side here = side(curves[i]);
+        io::BoundaryString b{here == Side::Open ? Kind::Open : Kind::Mainland, {}};
         do {
           extend(b.nodes, curve_nodes(mesh, curves[i]));
           i = (i + 1) % curves.size();
-        } while (i != start % curves.size() && (open.count(std::abs(curves[i])) != 0) == is_open);
-        out.push_back(std::move(b));
+        } while (i != start % curves.size() && side(curves[i]) == here);
+        if (here != Side::Between) out.push_back(to_model(std::move(b)));
       } while (i != start % curves.size());
     }
   }
@@ -97,7 +122,7 @@ std::string boundary_strings(const geo::Model& model, const ModelMesh& mesh,
 }  // namespace
 
 std::string ocean_grid_options(Interpreter& in, const std::string& path, const io::MeshModel& mm,
-                               io::OceanGridOptions& opt) {
+                               const std::vector<std::uint32_t>& node_index, io::OceanGridOptions& opt) {
   const KernelState& k = in.kernel();
   if (!k.mesh || k.mesh->surfaces.empty()) return "no 2D mesh to write (mesh with -2 or 'Mesh 2;' first)";
   opt = {};
@@ -110,7 +135,7 @@ std::string ocean_grid_options(Interpreter& in, const std::string& path, const i
   opt.lonlat = !k.model.geometries().empty();
   if (in.options().number("Mesh.DepthField") > 0)
     if (std::string why = depth_at(in, mm.xyz, opt.depth); !why.empty()) return why;
-  return boundary_strings(k.model, *k.mesh, opt.boundaries);
+  return boundary_strings(k.model, *k.mesh, node_index, opt.boundaries);
 }
 
 }  // namespace sm::interp

@@ -4,7 +4,9 @@
 // Mesh.DepthField (positive down, e.g. a Bathymetry field).
 #pragma once
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "io/mesh_model.h"
 #include "io/ocean_grid.h"
@@ -15,8 +17,9 @@ class Interpreter;
 
 /// What the fort.14 / hgrid.gr3 writers read besides `mm` (the model's 2D mesh), for the
 /// file `path` (its name is the grid's title): the sphere, depths, boundary strings.
-/// "" or why not (no 2D mesh, a depth field that cannot be built).
+/// "" or why not (no 2D mesh, a depth field that cannot be built). `node_index` is the
+/// ModelMesh -> `mm` node map from io::from_model_mesh, in which the strings are given.
 std::string ocean_grid_options(Interpreter& in, const std::string& path, const io::MeshModel& mm,
-                               io::OceanGridOptions& opt);
+                               const std::vector<std::uint32_t>& node_index, io::OceanGridOptions& opt);
 
 }  // namespace sm::interp

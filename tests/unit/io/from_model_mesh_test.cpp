@@ -5,10 +5,18 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <set>
 #include <string>
 
+#include <fmt/format.h>
+
+#include "geo/sphere.h"
 #include "io/msh_writer.h"
+#include "io/vtk_writer.h"
 #include "mesh/mesh1d.h"
+#include "mesh/mesh2d.h"
 
 using namespace sm;
 
@@ -89,4 +97,104 @@ TEST_CASE("from_model_mesh: the same script meshes to the same bytes") {
   const std::string sa = io::msh_to_string(io::from_model_mesh(m, a.mesh), o);
   CHECK(sa == io::msh_to_string(io::from_model_mesh(m, b.mesh), o));
   CHECK(sa.size() > 200);
+}
+
+namespace {
+
+// The unit square (lc 0.1) with two closed B-spline islands far below the size (each gets 2
+// mesh edges: mesh2d leaves their hole loops out with a warning) and one construction
+// point, a free Point(20) at the centre; the surface and every curve in physical groups.
+struct Islands {
+  geo::Model model;
+  ModelMesh mesh;
+  std::vector<int> island_curves, island_points;
+};
+
+Islands square_with_islands() {
+  Islands s;
+  geo::Model& m = s.model;
+  const Vec3 c[4] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  for (int i = 0; i < 4; ++i) REQUIRE(m.add_point(i + 1, c[i], 0.1).ok());
+  for (int i = 0; i < 4; ++i) REQUIRE(m.add_curve(i + 1, geo::CurveKind::Line, {i + 1, (i + 1) % 4 + 1}).ok());
+  REQUIRE(m.add_curve_loop(1, {1, 2, 3, 4}).ok());
+  std::vector<int> loops{1}, coast{1, 2, 3, 4};
+  const double centres[2][2] = {{0.3, 0.3}, {0.7, 0.6}};
+  for (int k = 0; k < 2; ++k) {
+    const int p = 5 + 4 * k;
+    for (int i = 0; i < 4; ++i) {
+      const double a = geo::kPi / 2 * i;
+      REQUIRE(m.add_point(p + i, {centres[k][0] + 0.005 * std::cos(a), centres[k][1] + 0.005 * std::sin(a), 0}, 0.1).ok());
+      s.island_points.push_back(p + i);
+    }
+    REQUIRE(m.add_curve(5 + k, geo::CurveKind::BSpline, {p, p + 1, p + 2, p + 3, p}).ok());
+    REQUIRE(m.add_curve_loop(2 + k, {5 + k}).ok());
+    loops.push_back(2 + k);
+    coast.push_back(5 + k);
+    s.island_curves.push_back(5 + k);
+  }
+  REQUIRE(m.add_point(20, {0.5, 0.5, 0}, 0.1).ok());
+  REQUIRE(m.add_plane_surface(1, loops).ok());
+  REQUIRE(m.add_physical(2, std::nullopt, "sea", {1}).ok());
+  REQUIRE(m.add_physical(1, std::nullopt, "coast", coast).ok());
+  Mesh1dResult r1 = mesh_curves(m, {});
+  REQUIRE(r1.ok());
+  s.mesh = std::move(r1.mesh);
+  const Mesh2dResult r2 = mesh_surfaces(m, s.mesh, {});
+  REQUIRE(r2.ok());
+  REQUIRE(r2.warnings.size() == 1);
+  CHECK(r2.warnings.front().find("2 islands smaller than the mesh size are left out") != std::string::npos);
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("from_model_mesh: the islands mesh2d left out, and construction points, are not in the mesh") {
+  const Islands s = square_with_islands();
+  std::vector<std::uint32_t> index;
+  const io::MeshModel mm = io::from_model_mesh(s.model, s.mesh, &index);
+  REQUIRE(io::validate_mesh_model(mm).empty());
+  REQUIRE(index.size() == s.mesh.nodes.size());
+  // The mesh as meshed: its triangles' nodes, each once.
+  std::set<std::uint32_t> in_triangles;
+  for (const auto& t : s.mesh.surfaces.at(1).triangles) in_triangles.insert(t.begin(), t.end());
+  CHECK(mm.xyz.size() == in_triangles.size());
+  CHECK(s.mesh.nodes.size() == in_triangles.size() + 2 * 2 + 6 + 1);   // 2 per island, 6 control points, Point(20)
+  // Every node left is a triangle's, and what went is named by the index.
+  std::vector<char> used(mm.xyz.size(), 0);
+  for (const io::EntityMesh& e : mm.entities) {
+    if (e.dim == 2)
+      for (std::uint32_t v : e.connectivity) used[v] = 1;
+    CHECK_FALSE((e.dim == 1 && std::count(s.island_curves.begin(), s.island_curves.end(), e.tag)));
+    CHECK_FALSE((e.dim == 0 && std::count(s.island_points.begin(), s.island_points.end(), e.tag)));
+    CHECK_FALSE((e.dim == 0 && e.tag == 20));
+  }
+  CHECK(std::all_of(used.begin(), used.end(), [](char u) { return u != 0; }));
+  for (std::uint32_t v = 0; v < s.mesh.nodes.size(); ++v) {
+    CAPTURE(v);
+    CHECK((index[v] != 0xFFFFFFFFu) == (in_triangles.count(v) != 0));
+    if (index[v] != 0xFFFFFFFFu) CHECK(mm.xyz[index[v]] == s.mesh.nodes[v].xyz);
+  }
+  // The one node order: entity order, each entity's nodes in turn, from 0.
+  std::uint32_t next = 0;
+  for (std::size_t i : io::entity_order(mm))
+    for (std::uint32_t v : mm.entities[i].nodes) CHECK(v == next++);
+  CHECK(next == mm.xyz.size());
+  // Every file holds those nodes: MSH 4.1 and 2.2 (tags 1..N in that order), VTK, UGRID.
+  io::MshOptions o;
+  const std::string v41 = io::msh_to_string(mm, o);
+  CHECK(v41.find(fmt::format(" {} 1 {}\n", mm.xyz.size(), mm.xyz.size())) != std::string::npos);
+  o.version = 22;
+  CHECK(io::msh_to_string(mm, o).find(fmt::format("$Nodes\n{}\n", mm.xyz.size())) != std::string::npos);
+  CHECK(io::vtk_to_string(mm, {}).find(fmt::format("POINTS {} double", mm.xyz.size())) != std::string::npos);
+}
+
+TEST_CASE("from_model_mesh: without a 2D mesh every point and curve stays (Gmsh's 1D files)") {
+  const Islands s = square_with_islands();
+  const Mesh1dResult r = mesh_curves(s.model, {});
+  REQUIRE(r.ok());
+  const io::MeshModel mm = io::from_model_mesh(s.model, r.mesh);
+  CHECK(mm.xyz.size() == r.mesh.nodes.size());
+  std::size_t curves = 0;
+  for (const io::EntityMesh& e : mm.entities) curves += e.dim == 1;
+  CHECK(curves == 6);
 }
