@@ -7,7 +7,8 @@
 DefineConstant[ OutDir = "." ];
 CoastAccuracy = 100e3;
 ShoreSizeMin = 200e3;
-CoastFile = "world_l.txt";
+CoastResolution = "l";   // GSHHG low from the system
+CoastMinArea = 0;
 BathyName = "etopo5_global_1deg.nc";
 Quiet = 1;
 Include "../../examples/world_ocean.geo";
