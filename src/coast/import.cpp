@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "coast/deviation.h"
 #include "coast/passages.h"
 #include "exact/ring.h"
 #include "coast/repair.h"
@@ -361,6 +362,18 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
     }
   }
   step_done();
+
+  // The curves back within the bound of their source points (before the repair, which
+  // then sees the curves as they will be drawn).
+  {
+    DeviationOptions dev;
+    dev.radius = opt.radius;
+    dev.factor = opt.deviation_factor;
+    dev.fixed = opt.max_deviation;
+    dev.bspline = opt.bspline_curves;
+    dev.threads = opt.threads;
+    rep.deviation = bound_deviation(curves, dev);
+  }
 
   // 6. Repair.
   RepairOptions ro;
