@@ -6,7 +6,8 @@ DefineConstant[ ShoreSizeMin = 10e3, ShoreSizeMax = 60e3, ShoreDistMax = 300e3, 
 Include "regions.geo";
 Include "ocean_fields.geo";
 Call EarthSphere;
-RegionalFile = StrCat(GshhgDir, "world_i_A100.txt");
+RegionalResolution = "i";   // GSHHG intermediate from the system (gmt-gshhg-high)
+RegionalMinArea = 100;      // km^2
 RegionalBox[] = {RegionMediterranean[]};
 RegionalSeaAt[] = {CentralMediterranean[]};
 Call RegionalSea;

@@ -4,12 +4,14 @@
 //   shore proximity: 30 km on the coast to 200 km at 500 km from it,
 //   wavelength from the ETOPO5 bathymetry: lambda_min / N sqrt(H_ref / H), 25-500 km,
 //   bathymetry Hessian: 1 / sqrt(|lambda_max|) of H / H_ref, 25-500 km,
-// combined by a Min. Coastlines: GSHHG 2.3.7 intermediate (islands >= 100 km^2), coarsened
-// to the accuracy gamma = CoastAccuracy (30 km, the smallest mesh size near the coast).
+// combined by a Min. Coastlines: GSHHG 2.3.7 intermediate (islands >= 100 km^2) from the
+// system (Debian gmt-gshhg-high), coarsened to the accuracy gamma = CoastAccuracy (30 km,
+// the smallest mesh size near the coast).
 //   stereomesh -0 examples/world_ocean.geo              (evaluate and check)
 //   stereomesh -2 examples/world_ocean.geo -o world.msh (mesh and write it)
 // Smaller settings (tests/scripts/examples/world_ocean_coarse.geo): -setnumber CoastAccuracy
-// 200e3 -setstring CoastFile world_l.txt -setstring BathyName etopo5_global_1deg.nc.
+// 200e3 -setstring CoastResolution l -setnumber CoastMinArea 0 -setstring BathyName
+// etopo5_global_1deg.nc. The whole full-resolution GSHHG: -setstring CoastResolution f.
 // Paper: 436,409 triangles in 35 s (whole process). docs/examples.md has our numbers.
 // The paper gives the criteria's ranges but not lambda_min / N; 50 km where the ocean is
 // 4000 m deep (f1 grows where it is shallower: sqrt(H_ref / H)) brings the open ocean to
@@ -20,7 +22,7 @@ Include "earth.geo";
 Include "ocean_fields.geo";
 Include "regions.geo";
 
-DefineConstant[ CoastAccuracy = 30e3, CoastFile = "world_i_A100.txt",
+DefineConstant[ CoastAccuracy = 30e3, CoastResolution = "i", CoastMinArea = 100,
                 BathyName = "etopo5_global_0.25deg.nc", Quiet = 0, DoMesh = 0,
                 EstimateStep = 0, CloseStraits = 1, CloseNarrowWater = 1, CoastDeviation = 0.5 ];
 // EstimateStep: lon/lat step (degrees) of the triangle-count estimate (0: skip it; 1 takes
@@ -32,8 +34,9 @@ Call EarthSphere;
 
 Field[1] = MathEval;
 Field[1].F = Sprintf("%.17g", CoastAccuracy);
-Coastline[1] = LonLatText;
-Coastline[1].FileName = StrCat(GshhgDir, CoastFile);
+Coastline[1] = GSHHG;
+Coastline[1].Resolution = CoastResolution;   // c, l, i, h, f (docs/coastlines.md)
+Coastline[1].MinArea = CoastMinArea;         // km^2, as GMT's -A
 Coastline[1].AccuracyField = 1;
 Coastline[1].AntarcticaLevel = 5;            // the ice front, as GSHHS level 5
 // Straits narrower than gamma closed (the two islands merged): without this the coasts'

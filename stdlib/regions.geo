@@ -24,7 +24,9 @@ If (!Exists(RegionsGeoLoaded))
   Antwerp[] = {4.40, 51.23};                     // Figure 13's upstream end (150 m)
 
   // RegionalSea: the whole set-up of a regional sea (docs/coastlines.md, "Regional seas").
-  // Input: RegionalFile (a LonLatText shoreline file), RegionalBox[] = {W, E, S, N}, and
+  // Input: the shoreline, either RegionalResolution (GSHHG from the system: "c", "l", "i",
+  // "h" or "f"; RegionalMinArea in km^2 drops smaller islands and lakes) or RegionalFile (a
+  // LonLatText shoreline file); RegionalBox[] = {W, E, S, N}; and
   // optionally RegionalAccuracy (m, default 5 km: the coastline's gamma), RegionalSeaAt[] =
   // {lon, lat, ...} (keep only the seas holding these points), RegionalMinChannelWidth (m:
   // close passages narrower than this), RegionalDams[] = {lon1, lat1, lon2, lat2, ...} and
@@ -34,16 +36,24 @@ If (!Exists(RegionsGeoLoaded))
   // RegionalCoastCurves[], RegionalOpenCurves[], RegionalShorePoints[] (the control
   // points, for ShoreProximity with ShoreBox[] = RegionalBox[]) and RegionalAccuracyField.
   Macro RegionalSea
-    If (!Exists(RegionalFile) || !Exists(RegionalBox[]))
-      Error("RegionalSea: set RegionalFile and RegionalBox[] = {W, E, S, N} first");
+    If ((!Exists(RegionalFile) && !Exists(RegionalResolution)) || !Exists(RegionalBox[]))
+      Error("RegionalSea: set RegionalResolution (GSHHG from the system) or RegionalFile, and RegionalBox[] = {W, E, S, N} first");
       Abort;
     EndIf
     regional_id_ = Exists(RegionalCoastline) ? RegionalCoastline : 1;
     RegionalAccuracyField = newf;
     Field[RegionalAccuracyField] = MathEval;
     Field[RegionalAccuracyField].F = Sprintf("%g", Exists(RegionalAccuracy) ? RegionalAccuracy : 5e3);
-    Coastline[regional_id_] = LonLatText;
-    Coastline[regional_id_].FileName = RegionalFile;
+    If (Exists(RegionalResolution))
+      Coastline[regional_id_] = GSHHG;
+      Coastline[regional_id_].Resolution = RegionalResolution;
+      If (Exists(RegionalMinArea))
+        Coastline[regional_id_].MinArea = RegionalMinArea;
+      EndIf
+    Else
+      Coastline[regional_id_] = LonLatText;
+      Coastline[regional_id_].FileName = RegionalFile;
+    EndIf
     Coastline[regional_id_].AccuracyField = RegionalAccuracyField;
     Coastline[regional_id_].Region = {RegionalBox[]};
     If (Exists(RegionalMinChannelWidth))

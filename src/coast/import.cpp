@@ -294,6 +294,9 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
     to_coarsen = std::move(rings);
     piece_is_boundary.assign(to_coarsen.size(), 0);
   }
+  // A Region holding no shoreline: its box is the only loop, all open boundary.
+  const bool region_empty =
+      box && std::all_of(piece_is_boundary.begin(), piece_is_boundary.end(), [](char b) { return b != 0; });
   step_done();
 
   // 4. Coarsening (a closed region box that is a single curve may not be dropped).
@@ -395,7 +398,8 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
   };
   if (auto e = repair()) return *e;
   const std::size_t merged_before = rep.count(RepairKind::MergedIslands);
-  handle_straits(curves, loops, ro, rep.repair);
+  // The box alone has no strait: near its corners its own sides came out as one.
+  if (!region_empty) handle_straits(curves, loops, ro, rep.repair);
   // A merge across a strait adds two bridge edges, checked against the polygons only: the
   // curves through them are checked again.
   if (opt.check_splines && rep.count(RepairKind::MergedIslands) > merged_before)
@@ -523,6 +527,7 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
   }
   for (std::uint32_t l : unassigned) model.unassigned.push_back(emit_loop(l));
   step_done();
+  model.region_empty = region_empty;
   return model;
 }
 

@@ -140,6 +140,8 @@ struct CoastModel {
   std::vector<CoastSurface> surfaces;      // outer loop first in each; ocean first
   std::vector<std::uint32_t> unassigned;   // hole loops with no outer (no Antarctica, no region)
   std::size_t seas_dropped = 0;            // surfaces left out by sea_at
+  /// The Region held no shoreline: the model is its box, one loop of open boundary.
+  bool region_empty = false;
   ImportReport report;
 };
 

@@ -2,8 +2,9 @@
 // process's peak memory after each (tests/bench/run.sh --scale runs it on the full
 // GSHHG). A constant accuracy gamma, so that the figures are those of the import alone.
 //   bench_coast_scale FILE GAMMA_M|- [THREADS] [--write-gshhs OUT.b]
-// FILE is GMT lon/lat text, or a GSHHS binary when it ends in ".b". --write-gshhs
-// stores what was read as a GSHHS 2.x binary (tests/bench/data/world_full.sh); a GAMMA of
+// FILE is GMT lon/lat text, a GSHHS binary when it ends in ".b", or one of GMT's binned
+// GSHHG files when it ends in ".nc" (/usr/share/gmt-gshhg/binned_GSHHS_f.nc: the whole
+// world at full resolution). --write-gshhs stores what was read as a GSHHS 2.x binary; a GAMMA of
 // "-" stops after reading (and writing).
 #include <sys/resource.h>
 
@@ -16,6 +17,7 @@
 
 #include "base/progress.h"
 #include "coast/import.h"
+#include "coast/read_gshhg_binned.h"
 #include "coast/read_gshhs.h"
 #include "coast/read_lonlat_text.h"
 #include "coast/write_gshhs.h"
@@ -100,7 +102,9 @@ int main(int argc, char** argv) {
   std::vector<Row> rows;
   StepTimer timer(rows);
   timer.mark();
-  auto data = ends_with(file, ".b") ? read_gshhs(file) : read_lonlat_text(file);
+  auto data = ends_with(file, ".b")    ? read_gshhs(file)
+              : ends_with(file, ".nc") ? read_gshhg_binned(file)
+                                       : read_lonlat_text(file);
   if (!data) {
     std::fprintf(stderr, "%s\n", data.error().to_string().c_str());
     return 1;

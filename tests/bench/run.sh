@@ -28,12 +28,12 @@ set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 # --scale: the full GSHHG at 30, 10 and 3 km instead of the side-by-side run: the import
 # step by step and the whole runs (tests/bench/scale.sh), then every stage of the runs'
-# time account (tests/bench/scale_stages.sh, on the text world_full.sh exported).
+# time account (tests/bench/scale_stages.sh, on the same system file).
 if [[ ${1:-} == --scale ]]; then
   shift
   "$here/scale.sh" "$@"
   scale_build="$(cd "${1:-$here/../../build}" && pwd)"
-  exec "$here/scale_stages.sh" "$scale_build" "$scale_build/data/world_full.txt"
+  exec "$here/scale_stages.sh" "$scale_build"
 fi
 root="$(cd "$here/../.." && pwd)"
 build="$(cd "${1:-$root/build}" && pwd)"

@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # The scale benchmark (tests/bench/run.sh --scale): the whole full-resolution GSHHG
-# (9.7 million points, tests/bench/data/world_full.sh) through examples/world_ocean.geo at
+# (9.5 million points, read from Debian's gmt-gshhg-full: Coastline = GSHHG, Resolution
+# "f") through examples/world_ocean.geo at
 # gamma = coast size = 30 km, 10 km and 3 km, next to the default example (GSHHG
 # intermediate, 30 km) in the same run. Prints a Markdown report on standard output:
 #   - the import alone (bench_coast_scale: read, then each step of the import, with the
-#     peak memory after each), from the text and from the GSHHS binary;
+#     peak memory after each), from the system's binned file;
 #   - the whole run (stereomesh -2 -nt THREADS): wall and CPU seconds, peak memory,
 #     triangles, bytes of peak memory per triangle, triangles per wall second.
 #   tests/bench/run.sh --scale [BUILD_DIR] [THREADS] > docs/benchmarks_scale.md   (THREADS default 1)
@@ -18,13 +19,10 @@ for p in stereomesh tests/bench/bench_coast_scale; do
   [[ -x "$build/$p" ]] || { echo "scale.sh: $build/$p is not built" >&2; exit 2; }
 done
 [[ -x /usr/bin/time ]] || { echo "scale.sh: /usr/bin/time is missing (apt-get install time)" >&2; exit 2; }
-mapfile -t data < <("$here/data/world_full.sh" "$build")
-text="${data[0]}" binary="${data[1]}"
+full=/usr/share/gmt-gshhg/binned_GSHHS_f.nc
+[[ -f $full ]] || { echo "scale.sh: $full is missing (apt-get install gmt-gshhg-full)" >&2; exit 2; }
 tmp="$(mktemp -d "${TMPDIR:-/tmp}/sm-scale.XXXXXX")"
 trap 'rm -rf "$tmp"' EXIT
-# world_ocean.geo names its file relative to the stdlib's GshhgDir (data/gshhg).
-coast_file="$(python3 -c 'import os, sys; print(os.path.relpath(sys.argv[1], sys.argv[2]))' \
-  "$text" "$root/data/gshhg")"
 
 echo "# Scale: the full GSHHG through examples/world_ocean.geo"
 echo
@@ -34,7 +32,7 @@ echo "load average $(cut -d' ' -f1-3 /proc/loadavg) at the start; $threads threa
 echo
 echo "## The import alone (constant gamma, bench_coast_scale)"
 for g in 30000 10000 3000; do
-  for f in "$text" "$binary"; do
+  for f in "$full"; do
     echo "run.sh --scale: import of $(basename "$f") at $g m" >&2
     echo
     echo '```'
@@ -68,6 +66,6 @@ PY
 run_case "default example (GSHHG intermediate, 30 km)"
 for km in 30 10 3; do
   m=$((km * 1000))
-  run_case "full GSHHG, gamma = coast size = $km km" -setstring CoastFile "$coast_file" \
+  run_case "full GSHHG, gamma = coast size = $km km" -setstring CoastResolution f -setnumber CoastMinArea 0 \
     -setnumber CoastAccuracy "$m" -setnumber ShoreSizeMin "$m"
 done

@@ -4,23 +4,20 @@
 # 1D, 2D, the statistics, the writing) at gamma = 30, 10 and 3 km, next to the wall time
 # /usr/bin/time measures, so that a stage nobody names shows as a gap. Markdown on stdout.
 #
-#   tests/bench/scale_stages.sh [BUILD_DIR [WORLD_TXT]]   (run.sh --scale calls it)
+#   tests/bench/scale_stages.sh [BUILD_DIR]   (run.sh --scale calls it)
 #
-# WORLD_TXT: the whole GSHHG full resolution as lon/lat text (default ../data/world_full.txt
-# beside the checkout; never committed). Each case: stereomesh -2 -nt SCALE_THREADS (default 1)
-# examples/world_ocean.geo with CoastAccuracy = ShoreSizeMin = gamma, ShoreSizeMax 100 km,
+# The whole GSHHG at full resolution comes from the system (Debian gmt-gshhg-full). Each
+# case: stereomesh -2 -nt SCALE_THREADS (default 1) examples/world_ocean.geo with
+# CoastResolution "f", CoastAccuracy = ShoreSizeMin = gamma, ShoreSizeMax 100 km,
 # ShoreDistMax 300 km. The 3 km case takes about 90 s of CPU and 1 GB.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
 build="$(cd "${1:-$root/build}" && pwd)"
-world="${2:-$root/../data/world_full.txt}"
 [[ -x "$build/stereomesh" ]] || { echo "scale_stages.sh: $build/stereomesh is not built" >&2; exit 2; }
-[[ -f "$world" ]] || { echo "scale_stages.sh: $world is missing (the GSHHG full world as lon/lat text)" >&2; exit 2; }
+[[ -f /usr/share/gmt-gshhg/binned_GSHHS_f.nc ]] ||
+  { echo "scale_stages.sh: the full GSHHG is missing (apt-get install gmt-gshhg-full)" >&2; exit 2; }
 [[ -x /usr/bin/time ]] || { echo "scale_stages.sh: /usr/bin/time is missing (apt-get install time)" >&2; exit 2; }
-# The script names its coast file relative to stdlib/earth.geo's GshhgDir.
-gshhg="$root/data/gshhg"
-coast="$(python3 -c 'import os, sys; print(os.path.relpath(sys.argv[1], sys.argv[2]))' "$world" "$gshhg")"
 tmp="$(mktemp -d "${TMPDIR:-/tmp}/sm-scale.XXXXXX")"
 trap 'rm -rf "$tmp"' EXIT
 
@@ -28,7 +25,7 @@ for gamma in ${SCALE_GAMMAS:-30e3 10e3 3e3}; do
   echo "scale_stages.sh: gamma $gamma" >&2
   rc=0
   (cd "$tmp" && /usr/bin/time -f "%e %U %M" -o "$tmp/$gamma.time" "$build/stereomesh" -2 -nt "${SCALE_THREADS:-1}" \
-     "$root/examples/world_ocean.geo" -setstring CoastFile "$coast" -setnumber CoastAccuracy "$gamma" \
+     "$root/examples/world_ocean.geo" -setstring CoastResolution f -setnumber CoastMinArea 0 -setnumber CoastAccuracy "$gamma" \
      -setnumber ShoreSizeMin "$gamma" -setnumber ShoreSizeMax 100e3 -setnumber ShoreDistMax 300e3 \
      -o "$tmp/w.msh" > "$tmp/$gamma.log" 2>&1) || rc=$?
   echo "$gamma $rc" >> "$tmp/cases"

@@ -22,5 +22,8 @@ void run_shapefile_input(const std::uint8_t* data, std::size_t size);
 /// The input is written to a temporary .nc file and read with read_netcdf_grid.
 void run_netcdf_input(const std::uint8_t* data, std::size_t size);
 void run_esri_input(const std::uint8_t* data, std::size_t size);
+/// The input is written to a temporary .nc file and read with read_gshhg_binned (every
+/// level, then the grounding line in a Region across the dateline).
+void run_gshhg_binned_input(const std::uint8_t* data, std::size_t size);
 
 }  // namespace sm::fuzz

@@ -27,6 +27,7 @@ constexpr Reader kReaders[] = {
     {"loops2", &sm::fuzz::run_loops2_input},     {"shapefile", &sm::fuzz::run_shapefile_input},
     {"netcdf", &sm::fuzz::run_netcdf_input},     {"esri", &sm::fuzz::run_esri_input},
     {"floor", &sm::fuzz::run_floor_input},   // not a reader: the quality floor on random coasts
+    {"gshhg_binned", &sm::fuzz::run_gshhg_binned_input},
 };
 
 }  // namespace
@@ -37,7 +38,7 @@ int main(int argc, char** argv) {
     for (const Reader& r : kReaders)
       if (std::strcmp(argv[1], r.name) == 0) reader = &r;
   if (!reader) {
-    std::fprintf(stderr, "usage: fuzz_readers_replay gshhs|lonlat_text|loops2|shapefile|netcdf|esri|floor DIR...\n");
+    std::fprintf(stderr, "usage: fuzz_readers_replay gshhs|lonlat_text|loops2|shapefile|netcdf|esri|gshhg_binned|floor DIR...\n");
     return 2;
   }
   std::vector<std::filesystem::path> files;

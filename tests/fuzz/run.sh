@@ -7,8 +7,8 @@
 #   tests/fuzz/run.sh --no-build [--target T] SECONDS BIN  run an already built fuzz_T (CTest fuzz_short_geo,
 #                                                          fuzz_short_<reader>)
 #
-# T is geo (the default), a reader: gshhs, lonlat_text, loops2, shapefile, netcdf, esri, or
-# floor (the quality floor on random coasts, tests/fuzz/fuzz_floor_entry.cpp).
+# T is geo (the default), a reader: gshhs, lonlat_text, loops2, shapefile, netcdf, esri,
+# gshhg_binned, or floor (the quality floor on random coasts, tests/fuzz/fuzz_floor_entry.cpp).
 # The seed corpus (geo: tests/fuzz/corpus, tests/fuzz/crashes, tests/scripts, examples; a
 # reader: tests/fuzz/corpus_T, tests/fuzz/crashes_T) is copied to a
 # scratch directory, so the repository is never modified. Set SM_FUZZ_CORPUS=DIR to keep the
@@ -32,7 +32,7 @@ target=geo
 if [[ "${1:-}" == "--no-build" ]]; then build=0; shift; fi
 if [[ "${1:-}" == "--target" ]]; then target="${2:-}"; shift 2 || usage; fi
 case "$target" in
-  geo|gshhs|lonlat_text|loops2|shapefile|netcdf|esri|floor) ;;
+  geo|gshhs|lonlat_text|loops2|shapefile|netcdf|esri|gshhg_binned|floor) ;;
   *) usage ;;
 esac
 [[ $# -ge 1 && "$1" =~ ^[0-9]+$ ]] || usage
@@ -66,13 +66,15 @@ fuzz_opts=(-max_len=8192 -dict="$here/geo.dict")
 if [[ "$target" != geo ]]; then
   seed_dirs=("$here/corpus_$target" "$here/crashes_$target")
   fuzz_opts=(-max_len=16384)
+  # a netCDF-4 (HDF5) seed of the binned GSHHG layout takes 16.7 kB
+  [[ "$target" == gshhg_binned ]] && fuzz_opts=(-max_len=32768)
 fi
 # shapelib and libnetcdf (not instrumented) keep allocations on some error paths of
 # hostile files, and libnetcdf asks calloc for the sizes a hostile header claims: the
 # leak checker would blame us, and ASan would abort where the real calloc returns NULL
 # (which libnetcdf reports as an error). Crashes and overflows are still caught.
 case "$target" in
-  shapefile|netcdf)
+  shapefile|netcdf|gshhg_binned)
     fuzz_opts+=(-detect_leaks=0)
     export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0:allocator_may_return_null=1" ;;
 esac

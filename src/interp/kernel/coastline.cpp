@@ -61,7 +61,8 @@ struct CoastOption {
 
 // Every option, with the value it takes; docs/interpreter.md lists the same.
 constexpr CoastOption kOptions[] = {
-    {"FileName", OptType::String, false, "shoreline file, relative to the script"},
+    {"FileName", OptType::String, false, "shoreline file, relative to the script (GSHHG: optional, a binned_GSHHS_*.nc)"},
+    {"Resolution", OptType::String, false, "GSHHG only: \"c\", \"l\" (default), \"i\", \"h\" or \"f\", the system's binned file"},
     {"Levels", OptType::List, false, "GSHHS levels kept (default {1})"},
     {"AntarcticaLevel", OptType::Number, false, "level kept for Antarctica: 5 ice front (default), 6 grounding line, 0 none"},
     {"AccuracyField", OptType::Number, false, "size field giving gamma(x) in metres (required)"},
@@ -125,7 +126,7 @@ void exec_coast_new(Interpreter& in, const Stmt& s, const CoastlineNewStmt& n) {
   const auto parsed = coast::parse_coast_format(format);
   if (!parsed) {
     in.fail_fmt(n.format_range, Diag::UnknownCoastlineFormat, format,
-                did_you_mean(format, {"GSHHS", "Shapefile", "LonLatText", "Loops2"}));
+                did_you_mean(format, {"GSHHS", "GSHHG", "Shapefile", "LonLatText", "Loops2"}));
   }
   auto& defs = in.kernel().coastlines;
   if (auto it = defs.find(id); it != defs.end()) {
@@ -157,6 +158,9 @@ void check_option_value(Interpreter& in, int id, const CoastOption& o, const Val
       fail_option(in, at, id, o.name,
                   fmt::format("must be lonlat, lonlat_degrees, utm or cartesian, not \"{}\"", t));
     if (o.name == "FileName" && t.empty()) fail_option(in, at, id, o.name, "is empty");
+    if (o.name == "Resolution" && !coast::is_gshhg_resolution(t))
+      fail_option(in, at, id, o.name,
+                  fmt::format("must be \"c\", \"l\", \"i\", \"h\" or \"f\" (crude to full), not \"{}\"", t));
     return;
   }
   if (!v.is_numeric()) fail_option(in, at, id, o.name, o.type == OptType::List ? "takes a list of numbers" : "takes a number");
@@ -219,6 +223,9 @@ void exec_coast_option(Interpreter& in, const Stmt& s, const CoastlineOptionStmt
   if (o->loops2_only && d.format != "Loops2")
     in.fail_fmt(n.option_range, Diag::UnknownCoastlineOption,
                 fmt::format("option '{}' applies to Loops2 coastlines only, and Coastline[{}] is {}", option, id, d.format));
+  if (o->name == "Resolution" && d.format != "GSHHG")
+    in.fail_fmt(n.option_range, Diag::UnknownCoastlineOption,
+                fmt::format("option 'Resolution' applies to GSHHG coastlines only, and Coastline[{}] is {}", id, d.format));
   if (d.imported) {
     try {
       in.fail_fmt(s.range, Diag::WrongCoastlineOption,
@@ -307,7 +314,8 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
   }
   const geo::PolarSphere& sphere = *sg->polar();
   const Value* file = option(d, "FileName");
-  if (!file)
+  const bool gshhg = d.format == "GSHHG";
+  if (!file && !gshhg)
     in.fail_with_notes(at, Diag::WrongCoastlineOption,
                        fmt::format("Coastline[{}] has no FileName: set 'Coastline[{}].FileName = \"...\";'", id, id),
                        {{d.defined_at, fmt::format("Coastline[{}] is defined here", id)}});
@@ -384,9 +392,22 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
   // The kernel's reading and building is the account's "import" stage; making the
   // script's entities from its loops below is the script's own time.
   std::optional<StageScope> import_stage(std::in_place, &in.kernel().clock, nullptr, "import");
-  auto data = coast::read_coastline(*coast::parse_coast_format(d.format), file->strs().front(), l2);
+  // GSHHG: the reader itself keeps the levels, areas and bins asked for (the import
+  // filters the same again), so that a Region reads only the polygons it touches.
+  coast::GshhgBinnedOptions gopt;
+  gopt.levels = io.levels;
+  gopt.antarctica_level = io.antarctica_level;
+  gopt.min_area_km2 = io.min_area_km2;
+  gopt.region = io.region;
+  const Value* resolution = option(d, "Resolution");
+  const std::string path = file ? file->strs().front()
+                                : coast::gshhg_binned_file(resolution ? resolution->strs().front()[0] : 'l');
+  auto data = coast::read_coastline(*coast::parse_coast_format(d.format), path, l2, gopt);
   if (!data) {
+    // At the statement that named the file: FileName, else Resolution, else the import.
     auto f = d.option_at.find("FileName");
+    if (f == d.option_at.end()) f = d.option_at.find("Resolution");
+    if (f == d.option_at.end()) fail_coast(in, id, d, at, data.error(), false);
     try {
       fail_coast(in, id, d, f->second, data.error(), false);
     } catch (RuntimeError& err) {
@@ -416,6 +437,16 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
     auto h = line.passage ? in.diags().report(at, Diag::CoastlinePassage, fmt::format("{}: {}", name, line.text))
                           : in.diags().report(at, Diag::CoastlineRepair, name, line.text);
     h.item(coastline_item(line));
+  }
+  if (m.region_empty) {   // the box of the Region, or of the file's own -R
+    auto r = d.option_at.find("Region");
+    const std::string box =
+        io.region ? fmt::format(" {{{}, {}, {}, {}}}", io.region->west, io.region->east, io.region->south, io.region->north)
+                  : std::string(" of the file");
+    in.diags().report(r != d.option_at.end() ? r->second : at, Diag::CoastlineRegionEmpty,
+                      fmt::format("Coastline[{}]: the Region{} holds no shoreline of the levels kept (none left at "
+                                  "this accuracy and MinArea): its box is the only loop, all open boundary",
+                                  id, box));
   }
   if (m.seas_dropped > 0)
     in.diags().report(d.option_at.find("SeaAt")->second, Diag::CoastlineSeasDropped,

@@ -3,7 +3,8 @@
 // at known places (the example's own Asserts), and prints the figures.
 // compare_with_gmsh: skip (native Coastline and Field statements)
 CoastAccuracy = 200e3;
-CoastFile = "world_l.txt";
+CoastResolution = "l";   // GSHHG low from the system
+CoastMinArea = 0;
 BathyName = "etopo5_global_1deg.nc";
 Quiet = 1;
 EstimateStep = 0;   // the 1-degree triangle estimate takes 20 s of CPU

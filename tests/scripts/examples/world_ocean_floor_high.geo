@@ -7,7 +7,8 @@
 // raise (the work is bounded).
 // compare_with_gmsh: skip (native Coastline and Field statements)
 CoastAccuracy = 100e3;
-CoastFile = "world_l.txt";
+CoastResolution = "l";   // GSHHG low from the system
+CoastMinArea = 0;
 BathyName = "etopo5_global_1deg.nc";
 Quiet = 1;
 EstimateStep = 0;

@@ -96,7 +96,7 @@ TEST_CASE("cli: exit statuses of the binary") {
     return;
   }
   namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / "sm_cli_test";
+  const fs::path dir = fs::temp_directory_path() / ("sm_cli_test_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   std::ofstream(dir / "ok.geo") << "DefineConstant[n = 1];\nPrintf(\"%g\", n);\n";
@@ -229,7 +229,7 @@ TEST_CASE("cli: partitions asked for in a format without them are refused before
     return;
   }
   namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / "sm_cli_part_test";
+  const fs::path dir = fs::temp_directory_path() / ("sm_cli_part_test_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   std::ofstream(dir / "sq.geo") << "Point(1) = {0, 0, 0, 0.2}; Point(2) = {1, 0, 0, 0.2};\n"

@@ -182,7 +182,7 @@ TEST_CASE("diagnostic stream: the binary shows Printf, the warning and Printf in
     return;
   }
   namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / "sm_diag_stream_test";
+  const fs::path dir = fs::temp_directory_path() / ("sm_diag_stream_test_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   std::ofstream(dir / "order.geo") << "Printf(\"a\");\nWarning(\"between\");\nPrintf(\"b\");\n";

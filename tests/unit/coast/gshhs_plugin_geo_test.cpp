@@ -3,6 +3,7 @@
 #include "coast/gshhs_plugin_geo.h"
 #include "coast/read_lonlat_text.h"
 
+#include <unistd.h>
 #include <doctest/doctest.h>
 
 #include <array>
@@ -51,7 +52,7 @@ std::vector<std::string> gmsh_errors(const std::string& out) {
 }
 
 fs::path temp_dir() {
-  const fs::path d = fs::temp_directory_path() / "sm_coast_plugin_test";
+  const fs::path d = fs::temp_directory_path() / ("sm_coast_plugin_test_" + std::to_string(::getpid()));
   fs::create_directories(d);
   return d;
 }

@@ -1,6 +1,7 @@
 // Shapefile reader on Natural Earth and the index-less GSHHS_l_L1.shp, plus broken files.
 #include "coast/read_shapefile.h"
 
+#include <unistd.h>
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -216,7 +217,7 @@ TEST_CASE("shapefile: PolygonZ and PolyLineZ written from real data read back th
   namespace fs = std::filesystem;
   auto src = read_shapefile(kNe + "ne_110m_land.shp");
   REQUIRE(src.ok());
-  const fs::path dir = fs::temp_directory_path() / "sm_coast_shpz_test";
+  const fs::path dir = fs::temp_directory_path() / ("sm_coast_shpz_test_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   for (int type : {SHPT_POLYGONZ, SHPT_ARCZ}) {

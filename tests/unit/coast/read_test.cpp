@@ -11,6 +11,8 @@ TEST_CASE("read: format names and dispatch") {
   CHECK(parse_coast_format("shapefile") == CoastFormat::Shapefile);
   CHECK(parse_coast_format("LonLatText") == CoastFormat::LonLatText);
   CHECK(parse_coast_format("Loops2") == CoastFormat::Loops2);
+  CHECK(parse_coast_format("gshhg") == CoastFormat::Gshhg);
+  CHECK(std::string(coast_format_name(CoastFormat::Gshhg)) == "GSHHG");
   CHECK_FALSE(parse_coast_format("GeoJSON").has_value());
   CHECK(std::string(coast_format_name(CoastFormat::LonLatText)) == "LonLatText");
   const std::string d = SM_DATA_DIR;

@@ -1,5 +1,6 @@
 #include "field/bathymetry.h"
 
+#include <unistd.h>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -165,7 +166,7 @@ TEST_CASE("bathymetry: bad input is rejected with typed, located errors") {
   md.set(1, "MinDepth", 0.0);
   CHECK_THROWS_AS(md.build(1, {}), FieldError);
   // A grid with a missing node: an error naming its lon/lat, unless MissingAsLand.
-  const auto dir = std::filesystem::temp_directory_path() / "sm_field_bathy_test";
+  const auto dir = std::filesystem::temp_directory_path() / ("sm_field_bathy_test_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const auto asc = dir / "hole.asc";
   {

@@ -2,6 +2,7 @@
 // every place a count sits, in CDF-1, CDF-2 and CDF-5; sound files pass.
 #include "field/netcdf_header.h"
 
+#include <unistd.h>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -57,7 +58,7 @@ std::vector<unsigned char> header(int version, Hostile hostile, std::uint64_t hu
 }
 
 std::optional<std::string> check(const std::vector<unsigned char>& bytes) {
-  const fs::path p = fs::temp_directory_path() / "sm_netcdf_header_test.nc";
+  const fs::path p = fs::temp_directory_path() / ("sm_netcdf_header_test_" + std::to_string(::getpid()) + ".nc");
   {
     std::ofstream f(p, std::ios::binary);
     f.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));

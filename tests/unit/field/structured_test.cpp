@@ -1,3 +1,4 @@
+#include <unistd.h>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -46,7 +47,7 @@ TEST_CASE("structured: Gmsh text grid of the GBR relief equals the netCDF grid")
 }
 
 TEST_CASE("structured: binary format, and bad files") {
-  const auto dir = std::filesystem::temp_directory_path() / "sm_field_structured_test";
+  const auto dir = std::filesystem::temp_directory_path() / ("sm_field_structured_test_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const auto bin = dir / "grid.bin";
   {

@@ -1,4 +1,5 @@
 // Evaluator: semantics, runtime errors with locations and call notes, limits.
+#include <unistd.h>
 #include <doctest/doctest.h>
 
 #include <cstdio>
@@ -164,7 +165,7 @@ TEST_CASE("interp: statements without a kernel yet are reported once per kind an
 
 TEST_CASE("interp: Printf redirection and Include relative to the script") {
   namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / "sm_interp_test_redirect";
+  const fs::path dir = fs::temp_directory_path() / ("sm_interp_test_redirect_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir / "sub");
   {
@@ -185,7 +186,7 @@ TEST_CASE("interp: Printf redirection and Include relative to the script") {
 
 TEST_CASE("interp: include cycles and missing includes are errors") {
   namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / "sm_interp_test_cycle";
+  const fs::path dir = fs::temp_directory_path() / ("sm_interp_test_cycle_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   std::ofstream(dir / "a.geo") << "Include \"b.geo\";\n";
@@ -218,7 +219,7 @@ TEST_CASE("interp: include cycles and missing includes are errors") {
 
 TEST_CASE("interp: Include searches -I directories and the stdlib") {
   namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / "sm_interp_test_search";
+  const fs::path dir = fs::temp_directory_path() / ("sm_interp_test_search_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir / "lib");
   std::ofstream(dir / "lib" / "helper.geo") << "helper = 5;\n";
@@ -235,7 +236,7 @@ TEST_CASE("interp: Include searches -I directories and the stdlib") {
 TEST_CASE("interp: Include inside a running loop keeps the loop's nodes valid") {
   // Parsing the included file grows the shared Ast while the For body runs.
   namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / "sm_interp_test_loop_include";
+  const fs::path dir = fs::temp_directory_path() / ("sm_interp_test_loop_include_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   {

@@ -1,4 +1,5 @@
 // The --test driver: expectation parsing, pass/fail decisions, summary line.
+#include <unistd.h>
 #include <doctest/doctest.h>
 
 #include <filesystem>
@@ -22,7 +23,7 @@ TEST_CASE("script tests: expectations are read from comments") {
 
 TEST_CASE("script tests: the driver passes and fails scripts") {
   namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / "sm_script_test_driver";
+  const fs::path dir = fs::temp_directory_path() / ("sm_script_test_driver_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir / "b");
   std::ofstream(dir / "a_pass.geo") << "s = 0;\nFor i In {1:4}\n  s += i;\nEndFor\nPrintf(\"%g\", s);  // expect: 10\n";

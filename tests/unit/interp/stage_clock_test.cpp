@@ -1,6 +1,7 @@
 // The run's time account: the clock charges each interval to the innermost open stage
 // (the script's evaluation when none is), so the stages add up to the elapsed time; a
 // run names the field set-up, 1D, the 2D mesher's stages, the statistics and the writing.
+#include <unistd.h>
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -81,7 +82,7 @@ TEST_CASE("stage clock: small field kinds are summed into 'fields', large ones k
 
 TEST_CASE("stage clock: a meshing run's account names every stage and adds up to the interpreter's time") {
   namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / "sm_stage_clock_test";
+  const fs::path dir = fs::temp_directory_path() / ("sm_stage_clock_test_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   lang::SourceManager sources;
