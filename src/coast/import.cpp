@@ -77,9 +77,12 @@ std::vector<ReportLine> ImportReport::items() const {
     l.what = describe(e.kind);
     l.figure = figure_of(e);
     l.has_place = true;
+    // Rings keep contiguous longitudes (Eurasia runs to 190E); places are told in (-180, 180].
     l.where = e.where;
+    l.where.lon = std::remainder(l.where.lon, 360.0);
+    if (l.where.lon <= -180) l.where.lon += 360;
     l.passage = is_passage_kind(e.kind);
-    l.text = fmt::format("record {} (id {}) at lon {:.5f} lat {:.5f}: {}{}", e.record, e.id, e.where.lon, e.where.lat,
+    l.text = fmt::format("record {} (id {}) at lon {:.5f} lat {:.5f}: {}{}", e.record, e.id, l.where.lon, l.where.lat,
                          l.what, l.figure.empty() ? std::string() : " (" + l.figure + ")");
     out.push_back(std::move(l));
   }

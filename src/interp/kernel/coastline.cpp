@@ -70,7 +70,7 @@ constexpr CoastOption kOptions[] = {
     {"MinArea", OptType::Number, false, "drop closed rings below this area (km^2)"},
     {"CurveType", OptType::String, false, "\"BSpline\" (default) or \"Line\""},
     {"MaxDeviation", OptType::Number, false, "the coast curve stays within this distance (m) of the source points (default: DeviationFactor * gamma)"},
-    {"DeviationFactor", OptType::Number, false, "the curve's bound as a fraction of gamma (default 0.5; 0: no bound, the curve as coarsening leaves it)"},
+    {"DeviationFactor", OptType::Number, false, "the curve's bound as a fraction of gamma (0.5 keeps it within gamma / 2; default 0: measured and reported only)"},
     {"MinStraitsFactor", OptType::Number, false, "straits narrower than factor * gamma are reported (default 1)"},
     {"CloseStraits", OptType::Number, false, "1: merge islands across such straits (default 0: keep them open)"},
     {"CheckSplines", OptType::Number, false, "1 (default): put points back until no two B-splines cross; 0: off"},
@@ -475,7 +475,9 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
     imp->deviation = {dev.max, dev.p95, dev.max_before, dev.where.lon, dev.where.lat,
                       static_cast<double>(dev.points_added)};
     // One line per import: how far the coast the mesher follows lies from the data.
-    in.diags().report(at, Diag::CoastlineDeviation,
+    // At the coastline's definition: the import statement's own caret heads the group of
+    // its repairs (cli/diagnostic_stream.h).
+    in.diags().report(d.defined_at, Diag::CoastlineDeviation,
                       fmt::format("Coastline[{}]: the coast curves lie within {:.0f} m of the source points (95% within "
                                   "{:.0f} m; {:.0f} m before {} control point(s) were put back), farthest at lon {:.4f} "
                                   "lat {:.4f}{}{}",
