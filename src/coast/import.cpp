@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "coast/deviation.h"
 #include "coast/passages.h"
 #include "exact/ring.h"
 #include "coast/repair.h"
@@ -76,9 +77,12 @@ std::vector<ReportLine> ImportReport::items() const {
     l.what = describe(e.kind);
     l.figure = figure_of(e);
     l.has_place = true;
+    // Rings keep contiguous longitudes (Eurasia runs to 190E); places are told in (-180, 180].
     l.where = e.where;
+    l.where.lon = std::remainder(l.where.lon, 360.0);
+    if (l.where.lon <= -180) l.where.lon += 360;
     l.passage = is_passage_kind(e.kind);
-    l.text = fmt::format("record {} (id {}) at lon {:.5f} lat {:.5f}: {}{}", e.record, e.id, e.where.lon, e.where.lat,
+    l.text = fmt::format("record {} (id {}) at lon {:.5f} lat {:.5f}: {}{}", e.record, e.id, l.where.lon, l.where.lat,
                          l.what, l.figure.empty() ? std::string() : " (" + l.figure + ")");
     out.push_back(std::move(l));
   }
@@ -364,6 +368,18 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
     }
   }
   step_done();
+
+  // The curves back within the bound of their source points (before the repair, which
+  // then sees the curves as they will be drawn).
+  {
+    DeviationOptions dev;
+    dev.radius = opt.radius;
+    dev.factor = opt.deviation_factor;
+    dev.fixed = opt.max_deviation;
+    dev.bspline = opt.bspline_curves;
+    dev.threads = opt.threads;
+    rep.deviation = bound_deviation(curves, dev);
+  }
 
   // 6. Repair.
   RepairOptions ro;

@@ -13,6 +13,7 @@
 #include "coast/clean.h"
 #include "coast/coarsen.h"
 #include "coast/coastline.h"
+#include "coast/deviation_report.h"
 #include "coast/region.h"
 
 namespace sm::coast {
@@ -47,6 +48,13 @@ struct ImportOptions {
   /// Keep only the seas (surfaces) holding one of these points; empty: every sea.
   std::vector<geo::LonLat> sea_at;
   int max_repair_rounds = 64;
+  /// The coast curve kept within this distance of the source points (deviation.h):
+  /// `max_deviation` metres when > 0, else `deviation_factor` times gamma (0, the default for
+  /// now: measured and reported only, see docs/coastlines.md); the curve type
+  /// measured is the B-spline, or the control polygon when `bspline_curves` is false.
+  double deviation_factor = 0;
+  double max_deviation = 0;
+  bool bspline_curves = true;
   /// Threads for the steps that work ring by ring (cleaning, coarsening; the accuracy field
   /// is called from the calling thread only): the result is
   /// the same for every count (base/parallel.h). <= 0: the hardware concurrency.
@@ -118,6 +126,9 @@ struct ImportReport {
   std::vector<DroppedRing> dropped;
   std::vector<RepairEntry> repair;
   std::size_t reversed = 0, points_in = 0, points_out = 0, repair_rounds = 0;
+  /// How far the curves lie from the source points before and after control points were
+  /// put back (deviation.h), in metres.
+  DeviationReport deviation;
   std::size_t count(RepairKind k) const;
   /// The human-readable report, nothing cut: the cleaning and coarsening summaries,
   /// then one line per repair entry in `repair`'s order, each with its parts.

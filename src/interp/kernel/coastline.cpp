@@ -35,6 +35,10 @@ struct CoastlineImport {
   /// 2 South, 3 North).
   std::vector<std::uint8_t> open_sides;
   std::vector<std::vector<int>> surface_loops;   // loop tags of each sea, outer first
+  /// `Coastline{n, "Deviation"}`: {largest distance of a source point from the curve (m),
+  /// 95% quantile (m), largest before control points were put back (m), lon, lat of the
+  /// largest, control points put back}.
+  std::vector<double> deviation;
   /// Plane Surfaces of the seas, made on the first `Coastline{n, "Surfaces"}` (so that
   /// scripts making their own from "LoopsPerSurface" do not get them twice).
   mutable std::vector<int> surfaces;
@@ -65,6 +69,8 @@ constexpr CoastOption kOptions[] = {
     {"Region", OptType::List, false, "{west, east, south, north} in degrees"},
     {"MinArea", OptType::Number, false, "drop closed rings below this area (km^2)"},
     {"CurveType", OptType::String, false, "\"BSpline\" (default) or \"Line\""},
+    {"MaxDeviation", OptType::Number, false, "the coast curve stays within this distance (m) of the source points (default: DeviationFactor * gamma)"},
+    {"DeviationFactor", OptType::Number, false, "the curve's bound as a fraction of gamma (0.5 keeps it within gamma / 2; default 0: measured and reported only)"},
     {"MinStraitsFactor", OptType::Number, false, "straits narrower than factor * gamma are reported (default 1)"},
     {"CloseStraits", OptType::Number, false, "1: merge islands across such straits (default 0: keep them open)"},
     {"CheckSplines", OptType::Number, false, "1 (default): put points back until no two B-splines cross; 0: off"},
@@ -80,7 +86,7 @@ constexpr CoastOption kOptions[] = {
 
 // What `Coastline{n, "What"}` returns.
 constexpr std::string_view kSelectors[] = {"Loops", "Curves", "OpenCurves", "Points", "ControlPoints",
-                                           "Outer", "LoopsPerSurface", "CoastCurves", "Surfaces"};
+                                           "Outer", "LoopsPerSurface", "CoastCurves", "Surfaces", "Deviation"};
 // The sides `Coastline{n, "OpenCurves", "West"}` takes, in the bit order of open_sides.
 constexpr std::string_view kSides[] = {"West", "East", "South", "North"};
 
@@ -183,6 +189,10 @@ void check_option_value(Interpreter& in, int id, const CoastOption& o, const Val
     if (x[0] < 0) fail_option(in, at, id, name, "must not be negative");
   } else if (name == "MinStraitsFactor" || name == "UTMEquatorialRadius" || name == "UTMPolarRadius") {
     if (!(x[0] > 0)) fail_option(in, at, id, name, "must be positive");
+  } else if (name == "MaxDeviation") {
+    if (!(x[0] > 0)) fail_option(in, at, id, name, fmt::format("must be a positive distance in metres, not {}", x[0]));
+  } else if (name == "DeviationFactor") {
+    if (x[0] < 0) fail_option(in, at, id, name, fmt::format("must not be negative (0 is off), not {}", x[0]));
   } else if (name == "MinChannelWidth") {
     if (x[0] < 0) fail_option(in, at, id, name, fmt::format("must not be negative (0 is off), not {}", x[0]));
   } else if (name == "Dams" || name == "SeaAt") {
@@ -346,6 +356,9 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
   io.check_splines = number_option(d, "CheckSplines", 1) != 0;
   io.min_channel_width = number_option(d, "MinChannelWidth", 0);
   io.keep_passages = number_option(d, "KeepPassages", 0) != 0;
+  io.max_deviation = number_option(d, "MaxDeviation", 0);
+  io.deviation_factor = number_option(d, "DeviationFactor", io.deviation_factor);
+  io.bspline_curves = !(option(d, "CurveType") && option(d, "CurveType")->strs().front() == "Line");
   if (const Value* v = option(d, "Dams")) {
     const auto& x = v->nums();
     for (std::size_t i = 0; i + 3 < x.size(); i += 4) io.dams.push_back({{x[i], x[i + 1]}, {x[i + 2], x[i + 3]}});
@@ -457,6 +470,30 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
   const bool polyline = option(d, "CurveType") && option(d, "CurveType")->strs().front() == "Line";
   auto imp = std::make_shared<CoastlineImport>();
   imp->at = at;
+  {
+    const coast::DeviationReport& dev = m.report.deviation;
+    imp->deviation = {dev.max, dev.p95, dev.max_before, dev.where.lon, dev.where.lat,
+                      static_cast<double>(dev.points_added)};
+    // One line per import: how far the coast the mesher follows lies from the data.
+    // At the coastline's definition: the import statement's own caret heads the group of
+    // its repairs (cli/diagnostic_stream.h).
+    in.diags().report(d.defined_at, Diag::CoastlineDeviation,
+                      fmt::format("Coastline[{}]: the coast curves lie within {:.0f} m of the source points (95% within "
+                                  "{:.0f} m; {:.0f} m before {} control point(s) were put back), farthest at lon {:.4f} "
+                                  "lat {:.4f}{}{}",
+                                  id, dev.max, dev.p95, dev.max_before, dev.points_added, dev.where.lon, dev.where.lat,
+                                  dev.narrow_features > 0
+                                      ? fmt::format("; {} inlet(s) or spit(s) too narrow for the accuracy left out (up to "
+                                                    "{:.0f} m deep; the first at lon {:.4f} lat {:.4f})",
+                                                    dev.narrow_features, dev.narrow_max, dev.where_narrow.lon,
+                                                    dev.where_narrow.lat)
+                                      : std::string(),
+                                  dev.left_over_bound > 0
+                                      ? fmt::format("; {} span(s) over the bound with no source point left to put back "
+                                                    "(first at lon {:.4f} lat {:.4f})",
+                                                    dev.left_over_bound, dev.where_over.lon, dev.where_over.lat)
+                                      : std::string()));
+  }
   std::vector<int> loop_tag(m.loops.size(), 0);
   std::vector<int> pts;
   for (std::uint32_t l : order) {
@@ -573,8 +610,8 @@ Value eval_coastline_query(Interpreter& in, ExprId e) {
       if (!known || v.strs().size() != 1)
         in.fail_fmt(r, Diag::UnknownCoastlineOption,
                     fmt::format("Coastline{{}} cannot return \"{}\"{}; it returns {}", what, did_you_mean(what, names),
-                                "Loops, Curves, OpenCurves, Points, ControlPoints, Outer, LoopsPerSurface, CoastCurves or "
-                                "Surfaces"));
+                                "Loops, Curves, OpenCurves, Points, ControlPoints, Outer, LoopsPerSurface, CoastCurves, "
+                                "Surfaces or Deviation"));
       continue;
     }
     for (double d : v.nums()) {
@@ -596,6 +633,10 @@ Value eval_coastline_query(Interpreter& in, ExprId e) {
                                 id, kSides[side]));
       for (std::size_t c = 0; c < imp.open_curves.size(); ++c)
         if (imp.open_sides[c] & (1u << side)) out.push_back(imp.open_curves[c]);
+      continue;
+    }
+    if (what == "Deviation") {
+      out.insert(out.end(), imp.deviation.begin(), imp.deviation.end());
       continue;
     }
     if (what == "Surfaces" && !imp.surfaces_made) {

@@ -1,0 +1,322 @@
+// Deviation of the coast curves from their source points, and control points put back
+// where it exceeds the bound (coast/deviation.h).
+#include "coast/deviation.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "base/parallel.h"
+
+namespace sm::coast {
+
+namespace {
+
+// Points of each span's sampled polyline (the span's own end points included): a cubic
+// span of a control polygon coarsened at gamma bends by far less than a gamma over an
+// eighth of its length, so the polyline is within a small fraction of the bound.
+constexpr int kSamples = 8;
+
+double point_segment_distance(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a;
+  const double l2 = norm2(ab);
+  double t = l2 > 0 ? dot(p - a, ab) / l2 : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  return norm(p - (a + t * ab));
+}
+
+double polyline_distance(const Vec3& p, const std::vector<Vec3>& line) {
+  double d = line.empty() ? HUGE_VAL : norm(p - line.front());
+  for (std::size_t i = 1; i < line.size(); ++i) d = std::min(d, point_segment_distance(p, line[i - 1], line[i]));
+  return d;
+}
+
+// One curve seen by the pass: its control points, spans and source points on the sphere.
+class CurveView {
+ public:
+  CurveView(const WorkCurve& c, const geo::PolarSphere& ps, const DeviationOptions& opt)
+      : c_(c), ps_(ps), opt_(opt), n_(static_cast<long>(c.full.size())), m_(static_cast<long>(c.keep.size())) {
+    src_.resize(c.uv.size());
+    for (std::size_t i = 0; i < c.uv.size(); ++i) src_[i] = ps.point(c.uv[i]);
+  }
+
+  // Control-polygon segments: s goes from keep[s] to keep[s + 1] (the last one of a
+  // periodic curve wraps to keep[0]).
+  long segments() const { return c_.periodic ? m_ : m_ - 1; }
+
+  // Source indices of segment s, from its first control point up to (not including) the
+  // next one, unwrapped (may run past n for the closing segment of a periodic curve).
+  std::pair<long, long> source_range(long s) const {
+    const long a = c_.keep[static_cast<std::size_t>(s)];
+    long b = s + 1 < m_ ? static_cast<long>(c_.keep[static_cast<std::size_t>(s + 1)]) : c_.keep[0] + n_;
+    return {a, b};
+  }
+  const Vec3& source(long j) const { return src_[static_cast<std::size_t>(((j % n_) + n_) % n_)]; }
+  double bound(long j) const {
+    const double g = c_.gamma[static_cast<std::size_t>(((j % n_) + n_) % n_)];
+    if (opt_.fixed > 0) return opt_.fixed;
+    return opt_.factor > 0 ? opt_.factor * g : HUGE_VAL;   // no bound: measured only
+  }
+
+  // The curve near segment s as a polyline on the sphere: the spans that pass by it.
+  void curve_near(long s, std::vector<Vec3>& line) const {
+    line.clear();
+    if (!opt_.bspline) {
+      line.push_back(ps_.point(control(s)));
+      line.push_back(ps_.point(control(s + 1)));
+      return;
+    }
+    long first = s - 1, last = s + 1;
+    if (!c_.periodic) first = std::max(first, -1L), last = std::min(last, m_ - 1);
+    for (long k = first; k <= last; ++k) append_span(k, line);
+  }
+
+  // The span that follows segment s, sampled.
+  void span(long s, std::vector<Vec3>& line) const {
+    line.clear();
+    if (!opt_.bspline) {
+      line.push_back(ps_.point(control(s)));
+      line.push_back(ps_.point(control(s + 1)));
+      return;
+    }
+    append_span(s, line);
+  }
+
+ private:
+  // Control point k: wrapped on a periodic curve; clamped on a piece, whose end points
+  // count three times (the spans -1 and m-1 then end exactly on them).
+  Vec2 control(long k) const {
+    const long i = c_.periodic ? ((k % m_) + m_) % m_ : std::clamp(k, 0L, m_ - 1);
+    return c_.uv[c_.keep[static_cast<std::size_t>(i)]];
+  }
+  void append_span(long k, std::vector<Vec3>& line) const {
+    const Vec2 a = control(k - 1), b = control(k), c = control(k + 1), d = control(k + 2);
+    for (int i = line.empty() ? 0 : 1; i <= kSamples; ++i) {
+      const double t = static_cast<double>(i) / kSamples, u = 1 - t;
+      const double wa = u * u * u, wb = 3 * t * t * t - 6 * t * t + 4, wc = -3 * t * t * t + 3 * t * t + 3 * t + 1,
+                   wd = t * t * t;
+      line.push_back(ps_.point((wa * a + wb * b + wc * c + wd * d) / 6.0));
+    }
+  }
+
+  const WorkCurve& c_;
+  const geo::PolarSphere& ps_;
+  const DeviationOptions& opt_;
+  long n_, m_;
+  std::vector<Vec3> src_;
+};
+
+// What one look at a curve found.
+struct CurveScan {
+  std::vector<std::uint32_t> add;   // source points to put back
+  double max = 0, max_ratio = 0;
+  long max_at = -1;
+  std::size_t over = 0;             // spans over the bound with no source point left
+  long over_at = -1;
+  std::size_t narrow = 0;           // spans over the bound whose points would make a spike
+  long narrow_at = -1;
+  double narrow_max = 0;            // the farthest source point of those
+};
+
+// Measures every segment of one curve; with `collect`, picks the point to put back on
+// each segment over the bound.
+// The angle (radians) at b between the directions to a and to c, in (u,v): the map is
+// conformal, so it is the angle on the sphere.
+double angle_at(Vec2 a, Vec2 b, Vec2 c) {
+  const Vec2 u = a - b, w = c - b;
+  return std::atan2(std::abs(u.x * w.y - u.y * w.x), dot(u, w));
+}
+
+CurveScan scan_curve(const WorkCurve& c, const geo::PolarSphere& ps, const DeviationOptions& opt,
+                     std::vector<double>* distances, const std::vector<char>* fresh) {
+  CurveScan out;
+  if (c.keep.size() < 2 || c.open_boundary) return out;
+  const CurveView v(c, ps, opt);
+  const long n = static_cast<long>(c.full.size());
+  const long m = static_cast<long>(c.keep.size());
+  const double min_angle = opt.min_angle_deg * geo::kDegToRad;
+  // A segment's curve depends on the control points two before to three after it.
+  auto touched = [&](long s) {
+    for (long k = s - 2; k <= s + 3; ++k) {
+      const long i = c.periodic ? ((k % m) + m) % m : k;
+      if (i >= 0 && i < m && (*fresh)[static_cast<std::size_t>(i)]) return true;
+    }
+    return false;
+  };
+  auto control = [&](long k) { return c.uv[c.keep[static_cast<std::size_t>(c.periodic ? ((k % m) + m) % m : k)]]; };
+  // Putting j back between the control points of segment s: no corner sharper than
+  // min_angle at j, nor at its two neighbours unless they were already that sharp (a
+  // point deep in an inlet or at the tip of a spit narrower than the accuracy would make
+  // a spike the mesh cannot follow at that size).
+  auto allowed = [&](long s, long j) {
+    const Vec2 A = control(s), B = control(s + 1), J = c.uv[static_cast<std::size_t>(j % n)];
+    if (angle_at(A, J, B) < min_angle) return false;
+    if (c.periodic || s > 0) {
+      const Vec2 P = control(s - 1);
+      if (angle_at(P, A, J) < std::min(min_angle, angle_at(P, A, B))) return false;
+    }
+    if (c.periodic || s + 2 < m) {
+      const Vec2 N = control(s + 2);
+      if (angle_at(J, B, N) < std::min(min_angle, angle_at(A, B, N))) return false;
+    }
+    return true;
+  };
+  std::vector<Vec3> near, own, source_line;
+  std::vector<std::pair<double, long>> candidates;
+  for (long s = 0; s < v.segments(); ++s) {
+    if (fresh && !touched(s)) continue;
+    const auto [a, b] = v.source_range(s);
+    v.curve_near(s, near);
+    double segment_ratio = 0, segment_max = 0;
+    long segment_max_at = -1;
+    candidates.clear();
+    // Source points to the curve.
+    const bool last_point_too = !c.periodic && s + 1 == v.segments();
+    for (long j = a; j < b || (j == b && last_point_too); ++j) {
+      const double d = polyline_distance(v.source(j), near);
+      const double r = d / v.bound(j);
+      if (distances) (*distances)[static_cast<std::size_t>(j % n)] = d;
+      if (d > segment_max) segment_max = d, segment_max_at = j % n;
+      segment_ratio = std::max(segment_ratio, r);
+      if (j > a && j < b) candidates.emplace_back(r, j);
+    }
+    out.max_ratio = std::max(out.max_ratio, segment_ratio);
+    // The curve to the source points: the span that follows the segment against the
+    // source polyline from the control point before it to the one after.
+    v.span(s, own);
+    long from = a, to = b;
+    if (s > 0) {
+      from = v.source_range(s - 1).first;
+    } else if (c.periodic) {
+      from = v.source_range(v.segments() - 1).first - n;
+    }
+    if (s + 1 < v.segments()) {
+      to = v.source_range(s + 1).second;
+    } else if (c.periodic) {
+      to = v.source_range(0).second + n;
+    }
+    source_line.clear();
+    for (long j = from; j <= to; ++j) source_line.push_back(v.source(j));
+    double curve_ratio = 0;
+    for (const Vec3& p : own) curve_ratio = std::max(curve_ratio, polyline_distance(p, source_line) / v.bound(a));
+    // A segment whose points would make a spike counts apart: a feature narrower than the
+    // accuracy, left out on purpose.
+    bool narrow = false;
+    auto account = [&] {
+      if (narrow) {
+        if (segment_max > out.narrow_max) out.narrow_max = segment_max;
+      } else if (segment_max > out.max) {
+        out.max = segment_max, out.max_at = segment_max_at;
+      }
+    };
+    if (segment_ratio <= 1 && curve_ratio <= 1) {
+      account();
+      continue;
+    }
+    // The farthest source point that makes no spike; a few tries, farthest first.
+    std::sort(candidates.begin(), candidates.end(), [](const auto& x, const auto& y) {
+      return x.first != y.first ? x.first > y.first : x.second < y.second;
+    });
+    long pick = -1;
+    for (std::size_t t = 0; t < candidates.size() && t < 8 && pick < 0; ++t)
+      if (allowed(s, candidates[t].second)) pick = candidates[t].second;
+    if (pick >= 0) {
+      out.add.push_back(static_cast<std::uint32_t>(pick % n));
+    } else {
+      if (candidates.empty()) {
+        ++out.over;
+        if (out.over_at < 0) out.over_at = a % n;
+      } else {
+        ++out.narrow;
+        narrow = true;
+        if (out.narrow_at < 0) out.narrow_at = candidates.front().second % n;
+      }
+    }
+    account();
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<double> source_distances(const WorkCurve& c, const DeviationOptions& opt) {
+  const geo::PolarSphere ps({0, 0, 0}, opt.radius);
+  std::vector<double> d(c.full.size(), 0.0);
+  scan_curve(c, ps, opt, &d, nullptr);
+  return d;
+}
+
+DeviationReport bound_deviation(std::vector<WorkCurve>& curves, const DeviationOptions& opt) {
+  DeviationReport rep;
+  const geo::PolarSphere ps({0, 0, 0}, opt.radius);
+  const int threads = resolve_thread_count(opt.threads);
+  std::vector<CurveScan> scans(curves.size());
+  std::vector<char> active(curves.size(), 1), changed(curves.size(), 0);
+  std::vector<std::vector<char>> fresh(curves.size());   // per control point: put back last round
+  const int rounds = opt.fixed > 0 || opt.factor > 0 ? opt.max_rounds : 0;
+  for (int round = 0; round < rounds; ++round) {
+    parallel_for_chunks(threads, curves.size(), 64, [&](std::size_t b, std::size_t e) {
+      for (std::size_t i = b; i < e; ++i)
+        if (active[i]) scans[i] = scan_curve(curves[i], ps, opt, nullptr, round == 0 ? nullptr : &fresh[i]);
+    });
+    if (round == 0)
+      for (const CurveScan& s : scans) rep.max_before = std::max({rep.max_before, s.max, s.narrow_max});
+    bool any = false;
+    for (std::size_t i = 0; i < curves.size(); ++i) {
+      if (!active[i]) continue;
+      CurveScan& s = scans[i];
+      if (s.add.empty()) {
+        active[i] = 0;
+        continue;
+      }
+      std::vector<std::uint32_t>& keep = curves[i].keep;
+      std::sort(s.add.begin(), s.add.end());
+      std::vector<std::uint32_t> merged;
+      merged.reserve(keep.size() + s.add.size());
+      std::merge(keep.begin(), keep.end(), s.add.begin(), s.add.end(), std::back_inserter(merged));
+      merged.erase(std::unique(merged.begin(), merged.end()), merged.end());
+      fresh[i].assign(merged.size(), 0);
+      for (std::size_t k = 0, a = 0; k < merged.size(); ++k) {   // which control points are new
+        while (a < s.add.size() && s.add[a] < merged[k]) ++a;
+        if (a < s.add.size() && s.add[a] == merged[k]) fresh[i][k] = 1;
+      }
+      rep.points_added += merged.size() - keep.size();
+      keep = std::move(merged);
+      changed[i] = 1;
+      any = true;
+    }
+    rep.rounds = round + 1;
+    if (!any) break;
+  }
+  // The final figures over every curve.
+  std::vector<std::vector<double>> dist(curves.size());
+  parallel_for_chunks(threads, curves.size(), 64, [&](std::size_t b, std::size_t e) {
+    for (std::size_t i = b; i < e; ++i) {
+      if (curves[i].open_boundary || curves[i].keep.size() < 2) continue;
+      dist[i].assign(curves[i].full.size(), 0.0);
+      scans[i] = scan_curve(curves[i], ps, opt, &dist[i], nullptr);
+    }
+  });
+  std::vector<double> all;
+  if (rep.rounds == 0)   // no bound: measured only
+    for (const CurveScan& s : scans) rep.max_before = std::max({rep.max_before, s.max, s.narrow_max});
+  for (std::size_t i = 0; i < curves.size(); ++i) {
+    const CurveScan& s = scans[i];
+    rep.curves_changed += changed[i] ? 1 : 0;
+    if (s.max > rep.max) rep.max = s.max, rep.where = curves[i].full[static_cast<std::size_t>(s.max_at)];
+    rep.max_ratio = std::max(rep.max_ratio, s.max_ratio);
+    if (s.over > 0 && rep.left_over_bound == 0) rep.where_over = curves[i].full[static_cast<std::size_t>(s.over_at)];
+    rep.left_over_bound += s.over;
+    if (s.narrow > 0 && rep.narrow_features == 0) rep.where_narrow = curves[i].full[static_cast<std::size_t>(s.narrow_at)];
+    rep.narrow_features += s.narrow;
+    rep.narrow_max = std::max(rep.narrow_max, s.narrow_max);
+    all.insert(all.end(), dist[i].begin(), dist[i].end());
+  }
+  if (!all.empty()) {
+    const std::size_t k = std::min(all.size() - 1, static_cast<std::size_t>(0.95 * static_cast<double>(all.size())));
+    std::nth_element(all.begin(), all.begin() + static_cast<long>(k), all.end());
+    rep.p95 = all[k];
+  }
+  return rep;
+}
+
+}  // namespace sm::coast
