@@ -287,3 +287,73 @@ TEST_CASE("passages: SeaAt keeps the sea holding the point; a point on land name
   CHECK(bad.error().option == "SeaAt");
   CHECK(bad.error().message.find("record 1") != std::string::npos);
 }
+
+TEST_CASE("passages: KeepOpen keeps the canal open whatever MinChannelWidth, reported with its width") {
+  ImportOptions o = pass_options(1500);
+  o.keep_open = {{0.1, 0}};   // in the canal, off its middle
+  auto m = build_coast_model(pass_canal(kPassW), o);
+  if (!m.ok()) MESSAGE(m.error().to_string());
+  REQUIRE(m.ok());
+  pass_check_clean(*m);
+  CHECK(m->surfaces.size() == 1);
+  CHECK(m->report.count(RepairKind::ClosedPassage) == 0);
+  CHECK(pass_points_in(*m, -0.15, 0.15, kPassW / 2 + 1e-9) > 0);
+  REQUIRE(m->report.count(RepairKind::KeptOpen) == 1);
+  for (const RepairEntry& e : m->report.repair)
+    if (e.kind == RepairKind::KeptOpen) {
+      CHECK(e.where.lon == 0.1);
+      CHECK(e.value == doctest::Approx(1112).epsilon(0.01));
+    }
+}
+
+TEST_CASE("passages: KeepOpen keeps a strait between two islands open; the one elsewhere still merges") {
+  Coastline c;
+  c.file = "islands";
+  c.rings.push_back(pass_ring({{-0.5, -0.3}, {-kPassW / 2, -0.3}, {-kPassW / 2, 0.3}, {-0.5, 0.3}}, 0));
+  c.rings.push_back(pass_ring({{kPassW / 2, -0.3}, {0.5, -0.3}, {0.5, 0.3}, {kPassW / 2, 0.3}}, 1));
+  ImportOptions o = pass_options(1500);
+  o.keep_open = {{0, 0.2}};
+  auto m = build_coast_model(c, o);
+  REQUIRE(m.ok());
+  pass_check_clean(*m);
+  REQUIRE(m->surfaces.size() == 1);
+  CHECK(m->surfaces[0].holes.size() == 2);
+  CHECK(m->report.count(RepairKind::ClosedPassage) == 0);
+  CHECK(m->report.count(RepairKind::KeptOpen) == 1);
+}
+
+TEST_CASE("passages: a KeepOpen point on land, or with a dam across its passage, is an error") {
+  ImportOptions o = pass_options(1500);
+  o.keep_open = {{0, 0.5}};   // in the north wall
+  auto land = build_coast_model(pass_canal(kPassW), o);
+  REQUIRE_FALSE(land.ok());
+  CHECK(land.error().option == "KeepOpen");
+  CHECK(land.error().message.find("lies on land") != std::string::npos);
+
+  o.keep_open = {{0, 0}};
+  o.dams = {{{0.05, -0.5}, {0.05, 0.5}}};   // across the canal near the point
+  auto dam = build_coast_model(pass_canal(kPassW), o);
+  REQUIRE_FALSE(dam.ok());
+  CHECK(dam.error().option == "KeepOpen");
+  CHECK(dam.error().message.find("dam from") != std::string::npos);
+}
+
+TEST_CASE("passages: each sea SeaAt drops is reported with a point inside it and its area") {
+  ImportOptions o = pass_options(1500);
+  o.sea_at = {{-0.6, 0.5}};
+  auto m = build_coast_model(pass_canal(kPassW), o);
+  REQUIRE(m.ok());
+  REQUIRE(m->report.count(RepairKind::DroppedSea) == 1);
+  for (const RepairEntry& e : m->report.repair)
+    if (e.kind == RepairKind::DroppedSea) {
+      // The east sea: lon 0.2 .. 1, lat -1 .. 1 (0.8 x 2 degrees of 111.2 km).
+      CHECK(e.where.lon > 0.2);
+      CHECK(e.where.lon < 1);
+      CHECK(std::abs(e.where.lat) < 1);
+      CHECK(e.value == doctest::Approx(0.8 * 2 * 111.19 * 111.19).epsilon(0.01));
+    }
+  const auto items = m->report.items();
+  bool ranked = false;
+  for (const ReportLine& l : items) ranked = ranked || (l.sea_dropped && l.rank == m->report.repair.back().value);
+  CHECK(ranked);
+}
