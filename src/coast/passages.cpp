@@ -26,6 +26,8 @@ namespace {
 
 constexpr double kWidthTolerance = 1e-9;   // relative: "exactly W" stays open
 constexpr double kHalfPi = 1.5707963267948966;
+// The most original points put back on one segment of a refused cut (passages.h).
+constexpr std::size_t kMaxPutBack = 4096;
 
 const geo::PolarSphere& unit_sphere() {
   static const geo::PolarSphere ps({0, 0, 0}, 1.0);
@@ -458,6 +460,11 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
   auto near = [&](Vec2 lo, Vec2 hi, auto&& f) { return grid.any_near(lo, hi, f); };
   SegmentIndex moved;
   std::vector<std::pair<Vec2, Vec2>> made;
+  struct Refine {
+    std::uint32_t loop, from, to;   // a refused cut's segment (its end nodes)
+    Vec2 o0, o1;                    // the other segment of the cut
+  };
+  std::vector<Refine> refine;
   bool any = false;
   for (const Candidate& c : cands) {
     const auto& pa = polys[c.la];
@@ -478,7 +485,19 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
     if (followed && la == lb && (sa == sb || !passage_on_one_ring(la, sa, sb, c.width))) continue;
     if (w.opt.keep_passages && la != lb) continue;   // a strait between two coasts
     if (w.gate_closed(a0, b0)) continue;              // a passage kept open
-    if (!cut_is_clean_near(near, a0, a1, b0, b1, made)) continue;
+    if (!cut_is_clean_near(near, a0, a1, b0, b1, made)) {
+      // Long segments at a pinch (a 30 m strait between 2 km segments) make no clean
+      // quad: their original points within W of the other side are put back at the
+      // round's end and the place is tried again, so that a passage narrower than W is
+      // not left open for that (KeepPassages = 0: every such passage is to be closed).
+      if (!w.opt.keep_passages) {
+        const FlatLoop& fa = w.flat[la];
+        const FlatLoop& fb = w.flat[lb];
+        refine.push_back({la, fa.kept[sa], fa.kept[(sa + 1) % fa.kept.size()], b0, b1});
+        refine.push_back({lb, fb.kept[sb], fb.kept[(sb + 1) % fb.kept.size()], a0, a1});
+      }
+      continue;
+    }
     if (w.opt.keep_passages && !cut_fills_dead_end(w, la, sa, sb)) continue;   // a passage
     made.push_back({a0, b1});
     made.push_back({b0, a1});
@@ -492,6 +511,45 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
     }
     if (dropped == 0)   // a cut that only trims narrow water is listed as NarrowWater
       log.push_back({RepairKind::ClosedPassage, info.record, info.id, unit_sphere().lonlat_from_param(c.where), c.width});
+    any = true;
+  }
+  // The refused cuts' segments: their original points kept (node indices are those of
+  // the loops as they are now; a loop a cut replaced since is skipped).
+  // Only where the original points cross nothing: not the round's segments (but the one
+  // they replace), the dams made, the points put back before, nor themselves (the source
+  // may cross itself where the coarse segment did not).
+  std::vector<std::pair<Vec2, Vec2>> put_back;
+  for (const auto& [l, from, to, o0, o1] : refine) {
+    FlatLoop& f = w.flat[l];
+    if (f.dead) continue;
+    const std::size_t n = f.nodes.size();
+    std::vector<std::uint32_t> run;   // the original points within W of the other segment
+    for (std::size_t i = (from + 1) % n, s = 0; i != to && s < n; i = (i + 1) % n, ++s)
+      if (!f.nodes[i].kept && uv_point_segment_metres(f.nodes[i].uv, o0, o1, R) < W)
+        run.push_back(static_cast<std::uint32_t>(i));
+    if (run.empty() || run.size() > kMaxPutBack) continue;
+    std::vector<Vec2> pts{f.nodes[from].uv};
+    for (std::uint32_t i : run) pts.push_back(f.nodes[i].uv);
+    pts.push_back(f.nodes[to].uv);
+    const Vec2 c0 = pts.front(), c1 = pts.back();
+    auto meets = [](Vec2 p, Vec2 q, Vec2 r, Vec2 t) {
+      if (p == r || p == t || q == r || q == t) return false;   // neighbours at a shared end
+      return segments_meet(p, q, r, t);
+    };
+    bool crosses = false;
+    for (std::size_t i = 0; i + 1 < pts.size() && !crosses; ++i) {
+      const Vec2 p = pts[i], q = pts[i + 1];
+      const Vec2 lo{std::min(p.x, q.x), std::min(p.y, q.y)}, hi{std::max(p.x, q.x), std::max(p.y, q.y)};
+      crosses = grid.any_near(lo, hi, [&](Vec2 r, Vec2 t) { return !(r == c0 && t == c1) && meets(p, q, r, t); });
+      for (const auto& e : made) crosses = crosses || meets(p, q, e.first, e.second);
+      for (const auto& e : put_back) crosses = crosses || meets(p, q, e.first, e.second);
+      for (std::size_t k = i + 2; k + 1 < pts.size() && !crosses; ++k) crosses = meets(p, q, pts[k], pts[k + 1]);
+    }
+    if (crosses) continue;
+    for (std::size_t i = 0; i + 1 < pts.size(); ++i) put_back.push_back({pts[i], pts[i + 1]});
+    for (std::uint32_t i : run) f.nodes[i].kept = true;
+    f.index();
+    f.changed = true;
     any = true;
   }
   return any;

@@ -1,6 +1,6 @@
 // KeepOpen on real data: the Mediterranean of mediterranean_passages.geo (world_i_A100.txt,
 // 5 km accuracy, MinChannelWidth = 2 km, SeaAt in the Ionian Sea). Without KeepOpen the
-// Bosporus (1275 m here) and the Dardanelles (1861 m) are closed, and the Sea of Marmara (11,442 km^2)
+// Bosporus (1275 m here) and the Dardanelles (1861 m) are closed, and the Sea of Marmara
 // and the Black Sea are dropped. KeepOpen at a point of each keeps both straits open: the
 // Black Sea comes with the Mediterranean (open curves on the East and North, as with
 // MinChannelWidth = 500 m). Closures and DroppedSeas list the rest with places and figures.
@@ -36,6 +36,6 @@ For c In {1 : 3}
          c, #cl[] / 3, bosporus, dardanelles, #ds[] / 3, largest, #Coastline{c, "OpenCurves", "East"},
          #Coastline{c, "OpenCurves", "North"});
 EndFor
-// expect: Coastline 1: 15 closures (Bosporus 1, Dardanelles 1), 14 seas dropped, largest 321812 km^2; open E 0 N 0
-// expect: Coastline 2: 14 closures (Bosporus 0, Dardanelles 1), 13 seas dropped, largest 333435 km^2; open E 0 N 0
-// expect: Coastline 3: 13 closures (Bosporus 0, Dardanelles 0), 12 seas dropped, largest 117233 km^2; open E 2 N 4
+// expect: Coastline 1: 17 closures (Bosporus 1, Dardanelles 1), 16 seas dropped, largest 321795 km^2; open E 0 N 0
+// expect: Coastline 2: 16 closures (Bosporus 0, Dardanelles 1), 15 seas dropped, largest 333418 km^2; open E 0 N 0
+// expect: Coastline 3: 15 closures (Bosporus 0, Dardanelles 0), 14 seas dropped, largest 117211 km^2; open E 2 N 4
