@@ -45,8 +45,7 @@ const char* describe(RepairKind k) {
 }
 
 bool is_passage_kind(RepairKind k) {
-  return k == RepairKind::ClosedPassage || k == RepairKind::NarrowWater || k == RepairKind::DamPlaced ||
-         k == RepairKind::KeptOpen;
+  return k == RepairKind::ClosedPassage || k == RepairKind::NarrowWater || k == RepairKind::DamPlaced;
 }
 
 // The figure each kind of change is told with ("" when its place says it all).
@@ -84,6 +83,7 @@ std::vector<ReportLine> ImportReport::items() const {
     l.where = e.where;
     l.passage = is_passage_kind(e.kind);
     l.sea_dropped = e.kind == RepairKind::DroppedSea;
+    l.kept_open = e.kind == RepairKind::KeptOpen;
     if (e.kind == RepairKind::ClosedPassage || e.kind == RepairKind::DroppedSea) l.rank = e.value;
     l.text = fmt::format("record {} (id {}) at lon {:.5f} lat {:.5f}: {}{}", e.record, e.id, e.where.lon, e.where.lat,
                          l.what, l.figure.empty() ? std::string() : " (" + l.figure + ")");

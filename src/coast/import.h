@@ -117,6 +117,7 @@ struct ReportLine {
   geo::LonLat where;
   bool passage = false;    ///< a closed passage, a dam or removed narrow water
   bool sea_dropped = false;  ///< a sea dropped by SeaAt
+  bool kept_open = false;    ///< a passage kept open by KeepOpen
   /// The figure as a number when its largest matter most (a closed passage's width, a
   /// dropped sea's area): a short list shows the largest first; NaN otherwise.
   double rank = std::numeric_limits<double>::quiet_NaN();

@@ -437,9 +437,10 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
   auto imp = std::make_shared<CoastlineImport>();
   for (const coast::ReportLine& line : m.report.items()) {
     const std::string name = fmt::format("Coastline[{}]", id);
-    auto h = line.sea_dropped ? in.diags().report(d.option_at.find("SeaAt")->second, Diag::CoastlineSeasDropped,
-                                                  fmt::format("{}: {}", name, line.text))
-             : line.passage   ? in.diags().report(at, Diag::CoastlinePassage, fmt::format("{}: {}", name, line.text))
+    const std::string text = fmt::format("{}: {}", name, line.text);
+    auto h = line.sea_dropped ? in.diags().report(d.option_at.find("SeaAt")->second, Diag::CoastlineSeasDropped, text)
+             : line.kept_open ? in.diags().report(d.option_at.find("KeepOpen")->second, Diag::CoastlineKeptOpen, text)
+             : line.passage   ? in.diags().report(at, Diag::CoastlinePassage, text)
                               : in.diags().report(at, Diag::CoastlineRepair, name, line.text);
     h.item(coastline_item(line));
   }
