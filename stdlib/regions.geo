@@ -29,7 +29,8 @@ If (!Exists(RegionsGeoLoaded))
   // LonLatText shoreline file); RegionalBox[] = {W, E, S, N}; and
   // optionally RegionalAccuracy (m, default 5 km: the coastline's gamma), RegionalSeaAt[] =
   // {lon, lat, ...} (keep only the seas holding these points), RegionalMinChannelWidth (m:
-  // close passages narrower than this), RegionalDams[] = {lon1, lat1, lon2, lat2, ...} and
+  // close passages narrower than this), RegionalKeepOpen[] = {lon, lat, ...} (the passages
+  // at these points stay open), RegionalDams[] = {lon1, lat1, lon2, lat2, ...} and
   // RegionalCoastline (the Coastline id, default 1). Needs a PolarSphere (Call EarthSphere).
   // Makes the sea surfaces and the physical groups "sea", "coast" (shores and dams) and
   // "open" (the box sides crossing the kept seas). Output: RegionalSurfaces[],
@@ -61,6 +62,9 @@ If (!Exists(RegionsGeoLoaded))
     EndIf
     If (Exists(RegionalDams[]))
       Coastline[regional_id_].Dams = {RegionalDams[]};
+    EndIf
+    If (Exists(RegionalKeepOpen[]))
+      Coastline[regional_id_].KeepOpen = {RegionalKeepOpen[]};
     EndIf
     If (Exists(RegionalSeaAt[]))
       Coastline[regional_id_].SeaAt = {RegionalSeaAt[]};

@@ -39,6 +39,8 @@ const char* describe(RepairKind k) {
     case RepairKind::ClosedPassage: return "passage narrower than MinChannelWidth closed by two dams";
     case RepairKind::NarrowWater: return "water narrower than MinChannelWidth behind a dam removed";
     case RepairKind::DamPlaced: return "dam placed across the water";
+    case RepairKind::KeptOpen: return "passage kept open by KeepOpen";
+    case RepairKind::DroppedSea: return "sea holding no SeaAt point dropped";
   }
   return "?";
 }
@@ -52,7 +54,9 @@ std::string figure_of(const RepairEntry& e) {
   switch (e.kind) {
     case RepairKind::NarrowStrait:
     case RepairKind::MergedIslands:
-    case RepairKind::ClosedPassage: return fmt::format("width {:.0f} m", e.value);
+    case RepairKind::ClosedPassage:
+    case RepairKind::KeptOpen: return fmt::format("width {:.0f} m", e.value);
+    case RepairKind::DroppedSea: return fmt::format("{:.0f} km^2", e.value);
     case RepairKind::NarrowWater: return fmt::format("mean width {:.0f} m", e.value);
     case RepairKind::DamPlaced: return fmt::format("{:.0f} m long", e.value);
     case RepairKind::Refined:
@@ -82,6 +86,9 @@ std::vector<ReportLine> ImportReport::items() const {
     l.where.lon = std::remainder(l.where.lon, 360.0);
     if (l.where.lon <= -180) l.where.lon += 360;
     l.passage = is_passage_kind(e.kind);
+    l.sea_dropped = e.kind == RepairKind::DroppedSea;
+    l.kept_open = e.kind == RepairKind::KeptOpen;
+    if (e.kind == RepairKind::ClosedPassage || e.kind == RepairKind::DroppedSea) l.rank = e.value;
     l.text = fmt::format("record {} (id {}) at lon {:.5f} lat {:.5f}: {}{}", e.record, e.id, l.where.lon, l.where.lat,
                          l.what, l.figure.empty() ? std::string() : " (" + l.figure + ")");
     out.push_back(std::move(l));
@@ -214,6 +221,43 @@ Result<std::vector<char>> seas_at(const std::vector<geo::LonLat>& points, const 
     return e;
   }
   return kept;
+}
+
+// A point of the sea with outer loop `outer` and holes `holes`: just left of (inside) the
+// middle of one of its outer loop's longest segments, the first found outside every hole.
+Vec2 point_inside(const std::vector<std::vector<Vec2>>& polys, std::uint32_t outer,
+                  const std::vector<std::uint32_t>& holes) {
+  const auto& p = polys[outer];
+  std::vector<std::size_t> order(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) order[i] = i;
+  auto len = [&](std::size_t i) { return norm(p[(i + 1) % p.size()] - p[i]); };
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return len(a) > len(b); });
+  for (std::size_t k = 0; k < std::min<std::size_t>(order.size(), 64); ++k) {
+    const Vec2 a = p[order[k]], b = p[(order[k] + 1) % p.size()], d = b - a;
+    const Vec2 x = 0.5 * (a + b) + 1e-3 * Vec2{-d.y, d.x};
+    bool ok = point_in_ring(p, x);
+    for (std::uint32_t h : holes) ok = ok && !point_in_ring(polys[h], x);
+    if (ok) return x;
+  }
+  return p.empty() ? Vec2{0, 0} : p[0];
+}
+
+// The area in km^2 of a sea on the sphere of `radius` (metres): its loops' signed (u,v)
+// areas (outer counter-clockwise, holes clockwise) as triangle fans, each triangle scaled
+// by the PolarSphere's area factor at its centroid.
+double sea_area_km2(const std::vector<std::vector<Vec2>>& polys, std::uint32_t outer,
+                    const std::vector<std::uint32_t>& holes, double radius) {
+  double a = 0;
+  auto add = [&](const std::vector<Vec2>& p) {
+    for (std::size_t i = 1; i + 1 < p.size(); ++i) {
+      const Vec2 c = (1.0 / 3.0) * (p[0] + p[i] + p[i + 1]);
+      const double lambda = 2.0 * radius / (1.0 + norm2(c));
+      a += 0.5 * cross(p[i] - p[0], p[i + 1] - p[0]) * lambda * lambda;
+    }
+  };
+  add(polys[outer]);
+  for (std::uint32_t h : holes) add(polys[h]);
+  return std::abs(a) * 1e-6;
 }
 
 }  // namespace
@@ -425,11 +469,12 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
   // Passages and dams, on the simple loops oriented water on the left; the dams are
   // checked against the curves like any coast, and the loops they make are oriented by
   // construction.
-  if (opt.min_channel_width > 0 || !opt.dams.empty()) {
+  if (opt.min_channel_width > 0 || !opt.dams.empty() || !opt.keep_open.empty()) {
     PassageOptions po;
     po.min_width = opt.min_channel_width;
     po.keep_passages = opt.keep_passages;
     po.dams = opt.dams;
+    po.keep_open = opt.keep_open;
     po.radius = opt.radius;
     auto closed = close_passages(curves, loops, po, rep.repair);
     if (!closed) {
@@ -493,6 +538,10 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
         continue;
       }
       ++model.seas_dropped;
+      const WorkCurve& c = curves[loops[outers[o]].curves[0]];
+      rep.repair.push_back({RepairKind::DroppedSea, c.record, c.id,
+                            ps.lonlat_from_param(point_inside(polys, outers[o], holes_of[o])),
+                            sea_area_km2(polys, outers[o], holes_of[o], opt.radius)});
     }
     outers = std::move(outers_kept);
     holes_of = std::move(holes_kept);

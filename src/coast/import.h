@@ -4,6 +4,7 @@
 // periodic B-splines; this is the kernel behind `Coastline[n] = ...; loops[] = Coastline{n};`.
 #pragma once
 
+#include <limits>
 #include <optional>
 #include <utility>
 #include <string>
@@ -45,6 +46,8 @@ struct ImportOptions {
   bool keep_passages = false;
   /// Dams by hand: each segment between two lon/lat points closes the water it crosses.
   std::vector<std::pair<geo::LonLat, geo::LonLat>> dams;
+  /// Points in passages that MinChannelWidth must leave open (passages.h).
+  std::vector<geo::LonLat> keep_open;
   /// Keep only the seas (surfaces) holding one of these points; empty: every sea.
   std::vector<geo::LonLat> sea_at;
   int max_repair_rounds = 64;
@@ -100,6 +103,8 @@ enum class RepairKind {
   ClosedPassage,  // a passage narrower than min_channel_width closed by dams (width in metres)
   NarrowWater,    // water cut off by a closure, all narrower than min_channel_width: dropped (mean width)
   DamPlaced,      // a dam by hand closing the water it crosses (its length in metres)
+  KeptOpen,       // a passage kept open by a KeepOpen point (its width there in metres)
+  DroppedSea,     // a sea holding no SeaAt point, dropped (a point inside it, its area in km^2)
 };
 
 struct RepairEntry {
@@ -119,6 +124,11 @@ struct ReportLine {
   bool has_place = false;  ///< `where` is the change's place
   geo::LonLat where;
   bool passage = false;    ///< a closed passage, a dam or removed narrow water
+  bool sea_dropped = false;  ///< a sea dropped by SeaAt
+  bool kept_open = false;    ///< a passage kept open by KeepOpen
+  /// The figure as a number when its largest matter most (a closed passage's width, a
+  /// dropped sea's area): a short list shows the largest first; NaN otherwise.
+  double rank = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct ImportReport {
@@ -140,7 +150,7 @@ struct CoastModel {
   std::vector<CoastLoop> loops;
   std::vector<CoastSurface> surfaces;      // outer loop first in each; ocean first
   std::vector<std::uint32_t> unassigned;   // hole loops with no outer (no Antarctica, no region)
-  std::size_t seas_dropped = 0;            // surfaces left out by sea_at
+  std::size_t seas_dropped = 0;            // surfaces left out by sea_at (each a DroppedSea entry)
   /// The Region held no shoreline: the model is its box, one loop of open boundary.
   bool region_empty = false;
   ImportReport report;

@@ -3,8 +3,10 @@
 #include "coast/passages.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <map>
+#include <set>
 #include <optional>
 #include <tuple>
 #include <cmath>
@@ -24,6 +26,8 @@ namespace {
 
 constexpr double kWidthTolerance = 1e-9;   // relative: "exactly W" stays open
 constexpr double kHalfPi = 1.5707963267948966;
+// The most original points put back on one segment of a refused cut (passages.h).
+constexpr std::size_t kMaxPutBack = 4096;
 
 const geo::PolarSphere& unit_sphere() {
   static const geo::PolarSphere ps({0, 0, 0}, 1.0);
@@ -76,12 +80,33 @@ struct DamInfo {
   std::int64_t id;
 };
 
+using UvKey = std::pair<std::uint64_t, std::uint64_t>;
+UvKey uv_key(Vec2 p) { return {std::bit_cast<std::uint64_t>(p.x), std::bit_cast<std::uint64_t>(p.y)}; }
+
+// A KeepOpen point's passage: the kept segments (by their start points, which cuts keep)
+// of its two banks near it. A cut or dam with one segment on each bank would close it.
+struct Gate {
+  geo::LonLat where;
+  double width = 0;   // metres between the two banks' nearest points
+  std::set<UvKey> bank[2];
+  bool closes(Vec2 a0, Vec2 b0) const {
+    const UvKey a = uv_key(a0), b = uv_key(b0);
+    return (bank[0].count(a) && bank[1].count(b)) || (bank[1].count(a) && bank[0].count(b));
+  }
+};
+
 struct Work {
   std::vector<WorkCurve>& curves;
   const std::size_t n_curves;   // curves before this pass
   std::vector<FlatLoop> flat;
   std::vector<DamInfo> dams;
   const PassageOptions& opt;
+  std::vector<Gate> gates = {};
+  bool gate_closed(Vec2 a0, Vec2 b0) const {
+    for (const Gate& g : gates)
+      if (g.closes(a0, b0)) return true;
+    return false;
+  }
 };
 
 FlatLoop flatten(const std::vector<WorkCurve>& curves, const WorkLoop& loop) {
@@ -435,6 +460,11 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
   auto near = [&](Vec2 lo, Vec2 hi, auto&& f) { return grid.any_near(lo, hi, f); };
   SegmentIndex moved;
   std::vector<std::pair<Vec2, Vec2>> made;
+  struct Refine {
+    std::uint32_t loop, from, to;   // a refused cut's segment (its end nodes)
+    Vec2 o0, o1;                    // the other segment of the cut
+  };
+  std::vector<Refine> refine;
   bool any = false;
   for (const Candidate& c : cands) {
     const auto& pa = polys[c.la];
@@ -454,7 +484,20 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
     const bool followed = w.flat[c.la].dead || w.flat[c.lb].dead;
     if (followed && la == lb && (sa == sb || !passage_on_one_ring(la, sa, sb, c.width))) continue;
     if (w.opt.keep_passages && la != lb) continue;   // a strait between two coasts
-    if (!cut_is_clean_near(near, a0, a1, b0, b1, made)) continue;
+    if (w.gate_closed(a0, b0)) continue;              // a passage kept open
+    if (!cut_is_clean_near(near, a0, a1, b0, b1, made)) {
+      // Long segments at a pinch (a 30 m strait between 2 km segments) make no clean
+      // quad: their original points within W of the other side are put back at the
+      // round's end and the place is tried again, so that a passage narrower than W is
+      // not left open for that (KeepPassages = 0: every such passage is to be closed).
+      if (!w.opt.keep_passages) {
+        const FlatLoop& fa = w.flat[la];
+        const FlatLoop& fb = w.flat[lb];
+        refine.push_back({la, fa.kept[sa], fa.kept[(sa + 1) % fa.kept.size()], b0, b1});
+        refine.push_back({lb, fb.kept[sb], fb.kept[(sb + 1) % fb.kept.size()], a0, a1});
+      }
+      continue;
+    }
     if (w.opt.keep_passages && !cut_fills_dead_end(w, la, sa, sb)) continue;   // a passage
     made.push_back({a0, b1});
     made.push_back({b0, a1});
@@ -468,6 +511,45 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
     }
     if (dropped == 0)   // a cut that only trims narrow water is listed as NarrowWater
       log.push_back({RepairKind::ClosedPassage, info.record, info.id, unit_sphere().lonlat_from_param(c.where), c.width});
+    any = true;
+  }
+  // The refused cuts' segments: their original points kept (node indices are those of
+  // the loops as they are now; a loop a cut replaced since is skipped).
+  // Only where the original points cross nothing: not the round's segments (but the one
+  // they replace), the dams made, the points put back before, nor themselves (the source
+  // may cross itself where the coarse segment did not).
+  std::vector<std::pair<Vec2, Vec2>> put_back;
+  for (const auto& [l, from, to, o0, o1] : refine) {
+    FlatLoop& f = w.flat[l];
+    if (f.dead) continue;
+    const std::size_t n = f.nodes.size();
+    std::vector<std::uint32_t> run;   // the original points within W of the other segment
+    for (std::size_t i = (from + 1) % n, s = 0; i != to && s < n; i = (i + 1) % n, ++s)
+      if (!f.nodes[i].kept && uv_point_segment_metres(f.nodes[i].uv, o0, o1, R) < W)
+        run.push_back(static_cast<std::uint32_t>(i));
+    if (run.empty() || run.size() > kMaxPutBack) continue;
+    std::vector<Vec2> pts{f.nodes[from].uv};
+    for (std::uint32_t i : run) pts.push_back(f.nodes[i].uv);
+    pts.push_back(f.nodes[to].uv);
+    const Vec2 c0 = pts.front(), c1 = pts.back();
+    auto meets = [](Vec2 p, Vec2 q, Vec2 r, Vec2 t) {
+      if (p == r || p == t || q == r || q == t) return false;   // neighbours at a shared end
+      return segments_meet(p, q, r, t);
+    };
+    bool crosses = false;
+    for (std::size_t i = 0; i + 1 < pts.size() && !crosses; ++i) {
+      const Vec2 p = pts[i], q = pts[i + 1];
+      const Vec2 lo{std::min(p.x, q.x), std::min(p.y, q.y)}, hi{std::max(p.x, q.x), std::max(p.y, q.y)};
+      crosses = grid.any_near(lo, hi, [&](Vec2 r, Vec2 t) { return !(r == c0 && t == c1) && meets(p, q, r, t); });
+      for (const auto& e : made) crosses = crosses || meets(p, q, e.first, e.second);
+      for (const auto& e : put_back) crosses = crosses || meets(p, q, e.first, e.second);
+      for (std::size_t k = i + 2; k + 1 < pts.size() && !crosses; ++k) crosses = meets(p, q, pts[k], pts[k + 1]);
+    }
+    if (crosses) continue;
+    for (std::size_t i = 0; i + 1 < pts.size(); ++i) put_back.push_back({pts[i], pts[i + 1]});
+    for (std::uint32_t i : run) f.nodes[i].kept = true;
+    f.index();
+    f.changed = true;
     any = true;
   }
   return any;
@@ -552,6 +634,16 @@ Result<std::size_t> place_dam(Work& w, geo::LonLat p_ll, geo::LonLat q_ll, std::
   for (std::size_t i = 0; i + 1 < xs.size(); ++i) {
     if (!xs[i].entering || xs[i + 1].entering) continue;
     const Crossing in = xs[i], out = xs[i + 1];
+    if (!w.flat[in.loop].dead && !w.flat[out.loop].dead &&
+        w.gate_closed(w.flat[in.loop].p(in.seg), w.flat[out.loop].p(out.seg)))
+      for (const Gate& g : w.gates)
+        if (g.closes(w.flat[in.loop].p(in.seg), w.flat[out.loop].p(out.seg)))
+          return CoastError{"KeepOpen", -1,
+                            fmt::format("the KeepOpen point (lon {:.6f}, lat {:.6f}) keeps open the passage that the "
+                                        "dam from (lon {:.6f}, lat {:.6f}) to (lon {:.6f}, lat {:.6f}) closes: remove "
+                                        "one of them",
+                                        g.where.lon, g.where.lat, p_ll.lon, p_ll.lat, q_ll.lon, q_ll.lat),
+                            g.where};
     if (w.flat[in.loop].dead || w.flat[out.loop].dead) {
       // The loop was cut by this dam's previous stretch: place the rest as a new dam.
       auto rest = place_dam(w, unit_sphere().lonlat_from_param(xs[i].x - 1e-9 * (q - p)), q_ll, log);
@@ -642,6 +734,127 @@ WorkLoop rebuild(Work& w, const FlatLoop& f) {
   return out;
 }
 
+// The closest point of segment a-b to p among those x with dot(x - p, n) <= 0 (the half
+// plane away from n); nullopt when the segment lies wholly on n's side.
+std::optional<Vec2> closest_away(Vec2 p, Vec2 a, Vec2 b, Vec2 n) {
+  const double fa = dot(a - p, n), fb = dot(b - p, n);
+  if (fa > 0 && fb > 0) return std::nullopt;
+  Vec2 lo = a, hi = b;
+  if (fa > 0) lo = a + (fa / (fa - fb)) * (b - a);
+  if (fb > 0) hi = a + (fa / (fa - fb)) * (b - a);
+  return closest_on_segment(p, lo, hi);
+}
+
+struct Nearest {
+  std::uint32_t loop = 0, seg = 0;
+  Vec2 at{0, 0};
+  double d2 = std::numeric_limits<double>::infinity();
+};
+
+// The nearest point of the live loops' kept segments to p (away from n when n is not 0).
+Nearest nearest_coast(const Work& w, Vec2 p, Vec2 n) {
+  Nearest best;
+  for (std::uint32_t l = 0; l < w.flat.size(); ++l) {
+    const FlatLoop& f = w.flat[l];
+    if (f.dead) continue;
+    for (std::uint32_t j = 0; j < f.kept.size(); ++j) {
+      const auto x = n == Vec2{0, 0} ? std::optional<Vec2>(closest_on_segment(p, f.p(j), f.p(j + 1)))
+                                     : closest_away(p, f.p(j), f.p(j + 1), n);
+      if (!x) continue;
+      const double d2 = norm2(*x - p);
+      if (d2 < best.d2) best = {l, j, *x, d2};
+    }
+  }
+  return best;
+}
+
+// Whether p, whose nearest coast point is on kept segment j of f, lies in the water (on
+// the left): at a vertex, on the left of both segments at a convex corner of the water,
+// of either at a reflex one.
+bool in_water(const FlatLoop& f, std::uint32_t j, Vec2 x, Vec2 p) {
+  const std::size_t k = f.kept.size();
+  Vec2 u = f.p(j), v = f.p(j + 1), z = f.p(j + 2);
+  if (x == f.p(j)) u = f.p(j + k - 1), v = f.p(j), z = f.p(j + 1);
+  else if (!(x == f.p(j + 1))) return orient2d(u, v, p) == Sign::Positive;
+  const bool l1 = orient2d(u, v, p) == Sign::Positive, l2 = orient2d(v, z, p) == Sign::Positive;
+  return orient2d(u, v, z) == Sign::Positive ? (l1 && l2) : (l1 || l2);
+}
+
+// The two banks of the passage at p, from kept segment sa of loop la and sb of lb (the
+// nearest coast on each side): each walks along its coast both ways while its next segment
+// is within `reach` metres of p or within `across` metres of the other bank, and stops
+// where it would meet the other (the head of an inlet). Bounded by the loops' sizes.
+std::array<std::set<UvKey>, 2> banks_of(const Work& w, std::uint32_t la, std::uint32_t sa, std::uint32_t lb,
+                                        std::uint32_t sb, Vec2 p, double reach, double across) {
+  const std::uint32_t loop[2] = {la, lb};
+  std::array<std::set<std::uint32_t>, 2> segs{std::set<std::uint32_t>{sa}, std::set<std::uint32_t>{sb}};
+  std::uint32_t end[2][2] = {{sa, sa}, {sb, sb}};
+  bool open[2][2] = {{true, true}, {true, true}};
+  const double R = w.opt.radius;
+  auto seg_m = [&](const FlatLoop& f, std::uint32_t j, const FlatLoop& g, std::uint32_t t) {
+    const Vec2 a0 = f.p(j), a1 = f.p(j + 1), b0 = g.p(t), b1 = g.p(t + 1);
+    return std::min({uv_point_segment_metres(a0, b0, b1, R), uv_point_segment_metres(a1, b0, b1, R),
+                     uv_point_segment_metres(b0, a0, a1, R), uv_point_segment_metres(b1, a0, a1, R)});
+  };
+  const std::size_t bound = w.flat[la].kept.size() + w.flat[lb].kept.size() + 4;
+  for (std::size_t step = 0; step < bound; ++step) {
+    bool grew = false;
+    for (int i = 0; i < 2; ++i)
+      for (int d = 0; d < 2; ++d) {
+        if (!open[i][d]) continue;
+        const FlatLoop& f = w.flat[loop[i]];
+        const FlatLoop& g = w.flat[loop[1 - i]];
+        const auto k = static_cast<std::uint32_t>(f.kept.size());
+        const std::uint32_t next = d ? (end[i][d] + 1) % k : (end[i][d] + k - 1) % k;
+        if (segs[i].count(next) || (loop[0] == loop[1] && segs[1 - i].count(next))) {
+          open[i][d] = false;
+          continue;
+        }
+        bool take = uv_point_segment_metres(p, f.p(next), f.p(next + 1), R) <= reach;
+        for (auto it = segs[1 - i].begin(); !take && it != segs[1 - i].end(); ++it) take = seg_m(f, next, g, *it) <= across;
+        if (!take) {
+          open[i][d] = false;
+          continue;
+        }
+        segs[i].insert(next);
+        end[i][d] = next;
+        grew = true;
+      }
+    if (!grew) break;
+  }
+  std::array<std::set<UvKey>, 2> out;
+  for (int i = 0; i < 2; ++i)
+    for (std::uint32_t j : segs[i]) out[i].insert(uv_key(w.flat[loop[i]].p(j)));
+  return out;
+}
+
+// The passage at each KeepOpen point: errors for a point on land or with no coast across.
+Result<bool> find_gates(Work& w, std::vector<RepairEntry>& log) {
+  for (const geo::LonLat ll : w.opt.keep_open) {
+    const Vec2 p = unit_sphere().param_from_lonlat(ll);
+    const Nearest a = nearest_coast(w, p, {0, 0});
+    auto fail = [&](std::string why) {
+      return CoastError{"KeepOpen", -1, fmt::format("the KeepOpen point (lon {:.6f}, lat {:.6f}) {}", ll.lon, ll.lat, why),
+                        ll};
+    };
+    if (!std::isfinite(a.d2)) return fail("has no coastline near it");
+    if (a.d2 == 0 || !in_water(w.flat[a.loop], a.seg, a.at, p)) return fail("lies on land: put it in the water of the passage");
+    const Nearest b = nearest_coast(w, p, a.at - p);
+    if (!std::isfinite(b.d2)) return fail("has no coast across from its nearest coast: it is in no passage");
+    Gate g;
+    g.where = ll;
+    g.width = chord(unit_sphere().lonlat_from_param(a.at), unit_sphere().lonlat_from_param(b.at), w.opt.radius);
+    const double wide = std::max(w.opt.min_width, g.width);
+    auto banks = banks_of(w, a.loop, a.seg, b.loop, b.seg, p, kKeepOpenReach * wide, kKeepOpenAcross * wide);
+    g.bank[0] = std::move(banks[0]);
+    g.bank[1] = std::move(banks[1]);
+    const DamInfo info = info_of(w, w.flat[a.loop].nodes[w.flat[a.loop].kept[a.seg]]);
+    log.push_back({RepairKind::KeptOpen, info.record, info.id, ll, g.width});
+    w.gates.push_back(std::move(g));
+  }
+  return true;
+}
+
 }  // namespace
 
 double uv_point_segment_metres(Vec2 p, Vec2 a, Vec2 b, double radius) {
@@ -651,9 +864,10 @@ double uv_point_segment_metres(Vec2 p, Vec2 a, Vec2 b, double radius) {
 
 Result<bool> close_passages(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops, const PassageOptions& opt,
                             std::vector<RepairEntry>& log) {
-  if (!(opt.min_width > 0) && opt.dams.empty()) return false;
+  if (!(opt.min_width > 0) && opt.dams.empty() && opt.keep_open.empty()) return false;
   Work w{curves, curves.size(), {}, {}, opt};
   for (const WorkLoop& l : loops) w.flat.push_back(flatten(curves, l));
+  if (auto g = find_gates(w, log); !g) return g.error();
   std::size_t vertices = 0;
   for (const FlatLoop& f : w.flat) vertices += f.dead ? 0 : f.kept.size();
   for (const auto& [p, q] : opt.dams) {

@@ -21,6 +21,12 @@
 
 namespace sm::coast {
 
+/// A KeepOpen point's passage: its two banks (the nearest coast on each side of the point)
+/// followed along the coast while within kKeepOpenReach x D of the point or within
+/// kKeepOpenAcross x D of the other bank, D = max(min_width, the passage's width there).
+inline constexpr double kKeepOpenReach = 3.0;
+inline constexpr double kKeepOpenAcross = 2.0;
+
 struct PassageOptions {
   /// Passages narrower than this (metres on the sphere) are closed; 0: none. A passage
   /// exactly this wide stays open (widths are compared within a relative 1e-9).
@@ -30,6 +36,9 @@ struct PassageOptions {
   bool keep_passages = false;
   /// Dams by hand: segments between two lon/lat points, each closing the water it crosses.
   std::vector<std::pair<geo::LonLat, geo::LonLat>> dams;
+  /// Points in passages that stay open: no closure joins the two banks of the passage
+  /// at such a point (kKeepOpenReach), and a dam across them is an error (option "KeepOpen").
+  std::vector<geo::LonLat> keep_open;
   double radius = geo::kEarthRadius;
 };
 
@@ -37,7 +46,9 @@ struct PassageOptions {
 /// dead, dams appended as two-point curves). Loops must be intersection-free and oriented
 /// water on the left. Appends ClosedPassage / DamPlaced / NarrowWater entries to `log`.
 /// Returns whether anything changed; errors (option "Dams"): a dam crossing no water, or
-/// one whose ends cannot be joined across the water without crossing a coast.
+/// one whose ends cannot be joined across the water without crossing a coast; (option
+/// "KeepOpen"): a KeepOpen point on land or with no coast across, or a dam closing its
+/// passage. Each KeepOpen point is logged as KeptOpen (its place, the passage's width).
 Result<bool> close_passages(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops,
                             const PassageOptions& opt, std::vector<RepairEntry>& log);
 

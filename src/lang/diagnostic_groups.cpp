@@ -1,6 +1,8 @@
 // Grouping a statement's diagnostics by location (see diagnostic_groups.h).
 #include "lang/diagnostic_groups.h"
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include <fmt/format.h>
@@ -86,8 +88,15 @@ std::string render_group(const Diagnostics& diags, const std::vector<const Diagn
       continue;
     }
     out += fmt::format("  {} x {} [{}]\n", s.members.size(), s.what, kebab);
-    const std::size_t shown = options.list_all ? s.members.size() : std::min(s.members.size(), kGroupShownPerWhat);
-    for (std::size_t i = 0; i < shown; ++i) out += "      " + place_and_figure(*s.members[i]) + "\n";
+    // Ranked sorts (every member with a rank) are cut to their largest, largest first.
+    std::vector<const Diagnostic*> members = s.members;
+    const bool ranked = std::all_of(members.begin(), members.end(), [](const Diagnostic* d) { return std::isfinite(d->item.rank); });
+    if (ranked && !options.list_all)
+      std::stable_sort(members.begin(), members.end(),
+                       [](const Diagnostic* a, const Diagnostic* b) { return a->item.rank > b->item.rank; });
+    const std::size_t per = ranked ? kGroupShownRanked : kGroupShownPerWhat;
+    const std::size_t shown = options.list_all ? members.size() : std::min(members.size(), per);
+    for (std::size_t i = 0; i < shown; ++i) out += "      " + place_and_figure(*members[i]) + "\n";
     if (shown < s.members.size()) out += fmt::format("      ... and {} more\n", s.members.size() - shown);
     hidden += s.members.size() - shown;
   }

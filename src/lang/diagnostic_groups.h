@@ -14,6 +14,9 @@ namespace sm::lang {
 
 /// How many of one sort (DiagItem::what) a cut group lists; the others are counted.
 inline constexpr std::size_t kGroupShownPerWhat = 3;
+/// How many of one sort a cut group lists when its members are ranked (DiagItem::rank):
+/// the largest, largest first.
+inline constexpr std::size_t kGroupShownRanked = 5;
 /// How many diagnostics of one kind without a DiagItem::what a cut group lists.
 inline constexpr std::size_t kGroupShownPlain = 5;
 

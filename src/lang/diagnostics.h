@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <functional>
+#include <limits>
 #include <span>
 #include <string>
 #include <string_view>
@@ -48,6 +49,9 @@ struct DiagItem {
   std::string figure;       ///< the figure that matters ("width 1234 m"), or ""
   bool has_lonlat = false;  ///< lon/lat (degrees) are the place it is about
   double lon = 0, lat = 0;
+  /// The figure as a number when the largest matter most (a closed passage's width, a
+  /// dropped sea's area): a cut group lists the largest of its sort first; NaN: in order.
+  double rank = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct Diagnostic {

@@ -1,6 +1,8 @@
 // Diagnostics as JSON lines (see diagnostics_json.h).
 #include "lang/diagnostics_json.h"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "base/json_text.h"
@@ -32,6 +34,7 @@ std::string diagnostic_json_line(const SourceManager& sources, const Diagnostic&
     out += fmt::format(", \"lon\": {}, \"lat\": {}", json_number(d.item.lon), json_number(d.item.lat));
   if (!d.item.what.empty()) out += fmt::format(", \"what\": {}", json_string(d.item.what));
   if (!d.item.figure.empty()) out += fmt::format(", \"figure\": {}", json_string(d.item.figure));
+  if (std::isfinite(d.item.rank)) out += fmt::format(", \"value\": {}", json_number(d.item.rank));
   if (!d.notes.empty()) {
     out += ", \"notes\": [";
     for (std::size_t i = 0; i < d.notes.size(); ++i)

@@ -39,6 +39,7 @@ struct CoastlineImport {
   /// 95% quantile (m), largest before control points were put back (m), lon, lat of the
   /// largest, control points put back}.
   std::vector<double> deviation;
+  std::vector<double> closures, dropped_seas;    // {lon, lat, width_m, ...}, {lon, lat, area_km2, ...}
   /// Plane Surfaces of the seas, made on the first `Coastline{n, "Surfaces"}` (so that
   /// scripts making their own from "LoopsPerSurface" do not get them twice).
   mutable std::vector<int> surfaces;
@@ -78,6 +79,7 @@ constexpr CoastOption kOptions[] = {
     {"KeepPassages", OptType::Number, false, "1: MinChannelWidth fills only water that ends (inlets, lagoons); passages and straits stay open (default 0)"},
     {"Dams", OptType::List, false, "{lon1, lat1, lon2, lat2, ...}: dams closing the water each segment crosses"},
     {"SeaAt", OptType::List, false, "{lon, lat, ...}: keep only the seas holding these points"},
+    {"KeepOpen", OptType::List, false, "{lon, lat, ...}: the passage at each point stays open whatever MinChannelWidth"},
     {"Coordinate", OptType::String, true, "lonlat, lonlat_degrees (default), utm or cartesian"},
     {"UTMZone", OptType::Number, true, "UTM zone of utm coordinates"},
     {"UTMEquatorialRadius", OptType::Number, true, "ellipsoid of utm coordinates (m)"},
@@ -86,7 +88,8 @@ constexpr CoastOption kOptions[] = {
 
 // What `Coastline{n, "What"}` returns.
 constexpr std::string_view kSelectors[] = {"Loops", "Curves", "OpenCurves", "Points", "ControlPoints",
-                                           "Outer", "LoopsPerSurface", "CoastCurves", "Surfaces", "Deviation"};
+                                           "Outer", "LoopsPerSurface", "CoastCurves", "Surfaces",
+                                           "Closures", "DroppedSeas", "Deviation"};
 // The sides `Coastline{n, "OpenCurves", "West"}` takes, in the bit order of open_sides.
 constexpr std::string_view kSides[] = {"West", "East", "South", "North"};
 
@@ -195,7 +198,7 @@ void check_option_value(Interpreter& in, int id, const CoastOption& o, const Val
     if (x[0] < 0) fail_option(in, at, id, name, fmt::format("must not be negative (0 is off), not {}", x[0]));
   } else if (name == "MinChannelWidth") {
     if (x[0] < 0) fail_option(in, at, id, name, fmt::format("must not be negative (0 is off), not {}", x[0]));
-  } else if (name == "Dams" || name == "SeaAt") {
+  } else if (name == "Dams" || name == "SeaAt" || name == "KeepOpen") {
     const std::size_t per = name == "Dams" ? 4 : 2;
     if (x.empty() || x.size() % per != 0)
       fail_option(in, at, id, name,
@@ -363,21 +366,25 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
     const auto& x = v->nums();
     for (std::size_t i = 0; i + 3 < x.size(); i += 4) io.dams.push_back({{x[i], x[i + 1]}, {x[i + 2], x[i + 3]}});
   }
-  if (const Value* v = option(d, "SeaAt")) {
+  // Points in the water (SeaAt, KeepOpen): inside the Region, longitudes compared modulo
+  // 360 as its box may run past +-180.
+  for (const std::string_view name : {"SeaAt", "KeepOpen"}) {
+    const Value* v = option(d, name);
+    if (!v) continue;
     const auto& x = v->nums();
     for (std::size_t i = 0; i + 1 < x.size(); i += 2) {
-      if (io.region) {   // longitudes compared modulo 360, as the Region box may run past +-180
+      if (io.region) {
         const coast::LonLatBox& b = *io.region;
         const double lon = b.west + std::fmod(std::fmod(x[i] - b.west, 360.0) + 360.0, 360.0);
         if (lon > b.east || x[i + 1] < b.south || x[i + 1] > b.north)
-          in.fail_with_notes(d.option_at.find("SeaAt")->second, Diag::WrongCoastlineOption,
-                             fmt::format("Coastline[{}].SeaAt point (lon {}, lat {}) lies outside the Region {{{}, {}, "
+          in.fail_with_notes(d.option_at.find(name)->second, Diag::WrongCoastlineOption,
+                             fmt::format("Coastline[{}].{} point (lon {}, lat {}) lies outside the Region {{{}, {}, "
                                          "{}, {}}}",
-                                         id, x[i], x[i + 1], b.west, b.east, b.south, b.north),
+                                         id, name, x[i], x[i + 1], b.west, b.east, b.south, b.north),
                              {{d.option_at.find("Region")->second, fmt::format("Coastline[{}].Region is set here", id)},
                               {at, "the coastline is imported here"}});
       }
-      io.sea_at.push_back({x[i], x[i + 1]});
+      (name == "SeaAt" ? io.sea_at : io.keep_open).push_back({x[i], x[i + 1]});
     }
   }
   // Cleaning and coarsening ring by ring on -nt threads (the same rings for every count).
@@ -420,23 +427,41 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
   if (!built) {
     const coast::CoastError& e = built.error();
     if (auto o = d.option_at.find(e.option); !e.option.empty() && o != d.option_at.end()) {
-      try {   // a dam or a SeaAt point: located where the option is set
+      try {   // a dam, a SeaAt or KeepOpen point: located where the option is set
         fail_coast(in, id, d, o->second, e, false);
       } catch (RuntimeError& err) {
         err.notes.insert(err.notes.begin(), DiagNote{at, "the coastline is imported here"});
+        if (auto dams = d.option_at.find("Dams"); e.option == "KeepOpen" && dams != d.option_at.end() &&
+                                                  e.message.find("dam from") != std::string::npos)
+          err.notes.insert(err.notes.begin(), DiagNote{dams->second, fmt::format("Coastline[{}].Dams is set here", id)});
         throw;
       }
     }
     fail_coast(in, id, d, at, e, true);
   }
   const coast::CoastModel& m = *built;
+  if (m.seas_dropped > 0)
+    in.diags().report(d.option_at.find("SeaAt")->second, Diag::CoastlineSeasDropped,
+                      fmt::format("Coastline[{}]: {} sea(s) holding no SeaAt point dropped, {} kept", id,
+                                  m.seas_dropped, m.surfaces.size()));
   // Every change, each with its place and figure: the terminal groups the many of this
   // statement (cli/diagnostic_stream.h), --diagnostics FILE keeps every one.
+  // A dropped sea goes with the count of them, at SeaAt.
+  auto imp = std::make_shared<CoastlineImport>();
   for (const coast::ReportLine& line : m.report.items()) {
     const std::string name = fmt::format("Coastline[{}]", id);
-    auto h = line.passage ? in.diags().report(at, Diag::CoastlinePassage, fmt::format("{}: {}", name, line.text))
-                          : in.diags().report(at, Diag::CoastlineRepair, name, line.text);
+    const std::string text = fmt::format("{}: {}", name, line.text);
+    auto h = line.sea_dropped ? in.diags().report(d.option_at.find("SeaAt")->second, Diag::CoastlineSeasDropped, text)
+             : line.kept_open ? in.diags().report(d.option_at.find("KeepOpen")->second, Diag::CoastlineKeptOpen, text)
+             : line.passage   ? in.diags().report(at, Diag::CoastlinePassage, text)
+                              : in.diags().report(at, Diag::CoastlineRepair, name, line.text);
     h.item(coastline_item(line));
+  }
+  for (const coast::RepairEntry& e : m.report.repair) {   // for Coastline{n, "Closures"} and "DroppedSeas"
+    std::vector<double>* list = e.kind == coast::RepairKind::ClosedPassage ? &imp->closures
+                                : e.kind == coast::RepairKind::DroppedSea  ? &imp->dropped_seas
+                                                                           : nullptr;
+    if (list) list->insert(list->end(), {e.where.lon, e.where.lat, e.value});
   }
   if (m.region_empty) {   // the box of the Region, or of the file's own -R
     auto r = d.option_at.find("Region");
@@ -448,10 +473,6 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
                                   "this accuracy and MinArea): its box is the only loop, all open boundary",
                                   id, box));
   }
-  if (m.seas_dropped > 0)
-    in.diags().report(d.option_at.find("SeaAt")->second, Diag::CoastlineSeasDropped,
-                      fmt::format("Coastline[{}]: {} sea(s) holding no SeaAt point dropped, {} kept", id,
-                                  m.seas_dropped, m.surfaces.size()));
 
   // Loops surface by surface (outer first), then the holes no outer loop holds.
   std::vector<std::uint32_t> order;
@@ -468,7 +489,6 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
 
   sync_geometry_options(in);
   const bool polyline = option(d, "CurveType") && option(d, "CurveType")->strs().front() == "Line";
-  auto imp = std::make_shared<CoastlineImport>();
   imp->at = at;
   {
     const coast::DeviationReport& dev = m.report.deviation;
@@ -611,7 +631,7 @@ Value eval_coastline_query(Interpreter& in, ExprId e) {
         in.fail_fmt(r, Diag::UnknownCoastlineOption,
                     fmt::format("Coastline{{}} cannot return \"{}\"{}; it returns {}", what, did_you_mean(what, names),
                                 "Loops, Curves, OpenCurves, Points, ControlPoints, Outer, LoopsPerSurface, CoastCurves, "
-                                "Surfaces or Deviation"));
+                                "Surfaces, Closures, DroppedSeas or Deviation"));
       continue;
     }
     for (double d : v.nums()) {
@@ -648,6 +668,11 @@ Value eval_coastline_query(Interpreter& in, ExprId e) {
         imp.surfaces.push_back(tag);
       }
       imp.surfaces_made = true;
+    }
+    if (what == "Closures" || what == "DroppedSeas") {
+      const std::vector<double>& f = what == "Closures" ? imp.closures : imp.dropped_seas;
+      out.insert(out.end(), f.begin(), f.end());
+      continue;
     }
     const std::vector<int>& list = what == "Curves"          ? imp.curves
                                    : what == "CoastCurves"   ? imp.coast_curves

@@ -10,6 +10,7 @@ lang::DiagItem coastline_item(const coast::ReportLine& line) {
   item.has_lonlat = line.has_place;
   item.lon = line.where.lon;
   item.lat = line.where.lat;
+  item.rank = line.rank;
   return item;
 }
 

@@ -287,3 +287,123 @@ TEST_CASE("passages: SeaAt keeps the sea holding the point; a point on land name
   CHECK(bad.error().option == "SeaAt");
   CHECK(bad.error().message.find("record 1") != std::string::npos);
 }
+
+TEST_CASE("passages: KeepOpen keeps the canal open whatever MinChannelWidth, reported with its width") {
+  ImportOptions o = pass_options(1500);
+  o.keep_open = {{0.1, 0}};   // in the canal, off its middle
+  auto m = build_coast_model(pass_canal(kPassW), o);
+  if (!m.ok()) MESSAGE(m.error().to_string());
+  REQUIRE(m.ok());
+  pass_check_clean(*m);
+  CHECK(m->surfaces.size() == 1);
+  CHECK(m->report.count(RepairKind::ClosedPassage) == 0);
+  CHECK(pass_points_in(*m, -0.15, 0.15, kPassW / 2 + 1e-9) > 0);
+  REQUIRE(m->report.count(RepairKind::KeptOpen) == 1);
+  for (const RepairEntry& e : m->report.repair)
+    if (e.kind == RepairKind::KeptOpen) {
+      CHECK(e.where.lon == 0.1);
+      CHECK(e.value == doctest::Approx(1112).epsilon(0.01));
+    }
+}
+
+TEST_CASE("passages: KeepOpen keeps a strait between two islands open; the one elsewhere still merges") {
+  Coastline c;
+  c.file = "islands";
+  c.rings.push_back(pass_ring({{-0.5, -0.3}, {-kPassW / 2, -0.3}, {-kPassW / 2, 0.3}, {-0.5, 0.3}}, 0));
+  c.rings.push_back(pass_ring({{kPassW / 2, -0.3}, {0.5, -0.3}, {0.5, 0.3}, {kPassW / 2, 0.3}}, 1));
+  ImportOptions o = pass_options(1500);
+  o.keep_open = {{0, 0.2}};
+  auto m = build_coast_model(c, o);
+  REQUIRE(m.ok());
+  pass_check_clean(*m);
+  REQUIRE(m->surfaces.size() == 1);
+  CHECK(m->surfaces[0].holes.size() == 2);
+  CHECK(m->report.count(RepairKind::ClosedPassage) == 0);
+  CHECK(m->report.count(RepairKind::KeptOpen) == 1);
+}
+
+TEST_CASE("passages: a KeepOpen point on land, or with a dam across its passage, is an error") {
+  ImportOptions o = pass_options(1500);
+  o.keep_open = {{0, 0.5}};   // in the north wall
+  auto land = build_coast_model(pass_canal(kPassW), o);
+  REQUIRE_FALSE(land.ok());
+  CHECK(land.error().option == "KeepOpen");
+  CHECK(land.error().message.find("lies on land") != std::string::npos);
+
+  o.keep_open = {{0, 0}};
+  o.dams = {{{0.05, -0.5}, {0.05, 0.5}}};   // across the canal near the point
+  auto dam = build_coast_model(pass_canal(kPassW), o);
+  REQUIRE_FALSE(dam.ok());
+  CHECK(dam.error().option == "KeepOpen");
+  CHECK(dam.error().message.find("dam from") != std::string::npos);
+}
+
+TEST_CASE("passages: each sea SeaAt drops is reported with a point inside it and its area") {
+  ImportOptions o = pass_options(1500);
+  o.sea_at = {{-0.6, 0.5}};
+  auto m = build_coast_model(pass_canal(kPassW), o);
+  REQUIRE(m.ok());
+  REQUIRE(m->report.count(RepairKind::DroppedSea) == 1);
+  for (const RepairEntry& e : m->report.repair)
+    if (e.kind == RepairKind::DroppedSea) {
+      // The east sea: lon 0.2 .. 1, lat -1 .. 1 (0.8 x 2 degrees of 111.2 km).
+      CHECK(e.where.lon > 0.2);
+      CHECK(e.where.lon < 1);
+      CHECK(std::abs(e.where.lat) < 1);
+      CHECK(e.value == doctest::Approx(0.8 * 2 * 111.19 * 111.19).epsilon(0.01));
+    }
+  const auto items = m->report.items();
+  bool ranked = false;
+  for (const ReportLine& l : items) ranked = ranked || (l.sea_dropped && l.rank == m->report.repair.back().value);
+  CHECK(ranked);
+}
+
+TEST_CASE("passages: a 30 m pinch between long coarse segments is closed (KeepPassages = 0)") {
+  // Two islands 30 m apart at lat 0, where a spike of one faces the straight side of the
+  // other, the source dense (a point every ~55 m) and gamma 2 km, so the coarse segments at
+  // the pinch are long. The code before the refused-cut refinement closed this one too; the
+  // case it left open, the Cymyran Strait, is tests/scripts/coastline/holy_island_strait.geo.
+  // This guards that putting original points back leaves such a closure clean.
+  auto side = [](double sign) {
+    std::vector<geo::LonLat> r;
+    const double tip = sign * 0.000135;   // 15 m from lon 0
+    if (sign < 0) {   // a straight side against the other's point
+      pass_line(r, {-0.5, -0.3}, {tip, -0.3}, 0.0005);
+      pass_line(r, {tip, -0.3}, {tip, 0.3}, 0.0005);
+      pass_line(r, {tip, 0.3}, {-0.5, 0.3}, 0.0005);
+      pass_line(r, {-0.5, 0.3}, {-0.5, -0.3}, 0.0005);
+    } else {
+      pass_line(r, {0.5, -0.3}, {0.5, 0.3}, 0.0005);
+      pass_line(r, {0.5, 0.3}, {0.05, 0.3}, 0.0005);
+      pass_line(r, {0.05, 0.3}, {0.05, 0.01}, 0.0005);
+      pass_line(r, {0.05, 0.01}, {tip, 0}, 0.0005);   // a spike 5.5 km long, 2.2 km wide at its root
+      pass_line(r, {tip, 0}, {0.05, -0.01}, 0.0005);
+      pass_line(r, {0.05, -0.01}, {0.05, -0.3}, 0.0005);
+      pass_line(r, {0.05, -0.3}, {0.5, -0.3}, 0.0005);
+    }
+    return r;
+  };
+  Coastline c;
+  c.file = "pinch";
+  for (int i = 0; i < 2; ++i) {
+    Ring r;
+    r.pts = side(i == 0 ? -1.0 : 1.0);
+    r.id = i;
+    r.record = static_cast<std::size_t>(i);
+    c.rings.push_back(std::move(r));
+  }
+  ImportOptions o = pass_options(2000);
+  o.gamma = testing::constant_accuracy(2000);
+  auto m = build_coast_model(c, o);
+  if (!m.ok()) MESSAGE(m.error().to_string());
+  REQUIRE(m.ok());
+  pass_check_clean(*m);
+  REQUIRE(m->surfaces.size() == 1);
+  CHECK(m->surfaces[0].holes.size() == 1);   // the islands joined
+  // The spike is land up to where the water beside it is wider than W: no point of it
+  // within 0.01 degrees (1.1 km) of its tip, where the water is narrower than 600 m.
+  std::size_t in_pinch = 0;
+  for (const CoastCurve& cc : m->curves)
+    for (geo::LonLat p : cc.ll) in_pinch += p.lon > 0 && p.lon < 0.01 && std::abs(p.lat) < 0.01;
+  CHECK(in_pinch == 0);
+}

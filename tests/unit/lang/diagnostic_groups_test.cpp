@@ -84,3 +84,30 @@ TEST_CASE("diagnostic groups: a lone diagnostic, and those without a location, a
   CHECK(s.find("from this statement") == std::string::npos);
   CHECK(s.find("n.geo:1:1: warning: a [user-warning]") == 0);
 }
+
+TEST_CASE("diagnostic groups: a ranked sort lists its largest five, largest first") {
+  sm::lang::SourceManager sources;
+  const sm::lang::FileId f = sources.add_buffer("w.geo", "L[] = Coastline{1};\n").file;
+  sm::lang::Diagnostics diags{sources};
+  const sm::lang::SourceRange at{f, 6, 18};
+  const double widths[] = {300, 1900, 40, 1200, 800, 1500, 90};
+  for (double w : widths) {
+    sm::lang::DiagItem item{"passage closed", "width " + std::to_string(static_cast<int>(w)) + " m", true, w / 100, 0};
+    item.rank = w;
+    diags.report(at, sm::lang::Diag::CoastlinePassage, "Coastline[1]: passage").item(item);
+  }
+  sm::lang::GroupRenderOptions opt;
+  opt.how_to_see_all = "see all";
+  const std::string s = sm::lang::render_grouped(diags, diags.all(), opt);
+  INFO(s);
+  CHECK(s.find("  7 x passage closed [coastline-passage]\n"
+               "      lon 19.0000, lat 0.0000: width 1900 m\n"
+               "      lon 15.0000, lat 0.0000: width 1500 m\n"
+               "      lon 12.0000, lat 0.0000: width 1200 m\n"
+               "      lon 8.0000, lat 0.0000: width 800 m\n"
+               "      lon 3.0000, lat 0.0000: width 300 m\n"
+               "      ... and 2 more\n") != std::string::npos);
+  opt.list_all = true;   // every one, in the order reported
+  const std::string all = sm::lang::render_grouped(diags, diags.all(), opt);
+  CHECK(all.find("width 300 m\n      lon 19.0000, lat 0.0000: width 1900 m\n      lon 0.4000") != std::string::npos);
+}
