@@ -136,7 +136,7 @@ struct Piece {
 /// Points as whole quantisation steps over the globe: x from lon 0 eastward, y from the
 /// North Pole southward to the bin's corner then northward by dy (the file's own order),
 /// so that the shared end points of pieces in neighbouring bins compare exactly.
-struct Grid {
+struct BinGrid {
   std::int64_t nx = 0, ny = 0;   // bins
   double bsize = 0, scale = 0;   // degrees
 
@@ -184,7 +184,7 @@ Coastline read(const std::string& path, const GshhgBinnedOptions& opt, std::uint
     throw Fail{fmt::format("{} bins where {} x {} are declared", n_bin, bin_nx, bin_ny)};
   if (n_seg < 0 || n_pt < 0 || n_poly < 0)
     throw Fail{fmt::format("negative counts: {} segments, {} points, {} polygons", n_seg, n_pt, n_poly)};
-  Grid grid;
+  BinGrid grid;
   grid.nx = bin_nx;
   grid.ny = bin_ny;
   grid.bsize = bin_size / 60.0;
