@@ -54,34 +54,27 @@ class CurveView {
   double bound(long j) const {
     const double g = c_.gamma[static_cast<std::size_t>(((j % n_) + n_) % n_)];
     if (opt_.fixed > 0) return opt_.fixed;
-    return opt_.factor > 0 ? opt_.factor * g : HUGE_VAL;   // no bound: measured only
+    return opt_.factor > 0 ? opt_.factor * g : HUGE_VAL;  // no bound: measured only
   }
 
   // The curve near segment s as a polyline on the sphere: the spans that pass by it.
-  void curve_near(long s, std::vector<Vec3>& line) const {
+  void curve_near(long s, std::vector<Vec3>& line) const { spans(s - 1, s + 1, s, line); }
+  // The span that follows segment s, sampled.
+  void span(long s, std::vector<Vec3>& line) const { spans(s, s, s, line); }
+
+ private:
+  // Spans first..last sampled into one polyline (a piece has spans -1 to m-1); with
+  // straight segments, segment s itself.
+  void spans(long first, long last, long s, std::vector<Vec3>& line) const {
     line.clear();
     if (!opt_.bspline) {
       line.push_back(ps_.point(control(s)));
       line.push_back(ps_.point(control(s + 1)));
       return;
     }
-    long first = s - 1, last = s + 1;
     if (!c_.periodic) first = std::max(first, -1L), last = std::min(last, m_ - 1);
     for (long k = first; k <= last; ++k) append_span(k, line);
   }
-
-  // The span that follows segment s, sampled.
-  void span(long s, std::vector<Vec3>& line) const {
-    line.clear();
-    if (!opt_.bspline) {
-      line.push_back(ps_.point(control(s)));
-      line.push_back(ps_.point(control(s + 1)));
-      return;
-    }
-    append_span(s, line);
-  }
-
- private:
   // Control point k: wrapped on a periodic curve; clamped on a piece, whose end points
   // count three times (the spans -1 and m-1 then end exactly on them).
   Vec2 control(long k) const {
@@ -107,14 +100,14 @@ class CurveView {
 
 // What one look at a curve found.
 struct CurveScan {
-  std::vector<std::uint32_t> add;   // source points to put back
+  std::vector<std::uint32_t> add;  // source points to put back
   double max = 0, max_ratio = 0;
   long max_at = -1;
-  std::size_t over = 0;             // spans over the bound with no source point left
+  std::size_t over = 0;  // spans over the bound with no source point left
   long over_at = -1;
-  std::size_t narrow = 0;           // spans over the bound whose points would make a spike
+  std::size_t narrow = 0;  // spans over the bound whose points would make a spike
   long narrow_at = -1;
-  double narrow_max = 0;            // the farthest source point of those
+  double narrow_max = 0;  // the farthest source point of those
 };
 
 // Measures every segment of one curve; with `collect`, picks the point to put back on
@@ -134,6 +127,7 @@ CurveScan scan_curve(const WorkCurve& c, const geo::PolarSphere& ps, const Devia
   const long n = static_cast<long>(c.full.size());
   const long m = static_cast<long>(c.keep.size());
   const double min_angle = opt.min_angle_deg * geo::kDegToRad;
+  const bool bounded = opt.fixed > 0 || opt.factor > 0;
   // A segment's curve depends on the control points two before to three after it.
   auto touched = [&](long s) {
     for (long k = s - 2; k <= s + 3; ++k) {
@@ -181,23 +175,26 @@ CurveScan scan_curve(const WorkCurve& c, const geo::PolarSphere& ps, const Devia
     }
     out.max_ratio = std::max(out.max_ratio, segment_ratio);
     // The curve to the source points: the span that follows the segment against the
-    // source polyline from the control point before it to the one after.
-    v.span(s, own);
-    long from = a, to = b;
-    if (s > 0) {
-      from = v.source_range(s - 1).first;
-    } else if (c.periodic) {
-      from = v.source_range(v.segments() - 1).first - n;
-    }
-    if (s + 1 < v.segments()) {
-      to = v.source_range(s + 1).second;
-    } else if (c.periodic) {
-      to = v.source_range(0).second + n;
-    }
-    source_line.clear();
-    for (long j = from; j <= to; ++j) source_line.push_back(v.source(j));
+    // source polyline from the control point before it to the one after. Without a
+    // bound (measuring only, the default) it decides nothing and is not computed.
     double curve_ratio = 0;
-    for (const Vec3& p : own) curve_ratio = std::max(curve_ratio, polyline_distance(p, source_line) / v.bound(a));
+    if (bounded) {
+      v.span(s, own);
+      long from = a, to = b;
+      if (s > 0) {
+        from = v.source_range(s - 1).first;
+      } else if (c.periodic) {
+        from = v.source_range(v.segments() - 1).first - n;
+      }
+      if (s + 1 < v.segments()) {
+        to = v.source_range(s + 1).second;
+      } else if (c.periodic) {
+        to = v.source_range(0).second + n;
+      }
+      source_line.clear();
+      for (long j = from; j <= to; ++j) source_line.push_back(v.source(j));
+      for (const Vec3& p : own) curve_ratio = std::max(curve_ratio, polyline_distance(p, source_line) / v.bound(a));
+    }
     // A segment whose points would make a spike counts apart: a feature narrower than the
     // accuracy, left out on purpose.
     bool narrow = false;
@@ -251,7 +248,7 @@ DeviationReport bound_deviation(std::vector<WorkCurve>& curves, const DeviationO
   const int threads = resolve_thread_count(opt.threads);
   std::vector<CurveScan> scans(curves.size());
   std::vector<char> active(curves.size(), 1), changed(curves.size(), 0);
-  std::vector<std::vector<char>> fresh(curves.size());   // per control point: put back last round
+  std::vector<std::vector<char>> fresh(curves.size());  // per control point: put back last round
   const int rounds = opt.fixed > 0 || opt.factor > 0 ? opt.max_rounds : 0;
   for (int round = 0; round < rounds; ++round) {
     parallel_for_chunks(threads, curves.size(), 64, [&](std::size_t b, std::size_t e) {
@@ -275,7 +272,7 @@ DeviationReport bound_deviation(std::vector<WorkCurve>& curves, const DeviationO
       std::merge(keep.begin(), keep.end(), s.add.begin(), s.add.end(), std::back_inserter(merged));
       merged.erase(std::unique(merged.begin(), merged.end()), merged.end());
       fresh[i].assign(merged.size(), 0);
-      for (std::size_t k = 0, a = 0; k < merged.size(); ++k) {   // which control points are new
+      for (std::size_t k = 0, a = 0; k < merged.size(); ++k) {  // which control points are new
         while (a < s.add.size() && s.add[a] < merged[k]) ++a;
         if (a < s.add.size() && s.add[a] == merged[k]) fresh[i][k] = 1;
       }
@@ -297,7 +294,7 @@ DeviationReport bound_deviation(std::vector<WorkCurve>& curves, const DeviationO
     }
   });
   std::vector<double> all;
-  if (rep.rounds == 0)   // no bound: measured only
+  if (rep.rounds == 0)  // no bound: measured only
     for (const CurveScan& s : scans) rep.max_before = std::max({rep.max_before, s.max, s.narrow_max});
   for (std::size_t i = 0; i < curves.size(); ++i) {
     const CurveScan& s = scans[i];
@@ -306,7 +303,8 @@ DeviationReport bound_deviation(std::vector<WorkCurve>& curves, const DeviationO
     rep.max_ratio = std::max(rep.max_ratio, s.max_ratio);
     if (s.over > 0 && rep.left_over_bound == 0) rep.where_over = curves[i].full[static_cast<std::size_t>(s.over_at)];
     rep.left_over_bound += s.over;
-    if (s.narrow > 0 && rep.narrow_features == 0) rep.where_narrow = curves[i].full[static_cast<std::size_t>(s.narrow_at)];
+    if (s.narrow > 0 && rep.narrow_features == 0)
+      rep.where_narrow = curves[i].full[static_cast<std::size_t>(s.narrow_at)];
     rep.narrow_features += s.narrow;
     rep.narrow_max = std::max(rep.narrow_max, s.narrow_max);
     all.insert(all.end(), dist[i].begin(), dist[i].end());
