@@ -9,6 +9,7 @@
 
 #include "coast/deviation.h"
 #include "coast/passages.h"
+#include "coast/region_polygon.h"
 #include "exact/ring.h"
 #include "coast/repair.h"
 
@@ -41,6 +42,8 @@ const char* describe(RepairKind k) {
     case RepairKind::DamPlaced: return "dam placed across the water";
     case RepairKind::KeptOpen: return "passage kept open by KeepOpen";
     case RepairKind::DroppedSea: return "sea holding no SeaAt point dropped";
+    case RepairKind::GrazingCrossing: return "Region polygon edge crossing water for less than the accuracy: coast joined across it";
+    case RepairKind::PocketLeftOut: return "water inside the Region polygon only across such crossings left out";
   }
   return "?";
 }
@@ -57,12 +60,82 @@ std::string figure_of(const RepairEntry& e) {
     case RepairKind::ClosedPassage:
     case RepairKind::KeptOpen: return fmt::format("width {:.0f} m", e.value);
     case RepairKind::DroppedSea: return fmt::format("{:.0f} km^2", e.value);
+    case RepairKind::PocketLeftOut: return fmt::format("{:.3g} km^2", e.value);
     case RepairKind::NarrowWater: return fmt::format("mean width {:.0f} m", e.value);
-    case RepairKind::DamPlaced: return fmt::format("{:.0f} m long", e.value);
+    case RepairKind::DamPlaced:
+    case RepairKind::GrazingCrossing: return fmt::format("{:.0f} m long", e.value);
     case RepairKind::Refined:
     case RepairKind::SplineHull: return fmt::format("{} point{}", e.value, e.value == 1 ? "" : "s");
     default: return {};
   }
+}
+
+// A Region polygon's edge that grazes the shore crosses a cove or a bay's mouth for a few
+// tens of metres: an open boundary that short, between two coasts, would be a sliver. Each
+// open piece shorter than gamma at its middle is dropped and the coast pieces on either
+// side are joined along it (the coarsening then thins the join like any coast). Water the
+// polygon takes in only across such crossings (the head of a loch its edge cuts) is left
+// out: the region's seas are those its open boundaries reach.
+void skip_grazing_crossings(RegionResult& r, const ImportOptions& opt, std::vector<RepairEntry>& log) {
+  std::vector<char> left_out(r.loops.size(), 0);
+  for (std::size_t li = 0; li < r.loops.size(); ++li) {
+    RegionLoop& loop = r.loops[li];
+    const std::size_t n = loop.pieces.size();
+    if (n < 2) continue;
+    std::vector<Vec3> mid;
+    std::vector<double> len;
+    std::vector<std::size_t> open;
+    for (std::size_t i = 0; i < n; ++i) {
+      const RegionPiece& p = loop.pieces[i];
+      if (!p.open_boundary) continue;
+      double l = 0;
+      for (std::size_t k = 0; k + 1 < p.pts.size(); ++k)
+        l += norm(geo::sphere_from_lonlat(p.pts[k + 1], opt.radius) - geo::sphere_from_lonlat(p.pts[k], opt.radius));
+      open.push_back(i);
+      len.push_back(l);
+      mid.push_back(geo::sphere_from_lonlat(p.pts[p.pts.size() / 2], opt.radius));
+    }
+    if (open.empty()) continue;
+    std::vector<double> gamma(mid.size());
+    opt.gamma(mid, gamma);
+    std::vector<char> skip(n, 0);
+    std::size_t skipped = 0;
+    for (std::size_t k = 0; k < open.size(); ++k)
+      if (len[k] < gamma[k]) {
+        skip[open[k]] = 1;
+        ++skipped;
+        const RegionPiece& p = loop.pieces[open[k]];
+        log.push_back({RepairKind::GrazingCrossing, static_cast<std::size_t>(-1), -1, p.pts[p.pts.size() / 2], len[k]});
+      }
+    if (skipped == 0) continue;
+    // Start at a coast piece that no skipped piece leads into (one is: some open piece is kept).
+    if (skipped == open.size()) {
+      std::vector<geo::LonLat> ring;
+      for (const RegionPiece& p : loop.pieces) ring.insert(ring.end(), p.pts.begin(), p.pts.end() - 1);
+      log.push_back({RepairKind::PocketLeftOut, static_cast<std::size_t>(-1), -1, ring.front(),
+                     std::abs(ring_area_km2(ring, opt.radius * 1e-3))});
+      left_out[li] = 1;
+      continue;
+    }
+    std::size_t s = 0;
+    while (s < n && (loop.pieces[s].open_boundary || skip[(s + n - 1) % n])) ++s;
+    std::vector<RegionPiece> out;
+    bool joining = false;
+    for (std::size_t k = 0; k < n; ++k) {
+      RegionPiece& p = loop.pieces[(s + k) % n];
+      if (skip[(s + k) % n] || joining) {   // appended to the piece before, its first point shared
+        out.back().pts.insert(out.back().pts.end(), p.pts.begin() + 1, p.pts.end());
+        joining = skip[(s + k) % n] != 0;
+        continue;
+      }
+      out.push_back(std::move(p));
+    }
+    loop.pieces = std::move(out);
+  }
+  std::size_t kept = 0;
+  for (std::size_t li = 0; li < r.loops.size(); ++li)
+    if (!left_out[li]) r.loops[kept++] = std::move(r.loops[li]);
+  r.loops.resize(kept);
 }
 
 }  // namespace
@@ -89,8 +162,11 @@ std::vector<ReportLine> ImportReport::items() const {
     l.sea_dropped = e.kind == RepairKind::DroppedSea;
     l.kept_open = e.kind == RepairKind::KeptOpen;
     if (e.kind == RepairKind::ClosedPassage || e.kind == RepairKind::DroppedSea) l.rank = e.value;
-    l.text = fmt::format("record {} (id {}) at lon {:.5f} lat {:.5f}: {}{}", e.record, e.id, l.where.lon, l.where.lat,
-                         l.what, l.figure.empty() ? std::string() : " (" + l.figure + ")");
+    // Changes of no source record (the Region's own pieces) say only their place.
+    const std::string source =
+        e.record == static_cast<std::size_t>(-1) ? std::string() : fmt::format("record {} (id {}) ", e.record, e.id);
+    l.text = fmt::format("{}at lon {:.5f} lat {:.5f}: {}{}", source, l.where.lon, l.where.lat, l.what,
+                         l.figure.empty() ? std::string() : " (" + l.figure + ")");
     out.push_back(std::move(l));
   }
   return out;
@@ -313,7 +389,15 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
   std::vector<char> piece_is_boundary;
   std::vector<std::vector<std::size_t>> piece_corners;       // per region piece: box corners in its pts
   if (box) {
-    auto clipped = clip_to_region(rings, *box, opt.region_options);
+    Result<RegionResult> clipped = RegionResult{};
+    if (opt.region_polygon.empty()) {
+      clipped = clip_to_region(rings, *box, opt.region_options);
+    } else {
+      auto poly = RegionPolygon::make(opt.region_polygon);
+      if (!poly) return poly.error();
+      clipped = clip_to_polygon(rings, *poly, opt.region_options);
+      if (clipped) skip_grazing_crossings(*clipped, opt, rep.repair);
+    }
     if (!clipped) return clipped.error();
     for (std::size_t i : clipped->inside) to_coarsen.push_back(rings[i]);
     piece_is_boundary.assign(to_coarsen.size(), 0);

@@ -27,6 +27,9 @@ struct ImportOptions {
   AccuracyFn gamma;                    // metres at 3D points of the sphere of `radius`
   double radius = geo::kEarthRadius;   // metres
   std::optional<LonLatBox> region;     // clip to this box
+  /// Clip to this polygon instead (great-circle edges, region_polygon.h) when it has
+  /// vertices; `region` is then its bounding box, for the readers.
+  std::vector<geo::LonLat> region_polygon;
   bool use_file_region = true;         // else clip to the file's own -R box when it has open pieces
   double min_area_km2 = 0;
   std::size_t min_points = 3;
@@ -105,6 +108,8 @@ enum class RepairKind {
   DamPlaced,      // a dam by hand closing the water it crosses (its length in metres)
   KeptOpen,       // a passage kept open by a KeepOpen point (its width there in metres)
   DroppedSea,     // a sea holding no SeaAt point, dropped (a point inside it, its area in km^2)
+  GrazingCrossing,  // a Region polygon edge crossing the shore for less than gamma: no open boundary (length in metres)
+  PocketLeftOut,    // water a Region polygon reaches only across such crossings: left out (its area in km^2)
 };
 
 struct RepairEntry {

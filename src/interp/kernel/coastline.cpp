@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include <fmt/format.h>
@@ -12,6 +13,7 @@
 #include "base/check.h"
 #include "coast/import.h"
 #include "coast/read.h"
+#include "coast/region_polygon.h"
 #include "field/registry.h"
 #include "interp/kernel/coastline_report.h"
 #include "interp/kernel/dispatch.h"
@@ -30,10 +32,12 @@ struct CoastlineImport {
   std::vector<int> outer;            // the outer loop of each surface
   std::vector<int> loops_per_surface;   // outer + holes of each surface, as in `loops`
   std::vector<int> curves, open_curves, points;
+  std::vector<int> coast_points;     // points of the coast curves (no open-boundary point but their ends)
   std::vector<int> coast_curves;     // curves that are not open boundaries (dams included)
   /// Per open curve: the sides of the Region box it runs along (bit 0 West, 1 East,
-  /// 2 South, 3 North).
+  /// 2 South, 3 North), or the edges of the Region polygon (0-based, as given).
   std::vector<std::uint8_t> open_sides;
+  std::vector<std::vector<std::size_t>> open_edges;
   std::vector<std::vector<int>> surface_loops;   // loop tags of each sea, outer first
   /// `Coastline{n, "Deviation"}`: {largest distance of a source point from the curve (m),
   /// 95% quantile (m), largest before control points were put back (m), lon, lat of the
@@ -67,7 +71,7 @@ constexpr CoastOption kOptions[] = {
     {"Levels", OptType::List, false, "GSHHS levels kept (default {1})"},
     {"AntarcticaLevel", OptType::Number, false, "level kept for Antarctica: 5 ice front (default), 6 grounding line, 0 none"},
     {"AccuracyField", OptType::Number, false, "size field giving gamma(x) in metres (required)"},
-    {"Region", OptType::List, false, "{west, east, south, north} in degrees"},
+    {"Region", OptType::List, false, "{west, east, south, north} in degrees, or a polygon {lon1, lat1, lon2, lat2, lon3, lat3, ...} (great-circle edges)"},
     {"MinArea", OptType::Number, false, "drop closed rings below this area (km^2)"},
     {"CurveType", OptType::String, false, "\"BSpline\" (default) or \"Line\""},
     {"MaxDeviation", OptType::Number, false, "the coast curve stays within this distance (m) of the source points (default: DeviationFactor * gamma)"},
@@ -87,11 +91,18 @@ constexpr CoastOption kOptions[] = {
 };
 
 // What `Coastline{n, "What"}` returns.
-constexpr std::string_view kSelectors[] = {"Loops", "Curves", "OpenCurves", "Points", "ControlPoints",
+constexpr std::string_view kSelectors[] = {"Loops", "Curves", "OpenCurves", "Points", "CoastPoints", "ControlPoints",
                                            "Outer", "LoopsPerSurface", "CoastCurves", "Surfaces",
                                            "Closures", "DroppedSeas", "Deviation"};
 // The sides `Coastline{n, "OpenCurves", "West"}` takes, in the bit order of open_sides.
 constexpr std::string_view kSides[] = {"West", "East", "South", "North"};
+
+// A Region list of 6 or more numbers: the polygon's lon/lat vertices.
+std::vector<geo::LonLat> polygon_vertices(const std::vector<double>& x) {
+  std::vector<geo::LonLat> v;
+  for (std::size_t i = 0; i + 1 < x.size(); i += 2) v.push_back({x[i], x[i + 1]});
+  return v;
+}
 
 const CoastOption* find_option(std::string_view name) {
   for (const CoastOption& o : kOptions)
@@ -183,7 +194,16 @@ void check_option_value(Interpreter& in, int id, const CoastOption& o, const Val
     if (x[0] != std::floor(x[0]) || x[0] < (name == "UTMZone" ? 1 : 0) || x[0] > (name == "UTMZone" ? 60 : 2147483647.0))
       fail_option(in, at, id, name, fmt::format("must be {}, not {}", name == "UTMZone" ? "a zone 1 to 60" : "a field id", x[0]));
   } else if (name == "Region") {
-    if (x.size() != 4) fail_option(in, at, id, name, fmt::format("takes {{west, east, south, north}}, not {} numbers", x.size()));
+    if (x.size() != 4) {   // a polygon
+      if (x.size() < 6 || x.size() % 2 != 0)
+        fail_option(in, at, id, name,
+                    fmt::format("takes a box {{west, east, south, north}} or a polygon of 3 or more lon/lat vertices "
+                                "{{lon1, lat1, lon2, lat2, lon3, lat3, ...}}, not {} numbers",
+                                x.size()));
+      auto poly = coast::RegionPolygon::make(polygon_vertices(x));
+      if (!poly) fail_option(in, at, id, name, fmt::format("is not a usable polygon: {}", poly.error().message));
+      return;
+    }
     if (!(x[0] < x[1]) || x[1] - x[0] > 360)
       fail_option(in, at, id, name, fmt::format("needs west < east <= west + 360 (got {} and {})", x[0], x[1]));
     if (!(x[2] < x[3]) || x[2] < -90 || x[3] > 90)
@@ -349,9 +369,16 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
     for (double l : v->nums()) io.levels.push_back(static_cast<int>(l));
   }
   io.antarctica_level = static_cast<int>(number_option(d, "AntarcticaLevel", io.antarctica_level));
+  std::optional<coast::RegionPolygon> polygon;
   if (const Value* v = option(d, "Region")) {
     const auto& r = v->nums();
-    io.region = coast::LonLatBox{r[0], r[1], r[2], r[3]};
+    if (r.size() == 4) {
+      io.region = coast::LonLatBox{r[0], r[1], r[2], r[3]};
+    } else {   // checked when set
+      io.region_polygon = polygon_vertices(r);
+      polygon = *coast::RegionPolygon::make(io.region_polygon);
+      io.region = polygon->bounding_box();
+    }
   }
   io.min_area_km2 = number_option(d, "MinArea", 0);
   io.strait_factor = number_option(d, "MinStraitsFactor", io.strait_factor);
@@ -373,7 +400,13 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
     if (!v) continue;
     const auto& x = v->nums();
     for (std::size_t i = 0; i + 1 < x.size(); i += 2) {
-      if (io.region) {
+      if (polygon && !polygon->contains({x[i], x[i + 1]}))
+        in.fail_with_notes(d.option_at.find(name)->second, Diag::WrongCoastlineOption,
+                           fmt::format("Coastline[{}].{} point (lon {}, lat {}) lies outside the Region polygon", id,
+                                       name, x[i], x[i + 1]),
+                           {{d.option_at.find("Region")->second, fmt::format("Coastline[{}].Region is set here", id)},
+                            {at, "the coastline is imported here"}});
+      if (io.region && !polygon) {
         const coast::LonLatBox& b = *io.region;
         const double lon = b.west + std::fmod(std::fmod(x[i] - b.west, 360.0) + 360.0, 360.0);
         if (lon > b.east || x[i + 1] < b.south || x[i + 1] > b.north)
@@ -466,12 +499,13 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
   if (m.region_empty) {   // the box of the Region, or of the file's own -R
     auto r = d.option_at.find("Region");
     const std::string box =
-        io.region ? fmt::format(" {{{}, {}, {}, {}}}", io.region->west, io.region->east, io.region->south, io.region->north)
+        polygon ? std::string(" polygon")
+        : io.region ? fmt::format(" {{{}, {}, {}, {}}}", io.region->west, io.region->east, io.region->south, io.region->north)
                   : std::string(" of the file");
     in.diags().report(r != d.option_at.end() ? r->second : at, Diag::CoastlineRegionEmpty,
                       fmt::format("Coastline[{}]: the Region{} holds no shoreline of the levels kept (none left at "
-                                  "this accuracy and MinArea): its box is the only loop, all open boundary",
-                                  id, box));
+                                  "this accuracy and MinArea): its {} is the only loop, all open boundary",
+                                  id, box, polygon ? "outline" : "box"));
   }
 
   // Loops surface by surface (outer first), then the holes no outer loop holds.
@@ -516,6 +550,7 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
   }
   std::vector<int> loop_tag(m.loops.size(), 0);
   std::vector<int> pts;
+  std::unordered_set<int> coast_point_seen;
   for (std::uint32_t l : order) {
     const coast::CoastLoop& loop = m.loops[l];
     // Each piece of a loop writes all its points but the last, which is the next piece's
@@ -551,9 +586,14 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
       imp->curves.push_back(tag);
       if (cc.open_boundary) {
         imp->open_curves.push_back(tag);
-        imp->open_sides.push_back(io.region ? box_sides(cc.ll, *io.region) : 0);
+        imp->open_sides.push_back(io.region && !polygon ? box_sides(cc.ll, *io.region) : 0);
+        imp->open_edges.push_back(polygon ? polygon->edges_along(cc.ll) : std::vector<std::size_t>{});
       } else {
         imp->coast_curves.push_back(tag);
+        // Its points, the ends it shares with its neighbours once (the loop's first point
+        // may come last, closing the loop).
+        for (int p : cp)
+          if (coast_point_seen.insert(p).second) imp->coast_points.push_back(p);
       }
     }
     const int tag = model.new_loop_tag();
@@ -602,6 +642,7 @@ Value eval_coastline_query(Interpreter& in, ExprId e) {
   std::vector<std::pair<int, SourceRange>> ids;
   std::string what = "Loops";
   int side = -1;   // OpenCurves of one side of the Region box (index into kSides)
+  long edge = -1;  // or of one edge of the Region polygon ("Edge1" is 0)
   bool have_what = false;
   for (ExprId item : q.ids) {
     const Value v = in.eval(item);
@@ -614,10 +655,13 @@ Value eval_coastline_query(Interpreter& in, ExprId e) {
       if (what != "OpenCurves")
         in.fail_fmt(r, Diag::UnknownCoastlineOption,
                     fmt::format("Coastline{{}} takes a side (\"{}\") only after \"OpenCurves\", not after \"{}\"", t, what));
-      if (side < 0 || v.strs().size() != 1)
+      if (side < 0 && v.strs().size() == 1 && t.size() > 4 && t.size() < 12 && t.starts_with("Edge") &&
+          t.find_first_not_of("0123456789", 4) == std::string::npos && t[4] != '0')
+        edge = std::stol(t.substr(4)) - 1;
+      if ((side < 0 && edge < 0) || v.strs().size() != 1)
         in.fail_fmt(r, Diag::UnknownCoastlineOption,
                     fmt::format("Coastline{{}}: \"{}\" is not a side of the Region box{}; the sides are West, East, South "
-                                "and North",
+                                "and North (Edge1, Edge2, ... for a Region polygon)",
                                 t, did_you_mean(t, names)));
       continue;
     }
@@ -630,7 +674,7 @@ Value eval_coastline_query(Interpreter& in, ExprId e) {
       if (!known || v.strs().size() != 1)
         in.fail_fmt(r, Diag::UnknownCoastlineOption,
                     fmt::format("Coastline{{}} cannot return \"{}\"{}; it returns {}", what, did_you_mean(what, names),
-                                "Loops, Curves, OpenCurves, Points, ControlPoints, Outer, LoopsPerSurface, CoastCurves, "
+                                "Loops, Curves, OpenCurves, Points, CoastPoints, ControlPoints, Outer, LoopsPerSurface, CoastCurves, "
                                 "Surfaces, Closures, DroppedSeas or Deviation"));
       continue;
     }
@@ -644,13 +688,41 @@ Value eval_coastline_query(Interpreter& in, ExprId e) {
   std::vector<double> out;
   for (const auto& [id, r] : ids) {
     CoastlineDef& d = require_coast(in, id, r, "import");
-    if (!d.imported) d.imported = import_coastline(in, id, d, x.range);
-    const CoastlineImport& imp = *d.imported;
+    // A side or an edge the Region does not have: an error before the import runs.
+    const Value* region = option(d, "Region");
+    if (what == "OpenCurves" && edge >= 0) {
+      const std::size_t n = region ? region->nums().size() / 2 : 0;
+      if (!region || n == 2)
+        in.fail_fmt(r, Diag::WrongCoastlineOption,
+                    fmt::format("Coastline{{{}, \"OpenCurves\", \"Edge{}\"}} needs a Region polygon: {}", id, edge + 1,
+                                region ? "this Region is a box, whose sides are West, East, South and North"
+                                       : "there is no Region"));
+      if (static_cast<std::size_t>(edge) >= n)
+        in.fail_fmt(r, Diag::WrongCoastlineOption,
+                    fmt::format("Coastline{{{}, \"OpenCurves\", \"Edge{}\"}}: the Region polygon has {} edges, Edge1 to "
+                                "Edge{}",
+                                id, edge + 1, n, n));
+    }
     if (what == "OpenCurves" && side >= 0) {
-      if (!option(d, "Region"))
+      if (!region)
         in.fail_fmt(r, Diag::WrongCoastlineOption,
                     fmt::format("Coastline{{{}, \"OpenCurves\", \"{}\"}} needs a Region: the sides are those of its box",
                                 id, kSides[side]));
+      if (region->nums().size() != 4)
+        in.fail_fmt(r, Diag::WrongCoastlineOption,
+                    fmt::format("Coastline{{{}, \"OpenCurves\", \"{}\"}}: the Region is a polygon, whose edges are "
+                                "Edge1, Edge2, ...",
+                                id, kSides[side]));
+    }
+    if (!d.imported) d.imported = import_coastline(in, id, d, x.range);
+    const CoastlineImport& imp = *d.imported;
+    if (what == "OpenCurves" && edge >= 0) {
+      for (std::size_t c = 0; c < imp.open_curves.size(); ++c)
+        for (std::size_t k : imp.open_edges[c])
+          if (k == static_cast<std::size_t>(edge)) out.push_back(imp.open_curves[c]);
+      continue;
+    }
+    if (what == "OpenCurves" && side >= 0) {
       for (std::size_t c = 0; c < imp.open_curves.size(); ++c)
         if (imp.open_sides[c] & (1u << side)) out.push_back(imp.open_curves[c]);
       continue;
@@ -679,6 +751,7 @@ Value eval_coastline_query(Interpreter& in, ExprId e) {
                                    : what == "Surfaces"      ? imp.surfaces
                                    : what == "OpenCurves"    ? imp.open_curves
                                    : what == "Points"        ? imp.points
+                                   : what == "CoastPoints"   ? imp.coast_points
                                    : what == "ControlPoints" ? imp.loop_points
                                    : what == "Outer"         ? imp.outer
                                    : what == "LoopsPerSurface" ? imp.loops_per_surface
