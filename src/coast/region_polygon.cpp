@@ -19,41 +19,41 @@
 namespace sm::coast {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr double kRadPerDeg = std::numbers::pi / 180.0;
 // Points farther than this from the centre are not projected: the polygon lies within
 // kRegionPolygonMaxRadiusDeg, so a shoreline segment from there would be 25 degrees long.
-const double kHorizonCos = std::cos(85.0 * kDeg);
+const double kPolygonHorizonCos = std::cos(85.0 * kRadPerDeg);
 
-Vec3 unit(geo::LonLat p) {
-  const double lo = p.lon * kDeg, la = p.lat * kDeg;
+Vec3 unit_of(geo::LonLat p) {
+  const double lo = p.lon * kRadPerDeg, la = p.lat * kRadPerDeg;
   return {std::cos(la) * std::cos(lo), std::cos(la) * std::sin(lo), std::sin(la)};
 }
 
-geo::LonLat lonlat(Vec3 u, double near_lon) {
-  const double lat = std::atan2(u.z, std::hypot(u.x, u.y)) / kDeg;
-  double lon = std::atan2(u.y, u.x) / kDeg;
+geo::LonLat lonlat_of(Vec3 u, double near_lon) {
+  const double lat = std::atan2(u.z, std::hypot(u.x, u.y)) / kRadPerDeg;
+  double lon = std::atan2(u.y, u.x) / kRadPerDeg;
   lon += 360.0 * std::round((near_lon - lon) / 360.0);
   return {lon, lat};
 }
 
-std::string where(geo::LonLat p) { return fmt::format("({:.6g}, {:.6g})", p.lon, p.lat); }
+std::string where_text(geo::LonLat p) { return fmt::format("({:.6g}, {:.6g})", p.lon, p.lat); }
 
-CoastError region_error(std::string message, std::optional<geo::LonLat> at = std::nullopt) {
+CoastError polygon_error(std::string message, std::optional<geo::LonLat> at = std::nullopt) {
   return CoastError{"region", -1, std::move(message), at, "Region"};
 }
 
 // The side of the directed line a -> b a point x counts on: a point on the line counts as
 // on the right. Both ends of a segment are tested with the same rule, so a point on an edge
 // is outside, as point_in_ring has it.
-bool left_of(Vec2 a, Vec2 b, Vec2 x) { return orient2d(a, b, x) == Sign::Positive; }
+bool left_of_line(Vec2 a, Vec2 b, Vec2 x) { return orient2d(a, b, x) == Sign::Positive; }
 
-struct Crossing {
+struct EdgeCrossing {
   double t;        // along the shoreline segment, 0..1
   double param;    // perimeter parameter: edge + fraction along it
   Vec2 at;         // on the edge, gnomonic
 };
 
-struct Chain {
+struct CutChain {
   std::vector<geo::LonLat> pts;
   std::size_t ring = 0;
   double t_in = -1, t_out = -1;   // perimeter parameters of its two ends (-1: not on the polygon)
@@ -62,65 +62,65 @@ struct Chain {
 }  // namespace
 
 bool RegionPolygon::project(geo::LonLat p, Vec2& out) const {
-  const Vec3 u = unit(p);
+  const Vec3 u = unit_of(p);
   const double d = dot(u, c_);
-  if (!(d > kHorizonCos)) return false;
+  if (!(d > kPolygonHorizonCos)) return false;
   out = {dot(u, e1_) / d, dot(u, e2_) / d};
   return true;
 }
 
 geo::LonLat RegionPolygon::unproject(Vec2 xy, double near_lon) const {
   const Vec3 v = c_ + xy.x * e1_ + xy.y * e2_;
-  return lonlat(v / norm(v), near_lon);
+  return lonlat_of(v / norm(v), near_lon);
 }
 
 double RegionPolygon::arc_deg(geo::LonLat a, geo::LonLat b) {
-  const Vec3 ua = unit(a), ub = unit(b);
-  return std::atan2(norm(cross(ua, ub)), dot(ua, ub)) / kDeg;
+  const Vec3 ua = unit_of(a), ub = unit_of(b);
+  return std::atan2(norm(cross(ua, ub)), dot(ua, ub)) / kRadPerDeg;
 }
 
 geo::LonLat RegionPolygon::along_arc(geo::LonLat a, geo::LonLat b, double f) {
   if (f <= 0) return a;
   if (f >= 1) return b;
-  const Vec3 ua = unit(a), ub = unit(b);
+  const Vec3 ua = unit_of(a), ub = unit_of(b);
   const double w = std::atan2(norm(cross(ua, ub)), dot(ua, ub));
   if (w < 1e-15) return a;
   const Vec3 v = (std::sin((1 - f) * w) * ua + std::sin(f * w) * ub) / std::sin(w);
-  return lonlat(v / norm(v), a.lon);
+  return lonlat_of(v / norm(v), a.lon);
 }
 
 Result<RegionPolygon> RegionPolygon::make(const std::vector<geo::LonLat>& given) {
   const std::size_t n = given.size();
-  if (n < 3) return region_error(fmt::format("a region polygon needs at least 3 vertices, not {}", n));
+  if (n < 3) return polygon_error(fmt::format("a region polygon needs at least 3 vertices, not {}", n));
   if (n > kRegionPolygonMaxVertices)
-    return region_error(fmt::format("a region polygon may have at most {} vertices, not {}",
+    return polygon_error(fmt::format("a region polygon may have at most {} vertices, not {}",
                                     kRegionPolygonMaxVertices, n));
   Vec3 sum{};
   for (std::size_t i = 0; i < n; ++i) {
     const geo::LonLat p = given[i];
     if (!std::isfinite(p.lon) || !std::isfinite(p.lat) || p.lat < -90 || p.lat > 90)
-      return region_error(fmt::format("region polygon vertex {} {}: the latitude must lie in [-90, 90]", i + 1, where(p)),
+      return polygon_error(fmt::format("region polygon vertex {} {}: the latitude must lie in [-90, 90]", i + 1, where_text(p)),
                           p);
     const geo::LonLat q = given[(i + 1) % n];
     if (arc_deg(p, q) < 1e-9)
-      return region_error(fmt::format("region polygon vertices {} and {} are the same point {}", i + 1, (i + 1) % n + 1,
-                                      where(p)),
+      return polygon_error(fmt::format("region polygon vertices {} and {} are the same point {}", i + 1, (i + 1) % n + 1,
+                                      where_text(p)),
                           p);
-    sum += unit(p);
+    sum += unit_of(p);
   }
   RegionPolygon poly;
-  if (norm(sum) < 1e-9) return region_error("the region polygon's vertices have no centre (they spread round the sphere)");
+  if (norm(sum) < 1e-9) return polygon_error("the region polygon's vertices have no centre (they spread round the sphere)");
   poly.c_ = sum / norm(sum);
   Vec3 east = cross(Vec3{0, 0, 1}, poly.c_);
   if (norm(east) < 1e-9) east = {0, 1, 0};   // centre at a pole: any east will do
   poly.e1_ = east / norm(east);
   poly.e2_ = cross(poly.c_, poly.e1_);
-  const double max_cos = std::cos(kRegionPolygonMaxRadiusDeg * kDeg);
+  const double max_cos = std::cos(kRegionPolygonMaxRadiusDeg * kRadPerDeg);
   for (std::size_t i = 0; i < n; ++i) {
-    if (dot(unit(given[i]), poly.c_) < max_cos)
-      return region_error(fmt::format("region polygon vertex {} {} lies more than {} degrees from the polygon's "
+    if (dot(unit_of(given[i]), poly.c_) < max_cos)
+      return polygon_error(fmt::format("region polygon vertex {} {} lies more than {} degrees from the polygon's "
                                       "centre: split the region, or use a box",
-                                      i + 1, where(given[i]), kRegionPolygonMaxRadiusDeg),
+                                      i + 1, where_text(given[i]), kRegionPolygonMaxRadiusDeg),
                           given[i]);
     Vec2 xy;
     poly.project(given[i], xy);
@@ -135,13 +135,13 @@ Result<RegionPolygon> RegionPolygon::make(const std::vector<geo::LonLat>& given)
       const bool neighbours = j == i + 1 || (i == 0 && j == n - 1);
       const bool bad = neighbours ? k.kind == SegmentContactKind::Overlap : k.kind != SegmentContactKind::None;
       if (bad)
-        return region_error(fmt::format("the region polygon crosses itself: edges {} and {} meet (vertex {} {} to "
+        return polygon_error(fmt::format("the region polygon crosses itself: edges {} and {} meet (vertex {} {} to "
                                         "vertex {}, and vertex {} to vertex {})",
-                                        i + 1, j + 1, i + 1, where(given[i]), (i + 1) % n + 1, j + 1, (j + 1) % n + 1),
+                                        i + 1, j + 1, i + 1, where_text(given[i]), (i + 1) % n + 1, j + 1, (j + 1) % n + 1),
                             given[i]);
     }
   const Sign o = ring_orientation(poly.gn_);
-  if (o == Sign::Zero) return region_error("the region polygon has no area");
+  if (o == Sign::Zero) return polygon_error("the region polygon has no area");
   if (o == Sign::Negative) {
     std::reverse(poly.gn_.begin(), poly.gn_.end());
     std::reverse(poly.ll_.begin(), poly.ll_.end());
@@ -154,7 +154,7 @@ Result<RegionPolygon> RegionPolygon::make(const std::vector<geo::LonLat>& given)
   }
   for (const geo::LonLat pole : {geo::LonLat{0, 90}, geo::LonLat{0, -90}})
     if (poly.contains(pole))
-      return region_error(fmt::format("the region polygon holds the {} Pole: use a box reaching the pole (a polar cap)",
+      return polygon_error(fmt::format("the region polygon holds the {} Pole: use a box reaching the pole (a polar cap)",
                                       pole.lat > 0 ? "North" : "South"));
   return poly;
 }
@@ -190,11 +190,11 @@ std::vector<std::size_t> RegionPolygon::edges_along(const std::vector<geo::LonLa
   constexpr double kOn = 1e-9;   // radians off the edge's great circle
   std::vector<std::size_t> out;
   for (std::size_t i = 0; i < size(); ++i) {
-    const Vec3 a = unit(ll_[i]), b = unit(ll_[(i + 1) % size()]);
+    const Vec3 a = unit_of(ll_[i]), b = unit_of(ll_[(i + 1) % size()]);
     Vec3 nrm = cross(a, b);
     nrm = nrm / norm(nrm);
     auto on = [&](geo::LonLat p) {
-      const Vec3 u = unit(p);
+      const Vec3 u = unit_of(p);
       // On the great circle, and between a and b (on the same side of both ends' planes).
       return std::abs(dot(u, nrm)) < kOn && dot(cross(a, u), nrm) >= -kOn && dot(cross(u, b), nrm) >= -kOn;
     };
@@ -256,7 +256,7 @@ std::vector<geo::LonLat> polygon_path(const RegionPolygon& poly, geo::LonLat a, 
 }
 
 // Where the shoreline segment p -> q (gnomonic) crosses the polygon's edges, by t along it.
-void crossings_of(const RegionPolygon& poly, Vec2 p, Vec2 q, std::vector<Crossing>& out) {
+void crossings_of(const RegionPolygon& poly, Vec2 p, Vec2 q, std::vector<EdgeCrossing>& out) {
   out.clear();
   const std::size_t n = poly.size();
   const Vec2 lo{std::min(p.x, q.x), std::min(p.y, q.y)}, hi{std::max(p.x, q.x), std::max(p.y, q.y)};
@@ -265,8 +265,8 @@ void crossings_of(const RegionPolygon& poly, Vec2 p, Vec2 q, std::vector<Crossin
     if (std::max(a.x, b.x) < lo.x || std::min(a.x, b.x) > hi.x || std::max(a.y, b.y) < lo.y ||
         std::min(a.y, b.y) > hi.y)
       continue;
-    if (left_of(a, b, p) == left_of(a, b, q)) continue;
-    if (left_of(p, q, a) == left_of(p, q, b)) continue;
+    if (left_of_line(a, b, p) == left_of_line(a, b, q)) continue;
+    if (left_of_line(p, q, a) == left_of_line(p, q, b)) continue;
     const Vec2 d = q - p, f = b - a;
     const double den = cross(d, f);
     double t = den != 0 ? cross(a - p, f) / den : 0.5;
@@ -277,7 +277,7 @@ void crossings_of(const RegionPolygon& poly, Vec2 p, Vec2 q, std::vector<Crossin
     out.push_back({t, static_cast<double>(e) + s, a + s * f});
   }
   std::sort(out.begin(), out.end(),
-            [](const Crossing& x, const Crossing& y) { return x.t != y.t ? x.t < y.t : x.param < y.param; });
+            [](const EdgeCrossing& x, const EdgeCrossing& y) { return x.t != y.t ? x.t < y.t : x.param < y.param; });
 }
 
 }  // namespace
@@ -285,10 +285,10 @@ void crossings_of(const RegionPolygon& poly, Vec2 p, Vec2 q, std::vector<Crossin
 Result<RegionResult> clip_to_polygon(const std::vector<Ring>& rings, const RegionPolygon& poly,
                                      const RegionOptions& opt) {
   RegionResult out;
-  std::vector<Chain> chains;
+  std::vector<CutChain> chains;
   std::vector<Vec2> xy;
   std::vector<char> near;   // projected (within 85 degrees of the centre)
-  std::vector<Crossing> cx;
+  std::vector<EdgeCrossing> cx;
   for (std::size_t ri = 0; ri < rings.size(); ++ri) {
     const Ring& r = rings[ri];
     const std::size_t n = r.pts.size();
@@ -304,7 +304,7 @@ Result<RegionResult> clip_to_polygon(const std::vector<Ring>& rings, const Regio
     const bool start_inside = inside;
     const std::size_t first_chain = chains.size();
     bool crossed = false;
-    std::optional<Chain> cur;
+    std::optional<CutChain> cur;
     if (inside) {
       cur.emplace();
       cur->ring = ri;
@@ -320,7 +320,7 @@ Result<RegionResult> clip_to_polygon(const std::vector<Ring>& rings, const Regio
         continue;
       }
       crossings_of(poly, xy[i], xy[j], cx);
-      for (const Crossing& c : cx) {
+      for (const EdgeCrossing& c : cx) {
         crossed = true;
         const geo::LonLat at = poly.unproject(c.at, r.pts[i].lon);
         if (!inside) {
@@ -354,7 +354,7 @@ Result<RegionResult> clip_to_polygon(const std::vector<Ring>& rings, const Regio
       if (r.closed && start_inside && first_chain < chains.size()) {
         // The walk began inside at point 0, which this chain stopped short of: the chain
         // the walk began with continues this one.
-        Chain& head = chains[first_chain];
+        CutChain& head = chains[first_chain];
         cur->pts.insert(cur->pts.end(), head.pts.begin(), head.pts.end());
         cur->t_out = head.t_out;
         head = std::move(*cur);
@@ -363,7 +363,7 @@ Result<RegionResult> clip_to_polygon(const std::vector<Ring>& rings, const Regio
       }
     }
   }
-  for (const Chain& c : chains)
+  for (const CutChain& c : chains)
     if (c.t_in < 0 || c.t_out < 0)
       return CoastError{"region", static_cast<std::int64_t>(rings[c.ring].record),
                         "an open coastline ends inside the region polygon: it cannot be closed along the polygon "
@@ -385,7 +385,7 @@ Result<RegionResult> clip_to_polygon(const std::vector<Ring>& rings, const Regio
       const geo::LonLat ll = poly.unproject(m, poly.vertex(low).lon);
       if (poly.contains(ll)) mid = ll;
     }
-    if (!mid) return region_error("the region polygon has no point inside it");
+    if (!mid) return polygon_error("the region polygon has no point inside it");
     std::vector<Vec2> ring_xy;
     for (const Ring& r : rings) {
       if (!r.closed || r.wraps_pole || r.level != 1) continue;
