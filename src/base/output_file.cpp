@@ -255,6 +255,9 @@ bool OutputFile::prepare() {
   if (fd_ < 0) return failed_ ? false : fail("the file is not open", EBADF);
   if (!flush_buffer()) return false;
   if (!direct_ && ::fsync(fd_) != 0) return fail("", errno);
+  // Nothing more is written: the buffer's memory goes back now, not at publish(), since
+  // commit_together may hold a thousand prepared files (one per mesh part).
+  std::vector<char>().swap(buffer_);
   prepared_ = true;
   return !failed_;
 }
