@@ -1,5 +1,5 @@
 // Named temporary files removed when the program is interrupted (SIGINT,
-// SIGTERM, SIGHUP), so that Ctrl-C during a write leaves no "x.msh.tmp-XXXXXX".
+// SIGTERM, SIGHUP), so that Ctrl-C during a write leaves no ".x.msh.stereomesh-tmp-PID-XXXXXX".
 // The table is process-wide because a signal handler can reach nothing else;
 // it holds only paths, in fixed slots that the handler reads without locking.
 #pragma once

@@ -4,10 +4,13 @@
 
 #include "base/file_identity.h"
 
+#include <dirent.h>
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cerrno>
 #include <charconv>
 #include <cstring>
@@ -22,6 +25,7 @@ namespace {
 
 constexpr std::size_t kBufferBytes = std::size_t{1} << 16;
 constexpr int kMaxLinkHops = 40;   // as the kernel's own limit (ELOOP)
+constexpr int kMaxSweepEntries = 1 << 24;
 
 std::string dir_of(const std::string& path) {
   const std::size_t slash = path.find_last_of('/');
@@ -73,6 +77,60 @@ mode_t new_file_mode() {
   const mode_t mask = ::umask(022);
   ::umask(mask);
   return 0666 & ~mask;
+}
+
+// Temporary names: "<dir>/.<name>.stereomesh-tmp-<pid>-<suffix>" beside the target
+// "<dir>/<name>". A SIGKILL can leave one behind (the fallback writes under it; the
+// unnamed file has it for the instant before the rename), so every open of the same
+// target first removes those whose process is gone: the prefix says which target a
+// file was for, the pid whether its writer may still be running.
+std::string temporary_prefix(const std::string& target) {
+  const std::size_t slash = target.find_last_of('/');
+  const std::string name = slash == std::string::npos ? target : target.substr(slash + 1);
+  return "." + name + ".stereomesh-tmp-";
+}
+
+// The pid of a temporary named `entry` for the target with that prefix, or 0 when the name
+// is not exactly prefix, decimal pid, '-', letters and digits (what this file makes).
+pid_t temporary_owner(std::string_view entry, std::string_view prefix) {
+  if (entry.size() <= prefix.size() || entry.substr(0, prefix.size()) != prefix) return 0;
+  const char* first = entry.data() + prefix.size();
+  const char* last = entry.data() + entry.size();
+  long pid = 0;
+  const auto r = std::from_chars(first, last, pid);
+  if (r.ec != std::errc() || r.ptr == first || pid <= 0 || r.ptr == last || *r.ptr != '-') return 0;
+  const char* suffix = r.ptr + 1;
+  if (suffix == last) return 0;
+  for (const char* c = suffix; c != last; ++c)
+    if (!std::isalnum(static_cast<unsigned char>(*c))) return 0;
+  return static_cast<pid_t>(pid);
+}
+
+// Removes the temporaries of `target` left by runs that were killed: regular files of
+// ours, named by our pattern, whose pid is not a live process. A temporary of a live
+// process (another run writing the same file, or this one) is never touched; a pid
+// reused since only keeps a stale file until the next run. Best effort: a directory
+// that cannot be listed changes nothing (open_temporary reports the real problem).
+void sweep_stale_temporaries(const std::string& target) {
+  const std::string dir = dir_of(target);
+  const std::string prefix = temporary_prefix(target);
+  DIR* d = ::opendir(dir.c_str());
+  if (d == nullptr) return;
+  const uid_t me = ::geteuid();
+  // readdir ends at the directory's last entry; the bound only guards a directory that
+  // keeps growing while it is listed.
+  for (int k = 0; k < kMaxSweepEntries; ++k) {
+    const dirent* e = ::readdir(d);
+    if (e == nullptr) break;
+    const pid_t pid = temporary_owner(e->d_name, prefix);
+    if (pid == 0 || pid == ::getpid()) continue;
+    if (::kill(pid, 0) == 0 || errno != ESRCH) continue;   // alive, or not ours to ask about
+    struct stat st {};
+    if (::fstatat(::dirfd(d), e->d_name, &st, AT_SYMLINK_NOFOLLOW) != 0) continue;
+    if (!S_ISREG(st.st_mode) || st.st_uid != me) continue;
+    ::unlinkat(::dirfd(d), e->d_name, 0);
+  }
+  ::closedir(d);
 }
 
 bool write_all(int fd, const char* data, std::size_t size) {
@@ -153,6 +211,7 @@ bool OutputFile::open(const std::string& path) {
 
 bool OutputFile::open_temporary() {
   const std::string dir = dir_of(target_);
+  sweep_stale_temporaries(target_);
 #ifdef O_TMPFILE
   fd_ = ::open(dir.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0600);
   if (fd_ >= 0) {
@@ -163,7 +222,7 @@ bool OutputFile::open_temporary() {
   // kernels); anything else (no such directory, no permission) is the answer.
   if (errno != EOPNOTSUPP && errno != EISDIR && errno != EINVAL) return fail("", errno);
 #endif
-  std::string templ = target_ + ".tmp-XXXXXX";
+  std::string templ = dir + "/" + temporary_prefix(target_) + std::to_string(::getpid()) + "-XXXXXX";
   fd_ = ::mkostemp(templ.data(), O_CLOEXEC);
   if (fd_ < 0) return fail("", errno);
   temp_path_ = templ;
@@ -196,6 +255,9 @@ bool OutputFile::prepare() {
   if (fd_ < 0) return failed_ ? false : fail("the file is not open", EBADF);
   if (!flush_buffer()) return false;
   if (!direct_ && ::fsync(fd_) != 0) return fail("", errno);
+  // Nothing more is written: the buffer's memory goes back now, not at publish(), since
+  // commit_together may hold a thousand prepared files (one per mesh part).
+  std::vector<char>().swap(buffer_);
   prepared_ = true;
   return !failed_;
 }
@@ -212,13 +274,33 @@ bool OutputFile::publish() {
     return true;
   }
   if (anonymous_) {
-    // A name for the instant between link and rename (linkat cannot replace).
     const std::string proc = fmt::format("/proc/self/fd/{}", fd_);
+    const auto link_to = [&](const std::string& name) {
+      return ::linkat(AT_FDCWD, proc.c_str(), AT_FDCWD, name.c_str(), AT_SYMLINK_FOLLOW) == 0 ||
+             ::linkat(fd_, "", AT_FDCWD, name.c_str(), AT_EMPTY_PATH) == 0;
+    };
+    // A new target is linked in place at once: the file never has another name, so no
+    // moment of the run, SIGKILL included, leaves a temporary behind.
+    if (link_to(target_)) {
+      const int closed = ::close(fd_);
+      const int close_err = errno;
+      fd_ = -1;
+      // The data were synced by prepare(); a failing close cannot take them back.
+      return closed == 0 || fail("", close_err);
+    }
+    if (errno != EEXIST) {
+      const int err = errno;
+      abandon();
+      return fail("cannot give the new file a name", err);
+    }
+    // linkat cannot replace a file, so an existing target gets the temporary name for
+    // the instant before the rename (swept by the next write of it if killed there).
+    const std::string dir = dir_of(target_);
+    const std::string prefix = dir + "/" + temporary_prefix(target_) + std::to_string(::getpid()) + "-";
     for (int attempt = 0; attempt < 100 && temp_path_.empty(); ++attempt) {
-      std::string name = fmt::format("{}.tmp-{}-{}", target_, ::getpid(), attempt);
+      std::string name = prefix + std::to_string(attempt);
       const int slot = register_temporary(name.c_str());
-      if (::linkat(AT_FDCWD, proc.c_str(), AT_FDCWD, name.c_str(), AT_SYMLINK_FOLLOW) == 0 ||
-          ::linkat(fd_, "", AT_FDCWD, name.c_str(), AT_EMPTY_PATH) == 0) {
+      if (link_to(name)) {
         temp_path_ = std::move(name);
         cleanup_slot_ = slot;
         break;

@@ -10,10 +10,13 @@
 //   a regular file, or nothing yet     a temporary file in the directory of the final
 //   (through any symbolic links)       target (links resolved), renamed over it at commit
 //
-// The temporary file is unnamed where the system allows (O_TMPFILE: nothing is
-// left behind even by SIGKILL) and is given a name only for the instant before
-// the rename; elsewhere it is "<target>.tmp-XXXXXX", removed on SIGINT and SIGTERM
-// (base/interrupt_cleanup.h) and when the write fails or is abandoned.
+// The temporary file is unnamed where the system allows (O_TMPFILE): a new target
+// is linked in place directly, and an existing one is replaced through a name held
+// only for the instant before the rename. Elsewhere the bytes go to a named
+// temporary. Either name is ".<name>.stereomesh-tmp-<pid>-<suffix>" beside the
+// target, removed on SIGINT and SIGTERM (base/interrupt_cleanup.h) and when the write
+// fails or is abandoned; one a SIGKILL left behind is removed by the next write of
+// the same target once its pid is no longer running.
 #pragma once
 
 #include <cstddef>

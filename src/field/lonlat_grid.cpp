@@ -36,18 +36,32 @@ constexpr std::uint64_t kMaxGridValues = std::uint64_t{1} << 31;
   throw e;
 }
 
-/// Checks that `c` is evenly spaced; returns (first, step), step may be < 0.
-std::pair<double, double> even_axis(const std::filesystem::path& file, const std::string& name,
-                                    const std::vector<double>& c) {
-  if (c.size() < 2) file_error(file, fmt::format("coordinate '{}' needs at least 2 values", name));
+/// Checks that `c`, the `role` ("longitude", "latitude") axis held by variable `name`, is
+/// finite, strictly monotonic and evenly spaced, in that order, so that the message names
+/// the first index that breaks the first rule (a NaN would otherwise pass every
+/// comparison, and a step back would read as mere unevenness); returns (first, step),
+/// step may be < 0.
+std::pair<double, double> even_axis(const std::filesystem::path& file, std::string_view role,
+                                    const std::string& name, const std::vector<double>& c) {
+  if (c.size() < 2) file_error(file, fmt::format("{} axis '{}' needs at least 2 values", role, name));
+  for (std::size_t k = 0; k < c.size(); ++k)
+    if (!std::isfinite(c[k]))
+      file_error(file, fmt::format("{} axis '{}' holds {} at index {}", role, name, c[k], k));
+  const bool rising = c[1] > c[0];
+  for (std::size_t k = 1; k < c.size(); ++k) {
+    if (c[k] == c[k - 1])
+      file_error(file, fmt::format("{} axis '{}' repeats the value {} at index {} (as index {}): it must be "
+                                   "strictly monotonic", role, name, c[k], k, k - 1));
+    if ((c[k] > c[k - 1]) != rising)
+      file_error(file, fmt::format("{} axis '{}' is not monotonic: value {} at index {} after {} at index {}",
+                                   role, name, c[k], k, c[k - 1], k - 1));
+  }
   const double step = (c.back() - c.front()) / static_cast<double>(c.size() - 1);
-  if (!(std::fabs(step) > 0) || !std::isfinite(step))
-    file_error(file, fmt::format("coordinate '{}' is not monotonic", name));
   for (std::size_t k = 0; k < c.size(); ++k) {
     const double expect = c.front() + step * static_cast<double>(k);
-    if (std::fabs(c[k] - expect) > 1e-3 * std::fabs(step))
-      file_error(file, fmt::format("coordinate '{}' is not evenly spaced (value {} at index {}, "
-                                   "expected {})", name, c[k], k, expect));
+    if (!(std::fabs(c[k] - expect) <= 1e-3 * std::fabs(step)))
+      file_error(file, fmt::format("{} axis '{}' is not evenly spaced: value {} at index {}, expected {} "
+                                   "(the grid is read as regular)", role, name, c[k], k, expect));
   }
   return {c.front(), step};
 }
@@ -366,8 +380,8 @@ LonLatGrid read_netcdf_grid(const std::filesystem::path& file, const NetcdfGridS
                                      "truncated", nc.var_name(cv), need_c, have));
     }
   }
-  const auto [x0, dx] = even_axis(file, nc.var_name(lon_v), nc.read(lon_v, nx));
-  const auto [y0, dy] = even_axis(file, nc.var_name(lat_v), nc.read(lat_v, ny));
+  const auto [x0, dx] = even_axis(file, "longitude", nc.var_name(lon_v), nc.read(lon_v, nx));
+  const auto [y0, dy] = even_axis(file, "latitude", nc.var_name(lat_v), nc.read(lat_v, ny));
   double scale = 1, offset = 0, fill = 0, missing = 0;
   const bool has_scale = nc.att(zv, "scale_factor", scale);
   const bool has_offset = nc.att(zv, "add_offset", offset);

@@ -28,14 +28,18 @@ struct Grid3 {
   throw e;
 }
 
+// The axes of a structured grid are implicit (origin + k * spacing), so they are regular
+// by construction; what can break them is a NaN, an infinity or a zero step, named here
+// with the axis (x, y, z) and its values.
 void check_header(const std::filesystem::path& file, const Grid3& g) {
-  for (int a = 0; a < 3; ++a) {
-    if (g.n[static_cast<std::size_t>(a)] < 1 || g.n[static_cast<std::size_t>(a)] > (1 << 24))
-      file_error(file, fmt::format("bad node count {} along axis {}", g.n[static_cast<std::size_t>(a)], a));
-    if (!std::isfinite(g.o[static_cast<std::size_t>(a)]) || !std::isfinite(g.d[static_cast<std::size_t>(a)]))
-      file_error(file, "origin and spacing must be finite");
-    if (g.n[static_cast<std::size_t>(a)] > 1 && g.d[static_cast<std::size_t>(a)] == 0)
-      file_error(file, fmt::format("zero spacing along axis {} with {} nodes", a, g.n[static_cast<std::size_t>(a)]));
+  for (std::size_t a = 0; a < 3; ++a) {
+    const char axis = "xyz"[a];
+    if (g.n[a] < 1 || g.n[a] > (1 << 24))
+      file_error(file, fmt::format("bad node count {} along axis {}", g.n[a], axis));
+    if (!std::isfinite(g.o[a]) || !std::isfinite(g.d[a]))
+      file_error(file, fmt::format("axis {} has origin {} and spacing {}: both must be finite", axis, g.o[a], g.d[a]));
+    if (g.n[a] > 1 && g.d[a] == 0)
+      file_error(file, fmt::format("zero spacing along axis {} with {} nodes", axis, g.n[a]));
   }
 }
 

@@ -533,19 +533,20 @@ bool save_msh(const MeshModel& mesh, const MshOptions& opt, const std::string& p
   return true;
 }
 
-bool save_msh_files(const std::vector<const MeshModel*>& meshes, const MshOptions& opt,
+bool save_msh_files(const std::function<const MeshModel&(std::size_t)>& mesh, const MshOptions& opt,
                     const std::vector<std::string>& paths, std::string* error) {
-  for (const MeshModel* m : meshes)
-    if (!check_msh(*m, opt, error)) return false;
-  std::vector<base::OutputFile> files(meshes.size());
-  for (std::size_t i = 0; i < meshes.size(); ++i) {
+  std::vector<base::OutputFile> files(paths.size());
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    const MeshModel& m = mesh(i);
+    if (!check_msh(m, opt, error)) return false;
     if (!files[i].open(paths[i])) {
       *error = files[i].error();
       return false;
     }
     Out o(&files[i], opt.threads);
-    write_all(o, *meshes[i], opt);
-    if (!o.finish()) {
+    write_all(o, m, opt);
+    // Synced now, renamed with the others at the end: what waits holds a descriptor only.
+    if (!o.finish() || !files[i].prepare()) {
       *error = files[i].error();
       return false;
     }

@@ -3,6 +3,7 @@
 // Gmsh 4.8.4's reference manual, the MSH format chapter) so that every file loads in Gmsh.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -30,10 +31,12 @@ std::string msh_to_string(const MeshModel& mesh, const MshOptions& opt);
 /// 'PATH': REASON"); the target path is then untouched.
 bool save_msh(const MeshModel& mesh, const MshOptions& opt, const std::string& path, std::string* error);
 
-/// Writes meshes[i] to paths[i], all renamed into place only once every one is complete
-/// (Mesh.PartitionSplitMeshFiles: one file per part); on failure *error names the file
-/// that failed and no target is touched.
-bool save_msh_files(const std::vector<const MeshModel*>& meshes, const MshOptions& opt,
+/// Writes mesh(i) to paths[i] for each i, all renamed into place only once every one is
+/// complete (Mesh.PartitionSplitMeshFiles: one file per part); on failure *error names the
+/// file that failed and no target is touched. mesh(i) is called once per file, in order,
+/// and what it returns is written before mesh(i + 1) is asked for: the caller may build
+/// each mesh in one reused object, so that memory holds one part at a time.
+bool save_msh_files(const std::function<const MeshModel&(std::size_t)>& mesh, const MshOptions& opt,
                     const std::vector<std::string>& paths, std::string* error);
 
 }  // namespace sm::io

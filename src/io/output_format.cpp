@@ -24,18 +24,23 @@ bool write_msh(const MeshModel& m, const OutputSettings& s, const std::string& p
   o.node_data = s.node_data;
   o.threads = s.threads;
   if (!s.partition) return save_msh(m, o, path, error);
-  const MeshModel partitioned = partitioned_model(m, *s.partition, s.partition_topology);
+  MeshModel partitioned = partitioned_model(m, *s.partition, s.partition_topology);
   if (!s.split_files) return save_msh(partitioned, o, path, error);
-  std::vector<MeshModel> pieces;
+  // One part at a time (-part 1000 on the World Ocean ran out of memory when every piece
+  // was built first): each piece is built when its file is written and replaced by the
+  // next, and the node coordinates pass from piece to piece instead of being copied.
   std::vector<std::string> paths;
-  for (int p = 1; p <= s.partition->parts; ++p) {
-    pieces.push_back(partition_piece(partitioned, p));
-    paths.push_back(partition_file_name(path, p));
-  }
+  for (int p = 1; p <= s.partition->parts; ++p) paths.push_back(partition_file_name(path, p));
+  std::vector<Vec3> xyz = std::move(partitioned.xyz);
+  MeshModel piece;
+  const auto make = [&](std::size_t k) -> const MeshModel& {
+    if (!piece.xyz.empty()) xyz = std::move(piece.xyz);
+    piece = MeshModel();
+    piece = partition_piece(partitioned, static_cast<int>(k) + 1, std::move(xyz));
+    return piece;
+  };
   // Node data are per node of the whole mesh: each file's $NodeData holds its own nodes.
-  std::vector<const MeshModel*> all;
-  for (const MeshModel& piece : pieces) all.push_back(&piece);
-  return save_msh_files(all, o, paths, error);
+  return save_msh_files(make, o, paths, error);
 }
 
 // The partition of each node as one more node value, beside Mesh.NodeData's.

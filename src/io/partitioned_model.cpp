@@ -297,8 +297,12 @@ MeshModel partitioned_model(const MeshModel& mesh, const MeshPartition& partitio
 }
 
 MeshModel partition_piece(const MeshModel& partitioned, int part) {
+  return partition_piece(partitioned, part, partitioned.xyz);
+}
+
+MeshModel partition_piece(const MeshModel& partitioned, int part, std::vector<Vec3> xyz) {
   MeshModel out;
-  out.xyz = partitioned.xyz;
+  out.xyz = std::move(xyz);
   out.physicals = partitioned.physicals;
   out.num_partitions = partitioned.num_partitions;
   std::set<std::pair<int, int>> present;

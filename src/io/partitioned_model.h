@@ -33,5 +33,10 @@ MeshModel partitioned_model(const MeshModel& mesh, const MeshPartition& partitio
 /// the nodes classified again among them, and the model's entities without mesh, as
 /// Gmsh 4.8.4 writes it.
 MeshModel partition_piece(const MeshModel& partitioned, int part);
+/// The same, with the node coordinates given rather than copied from `partitioned`
+/// (`xyz` must be those coordinates; `partitioned.xyz` itself is not read and may be
+/// empty): a writer of many parts lends one array to each piece in turn, so that a
+/// thousand parts of a large mesh never hold a thousand copies of it.
+MeshModel partition_piece(const MeshModel& partitioned, int part, std::vector<Vec3> xyz);
 
 }  // namespace sm::io
