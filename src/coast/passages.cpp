@@ -15,6 +15,7 @@
 
 #include <fmt/format.h>
 
+#include "base/check.h"
 #include "coast/coarsen.h"
 #include "coast/intersections.h"
 #include "exact/ring.h"
@@ -54,23 +55,25 @@ struct Node {
   std::uint32_t src;
 };
 
+// The points of every loop live once in Work's pool, linked into rings; a loop is its
+// first node and its kept nodes (the polygon). A cut relinks four nodes and splits the
+// kept list; the original points are never copied (a continent's ring is 3 M points at
+// full resolution, and a cut per inlet copied it: cuts x ring size, 474 s on the world).
+//
+//   pool:  ... a0 -> (originals of a0-a1, dropped) -> a1 ...  b0 -> ... -> b1 ...
+//   cut:   next[a0] = b1, next[b0] = a1; src[a0], src[b0] become the two dams
 struct FlatLoop {
-  std::vector<Node> nodes;      // cyclic
-  std::vector<std::uint32_t> kept;   // indices of kept nodes: the polygon
+  const std::vector<Node>* pool = nullptr;
+  std::uint32_t head = 0;              // the node the loop's rebuild starts from
+  std::vector<std::uint32_t> kept;     // kept node ids in ring order from head: the polygon
   bool hole = true;
   bool dead = false;
   bool changed = false;
-  void index() {
-    kept.clear();
-    for (std::uint32_t i = 0; i < nodes.size(); ++i)
-      if (nodes[i].kept) kept.push_back(i);
-  }
-  Vec2 p(std::size_t j) const { return nodes[kept[j % kept.size()]].uv; }
-  /// Dead: nothing reads it again, so its points are freed (a continent's ring is copied
-  /// by every cut of it: hundreds of copies of the world's coast otherwise, 380 MB).
+  const Node& node(std::size_t j) const { return (*pool)[kept[j % kept.size()]]; }
+  Vec2 p(std::size_t j) const { return node(j).uv; }
+  /// Dead: nothing reads it again, so its kept list is freed.
   void kill() {
     dead = true;
-    std::vector<Node>().swap(nodes);
     std::vector<std::uint32_t>().swap(kept);
   }
 };
@@ -98,40 +101,62 @@ struct Gate {
 struct Work {
   std::vector<WorkCurve>& curves;
   const std::size_t n_curves;   // curves before this pass
-  std::vector<FlatLoop> flat;
-  std::vector<DamInfo> dams;
   const PassageOptions& opt;
+  PassageStats& stats;
+  std::vector<Node> nodes = {};              // every loop's points (FlatLoop::pool)
+  std::vector<std::uint32_t> next = {};      // per node: the next node of its ring
+  // Per node: the loop and kept position it had when a cut of this round last made its
+  // loop (close_round follows a candidate's segments through the cuts with it).
+  std::vector<std::uint32_t> loop_of = {}, pos_of = {};
+  std::vector<FlatLoop> flat = {};
+  std::vector<DamInfo> dams = {};
   std::vector<Gate> gates = {};
   bool gate_closed(Vec2 a0, Vec2 b0) const {
     for (const Gate& g : gates)
       if (g.closes(a0, b0)) return true;
     return false;
   }
+  std::uint32_t add_node(const Node& n) {
+    nodes.push_back(n);
+    next.push_back(0);
+    loop_of.push_back(0xFFFFFFFFu);
+    pos_of.push_back(0);
+    return static_cast<std::uint32_t>(nodes.size() - 1);
+  }
+  /// Calls f(node) for every node from `from` (excluded) up to `to` (excluded) along the
+  /// ring; a ring has at most every node of the pool, so more steps is a broken ring.
+  template <class F>
+  void walk(std::uint32_t from, std::uint32_t to, F&& f) {
+    std::size_t steps = 0;
+    for (std::uint32_t i = next[from]; i != to; i = next[i]) {
+      SM_ASSERT(++steps <= nodes.size(), "close_passages: a ring walk did not come back (passages.cpp, Work::walk)");
+      f(i);
+    }
+    stats.node_visits += steps;
+  }
 };
 
-FlatLoop flatten(const std::vector<WorkCurve>& curves, const WorkLoop& loop) {
+void flatten(Work& w, const WorkLoop& loop) {
   FlatLoop f;
+  f.pool = &w.nodes;
   f.hole = loop.hole;
   f.dead = loop.dead;
-  for (std::uint32_t ci : loop.curves) {
-    const WorkCurve& c = curves[ci];
-    std::vector<char> kept(c.full.size(), 0);
-    for (auto k : c.keep) kept[k] = 1;
-    const std::size_t m = c.periodic ? c.full.size() : c.full.size() - 1;
-    for (std::size_t i = 0; i < m; ++i) f.nodes.push_back({c.full[i], c.uv[i], c.gamma[i], kept[i] != 0, ci});
-  }
-  f.index();
-  return f;
-}
-
-// The nodes from kept position j+1 round to kept position j (inclusive): the loop opened
-// at its segment j, the original points inside that segment dropped.
-std::vector<Node> open_at(const FlatLoop& f, std::size_t j) {
-  const std::size_t n = f.nodes.size();
-  const std::size_t from = f.kept[(j + 1) % f.kept.size()], to = f.kept[j];
-  std::vector<Node> out;
-  for (std::size_t s = 0, len = (to + n - from) % n + 1; s < len; ++s) out.push_back(f.nodes[(from + s) % n]);
-  return out;
+  f.head = static_cast<std::uint32_t>(w.nodes.size());
+  if (!loop.dead)
+    for (std::uint32_t ci : loop.curves) {
+      const WorkCurve& c = w.curves[ci];
+      std::vector<char> kept(c.full.size(), 0);
+      for (auto k : c.keep) kept[k] = 1;
+      const std::size_t m = c.periodic ? c.full.size() : c.full.size() - 1;
+      for (std::size_t i = 0; i < m; ++i) {
+        const std::uint32_t id = w.add_node({c.full[i], c.uv[i], c.gamma[i], kept[i] != 0, ci});
+        if (kept[i]) f.kept.push_back(id);
+      }
+    }
+  const auto end = static_cast<std::uint32_t>(w.nodes.size());
+  for (std::uint32_t i = f.head; i < end; ++i) w.next[i] = i + 1 == end ? f.head : i + 1;
+  w.stats.node_visits += end - f.head;
+  w.flat.push_back(std::move(f));
 }
 
 double signed_area(const std::vector<Vec2>& p) {
@@ -144,7 +169,7 @@ double signed_area(const std::vector<Vec2>& p) {
 double mean_width_m(const FlatLoop& f, double radius) {
   std::vector<Vec2> p;
   Vec2 mean{0, 0};
-  for (auto k : f.kept) p.push_back(f.nodes[k].uv), mean = mean + f.nodes[k].uv;
+  for (std::size_t j = 0; j < f.kept.size(); ++j) p.push_back(f.p(j)), mean = mean + f.p(j);
   mean = (1.0 / static_cast<double>(p.size())) * mean;
   double per = 0;
   for (std::size_t i = 0; i < p.size(); ++i) per += norm(p[(i + 1) % p.size()] - p[i]);
@@ -153,7 +178,7 @@ double mean_width_m(const FlatLoop& f, double radius) {
 
 std::vector<Vec2> polygon(const FlatLoop& f) {
   std::vector<Vec2> p;
-  for (auto k : f.kept) p.push_back(f.nodes[k].uv);
+  for (std::size_t j = 0; j < f.kept.size(); ++j) p.push_back(f.p(j));
   return p;
 }
 
@@ -283,11 +308,12 @@ std::uint32_t new_dam(Work& w, const Node& from) {
   return static_cast<std::uint32_t>(w.n_curves + w.dams.size() - 1);
 }
 
-FlatLoop make_loop(std::vector<Node> nodes) {
+FlatLoop make_loop(const Work& w, std::uint32_t head, std::vector<std::uint32_t> kept) {
   FlatLoop f;
-  f.nodes = std::move(nodes);
+  f.pool = &w.nodes;
+  f.head = head;
+  f.kept = std::move(kept);
   f.changed = true;
-  f.index();
   f.hole = f.kept.size() >= 3 && ring_orientation(polygon(f)) == Sign::Negative;
   return f;
 }
@@ -296,40 +322,59 @@ struct CutResult {
   std::vector<std::uint32_t> new_loops;
 };
 
-// The two loops a 2-opt at kept segments ja and jb of one loop makes (before their dams
-// are numbered): a1 ... b0 and b1 ... a0.
-std::pair<std::vector<Node>, std::vector<Node>> split_at(const FlatLoop& f, std::size_t ja, std::size_t jb) {
-  const std::uint32_t b0 = f.kept[jb], b1 = f.kept[(jb + 1) % f.kept.size()];
-  std::vector<Node> chain = open_at(f, ja);   // a1 ... b0 b1 ... a0
-  // Positions of b0 and b1 in the chain: it starts at kept position ja + 1.
-  const std::size_t n = f.nodes.size(), start = f.kept[(ja + 1) % f.kept.size()];
-  const std::size_t pb0 = (b0 + n - start) % n, pb1 = (b1 + n - start) % n;
-  std::vector<Node> first(chain.begin(), chain.begin() + static_cast<std::ptrdiff_t>(pb0 + 1));
-  std::vector<Node> second(chain.begin() + static_cast<std::ptrdiff_t>(pb1), chain.end());
-  return {std::move(first), std::move(second)};
+// The kept nodes of the two loops a 2-opt at kept segments ja and jb of one loop makes:
+// a1 ... b0 and b1 ... a0 (kept positions ja + 1 .. jb and jb + 1 .. ja, cyclic).
+std::pair<std::vector<std::uint32_t>, std::vector<std::uint32_t>> split_kept(const FlatLoop& f, std::size_t ja,
+                                                                              std::size_t jb) {
+  const std::size_t k = f.kept.size();
+  auto range = [&](std::size_t from, std::size_t to) {   // positions from .. to inclusive, cyclic
+    std::vector<std::uint32_t> out;
+    out.reserve((to + k - from) % k + 1);
+    for (std::size_t s = 0, len = (to + k - from) % k + 1; s < len; ++s) out.push_back(f.kept[(from + s) % k]);
+    return out;
+  };
+  return {range((ja + 1) % k, jb), range((jb + 1) % k, ja)};
 }
 
-// The 2-opt at kept segment ja of loop la and jb of loop lb (see passages.h).
+// The 2-opt at kept segment ja of loop la and jb of loop lb (see passages.h): four nodes
+// relinked, the kept lists split or joined; the dropped original points stay unlinked in
+// the pool.
 CutResult cut(Work& w, std::uint32_t la, std::size_t ja, std::uint32_t lb, std::size_t jb) {
   CutResult r;
+  ++w.stats.cuts;
+  const FlatLoop& fa = w.flat[la];
+  const FlatLoop& fb = w.flat[lb];
+  const std::uint32_t a0 = fa.kept[ja], a1 = fa.kept[(ja + 1) % fa.kept.size()];
+  const std::uint32_t b0 = fb.kept[jb], b1 = fb.kept[(jb + 1) % fb.kept.size()];
+  std::vector<std::vector<std::uint32_t>> parts;
+  std::vector<std::uint32_t> heads;
   if (la != lb) {
-    std::vector<Node> a = open_at(w.flat[la], ja), b = open_at(w.flat[lb], jb);
-    a.back().src = new_dam(w, a.back());   // a0 -> b1
-    b.back().src = new_dam(w, b.back());   // b0 -> a1
-    a.insert(a.end(), b.begin(), b.end());
+    // a1 ... a0 then b1 ... b0: one loop.
+    std::vector<std::uint32_t> kept;
+    kept.reserve(fa.kept.size() + fb.kept.size());
+    for (std::size_t s = 1; s <= fa.kept.size(); ++s) kept.push_back(fa.kept[(ja + s) % fa.kept.size()]);
+    for (std::size_t s = 1; s <= fb.kept.size(); ++s) kept.push_back(fb.kept[(jb + s) % fb.kept.size()]);
+    w.stats.kept_visits += kept.size();
+    w.nodes[a0].src = new_dam(w, w.nodes[a0]);   // a0 -> b1
+    w.nodes[b0].src = new_dam(w, w.nodes[b0]);   // b0 -> a1
+    parts.push_back(std::move(kept));
+    heads.push_back(a1);
     w.flat[la].kill();
     w.flat[lb].kill();
-    w.flat.push_back(make_loop(std::move(a)));
-    r.new_loops.push_back(static_cast<std::uint32_t>(w.flat.size() - 1));
-    return r;
+  } else {
+    auto [first, second] = split_kept(fa, ja, jb);
+    w.stats.kept_visits += first.size() + second.size();
+    w.nodes[b0].src = new_dam(w, w.nodes[b0]);   // b0 -> a1
+    w.nodes[a0].src = new_dam(w, w.nodes[a0]);   // a0 -> b1
+    parts.push_back(std::move(first));
+    parts.push_back(std::move(second));
+    heads = {a1, b1};
+    w.flat[la].kill();
   }
-  FlatLoop& f = w.flat[la];
-  auto [first, second] = split_at(f, ja, jb);
-  first.back().src = new_dam(w, first.back());     // b0 -> a1
-  second.back().src = new_dam(w, second.back());   // a0 -> b1
-  f.kill();
-  for (auto* part : {&first, &second}) {
-    w.flat.push_back(make_loop(std::move(*part)));
+  w.next[a0] = b1;
+  w.next[b0] = a1;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    w.flat.push_back(make_loop(w, heads[i], std::move(parts[i])));
     r.new_loops.push_back(static_cast<std::uint32_t>(w.flat.size() - 1));
   }
   return r;
@@ -338,6 +383,7 @@ CutResult cut(Work& w, std::uint32_t la, std::size_t ja, std::uint32_t lb, std::
 struct Candidate {
   double width;
   std::uint32_t la, sa, lb, sb;
+  std::uint32_t na, nb;   // the start nodes of the two segments
   Vec2 where;
 };
 
@@ -345,7 +391,7 @@ struct Candidate {
 std::vector<double> ring_metres(const FlatLoop& f, double radius) {
   std::vector<double> cum{0};
   for (std::size_t j = 0; j < f.kept.size(); ++j)
-    cum.push_back(cum.back() + chord(f.nodes[f.kept[j]].ll, f.nodes[f.kept[(j + 1) % f.kept.size()]].ll, radius));
+    cum.push_back(cum.back() + chord(f.node(j).ll, f.node(j + 1).ll, radius));
   return cum;
 }
 
@@ -366,7 +412,7 @@ void drop_if_narrow(Work& w, std::uint32_t l, std::vector<RepairEntry>& log) {
   double mw = 0;
   const Fate fate = fate_of(w, f, &mw);
   if (fate == Fate::Narrow) {
-    const Node& n0 = f.nodes[f.kept[0]];
+    const Node& n0 = f.node(0);
     const DamInfo info = n0.src < w.n_curves ? DamInfo{w.curves[n0.src].record, w.curves[n0.src].id}
                                              : w.dams[n0.src - w.n_curves];
     log.push_back({RepairKind::NarrowWater, info.record, info.id, n0.ll, mw});
@@ -377,9 +423,12 @@ void drop_if_narrow(Work& w, std::uint32_t l, std::vector<RepairEntry>& log) {
 // Whether the 2-opt at kept segments ja and jb of loop l leaves a piece that
 // drop_if_narrow removes: a dead end filled rather than a passage cut in two.
 bool cut_fills_dead_end(const Work& w, std::uint32_t l, std::size_t ja, std::size_t jb) {
-  auto [first, second] = split_at(w.flat[l], ja, jb);
-  for (auto* part : {&first, &second})
-    if (fate_of(w, make_loop(std::move(*part))) != Fate::Kept) return true;
+  auto [first, second] = split_kept(w.flat[l], ja, jb);
+  w.stats.kept_visits += first.size() + second.size();
+  const std::uint32_t heads[2] = {first.front(), second.front()};
+  std::vector<std::uint32_t>* parts[2] = {&first, &second};
+  for (int i = 0; i < 2; ++i)
+    if (fate_of(w, make_loop(w, heads[i], std::move(*parts[i]))) != Fate::Kept) return true;
   return false;
 }
 
@@ -390,29 +439,49 @@ DamInfo info_of(const Work& w, const Node& n) {
 // One round of automatic closures: the narrowest clean cut of each loop. False: none left.
 // Where the kept segments of the loops made during a round are: a cut leaves every other
 // segment as it was (in a new loop, at a new position), so a candidate found at the
-// round's start is followed into the loops made since by its segments' start points.
-class SegmentIndex {
- public:
-  void add(const std::vector<FlatLoop>& flat, std::uint32_t l) {
-    const FlatLoop& f = flat[l];
-    for (std::uint32_t j = 0; j < f.kept.size(); ++j) at_[key(f.p(j))] = {l, j};
-  }
-  /// The live loop and kept position of the segment s0 -> s1 (none when it is gone).
-  std::optional<std::pair<std::uint32_t, std::uint32_t>> find(const std::vector<FlatLoop>& flat, Vec2 s0,
-                                                               Vec2 s1) const {
-    const auto it = at_.find(key(s0));
-    if (it == at_.end()) return std::nullopt;
-    const auto [l, j] = it->second;
-    if (flat[l].dead || !(flat[l].p(j) == s0) || !(flat[l].p(j + 1) == s1)) return std::nullopt;
-    return it->second;
-  }
+// round's start is followed into the loops made since by its segments' start nodes
+// (Work::loop_of and pos_of, set for each loop a cut makes).
+void follow_add(Work& w, std::uint32_t l) {
+  const FlatLoop& f = w.flat[l];
+  for (std::uint32_t j = 0; j < f.kept.size(); ++j) w.loop_of[f.kept[j]] = l, w.pos_of[f.kept[j]] = j;
+  w.stats.kept_visits += f.kept.size();
+}
 
- private:
-  static std::pair<std::uint64_t, std::uint64_t> key(Vec2 p) {
-    return {std::bit_cast<std::uint64_t>(p.x), std::bit_cast<std::uint64_t>(p.y)};
+/// The live loop and kept position of the segment s0 -> s1 starting at node `node` (none
+/// when it is gone).
+std::optional<std::pair<std::uint32_t, std::uint32_t>> follow_find(const Work& w, std::uint32_t node, Vec2 s0,
+                                                                   Vec2 s1) {
+  const std::uint32_t l = w.loop_of[node], j = w.pos_of[node];
+  if (l >= w.flat.size() || w.flat[l].dead || j >= w.flat[l].kept.size()) return std::nullopt;
+  if (!(w.flat[l].p(j) == s0) || !(w.flat[l].p(j + 1) == s1)) return std::nullopt;
+  return std::pair{l, j};
+}
+
+// Brings f's kept list up to date after original points between its nodes `from` and `to`
+// were marked kept: the entries between them replaced, in ring order. Where the stretch
+// wraps past the end of the list (round the loop's head), the list is made again from the
+// head, as the positions count from it.
+void rekeep(Work& w, FlatLoop& f, std::uint32_t from, std::uint32_t to) {
+  const std::size_t k = f.kept.size();
+  const std::size_t i = static_cast<std::size_t>(std::find(f.kept.begin(), f.kept.end(), from) - f.kept.begin());
+  const std::size_t t = static_cast<std::size_t>(std::find(f.kept.begin(), f.kept.end(), to) - f.kept.begin());
+  SM_ASSERT(i < k && t < k, "close_passages: a refused cut's segment is not in its loop (passages.cpp, rekeep)");
+  w.stats.kept_visits += k;
+  std::vector<std::uint32_t> between;
+  if (t > i) {
+    w.walk(from, to, [&](std::uint32_t n) {
+      if (w.nodes[n].kept) between.push_back(n);
+    });
+    f.kept.erase(f.kept.begin() + static_cast<std::ptrdiff_t>(i + 1), f.kept.begin() + static_cast<std::ptrdiff_t>(t));
+    f.kept.insert(f.kept.begin() + static_cast<std::ptrdiff_t>(i + 1), between.begin(), between.end());
+    return;
   }
-  std::map<std::pair<std::uint64_t, std::uint64_t>, std::pair<std::uint32_t, std::uint32_t>> at_;
-};
+  if (w.nodes[f.head].kept) between.push_back(f.head);
+  w.walk(f.head, f.head, [&](std::uint32_t n) {
+    if (w.nodes[n].kept) between.push_back(n);
+  });
+  f.kept = std::move(between);
+}
 
 bool close_round(Work& w, std::vector<RepairEntry>& log) {
   const double W = w.opt.min_width;
@@ -450,7 +519,8 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
                                uv_point_segment_metres(b0, a0, a1, R), uv_point_segment_metres(b1, a0, a1, R)});
     if (!(d < W * (1 - kWidthTolerance))) continue;
     if (m.loop_a == m.loop_b && !passage_on_one_ring(m.loop_a, m.seg_a, m.seg_b, d)) continue;
-    cands.push_back({d, m.loop_a, m.seg_a, m.loop_b, m.seg_b, 0.25 * (a0 + a1 + b0 + b1)});
+    cands.push_back({d, m.loop_a, m.seg_a, m.loop_b, m.seg_b, w.flat[m.loop_a].kept[m.seg_a],
+                     w.flat[m.loop_b].kept[m.seg_b], 0.25 * (a0 + a1 + b0 + b1)});
   }
   std::stable_sort(cands.begin(), cands.end(), [](const Candidate& x, const Candidate& y) { return x.width < y.width; });
   // The round's segments as they were at its start: the cuts made since only replaced two
@@ -458,7 +528,6 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
   // segments too is the same or stricter (a stricter refusal is retried next round).
   SegmentGrid grid(polys);
   auto near = [&](Vec2 lo, Vec2 hi, auto&& f) { return grid.any_near(lo, hi, f); };
-  SegmentIndex moved;
   std::vector<std::pair<Vec2, Vec2>> made;
   struct Refine {
     std::uint32_t loop, from, to;   // a refused cut's segment (its end nodes)
@@ -473,11 +542,11 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
     const Vec2 b0 = pb[c.sb], b1 = pb[(c.sb + 1) % pb.size()];
     // Its segments where they are now: as found, or in the loops a cut made this round
     // (where the one-ring test is made again, as the next round would).
-    const auto where = [&](std::uint32_t l, std::uint32_t j, Vec2 s0, Vec2 s1) {
-      return w.flat[l].dead ? moved.find(w.flat, s0, s1)
+    const auto where = [&](std::uint32_t l, std::uint32_t j, std::uint32_t node, Vec2 s0, Vec2 s1) {
+      return w.flat[l].dead ? follow_find(w, node, s0, s1)
                             : std::optional<std::pair<std::uint32_t, std::uint32_t>>{{l, j}};
     };
-    const auto ra = where(c.la, c.sa, a0, a1), rb = where(c.lb, c.sb, b0, b1);
+    const auto ra = where(c.la, c.sa, c.na, a0, a1), rb = where(c.lb, c.sb, c.nb, b0, b1);
     if (!ra || !rb) continue;
     const auto [la, sa] = *ra;
     const auto [lb, sb] = *rb;
@@ -501,13 +570,13 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
     if (w.opt.keep_passages && !cut_fills_dead_end(w, la, sa, sb)) continue;   // a passage
     made.push_back({a0, b1});
     made.push_back({b0, a1});
-    const DamInfo info = info_of(w, w.flat[la].nodes[w.flat[la].kept[sa]]);
+    const DamInfo info = info_of(w, w.flat[la].node(sa));
     const CutResult r = cut(w, la, sa, lb, sb);
     std::size_t dropped = 0;
     for (std::uint32_t l : r.new_loops) {
       drop_if_narrow(w, l, log);
       dropped += w.flat[l].dead;
-      if (!w.flat[l].dead) moved.add(w.flat, l);
+      if (!w.flat[l].dead) follow_add(w, l);
     }
     if (dropped == 0)   // a cut that only trims narrow water is listed as NarrowWater
       log.push_back({RepairKind::ClosedPassage, info.record, info.id, unit_sphere().lonlat_from_param(c.where), c.width});
@@ -522,15 +591,14 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
   for (const auto& [l, from, to, o0, o1] : refine) {
     FlatLoop& f = w.flat[l];
     if (f.dead) continue;
-    const std::size_t n = f.nodes.size();
     std::vector<std::uint32_t> run;   // the original points within W of the other segment
-    for (std::size_t i = (from + 1) % n, s = 0; i != to && s < n; i = (i + 1) % n, ++s)
-      if (!f.nodes[i].kept && uv_point_segment_metres(f.nodes[i].uv, o0, o1, R) < W)
-        run.push_back(static_cast<std::uint32_t>(i));
+    w.walk(from, to, [&](std::uint32_t i) {
+      if (!w.nodes[i].kept && uv_point_segment_metres(w.nodes[i].uv, o0, o1, R) < W) run.push_back(i);
+    });
     if (run.empty() || run.size() > kMaxPutBack) continue;
-    std::vector<Vec2> pts{f.nodes[from].uv};
-    for (std::uint32_t i : run) pts.push_back(f.nodes[i].uv);
-    pts.push_back(f.nodes[to].uv);
+    std::vector<Vec2> pts{w.nodes[from].uv};
+    for (std::uint32_t i : run) pts.push_back(w.nodes[i].uv);
+    pts.push_back(w.nodes[to].uv);
     const Vec2 c0 = pts.front(), c1 = pts.back();
     auto meets = [](Vec2 p, Vec2 q, Vec2 r, Vec2 t) {
       if (p == r || p == t || q == r || q == t) return false;   // neighbours at a shared end
@@ -547,8 +615,8 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
     }
     if (crosses) continue;
     for (std::size_t i = 0; i + 1 < pts.size(); ++i) put_back.push_back({pts[i], pts[i + 1]});
-    for (std::uint32_t i : run) f.nodes[i].kept = true;
-    f.index();
+    for (std::uint32_t i : run) w.nodes[i].kept = true;
+    rekeep(w, f, from, to);
     f.changed = true;
     any = true;
   }
@@ -556,35 +624,29 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
 }
 
 // Inserts a kept node at uv point x on kept segment j of loop f (its original points
-// dropped); returns the new node's index.
-std::uint32_t insert_on(FlatLoop& f, std::size_t j, Vec2 x) {
-  const std::size_t n = f.nodes.size();
-  const std::uint32_t a = f.kept[j], b = f.kept[(j + 1) % f.kept.size()];
-  const Node na = f.nodes[a], nb = f.nodes[b];
+// dropped); returns the new node's id. The loop then starts at the segment's end b and its
+// kept list runs b ... a x, as the loop's order decides where its rebuild starts.
+std::uint32_t insert_on(Work& w, FlatLoop& f, std::size_t j, Vec2 x) {
+  const std::size_t k = f.kept.size();
+  const std::uint32_t a = f.kept[j], b = f.kept[(j + 1) % k];
+  const Node na = w.nodes[a], nb = w.nodes[b];
   if (x == na.uv) return a;   // the dam meets the coast at a vertex: no new point
   if (x == nb.uv) return b;
-  // Drop the originals strictly between a and b (cyclically), then insert after a.
-  std::vector<Node> out;
-  out.reserve(n + 1);
-  std::uint32_t at = 0;
-  for (std::size_t s = 0; s < n; ++s) {
-    const std::size_t i = (b + s) % n;   // from b round to a
-    out.push_back(f.nodes[i]);
-    if (i == a) {
-      const double t = norm(x - na.uv) / std::max(norm(nb.uv - na.uv), 1e-300);
-      out.push_back({unit_sphere().lonlat_from_param(x), x, na.gamma + t * (nb.gamma - na.gamma), true, na.src});
-      at = static_cast<std::uint32_t>(out.size() - 1);
-      break;
-    }
-  }
-  f.nodes = std::move(out);
+  const double t = norm(x - na.uv) / std::max(norm(nb.uv - na.uv), 1e-300);
+  const std::uint32_t at =
+      w.add_node({unit_sphere().lonlat_from_param(x), x, na.gamma + t * (nb.gamma - na.gamma), true, na.src});
+  w.next[a] = at;
+  w.next[at] = b;
+  std::rotate(f.kept.begin(), f.kept.begin() + static_cast<std::ptrdiff_t>((j + 1) % k), f.kept.end());
+  f.kept.push_back(at);
+  f.head = b;
   f.changed = true;
-  f.index();
+  w.stats.kept_visits += k;
   return at;
 }
 
 std::size_t kept_position(const FlatLoop& f, std::uint32_t node) {
-  return static_cast<std::size_t>(std::lower_bound(f.kept.begin(), f.kept.end(), node) - f.kept.begin());
+  return static_cast<std::size_t>(std::find(f.kept.begin(), f.kept.end(), node) - f.kept.begin());
 }
 
 // The kept segment of f crossed by p-q closest to x (x was constructed on it).
@@ -657,13 +719,13 @@ Result<std::size_t> place_dam(Work& w, geo::LonLat p_ll, geo::LonLat q_ll, std::
       return from + std::min(1.0, len / std::max(norm(to - from), 1e-300)) * 0.5 * (to - from);
     };
     FlatLoop& fa = w.flat[in.loop];
-    const std::uint32_t nx = insert_on(fa, in.seg, in.x);
+    const std::uint32_t nx = insert_on(w, fa, in.seg, in.x);
     const std::size_t jx = kept_position(fa, nx), ka = fa.kept.size();
-    insert_on(fa, (jx + ka - 1) % ka, toward(in.x, fa.p(jx + ka - 1)));
+    insert_on(w, fa, (jx + ka - 1) % ka, toward(in.x, fa.p(jx + ka - 1)));
     FlatLoop& fb = w.flat[out.loop];
-    const std::uint32_t ny = insert_on(fb, crossed_segment(fb, p, q, out.x), out.x);
+    const std::uint32_t ny = insert_on(w, fb, crossed_segment(fb, p, q, out.x), out.x);
     const std::size_t jy = kept_position(fb, ny);
-    insert_on(fb, jy, toward(out.x, fb.p(jy + 1)));
+    insert_on(w, fb, jy, toward(out.x, fb.p(jy + 1)));
     // Kept positions of X2 and Y (segments X2 -> X and Y -> Y2).
     FlatLoop& fa2 = w.flat[in.loop];
     std::size_t ja = fa2.kept.size(), jb = w.flat[out.loop].kept.size();
@@ -680,7 +742,7 @@ Result<std::size_t> place_dam(Work& w, geo::LonLat p_ll, geo::LonLat q_ll, std::
                                     "nearest land on each side",
                                     p_ll.lon, p_ll.lat, q_ll.lon, q_ll.lat),
                         unit_sphere().lonlat_from_param(0.5 * (in.x + out.x))};
-    const DamInfo info = info_of(w, fa2.nodes[fa2.kept[ja]]);
+    const DamInfo info = info_of(w, fa2.node(ja));
     const CutResult r = cut(w, in.loop, ja, out.loop, jb);
     for (std::uint32_t l : r.new_loops) drop_if_narrow(w, l, log);
     log.push_back({RepairKind::DamPlaced, info.record, info.id, unit_sphere().lonlat_from_param(0.5 * (in.x + out.x)),
@@ -696,13 +758,16 @@ Result<std::size_t> place_dam(Work& w, geo::LonLat p_ll, geo::LonLat q_ll, std::
 WorkLoop rebuild(Work& w, const FlatLoop& f) {
   WorkLoop out;
   out.hole = f.hole;
-  const std::size_t n = f.nodes.size();
+  std::vector<std::uint32_t> ring{f.head};   // the loop's nodes in order from its head
+  w.walk(f.head, f.head, [&](std::uint32_t i) { ring.push_back(i); });
+  auto node = [&](std::size_t i) -> const Node& { return w.nodes[ring[i]]; };
+  const std::size_t n = ring.size();
   std::size_t start = 0;
-  while (start < n && f.nodes[start].src == f.nodes[(start + n - 1) % n].src) ++start;
+  while (start < n && node(start).src == node((start + n - 1) % n).src) ++start;
   if (start == n) start = 0;
   std::size_t i = start;
   do {
-    const std::uint32_t src = f.nodes[i].src;
+    const std::uint32_t src = node(i).src;
     WorkCurve c;
     c.periodic = false;
     if (src < w.n_curves) {
@@ -715,14 +780,14 @@ WorkLoop rebuild(Work& w, const FlatLoop& f) {
     }
     std::size_t j = i;
     do {
-      const Node& nd = f.nodes[j];
+      const Node& nd = node(j);
       if (nd.kept || j == i) c.keep.push_back(static_cast<std::uint32_t>(c.full.size()));
       c.full.push_back(nd.ll);
       c.uv.push_back(nd.uv);
       c.gamma.push_back(nd.gamma);
       j = (j + 1) % n;
-    } while (j != start && f.nodes[j].src == src);
-    const Node& end = f.nodes[j];   // the next curve's first point closes this one
+    } while (j != start && node(j).src == src);
+    const Node& end = node(j);   // the next curve's first point closes this one
     c.keep.push_back(static_cast<std::uint32_t>(c.full.size()));
     c.full.push_back(end.ll);
     c.uv.push_back(end.uv);
@@ -848,7 +913,7 @@ Result<bool> find_gates(Work& w, std::vector<RepairEntry>& log) {
     auto banks = banks_of(w, a.loop, a.seg, b.loop, b.seg, p, kKeepOpenReach * wide, kKeepOpenAcross * wide);
     g.bank[0] = std::move(banks[0]);
     g.bank[1] = std::move(banks[1]);
-    const DamInfo info = info_of(w, w.flat[a.loop].nodes[w.flat[a.loop].kept[a.seg]]);
+    const DamInfo info = info_of(w, w.flat[a.loop].node(a.seg));
     log.push_back({RepairKind::KeptOpen, info.record, info.id, ll, g.width});
     w.gates.push_back(std::move(g));
   }
@@ -863,10 +928,20 @@ double uv_point_segment_metres(Vec2 p, Vec2 a, Vec2 b, double radius) {
 }
 
 Result<bool> close_passages(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops, const PassageOptions& opt,
-                            std::vector<RepairEntry>& log) {
+                            std::vector<RepairEntry>& log, PassageStats* stats) {
   if (!(opt.min_width > 0) && opt.dams.empty() && opt.keep_open.empty()) return false;
-  Work w{curves, curves.size(), {}, {}, opt};
-  for (const WorkLoop& l : loops) w.flat.push_back(flatten(curves, l));
+  PassageStats local_stats;
+  Work w{curves, curves.size(), opt, stats ? *stats : local_stats};
+  // The pool sized once: grown by doubling it would hold up to twice the world's points.
+  std::size_t points = 0;
+  for (const WorkLoop& l : loops)
+    if (!l.dead)
+      for (std::uint32_t ci : l.curves) points += curves[ci].full.size();
+  w.nodes.reserve(points);
+  w.next.reserve(points);
+  w.loop_of.reserve(points);
+  w.pos_of.reserve(points);
+  for (const WorkLoop& l : loops) flatten(w, l);
   if (auto g = find_gates(w, log); !g) return g.error();
   std::size_t vertices = 0;
   for (const FlatLoop& f : w.flat) vertices += f.dead ? 0 : f.kept.size();

@@ -42,6 +42,14 @@ struct PassageOptions {
   double radius = geo::kEarthRadius;
 };
 
+/// What a close_passages call did, counted so that tests can check that its work grows with
+/// the coast's size and not with cuts x ring size.
+struct PassageStats {
+  std::size_t cuts = 0;          // 2-opt moves made (closures, dead ends tried not counted)
+  std::size_t node_visits = 0;   // loop points read or linked one by one (all points, kept or not)
+  std::size_t kept_visits = 0;   // kept points copied or indexed by cuts, dead-end tests and follows
+};
+
 /// Closes passages and places dams in place (new loops appended, replaced loops marked
 /// dead, dams appended as two-point curves). Loops must be intersection-free and oriented
 /// water on the left. Appends ClosedPassage / DamPlaced / NarrowWater entries to `log`.
@@ -50,7 +58,8 @@ struct PassageOptions {
 /// "KeepOpen"): a KeepOpen point on land or with no coast across, or a dam closing its
 /// passage. Each KeepOpen point is logged as KeptOpen (its place, the passage's width).
 Result<bool> close_passages(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops,
-                            const PassageOptions& opt, std::vector<RepairEntry>& log);
+                            const PassageOptions& opt, std::vector<RepairEntry>& log,
+                            PassageStats* stats = nullptr);
 
 /// Distance in metres on the sphere of `radius` between the (u,v) point p and the closest
 /// point of the (u,v) segment a-b (measured as the chord between their points on the sphere).

@@ -4,7 +4,9 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "coast/constant_accuracy.h"
 #include "coast/loop_uv.h"
@@ -406,4 +408,95 @@ TEST_CASE("passages: a 30 m pinch between long coarse segments is closed (KeepPa
   for (const CoastCurve& cc : m->curves)
     for (geo::LonLat p : cc.ll) in_pinch += p.lon > 0 && p.lon < 0.01 && std::abs(p.lat) < 0.01;
   CHECK(in_pinch == 0);
+}
+
+namespace {
+
+// A sea (lon -1..1, lat 0..0.5, counter-clockwise: water on the left) whose south coast has
+// a dead-end inlet 0.2 degrees deep at each of `centres`: the one at `wide` three times
+// kPassW wide, the others kPassW. Points every 0.0005 degrees, every 20th kept (and the
+// corners), so that the loop has 20 times more points than its polygon.
+std::pair<std::vector<WorkCurve>, std::vector<WorkLoop>> comb_loop(const std::vector<double>& centres, double wide) {
+  const geo::PolarSphere ps({0, 0, 0}, 1.0);
+  WorkCurve c;
+  c.periodic = true;
+  auto line = [&](geo::LonLat a, geo::LonLat b) {
+    const int n = std::max(1, static_cast<int>(std::lround(std::hypot(b.lon - a.lon, b.lat - a.lat) / 0.0005)));
+    for (int i = 0; i < n; ++i) {
+      if (i % 20 == 0) c.keep.push_back(static_cast<std::uint32_t>(c.full.size()));
+      const geo::LonLat p{a.lon + (b.lon - a.lon) * i / n, a.lat + (b.lat - a.lat) * i / n};
+      c.full.push_back(p);
+      c.uv.push_back(ps.param_from_lonlat(p));
+      c.gamma.push_back(300);
+    }
+  };
+  std::vector<geo::LonLat> corners{{-1, 0}};
+  for (double x : centres) {
+    const double half = x == wide ? 1.5 * kPassW : kPassW / 2;
+    for (geo::LonLat p : {geo::LonLat{x - half, 0}, {x - half, -0.2}, {x + half, -0.2}, {x + half, 0}})
+      corners.push_back(p);
+  }
+  for (geo::LonLat p : {geo::LonLat{1, 0}, {1, 0.5}, {-1, 0.5}}) corners.push_back(p);
+  for (std::size_t i = 0; i < corners.size(); ++i) line(corners[i], corners[(i + 1) % corners.size()]);
+  WorkLoop l;
+  l.curves = {0};
+  l.hole = false;
+  return {{std::move(c)}, {std::move(l)}};
+}
+
+struct CombRun {
+  std::vector<std::tuple<int, double, double, double>> closures;   // kind, lon, lat, value
+  PassageStats stats;
+  std::size_t points = 0;   // the loop's points before
+  std::size_t left_in_narrow = 0, left_in_wide = 0;   // points below lat -0.025 in the inlets after
+};
+
+CombRun comb_run(const std::vector<double>& centres, double wide) {
+  auto [curves, loops] = comb_loop(centres, wide);
+  CombRun r;
+  r.points = curves[0].full.size();
+  PassageOptions o;
+  o.min_width = 1500;
+  o.keep_passages = true;
+  std::vector<RepairEntry> log;
+  auto changed = close_passages(curves, loops, o, log, &r.stats);
+  REQUIRE(changed.ok());
+  for (const RepairEntry& e : log)
+    r.closures.emplace_back(static_cast<int>(e.kind), e.where.lon, e.where.lat, e.value);
+  std::sort(r.closures.begin(), r.closures.end());
+  for (const WorkLoop& l : loops) {
+    if (l.dead) continue;
+    for (std::uint32_t ci : l.curves)
+      for (geo::LonLat p : curves[ci].full)
+        if (p.lat < -0.025) (std::abs(p.lon - wide) < 0.02 ? r.left_in_wide : r.left_in_narrow) += 1;
+  }
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("passages: issue 36, closing many inlets of one loop reads each of its points a bounded number of times") {
+  // Forty inlets on one loop of 64,000 points: copying the loop at each cut or dead-end test
+  // (as close_passages once did) reads it once per inlet, 40 times its size and more.
+  std::vector<double> centres;
+  for (int k = 0; k < 40; ++k) centres.push_back(-0.78 + 0.04 * k);
+  const double wide = centres[17];
+  const CombRun all = comb_run(centres, wide);
+  // Filled up to a stub at the mouth no longer than its width (two kept segments deep):
+  // its two sides are the sides of one corner, not a passage.
+  CHECK(all.left_in_narrow == 0);
+  CHECK(all.left_in_wide > 0);
+  CHECK(all.stats.cuts >= 39);
+  // Flattening and rebuilding read every point once each; cuts read none.
+  CHECK(all.stats.node_visits <= 3 * all.points);
+  // The reference: each inlet alone on the same coast. Closing is local, so the closures
+  // (places and widths) of the forty together are those of the forty alone.
+  std::vector<std::tuple<int, double, double, double>> reference;
+  for (double x : centres) {
+    const CombRun one = comb_run({x}, wide);
+    reference.insert(reference.end(), one.closures.begin(), one.closures.end());
+  }
+  std::sort(reference.begin(), reference.end());
+  CHECK(all.closures.size() == reference.size());
+  CHECK(all.closures == reference);
 }
