@@ -15,6 +15,21 @@ If (!Exists(RegionsGeoLoaded))
   RegionNorthPacific[] = {150, 240, 20, 62};     // Figure 10's close-up
   RegionMediterranean[] = {-5.6, 37, 29, 46.5};  // from Gibraltar; holds the Black Sea's west and the Suez Canal
   RegionGulfOfMexico[] = {-98, -76, 7, 31};      // with the western Caribbean; holds the Panama Canal
+  // Figure 13's domain, a polygon {lon1, lat1, lon2, lat2, ...} with great-circle edges: the
+  // north-west European shelf, open along the shelf break from the Bay of Biscay to the
+  // Norwegian Trench. Vertices 2 to 16 lie on the 200 m isobath of ETOPO5 (west-most, or
+  // north-most, cell deeper than 200 m every half degree or degree in
+  // data/bathymetry/etopo5_nw_europe_5min.nc, thinned by hand); 17 to 19 in the Norwegian
+  // Trench and the Skagerrak, off Norway's fjords; the others inland (Denmark, Germany,
+  // France, Brittany). So the open boundary runs in one piece from south Brittany (edge 1,
+  // across the shelf) along the shelf break (edges 2 to 15) and down the trench to
+  // Denmark's north coast (edges 16 to 19).
+  RegionNWEuropeanShelf[] = {-2.5, 48.0,  -6.33, 47.5,  -9.42, 48.5,  -11.0, 49.5,  -10.75, 50.5,
+                             -11.42, 52.0,  -11.9, 53.2,  -10.58, 54.5,  -9.42, 55.5,  -9.0, 57.0,
+                             -9.25, 58.0,  -6.92, 59.0,  -4.83, 60.0,  -2.0, 60.92,  0.0, 61.58,
+                             2.0, 61.42,  4.0, 60.0,  4.2, 58.6,  6.5, 57.7,  10.0, 57.3,
+                             9.5, 54.0,  6.0, 51.0,  3.0, 49.5,  -1.0, 48.5};
+  NWEuropeanShelfBreakEdges[] = {2 : 15};
 
   // Places {lon, lat} (degrees).
   LizardIsland[] = {145.45, -14.67};             // Figure 14's refinement centre

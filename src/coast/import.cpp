@@ -134,7 +134,10 @@ void skip_grazing_crossings(RegionResult& r, const ImportOptions& opt, std::vect
   }
   std::size_t kept = 0;
   for (std::size_t li = 0; li < r.loops.size(); ++li)
-    if (!left_out[li]) r.loops[kept++] = std::move(r.loops[li]);
+    if (!left_out[li]) {
+      if (kept != li) r.loops[kept] = std::move(r.loops[li]);   // no self-move: it would empty the loop
+      ++kept;
+    }
   r.loops.resize(kept);
 }
 

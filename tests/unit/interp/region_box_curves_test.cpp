@@ -89,8 +89,12 @@ TEST_CASE("region box: the Irish Sea tutorial's open curves follow the box withi
 
 TEST_CASE("region box: the North Sea / Scheldt file box") {
   const double box[4] = {-4, 9, 48, 58};
-  const Deviation d = measure("EstuarySize = 2000; CoastSize = 20e3; Quiet = 1;\n"
-                              "Include \"north_sea_scheldt.geo\";\n"
+  const Deviation d = measure("R = 6371009; Point(1) = {0, 0, 0}; Point(2) = {0, 0, R}; PolarSphere(1) = {1, 2};\n"
+                              "Field[1] = MathEval; Field[1].F = \"20e3\";\n"
+                              "Coastline[1] = LonLatText;\n"
+                              "Coastline[1].FileName = \"" SM_SOURCE_DIR "/data/gshhg/northsea_scheldt_f.txt\";\n"
+                              "Coastline[1].AccuracyField = 1; Coastline[1].Region = {-4, 9, 48, 58};\n"
+                              "open[] = Coastline{1, \"OpenCurves\"};\n"
                               "For i In {0 : #open[] - 1}  Printf(\"%g\", open[i]);  EndFor\n",
                               box);
   CHECK(d.curves > 0);
