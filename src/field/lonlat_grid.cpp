@@ -80,30 +80,47 @@ int LonLatGrid::wrap(int i) const {
   return i < 0 ? i + period : i;
 }
 
-double LonLatGrid::interp(double lon_deg, double lat_deg) const {
+LonLatGrid::Stencil LonLatGrid::stencil(double lon_deg, double lat_deg) const {
+  Stencil st;
   double tj = std::clamp((lat_deg - lat0) / dlat, 0.0, static_cast<double>(nlat - 1));
-  int j = std::min(static_cast<int>(tj), nlat - 2);
-  const double wj = tj - j;
-  int i0, i1;
-  double wi;
+  st.j = std::min(static_cast<int>(tj), nlat - 2);
+  st.wj = tj - st.j;
   if (period > 0) {
     double ti = std::fmod((lon_deg - lon0) / dlon, static_cast<double>(period));
     if (ti < 0) ti += period;
-    i0 = std::min(static_cast<int>(ti), period - 1);
-    wi = ti - i0;
-    i1 = i0 + 1 == period ? 0 : i0 + 1;
+    st.i0 = std::min(static_cast<int>(ti), period - 1);
+    st.wi = ti - st.i0;
+    st.i1 = st.i0 + 1 == period ? 0 : st.i0 + 1;
   } else {
-    // The copy of lon_deg (mod 360) nearest to the grid's middle.
-    const double mid = lon0 + 0.5 * dlon * (nlon - 1);
-    const double l = lon_deg - 360 * std::round((lon_deg - mid) / 360);
-    const double ti = std::clamp((l - lon0) / dlon, 0.0, static_cast<double>(nlon - 1));
-    i0 = std::min(static_cast<int>(ti), nlon - 2);
-    wi = ti - i0;
-    i1 = i0 + 1;
+    const double ti = std::clamp(column_of(lon_deg), 0.0, static_cast<double>(nlon - 1));
+    st.i0 = std::min(static_cast<int>(ti), nlon - 2);
+    st.wi = ti - st.i0;
+    st.i1 = st.i0 + 1;
   }
-  const double a = at(i0, j) * (1 - wi) + at(i1, j) * wi;
-  const double b = at(i0, j + 1) * (1 - wi) + at(i1, j + 1) * wi;
-  return a * (1 - wj) + b * wj;
+  return st;
+}
+
+double LonLatGrid::column_of(double lon_deg) const {
+  if (period > 0) return (lon_deg - lon0) / dlon;
+  // The copy of lon_deg (mod 360) nearest to the grid's middle.
+  const double mid = lon0 + 0.5 * dlon * (nlon - 1);
+  const double l = lon_deg - 360 * std::round((lon_deg - mid) / 360);
+  return (l - lon0) / dlon;
+}
+
+double LonLatGrid::interp(double lon_deg, double lat_deg) const {
+  const Stencil st = stencil(lon_deg, lat_deg);
+  const double a = at(st.i0, st.j) * (1 - st.wi) + at(st.i1, st.j) * st.wi;
+  const double b = at(st.i0, st.j + 1) * (1 - st.wi) + at(st.i1, st.j + 1) * st.wi;
+  return a * (1 - st.wj) + b * st.wj;
+}
+
+bool LonLatGrid::covers(double lon_deg, double lat_deg) const {
+  const double tj = (lat_deg - lat0) / dlat;
+  if (!(tj >= 0 && tj <= nlat - 1)) return false;
+  if (period > 0) return true;
+  const double ti = column_of(lon_deg);
+  return ti >= 0 && ti <= nlon - 1;
 }
 
 void lonlat_of(const Vec3& p, double radius, double& lon_deg, double& lat_deg) {
@@ -295,7 +312,7 @@ bool looks_like_lon(const NcFile& nc, int v) {
 
 }  // namespace
 
-LonLatGrid read_netcdf_grid(const std::filesystem::path& file, const NetcdfGridSpec& spec) {
+LonLatGrid read_netcdf_grid(const std::filesystem::path& file, const NetcdfGridSpec& spec, GridAttributes* attrs) {
   if (!std::filesystem::exists(file)) file_error(file, "no such file");
   // nc_open allocates what the header declares before it checks the file's length.
   if (auto why = check_netcdf_header_counts(file)) file_error(file, *why);
@@ -408,6 +425,17 @@ LonLatGrid read_netcdf_grid(const std::filesystem::path& file, const NetcdfGridS
       g.v[j * nx + i] = val;
     }
   g.detect_wrap();
+  if (attrs) {
+    attrs->units = nc.text_att(zv, "units");
+    attrs->crs.clear();
+    // CF: the variable's grid_mapping attribute names a variable whose attributes
+    // describe the reference system; the fullest description it carries is kept.
+    const std::string mapping = nc.text_att(zv, "grid_mapping");
+    int mv = -1;
+    if (!mapping.empty() && nc_inq_varid(nc.id(), mapping.c_str(), &mv) == NC_NOERR)
+      for (const char* key : {"crs_wkt", "spatial_ref", "epsg_code", "grid_mapping_name"})
+        if (attrs->crs.empty()) attrs->crs = nc.text_att(mv, key);
+  }
   return g;
 }
 
