@@ -303,6 +303,7 @@ class DepthGridsField final : public GridDepthField {
       out[i] = s.value;
       if (s.value > s.grid) {
         ++rep.clamped;
+        if (s.grid <= 0) ++rep.dry;
         if (!rep.has_worst || s.value - s.grid > rep.value - rep.grid_depth) {
           rep.has_worst = true;
           rep.lon = lon, rep.lat = lat, rep.grid_depth = s.grid, rep.value = s.value;

@@ -137,6 +137,17 @@ TEST_CASE("depth grids: the cell mean within half the local size, by hand") {
   CHECK(rep.lat == doctest::Approx(4.3));
   CHECK(rep.grid_depth == doctest::Approx(46.4));
   CHECK(rep.value == 47);
+  CHECK(rep.dry == 0);
+
+  // The same values as elevations: land, 46.4 m high in the mean, raised to 1 m.
+  fs.set(1, "Positive", std::string("up"));
+  fs.set(1, "MinDepth", 1.0);
+  const BuiltFields b3 = fs.build(1, {});
+  depth_field(b3).node_depths(p, r, out, &rep);
+  CHECK(out[0] == 1);
+  CHECK(rep.clamped == 1);
+  CHECK(rep.dry == 1);
+  CHECK(rep.grid_depth == doctest::Approx(-46.4));
 }
 
 TEST_CASE("depth grids: half the mean incident edge, each edge once") {
