@@ -183,12 +183,18 @@ LonLatGrid read_raw_depth_grid(const BuildInputs& in, const std::string& file, G
   const auto path = in.path(file);
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+  NetcdfGridSpec spec{o.string("LonVariable"), o.string("LatVariable"), o.string("ZVariable"), {}};
+  if (o.find("Window") >= 0 && !o.list("Window").empty()) {
+    const std::vector<double>& w = o.list("Window");
+    if (w.size() != 4 || !(w[0] < w[1] && w[1] - w[0] <= 360 && w[2] < w[3]) ||
+        !std::all_of(w.begin(), w.end(), [](double x) { return std::isfinite(x); }))
+      in.bad("Window", "must be {W, E, S, N} in degrees with W < E (at most 360 apart) and S < N");
+    spec.window = w;
+  }
   LonLatGrid g;
   attrs = {};
   try {
-    g = ext == ".asc" ? read_esri_ascii_grid(path)
-                      : read_netcdf_grid(path, {o.string("LonVariable"), o.string("LatVariable"),
-                                                o.string("ZVariable")}, &attrs);
+    g = ext == ".asc" ? read_esri_ascii_grid(path) : read_netcdf_grid(path, spec, &attrs);
   } catch (FieldError& e) {
     e.field_id = in.id;
     e.option = "FileName";
@@ -524,6 +530,8 @@ KindSpec bathymetry_kind() {
               num_opt("Radius", 0, "sphere radius for the latitude of a point (0: |X|)"),
               num_opt("MissingAsLand", 0, "1: missing/NaN nodes become MinDepth instead of an error"),
               num_opt("Period", 44712, "T of the tidal criterion, seconds (the M2 tide: 12.42 h)"),
+              list_opt("Window", "{W, E, S, N} in degrees: only this box of each netCDF grid (plus one node "
+                                 "around) is read, so that a grid larger than memory can be used; empty: whole grids"),
           },
           make_bathymetry};
 }

@@ -57,6 +57,10 @@ struct LonLatGrid {
 /// first 2D variable, and the coordinate variables of its dimensions).
 struct NetcdfGridSpec {
   std::string lon_var, lat_var, z_var;
+  /// {W, E, S, N} in degrees, W < E, S < N: only the nodes within, plus one on each
+  /// side, are read (nc_get_vara); all the columns when the box crosses the grid's seam.
+  /// Empty: the whole grid.
+  std::vector<double> window;
 };
 
 /// What a netCDF relief variable says of itself, for checking that several grids

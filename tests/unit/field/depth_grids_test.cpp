@@ -232,3 +232,35 @@ TEST_CASE("depth grids: a list of grids must share units and reference system") 
   fs.set(1, "Output", std::string("tidal"));
   CHECK_THROWS_AS(fs.build(1, {}), FieldError);
 }
+
+TEST_CASE("depth grids: a window reads only the box of the grid, with the same values") {
+  DepthTmp tmp;
+  write_depth_grid(tmp.dir / "g.nc", {0, 1, 10, 0, 1, 10, [](double lon, double lat) { return 10 * lon + lat; }, "m", ""});
+  NetcdfGridSpec spec;
+  spec.window = {2.5, 5.5, 3.2, 6.8};
+  // Columns lon 2..6 and rows lat 3..7 meet the box; one more on each side.
+  const LonLatGrid w = read_netcdf_grid(tmp.dir / "g.nc", spec);
+  CHECK(w.nlon == 7);
+  CHECK(w.nlat == 7);
+  CHECK(w.lon0 == 1);
+  CHECK(w.lat0 == 2);
+  CHECK(w.at(0, 0) == 12);
+  CHECK(w.at(6, 6) == 78);
+  // The field with the window gives the values of the whole grid inside the box.
+  FieldSet fs;
+  fs.define(1, "Bathymetry");
+  fs.set(1, "FileName", (tmp.dir / "g.nc").string());
+  fs.set(1, "Positive", std::string("down"));
+  const std::vector<Vec3> p{depth_on_unit(4.2, 4.3), depth_on_unit(2.6, 6.7)};
+  std::vector<double> whole(2), boxed(2);
+  fs.build(1, {}).get(1)->eval(p, whole);
+  fs.set(1, "Window", std::vector<double>{2.5, 5.5, 3.2, 6.8});
+  fs.build(1, {}).get(1)->eval(p, boxed);
+  CHECK(boxed[0] == whole[0]);
+  CHECK(boxed[1] == whole[1]);
+  // A box beside the grid, or upside down, is an error.
+  fs.set(1, "Window", std::vector<double>{20, 30, 3, 6});
+  CHECK_THROWS_AS(fs.build(1, {}), FieldError);
+  fs.set(1, "Window", std::vector<double>{2, 5, 6, 3});
+  CHECK_THROWS_AS(fs.build(1, {}), FieldError);
+}
