@@ -5,6 +5,7 @@
 #include "field/bathymetry.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <numbers>
 
@@ -97,7 +98,7 @@ LonLatGrid hessian_criterion(const LonLatGrid& depth, double depth_ref, double r
 
 namespace {
 
-enum class Output { Depth, Wavelength, Hessian, Tidal, Slope };
+enum class Output { Wavelength, Hessian, Tidal, Slope };
 
 class BathymetryField final : public SizeField {
  public:
@@ -147,18 +148,53 @@ LonLatGrid slope_criterion(const LonLatGrid& depth, double n, double radius) {
   return out;
 }
 
-LonLatGrid read_depth_grid(const BuildInputs& in) {
+namespace {
+
+// The file names of FileName: one, or a comma-separated list by priority.
+std::vector<std::string> file_names(const BuildInputs& in) {
+  const std::string& all = in.opts.string("FileName");
+  std::vector<std::string> names;
+  std::size_t b = 0;
+  for (std::size_t k = 0; k <= all.size(); ++k) {
+    if (k < all.size() && all[k] != ',') continue;
+    std::size_t lo = b, hi = k;
+    while (lo < hi && std::isspace(static_cast<unsigned char>(all[lo]))) ++lo;
+    while (hi > lo && std::isspace(static_cast<unsigned char>(all[hi - 1]))) --hi;
+    names.push_back(all.substr(lo, hi - lo));
+    b = k + 1;
+  }
+  if (names.size() == 1 && names[0].empty()) in.bad("FileName", "no bathymetry file given");
+  for (const std::string& n : names)
+    if (n.empty()) in.bad("FileName", fmt::format("empty name in the list '{}'", all));
+  return names;
+}
+
+[[noreturn]] void grid_error(const BuildInputs& in, const std::filesystem::path& path, const std::string& what) {
+  FieldError e(FieldErrc::FileError, fmt::format("{}: {}", path.string(), what));
+  e.file = path.string();
+  e.field_id = in.id;
+  throw e;
+}
+
+// One relief grid as positive depths (the sign of Positive applied), missing values
+// kept as NaN, nothing clamped.
+LonLatGrid read_raw_depth_grid(const BuildInputs& in, const std::string& file, GridAttributes& attrs) {
   const Options& o = in.opts;
-  const std::string& file = o.string("FileName");
-  if (file.empty()) in.bad("FileName", "no bathymetry file given");
   const auto path = in.path(file);
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+  NetcdfGridSpec spec{o.string("LonVariable"), o.string("LatVariable"), o.string("ZVariable"), {}};
+  if (o.find("Window") >= 0 && !o.list("Window").empty()) {
+    const std::vector<double>& w = o.list("Window");
+    if (w.size() != 4 || !(w[0] < w[1] && w[1] - w[0] <= 360 && w[2] < w[3]) ||
+        !std::all_of(w.begin(), w.end(), [](double x) { return std::isfinite(x); }))
+      in.bad("Window", "must be {W, E, S, N} in degrees with W < E (at most 360 apart) and S < N");
+    spec.window = w;
+  }
   LonLatGrid g;
+  attrs = {};
   try {
-    g = ext == ".asc" ? read_esri_ascii_grid(path)
-                      : read_netcdf_grid(path, {o.string("LonVariable"), o.string("LatVariable"),
-                                                o.string("ZVariable")});
+    g = ext == ".asc" ? read_esri_ascii_grid(path) : read_netcdf_grid(path, spec, &attrs);
   } catch (FieldError& e) {
     e.field_id = in.id;
     e.option = "FileName";
@@ -169,37 +205,239 @@ LonLatGrid read_depth_grid(const BuildInputs& in) {
   const double min_depth = o.number("MinDepth");
   if (!std::isfinite(min_depth)) in.bad("MinDepth", "must be finite");
   const double sign = positive == "up" ? -1 : 1;
-  const bool missing_as_land = o.number("MissingAsLand") != 0;
   for (int j = 0; j < g.nlat; ++j)
     for (int i = 0; i < g.nlon; ++i) {
       double& v = g.at(i, j);
-      if (std::isnan(v)) {
-        if (!missing_as_land) {
-          FieldError e(FieldErrc::FileError,
-                       fmt::format("{}: missing or NaN value at lon {}, lat {} (set MissingAsLand "
-                                   "= 1 to treat missing nodes as land)", path.string(), g.lon(i),
-                                   g.lat(j)));
-          e.file = path.string();
-          e.field_id = in.id;
-          throw e;
-        }
-        v = min_depth;
-        continue;
-      }
+      if (std::isnan(v)) continue;
       // The deepest trench is 11 km and the highest summit 9 km: a relief beyond
       // 1000 km is a unit or packing error (a scale_factor of 1e300, say).
-      if (std::fabs(v) > kMaxRelief) {
-        FieldError e(FieldErrc::FileError,
-                     fmt::format("{}: relief {} m at lon {}, lat {} is not an Earth depth or height in metres "
-                                 "(check the file's scale_factor, add_offset and units)",
-                                 path.string(), v, g.lon(i), g.lat(j)));
-        e.file = path.string();
-        e.field_id = in.id;
-        throw e;
-      }
-      v = std::max(sign * v, min_depth);
+      if (std::fabs(v) > kMaxRelief)
+        grid_error(in, path, fmt::format("relief {} m at lon {}, lat {} is not an Earth depth or height in metres "
+                                         "(check the file's scale_factor, add_offset and units)",
+                                         v, g.lon(i), g.lat(j)));
+      v = sign * v;
     }
   return g;
+}
+
+// Refuses missing values unless MissingAsLand: the grid that has the last word must
+// give a depth everywhere.
+void check_no_missing(const BuildInputs& in, const std::string& file, const LonLatGrid& g) {
+  if (in.opts.number("MissingAsLand") != 0) return;
+  for (int j = 0; j < g.nlat; ++j)
+    for (int i = 0; i < g.nlon; ++i)
+      if (std::isnan(g.at(i, j)))
+        grid_error(in, in.path(file),
+                   fmt::format("missing or NaN value at lon {}, lat {} (set MissingAsLand = 1 to treat missing nodes "
+                               "as land)", g.lon(i), g.lat(j)));
+}
+
+}  // namespace
+
+LonLatGrid read_depth_grid(const BuildInputs& in) {
+  const std::vector<std::string> files = file_names(in);
+  if (files.size() > 1)
+    in.bad("FileName", "one grid here: a list of grids by priority is read by Bathymetry with Output \"depth\"");
+  GridAttributes attrs;
+  LonLatGrid g = read_raw_depth_grid(in, files[0], attrs);
+  check_no_missing(in, files[0], g);
+  const double min_depth = in.opts.number("MinDepth");
+  for (double& v : g.v) v = std::isnan(v) ? min_depth : std::max(v, min_depth);
+  return g;
+}
+
+namespace {
+
+// Units as one word, so that "metres" and "m" agree.
+std::string unit_word(std::string u) {
+  while (!u.empty() && (u.back() == '\0' || std::isspace(static_cast<unsigned char>(u.back())))) u.pop_back();
+  std::size_t b = 0;
+  while (b < u.size() && std::isspace(static_cast<unsigned char>(u[b]))) ++b;
+  u = u.substr(b);
+  std::transform(u.begin(), u.end(), u.begin(), ::tolower);
+  for (const char* m : {"m", "meter", "meters", "metre", "metres"})
+    if (u == m) return "m";
+  for (const char* km : {"km", "kilometer", "kilometers", "kilometre", "kilometres"})
+    if (u == km) return "km";
+  return u;
+}
+
+std::string trimmed(std::string s) {
+  while (!s.empty() && (s.back() == '\0' || std::isspace(static_cast<unsigned char>(s.back())))) s.pop_back();
+  return s;
+}
+
+constexpr double kDegree = std::numbers::pi / 180;
+
+// Angle (radians) between two points given in degrees, by the haversine formula
+// (accurate for the small angles of a cell's neighbourhood).
+double angle_between(double lon1, double lat1, double lon2, double lat2) {
+  const double sp = std::sin(0.5 * (lat2 - lat1) * kDegree), sl = std::sin(0.5 * (lon2 - lon1) * kDegree);
+  const double a = sp * sp + std::cos(lat1 * kDegree) * std::cos(lat2 * kDegree) * sl * sl;
+  return 2 * std::asin(std::min(1.0, std::sqrt(a)));
+}
+
+// Depths from relief grids by priority. Grids hold positive depths with NaN where a
+// value is missing; MinDepth is applied to what a point reads, so that the clamp is
+// counted. Every grid but the last answers only within its nodes and where its
+// values are present; the last answers everywhere (its edge value outside, missing
+// values as MinDepth: MissingAsLand, checked when it was read).
+class DepthGridsField final : public GridDepthField {
+ public:
+  DepthGridsField(std::vector<LonLatGrid> grids, double radius, double min_depth)
+      : grids_(std::move(grids)), radius_(radius), min_depth_(min_depth) {}
+
+  void eval(std::span<const Vec3> pts, std::span<double> h) const override {
+    node_depths(pts, {}, h, nullptr);
+  }
+
+  void node_depths(std::span<const Vec3> pts, std::span<const double> half_size, std::span<double> out,
+                   DepthClampReport* report) const override {
+    DepthClampReport rep;
+    rep.min_depth = min_depth_;
+    rep.points = pts.size();
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      double lon, lat;
+      lonlat_of(pts[i], radius_, lon, lat);
+      Sample s;
+      for (std::size_t k = 0; k < grids_.size(); ++k) {
+        const bool last = k + 1 == grids_.size();
+        if (half_size.empty() ? bilinear(grids_[k], last, lon, lat, s)
+                              : cell_mean(grids_[k], last, lon, lat, half_size[i], s))
+          break;
+      }
+      out[i] = s.value;
+      if (s.value > s.grid) {
+        ++rep.clamped;
+        if (s.grid <= 0) ++rep.dry;
+        if (!rep.has_worst || s.value - s.grid > rep.value - rep.grid_depth) {
+          rep.has_worst = true;
+          rep.lon = lon, rep.lat = lat, rep.grid_depth = s.grid, rep.value = s.value;
+        }
+      }
+    }
+    if (report) *report = rep;
+  }
+
+ private:
+  struct Sample {
+    double value = 0;   // the depth given (clamped)
+    double grid = 0;    // the grid's own depth there
+  };
+
+  double clamped(double r) const { return std::isnan(r) ? min_depth_ : std::max(r, min_depth_); }
+  // The grid's own value: a missing one (land, on the last grid) counts as MinDepth.
+  double unclamped(double r) const { return std::isnan(r) ? min_depth_ : r; }
+
+  // The bilinear value of the clamped nodes (what a grid clamped when read gives,
+  // bit for bit) and of the grid's own values.
+  bool bilinear(const LonLatGrid& g, bool last, double lon, double lat, Sample& s) const {
+    if (!last && !g.covers(lon, lat)) return false;
+    const LonLatGrid::Stencil st = g.stencil(lon, lat);
+    const double c[4] = {g.at(st.i0, st.j), g.at(st.i1, st.j), g.at(st.i0, st.j + 1), g.at(st.i1, st.j + 1)};
+    if (!last && (std::isnan(c[0]) || std::isnan(c[1]) || std::isnan(c[2]) || std::isnan(c[3]))) return false;
+    auto blend = [&](auto f) {
+      const double a = f(c[0]) * (1 - st.wi) + f(c[1]) * st.wi;
+      const double b = f(c[2]) * (1 - st.wi) + f(c[3]) * st.wi;
+      return a * (1 - st.wj) + b * st.wj;
+    };
+    s.value = blend([&](double r) { return clamped(r); });
+    s.grid = blend([&](double r) { return unclamped(r); });
+    return true;
+  }
+
+  // The mean of the values within the angle r of (lon, lat), missing ones skipped on
+  // a grid that is not the last; the nearest value when none lies within r.
+  bool cell_mean(const LonLatGrid& g, bool last, double lon, double lat, double r, Sample& s) const {
+    if (!last && !g.covers(lon, lat)) return false;
+    const double r_deg = r / kDegree;
+    const int j_lo = std::max(0, static_cast<int>(std::ceil((lat - r_deg - g.lat0) / g.dlat)));
+    const int j_hi = std::min(g.nlat - 1, static_cast<int>(std::floor((lat + r_deg - g.lat0) / g.dlat)));
+    // Longitudes of a spherical cap of angle r: |dlon| <= asin(sin r / cos lat), every
+    // longitude when the cap holds a pole.
+    const bool polar = std::fabs(lat) + r_deg >= 90;
+    const double half_lon = polar ? 180 : std::asin(std::min(1.0, std::sin(r) / std::cos(lat * kDegree))) / kDegree;
+    const double c = g.column_of(lon);
+    double i_lo = std::ceil(c - half_lon / g.dlon), i_hi = std::floor(c + half_lon / g.dlon);
+    if (g.period > 0) {
+      if (i_hi - i_lo + 1 > g.period) i_hi = i_lo + g.period - 1;   // each column once
+    } else {
+      i_lo = std::max(i_lo, 0.0);
+      i_hi = std::min(i_hi, static_cast<double>(g.nlon - 1));
+    }
+    double sum = 0;
+    std::uint64_t n = 0, within = 0;
+    for (int j = j_lo; j <= j_hi; ++j)
+      for (double ii = i_lo; ii <= i_hi; ++ii) {
+        const int i = g.wrap(static_cast<int>(ii));
+        if (angle_between(lon, lat, g.lon0 + ii * g.dlon, g.lat(j)) > r) continue;
+        ++within;
+        const double v = g.at(i, j);
+        if (std::isnan(v) && !last) continue;
+        sum += unclamped(v);
+        ++n;
+      }
+    if (n == 0) {
+      if (within > 0) return false;   // only missing values near the point: the next grid's
+      const int j = std::clamp(static_cast<int>(std::lround((lat - g.lat0) / g.dlat)), 0, g.nlat - 1);
+      const long ic = std::lround(c);
+      const int i = g.period > 0 ? g.wrap(static_cast<int>(ic % g.period))
+                                 : static_cast<int>(std::clamp(ic, 0L, static_cast<long>(g.nlon - 1)));
+      const double v = g.at(i, j);
+      if (std::isnan(v) && !last) return false;
+      sum = unclamped(v);
+      n = 1;
+    }
+    s.grid = sum / static_cast<double>(n);
+    s.value = std::max(s.grid, min_depth_);
+    return true;
+  }
+
+  std::vector<LonLatGrid> grids_;
+  double radius_, min_depth_;
+};
+
+// The grids of FileName by priority, each checked to give depths in the same units and
+// reference system as the first that says.
+std::vector<LonLatGrid> read_depth_grids(const BuildInputs& in) {
+  const std::vector<std::string> files = file_names(in);
+  std::vector<LonLatGrid> grids;
+  std::string units, units_from, crs, crs_from;
+  for (std::size_t k = 0; k < files.size(); ++k) {
+    GridAttributes attrs;
+    grids.push_back(read_raw_depth_grid(in, files[k], attrs));
+    const std::string u = unit_word(attrs.units), c = trimmed(attrs.crs);
+    if (!u.empty() && units.empty()) units = u, units_from = files[k];
+    else if (!u.empty() && u != units)
+      in.bad("FileName", fmt::format("'{}' gives depths in '{}' but '{}' in '{}': the grids of a list must share "
+                                     "their units (convert one)", units_from, units, files[k], trimmed(attrs.units)));
+    if (!c.empty() && crs.empty()) crs = c, crs_from = files[k];
+    else if (!c.empty() && c != crs)
+      in.bad("FileName", fmt::format("'{}' and '{}' have different coordinate reference systems ('{}' and '{}'): "
+                                     "the grids of a list must share one (reproject one)",
+                                     crs_from, files[k], crs.substr(0, 60), c.substr(0, 60)));
+  }
+  check_no_missing(in, files.back(), grids.back());
+  return grids;
+}
+
+}  // namespace
+
+std::vector<double> half_edge_angles(std::span<const Vec3> xyz, std::vector<std::array<std::uint32_t, 2>> edges) {
+  for (auto& e : edges)
+    if (e[0] > e[1]) std::swap(e[0], e[1]);
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  std::vector<double> sum(xyz.size(), 0);
+  std::vector<std::uint32_t> count(xyz.size(), 0);
+  for (const auto& [a, b] : edges) {
+    if (a == b || b >= xyz.size()) continue;
+    const double angle = std::atan2(norm(cross(xyz[a], xyz[b])), dot(xyz[a], xyz[b]));
+    sum[a] += angle, sum[b] += angle;
+    ++count[a], ++count[b];
+  }
+  for (std::size_t i = 0; i < sum.size(); ++i) sum[i] = count[i] ? 0.5 * sum[i] / count[i] : 0;
+  return sum;
 }
 
 std::vector<OptionSpec> depth_grid_options() {
@@ -218,17 +456,18 @@ namespace {
 
 FieldPtr make_bathymetry(const BuildInputs& in) {
   const Options& o = in.opts;
-  LonLatGrid g = read_depth_grid(in);
   const std::string& output = o.string("Output");
+  if (output == "depth") return std::make_shared<DepthGridsField>(read_depth_grids(in), o.number("Radius"),
+                                                                  o.number("MinDepth"));
+  LonLatGrid g = read_depth_grid(in);
   Output out;
-  if (output == "depth") out = Output::Depth;
-  else if (output == "wavelength") out = Output::Wavelength;
+  if (output == "wavelength") out = Output::Wavelength;
   else if (output == "hessian") out = Output::Hessian;
   else if (output == "tidal") out = Output::Tidal;
   else if (output == "slope") out = Output::Slope;
   else in.bad("Output", fmt::format("unknown output '{}' (depth, wavelength, hessian, tidal or slope)", output));
   const double min_depth = o.number("MinDepth");
-  if (out != Output::Depth && !(min_depth > 0))
+  if (!(min_depth > 0))
     in.bad("MinDepth", "must be positive for the wavelength, hessian, tidal and slope criteria");
   const double depth_ref = o.number("DepthRef");
   if (!(depth_ref > 0)) in.bad("DepthRef", "must be positive");
@@ -272,7 +511,10 @@ KindSpec bathymetry_kind() {
           "(finer on shelves) and the slope (2 pi/PointsPerWaveLength) H/|grad H| (gradient on the sphere "
           "by the Hessian's centred differences). Feed it to a Threshold to get a size.",
           {
-              str_opt("FileName", "", "netCDF file, or ESRI ASCII grid if the name ends in .asc"),
+              str_opt("FileName", "",
+                      "netCDF file, or ESRI ASCII grid if the name ends in .asc; with Output \"depth\", a "
+                      "comma-separated list by priority: the first grid covering a point with a value there "
+                      "gives its depth, the next fills the gaps"),
               str_opt("LonVariable", "", "netCDF longitude variable (empty: detected)"),
               str_opt("LatVariable", "", "netCDF latitude variable (empty: detected)"),
               str_opt("ZVariable", "", "netCDF relief variable (empty: the first 2D variable)"),
@@ -288,6 +530,8 @@ KindSpec bathymetry_kind() {
               num_opt("Radius", 0, "sphere radius for the latitude of a point (0: |X|)"),
               num_opt("MissingAsLand", 0, "1: missing/NaN nodes become MinDepth instead of an error"),
               num_opt("Period", 44712, "T of the tidal criterion, seconds (the M2 tide: 12.42 h)"),
+              list_opt("Window", "{W, E, S, N} in degrees: only this box of each netCDF grid (plus one node "
+                                 "around) is read, so that a grid larger than memory can be used; empty: whole grids"),
           },
           make_bathymetry};
 }

@@ -3,8 +3,13 @@
 // tidal-wavelength and slope criteria.
 #pragma once
 
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string>
 #include <vector>
 
+#include "field/depth_clamp.h"
 #include "field/lonlat_grid.h"
 #include "field/registry.h"
 
@@ -20,6 +25,26 @@ LonLatGrid hessian_criterion(const LonLatGrid& depth, double depth_ref, double r
 /// (metres), |grad H| by the same centred differences as hessian_criterion; 1e22
 /// where the bottom is flat. `depth` holds positive depths.
 LonLatGrid slope_criterion(const LonLatGrid& depth, double n, double radius);
+
+/// A Bathymetry field with Output "depth": positive depths from one relief grid or a
+/// list of them by priority (the first grid that covers a point and has values there
+/// wins), clamped to MinDepth. Besides eval's bilinear values it gives the depths at
+/// mesh nodes by cell averaging, and the clamp's account.
+class GridDepthField : public SizeField {
+ public:
+  /// Depths at `pts`. With `half_size` empty, eval's bilinear values; else at point i
+  /// the mean of the grid values (cell centres) lying within the angle half_size[i]
+  /// (radians on the sphere), or the nearest one's when none does, then clamped.
+  /// `report`, if given, receives the clamp's account.
+  virtual void node_depths(std::span<const Vec3> pts, std::span<const double> half_size, std::span<double> out,
+                           DepthClampReport* report) const = 0;
+};
+
+/// Half the mean angle (radians, about the origin) of the edges incident to each
+/// node: the angle Mesh.DepthSampling 1 averages the grid cells within. `edges` are
+/// node index pairs in any order and orientation, repeats counted once; a node on no
+/// edge gets 0 (its nearest cell).
+std::vector<double> half_edge_angles(std::span<const Vec3> xyz, std::vector<std::array<std::uint32_t, 2>> edges);
 
 /// The relief grid of a kind with depth_grid_options(), as positive depths clamped
 /// to MinDepth (BadValue / FileError naming the field).

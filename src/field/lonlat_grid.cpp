@@ -66,6 +66,53 @@ std::pair<double, double> even_axis(const std::filesystem::path& file, std::stri
   return {c.front(), step};
 }
 
+// The file indices of the nodes within `window` {W, E, S, N} plus one on each side, for
+// axes first + k step (k < n, step of either sign): columns c0 .. c0 + cn - 1 and rows
+// r0 .. r0 + rn - 1, at least two of each; every column when the box crosses the grid's
+// seam (the columns would wrap round the file's end). A box that misses the grid is an
+// error.
+void window_of(const std::filesystem::path& file, const std::vector<double>& w, double x0, double dx, std::size_t nx,
+               double y0, double dy, std::size_t ny, std::size_t& c0, std::size_t& cn, std::size_t& r0,
+               std::size_t& rn) {
+  // Indices k with first + k step in [lo, hi], widened by one node and kept in 0 .. n-1.
+  auto range = [&](double first, double step, std::size_t n, double lo, double hi, std::size_t& k0,
+                   std::size_t& count) {
+    double a = (lo - first) / step, b = (hi - first) / step;
+    if (a > b) std::swap(a, b);
+    const double last = static_cast<double>(n - 1);
+    if (b < 0 || a > last)
+      file_error(file, fmt::format("the window {{{}, {}, {}, {}}} holds no node of the grid", w[0], w[1], w[2],
+                                   w[3]));
+    double lo_k = std::max(0.0, std::floor(a) - 1), hi_k = std::min(last, std::ceil(b) + 1);
+    if (hi_k - lo_k < 1) {   // one node in the box: its neighbour too, for the bilinear value
+      if (lo_k > 0) lo_k -= 1;
+      else hi_k += 1;
+    }
+    k0 = static_cast<std::size_t>(lo_k);
+    count = static_cast<std::size_t>(hi_k - lo_k) + 1;
+  };
+  range(y0, dy, ny, w[2], w[3], r0, rn);
+  const double step = std::fabs(dx);
+  const double west = std::min(x0, x0 + dx * static_cast<double>(nx - 1));
+  const double east = std::max(x0, x0 + dx * static_cast<double>(nx - 1));
+  // The copy of the box (mod 360) that starts at or after the grid's west edge, and the
+  // copy one turn west of it: the grid's columns meet one of them, both, or neither.
+  const double shift = 360 * std::floor((w[0] - west) / 360);
+  const double bw = w[0] - shift, be = w[1] - shift;
+  const bool meets_east_copy = bw <= east, meets_west_copy = be - 360 >= west;
+  const bool global = east - west + step >= 360 - 1e-9 * step;
+  if (meets_east_copy && meets_west_copy) {
+    c0 = 0, cn = nx;   // the box wraps round the grid's seam
+  } else if (meets_east_copy) {
+    if (global && be > east) c0 = 0, cn = nx;
+    else range(x0, dx, nx, bw, be, c0, cn);
+  } else if (meets_west_copy) {
+    range(x0, dx, nx, bw - 360, be - 360, c0, cn);
+  } else {
+    file_error(file, fmt::format("the window {{{}, {}, {}, {}}} holds no node of the grid", w[0], w[1], w[2], w[3]));
+  }
+}
+
 // The nodes must lie on the globe: latitudes in [-90, 90] and longitudes in
 // [-540, 540] (a grid may run past +-180), with half a cell of slack for grids
 // whose node rows stand for cells that touch a pole.
@@ -94,30 +141,47 @@ int LonLatGrid::wrap(int i) const {
   return i < 0 ? i + period : i;
 }
 
-double LonLatGrid::interp(double lon_deg, double lat_deg) const {
+LonLatGrid::Stencil LonLatGrid::stencil(double lon_deg, double lat_deg) const {
+  Stencil st;
   double tj = std::clamp((lat_deg - lat0) / dlat, 0.0, static_cast<double>(nlat - 1));
-  int j = std::min(static_cast<int>(tj), nlat - 2);
-  const double wj = tj - j;
-  int i0, i1;
-  double wi;
+  st.j = std::min(static_cast<int>(tj), nlat - 2);
+  st.wj = tj - st.j;
   if (period > 0) {
     double ti = std::fmod((lon_deg - lon0) / dlon, static_cast<double>(period));
     if (ti < 0) ti += period;
-    i0 = std::min(static_cast<int>(ti), period - 1);
-    wi = ti - i0;
-    i1 = i0 + 1 == period ? 0 : i0 + 1;
+    st.i0 = std::min(static_cast<int>(ti), period - 1);
+    st.wi = ti - st.i0;
+    st.i1 = st.i0 + 1 == period ? 0 : st.i0 + 1;
   } else {
-    // The copy of lon_deg (mod 360) nearest to the grid's middle.
-    const double mid = lon0 + 0.5 * dlon * (nlon - 1);
-    const double l = lon_deg - 360 * std::round((lon_deg - mid) / 360);
-    const double ti = std::clamp((l - lon0) / dlon, 0.0, static_cast<double>(nlon - 1));
-    i0 = std::min(static_cast<int>(ti), nlon - 2);
-    wi = ti - i0;
-    i1 = i0 + 1;
+    const double ti = std::clamp(column_of(lon_deg), 0.0, static_cast<double>(nlon - 1));
+    st.i0 = std::min(static_cast<int>(ti), nlon - 2);
+    st.wi = ti - st.i0;
+    st.i1 = st.i0 + 1;
   }
-  const double a = at(i0, j) * (1 - wi) + at(i1, j) * wi;
-  const double b = at(i0, j + 1) * (1 - wi) + at(i1, j + 1) * wi;
-  return a * (1 - wj) + b * wj;
+  return st;
+}
+
+double LonLatGrid::column_of(double lon_deg) const {
+  if (period > 0) return (lon_deg - lon0) / dlon;
+  // The copy of lon_deg (mod 360) nearest to the grid's middle.
+  const double mid = lon0 + 0.5 * dlon * (nlon - 1);
+  const double l = lon_deg - 360 * std::round((lon_deg - mid) / 360);
+  return (l - lon0) / dlon;
+}
+
+double LonLatGrid::interp(double lon_deg, double lat_deg) const {
+  const Stencil st = stencil(lon_deg, lat_deg);
+  const double a = at(st.i0, st.j) * (1 - st.wi) + at(st.i1, st.j) * st.wi;
+  const double b = at(st.i0, st.j + 1) * (1 - st.wi) + at(st.i1, st.j + 1) * st.wi;
+  return a * (1 - st.wj) + b * st.wj;
+}
+
+bool LonLatGrid::covers(double lon_deg, double lat_deg) const {
+  const double tj = (lat_deg - lat0) / dlat;
+  if (!(tj >= 0 && tj <= nlat - 1)) return false;
+  if (period > 0) return true;
+  const double ti = column_of(lon_deg);
+  return ti >= 0 && ti <= nlon - 1;
 }
 
 void lonlat_of(const Vec3& p, double radius, double& lon_deg, double& lat_deg) {
@@ -184,6 +248,12 @@ class NcFile {
   std::vector<double> read(int v, std::size_t n) const {
     std::vector<double> out(n);
     check(nc_get_var_double(id_, v, out.data()), fmt::format("reading '{}'", var_name(v)));
+    return out;
+  }
+  /// The hyperslab start[k] .. start[k] + count[k] - 1 of a 2D variable.
+  std::vector<double> read(int v, const std::size_t start[2], const std::size_t count[2]) const {
+    std::vector<double> out(count[0] * count[1]);
+    check(nc_get_vara_double(id_, v, start, count, out.data()), fmt::format("reading '{}'", var_name(v)));
     return out;
   }
   bool att(int v, const char* name, double& value) const {
@@ -309,7 +379,7 @@ bool looks_like_lon(const NcFile& nc, int v) {
 
 }  // namespace
 
-LonLatGrid read_netcdf_grid(const std::filesystem::path& file, const NetcdfGridSpec& spec) {
+LonLatGrid read_netcdf_grid(const std::filesystem::path& file, const NetcdfGridSpec& spec, GridAttributes* attrs) {
   if (!std::filesystem::exists(file)) file_error(file, "no such file");
   // nc_open allocates what the header declares before it checks the file's length.
   if (auto why = check_netcdf_header_counts(file)) file_error(file, *why);
@@ -361,7 +431,8 @@ LonLatGrid read_netcdf_grid(const std::filesystem::path& file, const NetcdfGridS
   // Sizes are checked before anything is allocated: against the file length for
   // the classic formats, against a fixed bound for netCDF-4 (whose compressed
   // data may be far smaller than the grid; its reads fail on a cut file).
-  if (nx < 2 || ny < 2 || nx > kMaxGridSide || ny > kMaxGridSide || mul_sat(nx, ny) > kMaxGridValues)
+  const bool windowed = !spec.window.empty();
+  if (nx < 2 || ny < 2 || nx > kMaxGridSide || ny > kMaxGridSide || (!windowed && mul_sat(nx, ny) > kMaxGridValues))
     file_error(file, fmt::format("variable '{}' is a {} x {} grid: each side must be 2 to {} and the grid at "
                                  "most {} values", zname, ny, nx, kMaxGridSide, kMaxGridValues));
   int format = 0;
@@ -391,20 +462,36 @@ LonLatGrid read_netcdf_grid(const std::filesystem::path& file, const NetcdfGridS
     file_error(file, fmt::format("variable '{}': scale_factor {} must be finite and non-zero", zname, scale));
   if (has_offset && !std::isfinite(offset))
     file_error(file, fmt::format("variable '{}': add_offset {} must be finite", zname, offset));
-  std::vector<double> raw = nc.read(zv, nx * ny);
+  // The columns c0 .. c0 + cn - 1 and rows r0 .. r0 + rn - 1 (file order) to read.
+  std::size_t c0 = 0, cn = nx, r0 = 0, rn = ny;
+  if (windowed) window_of(file, spec.window, x0, dx, nx, y0, dy, ny, c0, cn, r0, rn);
+  if (windowed && mul_sat(cn, rn) > kMaxGridValues)
+    file_error(file, fmt::format("variable '{}': the window's {} x {} nodes are more than {}", zname, rn, cn,
+                                 kMaxGridValues));
+  std::vector<double> raw;
+  if (windowed) {
+    const std::size_t start[2] = {lon_axis == 1 ? r0 : c0, lon_axis == 1 ? c0 : r0};
+    const std::size_t count[2] = {lon_axis == 1 ? rn : cn, lon_axis == 1 ? cn : rn};
+    raw = nc.read(zv, start, count);
+  } else {
+    raw = nc.read(zv, nx * ny);
+  }
+  // The first column and row read (equal to x0, y0 without a window).
+  const double wx0 = c0 ? x0 + dx * static_cast<double>(c0) : x0;
+  const double wy0 = r0 ? y0 + dy * static_cast<double>(r0) : y0;
 
   LonLatGrid g;
-  g.nlon = static_cast<int>(nx);
-  g.nlat = static_cast<int>(ny);
+  g.nlon = static_cast<int>(cn);
+  g.nlat = static_cast<int>(rn);
   g.dlon = std::fabs(dx);
   g.dlat = std::fabs(dy);
-  g.lon0 = dx > 0 ? x0 : x0 + dx * static_cast<double>(nx - 1);
-  g.lat0 = dy > 0 ? y0 : y0 + dy * static_cast<double>(ny - 1);
+  g.lon0 = dx > 0 ? wx0 : wx0 + dx * static_cast<double>(cn - 1);
+  g.lat0 = dy > 0 ? wy0 : wy0 + dy * static_cast<double>(rn - 1);
   check_extent(file, g);
-  g.v.resize(nx * ny);
-  for (std::size_t r = 0; r < ny; ++r)
-    for (std::size_t c = 0; c < nx; ++c) {
-      const double raw_v = lon_axis == 1 ? raw[r * nx + c] : raw[c * ny + r];
+  g.v.resize(cn * rn);
+  for (std::size_t r = 0; r < rn; ++r)
+    for (std::size_t c = 0; c < cn; ++c) {
+      const double raw_v = lon_axis == 1 ? raw[r * cn + c] : raw[c * rn + r];
       double val = raw_v;
       if ((has_fill && raw_v == fill) || (has_missing && raw_v == missing) || std::isnan(raw_v)) {
         val = std::nan("");
@@ -412,16 +499,27 @@ LonLatGrid read_netcdf_grid(const std::filesystem::path& file, const NetcdfGridS
         if (has_scale) val *= scale;
         if (has_offset) val += offset;
       }
-      const std::size_t i = dx > 0 ? c : nx - 1 - c;
-      const std::size_t j = dy > 0 ? r : ny - 1 - r;
+      const std::size_t i = dx > 0 ? c : cn - 1 - c;
+      const std::size_t j = dy > 0 ? r : rn - 1 - r;
       if (std::isinf(val))
         file_error(file, fmt::format("variable '{}': value {} at lon {}, lat {} is not finite (raw {}, "
                                      "scale_factor {}, add_offset {})", zname, val,
-                                     x0 + dx * static_cast<double>(c), y0 + dy * static_cast<double>(r),
+                                     wx0 + dx * static_cast<double>(c), wy0 + dy * static_cast<double>(r),
                                      raw_v, scale, offset));
-      g.v[j * nx + i] = val;
+      g.v[j * cn + i] = val;
     }
   g.detect_wrap();
+  if (attrs) {
+    attrs->units = nc.text_att(zv, "units");
+    attrs->crs.clear();
+    // CF: the variable's grid_mapping attribute names a variable whose attributes
+    // describe the reference system; the fullest description it carries is kept.
+    const std::string mapping = nc.text_att(zv, "grid_mapping");
+    int mv = -1;
+    if (!mapping.empty() && nc_inq_varid(nc.id(), mapping.c_str(), &mv) == NC_NOERR)
+      for (const char* key : {"crs_wkt", "spatial_ref", "epsg_code", "grid_mapping_name"})
+        if (attrs->crs.empty()) attrs->crs = nc.text_att(mv, key);
+  }
   return g;
 }
 

@@ -253,6 +253,15 @@ std::string stats_json(const MeshStats& s) {
                        json_number(t.edge), json_number(t.depth), t.surface);
     if (t.has_lonlat) out += fmt::format(", \"dt_lon\": {}, \"dt_lat\": {}", json_number(t.lon), json_number(t.lat));
   }
+  if (s.has_depth_clamp) {
+    const field::DepthClampReport& d = s.depth_clamp;
+    out += fmt::format(", \"depth_min\": {}, \"depth_clamped_nodes\": {}, \"depth_clamped_dry\": {}", json_number(d.min_depth),
+                       d.clamped, d.dry);
+    if (d.has_worst)
+      out += fmt::format(", \"depth_clamp_lon\": {}, \"depth_clamp_lat\": {}, \"depth_clamp_grid\": {}, "
+                         "\"depth_clamp_value\": {}",
+                         json_number(d.lon), json_number(d.lat), json_number(d.grid_depth), json_number(d.value));
+  }
   if (s.partitions > 0)
     out += fmt::format(", \"partitions\": {}, \"partition_edge_cut\": {}, \"partition_imbalance\": {}, "
                        "\"partition_min\": {}, \"partition_max\": {}",

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "base/vec.h"
+#include "field/depth_clamp.h"
 #include "mesh/model_mesh.h"
 #include "mesh/time_step.h"
 
@@ -36,6 +37,9 @@ struct MeshStats {
   double share_len_07_14 = 0;                          // share of edges with ratio in [0.7, 1.4]
   std::vector<StageTime> stages;                       // filled by the caller
   TimeStep time_step;                                  // with Mesh.DepthField: set by the caller
+  // With a Bathymetry depth field as Mesh.DepthField, set by the caller: the nodes MinDepth raised.
+  bool has_depth_clamp = false;
+  field::DepthClampReport depth_clamp;
   // With Mesh.NbPartitions (io/mesh_partition.h), set by the caller: the part count, the
   // dual-graph edges cut, the largest part over the mean, and the smallest and largest part.
   int partitions = 0;

@@ -10,7 +10,9 @@
 
 #include <fmt/format.h>
 
+#include "field/bathymetry.h"
 #include "field/min_max.h"
+#include "io/mesh_model.h"
 #include "field/size_check.h"
 #include "interp/kernel/dispatch.h"
 #include "interp/kernel/field_context.h"
@@ -369,14 +371,43 @@ Value eval_field_call(Interpreter& in, const Expr& e, const CallExpr& c) {
   return Value::number(which);
 }
 
-std::string depth_at(Interpreter& in, std::span<const Vec3> xyz, std::vector<double>& depth) {
+std::string depth_at(Interpreter& in, const io::MeshModel& mm, std::vector<double>& depth) {
+  std::vector<std::array<std::uint32_t, 2>> edges;
+  if (in.options().number("Mesh.DepthSampling") == 1)
+    for (const io::EntityMesh& e : mm.entities) {
+      if (e.dim != 2 || (e.type != io::ElementType::Triangle3 && e.type != io::ElementType::Quad4)) continue;
+      const std::size_t n = static_cast<std::size_t>(io::nodes_per_element(e.type));
+      for (std::size_t b = 0; b + n <= e.connectivity.size(); b += n)
+        for (std::size_t c = 0; c < n; ++c) edges.push_back({e.connectivity[b + c], e.connectivity[b + (c + 1) % n]});
+    }
+  return depth_at(in, mm.xyz, edges, depth);
+}
+
+std::string check_depth_sampling(Interpreter& in, const field::SizeField& depth) {
+  if (in.options().number("Mesh.DepthSampling") == 0 || dynamic_cast<const field::GridDepthField*>(&depth)) return {};
+  return "Mesh.DepthSampling = 1 averages the cells of a relief grid: Mesh.DepthField must be a Bathymetry field with "
+         "Output \"depth\"";
+}
+
+std::string depth_at(Interpreter& in, std::span<const Vec3> xyz, const std::vector<std::array<std::uint32_t, 2>>& edges,
+                     std::vector<double>& depth, std::optional<field::DepthClampReport>* report) {
   const KernelState& k = in.kernel();
   const int id = static_cast<int>(in.options().number("Mesh.DepthField"));
   const auto at = k.option_set_at.find("Mesh.DepthField");
   const field::SizeField* f = built_fields(in, id, at != k.option_set_at.end() ? at->second : SourceRange{}).get(id);
   if (!f) return fmt::format("Mesh.DepthField = {}: no such field", id);
+  if (std::string why = check_depth_sampling(in, *f); !why.empty()) return why;
   depth.resize(xyz.size());
-  f->eval(xyz, depth);
+  const auto* grid = dynamic_cast<const field::GridDepthField*>(f);
+  if (!grid) {
+    f->eval(xyz, depth);
+    return {};
+  }
+  std::vector<double> half;
+  if (in.options().number("Mesh.DepthSampling") == 1) half = field::half_edge_angles(xyz, edges);
+  field::DepthClampReport r;
+  grid->node_depths(xyz, half, depth, &r);
+  if (report) *report = r;
   return {};
 }
 

@@ -70,14 +70,37 @@ bool option_value(Interpreter& in, const FieldOptionStmt& n, int id, const field
   const Value v = in.eval(n.value);
   const SourceRange value_at = in.ast().expr(n.value).range;
   if (v.is_string()) {
-    if (v.kind() == Value::Kind::StringList && v.strs().size() != 1)
+    // A Bathymetry's FileName takes a list of grids by priority: {"fine.nc", "coarse.nc"}
+    // or "fine.nc, coarse.nc", each name relative to the script; the kernel gets them
+    // comma-separated (field/bathymetry.cpp).
+    const bool grid_list = spec && spec->name == "FileName" && in.kernel().fields.options(id).kind().name == "Bathymetry";
+    if (v.kind() == Value::Kind::StringList && v.strs().size() != 1 && !(grid_list && v.strs().size() > 1))
       in.fail_fmt(value_at, Diag::WrongFieldOptionType,
                   fmt::format("option '{}' of Field[{}] takes one string, not a list of {}",
                               in.ast().str(n.option), id, v.strs().size()));
-    std::string text = v.strs().empty() ? std::string() : v.strs().front();
-    // File options are relative to the script, as Gmsh's FIELD_OPTION_PATH.
-    if (spec && spec->name == "FileName" && !text.empty())
-      text = resolve_script_path(in.builtin_env(), text);
+    std::string text;
+    if (grid_list) {
+      std::vector<std::string> names;
+      for (const std::string& s : v.strs()) {
+        std::size_t b = 0;
+        for (std::size_t k = 0; k <= s.size(); ++k) {
+          if (k < s.size() && s[k] != ',') continue;
+          names.push_back(s.substr(b, k - b));
+          b = k + 1;
+        }
+      }
+      for (std::string& name : names) {
+        const std::size_t lo = name.find_first_not_of(" \t"), hi = name.find_last_not_of(" \t");
+        name = lo == std::string::npos ? std::string() : name.substr(lo, hi - lo + 1);
+        if (!name.empty()) name = resolve_script_path(in.builtin_env(), name);
+        if (&name != &names.front()) text += ", ";
+        text += name;
+      }
+    } else {
+      text = v.strs().empty() ? std::string() : v.strs().front();
+      // File options are relative to the script, as Gmsh's FIELD_OPTION_PATH.
+      if (spec && spec->name == "FileName" && !text.empty()) text = resolve_script_path(in.builtin_env(), text);
+    }
     out = std::move(text);
     return true;
   }

@@ -146,6 +146,7 @@ void publish_stats(Interpreter& in, const ModelMesh& mesh, const MeshStats& st) 
   o.set_number("Mesh.StatsEdgeRatioMedian", st.len_median, true);
   o.set_number("Mesh.StatsEdgeInRange", st.share_len_07_14, true);
   o.set_number("Mesh.StatsTimeStep", st.time_step.valid ? st.time_step.dt : 0, true);
+  o.set_number("Mesh.StatsDepthClamped", st.has_depth_clamp ? static_cast<double>(st.depth_clamp.clamped) : 0, true);
   in.kernel().mesh_stats = st;
   in.kernel().has_mesh_stats = true;
   in.kernel().has_curve_stats = false;
@@ -156,14 +157,10 @@ void publish_stats(Interpreter& in, const ModelMesh& mesh, const MeshStats& st) 
   }
 }
 
-// The Courant time step of `mesh` with node depths from `depth` (Mesh.DepthField): edges
+// The Courant time step of `mesh` with node depths `h` (Mesh.DepthField's): edges
 // on the model's sphere when it has one (lengths in the model's units, metres for
 // earth.geo), depths raised to Mesh.TimeStepMinDepth.
-TimeStep time_step_of(Interpreter& in, const ModelMesh& mesh, const field::SizeField& depth) {
-  std::vector<Vec3> xyz(mesh.nodes.size());
-  for (std::size_t i = 0; i < xyz.size(); ++i) xyz[i] = mesh.nodes[i].xyz;
-  std::vector<double> h(xyz.size());
-  depth.eval(xyz, h);
+TimeStep time_step_of(Interpreter& in, const ModelMesh& mesh, const std::vector<double>& h) {
   TimeStepOptions opt;
   opt.min_depth = in.options().number("Mesh.TimeStepMinDepth");
   for (const auto& [tag, g] : in.kernel().model.geometries()) {
@@ -172,6 +169,22 @@ TimeStep time_step_of(Interpreter& in, const ModelMesh& mesh, const field::SizeF
     break;
   }
   return courant_time_step(mesh, h, opt);
+}
+
+// One line on what the depth field's MinDepth did to the nodes, at the field's definition
+// (a model run on depths raised without a word is not the one its author meant).
+void report_depth_clamp(Interpreter& in, const field::DepthClampReport& c) {
+  const KernelState& k = in.kernel();
+  const int id = static_cast<int>(in.options().number("Mesh.DepthField"));
+  const auto def = k.field_defined_at.find(id);
+  if (def == k.field_defined_at.end()) return;
+  const double share = c.points ? 100.0 * static_cast<double>(c.clamped) / static_cast<double>(c.points) : 0.0;
+  std::string text = fmt::format("Field[{}]: MinDepth {:g} m raised {} of {} node depths ({:.1f}%; {} of them on land "
+                                 "in the grid)", id, c.min_depth, c.clamped, c.points, share, c.dry);
+  if (c.has_worst)
+    text += fmt::format("; the most at lon {:.4f} lat {:.4f}, from {:.4g} m in the grid to {:.4g} m", c.lon, c.lat,
+                        c.grid_depth, c.value);
+  in.diags().report(def->second, Diag::DepthMinClamp, text);
 }
 
 // The notes pointing at where `option` was set, if a statement set it.
@@ -243,6 +256,8 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
     const auto it = k.option_set_at.find("Mesh.DepthField");
     const int id = static_cast<int>(depth_field);
     depth = built_fields(in, id, it != k.option_set_at.end() ? it->second : SourceRange{}).shared(id);
+    if (std::string why = check_depth_sampling(in, *depth); !why.empty())
+      return {Diag::InvalidOptionValue, std::move(why), set_here(k, "Mesh.DepthSampling")};
   }
   // The structured constraints with the Mesh.* options that complete them.
   MeshConstraints& constraints = k.constraints;
@@ -328,7 +343,45 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
       st.has_min_rho_lonlat = true;
       st.min_rho_lon = ll.lon, st.min_rho_lat = ll.lat;
     }
-  if (depth) st.time_step = time_step_of(in, *mesh, *depth);
+  if (depth) {
+    // The depths the ocean grids get at the nodes of the 2D elements (those the written
+    // files hold; Mesh.DepthSampling included), and what MinDepth did to them.
+    constexpr std::uint32_t kUnused = 0xFFFFFFFFu;
+    std::vector<std::uint32_t> local(mesh->nodes.size(), kUnused);
+    std::vector<Vec3> xyz;
+    auto use = [&](std::uint32_t v) {
+      if (local[v] == kUnused) {
+        local[v] = static_cast<std::uint32_t>(xyz.size());
+        xyz.push_back(mesh->nodes[v].xyz);
+      }
+      return local[v];
+    };
+    std::vector<std::array<std::uint32_t, 2>> edges;
+    const bool sampled = in.options().number("Mesh.DepthSampling") == 1;
+    auto add_element = [&](const std::uint32_t* corners, std::size_t n) {
+      for (std::size_t c = 0; c < n; ++c) {
+        const std::uint32_t a = use(corners[c]), b = use(corners[(c + 1) % n]);
+        if (sampled) edges.push_back({a, b});
+      }
+    };
+    for (const auto& [tag, surf] : mesh->surfaces) {
+      for (const auto& t : surf.triangles) add_element(t.data(), 3);
+      for (const auto& q : surf.quads) add_element(q.data(), 4);
+    }
+    std::vector<double> h;
+    std::optional<field::DepthClampReport> clamp;
+    if (std::string why = depth_at(in, xyz, edges, h, &clamp); !why.empty())
+      return {Diag::InvalidOptionValue, std::move(why), set_here(k, "Mesh.DepthField")};
+    std::vector<double> node_h(mesh->nodes.size(), 0.0);   // nodes of no element: not read
+    for (std::size_t v = 0; v < local.size(); ++v)
+      if (local[v] != kUnused) node_h[v] = h[local[v]];
+    st.time_step = time_step_of(in, *mesh, node_h);
+    if (clamp) {
+      st.has_depth_clamp = true;
+      st.depth_clamp = *clamp;
+      report_depth_clamp(in, *clamp);
+    }
+  }
   stage_stats.reset();   // a stage of its own, not counted twice in the time line
   if (std::string why = partition_mesh_now(in, *mesh, &st); !why.empty())
     return {Diag::InvalidOptionValue, std::move(why), set_here(k, "Mesh.NbPartitions")};

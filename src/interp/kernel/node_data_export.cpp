@@ -48,7 +48,7 @@ std::string node_data_named(Interpreter& in, const io::MeshModel& mm, const std:
     if (name == "depth") {
       if (!(in.options().number("Mesh.DepthField") > 0))
         return "Mesh.NodeData: depth needs Mesh.DepthField (a field giving the depth)";
-      if (std::string w = depth_at(in, mm.xyz, values); !w.empty()) return w;
+      if (std::string w = depth_at(in, mm, values); !w.empty()) return w;
       out.push_back({name, "m", "depth at the mesh nodes (Mesh.DepthField), positive down", std::move(values)});
     } else if (name == "size") {
       if (std::string w = sizes(); !w.empty()) return w;

@@ -16,3 +16,8 @@ sed 's/z:add_offset = 0\. ;/z:add_offset = NaN ;/' small.cdl | ncgen -k classic 
 sed 's/z:scale_factor = 1\. ;/z:scale_factor = 0. ;/' small.cdl | ncgen -k classic -o scale_zero.nc
 # Latitudes past the pole.
 sed 's/ lat = 40, 41, 42, 43, 44, 45, 46 ;/ lat = 87, 88, 89, 90, 91, 92, 93 ;/' small.cdl | ncgen -k classic -o lat_past_pole.nc
+# Depth grids for a list of grids by priority that disagree: units m vs km, and
+# latitude_longitude vs transverse_mercator.
+ncgen -k classic -o depth_m.nc depth_m.cdl
+ncgen -k classic -o depth_km.nc depth_km.cdl
+ncgen -k classic -o depth_utm.nc depth_utm.cdl
