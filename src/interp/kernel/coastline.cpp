@@ -13,6 +13,7 @@
 #include "base/check.h"
 #include "coast/import.h"
 #include "coast/read.h"
+#include "coast/read_shapefile.h"
 #include "coast/region_polygon.h"
 #include "field/registry.h"
 #include "interp/kernel/coastline_report.h"
@@ -72,6 +73,7 @@ constexpr CoastOption kOptions[] = {
     {"AntarcticaLevel", OptType::Number, false, "level kept for Antarctica: 5 ice front (default), 6 grounding line, 0 none"},
     {"AccuracyField", OptType::Number, false, "size field giving gamma(x) in metres (required)"},
     {"Region", OptType::List, false, "{west, east, south, north} in degrees, or a polygon {lon1, lat1, lon2, lat2, lon3, lat3, ...} (great-circle edges)"},
+    {"RegionFile", OptType::String, false, "a shapefile holding one polygon: the Region polygon, relative to the script"},
     {"MinArea", OptType::Number, false, "drop closed rings below this area (km^2)"},
     {"CurveType", OptType::String, false, "\"BSpline\" (default) or \"Line\""},
     {"MaxDeviation", OptType::Number, false, "the coast curve stays within this distance (m) of the source points (default: DeviationFactor * gamma)"},
@@ -232,6 +234,33 @@ void check_option_value(Interpreter& in, int id, const CoastOption& o, const Val
   }
 }
 
+const Value* option_of(const CoastlineDef& d, std::string_view name) {
+  auto it = d.options.find(std::string(name));
+  return it == d.options.end() ? nullptr : &it->second;
+}
+
+// RegionFile: the one polygon (one outer ring, no hole) of a shapefile, as a Region list.
+Value region_from_file(Interpreter& in, int id, const std::string& path, SourceRange at) {
+  auto c = coast::read_shapefile(path);
+  if (!c) fail_option(in, at, id, "RegionFile", fmt::format("cannot be read: {}", c.error().to_string()));
+  std::vector<const coast::Ring*> outer;
+  std::size_t holes = 0;
+  for (const coast::Ring& r : c->rings) {
+    if (r.closed && r.level == 1) outer.push_back(&r);
+    else ++holes;
+  }
+  if (outer.size() != 1 || holes > 0)
+    fail_option(in, at, id, "RegionFile",
+                fmt::format("{}: a region file must hold one polygon without holes, and it holds {} outer ring(s) and "
+                            "{} other part(s)",
+                            path, outer.size(), holes));
+  std::vector<double> x;
+  for (const geo::LonLat p : outer.front()->pts) x.insert(x.end(), {p.lon, p.lat});
+  auto poly = coast::RegionPolygon::make(polygon_vertices(x));
+  if (!poly) fail_option(in, at, id, "RegionFile", fmt::format("{}: not a usable polygon: {}", path, poly.error().message));
+  return Value::list(std::move(x));
+}
+
 void exec_coast_option(Interpreter& in, const Stmt& s, const CoastlineOptionStmt& n) {
   const int id = coast_id(in, n.id);
   CoastlineDef& d = require_coast(in, id, in.ast().expr(n.id).range, "set an option of");
@@ -262,6 +291,17 @@ void exec_coast_option(Interpreter& in, const Stmt& s, const CoastlineOptionStmt
   const SourceRange value_at = in.ast().expr(n.value).range;
   check_option_value(in, id, *o, v, value_at);
   if (o->name == "FileName") v = Value::string(resolve_script_path(in.builtin_env(), v.strs().front()));
+  if ((o->name == "Region" && option_of(d, "RegionFile")) || (o->name == "RegionFile" && option_of(d, "Region") &&
+                                                              !option_of(d, "RegionFile")))
+    fail_option(in, s.range, id, o->name,
+                "cannot be set with both Region and RegionFile: the region is either written or read from a file");
+  if (o->name == "RegionFile") {
+    // Read now, so that a file without one usable polygon is an error here; the polygon
+    // then stands as the Region, set by this statement.
+    v = Value::string(resolve_script_path(in.builtin_env(), v.strs().front()));
+    d.options.insert_or_assign("Region", region_from_file(in, id, v.strs().front(), s.range));
+    d.option_at.insert_or_assign("Region", s.range);
+  }
   d.options.insert_or_assign(option, std::move(v));
   d.option_at.insert_or_assign(option, s.range);
 }
