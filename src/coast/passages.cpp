@@ -592,8 +592,9 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
     FlatLoop& f = w.flat[l];
     if (f.dead) continue;
     std::vector<std::uint32_t> run;   // the original points within W of the other segment
+    const Vec2 other0 = o0, other1 = o1;   // clang 14 lambdas cannot capture structured bindings
     w.walk(from, to, [&](std::uint32_t i) {
-      if (!w.nodes[i].kept && uv_point_segment_metres(w.nodes[i].uv, o0, o1, R) < W) run.push_back(i);
+      if (!w.nodes[i].kept && uv_point_segment_metres(w.nodes[i].uv, other0, other1, R) < W) run.push_back(i);
     });
     if (run.empty() || run.size() > kMaxPutBack) continue;
     std::vector<Vec2> pts{w.nodes[from].uv};
