@@ -92,6 +92,9 @@ struct FlatLoop {
   const PointPool* pool = nullptr;
   std::uint32_t head = 0;              // the node the loop's rebuild starts from
   std::vector<std::uint32_t> kept;     // kept node ids in ring order from head: the polygon
+  // The (u,v) points of kept, in step with it: the polygon read in order rather than
+  // through the pool (each cut of a continent reads its 100,000 points again).
+  std::vector<Vec2> uv;
   bool hole = true;
   bool dead = false;
   bool changed = false;
@@ -100,12 +103,13 @@ struct FlatLoop {
   std::optional<Sign> orientation;
   std::uint32_t id(std::size_t j) const { return kept[j % kept.size()]; }
   const Node& node(std::size_t j) const { return pool->nodes[id(j)]; }
-  Vec2 p(std::size_t j) const { return pool->uv(id(j)); }
+  Vec2 p(std::size_t j) const { return uv[j % uv.size()]; }
   geo::LonLat ll(std::size_t j) const { return pool->ll(id(j)); }
   /// Dead: nothing reads it again, so its kept list is freed.
   void kill() {
     dead = true;
     std::vector<std::uint32_t>().swap(kept);
+    std::vector<Vec2>().swap(uv);
   }
 };
 
@@ -185,7 +189,7 @@ void flatten(Work& w, const WorkLoop& loop) {
       const std::size_t m = c.periodic ? c.full.size() : c.full.size() - 1;
       for (std::size_t i = 0; i < m; ++i) {
         const std::uint32_t id = w.add_node({ci, static_cast<std::uint32_t>(i), ci, kept[i] != 0});
-        if (kept[i]) f.kept.push_back(id);
+        if (kept[i]) f.kept.push_back(id), f.uv.push_back(c.uv[i]);
       }
     }
   const auto end = static_cast<std::uint32_t>(w.nodes.size());
@@ -211,11 +215,7 @@ double mean_width_m(const FlatLoop& f, double radius) {
   return per > 0 ? 2.0 * std::abs(signed_area(p)) / per * lambda_m(mean, radius) : 0.0;
 }
 
-std::vector<Vec2> polygon(const FlatLoop& f) {
-  std::vector<Vec2> p;
-  for (std::size_t j = 0; j < f.kept.size(); ++j) p.push_back(f.p(j));
-  return p;
-}
+std::vector<Vec2> polygon(const FlatLoop& f) { return f.uv; }
 
 bool in_box(Vec2 p, Vec2 lo, Vec2 hi) { return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y; }
 
@@ -343,13 +343,20 @@ std::uint32_t new_dam(Work& w, const Node& from) {
   return static_cast<std::uint32_t>(w.n_curves + w.dams.size() - 1);
 }
 
-FlatLoop make_loop(const Work& w, std::uint32_t head, std::vector<std::uint32_t> kept) {
+// `uv`: the points of `kept` when the caller has them (empty: read from the pool).
+FlatLoop make_loop(const Work& w, std::uint32_t head, std::vector<std::uint32_t> kept, std::vector<Vec2> uv = {}) {
   FlatLoop f;
   f.pool = &w.pool;
   f.head = head;
   f.kept = std::move(kept);
+  f.uv = std::move(uv);
+  if (f.uv.size() != f.kept.size()) {
+    f.uv.clear();
+    f.uv.reserve(f.kept.size());
+    for (std::uint32_t id : f.kept) f.uv.push_back(w.pool.uv(id));
+  }
   f.changed = true;
-  if (f.kept.size() >= 3) f.orientation = ring_orientation(polygon(f));
+  if (f.kept.size() >= 3) f.orientation = ring_orientation(f.uv);
   f.hole = f.orientation == Sign::Negative;
   return f;
 }
@@ -358,15 +365,22 @@ struct CutResult {
   std::vector<std::uint32_t> new_loops;
 };
 
+// Kept node ids and their points (FlatLoop::kept and uv) of a loop being made.
+struct KeptPart {
+  std::vector<std::uint32_t> ids;
+  std::vector<Vec2> uv;
+};
+
 // The kept nodes of the two loops a 2-opt at kept segments ja and jb of one loop makes:
 // a1 ... b0 and b1 ... a0 (kept positions ja + 1 .. jb and jb + 1 .. ja, cyclic).
-std::pair<std::vector<std::uint32_t>, std::vector<std::uint32_t>> split_kept(const FlatLoop& f, std::size_t ja,
-                                                                              std::size_t jb) {
+std::pair<KeptPart, KeptPart> split_kept(const FlatLoop& f, std::size_t ja, std::size_t jb) {
   const std::size_t k = f.kept.size();
   auto range = [&](std::size_t from, std::size_t to) {   // positions from .. to inclusive, cyclic
-    std::vector<std::uint32_t> out;
-    out.reserve((to + k - from) % k + 1);
-    for (std::size_t s = 0, len = (to + k - from) % k + 1; s < len; ++s) out.push_back(f.kept[(from + s) % k]);
+    KeptPart out;
+    const std::size_t len = (to + k - from) % k + 1;
+    out.ids.reserve(len);
+    out.uv.reserve(len);
+    for (std::size_t s = 0; s < len; ++s) out.ids.push_back(f.kept[(from + s) % k]), out.uv.push_back(f.p(from + s));
     return out;
   };
   return {range((ja + 1) % k, jb), range((jb + 1) % k, ja)};
@@ -384,15 +398,16 @@ CutResult cut(Work& w, std::uint32_t la, std::size_t ja, std::uint32_t lb, std::
   const FlatLoop& fb = w.flat[lb];
   const std::uint32_t a0 = fa.kept[ja], a1 = fa.kept[(ja + 1) % fa.kept.size()];
   const std::uint32_t b0 = fb.kept[jb], b1 = fb.kept[(jb + 1) % fb.kept.size()];
-  std::vector<std::vector<std::uint32_t>> parts;
+  std::vector<KeptPart> parts;
   std::vector<std::uint32_t> heads;
   if (la != lb) {
     // a1 ... a0 then b1 ... b0: one loop.
-    std::vector<std::uint32_t> kept;
-    kept.reserve(fa.kept.size() + fb.kept.size());
-    for (std::size_t s = 1; s <= fa.kept.size(); ++s) kept.push_back(fa.kept[(ja + s) % fa.kept.size()]);
-    for (std::size_t s = 1; s <= fb.kept.size(); ++s) kept.push_back(fb.kept[(jb + s) % fb.kept.size()]);
-    w.stats.kept_visits += kept.size();
+    KeptPart kept;
+    kept.ids.reserve(fa.kept.size() + fb.kept.size());
+    kept.uv.reserve(fa.kept.size() + fb.kept.size());
+    for (std::size_t s = 1; s <= fa.kept.size(); ++s) kept.ids.push_back(fa.id(ja + s)), kept.uv.push_back(fa.p(ja + s));
+    for (std::size_t s = 1; s <= fb.kept.size(); ++s) kept.ids.push_back(fb.id(jb + s)), kept.uv.push_back(fb.p(jb + s));
+    w.stats.kept_visits += kept.ids.size();
     w.nodes[a0].src = new_dam(w, w.nodes[a0]);   // a0 -> b1
     w.nodes[b0].src = new_dam(w, w.nodes[b0]);   // b0 -> a1
     parts.push_back(std::move(kept));
@@ -400,10 +415,10 @@ CutResult cut(Work& w, std::uint32_t la, std::size_t ja, std::uint32_t lb, std::
     w.flat[la].kill();
     w.flat[lb].kill();
   } else {
-    std::vector<std::uint32_t> first, second;
+    KeptPart first, second;
     if (split.empty()) {
       std::tie(first, second) = split_kept(fa, ja, jb);
-      w.stats.kept_visits += first.size() + second.size();
+      w.stats.kept_visits += first.ids.size() + second.ids.size();
     }
     w.nodes[b0].src = new_dam(w, w.nodes[b0]);   // b0 -> a1
     w.nodes[a0].src = new_dam(w, w.nodes[a0]);   // a0 -> b1
@@ -415,7 +430,8 @@ CutResult cut(Work& w, std::uint32_t la, std::size_t ja, std::uint32_t lb, std::
   w.next[a0] = b1;
   w.next[b0] = a1;
   for (std::size_t i = 0; i < parts.size(); ++i) {
-    w.flat.push_back(split.empty() ? make_loop(w, heads[i], std::move(parts[i])) : std::move(split[i]));
+    w.flat.push_back(split.empty() ? make_loop(w, heads[i], std::move(parts[i].ids), std::move(parts[i].uv))
+                                   : std::move(split[i]));
     r.new_loops.push_back(static_cast<std::uint32_t>(w.flat.size() - 1));
   }
   return r;
@@ -453,7 +469,7 @@ std::vector<double> ring_metres(Work& w, const FlatLoop& f, double radius) {
 enum class Fate { Kept, Degenerate, Narrow };
 Fate fate_of(const Work& w, const FlatLoop& f, double* mean_width = nullptr) {
   if (f.kept.size() < 3) return Fate::Degenerate;
-  if ((f.orientation ? *f.orientation : ring_orientation(polygon(f))) == Sign::Zero) return Fate::Degenerate;
+  if ((f.orientation ? *f.orientation : ring_orientation(f.uv)) == Sign::Zero) return Fate::Degenerate;
   if (f.hole) return Fate::Kept;
   const double mw = mean_width_m(f, w.opt.radius);
   if (mean_width) *mean_width = mw;
@@ -480,11 +496,11 @@ void drop_if_narrow(Work& w, std::uint32_t l, std::vector<RepairEntry>& log) {
 bool cut_fills_dead_end(const Work& w, std::uint32_t l, std::size_t ja, std::size_t jb,
                         std::vector<FlatLoop>& split) {
   auto [first, second] = split_kept(w.flat[l], ja, jb);
-  w.stats.kept_visits += first.size() + second.size();
-  const std::uint32_t heads[2] = {first.front(), second.front()};
+  w.stats.kept_visits += first.ids.size() + second.ids.size();
+  const std::uint32_t heads[2] = {first.ids.front(), second.ids.front()};
   split.clear();
-  split.push_back(make_loop(w, heads[0], std::move(first)));
-  split.push_back(make_loop(w, heads[1], std::move(second)));
+  split.push_back(make_loop(w, heads[0], std::move(first.ids), std::move(first.uv)));
+  split.push_back(make_loop(w, heads[1], std::move(second.ids), std::move(second.uv)));
   for (const FlatLoop& f : split)
     if (fate_of(w, f) != Fate::Kept) return true;
   return false;
@@ -519,6 +535,13 @@ std::optional<std::pair<std::uint32_t, std::uint32_t>> follow_find(const Work& w
 // were marked kept: the entries between them replaced, in ring order. Where the stretch
 // wraps past the end of the list (round the loop's head), the list is made again from the
 // head, as the positions count from it.
+// FlatLoop::uv read again from the pool after its kept list changed in place.
+void reread_uv(const Work& w, FlatLoop& f) {
+  f.uv.clear();
+  f.uv.reserve(f.kept.size());
+  for (std::uint32_t id : f.kept) f.uv.push_back(w.pool.uv(id));
+}
+
 void rekeep(Work& w, FlatLoop& f, std::uint32_t from, std::uint32_t to) {
   f.orientation.reset();
   const std::size_t k = f.kept.size();
@@ -533,6 +556,7 @@ void rekeep(Work& w, FlatLoop& f, std::uint32_t from, std::uint32_t to) {
     });
     f.kept.erase(f.kept.begin() + static_cast<std::ptrdiff_t>(i + 1), f.kept.begin() + static_cast<std::ptrdiff_t>(t));
     f.kept.insert(f.kept.begin() + static_cast<std::ptrdiff_t>(i + 1), between.begin(), between.end());
+    reread_uv(w, f);
     return;
   }
   if (w.nodes[f.head].kept) between.push_back(f.head);
@@ -540,6 +564,7 @@ void rekeep(Work& w, FlatLoop& f, std::uint32_t from, std::uint32_t to) {
     if (w.nodes[n].kept) between.push_back(n);
   });
   f.kept = std::move(between);
+  reread_uv(w, f);
 }
 
 bool close_round(Work& w, std::vector<RepairEntry>& log) {
@@ -709,6 +734,8 @@ std::uint32_t insert_on(Work& w, FlatLoop& f, std::size_t j, Vec2 x) {
   w.next[at] = b;
   std::rotate(f.kept.begin(), f.kept.begin() + static_cast<std::ptrdiff_t>((j + 1) % k), f.kept.end());
   f.kept.push_back(at);
+  std::rotate(f.uv.begin(), f.uv.begin() + static_cast<std::ptrdiff_t>((j + 1) % k), f.uv.end());
+  f.uv.push_back(x);
   f.head = b;
   f.changed = true;
   f.orientation.reset();
