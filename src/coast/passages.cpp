@@ -9,6 +9,7 @@
 #include <set>
 #include <optional>
 #include <tuple>
+#include <unordered_map>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -45,14 +46,39 @@ Vec2 closest_on_segment(Vec2 p, Vec2 a, Vec2 b) {
   return a + t * d;
 }
 
-// One point of a flattened loop; `src` names the curve the segment leaving it belongs to
-// (an index into `curves`, or curves.size() + k for the k-th dam made here).
+// One point of a flattened loop: the `index`-th point of curve `curve`, or of the points
+// added here (dam ends) when curve is kAdded. The node names its point rather than copying
+// it: the curves hold the points until the loops are rebuilt, and a copy (48 bytes a node)
+// doubled the import's memory on the full-resolution world (9.7 M points). `src` names the
+// curve the segment leaving it belongs to (an index into `curves`, or curves.size() + k
+// for the k-th dam made here).
+constexpr std::uint32_t kAdded = 0xFFFFFFFFu;
 struct Node {
-  geo::LonLat ll;
-  Vec2 uv;
-  double gamma;
-  bool kept;
+  std::uint32_t curve;
+  std::uint32_t index;
   std::uint32_t src;
+  bool kept;
+};
+
+// The nodes of every loop and where their points are.
+struct PointPool {
+  const std::vector<WorkCurve>* curves = nullptr;
+  std::vector<Node> nodes = {};
+  std::vector<geo::LonLat> added_ll = {};
+  std::vector<Vec2> added_uv = {};
+  std::vector<double> added_gamma = {};
+  Vec2 uv(std::uint32_t i) const {
+    const Node& n = nodes[i];
+    return n.curve == kAdded ? added_uv[n.index] : (*curves)[n.curve].uv[n.index];
+  }
+  geo::LonLat ll(std::uint32_t i) const {
+    const Node& n = nodes[i];
+    return n.curve == kAdded ? added_ll[n.index] : (*curves)[n.curve].full[n.index];
+  }
+  double gamma(std::uint32_t i) const {
+    const Node& n = nodes[i];
+    return n.curve == kAdded ? added_gamma[n.index] : (*curves)[n.curve].gamma[n.index];
+  }
 };
 
 // The points of every loop live once in Work's pool, linked into rings; a loop is its
@@ -63,18 +89,27 @@ struct Node {
 //   pool:  ... a0 -> (originals of a0-a1, dropped) -> a1 ...  b0 -> ... -> b1 ...
 //   cut:   next[a0] = b1, next[b0] = a1; src[a0], src[b0] become the two dams
 struct FlatLoop {
-  const std::vector<Node>* pool = nullptr;
+  const PointPool* pool = nullptr;
   std::uint32_t head = 0;              // the node the loop's rebuild starts from
   std::vector<std::uint32_t> kept;     // kept node ids in ring order from head: the polygon
+  // The (u,v) points of kept, in step with it: the polygon read in order rather than
+  // through the pool (each cut of a continent reads its 100,000 points again).
+  std::vector<Vec2> uv;
   bool hole = true;
   bool dead = false;
   bool changed = false;
-  const Node& node(std::size_t j) const { return (*pool)[kept[j % kept.size()]]; }
-  Vec2 p(std::size_t j) const { return node(j).uv; }
+  // The polygon's orientation where make_loop found it (fate_of asks again otherwise): a
+  // cut of a continent made its polygon three times per new loop.
+  std::optional<Sign> orientation;
+  std::uint32_t id(std::size_t j) const { return kept[j % kept.size()]; }
+  const Node& node(std::size_t j) const { return pool->nodes[id(j)]; }
+  Vec2 p(std::size_t j) const { return uv[j % uv.size()]; }
+  geo::LonLat ll(std::size_t j) const { return pool->ll(id(j)); }
   /// Dead: nothing reads it again, so its kept list is freed.
   void kill() {
     dead = true;
     std::vector<std::uint32_t>().swap(kept);
+    std::vector<Vec2>().swap(uv);
   }
 };
 
@@ -103,7 +138,8 @@ struct Work {
   const std::size_t n_curves;   // curves before this pass
   const PassageOptions& opt;
   PassageStats& stats;
-  std::vector<Node> nodes = {};              // every loop's points (FlatLoop::pool)
+  PointPool pool = {&curves};                // every loop's points (FlatLoop::pool)
+  std::vector<Node>& nodes = pool.nodes;
   std::vector<std::uint32_t> next = {};      // per node: the next node of its ring
   // Per node: the loop and kept position it had when a cut of this round last made its
   // loop (close_round follows a candidate's segments through the cuts with it).
@@ -111,12 +147,15 @@ struct Work {
   std::vector<FlatLoop> flat = {};
   std::vector<DamInfo> dams = {};
   std::vector<Gate> gates = {};
+  // ring_metres' kept segments: start node -> (end node, metres).
+  std::unordered_map<std::uint32_t, std::pair<std::uint32_t, double>> seg_metres = {};
   bool gate_closed(Vec2 a0, Vec2 b0) const {
     for (const Gate& g : gates)
       if (g.closes(a0, b0)) return true;
     return false;
   }
   std::uint32_t add_node(const Node& n) {
+    SM_ASSERT(nodes.size() < kAdded, "close_passages: more points than 32-bit node ids (passages.cpp, add_node)");
     nodes.push_back(n);
     next.push_back(0);
     loop_of.push_back(0xFFFFFFFFu);
@@ -138,7 +177,7 @@ struct Work {
 
 void flatten(Work& w, const WorkLoop& loop) {
   FlatLoop f;
-  f.pool = &w.nodes;
+  f.pool = &w.pool;
   f.hole = loop.hole;
   f.dead = loop.dead;
   f.head = static_cast<std::uint32_t>(w.nodes.size());
@@ -149,8 +188,8 @@ void flatten(Work& w, const WorkLoop& loop) {
       for (auto k : c.keep) kept[k] = 1;
       const std::size_t m = c.periodic ? c.full.size() : c.full.size() - 1;
       for (std::size_t i = 0; i < m; ++i) {
-        const std::uint32_t id = w.add_node({c.full[i], c.uv[i], c.gamma[i], kept[i] != 0, ci});
-        if (kept[i]) f.kept.push_back(id);
+        const std::uint32_t id = w.add_node({ci, static_cast<std::uint32_t>(i), ci, kept[i] != 0});
+        if (kept[i]) f.kept.push_back(id), f.uv.push_back(c.uv[i]);
       }
     }
   const auto end = static_cast<std::uint32_t>(w.nodes.size());
@@ -176,11 +215,7 @@ double mean_width_m(const FlatLoop& f, double radius) {
   return per > 0 ? 2.0 * std::abs(signed_area(p)) / per * lambda_m(mean, radius) : 0.0;
 }
 
-std::vector<Vec2> polygon(const FlatLoop& f) {
-  std::vector<Vec2> p;
-  for (std::size_t j = 0; j < f.kept.size(); ++j) p.push_back(f.p(j));
-  return p;
-}
+std::vector<Vec2> polygon(const FlatLoop& f) { return f.uv; }
 
 bool in_box(Vec2 p, Vec2 lo, Vec2 hi) { return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y; }
 
@@ -308,13 +343,21 @@ std::uint32_t new_dam(Work& w, const Node& from) {
   return static_cast<std::uint32_t>(w.n_curves + w.dams.size() - 1);
 }
 
-FlatLoop make_loop(const Work& w, std::uint32_t head, std::vector<std::uint32_t> kept) {
+// `uv`: the points of `kept` when the caller has them (empty: read from the pool).
+FlatLoop make_loop(const Work& w, std::uint32_t head, std::vector<std::uint32_t> kept, std::vector<Vec2> uv = {}) {
   FlatLoop f;
-  f.pool = &w.nodes;
+  f.pool = &w.pool;
   f.head = head;
   f.kept = std::move(kept);
+  f.uv = std::move(uv);
+  if (f.uv.size() != f.kept.size()) {
+    f.uv.clear();
+    f.uv.reserve(f.kept.size());
+    for (std::uint32_t id : f.kept) f.uv.push_back(w.pool.uv(id));
+  }
   f.changed = true;
-  f.hole = f.kept.size() >= 3 && ring_orientation(polygon(f)) == Sign::Negative;
+  if (f.kept.size() >= 3) f.orientation = ring_orientation(f.uv);
+  f.hole = f.orientation == Sign::Negative;
   return f;
 }
 
@@ -322,15 +365,22 @@ struct CutResult {
   std::vector<std::uint32_t> new_loops;
 };
 
+// Kept node ids and their points (FlatLoop::kept and uv) of a loop being made.
+struct KeptPart {
+  std::vector<std::uint32_t> ids;
+  std::vector<Vec2> uv;
+};
+
 // The kept nodes of the two loops a 2-opt at kept segments ja and jb of one loop makes:
 // a1 ... b0 and b1 ... a0 (kept positions ja + 1 .. jb and jb + 1 .. ja, cyclic).
-std::pair<std::vector<std::uint32_t>, std::vector<std::uint32_t>> split_kept(const FlatLoop& f, std::size_t ja,
-                                                                              std::size_t jb) {
+std::pair<KeptPart, KeptPart> split_kept(const FlatLoop& f, std::size_t ja, std::size_t jb) {
   const std::size_t k = f.kept.size();
   auto range = [&](std::size_t from, std::size_t to) {   // positions from .. to inclusive, cyclic
-    std::vector<std::uint32_t> out;
-    out.reserve((to + k - from) % k + 1);
-    for (std::size_t s = 0, len = (to + k - from) % k + 1; s < len; ++s) out.push_back(f.kept[(from + s) % k]);
+    KeptPart out;
+    const std::size_t len = (to + k - from) % k + 1;
+    out.ids.reserve(len);
+    out.uv.reserve(len);
+    for (std::size_t s = 0; s < len; ++s) out.ids.push_back(f.kept[(from + s) % k]), out.uv.push_back(f.p(from + s));
     return out;
   };
   return {range((ja + 1) % k, jb), range((jb + 1) % k, ja)};
@@ -339,22 +389,25 @@ std::pair<std::vector<std::uint32_t>, std::vector<std::uint32_t>> split_kept(con
 // The 2-opt at kept segment ja of loop la and jb of loop lb (see passages.h): four nodes
 // relinked, the kept lists split or joined; the dropped original points stay unlinked in
 // the pool.
-CutResult cut(Work& w, std::uint32_t la, std::size_t ja, std::uint32_t lb, std::size_t jb) {
+// `split`: the two loops of a cut of one loop that cut_fills_dead_end made already.
+CutResult cut(Work& w, std::uint32_t la, std::size_t ja, std::uint32_t lb, std::size_t jb,
+              std::vector<FlatLoop> split = {}) {
   CutResult r;
   ++w.stats.cuts;
   const FlatLoop& fa = w.flat[la];
   const FlatLoop& fb = w.flat[lb];
   const std::uint32_t a0 = fa.kept[ja], a1 = fa.kept[(ja + 1) % fa.kept.size()];
   const std::uint32_t b0 = fb.kept[jb], b1 = fb.kept[(jb + 1) % fb.kept.size()];
-  std::vector<std::vector<std::uint32_t>> parts;
+  std::vector<KeptPart> parts;
   std::vector<std::uint32_t> heads;
   if (la != lb) {
     // a1 ... a0 then b1 ... b0: one loop.
-    std::vector<std::uint32_t> kept;
-    kept.reserve(fa.kept.size() + fb.kept.size());
-    for (std::size_t s = 1; s <= fa.kept.size(); ++s) kept.push_back(fa.kept[(ja + s) % fa.kept.size()]);
-    for (std::size_t s = 1; s <= fb.kept.size(); ++s) kept.push_back(fb.kept[(jb + s) % fb.kept.size()]);
-    w.stats.kept_visits += kept.size();
+    KeptPart kept;
+    kept.ids.reserve(fa.kept.size() + fb.kept.size());
+    kept.uv.reserve(fa.kept.size() + fb.kept.size());
+    for (std::size_t s = 1; s <= fa.kept.size(); ++s) kept.ids.push_back(fa.id(ja + s)), kept.uv.push_back(fa.p(ja + s));
+    for (std::size_t s = 1; s <= fb.kept.size(); ++s) kept.ids.push_back(fb.id(jb + s)), kept.uv.push_back(fb.p(jb + s));
+    w.stats.kept_visits += kept.ids.size();
     w.nodes[a0].src = new_dam(w, w.nodes[a0]);   // a0 -> b1
     w.nodes[b0].src = new_dam(w, w.nodes[b0]);   // b0 -> a1
     parts.push_back(std::move(kept));
@@ -362,8 +415,11 @@ CutResult cut(Work& w, std::uint32_t la, std::size_t ja, std::uint32_t lb, std::
     w.flat[la].kill();
     w.flat[lb].kill();
   } else {
-    auto [first, second] = split_kept(fa, ja, jb);
-    w.stats.kept_visits += first.size() + second.size();
+    KeptPart first, second;
+    if (split.empty()) {
+      std::tie(first, second) = split_kept(fa, ja, jb);
+      w.stats.kept_visits += first.ids.size() + second.ids.size();
+    }
     w.nodes[b0].src = new_dam(w, w.nodes[b0]);   // b0 -> a1
     w.nodes[a0].src = new_dam(w, w.nodes[a0]);   // a0 -> b1
     parts.push_back(std::move(first));
@@ -374,7 +430,8 @@ CutResult cut(Work& w, std::uint32_t la, std::size_t ja, std::uint32_t lb, std::
   w.next[a0] = b1;
   w.next[b0] = a1;
   for (std::size_t i = 0; i < parts.size(); ++i) {
-    w.flat.push_back(make_loop(w, heads[i], std::move(parts[i])));
+    w.flat.push_back(split.empty() ? make_loop(w, heads[i], std::move(parts[i].ids), std::move(parts[i].uv))
+                                   : std::move(split[i]));
     r.new_loops.push_back(static_cast<std::uint32_t>(w.flat.size() - 1));
   }
   return r;
@@ -387,11 +444,23 @@ struct Candidate {
   Vec2 where;
 };
 
-// Cumulative metres along each kept polygon (entry j: from vertex 0 to vertex j; last: perimeter).
-std::vector<double> ring_metres(const FlatLoop& f, double radius) {
-  std::vector<double> cum{0};
-  for (std::size_t j = 0; j < f.kept.size(); ++j)
-    cum.push_back(cum.back() + chord(f.node(j).ll, f.node(j + 1).ll, radius));
+// Cumulative metres along each kept polygon (entry j: from vertex 0 to vertex j; last:
+// perimeter). Each cut of a continent makes a new loop of nearly its size whose passages
+// ask for these again: the segments' metres are kept by start node (with the end node, as a
+// cut or a point put back gives a node another segment), so that a new loop adds them up
+// (the same numbers in the same order) instead of measuring its 100,000 segments again
+// (half of the import's CPU on the world at 3 km).
+std::vector<double> ring_metres(Work& w, const FlatLoop& f, double radius) {
+  const std::size_t k = f.kept.size();
+  std::vector<double> cum;
+  cum.reserve(k + 1);
+  cum.push_back(0);
+  for (std::size_t j = 0; j < k; ++j) {
+    const std::uint32_t a = f.kept[j], b = f.kept[j + 1 < k ? j + 1 : 0];
+    auto [it, fresh] = w.seg_metres.try_emplace(a, b, 0.0);
+    if (fresh || it->second.first != b) it->second = {b, chord(w.pool.ll(a), w.pool.ll(b), radius)};
+    cum.push_back(cum.back() + it->second.second);
+  }
   return cum;
 }
 
@@ -399,7 +468,8 @@ std::vector<double> ring_metres(const FlatLoop& f, double radius) {
 // area) or as water (counter-clockwise) all narrower than the width.
 enum class Fate { Kept, Degenerate, Narrow };
 Fate fate_of(const Work& w, const FlatLoop& f, double* mean_width = nullptr) {
-  if (f.kept.size() < 3 || ring_orientation(polygon(f)) == Sign::Zero) return Fate::Degenerate;
+  if (f.kept.size() < 3) return Fate::Degenerate;
+  if ((f.orientation ? *f.orientation : ring_orientation(f.uv)) == Sign::Zero) return Fate::Degenerate;
   if (f.hole) return Fate::Kept;
   const double mw = mean_width_m(f, w.opt.radius);
   if (mean_width) *mean_width = mw;
@@ -415,20 +485,24 @@ void drop_if_narrow(Work& w, std::uint32_t l, std::vector<RepairEntry>& log) {
     const Node& n0 = f.node(0);
     const DamInfo info = n0.src < w.n_curves ? DamInfo{w.curves[n0.src].record, w.curves[n0.src].id}
                                              : w.dams[n0.src - w.n_curves];
-    log.push_back({RepairKind::NarrowWater, info.record, info.id, n0.ll, mw});
+    log.push_back({RepairKind::NarrowWater, info.record, info.id, f.ll(0), mw});
   }
   if (fate != Fate::Kept) f.kill();
 }
 
 // Whether the 2-opt at kept segments ja and jb of loop l leaves a piece that
-// drop_if_narrow removes: a dead end filled rather than a passage cut in two.
-bool cut_fills_dead_end(const Work& w, std::uint32_t l, std::size_t ja, std::size_t jb) {
+// drop_if_narrow removes: a dead end filled rather than a passage cut in two. The two
+// loops it makes are left in `split` for cut (a split of a continent is its size).
+bool cut_fills_dead_end(const Work& w, std::uint32_t l, std::size_t ja, std::size_t jb,
+                        std::vector<FlatLoop>& split) {
   auto [first, second] = split_kept(w.flat[l], ja, jb);
-  w.stats.kept_visits += first.size() + second.size();
-  const std::uint32_t heads[2] = {first.front(), second.front()};
-  std::vector<std::uint32_t>* parts[2] = {&first, &second};
-  for (int i = 0; i < 2; ++i)
-    if (fate_of(w, make_loop(w, heads[i], std::move(*parts[i]))) != Fate::Kept) return true;
+  w.stats.kept_visits += first.ids.size() + second.ids.size();
+  const std::uint32_t heads[2] = {first.ids.front(), second.ids.front()};
+  split.clear();
+  split.push_back(make_loop(w, heads[0], std::move(first.ids), std::move(first.uv)));
+  split.push_back(make_loop(w, heads[1], std::move(second.ids), std::move(second.uv)));
+  for (const FlatLoop& f : split)
+    if (fate_of(w, f) != Fate::Kept) return true;
   return false;
 }
 
@@ -461,7 +535,15 @@ std::optional<std::pair<std::uint32_t, std::uint32_t>> follow_find(const Work& w
 // were marked kept: the entries between them replaced, in ring order. Where the stretch
 // wraps past the end of the list (round the loop's head), the list is made again from the
 // head, as the positions count from it.
+// FlatLoop::uv read again from the pool after its kept list changed in place.
+void reread_uv(const Work& w, FlatLoop& f) {
+  f.uv.clear();
+  f.uv.reserve(f.kept.size());
+  for (std::uint32_t id : f.kept) f.uv.push_back(w.pool.uv(id));
+}
+
 void rekeep(Work& w, FlatLoop& f, std::uint32_t from, std::uint32_t to) {
+  f.orientation.reset();
   const std::size_t k = f.kept.size();
   const std::size_t i = static_cast<std::size_t>(std::find(f.kept.begin(), f.kept.end(), from) - f.kept.begin());
   const std::size_t t = static_cast<std::size_t>(std::find(f.kept.begin(), f.kept.end(), to) - f.kept.begin());
@@ -474,6 +556,7 @@ void rekeep(Work& w, FlatLoop& f, std::uint32_t from, std::uint32_t to) {
     });
     f.kept.erase(f.kept.begin() + static_cast<std::ptrdiff_t>(i + 1), f.kept.begin() + static_cast<std::ptrdiff_t>(t));
     f.kept.insert(f.kept.begin() + static_cast<std::ptrdiff_t>(i + 1), between.begin(), between.end());
+    reread_uv(w, f);
     return;
   }
   if (w.nodes[f.head].kept) between.push_back(f.head);
@@ -481,6 +564,7 @@ void rekeep(Work& w, FlatLoop& f, std::uint32_t from, std::uint32_t to) {
     if (w.nodes[n].kept) between.push_back(n);
   });
   f.kept = std::move(between);
+  reread_uv(w, f);
 }
 
 bool close_round(Work& w, std::vector<RepairEntry>& log) {
@@ -493,11 +577,17 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
     polys[l] = polygon(w.flat[l]);
     for (Vec2 p : polys[l]) width[l].push_back(1.01 * W / lambda_m(p, R));
   }
-  // Cumulative metres round a loop, made when a candidate on one loop asks for them.
+  // Cumulative metres round a loop, made when a candidate on one loop asks for them. The
+  // entries of loops a cut has killed since are dropped first: each cut of a continent
+  // makes a new loop of nearly its size, and keeping every one of them held 8 bytes per
+  // kept point per cut (1.4 GB of the 2.4 GB peak of the world at 3 km).
   std::map<std::uint32_t, std::vector<double>> cum;
   auto ring = [&](std::uint32_t l) -> const std::vector<double>& {
     auto it = cum.find(l);
-    if (it == cum.end()) it = cum.emplace(l, ring_metres(w.flat[l], R)).first;
+    if (it == cum.end()) {
+      std::erase_if(cum, [&](const auto& e) { return w.flat[e.first].dead; });
+      it = cum.emplace(l, ring_metres(w, w.flat[l], R)).first;
+    }
     return it->second;
   };
   // Two parts of one ring (kept segments i and j): a passage only when the way round
@@ -567,11 +657,12 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
       }
       continue;
     }
-    if (w.opt.keep_passages && !cut_fills_dead_end(w, la, sa, sb)) continue;   // a passage
+    std::vector<FlatLoop> split;
+    if (w.opt.keep_passages && !cut_fills_dead_end(w, la, sa, sb, split)) continue;   // a passage
     made.push_back({a0, b1});
     made.push_back({b0, a1});
     const DamInfo info = info_of(w, w.flat[la].node(sa));
-    const CutResult r = cut(w, la, sa, lb, sb);
+    const CutResult r = cut(w, la, sa, lb, sb, std::move(split));
     std::size_t dropped = 0;
     for (std::uint32_t l : r.new_loops) {
       drop_if_narrow(w, l, log);
@@ -594,12 +685,12 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
     std::vector<std::uint32_t> run;   // the original points within W of the other segment
     const Vec2 other0 = o0, other1 = o1;   // clang 14 lambdas cannot capture structured bindings
     w.walk(from, to, [&](std::uint32_t i) {
-      if (!w.nodes[i].kept && uv_point_segment_metres(w.nodes[i].uv, other0, other1, R) < W) run.push_back(i);
+      if (!w.nodes[i].kept && uv_point_segment_metres(w.pool.uv(i), other0, other1, R) < W) run.push_back(i);
     });
     if (run.empty() || run.size() > kMaxPutBack) continue;
-    std::vector<Vec2> pts{w.nodes[from].uv};
-    for (std::uint32_t i : run) pts.push_back(w.nodes[i].uv);
-    pts.push_back(w.nodes[to].uv);
+    std::vector<Vec2> pts{w.pool.uv(from)};
+    for (std::uint32_t i : run) pts.push_back(w.pool.uv(i));
+    pts.push_back(w.pool.uv(to));
     const Vec2 c0 = pts.front(), c1 = pts.back();
     auto meets = [](Vec2 p, Vec2 q, Vec2 r, Vec2 t) {
       if (p == r || p == t || q == r || q == t) return false;   // neighbours at a shared end
@@ -630,18 +721,25 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
 std::uint32_t insert_on(Work& w, FlatLoop& f, std::size_t j, Vec2 x) {
   const std::size_t k = f.kept.size();
   const std::uint32_t a = f.kept[j], b = f.kept[(j + 1) % k];
-  const Node na = w.nodes[a], nb = w.nodes[b];
-  if (x == na.uv) return a;   // the dam meets the coast at a vertex: no new point
-  if (x == nb.uv) return b;
-  const double t = norm(x - na.uv) / std::max(norm(nb.uv - na.uv), 1e-300);
+  const Vec2 ua = w.pool.uv(a), ub = w.pool.uv(b);
+  if (x == ua) return a;   // the dam meets the coast at a vertex: no new point
+  if (x == ub) return b;
+  const double t = norm(x - ua) / std::max(norm(ub - ua), 1e-300);
+  const double ga = w.pool.gamma(a), gb = w.pool.gamma(b);
+  w.pool.added_ll.push_back(unit_sphere().lonlat_from_param(x));
+  w.pool.added_uv.push_back(x);
+  w.pool.added_gamma.push_back(ga + t * (gb - ga));
   const std::uint32_t at =
-      w.add_node({unit_sphere().lonlat_from_param(x), x, na.gamma + t * (nb.gamma - na.gamma), true, na.src});
+      w.add_node({kAdded, static_cast<std::uint32_t>(w.pool.added_uv.size() - 1), w.nodes[a].src, true});
   w.next[a] = at;
   w.next[at] = b;
   std::rotate(f.kept.begin(), f.kept.begin() + static_cast<std::ptrdiff_t>((j + 1) % k), f.kept.end());
   f.kept.push_back(at);
+  std::rotate(f.uv.begin(), f.uv.begin() + static_cast<std::ptrdiff_t>((j + 1) % k), f.uv.end());
+  f.uv.push_back(x);
   f.head = b;
   f.changed = true;
+  f.orientation.reset();
   w.stats.kept_visits += k;
   return at;
 }
@@ -783,16 +881,16 @@ WorkLoop rebuild(Work& w, const FlatLoop& f) {
     do {
       const Node& nd = node(j);
       if (nd.kept || j == i) c.keep.push_back(static_cast<std::uint32_t>(c.full.size()));
-      c.full.push_back(nd.ll);
-      c.uv.push_back(nd.uv);
-      c.gamma.push_back(nd.gamma);
+      c.full.push_back(w.pool.ll(ring[j]));
+      c.uv.push_back(w.pool.uv(ring[j]));
+      c.gamma.push_back(w.pool.gamma(ring[j]));
       j = (j + 1) % n;
     } while (j != start && node(j).src == src);
-    const Node& end = node(j);   // the next curve's first point closes this one
+    // The next curve's first point closes this one.
     c.keep.push_back(static_cast<std::uint32_t>(c.full.size()));
-    c.full.push_back(end.ll);
-    c.uv.push_back(end.uv);
-    c.gamma.push_back(end.gamma);
+    c.full.push_back(w.pool.ll(ring[j]));
+    c.uv.push_back(w.pool.uv(ring[j]));
+    c.gamma.push_back(w.pool.gamma(ring[j]));
     out.curves.push_back(static_cast<std::uint32_t>(w.curves.size()));
     w.curves.push_back(std::move(c));
     i = j;
@@ -963,11 +1061,16 @@ Result<bool> close_passages(std::vector<WorkCurve>& curves, std::vector<WorkLoop
       if (!close_round(w, log)) break;
   bool changed = false;
   const std::size_t n_old = loops.size();
+  std::vector<std::uint32_t> unused;   // the curves of the loops cut or rebuilt
   for (std::size_t l = 0; l < w.flat.size(); ++l) {
     const FlatLoop& f = w.flat[l];
     if (l < n_old) {
-      if (f.dead && !loops[l].dead) loops[l].dead = true, changed = true;
+      if (f.dead && !loops[l].dead) {
+        loops[l].dead = true, changed = true;
+        unused.insert(unused.end(), loops[l].curves.begin(), loops[l].curves.end());
+      }
       if (!f.dead && f.changed) {   // a loop changed in place (a dam's points inserted): rebuilt
+        unused.insert(unused.end(), loops[l].curves.begin(), loops[l].curves.end());
         loops[l] = rebuild(w, f);
         changed = true;
       }
@@ -976,6 +1079,16 @@ Result<bool> close_passages(std::vector<WorkCurve>& curves, std::vector<WorkLoop
     if (f.dead) continue;
     loops.push_back(rebuild(w, f));
     changed = true;
+  }
+  // Their points now live in the rebuilt curves (the pool read them from there until now):
+  // freed, as nothing reads a dead loop's curves, so that the repair after this pass does
+  // not hold the cut continents twice.
+  for (std::uint32_t ci : unused) {
+    WorkCurve& c = curves[ci];
+    std::vector<geo::LonLat>().swap(c.full);
+    std::vector<Vec2>().swap(c.uv);
+    std::vector<double>().swap(c.gamma);
+    std::vector<std::uint32_t>().swap(c.keep);
   }
   return changed;
 }
