@@ -1,4 +1,4 @@
-// Gmsh 2.6's Plugin(GSHHS), rebuilt on the coast kernel (gmsh-reference 6.1): reads a
+// Gmsh 2.6's Plugin(GSHHS), rebuilt on the coast kernel (docs/coastlines.md): reads a
 // GSHHS binary or loops2 file, coarsens it with the iField accuracy, and writes the .geo
 // text the plugin wrote, with its bugs fixed (see write_gshhs_plugin_geo).
 #pragma once

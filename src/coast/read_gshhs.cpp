@@ -1,5 +1,5 @@
 // GSHHS/GSHHG native binary reader. The flag word is byte-swapped BEFORE the level is
-// taken from it (Gmsh 2.6's plugin tested the unswapped word: see gmsh-reference 6.1).
+// taken from it (Gmsh 2.6's plugin tested the unswapped word: see docs/coastlines.md).
 #include "coast/read_gshhs.h"
 
 #include <array>

@@ -1,5 +1,5 @@
 // Reader for Gmsh 2.x's "loops2" coastline text (Plugin(GSHHS) Format="loops2",
-// gmsh-reference 6.1): blocks of "nPoints closed" then nPoints lines "c1 c2".
+// docs/coastlines.md): blocks of "nPoints closed" then nPoints lines "c1 c2".
 #pragma once
 
 #include <string>

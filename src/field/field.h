@@ -1,5 +1,5 @@
 // Size-field interface: the target edge length h(x) at 3D points, evaluated
-// in batches (paper section 3.1; Gmsh's Field[n], gmsh-reference section 4).
+// in batches (paper section 3.1; Gmsh's Field[n], docs/fields.md).
 #pragma once
 
 #include <span>

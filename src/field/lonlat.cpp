@@ -1,5 +1,5 @@
 // LonLat field: Field[InField](lon, lat, 0) in radians, with Gmsh 4.8.4's
-// quirks (gmsh-reference 4.2): the latitude uses RadiusStereo, not |X|.
+// quirks (docs/fields.md): the latitude uses RadiusStereo, not |X|.
 #include <cmath>
 #include <vector>
 

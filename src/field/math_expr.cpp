@@ -1,4 +1,4 @@
-// MathEval compiler and evaluator. Grammar (MathEx, gmsh-reference 4.3):
+// MathEval compiler and evaluator. Grammar (MathEx, docs/fields.md):
 //   expr   := term(sign) { ("+" | "-") term }
 //   term   := power { ("*" | "/" | "%") power }
 //   power  := factor [ "^" factor ]            ('^' is not associative)

@@ -1,5 +1,5 @@
-// Gmsh's MathEval expression language (the MathEx syntax of gmsh-reference
-// 4.3, not the .geo grammar), compiled once into a flat register program that
+// Gmsh's MathEval expression language (the MathEx syntax of docs/fields.md,
+// not the .geo grammar), compiled once into a flat register program that
 // is evaluated chunk by chunk over a batch of points.
 #pragma once
 

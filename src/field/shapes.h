@@ -4,7 +4,7 @@
 namespace sm::field {
 
 /// VIn inside, then a linear ramp to VOut over `thickness` beyond the region
-/// (gmsh-reference 4.1: VIn + (d/Thickness)(VOut - VIn)), then VOut.
+/// (docs/fields.md: VIn + (d/Thickness)(VOut - VIn)), then VOut.
 inline double ramp_out(double d_outside, double thickness, double v_in, double v_out) {
   if (thickness > 0 && d_outside <= thickness) return v_in + d_outside / thickness * (v_out - v_in);
   return v_out;

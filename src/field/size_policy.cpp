@@ -1,4 +1,4 @@
-// Final size combination of Gmsh 4.8.4 (gmsh-reference 4.4), as a pure
+// Final size combination of Gmsh 4.8.4 (docs/fields.md), as a pure
 // function of the options and of what is known at the point.
 #include "field/size_policy.h"
 

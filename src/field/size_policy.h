@@ -1,4 +1,4 @@
-// Gmsh's final element size at a point (BGM_MeshSize, gmsh-reference 4.4):
+// Gmsh's final element size at a point (BGM_MeshSize, docs/fields.md):
 // bbox lc, point sizes, curvature, background field, Min/Max clamp, factor.
 #pragma once
 

@@ -1,5 +1,5 @@
 // Structured field: trilinear interpolation on a regular 3D grid read from
-// Gmsh's text or binary "Structured" file (gmsh-reference 4.1).
+// Gmsh's text or binary "Structured" file (docs/fields.md).
 #include <array>
 #include <cmath>
 #include <cstdint>

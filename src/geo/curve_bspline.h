@@ -1,4 +1,4 @@
-// Gmsh's BSpline (gmsh-reference 3, 3.1): the clamped B-spline of Gmsh >= 4.0 and the old
+// Gmsh's BSpline (docs/geometry.md): the clamped B-spline of Gmsh >= 4.0 and the old
 // uniform cubic B-spline, both finding the knot span from t in O(1).
 #pragma once
 

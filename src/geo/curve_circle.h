@@ -1,4 +1,4 @@
-// Gmsh's Circle arc {start, centre, end} (gmsh-reference 3) with the construction rules
+// Gmsh's Circle arc {start, centre, end} (docs/geometry.md) with the construction rules
 // measured on Gmsh 4.8.4.
 #pragma once
 

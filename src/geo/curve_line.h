@@ -1,5 +1,5 @@
 // Gmsh's Line: a segment, or a polyline for more than two points whose piece i covers
-// t in [i/(n-1), (i+1)/(n-1)] (gmsh-reference 3). In (u,v) when drawn on a surface geometry.
+// t in [i/(n-1), (i+1)/(n-1)] (docs/geometry.md). In (u,v) when drawn on a surface geometry.
 #pragma once
 
 #include "geo/jet.h"

@@ -1,4 +1,4 @@
-// Sphere parametrisations and geodesy (paper section 2.1; gmsh-reference 3.1, 4.2).
+// Sphere parametrisations and geodesy (paper section 2.1; docs/geometry.md).
 #include "geo/sphere.h"
 
 #include <GeographicLib/Geocentric.hpp>

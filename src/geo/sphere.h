@@ -1,4 +1,4 @@
-// Every formula of the sphere (paper section 2.1, gmsh-reference 3.1 and 4.2): Gmsh's
+// Every formula of the sphere (paper section 2.1, docs/geometry.md): Gmsh's
 // PolarSphere map, the paper's plane stereographic projection, the lon/lat Sphere map,
 // conformal factors, metrics, and GeographicLib distances / geocentric conversions.
 #pragma once
@@ -29,7 +29,7 @@ struct SecondDerivs {
   Vec3 uu, uv, vv;
 };
 
-/// Gmsh's PolarSphere map (gmsh-reference 3.1): stereographic projection from the SOUTH
+/// Gmsh's PolarSphere map (docs/geometry.md): stereographic projection from the SOUTH
 /// pole of the sphere onto its equatorial plane, scaled to the unit sphere and rotated by
 /// 180 degrees about the polar axis (the sign flip):
 ///   X(u,v) = o + r (-2u, -2v, 1 - u^2 - v^2) / (1 + u^2 + v^2)
@@ -99,7 +99,7 @@ class StereoPlane {
   double radius_;
 };
 
-/// Gmsh's lon/lat Sphere geometry (gmsh-reference 3.1), parameters (lon, lat) in RADIANS:
+/// Gmsh's lon/lat Sphere geometry (docs/geometry.md), parameters (lon, lat) in RADIANS:
 ///   X = c + r (cos lat cos lon, cos lat sin lon, sin lat).
 /// Not conformal: M = J^T J = diag(r^2 cos^2 lat, r^2); singular at both poles.
 class Sphere {

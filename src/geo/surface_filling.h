@@ -1,6 +1,6 @@
 // Gmsh's "Surface(t) = {loop} <In Sphere{c}>;" (formerly Ruled Surface): a transfinite
 // (Coons) patch on the 3 or 4 curves of its loop, on (u,v) in [0,1]^2, projected radially
-// onto a sphere when the patch is a sphere patch (gmsh-reference 3).
+// onto a sphere when the patch is a sphere patch (docs/geometry.md).
 #pragma once
 
 #include "geo/curve.h"

@@ -1,4 +1,4 @@
-// A surface "geometry" of Gmsh's built-in kernel (gmsh-reference 3.1): the map from the
+// A surface "geometry" of Gmsh's built-in kernel (docs/geometry.md): the map from the
 // parametric plane to space that points, curves and plane surfaces are drawn on.
 #pragma once
 

@@ -1,6 +1,6 @@
 // Script values and the global symbol store, after Gmsh's model: a numeric
 // symbol is a vector<double> plus an "is a list" flag, a string symbol is a
-// vector<string>; every variable is global (gmsh-reference §0, §2).
+// vector<string>; every variable is global (docs/language.md).
 #pragma once
 
 #include <cstddef>

@@ -1,5 +1,5 @@
 // ModelMesh -> MeshModel: classification, boundaries and physical groups as Gmsh writes
-// them (gmsh-reference 7.2).
+// them (docs/gmsh-compatibility.md).
 #include "io/from_model_mesh.h"
 
 #include <algorithm>

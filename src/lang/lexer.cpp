@@ -1,4 +1,4 @@
-// The .geo lexer (gmsh-reference §1): comments, numbers without sign, raw
+// The .geo lexer (docs/language.md): comments, numbers without sign, raw
 // strings, identifiers/keywords and maximal-munch operators. Linear in the input
 // on any bytes; runs of bad bytes give one Error token and one diagnostic.
 #include "lang/lexer.h"

@@ -1,5 +1,5 @@
 // Expression productions: one precedence table for the binary operators with
-// Gmsh's quirks (gmsh-reference §1: `^` right-associative and tighter than unary
+// Gmsh's quirks (docs/language.md: `^` right-associative and tighter than unary
 // minus, `|` `&` tighter than `*`), names with `~{}` suffixes, lists, ranges,
 // calls, option reads and geometry queries.
 #include <algorithm>

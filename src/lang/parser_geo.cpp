@@ -1,4 +1,4 @@
-// Geometry and mesh-constraint statements (gmsh-reference §3, §9 geomstmt,
+// Geometry and mesh-constraint statements (docs/geometry.md; grammar/geo.ebnf geometry_stmt,
 // physstmt, constraint): entity creation, loops, surfaces, spheres, physical
 // groups, embedding, transfinite/recombine settings, shape blocks.
 #include "lang/parser_impl.h"

@@ -12,7 +12,7 @@ namespace sm::lang::detail {
 
 namespace {
 
-// `IDENT sexpr ;` commands (gmsh-reference §9 `command`).
+// `IDENT sexpr ;` commands (docs/language.md `command`).
 constexpr std::string_view kStringCommands[] = {
     "Merge", "Save", "Print", "SystemCall", "NonBlockingSystemCall", "CreateDir", "OptimizeMesh", "SetName",
     "MergeWithBoundingBox",

@@ -1,4 +1,4 @@
-// 1D meshing of a model (paper section 3.2, gmsh-reference 4.4): each curve is discretised
+// 1D meshing of a model (paper section 3.2, docs/fields.md): each curve is discretised
 // so that its edges follow the size field on the surface, N from the integral of |X'|/h,
 // then the paper's self-intersection repair (Delaunay of all 1D nodes + edge recovery).
 #pragma once
@@ -20,7 +20,7 @@
 namespace sm {
 
 struct Mesh1dOptions {
-  field::SizePolicyOptions size;                 ///< Mesh.MeshSize* (gmsh-reference 4.4)
+  field::SizePolicyOptions size;                 ///< Mesh.MeshSize* (docs/fields.md)
   const field::SizeField* background = nullptr;  ///< Background Field, if any
   double bbox_diag = 0;        ///< Gmsh's CTX::lc; <= 0: the model's bounding-box diagonal
   int min_curve_nodes = 3;     ///< Mesh.MinimumCurveNodes (splines, B-splines, Bezier)

@@ -42,7 +42,7 @@ double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// Gmsh's Threshold, linear, StopAtDistMax off (gmsh-reference 4.x table).
+// Gmsh's Threshold, linear, StopAtDistMax off (docs/fields.md).
 class Threshold : public sm::field::SizeField {
  public:
   Threshold(sm::field::FieldPtr d, double scale) : d_(std::move(d)), scale_(scale) {}

@@ -1,5 +1,5 @@
 // What size fields read from the geometry model when they are built
-// (gmsh-reference 4.1): point positions, Gmsh's Distance samples of curves and
+// (docs/fields.md): point positions, Gmsh's Distance samples of curves and
 // the bounding-box diagonal, as the kernel's model-free BuildContext.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Size field statements (gmsh-reference 4): Field[n] = Kind, options, actions,
+// Size field statements (docs/fields.md): Field[n] = Kind, options, actions,
 // Delete Field and Background Field, recorded in the kernel's FieldSet with the
 // statement of each definition and option, so that build errors are located.
 #include <cmath>

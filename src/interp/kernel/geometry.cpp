@@ -1,5 +1,5 @@
 // Geometry statements evaluated into the kernel's model (geo::Model) with Gmsh 4.8.4's
-// meaning (gmsh-reference section 3), new* tags, and the statements the kernel has no
+// meaning (docs/geometry.md), new* tags, and the statements the kernel has no
 // place for yet (reported 'not supported yet', never dropped silently).
 #include <cmath>
 #include <limits>

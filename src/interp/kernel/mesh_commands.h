@@ -1,5 +1,5 @@
 // Meshing and saving from the interpreter: `Mesh 1;` / `Save "f.msh";` in scripts and
-// `stereomesh x.geo -1 -o x.msh -format msh22` on the command line (gmsh-reference 5).
+// `stereomesh x.geo -1 -o x.msh -format msh22` on the command line (docs/interpreter.md).
 #pragma once
 
 #include <string>

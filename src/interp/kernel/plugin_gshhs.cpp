@@ -1,5 +1,5 @@
 // `Plugin(GSHHS).Option = value; Plugin(GSHHS).Run;`: Gmsh 2.6's coastline plugin with its old
-// options (gmsh-reference 6.1), run by coast::run_gshhs_plugin; the .geo it writes is read by
+// options (docs/coastlines.md), run by coast::run_gshhs_plugin; the .geo it writes is read by
 // stereomesh and Gmsh 4.8.4 alike. The output file appears whole or not at all.
 #include <cmath>
 #include <filesystem>

@@ -1,6 +1,6 @@
 // The Mesh.MeshSize* options of a run (CharacteristicLength* are their
 // aliases) as the field kernel's SizePolicyOptions: the one place the mesher
-// reads them from (gmsh-reference 4.4); and Mesh.ElementsAcrossChannels, the
+// reads them from (docs/fields.md); and Mesh.ElementsAcrossChannels, the
 // coast's channel widths inside the Min of the size.
 #pragma once
 

@@ -1,5 +1,5 @@
 // Box, Ball, Cylinder and Constant at known points against their formulas
-// (gmsh-reference 4.1), evaluated through the native FieldValue(n, x, y, z).
+// (docs/fields.md), evaluated through the native FieldValue(n, x, y, z).
 Field[1] = Box;
 Field[1].VIn = 0.1;  Field[1].VOut = 1;
 Field[1].XMin = 0;   Field[1].XMax = 1;

@@ -1,6 +1,6 @@
 // Gmsh tutorial t10's field set (Distance, Threshold, MathEval, Box, Min),
 // checked at a few points against values computed by hand from the formulas
-// of gmsh-reference 4.1 (Distance samples: 98 points per curve; F5 adds
+// of docs/fields.md (Distance samples: 98 points per curve; F5 adds
 // Sprintf("%g", lc/10) = 0.015).
 lc = .15;
 Point(1) = {0.0, 0.0, 0, lc};

@@ -162,7 +162,7 @@ FieldSet t10_fields() {
 
 }  // namespace
 
-// t10's field set against the formulas of gmsh-reference 4.1 written out
+// t10's field set against the formulas of docs/fields.md written out
 // independently here (exact distances to the point and the segments stand in
 // for Gmsh's 100-sample curves).
 TEST_CASE("field set: Gmsh tutorial t10 field set") {
