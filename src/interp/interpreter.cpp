@@ -267,6 +267,13 @@ void Interpreter::not_supported_stmt(StmtId id, std::string_view what) {
   for (const auto& n : frame_notes()) h.note(n.range, n.message);
 }
 
+void Interpreter::display_only_stmt(StmtId id, std::string_view what) {
+  const Stmt& s = ast_.stmt(id);
+  if (!reported_unsupported_.insert(std::string(what)).second) return;
+  auto h = diags_.report(s.keyword.valid() ? s.keyword : s.range, Diag::DisplayOnly, what, " (noted once per run)");
+  for (const auto& n : frame_notes()) h.note(n.range, n.message);
+}
+
 void Interpreter::not_supported_expr(ExprId e, std::string_view what) {
   fail_fmt(ast_.expr(e).range, Diag::NotSupportedYet, what, " (it needs the geometry model)");
 }

@@ -101,6 +101,8 @@ class Interpreter {
   /// A statement the kernel cannot run yet: reported once per kind of
   /// statement, then the run goes on (the script's variables stay usable).
   void not_supported_stmt(lang::StmtId s, std::string_view what);
+  /// A display statement (Color, Hide, Show, View): a `display-only` note, once per kind a run.
+  void display_only_stmt(lang::StmtId s, std::string_view what);
   /// An expression that needs the model: a runtime error (its value is needed).
   [[noreturn]] void not_supported_expr(lang::ExprId e, std::string_view what);
 

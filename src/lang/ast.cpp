@@ -120,9 +120,10 @@ SM_CHECK_KIND(StmtKind, StmtNode, BackgroundField, BackgroundFieldStmt)
 SM_CHECK_KIND(StmtKind, StmtNode, Plugin, PluginStmt)
 SM_CHECK_KIND(StmtKind, StmtNode, View, ViewStmt)
 SM_CHECK_KIND(StmtKind, StmtNode, Color, ColorStmt)
+SM_CHECK_KIND(StmtKind, StmtNode, Visibility, VisibilityStmt)
 #undef SM_CHECK_KIND
 static_assert(std::variant_size_v<ExprNode> == static_cast<std::size_t>(ExprKind::CoastlineQuery) + 1);
-static_assert(std::variant_size_v<StmtNode> == static_cast<std::size_t>(StmtKind::Color) + 1);
+static_assert(std::variant_size_v<StmtNode> == static_cast<std::size_t>(StmtKind::Visibility) + 1);
 
 }  // namespace
 
@@ -395,6 +396,10 @@ class Dumper {
     return out + ")";
   }
   std::string node(const ColorStmt& n) { return "(color " + expr(n.color) + " " + shapes(n.shapes) + ")"; }
+  std::string node(const VisibilityStmt& n) {
+    return std::string("(") + (n.recursive ? "recursive-" : "") + (n.show ? "show " : "hide ") +
+           (n.pattern.valid() ? expr(n.pattern) : shapes(n.shapes)) + ")";
+  }
 
   const Ast& ast_;
 };

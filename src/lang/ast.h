@@ -328,6 +328,8 @@ struct ViewItem { StrId type; ExprList coords; ExprList values; SourceRange rang
 struct ViewStmt { ExprId name; std::vector<ViewItem> items; };
 /// `Color name|{r,g,b} { shapes }` (display only)
 struct ColorStmt { ExprId color; ShapeBlock shapes; };
+/// `Hide { shapes }`, `Show "*";`, `Recursive Show { shapes }` (display only)
+struct VisibilityStmt { bool show = false; bool recursive = false; ExprId pattern; ShapeBlock shapes; };
 
 // Keep in the order of StmtNode's alternatives.
 enum class StmtKind : std::uint8_t {
@@ -337,7 +339,7 @@ enum class StmtKind : std::uint8_t {
   EuclideanCoordinates, Physical, Coherence, SplitCurve, ShapeExpr, Embed, MeshSize,
   TransfiniteCurve, TransfiniteSurface, Recombine, EntitySetting, Periodic, ReverseMesh,
   Compound, FieldNew, FieldOption, FieldAction, CoastlineNew, CoastlineOption, CoastlineAction,
-  BackgroundField, Plugin, View, Color
+  BackgroundField, Plugin, View, Color, Visibility
 };
 using StmtNode =
     std::variant<AssignStmt, IncDecStmt, DefineConstantStmt, DeleteStmt, DeleteFieldStmt,
@@ -349,7 +351,8 @@ using StmtNode =
                  ShapeExprStmt, EmbedStmt, MeshSizeStmt, TransfiniteCurveStmt,
                  TransfiniteSurfaceStmt, RecombineStmt, EntitySettingStmt, PeriodicStmt,
                  ReverseMeshStmt, CompoundStmt, FieldNewStmt, FieldOptionStmt, FieldActionStmt,
-                 CoastlineNewStmt, CoastlineOptionStmt, CoastlineActionStmt, BackgroundFieldStmt, PluginStmt, ViewStmt, ColorStmt>;
+                 CoastlineNewStmt, CoastlineOptionStmt, CoastlineActionStmt, BackgroundFieldStmt, PluginStmt, ViewStmt, ColorStmt,
+                 VisibilityStmt>;
 
 struct Stmt {
   SourceRange range;    ///< the whole statement (for a block: keyword to End keyword)

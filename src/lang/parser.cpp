@@ -278,6 +278,7 @@ StmtId Parser::parse_statement() {
       if (at(Tok::LBracket, 1) || at(Tok::Dot, 1)) return parse_assignment(advance());
       return parse_view();
     case Tok::Color: return parse_color();
+    case Tok::Hide: case Tok::Show: return parse_visibility();
     case Tok::SetFactory: return parse_set_factory();
     case Tok::Ident: return parse_ident_statement();
     case Tok::Constant: {

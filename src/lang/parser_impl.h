@@ -123,6 +123,7 @@ class Parser {
   StmtId parse_plugin();
   StmtId parse_view();
   StmtId parse_color();
+  StmtId parse_visibility();
   StmtId parse_set_factory();
   bool is_affop(Tok k) const;
   AffOp affop_of(Tok k) const;

@@ -262,6 +262,7 @@ OnelabAttr Parser::parse_onelab_attr_after(const Token& key, Tok closer) {
 //         | "Delete" ("Variables" | "Model" | "Physicals" | "Meshes" | "All" | "Options") ";"
 //         | "Delete" name ";"
 StmtId Parser::parse_delete() {
+  if (at(Tok::Recursive) && (at(Tok::Hide, 1) || at(Tok::Show, 1))) return parse_visibility();
   const Token kw = advance();
   if (kw.kind == Tok::Recursive) {
     expect(Tok::Delete, "'Delete' after 'Recursive'");
@@ -391,6 +392,23 @@ StmtId Parser::parse_color() {
   }
   node.shapes = parse_shape_block(kw);
   accept(Tok::Semicolon);
+  return add(kw, std::move(node));
+}
+
+// visibility := ["Recursive"] ("Hide" | "Show") (shape_block [ ";" ] | expr ";")
+StmtId Parser::parse_visibility() {
+  const Token kw = advance();
+  VisibilityStmt node;
+  node.recursive = kw.kind == Tok::Recursive;
+  const Token verb = node.recursive ? advance() : kw;
+  node.show = verb.kind == Tok::Show;
+  if (at(Tok::LBrace)) {
+    node.shapes = parse_shape_block(kw);
+    accept(Tok::Semicolon);
+  } else {
+    node.pattern = parse_expr();   // "*", or an entity name pattern
+    expect_semicolon();
+  }
   return add(kw, std::move(node));
 }
 

@@ -39,7 +39,7 @@ namespace sm::lang {
   X(SetFactory, "SetFactory") X(SetMaxTag, "SetMaxTag") X(Periodic, "Periodic") \
   X(ReverseMesh, "ReverseMesh") X(ReverseMesh, "Reverse") X(Smoother, "Smoother") \
   X(MeshAlgorithm, "MeshAlgorithm") X(MeshSizeFromBoundary, "MeshSizeFromBoundary") \
-  X(Plugin, "Plugin") X(View, "View") X(Color, "Color")
+  X(Plugin, "Plugin") X(View, "View") X(Color, "Color") X(Hide, "Hide") X(Show, "Show")
 
 enum class Tok : std::uint8_t {
   Eof,
@@ -63,7 +63,7 @@ enum class Tok : std::uint8_t {
   Transfinite, Using, Recombine, MeshSize, Characteristic, Length, Translate, Rotate,
   Dilate, Symmetry, Duplicata, Boundary, CombinedBoundary, PointsOf, BoundingBox,
   Coherence, Split, SetFactory, SetMaxTag, Periodic, ReverseMesh, Smoother, MeshAlgorithm,
-  MeshSizeFromBoundary, Plugin, View, Color,
+  MeshSizeFromBoundary, Plugin, View, Color, Hide, Show,
   kCount
 };
 

@@ -587,8 +587,9 @@ void exec_mesh_stmt(Interpreter& in, StmtId id) {
   check_stmt_exprs(in, id);
   switch (s.kind()) {
     case StmtKind::Plugin: in.not_supported_stmt(id, "Plugin"); break;
-    case StmtKind::View: in.not_supported_stmt(id, "View"); break;
-    case StmtKind::Color: in.not_supported_stmt(id, "Color"); break;
+    case StmtKind::View: in.display_only_stmt(id, "View"); break;
+    case StmtKind::Color: in.display_only_stmt(id, "Color"); break;
+    case StmtKind::Visibility: in.display_only_stmt(id, "Hide/Show"); break;
     default: in.not_supported_stmt(id, "Coherence Mesh"); break;
   }
 }
