@@ -12,6 +12,7 @@
 // dead-end inlet up to its mouths. Every left/right decision is an exact orient2d.
 #pragma once
 
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -40,6 +41,9 @@ struct PassageOptions {
   /// at such a point (kKeepOpenReach), and a dam across them is an error (option "KeepOpen").
   std::vector<geo::LonLat> keep_open;
   double radius = geo::kEarthRadius;
+  /// When set, the width (metres) below which a passage at a place is closed, in place of
+  /// min_width there; min_width must bound it from above (it is the search radius).
+  std::function<double(geo::LonLat)> width_at;
 };
 
 /// What a close_passages call did, counted so that tests can check that its work grows with

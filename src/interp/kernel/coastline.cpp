@@ -364,6 +364,35 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
     gamma_field->eval(moved, gamma);
   };
   io.radius = sphere.radius();
+  // Mesh.MinTimeStep set before the import: passages too narrow for it at the depth of
+  // Mesh.DepthField are closed with the MinChannelWidth ones (coast/import.h). The depth
+  // must be known now, as the closures change the coastline the script then builds on.
+  if (const double min_step = in.options().number("Mesh.MinTimeStep"); min_step > 0) {
+    const double depth_id = in.options().number("Mesh.DepthField");
+    std::vector<DiagNote> notes;
+    if (const auto it = k.option_set_at.find("Mesh.MinTimeStep"); it != k.option_set_at.end())
+      notes.push_back({it->second, "Mesh.MinTimeStep was set here"});
+    if (!(depth_id > 0) || !k.field_defined_at.count(static_cast<int>(depth_id)))
+      in.fail_with_notes(at, Diag::InvalidOptionValue,
+                         fmt::format("Coastline[{}]: Mesh.MinTimeStep = {:g} closes the passages too narrow for it "
+                                     "at their depth, and {}: define the depth field and set Mesh.DepthField before "
+                                     "this statement (or set Mesh.MinTimeStep after it)",
+                                     id, min_step,
+                                     depth_id > 0 ? fmt::format("Mesh.DepthField = {:g} names no field yet", depth_id)
+                                                  : std::string("Mesh.DepthField is not set")),
+                         std::move(notes));
+    const int did = static_cast<int>(depth_id);
+    const auto dat = k.option_set_at.find("Mesh.DepthField");
+    const field::FieldPtr depth = built_fields(in, did, dat != k.option_set_at.end() ? dat->second : at).shared(did);
+    const double min_depth = in.options().number("Mesh.TimeStepMinDepth");
+    io.min_time_step = min_step;
+    io.depth_at = [depth, sphere, min_depth](geo::LonLat ll) {
+      const Vec3 x = sphere.from_lonlat(ll);
+      double h = 0;
+      depth->eval(std::span<const Vec3>(&x, 1), std::span<double>(&h, 1));
+      return std::max(h, min_depth);
+    };
+  }
   if (const Value* v = option(d, "Levels")) {
     io.levels.clear();
     for (double l : v->nums()) io.levels.push_back(static_cast<int>(l));
@@ -485,6 +514,7 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
     const std::string name = fmt::format("Coastline[{}]", id);
     const std::string text = fmt::format("{}: {}", name, line.text);
     auto h = line.sea_dropped ? in.diags().report(d.option_at.find("SeaAt")->second, Diag::CoastlineSeasDropped, text)
+             : line.step_unmet ? in.diags().report(d.option_at.find("KeepOpen")->second, Diag::CoastlinePassage, text)
              : line.kept_open ? in.diags().report(d.option_at.find("KeepOpen")->second, Diag::CoastlineKeptOpen, text)
              : line.passage   ? in.diags().report(at, Diag::CoastlinePassage, text)
                               : in.diags().report(at, Diag::CoastlineRepair, name, line.text);
