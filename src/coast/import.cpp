@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -579,7 +580,6 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
       const double floor = opt.min_channel_width;
       po.width_at = [width_at, floor](geo::LonLat ll) { return std::max(floor, width_at(ll)); };
     }
-    const std::size_t logged = rep.repair.size();
     po.keep_passages = opt.keep_passages;
     po.dams = opt.dams;
     po.keep_open = opt.keep_open;
@@ -591,18 +591,31 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
       e.file = data.file;
       return e;
     }
-    // The step each closure saved and each KeepOpen passage costs, at its place's depth.
+    if (*closed && opt.check_splines)
+      if (auto e = repair()) return *e;
+    // The straits were measured on the coarsened curves; the passages changed them: a cut
+    // refused at a pinch puts the source points back (a 31 m gap between two 2 km
+    // segments is a 110 m strait in the source), and a closure makes land of a strait.
+    // They are measured again on the curves as they now are, without new merges (a strait
+    // the passages kept open stays open).
+    if (*closed && !region_empty) {
+      std::erase_if(rep.repair, [](const RepairEntry& e) { return e.kind == RepairKind::NarrowStrait; });
+      RepairOptions again = ro;
+      again.close_straits = false;
+      handle_straits(curves, loops, again, rep.repair);
+    }
+    // The step each closure saved, each strait left open and each KeepOpen passage costs,
+    // at its place's depth.
     if (by_step)
-      for (std::size_t i = logged; i < rep.repair.size(); ++i) {
-        RepairEntry& e = rep.repair[i];
-        if (e.kind != RepairKind::ClosedPassage && e.kind != RepairKind::KeptOpen) continue;
+      for (RepairEntry& e : rep.repair) {
+        if (e.kind != RepairKind::ClosedPassage && e.kind != RepairKind::KeptOpen &&
+            e.kind != RepairKind::NarrowStrait && e.kind != RepairKind::MergedIslands)
+          continue;
         const double h = opt.depth_at(e.where);
         if (!(h > 0)) continue;
         e.step = e.value / std::sqrt(kImportGravity * h);
         e.step_unmet = e.kind == RepairKind::KeptOpen && e.step < opt.min_time_step;
       }
-    if (*closed && opt.check_splines)
-      if (auto e = repair()) return *e;
   }
   step_done();
 

@@ -919,7 +919,9 @@ Result<bool> find_gates(Work& w, std::vector<RepairEntry>& log) {
     Gate g;
     g.where = ll;
     g.width = chord(unit_sphere().lonlat_from_param(a.at), unit_sphere().lonlat_from_param(b.at), w.opt.radius);
-    const double wide = std::max(w.opt.min_width, g.width);
+    // The passage's own closing width: with width_at, min_width is only the search
+    // radius (the widest width anywhere), which would hold far banks open.
+    const double wide = std::max(passage_width_at(w.opt, ll), g.width);
     auto banks = banks_of(w, a.loop, a.seg, b.loop, b.seg, p, kKeepOpenReach * wide, kKeepOpenAcross * wide);
     g.bank[0] = std::move(banks[0]);
     g.bank[1] = std::move(banks[1]);

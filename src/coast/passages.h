@@ -24,7 +24,8 @@ namespace sm::coast {
 
 /// A KeepOpen point's passage: its two banks (the nearest coast on each side of the point)
 /// followed along the coast while within kKeepOpenReach x D of the point or within
-/// kKeepOpenAcross x D of the other bank, D = max(min_width, the passage's width there).
+/// kKeepOpenAcross x D of the other bank, D = max(the closing width there (min_width, or
+/// width_at when set), the passage's width there).
 inline constexpr double kKeepOpenReach = 3.0;
 inline constexpr double kKeepOpenAcross = 2.0;
 

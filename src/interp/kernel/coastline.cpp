@@ -44,6 +44,7 @@ struct CoastlineImport {
   /// largest, control points put back}.
   std::vector<double> deviation;
   std::vector<double> closures, dropped_seas;    // {lon, lat, width_m, ...}, {lon, lat, area_km2, ...}
+  std::vector<double> straits;                   // {lon, lat, width_m, step_s, ...}
   /// Plane Surfaces of the seas, made on the first `Coastline{n, "Surfaces"}` (so that
   /// scripts making their own from "LoopsPerSurface" do not get them twice).
   mutable std::vector<int> surfaces;
@@ -93,7 +94,7 @@ constexpr CoastOption kOptions[] = {
 // What `Coastline{n, "What"}` returns.
 constexpr std::string_view kSelectors[] = {"Loops", "Curves", "OpenCurves", "Points", "CoastPoints", "ControlPoints",
                                            "Outer", "LoopsPerSurface", "CoastCurves", "Surfaces",
-                                           "Closures", "DroppedSeas", "Deviation"};
+                                           "Closures", "DroppedSeas", "Straits", "Deviation"};
 // The sides `Coastline{n, "OpenCurves", "West"}` takes, in the bit order of open_sides.
 constexpr std::string_view kSides[] = {"West", "East", "South", "North"};
 
@@ -525,6 +526,10 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
                                 : e.kind == coast::RepairKind::DroppedSea  ? &imp->dropped_seas
                                                                            : nullptr;
     if (list) list->insert(list->end(), {e.where.lon, e.where.lat, e.value});
+    // The straits left open, with the Courant step one element across costs (0 without
+    // Mesh.MinTimeStep): what a script checks a time step's closures against.
+    if (e.kind == coast::RepairKind::NarrowStrait)
+      imp->straits.insert(imp->straits.end(), {e.where.lon, e.where.lat, e.value, std::isnan(e.step) ? 0.0 : e.step});
   }
   if (m.region_empty) {   // the box of the Region, or of the file's own -R
     auto r = d.option_at.find("Region");
@@ -705,7 +710,7 @@ Value eval_coastline_query(Interpreter& in, ExprId e) {
         in.fail_fmt(r, Diag::UnknownCoastlineOption,
                     fmt::format("Coastline{{}} cannot return \"{}\"{}; it returns {}", what, did_you_mean(what, names),
                                 "Loops, Curves, OpenCurves, Points, CoastPoints, ControlPoints, Outer, LoopsPerSurface, CoastCurves, "
-                                "Surfaces, Closures, DroppedSeas or Deviation"));
+                                "Surfaces, Closures, DroppedSeas, Straits or Deviation"));
       continue;
     }
     for (double d : v.nums()) {
@@ -771,8 +776,8 @@ Value eval_coastline_query(Interpreter& in, ExprId e) {
       }
       imp.surfaces_made = true;
     }
-    if (what == "Closures" || what == "DroppedSeas") {
-      const std::vector<double>& f = what == "Closures" ? imp.closures : imp.dropped_seas;
+    if (what == "Closures" || what == "DroppedSeas" || what == "Straits") {
+      const std::vector<double>& f = what == "Closures" ? imp.closures : what == "Straits" ? imp.straits : imp.dropped_seas;
       out.insert(out.end(), f.begin(), f.end());
       continue;
     }
