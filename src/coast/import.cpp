@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -25,6 +26,7 @@ namespace {
 
 // The pipeline steps numbered in build_coast_model: the units of its progress stage.
 constexpr std::uint64_t kImportSteps = 8;
+constexpr double kImportGravity = 9.81;   // m/s^2, as mesh/time_step.h
 
 const char* describe(RepairKind k) {
   switch (k) {
@@ -37,7 +39,7 @@ const char* describe(RepairKind k) {
     case RepairKind::OutsideWater: return "island outside every water surface dropped";
     case RepairKind::SplineHull: return "original points put back where the B-splines crossed or touched";
     case RepairKind::SplineMayCross: return "the B-splines cross or touch here on the source data";
-    case RepairKind::ClosedPassage: return "passage narrower than MinChannelWidth closed by two dams";
+    case RepairKind::ClosedPassage: return "passage narrower than MinChannelWidth or Mesh.MinTimeStep needs closed by two dams";
     case RepairKind::NarrowWater: return "water narrower than MinChannelWidth behind a dam removed";
     case RepairKind::DamPlaced: return "dam placed across the water";
     case RepairKind::KeptOpen: return "passage kept open by KeepOpen";
@@ -58,7 +60,11 @@ std::string figure_of(const RepairEntry& e) {
     case RepairKind::NarrowStrait:
     case RepairKind::MergedIslands:
     case RepairKind::ClosedPassage:
-    case RepairKind::KeptOpen: return fmt::format("width {:.0f} m", e.value);
+    case RepairKind::KeptOpen:
+      // With Mesh.MinTimeStep: the Courant step one element across it would have set.
+      return std::isnan(e.step) ? fmt::format("width {:.0f} m", e.value)
+                                : fmt::format("width {:.1f} m, time step {:.2f} s{}", e.value, e.step,
+                                              e.step_unmet ? ", under Mesh.MinTimeStep" : "");
     case RepairKind::DroppedSea: return fmt::format("{:.0f} km^2", e.value);
     case RepairKind::PocketLeftOut: return fmt::format("{:.3g} km^2", e.value);
     case RepairKind::NarrowWater: return fmt::format("mean width {:.0f} m", e.value);
@@ -164,6 +170,7 @@ std::vector<ReportLine> ImportReport::items() const {
     l.passage = is_passage_kind(e.kind);
     l.sea_dropped = e.kind == RepairKind::DroppedSea;
     l.kept_open = e.kind == RepairKind::KeptOpen;
+    l.step_unmet = e.step_unmet;
     if (e.kind == RepairKind::ClosedPassage || e.kind == RepairKind::DroppedSea) l.rank = e.value;
     // Changes of no source record (the Region's own pieces) say only their place.
     const std::string source =
@@ -556,9 +563,26 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
   // Passages and dams, on the simple loops oriented water on the left; the dams are
   // checked against the curves like any coast, and the loops they make are oriented by
   // construction.
-  if (opt.min_channel_width > 0 || !opt.dams.empty() || !opt.keep_open.empty()) {
+  const bool by_step = opt.min_time_step > 0 && opt.depth_at;
+  if (opt.min_channel_width > 0 || by_step || !opt.dams.empty() || !opt.keep_open.empty()) {
     PassageOptions po;
     po.min_width = opt.min_channel_width;
+    if (by_step) {
+      // One element across a passage of width w at depth H gives the step w / sqrt(g H):
+      // narrower than dt sqrt(g H) it is closed. The search radius is the widest such
+      // width at the coast's points (a passage lies between two of them).
+      const double dt = opt.min_time_step;
+      const auto& depth_at = opt.depth_at;
+      auto width_at = [dt, depth_at](geo::LonLat ll) {
+        return dt * std::sqrt(kImportGravity * std::max(0.0, depth_at(ll)));
+      };
+      for (const WorkLoop& l : loops)
+        if (!l.dead)
+          for (std::uint32_t ci : l.curves)
+            for (std::uint32_t j : curves[ci].keep) po.min_width = std::max(po.min_width, width_at(curves[ci].full[j]));
+      const double floor = opt.min_channel_width;
+      po.width_at = [width_at, floor](geo::LonLat ll) { return std::max(floor, width_at(ll)); };
+    }
     po.keep_passages = opt.keep_passages;
     po.dams = opt.dams;
     po.keep_open = opt.keep_open;
@@ -572,6 +596,29 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
     }
     if (*closed && opt.check_splines)
       if (auto e = repair()) return *e;
+    // The straits were measured on the coarsened curves; the passages changed them: a cut
+    // refused at a pinch puts the source points back (a 31 m gap between two 2 km
+    // segments is a 110 m strait in the source), and a closure makes land of a strait.
+    // They are measured again on the curves as they now are, without new merges (a strait
+    // the passages kept open stays open).
+    if (*closed && !region_empty) {
+      std::erase_if(rep.repair, [](const RepairEntry& e) { return e.kind == RepairKind::NarrowStrait; });
+      RepairOptions again = ro;
+      again.close_straits = false;
+      handle_straits(curves, loops, again, rep.repair);
+    }
+    // The step each closure saved, each strait left open and each KeepOpen passage costs,
+    // at its place's depth.
+    if (by_step)
+      for (RepairEntry& e : rep.repair) {
+        if (e.kind != RepairKind::ClosedPassage && e.kind != RepairKind::KeptOpen &&
+            e.kind != RepairKind::NarrowStrait && e.kind != RepairKind::MergedIslands)
+          continue;
+        const double h = opt.depth_at(e.where);
+        if (!(h > 0)) continue;
+        e.step = e.value / std::sqrt(kImportGravity * h);
+        e.step_unmet = e.kind == RepairKind::KeptOpen && e.step < opt.min_time_step;
+      }
   }
   step_done();
 

@@ -4,6 +4,7 @@
 // periodic B-splines; this is the kernel behind `Coastline[n] = ...; loops[] = Coastline{n};`.
 #pragma once
 
+#include <functional>
 #include <limits>
 #include <optional>
 #include <utility>
@@ -51,6 +52,14 @@ struct ImportOptions {
   std::vector<std::pair<geo::LonLat, geo::LonLat>> dams;
   /// Points in passages that MinChannelWidth must leave open (passages.h).
   std::vector<geo::LonLat> keep_open;
+  /// The time step the mesh must allow (Mesh.MinTimeStep, seconds; 0: off): with
+  /// `depth_at`, a passage narrower than min_time_step sqrt(g H) at its place (one element
+  /// across it, at Courant number 1) is closed too, and a KeepOpen passage narrower than
+  /// that is logged as such (RepairEntry::step).
+  double min_time_step = 0;
+  /// The water depth (metres, positive down, already raised to the model's minimum) at
+  /// a lon/lat; called from the importing thread only.
+  std::function<double(geo::LonLat)> depth_at;
   /// Keep only the seas (surfaces) holding one of these points; empty: every sea.
   std::vector<geo::LonLat> sea_at;
   int max_repair_rounds = 64;
@@ -118,6 +127,11 @@ struct RepairEntry {
   std::int64_t id;
   geo::LonLat where;
   double value = 0;   // refined: points added; strait: width in metres
+  /// With ImportOptions::min_time_step: a closed or kept-open passage's Courant time step
+  /// across it (width / sqrt(g H), seconds); NaN otherwise.
+  double step = std::numeric_limits<double>::quiet_NaN();
+  /// A KeepOpen passage whose step is under min_time_step: the mesh cannot reach it there.
+  bool step_unmet = false;
 };
 
 /// One line of the import report with its parts, so that a diagnostic listing many
@@ -131,6 +145,8 @@ struct ReportLine {
   bool passage = false;    ///< a closed passage, a dam or removed narrow water
   bool sea_dropped = false;  ///< a sea dropped by SeaAt
   bool kept_open = false;    ///< a passage kept open by KeepOpen
+  /// A KeepOpen passage narrower than Mesh.MinTimeStep needs: that step cannot be met there.
+  bool step_unmet = false;
   /// The figure as a number when its largest matter most (a closed passage's width, a
   /// dropped sea's area): a short list shows the largest first; NaN otherwise.
   double rank = std::numeric_limits<double>::quiet_NaN();

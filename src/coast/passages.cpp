@@ -437,6 +437,12 @@ CutResult cut(Work& w, std::uint32_t la, std::size_t ja, std::uint32_t lb, std::
   return r;
 }
 
+// The width below which a passage at `ll` is closed: PassageOptions::width_at when set
+// (a time step turned into widths by the depth there), bounded by min_width.
+double passage_width_at(const PassageOptions& o, geo::LonLat ll) {
+  return o.width_at ? std::min(o.min_width, o.width_at(ll)) : o.min_width;
+}
+
 struct Candidate {
   double width;
   std::uint32_t la, sa, lb, sb;
@@ -473,7 +479,8 @@ Fate fate_of(const Work& w, const FlatLoop& f, double* mean_width = nullptr) {
   if (f.hole) return Fate::Kept;
   const double mw = mean_width_m(f, w.opt.radius);
   if (mean_width) *mean_width = mw;
-  return w.opt.min_width > 0 && mw < w.opt.min_width ? Fate::Narrow : Fate::Kept;
+  const double W = passage_width_at(w.opt, f.ll(0));
+  return W > 0 && mw < W ? Fate::Narrow : Fate::Kept;
 }
 
 // Drops a new loop that fate_of drops; logs narrow water.
@@ -607,7 +614,10 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
     if (dot(a1 - a0, b1 - b0) >= 0) continue;   // not facing
     const double d = std::min({uv_point_segment_metres(a0, b0, b1, R), uv_point_segment_metres(a1, b0, b1, R),
                                uv_point_segment_metres(b0, a0, a1, R), uv_point_segment_metres(b1, a0, a1, R)});
-    if (!(d < W * (1 - kWidthTolerance))) continue;
+    const Vec2 mid = 0.25 * (a0 + a1 + b0 + b1);
+    if (!(d < (w.opt.width_at ? passage_width_at(w.opt, unit_sphere().lonlat_from_param(mid)) : W) *
+                  (1 - kWidthTolerance)))
+      continue;
     if (m.loop_a == m.loop_b && !passage_on_one_ring(m.loop_a, m.seg_a, m.seg_b, d)) continue;
     cands.push_back({d, m.loop_a, m.seg_a, m.loop_b, m.seg_b, w.flat[m.loop_a].kept[m.seg_a],
                      w.flat[m.loop_b].kept[m.seg_b], 0.25 * (a0 + a1 + b0 + b1)});
@@ -1008,7 +1018,9 @@ Result<bool> find_gates(Work& w, std::vector<RepairEntry>& log) {
     Gate g;
     g.where = ll;
     g.width = chord(unit_sphere().lonlat_from_param(a.at), unit_sphere().lonlat_from_param(b.at), w.opt.radius);
-    const double wide = std::max(w.opt.min_width, g.width);
+    // The passage's own closing width: with width_at, min_width is only the search
+    // radius (the widest width anywhere), which would hold far banks open.
+    const double wide = std::max(passage_width_at(w.opt, ll), g.width);
     auto banks = banks_of(w, a.loop, a.seg, b.loop, b.seg, p, kKeepOpenReach * wide, kKeepOpenAcross * wide);
     g.bank[0] = std::move(banks[0]);
     g.bank[1] = std::move(banks[1]);

@@ -12,6 +12,7 @@
 // dead-end inlet up to its mouths. Every left/right decision is an exact orient2d.
 #pragma once
 
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -23,7 +24,8 @@ namespace sm::coast {
 
 /// A KeepOpen point's passage: its two banks (the nearest coast on each side of the point)
 /// followed along the coast while within kKeepOpenReach x D of the point or within
-/// kKeepOpenAcross x D of the other bank, D = max(min_width, the passage's width there).
+/// kKeepOpenAcross x D of the other bank, D = max(the closing width there (min_width, or
+/// width_at when set), the passage's width there).
 inline constexpr double kKeepOpenReach = 3.0;
 inline constexpr double kKeepOpenAcross = 2.0;
 
@@ -40,6 +42,9 @@ struct PassageOptions {
   /// at such a point (kKeepOpenReach), and a dam across them is an error (option "KeepOpen").
   std::vector<geo::LonLat> keep_open;
   double radius = geo::kEarthRadius;
+  /// When set, the width (metres) below which a passage at a place is closed, in place of
+  /// min_width there; min_width must bound it from above (it is the search radius).
+  std::function<double(geo::LonLat)> width_at;
 };
 
 /// What a close_passages call did, counted so that tests can check that its work grows with

@@ -210,7 +210,8 @@ std::string format_stats(const MeshStats& s) {
     const TimeStep& t = s.time_step;
     out += fmt::format("Time step (Courant 1): dt {:.4g} s", t.dt);
     if (t.has_lonlat) out += fmt::format(" at lon {:.4f}, lat {:.4f}", t.lon, t.lat);
-    out += fmt::format(" (surface {}, edge {:.4g} m, depth {:.4g} m)\n", t.surface, t.edge, t.depth);
+    out += fmt::format(" (surface {}, edge {:.4g} m, depth {:.4g} m); 1% of triangles under {:.4g} s\n", t.surface,
+                       t.edge, t.depth, t.q01);
   }
   if (!s.stages.empty()) {
     out += "Time:";
@@ -252,6 +253,7 @@ std::string stats_json(const MeshStats& s) {
     out += fmt::format(", \"dt\": {}, \"dt_edge\": {}, \"dt_depth\": {}, \"dt_surface\": {}", json_number(t.dt),
                        json_number(t.edge), json_number(t.depth), t.surface);
     if (t.has_lonlat) out += fmt::format(", \"dt_lon\": {}, \"dt_lat\": {}", json_number(t.lon), json_number(t.lat));
+    out += fmt::format(", \"dt_q01\": {}", json_number(t.q01));
   }
   if (s.has_depth_clamp) {
     const field::DepthClampReport& d = s.depth_clamp;

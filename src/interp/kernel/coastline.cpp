@@ -45,6 +45,7 @@ struct CoastlineImport {
   /// largest, control points put back}.
   std::vector<double> deviation;
   std::vector<double> closures, dropped_seas;    // {lon, lat, width_m, ...}, {lon, lat, area_km2, ...}
+  std::vector<double> straits;                   // {lon, lat, width_m, step_s, ...}
   /// Plane Surfaces of the seas, made on the first `Coastline{n, "Surfaces"}` (so that
   /// scripts making their own from "LoopsPerSurface" do not get them twice).
   mutable std::vector<int> surfaces;
@@ -95,7 +96,7 @@ constexpr CoastOption kOptions[] = {
 // What `Coastline{n, "What"}` returns.
 constexpr std::string_view kSelectors[] = {"Loops", "Curves", "OpenCurves", "Points", "CoastPoints", "ControlPoints",
                                            "Outer", "LoopsPerSurface", "CoastCurves", "Surfaces",
-                                           "Closures", "DroppedSeas", "Deviation"};
+                                           "Closures", "DroppedSeas", "Straits", "Deviation"};
 // The sides `Coastline{n, "OpenCurves", "West"}` takes, in the bit order of open_sides.
 constexpr std::string_view kSides[] = {"West", "East", "South", "North"};
 
@@ -404,6 +405,35 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
     gamma_field->eval(moved, gamma);
   };
   io.radius = sphere.radius();
+  // Mesh.MinTimeStep set before the import: passages too narrow for it at the depth of
+  // Mesh.DepthField are closed with the MinChannelWidth ones (coast/import.h). The depth
+  // must be known now, as the closures change the coastline the script then builds on.
+  if (const double min_step = in.options().number("Mesh.MinTimeStep"); min_step > 0) {
+    const double depth_id = in.options().number("Mesh.DepthField");
+    std::vector<DiagNote> notes;
+    if (const auto it = k.option_set_at.find("Mesh.MinTimeStep"); it != k.option_set_at.end())
+      notes.push_back({it->second, "Mesh.MinTimeStep was set here"});
+    if (!(depth_id > 0) || !k.field_defined_at.count(static_cast<int>(depth_id)))
+      in.fail_with_notes(at, Diag::InvalidOptionValue,
+                         fmt::format("Coastline[{}]: Mesh.MinTimeStep = {:g} closes the passages too narrow for it "
+                                     "at their depth, and {}: define the depth field and set Mesh.DepthField before "
+                                     "this statement (or set Mesh.MinTimeStep after it)",
+                                     id, min_step,
+                                     depth_id > 0 ? fmt::format("Mesh.DepthField = {:g} names no field yet", depth_id)
+                                                  : std::string("Mesh.DepthField is not set")),
+                         std::move(notes));
+    const int did = static_cast<int>(depth_id);
+    const auto dat = k.option_set_at.find("Mesh.DepthField");
+    const field::FieldPtr depth = built_fields(in, did, dat != k.option_set_at.end() ? dat->second : at).shared(did);
+    const double min_depth = in.options().number("Mesh.TimeStepMinDepth");
+    io.min_time_step = min_step;
+    io.depth_at = [depth, sphere, min_depth](geo::LonLat ll) {
+      const Vec3 x = sphere.from_lonlat(ll);
+      double h = 0;
+      depth->eval(std::span<const Vec3>(&x, 1), std::span<double>(&h, 1));
+      return std::max(h, min_depth);
+    };
+  }
   if (const Value* v = option(d, "Levels")) {
     io.levels.clear();
     for (double l : v->nums()) io.levels.push_back(static_cast<int>(l));
@@ -525,6 +555,7 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
     const std::string name = fmt::format("Coastline[{}]", id);
     const std::string text = fmt::format("{}: {}", name, line.text);
     auto h = line.sea_dropped ? in.diags().report(d.option_at.find("SeaAt")->second, Diag::CoastlineSeasDropped, text)
+             : line.step_unmet ? in.diags().report(d.option_at.find("KeepOpen")->second, Diag::CoastlinePassage, text)
              : line.kept_open ? in.diags().report(d.option_at.find("KeepOpen")->second, Diag::CoastlineKeptOpen, text)
              : line.passage   ? in.diags().report(at, Diag::CoastlinePassage, text)
                               : in.diags().report(at, Diag::CoastlineRepair, name, line.text);
@@ -535,6 +566,10 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
                                 : e.kind == coast::RepairKind::DroppedSea  ? &imp->dropped_seas
                                                                            : nullptr;
     if (list) list->insert(list->end(), {e.where.lon, e.where.lat, e.value});
+    // The straits left open, with the Courant step one element across costs (0 without
+    // Mesh.MinTimeStep): what a script checks a time step's closures against.
+    if (e.kind == coast::RepairKind::NarrowStrait)
+      imp->straits.insert(imp->straits.end(), {e.where.lon, e.where.lat, e.value, std::isnan(e.step) ? 0.0 : e.step});
   }
   if (m.region_empty) {   // the box of the Region, or of the file's own -R
     auto r = d.option_at.find("Region");
@@ -715,7 +750,7 @@ Value eval_coastline_query(Interpreter& in, ExprId e) {
         in.fail_fmt(r, Diag::UnknownCoastlineOption,
                     fmt::format("Coastline{{}} cannot return \"{}\"{}; it returns {}", what, did_you_mean(what, names),
                                 "Loops, Curves, OpenCurves, Points, CoastPoints, ControlPoints, Outer, LoopsPerSurface, CoastCurves, "
-                                "Surfaces, Closures, DroppedSeas or Deviation"));
+                                "Surfaces, Closures, DroppedSeas, Straits or Deviation"));
       continue;
     }
     for (double d : v.nums()) {
@@ -781,8 +816,8 @@ Value eval_coastline_query(Interpreter& in, ExprId e) {
       }
       imp.surfaces_made = true;
     }
-    if (what == "Closures" || what == "DroppedSeas") {
-      const std::vector<double>& f = what == "Closures" ? imp.closures : imp.dropped_seas;
+    if (what == "Closures" || what == "DroppedSeas" || what == "Straits") {
+      const std::vector<double>& f = what == "Closures" ? imp.closures : what == "Straits" ? imp.straits : imp.dropped_seas;
       out.insert(out.end(), f.begin(), f.end());
       continue;
     }

@@ -37,6 +37,8 @@
 #include "mesh/mesh2d.h"
 #include "mesh/mesh_stats.h"
 #include "mesh/time_step.h"
+#include "mesh/time_step_repair.h"
+#include "field/time_step_floor.h"
 
 namespace sm::interp {
 
@@ -71,6 +73,11 @@ Diag diag_of(const MeshError& e) {
 }
 
 constexpr std::string_view kBudgetFix = "check the mesh sizes, or raise Mesh.MaxElements";
+// Mesh.MinTimeStep's size floor is this times dt sqrt(g H): a frontal mesh's edges run
+// from about 0.7 to 1.4 of the size (docs/kernel.md), so the shortest stays near dt sqrt(g H).
+constexpr double kMinStepSizeFactor = 1.5;
+// The places under Mesh.MinTimeStep listed after meshing, worst first (the count says the rest).
+constexpr std::size_t kMaxStepUnmetReported = 10;
 
 // The limit a count exceeds, as the user can change it.
 std::string over_limit(double limit) {
@@ -160,6 +167,63 @@ void publish_stats(Interpreter& in, const ModelMesh& mesh, const MeshStats& st) 
 // The Courant time step of `mesh` with node depths `h` (Mesh.DepthField's): edges
 // on the model's sphere when it has one (lengths in the model's units, metres for
 // earth.geo), depths raised to Mesh.TimeStepMinDepth.
+TimeStepOptions time_step_options(Interpreter& in) {
+  TimeStepOptions opt;
+  opt.min_depth = in.options().number("Mesh.TimeStepMinDepth");
+  for (const auto& [tag, g] : in.kernel().model.geometries()) {
+    opt.centre = g.centre();
+    opt.radius = g.radius();
+    break;
+  }
+  return opt;
+}
+
+std::vector<double> node_depths(const ModelMesh& mesh, const field::SizeField& depth) {
+  std::vector<Vec3> xyz(mesh.nodes.size());
+  for (std::size_t i = 0; i < xyz.size(); ++i) xyz[i] = mesh.nodes[i].xyz;
+  std::vector<double> h(xyz.size());
+  depth.eval(xyz, h);
+  return h;
+}
+
+// Mesh.MinTimeStep after meshing: the nodes behind too short steps removed
+// (mesh/time_step_repair.h), each a warning with its place; then every place still under
+// the step, worst first (a few: the count says how many), as warnings too.
+void enforce_min_time_step(Interpreter& in, ModelMesh& mesh, const field::SizeField& depth, double min_step,
+                           SourceRange where) {
+  const std::vector<double> h = node_depths(mesh, depth);
+  const TimeStepOptions opt = time_step_options(in);
+  const StepRepairResult r = repair_short_steps(mesh, h, min_step, opt);
+  for (const StepRemoval& rm : r.removed) {
+    double lon = 0, lat = 0;
+    time_step_lonlat(rm.where, opt, lon, lat);
+    in.diags().report_message(where, Diag::MeshWarning,
+                              fmt::format("surface {}: node at lon {:.5f} lat {:.5f} removed for Mesh.MinTimeStep "
+                                          "(edge {:.1f} m, time step {:.3g} s)",
+                                          rm.surface, lon, lat, rm.edge, rm.step));
+  }
+  const std::vector<double> steps = triangle_time_steps(mesh, h, opt);
+  std::vector<std::pair<double, std::size_t>> under;
+  for (std::size_t i = 0; i < steps.size(); ++i)
+    if (steps[i] < min_step) under.push_back({steps[i], i});
+  std::sort(under.begin(), under.end());
+  std::vector<Vec3> centroid;
+  for (const auto& [tag, sf] : mesh.surfaces)
+    for (const auto& t : sf.triangles)
+      if (centroid.size() < steps.size())
+        centroid.push_back((mesh.nodes[t[0]].xyz + mesh.nodes[t[1]].xyz + mesh.nodes[t[2]].xyz) / 3.0);
+  for (std::size_t i = 0; i < under.size() && i < kMaxStepUnmetReported; ++i) {
+    double lon = 0, lat = 0;
+    time_step_lonlat(centroid[under[i].second], opt, lon, lat);
+    in.diags().report_message(where, Diag::MeshWarning,
+                              fmt::format("Mesh.MinTimeStep = {:g} s not met at lon {:.5f} lat {:.5f}: time step "
+                                          "{:.3g} s there ({} triangle(s) under it{}; a passage kept open, or coast "
+                                          "nodes no collapse can remove)",
+                                          min_step, lon, lat, under[i].first, under.size(),
+                                          under.size() > kMaxStepUnmetReported ? ", the worst listed" : ""));
+  }
+}
+
 TimeStep time_step_of(Interpreter& in, const ModelMesh& mesh, const std::vector<double>& h) {
   TimeStepOptions opt;
   opt.min_depth = in.options().number("Mesh.TimeStepMinDepth");
@@ -210,7 +274,7 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   // Shown as a stage when there is a field to set up (not for a model with sizes at points).
   const bool has_fields = (k.background_field && *k.background_field > 0) || !k.coastlines.empty();
   std::optional<StageScope> fields_stage(std::in_place, &k.clock, has_fields ? progress_sink(in) : nullptr, "fields");
-  const field::FieldPtr background = with_channel_sizes(in, background_size_field(in));
+  field::FieldPtr background = with_channel_sizes(in, background_size_field(in));
   fields_stage.reset();
   const double max_elements = in.options().number("Mesh.MaxElements");
   Mesh2dOptions opt2;
@@ -258,6 +322,20 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
     depth = built_fields(in, id, it != k.option_set_at.end() ? it->second : SourceRange{}).shared(id);
     if (std::string why = check_depth_sampling(in, *depth); !why.empty())
       return {Diag::InvalidOptionValue, std::move(why), set_here(k, "Mesh.DepthSampling")};
+  }
+  // Mesh.MinTimeStep: no size below the one a gravity wave crosses in the step (with a
+  // margin, as the shortest edge of a good triangle is about 0.7 of its size).
+  const double min_step = in.options().number("Mesh.MinTimeStep");
+  if (min_step > 0 && !depth)
+    return {Diag::InvalidOptionValue,
+            fmt::format("Mesh.MinTimeStep = {:g} needs the depth of the water: set Mesh.DepthField to a depth field "
+                        "(a Bathymetry, say), or set Mesh.MinTimeStep = 0",
+                        min_step),
+            set_here(k, "Mesh.MinTimeStep")};
+  if (min_step > 0 && background) {
+    background = field::time_step_floor(background, depth, min_step, in.options().number("Mesh.TimeStepMinDepth"),
+                                        kMinStepSizeFactor);
+    opt2.background = background.get();
   }
   // The structured constraints with the Mesh.* options that complete them.
   MeshConstraints& constraints = k.constraints;
@@ -343,6 +421,7 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
       st.has_min_rho_lonlat = true;
       st.min_rho_lon = ll.lon, st.min_rho_lat = ll.lat;
     }
+  if (depth && min_step > 0) enforce_min_time_step(in, *mesh, *depth, min_step, where);
   if (depth) {
     // The depths the ocean grids get at the nodes of the 2D elements (those the written
     // files hold; Mesh.DepthSampling included), and what MinDepth did to them.
