@@ -42,14 +42,23 @@ If (!Exists(OceanFieldsGeoLoaded))
 
   // ShoreProximity: input ShorePoints[] (point tags, e.g. Coastline{n, "Points"}: control
   // points spaced about gamma apart along every coast) and/or ShoreCurves[] (curve tags,
-  // ShoreSamples uniform samples each). With ShoreBox[] = {W, E, S, N} (a region), points
+  // ShoreSamples uniform samples each). With ShoreBox[] = {W, E, S, N} (a Region box), points
   // on the box's edges are dropped from ShorePoints[] first: the closing pieces are open
   // sea, not coast. Output: ShoreDistanceField (the distance, metres) and ShoreField (the
-  // size).
+  // size). A Region polygon's closing pieces follow great circles, which this test does not
+  // find: take Coastline{n, "CoastPoints"} (or RegionalSea's RegionalShorePoints[]) instead.
   Macro ShoreProximity
     If (!Exists(ShorePoints[]) && !Exists(ShoreCurves[]))
       Error("ShoreProximity: set ShorePoints[] or ShoreCurves[] first");
       Abort;
+    EndIf
+    // Anything but 4 numbers (a polygon's vertices, a box with a number missing) would be
+    // read as a box and drop the wrong points, or none.
+    If (Exists(ShoreBox[]))
+      If (#ShoreBox[] != 4)
+        Error("ShoreProximity: ShoreBox[] holds %g numbers: it takes a box {W, E, S, N} (for a Region polygon, leave it unset and take the CoastPoints)", #ShoreBox[]);
+        Abort;
+      EndIf
     EndIf
     // A region's closing pieces lie on the box: their points are not coast.
     If (Exists(ShoreBox[]) && Exists(ShorePoints[]))

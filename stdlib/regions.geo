@@ -39,39 +39,99 @@ If (!Exists(RegionsGeoLoaded))
   Antwerp[] = {4.40, 51.23};                     // Figure 13's upstream end (150 m)
 
   // RegionalSea: the whole set-up of a regional sea (docs/coastlines.md, "Regional seas").
-  // Input: the shoreline, either RegionalResolution (GSHHG from the system: "c", "l", "i",
-  // "h" or "f"; RegionalMinArea in km^2 drops smaller islands and lakes) or RegionalFile (a
-  // LonLatText shoreline file); RegionalBox[] = {W, E, S, N}; and
-  // optionally RegionalAccuracy (m, default 5 km: the coastline's gamma), RegionalSeaAt[] =
-  // {lon, lat, ...} (keep only the seas holding these points), RegionalMinChannelWidth (m:
-  // close passages narrower than this), RegionalKeepOpen[] = {lon, lat, ...} (the passages
-  // at these points stay open), RegionalDams[] = {lon1, lat1, lon2, lat2, ...} and
-  // RegionalCoastline (the Coastline id, default 1). Needs a PolarSphere (Call EarthSphere).
-  // Makes the sea surfaces and the physical groups "sea", "coast" (shores and dams) and
-  // "open" (the box sides crossing the kept seas). Output: RegionalSurfaces[],
-  // RegionalCoastCurves[], RegionalOpenCurves[], RegionalShorePoints[] (the control
-  // points, for ShoreProximity with ShoreBox[] = RegionalBox[]) and RegionalAccuracyField.
+  // Input:
+  //  - the shoreline: RegionalResolution (GSHHG from the system: "c", "l", "i", "h" or "f")
+  //    or RegionalFile (a shoreline file, relative to the script) read as RegionalFormat
+  //    (default "LonLatText"; "GSHHS" a GSHHS binary, "Shapefile", "GSHHG" a
+  //    binned_GSHHS_*.nc, "Loops2": the formats of `Coastline[n] = ...;`, any case);
+  //    RegionalMinArea (km^2) drops smaller islands and lakes;
+  //  - the region: RegionalBox[] = {W, E, S, N}, or a polygon {lon1, lat1, lon2, lat2, lon3,
+  //    lat3, ...} with great-circle edges (Coastline's Region), or RegionalRegionFile (a
+  //    shapefile holding that polygon, Coastline's RegionFile);
+  //  - the accuracy (the coastline's gamma): RegionalAccuracy (m, default 5 km) or
+  //    RegionalAccuracyField (a size field id giving gamma in metres), not both;
+  //  - optionally RegionalSeaAt[] = {lon, lat, ...} (keep only the seas holding these
+  //    points), RegionalMinChannelWidth (m: close passages narrower than this),
+  //    RegionalKeepOpen[] = {lon, lat, ...} (the passages at these points stay open),
+  //    RegionalDams[] = {lon1, lat1, lon2, lat2, ...} and RegionalCoastline (the Coastline
+  //    id, default 1).
+  // Needs a PolarSphere (Call EarthSphere). Makes the sea surfaces and the physical groups
+  // "sea", "coast" (shores and dams) and "open" (the region's sides crossing the kept seas).
+  // Output: RegionalSurfaces[], RegionalCoastCurves[], RegionalOpenCurves[],
+  // RegionalAccuracyField (the one given, or a MathEval of RegionalAccuracy) and
+  // RegionalShorePoints[], the coast's points for ShoreProximity's ShorePoints[]. ShoreBox[]
+  // is there to drop the open sea's points from them: with a box they are every control
+  // point (Coastline's "Points"), so set ShoreBox[] = RegionalBox[] and ShoreProximity
+  // leaves out those on the box's sides; with a polygon they are the coast curves' points
+  // only (Coastline's "CoastPoints"), so leave ShoreBox[] unset (it takes a box only).
   Macro RegionalSea
-    If ((!Exists(RegionalFile) && !Exists(RegionalResolution)) || !Exists(RegionalBox[]))
-      Error("RegionalSea: set RegionalResolution (GSHHG from the system) or RegionalFile, and RegionalBox[] = {W, E, S, N} first");
+    If ((!Exists(RegionalFile) && !Exists(RegionalResolution)) || (!Exists(RegionalBox[]) && !Exists(RegionalRegionFile)))
+      Error("RegionalSea: set RegionalResolution (GSHHG from the system) or RegionalFile, and RegionalBox[] (a box {W, E, S, N} or a polygon) or RegionalRegionFile first");
       Abort;
     EndIf
+    If (Exists(RegionalBox[]) && Exists(RegionalRegionFile))
+      Error("RegionalSea: set RegionalBox[] or RegionalRegionFile, not both: the region is either written or read from a file");
+      Abort;
+    EndIf
+    If (Exists(RegionalBox[]))
+      If (#RegionalBox[] != 4 && (#RegionalBox[] < 6 || #RegionalBox[] % 2 != 0))
+        Error("RegionalSea: RegionalBox[] holds %g numbers: it takes a box {W, E, S, N} or a polygon {lon1, lat1, lon2, lat2, lon3, lat3, ...}", #RegionalBox[]);
+        Abort;
+      EndIf
+    EndIf
     regional_id_ = Exists(RegionalCoastline) ? RegionalCoastline : 1;
-    RegionalAccuracyField = newf;
-    Field[RegionalAccuracyField] = MathEval;
-    Field[RegionalAccuracyField].F = Sprintf("%g", Exists(RegionalAccuracy) ? RegionalAccuracy : 5e3);
+    // RegionalAccuracyField is also an output: the MathEval an earlier Call made from
+    // RegionalAccuracy is not a field the script gave, and is made again.
+    regional_given_field_ = Exists(RegionalAccuracyField);
+    If (regional_given_field_ && Exists(RegionalMadeAccuracyField_))
+      If (RegionalAccuracyField == RegionalMadeAccuracyField_)
+        regional_given_field_ = 0;
+      EndIf
+    EndIf
+    If (regional_given_field_ && Exists(RegionalAccuracy))
+      Error("RegionalSea: set RegionalAccuracy (a constant gamma) or RegionalAccuracyField (a size field), not both");
+      Abort;
+    EndIf
+    If (!regional_given_field_)
+      RegionalAccuracyField = newf;
+      RegionalMadeAccuracyField_ = RegionalAccuracyField;
+      Field[RegionalAccuracyField] = MathEval;
+      Field[RegionalAccuracyField].F = Sprintf("%g", Exists(RegionalAccuracy) ? RegionalAccuracy : 5e3);
+    EndIf
     If (Exists(RegionalResolution))
       Coastline[regional_id_] = GSHHG;
       Coastline[regional_id_].Resolution = RegionalResolution;
-      If (Exists(RegionalMinArea))
-        Coastline[regional_id_].MinArea = RegionalMinArea;
-      EndIf
     Else
-      Coastline[regional_id_] = LonLatText;
+      // `Coastline[n] = ...;` names its format as a word, so the string is matched here.
+      regional_format_ = "LONLATTEXT";
+      If (Exists(RegionalFormat))
+        regional_format_ = UpperCase(RegionalFormat);
+      EndIf
+      If (!StrCmp(regional_format_, "LONLATTEXT"))
+        Coastline[regional_id_] = LonLatText;
+      ElseIf (!StrCmp(regional_format_, "GSHHS"))
+        Coastline[regional_id_] = GSHHS;
+      ElseIf (!StrCmp(regional_format_, "SHAPEFILE"))
+        Coastline[regional_id_] = Shapefile;
+      ElseIf (!StrCmp(regional_format_, "GSHHG"))
+        Coastline[regional_id_] = GSHHG;
+      ElseIf (!StrCmp(regional_format_, "LOOPS2"))
+        Coastline[regional_id_] = Loops2;
+      Else
+        Error("RegionalSea: RegionalFormat '%s' is not a shoreline format: LonLatText, GSHHS, Shapefile, GSHHG or Loops2", RegionalFormat);
+        Abort;
+      EndIf
       Coastline[regional_id_].FileName = RegionalFile;
     EndIf
+    If (Exists(RegionalMinArea))
+      Coastline[regional_id_].MinArea = RegionalMinArea;
+    EndIf
     Coastline[regional_id_].AccuracyField = RegionalAccuracyField;
-    Coastline[regional_id_].Region = {RegionalBox[]};
+    If (Exists(RegionalRegionFile))
+      Coastline[regional_id_].RegionFile = RegionalRegionFile;
+    Else
+      Coastline[regional_id_].Region = {RegionalBox[]};
+    EndIf
     If (Exists(RegionalMinChannelWidth))
       Coastline[regional_id_].MinChannelWidth = RegionalMinChannelWidth;
     EndIf
@@ -92,9 +152,19 @@ If (!Exists(RegionsGeoLoaded))
     If (#RegionalOpenCurves[] > 0)
       Physical Curve("open") = {RegionalOpenCurves[]};
     EndIf
-    // Every control point of the kept seas: with ShoreBox[] = RegionalBox[], ShoreProximity
-    // leaves out those on the box (open sea).
-    RegionalShorePoints[] = Coastline{regional_id_, "Points"};
+    regional_is_box_ = 0;
+    If (Exists(RegionalBox[]))
+      regional_is_box_ = #RegionalBox[] == 4;
+    EndIf
+    If (regional_is_box_)
+      // Every control point of the kept seas: with ShoreBox[] = RegionalBox[], ShoreProximity
+      // leaves out those on the box (open sea).
+      RegionalShorePoints[] = Coastline{regional_id_, "Points"};
+    Else
+      // A polygon's open curves run along great circles, which no box test finds: take the
+      // coast curves' points, the open boundaries' own points left out.
+      RegionalShorePoints[] = Coastline{regional_id_, "CoastPoints"};
+    EndIf
   Return
 
   // InBox: input lon, lat and box[] = {W, E, S, N}; output InBoxResult (1 inside or on the

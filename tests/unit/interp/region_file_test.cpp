@@ -110,3 +110,33 @@ TEST_CASE("region file: two polygons, a bow tie, a missing file, Region set too"
     CHECK(diag.find(c.at) != std::string::npos);   // at the RegionFile statement
   }
 }
+
+// RegionalSea (stdlib/regions.geo) passes RegionalRegionFile to Coastline's RegionFile: the
+// same two open boundaries, and the shore points are the coast curves' own ("CoastPoints",
+// for ShoreProximity without a ShoreBox[]); RegionalBox[] as well is an error.
+std::string regional_script(const std::string& base, const std::string& extra) {
+  return "Include \"earth.geo\";\nInclude \"regions.geo\";\nCall EarthSphere;\n"
+         "RegionalFile = \"" SM_SOURCE_DIR "/data/gshhg/gb_ireland_f.txt\";\n"
+         "RegionalRegionFile = \"" + base + ".shp\";\n" + extra +
+         "RegionalAccuracy = 2e3;\nRegionalSeaAt[] = {-5.4, 53.35};\nCall RegionalSea;\n"
+         "coast[] = Coastline{1, \"CoastPoints\"};\n"
+         "Printf(\"open %g, shore points are CoastPoints %g\", #RegionalOpenCurves[], "
+         "#RegionalShorePoints[] == #coast[] && #Unique({RegionalShorePoints[], coast[]}) == #coast[]);\n";
+}
+
+TEST_CASE("region file: RegionalSea with RegionalRegionFile") {
+  sm::testing::ScratchDir dir;
+  const std::string base = (dir.path / "irish_sea").string();
+  write_region_polygons(base, {kIrishSeaPolygon});
+  {
+    RegionFileRun r;
+    const std::string out = r.run(regional_script(base, ""));
+    INFO(r.diags.render_all());
+    REQUIRE(r.diags.error_count() == 0);
+    CHECK(out.find("open 2, shore points are CoastPoints 1") != std::string::npos);
+  }
+  RegionFileRun r;
+  r.run(regional_script(base, "RegionalBox[] = {-7, -2.5, 51.5, 55.5};\n"));
+  CHECK(r.diags.error_count() == 1);
+  CHECK(r.diags.render_all().find("set RegionalBox[] or RegionalRegionFile, not both") != std::string::npos);
+}
