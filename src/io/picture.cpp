@@ -45,6 +45,11 @@ constexpr Rgb kOpenColour{0x1a, 0x98, 0x50};
 constexpr Rgb kTextColour{0x20, 0x20, 0x20};
 constexpr Rgb kMarkColour{0x00, 0x00, 0x00};
 constexpr Rgb kPointColour{0x08, 0x30, 0x6b};
+// Quality classes (picture.h): red and orange for the alarms, a pale grey-blue for the bulk,
+// lighter than the plain fill so that the alarms are the only saturated colours on the map.
+constexpr Rgb kBelowFloorColour{0xd7, 0x19, 0x1c};
+constexpr Rgb kWorstPercentColour{0xfd, 0xae, 0x61};
+constexpr Rgb kGoodQualityColour{0xe6, 0xea, 0xee};
 
 std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
@@ -169,6 +174,29 @@ std::string normalise_picture_box(double west, double east, double south, double
   return {};
 }
 
+std::vector<QualityClass> quality_classes(const std::vector<double>& rho, double floor) {
+  std::vector<QualityClass> cls(rho.size(), QualityClass::Rest);
+  std::vector<std::size_t> by_rho(rho.size());
+  std::iota(by_rho.begin(), by_rho.end(), std::size_t{0});
+  const std::size_t worst = std::min(
+      rho.size(), static_cast<std::size_t>(std::ceil(kWorstFraction * static_cast<double>(rho.size()) - kEps)));
+  std::partial_sort(by_rho.begin(), by_rho.begin() + static_cast<std::ptrdiff_t>(worst), by_rho.end(),
+                    [&](std::size_t a, std::size_t b) { return rho[a] < rho[b] || (rho[a] == rho[b] && a < b); });
+  for (std::size_t k = 0; k < worst; ++k) cls[by_rho[k]] = QualityClass::WorstPercent;
+  for (std::size_t i = 0; i < rho.size(); ++i)
+    if (rho[i] < floor) cls[i] = QualityClass::BelowFloor;
+  return cls;
+}
+
+Rgb quality_colour(QualityClass c) {
+  switch (c) {
+    case QualityClass::BelowFloor: return kBelowFloorColour;
+    case QualityClass::WorstPercent: return kWorstPercentColour;
+    case QualityClass::Rest: break;
+  }
+  return kGoodQualityColour;
+}
+
 double graticule_step(double extent) {
   static constexpr double kSteps[] = {0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1, 2, 5, 10, 15, 30, 45, 60, 90};
   for (double s : kSteps)
@@ -256,12 +284,6 @@ Scene build_scene(const MeshModel& m, const PictureOptions& opt) {
     return lonlat ? q : std::array<Vec2, 3>{p[v[0]], p[v[1]], p[v[2]]};
   };
 
-  double vmin = 0, vmax = 1;
-  if (opt.colour == PictureColour::NodeValue && !opt.node_values.empty()) {
-    const auto [lo, hi] = std::minmax_element(opt.node_values.begin(), opt.node_values.end());
-    vmin = *lo, vmax = *hi > *lo ? *hi : *lo + 1;
-    if (opt.colour_max > opt.colour_min) vmin = opt.colour_min, vmax = opt.colour_max;
-  }
   auto mean_edge = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
     return (norm(m.xyz[b] - m.xyz[a]) + norm(m.xyz[c] - m.xyz[b]) + norm(m.xyz[a] - m.xyz[c])) / 3;
   };
@@ -312,7 +334,35 @@ Scene build_scene(const MeshModel& m, const PictureOptions& opt) {
     for (auto& [value, index] : category_index) index = n++;
   }
 
-  // Fills, now that the ranges are known.
+  // Fills, now that the ranges are known. A node field's range is that of the nodes of the
+  // triangles drawn, so that a regional picture spreads the colours over its own depths
+  // (the whole mesh's range would paint a shelf one colour).
+  double vmin = 0, vmax = 1;
+  if (opt.colour == PictureColour::NodeValue && opt.node_values.size() == m.xyz.size()) {
+    double lo = std::numeric_limits<double>::max(), hi = -lo;
+    for (const Drawn& d : drawn)
+      for (std::uint32_t v : d.v)
+        if (std::isfinite(opt.node_values[v])) lo = std::min(lo, opt.node_values[v]), hi = std::max(hi, opt.node_values[v]);
+    if (lo <= hi) vmin = lo, vmax = hi > lo ? hi : lo + 1;
+    if (opt.colour_max > opt.colour_min) vmin = opt.colour_min, vmax = opt.colour_max;
+  }
+  // Each drawn triangle's rho, for the quality classes and the worst triangles.
+  std::vector<double> drawn_rho;
+  if (opt.colour == PictureColour::Quality || opt.worst > 0) {
+    drawn_rho.reserve(drawn.size());
+    for (const Drawn& d : drawn) drawn_rho.push_back(rho(m.xyz[d.v[0]], m.xyz[d.v[1]], m.xyz[d.v[2]]));
+  }
+  std::vector<QualityClass> classes;
+  std::array<std::size_t, 3> class_count{};
+  std::array<double, 3> class_lo{1, 1, 1}, class_hi{0, 0, 0};   // rho range per class
+  if (opt.colour == PictureColour::Quality) {
+    classes = quality_classes(drawn_rho, opt.quality_floor);
+    for (std::size_t i = 0; i < classes.size(); ++i) {
+      const auto k = static_cast<std::size_t>(classes[i]);
+      ++class_count[k];
+      class_lo[k] = std::min(class_lo[k], drawn_rho[i]), class_hi[k] = std::max(class_hi[k], drawn_rho[i]);
+    }
+  }
   double log_lo = 0, log_span = 1;   // PictureColour::Size: log of the edge length range
   double size_lo = 0, size_hi = 0;
   if (opt.colour == PictureColour::Size) {
@@ -325,11 +375,12 @@ Scene build_scene(const MeshModel& m, const PictureOptions& opt) {
     if (hi > 0) log_lo = std::log(lo), log_span = hi > lo ? std::log(hi / lo) : 1, size_lo = lo, size_hi = hi;
   }
   if (opt.draw_triangles) {
-    for (const Drawn& d : drawn) {
+    for (std::size_t i = 0; i < drawn.size(); ++i) {
+      const Drawn& d = drawn[i];
       const auto [a, b, c] = d.v;
       Rgb fill{0xdf, 0xe9, 0xf2};
       if (opt.colour == PictureColour::Quality) {
-        fill = ramp(1 - rho(m.xyz[a], m.xyz[b], m.xyz[c]));
+        fill = quality_colour(classes[i]);
       } else if (opt.colour == PictureColour::NodeValue && opt.node_values.size() == m.xyz.size()) {
         const double v = (opt.node_values[a] + opt.node_values[b] + opt.node_values[c]) / 3;
         fill = ramp((v - vmin) / (vmax - vmin));
@@ -444,8 +495,7 @@ Scene build_scene(const MeshModel& m, const PictureOptions& opt) {
   // The worst triangles drawn, circled: by increasing rho, ties by drawing order.
   if (opt.worst > 0 && !drawn.empty()) {
     std::vector<std::pair<double, std::size_t>> by_rho(drawn.size());
-    for (std::size_t i = 0; i < drawn.size(); ++i)
-      by_rho[i] = {rho(m.xyz[drawn[i].v[0]], m.xyz[drawn[i].v[1]], m.xyz[drawn[i].v[2]]), i};
+    for (std::size_t i = 0; i < drawn.size(); ++i) by_rho[i] = {drawn_rho[i], i};
     const std::size_t n = std::min(by_rho.size(), static_cast<std::size_t>(opt.worst));
     std::partial_sort(by_rho.begin(), by_rho.begin() + static_cast<std::ptrdiff_t>(n), by_rho.end());
     for (std::size_t k = 0; k < n; ++k) {
@@ -528,10 +578,8 @@ Scene build_scene(const MeshModel& m, const PictureOptions& opt) {
   Rgb (*bar_colour)(double) = nullptr;
   if (opt.draw_triangles && !drawn.empty()) {
     if (opt.colour == PictureColour::Quality) {
+      // No bar: the classes are swatches in the legend, under this title.
       sc.bar_title = "quality rho = 2 r_in / r_circ (1: equilateral)";
-      sc.bar_min = 0, sc.bar_max = 1;
-      for (double v : {0.0, 0.2, 0.4, 0.6, 0.8, 1.0}) ticks.push_back({v, fmt::format("{:g}", v)});
-      bar_colour = [](double s) { return ramp(1 - s); };
     } else if (opt.colour == PictureColour::Size && size_hi > 0) {
       sc.bar_title = "size: mean edge length (km, log scale)";
       sc.bar_min = size_lo / 1000, sc.bar_max = size_hi / 1000;
@@ -555,6 +603,20 @@ Scene build_scene(const MeshModel& m, const PictureOptions& opt) {
     std::string text;
   };
   std::vector<Entry> entries;
+  if (!classes.empty()) {
+    const double floor = opt.quality_floor;
+    auto range = [&](QualityClass c) {
+      const auto k = static_cast<std::size_t>(c);
+      return class_count[k] == 0 ? std::string("none")
+                                 : fmt::format("{} triangle{}, rho {:.2f} to {:.2f}", class_count[k],
+                                               class_count[k] == 1 ? "" : "s", class_lo[k], class_hi[k]);
+    };
+    entries.push_back({Entry::Swatch, kBelowFloorColour,
+                       fmt::format("below the floor {:g}: {}", floor, range(QualityClass::BelowFloor))});
+    entries.push_back({Entry::Swatch, kWorstPercentColour,
+                       fmt::format("worst {:g}%: {}", 100 * kWorstFraction, range(QualityClass::WorstPercent))});
+    entries.push_back({Entry::Swatch, kGoodQualityColour, fmt::format("the rest: {}", range(QualityClass::Rest))});
+  }
   if (!sc.marks.empty()) entries.push_back({Entry::Mark, kMarkColour, sc.legend.front()});
   sc.legend.clear();
   for (std::size_t s = 0; s < sc.curve_styles.size(); ++s)
@@ -573,6 +635,13 @@ Scene build_scene(const MeshModel& m, const PictureOptions& opt) {
   if (opt.decorations && (bar_colour || !entries.empty())) {
     const double pad = 0.6 * font, top = sc.height + pad;
     double left = pad, bottom = top;
+    double first_row = top + font;   // the baseline of the entries' first row
+    if (!bar_colour && !sc.bar_title.empty()) {
+      // A title without a bar (quality): the entries are its key, in rows below it.
+      sc.texts.push_back({{pad, top + font}, sc.bar_title, font, Scene::Anchor::Start, kTextColour, false});
+      first_row = top + 2.6 * font;
+      bottom = top + 1.4 * font;
+    }
     if (bar_colour) {
       const double bar_w = std::min(0.45 * sc.width - pad, 22 * font), bar_h = font;
       const double bar_y = top + 1.5 * font;
@@ -592,7 +661,7 @@ Scene build_scene(const MeshModel& m, const PictureOptions& opt) {
       bottom = bar_y + bar_h + 1.6 * font;
     }
     const double row_h = 1.5 * font;
-    double x = left, y = top + font;   // y: the baseline of the row
+    double x = left, y = first_row;   // y: the baseline of the row
     for (const Entry& e : entries) {
       const double w = 2.2 * font + text_width(e.text, font) + 1.5 * font;
       if (x > left && x + w > sc.width - pad) x = left, y += row_h;
@@ -605,6 +674,11 @@ Scene build_scene(const MeshModel& m, const PictureOptions& opt) {
         case Entry::Dot: sc.circles.push_back({c, 0.3 * font, e.colour, 0}); break;
         case Entry::Swatch:
           sc.boxes.push_back({{x + 0.2 * font, c.y - 0.5 * font}, {x + 1.4 * font, c.y + 0.5 * font}, e.colour});
+          // Outlined: the good-quality swatch is nearly the background's colour.
+          sc.lines.push_back({{{x + 0.2 * font, c.y - 0.5 * font}, {x + 1.4 * font, c.y - 0.5 * font},
+                               {x + 1.4 * font, c.y + 0.5 * font}, {x + 0.2 * font, c.y + 0.5 * font},
+                               {x + 0.2 * font, c.y - 0.5 * font}},
+                              kTextColour, 0.5});
           break;
       }
       sc.texts.push_back({{x + 2.0 * font, y}, e.text, font, Scene::Anchor::Start, kTextColour, false});

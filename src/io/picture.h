@@ -23,10 +23,11 @@ enum class PictureView {
   Stereographic,  // Gmsh's PolarSphere (u, v) plane: the paper's Figure 4 view
 };
 
-/// Triangle fills: plain; quality 1 - rho (blue good, red bad); a node field; size, the
-/// triangle's mean edge length in 3D on a log scale from the smallest (blue) to the
-/// largest (red) triangle drawn, which shows a multiscale mesh's grading; or a category
-/// per node (the size criterion), one colour per value.
+/// Triangle fills: plain; quality in three classes (see QualityClass); a node field over
+/// the range of the triangles drawn; size, the triangle's mean edge length in 3D on a log
+/// scale from the smallest (blue) to the largest (red) triangle drawn, which shows a
+/// multiscale mesh's grading; or a category per node (the size criterion), one colour per
+/// value.
 enum class PictureColour { None, Quality, NodeValue, Size, Category };
 
 /// A zoom in degrees: west to east (east > west; east may pass 180 for a box across the
@@ -52,6 +53,9 @@ struct PictureOptions {
   /// Size (km) and NodeValue: the values at the colour bar's ends, for pictures compared
   /// side by side; values beyond are drawn in the end colours. 0, 0: the drawn range.
   double colour_min = 0, colour_max = 0;
+  /// Quality: triangles with rho below this are drawn in the alarm colour (the mesher's
+  /// Mesh.QualityFloor; a picture of a mesh made without a floor still flags them).
+  double quality_floor = 0.3;
   std::optional<PictureBox> box;    // the zoom; none: the whole mesh
   int worst = 0;                    // this many lowest-rho triangles drawn are circled
   double width_px = 1600;
@@ -136,9 +140,22 @@ struct Scene {
   // What the legend shows, for tests and readers: the colour bar's title and range, and
   // the legend's entries in order.
   std::string bar_title;
-  double bar_min = 0, bar_max = 0;      // the values at the bar's ends (rho, km, node value)
+  double bar_min = 0, bar_max = 0;      // the values at the bar's ends (km, node value)
   std::vector<std::string> legend;
 };
+
+/// Quality colours in three classes, because a mesh fit for an ocean model has almost every
+/// triangle above rho 0.9: a continuous 0..1 scale paints it one colour and hides the few
+/// triangles that matter. Below the floor (strong red) are those the model may choke on;
+/// the worst 1% of the triangles drawn (orange) show where the mesher struggles; the rest
+/// is a calm neutral that lets the coastlines and the two alarm colours stand out.
+enum class QualityClass { BelowFloor, WorstPercent, Rest };
+inline constexpr double kWorstFraction = 0.01;
+/// The class of each triangle given its rho, in order: below `floor`; else among the
+/// ceil(1% of n) lowest rho (ties by position, so the split is the same on every run);
+/// else the rest.
+std::vector<QualityClass> quality_classes(const std::vector<double>& rho, double floor);
+Rgb quality_colour(QualityClass c);
 
 /// Pictures are at most this many pixels in either direction (cairo's image limit is
 /// 32767): a very tall frame is scaled down to fit.

@@ -40,7 +40,9 @@ def main(stereomesh):
 
     legend = texts(group(whole, "legend"))
     print("legend:", legend)
-    check(legend[0].startswith("quality rho"), "the colour bar's title names rho")
+    check(legend[0].startswith("quality rho"), "the quality key's title names rho")
+    check(any(t.startswith("below the floor 0.3: ") for t in legend), "the key names the quality floor's class")
+    check(any(t.startswith("worst 1%: ") for t in legend), "the key names the worst 1%")
     for name in ("coast", "open", "river & <mouth>"):
         check(name in legend, f"the legend names the physical curve group '{name}'")
     worst = [t for t in legend if t.startswith("the 3 worst triangles (rho ")]

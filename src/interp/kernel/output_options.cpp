@@ -118,6 +118,9 @@ std::string picture_options(Interpreter& in, const io::MeshModel& mm, io::Pictur
     po.box = b;
   }
   po.worst = static_cast<int>(in.options().number("Mesh.PictureWorst"));
+  // The floor the mesher lifted triangles to; with it off (0), the default 0.3 still
+  // flags the triangles a model may choke on.
+  if (const double floor = in.options().number("Mesh.QualityFloor"); floor > 0) po.quality_floor = floor;
   po.draw_points = in.options().number("Mesh.PicturePoints") != 0;
   po.colour_min = in.options().number("Mesh.PictureColourMin");
   po.colour_max = in.options().number("Mesh.PictureColourMax");

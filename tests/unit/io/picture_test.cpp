@@ -134,7 +134,7 @@ TEST_CASE("picture: one legend entry and colour per physical curve group") {
   PictureOptions opt;
   opt.view = PictureView::LonLat;
   const Scene sc = build_scene(m, opt);
-  // The quality bar comes with no legend entry; the groups by tag.
+  // Plain fills: no key; the groups by tag.
   CHECK(sc.legend == std::vector<std::string>{"coast", "Physical Curve 8", "open"});
   for (const std::string& name : sc.legend) CHECK(has_text(sc.texts, name));
   std::vector<sm::io::Rgb> colours;
@@ -154,9 +154,8 @@ TEST_CASE("picture: the colour bar's title and range") {
   opt.colour = PictureColour::Quality;
   const Scene q = build_scene(sm::io::testing::grid_square(4), opt);
   CHECK(q.bar_title.find("rho") != std::string::npos);
-  CHECK(q.bar_min == 0);
-  CHECK(q.bar_max == 1);
-  CHECK(q.boxes.size() == 64);   // the bar's cells
+  CHECK(has_text(q.texts, q.bar_title));
+  CHECK(q.boxes.size() == 3);   // no bar: one swatch per quality class
   // Size: the range of the triangles' mean edges, in km (the model is in metres).
   MeshModel m = sm::io::testing::grid_square(8);
   for (sm::Vec3& x : m.xyz) x = {x.x * x.x * 4e5, x.y * 1e5, 0};
@@ -189,6 +188,101 @@ TEST_CASE("picture: the colour bar's title and range") {
   CHECK(d.bar_min == doctest::Approx(10));
   CHECK(d.bar_max == doctest::Approx(110));
   CHECK(has_text(d.texts, "depth (m)"));
+}
+
+TEST_CASE("picture: a depth bar spans the depths of the triangles drawn, not the whole mesh's") {
+  // sphere_patch(10) with depth 1000 + 100 row + column: the box lon 1..9, lat 41.5..44.5
+  // draws the cells of columns 5..9 and rows 1..4, whose nodes are columns 5..10 and rows
+  // 1..5: depths 1105 to 1510 (the whole mesh: 1000 to 2010).
+  const MeshModel m = sm::io::testing::sphere_patch(10);
+  PictureOptions opt;
+  opt.view = PictureView::LonLat;
+  opt.colour = PictureColour::NodeValue;
+  opt.node_values_title = "depth (m)";
+  opt.node_values.resize(m.xyz.size());
+  for (std::size_t v = 0; v < 11 * 11; ++v) opt.node_values[v] = 1000 + 100.0 * double(v / 11) + double(v % 11);
+  for (std::size_t v = 11 * 11; v < m.xyz.size(); ++v) opt.node_values[v] = 5000;   // not on a triangle
+  const Scene whole = build_scene(m, opt);
+  CHECK(whole.bar_min == 1000);
+  CHECK(whole.bar_max == 2010);
+  opt.box = box(1, 9, 41.5, 44.5);
+  const Scene zoom = build_scene(m, opt);
+  REQUIRE(zoom.triangles.size() == 2 * 5 * 4);
+  CHECK(zoom.bar_min == 1105);
+  CHECK(zoom.bar_max == 1510);
+  CHECK(has_text(zoom.texts, "1200"));
+  CHECK(!has_text(zoom.texts, "2000"));
+  // Mesh.PictureColourMin/Max still fix the range.
+  opt.colour_min = 0, opt.colour_max = 4000;
+  const Scene fixed = build_scene(m, opt);
+  CHECK(fixed.bar_min == 0);
+  CHECK(fixed.bar_max == 4000);
+}
+
+TEST_CASE("picture: quality classes, below the floor, the worst 1%, the rest") {
+  using sm::io::QualityClass;
+  // 200 triangles: one below the floor, two lowest above it tied (the first by position is
+  // the worst 1%'s second member), the rest good.
+  std::vector<double> rho(200, 0.9);
+  rho[10] = 0.1, rho[20] = 0.5, rho[30] = 0.5, rho[40] = 0.6;
+  const std::vector<QualityClass> cls = sm::io::quality_classes(rho, 0.3);
+  for (std::size_t i = 0; i < rho.size(); ++i) {
+    const QualityClass want = i == 10 ? QualityClass::BelowFloor : i == 20 ? QualityClass::WorstPercent
+                                                                           : QualityClass::Rest;
+    CHECK(cls[i] == want);
+  }
+  // Below the floor is below the floor however many: here 3 of 100, beyond the worst 1%.
+  std::vector<double> many(100, 0.95);
+  many[1] = many[50] = many[99] = 0.2;
+  std::size_t below = 0, worst = 0;
+  for (QualityClass c : sm::io::quality_classes(many, 0.3))
+    below += c == QualityClass::BelowFloor, worst += c == QualityClass::WorstPercent;
+  CHECK(below == 3);
+  CHECK(worst == 0);
+  CHECK(sm::io::quality_classes({}, 0.3).empty());
+}
+
+TEST_CASE("picture: quality fills flag exactly the triangles below the floor") {
+  // grid_square(4) with node (1, 1) pulled next to node (2, 2): slivers around it.
+  MeshModel m = sm::io::testing::grid_square(4);
+  m.xyz[6] = {0.49, 0.48, 0};
+  std::size_t below = 0, total = 0;
+  for (const sm::io::EntityMesh& e : m.entities)
+    if (e.type == sm::io::ElementType::Triangle3)
+      for (std::size_t k = 0; k < e.connectivity.size(); k += 3, ++total)
+        below += sm::rho(m.xyz[e.connectivity[k]], m.xyz[e.connectivity[k + 1]], m.xyz[e.connectivity[k + 2]]) < 0.3;
+  REQUIRE(below > 0);
+  REQUIRE(below < total);
+  PictureOptions opt;
+  opt.view = PictureView::Plane;
+  opt.colour = PictureColour::Quality;
+  const sm::io::Rgb red = sm::io::quality_colour(sm::io::QualityClass::BelowFloor);
+  const sm::io::Rgb orange = sm::io::quality_colour(sm::io::QualityClass::WorstPercent);
+  const sm::io::Rgb calm = sm::io::quality_colour(sm::io::QualityClass::Rest);
+  auto count = [](const Scene& sc, sm::io::Rgb c) {
+    return static_cast<std::size_t>(std::count_if(sc.triangles.begin(), sc.triangles.end(),
+                                                  [&](const Scene::Triangle& t) { return t.fill == c; }));
+  };
+  const Scene sc = build_scene(m, opt);
+  REQUIRE(sc.triangles.size() == total);
+  CHECK(count(sc, red) == below);
+  CHECK(count(sc, orange) == 0);   // the worst 1% (one triangle) is below the floor
+  CHECK(count(sc, calm) == total - below);
+  REQUIRE(sc.legend.size() >= 3);
+  CHECK(sc.legend[0].rfind(fmt::format("below the floor 0.3: {} triangles", below), 0) == 0);
+  CHECK(sc.legend[1] == "worst 1%: none");
+  // No floor: no red, and the one worst triangle in orange.
+  opt.quality_floor = 0;
+  const Scene no_floor = build_scene(m, opt);
+  CHECK(count(no_floor, red) == 0);
+  CHECK(count(no_floor, orange) == 1);
+  // The SVG's triangles draw the red fill exactly that many times.
+  const std::string svg = sm::io::svg_to_string(sc);
+  const std::string fill = fmt::format("fill=\"#{:02x}{:02x}{:02x}\"/>", red.r, red.g, red.b);
+  std::size_t fills = 0;
+  for (std::size_t at = svg.find("<polygon"); at != std::string::npos; at = svg.find("<polygon", at + 1))
+    fills += svg.compare(svg.find(" fill=", at), fill.size() + 1, " " + fill) == 0;
+  CHECK(fills == below);
 }
 
 TEST_CASE("picture: the worst triangles circled, lowest rho first") {
