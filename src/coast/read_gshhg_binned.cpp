@@ -17,8 +17,10 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <mutex>
 #include <fmt/format.h>
 
+#include "base/netcdf_lock.h"
 #include "field/netcdf_header.h"
 
 namespace sm::coast {
@@ -442,6 +444,7 @@ Result<Coastline> read_gshhg_binned(const std::string& path, const GshhgBinnedOp
   if (ec) return CoastError{path, -1, fmt::format("cannot read: {}", ec.message()), {}};
   // A classic-format file (GMT's older .cdf) could declare huge lists in a small header.
   if (auto why = field::check_netcdf_header_counts(path)) return CoastError{path, -1, *why, {}};
+  const std::lock_guard<std::mutex> lock(base::netcdf_lock());   // libnetcdf is not thread-safe
   try {
     return read(path, opt, bytes);
   } catch (const Fail& f) {

@@ -11,6 +11,8 @@
 #include <cstring>
 #include <fstream>
 #include <mutex>
+
+#include "base/netcdf_lock.h"
 #include <numbers>
 #include <sstream>
 
@@ -383,12 +385,10 @@ LonLatGrid read_netcdf_grid(const std::filesystem::path& file, const NetcdfGridS
   if (!std::filesystem::exists(file)) file_error(file, "no such file");
   // nc_open allocates what the header declares before it checks the file's length.
   if (auto why = check_netcdf_header_counts(file)) file_error(file, *why);
-  // libnetcdf is not thread-safe: its table of open files is shared, and two reads at once
-  // fail ("Not a valid ID") or crash. Every call into it is in this function, so one lock
-  // held from open to close makes reads from several threads safe; reads happen when a
-  // field is built, never while one is evaluated.
-  static std::mutex netcdf_lock;
-  const std::lock_guard<std::mutex> lock(netcdf_lock);
+  // libnetcdf is not thread-safe (base/netcdf_lock.h): every call into it here is in this
+  // function, held from open to close; reads happen when a field is built, never while one
+  // is evaluated.
+  const std::lock_guard<std::mutex> lock(base::netcdf_lock());
   NcFile nc(file);
   int zv = -1;
   if (!spec.z_var.empty()) {

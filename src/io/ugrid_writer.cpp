@@ -11,9 +11,11 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
+#include <mutex>
 #include <set>
 #include <utility>
 
+#include "base/netcdf_lock.h"
 #include "base/output_file.h"
 #include "io/boundary_edges.h"
 #include "exact/predicates.h"
@@ -188,6 +190,7 @@ std::string ugrid_to_bytes(const MeshModel& mesh, const OceanGridOptions& opt, s
     *error = why;
     return {};
   }
+  const std::lock_guard<std::mutex> lock(base::netcdf_lock());   // libnetcdf is not thread-safe
   const Ugrid u = gather(mesh, opt, element_part);
   if (u.nodes.empty()) {
     *error = "no 2D mesh to write (mesh with -2 or 'Mesh 2;' first)";
