@@ -33,6 +33,7 @@ Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
 """
 OLD = b"old mesh\n"
 DELAY_US = 20_000_000   # the rename held for 20 s: far longer than the test needs to act
+LINK_DELAY_US = 2_000_000   # a new target's link held 2 s after it is made: the poll sees it
 POLL_S = 0.002
 
 
@@ -69,8 +70,12 @@ def kill_traced_when(stereomesh, d, args, appeared):
     true (names not in the folder before the run) SIGKILLs stereomesh (not strace).
     Returns whether the kill happened."""
     before = set(names(d))
-    cmd = ["strace", "-f", "-qq", "-o", "/dev/null", "-e", "trace=/^rename",
-           "-e", f"inject=/^rename:delay_enter={DELAY_US}", stereomesh] + args
+    # Renames wait before they happen (the temporary is named); links of a new target wait
+    # after (the name is there): either way the poll sees the name with the run still alive,
+    # however loaded the machine (a link without a delay could finish the run between polls).
+    cmd = ["strace", "-f", "-qq", "-o", "/dev/null", "-e", "trace=/^(rename|link)",
+           "-e", f"inject=/^rename:delay_enter={DELAY_US}", "-e", f"inject=/^link:delay_exit={LINK_DELAY_US}",
+           stereomesh] + args
     tracer = subprocess.Popen(cmd, cwd=d, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     killed = False
     deadline = time.monotonic() + 120

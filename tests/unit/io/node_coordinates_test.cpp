@@ -109,7 +109,9 @@ TEST_CASE("node coordinates: MSH files in lon/lat and stereographic load in Gmsh
     MESSAGE("python3-gmsh not installed: skipped");
     return;
   }
-  const std::string script = "/tmp/sm_io_coords.py";
+  // A folder of this run's own: fixed /tmp names raced with the same test of other checkouts.
+  const sm::testing::ScratchDir dir;
+  const std::string script = (dir.path / "coords.py").string();
   // One Python run loads every file (starting Gmsh's module costs most of the time).
   std::ofstream(script) << "import sys, gmsh\n"
                            "gmsh.initialize(['x', '-v', '0'])\n"
@@ -133,7 +135,8 @@ TEST_CASE("node coordinates: MSH files in lon/lat and stereographic load in Gmsh
     const std::string want = fmt::format("81 128 40 {:.6f} {:.6f} {:.6f} {:.6f} 0.000000\n", x0, x1, y0, y1);
     for (int version : {22, 41})
       for (bool binary : {false, true}) {
-        const std::string path = fmt::format("/tmp/sm_io_coords_{}_{}_{}.msh", static_cast<int>(mode), version, binary);
+        const std::string path =
+            (dir.path / fmt::format("coords_{}_{}_{}.msh", static_cast<int>(mode), version, binary)).string();
         std::string error;
         REQUIRE(save_msh(m, {version, binary, false, false}, path, &error));
         paths += " " + path;
@@ -142,11 +145,12 @@ TEST_CASE("node coordinates: MSH files in lon/lat and stereographic load in Gmsh
     if (mode == NodeCoordinates::LonLat) CHECK(want.find("81 128 40 -10.000000 10.000000 40.000000 50.000000") == 0);
     // VTK: the same points as written (legacy ASCII, z = 0 everywhere).
     std::string error;
-    REQUIRE(save_vtk(m, {}, "/tmp/sm_io_coords.vtk", &error));
-    const std::string vtk = sm::testing::read_all("/tmp/sm_io_coords.vtk");
+    const std::string vtk_path = (dir.path / "coords.vtk").string();
+    REQUIRE(save_vtk(m, {}, vtk_path, &error));
+    const std::string vtk = sm::testing::read_all(vtk_path);
     CHECK(vtk.find("POINTS 81 double") != std::string::npos);
   }
-  const std::string out = "/tmp/sm_io_coords.txt";
+  const std::string out = (dir.path / "coords.txt").string();
   REQUIRE(std::system(("/usr/bin/python3 " + script + paths + " > " + out).c_str()) == 0);
   CHECK(sm::testing::read_all(out) == want_all);
 }

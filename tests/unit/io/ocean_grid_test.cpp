@@ -42,14 +42,21 @@ Patch patch() {
   return p;
 }
 
+// A path in this run's own folder: fixed /tmp names raced with the same test of other
+// checkouts running at once.
+std::string ocean_grid_tmp(const char* name) {
+  static const sm::testing::ScratchDir dir;
+  return (dir.path / name).string();
+}
+
 }  // namespace
 
 TEST_CASE("fort.14: round trip of nodes, depths, triangles and boundaries") {
   const Patch p = patch();
   std::string error;
-  REQUIRE(save_fort14(p.mesh, p.opt, "/tmp/sm_fort.14", &error));
+  REQUIRE(save_fort14(p.mesh, p.opt, ocean_grid_tmp("sm_fort.14"), &error));
   OceanGrid g;
-  REQUIRE(parse_ocean_grid(sm::testing::read_all("/tmp/sm_fort.14"), &g, &error));
+  REQUIRE(parse_ocean_grid(sm::testing::read_all(ocean_grid_tmp("sm_fort.14")), &g, &error));
   REQUIRE(g.xy.size() == 49);
   CHECK(g.triangles.size() == 72 * 3);
   // Node ids follow entity order (points, curves, surface), so find each
@@ -74,10 +81,10 @@ TEST_CASE("hgrid.gr3 and hgrid.ll: SCHISM flags, loops not repeated") {
   Patch p = patch();
   p.opt.lonlat = false;  // gr3 in the mesh's own coordinates, .ll in lon/lat
   std::string error;
-  REQUIRE(save_schism(p.mesh, p.opt, "/tmp/hgrid.gr3", &error));
+  REQUIRE(save_schism(p.mesh, p.opt, ocean_grid_tmp("hgrid.gr3"), &error));
   OceanGrid gr3, ll;
-  REQUIRE(parse_ocean_grid(sm::testing::read_all("/tmp/hgrid.gr3"), &gr3, &error));
-  REQUIRE(parse_ocean_grid(sm::testing::read_all("/tmp/hgrid.ll"), &ll, &error));
+  REQUIRE(parse_ocean_grid(sm::testing::read_all(ocean_grid_tmp("hgrid.gr3")), &gr3, &error));
+  REQUIRE(parse_ocean_grid(sm::testing::read_all(ocean_grid_tmp("hgrid.ll")), &ll, &error));
   REQUIRE(gr3.land.size() == 2);
   CHECK(gr3.land[0].type == 0);
   CHECK(gr3.land[1].type == 1);
@@ -94,7 +101,7 @@ TEST_CASE("ocean grids: bad input is rejected with the line") {
   std::string error;
   MeshModel lines_only = p.mesh;
   lines_only.entities.pop_back();  // drop the surface
-  CHECK_FALSE(save_fort14(lines_only, {}, "/tmp/sm_fort_bad.14", &error));
+  CHECK_FALSE(save_fort14(lines_only, {}, ocean_grid_tmp("sm_fort_bad.14"), &error));
   CHECK(error.find("no triangles") != std::string::npos);
   OceanGrid g;
   CHECK_FALSE(parse_ocean_grid("title\n2 3\n1 0 0 1\n2 1 0 1\n", &g, &error));

@@ -12,6 +12,7 @@
 #include "geo/sphere.h"
 #include "io/png_writer.h"
 #include "io/test_meshes.h"
+#include "scratch_dir.h"
 
 using namespace sm;
 using namespace sm::io;
@@ -65,6 +66,13 @@ std::size_t count_reddish(const Image& img) {
   return n;
 }
 
+// A path in this run's own folder: fixed /tmp names raced with the same test of other
+// checkouts running at once.
+std::string png_writer_tmp(const char* name) {
+  static const sm::testing::ScratchDir dir;
+  return (dir.path / name).string();
+}
+
 }  // namespace
 
 TEST_CASE("png: planar mesh, signature, size and coastline pixels") {
@@ -74,7 +82,7 @@ TEST_CASE("png: planar mesh, signature, size and coastline pixels") {
   opt.width_px = 400;
   opt.decorations = false;   // the map alone: the legend strip would add height
   std::string error;
-  const std::string path = "/tmp/sm_png_plane.png";
+  const std::string path = png_writer_tmp("sm_png_plane.png");
   REQUIRE(save_png(m, opt, path, &error));
   const std::string bytes = read_bytes(path);
   REQUIRE(bytes.size() > 33);
@@ -103,7 +111,7 @@ TEST_CASE("png: sphere mesh in lon/lat view, coastline across the middle") {
     opt.width_px = 3006;   // coastlines 3 px wide, a 3 px margin
     opt.decorations = false;
     std::string error;
-    const std::string path = "/tmp/sm_png_sphere.png";
+    const std::string path = png_writer_tmp("sm_png_sphere.png");
     REQUIRE(save_png(m, opt, path, &error));
     const Image img = read_png(path);
     REQUIRE(img.width == 3006);
@@ -166,8 +174,8 @@ TEST_CASE("picture: triangle edges only where the triangles are big enough to sh
   // pixel is the fill colour (within the rounding of antialiased overlaps).
   std::string error;
   opt.colour = PictureColour::None;
-  REQUIRE(save_png(sm::io::testing::grid_square(100), opt, "/tmp/sm_png_dense.png", &error));
-  const Image img = read_png("/tmp/sm_png_dense.png");
+  REQUIRE(save_png(sm::io::testing::grid_square(100), opt, png_writer_tmp("sm_png_dense.png"), &error));
+  const Image img = read_png(png_writer_tmp("sm_png_dense.png"));
   int fill = 0;
   for (int y = 20; y < 180; ++y)
     for (int x = 20; x < 180; ++x) {
