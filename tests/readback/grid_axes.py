@@ -16,7 +16,8 @@ import subprocess
 import sys
 import tempfile
 
-FAILED = []
+from checks import check, exit_status, main_with_binary
+
 
 CDL = """netcdf g {{
 dimensions:
@@ -59,11 +60,6 @@ CASES = [
     ("lon_irregular", "0, 1, 2, 3, 5", LAT, "longitude axis 'lon' is not evenly spaced: value 1 at index 1, expected 1.25"),
 ]
 
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        FAILED.append(what)
 
 
 def run(stereomesh, d, kind, grid):
@@ -109,12 +105,8 @@ def main(stereomesh):
         with open(os.path.join(d, "s.bin"), "wb") as f:
             f.write(struct.pack("<6d3i", 0, 0, 0, 0.5, float("nan"), 1, 3, 3, 1) + struct.pack("<9d", *[1.0] * 9))
         refused(stereomesh, d, "structured_nan", "Structured", "s.bin", "axis y has origin 0 and spacing nan")
-    if FAILED:
-        print(f"{len(FAILED)} check(s) failed")
-        return 1
-    print("all checks hold")
-    return 0
+    return exit_status()
 
 
 if __name__ == "__main__":
-    sys.exit(main(os.path.abspath(sys.argv[1])))
+    main_with_binary(main)

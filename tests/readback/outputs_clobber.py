@@ -14,18 +14,14 @@ import subprocess
 import sys
 import tempfile
 
-FAILED = []
+from checks import check, exit_status, main_with_binary
+
 
 SCRIPT = """Point(1) = {0, 0, 0, 0.5}; Point(2) = {1, 0, 0, 0.5}; Point(3) = {1, 1, 0, 0.5};
 Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 1};
 Curve Loop(1) = {1, 2, 3}; Plane Surface(1) = {1};
 """
 
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        FAILED.append(what)
 
 
 def run(stereomesh, d, args):
@@ -103,12 +99,8 @@ def main(stereomesh):
               "-o -, --stats and --diagnostics to three places: written")
         r = run(stereomesh, d, ["-2", "x.msh", "-o", "x_mesh.msh"])
         check(r.returncode == 0 and os.path.exists(os.path.join(d, "x_mesh.msh")), "x.msh meshed with -o: written")
-    if FAILED:
-        print(f"{len(FAILED)} check(s) failed")
-        return 1
-    print("all checks hold")
-    return 0
+    return exit_status()
 
 
 if __name__ == "__main__":
-    sys.exit(main(os.path.abspath(sys.argv[1])))
+    main_with_binary(main)

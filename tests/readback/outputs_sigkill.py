@@ -24,7 +24,8 @@ import sys
 import tempfile
 import time
 
-FAILED = []
+from checks import check, exit_status, main_with_binary
+
 
 SCRIPT = """Point(1) = {0, 0, 0, 0.004}; Point(2) = {1, 0, 0, 0.004};
 Point(3) = {1, 1, 0, 0.004}; Point(4) = {0, 1, 0, 0.004};
@@ -36,11 +37,6 @@ DELAY_US = 20_000_000   # the rename held for 20 s: far longer than the test nee
 LINK_DELAY_US = 2_000_000   # a new target's link held 2 s after it is made: the poll sees it
 POLL_S = 0.002
 
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        FAILED.append(what)
 
 
 def names(d):
@@ -166,12 +162,8 @@ def main(stereomesh):
         r = run(stereomesh, d, args)
         check(r.returncode == 0 and names(d) == sorted(["a.msh", "t.geo"] + keep),
               f"sweep: dead-pid temporaries of a.msh removed, the rest kept ({names(d)})")
-    if FAILED:
-        print(f"{len(FAILED)} check(s) failed")
-        return 1
-    print("all checks hold")
-    return 0
+    return exit_status()
 
 
 if __name__ == "__main__":
-    sys.exit(main(os.path.abspath(sys.argv[1])))
+    main_with_binary(main)

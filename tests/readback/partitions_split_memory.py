@@ -19,7 +19,8 @@ import subprocess
 import sys
 import tempfile
 
-FAILED = []
+from checks import check, exit_status, main_with_binary
+
 PARTS = 300
 
 SQUARE = """Point(1) = {0, 0, 0, 0.003}; Point(2) = {1, 0, 0, 0.003};
@@ -28,11 +29,6 @@ Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
 Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
 """
 
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        FAILED.append(what)
 
 
 def run(stereomesh, d, script, out_dir, limit=None):
@@ -72,12 +68,8 @@ def main(stereomesh):
         check(sorted(os.listdir(os.path.join(d, "split"))) == want, f"the split write leaves the {PARTS} files only")
         check(split_peak <= one_peak * 1.25 + (16 << 20),
               f"split peak {split_peak >> 20} MB within a quarter of the single file's {one_peak >> 20} MB")
-    if FAILED:
-        print(f"{len(FAILED)} check(s) failed")
-        return 1
-    print("all checks hold")
-    return 0
+    return exit_status()
 
 
 if __name__ == "__main__":
-    sys.exit(main(os.path.abspath(sys.argv[1])))
+    main_with_binary(main)

@@ -150,8 +150,8 @@ TEST_CASE("msh: invalid models are rejected before anything is written") {
   for (int k = 0; k < 3; ++k) bad.entities.back().connectivity.push_back(999);
   CHECK(validate_mesh_model(bad).find("out of range") != std::string::npos);
   std::string error;
-  const std::string path = "/tmp/sm_io_test_invalid.msh";
-  ::unlink(path.c_str());
+  const sm::testing::ScratchDir scratch;
+  const std::string path = scratch / "invalid.msh";
   CHECK_FALSE(save_msh(bad, {}, path, &error));
   CHECK(error.find("invalid mesh") != std::string::npos);
   CHECK(::access(path.c_str(), F_OK) != 0);
@@ -159,8 +159,8 @@ TEST_CASE("msh: invalid models are rejected before anything is written") {
 
 TEST_CASE("msh: atomic save replaces the file, a failed save leaves it intact") {
   const MeshModel m = load_square();
-  const std::string dir = "/tmp/sm_io_test_dir";
-  ::mkdir(dir.c_str(), 0755);
+  const sm::testing::ScratchDir scratch;
+  const std::string dir = scratch.path.string();
   const std::string path = dir + "/sq.msh";
   std::string error;
   REQUIRE(save_msh(m, {}, path, &error));
@@ -184,7 +184,8 @@ TEST_CASE("msh: every variant loads in Gmsh 4.8.4 with the same counts") {
   }
   const MeshModel m = sm::io::testing::grid_square(40);
   REQUIRE(validate_mesh_model(m).empty());
-  const std::string script = "/tmp/sm_io_load.py";
+  const sm::testing::ScratchDir scratch;
+  const std::string script = scratch / "load.py";
   // One Python run loads every variant (starting Gmsh's module costs most of the time).
   std::ofstream(script) << "import sys, gmsh\n"
                            "gmsh.initialize(['x', '-v', '0'])\n"
@@ -200,13 +201,13 @@ TEST_CASE("msh: every variant loads in Gmsh 4.8.4 with the same counts") {
     for (bool binary : {false, true})
       for (bool parametric : {false, true}) {
         if (version == 22 && parametric) continue;
-        const std::string path = fmt::format("/tmp/sm_io_grid_{}_{}_{}.msh", version, binary, parametric);
+        const std::string path = scratch / fmt::format("grid_{}_{}_{}.msh", version, binary, parametric);
         std::string error;
         REQUIRE(save_msh(m, {version, binary, false, parametric}, path, &error));
         paths += " " + path;
         want += path + " 1681 3200 coast,ocean\n";
       }
-  const std::string out = "/tmp/sm_io_load.txt";
+  const std::string out = scratch / "load.txt";
   REQUIRE(std::system(("/usr/bin/python3 " + script + paths + " > " + out).c_str()) == 0);
   CHECK(sm::testing::read_all(out) == want);
 }
