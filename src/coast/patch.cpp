@@ -28,6 +28,10 @@ struct PatchChain {
 
 bool is_water(int level) { return level == 2 || level == 4; }
 
+bool strictly_inside(geo::LonLat p, const LonLatBox& b) {
+  return p.lon > b.west && p.lon < b.east && p.lat > b.south && p.lat < b.north;
+}
+
 bool same(geo::LonLat a, geo::LonLat b) { return a.lon == b.lon && a.lat == b.lat; }
 
 // Length in metres of a lon/lat polyline (each step a chord of the sphere: the box steps
@@ -80,11 +84,17 @@ bool cut_ring(const Ring& r, std::size_t ri, const LonLatBox& box, bool keep_ins
   for (std::size_t s = 0; s < nseg; ++s) {
     const geo::LonLat p = r.pts[(start + s) % n], q = r.pts[(start + s + 1) % n];
     double t0, t1;
-    // A segment touching the box at one point does not cut it (no zero-length chain).
-    const bool meets = clip_segment(p, q, box, t0, t1) && t1 > t0;
+    // A segment meets the box when part of it lies strictly inside: one touching the box
+    // at a point, or running along an edge, does not (no zero-length or zero-area chain).
+    // Vertices exactly on an edge (OSM and GSHHG both hold round coordinates) are thus
+    // outside for the inside chains and inside for none, so both sides agree.
+    const bool meets = clip_segment(p, q, box, t0, t1) && t1 > t0 && strictly_inside(lerp(p, q, 0.5 * (t0 + t1)), box);
     touched |= meets;
     if (keep_inside) {
-      if (!meets) continue;
+      if (!meets) {   // an open chain left the box at its last point (on the edge)
+        if (cur) end_at(cur->pts.back(), box_param(cur->pts.back(), box));
+        continue;
+      }
       const geo::LonLat a = lerp(p, q, t0), b = lerp(p, q, t1);
       add(a, box_param(a, box));
       if (t1 < 1 || strictly_outside(q, box)) end_at(b, box_param(b, box));
