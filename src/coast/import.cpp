@@ -378,6 +378,17 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
     rings = std::move(c.rings);
   }
   rep.reversed = orient_rings(rings);
+  if (opt.patch_box) {   // the local source replaces the data inside its box
+    Coastline c;
+    c.rings = opt.patch;
+    clean(c, opt.threads);   // the same cleaning as the data's (its report is not merged)
+    orient_rings(c.rings);
+    PatchReport pr;
+    auto spliced = splice_patch(rings, c.rings, *opt.patch_box, opt.radius, &pr);
+    if (!spliced) return spliced.error();
+    rings = std::move(*spliced);
+    rep.patch = pr;
+  }
   // Land rings in lon/lat, to name the one a SeaAt point falls in.
   std::vector<Ring> land_rings;
   if (!opt.sea_at.empty())

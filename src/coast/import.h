@@ -16,6 +16,7 @@
 #include "coast/coarsen.h"
 #include "coast/coastline.h"
 #include "coast/deviation_report.h"
+#include "coast/patch.h"
 #include "coast/region.h"
 
 namespace sm::coast {
@@ -31,6 +32,10 @@ struct ImportOptions {
   /// Clip to this polygon instead (great-circle edges, region_polygon.h) when it has
   /// vertices; `region` is then its bounding box, for the readers.
   std::vector<geo::LonLat> region_polygon;
+  /// A local shoreline replacing the data inside patch_box (patch.h): land = (data's land
+  /// outside the box) U (patch land inside it). Set both or neither.
+  std::vector<Ring> patch;
+  std::optional<LonLatBox> patch_box;
   bool use_file_region = true;         // else clip to the file's own -R box when it has open pieces
   double min_area_km2 = 0;
   std::size_t min_points = 3;
@@ -160,6 +165,8 @@ struct ImportReport {
   /// How far the curves lie from the source points before and after control points were
   /// put back (deviation.h), in metres.
   DeviationReport deviation;
+  /// With a patch: its splice (steps along the patch box where the two sources disagree).
+  std::optional<PatchReport> patch;
   std::size_t count(RepairKind k) const;
   /// The human-readable report, nothing cut: the cleaning and coarsening summaries,
   /// then one line per repair entry in `repair`'s order, each with its parts.

@@ -14,6 +14,8 @@
 
 #include <fmt/format.h>
 
+#include "coast/perimeter_link.h"
+#include "coast/region_box.h"
 #include "exact/ring.h"
 
 namespace sm::coast {
@@ -31,6 +33,9 @@ double wrap360(double lon) {
   double l = std::fmod(lon, 360.0);
   return l < 0 ? l + 360.0 : l;
 }
+
+}  // namespace
+namespace region_box {
 
 bool strictly_outside(geo::LonLat p, const LonLatBox& b) {
   if (is_band(b)) return p.lat < b.south;
@@ -78,8 +83,7 @@ geo::LonLat box_point(double t, const LonLatBox& b) {
 // `corners`, when given); end points exactly a and b. `closed`: a = b is a corner too
 // (the whole box), graded on both sides but not listed (index 0 and the last point).
 std::vector<geo::LonLat> box_path(geo::LonLat a, double ta, geo::LonLat b, double tb, const LonLatBox& box,
-                                  double step, double corner_step = 0, std::vector<std::size_t>* corners = nullptr,
-                                  bool closed = false) {
+                                  double step, double corner_step, std::vector<std::size_t>* corners, bool closed) {
   if (is_band(box)) {   // eastwards along the parallel, keeping a's longitude contiguous
     double db = wrap360(b.lon - a.lon);
     if (db == 0) db = 360.0;
@@ -150,6 +154,10 @@ geo::LonLat lerp(geo::LonLat p, geo::LonLat q, double t) {
   if (t == 1) return q;
   return {p.lon + t * (q.lon - p.lon), p.lat + t * (q.lat - p.lat)};
 }
+
+}  // namespace region_box
+namespace {
+using namespace region_box;
 
 struct Chain {
   std::vector<geo::LonLat> pts;
@@ -278,31 +286,19 @@ Result<RegionResult> clip_to_region(const std::vector<Ring>& rings, const LonLat
     out.loops.push_back(std::move(loop));
     return out;
   }
-  // Events on the perimeter: chain starts (entries, land on the left) and ends. Going
-  // counter-clockwise from the start of a chain, the box runs through ocean up to the
-  // end of the next chain; ties put starts first so that a zero-length gap links.
-  struct Event { double t; int kind; std::size_t chain; };   // kind 0 start, 1 end
-  std::vector<Event> ev;
-  for (std::size_t c = 0; c < chains.size(); ++c) {
-    ev.push_back({box_param(chains[c].pts.front(), box), 0, c});
-    ev.push_back({box_param(chains[c].pts.back(), box), 1, c});
-  }
-  std::sort(ev.begin(), ev.end(), [](const Event& a, const Event& b) {
-    return a.t != b.t ? a.t < b.t : a.kind != b.kind ? a.kind < b.kind : a.chain < b.chain;
-  });
-  std::vector<std::size_t> succ(chains.size());     // chain whose end follows chain c's start
-  std::vector<std::size_t> start_pos(chains.size());
-  for (std::size_t i = 0; i < ev.size(); ++i)
-    if (ev[i].kind == 0) start_pos[ev[i].chain] = i;
-  for (std::size_t c = 0; c < chains.size(); ++c) {
-    const Event& nx = ev[(start_pos[c] + 1) % ev.size()];
-    if (nx.kind != 1)
-      return CoastError{"region", static_cast<std::int64_t>(rings[chains[c].ring].record),
-                        "coastlines cut by the region are not consistently oriented (land on the left): "
-                        "two coastlines enter the box in a row",
-                        chains[c].pts.front()};
-    succ[c] = nx.chain;
-  }
+  // Going counter-clockwise from the start of a chain (an entry, land on its left), the
+  // box runs through ocean up to the end of the next chain (perimeter_link.h, the chains
+  // taken reversed: ocean on their left).
+  std::vector<PerimeterChain> ends(chains.size());
+  for (std::size_t c = 0; c < chains.size(); ++c)
+    ends[c] = {box_param(chains[c].pts.back(), box), box_param(chains[c].pts.front(), box), false};
+  const PerimeterLink link = link_along_perimeter(ends);
+  if (link.error != PerimeterLinkError::None)
+    return CoastError{"region", static_cast<std::int64_t>(rings[chains[link.bad_chain].ring].record),
+                      "coastlines cut by the region are not consistently oriented (land on the left): "
+                      "two coastlines enter the box in a row",
+                      chains[link.bad_chain].pts.front()};
+  const std::vector<std::size_t>& succ = link.next;
   std::vector<char> used(chains.size(), 0);
   for (std::size_t c0 = 0; c0 < chains.size(); ++c0) {
     if (used[c0]) continue;

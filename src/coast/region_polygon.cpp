@@ -13,6 +13,7 @@
 
 #include <fmt/format.h>
 
+#include "coast/perimeter_link.h"
 #include "exact/ring.h"
 #include "exact/segments.h"
 
@@ -409,29 +410,17 @@ Result<RegionResult> clip_to_polygon(const std::vector<Ring>& rings, const Regio
     out.loops.push_back(std::move(loop));
     return out;
   }
-  // Linking along the perimeter, as clip_to_region does along the box: from a chain's
-  // start the polygon runs through ocean to the end of the next chain.
-  struct Event { double t; int kind; std::size_t chain; };   // kind 0 start, 1 end
-  std::vector<Event> ev;
-  for (std::size_t c = 0; c < chains.size(); ++c) {
-    ev.push_back({chains[c].t_in, 0, c});
-    ev.push_back({chains[c].t_out, 1, c});
-  }
-  std::sort(ev.begin(), ev.end(), [](const Event& a, const Event& b) {
-    return a.t != b.t ? a.t < b.t : a.kind != b.kind ? a.kind < b.kind : a.chain < b.chain;
-  });
-  std::vector<std::size_t> succ(chains.size()), start_pos(chains.size());
-  for (std::size_t i = 0; i < ev.size(); ++i)
-    if (ev[i].kind == 0) start_pos[ev[i].chain] = i;
-  for (std::size_t c = 0; c < chains.size(); ++c) {
-    const Event& nx = ev[(start_pos[c] + 1) % ev.size()];
-    if (nx.kind != 1)
-      return CoastError{"region", static_cast<std::int64_t>(rings[chains[c].ring].record),
-                        "coastlines cut by the region polygon are not consistently oriented (land on the left): "
-                        "two coastlines enter it in a row",
-                        chains[c].pts.front()};
-    succ[c] = nx.chain;
-  }
+  // Linking along the perimeter as clip_to_region does along the box (perimeter_link.h):
+  // from a chain's start the polygon runs through ocean to the end of the next chain.
+  std::vector<PerimeterChain> ends(chains.size());
+  for (std::size_t c = 0; c < chains.size(); ++c) ends[c] = {chains[c].t_out, chains[c].t_in, false};
+  const PerimeterLink link = link_along_perimeter(ends);
+  if (link.error != PerimeterLinkError::None)
+    return CoastError{"region", static_cast<std::int64_t>(rings[chains[link.bad_chain].ring].record),
+                      "coastlines cut by the region polygon are not consistently oriented (land on the left): "
+                      "two coastlines enter it in a row",
+                      chains[link.bad_chain].pts.front()};
+  const std::vector<std::size_t>& succ = link.next;
   std::vector<char> used(chains.size(), 0);
   for (std::size_t c0 = 0; c0 < chains.size(); ++c0) {
     if (used[c0]) continue;

@@ -75,6 +75,8 @@ constexpr CoastOption kOptions[] = {
     {"AccuracyField", OptType::Number, false, "size field giving gamma(x) in metres (required)"},
     {"Region", OptType::List, false, "{west, east, south, north} in degrees, or a polygon {lon1, lat1, lon2, lat2, lon3, lat3, ...} (great-circle edges)"},
     {"RegionFile", OptType::String, false, "a shapefile holding one polygon: the Region polygon, relative to the script"},
+    {"Patch", OptType::String, false, "a local shoreline file (lon/lat text, or .shp) replacing this one inside PatchBox, relative to the script"},
+    {"PatchBox", OptType::List, false, "{west, east, south, north}: the box where Patch replaces the shoreline"},
     {"MinArea", OptType::Number, false, "drop closed rings below this area (km^2)"},
     {"CurveType", OptType::String, false, "\"BSpline\" (default) or \"Line\""},
     {"MaxDeviation", OptType::Number, false, "the coast curve stays within this distance (m) of the source points (default: DeviationFactor * gamma)"},
@@ -211,6 +213,12 @@ void check_option_value(Interpreter& in, int id, const CoastOption& o, const Val
       fail_option(in, at, id, name, fmt::format("needs west < east <= west + 360 (got {} and {})", x[0], x[1]));
     if (!(x[2] < x[3]) || x[2] < -90 || x[3] > 90)
       fail_option(in, at, id, name, fmt::format("needs -90 <= south < north <= 90 (got {} and {})", x[2], x[3]));
+  } else if (name == "PatchBox") {
+    if (x.size() != 4) fail_option(in, at, id, name, fmt::format("takes a box {{west, east, south, north}}, not {} numbers", x.size()));
+    if (!(x[0] < x[1]) || x[1] - x[0] >= 360)
+      fail_option(in, at, id, name, fmt::format("needs west < east < west + 360 (got {} and {})", x[0], x[1]));
+    if (!(x[2] < x[3]) || x[2] < -90 || x[3] > 90)
+      fail_option(in, at, id, name, fmt::format("needs -90 <= south < north <= 90 (got {} and {})", x[2], x[3]));
   } else if (name == "MinArea") {
     if (x[0] < 0) fail_option(in, at, id, name, "must not be negative");
   } else if (name == "MinStraitsFactor" || name == "UTMEquatorialRadius" || name == "UTMPolarRadius") {
@@ -291,7 +299,7 @@ void exec_coast_option(Interpreter& in, const Stmt& s, const CoastlineOptionStmt
   Value v = in.eval(n.value);
   const SourceRange value_at = in.ast().expr(n.value).range;
   check_option_value(in, id, *o, v, value_at);
-  if (o->name == "FileName") v = Value::string(resolve_script_path(in.builtin_env(), v.strs().front()));
+  if (o->name == "FileName" || o->name == "Patch") v = Value::string(resolve_script_path(in.builtin_env(), v.strs().front()));
   if ((o->name == "Region" && option_of(d, "RegionFile")) || (o->name == "RegionFile" && option_of(d, "Region") &&
                                                               !option_of(d, "RegionFile")))
     fail_option(in, s.range, id, o->name,
@@ -493,6 +501,22 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
   // Cleaning and coarsening ring by ring on -nt threads (the same rings for every count).
   io.threads = static_cast<int>(in.options().number("General.NumThreads"));
   io.progress = progress_sink(in);
+  // Patch: the local shoreline, read now so that an unreadable file is an error at its
+  // statement; both Patch and PatchBox, or neither.
+  if (const Value* pf = option(d, "Patch"); pf || option(d, "PatchBox")) {
+    const char* missing = pf ? "PatchBox" : "Patch";
+    const SourceRange set_at = d.option_at.find(pf ? "Patch" : "PatchBox")->second;
+    if (!option(d, "PatchBox") || !pf)
+      fail_option(in, set_at, id, pf ? "Patch" : "PatchBox",
+                  fmt::format("needs Coastline[{}].{} too: the patch replaces the shoreline inside a box", id, missing));
+    const std::string& ppath = pf->strs().front();
+    const bool shp = ppath.size() > 4 && ppath.compare(ppath.size() - 4, 4, ".shp") == 0;
+    auto pdata = coast::read_coastline(shp ? coast::CoastFormat::Shapefile : coast::CoastFormat::LonLatText, ppath);
+    if (!pdata) fail_option(in, set_at, id, "Patch", fmt::format("cannot be read: {}", pdata.error().to_string()));
+    const auto& b = option(d, "PatchBox")->nums();
+    io.patch = std::move(pdata->rings);
+    io.patch_box = coast::LonLatBox{b[0], b[1], b[2], b[3]};
+  }
   coast::Loops2Options l2;
   if (const Value* v = option(d, "Coordinate")) l2.coordinate = *coast::parse_loops2_coordinate(v->strs().front());
   l2.utm_zone = static_cast<int>(number_option(d, "UTMZone", l2.utm_zone));
@@ -543,6 +567,15 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
     fail_coast(in, id, d, at, e, true);
   }
   const coast::CoastModel& m = *built;
+  if (m.report.patch) {   // where the two shorelines disagree at the patch box
+    const coast::PatchReport& pr = *m.report.patch;
+    in.diags().report(d.option_at.find("Patch")->second, Diag::CoastlineDeviation,
+                      fmt::format("Coastline[{}]: the patch replaces the shoreline inside its box ({} base and {} patch "
+                                  "chain(s) cut at the box); {} stretch(es) of box edge close the gaps between the two, "
+                                  "the longest {:.0f} m at lon {:.4f} lat {:.4f}",
+                                  id, pr.base_chains, pr.local_chains, pr.steps, pr.max_step_m, pr.max_step_at.lon,
+                                  pr.max_step_at.lat));
+  }
   if (m.seas_dropped > 0)
     in.diags().report(d.option_at.find("SeaAt")->second, Diag::CoastlineSeasDropped,
                       fmt::format("Coastline[{}]: {} sea(s) holding no SeaAt point dropped, {} kept", id,

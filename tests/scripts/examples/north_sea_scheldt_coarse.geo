@@ -10,8 +10,11 @@ Quiet = 1;
 Include "../../../examples/north_sea_scheldt.geo";
 Printf("%g seas, %g open-boundary curves, %g kept shore points", seas, #open[], #ShorePoints[]);
 Printf("Antwerp %.0f m, central North Sea %.0f km", antwerp, offshore / Km);
-// expect: 1 seas, 1 open-boundary curves, 640 kept shore points
+// The OpenStreetMap patch carries the estuary up to Antwerp (GSHHG alone stops 17 km short).
+Printf("Antwerp within 3 km of the shore: %g", antwerp_shore < 3e3);
+// expect: 1 seas, 1 open-boundary curves, 662 kept shore points
 // expect: Antwerp 2000 m, central North Sea 50 km
+// expect: Antwerp within 3 km of the shore: 1
 // The model meshes in 1D (the coasts at the size field, no crossing curves): Mesh.NbNodes
 // was 2,045 when written (every model point counts, control points included; with
 // Mesh.ElementsAcrossChannels = 2, the default, every channel gets two 1D edges across).
