@@ -8,6 +8,7 @@
 #include <cmath>
 #include <exception>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <optional>
 
@@ -15,9 +16,9 @@
 
 #include "base/elapsed.h"
 #include "base/parallel.h"
+#include "exact/predicates.h"
 #include "mesh/boundary_recovery.h"
 #include "mesh/transfinite_curve.h"
-#include "exact/predicates.h"
 
 namespace sm {
 
@@ -77,8 +78,8 @@ void smooth_sizes(const std::vector<double>& t, const std::vector<double>& xp, s
 
 }  // namespace
 
-CurvePrimitive integrate_curve(const geo::Curve& c, const CurveSizeFn& size, double rel_tolerance,
-                               double abs_tolerance, double smooth_ratio) {
+CurvePrimitive integrate_curve(const geo::Curve& c, const CurveSizeFn& size, double rel_tolerance, double abs_tolerance,
+                               double smooth_ratio) {
   // The curve is smooth inside each polynomial piece: start from a few intervals per piece
   // (so piece boundaries are grid points), then halve, in batches, every interval whose
   // trapezoid disagrees with the sum of its two halves.
@@ -92,7 +93,7 @@ CurvePrimitive integrate_curve(const geo::Curve& c, const CurveSizeFn& size, dou
   CurvePrimitive out;
   integrand(c, size, t, jets, h, f, xp);
   out.evaluations += t.size();
-  std::vector<std::uint8_t> active(n0, 1);   // per interval
+  std::vector<std::uint8_t> active(n0, 1);  // per interval
   std::vector<double> mid_t, mid_f, mid_xp, nt, nf, nxp;
   std::vector<std::uint8_t> nactive;
   constexpr int kMaxPasses = 40;
@@ -182,7 +183,8 @@ int min_segments(const geo::Curve& c, const Mesh1dOptions& opt) {
     case geo::CurveKind::Ellipse: {
       // The arc's share of a full turn (an ellipse's in its eccentric angle), as Gmsh
       // 4.8.4 counts Mesh.MinimumCircleNodes for both: a quarter ellipse gets a quarter.
-      const double angle = c.kind() == geo::CurveKind::Circle ? std::abs(c.circle()->angle) : std::abs(c.ellipse()->sweep);
+      const double angle =
+          c.kind() == geo::CurveKind::Circle ? std::abs(c.circle()->angle) : std::abs(c.ellipse()->sweep);
       const double n = opt.min_circle_nodes;
       np = angle > 6.28 ? static_cast<int>(n) : static_cast<int>(0.99 + (n - 1) * angle / (2 * std::numbers::pi));
       break;
@@ -213,7 +215,7 @@ MeshError make_error(MeshErrorKind kind, int a, int b, std::string msg) {
 struct PlaneGroup {
   int geometry = 0;
   double z = 0;
-  std::vector<int> curves;   // tags
+  std::vector<int> curves;  // tags
 };
 
 bool all_collinear(const std::vector<Vec2>& p) {
@@ -227,7 +229,7 @@ bool all_collinear(const std::vector<Vec2>& p) {
 }
 
 MeshError repair_group(const geo::Model& model, const PlaneGroup& g, ModelMesh& mesh, const Mesh1dOptions& opt,
-                         Mesh1dStats& st) {
+                       Mesh1dStats& st) {
   const geo::SurfaceGeometry* geom = g.geometry ? model.geometry(g.geometry) : nullptr;
   auto plane_of = [&](const MeshNode& n) { return geom ? n.uv : Vec2{n.xyz.x, n.xyz.y}; };
   BoundaryProblem prob;
@@ -251,7 +253,8 @@ MeshError repair_group(const geo::Model& model, const PlaneGroup& g, ModelMesh& 
   if (all_collinear(prob.points)) return {};
   const std::size_t original = prob.points.size();
   double lo_x = 1e300, lo_y = 1e300, hi_x = -1e300, hi_y = -1e300;
-  for (Vec2 p : prob.points) lo_x = std::min(lo_x, p.x), lo_y = std::min(lo_y, p.y), hi_x = std::max(hi_x, p.x), hi_y = std::max(hi_y, p.y);
+  for (Vec2 p : prob.points)
+    lo_x = std::min(lo_x, p.x), lo_y = std::min(lo_y, p.y), hi_x = std::max(hi_x, p.x), hi_y = std::max(hi_y, p.y);
   BoundaryOptions bo;
   bo.tolerance = model.options().tolerance * std::hypot(hi_x - lo_x, hi_y - lo_y);
   bo.max_rounds = opt.max_repair_rounds;
@@ -313,70 +316,64 @@ MeshError repair_group(const geo::Model& model, const PlaneGroup& g, ModelMesh& 
   return {};
 }
 
-}  // namespace
-
-Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
-  Mesh1dResult res;
-  ModelMesh& mesh = res.mesh;
-  mesh.dim = 1;
-  double bbox = opt.bbox_diag;
-  if (!(bbox > 0)) bbox = model.bounding_box().diagonal();
-  if (!(bbox > 0)) bbox = 1;
-  for (const auto& [tag, v] : model.vertices()) {
-    const geo::SurfaceGeometry* g = v.geometry ? model.geometry(v.geometry) : nullptr;
-    mesh.vertex_node[tag] = g ? mesh.add_node(v.xyz, v.uv) : mesh.add_node(v.xyz);
-  }
-  auto t0 = std::chrono::steady_clock::now();
-  // Gmsh: the vertex of a closed curve that no other curve touches is not tied to its
-  // control point: its node moves to the curve's start (a periodic B-spline does not pass
-  // through its first control point).
-  std::map<int, int> curves_at;   // vertex tag -> curves beginning or ending there
+// Gmsh: the vertex of a closed curve that no other curve touches is not tied to its
+// control point: its node moves to the curve's start (a periodic B-spline does not pass
+// through its first control point). Per vertex tag, the curves beginning or ending there.
+std::map<int, int> curves_at_vertices(const geo::Model& model) {
+  std::map<int, int> curves_at;
   for (const auto& [tag, mc] : model.curves()) {
     ++curves_at[mc.begin];
     if (mc.end != mc.begin) ++curves_at[mc.end];
   }
-  auto moves_vertex = [&](const geo::ModelCurve& mc) { return mc.begin == mc.end && curves_at[mc.begin] == 1; };
-  // Ends the stage on every return, errors included.
-  struct StageEnd {
-    Progress* p;
-    bool open = false;
-    void begin(std::string_view name, std::uint64_t total) {
-      end();
-      progress_begin(p, name, total);
-      open = true;
-    }
-    void end() {
-      if (open) progress_end(p);
-      open = false;
-    }
-    ~StageEnd() { end(); }
-  } stage{opt.progress};
-  stage.begin("1D", model.curves().size());
-  // One plan per curve in tag order. The curves are independent until their nodes are
-  // numbered: the integral, the placement and the nodes' coordinates are computed on
-  // opt.threads threads, each curve into its own plan; errors and exceptions are kept in
-  // the plan and taken up in tag order afterwards, so that the first failing curve is the
-  // one a serial loop would report and the nodes are numbered as one thread numbers them.
-  struct CurvePlan {
-    int tag = 0;
-    const geo::ModelCurve* mc = nullptr;
-    bool moves_vertex = false;
-    std::optional<double> lc0, lc1;
-    double stretch = 1;
-    CurvePrimitive prim;
-    int min_segs = 1;
-    double nodes = 0;
-    MeshError error;              // no shape, no end point
-    std::exception_ptr thrown;    // from the background field
-    std::vector<double> ts;       // the nodes' parameters, first 0 and last 1
-    std::vector<Vec3> xyz;        // interior nodes
-    std::vector<Vec2> uv;         // interior nodes, on a surface's curve
-    const TransfiniteCurveSpec* transfinite = nullptr;
-    bool odd = false;             // bounds a recombined surface: an odd node count
-  };
-  std::vector<CurvePlan> plans;
-  plans.reserve(model.curves().size());
-  // Curves bounding a recombined surface (Gmsh's forced odd count: meshGEdge.cpp).
+  return curves_at;
+}
+
+// Whether the node of closed curve mc's vertex moves to the curve's start.
+bool vertex_moves(const std::map<int, int>& curves_at, const geo::ModelCurve& mc) {
+  return mc.begin == mc.end && curves_at.at(mc.begin) == 1;
+}
+
+// A progress stage, ended on every return, errors included.
+struct StageEnd {
+  Progress* p;
+  bool open = false;
+  void begin(std::string_view name, std::uint64_t total) {
+    end();
+    progress_begin(p, name, total);
+    open = true;
+  }
+  void end() {
+    if (open) progress_end(p);
+    open = false;
+  }
+  ~StageEnd() { end(); }
+};
+
+// One plan per curve in tag order. The curves are independent until their nodes are
+// numbered: the integral, the placement and the nodes' coordinates are computed on
+// opt.threads threads, each curve into its own plan; errors and exceptions are kept in
+// the plan and taken up in tag order afterwards, so that the first failing curve is the
+// one a serial loop would report and the nodes are numbered as one thread numbers them.
+struct CurvePlan {
+  int tag = 0;
+  const geo::ModelCurve* mc = nullptr;
+  bool moves_vertex = false;
+  std::optional<double> lc0, lc1;
+  double stretch = 1;
+  CurvePrimitive prim;
+  int min_segs = 1;
+  double nodes = 0;
+  MeshError error;            // no shape, no end point
+  std::exception_ptr thrown;  // from the background field
+  std::vector<double> ts;     // the nodes' parameters, first 0 and last 1
+  std::vector<Vec3> xyz;      // interior nodes
+  std::vector<Vec2> uv;       // interior nodes, on a surface's curve
+  const TransfiniteCurveSpec* transfinite = nullptr;
+  bool odd = false;  // bounds a recombined surface: an odd node count
+};
+
+// Curves bounding a recombined surface (Gmsh's forced odd count: meshGEdge.cpp), sorted.
+std::vector<int> odd_count_curves(const geo::Model& model, const Mesh1dOptions& opt) {
   std::vector<int> odd_curves;
   if (const MeshConstraints* mc = opt.constraints; mc && mc->algorithm == RecombineAlgorithm::Matching) {
     for (const auto& [stag, s] : model.surfaces()) {
@@ -387,91 +384,103 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
     }
     std::sort(odd_curves.begin(), odd_curves.end());
   }
+  return odd_curves;
+}
+
+// The plans of the model's curves in tag order, transfinite and forced odd ones marked.
+std::vector<CurvePlan> make_plans(const geo::Model& model, const Mesh1dOptions& opt,
+                                  const std::map<int, int>& curves_at) {
+  std::vector<CurvePlan> plans;
+  plans.reserve(model.curves().size());
+  const std::vector<int> odd_curves = odd_count_curves(model, opt);
   for (const auto& [tag, mc] : model.curves()) {
     CurvePlan& cp = plans.emplace_back();
     cp.tag = tag;
     cp.mc = &mc;
-    cp.moves_vertex = moves_vertex(mc);
+    cp.moves_vertex = vertex_moves(curves_at, mc);
     if (opt.constraints)
       if (const auto it = opt.constraints->curves.find(tag); it != opt.constraints->curves.end())
         cp.transfinite = &it->second;
     cp.odd = !cp.transfinite && std::binary_search(odd_curves.begin(), odd_curves.end(), tag);
   }
-  const int threads = resolve_thread_count(opt.threads);
-  // Each curve's size h(t) along it: the policy with the background field, the end
-  // points' sizes and the curvature, times the Bezier stretch. The scratch for the field's
-  // points is the function's own (one per curve and pass, so per thread).
-  auto size_of = [&](const CurvePlan& cp) {
-    return [&, on = field::EntityRef{1, cp.tag}, pts = std::vector<Vec3>(), bg = std::vector<double>()](
-               std::span<const double> t, std::span<const geo::Jet3> jets, std::span<double> h) mutable {
-      if (opt.background) {
-        pts.resize(t.size());
-        bg.resize(t.size());
-        for (std::size_t i = 0; i < t.size(); ++i) pts[i] = jets[i].p;
-        opt.background->eval_on(on, pts, bg);
+  return plans;
+}
+
+// Each curve's size h(t) along it: the policy with the background field, the end
+// points' sizes and the curvature, times the Bezier stretch. The scratch for the field's
+// points is the function's own (one per curve and pass, so per thread).
+auto curve_size(const Mesh1dOptions& opt, double bbox, const CurvePlan& cp) {
+  return [&opt, bbox, &cp, on = field::EntityRef{1, cp.tag}, pts = std::vector<Vec3>(), bg = std::vector<double>()](
+             std::span<const double> t, std::span<const geo::Jet3> jets, std::span<double> h) mutable {
+    if (opt.background) {
+      pts.resize(t.size());
+      bg.resize(t.size());
+      for (std::size_t i = 0; i < t.size(); ++i) pts[i] = jets[i].p;
+      opt.background->eval_on(on, pts, bg);
+    }
+    field::SizeQuery q;
+    q.bbox_diag = bbox;
+    q.entity_dim = 1;
+    q.end_lc0 = cp.lc0;
+    q.end_lc1 = cp.lc1;
+    const bool curvature = opt.size.from_curvature > 0;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      q.t = t[i];
+      if (opt.background) q.background = bg[i];
+      if (curvature) {
+        const double d = norm(jets[i].d1);
+        q.curvature = d > 0 ? norm(cross(jets[i].d1, jets[i].d2)) / (d * d * d) : 0.0;
       }
-      field::SizeQuery q;
-      q.bbox_diag = bbox;
-      q.entity_dim = 1;
-      q.end_lc0 = cp.lc0;
-      q.end_lc1 = cp.lc1;
-      const bool curvature = opt.size.from_curvature > 0;
-      for (std::size_t i = 0; i < t.size(); ++i) {
-        q.t = t[i];
-        if (opt.background) q.background = bg[i];
-        if (curvature) {
-          const double d = norm(jets[i].d1);
-          q.curvature = d > 0 ? norm(cross(jets[i].d1, jets[i].d2)) / (d * d * d) : 0.0;
-        }
-        h[i] = cp.stretch * field::final_size(opt.size, q).size;
-      }
-    };
+      h[i] = cp.stretch * field::final_size(opt.size, q).size;
+    }
   };
-  // First every curve's size integral, hence its node count: a count beyond the budget
-  // is refused before any node is placed (a size of 1e-20 asks for 1e20 nodes).
-  auto integrate_plan = [&](CurvePlan& cp) {
-    const int tag = cp.tag;
-    const geo::ModelCurve& mc = *cp.mc;
-    if (!mc.shape) {
-      cp.error = make_error(MeshErrorKind::Invalid, tag, tag, fmt::format("curve {} has no geometry", tag));
-      return;
-    }
-    const geo::Curve& shape = *mc.shape;
-    const geo::ModelVertex* vb = model.vertex(mc.begin);
-    const geo::ModelVertex* ve = model.vertex(mc.end);
-    if (!vb || !ve) {
-      cp.error = make_error(MeshErrorKind::Invalid, tag, tag, fmt::format("curve {} lacks an end point", tag));
-      return;
-    }
-    if (vb->lc < geo::kMaxLc) cp.lc0 = vb->lc;
-    if (ve->lc < geo::kMaxLc) cp.lc1 = ve->lc;
-    // Gmsh 4.8.4 integrates a Bezier curve of degree d with |X'| / d (measured: a
-    // 3-point Bezier of length 3 at lc 0.1 gets 16 segments, a 6-point one 7), so its
-    // node count is d times smaller than the sizes ask; we follow it for compatibility.
-    if (cp.transfinite) {   // the count is the script's, the law places the nodes
-      cp.nodes = std::max(cp.transfinite->nodes, 2);
-      return;
-    }
-    cp.stretch = shape.kind() == geo::CurveKind::Bezier
-                     ? static_cast<double>(std::max<std::size_t>(1, shape.control_xyz().size() - 1))
-                     : 1.0;
-    try {
-      cp.prim = integrate_curve(shape, size_of(cp), opt.rel_tolerance, opt.abs_tolerance, opt.smooth_ratio);
-    } catch (...) {
-      cp.thrown = std::current_exception();
-      return;
-    }
-    cp.min_segs = min_segments(shape, opt);
-    cp.nodes = node_count(cp.prim, cp.min_segs);
-    if (cp.odd && cp.nodes <= kMaxCurveNodes - 1 && std::fmod(cp.nodes, 2.0) == 0) cp.nodes += 1;
-  };
-  parallel_for_chunks(
-      threads, plans.size(), 1,
-      [&](std::size_t begin, std::size_t end) {
-        for (std::size_t i = begin; i < end; ++i) integrate_plan(plans[i]);
-      },
-      [&](std::size_t done) { progress_update(opt.progress, done); });
-  double total_nodes = 0;
+}
+
+// Curve cp's size integral, hence its node count (its error or exception kept in it).
+void integrate_plan(const geo::Model& model, const Mesh1dOptions& opt, double bbox, CurvePlan& cp) {
+  const int tag = cp.tag;
+  const geo::ModelCurve& mc = *cp.mc;
+  if (!mc.shape) {
+    cp.error = make_error(MeshErrorKind::Invalid, tag, tag, fmt::format("curve {} has no geometry", tag));
+    return;
+  }
+  const geo::Curve& shape = *mc.shape;
+  const geo::ModelVertex* vb = model.vertex(mc.begin);
+  const geo::ModelVertex* ve = model.vertex(mc.end);
+  if (!vb || !ve) {
+    cp.error = make_error(MeshErrorKind::Invalid, tag, tag, fmt::format("curve {} lacks an end point", tag));
+    return;
+  }
+  if (vb->lc < geo::kMaxLc) cp.lc0 = vb->lc;
+  if (ve->lc < geo::kMaxLc) cp.lc1 = ve->lc;
+  // Gmsh 4.8.4 integrates a Bezier curve of degree d with |X'| / d (measured: a
+  // 3-point Bezier of length 3 at lc 0.1 gets 16 segments, a 6-point one 7), so its
+  // node count is d times smaller than the sizes ask; we follow it for compatibility.
+  if (cp.transfinite) {  // the count is the script's, the law places the nodes
+    cp.nodes = std::max(cp.transfinite->nodes, 2);
+    return;
+  }
+  cp.stretch = shape.kind() == geo::CurveKind::Bezier
+                   ? static_cast<double>(std::max<std::size_t>(1, shape.control_xyz().size() - 1))
+                   : 1.0;
+  try {
+    cp.prim = integrate_curve(shape, curve_size(opt, bbox, cp), opt.rel_tolerance, opt.abs_tolerance, opt.smooth_ratio);
+  } catch (...) {
+    cp.thrown = std::current_exception();
+    return;
+  }
+  cp.min_segs = min_segments(shape, opt);
+  cp.nodes = node_count(cp.prim, cp.min_segs);
+  if (cp.odd && cp.nodes <= kMaxCurveNodes - 1 && std::fmod(cp.nodes, 2.0) == 0) cp.nodes += 1;
+}
+
+// The node counts in tag order (errors and exceptions of the integration taken up there,
+// so that the first failing curve is the one a serial loop would report) against
+// kMaxCurveNodes and Mesh.MaxElements, per curve and in all: false with res.error set.
+// The total into total_nodes.
+bool check_node_budget(std::vector<CurvePlan>& plans, const Mesh1dOptions& opt, Mesh1dResult& res,
+                       double& total_nodes) {
+  total_nodes = 0;
   std::size_t largest = 0;
   for (std::size_t i = 0; i < plans.size(); ++i) {
     CurvePlan& cp = plans[i];
@@ -479,22 +488,23 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
     if (cp.thrown) std::rethrow_exception(cp.thrown);
     if (!cp.error.ok()) {
       res.error = std::move(cp.error);
-      return res;
+      return false;
     }
     res.stats.size_evaluations += cp.prim.evaluations;
     if (!std::isfinite(cp.prim.total())) {
-      res.error = make_error(MeshErrorKind::Invalid, tag, tag,
-                             fmt::format("curve {}: the size integral is not finite (a size of zero or a degenerate curve)", tag));
-      return res;
+      res.error = make_error(
+          MeshErrorKind::Invalid, tag, tag,
+          fmt::format("curve {}: the size integral is not finite (a size of zero or a degenerate curve)", tag));
+      return false;
     }
     const double limit = opt.max_elements > 0 ? std::min(opt.max_elements, kMaxCurveNodes) : kMaxCurveNodes;
     if (!(cp.nodes <= limit)) {
-      res.error = make_error(MeshErrorKind::LimitExceeded, tag, tag,
-                             fmt::format("curve {} would get about {:.1e} nodes, over the limit of {:g}", tag,
-                                         cp.nodes, limit));
+      res.error = make_error(
+          MeshErrorKind::LimitExceeded, tag, tag,
+          fmt::format("curve {} would get about {:.1e} nodes, over the limit of {:g}", tag, cp.nodes, limit));
       res.error.count = cp.nodes;
       res.error.limit = limit;
-      return res;
+      return false;
     }
     total_nodes += cp.nodes;
     if (i == 0 || cp.nodes > plans[largest].nodes) largest = i;
@@ -508,110 +518,112 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
     res.error.count = total_nodes;
     res.error.limit = opt.max_elements;
     res.error.all_curves = true;
-    return res;
+    return false;
   }
-  if (opt.max_elements > 0 && opt.coarse_check && total_nodes > opt.coarse_check_nodes) {
-    ModelMesh coarse;
-    coarse.dim = 1;
-    coarse.nodes = mesh.nodes;
-    coarse.vertex_node = mesh.vertex_node;
-    for (const CurvePlan& cp : plans) {
-      const geo::Curve& shape = *cp.mc->shape;
-      CurveMesh cm;
-      cm.tag = cp.tag;
-      cm.t = cp.transfinite ? transfinite_parameters(shape, *cp.transfinite)
-                            : place_n_nodes(cp.prim, static_cast<int>(std::min<double>(cp.nodes, kCoarseCurveNodes)));
-      cm.nodes.push_back(coarse.vertex_node.at(cp.mc->begin));
-      const bool uv = shape.on_surface();
-      for (std::size_t i = 1; i + 1 < cm.t.size(); ++i)
-        cm.nodes.push_back(uv ? coarse.add_node(shape.point(cm.t[i]), shape.eval_uv(cm.t[i]).p)
-                              : coarse.add_node(shape.point(cm.t[i])));
-      cm.nodes.push_back(coarse.vertex_node.at(cp.mc->end));
-      std::vector<geo::Jet3> jets(cm.t.size());
-      for (std::size_t i = 0; i < cm.t.size(); ++i) jets[i] = shape.eval(cm.t[i]);
-      cm.h.resize(cm.t.size());
-      size_of(cp)(cm.t, jets, cm.h);
-      for (double& h : cm.h) h /= cp.stretch;
-      coarse.curves.emplace(cp.tag, std::move(cm));
-    }
-    if (!opt.coarse_check(coarse)) {
-      res.error = make_error(MeshErrorKind::Stopped, 0, 0, "stopped before placing the 1D nodes");
-      return res;
-    }
+  return true;
+}
+
+// The coarse 1D mesh for Mesh1dOptions::coarse_check: kCoarseCurveNodes nodes per curve
+// at equal increments of its size integral (a transfinite curve its own), with the 1D
+// sizes at the nodes (CurveMesh::h), no repair.
+ModelMesh coarse_mesh(const std::vector<CurvePlan>& plans, const Mesh1dOptions& opt, double bbox,
+                      const ModelMesh& mesh) {
+  ModelMesh coarse;
+  coarse.dim = 1;
+  coarse.nodes = mesh.nodes;
+  coarse.vertex_node = mesh.vertex_node;
+  for (const CurvePlan& cp : plans) {
+    const geo::Curve& shape = *cp.mc->shape;
+    CurveMesh cm;
+    cm.tag = cp.tag;
+    cm.t = cp.transfinite ? transfinite_parameters(shape, *cp.transfinite)
+                          : place_n_nodes(cp.prim, static_cast<int>(std::min<double>(cp.nodes, kCoarseCurveNodes)));
+    cm.nodes.push_back(coarse.vertex_node.at(cp.mc->begin));
+    const bool uv = shape.on_surface();
+    for (std::size_t i = 1; i + 1 < cm.t.size(); ++i)
+      cm.nodes.push_back(uv ? coarse.add_node(shape.point(cm.t[i]), shape.eval_uv(cm.t[i]).p)
+                            : coarse.add_node(shape.point(cm.t[i])));
+    cm.nodes.push_back(coarse.vertex_node.at(cp.mc->end));
+    std::vector<geo::Jet3> jets(cm.t.size());
+    for (std::size_t i = 0; i < cm.t.size(); ++i) jets[i] = shape.eval(cm.t[i]);
+    cm.h.resize(cm.t.size());
+    curve_size(opt, bbox, cp)(cm.t, jets, cm.h);
+    for (double& h : cm.h) h /= cp.stretch;
+    coarse.curves.emplace(cp.tag, std::move(cm));
   }
-  // The nodes of each curve (parameters and coordinates), in parallel; then numbered.
-  auto place_plan = [&](CurvePlan& cp) {
-    const geo::ModelCurve& mc = *cp.mc;
-    const geo::Curve& shape = *mc.shape;
-    const geo::ModelVertex* vb = model.vertex(mc.begin);
-    const double stretch = cp.stretch;
-    const int min_segs = cp.min_segs;
-    auto size = size_of(cp);
-    std::vector<double> ts =
-        cp.transfinite ? transfinite_parameters(shape, *cp.transfinite) : place_n_nodes(cp.prim, static_cast<int>(cp.nodes));
-    cp.prim = {};   // not needed any more: its samples are the largest part of a plan
-    // Gmsh's filterPoints: an interior node closer than 0.3 h to the previous node kept
-    // (noisy curves, tight turns) is dropped, unless that leaves fewer than the minimum.
-    // Sizes come one at a time (each depends on the node kept before), so first a batch
-    // screen with every node kept decides whether the curve needs it at all.
-    std::vector<Vec3> x;   // the nodes' positions while ts is unfiltered
-    // No filter on a transfinite curve (its count is the script's) nor on a forced odd
-    // count (dropping a node would make it even again).
-    if (ts.size() > 2 && !cp.transfinite && !cp.odd) {
-      const std::size_t n = ts.size();
-      x.resize(n);
-      x[0] = cp.moves_vertex ? shape.point(0) : vb->xyz;
-      for (std::size_t i = 1; i + 1 < n; ++i) x[i] = shape.point(ts[i]);
-      std::vector<double> tm(n - 2), hm(n - 2);
-      std::vector<geo::Jet3> jm(n - 2);
+  return coarse;
+}
+
+// The nodes of curve cp: their parameters and coordinates into cp.ts, cp.xyz, cp.uv.
+void place_plan(const geo::Model& model, const Mesh1dOptions& opt, double bbox, CurvePlan& cp) {
+  const geo::ModelCurve& mc = *cp.mc;
+  const geo::Curve& shape = *mc.shape;
+  const geo::ModelVertex* vb = model.vertex(mc.begin);
+  const double stretch = cp.stretch;
+  const int min_segs = cp.min_segs;
+  auto size = curve_size(opt, bbox, cp);
+  std::vector<double> ts = cp.transfinite ? transfinite_parameters(shape, *cp.transfinite)
+                                          : place_n_nodes(cp.prim, static_cast<int>(cp.nodes));
+  cp.prim = {};  // not needed any more: its samples are the largest part of a plan
+  // Gmsh's filterPoints: an interior node closer than 0.3 h to the previous node kept
+  // (noisy curves, tight turns) is dropped, unless that leaves fewer than the minimum.
+  // Sizes come one at a time (each depends on the node kept before), so first a batch
+  // screen with every node kept decides whether the curve needs it at all.
+  std::vector<Vec3> x;  // the nodes' positions while ts is unfiltered
+  // No filter on a transfinite curve (its count is the script's) nor on a forced odd
+  // count (dropping a node would make it even again).
+  if (ts.size() > 2 && !cp.transfinite && !cp.odd) {
+    const std::size_t n = ts.size();
+    x.resize(n);
+    x[0] = cp.moves_vertex ? shape.point(0) : vb->xyz;
+    for (std::size_t i = 1; i + 1 < n; ++i) x[i] = shape.point(ts[i]);
+    std::vector<double> tm(n - 2), hm(n - 2);
+    std::vector<geo::Jet3> jm(n - 2);
+    for (std::size_t i = 1; i + 1 < n; ++i) {
+      tm[i - 1] = i == 1 ? ts[1] : 0.5 * (ts[i] + ts[i - 1]);
+      jm[i - 1] = shape.eval(tm[i - 1]);
+    }
+    size(tm, jm, hm);
+    bool close = false;
+    for (std::size_t i = 1; i + 1 < n && !close; ++i) close = norm(x[i] - x[i - 1]) < 0.5 * hm[i - 1] / stretch;
+    if (close) {
+      std::vector<std::uint8_t> drop(n, 0);
+      std::size_t dropped = 0, prev = 0;
       for (std::size_t i = 1; i + 1 < n; ++i) {
-        tm[i - 1] = i == 1 ? ts[1] : 0.5 * (ts[i] + ts[i - 1]);
-        jm[i - 1] = shape.eval(tm[i - 1]);
-      }
-      size(tm, jm, hm);
-      bool close = false;
-      for (std::size_t i = 1; i + 1 < n && !close; ++i) close = norm(x[i] - x[i - 1]) < 0.5 * hm[i - 1] / stretch;
-      if (close) {
-        std::vector<std::uint8_t> drop(n, 0);
-        std::size_t dropped = 0, prev = 0;
-        for (std::size_t i = 1; i + 1 < n; ++i) {
-          const double t = i == 1 ? ts[1] : 0.5 * (ts[i] + ts[prev]);
-          const geo::Jet3 j = shape.eval(t);
-          double h = 0;
-          size(std::span<const double>(&t, 1), std::span<const geo::Jet3>(&j, 1), std::span<double>(&h, 1));
-          if (norm(x[i] - x[prev]) < 0.3 * h / stretch) {
-            drop[i] = 1;
-            ++dropped;
-          } else {
-            prev = i;
-          }
-        }
-        if (dropped > 0 && static_cast<int>(n - 2 - dropped) >= min_segs + 1 - 2) {
-          std::vector<double> kept;
-          for (std::size_t i = 0; i < n; ++i)
-            if (!drop[i]) kept.push_back(ts[i]);
-          ts.swap(kept);
-          x.clear();
+        const double t = i == 1 ? ts[1] : 0.5 * (ts[i] + ts[prev]);
+        const geo::Jet3 j = shape.eval(t);
+        double h = 0;
+        size(std::span<const double>(&t, 1), std::span<const geo::Jet3>(&j, 1), std::span<double>(&h, 1));
+        if (norm(x[i] - x[prev]) < 0.3 * h / stretch) {
+          drop[i] = 1;
+          ++dropped;
+        } else {
+          prev = i;
         }
       }
-    }
-    const bool on_surface = shape.on_surface();
-    const std::size_t interior = ts.size() >= 2 ? ts.size() - 2 : 0;
-    cp.xyz.resize(interior);
-    if (on_surface) cp.uv.resize(interior);
-    for (std::size_t i = 0; i < interior; ++i) {
-      cp.xyz[i] = x.empty() ? shape.point(ts[i + 1]) : x[i + 1];
-      if (on_surface) cp.uv[i] = shape.eval_uv(ts[i + 1]).p;
-    }
-    cp.ts = std::move(ts);
-  };
-  parallel_for_chunks(threads, plans.size(), 1, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) try {
-        place_plan(plans[i]);
-      } catch (...) {
-        plans[i].thrown = std::current_exception();
+      if (dropped > 0 && static_cast<int>(n - 2 - dropped) >= min_segs + 1 - 2) {
+        std::vector<double> kept;
+        for (std::size_t i = 0; i < n; ++i)
+          if (!drop[i]) kept.push_back(ts[i]);
+        ts.swap(kept);
+        x.clear();
       }
-  });
+    }
+  }
+  const bool on_surface = shape.on_surface();
+  const std::size_t interior = ts.size() >= 2 ? ts.size() - 2 : 0;
+  cp.xyz.resize(interior);
+  if (on_surface) cp.uv.resize(interior);
+  for (std::size_t i = 0; i < interior; ++i) {
+    cp.xyz[i] = x.empty() ? shape.point(ts[i + 1]) : x[i + 1];
+    if (on_surface) cp.uv[i] = shape.eval_uv(ts[i + 1]).p;
+  }
+  cp.ts = std::move(ts);
+}
+
+// The placed nodes numbered into `mesh`, curve by curve in tag order (exceptions of the
+// placement rethrown there), as one thread numbers them.
+void number_nodes(std::vector<CurvePlan>& plans, ModelMesh& mesh) {
   for (CurvePlan& cp : plans) {
     if (cp.thrown) std::rethrow_exception(cp.thrown);
     const geo::ModelCurve& mc = *cp.mc;
@@ -626,47 +638,106 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
     cp.xyz = {}, cp.uv = {};
     mesh.curves.emplace(cp.tag, std::move(cm));
   }
-  stage.end();
+}
+
+// The nodes of the vertices that move (vertex_moves) put at their curve's start.
+void move_closed_curve_vertices(const geo::Model& model, const std::map<int, int>& curves_at, ModelMesh& mesh) {
   for (const auto& [tag, mc] : model.curves()) {
-    if (!moves_vertex(mc)) continue;
+    if (!vertex_moves(curves_at, mc)) continue;
     MeshNode& n = mesh.nodes[mesh.vertex_node.at(mc.begin)];
     n.xyz = mc.shape->point(0);
     if (mc.shape->on_surface()) n.uv = mc.shape->eval_uv(0).p, n.has_uv = true;
   }
+}
+
+// The repair of crossing 1D meshes: the curves bounding or embedded in a surface (all
+// with opt.repair_all_curves) grouped by the plane they are drawn in, each group's
+// crossings repaired (repair_group); the first error.
+MeshError repair_intersections(const geo::Model& model, const Mesh1dOptions& opt, ModelMesh& mesh, Mesh1dStats& st) {
+  std::map<int, PlaneGroup> groups;  // geometry tag -> curves; 0: Euclidean z = const
+  bool euclid_planar = true;
+  std::optional<double> euclid_z;
+  std::vector<int> in_surface;  // curves bounding or embedded in a surface
+  for (const auto& [stag, s] : model.surfaces()) {
+    for (int l : s.loops)
+      if (const geo::ModelCurveLoop* loop = model.curve_loop(std::abs(l)))
+        for (int c : loop->curves) in_surface.push_back(std::abs(c));
+    in_surface.insert(in_surface.end(), s.embedded_curves.begin(), s.embedded_curves.end());
+  }
+  std::sort(in_surface.begin(), in_surface.end());
+  for (const auto& [tag, mc] : model.curves()) {
+    if (!opt.repair_all_curves && !std::binary_search(in_surface.begin(), in_surface.end(), tag)) continue;
+    const int key = mc.shape->on_surface() ? mc.geometry : 0;
+    if (key == 0) {
+      for (std::uint32_t n : mesh.curves.at(tag).nodes) {
+        if (!euclid_z) euclid_z = mesh.nodes[n].xyz.z;
+        if (mesh.nodes[n].xyz.z != *euclid_z) euclid_planar = false;
+      }
+    }
+    PlaneGroup& g = groups[key];
+    g.geometry = key;
+    g.curves.push_back(tag);
+  }
+  for (auto& [key, g] : groups) {
+    if (key == 0 && !euclid_planar) continue;
+    if (key == 0) g.z = euclid_z.value_or(0.0);
+    MeshError e = repair_group(model, g, mesh, opt, st);
+    if (!e.ok()) return e;
+  }
+  return {};
+}
+
+}  // namespace
+
+Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
+  Mesh1dResult res;
+  ModelMesh& mesh = res.mesh;
+  mesh.dim = 1;
+  double bbox = opt.bbox_diag;
+  if (!(bbox > 0)) bbox = model.bounding_box().diagonal();
+  if (!(bbox > 0)) bbox = 1;
+  for (const auto& [tag, v] : model.vertices()) {
+    const geo::SurfaceGeometry* g = v.geometry ? model.geometry(v.geometry) : nullptr;
+    mesh.vertex_node[tag] = g ? mesh.add_node(v.xyz, v.uv) : mesh.add_node(v.xyz);
+  }
+  auto t0 = std::chrono::steady_clock::now();
+  const std::map<int, int> curves_at = curves_at_vertices(model);
+  StageEnd stage{opt.progress};
+  stage.begin("1D", model.curves().size());
+  std::vector<CurvePlan> plans = make_plans(model, opt, curves_at);
+  const int threads = resolve_thread_count(opt.threads);
+  // First every curve's size integral, hence its node count: a count beyond the budget
+  // is refused before any node is placed (a size of 1e-20 asks for 1e20 nodes).
+  parallel_for_chunks(
+      threads, plans.size(), 1,
+      [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) integrate_plan(model, opt, bbox, plans[i]);
+      },
+      [&](std::size_t done) { progress_update(opt.progress, done); });
+  double total_nodes = 0;
+  if (!check_node_budget(plans, opt, res, total_nodes)) return res;
+  if (opt.max_elements > 0 && opt.coarse_check && total_nodes > opt.coarse_check_nodes &&
+      !opt.coarse_check(coarse_mesh(plans, opt, bbox, mesh))) {
+    res.error = make_error(MeshErrorKind::Stopped, 0, 0, "stopped before placing the 1D nodes");
+    return res;
+  }
+  // The nodes of each curve (parameters and coordinates), in parallel; then numbered.
+  parallel_for_chunks(threads, plans.size(), 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) try {
+        place_plan(model, opt, bbox, plans[i]);
+      } catch (...) {
+        plans[i].thrown = std::current_exception();
+      }
+  });
+  number_nodes(plans, mesh);
+  stage.end();
+  move_closed_curve_vertices(model, curves_at, mesh);
   res.stats.seconds_integrate = seconds_since(t0);
   if (opt.repair_intersections) {
     t0 = std::chrono::steady_clock::now();
     stage.begin("1D repair", 0);
-    std::map<int, PlaneGroup> groups;   // geometry tag -> curves; 0: Euclidean z = const
-    bool euclid_planar = true;
-    std::optional<double> euclid_z;
-    std::vector<int> in_surface;   // curves bounding or embedded in a surface
-    for (const auto& [stag, s] : model.surfaces()) {
-      for (int l : s.loops)
-        if (const geo::ModelCurveLoop* loop = model.curve_loop(std::abs(l)))
-          for (int c : loop->curves) in_surface.push_back(std::abs(c));
-      in_surface.insert(in_surface.end(), s.embedded_curves.begin(), s.embedded_curves.end());
-    }
-    std::sort(in_surface.begin(), in_surface.end());
-    for (const auto& [tag, mc] : model.curves()) {
-      if (!opt.repair_all_curves && !std::binary_search(in_surface.begin(), in_surface.end(), tag)) continue;
-      const int key = mc.shape->on_surface() ? mc.geometry : 0;
-      if (key == 0) {
-        for (std::uint32_t n : mesh.curves.at(tag).nodes) {
-          if (!euclid_z) euclid_z = mesh.nodes[n].xyz.z;
-          if (mesh.nodes[n].xyz.z != *euclid_z) euclid_planar = false;
-        }
-      }
-      PlaneGroup& g = groups[key];
-      g.geometry = key;
-      g.curves.push_back(tag);
-    }
-    for (auto& [key, g] : groups) {
-      if (key == 0 && !euclid_planar) continue;
-      if (key == 0) g.z = euclid_z.value_or(0.0);
-      res.error = repair_group(model, g, mesh, opt, res.stats);
-      if (!res.ok()) return res;
-    }
+    res.error = repair_intersections(model, opt, mesh, res.stats);
+    if (!res.ok()) return res;
     res.stats.seconds_repair = seconds_since(t0);
   }
   res.stats.curves = mesh.curves.size();

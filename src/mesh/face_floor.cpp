@@ -1,0 +1,260 @@
+// Step 7 of a face: the quality floor with the face's curves, corners and map to space,
+// its undo when the face would end worse, and its report (face_floor.h).
+#include "mesh/face_floor.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "exact/triangle_rho.h"
+#include "mesh/modify/optimize.h"
+#include "mesh/quality_floor.h"
+
+namespace sm {
+namespace {
+
+// The floor's curve splits while it runs: the curve of each boundary edge (local vertex
+// pair, smaller first; embedded curves too), the split asked last, the nodes added.
+struct FloorCurves {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> edge_curve_of;
+  struct PendingSplit {
+    int curve = 0;
+    std::size_t k = 0;  // between cm.nodes[k] and cm.nodes[k + 1]
+    double t = 0;
+    MeshNode node;
+  } pending;
+  std::vector<std::pair<int, std::uint32_t>> floor_nodes;  // (curve, node) the floor added
+};
+
+// Whether model surface `tag` is bounded by curve c or embeds it.
+bool surface_uses_curve(const geo::Model& model, int tag, int c) {
+  const geo::ModelSurface* s = model.surface(tag);
+  if (!s) return false;
+  for (int l : s->loops)
+    if (const geo::ModelCurveLoop* loop = model.curve_loop(std::abs(l)))
+      for (int lc : loop->curves)
+        if (std::abs(lc) == c) return true;
+  return std::find(s->embedded_curves.begin(), s->embedded_curves.end(), c) != s->embedded_curves.end();
+}
+
+// The point in space of local vertex v: its node, or its plane point mapped.
+Vec3 space_of(const FaceWork& f, VertexId v) {
+  if (v.value < f.global.size() && f.global[v.value] != kNoLocal) return f.mesh.nodes[f.global[v.value]].xyz;
+  return f.plane.to_space(f.tri.xy[v.value]);
+}
+
+// The curve of the face edge between local vertices a and b (0: none).
+int curve_of(const FloorCurves& fl, VertexId a, VertexId b) {
+  const auto it = fl.edge_curve_of.find(std::minmax(a.value, b.value));
+  return it == fl.edge_curve_of.end() ? 0 : it->second;
+}
+
+// The floor's report: the triangles left at corners too sharp for it (the first few
+// listed), then the rest with the place of the worst.
+void report_floor(FaceWork& f, const QualityFloorResult& r) {
+  const double q = f.opt.quality_floor;
+  auto place = [&f](VertexId v) { return f.where_text(space_of(f, v)); };
+  if (!r.sharp.empty()) {
+    constexpr std::size_t kListed = 8;
+    std::string list;
+    for (std::size_t i = 0; i < std::min(r.sharp.size(), kListed); ++i)
+      list += fmt::format("{}{:.1f} degrees at {}", i ? "; " : "", r.sharp[i].degrees, place(r.sharp[i].v));
+    if (r.sharp.size() > kListed) list += fmt::format("; and {} more", r.sharp.size() - kListed);
+    f.res.quality_warnings.push_back(fmt::format(
+        "surface {}: {} triangle{} below Mesh.QualityFloor = {:g} where the boundary makes an angle too sharp for it "
+        "(under {:.1f} degrees): {}",
+        f.tag, r.at_sharp, r.at_sharp == 1 ? "" : "s", q, sharp_angle_limit(q) * 180 / geo::kPi, list));
+  }
+  const std::uint32_t rest = r.below_after - r.at_sharp;
+  if (rest > 0) {
+    // The worst of them, for the place.
+    double worst = 2;
+    TriId wt;
+    for (std::uint32_t t = 0; t < f.tri.num_slots(); ++t) {
+      if (!f.tri.alive(TriId{t})) continue;
+      const double rt = rho(space_of(f, f.tri.vertex(TriId{t}, 0)), space_of(f, f.tri.vertex(TriId{t}, 1)),
+                            space_of(f, f.tri.vertex(TriId{t}, 2)));
+      if (rt < worst) worst = rt, wt = TriId{t};
+    }
+    const Vec3 c =
+        (space_of(f, f.tri.vertex(wt, 0)) + space_of(f, f.tri.vertex(wt, 1)) + space_of(f, f.tri.vertex(wt, 2))) / 3.0;
+    f.res.quality_warnings.push_back(fmt::format(
+        "surface {}: {} triangle{} still below Mesh.QualityFloor = {:g} after {} round{} and {} new points (the work "
+        "is bounded{}); the worst, rho {:.4f}, near {}",
+        f.tag, rest, rest == 1 ? "" : "s", q, r.rounds, r.rounds == 1 ? "" : "s", r.curve_splits + r.interior_points,
+        r.out_of_work ? fmt::format(": its budget of {} operations ran out", r.work_budget) : std::string(), worst,
+        f.where_text(c)));
+  }
+}
+
+}  // namespace
+
+void raise_face_floor(FaceWork& f) {
+  if (!(f.opt.quality_floor > 0)) return;
+  FloorCurves fl;
+  for (std::size_t i = 0; i < f.edges.size(); ++i)
+    fl.edge_curve_of[std::minmax(f.edges[i].first.value, f.edges[i].second.value)] = f.edge_curve[i];
+  std::vector<std::uint32_t> corners;  // global nodes of model vertices, sorted
+  for (const auto& [vt, node] : f.mesh.vertex_node) corners.push_back(node);
+  std::sort(corners.begin(), corners.end());
+  FloorFace face;
+  face.space = [&f](VertexId v) { return space_of(f, v); };
+  face.to_space = [&f](Vec2 p) { return f.plane.to_space(p); };
+  face.is_corner = [&f, &corners](VertexId v) {
+    return v.value < f.global.size() && std::binary_search(corners.begin(), corners.end(), f.global[v.value]);
+  };
+  face.curve_point = [&f, &fl](VertexId a, VertexId b, double along) -> std::optional<Vec2> {
+    const int c = curve_of(fl, a, b);
+    const geo::ModelCurve* mc = c > 0 ? f.model.curve(c) : nullptr;
+    const auto it = f.mesh.curves.find(c);
+    if (!mc || !mc->shape || it == f.mesh.curves.end()) return std::nullopt;
+    // A curve a face meshed before this one also holds stays as it is: that face's
+    // triangle on the edge would have to be cut in two, unoptimised (a fan of slivers
+    // after a few splits). Faces meshed later see the new nodes in the curve's 1D mesh.
+    for (const auto& [st, sm] : f.mesh.surfaces)
+      if (st != f.tag && surface_uses_curve(f.model, st, c)) return std::nullopt;
+    const CurveMesh& cm = it->second;
+    const std::uint32_t ga = f.global[a.value], gb = f.global[b.value];
+    for (std::size_t k = 0; k + 1 < cm.nodes.size(); ++k) {
+      if (!((cm.nodes[k] == ga && cm.nodes[k + 1] == gb) || (cm.nodes[k] == gb && cm.nodes[k + 1] == ga))) continue;
+      // On the curve itself, so the geometry does not change; `along` from the node of a.
+      fl.pending.curve = c;
+      fl.pending.k = k;
+      const double fk = cm.nodes[k] == ga ? along : 1 - along;
+      fl.pending.t = (1 - fk) * cm.t[k] + fk * cm.t[k + 1];
+      const geo::Curve& shape = *mc->shape;
+      fl.pending.node = shape.on_surface() ? MeshNode{shape.point(fl.pending.t), shape.eval_uv(fl.pending.t).p, true}
+                                           : MeshNode{shape.point(fl.pending.t), {}, false};
+      return f.plane.node_plane(fl.pending.node);
+    }
+    return std::nullopt;
+  };
+  face.curve_split_done = [&f, &fl](VertexId a, VertexId b, VertexId v) {
+    f.mesh.nodes.push_back(fl.pending.node);
+    const std::uint32_t node = static_cast<std::uint32_t>(f.mesh.nodes.size() - 1);
+    CurveMesh& cm = f.mesh.curves.at(fl.pending.curve);
+    const auto at = static_cast<std::ptrdiff_t>(fl.pending.k + 1);
+    cm.nodes.insert(cm.nodes.begin() + at, node);
+    cm.t.insert(cm.t.begin() + at, fl.pending.t);
+    fl.floor_nodes.emplace_back(fl.pending.curve, node);
+    if (cm.h.size() > fl.pending.k + 1)
+      cm.h.insert(cm.h.begin() + at, 0.5 * (cm.h[fl.pending.k] + cm.h[fl.pending.k + 1]));
+    if (f.global.size() <= v.value) f.global.resize(v.value + 1, kNoLocal);
+    f.global[v.value] = node;
+    fl.edge_curve_of.erase(std::minmax(a.value, b.value));
+    fl.edge_curve_of[std::minmax(a.value, v.value)] = fl.pending.curve;
+    fl.edge_curve_of[std::minmax(v.value, b.value)] = fl.pending.curve;
+  };
+  // First with transient losses allowed (a split may leave a triangle at half the one
+  // worked on, for the next rounds to mend); if the face ends worse than it started (its
+  // worst rho lower, or more triangles below q), everything is put back and the floor
+  // runs again never going below the face's starting worst.
+  const auto space = [&f](VertexId v) { return space_of(f, v); };
+  double worst_start = 1;
+  const std::uint32_t below_start = count_below(f.tri, space, f.opt.quality_floor, &worst_start);
+  if (below_start == 0) return;
+  const TriangleStore before = f.tri;
+  const std::size_t nodes_start = f.mesh.nodes.size(), global_start = f.global.size();
+  QualityFloorResult r, left;
+  // Undo: the triangulation, the curve nodes (appended last, so the node array is cut
+  // back) and the bookkeeping.
+  const auto put_back = [&] {
+    f.tri = before;
+    for (auto it = fl.floor_nodes.rbegin(); it != fl.floor_nodes.rend(); ++it) {
+      CurveMesh& cm = f.mesh.curves.at(it->first);
+      const auto k = std::find(cm.nodes.begin(), cm.nodes.end(), it->second) - cm.nodes.begin();
+      cm.nodes.erase(cm.nodes.begin() + k);
+      cm.t.erase(cm.t.begin() + k);
+      if (static_cast<std::size_t>(k) < cm.h.size()) cm.h.erase(cm.h.begin() + k);
+    }
+    fl.floor_nodes.clear();
+    f.mesh.nodes.resize(nodes_start);
+    f.global.resize(global_start);
+    fl.edge_curve_of.clear();
+    for (std::size_t i = 0; i < f.edges.size(); ++i)
+      fl.edge_curve_of[std::minmax(f.edges[i].first.value, f.edges[i].second.value)] = f.edge_curve[i];
+  };
+  // An internal error of the floor (a walk that did not end: the triangulation is not
+  // consistent there) puts the face back as it was before the floor, a valid mesh, and is
+  // reported with its place.
+  const auto faulted = [&](const QualityFloorResult& q) {
+    if (q.fault.empty()) return false;
+    const std::string at = f.where_text(space_of(f, q.fault_at));
+    put_back();
+    f.res.quality_warnings.push_back(
+        fmt::format("surface {}: internal error: {} near {}; the face is left as it was before Mesh.QualityFloor",
+                    f.tag, q.fault, at));
+    return true;
+  };
+  // Above the floor that Ruppert's refinement can reach (its 20.7-degree angle bound,
+  // rho 0.59: higher floors make sharp_angle_limit wider) the loss-allowing run cannot
+  // converge and only spends its budget: the never-worse run alone.
+  constexpr double kRefinementAngle = 20.7 * geo::kPi / 180;
+  const bool beyond_refinement = sharp_angle_limit(f.opt.quality_floor) > kRefinementAngle;
+  bool worse = false;
+  for (const bool never_worse : {false, true}) {
+    if (!never_worse && beyond_refinement) continue;
+    if (never_worse && !beyond_refinement) put_back();
+    QualityFloorOptions fo;
+    fo.floor = f.opt.quality_floor;
+    fo.never_below_start = never_worse;
+    if (beyond_refinement) {
+      // Most of what is below such a floor stays below it: a quarter of the budgets (one
+      // point per triangle below it at the start), so that the run stays within about
+      // twice the floor-off time (measured on the examples at 0.9).
+      fo.max_points = below_start + 256;
+      fo.max_work = 4 * std::uint64_t{below_start} + 64 * std::uint64_t(fo.max_rounds) + 1024;
+    }
+    r = raise_quality_floor(f.tri, face, fo);
+    if (faulted(r)) return;
+    if (r.changed() && f.opt.smoothing > 0 && f.opt.quality_pass) {
+      // The quality pass again, on what the floor changed: only triangles below the floor
+      // (and a margin) are worked on; the rest of the face was optimised already.
+      OptimizeOptions oo;
+      oo.threshold = std::min(0.9, f.opt.quality_floor + 0.2);
+      oo.sacrifice_below = oo.threshold;
+      oo.compound_below = std::min(oo.threshold, f.opt.quality_floor + 0.1);
+      optimize_quality(f.tri, f.fixed_count, oo);
+    }
+    // What is left, measured after the quality pass (no rounds: only the count).
+    QualityFloorOptions count_only = fo;
+    count_only.max_rounds = 0;
+    left = raise_quality_floor(f.tri, face, count_only);
+    if (faulted(left)) return;
+    double worst_end = 1;
+    count_below(f.tri, space, f.opt.quality_floor, &worst_end);
+    worse = r.changed() && !(worst_end >= worst_start && left.below_after <= below_start);
+    if (!worse) break;
+  }
+  if (worse) {
+    // Even the never-worse run (its quality pass may lose) left more triangles below the
+    // floor, or a worse one, than the face started with: the face goes back as it was.
+    const std::uint32_t ended = left.below_after;
+    put_back();
+    QualityFloorOptions count_only;
+    count_only.floor = f.opt.quality_floor;
+    count_only.max_rounds = 0;
+    left = raise_quality_floor(f.tri, face, count_only);
+    if (faulted(left)) return;
+    f.res.quality_warnings.push_back(fmt::format(
+        "surface {}: Mesh.QualityFloor = {:g} left {} triangles below it where the face had {} (after {} round{} and "
+        "{} new points); the face is left as it was before the floor",
+        f.tag, f.opt.quality_floor, ended, below_start, r.rounds, r.rounds == 1 ? "" : "s",
+        r.curve_splits + r.interior_points));
+    r = QualityFloorResult{};
+  }
+  f.res.stats.floor_curve_splits += r.curve_splits;
+  f.res.stats.floor_points += r.interior_points;
+  left.rounds = r.rounds, left.curve_splits = r.curve_splits, left.interior_points = r.interior_points;
+  left.below_before = r.below_before;
+  left.out_of_work = r.out_of_work, left.work = r.work, left.work_budget = r.work_budget;
+  report_floor(f, left);
+}
+
+}  // namespace sm

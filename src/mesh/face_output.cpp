@@ -1,0 +1,77 @@
+// Step 8 of a face: interior nodes to 3D, elements oriented (and recombined), the
+// surface's mesh stored (face_output.h).
+#include "mesh/face_output.h"
+
+#include <algorithm>
+#include <utility>
+
+#include "mesh/face_sizing.h"
+#include "mesh/recombine.h"
+
+namespace sm {
+
+void append_elements(SurfaceMesh& out, const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                     const std::vector<std::array<std::uint32_t, 4>>& quads, bool flip,
+                     std::span<const std::uint32_t> node) {
+  out.triangles.reserve(out.triangles.size() + triangles.size());
+  for (const auto& t : triangles) {
+    const std::uint32_t a = node[t[0]], b = node[t[1]], c = node[t[2]];
+    out.triangles.push_back(flip ? std::array<std::uint32_t, 3>{a, c, b} : std::array<std::uint32_t, 3>{a, b, c});
+  }
+  for (const auto& q : quads) {
+    const std::uint32_t a = node[q[0]], b = node[q[1]], c = node[q[2]], d = node[q[3]];
+    out.quads.push_back(flip ? std::array<std::uint32_t, 4>{a, d, c, b} : std::array<std::uint32_t, 4>{a, b, c, d});
+  }
+}
+
+void store_surface(FaceWork& f, SurfaceMesh out) {
+  f.res.stats.new_nodes += out.interior_nodes.size();
+  f.res.stats.triangles += out.triangles.size();
+  f.res.stats.quads += out.quads.size();
+  ++f.res.stats.faces;
+  f.mesh.surfaces[f.tag] = std::move(out);
+}
+
+void output_face(FaceWork& f) {
+  SurfaceMesh sm_out;
+  sm_out.tag = f.tag;
+  const std::uint32_t nv = f.tri.num_vertices();
+  f.global.resize(nv, kNoLocal);  // the floor's curve nodes have theirs already
+  for (std::uint32_t v = f.fixed_count; v < nv; ++v) {
+    if (f.global[v] != kNoLocal) continue;
+    const Vec2 p = f.tri.xy[v];
+    f.global[v] =
+        f.plane.geom ? f.mesh.add_node(f.plane.to_space(p), f.plane.to_param(p)) : f.mesh.add_node(f.plane.to_space(p));
+    sm_out.interior_nodes.push_back(f.global[v]);
+  }
+  const bool flip = f.plane.geom && !f.plane.ccw_is_outward;
+  // Local triangles, counter-clockwise in the plane.
+  std::vector<std::array<std::uint32_t, 3>> local;
+  local.reserve(f.tri.num_triangles());
+  for (std::uint32_t t = 0; t < f.tri.num_slots(); ++t) {
+    if (!f.tri.alive(TriId{t})) continue;
+    local.push_back(
+        {f.tri.vertex(TriId{t}, 0).value, f.tri.vertex(TriId{t}, 1).value, f.tri.vertex(TriId{t}, 2).value});
+  }
+  std::vector<std::array<std::uint32_t, 4>> local_quads;
+  if (f.recombined()) {
+    std::vector<Vec3> xyz(nv);
+    for (std::uint32_t v = 0; v < nv; ++v) xyz[v] = f.mesh.nodes[f.global[v]].xyz;
+    // Embedded curves stay edges of the mesh.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> fixed;
+    for (const FaceChain& ch : f.emb_curves)
+      for (std::size_t k = 0; k + 1 < ch.nodes.size(); ++k)
+        fixed.push_back(std::minmax(f.local_of[ch.nodes[k]], f.local_of[ch.nodes[k + 1]]));
+    std::sort(fixed.begin(), fixed.end());
+    RecombineOptions ro;
+    ro.algorithm = f.opt.constraints->algorithm;
+    RecombineResult rr = recombine(local, xyz, f.tri.xy, fixed, ro);
+    local = std::move(rr.triangles);
+    local_quads = std::move(rr.quads);
+  }
+  append_elements(sm_out, local, local_quads, flip, f.global);
+  store_surface(f, std::move(sm_out));
+  f.res.target_sizes.push_back({f.tag, target_size_fn(f.sizing)});
+}
+
+}  // namespace sm
