@@ -3,7 +3,7 @@
 // counts and the time step it reports.
 // compare_with_gmsh: skip (native Coastline and Field statements)
 Include "../../../examples/irish_sea.geo";
-// expect: 1 sea, 106 coast curves, 4 open-boundary curves
+// expect: 1 sea, 116 coast curves, 4 open-boundary curves
 // expect: mid-channel: 7.6 km, set by the shore
 // expect: Liverpool Bay: 4.2 km, set by the tide
 // The model meshes in 1D (the coasts at the size field, no crossing curves): Mesh.NbNodes
