@@ -24,7 +24,7 @@ Include "regions.geo";
 
 DefineConstant[ CoastAccuracy = 30e3, CoastResolution = "i", CoastMinArea = 100,
                 BathyName = "etopo5_global_0.25deg.nc", Quiet = 0, DoMesh = 0,
-                EstimateStep = 0, CloseStraits = 1, CloseNarrowWater = 1, CoastDeviation = 0 ];
+                EstimateStep = 0, CloseStraits = 1, CloseNarrowWater = 1, CoastDeviation = 0.5 ];
 // EstimateStep: lon/lat step (degrees) of the triangle-count estimate (0: skip it; 1 takes
 // about 20 s of CPU).
 // DoMesh = 1 runs the `Mesh 2; Save` part at the end (stereomesh -0 ... -setnumber DoMesh 1);
@@ -49,8 +49,9 @@ Coastline[1].CloseStraits = CloseStraits;
 Coastline[1].MinChannelWidth = CloseNarrowWater ? CoastAccuracy : 0;
 Coastline[1].KeepPassages = 1;
 // The coast curve within CoastDeviation * gamma of the GSHHG points (source points put back
-// where the B-spline cuts a headland or a bay); 0 (the default) leaves the curve as
-// coarsening makes it and reports how far it lies from the data. 0.5: docs/coastlines.md.
+// where the B-spline cuts a headland or a bay; 0.5, the import's default, keeps it within
+// gamma / 2); 0 leaves the curve as coarsening makes it and only reports how far it lies
+// from the data (docs/coastlines.md, "The curve within a bound of the data").
 Coastline[1].DeviationFactor = CoastDeviation;
 
 OceanLoops[] = Coastline{1};

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "base/parallel.h"
 
@@ -16,18 +17,21 @@ namespace {
 // eighth of its length, so the polyline is within a small fraction of the bound.
 constexpr int kSamples = 8;
 
-double point_segment_distance(const Vec3& p, const Vec3& a, const Vec3& b) {
+// Squared: the nearest segment is found without a square root per segment (this is
+// most of the pass's time), the distance taken once.
+double point_segment_distance2(const Vec3& p, const Vec3& a, const Vec3& b) {
   const Vec3 ab = b - a;
   const double l2 = norm2(ab);
   double t = l2 > 0 ? dot(p - a, ab) / l2 : 0.0;
   t = std::clamp(t, 0.0, 1.0);
-  return norm(p - (a + t * ab));
+  return norm2(p - (a + t * ab));
 }
 
 double polyline_distance(const Vec3& p, const std::vector<Vec3>& line) {
-  double d = line.empty() ? HUGE_VAL : norm(p - line.front());
-  for (std::size_t i = 1; i < line.size(); ++i) d = std::min(d, point_segment_distance(p, line[i - 1], line[i]));
-  return d;
+  if (line.empty()) return HUGE_VAL;
+  double d2 = norm2(p - line.front());
+  for (std::size_t i = 1; i < line.size(); ++i) d2 = std::min(d2, point_segment_distance2(p, line[i - 1], line[i]));
+  return std::sqrt(d2);
 }
 
 // One curve seen by the pass: its control points, spans and source points on the sphere.
@@ -101,6 +105,7 @@ class CurveView {
 // What one look at a curve found.
 struct CurveScan {
   std::vector<std::uint32_t> add;  // source points to put back
+  std::vector<std::uint32_t> split;  // source segments (their first point) to split at the middle
   double max = 0, max_ratio = 0;
   long max_at = -1;
   std::size_t over = 0;  // spans over the bound with no source point left
@@ -153,6 +158,20 @@ CurveScan scan_curve(const WorkCurve& c, const geo::PolarSphere& ps, const Devia
       if (angle_at(J, B, N) < std::min(min_angle, angle_at(A, B, N))) return false;
     }
     return true;
+  };
+  // A control point between those of segment s, on their straight segment: no corner at
+  // itself, and the same at its neighbours; only where the segment's ends are not
+  // sharper than min_angle already (the tip of a spike the curve does not follow).
+  auto allowed_between = [&](long s) {
+    const Vec2 A = control(s), B = control(s + 1);
+    if ((c.periodic || s > 0) && angle_at(control(s - 1), A, B) < min_angle) return false;
+    if ((c.periodic || s + 2 < m) && angle_at(A, B, control(s + 2)) < min_angle) return false;
+    return true;
+  };
+  // Splitting the data's segment from source point a: allowed as above and longer than a
+  // tenth of the bound (each split halves it, so the splits end).
+  auto splittable = [&](long s, long a) {
+    return allowed_between(s) && norm(v.source(a + 1) - v.source(a)) > 0.1 * v.bound(a);
   };
   std::vector<Vec3> near, own, source_line;
   std::vector<std::pair<double, long>> candidates;
@@ -219,7 +238,17 @@ CurveScan scan_curve(const WorkCurve& c, const geo::PolarSphere& ps, const Devia
     if (pick >= 0) {
       out.add.push_back(static_cast<std::uint32_t>(pick % n));
     } else {
-      if (candidates.empty()) {
+      if (candidates.empty() && b == a + 1 && splittable(s, a)) {
+        // No source point left between the control points (a segment of the data longer
+        // than the accuracy, at a bend): the data's own segment is split at its middle, a
+        // point of the shoreline; the control points closing in on the bend bring the
+        // curve to it (the cut of a B-spline is a sixth of its second difference).
+        out.split.push_back(static_cast<std::uint32_t>(a % n));
+      } else if (candidates.empty() && !allowed_between(s)) {
+        ++out.narrow;   // a spike of the data itself, narrower than the accuracy
+        narrow = true;
+        if (out.narrow_at < 0) out.narrow_at = a % n;
+      } else if (candidates.empty()) {
         ++out.over;
         if (out.over_at < 0) out.over_at = a % n;
       } else {
@@ -231,6 +260,47 @@ CurveScan scan_curve(const WorkCurve& c, const geo::PolarSphere& ps, const Devia
     account();
   }
   return out;
+}
+
+// Inserts the middle of each source segment `split` (by its first point; sorted below)
+// into the curve's points, renumbers `keep` and `add` (sorted) and adds the new points to
+// `add`: they become control points.
+void split_segments(WorkCurve& c, std::vector<std::uint32_t>& split, const geo::PolarSphere& ps,
+                    std::vector<std::uint32_t>& keep, std::vector<std::uint32_t>& add) {
+  std::sort(split.begin(), split.end());
+  split.erase(std::unique(split.begin(), split.end()), split.end());
+  const std::size_t n = c.full.size();
+  std::vector<std::uint32_t> new_index(n);
+  std::vector<geo::LonLat> full;
+  std::vector<Vec2> uv;
+  std::vector<double> gamma;
+  full.reserve(n + split.size());
+  uv.reserve(n + split.size());
+  gamma.reserve(n + split.size());
+  std::vector<std::uint32_t> mids;
+  for (std::size_t j = 0, k = 0; j < n; ++j) {
+    new_index[j] = static_cast<std::uint32_t>(full.size());
+    full.push_back(c.full[j]);
+    uv.push_back(c.uv[j]);
+    gamma.push_back(c.gamma[j]);
+    if (k < split.size() && split[k] == j) {
+      const std::size_t e = (j + 1) % n;   // a periodic curve's last segment closes on 0
+      const Vec2 mid = 0.5 * (c.uv[j] + c.uv[e]);
+      mids.push_back(static_cast<std::uint32_t>(full.size()));
+      full.push_back(ps.lonlat_from_param(mid));
+      uv.push_back(mid);
+      gamma.push_back(std::min(c.gamma[j], c.gamma[e]));
+      ++k;
+    }
+  }
+  c.full = std::move(full);
+  c.uv = std::move(uv);
+  c.gamma = std::move(gamma);
+  for (std::uint32_t& k : keep) k = new_index[k];
+  for (std::uint32_t& k : add) k = new_index[k];
+  std::vector<std::uint32_t> all;
+  std::merge(add.begin(), add.end(), mids.begin(), mids.end(), std::back_inserter(all));
+  add = std::move(all);
 }
 
 }  // namespace
@@ -261,12 +331,16 @@ DeviationReport bound_deviation(std::vector<WorkCurve>& curves, const DeviationO
     for (std::size_t i = 0; i < curves.size(); ++i) {
       if (!active[i]) continue;
       CurveScan& s = scans[i];
-      if (s.add.empty()) {
+      if (s.add.empty() && s.split.empty()) {
         active[i] = 0;
         continue;
       }
       std::vector<std::uint32_t>& keep = curves[i].keep;
       std::sort(s.add.begin(), s.add.end());
+      if (!s.split.empty()) {
+        split_segments(curves[i], s.split, ps, keep, s.add);
+        rep.segments_split += s.split.size();
+      }
       std::vector<std::uint32_t> merged;
       merged.reserve(keep.size() + s.add.size());
       std::merge(keep.begin(), keep.end(), s.add.begin(), s.add.end(), std::back_inserter(merged));

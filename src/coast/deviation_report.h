@@ -16,7 +16,10 @@ struct DeviationReport {
   double p95 = 0;                     ///< 95% of the source points lie within this of the curve
   double max_ratio = 0;               ///< largest distance / bound after the pass
   geo::LonLat where{};                ///< the source point of `max`
-  std::size_t points_added = 0;       ///< control points put back
+  std::size_t points_added = 0;       ///< control points put back (split points included)
+  /// Segments of the data with no point left between two control points, split at their
+  /// middle to bring the curve to a bend (counted in points_added too).
+  std::size_t segments_split = 0;
   std::size_t curves_changed = 0;
   std::size_t left_over_bound = 0;    ///< spans still over the bound with no point left to put back
   geo::LonLat where_over{};           ///< the first of those (by curve order)

@@ -69,10 +69,10 @@ struct ImportOptions {
   std::vector<geo::LonLat> sea_at;
   int max_repair_rounds = 64;
   /// The coast curve kept within this distance of the source points (deviation.h):
-  /// `max_deviation` metres when > 0, else `deviation_factor` times gamma (0, the default for
-  /// now: measured and reported only, see docs/coastlines.md); the curve type
+  /// `max_deviation` metres when > 0, else `deviation_factor` times gamma (0.5 by default:
+  /// within gamma / 2; 0 measures and reports only, see docs/coastlines.md); the curve type
   /// measured is the B-spline, or the control polygon when `bspline_curves` is false.
-  double deviation_factor = 0;
+  double deviation_factor = 0.5;
   double max_deviation = 0;
   bool bspline_curves = true;
   /// Threads for the steps that work ring by ring (cleaning, coarsening; the accuracy field

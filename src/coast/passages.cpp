@@ -3,6 +3,7 @@
 #include "coast/passages.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <array>
 #include <bit>
 #include <map>
@@ -28,6 +29,13 @@ namespace {
 
 constexpr double kWidthTolerance = 1e-9;   // relative: "exactly W" stays open
 constexpr double kHalfPi = 1.5707963267948966;
+// A dam's end makes a corner with the coast it joins; one sharper than this (on the
+// water that stays) is a wedge the mesh cannot fill above its quality floor (rho 0.3 needs
+// 9.4 degrees at least, mesh/quality_floor.h; at 15 degrees the isoceles triangle has rho
+// 0.45). Such a cut is moved to the nearest clean cut without one, its segments at most
+// kDamShiftReach kept segments from those found.
+constexpr double kMinDamCorner = 15 * kHalfPi / 90;
+constexpr int kDamShiftReach = 2;
 // The most original points put back on one segment of a refused cut (passages.h).
 constexpr std::size_t kMaxPutBack = 4096;
 
@@ -517,6 +525,41 @@ DamInfo info_of(const Work& w, const Node& n) {
   return n.src < w.n_curves ? DamInfo{w.curves[n.src].record, w.curves[n.src].id} : w.dams[n.src - w.n_curves];
 }
 
+// The angle of the water at v (water on the left) between the way in from u and the way
+// out to x, in [0, 2 pi): the (u,v) map is conformal, so it is the angle on the sphere.
+double water_angle(Vec2 u, Vec2 v, Vec2 x) {
+  const Vec2 out = x - v, in = u - v;
+  const double a = std::atan2(out.x * in.y - out.y * in.x, dot(out, in));
+  return a < 0 ? a + 4 * kHalfPi : a;
+}
+
+// Which end of the dams of the 2-opt at kept segments sa of loop la and sb of lb makes a
+// corner sharper than kMinDamCorner with the coast it joins, on water that stays (a piece
+// that drop_if_narrow removes does not count): 0 a0, 1 b1, 2 b0, 3 a1; -1 none. The dams
+// are a0 -> b1 (corners at a0 and b1) and b0 -> a1 (at b0 and a1); the B-spline of a
+// coast piece leaves its end along its first control segment, so the polygon's corner is
+// the curves' corner.
+int sharp_dam_end(const Work& w, std::uint32_t la, std::size_t sa, std::uint32_t lb, std::size_t sb) {
+  const FlatLoop& fa = w.flat[la];
+  const FlatLoop& fb = w.flat[lb];
+  const std::size_t ka = fa.kept.size(), kb = fb.kept.size();
+  const Vec2 a0 = fa.p(sa), a1 = fa.p(sa + 1), b0 = fb.p(sb), b1 = fb.p(sb + 1);
+  const double angle[4] = {water_angle(fa.p(sa + ka - 1), a0, b1), water_angle(a0, b1, fb.p(sb + 2)),
+                           water_angle(fb.p(sb + kb - 1), b0, a1), water_angle(b0, a1, fa.p(sa + 2))};
+  int first = -1;
+  for (int k = 0; k < 4 && first < 0; ++k)
+    if (angle[k] < kMinDamCorner) first = k;
+  if (first < 0 || la != lb) return first;   // two loops become one, which stays
+  // One loop becomes two: b1 ... a0 (corners 0, 1) and a1 ... b0 (corners 2, 3).
+  auto [a_side, b_side] = split_kept(fa, sa, sb);   // a1 ... b0, b1 ... a0
+  const std::uint32_t head_a = a_side.ids.front(), head_b = b_side.ids.front();
+  const FlatLoop parts[2] = {make_loop(w, head_b, std::move(b_side.ids), std::move(b_side.uv)),
+                             make_loop(w, head_a, std::move(a_side.ids), std::move(a_side.uv))};
+  for (int k = 0; k < 4; ++k)
+    if (angle[k] < kMinDamCorner && fate_of(w, parts[k / 2]) == Fate::Kept) return k;
+  return -1;
+}
+
 // One round of automatic closures: the narrowest clean cut of each loop. False: none left.
 // Where the kept segments of the loops made during a round are: a cut leaves every other
 // segment as it was (in a new loop, at a new position), so a candidate found at the
@@ -654,7 +697,37 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
     if (followed && la == lb && (sa == sb || !passage_on_one_ring(la, sa, sb, c.width))) continue;
     if (w.opt.keep_passages && la != lb) continue;   // a strait between two coasts
     if (w.gate_closed(a0, b0)) continue;              // a passage kept open
-    if (!cut_is_clean_near(near, a0, a1, b0, b1, made)) {
+    const bool clean = cut_is_clean_near(near, a0, a1, b0, b1, made);
+    // A dam end at a corner sharper than the mesh can follow (a coast point the deviation
+    // bound put back next to the mouth of an inlet, and the dam nearly doubling back
+    // along the coast): the cut moves to the nearest clean one without such a corner
+    // (segments up to kDamShiftReach away, nearest first, in a fixed order); without one
+    // it is made as found and the mesh reports the corner.
+    std::size_t sa_cut = sa, sb_cut = sb;
+    if (clean && sharp_dam_end(w, la, sa, lb, sb) >= 0) {
+      const std::size_t ka = w.flat[la].kept.size(), kb = w.flat[lb].kept.size();
+      bool found = false;
+      for (int reach = 1; reach <= kDamShiftReach && !found; ++reach)
+        for (int da = -reach; da <= reach && !found; ++da)
+          for (int db = -reach; db <= reach && !found; ++db) {
+            if (std::max(std::abs(da), std::abs(db)) != reach) continue;   // the ring at this reach
+            const auto shifted = [](std::size_t j, int d, std::size_t k) {
+              const long kl = static_cast<long>(k);
+              return static_cast<std::size_t>(((static_cast<long>(j) + d) % kl + kl) % kl);
+            };
+            const std::size_t ta = shifted(sa, da, ka), tb = shifted(sb, db, kb);
+            // On one loop the two segments must stay apart (a cut of neighbours is no cut).
+            if (la == lb && (ta == tb || (ta + 1) % ka == tb || (tb + 1) % ka == ta)) continue;
+            const FlatLoop& fa = w.flat[la];
+            const FlatLoop& fb = w.flat[lb];
+            if (w.gate_closed(fa.p(ta), fb.p(tb)) ||
+                !cut_is_clean_near(near, fa.p(ta), fa.p(ta + 1), fb.p(tb), fb.p(tb + 1), made) ||
+                sharp_dam_end(w, la, ta, lb, tb) >= 0)
+              continue;
+            sa_cut = ta, sb_cut = tb, found = true;
+          }
+    }
+    if (!clean) {
       // Long segments at a pinch (a 30 m strait between 2 km segments) make no clean
       // quad: their original points within W of the other side are put back at the
       // round's end and the place is tried again, so that a passage narrower than W is
@@ -668,11 +741,11 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
       continue;
     }
     std::vector<FlatLoop> split;
-    if (w.opt.keep_passages && !cut_fills_dead_end(w, la, sa, sb, split)) continue;   // a passage
-    made.push_back({a0, b1});
-    made.push_back({b0, a1});
-    const DamInfo info = info_of(w, w.flat[la].node(sa));
-    const CutResult r = cut(w, la, sa, lb, sb, std::move(split));
+    if (w.opt.keep_passages && !cut_fills_dead_end(w, la, sa_cut, sb_cut, split)) continue;   // a passage
+    made.push_back({w.flat[la].p(sa_cut), w.flat[lb].p(sb_cut + 1)});
+    made.push_back({w.flat[lb].p(sb_cut), w.flat[la].p(sa_cut + 1)});
+    const DamInfo info = info_of(w, w.flat[la].node(sa_cut));
+    const CutResult r = cut(w, la, sa_cut, lb, sb_cut, std::move(split));
     std::size_t dropped = 0;
     for (std::uint32_t l : r.new_loops) {
       drop_if_narrow(w, l, log);

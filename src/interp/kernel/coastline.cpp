@@ -80,7 +80,7 @@ constexpr CoastOption kOptions[] = {
     {"MinArea", OptType::Number, false, "drop closed rings below this area (km^2)"},
     {"CurveType", OptType::String, false, "\"BSpline\" (default) or \"Line\""},
     {"MaxDeviation", OptType::Number, false, "the coast curve stays within this distance (m) of the source points (default: DeviationFactor * gamma)"},
-    {"DeviationFactor", OptType::Number, false, "the curve's bound as a fraction of gamma (0.5 keeps it within gamma / 2; default 0: measured and reported only)"},
+    {"DeviationFactor", OptType::Number, false, "the curve's bound as a fraction of gamma (default 0.5: within gamma / 2 but for inlets and spits too narrow for the accuracy, reported; 0: measured and reported only)"},
     {"MinStraitsFactor", OptType::Number, false, "straits narrower than factor * gamma are reported (default 1)"},
     {"CloseStraits", OptType::Number, false, "1: merge islands across such straits (default 0: keep them open)"},
     {"CheckSplines", OptType::Number, false, "1 (default): put points back until no two B-splines cross; 0: off"},

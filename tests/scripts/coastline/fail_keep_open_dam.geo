@@ -10,7 +10,7 @@ Coastline[1] = LonLatText;
 Coastline[1].FileName = "../../../data/gshhg/world_i_A100.txt";
 Coastline[1].AccuracyField = 1;
 Coastline[1].Region = {-5.6, 37, 29, 46.5};
-Coastline[1].KeepOpen = {29.06, 41.12};
+Coastline[1].KeepOpen = {29.08, 41.12};
 Coastline[1].Dams = {28.95, 41.12, 29.15, 41.12};
 loops[] = Coastline{1};
 // expect error: 13:1: coastline-error

@@ -13,6 +13,7 @@ Coastline[1] = GSHHS;
 Coastline[1].FileName = "../../../data/gshhs/gshhs_c.b";
 Coastline[1].Levels = {1};
 Coastline[1].AccuracyField = 1;
+Coastline[1].DeviationFactor = 0;   // the coarsening's control points (no data point put back)
 loops[] = Coastline{1};
 outer[] = Coastline{1, "Outer"};
 curves[] = Coastline{1, "Curves"};

@@ -34,5 +34,5 @@ For c In {1 : 2}
   EndFor
   Printf("Coastline %g: %g coast points along the strait, %g closure(s) there", c, strait, near);
 EndFor
-// expect: Coastline 1: 3 coast points along the strait, 0 closure(s) there
+// expect: Coastline 1: 2 coast points along the strait, 0 closure(s) there
 // expect: Coastline 2: 0 coast points along the strait, 1 closure(s) there

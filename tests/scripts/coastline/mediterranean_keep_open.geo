@@ -19,8 +19,8 @@ For c In {1 : 3}
   Coastline[c].SeaAt = {18, 35};
   Coastline[c].MinChannelWidth = 2000;
 EndFor
-Coastline[2].KeepOpen = {29.06, 41.12};                // the Bosporus only
-Coastline[3].KeepOpen = {29.06, 41.12, 26.40, 40.20};  // and the Dardanelles
+Coastline[2].KeepOpen = {29.08, 41.12};                // the Bosporus only
+Coastline[3].KeepOpen = {29.08, 41.12, 26.40, 40.20};  // and the Dardanelles
 For c In {1 : 3}
   cl[] = Coastline{c, "Closures"};
   ds[] = Coastline{c, "DroppedSeas"};
@@ -36,6 +36,6 @@ For c In {1 : 3}
          c, #cl[] / 3, bosporus, dardanelles, #ds[] / 3, largest, #Coastline{c, "OpenCurves", "East"},
          #Coastline{c, "OpenCurves", "North"});
 EndFor
-// expect: Coastline 1: 17 closures (Bosporus 1, Dardanelles 1), 16 seas dropped, largest 321795 km^2; open E 0 N 0
-// expect: Coastline 2: 16 closures (Bosporus 0, Dardanelles 1), 15 seas dropped, largest 333418 km^2; open E 0 N 0
-// expect: Coastline 3: 15 closures (Bosporus 0, Dardanelles 0), 14 seas dropped, largest 117211 km^2; open E 2 N 4
+// expect: Coastline 1: 22 closures (Bosporus 1, Dardanelles 1), 19 seas dropped, largest 322656 km^2; open E 0 N 0
+// expect: Coastline 2: 21 closures (Bosporus 0, Dardanelles 1), 18 seas dropped, largest 334099 km^2; open E 0 N 0
+// expect: Coastline 3: 20 closures (Bosporus 0, Dardanelles 0), 17 seas dropped, largest 117195 km^2; open E 2 N 4

@@ -49,4 +49,4 @@ s[] = Coastline{1, "Surfaces"};
 coast[] = Coastline{1, "CoastCurves"};
 Printf("%g surface, %g coast + %g open = %g curves", #s[], #coast[], #Coastline{1, "OpenCurves"},
        #Coastline{1, "Curves"});
-// expect: 1 surface, 86 coast + 1 open = 87 curves
+// expect: 1 surface, 110 coast + 1 open = 111 curves

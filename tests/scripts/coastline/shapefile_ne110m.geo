@@ -11,6 +11,7 @@ Field[1].F = "300 / 6371";
 Coastline[7] = Shapefile;
 Coastline[7].FileName = "../../../data/naturalearth/ne_110m_land.shp";
 Coastline[7].AccuracyField = 1;
+Coastline[7].DeviationFactor = 0;   // the coarsening's control points (no data point put back)
 loops[] = Coastline{7};
 outer[] = Coastline{7, "Outer"};
 n[] = Coastline{7, "ControlPoints"};

@@ -20,7 +20,7 @@ coast_points_[] = Coastline{1, "CoastPoints"};
 Printf("%g shore points, %g not CoastPoints, %g fewer than Points", #RegionalShorePoints[],
        #Unique({RegionalShorePoints[], coast_points_[]}) - #coast_points_[],
        #Coastline{1, "Points"} - #RegionalShorePoints[]);
-// expect: 1010 shore points, 0 not CoastPoints, 23 fewer than Points
+// expect: 1136 shore points, 0 not CoastPoints, 23 fewer than Points
 ShorePoints[] = RegionalShorePoints[];
 ShoreSizeMin = 2e3;
 ShoreSizeMax = 15e3;

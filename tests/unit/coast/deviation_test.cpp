@@ -128,3 +128,37 @@ TEST_CASE("deviation: the same curve for every thread count") {
   bound_deviation(four, opt);
   for (std::size_t i = 0; i < one.size(); ++i) CHECK(one[i].keep == four[i].keep);
 }
+
+TEST_CASE("deviation: a bend of the data with no point left between its control points") {
+  // A square island 100 km a side, its data only the corners and the sides' middles (50 km
+  // apart, all kept at gamma 20 km): the spline cuts each right-angled corner by 11.8 km,
+  // over the bound of 10 km, and no source point lies between the control points. The
+  // data's own segments next to the corners are split at their middle (points of the
+  // shoreline) until the curve comes within the bound.
+  std::vector<geo::LonLat> pts;
+  const double coslat = std::cos(45.0 * geo::kDegToRad);
+  for (auto [x, y] : std::vector<std::pair<double, double>>{{-50e3, -50e3}, {0, -50e3}, {50e3, -50e3}, {50e3, 0},
+                                                            {50e3, 50e3}, {0, 50e3}, {-50e3, 50e3}, {-50e3, 0}})
+    pts.push_back({x * kM / coslat, 45.0 + y * kM});
+  WorkCurve c = curve_of(pts, 20e3, 1);
+  DeviationOptions opt;
+  opt.radius = kR;
+  const double before = max_of(source_distances(c, opt));
+  CHECK(before > 11e3);
+  std::vector<WorkCurve> curves{c};
+  const DeviationReport rep = bound_deviation(curves, opt);
+  CHECK(rep.segments_split > 0);
+  CHECK(rep.left_over_bound == 0);
+  CHECK(rep.narrow_features == 0);
+  CHECK(rep.max <= 10e3);
+  // The new points lie on the data's segments, and every one is a control point.
+  const WorkCurve& out = curves[0];
+  CHECK(out.full.size() > pts.size());
+  CHECK(out.keep.size() == out.full.size());
+  CHECK(std::is_sorted(out.keep.begin(), out.keep.end()));
+  for (const geo::LonLat& p : out.full) {
+    const double x = p.lon * coslat / kM, y = (p.lat - 45.0) / kM;
+    CHECK(std::min(std::abs(std::abs(x) - 50e3), std::abs(std::abs(y) - 50e3)) < 1e3);   // on the square
+  }
+  CHECK(max_of(source_distances(out, opt)) <= 10e3);
+}

@@ -38,6 +38,9 @@ TEST_CASE("repair: a loop crossing itself in the source loses its twisted sliver
   auto c = with_ocean({{{0, 50}, {1, 50}, {1, 51}, {0.6, 51}, {0.4, 51.1}, {0.6, 51.1}, {0.4, 51.0}, {0, 51}}});
   ImportOptions o;
   o.gamma = sm::testing::constant_accuracy(10);
+  // The control points as coarsening leaves them (the deviation bound would split the
+  // data's long straight segments at the corners): the repair is what is tested.
+  o.deviation_factor = 0;
   auto m = build_coast_model(std::move(c), o);
   REQUIRE_MESSAGE(m.ok(), (m.ok() ? "" : m.error().to_string()));
   REQUIRE(m->report.count(RepairKind::CutSliver) == 1);
@@ -77,6 +80,9 @@ TEST_CASE("repair: a strait narrower than gamma is listed, or closed on request"
   const std::vector<geo::LonLat> b{{0.011, 50}, {0.021, 50}, {0.021, 50.01}, {0.011, 50.01}};
   ImportOptions o;
   o.gamma = sm::testing::constant_accuracy(100);
+  // The control points as coarsening leaves them (the deviation bound would split the
+  // data's long straight segments at the corners): the repair is what is tested.
+  o.deviation_factor = 0;
   auto open = build_coast_model(with_ocean({a, b}), o);
   REQUIRE(open.ok());
   REQUIRE(open->report.count(RepairKind::NarrowStrait) == 1);
@@ -147,6 +153,9 @@ TEST_CASE("repair: two islands overlapping in the source are united") {
   const std::vector<geo::LonLat> b{{0.5, 50.5}, {1.5, 50.5}, {1.5, 51.5}, {0.5, 51.5}};
   ImportOptions o;
   o.gamma = sm::testing::constant_accuracy(1000);
+  // The control points as coarsening leaves them (the deviation bound would split the
+  // data's long straight segments at the corners): the repair is what is tested.
+  o.deviation_factor = 0;
   auto m = build_coast_model(with_ocean({a, b}), o);
   REQUIRE_MESSAGE(m.ok(), (m.ok() ? "" : m.error().to_string()));
   CHECK(m->report.count(RepairKind::UnitedIslands) == 1);
