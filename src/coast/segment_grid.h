@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "base/check.h"
 #include "base/vec.h"
 
 namespace sm::coast {
@@ -30,18 +31,28 @@ class SegmentGrid {
         ++n;
       }
     if (n == 0) return;
-    // About one segment per cell on average.
+    // About one segment per cell on average. The cells are one array of offsets into one
+    // of entries (4 bytes a cell, where a vector per cell took 24 and an allocation).
     side_ = static_cast<std::uint32_t>(std::clamp(std::sqrt(static_cast<double>(n)), 1.0, 2048.0));
     cell_ = std::max({hi.x - lo_.x, hi.y - lo_.y, 1e-300}) / side_;
-    cells_.assign(static_cast<std::size_t>(side_) * side_, {});
-    for (std::uint32_t l = 0; l < polys.size(); ++l)
-      for (std::uint32_t j = 0; j < polys[l].size(); ++j) {
-        const Vec2 a = polys[l][j], b = polys[l][(j + 1) % polys[l].size()];
-        const auto [x0, y0] = at({std::min(a.x, b.x), std::min(a.y, b.y)});
-        const auto [x1, y1] = at({std::max(a.x, b.x), std::max(a.y, b.y)});
-        for (std::uint32_t y = y0; y <= y1; ++y)
-          for (std::uint32_t x = x0; x <= x1; ++x) cells_[std::size_t{y} * side_ + x].push_back({l, j});
-      }
+    start_.assign(static_cast<std::size_t>(side_) * side_ + 1, 0);
+    auto each_cell = [&](auto&& f) {
+      for (std::uint32_t l = 0; l < polys.size(); ++l)
+        for (std::uint32_t j = 0; j < polys[l].size(); ++j) {
+          const Vec2 a = polys[l][j], b = polys[l][(j + 1) % polys[l].size()];
+          const auto [x0, y0] = at({std::min(a.x, b.x), std::min(a.y, b.y)});
+          const auto [x1, y1] = at({std::max(a.x, b.x), std::max(a.y, b.y)});
+          for (std::uint32_t y = y0; y <= y1; ++y)
+            for (std::uint32_t x = x0; x <= x1; ++x) f(std::size_t{y} * side_ + x, l, j);
+        }
+    };
+    std::size_t total = 0;
+    each_cell([&](std::size_t c, std::uint32_t, std::uint32_t) { ++start_[c + 1], ++total; });
+    SM_ASSERT(total < 0xFFFFFFFFu, "SegmentGrid: more cell entries than 32-bit offsets (coast/segment_grid.h)");
+    for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
+    entries_.resize(start_.back());
+    std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
+    each_cell([&](std::size_t c, std::uint32_t l, std::uint32_t j) { entries_[fill[c]++] = {l, j}; });
     seen_.assign(n, 0);
     first_.resize(polys.size());
     for (std::size_t l = 0, k = 0; l < polys.size(); k += polys[l].size(), ++l) first_[l] = k;
@@ -56,13 +67,15 @@ class SegmentGrid {
   /// As any_near, f(l, s0, s1) also told the polygon l the segment belongs to.
   template <class F>
   bool any_near_in(Vec2 lo, Vec2 hi, F&& f) {
-    if (cells_.empty()) return false;
+    if (entries_.empty()) return false;
     ++stamp_;
     const auto [x0, y0] = at(lo);
     const auto [x1, y1] = at(hi);
     for (std::uint32_t y = y0; y <= y1; ++y)
       for (std::uint32_t x = x0; x <= x1; ++x)
-        for (const auto& [l, j] : cells_[std::size_t{y} * side_ + x]) {
+        for (std::size_t e = start_[std::size_t{y} * side_ + x], end = start_[std::size_t{y} * side_ + x + 1]; e < end;
+             ++e) {
+          const auto [l, j] = entries_[e];
           std::uint32_t& mark = seen_[first_[l] + j];
           if (mark == stamp_) continue;
           mark = stamp_;
@@ -83,7 +96,8 @@ class SegmentGrid {
   Vec2 lo_{0, 0};
   double cell_ = 1;
   std::uint32_t side_ = 0, stamp_ = 0;
-  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> cells_;
+  std::vector<std::uint32_t> start_;   // cell c's entries: entries_[start_[c] .. start_[c + 1])
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> entries_;   // (polygon, segment)
   std::vector<std::uint32_t> seen_;
   std::vector<std::size_t> first_;
 };
