@@ -10,7 +10,6 @@
 #include <set>
 #include <optional>
 #include <tuple>
-#include <unordered_map>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -20,6 +19,7 @@
 #include "base/check.h"
 #include "coast/coarsen.h"
 #include "coast/intersections.h"
+#include "coast/segment_grid.h"
 #include "exact/ring.h"
 #include "exact/predicates.h"
 #include "exact/segments.h"
@@ -59,14 +59,17 @@ Vec2 closest_on_segment(Vec2 p, Vec2 a, Vec2 b) {
 // it: the curves hold the points until the loops are rebuilt, and a copy (48 bytes a node)
 // doubled the import's memory on the full-resolution world (9.7 M points). `src` names the
 // curve the segment leaving it belongs to (an index into `curves`, or curves.size() + k
-// for the k-th dam made here).
+// for the k-th dam made here). `kept` shares a word with `index` (12 bytes a node, not 16:
+// 39 MB of the pool on the full-resolution world).
 constexpr std::uint32_t kAdded = 0xFFFFFFFFu;
+constexpr std::uint32_t kMaxIndex = 0x7FFFFFFFu;   // index has 31 bits
 struct Node {
   std::uint32_t curve;
-  std::uint32_t index;
   std::uint32_t src;
-  bool kept;
+  std::uint32_t index : 31;
+  std::uint32_t kept : 1;
 };
+static_assert(sizeof(Node) == 12);
 
 // The nodes of every loop and where their points are.
 struct PointPool {
@@ -103,6 +106,19 @@ struct FlatLoop {
   // The (u,v) points of kept, in step with it: the polygon read in order rather than
   // through the pool (each cut of a continent reads its 100,000 points again).
   std::vector<Vec2> uv;
+  // The metres of kept segment j (kept[j] -> kept[j + 1]) in step with kept, NaN where not
+  // measured yet: a cut carries them into the loops it makes (only its two new segments are
+  // measured), where a map by start node was looked up 100,000 times per cut of a continent.
+  std::vector<double> metres;
+  // Where a cut that killed this loop (in this round) put its kept positions: position p
+  // is at child.offset + (p - from) mod size in loop child.loop when (p - from) mod size <
+  // len (close_round follows a candidate's segments through the cuts with it; a per-node
+  // index rewritten for every kept point of each new loop was a pass over the continent
+  // per cut, and 8 bytes per point of the pool).
+  struct Child {
+    std::uint32_t loop, from, len, size, offset;
+  };
+  std::vector<Child> children;
   bool hole = true;
   bool dead = false;
   bool changed = false;
@@ -118,6 +134,7 @@ struct FlatLoop {
     dead = true;
     std::vector<std::uint32_t>().swap(kept);
     std::vector<Vec2>().swap(uv);
+    std::vector<double>().swap(metres);
   }
 };
 
@@ -149,14 +166,9 @@ struct Work {
   PointPool pool = {&curves};                // every loop's points (FlatLoop::pool)
   std::vector<Node>& nodes = pool.nodes;
   std::vector<std::uint32_t> next = {};      // per node: the next node of its ring
-  // Per node: the loop and kept position it had when a cut of this round last made its
-  // loop (close_round follows a candidate's segments through the cuts with it).
-  std::vector<std::uint32_t> loop_of = {}, pos_of = {};
   std::vector<FlatLoop> flat = {};
   std::vector<DamInfo> dams = {};
   std::vector<Gate> gates = {};
-  // ring_metres' kept segments: start node -> (end node, metres).
-  std::unordered_map<std::uint32_t, std::pair<std::uint32_t, double>> seg_metres = {};
   bool gate_closed(Vec2 a0, Vec2 b0) const {
     for (const Gate& g : gates)
       if (g.closes(a0, b0)) return true;
@@ -166,8 +178,6 @@ struct Work {
     SM_ASSERT(nodes.size() < kAdded, "close_passages: more points than 32-bit node ids (passages.cpp, add_node)");
     nodes.push_back(n);
     next.push_back(0);
-    loop_of.push_back(0xFFFFFFFFu);
-    pos_of.push_back(0);
     return static_cast<std::uint32_t>(nodes.size() - 1);
   }
   /// Calls f(node) for every node from `from` (excluded) up to `to` (excluded) along the
@@ -195,11 +205,13 @@ void flatten(Work& w, const WorkLoop& loop) {
       std::vector<char> kept(c.full.size(), 0);
       for (auto k : c.keep) kept[k] = 1;
       const std::size_t m = c.periodic ? c.full.size() : c.full.size() - 1;
+      SM_ASSERT(m <= kMaxIndex, "close_passages: a curve with more points than 31-bit indices (passages.cpp, flatten)");
       for (std::size_t i = 0; i < m; ++i) {
-        const std::uint32_t id = w.add_node({ci, static_cast<std::uint32_t>(i), ci, kept[i] != 0});
+        const std::uint32_t id = w.add_node({ci, ci, static_cast<std::uint32_t>(i) & kMaxIndex, kept[i] != 0});
         if (kept[i]) f.kept.push_back(id), f.uv.push_back(c.uv[i]);
       }
     }
+  f.metres.assign(f.kept.size(), std::numeric_limits<double>::quiet_NaN());
   const auto end = static_cast<std::uint32_t>(w.nodes.size());
   for (std::uint32_t i = f.head; i < end; ++i) w.next[i] = i + 1 == end ? f.head : i + 1;
   w.stats.node_visits += end - f.head;
@@ -226,73 +238,6 @@ double mean_width_m(const FlatLoop& f, double radius) {
 std::vector<Vec2> polygon(const FlatLoop& f) { return f.uv; }
 
 bool in_box(Vec2 p, Vec2 lo, Vec2 hi) { return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y; }
-
-// The segments of the loops at the start of a closing round, binned on a uniform grid of
-// the (u,v) plane, so that a cut looks only at the segments near its quad instead of every
-// coast segment (hundreds of cuts on the world's coast at 30 km).
-class SegmentGrid {
- public:
-  explicit SegmentGrid(const std::vector<std::vector<Vec2>>& polys) : polys_(polys) {
-    std::size_t n = 0;
-    lo_ = {1e300, 1e300};
-    Vec2 hi{-1e300, -1e300};
-    for (const auto& p : polys)
-      for (Vec2 x : p) {
-        lo_ = {std::min(lo_.x, x.x), std::min(lo_.y, x.y)};
-        hi = {std::max(hi.x, x.x), std::max(hi.y, x.y)};
-        ++n;
-      }
-    if (n == 0) return;
-    // About one segment per cell on average.
-    side_ = static_cast<std::uint32_t>(std::clamp(std::sqrt(static_cast<double>(n)), 1.0, 2048.0));
-    cell_ = std::max({hi.x - lo_.x, hi.y - lo_.y, 1e-300}) / side_;
-    cells_.assign(static_cast<std::size_t>(side_) * side_, {});
-    for (std::uint32_t l = 0; l < polys.size(); ++l)
-      for (std::uint32_t j = 0; j < polys[l].size(); ++j) {
-        const Vec2 a = polys[l][j], b = polys[l][(j + 1) % polys[l].size()];
-        const auto [x0, y0] = at({std::min(a.x, b.x), std::min(a.y, b.y)});
-        const auto [x1, y1] = at({std::max(a.x, b.x), std::max(a.y, b.y)});
-        for (std::uint32_t y = y0; y <= y1; ++y)
-          for (std::uint32_t x = x0; x <= x1; ++x) cells_[std::size_t{y} * side_ + x].push_back({l, j});
-      }
-    seen_.assign(n, 0);
-    first_.resize(polys.size());
-    for (std::size_t l = 0, k = 0; l < polys.size(); k += polys[l].size(), ++l) first_[l] = k;
-  }
-  /// Calls f(s0, s1) once for every segment whose box may meet the box [lo, hi].
-  template <class F>
-  bool any_near(Vec2 lo, Vec2 hi, F&& f) {
-    if (cells_.empty()) return false;
-    ++stamp_;
-    const auto [x0, y0] = at(lo);
-    const auto [x1, y1] = at(hi);
-    for (std::uint32_t y = y0; y <= y1; ++y)
-      for (std::uint32_t x = x0; x <= x1; ++x)
-        for (const auto& [l, j] : cells_[std::size_t{y} * side_ + x]) {
-          std::uint32_t& mark = seen_[first_[l] + j];
-          if (mark == stamp_) continue;
-          mark = stamp_;
-          const auto& p = polys_[l];
-          if (f(p[j], p[(j + 1) % p.size()])) return true;
-        }
-    return false;
-  }
-
- private:
-  std::pair<std::uint32_t, std::uint32_t> at(Vec2 p) const {
-    auto c = [&](double v, double o) {
-      return static_cast<std::uint32_t>(std::clamp((v - o) / cell_, 0.0, static_cast<double>(side_ - 1)));
-    };
-    return {c(p.x, lo_.x), c(p.y, lo_.y)};
-  }
-  const std::vector<std::vector<Vec2>>& polys_;
-  Vec2 lo_{0, 0};
-  double cell_ = 1;
-  std::uint32_t side_ = 0, stamp_ = 0;
-  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> cells_;
-  std::vector<std::uint32_t> seen_;
-  std::vector<std::size_t> first_;
-};
 
 // Whether the cut at a0->a1, b0->b1 can be made: the other segment on the water side of
 // each, the two dams a0->b1 and b0->a1 crossing nothing (nor `extra` dams already made),
@@ -351,18 +296,22 @@ std::uint32_t new_dam(Work& w, const Node& from) {
   return static_cast<std::uint32_t>(w.n_curves + w.dams.size() - 1);
 }
 
-// `uv`: the points of `kept` when the caller has them (empty: read from the pool).
-FlatLoop make_loop(const Work& w, std::uint32_t head, std::vector<std::uint32_t> kept, std::vector<Vec2> uv = {}) {
+// `uv`, `metres`: the points of `kept` and its segments' metres when the caller has them
+// (empty: read from the pool, measured when asked).
+FlatLoop make_loop(const Work& w, std::uint32_t head, std::vector<std::uint32_t> kept, std::vector<Vec2> uv = {},
+                   std::vector<double> metres = {}) {
   FlatLoop f;
   f.pool = &w.pool;
   f.head = head;
   f.kept = std::move(kept);
   f.uv = std::move(uv);
+  f.metres = std::move(metres);
   if (f.uv.size() != f.kept.size()) {
     f.uv.clear();
     f.uv.reserve(f.kept.size());
     for (std::uint32_t id : f.kept) f.uv.push_back(w.pool.uv(id));
   }
+  if (f.metres.size() != f.kept.size()) f.metres.assign(f.kept.size(), std::numeric_limits<double>::quiet_NaN());
   f.changed = true;
   if (f.kept.size() >= 3) f.orientation = ring_orientation(f.uv);
   f.hole = f.orientation == Sign::Negative;
@@ -373,10 +322,28 @@ struct CutResult {
   std::vector<std::uint32_t> new_loops;
 };
 
-// Kept node ids and their points (FlatLoop::kept and uv) of a loop being made.
+// Kept node ids, their points and their segments' metres (FlatLoop::kept, uv and metres)
+// of a loop being made.
 struct KeptPart {
   std::vector<std::uint32_t> ids;
   std::vector<Vec2> uv;
+  std::vector<double> metres;
+  /// Appends f's kept positions from, from + 1, ... (len of them, cyclic) in two block
+  /// copies; the last one's segment is a new one (a dam): not measured yet.
+  void append(const FlatLoop& f, std::size_t from, std::size_t len) {
+    const std::size_t k = f.kept.size();
+    const std::size_t first = std::min(len, k - from);
+    auto copy = [&](const auto& v, auto& out, std::size_t at, std::size_t n) {
+      out.insert(out.end(), v.begin() + static_cast<std::ptrdiff_t>(at), v.begin() + static_cast<std::ptrdiff_t>(at + n));
+    };
+    copy(f.kept, ids, from, first);
+    copy(f.uv, uv, from, first);
+    copy(f.metres, metres, from, first);
+    copy(f.kept, ids, 0, len - first);
+    copy(f.uv, uv, 0, len - first);
+    copy(f.metres, metres, 0, len - first);
+    if (len > 0) metres.back() = std::numeric_limits<double>::quiet_NaN();
+  }
 };
 
 // The kept nodes of the two loops a 2-opt at kept segments ja and jb of one loop makes:
@@ -388,7 +355,8 @@ std::pair<KeptPart, KeptPart> split_kept(const FlatLoop& f, std::size_t ja, std:
     const std::size_t len = (to + k - from) % k + 1;
     out.ids.reserve(len);
     out.uv.reserve(len);
-    for (std::size_t s = 0; s < len; ++s) out.ids.push_back(f.kept[(from + s) % k]), out.uv.push_back(f.p(from + s));
+    out.metres.reserve(len);
+    out.append(f, from, len);
     return out;
   };
   return {range((ja + 1) % k, jb), range((jb + 1) % k, ja)};
@@ -408,13 +376,17 @@ CutResult cut(Work& w, std::uint32_t la, std::size_t ja, std::uint32_t lb, std::
   const std::uint32_t b0 = fb.kept[jb], b1 = fb.kept[(jb + 1) % fb.kept.size()];
   std::vector<KeptPart> parts;
   std::vector<std::uint32_t> heads;
+  const auto next_loop = static_cast<std::uint32_t>(w.flat.size());
+  const auto ka = static_cast<std::uint32_t>(fa.kept.size()), kb = static_cast<std::uint32_t>(fb.kept.size());
+  const auto sa = static_cast<std::uint32_t>((ja + 1) % ka), sb = static_cast<std::uint32_t>((jb + 1) % kb);
   if (la != lb) {
     // a1 ... a0 then b1 ... b0: one loop.
     KeptPart kept;
     kept.ids.reserve(fa.kept.size() + fb.kept.size());
     kept.uv.reserve(fa.kept.size() + fb.kept.size());
-    for (std::size_t s = 1; s <= fa.kept.size(); ++s) kept.ids.push_back(fa.id(ja + s)), kept.uv.push_back(fa.p(ja + s));
-    for (std::size_t s = 1; s <= fb.kept.size(); ++s) kept.ids.push_back(fb.id(jb + s)), kept.uv.push_back(fb.p(jb + s));
+    kept.metres.reserve(fa.kept.size() + fb.kept.size());
+    kept.append(fa, sa, ka);
+    kept.append(fb, sb, kb);
     w.stats.kept_visits += kept.ids.size();
     w.nodes[a0].src = new_dam(w, w.nodes[a0]);   // a0 -> b1
     w.nodes[b0].src = new_dam(w, w.nodes[b0]);   // b0 -> a1
@@ -422,23 +394,28 @@ CutResult cut(Work& w, std::uint32_t la, std::size_t ja, std::uint32_t lb, std::
     heads.push_back(a1);
     w.flat[la].kill();
     w.flat[lb].kill();
+    w.flat[la].children = {{next_loop, sa, ka, ka, 0}};
+    w.flat[lb].children = {{next_loop, sb, kb, kb, ka}};
   } else {
     KeptPart first, second;
     if (split.empty()) {
       std::tie(first, second) = split_kept(fa, ja, jb);
       w.stats.kept_visits += first.ids.size() + second.ids.size();
     }
+    const auto len1 = static_cast<std::uint32_t>((jb + ka - sa) % ka + 1);
     w.nodes[b0].src = new_dam(w, w.nodes[b0]);   // b0 -> a1
     w.nodes[a0].src = new_dam(w, w.nodes[a0]);   // a0 -> b1
     parts.push_back(std::move(first));
     parts.push_back(std::move(second));
     heads = {a1, b1};
     w.flat[la].kill();
+    w.flat[la].children = {{next_loop, sa, len1, ka, 0}, {next_loop + 1, sb, ka - len1, ka, 0}};
   }
   w.next[a0] = b1;
   w.next[b0] = a1;
   for (std::size_t i = 0; i < parts.size(); ++i) {
-    w.flat.push_back(split.empty() ? make_loop(w, heads[i], std::move(parts[i].ids), std::move(parts[i].uv))
+    w.flat.push_back(split.empty() ? make_loop(w, heads[i], std::move(parts[i].ids), std::move(parts[i].uv),
+                                               std::move(parts[i].metres))
                                    : std::move(split[i]));
     r.new_loops.push_back(static_cast<std::uint32_t>(w.flat.size() - 1));
   }
@@ -453,8 +430,7 @@ double passage_width_at(const PassageOptions& o, geo::LonLat ll) {
 
 struct Candidate {
   double width;
-  std::uint32_t la, sa, lb, sb;
-  std::uint32_t na, nb;   // the start nodes of the two segments
+  std::uint32_t la, sa, lb, sb;   // the loops and kept positions of the two segments at the round's start
   Vec2 where;
 };
 
@@ -464,16 +440,16 @@ struct Candidate {
 // cut or a point put back gives a node another segment), so that a new loop adds them up
 // (the same numbers in the same order) instead of measuring its 100,000 segments again
 // (half of the import's CPU on the world at 3 km).
-std::vector<double> ring_metres(Work& w, const FlatLoop& f, double radius) {
+std::vector<double> ring_metres(const Work& w, FlatLoop& f, double radius) {
   const std::size_t k = f.kept.size();
+  SM_ASSERT(f.metres.size() == k, "close_passages: a loop's metres are out of step with its kept points (passages.cpp, ring_metres)");
   std::vector<double> cum;
   cum.reserve(k + 1);
   cum.push_back(0);
   for (std::size_t j = 0; j < k; ++j) {
-    const std::uint32_t a = f.kept[j], b = f.kept[j + 1 < k ? j + 1 : 0];
-    auto [it, fresh] = w.seg_metres.try_emplace(a, b, 0.0);
-    if (fresh || it->second.first != b) it->second = {b, chord(w.pool.ll(a), w.pool.ll(b), radius)};
-    cum.push_back(cum.back() + it->second.second);
+    double& m = f.metres[j];
+    if (std::isnan(m)) m = chord(w.pool.ll(f.kept[j]), w.pool.ll(f.kept[j + 1 < k ? j + 1 : 0]), radius);
+    cum.push_back(cum.back() + m);
   }
   return cum;
 }
@@ -514,8 +490,8 @@ bool cut_fills_dead_end(const Work& w, std::uint32_t l, std::size_t ja, std::siz
   w.stats.kept_visits += first.ids.size() + second.ids.size();
   const std::uint32_t heads[2] = {first.ids.front(), second.ids.front()};
   split.clear();
-  split.push_back(make_loop(w, heads[0], std::move(first.ids), std::move(first.uv)));
-  split.push_back(make_loop(w, heads[1], std::move(second.ids), std::move(second.uv)));
+  split.push_back(make_loop(w, heads[0], std::move(first.ids), std::move(first.uv), std::move(first.metres)));
+  split.push_back(make_loop(w, heads[1], std::move(second.ids), std::move(second.uv), std::move(second.metres)));
   for (const FlatLoop& f : split)
     if (fate_of(w, f) != Fate::Kept) return true;
   return false;
@@ -560,23 +536,100 @@ int sharp_dam_end(const Work& w, std::uint32_t la, std::size_t sa, std::uint32_t
   return -1;
 }
 
-// One round of automatic closures: the narrowest clean cut of each loop. False: none left.
 // Where the kept segments of the loops made during a round are: a cut leaves every other
 // segment as it was (in a new loop, at a new position), so a candidate found at the
-// round's start is followed into the loops made since by its segments' start nodes
-// (Work::loop_of and pos_of, set for each loop a cut makes).
-void follow_add(Work& w, std::uint32_t l) {
-  const FlatLoop& f = w.flat[l];
-  for (std::uint32_t j = 0; j < f.kept.size(); ++j) w.loop_of[f.kept[j]] = l, w.pos_of[f.kept[j]] = j;
-  w.stats.kept_visits += f.kept.size();
-}
+// round's start is followed into the loops made since through the positions each cut
+// recorded on the loop it killed (FlatLoop::children).
+// A round-start loop cut again and again in one round (a continent, one inlet per cut)
+// makes a chain of loops, each the one before less the water a cut dropped: walking the
+// chain for every candidate on it was cuts x candidates (16% of the CPU on the world at
+// 3 km). The chain is kept instead as the set of the loop's positions still in it (a
+// Fenwick tree) and the position its current loop starts from: a position's place in the
+// current loop is its rank from there. Each position leaves once, so the round's chains
+// cost O(size log size) per loop followed.
+class ChainTracker {
+ public:
+  explicit ChainTracker(std::uint32_t l, std::size_t size) : loop_(l), count_(size), tree_(size + 1, 0) {
+    for (std::size_t i = 1; i <= size; ++i) {   // every position present: O(n) build
+      tree_[i] += 1;
+      if (const std::size_t up = i + (i & (~i + 1)); up <= size) tree_[up] += tree_[i];
+    }
+  }
+  /// Follows the chain from the loop reached so far while each cut of it left one loop that
+  /// lives on (the other dropped at once). Stops at a live loop or at another kind of cut.
+  void advance(const Work& w) {
+    for (std::size_t steps = 0; w.flat[loop_].dead; ++steps) {
+      SM_ASSERT(steps <= w.flat.size(), "close_passages: a cut chain did not end (passages.cpp, ChainTracker)");
+      const auto& ch = w.flat[loop_].children;
+      const FlatLoop::Child* on = nullptr;
+      std::size_t going_on = 0;
+      for (const FlatLoop::Child& c : ch)
+        if (!w.flat[c.loop].dead || !w.flat[c.loop].children.empty()) on = &c, ++going_on;
+      if (going_on != 1 || on->offset != 0 || on->size != count_) return;
+      // Positions from + len .. from + size - 1 of the current loop (cyclic) leave.
+      const std::size_t base = rank(start_);
+      std::vector<std::uint32_t> gone;
+      gone.reserve(count_ - on->len);
+      for (std::size_t t = on->len; t < count_; ++t) gone.push_back(select((base + on->from + t) % count_));
+      const std::uint32_t new_start = select((base + on->from) % count_);
+      for (std::uint32_t x : gone) remove(x);
+      start_ = new_start;
+      count_ = on->len;
+      loop_ = on->loop;
+    }
+  }
+  /// The loop reached and the place there of the round-start position p (none: p left).
+  std::optional<std::pair<std::uint32_t, std::uint32_t>> at(std::uint32_t p) const {
+    if (!present(p)) return std::nullopt;
+    const std::size_t r = rank(p), b = rank(start_);
+    return std::pair{loop_, static_cast<std::uint32_t>((r + count_ - b) % count_)};
+  }
 
-/// The live loop and kept position of the segment s0 -> s1 starting at node `node` (none
-/// when it is gone).
-std::optional<std::pair<std::uint32_t, std::uint32_t>> follow_find(const Work& w, std::uint32_t node, Vec2 s0,
-                                                                   Vec2 s1) {
-  const std::uint32_t l = w.loop_of[node], j = w.pos_of[node];
-  if (l >= w.flat.size() || w.flat[l].dead || j >= w.flat[l].kept.size()) return std::nullopt;
+ private:
+  // Positions present before x.
+  std::size_t rank(std::uint32_t x) const {
+    std::size_t r = 0;
+    for (std::size_t i = x; i > 0; i -= i & (~i + 1)) r += tree_[i];
+    return r;
+  }
+  bool present(std::uint32_t x) const { return rank(x + 1) - rank(x) == 1; }
+  // The position with `r` present positions before it.
+  std::uint32_t select(std::size_t r) const {
+    std::size_t at = 0;
+    std::size_t bit = std::bit_floor(tree_.size() - 1);
+    for (; bit > 0; bit >>= 1)
+      if (at + bit < tree_.size() && tree_[at + bit] <= r) at += bit, r -= tree_[at];
+    return static_cast<std::uint32_t>(at);
+  }
+  void remove(std::uint32_t x) {
+    for (std::size_t i = std::size_t{x} + 1; i < tree_.size(); i += i & (~i + 1)) tree_[i] -= 1;
+  }
+  std::uint32_t loop_;
+  std::size_t count_;
+  std::uint32_t start_ = 0;
+  std::vector<std::uint32_t> tree_;
+};
+
+/// The live loop and kept position of the segment s0 -> s1 that was at kept position j of
+/// loop l (none when it is gone: in water dropped, or no longer s0 -> s1). `chain`: l's
+/// tracker, which takes the chain of cuts as far as it can.
+std::optional<std::pair<std::uint32_t, std::uint32_t>> follow_find(const Work& w, std::uint32_t l, std::uint32_t j,
+                                                                   Vec2 s0, Vec2 s1, ChainTracker& chain) {
+  chain.advance(w);
+  const auto there = chain.at(j);
+  if (!there) return std::nullopt;
+  std::tie(l, j) = *there;
+  // Each step goes to a loop made later: at most one step per loop.
+  for (std::size_t steps = 0; w.flat[l].dead; ++steps) {
+    SM_ASSERT(steps <= w.flat.size(), "close_passages: a cut loop's children did not end (passages.cpp, follow_find)");
+    const FlatLoop::Child* to = nullptr;
+    for (const FlatLoop::Child& c : w.flat[l].children)
+      if ((j + c.size - c.from) % c.size < c.len) to = &c;
+    if (!to) return std::nullopt;
+    j = to->offset + (j + to->size - to->from) % to->size;
+    l = to->loop;
+  }
+  if (j >= w.flat[l].kept.size()) return std::nullopt;
   if (!(w.flat[l].p(j) == s0) || !(w.flat[l].p(j + 1) == s1)) return std::nullopt;
   return std::pair{l, j};
 }
@@ -606,6 +659,11 @@ void rekeep(Work& w, FlatLoop& f, std::uint32_t from, std::uint32_t to) {
     });
     f.kept.erase(f.kept.begin() + static_cast<std::ptrdiff_t>(i + 1), f.kept.begin() + static_cast<std::ptrdiff_t>(t));
     f.kept.insert(f.kept.begin() + static_cast<std::ptrdiff_t>(i + 1), between.begin(), between.end());
+    // Segment i and the new ones are measured when asked.
+    f.metres[i] = std::numeric_limits<double>::quiet_NaN();
+    f.metres.erase(f.metres.begin() + static_cast<std::ptrdiff_t>(i + 1), f.metres.begin() + static_cast<std::ptrdiff_t>(t));
+    f.metres.insert(f.metres.begin() + static_cast<std::ptrdiff_t>(i + 1), between.size(),
+                    std::numeric_limits<double>::quiet_NaN());
     reread_uv(w, f);
     return;
   }
@@ -614,9 +672,11 @@ void rekeep(Work& w, FlatLoop& f, std::uint32_t from, std::uint32_t to) {
     if (w.nodes[n].kept) between.push_back(n);
   });
   f.kept = std::move(between);
+  f.metres.assign(f.kept.size(), std::numeric_limits<double>::quiet_NaN());
   reread_uv(w, f);
 }
 
+// One round of automatic closures: the narrowest clean cut of each loop. False: none left.
 bool close_round(Work& w, std::vector<RepairEntry>& log) {
   const double W = w.opt.min_width;
   const double R = w.opt.radius;
@@ -631,12 +691,24 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
   // entries of loops a cut has killed since are dropped first: each cut of a continent
   // makes a new loop of nearly its size, and keeping every one of them held 8 bytes per
   // kept point per cut (1.4 GB of the 2.4 GB peak of the world at 3 km).
+  // The dead loops' entries are dropped when what the map holds has doubled since the last
+  // sweep (a sweep at every new entry walked the map each time: quadratic in the loops
+  // asked for in a round), so it holds at most about twice the live loops' entries.
   std::map<std::uint32_t, std::vector<double>> cum;
+  std::size_t cum_held = 0, cum_after_sweep = 0;
   auto ring = [&](std::uint32_t l) -> const std::vector<double>& {
     auto it = cum.find(l);
     if (it == cum.end()) {
-      std::erase_if(cum, [&](const auto& e) { return w.flat[e.first].dead; });
+      if (cum_held > 2 * cum_after_sweep + 4096) {
+        std::erase_if(cum, [&](const auto& e) {
+          if (!w.flat[e.first].dead) return false;
+          cum_held -= e.second.size();
+          return true;
+        });
+        cum_after_sweep = cum_held;
+      }
       it = cum.emplace(l, ring_metres(w, w.flat[l], R)).first;
+      cum_held += it->second.size();
     }
     return it->second;
   };
@@ -662,8 +734,7 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
                   (1 - kWidthTolerance)))
       continue;
     if (m.loop_a == m.loop_b && !passage_on_one_ring(m.loop_a, m.seg_a, m.seg_b, d)) continue;
-    cands.push_back({d, m.loop_a, m.seg_a, m.loop_b, m.seg_b, w.flat[m.loop_a].kept[m.seg_a],
-                     w.flat[m.loop_b].kept[m.seg_b], 0.25 * (a0 + a1 + b0 + b1)});
+    cands.push_back({d, m.loop_a, m.seg_a, m.loop_b, m.seg_b, 0.25 * (a0 + a1 + b0 + b1)});
   }
   std::stable_sort(cands.begin(), cands.end(), [](const Candidate& x, const Candidate& y) { return x.width < y.width; });
   // The round's segments as they were at its start: the cuts made since only replaced two
@@ -677,6 +748,7 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
     Vec2 o0, o1;                    // the other segment of the cut
   };
   std::vector<Refine> refine;
+  std::map<std::uint32_t, ChainTracker> chains;   // per round-start loop cut this round
   bool any = false;
   for (const Candidate& c : cands) {
     const auto& pa = polys[c.la];
@@ -685,11 +757,13 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
     const Vec2 b0 = pb[c.sb], b1 = pb[(c.sb + 1) % pb.size()];
     // Its segments where they are now: as found, or in the loops a cut made this round
     // (where the one-ring test is made again, as the next round would).
-    const auto where = [&](std::uint32_t l, std::uint32_t j, std::uint32_t node, Vec2 s0, Vec2 s1) {
-      return w.flat[l].dead ? follow_find(w, node, s0, s1)
-                            : std::optional<std::pair<std::uint32_t, std::uint32_t>>{{l, j}};
+    const auto where = [&](std::uint32_t l, std::uint32_t j, Vec2 s0, Vec2 s1) {
+      if (!w.flat[l].dead) return std::optional<std::pair<std::uint32_t, std::uint32_t>>{{l, j}};
+      auto it = chains.find(l);
+      if (it == chains.end()) it = chains.emplace(l, ChainTracker(l, polys[l].size())).first;
+      return follow_find(w, l, j, s0, s1, it->second);
     };
-    const auto ra = where(c.la, c.sa, c.na, a0, a1), rb = where(c.lb, c.sb, c.nb, b0, b1);
+    const auto ra = where(c.la, c.sa, a0, a1), rb = where(c.lb, c.sb, b0, b1);
     if (!ra || !rb) continue;
     const auto [la, sa] = *ra;
     const auto [lb, sb] = *rb;
@@ -750,7 +824,6 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
     for (std::uint32_t l : r.new_loops) {
       drop_if_narrow(w, l, log);
       dropped += w.flat[l].dead;
-      if (!w.flat[l].dead) follow_add(w, l);
     }
     if (dropped == 0)   // a cut that only trims narrow water is listed as NarrowWater
       log.push_back({RepairKind::ClosedPassage, info.record, info.id, unit_sphere().lonlat_from_param(c.where), c.width});
@@ -812,14 +885,19 @@ std::uint32_t insert_on(Work& w, FlatLoop& f, std::size_t j, Vec2 x) {
   w.pool.added_ll.push_back(unit_sphere().lonlat_from_param(x));
   w.pool.added_uv.push_back(x);
   w.pool.added_gamma.push_back(ga + t * (gb - ga));
+  SM_ASSERT(w.pool.added_uv.size() <= kMaxIndex, "close_passages: more dam points than 31-bit indices (passages.cpp, insert_on)");
   const std::uint32_t at =
-      w.add_node({kAdded, static_cast<std::uint32_t>(w.pool.added_uv.size() - 1), w.nodes[a].src, true});
+      w.add_node({kAdded, w.nodes[a].src, static_cast<std::uint32_t>(w.pool.added_uv.size() - 1) & kMaxIndex, true});
   w.next[a] = at;
   w.next[at] = b;
   std::rotate(f.kept.begin(), f.kept.begin() + static_cast<std::ptrdiff_t>((j + 1) % k), f.kept.end());
   f.kept.push_back(at);
   std::rotate(f.uv.begin(), f.uv.begin() + static_cast<std::ptrdiff_t>((j + 1) % k), f.uv.end());
   f.uv.push_back(x);
+  // a (now last but one) -> x and x -> b are new segments.
+  std::rotate(f.metres.begin(), f.metres.begin() + static_cast<std::ptrdiff_t>((j + 1) % k), f.metres.end());
+  f.metres.back() = std::numeric_limits<double>::quiet_NaN();
+  f.metres.push_back(std::numeric_limits<double>::quiet_NaN());
   f.head = b;
   f.changed = true;
   f.orientation.reset();
@@ -937,11 +1015,10 @@ Result<std::size_t> place_dam(Work& w, geo::LonLat p_ll, geo::LonLat q_ll, std::
 
 // Rebuilds a changed flat loop into curves (one per run of nodes with the same source,
 // each dam a two-point curve) appended to `curves`.
-WorkLoop rebuild(Work& w, const FlatLoop& f) {
+// `ring`: the loop's nodes in order from its head.
+WorkLoop rebuild(Work& w, const FlatLoop& f, const std::vector<std::uint32_t>& ring) {
   WorkLoop out;
   out.hole = f.hole;
-  std::vector<std::uint32_t> ring{f.head};   // the loop's nodes in order from its head
-  w.walk(f.head, f.head, [&](std::uint32_t i) { ring.push_back(i); });
   auto node = [&](std::size_t i) -> const Node& { return w.nodes[ring[i]]; };
   const std::size_t n = ring.size();
   std::size_t start = 0;
@@ -1123,8 +1200,6 @@ Result<bool> close_passages(std::vector<WorkCurve>& curves, std::vector<WorkLoop
       for (std::uint32_t ci : l.curves) points += curves[ci].full.size();
   w.nodes.reserve(points);
   w.next.reserve(points);
-  w.loop_of.reserve(points);
-  w.pos_of.reserve(points);
   for (const WorkLoop& l : loops) flatten(w, l);
   if (auto g = find_gates(w, log); !g) return g.error();
   std::size_t vertices = 0;
@@ -1146,34 +1221,75 @@ Result<bool> close_passages(std::vector<WorkCurve>& curves, std::vector<WorkLoop
       if (!close_round(w, log)) break;
   bool changed = false;
   const std::size_t n_old = loops.size();
-  std::vector<std::uint32_t> unused;   // the curves of the loops cut or rebuilt
+  // The rebuild reads only the rings: the polygons are freed first.
+  for (FlatLoop& f : w.flat) {
+    std::vector<std::uint32_t>().swap(f.kept);
+    std::vector<Vec2>().swap(f.uv);
+    std::vector<double>().swap(f.metres);
+  }
+  // The loops to rebuild (changed in place, or made by cuts) and the curves of the loops
+  // cut or rebuilt, whose points the rebuilt curves take over. Each such curve is freed as
+  // soon as the last ring reading it is rebuilt (rings read the curves' points until then):
+  // freeing them all at the end held every cut continent twice (the import's peak on the
+  // full-resolution world).
+  std::vector<char> rebuilt(w.flat.size(), 0);
+  std::vector<std::uint32_t> unused;
   for (std::size_t l = 0; l < w.flat.size(); ++l) {
     const FlatLoop& f = w.flat[l];
     if (l < n_old) {
-      if (f.dead && !loops[l].dead) {
-        loops[l].dead = true, changed = true;
+      if ((f.dead && !loops[l].dead) || (!f.dead && f.changed))
         unused.insert(unused.end(), loops[l].curves.begin(), loops[l].curves.end());
-      }
-      if (!f.dead && f.changed) {   // a loop changed in place (a dam's points inserted): rebuilt
-        unused.insert(unused.end(), loops[l].curves.begin(), loops[l].curves.end());
-        loops[l] = rebuild(w, f);
-        changed = true;
-      }
+      rebuilt[l] = !f.dead && f.changed;
       continue;
     }
-    if (f.dead) continue;
-    loops.push_back(rebuild(w, f));
-    changed = true;
+    rebuilt[l] = !f.dead;
   }
-  // Their points now live in the rebuilt curves (the pool read them from there until now):
-  // freed, as nothing reads a dead loop's curves, so that the repair after this pass does
-  // not hold the cut continents twice.
-  for (std::uint32_t ci : unused) {
+  std::vector<std::uint32_t> readers(w.n_curves, 0);   // per curve: the rings to rebuild that read it
+  std::vector<std::uint32_t> ring;
+  auto ring_of = [&](const FlatLoop& f) {
+    ring.assign(1, f.head);
+    w.walk(f.head, f.head, [&](std::uint32_t i) { ring.push_back(i); });
+  };
+  std::vector<std::uint32_t> read;   // the curves one ring reads, each once
+  auto curves_read = [&]() {
+    read.clear();
+    for (std::uint32_t i : ring)
+      if (w.nodes[i].curve != kAdded) read.push_back(w.nodes[i].curve);
+    std::sort(read.begin(), read.end());
+    read.erase(std::unique(read.begin(), read.end()), read.end());
+  };
+  for (std::size_t l = 0; l < w.flat.size(); ++l)
+    if (rebuilt[l]) {
+      ring_of(w.flat[l]);
+      curves_read();
+      for (std::uint32_t ci : read) ++readers[ci];
+    }
+  std::vector<char> is_unused(w.n_curves, 0);
+  for (std::uint32_t ci : unused) is_unused[ci] = 1;
+  auto free_curve = [&](std::uint32_t ci) {
     WorkCurve& c = curves[ci];
     std::vector<geo::LonLat>().swap(c.full);
     std::vector<Vec2>().swap(c.uv);
     std::vector<double>().swap(c.gamma);
     std::vector<std::uint32_t>().swap(c.keep);
+  };
+  // Nothing reads a dead loop's curves: those no ring reads go now.
+  for (std::uint32_t ci : unused)
+    if (readers[ci] == 0) free_curve(ci);
+  for (std::size_t l = 0; l < w.flat.size(); ++l) {
+    const FlatLoop& f = w.flat[l];
+    if (l < n_old && f.dead && !loops[l].dead) loops[l].dead = true, changed = true;
+    if (!rebuilt[l]) continue;
+    ring_of(f);
+    curves_read();
+    // A loop changed in place (a dam's points inserted) is rebuilt where it was.
+    if (l < n_old)
+      loops[l] = rebuild(w, f, ring);
+    else
+      loops.push_back(rebuild(w, f, ring));
+    changed = true;
+    for (std::uint32_t ci : read)
+      if (--readers[ci] == 0 && is_unused[ci]) free_curve(ci);
   }
   return changed;
 }

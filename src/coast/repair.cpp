@@ -6,11 +6,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <tuple>
+#include <unordered_map>
 
 #include <fmt/format.h>
 
 #include "coast/intersections.h"
+#include "coast/segment_grid.h"
 #include "exact/ring.h"
 #include "coast/spline_check.h"
 #include "exact/predicates.h"
@@ -663,6 +666,7 @@ void handle_straits(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops
       }
     }
     const std::vector<NearMiss> near = find_near_misses(polys, width);
+    std::optional<SegmentGrid> grid;   // made at the pass's first merge tried
     // Narrowest place per pair of loops, narrowest pairs first; a place where the two
     // segments face each other (run in opposite directions, more than 120 degrees apart)
     // is preferred, since only there can a bridge close the strait.
@@ -675,11 +679,14 @@ void handle_straits(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops
     };
     std::vector<NearMiss> best;
     std::vector<char> best_facing;
+    // The entry of each pair of loops in `best` (a search through `best` for each near miss
+    // was near misses x pairs: thousands of each at full resolution).
+    std::unordered_map<std::uint64_t, std::size_t> best_of;
     for (const NearMiss& m : near) {
       const bool f = facing(m);
-      std::size_t i = 0;
-      while (i < best.size() && !(best[i].loop_a == m.loop_a && best[i].loop_b == m.loop_b)) ++i;
-      if (i == best.size()) {
+      const auto [it, fresh] = best_of.try_emplace((std::uint64_t{m.loop_a} << 32) | m.loop_b, best.size());
+      const std::size_t i = it->second;
+      if (fresh) {
         best.push_back(m);
         best_facing.push_back(f);
       } else if ((f && !best_facing[i]) || (f == static_cast<bool>(best_facing[i]) && m.distance < best[i].distance)) {
@@ -713,23 +720,22 @@ void handle_straits(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops
         const Vec2 b0 = pb[m.seg_b], b1 = pb[(m.seg_b + 1) % pb.size()];
         const std::array<std::array<Vec2, 2>, 2> bridges{{{a0, b1}, {b0, a1}}};
         bool bad = segments_meet(bridges[0][0], bridges[0][1], bridges[1][0], bridges[1][1]);
-        for (std::size_t l = 0; l < polys.size() && !bad; ++l) {
-          if (loops[l].dead) continue;
-          const auto& p = polys[l];
-          for (std::size_t i = 0; i < p.size() && !bad; ++i) {
-            const Vec2 s0 = p[i], s1 = p[(i + 1) % p.size()];
-            for (const auto& br : bridges) {
-              if (std::max(s0.x, s1.x) < std::min(br[0].x, br[1].x) || std::min(s0.x, s1.x) > std::max(br[0].x, br[1].x) ||
-                  std::max(s0.y, s1.y) < std::min(br[0].y, br[1].y) || std::min(s0.y, s1.y) > std::max(br[0].y, br[1].y))
-                continue;
-              // Edges sharing an end point with the bridge are its neighbours in the new loop.
-              if (s0 == br[0] || s0 == br[1] || s1 == br[0] || s1 == br[1]) continue;
-              if (segments_meet(br[0], br[1], s0, s1)) {
-                bad = true;
-                break;
-              }
-            }
-          }
+        // Against the segments of the loops not merged away in this pass, near the bridge
+        // (the grid holds the pass's polygons; a loop merged into another is dead now).
+        for (const auto& br : bridges) {
+          if (bad) break;
+          const Vec2 lo{std::min(br[0].x, br[1].x), std::min(br[0].y, br[1].y)};
+          const Vec2 hi{std::max(br[0].x, br[1].x), std::max(br[0].y, br[1].y)};
+          if (!grid) grid.emplace(polys);
+          bad = grid->any_near_in(lo, hi, [&](std::uint32_t l, Vec2 s0, Vec2 s1) {
+            if (loops[l].dead) return false;
+            if (std::max(s0.x, s1.x) < lo.x || std::min(s0.x, s1.x) > hi.x || std::max(s0.y, s1.y) < lo.y ||
+                std::min(s0.y, s1.y) > hi.y)
+              return false;
+            // Edges sharing an end point with the bridge are its neighbours in the new loop.
+            if (s0 == br[0] || s0 == br[1] || s1 == br[0] || s1 == br[1]) return false;
+            return segments_meet(br[0], br[1], s0, s1);
+          });
         }
         if (!bad) {
           merge_across(curves, la, ra.k, lb, rb.k);

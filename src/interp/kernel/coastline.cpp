@@ -8,6 +8,10 @@
 #include <unordered_set>
 #include <vector>
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
 #include <fmt/format.h>
 
 #include "base/check.h"
@@ -551,6 +555,13 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
   }
   auto built = coast::build_coast_model(std::move(*data), io);
   import_stage.reset();
+  // The import's working arrays (the source points three times over, the passage pool:
+  // hundreds of MB for the full-resolution world) are freed now, but many came from the
+  // heap, whose free pages stay resident beside everything made after (the fields, the
+  // mesh): given back to the system (the 3 km world's -2 peak, docs/benchmarks_scale.md).
+#if defined(__GLIBC__)
+  malloc_trim(0);
+#endif
   if (!built) {
     const coast::CoastError& e = built.error();
     if (auto o = d.option_at.find(e.option); !e.option.empty() && o != d.option_at.end()) {
