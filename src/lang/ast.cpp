@@ -374,7 +374,11 @@ class Dumper {
     return "(" + std::string(kNames[static_cast<int>(n.kind)]) + " " + ent(n.ent) + " " + (n.all ? ":" : expr(n.tags)) + " " + expr(n.value) + ")";
   }
   std::string node(const PeriodicStmt& n) {
-    return "(periodic " + ent(n.ent) + " " + expr(n.slaves) + " " + expr(n.masters) + (n.translate.empty() ? "" : " (translate" + list(n.translate) + ")") + ")";
+    static constexpr std::string_view kTransforms[] = {"", "translate", "rotate", "affine"};
+    const std::string slave = n.slave_surface.valid() ? expr(n.slave_surface) + " " : "";
+    const std::string master = n.master_surface.valid() ? expr(n.master_surface) + " " : "";
+    return "(periodic " + ent(n.ent) + " " + slave + expr(n.slaves) + " " + master + expr(n.masters) +
+           (n.transform == PeriodicTransform::None ? "" : " (" + std::string(kTransforms[static_cast<int>(n.transform)]) + list(n.transform_args) + ")") + ")";
   }
   std::string node(const ReverseMeshStmt& n) { return "(reverse-mesh " + ent(n.ent) + " " + (n.all ? ":" : expr(n.tags)) + ")"; }
   std::string node(const CompoundStmt& n) { return "(compound " + ent(n.ent) + " " + expr(n.tags) + ")"; }

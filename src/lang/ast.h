@@ -298,8 +298,20 @@ struct RecombineStmt { EntityKind ent = EntityKind::Surface; bool all = false; E
 enum class SettingKind : std::uint8_t { MeshAlgorithm, MeshSizeFromBoundary, Smoother };
 /// `MeshAlgorithm Surface{tags} = v;` `MeshSizeFromBoundary Surface{...} = v;` `Smoother Surface{...} = v;`
 struct EntitySettingStmt { SettingKind kind = SettingKind::MeshAlgorithm; EntityKind ent = EntityKind::Surface; bool all = false; ExprId tags; ExprId value; };
-/// `Periodic Curve{slaves} = {masters} [Translate{dx,dy,dz}];` (translate: params, empty if absent)
-struct PeriodicStmt { EntityKind ent = EntityKind::Curve; ExprId slaves; ExprId masters; ExprList translate; };
+enum class PeriodicTransform : std::uint8_t { None, Translate, Rotate, Affine };
+/// `Periodic Curve{slaves} = {masters} [Translate{dx,dy,dz} | Rotate{{axis},{point},angle} | Affine{16 numbers}];`
+/// (transform_args: the transform's items, empty without one), and Gmsh's surface form
+/// `Periodic Surface s {slave curves} = m {master curves};` (slave_surface/master_surface set,
+/// slaves/masters the curve lists).
+struct PeriodicStmt {
+  EntityKind ent = EntityKind::Curve;
+  ExprId slaves;
+  ExprId masters;
+  PeriodicTransform transform = PeriodicTransform::None;
+  ExprList transform_args;
+  ExprId slave_surface;
+  ExprId master_surface;
+};
 /// `ReverseMesh Curve{tags};` / `Reverse Surface{...};`
 struct ReverseMeshStmt { EntityKind ent = EntityKind::Curve; bool all = false; ExprId tags; };
 /// `Compound Curve{tags};` / `Compound Surface{tags};` (meshing constraint)
