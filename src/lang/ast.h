@@ -138,6 +138,8 @@ struct OptionExpr { OptionRef option; };
 struct EntityQueryExpr { EntityKind ent = EntityKind::Point; bool physical = false; bool all = false; ExprList tags; };
 /// `Point In BoundingBox{xmin,ymin,zmin,xmax,ymax,zmax}`: tags inside the box.
 struct EntityInBoxExpr { EntityKind ent = EntityKind::Point; ExprList box; };
+/// `Intersect Curve{curves} Surface{s}`: a new point where each curve meets the surface.
+struct IntersectExpr { ExprList curves; ExprId surface; };
 enum class BoundaryKind : std::uint8_t { Boundary, CombinedBoundary, PointsOf };
 /// `Boundary{ Surface{1}; }` etc.: signed tags of the boundary entities.
 struct BoundaryExpr { BoundaryKind kind = BoundaryKind::Boundary; ShapeBlock shapes; };
@@ -156,13 +158,13 @@ struct CoastlineQueryExpr { ExprList ids; };
 enum class ExprKind : std::uint8_t {
   Error, Number, String, Var, Constant, Unary, Binary, Ternary, Postfix, Index, WholeList,
   Slice, Length, List, Range, Call, Option, EntityQuery, EntityInBox, Boundary, Transform,
-  CoastlineQuery
+  CoastlineQuery, Intersect
 };
 using ExprNode = std::variant<ErrorExpr, NumberExpr, StringExpr, VarExpr, ConstantExpr, UnaryExpr,
                               BinaryExpr, TernaryExpr, PostfixExpr, IndexExpr, WholeListExpr,
                               SliceExpr, LengthExpr, ListExpr, RangeExpr, CallExpr, OptionExpr,
                               EntityQueryExpr, EntityInBoxExpr, BoundaryExpr, TransformExpr,
-                              CoastlineQueryExpr>;
+                              CoastlineQueryExpr, IntersectExpr>;
 
 struct Expr {
   SourceRange range;
