@@ -349,6 +349,10 @@ GeoStatus Model::add_curve(int tag, CurveKind kind, const std::vector<int>& poin
   auto shape = build_shape(c);
   if (!shape) return shape.error();
   c.shape = std::move(*shape);
+  if (collapses(*this, c))
+    note_compat(fmt::format("{} {} has zero length (points {} and {} are at the same place): Gmsh collapses it, "
+                            "and so do we: both points get one mesh node and the curve no mesh edge",
+                            to_string(kind), tag, c.begin, c.end));
   curves_.emplace(tag, std::move(c));
   bump_max(1, tag);
   return {};
@@ -710,6 +714,80 @@ GeoResult<Vec3> Model::surface_point(int tag, Vec2 uv) const {
     if (circles && !one_plane) patch.sphere_centre = vertices_.at(centre).xyz;
   }
   return patch.point(uv);
+}
+
+GeoResult<std::optional<double>> Model::intersect_curve_surface(int curve_tag, int surface_tag) const {
+  const ModelCurve* c = curve(curve_tag);
+  if (!c || !c->shape) return missing(EntityKind::Curve, curve_tag, {}, fmt::format(" to intersect with surface {}", surface_tag));
+  if (!surface(surface_tag)) return missing(EntityKind::Surface, surface_tag, {}, "");
+  // F(u, v, t) = S(u, v) - C(t) = 0 by Newton's method with a forward-difference Jacobian,
+  // as Gmsh does: at most 10 steps from (0.5, 0.5, 0.5), relative step 1e-4, converged when
+  // the step is below 1e-6. A singular Jacobian or a runaway iterate is no intersection.
+  double x[3] = {0.5, 0.5, 0.5};
+  std::optional<GeoError> failed;
+  auto f = [&](const double* a, double* out) {
+    auto sp = surface_point(surface_tag, {a[0], a[1]});
+    if (!sp) {
+      failed = sp.error();
+      return false;
+    }
+    const Vec3 d = *sp - c->shape->point(a[2]);
+    out[0] = d.x, out[1] = d.y, out[2] = d.z;
+    return std::isfinite(out[0]) && std::isfinite(out[1]) && std::isfinite(out[2]);
+  };
+  for (int iter = 0; iter < 10; ++iter) {
+    if (std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) > 1e6) break;
+    double f0[3] = {0, 0, 0}, j[3][4] = {};
+    if (!f(x, f0)) break;
+    if (f0[0] == 0 && f0[1] == 0 && f0[2] == 0) return std::optional<double>(x[2]);
+    bool ok = true;
+    for (int k = 0; k < 3 && ok; ++k) {
+      double h = 1e-4 * std::fabs(x[k]);
+      if (h == 0) h = 1e-4;
+      double xh[3] = {x[0], x[1], x[2]}, fh[3] = {0, 0, 0};
+      xh[k] += h;
+      ok = f(xh, fh);
+      for (int r = 0; r < 3; ++r) j[r][k] = (fh[r] - f0[r]) / h;
+    }
+    if (!ok) break;
+    for (int r = 0; r < 3; ++r) j[r][3] = f0[r];
+    // Gaussian elimination with partial pivoting on the 3x4 system J dx = f.
+    for (int col = 0; col < 3 && ok; ++col) {
+      int piv = col;
+      for (int r = col + 1; r < 3; ++r)
+        if (std::fabs(j[r][col]) > std::fabs(j[piv][col])) piv = r;
+      if (j[piv][col] == 0) ok = false;
+      if (!ok) break;
+      for (int k = 0; k < 4; ++k) std::swap(j[col][k], j[piv][k]);
+      for (int r = col + 1; r < 3; ++r) {
+        const double m = j[r][col] / j[col][col];
+        for (int k = col; k < 4; ++k) j[r][k] -= m * j[col][k];
+      }
+    }
+    if (!ok) break;
+    double dx[3] = {0, 0, 0};
+    for (int r = 2; r >= 0; --r) {
+      double v = j[r][3];
+      for (int k = r + 1; k < 3; ++k) v -= j[r][k] * dx[k];
+      dx[r] = v / j[r][r];
+    }
+    for (int k = 0; k < 3; ++k) x[k] -= dx[k];
+    if (std::sqrt(dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2]) < 1e-6) return std::optional<double>(x[2]);
+  }
+  if (failed) return *failed;
+  return std::optional<double>{};
+}
+
+bool collapses(const Model& m, const ModelCurve& c) {
+  if (c.begin == c.end || c.points.size() < 2) return false;
+  if (c.kind == CurveKind::Circle || c.kind == CurveKind::Ellipse) return false;
+  const ModelVertex* first = m.vertex(c.points.front());
+  if (!first) return false;
+  for (int p : c.points) {
+    const ModelVertex* v = m.vertex(p);
+    if (!v || v->xyz != first->xyz) return false;
+  }
+  return true;
 }
 
 }  // namespace sm::geo

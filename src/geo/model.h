@@ -126,6 +126,10 @@ class Model {
   GeoStatus add_surface_filling(int tag, const std::vector<int>& loops, std::optional<int> sphere_centre = std::nullopt);
   /// The point at (u,v) of a filling surface or of a surface on a geometry.
   GeoResult<Vec3> surface_point(int tag, Vec2 uv) const;
+  /// Where curve `curve` meets the filling surface `surface`: the curve's parameter, or
+  /// nothing when Gmsh's search (Newton from u = v = t = 0.5, Geo/Geo.cpp's
+  /// IntersectCurvesWithSurface) does not converge.
+  GeoResult<std::optional<double>> intersect_curve_surface(int curve, int surface) const;
   /// "Physical Point|Curve|Surface(tag | "name" | "name", tag) =|+=|-= {...};". Returns
   /// the group's tag (Gmsh's auto-tag: 1 + the largest physical tag, all dimensions).
   GeoResult<int> add_physical(int dim, std::optional<int> tag, const std::string& name,
@@ -253,5 +257,10 @@ class Model {
   int hidden_loop_tag_ = 0;   // loops of duplicated surfaces: counted down from INT_MAX (see duplicate())
   bool duplicate_took_spare_points_ = false;   // see coherence()
 };
+
+/// A curve Gmsh collapses: between two distinct points at the same place, with every
+/// control point there too (a zero-length Line, a Spline or B-spline of repeated points).
+/// Circles and ellipses never do. The 1D mesh gives it one node and no edge.
+bool collapses(const Model& m, const ModelCurve& c);
 
 }  // namespace sm::geo

@@ -322,7 +322,28 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
   double bbox = opt.bbox_diag;
   if (!(bbox > 0)) bbox = model.bounding_box().diagonal();
   if (!(bbox > 0)) bbox = 1;
+  // Gmsh's leniency on coincident points: a curve between two distinct points at the same
+  // place whose control points are all there (a zero-length Line, a B-spline of repeated
+  // points) is collapsed: its two end points get one node and the curve no edge, so the
+  // loops through it stay closed (geo/model.cpp notes it where the curve is made). The
+  // points joined so are grouped under their smallest tag (a union-find over the vertices).
+  std::map<int, int> joined;   // vertex tag -> a vertex it was joined to (smaller tag)
+  auto root_of = [&](int v) {
+    for (auto it = joined.find(v); it != joined.end(); it = joined.find(v)) v = it->second;
+    return v;
+  };
+  std::vector<int> collapsed;   // curve tags, ascending
+  for (const auto& [tag, mc] : model.curves()) {
+    if (!geo::collapses(model, mc)) continue;
+    collapsed.push_back(tag);
+    const int a = root_of(mc.begin), b = root_of(mc.end);
+    if (a != b) joined[std::max(a, b)] = std::min(a, b);
+  }
   for (const auto& [tag, v] : model.vertices()) {
+    if (const int root = root_of(tag); root != tag) {   // the root's tag is smaller: made already
+      mesh.vertex_node[tag] = mesh.vertex_node.at(root);
+      continue;
+    }
     const geo::SurfaceGeometry* g = v.geometry ? model.geometry(v.geometry) : nullptr;
     mesh.vertex_node[tag] = g ? mesh.add_node(v.xyz, v.uv) : mesh.add_node(v.xyz);
   }
@@ -373,6 +394,7 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
     std::vector<Vec2> uv;         // interior nodes, on a surface's curve
     const TransfiniteCurveSpec* transfinite = nullptr;
     bool odd = false;             // bounds a recombined surface: an odd node count
+    bool collapsed = false;       // zero length between coincident points: one node, no edge
   };
   std::vector<CurvePlan> plans;
   plans.reserve(model.curves().size());
@@ -396,6 +418,7 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
       if (const auto it = opt.constraints->curves.find(tag); it != opt.constraints->curves.end())
         cp.transfinite = &it->second;
     cp.odd = !cp.transfinite && std::binary_search(odd_curves.begin(), odd_curves.end(), tag);
+    cp.collapsed = std::binary_search(collapsed.begin(), collapsed.end(), tag);
   }
   const int threads = resolve_thread_count(opt.threads);
   // Each curve's size h(t) along it: the policy with the background field, the end
@@ -445,6 +468,10 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
     }
     if (vb->lc < geo::kMaxLc) cp.lc0 = vb->lc;
     if (ve->lc < geo::kMaxLc) cp.lc1 = ve->lc;
+    if (cp.collapsed) {
+      cp.nodes = 1;
+      return;
+    }
     // Gmsh 4.8.4 integrates a Bezier curve of degree d with |X'| / d (measured: a
     // 3-point Bezier of length 3 at lc 0.1 gets 16 segments, a 6-point one 7), so its
     // node count is d times smaller than the sizes ask; we follow it for compatibility.
@@ -519,6 +546,13 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
       const geo::Curve& shape = *cp.mc->shape;
       CurveMesh cm;
       cm.tag = cp.tag;
+      if (cp.collapsed) {
+        cm.t = {0.0};
+        cm.nodes = {coarse.vertex_node.at(cp.mc->begin)};
+        cm.h = {cp.lc0.value_or(bbox)};
+        coarse.curves.emplace(cp.tag, std::move(cm));
+        continue;
+      }
       cm.t = cp.transfinite ? transfinite_parameters(shape, *cp.transfinite)
                             : place_n_nodes(cp.prim, static_cast<int>(std::min<double>(cp.nodes, kCoarseCurveNodes)));
       cm.nodes.push_back(coarse.vertex_node.at(cp.mc->begin));
@@ -541,6 +575,10 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
   }
   // The nodes of each curve (parameters and coordinates), in parallel; then numbered.
   auto place_plan = [&](CurvePlan& cp) {
+    if (cp.collapsed) {
+      cp.ts = {0.0};
+      return;
+    }
     const geo::ModelCurve& mc = *cp.mc;
     const geo::Curve& shape = *mc.shape;
     const geo::ModelVertex* vb = model.vertex(mc.begin);
@@ -619,6 +657,11 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
     cm.tag = cp.tag;
     cm.nodes.reserve(cp.ts.size());
     cm.nodes.push_back(mesh.vertex_node.at(mc.begin));
+    if (cp.collapsed) {   // its end's node is its start's
+      cm.t = std::move(cp.ts);
+      mesh.curves.emplace(cp.tag, std::move(cm));
+      continue;
+    }
     for (std::size_t i = 0; i < cp.xyz.size(); ++i)
       cm.nodes.push_back(cp.uv.empty() ? mesh.add_node(cp.xyz[i]) : mesh.add_node(cp.xyz[i], cp.uv[i]));
     cm.nodes.push_back(mesh.vertex_node.at(mc.end));
@@ -650,6 +693,7 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
     std::sort(in_surface.begin(), in_surface.end());
     for (const auto& [tag, mc] : model.curves()) {
       if (!opt.repair_all_curves && !std::binary_search(in_surface.begin(), in_surface.end(), tag)) continue;
+      if (mesh.curves.at(tag).nodes.size() < 2) continue;   // collapsed: no edge to cross
       const int key = mc.shape->on_surface() ? mc.geometry : 0;
       if (key == 0) {
         for (std::uint32_t n : mesh.curves.at(tag).nodes) {
