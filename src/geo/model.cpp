@@ -391,10 +391,18 @@ GeoStatus Model::add_curve_loop(int tag, const std::vector<int>& curves) {
     edges.push_back(sc > 0 ? LoopEdge{sc, c->begin, c->end} : LoopEdge{sc, c->end, c->begin});
   }
   auto chained = chain_loop(tag, edges);
-  if (!chained) return chained.error();
+  if (!chained && chained.error().kind != GeoErrorKind::LoopNotClosed) return chained.error();
   ModelCurveLoop l;
   l.tag = tag;
-  l.curves = std::move(*chained);
+  if (!chained) {
+    note_compat(fmt::format("{}: Gmsh 4.8.4 creates the loop unchecked, and so do we; a surface bounded by it is "
+                            "an error",
+                            chained.error().message));
+    l.curves = curves;
+    l.unclosed = chained.error();
+  } else {
+    l.curves = std::move(*chained);
+  }
   l.reordered = l.curves != curves;
   loops_.emplace(tag, std::move(l));
   bump_max(kLoopSlot, tag);
@@ -409,8 +417,10 @@ GeoStatus Model::add_plane_surface(int tag, const std::vector<int>& loops) {
   if (loops.empty())
     return make_error(GeoErrorKind::LoopEmpty, EntityKind::Surface, {tag},
                       fmt::format("plane surface {} has no curve loop", tag));
-  for (int l : loops)
+  for (int l : loops) {
     if (l == 0 || !curve_loop(std::abs(l))) return missing(EntityKind::CurveLoop, l, {tag}, fmt::format(" in plane surface {}", tag));
+    if (const auto& open = curve_loop(std::abs(l))->unclosed) return *open;
+  }
   for (std::size_t i = 0; i < loops.size(); ++i)
     for (std::size_t j = 0; j < i; ++j)
       if (std::abs(loops[i]) == std::abs(loops[j]))
@@ -650,6 +660,7 @@ GeoStatus Model::add_surface_filling(int tag, const std::vector<int>& loops, std
                       fmt::format("surface {} needs exactly one curve loop (got {}): holes need a Plane Surface", tag,
                                   loops.size()));
   const ModelCurveLoop* l = curve_loop(std::abs(loops[0]));
+  if (l && l->unclosed) return *l->unclosed;
   if (loops[0] == 0 || !l) return missing(EntityKind::CurveLoop, loops[0], {tag}, fmt::format(" in surface {}", tag));
   if (l->curves.size() != 3 && l->curves.size() != 4)
     return make_error(GeoErrorKind::BadArgument, EntityKind::Surface, {tag, std::abs(loops[0])},

@@ -44,6 +44,10 @@ struct ModelCurveLoop {
   int tag = 0;
   std::vector<int> curves;   // signed curve tags, in chained order
   bool reordered = false;    // Gmsh-style reordering changed the written order
+  /// Gmsh 4.8.4 creates a curve loop without checking that it closes (Geo/Geo.cpp's
+  /// SortEdgesInLoop stops when it has placed every curve): such a loop is kept, as
+  /// written, with why it does not close; a surface bounded by it is that error.
+  std::optional<GeoError> unclosed;
 };
 
 struct ModelSurface {
