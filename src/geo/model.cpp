@@ -655,13 +655,20 @@ GeoResult<std::vector<DimTag>> Model::boundary(const std::vector<DimTag>& entiti
 GeoStatus Model::add_surface_filling(int tag, const std::vector<int>& loops, std::optional<int> sphere_centre) {
   touch();
   if (auto s = check_new_tag(EntityKind::Surface, tag, surfaces_.count(tag) > 0); !s) return s;
-  if (loops.size() != 1)
-    return make_error(GeoErrorKind::BadArgument, EntityKind::Surface, {tag},
-                      fmt::format("surface {} needs exactly one curve loop (got {}): holes need a Plane Surface", tag,
-                                  loops.size()));
+  if (loops.empty())
+    return make_error(GeoErrorKind::LoopEmpty, EntityKind::Surface, {tag}, fmt::format("surface {} has no curve loop", tag));
+  // Gmsh 4.8.4 (Geo/GModelIO_GEO.cpp's addSurfaceFilling): the first loop, of 3 or 4
+  // curves, is the patch; the others are holes in it (benchmarks/2d/ruled_on_sphere.geo).
+  for (std::size_t i = 0; i < loops.size(); ++i) {
+    const ModelCurveLoop* h = curve_loop(std::abs(loops[i]));
+    if (loops[i] == 0 || !h) return missing(EntityKind::CurveLoop, loops[i], {tag}, fmt::format(" in surface {}", tag));
+    if (h->unclosed) return *h->unclosed;
+    for (std::size_t j = 0; j < i; ++j)
+      if (std::abs(loops[i]) == std::abs(loops[j]))
+        return make_error(GeoErrorKind::BadArgument, EntityKind::Surface, {tag, std::abs(loops[i])},
+                          fmt::format("surface {} lists curve loop {} twice", tag, std::abs(loops[i])));
+  }
   const ModelCurveLoop* l = curve_loop(std::abs(loops[0]));
-  if (l && l->unclosed) return *l->unclosed;
-  if (loops[0] == 0 || !l) return missing(EntityKind::CurveLoop, loops[0], {tag}, fmt::format(" in surface {}", tag));
   if (l->curves.size() != 3 && l->curves.size() != 4)
     return make_error(GeoErrorKind::BadArgument, EntityKind::Surface, {tag, std::abs(loops[0])},
                       fmt::format("surface {}: curve loop {} has {} curves, a filling needs 3 or 4", tag,

@@ -388,6 +388,10 @@ bool FaceMesher::refine(const std::function<void(std::span<const Vec2>, std::spa
 
 bool FaceMesher::run(const geo::ModelSurface& s) {
   tag_ = s.tag;
+  if (s.filling && s.loops.size() > 1)
+    return fail(fmt::format("a filling 'Surface' with holes (curve loop {}{}) is not meshed yet (Gmsh meshes it in "
+                            "the (u,v) of its first loop's patch)",
+                            std::abs(s.loops[1]), s.loops.size() > 2 ? fmt::format(" and {} more", s.loops.size() - 2) : ""));
   if (opt_.constraints)
     if (const auto it = opt_.constraints->surfaces.find(s.tag); it != opt_.constraints->surfaces.end()) {
       if (estimate_only_) return true;   // a grid: its count is the curves' product
