@@ -801,9 +801,13 @@ bool collapses(const Model& m, const ModelCurve& c) {
   if (c.kind == CurveKind::Circle || c.kind == CurveKind::Ellipse) return false;
   const ModelVertex* first = m.vertex(c.points.front());
   if (!first) return false;
+  // "The same place" within Geometry.Tolerance relative to the point's distance from the
+  // origin (at least 1): the bounding box would cost a pass per curve, and points written
+  // as 0.2 + 0.1 and 0.3 must meet.
+  const double tol = m.options().tolerance * std::max(1.0, norm(first->xyz));
   for (int p : c.points) {
     const ModelVertex* v = m.vertex(p);
-    if (!v || v->xyz != first->xyz) return false;
+    if (!v || norm(v->xyz - first->xyz) > tol) return false;
   }
   return true;
 }

@@ -262,8 +262,8 @@ class Model {
   bool duplicate_took_spare_points_ = false;   // see coherence()
 };
 
-/// A curve Gmsh collapses: between two distinct points at the same place, with every
-/// control point there too (a zero-length Line, a Spline or B-spline of repeated points).
+/// A curve Gmsh collapses: between two distinct points at the same place (within
+/// Geometry.Tolerance), with every control point there too (a zero-length Line, a Spline or B-spline of repeated points).
 /// Circles and ellipses never do. The 1D mesh gives it one node and no edge.
 bool collapses(const Model& m, const ModelCurve& c);
 
