@@ -494,8 +494,8 @@ GeoStatus Model::add_plane_surface(int tag, const std::vector<int>& loops) {
       // outer loop there. Holes all beyond it (benchmarks/2d/world.geo: a small outer loop
       // round the plane's origin, the continents around it) mean the sea on the other side,
       // which holds the projection pole, the plane's infinity, where no face can reach.
-      // Gmsh 4.8.4 reports nothing and meshes the inside of the holes instead (measured on
-      // world.geo: 366 of its 373 triangles inside one continent): it stays our error, said so.
+      // Gmsh 4.8.4 reports nothing and meshes only the inside of the outer loop
+      // (docs/language.md): it stays our error, said so.
       std::string pole_side;
       if (g && g->polar() && first.crossing.empty() && first.outside.size() + 1 == loops.size())
         pole_side = fmt::format(": in the (u,v) plane of PolarSphere {} every hole lies outside it, so the region "
