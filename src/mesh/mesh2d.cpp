@@ -410,6 +410,10 @@ bool FaceMesher::run(const geo::ModelSurface& s) {
   if (!check_budget(estimate)) return false;
   res_.stats.seconds_boundary += seconds_since(t0);
   if (estimate_only_) return true;
+  if (opt_.algorithm == Mesh2dAlgorithm::InitialOnly) {   // Gmsh's "initial mesh only"
+    output();
+    return true;
+  }
 
   t0 = std::chrono::steady_clock::now();
   if (!refine_face(estimate)) return false;
@@ -906,7 +910,13 @@ Mesh2dResult mesh_surfaces(const geo::Model& model, ModelMesh& mesh, const Mesh2
   progress_begin(opt.progress, "2D", model.surfaces().size());
   std::uint64_t faces_done = 0;
   for (const auto& [tag, s] : model.surfaces()) {
-    FaceMesher fm(model, mesh, opt, bbox, res, local_of);
+    Mesh2dOptions own;   // a face with an algorithm of its own: the options with it
+    const auto algo = opt.surface_algorithm.find(tag);
+    if (algo != opt.surface_algorithm.end()) {
+      own = opt;
+      own.algorithm = algo->second;
+    }
+    FaceMesher fm(model, mesh, algo != opt.surface_algorithm.end() ? own : opt, bbox, res, local_of);
     if (!fm.run(s)) {
       progress_end(opt.progress);
       return res;
