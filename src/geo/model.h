@@ -44,6 +44,10 @@ struct ModelCurveLoop {
   int tag = 0;
   std::vector<int> curves;   // signed curve tags, in chained order
   bool reordered = false;    // Gmsh-style reordering changed the written order
+  /// Gmsh 4.8.4 creates a curve loop without checking that it closes (Geo/Geo.cpp's
+  /// SortEdgesInLoop stops when it has placed every curve): such a loop is kept, as
+  /// written, with why it does not close; a surface bounded by it is that error.
+  std::optional<GeoError> unclosed;
 };
 
 struct ModelSurface {
@@ -126,6 +130,10 @@ class Model {
   GeoStatus add_surface_filling(int tag, const std::vector<int>& loops, std::optional<int> sphere_centre = std::nullopt);
   /// The point at (u,v) of a filling surface or of a surface on a geometry.
   GeoResult<Vec3> surface_point(int tag, Vec2 uv) const;
+  /// Where curve `curve` meets the filling surface `surface`: the curve's parameter, or
+  /// nothing when Gmsh's search (Newton from u = v = t = 0.5, Geo/Geo.cpp's
+  /// IntersectCurvesWithSurface) does not converge.
+  GeoResult<std::optional<double>> intersect_curve_surface(int curve, int surface) const;
   /// "Physical Point|Curve|Surface(tag | "name" | "name", tag) =|+=|-= {...};". Returns
   /// the group's tag (Gmsh's auto-tag: 1 + the largest physical tag, all dimensions).
   GeoResult<int> add_physical(int dim, std::optional<int> tag, const std::string& name,
@@ -253,5 +261,10 @@ class Model {
   int hidden_loop_tag_ = 0;   // loops of duplicated surfaces: counted down from INT_MAX (see duplicate())
   bool duplicate_took_spare_points_ = false;   // see coherence()
 };
+
+/// A curve Gmsh collapses: between two distinct points at the same place (within
+/// Geometry.Tolerance), with every control point there too (a zero-length Line, a Spline or B-spline of repeated points).
+/// Circles and ellipses never do. The 1D mesh gives it one node and no edge.
+bool collapses(const Model& m, const ModelCurve& c);
 
 }  // namespace sm::geo

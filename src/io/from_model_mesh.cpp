@@ -102,11 +102,15 @@ MeshModel from_model_mesh(const geo::Model& model, const ModelMesh& mesh, std::v
     return it == groups_of.end() ? std::vector<int>{} : it->second;
   };
   out.entities.reserve(mesh.vertex_node.size() + mesh.curves.size() + model.surfaces().size());
+  // Points joined by a collapsed curve (mesh/mesh1d.cpp) share one node: the first of them
+  // (smallest tag) owns it, the others keep their point element on it.
+  std::vector<std::uint8_t> owned(mesh.nodes.size(), 0);
   for (const auto& [tag, node] : mesh.vertex_node) {
     EntityMesh e;
     e.dim = 0, e.tag = tag, e.type = ElementType::Point1;
     e.physical_tags = physicals(0, tag);
-    e.nodes = {node};
+    if (!owned[node]) e.nodes = {node};
+    owned[node] = 1;
     e.connectivity = {node};
     out.entities.push_back(std::move(e));
   }

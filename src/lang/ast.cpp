@@ -67,6 +67,7 @@ SM_CHECK_KIND(ExprKind, ExprNode, EntityInBox, EntityInBoxExpr)
 SM_CHECK_KIND(ExprKind, ExprNode, Boundary, BoundaryExpr)
 SM_CHECK_KIND(ExprKind, ExprNode, Transform, TransformExpr)
 SM_CHECK_KIND(ExprKind, ExprNode, CoastlineQuery, CoastlineQueryExpr)
+SM_CHECK_KIND(ExprKind, ExprNode, Intersect, IntersectExpr)
 SM_CHECK_KIND(StmtKind, StmtNode, Assign, AssignStmt)
 SM_CHECK_KIND(StmtKind, StmtNode, IncDec, IncDecStmt)
 SM_CHECK_KIND(StmtKind, StmtNode, DefineConstant, DefineConstantStmt)
@@ -122,7 +123,7 @@ SM_CHECK_KIND(StmtKind, StmtNode, View, ViewStmt)
 SM_CHECK_KIND(StmtKind, StmtNode, Color, ColorStmt)
 SM_CHECK_KIND(StmtKind, StmtNode, Visibility, VisibilityStmt)
 #undef SM_CHECK_KIND
-static_assert(std::variant_size_v<ExprNode> == static_cast<std::size_t>(ExprKind::CoastlineQuery) + 1);
+static_assert(std::variant_size_v<ExprNode> == static_cast<std::size_t>(ExprKind::Intersect) + 1);
 static_assert(std::variant_size_v<StmtNode> == static_cast<std::size_t>(StmtKind::Visibility) + 1);
 
 }  // namespace
@@ -290,6 +291,7 @@ class Dumper {
     return "(" + std::string(kNames[static_cast<int>(n.kind)]) + " (params" + list(n.params) + ") " + shapes(n.shapes) + ")";
   }
   std::string node(const CoastlineQueryExpr& n) { return "(coastline" + list(n.ids) + ")"; }
+  std::string node(const IntersectExpr& n) { return "(intersect" + list(n.curves) + " " + expr(n.surface) + ")"; }
 
   // statements
   std::string node(const AssignStmt& n) { return "(assign " + std::string(affop_text(n.op)) + " " + lvalue(n.target) + " " + expr(n.value) + ")"; }
@@ -374,7 +376,11 @@ class Dumper {
     return "(" + std::string(kNames[static_cast<int>(n.kind)]) + " " + ent(n.ent) + " " + (n.all ? ":" : expr(n.tags)) + " " + expr(n.value) + ")";
   }
   std::string node(const PeriodicStmt& n) {
-    return "(periodic " + ent(n.ent) + " " + expr(n.slaves) + " " + expr(n.masters) + (n.translate.empty() ? "" : " (translate" + list(n.translate) + ")") + ")";
+    static constexpr std::string_view kTransforms[] = {"", "translate", "rotate", "affine"};
+    const std::string slave = n.slave_surface.valid() ? expr(n.slave_surface) + " " : "";
+    const std::string master = n.master_surface.valid() ? expr(n.master_surface) + " " : "";
+    return "(periodic " + ent(n.ent) + " " + slave + expr(n.slaves) + " " + master + expr(n.masters) +
+           (n.transform == PeriodicTransform::None ? "" : " (" + std::string(kTransforms[static_cast<int>(n.transform)]) + list(n.transform_args) + ")") + ")";
   }
   std::string node(const ReverseMeshStmt& n) { return "(reverse-mesh " + ent(n.ent) + " " + (n.all ? ":" : expr(n.tags)) + ")"; }
   std::string node(const CompoundStmt& n) { return "(compound " + ent(n.ent) + " " + expr(n.tags) + ")"; }

@@ -138,6 +138,8 @@ struct OptionExpr { OptionRef option; };
 struct EntityQueryExpr { EntityKind ent = EntityKind::Point; bool physical = false; bool all = false; ExprList tags; };
 /// `Point In BoundingBox{xmin,ymin,zmin,xmax,ymax,zmax}`: tags inside the box.
 struct EntityInBoxExpr { EntityKind ent = EntityKind::Point; ExprList box; };
+/// `Intersect Curve{curves} Surface{s}`: a new point where each curve meets the surface.
+struct IntersectExpr { ExprList curves; ExprId surface; };
 enum class BoundaryKind : std::uint8_t { Boundary, CombinedBoundary, PointsOf };
 /// `Boundary{ Surface{1}; }` etc.: signed tags of the boundary entities.
 struct BoundaryExpr { BoundaryKind kind = BoundaryKind::Boundary; ShapeBlock shapes; };
@@ -156,13 +158,13 @@ struct CoastlineQueryExpr { ExprList ids; };
 enum class ExprKind : std::uint8_t {
   Error, Number, String, Var, Constant, Unary, Binary, Ternary, Postfix, Index, WholeList,
   Slice, Length, List, Range, Call, Option, EntityQuery, EntityInBox, Boundary, Transform,
-  CoastlineQuery
+  CoastlineQuery, Intersect
 };
 using ExprNode = std::variant<ErrorExpr, NumberExpr, StringExpr, VarExpr, ConstantExpr, UnaryExpr,
                               BinaryExpr, TernaryExpr, PostfixExpr, IndexExpr, WholeListExpr,
                               SliceExpr, LengthExpr, ListExpr, RangeExpr, CallExpr, OptionExpr,
                               EntityQueryExpr, EntityInBoxExpr, BoundaryExpr, TransformExpr,
-                              CoastlineQueryExpr>;
+                              CoastlineQueryExpr, IntersectExpr>;
 
 struct Expr {
   SourceRange range;
@@ -298,8 +300,20 @@ struct RecombineStmt { EntityKind ent = EntityKind::Surface; bool all = false; E
 enum class SettingKind : std::uint8_t { MeshAlgorithm, MeshSizeFromBoundary, Smoother };
 /// `MeshAlgorithm Surface{tags} = v;` `MeshSizeFromBoundary Surface{...} = v;` `Smoother Surface{...} = v;`
 struct EntitySettingStmt { SettingKind kind = SettingKind::MeshAlgorithm; EntityKind ent = EntityKind::Surface; bool all = false; ExprId tags; ExprId value; };
-/// `Periodic Curve{slaves} = {masters} [Translate{dx,dy,dz}];` (translate: params, empty if absent)
-struct PeriodicStmt { EntityKind ent = EntityKind::Curve; ExprId slaves; ExprId masters; ExprList translate; };
+enum class PeriodicTransform : std::uint8_t { None, Translate, Rotate, Affine };
+/// `Periodic Curve{slaves} = {masters} [Translate{dx,dy,dz} | Rotate{{axis},{point},angle} | Affine{16 numbers}];`
+/// (transform_args: the transform's items, empty without one), and Gmsh's surface form
+/// `Periodic Surface s {slave curves} = m {master curves};` (slave_surface/master_surface set,
+/// slaves/masters the curve lists).
+struct PeriodicStmt {
+  EntityKind ent = EntityKind::Curve;
+  ExprId slaves;
+  ExprId masters;
+  PeriodicTransform transform = PeriodicTransform::None;
+  ExprList transform_args;
+  ExprId slave_surface;
+  ExprId master_surface;
+};
 /// `ReverseMesh Curve{tags};` / `Reverse Surface{...};`
 struct ReverseMeshStmt { EntityKind ent = EntityKind::Curve; bool all = false; ExprId tags; };
 /// `Compound Curve{tags};` / `Compound Surface{tags};` (meshing constraint)

@@ -104,7 +104,8 @@ Token Lexer::next() {
     case ',': return tok(Tok::Comma, 1);
     case ';': return tok(Tok::Semicolon, 1);
     case ':': return c1 == ':' ? tok(Tok::ColonColon, 2) : tok(Tok::Colon, 1);
-    case '.': return tok(Tok::Dot, 1);
+    case '.':  // "..." is Gmsh's other spelling of ':' (Parser/Gmsh.l: both are tDOTS): {1 ... 150}
+      return c1 == '.' && pos_ + 2 < n && text_[pos_ + 2] == '.' ? tok(Tok::Colon, 3) : tok(Tok::Dot, 1);
     case '#': return tok(Tok::Hash, 1);
     case '~': return tok(Tok::Tilde, 1);
     case '?': return tok(Tok::Question, 1);

@@ -136,7 +136,9 @@ ExprId Parser::parse_primary() {
       const ExprId operand = parse_postfix();
       return add_expr(h, LengthExpr{operand});
     }
-    case Tok::Ident: return parse_name_primary();
+    case Tok::Ident:
+      if (at_word("Intersect") && at(Tok::Curve, 1)) return parse_intersect();
+      return parse_name_primary();
     case Tok::View:  // option category: View[0].Name
       if (at(Tok::LBracket, 1) || at(Tok::Dot, 1)) return parse_name_primary();
       break;
@@ -363,6 +365,22 @@ ExprId Parser::parse_coastline_query() {
   const Token open = expect(Tok::LBrace, "'{' after 'Coastline' (or '[' for a coastline definition)");
   ExprList ids = parse_items_until(Tok::RBrace, open);
   return add_expr(kw, CoastlineQueryExpr{std::move(ids)});
+}
+
+// intersect := "Intersect" "Curve" "{" items "}" "Surface" "{" expr "}"
+// (Gmsh 4.8.4's Parser/Gmsh.y: the built-in kernel's curve-surface intersection)
+ExprId Parser::parse_intersect() {
+  const Token kw = advance();
+  DepthGuard guard(*this);
+  expect(Tok::Curve, "'Curve' after 'Intersect'");
+  const Token open = expect(Tok::LBrace, "'{' after 'Curve'");
+  IntersectExpr node;
+  node.curves = parse_items_until(Tok::RBrace, open);
+  expect(Tok::Surface, "'Surface' after the curves");
+  const Token open2 = expect(Tok::LBrace, "'{' after 'Surface'");
+  node.surface = parse_expr();
+  expect_closing(Tok::RBrace, open2);
+  return add_expr(kw, std::move(node));
 }
 
 }  // namespace sm::lang::detail

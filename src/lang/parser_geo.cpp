@@ -417,18 +417,33 @@ StmtId Parser::parse_entity_setting(SettingKind kind) {
   return add(kw, node, keyword);
 }
 
-// periodic := "Periodic" ent "{" items "}" "=" "{" items "}" [ "Translate" "{" items "}" ] ";"
+// periodic := "Periodic" ent list "=" list [ ( "Translate" | "Rotate" | "Affine" ) "{" items "}" ] ";"
+//           | "Periodic" "Surface" expr list "=" expr list ";"
+// (Gmsh 4.8.4's Parser/Gmsh.y: the second form pairs a slave surface's curves with a master's)
 StmtId Parser::parse_periodic() {
   const Token kw = advance();
   PeriodicStmt node;
   node.ent = expect_entity("'Curve' or 'Surface' after 'Periodic'");
   const SourceRange keyword = since(kw);
+  if (node.ent == EntityKind::Surface && !at(Tok::LBrace)) {
+    node.slave_surface = parse_expr();
+    node.slaves = parse_braced_list();
+    expect(Tok::Assign);
+    node.master_surface = parse_expr();
+    node.masters = parse_braced_list();
+    expect_semicolon();
+    return add(kw, node, keyword);
+  }
   node.slaves = parse_braced_list();
   expect(Tok::Assign);
   node.masters = parse_braced_list();
-  if (accept(Tok::Translate)) {
+  if (at(Tok::Translate) || at(Tok::Rotate) || at_word("Affine")) {
+    const Token t = advance();
+    node.transform = t.kind == Tok::Translate ? PeriodicTransform::Translate
+                     : t.kind == Tok::Rotate  ? PeriodicTransform::Rotate
+                                              : PeriodicTransform::Affine;
     const Token open = expect(Tok::LBrace);
-    node.translate = parse_items_until(Tok::RBrace, open);
+    node.transform_args = parse_items_until(Tok::RBrace, open);
   }
   expect_semicolon();
   return add(kw, node, keyword);

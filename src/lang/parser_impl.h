@@ -103,6 +103,7 @@ class Parser {
   ExprId parse_transform();
   ExprId parse_boundary();
   ExprId parse_coastline_query();
+  ExprId parse_intersect();
   ExprId add_expr(const Token& first, ExprNode node);
   ExprId error_expr(const Token& at);
   /// The builtin called at token n: a builtin name followed by `(` or `[`

@@ -37,6 +37,7 @@ bool collect_boundary(FaceWork& f, const geo::ModelSurface& s) {
       const auto it = f.mesh.curves.find(std::abs(sc));
       if (it == f.mesh.curves.end()) return f.fail(fmt::format("curve {} has no 1D mesh", std::abs(sc)));
       std::vector<std::uint32_t> nodes = it->second.nodes;
+      if (nodes.size() < 2) continue;  // collapsed (mesh/mesh1d.cpp): its ends are one node
       if (sc < 0) std::reverse(nodes.begin(), nodes.end());
       if (!ch.nodes.empty() && ch.nodes.back() != nodes.front())
         return f.fail(fmt::format("curve loop {} is not connected at curve {}", loop->tag, sc));

@@ -370,6 +370,7 @@ struct CurvePlan {
   std::vector<Vec2> uv;       // interior nodes, on a surface's curve
   const TransfiniteCurveSpec* transfinite = nullptr;
   bool odd = false;  // bounds a recombined surface: an odd node count
+  bool collapsed = false;  // zero length between coincident points: one node, no edge
 };
 
 // Curves bounding a recombined surface (Gmsh's forced odd count: meshGEdge.cpp), sorted.
@@ -389,7 +390,7 @@ std::vector<int> odd_count_curves(const geo::Model& model, const Mesh1dOptions& 
 
 // The plans of the model's curves in tag order, transfinite and forced odd ones marked.
 std::vector<CurvePlan> make_plans(const geo::Model& model, const Mesh1dOptions& opt,
-                                  const std::map<int, int>& curves_at) {
+                                  const std::map<int, int>& curves_at, const std::vector<int>& collapsed) {
   std::vector<CurvePlan> plans;
   plans.reserve(model.curves().size());
   const std::vector<int> odd_curves = odd_count_curves(model, opt);
@@ -402,6 +403,7 @@ std::vector<CurvePlan> make_plans(const geo::Model& model, const Mesh1dOptions& 
       if (const auto it = opt.constraints->curves.find(tag); it != opt.constraints->curves.end())
         cp.transfinite = &it->second;
     cp.odd = !cp.transfinite && std::binary_search(odd_curves.begin(), odd_curves.end(), tag);
+    cp.collapsed = std::binary_search(collapsed.begin(), collapsed.end(), tag);
   }
   return plans;
 }
@@ -453,6 +455,10 @@ void integrate_plan(const geo::Model& model, const Mesh1dOptions& opt, double bb
   }
   if (vb->lc < geo::kMaxLc) cp.lc0 = vb->lc;
   if (ve->lc < geo::kMaxLc) cp.lc1 = ve->lc;
+  if (cp.collapsed) {
+    cp.nodes = 1;
+    return;
+  }
   // Gmsh 4.8.4 integrates a Bezier curve of degree d with |X'| / d (measured: a
   // 3-point Bezier of length 3 at lc 0.1 gets 16 segments, a 6-point one 7), so its
   // node count is d times smaller than the sizes ask; we follow it for compatibility.
@@ -536,6 +542,13 @@ ModelMesh coarse_mesh(const std::vector<CurvePlan>& plans, const Mesh1dOptions& 
     const geo::Curve& shape = *cp.mc->shape;
     CurveMesh cm;
     cm.tag = cp.tag;
+    if (cp.collapsed) {
+      cm.t = {0.0};
+      cm.nodes = {coarse.vertex_node.at(cp.mc->begin)};
+      cm.h = {cp.lc0.value_or(bbox)};
+      coarse.curves.emplace(cp.tag, std::move(cm));
+      continue;
+    }
     cm.t = cp.transfinite ? transfinite_parameters(shape, *cp.transfinite)
                           : place_n_nodes(cp.prim, static_cast<int>(std::min<double>(cp.nodes, kCoarseCurveNodes)));
     cm.nodes.push_back(coarse.vertex_node.at(cp.mc->begin));
@@ -556,6 +569,10 @@ ModelMesh coarse_mesh(const std::vector<CurvePlan>& plans, const Mesh1dOptions& 
 
 // The nodes of curve cp: their parameters and coordinates into cp.ts, cp.xyz, cp.uv.
 void place_plan(const geo::Model& model, const Mesh1dOptions& opt, double bbox, CurvePlan& cp) {
+  if (cp.collapsed) {
+    cp.ts = {0.0};
+    return;
+  }
   const geo::ModelCurve& mc = *cp.mc;
   const geo::Curve& shape = *mc.shape;
   const geo::ModelVertex* vb = model.vertex(mc.begin);
@@ -631,6 +648,11 @@ void number_nodes(std::vector<CurvePlan>& plans, ModelMesh& mesh) {
     cm.tag = cp.tag;
     cm.nodes.reserve(cp.ts.size());
     cm.nodes.push_back(mesh.vertex_node.at(mc.begin));
+    if (cp.collapsed) {  // its end's node is its start's
+      cm.t = std::move(cp.ts);
+      mesh.curves.emplace(cp.tag, std::move(cm));
+      continue;
+    }
     for (std::size_t i = 0; i < cp.xyz.size(); ++i)
       cm.nodes.push_back(cp.uv.empty() ? mesh.add_node(cp.xyz[i]) : mesh.add_node(cp.xyz[i], cp.uv[i]));
     cm.nodes.push_back(mesh.vertex_node.at(mc.end));
@@ -667,6 +689,7 @@ MeshError repair_intersections(const geo::Model& model, const Mesh1dOptions& opt
   std::sort(in_surface.begin(), in_surface.end());
   for (const auto& [tag, mc] : model.curves()) {
     if (!opt.repair_all_curves && !std::binary_search(in_surface.begin(), in_surface.end(), tag)) continue;
+    if (mesh.curves.at(tag).nodes.size() < 2) continue;  // collapsed: no edge to cross
     const int key = mc.shape->on_surface() ? mc.geometry : 0;
     if (key == 0) {
       for (std::uint32_t n : mesh.curves.at(tag).nodes) {
@@ -687,6 +710,37 @@ MeshError repair_intersections(const geo::Model& model, const Mesh1dOptions& opt
   return {};
 }
 
+// The model points' nodes. Gmsh's leniency on coincident points: a curve between two
+// distinct points at the same place whose control points are all there (a zero-length
+// Line, a B-spline of repeated points) is collapsed: its two end points get one node and
+// the curve no edge, so the loops through it stay closed (geo/model.cpp notes it where the
+// curve is made). The points joined so share the node of the smallest tag (a union-find
+// over the vertices). Returns the collapsed curves' tags, ascending.
+std::vector<int> add_vertex_nodes(const geo::Model& model, ModelMesh& mesh) {
+  std::map<int, int> joined;  // vertex tag -> a vertex it was joined to (smaller tag)
+  // Each step goes to a smaller tag: at most as many steps as vertices.
+  auto root_of = [&](int v) {
+    for (auto it = joined.find(v); it != joined.end(); it = joined.find(v)) v = it->second;
+    return v;
+  };
+  std::vector<int> collapsed;
+  for (const auto& [tag, mc] : model.curves()) {
+    if (!geo::collapses(model, mc)) continue;
+    collapsed.push_back(tag);
+    const int a = root_of(mc.begin), b = root_of(mc.end);
+    if (a != b) joined[std::max(a, b)] = std::min(a, b);
+  }
+  for (const auto& [tag, v] : model.vertices()) {
+    if (const int root = root_of(tag); root != tag) {  // the root's tag is smaller: made already
+      mesh.vertex_node[tag] = mesh.vertex_node.at(root);
+      continue;
+    }
+    const geo::SurfaceGeometry* g = v.geometry ? model.geometry(v.geometry) : nullptr;
+    mesh.vertex_node[tag] = g ? mesh.add_node(v.xyz, v.uv) : mesh.add_node(v.xyz);
+  }
+  return collapsed;
+}
+
 }  // namespace
 
 Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
@@ -696,15 +750,12 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
   double bbox = opt.bbox_diag;
   if (!(bbox > 0)) bbox = model.bounding_box().diagonal();
   if (!(bbox > 0)) bbox = 1;
-  for (const auto& [tag, v] : model.vertices()) {
-    const geo::SurfaceGeometry* g = v.geometry ? model.geometry(v.geometry) : nullptr;
-    mesh.vertex_node[tag] = g ? mesh.add_node(v.xyz, v.uv) : mesh.add_node(v.xyz);
-  }
+  const std::vector<int> collapsed = add_vertex_nodes(model, mesh);
   auto t0 = std::chrono::steady_clock::now();
   const std::map<int, int> curves_at = curves_at_vertices(model);
   StageEnd stage{opt.progress};
   stage.begin("1D", model.curves().size());
-  std::vector<CurvePlan> plans = make_plans(model, opt, curves_at);
+  std::vector<CurvePlan> plans = make_plans(model, opt, curves_at, collapsed);
   const int threads = resolve_thread_count(opt.threads);
   // First every curve's size integral, hence its node count: a count beyond the budget
   // is refused before any node is placed (a size of 1e-20 asks for 1e20 nodes).

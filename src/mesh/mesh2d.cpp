@@ -56,6 +56,11 @@ bool check_budget(FaceWork& f, std::uint64_t& estimate) {
 // The pipeline of one face: a transfinite one filled, any other through the steps in
 // turn, each timed into its stage of Mesh2dStats.
 bool run_face(FaceWork& f, const geo::ModelSurface& s) {
+  if (s.filling && s.loops.size() > 1)
+    return f.fail(fmt::format("a filling 'Surface' with holes (curve loop {}{}) is not meshed yet (Gmsh meshes it in "
+                              "the (u,v) of its first loop's patch)",
+                              std::abs(s.loops[1]),
+                              s.loops.size() > 2 ? fmt::format(" and {} more", s.loops.size() - 2) : ""));
   if (f.opt.constraints)
     if (const auto it = f.opt.constraints->surfaces.find(s.tag); it != f.opt.constraints->surfaces.end()) {
       if (f.estimate_only) return true;  // a grid: its count is the curves' product
@@ -73,6 +78,10 @@ bool run_face(FaceWork& f, const geo::ModelSurface& s) {
   if (!check_budget(f, estimate)) return false;
   f.res.stats.seconds_boundary += seconds_since(t0);
   if (f.estimate_only) return true;
+  if (f.opt.algorithm == Mesh2dAlgorithm::InitialOnly) {  // Gmsh's "initial mesh only"
+    output_face(f);
+    return true;
+  }
 
   t0 = std::chrono::steady_clock::now();
   if (!refine_face(f, estimate)) return false;
@@ -113,7 +122,13 @@ Mesh2dResult mesh_surfaces(const geo::Model& model, ModelMesh& mesh, const Mesh2
   progress_begin(opt.progress, "2D", model.surfaces().size());
   std::uint64_t faces_done = 0;
   for (const auto& [tag, s] : model.surfaces()) {
-    FaceWork f(model, mesh, opt, bbox, res, local_of, s.tag);
+    Mesh2dOptions own;  // a face with an algorithm of its own: the options with it
+    const auto algo = opt.surface_algorithm.find(tag);
+    if (algo != opt.surface_algorithm.end()) {
+      own = opt;
+      own.algorithm = algo->second;
+    }
+    FaceWork f(model, mesh, algo != opt.surface_algorithm.end() ? own : opt, bbox, res, local_of, s.tag);
     if (!run_face(f, s)) {
       progress_end(opt.progress);
       return res;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -18,12 +19,15 @@
 namespace sm {
 
 /// Mesh.Algorithm with Gmsh's numbers.
-enum class Mesh2dAlgorithm { MeshAdapt = 1, Automatic = 2, Del2d = 5, Frontal = 6 };
+/// InitialOnly (3): the boundary's constrained triangulation, with no node inserted.
+enum class Mesh2dAlgorithm { MeshAdapt = 1, Automatic = 2, InitialOnly = 3, Del2d = 5, Frontal = 6 };
 
 struct Mesh2dOptions {
   /// Del2d: refine_del2d; Frontal: refine_front2d; MeshAdapt: mesh_adapt from the
   /// boundary mesh; Automatic is Del2d. Frontal by default, as Gmsh 4.8.4's Mesh.Algorithm.
   Mesh2dAlgorithm algorithm = Mesh2dAlgorithm::Frontal;
+  /// `MeshAlgorithm Surface{s} = n;`: the algorithm of those surfaces instead of `algorithm`.
+  std::map<int, Mesh2dAlgorithm> surface_algorithm;
   field::SizePolicyOptions size;                 ///< Mesh.MeshSize*
   const field::SizeField* background = nullptr;  ///< Background Field, if any
   double bbox_diag = 0;                          ///< Gmsh's CTX::lc; <= 0: the model's bounding-box diagonal

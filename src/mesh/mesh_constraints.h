@@ -41,9 +41,13 @@ struct MeshConstraints {
   std::set<int> recombine;                          // `Recombine Surface{...};`
   bool recombine_all = false;                       // Mesh.RecombineAll
   RecombineAlgorithm algorithm = RecombineAlgorithm::Matching;
+  /// `MeshAlgorithm Surface{s} = n;`: Gmsh's algorithm number of those surfaces.
+  std::map<int, int> surface_algorithm;
 
   bool recombines(int surface) const { return recombine_all || recombine.count(surface) > 0; }
-  bool empty() const { return curves.empty() && surfaces.empty() && recombine.empty() && !recombine_all; }
+  bool empty() const {
+    return curves.empty() && surfaces.empty() && recombine.empty() && !recombine_all && surface_algorithm.empty();
+  }
 };
 
 }  // namespace sm

@@ -88,8 +88,8 @@ void check_stmt_exprs(Interpreter& in, StmtId id) {
         } else if constexpr (std::is_same_v<T, EntitySettingStmt>) {
           check(n.tags), check(n.value);
         } else if constexpr (std::is_same_v<T, PeriodicStmt>) {
-          check(n.slaves), check(n.masters);
-          for (ExprId e : n.translate) check(e);
+          check(n.slaves), check(n.masters), check(n.slave_surface), check(n.master_surface);
+          for (ExprId e : n.transform_args) check(e);
         } else if constexpr (std::is_same_v<T, ReverseMeshStmt> || std::is_same_v<T, CompoundStmt>) {
           check(n.tags);
         } else if constexpr (std::is_same_v<T, FieldNewStmt> || std::is_same_v<T, FieldActionStmt> ||

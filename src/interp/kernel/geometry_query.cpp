@@ -228,6 +228,34 @@ bool physical_group_name(Interpreter& in, ExprId e, std::string& out) {
   return true;
 }
 
+// Intersect Curve{..} Surface{s}: one new point (tag newp) per curve that meets the
+// surface, at the curve's point, sized as Gmsh sizes it (the end points' sizes interpolated
+// along the curve's parameter); a curve that misses it adds nothing, as in Gmsh.
+static Value eval_intersect(Interpreter& in, const Expr& x, const IntersectExpr& q) {
+  std::vector<int> curves;
+  for (ExprId c : q.curves)
+    for (int t : eval_tags(in, c)) curves.push_back(t);
+  const int surface = eval_tag(in, q.surface);
+  geo::Model& m = in.kernel().model;
+  std::vector<double> out;
+  for (int c : curves) {
+    auto r = m.intersect_curve_surface(c, surface);
+    if (!r) fail_geo(in, x.range, r.error());
+    if (!*r) continue;
+    const double t = **r;
+    const geo::ModelCurve& mc = *m.curve(c);
+    const geo::ModelVertex& b = *m.vertex(mc.begin);
+    const geo::ModelVertex& e = *m.vertex(mc.end);
+    const double lc = b.lc < geo::kMaxLc && e.lc < geo::kMaxLc ? (1 - t) * b.lc + t * e.lc : 0.0;
+    const int tag = m.new_point_tag();
+    sync_geometry_options(in);
+    if (auto st = m.add_point(tag, mc.shape->point(t), lc); !st) fail_geo(in, x.range, st.error());
+    record_created(in.kernel(), 0, tag, x.range);
+    out.push_back(tag);
+  }
+  return Value::list(std::move(out));
+}
+
 Value eval_model_expr(Interpreter& in, ExprId e) {
   const Expr& x = in.ast().expr(e);
   switch (x.kind()) {
@@ -244,6 +272,7 @@ Value eval_model_expr(Interpreter& in, ExprId e) {
     case ExprKind::Boundary:
     case ExprKind::Transform: return tag_list(eval_shape_expr(in, e));
     case ExprKind::CoastlineQuery: return eval_coastline_query(in, e);
+    case ExprKind::Intersect: return eval_intersect(in, x, std::get<IntersectExpr>(x.node));
     default: break;
   }
   in.not_supported_expr(e, in.text_of(x.range).substr(0, 30));

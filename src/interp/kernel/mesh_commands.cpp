@@ -119,6 +119,7 @@ bool mesh2d_algorithm(int algo, Mesh2dAlgorithm& out) {
   switch (algo) {
     case 1: out = Mesh2dAlgorithm::MeshAdapt; return true;
     case 2: out = Mesh2dAlgorithm::Automatic; return true;
+    case 3: out = Mesh2dAlgorithm::InitialOnly; return true;   // Gmsh's "initial mesh only"
     case 5: out = Mesh2dAlgorithm::Del2d; return true;
     case 6: out = Mesh2dAlgorithm::Frontal; return true;
     // Gmsh's Frontal-Delaunay for Quads: our frontal mesher, its triangles paired where
@@ -282,8 +283,8 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
     const int algo = static_cast<int>(in.options().number("Mesh.Algorithm"));
     if (!mesh2d_algorithm(algo, opt2.algorithm)) {
       MeshFailure f{Diag::MeshFailed,
-                    fmt::format("Mesh.Algorithm {} is not available: use 1 (meshadapt), 2 (automatic), 5 (del2d), 6 "
-                                "(front2d) or 8 (front2d for quadrangles)",
+                    fmt::format("Mesh.Algorithm {} is not available: use 1 (meshadapt), 2 (automatic), 3 (initial "
+                                "mesh only), 5 (del2d), 6 (front2d) or 8 (front2d for quadrangles)",
                                 algo),
                     {}};
       if (const auto it = k.option_set_at.find("Mesh.Algorithm"); it != k.option_set_at.end())
@@ -350,6 +351,16 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
             set_here(k, "Mesh.RecombinationAlgorithm")};
   constraints.algorithm = recombination == 0 ? RecombineAlgorithm::Simple : RecombineAlgorithm::Matching;
   opt2.constraints = &constraints;
+  for (const auto& [surface, algo] : constraints.surface_algorithm) {
+    Mesh2dAlgorithm a;
+    if (!mesh2d_algorithm(algo, a))
+      return MeshFailure{Diag::MeshFailed,
+                         fmt::format("MeshAlgorithm Surface{{{}}} = {} is not available: use 1 (meshadapt), 2 "
+                                     "(automatic), 3 (initial mesh only), 5 (del2d), 6 (front2d) or 8",
+                                     surface, algo),
+                         {}};
+    opt2.surface_algorithm[surface] = a;
+  }
   Mesh1dOptions opt1 = mesh1d_options(in, background.get());
   opt1.max_elements = max_elements;
   opt1.constraints = &constraints;   // -1 too: Gmsh's odd counts are made in 1D

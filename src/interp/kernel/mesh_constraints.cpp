@@ -111,6 +111,30 @@ void exec_recombine(Interpreter& in, StmtId id, const Stmt& s, const RecombineSt
   }
 }
 
+// `MeshAlgorithm Surface{s} = n;` (Gmsh's meshAttributes.algorithm of those surfaces; the
+// number is checked when meshing, as Mesh.Algorithm is). The other settings (Smoother,
+// MeshSizeFromBoundary) and other entity kinds are not supported yet.
+void exec_entity_setting(Interpreter& in, StmtId id, const Stmt& s, const EntitySettingStmt& n) {
+  if (n.kind != SettingKind::MeshAlgorithm || n.ent != EntityKind::Surface) {
+    exec_geometry_stmt(in, id);
+    return;
+  }
+  KernelState& k = in.kernel();
+  const geo::Model& m = k.model;
+  const double v = in.eval_number(n.value);
+  if (!std::isfinite(v) || std::fabs(v) > 1e6)
+    in.fail_fmt(in.ast().expr(n.value).range, Diag::InvalidOperation,
+                fmt::format("{:g} is not a mesh algorithm number", v));
+  const std::vector<int> tags = n.all ? m.tags(2) : eval_tags(in, n.tags);
+  for (int t : tags) {
+    if (!m.surface(std::abs(t))) {
+      report_missing(in, s.range, "surface", std::abs(t));
+      continue;
+    }
+    k.constraints.surface_algorithm[std::abs(t)] = static_cast<int>(v);
+  }
+}
+
 }  // namespace
 
 void exec_mesh_constraint_stmt(Interpreter& in, StmtId id) {
@@ -119,6 +143,7 @@ void exec_mesh_constraint_stmt(Interpreter& in, StmtId id) {
     case StmtKind::TransfiniteCurve: exec_transfinite_curve(in, s, std::get<TransfiniteCurveStmt>(s.node)); break;
     case StmtKind::TransfiniteSurface: exec_transfinite_surface(in, s, std::get<TransfiniteSurfaceStmt>(s.node)); break;
     case StmtKind::Recombine: exec_recombine(in, id, s, std::get<RecombineStmt>(s.node)); break;
+    case StmtKind::EntitySetting: exec_entity_setting(in, id, s, std::get<EntitySettingStmt>(s.node)); break;
     default: break;
   }
 }

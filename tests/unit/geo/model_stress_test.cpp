@@ -28,6 +28,14 @@ std::string broken_invariant(const Model& m) {
   }
   for (const auto& [t, l] : m.curve_loops()) {
     if (l.curves.empty()) return "empty loop " + std::to_string(t);
+    // A loop kept unclosed, as Gmsh keeps it, has its reason and bounds no surface.
+    if (l.unclosed) {
+      if (l.unclosed->kind != GeoErrorKind::LoopNotClosed) return "loop " + std::to_string(t) + " unclosed kind";
+      for (const auto& [st, s] : m.surfaces())
+        for (int sl : s.loops)
+          if (std::abs(sl) == t) return "surface " + std::to_string(st) + " on unclosed loop " + std::to_string(t);
+      continue;
+    }
     // Chains close: every curve's end is the next one's start, within each subloop.
     int chain_start = 0, end = 0;
     for (std::size_t i = 0; i < l.curves.size(); ++i) {
