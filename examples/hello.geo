@@ -2,7 +2,7 @@
 // It meshes nothing (docs/tutorial.md makes a mesh): it shows the language, an
 // Include from stdlib/, DefineConstant, a macro, lists, loops and Printf. It prints where a few
 // coastal cities land in the stereographic plane that PolarSphere uses
-// (gmsh-reference §3.1: u = -x/(r+z), v = -y/(r+z) on a sphere of radius r).
+// (Gmsh 4.8.4, PolarSphere: u = -x/(r+z), v = -y/(r+z) on a sphere of radius r).
 Include "earth.geo";
 
 DefineConstant[ radius = 1 ];   // try -setnumber radius 6371e3

@@ -1,5 +1,5 @@
 // Which names mean the same file, and the files a run reads, so that no output of the
-// run replaces one of them (issue 33: `-o` naming the script, --stats naming a data
+// run replaces one of them (`-o` naming the script, --stats naming a data
 // file, two outputs naming one file).
 #pragma once
 

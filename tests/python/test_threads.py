@@ -1,4 +1,4 @@
-"""stereomesh.run from several Python threads at once (issue 33: two threads calling it
+"""stereomesh.run from several Python threads at once (two threads calling it
 deadlocked): the GIL is released around the C++ work, each run has its own interpreter,
 and every mesh equals the one the same call makes alone, on 2 and on 8 threads."""
 import concurrent.futures

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """A grid axis that cannot be read as regular is an error located at the script statement
-that loads the grid (issue 33): netCDF bathymetry whose longitude or latitude axis holds a
+that loads the grid: netCDF bathymetry whose longitude or latitude axis holds a
 NaN, goes back, repeats a value, or is unevenly spaced, and a structured grid (Field
 Structured) whose axis has a NaN spacing. Each run exits 1 with
 "g.geo:LINE:COL: error: ..." naming the file, the axis and the index, and writes no

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Every output file holds the mesh and only the mesh, numbered one way (issue 35): the World
+"""Every output file holds the mesh and only the mesh, numbered one way: the World
 Ocean at a coarse setting (two small islands left out of the 2D mesh) and the Gulf of Mexico
 (open boundaries) are meshed once each and saved as MSH 4.1, MSH 2.2, VTK, UGRID netCDF,
 fort.14 and hgrid.gr3 / hgrid.ll (outputs_world.geo, outputs_gulf.geo); Gmsh's reader

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Outputs never replace inputs or each other (issue 33): -o, --stats and --diagnostics
+"""Outputs never replace inputs or each other: -o, --stats and --diagnostics
 naming the script (directly, through a symbolic link or another spelling), an Included
 file, a data file the run reads (ListFromFile), or one another are refused, as is a
 script's Save naming an Included file, '-' may be

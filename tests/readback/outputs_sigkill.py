@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""No stray temporary file after SIGKILL at any moment of a write (issue 33): the mesh goes
+"""No stray temporary file after SIGKILL at any moment of a write: the mesh goes
 to an unnamed temporary linked in place, and an existing file is replaced through a name
 ".x.msh.stereomesh-tmp-PID-N" held for the instant before the rename, which the next run
 writing the same file removes. strace holds the run at that instant (its rename delayed)

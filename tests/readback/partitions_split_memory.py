@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Split partition files are written in bounded memory (issue 33): -part 300 with
+"""Split partition files are written in bounded memory: -part 300 with
 Mesh.PartitionSplitMeshFiles = 1 on a square of about 130,000 nodes builds and writes one
 part at a time, so its peak memory is about that of writing the same partition as one
 file. Building every piece first (each with a copy of the node coordinates) took 8 times

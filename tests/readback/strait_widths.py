@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Straits as wide as they are (issue #34): the Danish straits meshed from the system's
+"""Straits as wide as they are: the Danish straits meshed from the system's
 GSHHG at full resolution (strait_widths_danish.geo, gamma 350 m in the straits), at
 DeviationFactor 0 and 0.5. Each strait's width is measured across a fixed great-circle
 section, from a point in the water to the nearest bank on either side: in the source

@@ -2,7 +2,7 @@
 // resolution, gamma 350 m in the straits and 3 km away from them, the coast held within
 // DeviationFactor x gamma of the data (docs/coastlines.md, "The curve within a bound of
 // the data"). strait_widths.py meshes it at DeviationFactor 0 and 0.5 and measures each
-// strait's width across fixed sections in the mesh and in the source shoreline (issue #34).
+// strait's width across fixed sections in the mesh and in the source shoreline.
 // OutDir and Deviation are set by the test.
 DefineConstant[ OutDir = ".", Deviation = 0.5, StraitSize = 350, FarSize = 3e3 ];
 Include "earth.geo";

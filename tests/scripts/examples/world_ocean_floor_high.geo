@@ -1,4 +1,4 @@
-// Issue 33: the World Ocean (GSHHG low resolution coarsened to 100 km, the 1-degree
+// The World Ocean (GSHHG low resolution coarsened to 100 km, the 1-degree
 // ETOPO5 grid) with a quality floor of 0.8, far above what the refinement reaches
 // everywhere. The floor's undo of its flips (split_with_flips) used to leave twins that
 // pointed at the wrong sides: this run ended in SIGSEGV (an invalid read past the cavity

@@ -1,4 +1,4 @@
-// Issue 13 regression: a C-shaped island with a small island in its bay, 0.026 from the
+// Regression: a C-shaped island with a small island in its bay, 0.026 from the
 // bay's wall, closer than the size 0.15 (the case of a repaired 1D mesh). Reported as a front2d
 // failure ("mesh size must be positive and finite (got inf at (inf, inf))") where del2d
 // and meshadapt meshed it: every algorithm must mesh it, above the quality floor.

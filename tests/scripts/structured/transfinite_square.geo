@@ -1,4 +1,4 @@
-// Transfinite Curve / Surface on a rectangle (issue 17 point 3): n x m nodes, the
+// Transfinite Curve / Surface on a rectangle: n x m nodes, the
 // grid's triangles and, recombined, its quadrangles; node and element counts as Gmsh's.
 Point(1) = {0, 0, 0}; Point(2) = {2, 0, 0}; Point(3) = {2, 1, 0}; Point(4) = {0, 1, 0};
 Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};

@@ -475,7 +475,7 @@ CombRun comb_run(const std::vector<double>& centres, double wide) {
 
 }  // namespace
 
-TEST_CASE("passages: issue 36, closing many inlets of one loop reads each of its points a bounded number of times") {
+TEST_CASE("passages: closing many inlets of one loop reads each of its points a bounded number of times") {
   // Forty inlets on one loop of 64,000 points: copying the loop at each cut or dead-end test
   // (as close_passages once did) reads it once per inlet, 40 times its size and more.
   std::vector<double> centres;

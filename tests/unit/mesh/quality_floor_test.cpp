@@ -266,7 +266,7 @@ TEST_CASE("quality floor: a short open side between two coasts that bend into th
 }
 
 TEST_CASE("quality floor: every floor in [0, 0.9] ends with a conforming mesh or a located report") {
-  // Issue 33: floors above the default crashed or never ended on the World Ocean. On the
+  // Floors above the default once crashed or never ended on the World Ocean. On the
   // narrow inlet every floor ends within its work budget: a conforming mesh, and whatever
   // is left below it reported with its place (tests/fuzz/fuzz_floor_entry.cpp tries
   // random coasts).
@@ -288,7 +288,7 @@ TEST_CASE("quality floor: every floor in [0, 0.9] ends with a conforming mesh or
 }
 
 TEST_CASE("quality floor: the work budget stops it and says so") {
-  // Issue 33: the floor is bounded by a budget of operations, not only by rounds and
+  // The floor is bounded by a budget of operations, not only by rounds and
   // points. A strip of slivers between two rows of points (no curve to split): with a
   // budget of 10 operations it stops after 10, with the slivers still below the floor.
   TriangleStore m;

@@ -220,7 +220,7 @@ TEST_CASE("triangulation: sort_spatially on an empty store, with an isolated ver
 }
 
 TEST_CASE("side_between: a corrupt fan that never comes back ends, with the overrun said") {
-  // Issue 33: the quality floor's undo once left twins that sent the walk round a vertex
+  // the quality floor's undo once left twins that sent the walk round a vertex
   // into a cycle without its start; side_between looped for ever. Now it gives up after
   // the store's size, and says so.
   TriangleStore m = grid3();
