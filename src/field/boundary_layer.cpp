@@ -114,9 +114,13 @@ std::vector<int> tags(const Options& o, std::string_view option, int id, bool al
 }
 
 // Samples of the listed curves for the scalar value: Gmsh samples each curve densely
-// (Mesh/Field.cpp asks 300000 points); this many make the distance exact to well under
-// a first layer on curves a thousand first layers long.
-constexpr int kCurveSamples = 2000;
+// (Mesh/Field.cpp asks 300000 points); 2000 make the distance exact to well under a
+// first layer on curves a thousand first layers long. Many curves share 10^6 samples
+// (at least 20 each), so that a coastline's thousands of curves stay cheap.
+int curve_samples_each(std::size_t curves) {
+  if (curves == 0) return 2000;
+  return static_cast<int>(std::clamp(1e6 / static_cast<double>(curves), 20.0, 2000.0));
+}
 
 FieldPtr make_boundary_layer(const BuildInputs& in) {
   const BoundaryLayerParams p = boundary_layer_params(in.opts, in.id);
@@ -137,9 +141,10 @@ FieldPtr make_boundary_layer(const BuildInputs& in) {
     if (in.ctx.point_position) x = in.ctx.point_position(tag);
     if (!x) in.bad("SizesList", fmt::format("Point {} does not exist", tag));
   }
+  const int each = curve_samples_each(p.curves.size());
   for (int tag : p.curves) {
     std::optional<std::vector<Vec3>> s;
-    if (in.ctx.curve_samples) s = in.ctx.curve_samples(tag, kCurveSamples);
+    if (in.ctx.curve_samples) s = in.ctx.curve_samples(tag, each);
     if (!s) in.bad("CurvesList", fmt::format("Curve {} does not exist", tag));
     samples.insert(samples.end(), s->begin(), s->end());
   }

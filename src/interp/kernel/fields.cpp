@@ -182,8 +182,7 @@ void exec_delete_field(Interpreter& in, const DeleteFieldStmt& n) {
   invalidate_field_cache(in);
 }
 
-void exec_background_field(Interpreter& in, StmtId id, const Stmt& s, const BackgroundFieldStmt& n) {
-  (void)id;
+void exec_background_field(Interpreter& in, const Stmt& s, const BackgroundFieldStmt& n) {
   if (in.ast().str(n.which) != "Background") {
     // Gmsh 4.8.4 takes one id or a list of them and adds them to its boundary-layer
     // fields; checked when the mesher builds them, as options may still change.
@@ -217,7 +216,7 @@ void exec_field_stmt(Interpreter& in, StmtId id) {
     case StmtKind::FieldOption: exec_field_option(in, s, std::get<FieldOptionStmt>(s.node)); break;
     case StmtKind::FieldAction: exec_field_action(in, std::get<FieldActionStmt>(s.node)); break;
     case StmtKind::DeleteField: exec_delete_field(in, std::get<DeleteFieldStmt>(s.node)); break;
-    case StmtKind::BackgroundField: exec_background_field(in, id, s, std::get<BackgroundFieldStmt>(s.node)); break;
+    case StmtKind::BackgroundField: exec_background_field(in, s, std::get<BackgroundFieldStmt>(s.node)); break;
     default: SM_ASSERT(false, "kernel/statements.def sent a statement that is not a field statement");
   }
 }

@@ -22,3 +22,7 @@ Mesh 2;
 Printf("%g", Mesh.NbQuadrangles);   // expect: 30
 Printf("%g", Fabs(Mesh.NbTriangles - 128) <= 0.15 * 128);   // expect: 1
 Printf("%g", Fabs(Mesh.NbNodes - 113) <= 0.15 * 113);   // expect: 1
+// As a size field, Gmsh's scalar value: min(SizeFar, d (Ratio - 1) + Size) within
+// Thickness * Ratio = 0.065 of the curve and points, 1e22 beyond.
+Printf("%g", Fabs(FieldValue(1, 0.5, 0.02, 0) - (0.02 * 0.3 + 0.01)) < 1e-6);   // expect: 1
+Printf("%g", FieldValue(1, 0.5, 0.3, 0));   // expect: 1e+22
