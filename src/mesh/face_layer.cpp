@@ -310,6 +310,7 @@ bool build_boundary_layers(FaceWork& f) {
     for (int c : ch.edge_curve) layered = layered || b.field_of(c);
     (layered ? slits : plain_embedded).push_back(std::move(ch));
   }
+  f.emb_curves.clear();  // given back below: the plain ones, and slit edges left bare
   for (const FaceChain& s : slits) {
     bool joined = false;
     for (int end = 0; end < 2 && !joined; ++end) {
