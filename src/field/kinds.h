@@ -8,6 +8,7 @@ namespace sm::field {
 
 KindSpec ball_kind();
 KindSpec bathymetry_kind();
+KindSpec boundary_layer_kind();
 KindSpec box_kind();
 KindSpec channel_width_kind();
 KindSpec constant_kind();

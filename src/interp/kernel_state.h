@@ -50,6 +50,9 @@ struct KernelState {
   std::optional<int> background_field;                  // `Background Field = n;`
   std::map<int, lang::SourceRange> field_defined_at;    // Field[n] = ... statement
   lang::SourceRange background_field_at;                 // the `Background Field = n;` statement
+  /// `BoundaryLayer Field = n;` (or a list): each field id with its statement, in order
+  /// (Gmsh adds them up; an id named again is kept once).
+  std::vector<std::pair<int, lang::SourceRange>> boundary_layer_fields;
   /// (field id, canonical option name) -> the `Field[n].Option = v;` statement that set it.
   std::map<std::pair<int, std::string>, lang::SourceRange> field_option_at;
   std::shared_ptr<FieldCache> field_cache;               // dropped when a Field statement runs

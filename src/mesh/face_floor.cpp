@@ -96,7 +96,8 @@ void report_floor(FaceWork& f, const QualityFloorResult& r) {
 }  // namespace
 
 void raise_face_floor(FaceWork& f) {
-  if (!(f.opt.quality_floor > 0)) return;
+  // Not with boundary layers: the floor splits boundary edges, the layers' among them.
+  if (!(f.opt.quality_floor > 0) || f.has_layers()) return;
   FloorCurves fl;
   for (std::size_t i = 0; i < f.edges.size(); ++i)
     fl.edge_curve_of[std::minmax(f.edges[i].first.value, f.edges[i].second.value)] = f.edge_curve[i];

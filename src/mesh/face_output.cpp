@@ -70,6 +70,14 @@ void output_face(FaceWork& f) {
     local_quads = std::move(rr.quads);
   }
   append_elements(sm_out, local, local_quads, flip, f.global);
+  // The boundary layers' elements (face_layer.h), already on global nodes.
+  std::vector<std::uint32_t> identity;
+  if (f.has_layers()) {
+    identity.resize(f.mesh.nodes.size());
+    for (std::uint32_t v = 0; v < identity.size(); ++v) identity[v] = v;
+    append_elements(sm_out, f.layer_triangles, f.layer_quads, flip, identity);
+    sm_out.interior_nodes.insert(sm_out.interior_nodes.end(), f.layer_nodes.begin(), f.layer_nodes.end());
+  }
   store_surface(f, std::move(sm_out));
   f.res.target_sizes.push_back({f.tag, target_size_fn(f.sizing)});
 }

@@ -4,6 +4,7 @@
 // mesh2d.h, and the state knows no step.
 #pragma once
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <initializer_list>
@@ -72,6 +73,12 @@ struct FaceWork {
   std::shared_ptr<FaceSizing> sizing = std::make_shared<FaceSizing>();
   std::atomic<std::uint64_t> size_evaluations{0};
   bool smoothed = false;  // meshadapt smooths in each of its rounds
+  /// The boundary layers' elements (face_layer.h), global nodes, counter-clockwise in the
+  /// plane, and the nodes they added; chains and emb_curves then bound the rest.
+  std::vector<std::array<std::uint32_t, 3>> layer_triangles;
+  std::vector<std::array<std::uint32_t, 4>> layer_quads;
+  std::vector<std::uint32_t> layer_nodes;
+  bool has_layers() const { return !layer_triangles.empty() || !layer_quads.empty(); }
 };
 
 }  // namespace sm

@@ -371,7 +371,100 @@ struct CurvePlan {
   const TransfiniteCurveSpec* transfinite = nullptr;
   bool odd = false;  // bounds a recombined surface: an odd node count
   bool collapsed = false;  // zero length between coincident points: one node, no edge
+  // Boundary-layer points from the begin / end vertex (distances along the line), when
+  // the curve leaves a layer's end point (Mesh1dOptions::boundary_layers).
+  std::vector<double> layer_begin, layer_end;
 };
+
+// The layer points of curve cp at its ends (Gmsh 4.8.4, meshGEdge.cpp: a curve not in a
+// field's CurvesList leaving one of its PointsList points gets points at the layer
+// heights while they are within Thickness and 0.4 of the curve's chord); the curve must
+// be straight there. Sets cp.error on a curve that cannot take them.
+void plan_layer_points(const geo::Model& model, const Mesh1dOptions& opt, CurvePlan& cp) {
+  if (!opt.boundary_layers || cp.transfinite) return;
+  const geo::ModelCurve& mc = *cp.mc;
+  const geo::ModelVertex* vb = model.vertex(mc.begin);
+  const geo::ModelVertex* ve = model.vertex(mc.end);
+  if (!vb || !ve || !mc.shape || mc.begin == mc.end) return;
+  for (const field::BoundaryLayerParams& p : *opt.boundary_layers) {
+    if (p.has_curve(cp.tag)) return;  // a layer curve itself is meshed as it is
+  }
+  const double chord = norm(ve->xyz - vb->xyz);
+  for (const field::BoundaryLayerParams& p : *opt.boundary_layers) {
+    for (int end = 0; end < 2; ++end) {
+      const int vtag = end == 0 ? mc.begin : mc.end;
+      if (!p.is_end_point(vtag)) continue;
+      if (mc.shape->kind() != geo::CurveKind::Line) {
+        cp.error = make_error(MeshErrorKind::Invalid, cp.tag, cp.tag,
+                              fmt::format("curve {} leaves point {}, where a boundary layer ends: it must be a "
+                                          "straight line to carry the layer points (as in Gmsh)",
+                                          cp.tag, vtag));
+        return;
+      }
+      std::vector<double>& d = end == 0 ? cp.layer_begin : cp.layer_end;
+      if (!d.empty()) {
+        cp.error = make_error(MeshErrorKind::Invalid, cp.tag, cp.tag,
+                              fmt::format("two boundary layers end at point {} of curve {}: they must not touch (as "
+                                          "in Gmsh)",
+                                          vtag, cp.tag));
+        return;
+      }
+      d = field::layer_distances(p, p.size_at_point(vtag), std::min(p.thickness, 0.4 * chord));
+      // The beta law has no limit: its points stay inside the curve all the same.
+      while (!d.empty() && d.back() >= 0.4 * chord) d.pop_back();
+    }
+  }
+  // The two ends' points must not meet.
+  if (!cp.layer_begin.empty() && !cp.layer_end.empty() && cp.layer_begin.back() + cp.layer_end.back() >= chord)
+    cp.layer_end.clear();
+}
+
+// The primitive a(t) at t, interpolated between its samples.
+double primitive_at(const CurvePrimitive& p, double t) {
+  if (p.t.empty()) return 0;
+  const auto it = std::upper_bound(p.t.begin(), p.t.end(), t);
+  if (it == p.t.begin()) return p.a.front();
+  if (it == p.t.end()) return p.a.back();
+  const std::size_t j = static_cast<std::size_t>(it - p.t.begin());
+  const double dt = p.t[j] - p.t[j - 1];
+  const double s = dt > 0 ? (t - p.t[j - 1]) / dt : 0.0;
+  return p.a[j - 1] + s * (p.a[j] - p.a[j - 1]);
+}
+
+// The parameter where the primitive reaches `target` (a between the samples).
+double primitive_inverse(const CurvePrimitive& p, double target) {
+  const auto it = std::lower_bound(p.a.begin(), p.a.end(), target);
+  if (it == p.a.begin()) return p.t.front();
+  if (it == p.a.end()) return p.t.back();
+  const std::size_t j = static_cast<std::size_t>(it - p.a.begin());
+  const double da = p.a[j] - p.a[j - 1];
+  const double s = da > 0 ? (target - p.a[j - 1]) / da : 0.5;
+  return p.t[j - 1] + s * (p.t[j] - p.t[j - 1]);
+}
+
+// The node parameters of a curve with layer points: those points at its ends, the part
+// between them meshed as the whole curve is (Gmsh's count N = int(a + 1.99) of the
+// part's integral, at equal increments of it).
+std::vector<double> layered_parameters(const CurvePlan& cp, double length) {
+  std::vector<double> ts{0.0};
+  for (double d : cp.layer_begin) ts.push_back(d / length);
+  const double tb = cp.layer_begin.empty() ? 0.0 : cp.layer_begin.back() / length;
+  const double te = cp.layer_end.empty() ? 1.0 : 1.0 - cp.layer_end.back() / length;
+  const double ab = primitive_at(cp.prim, tb), ae = primitive_at(cp.prim, te);
+  const double part = std::max(0.0, ae - ab);
+  const int n = static_cast<int>(std::min(std::floor(part + 1.99), kMaxCurveNodes - 1));
+  for (int i = 1; i + 1 < n; ++i) ts.push_back(primitive_inverse(cp.prim, ab + part * i / (n - 1)));
+  if (!cp.layer_end.empty()) ts.push_back(te);
+  for (std::size_t i = cp.layer_end.size(); i-- > 1;) ts.push_back(1.0 - cp.layer_end[i - 1] / length);
+  ts.push_back(1.0);
+  // Strictly increasing (the curve mesh's contract): a part too short for its own nodes
+  // gives none, and the layer points stay.
+  std::vector<double> out;
+  for (double t : ts)
+    if (out.empty() || t > out.back()) out.push_back(t);
+  if (out.back() != 1.0) out.back() = 1.0;
+  return out;
+}
 
 // Curves bounding a recombined surface (Gmsh's forced odd count: meshGEdge.cpp), sorted.
 std::vector<int> odd_count_curves(const geo::Model& model, const Mesh1dOptions& opt) {
@@ -477,6 +570,8 @@ void integrate_plan(const geo::Model& model, const Mesh1dOptions& opt, double bb
   }
   cp.min_segs = min_segments(shape, opt);
   cp.nodes = node_count(cp.prim, cp.min_segs);
+  plan_layer_points(model, opt, cp);
+  if (!cp.layer_begin.empty() || !cp.layer_end.empty()) cp.nodes += static_cast<double>(cp.layer_begin.size() + cp.layer_end.size());
   if (cp.odd && cp.nodes <= kMaxCurveNodes - 1 && std::fmod(cp.nodes, 2.0) == 0) cp.nodes += 1;
 }
 
@@ -579,7 +674,9 @@ void place_plan(const geo::Model& model, const Mesh1dOptions& opt, double bbox, 
   const double stretch = cp.stretch;
   const int min_segs = cp.min_segs;
   auto size = curve_size(opt, bbox, cp);
+  const bool layered = !cp.layer_begin.empty() || !cp.layer_end.empty();
   std::vector<double> ts = cp.transfinite ? transfinite_parameters(shape, *cp.transfinite)
+                           : layered      ? layered_parameters(cp, norm(model.vertex(mc.end)->xyz - vb->xyz))
                                           : place_n_nodes(cp.prim, static_cast<int>(cp.nodes));
   cp.prim = {};  // not needed any more: its samples are the largest part of a plan
   // Gmsh's filterPoints: an interior node closer than 0.3 h to the previous node kept
@@ -589,7 +686,7 @@ void place_plan(const geo::Model& model, const Mesh1dOptions& opt, double bbox, 
   std::vector<Vec3> x;  // the nodes' positions while ts is unfiltered
   // No filter on a transfinite curve (its count is the script's) nor on a forced odd
   // count (dropping a node would make it even again).
-  if (ts.size() > 2 && !cp.transfinite && !cp.odd) {
+  if (ts.size() > 2 && !cp.transfinite && !cp.odd && !layered) {
     const std::size_t n = ts.size();
     x.resize(n);
     x[0] = cp.moves_vertex ? shape.point(0) : vb->xyz;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "base/progress.h"
+#include "field/boundary_layer.h"
 #include "field/field.h"
 #include "field/size_policy.h"
 #include "geo/model.h"
@@ -69,6 +70,10 @@ struct Mesh1dOptions {
   /// gets an odd node count, as in Gmsh 4.8.4 (an even number of boundary edges lets the
   /// matching pair every triangle). Null: none.
   const MeshConstraints* constraints = nullptr;
+  /// `BoundaryLayer Field = n;`: a straight curve not in a field's CurvesList that leaves
+  /// one of its PointsList points gets the layer heights as its first nodes there (Gmsh
+  /// 4.8.4's meshGEdge.cpp), the rest of it meshed as before; null: none.
+  const std::vector<field::BoundaryLayerParams>* boundary_layers = nullptr;
 };
 
 /// The integrand's size h(t) along one curve: for `t`, the curve jets at t, sets h (> 0).

@@ -1,6 +1,6 @@
 // The 2D pipeline (paper section 3.3): per face, in tag order, the steps over its
 // FaceWork (face_work.h): boundary and plane (face_boundary), boundary mesh and sizing
-// (face_boundary_mesh), the element budget (here), refinement (face_refine), smoothing
+// (face_boundary_mesh; the boundary layers before it, face_layer), the element budget (here), refinement (face_refine), smoothing
 // and the quality pass (face_smooth), the quality floor (face_floor), output
 // (face_output); a transfinite face is filled instead (face_transfinite).
 #include "mesh/mesh2d.h"
@@ -19,6 +19,7 @@
 #include "mesh/face_boundary.h"
 #include "mesh/face_boundary_mesh.h"
 #include "mesh/face_floor.h"
+#include "mesh/face_layer.h"
 #include "mesh/face_output.h"
 #include "mesh/face_refine.h"
 #include "mesh/face_sizing.h"
@@ -72,7 +73,8 @@ bool run_face(FaceWork& f, const geo::ModelSurface& s) {
   f.plane.geom = s.geometry ? f.model.geometry(s.geometry) : nullptr;
   if (s.geometry && !f.plane.geom) return f.fail(fmt::format("surface geometry {} does not exist", s.geometry));
   auto t0 = std::chrono::steady_clock::now();
-  if (!collect_boundary(f, s) || !choose_plane(f) || !triangulate_boundary(f)) return false;
+  if (!collect_boundary(f, s) || !choose_plane(f) || !build_boundary_layers(f) || !triangulate_boundary(f))
+    return false;
   make_sizing(f);
   std::uint64_t estimate = 0;
   if (!check_budget(f, estimate)) return false;

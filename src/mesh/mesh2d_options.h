@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "base/progress.h"
+#include "field/boundary_layer.h"
 #include "field/field.h"
 #include "field/size_policy.h"
 #include "mesh/mesh_constraints.h"
@@ -51,6 +52,11 @@ struct Mesh2dOptions {
   /// <= 0: off.
   double quality_floor = 0;
   std::uint32_t max_vertices_per_face = 0xFFFFFFF0u;
+  /// `BoundaryLayer Field = n;`: the layers built along their curves before the rest of
+  /// each face is meshed (face_layer.h); null: none. A face with layers gets no quality
+  /// floor (the floor would split the layers' edges; Gmsh has none).
+  const std::vector<field::BoundaryLayerParams>* boundary_layers = nullptr;
+  int boundary_layer_fan_elements = 5;  ///< Mesh.BoundaryLayerFanElements (per half turn)
   /// Mesh.MaxElements: a face whose estimated triangle count (estimate_triangles() on its
   /// recovered boundary triangulation, before any refinement) is over this is a
   /// LimitExceeded error; <= 0: no limit.

@@ -182,10 +182,23 @@ void exec_delete_field(Interpreter& in, const DeleteFieldStmt& n) {
   invalidate_field_cache(in);
 }
 
-void exec_background_field(Interpreter& in, StmtId id, const Stmt& s, const BackgroundFieldStmt& n) {
+void exec_background_field(Interpreter& in, const Stmt& s, const BackgroundFieldStmt& n) {
   if (in.ast().str(n.which) != "Background") {
-    check_stmt_exprs(in, id);
-    in.not_supported_stmt(id, "BoundaryLayer Field");
+    // Gmsh 4.8.4 takes one id or a list of them and adds them to its boundary-layer
+    // fields; checked when the mesher builds them, as options may still change.
+    const Value v = in.eval(n.value);
+    if (v.is_string())
+      in.fail(in.ast().expr(n.value).range, Diag::WrongType, "'BoundaryLayer Field =' takes field ids, not a string");
+    KernelState& k = in.kernel();
+    for (double x : v.nums()) {
+      if (!std::isfinite(x) || std::abs(x) > 2147483647.0)
+        in.fail_fmt(in.ast().expr(n.value).range, Diag::WrongType,
+                    fmt::format("a field id must be an integer, not {}", x));
+      const int fid = static_cast<int>(x);
+      bool seen = false;
+      for (const auto& e : k.boundary_layer_fields) seen = seen || e.first == fid;
+      if (!seen) k.boundary_layer_fields.emplace_back(fid, s.range);
+    }
     return;
   }
   // Checked when the mesher builds it: options may still change after this.
@@ -203,7 +216,7 @@ void exec_field_stmt(Interpreter& in, StmtId id) {
     case StmtKind::FieldOption: exec_field_option(in, s, std::get<FieldOptionStmt>(s.node)); break;
     case StmtKind::FieldAction: exec_field_action(in, std::get<FieldActionStmt>(s.node)); break;
     case StmtKind::DeleteField: exec_delete_field(in, std::get<DeleteFieldStmt>(s.node)); break;
-    case StmtKind::BackgroundField: exec_background_field(in, id, s, std::get<BackgroundFieldStmt>(s.node)); break;
+    case StmtKind::BackgroundField: exec_background_field(in, s, std::get<BackgroundFieldStmt>(s.node)); break;
     default: SM_ASSERT(false, "kernel/statements.def sent a statement that is not a field statement");
   }
 }

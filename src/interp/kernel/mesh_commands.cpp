@@ -361,7 +361,27 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
                          {}};
     opt2.surface_algorithm[surface] = a;
   }
+  // The boundary-layer fields, built here so that bad options and missing curves are
+  // reported at their statements before anything is meshed.
+  std::vector<field::BoundaryLayerParams> layers;
+  for (const auto& [fid, at] : k.boundary_layer_fields) {
+    if (!k.fields.contains(fid))
+      in.fail_fmt(at, Diag::MissingField, fmt::format("the boundary-layer field, Field[{}], is not defined", fid));
+    const std::string kind = k.fields.options(fid).kind().name;
+    if (kind != "BoundaryLayer")
+      in.fail_fmt(at, Diag::BadFieldValue,
+                  fmt::format("'BoundaryLayer Field = {}' names a {} field: it must be a BoundaryLayer field", fid, kind));
+    (void)built_fields(in, fid, at);
+    try {
+      layers.push_back(field::boundary_layer_params(k.fields.options(fid), fid));
+    } catch (const field::FieldError& e) {
+      fail_field_error(in, e, at);
+    }
+  }
+  opt2.boundary_layers = layers.empty() ? nullptr : &layers;
+  opt2.boundary_layer_fan_elements = static_cast<int>(in.options().number("Mesh.BoundaryLayerFanElements"));
   Mesh1dOptions opt1 = mesh1d_options(in, background.get());
+  opt1.boundary_layers = opt2.boundary_layers;
   opt1.max_elements = max_elements;
   opt1.constraints = &constraints;   // -1 too: Gmsh's odd counts are made in 1D
   // Many 1D nodes: the faces' budgets first, on a coarse boundary, before the full 1D

@@ -87,6 +87,13 @@ std::vector<int> define_all(FieldSet& fs, std::size_t coast_points) {
   std::vector<double> tags(coast_points);
   for (std::size_t i = 0; i < tags.size(); ++i) tags[i] = static_cast<double>(i + 1);
   fs.set(dist, "PointsList", tags);
+  // BoundaryLayer's scalar size grows with the distance to the same points.
+  const int layer = def("BoundaryLayer");
+  fs.set(layer, "PointsList", tags);
+  fs.set(layer, "Size", 1e-3);
+  fs.set(layer, "Ratio", 1.2);
+  fs.set(layer, "Thickness", 1.0);
+  fs.set(layer, "SizeFar", 10.0);
 
   // The coast as one chain (ctx.curve_chains below), widths searched up to 128 km.
   const int channel = def("ChannelWidth");

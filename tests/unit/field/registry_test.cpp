@@ -10,7 +10,7 @@
 using namespace sm::field;
 
 TEST_CASE("registry: every kind of the issue is registered, sorted") {
-  const char* expected[] = {"Ball", "Bathymetry", "Box", "ChannelWidth", "Constant", "Curvature", "Cylinder",
+  const char* expected[] = {"Ball", "Bathymetry", "BoundaryLayer", "Box", "ChannelWidth", "Constant", "Curvature", "Cylinder",
                             "Distance", "Gradation", "Gradient", "Laplacian", "LonLat", "MathEval",
                             "Max", "MaxEigenHessian", "Mean", "Min", "Param", "Restrict",
                             "Structured", "Threshold", "TimeStep"};
