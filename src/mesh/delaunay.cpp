@@ -19,6 +19,7 @@
 #include <utility>
 
 #include "base/check.h"
+#include "mesh/locate.h"
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -202,36 +203,47 @@ bool Builder::in_conflict(const Tri& t, std::uint32_t p) const {
   return (a.y < q.y && q.y < b.y) || (b.y < q.y && q.y < a.y);
 }
 
-// Visibility walk from a real triangle: cross an edge that has p strictly on
-// its right, skipping the edge we came through. Stops in a real triangle
-// containing p (closed) or in the ghost beyond the hull edge crossed.
-// Edge order: the first triangle starts at a random edge (fixed seed); after
-// that the two remaining edges are tried in rotation order, which is cheaper
-// (no random branch per step) and terminates because the triangulation is
-// Delaunay at every walk (Edelsbrunner's acyclicity of the in-front relation).
-// Should a walk ever exceed 4096 steps it switches to a random edge order per
-// step, whose termination does not rely on that property.
+// Visibility walk (mesh/locate.h) from a real triangle: cross a side that has p strictly
+// on its right, skipping the side we came through. Stops in a real triangle containing p
+// (closed) or in the ghost beyond the hull side crossed. Side order: the first triangle
+// starts at a random side (fixed seed); after that the two remaining sides are tried in
+// rotation order, which is cheaper (no random branch per step) and terminates because the
+// triangulation is Delaunay at every walk (Edelsbrunner's acyclicity of the in-front
+// relation: no triangle is entered twice, so the walk stays within the triangle count).
+// Should a walk ever exceed 4096 steps it switches to a random side order per step, whose
+// termination does not rely on that property; past the triangle count, a scan.
 std::uint32_t Builder::locate(std::uint32_t p, std::uint32_t t) {
   static constexpr std::uint32_t kNext[3] = {1, 2, 0};
-  const Vec2 q = pos(p);
-  std::uint32_t e0 = static_cast<std::uint32_t>((std::uint64_t{rng_.next()} * 3) >> 32);
-  std::uint32_t came = 3;  // local index of the edge we entered by; 3 = none
-  for (std::uint32_t steps = 0;; ++steps) {
-    const Tri& tr = tri_[t];
-    prefetch_neighbours(tr);
-    std::uint32_t e = e0, k = 0;
-    for (; k < 3; ++k, e = kNext[e]) {
-      if (e == came) continue;
-      if (orient2d(pos(tr.v[e]), pos(tr.v[kNext[e]]), q, stats_) == Sign::Negative) break;
+  struct Walker {
+    Builder& b;
+    std::uint32_t came = 3;  // local index of the side we entered by; 3 = none
+    std::uint32_t first_side(std::uint32_t tri, std::uint64_t step) {
+      b.prefetch_neighbours(b.tri_[tri]);
+      if (step == 0 || step > 4096) return static_cast<std::uint32_t>((std::uint64_t{b.rng_.next()} * 3) >> 32);
+      return kNext[came];
     }
-    if (k == 3) return t;
-    const std::uint32_t o = tr.n[e];
-    ++res_.stats.walk_steps;
-    t = o >> 2;
-    if (is_ghost(tri_[t])) return t;
-    came = o & 3;
-    e0 = steps < 4096 ? kNext[came] : static_cast<std::uint32_t>((std::uint64_t{rng_.next()} * 3) >> 32);
-  }
+    bool skip(std::uint32_t e) const { return e == came; }
+    Vec2 org(std::uint32_t tri, std::uint32_t e) const { return b.pos(b.tri_[tri].v[e]); }
+    Vec2 dest(std::uint32_t tri, std::uint32_t e) const { return b.pos(b.tri_[tri].v[kNext[e]]); }
+    PredicateStats* predicate_stats() const { return b.stats_; }
+    AcrossStep across(std::uint32_t tri, std::uint32_t e) {
+      const std::uint32_t o = b.tri_[tri].n[e];
+      came = o & 3;
+      return {is_ghost(b.tri_[o >> 2]) ? Across::EnterAndStop : Across::Enter, o >> 2};
+    }
+  } w{*this};
+  const Vec2 q = pos(p);
+  const WalkResult r = walk_to(w, q, t, tri_.size());
+  res_.stats.walk_steps += r.steps;
+  if (r.end == WalkEnd::Found) return r.tri;
+  // Every slot of tri_ is a live triangle (cavities reuse theirs): the first real one that
+  // holds p, else a ghost in conflict with it (p beyond its hull side).
+  for (std::uint32_t k = 0; k < tri_.size(); ++k)
+    if (!is_ghost(tri_[k]) && walker_contains(w, k, q)) return k;
+  for (std::uint32_t k = 0; k < tri_.size(); ++k)
+    if (is_ghost(tri_[k]) && in_conflict(tri_[k], p)) return k;
+  SM_ASSERT(false, "delaunay: no triangle holds the point");
+  return t;
 }
 
 void Builder::insert(std::uint32_t p, std::uint32_t t0) {

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "mesh/geometry.h"
+#include "mesh/locate.h"
 
 namespace sm {
 
@@ -21,22 +22,20 @@ TriId PointInserter::locate(Vec2 c, TriId hint) {
   // The predicates are exact for finite inputs only: a constructed point at infinity
   // (the circumcentre of a triangle flat to double precision) is in no triangle.
   if (!std::isfinite(c.x) || !std::isfinite(c.y)) return TriId{};
-  std::uint32_t t = hint.value;
-  for (std::uint32_t steps = 0; steps < (1u << 24); ++steps) {
-    const std::uint32_t e0 = rand3();
-    std::uint32_t k = 0, e = e0;
-    for (; k < 3; ++k, e = e == 2 ? 0 : e + 1) {
-      const Side s{3 * t + e};
-      if (orient2d(m_.pos(m_.org(s)), m_.pos(m_.dest(s)), c, st_) == Sign::Negative) break;
-    }
-    if (k == 3) return TriId{t};
-    const Side s{3 * t + e};
-    const Side o = m_.twin[s.value];
-    if (!o.valid() || m_.constrained(s)) return TriId{};
-    t = o.value / 3;
-    ++stats.walk_steps;
+  // A random first side at every step (mesh/locate.h): the triangulation is constrained,
+  // not Delaunay, where a fixed rotation could cycle.
+  struct Walker : StoreWalker {
+    PointInserter* self;
+    std::uint32_t first_side(std::uint32_t, std::uint64_t) const { return self->rand3(); }
+  } w{{m_, st_}, this};
+  const WalkResult r = walk_to(w, c, hint.value, m_.num_slots());
+  stats.walk_steps += r.steps;
+  switch (r.end) {
+    case WalkEnd::Found: return TriId{r.tri};
+    case WalkEnd::Blocked: return TriId{};
+    case WalkEnd::StepLimit: break;
   }
-  return TriId{};
+  return scan_for(w, c, hint);
 }
 
 InsertOutcome PointInserter::insert(Vec2 c, TriId t0) {
