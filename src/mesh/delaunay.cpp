@@ -170,7 +170,7 @@ class Builder {
   struct Bound {
     std::uint32_t a, b, outer;
   };
-  std::vector<std::uint32_t> stack_, cavity_, vmap_, next_;
+  std::vector<std::uint32_t> stack_, cavity_, vmap_;
   std::vector<Bound> bound_;
 };
 
@@ -267,10 +267,6 @@ void Builder::insert(std::uint32_t p, std::uint32_t t0) {
   res_.stats.cavity_triangles += cavity_.size();
   // The boundary is a simple polygon around p: one new triangle (a, b, p)
   // per boundary edge, two more triangles than the cavity had.
-  const auto n = static_cast<std::uint32_t>(pts_.size());
-  const bool closed = fan_successors(
-      bound_, [n](std::uint32_t v) { return v == kGhost ? n : v; }, std::size_t{n} + 1, vmap_, next_);
-  SM_ASSERT(closed, "delaunay: the cavity boundary does not close");
   while (cavity_.size() < bound_.size()) cavity_.push_back(new_slot());
   const std::size_t k = bound_.size();
   for (std::size_t i = 0; i < k; ++i) {
@@ -283,7 +279,11 @@ void Builder::insert(std::uint32_t p, std::uint32_t t0) {
   }
   // Link side b -> p of the triangle on edge (a, b) with side p -> b of the
   // one on (b, c).
-  for (std::size_t i = 0; i < k; ++i) link(cavity_[i] << 2 | 1, cavity_[next_[i]] << 2 | 2);
+  const auto n = static_cast<std::uint32_t>(pts_.size());
+  const bool closed = fan_pairs(
+      bound_, [n](std::uint32_t v) { return v == kGhost ? n : v; }, std::size_t{n} + 1, vmap_,
+      [this](std::size_t i, std::size_t j) { link(cavity_[i] << 2 | 1, cavity_[j] << 2 | 2); });
+  SM_ASSERT(closed, "delaunay: the cavity boundary does not close");
   // Start the next walk from the new triangle that faces the next point
   // (points are numbered in insertion order). A heuristic with inexact
   // arithmetic: it only picks where the exact walk starts.

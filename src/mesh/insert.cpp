@@ -96,8 +96,10 @@ InsertOutcome PointInserter::insert(Vec2 c, TriId t0) {
   // consistent triangulation; twins that do not match (a corrupt store) would otherwise
   // leave a new side unpaired. Checked before any change.
   const std::size_t k = bound_.size();
-  if (!fan_successors(
-          bound_, [](VertexId v) { return v.value; }, std::size_t{m_.num_vertices()} + 1, vmap_, next_))
+  next_.resize(k);
+  if (!fan_pairs(
+          bound_, [](VertexId v) { return v.value; }, std::size_t{m_.num_vertices()} + 1, vmap_,
+          [this](std::size_t i, std::size_t j) { next_[i] = static_cast<std::uint32_t>(j); }))
     return InsertOutcome::NotVisible;
   stats.cavity_triangles += cavity_.size();
   const VertexId v = m_.add_vertex(c);
