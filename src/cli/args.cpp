@@ -10,6 +10,7 @@
 #include "cli/flags.h"
 #include "io/node_coordinates.h"
 #include "io/output_format.h"
+#include "mesh/mesh2d_algorithms.h"
 
 namespace sm::cli {
 
@@ -20,21 +21,6 @@ bool parse_number(const std::string& s, double& out) {
   char* end = nullptr;
   out = std::strtod(s.c_str(), &end);
   return end && *end == '\0' && std::isfinite(out);
-}
-
-// -algo names of Gmsh for the 2D algorithms the kernel has (mesh/mesh2d.h's
-// Mesh2dAlgorithm), mapped to Mesh.Algorithm; delquad (8) is our front2d, recombined where
-// asked (interp/kernel/mesh_commands.cpp). Gmsh's initial2d, bamg and pack are refused here
-// rather than accepted and refused once the script has run.
-bool algo_number(const std::string& name, double& out) {
-  static const std::pair<const char*, double> kAlgos[] = {
-      {"meshadapt", 1}, {"auto", 2}, {"del2d", 5}, {"front2d", 6}, {"delquad", 8}};
-  for (const auto& [n, v] : kAlgos)
-    if (name == n) {
-      out = v;
-      return true;
-    }
-  return false;
 }
 
 }  // namespace
@@ -182,11 +168,13 @@ ParseOutcome parse_args(const std::vector<std::string>& argv) {
       if (!number_opt("General.Verbosity")) return fail("'-v' needs a number");
     } else if (arg == "-algo") {
       std::string name;
-      double d = 0;
       if (!value("-algo", name)) return fail("'-algo' needs an algorithm name");
-      if (!algo_number(name, d))
-        return fail(fmt::format("unknown algorithm '{}': stereomesh has meshadapt, auto, del2d, front2d and delquad", name));
-      a.option_numbers.emplace_back("Mesh.Algorithm", d);
+      // A row of mesh/mesh2d_algorithms.h; Gmsh's initial2d, bamg and pack are refused here
+      // rather than accepted and refused once the script has run.
+      const Mesh2dAlgorithmRow* row = mesh2d_algorithm_named(name);
+      if (!row)
+        return fail(fmt::format("unknown algorithm '{}': stereomesh has {}", name, mesh2d_algorithm_names(" and ")));
+      a.option_numbers.emplace_back("Mesh.Algorithm", row->number);
     } else if (arg == "-I") {
       std::string dir;
       if (!value("-I", dir)) return fail("'-I' needs a directory");

@@ -6,6 +6,7 @@
 
 #include "cli/diagnostic_stream.h"
 #include "io/output_format.h"
+#include "mesh/mesh2d_algorithms.h"
 
 namespace sm::cli {
 
@@ -26,7 +27,7 @@ const std::vector<CliFlag>& cli_flags() {
       {{"-setstring"}, "-setstring NAME S", "the same with a string"},
       {{"-clmin", "-clmax"}, "-clmin X, -clmax X", "Mesh.MeshSizeMin / Mesh.MeshSizeMax"},
       {{"-clscale"}, "-clscale X", "Mesh.MeshSizeFactor"},
-      {{"-algo"}, "-algo NAME", "meshadapt, auto, del2d, front2d, delquad (Mesh.Algorithm; delquad: front2d recombined where Recombine asks)"},
+      {{"-algo"}, "-algo NAME", mesh2d_algorithm_help()},
       {{"-part"}, "-part N", "partition the 2D mesh into N parts with METIS (Mesh.NbPartitions)"},
       {{"-nt"}, "-nt N", "General.NumThreads"},
       {{"-v"}, "-v N",

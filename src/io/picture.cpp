@@ -11,7 +11,7 @@
 #include <map>
 #include <numeric>
 
-#include "exact/triangle_rho.h"
+#include "exact/quality.h"
 #include "geo/sphere.h"
 
 namespace sm::io {

@@ -10,7 +10,7 @@
 #include <numeric>
 
 #include "base/output_file.h"
-#include "exact/triangle_rho.h"
+#include "exact/quality.h"
 #include "io/msh_writer.h"
 #include "mesh/recombine.h"
 

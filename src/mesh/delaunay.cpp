@@ -19,6 +19,9 @@
 #include <utility>
 
 #include "base/check.h"
+#include "base/rng.h"
+#include "mesh/cavity.h"
+#include "mesh/locate.h"
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -28,17 +31,6 @@ namespace sm {
 namespace {
 
 constexpr std::uint32_t kGhost = 0xFFFFFFFEu;
-
-// xorshift64*: small, fast, and the same on every platform.
-struct Rng {
-  std::uint64_t s;
-  std::uint32_t next() {
-    s ^= s >> 12;
-    s ^= s << 25;
-    s ^= s >> 27;
-    return static_cast<std::uint32_t>((s * 0x2545F4914F6CDD1Dull) >> 32);
-  }
-};
 
 // Hilbert curve order as a 4-state machine. The state is the transform
 // (swap of x and y, complement of both) accumulated by the quadrants above;
@@ -131,7 +123,7 @@ struct alignas(32) Tri {
 class Builder {
  public:
   Builder(TriangleStore& m, const DelaunayOptions& opt, DelaunayResult& res)
-      : m_(m), res_(res), stats_(&res.stats.predicates), rng_{opt.seed | 1}, seed_(opt.seed) {}
+      : m_(m), res_(res), stats_(&res.stats.predicates), rng_(opt.seed), seed_(opt.seed) {}
 
   void run();
 
@@ -182,7 +174,9 @@ class Builder {
   std::vector<Bound> bound_;
 };
 
-bool Builder::in_conflict(const Tri& t, std::uint32_t p) const {
+// inline: with the cavity search a template (mesh/cavity.h), GCC stopped inlining this
+// test into insert(), a call per neighbour tested that cost the construction 3%.
+inline bool Builder::in_conflict(const Tri& t, std::uint32_t p) const {
   const std::uint32_t* c = t.v;
   if (!t.ghost) {
     const Sign s = incircle(pos(c[0]), pos(c[1]), pos(c[2]), pos(p), stats_);
@@ -202,63 +196,76 @@ bool Builder::in_conflict(const Tri& t, std::uint32_t p) const {
   return (a.y < q.y && q.y < b.y) || (b.y < q.y && q.y < a.y);
 }
 
-// Visibility walk from a real triangle: cross an edge that has p strictly on
-// its right, skipping the edge we came through. Stops in a real triangle
-// containing p (closed) or in the ghost beyond the hull edge crossed.
-// Edge order: the first triangle starts at a random edge (fixed seed); after
-// that the two remaining edges are tried in rotation order, which is cheaper
-// (no random branch per step) and terminates because the triangulation is
-// Delaunay at every walk (Edelsbrunner's acyclicity of the in-front relation).
-// Should a walk ever exceed 4096 steps it switches to a random edge order per
-// step, whose termination does not rely on that property.
+// Visibility walk (mesh/locate.h) from a real triangle: cross a side that has p strictly
+// on its right, skipping the side we came through. Stops in a real triangle containing p
+// (closed) or in the ghost beyond the hull side crossed. Side order: the first triangle
+// starts at a random side (fixed seed); after that the two remaining sides are tried in
+// rotation order, which is cheaper (no random branch per step) and terminates because the
+// triangulation is Delaunay at every walk (Edelsbrunner's acyclicity of the in-front
+// relation: no triangle is entered twice, so the walk stays within the triangle count).
+// Should a walk ever exceed 4096 steps it switches to a random side order per step, whose
+// termination does not rely on that property; past the triangle count, a scan.
 std::uint32_t Builder::locate(std::uint32_t p, std::uint32_t t) {
   static constexpr std::uint32_t kNext[3] = {1, 2, 0};
-  const Vec2 q = pos(p);
-  std::uint32_t e0 = static_cast<std::uint32_t>((std::uint64_t{rng_.next()} * 3) >> 32);
-  std::uint32_t came = 3;  // local index of the edge we entered by; 3 = none
-  for (std::uint32_t steps = 0;; ++steps) {
-    const Tri& tr = tri_[t];
-    prefetch_neighbours(tr);
-    std::uint32_t e = e0, k = 0;
-    for (; k < 3; ++k, e = kNext[e]) {
-      if (e == came) continue;
-      if (orient2d(pos(tr.v[e]), pos(tr.v[kNext[e]]), q, stats_) == Sign::Negative) break;
+  struct Walker {
+    Builder& b;
+    std::uint32_t came = 3;  // local index of the side we entered by; 3 = none
+    std::uint32_t first_side(std::uint32_t tri, std::uint64_t step) {
+      b.prefetch_neighbours(b.tri_[tri]);
+      if (step == 0 || step > 4096) return b.rng_.below3();
+      return kNext[came];
     }
-    if (k == 3) return t;
-    const std::uint32_t o = tr.n[e];
-    ++res_.stats.walk_steps;
-    t = o >> 2;
-    if (is_ghost(tri_[t])) return t;
-    came = o & 3;
-    e0 = steps < 4096 ? kNext[came] : static_cast<std::uint32_t>((std::uint64_t{rng_.next()} * 3) >> 32);
-  }
+    bool skip(std::uint32_t e) const { return e == came; }
+    Vec2 org(std::uint32_t tri, std::uint32_t e) const { return b.pos(b.tri_[tri].v[e]); }
+    Vec2 dest(std::uint32_t tri, std::uint32_t e) const { return b.pos(b.tri_[tri].v[kNext[e]]); }
+    PredicateStats* predicate_stats() const { return b.stats_; }
+    AcrossStep across(std::uint32_t tri, std::uint32_t e) {
+      const std::uint32_t o = b.tri_[tri].n[e];
+      came = o & 3;
+      return {is_ghost(b.tri_[o >> 2]) ? Across::EnterAndStop : Across::Enter, o >> 2};
+    }
+  } w{*this};
+  const Vec2 q = pos(p);
+  const WalkResult r = walk_to(w, q, t, tri_.size());
+  res_.stats.walk_steps += r.steps;
+  if (r.end == WalkEnd::Found) return r.tri;
+  // Every slot of tri_ is a live triangle (cavities reuse theirs): the first real one that
+  // holds p, else a ghost in conflict with it (p beyond its hull side).
+  for (std::uint32_t k = 0; k < tri_.size(); ++k)
+    if (!is_ghost(tri_[k]) && walker_contains(w, k, q)) return k;
+  for (std::uint32_t k = 0; k < tri_.size(); ++k)
+    if (is_ghost(tri_[k]) && in_conflict(tri_[k], p)) return k;
+  SM_ASSERT(false, "delaunay: no triangle holds the point");
+  return t;
 }
 
 void Builder::insert(std::uint32_t p, std::uint32_t t0) {
-  const std::uint32_t stamp = ++stamp_now_;
-  cavity_.clear();
-  bound_.clear();
-  stack_.clear();
-  tri_[t0].stamp = stamp;
-  prefetch_neighbours(tri_[t0]);
-  stack_.push_back(t0);
-  while (!stack_.empty()) {
-    const std::uint32_t t = stack_.back();
-    stack_.pop_back();
-    cavity_.push_back(t);
-    for (std::uint32_t e = 0; e < 3; ++e) {
-      const std::uint32_t o = tri_[t].n[e];
-      Tri& nt = tri_[o >> 2];
-      if (nt.stamp == stamp) continue;
-      if (in_conflict(nt, p)) {
-        nt.stamp = stamp;
-        prefetch_neighbours(nt);
-        stack_.push_back(o >> 2);
-      } else {
-        bound_.push_back({tri_[t].v[e], tri_[t].v[e == 2 ? 0 : e + 1], o});
-      }
+  // The cavity (mesh/cavity.h) over the working triangles: visited ones carry this
+  // insertion's stamp; every side has a twin (ghosts beyond the hull).
+  struct Host {
+    Builder& b;
+    std::uint32_t point, stamp;
+    void start(std::uint32_t first) {
+      b.tri_[first].stamp = stamp;
+      b.prefetch_neighbours(b.tri_[first]);
     }
-  }
+    bool neighbour(std::uint32_t t, std::uint32_t e, std::uint32_t& nt) const {
+      nt = b.tri_[t].n[e] >> 2;
+      return true;
+    }
+    bool visited(std::uint32_t nt) const { return b.tri_[nt].stamp == stamp; }
+    bool in_conflict(std::uint32_t nt) const { return b.in_conflict(b.tri_[nt], point); }
+    void visit(std::uint32_t nt) {
+      b.tri_[nt].stamp = stamp;
+      b.prefetch_neighbours(b.tri_[nt]);
+    }
+    void boundary(std::uint32_t t, std::uint32_t e) {
+      const Tri& tr = b.tri_[t];
+      b.bound_.push_back({tr.v[e], tr.v[e == 2 ? 0 : e + 1], tr.n[e]});
+    }
+  } host{*this, p, ++stamp_now_};
+  bound_.clear();
+  cavity_search(host, t0, stack_, cavity_);
   res_.stats.cavity_triangles += cavity_.size();
   // The boundary is a simple polygon around p: one new triangle (a, b, p)
   // per boundary edge, two more triangles than the cavity had.
@@ -273,29 +280,12 @@ void Builder::insert(std::uint32_t p, std::uint32_t t0) {
     link(cavity_[i] << 2, bd.outer);
   }
   // Link side b -> p of the triangle on edge (a, b) with side p -> b of the
-  // one on (b, c). Small cavities (the usual 4-8 edges) search the boundary
-  // list, which stays in cache; large ones index a per-vertex map.
-  if (k <= 16) {
-    for (std::size_t i = 0; i < k; ++i) {
-      const std::uint32_t b = bound_[i].b;
-      std::size_t j = 0;
-      while (bound_[j].a != b) ++j;
-      link(cavity_[i] << 2 | 1, cavity_[j] << 2 | 2);
-    }
-  } else {
-    std::uint32_t ghost_tri = kNoIndex;
-    // Every b below is the a of the next boundary edge, written just before:
-    // the map needs no clearing, and exists only once a large cavity occurs.
-    if (vmap_.empty()) vmap_.resize(pts_.size());
-    for (std::size_t i = 0; i < k; ++i) {
-      if (bound_[i].a == kGhost) ghost_tri = cavity_[i];
-      else vmap_[bound_[i].a] = cavity_[i];
-    }
-    for (std::size_t i = 0; i < k; ++i) {
-      const std::uint32_t b = bound_[i].b;
-      link(cavity_[i] << 2 | 1, (b == kGhost ? ghost_tri : vmap_[b]) << 2 | 2);
-    }
-  }
+  // one on (b, c).
+  const auto n = static_cast<std::uint32_t>(pts_.size());
+  const bool closed = fan_pairs(
+      bound_, [n](std::uint32_t v) { return v == kGhost ? n : v; }, std::size_t{n} + 1, vmap_,
+      [this](std::size_t i, std::size_t j) { link(cavity_[i] << 2 | 1, cavity_[j] << 2 | 2); });
+  SM_ASSERT(closed, "delaunay: the cavity boundary does not close");
   // Start the next walk from the new triangle that faces the next point
   // (points are numbered in insertion order). A heuristic with inexact
   // arithmetic: it only picks where the exact walk starts.
@@ -466,7 +456,7 @@ std::vector<std::uint32_t> brio_order(const std::vector<Vec2>& xy, std::uint64_t
   int rounds = 0;
   while (rounds < 15 && (n >> (rounds + 1)) > 32) ++rounds;
   const int key_bits = 2 * bits + 4;
-  Rng rng{seed | 1};
+  Rng rng(seed);
   std::vector<std::uint64_t> keys(n);
   for (std::uint32_t i = 0; i < n; ++i) {
     const Vec2 p = xy[i];

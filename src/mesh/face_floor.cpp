@@ -12,7 +12,7 @@
 
 #include <fmt/format.h>
 
-#include "exact/triangle_rho.h"
+#include "exact/quality.h"
 #include "mesh/modify/optimize.h"
 #include "mesh/quality_floor.h"
 

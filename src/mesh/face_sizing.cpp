@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "exact/predicates.h"
+#include "mesh/locate.h"
 
 namespace sm {
 
@@ -47,8 +48,9 @@ void set_boundary_sizes(FaceSizing& f, TriangleStore recovered, std::uint32_t fi
 }
 
 // Barycentric interpolation of the boundary sizes in the recovered boundary
-// triangulation (holes and hull included): a visibility walk from the last hit that stops
-// only at the convex hull (the point is then clamped to the last triangle).
+// triangulation (holes and hull included): the walk of mesh/locate.h from the last hit,
+// passing over hull sides, so a point beyond the hull is clamped to the triangle where
+// the walk ends.
 std::optional<double> PlaneSizes::boundary_size(Vec2 p) {
   const TriangleStore& bg = f_.bg;
   const std::vector<double>& bsize = f_.bsize;
@@ -61,35 +63,24 @@ std::optional<double> PlaneSizes::boundary_size(Vec2 p) {
       }
     if (!hint_.valid()) return std::nullopt;
   }
-  TriId t = hint_;
-  const std::uint32_t cap = 4 * bg.num_slots() + 16;
-  for (std::uint32_t step = 0; step < cap; ++step) {
-    bool moved = false;
-    walk_turn_ = (walk_turn_ + 1) % 3;
-    for (std::uint32_t k = 0; k < 3 && !moved; ++k) {
-      const Side s = side_of(t, (walk_turn_ + k) % 3);
-      if (orient2d(bg.pos(bg.org(s)), bg.pos(bg.dest(s)), p) != Sign::Negative) continue;
-      const Side o = bg.twin[s.value];
-      if (!o.valid()) continue;   // beyond the boundary: try another edge, else stop here
-      t = tri_of(o);
-      moved = true;
-    }
-    if (!moved) break;
-  }
+  // The first side turns at every step (mesh/locate.h): the triangulation is not
+  // Delaunay, where a fixed order could cycle.
+  struct Walker : StoreWalker {
+    std::uint32_t& turn;
+    std::uint32_t first_side(std::uint32_t, std::uint64_t) const { return turn = (turn + 1) % 3; }
+  } w{{bg, nullptr, false, true}, walk_turn_};
+  const WalkResult r = walk_to(w, p, hint_.value, bg.num_slots());
+  TriId t{r.tri};
+  if (r.end == WalkEnd::StepLimit)
+    if (const TriId found = scan_for(w, p, hint_); found.valid()) t = found;
   hint_ = t;
-  const Vec2 a = bg.pos(bg.vertex(t, 0)), b = bg.pos(bg.vertex(t, 1)), c = bg.pos(bg.vertex(t, 2));
-  const double area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-  double w[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
-  if (area > 0) {
-    w[0] = ((b.x - p.x) * (c.y - p.y) - (b.y - p.y) * (c.x - p.x)) / area;
-    w[1] = ((c.x - p.x) * (a.y - p.y) - (c.y - p.y) * (a.x - p.x)) / area;
-    w[2] = ((a.x - p.x) * (b.y - p.y) - (a.y - p.y) * (b.x - p.x)) / area;
-  }
+  const std::array<double, 3> weight =
+      barycentric(bg.pos(bg.vertex(t, 0)), bg.pos(bg.vertex(t, 1)), bg.pos(bg.vertex(t, 2)), p);
   double sum_w = 0, sum = 0;
   for (std::uint32_t e = 0; e < 3; ++e) {
     const std::uint32_t v = bg.vertex(t, e).value;
     const double h = v < bsize.size() ? bsize[v] : std::numeric_limits<double>::infinity();
-    const double wi = std::max(0.0, w[e]);
+    const double wi = std::max(0.0, weight[e]);
     if (!std::isfinite(h)) continue;
     sum_w += wi;
     sum += wi * h;

@@ -3,7 +3,9 @@
 
 #include <cmath>
 
+#include "mesh/cavity.h"
 #include "mesh/geometry.h"
+#include "mesh/locate.h"
 
 namespace sm {
 
@@ -12,31 +14,24 @@ namespace {
 constexpr std::size_t kScanned = 16;
 }
 
-std::uint32_t PointInserter::rand3() {
-  rng_ ^= rng_ >> 12, rng_ ^= rng_ << 25, rng_ ^= rng_ >> 27;
-  return static_cast<std::uint32_t>((((rng_ * 0x2545F4914F6CDD1Dull) >> 32) * 3) >> 32);
-}
-
 TriId PointInserter::locate(Vec2 c, TriId hint) {
   // The predicates are exact for finite inputs only: a constructed point at infinity
   // (the circumcentre of a triangle flat to double precision) is in no triangle.
   if (!std::isfinite(c.x) || !std::isfinite(c.y)) return TriId{};
-  std::uint32_t t = hint.value;
-  for (std::uint32_t steps = 0; steps < (1u << 24); ++steps) {
-    const std::uint32_t e0 = rand3();
-    std::uint32_t k = 0, e = e0;
-    for (; k < 3; ++k, e = e == 2 ? 0 : e + 1) {
-      const Side s{3 * t + e};
-      if (orient2d(m_.pos(m_.org(s)), m_.pos(m_.dest(s)), c, st_) == Sign::Negative) break;
-    }
-    if (k == 3) return TriId{t};
-    const Side s{3 * t + e};
-    const Side o = m_.twin[s.value];
-    if (!o.valid() || m_.constrained(s)) return TriId{};
-    t = o.value / 3;
-    ++stats.walk_steps;
+  // A random first side at every step (mesh/locate.h): the triangulation is constrained,
+  // not Delaunay, where a fixed rotation could cycle.
+  struct Walker : StoreWalker {
+    PointInserter* self;
+    std::uint32_t first_side(std::uint32_t, std::uint64_t) const { return self->rng_.below3(); }
+  } w{{m_, st_}, this};
+  const WalkResult r = walk_to(w, c, hint.value, m_.num_slots());
+  stats.walk_steps += r.steps;
+  switch (r.end) {
+    case WalkEnd::Found: return TriId{r.tri};
+    case WalkEnd::Blocked: return TriId{};
+    case WalkEnd::StepLimit: break;
   }
-  return TriId{};
+  return scan_for(w, c, hint);
 }
 
 InsertOutcome PointInserter::insert(Vec2 c, TriId t0) {
@@ -45,72 +40,67 @@ InsertOutcome PointInserter::insert(Vec2 c, TriId t0) {
   for (std::uint32_t e = 0; e < 3; ++e)
     if (m_.pos(m_.vertex(t0, e)) == c) return InsertOutcome::Duplicate;
   for (std::uint32_t e = 0; e < 3; ++e) container_[e] = m_.vertex(t0, e);
-  cavity_.clear();
   bound_.clear();
-  stack_.assign(1, t0.value);
-  // Visited triangles are cavity_ + stack_. Small cavities (nearly all)
-  // find them by a scan of those few slots, which saves a cache miss on
-  // tri_flags for every neighbour tested; large ones switch to kMark.
-  bool marked = false;
-  const auto visited = [&](std::uint32_t nt) {
-    if (marked) return (m_.tri_flags[nt] & kMark) != 0;
-    for (const std::uint32_t x : cavity_)
-      if (x == nt) return true;
-    for (const std::uint32_t x : stack_)
-      if (x == nt) return true;
-    return false;
-  };
-  bool visible = true;
-  while (!stack_.empty()) {
-    const std::uint32_t t = stack_.back();
-    stack_.pop_back();
-    cavity_.push_back(t);
-    for (std::uint32_t e = 0; e < 3; ++e) {
+  // The cavity (mesh/cavity.h) in the store, stopped by constrained and hull sides.
+  // Visited triangles are cavity_ + stack_. Small cavities (nearly all) find them by a
+  // scan of those few slots, which saves a cache miss on tri_flags for every neighbour
+  // tested; large ones switch to kMark.
+  struct Host {
+    PointInserter& in;
+    Vec2 point;
+    std::uint32_t nverts;
+    bool marked = false, visible = true;
+    void start(std::uint32_t) {}
+    bool neighbour(std::uint32_t t, std::uint32_t e, std::uint32_t& nt) const {
       const Side s{3 * t + e};
-      const Side o = m_.twin[s.value];
-      if (o.valid() && !m_.constrained(s)) {
-        const std::uint32_t nt = o.value / 3;
-        if (visited(nt)) continue;
-        const VertexId a = m_.vertex(TriId{nt}, 0), b = m_.vertex(TriId{nt}, 1), d = m_.vertex(TriId{nt}, 2);
-        if (incircle_sos(m_.pos(a), m_.pos(b), m_.pos(d), c, a.value, b.value, d.value, nv, st_) == Sign::Positive) {
-          stack_.push_back(nt);
-          if (marked) {
-            m_.tri_flags[nt] |= kMark;
-          } else if (cavity_.size() + stack_.size() > kScanned) {
-            marked = true;
-            for (const std::uint32_t x : cavity_) m_.tri_flags[x] |= kMark;
-            for (const std::uint32_t x : stack_) m_.tri_flags[x] |= kMark;
-          }
-          continue;
-        }
+      const Side o = in.m_.twin[s.value];
+      if (!o.valid() || in.m_.constrained(s)) return false;
+      nt = o.value / 3;
+      return true;
+    }
+    bool visited(std::uint32_t nt) const {
+      if (marked) return (in.m_.tri_flags[nt] & kMark) != 0;
+      for (const std::uint32_t x : in.cavity_)
+        if (x == nt) return true;
+      for (const std::uint32_t x : in.stack_)
+        if (x == nt) return true;
+      return false;
+    }
+    bool in_conflict(std::uint32_t nt) const {
+      const TriangleStore& m = in.m_;
+      const VertexId a = m.vertex(TriId{nt}, 0), b = m.vertex(TriId{nt}, 1), d = m.vertex(TriId{nt}, 2);
+      return incircle_sos(m.pos(a), m.pos(b), m.pos(d), point, a.value, b.value, d.value, nverts, in.st_) ==
+             Sign::Positive;
+    }
+    void visit(std::uint32_t nt) {
+      if (marked) {
+        in.m_.tri_flags[nt] |= kMark;
+      } else if (in.cavity_.size() + in.stack_.size() > kScanned) {
+        marked = true;
+        for (const std::uint32_t x : in.cavity_) in.m_.tri_flags[x] |= kMark;
+        for (const std::uint32_t x : in.stack_) in.m_.tri_flags[x] |= kMark;
       }
-      const VertexId a = m_.org(s), b = m_.dest(s);
-      if (orient2d(m_.pos(a), m_.pos(b), c, st_) != Sign::Positive) visible = false;
-      bound_.push_back({a, b, o, m_.side_flags[s.value]});
     }
-  }
-  if (marked)
+    void boundary(std::uint32_t t, std::uint32_t e) {
+      const Side s{3 * t + e};
+      const VertexId a = in.m_.org(s), b = in.m_.dest(s);
+      if (orient2d(in.m_.pos(a), in.m_.pos(b), point, in.st_) != Sign::Positive) visible = false;
+      in.bound_.push_back({a, b, in.m_.twin[s.value], in.m_.side_flags[s.value]});
+    }
+  } host{*this, c, nv};
+  cavity_search(host, t0.value, stack_, cavity_);
+  if (host.marked)
     for (std::uint32_t t : cavity_) m_.tri_flags[t] &= static_cast<std::uint8_t>(~kMark);
-  if (!visible) return InsertOutcome::NotVisible;
-  // The boundary must close: each edge's end is the start of another (j_of). It always
-  // does in a consistent triangulation; twins that do not match (a corrupt store) would
-  // otherwise send the search below past the end of bound_. Checked before any change.
+  if (!host.visible) return InsertOutcome::NotVisible;
+  // The boundary must close: each edge's end is the start of another. It always does in a
+  // consistent triangulation; twins that do not match (a corrupt store) would otherwise
+  // leave a new side unpaired. Checked before any change.
   const std::size_t k = bound_.size();
-  if (k > 32 && vmap_.size() < m_.num_vertices() + 1)
-    vmap_.resize(m_.num_vertices() + m_.num_vertices() / 2 + 1, kNoIndex);
-  if (k > 32)
-    for (std::size_t i = 0; i < k; ++i) vmap_[bound_[i].a.value] = static_cast<std::uint32_t>(i);
-  const auto j_of = [&](std::size_t i) -> std::size_t {
-    if (k > 32) {
-      const std::uint32_t j = vmap_[bound_[i].b.value];
-      return j < k && bound_[j].a == bound_[i].b ? j : k;
-    }
-    std::size_t j = 0;
-    while (j < k && bound_[j].a != bound_[i].b) ++j;
-    return j;
-  };
-  for (std::size_t i = 0; i < k; ++i)
-    if (j_of(i) == k) return InsertOutcome::NotVisible;
+  next_.resize(k);
+  if (!fan_pairs(
+          bound_, [](VertexId v) { return v.value; }, std::size_t{m_.num_vertices()} + 1, vmap_,
+          [this](std::size_t i, std::size_t j) { next_[i] = static_cast<std::uint32_t>(j); }))
+    return InsertOutcome::NotVisible;
   stats.cavity_triangles += cavity_.size();
   const VertexId v = m_.add_vertex(c);
   // Slots: the cavity's, then dead ones, then new ones (k = cavity + 2).
@@ -139,7 +129,7 @@ InsertOutcome PointInserter::insert(Vec2 c, TriId t0) {
   }
   if (keep_out_side) m_.out_side[v.value] = Side{3 * cavity_[0] + 2};
   // Link b -> v of the triangle on (a, b) with v -> b of the one on (b, c).
-  for (std::size_t i = 0; i < k; ++i) m_.link(Side{3 * cavity_[i] + 1}, Side{3 * cavity_[j_of(i)] + 2});
+  for (std::size_t i = 0; i < k; ++i) m_.link(Side{3 * cavity_[i] + 1}, Side{3 * cavity_[next_[i]] + 2});
   last_ = v;
   created_ = k;
   return InsertOutcome::Inserted;

@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include "base/rng.h"
 #include "exact/predicates.h"
 #include "mesh/triangulation.h"
 
@@ -29,7 +30,7 @@ class PointInserter {
  public:
   explicit PointInserter(TriangleStore& m, std::uint64_t seed = 0x2545F4914F6CDD1Dull,
                          PredicateStats* predicate_stats = nullptr)
-      : m_(m), st_(predicate_stats), rng_(seed | 1) {}
+      : m_(m), st_(predicate_stats), rng_(seed) {}
 
   /// Visibility walk from the live triangle `hint` towards p that never
   /// crosses a constrained or hull edge (random edge order, fixed seed).
@@ -71,15 +72,13 @@ class PointInserter {
     Side outer;
     std::uint8_t flags;
   };
-  std::uint32_t rand3();
-
   TriangleStore& m_;
   PredicateStats* st_;
-  std::uint64_t rng_;
+  Rng rng_;
   VertexId last_;
   std::array<VertexId, 3> container_{};
   std::size_t created_ = 0;
-  std::vector<std::uint32_t> stack_, cavity_, vmap_;
+  std::vector<std::uint32_t> stack_, cavity_, vmap_, next_;
   std::vector<Bound> bound_;
 };
 

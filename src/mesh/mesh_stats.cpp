@@ -12,7 +12,7 @@
 
 #include "base/json_text.h"
 #include "base/parallel.h"
-#include "exact/triangle_rho.h"
+#include "exact/quality.h"
 #include "mesh/recombine.h"
 
 namespace sm {

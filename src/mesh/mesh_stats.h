@@ -24,7 +24,7 @@ struct StageTime {
 struct MeshStats {
   std::uint64_t nodes = 0, triangles = 0, edges = 0;   // nodes: those of the elements
   /// Quadrangles (transfinite or recombined surfaces) and their corner quality
-  /// (recombine.h's quad_quality: 1 - max |90 - corner angle| / 90, in space).
+  /// (exact/quality.h's quad_quality: 1 - max |90 - corner angle| / 90, in space).
   std::uint64_t quads = 0;
   double quad_min = 0, quad_mean = 0;
   double min_rho = 0, mean_rho = 0, share_rho_09 = 0;   // share of triangles with rho > 0.9

@@ -1,4 +1,4 @@
-// Triangle quality measures and mesh statistics.
+// Circumcircles and mesh statistics (the quality measures: exact/quality.h).
 #include "mesh/quality.h"
 
 #include <algorithm>
@@ -6,19 +6,6 @@
 #include <vector>
 
 namespace sm {
-
-double eta(Vec2 a, Vec2 b, Vec2 c) {
-  const double s = norm2(b - c) + norm2(c - a) + norm2(a - b);
-  const double area = 0.5 * std::fabs(cross(b - a, c - a));
-  return s > 0 ? 4 * std::sqrt(3.0) * area / s : 0.0;
-}
-
-double gamma(Vec2 a, Vec2 b, Vec2 c) {
-  const double la = norm(b - c), lb = norm(c - a), lc = norm(a - b);
-  const double area = 0.5 * std::fabs(cross(b - a, c - a));
-  const double p = la + lb + lc, lmax = std::max({la, lb, lc});
-  return p > 0 && lmax > 0 ? 2 * std::sqrt(3.0) * (2 * area / p) / lmax : 0.0;
-}
 
 Vec2 circumcentre(Vec2 a, Vec2 b, Vec2 c) {
   const Vec2 ba = b - a, ca = c - a;

@@ -1,21 +1,16 @@
-// Triangle quality and mesh statistics in the plane: rho (exact/triangle_rho.h), eta
-// (mean ratio), gamma, and edge length over the target size (median and 5-95% range).
+// Mesh statistics in the plane: rho, gamma (exact/quality.h: every quality measure) and
+// edge length over the target size (median and 5-95% range); circumcircles.
 #pragma once
 
 #include <cstdint>
 #include <functional>
 
 #include "base/vec.h"
-#include "exact/triangle_rho.h"
+#include "exact/quality.h"
 #include "mesh/triangulation.h"
 
 namespace sm {
 
-/// Mean ratio 4 sqrt(3) area / (sum of squared edge lengths), in [0, 1].
-double eta(Vec2 a, Vec2 b, Vec2 c);
-/// 2 sqrt(3) r_in / longest edge, in [0, 1]: the 2D form of Gmsh's "gamma"
-/// quality type (volume / sum of faces / longest edge).
-double gamma(Vec2 a, Vec2 b, Vec2 c);
 /// Circumcentre and circumradius (inexact constructions).
 Vec2 circumcentre(Vec2 a, Vec2 b, Vec2 c);
 double circumradius(Vec2 a, Vec2 b, Vec2 c);

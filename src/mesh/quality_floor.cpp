@@ -8,7 +8,7 @@
 
 #include "exact/predicates.h"
 #include "exact/segments.h"
-#include "exact/triangle_rho.h"
+#include "exact/quality.h"
 #include "mesh/insert.h"
 #include "mesh/modify/smooth.h"
 #include "mesh/modify/split.h"

@@ -1,5 +1,5 @@
 // The quality floor (Mesh.QualityFloor): after a face is refined and optimised, every
-// triangle below rho = q (measured in space: exact/triangle_rho.h) is worked on in
+// triangle below rho = q (measured in space: exact/quality.h) is worked on in
 // bounded rounds, after Ruppert's refinement: a curve edge is split at a point of its
 // curve (the parameter midpoint, or a quarter from an end where the midpoint would turn a
 // triangle over; the face tells where: the geometry does not change and faces meshed

@@ -8,17 +8,10 @@
 
 #include "base/id.h"
 #include "exact/predicates.h"
+#include "exact/quality.h"
 
 namespace sm {
 namespace {
-
-double corner_deviation(Vec3 prev, Vec3 at, Vec3 next) {
-  const Vec3 a = prev - at, b = next - at;
-  const double na = norm(a), nb = norm(b);
-  if (!(na > 0) || !(nb > 0)) return 90.0;
-  const double c = std::clamp(dot(a, b) / (na * nb), -1.0, 1.0);
-  return std::abs(90.0 - std::acos(c) * 180.0 / std::numbers::pi);
-}
 
 // One candidate: triangles t1 < t2 across the edge (n1, n2); the quadrangle n1 n3 n2 n4
 // (n3 apex of t1, n4 of t2) in t1's orientation.
@@ -29,12 +22,6 @@ struct Pair {
 };
 
 }  // namespace
-
-double quad_quality(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
-  const double dev = std::max({corner_deviation(d, a, b), corner_deviation(a, b, c), corner_deviation(b, c, d),
-                               corner_deviation(c, d, a)});
-  return 1.0 - dev / 90.0;
-}
 
 RecombineResult recombine(std::span<const std::array<std::uint32_t, 3>> tris, std::span<const Vec3> xyz,
                           std::span<const Vec2> plane, std::span<const std::pair<std::uint32_t, std::uint32_t>> fixed,

@@ -13,13 +13,14 @@
 #include <vector>
 
 #include "base/vec.h"
+#include "exact/quality.h"
 #include "mesh/mesh_constraints.h"
 
 namespace sm {
 
 struct RecombineOptions {
   RecombineAlgorithm algorithm = RecombineAlgorithm::Matching;
-  /// A pair whose quadrangle's corner quality (quad_quality) is below this stays two
+  /// A pair whose quadrangle's corner quality (exact/quality.h's quad_quality) is below this stays two
   /// triangles (Gmsh splits back its quadrangles below 0.1 of its own measure).
   double min_quality = 0.1;
   /// Matching: triangles one augmenting-path search may visit (bounds the work on a
@@ -32,11 +33,6 @@ struct RecombineResult {
   std::vector<std::array<std::uint32_t, 4>> quads;       // oriented as their triangles
   std::uint64_t augmentations = 0;                       // Matching's augmenting paths
 };
-
-/// The corner quality of a quadrangle in space: 1 - max |90 - corner angle| / 90 (1 for
-/// a rectangle, 0 with a flat or zero corner). Gmsh's RecombineTriangle sorts its pairs
-/// by the same max |90 - angle|.
-double quad_quality(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
 
 /// Pairs the consistently oriented `triangles` (node indices into `xyz` and `plane`).
 /// Only convex quadrangles are formed (decided with orient2d on the `plane` points, the

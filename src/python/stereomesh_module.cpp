@@ -24,6 +24,7 @@
 #include "interp/kernel/node_data_export.h"
 #include "io/boundary_edges.h"
 #include "io/from_model_mesh.h"
+#include "mesh/mesh2d_algorithms.h"
 
 namespace py = pybind11;
 
@@ -31,9 +32,6 @@ namespace {
 
 using namespace sm;
 
-// The algorithm names of the command line's -algo.
-const std::map<std::string, int, std::less<>> kAlgorithms = {
-    {"meshadapt", 1}, {"auto", 2}, {"del2d", 5}, {"front2d", 6}};
 
 // What run() returns: plain attributes, numpy arrays for the mesh.
 struct Mesh {
@@ -112,9 +110,10 @@ Mesh run(const py::object& error_type, const std::string& path, const std::map<s
   for (const auto& [name, v] : setstring)
     if (std::string why = in.preset_string(name, v); !why.empty()) refuse("setstring: " + why);
   if (algo) {
-    const auto it = kAlgorithms.find(*algo);
-    if (it == kAlgorithms.end()) refuse("unknown algorithm '" + *algo + "': meshadapt, auto, del2d or front2d");
-    in.options().set_number("Mesh.Algorithm", it->second);
+    // The names of the command line's -algo (mesh/mesh2d_algorithms.h).
+    const Mesh2dAlgorithmRow* row = mesh2d_algorithm_named(*algo);
+    if (!row) refuse("unknown algorithm '" + *algo + "': " + mesh2d_algorithm_names(" or "));
+    in.options().set_number("Mesh.Algorithm", row->number);
   }
   if (threads) in.options().set_number("General.NumThreads", *threads);
   if (dim < 0 || dim > 2) refuse("dim must be 0, 1 or 2");
@@ -278,7 +277,13 @@ class ScriptError(RuntimeError):
       py::arg("path"), py::arg("setnumber") = std::map<std::string, double>{},
       py::arg("setstring") = std::map<std::string, std::string>{}, py::arg("algo") = py::none(),
       py::arg("threads") = py::none(), py::arg("dim") = 2,
-      "Runs the .geo script at `path` (setnumber / setstring as -setnumber / -setstring; algo as -algo: "
-      "meshadapt, auto, del2d, front2d; threads as -nt) and meshes it up to `dim` (0: evaluate only), as "
-      "`stereomesh -2` does. Returns a Mesh; raises ScriptError on a script or meshing error.");
+      ("Runs the .geo script at `path` (setnumber / setstring as -setnumber / -setstring; algo as -algo: " +
+       mesh2d_algorithm_names(", ") +
+       "; threads as -nt) and meshes it up to `dim` (0: evaluate only), as `stereomesh -2` does. Returns a Mesh; "
+       "raises ScriptError on a script or meshing error.")
+          .c_str());
+  // The names run() takes as algo, with their Mesh.Algorithm (mesh/mesh2d_algorithms.h).
+  py::dict algorithms;
+  for (const Mesh2dAlgorithmRow& r : kMesh2dAlgorithms) algorithms[py::str(std::string(r.name))] = r.number;
+  mod.attr("algorithms") = algorithms;
 }

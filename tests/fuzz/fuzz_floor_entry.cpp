@@ -33,7 +33,7 @@
 #include <vector>
 
 #include "exact/predicates.h"
-#include "exact/triangle_rho.h"
+#include "exact/quality.h"
 #include "fuzz_floor_entry.h"
 #include "geo/model.h"
 #include "mesh/mesh1d.h"

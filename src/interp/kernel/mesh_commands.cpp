@@ -35,6 +35,7 @@
 #include "io/output_format.h"
 #include "mesh/mesh1d.h"
 #include "mesh/mesh2d.h"
+#include "mesh/mesh2d_algorithms.h"
 #include "mesh/mesh_stats.h"
 #include "mesh/time_step.h"
 #include "mesh/time_step_repair.h"
@@ -112,22 +113,6 @@ MeshFailure failure_of(const KernelState& k, const MeshError& e) {
     f.message += fmt::format(" (near lon {:.4f}, lat {:.4f})", e.where.lon, e.where.lat);
   }
   return f;
-}
-
-// Mesh.Algorithm -> the 2D algorithms we have; the others are refused by name.
-bool mesh2d_algorithm(int algo, Mesh2dAlgorithm& out) {
-  switch (algo) {
-    case 1: out = Mesh2dAlgorithm::MeshAdapt; return true;
-    case 2: out = Mesh2dAlgorithm::Automatic; return true;
-    case 3: out = Mesh2dAlgorithm::InitialOnly; return true;   // Gmsh's "initial mesh only"
-    case 5: out = Mesh2dAlgorithm::Del2d; return true;
-    case 6: out = Mesh2dAlgorithm::Frontal; return true;
-    // Gmsh's Frontal-Delaunay for Quads: our frontal mesher, its triangles paired where
-    // the surface is recombined (as Gmsh pairs them only there too); Gmsh's cross-field
-    // aligned right triangles are not made (docs/kernel.md).
-    case 8: out = Mesh2dAlgorithm::Frontal; return true;
-    default: return false;
-  }
 }
 
 // `t` summed into the entry of its name in `times` (appended when there is none).
@@ -281,16 +266,16 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   Mesh2dOptions opt2;
   if (dim >= 2) {
     const int algo = static_cast<int>(in.options().number("Mesh.Algorithm"));
-    if (!mesh2d_algorithm(algo, opt2.algorithm)) {
+    // A row of mesh/mesh2d_algorithms.h; the others are refused by their number.
+    const Mesh2dAlgorithmRow* row = mesh2d_algorithm_numbered(algo);
+    if (!row) {
       MeshFailure f{Diag::MeshFailed,
-                    fmt::format("Mesh.Algorithm {} is not available: use 1 (meshadapt), 2 (automatic), 3 (initial "
-                                "mesh only), 5 (del2d), 6 (front2d) or 8 (front2d for quadrangles)",
-                                algo),
-                    {}};
+                    fmt::format("Mesh.Algorithm {} is not available: use {}", algo, mesh2d_algorithm_numbers()), {}};
       if (const auto it = k.option_set_at.find("Mesh.Algorithm"); it != k.option_set_at.end())
         f.notes.push_back({it->second, "Mesh.Algorithm was set here"});
       return f;
     }
+    opt2.algorithm = row->algorithm;
     opt2.size = size_policy_from_options(in.options());
     opt2.background = background.get();
     opt2.bbox_diag = model_bbox_diag(k.model);
@@ -352,14 +337,13 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   constraints.algorithm = recombination == 0 ? RecombineAlgorithm::Simple : RecombineAlgorithm::Matching;
   opt2.constraints = &constraints;
   for (const auto& [surface, algo] : constraints.surface_algorithm) {
-    Mesh2dAlgorithm a;
-    if (!mesh2d_algorithm(algo, a))
+    const Mesh2dAlgorithmRow* row = mesh2d_algorithm_numbered(algo);
+    if (!row)
       return MeshFailure{Diag::MeshFailed,
-                         fmt::format("MeshAlgorithm Surface{{{}}} = {} is not available: use 1 (meshadapt), 2 "
-                                     "(automatic), 3 (initial mesh only), 5 (del2d), 6 (front2d) or 8",
-                                     surface, algo),
+                         fmt::format("MeshAlgorithm Surface{{{}}} = {} is not available: use {}", surface, algo,
+                                     mesh2d_algorithm_numbers()),
                          {}};
-    opt2.surface_algorithm[surface] = a;
+    opt2.surface_algorithm[surface] = row->algorithm;
   }
   // The boundary-layer fields, built here so that bad options and missing curves are
   // reported at their statements before anything is meshed.

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "exact/predicates.h"
-#include "exact/triangle_rho.h"
+#include "exact/quality.h"
 
 namespace sm {
 namespace {

@@ -7,7 +7,7 @@
 #include <cstdint>
 
 #include "exact/predicates.h"
-#include "exact/triangle_rho.h"
+#include "exact/quality.h"
 #include "mesh/triangulation.h"
 
 namespace sm {

@@ -52,14 +52,14 @@ TEST_CASE("cli: usage errors") {
   CHECK_FALSE(parse_args({"a.geo", "-setnumber", "n", "abc"}).ok);
   CHECK_FALSE(parse_args({"a.geo", "-algo", "magic"}).ok);
   // Gmsh's algorithms the kernel lacks are refused with the list of those it has.
-  for (const char* missing : {"bamg", "pack", "initial2d"}) {
+  for (const char* missing : {"bamg", "pack", "hxt"}) {
     CAPTURE(missing);
     const sm::cli::ParseOutcome c = parse_args({"a.geo", "-algo", missing});
     CHECK_FALSE(c.ok);
-    CHECK(c.error.find("meshadapt, auto, del2d, front2d and delquad") != std::string::npos);
+    CHECK(c.error.find("meshadapt, auto, initial2d, del2d, front2d and delquad") != std::string::npos);
   }
   for (const auto& [name, number] : std::vector<std::pair<const char*, double>>{
-           {"meshadapt", 1}, {"auto", 2}, {"del2d", 5}, {"front2d", 6}, {"delquad", 8}}) {
+           {"meshadapt", 1}, {"auto", 2}, {"initial2d", 3}, {"del2d", 5}, {"front2d", 6}, {"delquad", 8}}) {
     const sm::cli::ParseOutcome c = parse_args({"a.geo", "-algo", name});
     REQUIRE(c.ok);
     CHECK(c.args.option_numbers.back() == std::pair<std::string, double>{"Mesh.Algorithm", number});

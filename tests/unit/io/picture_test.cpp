@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "exact/triangle_rho.h"
+#include "exact/quality.h"
 #include "geo/sphere.h"
 #include "io/picture.h"
 #include "io/svg_writer.h"

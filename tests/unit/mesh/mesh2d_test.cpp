@@ -18,7 +18,7 @@
 #include <fmt/format.h>
 
 #include "exact/predicates.h"
-#include "exact/triangle_rho.h"
+#include "exact/quality.h"
 #include "field/distance.h"
 #include "mesh/mesh1d.h"
 #include "mesh/mesh_stats.h"

@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "exact/triangle_rho.h"
+#include "exact/quality.h"
 #include "geo/model.h"
 #include "mesh/mesh1d.h"
 #include "mesh/mesh2d.h"

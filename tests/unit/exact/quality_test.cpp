@@ -1,6 +1,7 @@
-// exact/triangle_rho: rho = 2 r_in / r_circ in the plane and in space, one formula for
-// the refiners, the optimiser, the statistics and the writers.
-#include "exact/triangle_rho.h"
+// exact/quality.h: rho = 2 r_in / r_circ in the plane and in space, one formula for
+// the refiners, the optimiser, the statistics and the writers; beside it eta, gamma and
+// the quadrangle corner quality, reached here from sm_exact alone.
+#include "exact/quality.h"
 
 #include <doctest/doctest.h>
 
@@ -55,4 +56,17 @@ TEST_CASE("rho: orientation and vertex order do not matter; rho_ccw filters cloc
     }
   }
   CHECK(rho_ccw(Vec2{0, 0}, Vec2{1, 0}, Vec2{2, 0}) == -1);
+}
+
+TEST_CASE("quality: eta, gamma and the quadrangle corner quality beside rho") {
+  const Vec2 a{0, 0}, b{1, 0}, c{0.5, std::sqrt(0.75)};
+  CHECK(eta(a, b, c) == doctest::Approx(1));
+  CHECK(gamma(a, b, c) == doctest::Approx(1));
+  CHECK(eta(a, b, {2, 0}) == 0);
+  CHECK(gamma(a, a, a) == 0);
+  // Orientation does not matter to either (rho_ccw is the measure that cares).
+  CHECK(eta(a, c, b) == eta(a, b, c));
+  CHECK(quad_quality({0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}) == doctest::Approx(1));
+  CHECK(quad_quality({0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}) == doctest::Approx(0));   // a flat corner
+  CHECK(quad_quality({0, 0, 0}, {0, 0, 0}, {1, 1, 0}, {0, 1, 0}) == doctest::Approx(0));   // a null edge
 }

@@ -1,6 +1,10 @@
-// The shape quality of a triangle, rho = 2 r_in / r_circ (the paper's aspect ratio; Gmsh's
-// "gamma" of a triangle): 1 for an equilateral triangle, 0 for a degenerate one. The one
-// formula for the refiners, the optimiser, the statistics and the writers.
+// The element quality measures, one definition each for the refiners, the optimiser, the
+// recombination, the statistics and the writers: the shape quality of a triangle,
+// rho = 2 r_in / r_circ (the paper's aspect ratio; Gmsh's "gamma" of a triangle): 1 for an
+// equilateral triangle, 0 for a degenerate one; the mean ratio eta; Gmsh's gamma in the
+// plane; the corner quality of a quadrangle. Here beside the predicates because, like
+// them, they are plain functions of coordinates that every module meshing or writing
+// elements shares (docs/architecture.md); they are floating-point measures, not decisions.
 #pragma once
 
 #include <cmath>
@@ -47,5 +51,16 @@ inline double rho(Vec3 a, Vec3 b, Vec3 c) {
   const double den = (la + lb + lc) * la * lb * lc;
   return den > 0 ? 4 * area2_sq / den : 0.0;
 }
+
+/// Mean ratio 4 sqrt(3) area / (sum of squared edge lengths), in [0, 1].
+double eta(Vec2 a, Vec2 b, Vec2 c);
+
+/// 2 sqrt(3) r_in / longest edge, in [0, 1]: the 2D form of Gmsh's "gamma" quality type
+/// (volume / sum of faces / longest edge).
+double gamma(Vec2 a, Vec2 b, Vec2 c);
+
+/// The corner quality of a quadrangle a b c d in space: 1 - max |90 - corner angle| / 90
+/// (1 for a rectangle, 0 when a corner is flat or null).
+double quad_quality(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
 
 }  // namespace sm
