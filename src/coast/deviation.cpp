@@ -25,13 +25,23 @@ constexpr int kSamples = 8;
 
 // A polyline with each segment's direction and squared length computed once: the distance
 // of many points to one polyline (the curve near a segment against each source point
-// between its control points) reuses them.
+// between its control points) reuses them. Its segments go in groups of kGroup, each in a
+// ball holding its points; a group whose ball lies farther than the nearest segment found
+// so far is passed over (the minimum over the rest is the same number: each skipped
+// segment's distance, as computed, is larger than it).
 class Polyline {
  public:
-  void assign(const std::vector<Vec3>& pts) {
+  static constexpr std::size_t kGroup = 8;
+
+  // `margin` (metres) covers the rounding of the distances and the balls: far above it
+  // (coordinates of the sphere's size carry ~1e-16 of it), far below any distance.
+  void assign(const std::vector<Vec3>& pts, double margin) {
     a_.clear();
     ab_.clear();
     l2_.clear();
+    centre_.clear();
+    reach_.clear();
+    margin_ = margin;
     for (std::size_t i = 0; i < pts.size(); ++i) {
       a_.push_back(pts[i]);
       if (i + 1 < pts.size()) {
@@ -39,26 +49,49 @@ class Polyline {
         l2_.push_back(norm2(ab_.back()));
       }
     }
+    for (std::size_t g = 0; g < ab_.size(); g += kGroup) {
+      const std::size_t last = std::min(g + kGroup, ab_.size());  // its points g..last
+      Vec3 lo = pts[g], hi = pts[g];
+      for (std::size_t i = g + 1; i <= last; ++i)
+        lo = {std::min(lo.x, pts[i].x), std::min(lo.y, pts[i].y), std::min(lo.z, pts[i].z)},
+        hi = {std::max(hi.x, pts[i].x), std::max(hi.y, pts[i].y), std::max(hi.z, pts[i].z)};
+      const Vec3 centre = 0.5 * (lo + hi);
+      double r2 = 0;
+      for (std::size_t i = g; i <= last; ++i) r2 = std::max(r2, norm2(pts[i] - centre));
+      centre_.push_back(centre);
+      reach_.push_back(std::sqrt(r2) + margin);
+    }
   }
   // The distance from p: the nearest segment found on squared distances (no square root
-  // per segment: this is most of the pass's time), the root taken once.
-  double distance(const Vec3& p) const {
+  // per segment: this is most of the pass's time), the root taken once. The group of
+  // segment `first` is measured first (the nearest one, as a rule, so that the others
+  // are passed over).
+  double distance(const Vec3& p, std::size_t first = 0) const {
     if (a_.empty()) return HUGE_VAL;
     double d2 = norm2(p - a_.front());
-    for (std::size_t i = 0; i < ab_.size(); ++i) {
-      const Vec3& a = a_[i];
-      const Vec3& ab = ab_[i];
-      const double l2 = l2_[i];
-      double t = l2 > 0 ? dot(p - a, ab) / l2 : 0.0;
-      t = std::clamp(t, 0.0, 1.0);
-      d2 = std::min(d2, norm2(p - (a + t * ab)));
+    const std::size_t groups = centre_.size();
+    const std::size_t g0 = std::min(first, ab_.size() > 0 ? ab_.size() - 1 : 0) / kGroup;
+    for (std::size_t k = 0; k < groups; ++k) {
+      const std::size_t g = k == 0 ? g0 : (k <= g0 ? k - 1 : k);
+      const double dc = norm(p - centre_[g]) - reach_[g] - margin_;
+      if (dc > 0 && dc * dc > d2) continue;
+      const std::size_t last = std::min((g + 1) * kGroup, ab_.size());
+      for (std::size_t i = g * kGroup; i < last; ++i) {
+        const Vec3& a = a_[i];
+        const Vec3& ab = ab_[i];
+        const double l2 = l2_[i];
+        double t = l2 > 0 ? dot(p - a, ab) / l2 : 0.0;
+        t = std::clamp(t, 0.0, 1.0);
+        d2 = std::min(d2, norm2(p - (a + t * ab)));
+      }
     }
     return std::sqrt(d2);
   }
 
  private:
-  std::vector<Vec3> a_, ab_;
-  std::vector<double> l2_;
+  std::vector<Vec3> a_, ab_, centre_;
+  std::vector<double> l2_, reach_;
+  double margin_ = 0;
 };
 
 // One curve seen by the pass: its control points, spans and source points on the sphere.
@@ -209,6 +242,7 @@ CurveScan scan_curve(const WorkCurve& c, const geo::PolarSphere& ps, const Devia
   st.dist.resize(c.full.size(), 0.0);
   const double min_angle = opt.min_angle_deg * geo::kDegToRad;
   const bool bounded = opt.fixed > 0 || opt.factor > 0;
+  const double margin = 1e-10 * opt.radius;   // the rounding of distances on this sphere
   // A segment's curve depends on the control points two before to three after it.
   auto touched = [&](long s) {
     for (long k = s - 2; k <= s + 3; ++k) {
@@ -258,12 +292,15 @@ CurveScan scan_curve(const WorkCurve& c, const geo::PolarSphere& ps, const Devia
     r = SegmentResult{};
     const auto [a, b] = v.source_range(s);
     v.curve_near(s, points);
-    near.assign(points);
+    near.assign(points, margin);
+    // The span of segment s itself comes after the span before it (a piece's first
+    // segment too: it has span -1).
+    const std::size_t own_first = opt.bspline ? static_cast<std::size_t>(kSamples) : 0;
     candidates.clear();
     // Source points to the curve.
     const bool last_point_too = !c.periodic && s + 1 == v.segments();
     for (long j = a; j < b || (j == b && last_point_too); ++j) {
-      const double d = near.distance(v.source(j));
+      const double d = near.distance(v.source(j), own_first);
       const double q = d / v.bound(j);
       st.dist[static_cast<std::size_t>(j % n)] = d;
       if (d > r.max) r.max = d, r.max_at = j % n;
@@ -289,8 +326,14 @@ CurveScan scan_curve(const WorkCurve& c, const geo::PolarSphere& ps, const Devia
       }
       points.clear();
       for (long j = from; j <= to; ++j) points.push_back(v.source(j));
-      source_line.assign(points);
-      for (const Vec3& p : own) curve_ratio = std::max(curve_ratio, source_line.distance(p) / v.bound(a));
+      source_line.assign(points, margin);
+      // The i-th sample of the span lies, as a rule, nearest the source points that far
+      // along the segment.
+      for (std::size_t i = 0; i < own.size(); ++i) {
+        const long steps = static_cast<long>(std::max<std::size_t>(own.size() - 1, 1));
+        const long along = (a - from) + (b - a) * static_cast<long>(i) / steps;
+        curve_ratio = std::max(curve_ratio, source_line.distance(own[i], static_cast<std::size_t>(along)) / v.bound(a));
+      }
     }
     if (r.ratio <= 1 && curve_ratio <= 1) continue;
     // The farthest source point that makes no spike; a few tries, farthest first.
