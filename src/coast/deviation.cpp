@@ -1,5 +1,11 @@
 // Deviation of the coast curves from their source points, and control points put back
 // where it exceeds the bound (coast/deviation.h).
+//
+// What each control-polygon segment's scan finds depends only on the control points two
+// before to three after it and the source points between them, so the pass keeps each
+// segment's result from round to round and scans again only the segments next to the
+// points put back; the final figures are read from those results, not from a second scan
+// of every curve. Each scan samples a span once (not once per segment that looks at it).
 #include "coast/deviation.h"
 
 #include <algorithm>
@@ -17,30 +23,91 @@ namespace {
 // eighth of its length, so the polyline is within a small fraction of the bound.
 constexpr int kSamples = 8;
 
-// Squared: the nearest segment is found without a square root per segment (this is
-// most of the pass's time), the distance taken once.
-double point_segment_distance2(const Vec3& p, const Vec3& a, const Vec3& b) {
-  const Vec3 ab = b - a;
-  const double l2 = norm2(ab);
-  double t = l2 > 0 ? dot(p - a, ab) / l2 : 0.0;
-  t = std::clamp(t, 0.0, 1.0);
-  return norm2(p - (a + t * ab));
-}
+// A polyline with each segment's direction and squared length computed once: the distance
+// of many points to one polyline (the curve near a segment against each source point
+// between its control points) reuses them. Its segments go in groups of kGroup, each in a
+// ball holding its points; a group whose ball lies farther than the nearest segment found
+// so far is passed over (the minimum over the rest is the same number: each skipped
+// segment's distance, as computed, is larger than it).
+class Polyline {
+ public:
+  static constexpr std::size_t kGroup = 8;
 
-double polyline_distance(const Vec3& p, const std::vector<Vec3>& line) {
-  if (line.empty()) return HUGE_VAL;
-  double d2 = norm2(p - line.front());
-  for (std::size_t i = 1; i < line.size(); ++i) d2 = std::min(d2, point_segment_distance2(p, line[i - 1], line[i]));
-  return std::sqrt(d2);
-}
+  // `margin` (metres) covers the rounding of the distances and the balls: far above it
+  // (coordinates of the sphere's size carry ~1e-16 of it), far below any distance.
+  void assign(const std::vector<Vec3>& pts, double margin) {
+    a_.clear();
+    ab_.clear();
+    l2_.clear();
+    centre_.clear();
+    reach_.clear();
+    margin_ = margin;
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      a_.push_back(pts[i]);
+      if (i + 1 < pts.size()) {
+        ab_.push_back(pts[i + 1] - pts[i]);
+        l2_.push_back(norm2(ab_.back()));
+      }
+    }
+    for (std::size_t g = 0; g < ab_.size(); g += kGroup) {
+      const std::size_t last = std::min(g + kGroup, ab_.size());  // its points g..last
+      Vec3 lo = pts[g], hi = pts[g];
+      for (std::size_t i = g + 1; i <= last; ++i)
+        lo = {std::min(lo.x, pts[i].x), std::min(lo.y, pts[i].y), std::min(lo.z, pts[i].z)},
+        hi = {std::max(hi.x, pts[i].x), std::max(hi.y, pts[i].y), std::max(hi.z, pts[i].z)};
+      const Vec3 centre = 0.5 * (lo + hi);
+      double r2 = 0;
+      for (std::size_t i = g; i <= last; ++i) r2 = std::max(r2, norm2(pts[i] - centre));
+      centre_.push_back(centre);
+      reach_.push_back(std::sqrt(r2) + margin);
+    }
+  }
+  // The distance from p: the nearest segment found on squared distances (no square root
+  // per segment: this is most of the pass's time), the root taken once. The group of
+  // segment `first` is measured first (the nearest one, as a rule, so that the others
+  // are passed over).
+  double distance(const Vec3& p, std::size_t first = 0) const {
+    if (a_.empty()) return HUGE_VAL;
+    double d2 = norm2(p - a_.front());
+    const std::size_t groups = centre_.size();
+    const std::size_t g0 = std::min(first, ab_.size() > 0 ? ab_.size() - 1 : 0) / kGroup;
+    for (std::size_t k = 0; k < groups; ++k) {
+      const std::size_t g = k == 0 ? g0 : (k <= g0 ? k - 1 : k);
+      const double dc = norm(p - centre_[g]) - reach_[g] - margin_;
+      if (dc > 0 && dc * dc > d2) continue;
+      const std::size_t last = std::min((g + 1) * kGroup, ab_.size());
+      for (std::size_t i = g * kGroup; i < last; ++i) {
+        const Vec3& a = a_[i];
+        const Vec3& ab = ab_[i];
+        const double l2 = l2_[i];
+        double t = l2 > 0 ? dot(p - a, ab) / l2 : 0.0;
+        t = std::clamp(t, 0.0, 1.0);
+        d2 = std::min(d2, norm2(p - (a + t * ab)));
+      }
+    }
+    return std::sqrt(d2);
+  }
+
+ private:
+  std::vector<Vec3> a_, ab_, centre_;
+  std::vector<double> l2_, reach_;
+  double margin_ = 0;
+};
 
 // One curve seen by the pass: its control points, spans and source points on the sphere.
+// Spans are sampled when first asked for and kept for the rest of the scan.
 class CurveView {
  public:
-  CurveView(const WorkCurve& c, const geo::PolarSphere& ps, const DeviationOptions& opt)
-      : c_(c), ps_(ps), opt_(opt), n_(static_cast<long>(c.full.size())), m_(static_cast<long>(c.keep.size())) {
-    src_.resize(c.uv.size());
-    for (std::size_t i = 0; i < c.uv.size(); ++i) src_[i] = ps.point(c.uv[i]);
+  CurveView(const WorkCurve& c, const std::vector<Vec3>& src, const geo::PolarSphere& ps,
+            const DeviationOptions& opt)
+      : c_(c), ps_(ps), opt_(opt), n_(static_cast<long>(c.full.size())), m_(static_cast<long>(c.keep.size())),
+        src_(src) {
+    if (opt.bspline) {
+      // A piece has spans -1 to m-1; a periodic curve's span k is span k mod m.
+      const std::size_t count = static_cast<std::size_t>(c.periodic ? m_ : m_ + 1);
+      samples_.resize(count * (kSamples + 1));
+      sampled_.assign(count, 0);
+    }
   }
 
   // Control-polygon segments: s goes from keep[s] to keep[s + 1] (the last one of a
@@ -62,14 +129,15 @@ class CurveView {
   }
 
   // The curve near segment s as a polyline on the sphere: the spans that pass by it.
-  void curve_near(long s, std::vector<Vec3>& line) const { spans(s - 1, s + 1, s, line); }
+  void curve_near(long s, std::vector<Vec3>& line) { spans(s - 1, s + 1, s, line); }
   // The span that follows segment s, sampled.
-  void span(long s, std::vector<Vec3>& line) const { spans(s, s, s, line); }
+  void span(long s, std::vector<Vec3>& line) { spans(s, s, s, line); }
 
  private:
-  // Spans first..last sampled into one polyline (a piece has spans -1 to m-1); with
-  // straight segments, segment s itself.
-  void spans(long first, long last, long s, std::vector<Vec3>& line) const {
+  // Spans first..last sampled into one polyline (a piece has spans -1 to m-1; each span
+  // after the first adds its points after its start, which is the previous one's end);
+  // with straight segments, segment s itself.
+  void spans(long first, long last, long s, std::vector<Vec3>& line) {
     line.clear();
     if (!opt_.bspline) {
       line.push_back(ps_.point(control(s)));
@@ -77,7 +145,10 @@ class CurveView {
       return;
     }
     if (!c_.periodic) first = std::max(first, -1L), last = std::min(last, m_ - 1);
-    for (long k = first; k <= last; ++k) append_span(k, line);
+    for (long k = first; k <= last; ++k) {
+      const Vec3* p = sampled(k);
+      line.insert(line.end(), p + (line.empty() ? 0 : 1), p + kSamples + 1);
+    }
   }
   // Control point k: wrapped on a periodic curve; clamped on a piece, whose end points
   // count three times (the spans -1 and m-1 then end exactly on them).
@@ -85,24 +156,55 @@ class CurveView {
     const long i = c_.periodic ? ((k % m_) + m_) % m_ : std::clamp(k, 0L, m_ - 1);
     return c_.uv[c_.keep[static_cast<std::size_t>(i)]];
   }
-  void append_span(long k, std::vector<Vec3>& line) const {
-    const Vec2 a = control(k - 1), b = control(k), c = control(k + 1), d = control(k + 2);
-    for (int i = line.empty() ? 0 : 1; i <= kSamples; ++i) {
-      const double t = static_cast<double>(i) / kSamples, u = 1 - t;
-      const double wa = u * u * u, wb = 3 * t * t * t - 6 * t * t + 4, wc = -3 * t * t * t + 3 * t * t + 3 * t + 1,
-                   wd = t * t * t;
-      line.push_back(ps_.point((wa * a + wb * b + wc * c + wd * d) / 6.0));
+  // The kSamples + 1 points of span k (its control points k-1 to k+2).
+  const Vec3* sampled(long k) {
+    const std::size_t slot = static_cast<std::size_t>(c_.periodic ? ((k % m_) + m_) % m_ : k + 1);
+    Vec3* out = samples_.data() + slot * (kSamples + 1);
+    if (!sampled_[slot]) {
+      const Vec2 a = control(k - 1), b = control(k), c = control(k + 1), d = control(k + 2);
+      for (int i = 0; i <= kSamples; ++i) {
+        const double t = static_cast<double>(i) / kSamples, u = 1 - t;
+        const double wa = u * u * u, wb = 3 * t * t * t - 6 * t * t + 4, wc = -3 * t * t * t + 3 * t * t + 3 * t + 1,
+                     wd = t * t * t;
+        out[i] = ps_.point((wa * a + wb * b + wc * c + wd * d) / 6.0);
+      }
+      sampled_[slot] = 1;
     }
+    return out;
   }
 
   const WorkCurve& c_;
   const geo::PolarSphere& ps_;
   const DeviationOptions& opt_;
   long n_, m_;
-  std::vector<Vec3> src_;
+  const std::vector<Vec3>& src_;
+  std::vector<Vec3> samples_;
+  std::vector<char> sampled_;
 };
 
-// What one look at a curve found.
+// What the scan of one control-polygon segment found, kept until a point put back near it
+// changes its curve.
+struct SegmentResult {
+  double ratio = 0;   // the largest distance / bound of its source points
+  double max = 0;     // the largest distance of its source points
+  long max_at = -1;   // where (source index)
+  bool narrow = false;  // over the bound at a feature narrower than the accuracy
+  char event = 0;     // 'o': over the bound with no source point left; 'n': narrow
+  long event_at = -1;
+};
+
+// What the pass keeps of one curve between rounds: its source points on the sphere, each
+// segment's result and each source point's distance to the curve.
+struct CurveState {
+  std::vector<Vec3> src;
+  std::vector<SegmentResult> seg;
+  std::vector<double> dist;
+  std::vector<char> fresh;  // per control point: put back by the last change
+  bool stale = false;       // changed since its segments were scanned
+};
+
+// What one look at a curve found: the points to put back, and the figures over its
+// segments (aggregate below).
 struct CurveScan {
   std::vector<std::uint32_t> add;  // source points to put back
   std::vector<std::uint32_t> split;  // source segments (their first point) to split at the middle
@@ -115,8 +217,6 @@ struct CurveScan {
   double narrow_max = 0;  // the farthest source point of those
 };
 
-// Measures every segment of one curve; with `collect`, picks the point to put back on
-// each segment over the bound.
 // The angle (radians) at b between the directions to a and to c, in (u,v): the map is
 // conformal, so it is the angle on the sphere.
 double angle_at(Vec2 a, Vec2 b, Vec2 c) {
@@ -124,15 +224,25 @@ double angle_at(Vec2 a, Vec2 b, Vec2 c) {
   return std::atan2(std::abs(u.x * w.y - u.y * w.x), dot(u, w));
 }
 
-CurveScan scan_curve(const WorkCurve& c, const geo::PolarSphere& ps, const DeviationOptions& opt,
-                     std::vector<double>* distances, const std::vector<char>* fresh) {
+// Scans the segments of one curve (all of them, or with `fresh` those whose curve a point
+// put back last changed) into st.seg and st.dist, and picks the point to put back on each
+// segment over the bound.
+CurveScan scan_curve(const WorkCurve& c, const geo::PolarSphere& ps, const DeviationOptions& opt, CurveState& st,
+                     const std::vector<char>* fresh) {
   CurveScan out;
   if (c.keep.size() < 2 || c.open_boundary) return out;
-  const CurveView v(c, ps, opt);
+  if (st.src.size() != c.uv.size()) {
+    st.src.resize(c.uv.size());
+    for (std::size_t i = 0; i < c.uv.size(); ++i) st.src[i] = ps.point(c.uv[i]);
+  }
+  CurveView v(c, st.src, ps, opt);
   const long n = static_cast<long>(c.full.size());
   const long m = static_cast<long>(c.keep.size());
+  st.seg.resize(static_cast<std::size_t>(v.segments()));
+  st.dist.resize(c.full.size(), 0.0);
   const double min_angle = opt.min_angle_deg * geo::kDegToRad;
   const bool bounded = opt.fixed > 0 || opt.factor > 0;
+  const double margin = 1e-10 * opt.radius;   // the rounding of distances on this sphere
   // A segment's curve depends on the control points two before to three after it.
   auto touched = [&](long s) {
     for (long k = s - 2; k <= s + 3; ++k) {
@@ -173,26 +283,30 @@ CurveScan scan_curve(const WorkCurve& c, const geo::PolarSphere& ps, const Devia
   auto splittable = [&](long s, long a) {
     return allowed_between(s) && norm(v.source(a + 1) - v.source(a)) > 0.1 * v.bound(a);
   };
-  std::vector<Vec3> near, own, source_line;
+  std::vector<Vec3> points, own;
+  Polyline near, source_line;
   std::vector<std::pair<double, long>> candidates;
   for (long s = 0; s < v.segments(); ++s) {
     if (fresh && !touched(s)) continue;
+    SegmentResult& r = st.seg[static_cast<std::size_t>(s)];
+    r = SegmentResult{};
     const auto [a, b] = v.source_range(s);
-    v.curve_near(s, near);
-    double segment_ratio = 0, segment_max = 0;
-    long segment_max_at = -1;
+    v.curve_near(s, points);
+    near.assign(points, margin);
+    // The span of segment s itself comes after the span before it (a piece's first
+    // segment too: it has span -1).
+    const std::size_t own_first = opt.bspline ? static_cast<std::size_t>(kSamples) : 0;
     candidates.clear();
     // Source points to the curve.
     const bool last_point_too = !c.periodic && s + 1 == v.segments();
     for (long j = a; j < b || (j == b && last_point_too); ++j) {
-      const double d = polyline_distance(v.source(j), near);
-      const double r = d / v.bound(j);
-      if (distances) (*distances)[static_cast<std::size_t>(j % n)] = d;
-      if (d > segment_max) segment_max = d, segment_max_at = j % n;
-      segment_ratio = std::max(segment_ratio, r);
-      if (j > a && j < b) candidates.emplace_back(r, j);
+      const double d = near.distance(v.source(j), own_first);
+      const double q = d / v.bound(j);
+      st.dist[static_cast<std::size_t>(j % n)] = d;
+      if (d > r.max) r.max = d, r.max_at = j % n;
+      r.ratio = std::max(r.ratio, q);
+      if (j > a && j < b) candidates.emplace_back(q, j);
     }
-    out.max_ratio = std::max(out.max_ratio, segment_ratio);
     // The curve to the source points: the span that follows the segment against the
     // source polyline from the control point before it to the one after. Without a
     // bound (measuring only, the default) it decides nothing and is not computed.
@@ -210,24 +324,18 @@ CurveScan scan_curve(const WorkCurve& c, const geo::PolarSphere& ps, const Devia
       } else if (c.periodic) {
         to = v.source_range(0).second + n;
       }
-      source_line.clear();
-      for (long j = from; j <= to; ++j) source_line.push_back(v.source(j));
-      for (const Vec3& p : own) curve_ratio = std::max(curve_ratio, polyline_distance(p, source_line) / v.bound(a));
-    }
-    // A segment whose points would make a spike counts apart: a feature narrower than the
-    // accuracy, left out on purpose.
-    bool narrow = false;
-    auto account = [&] {
-      if (narrow) {
-        if (segment_max > out.narrow_max) out.narrow_max = segment_max;
-      } else if (segment_max > out.max) {
-        out.max = segment_max, out.max_at = segment_max_at;
+      points.clear();
+      for (long j = from; j <= to; ++j) points.push_back(v.source(j));
+      source_line.assign(points, margin);
+      // The i-th sample of the span lies, as a rule, nearest the source points that far
+      // along the segment.
+      for (std::size_t i = 0; i < own.size(); ++i) {
+        const long steps = static_cast<long>(std::max<std::size_t>(own.size() - 1, 1));
+        const long along = (a - from) + (b - a) * static_cast<long>(i) / steps;
+        curve_ratio = std::max(curve_ratio, source_line.distance(own[i], static_cast<std::size_t>(along)) / v.bound(a));
       }
-    };
-    if (segment_ratio <= 1 && curve_ratio <= 1) {
-      account();
-      continue;
     }
+    if (r.ratio <= 1 && curve_ratio <= 1) continue;
     // The farthest source point that makes no spike; a few tries, farthest first.
     std::sort(candidates.begin(), candidates.end(), [](const auto& x, const auto& y) {
       return x.first != y.first ? x.first > y.first : x.second < y.second;
@@ -237,36 +345,52 @@ CurveScan scan_curve(const WorkCurve& c, const geo::PolarSphere& ps, const Devia
       if (allowed(s, candidates[t].second)) pick = candidates[t].second;
     if (pick >= 0) {
       out.add.push_back(static_cast<std::uint32_t>(pick % n));
+    } else if (candidates.empty() && b == a + 1 && splittable(s, a)) {
+      // No source point left between the control points (a segment of the data longer
+      // than the accuracy, at a bend): the data's own segment is split at its middle, a
+      // point of the shoreline; the control points closing in on the bend bring the
+      // curve to it (the cut of a B-spline is a sixth of its second difference).
+      out.split.push_back(static_cast<std::uint32_t>(a % n));
+    } else if (candidates.empty() && !allowed_between(s)) {
+      // A spike of the data itself, narrower than the accuracy.
+      r.narrow = true, r.event = 'n', r.event_at = a % n;
+    } else if (candidates.empty()) {
+      r.event = 'o', r.event_at = a % n;
     } else {
-      if (candidates.empty() && b == a + 1 && splittable(s, a)) {
-        // No source point left between the control points (a segment of the data longer
-        // than the accuracy, at a bend): the data's own segment is split at its middle, a
-        // point of the shoreline; the control points closing in on the bend bring the
-        // curve to it (the cut of a B-spline is a sixth of its second difference).
-        out.split.push_back(static_cast<std::uint32_t>(a % n));
-      } else if (candidates.empty() && !allowed_between(s)) {
-        ++out.narrow;   // a spike of the data itself, narrower than the accuracy
-        narrow = true;
-        if (out.narrow_at < 0) out.narrow_at = a % n;
-      } else if (candidates.empty()) {
-        ++out.over;
-        if (out.over_at < 0) out.over_at = a % n;
-      } else {
-        ++out.narrow;
-        narrow = true;
-        if (out.narrow_at < 0) out.narrow_at = candidates.front().second % n;
-      }
+      // A feature narrower than the accuracy, left out on purpose.
+      r.narrow = true, r.event = 'n', r.event_at = candidates.front().second % n;
     }
-    account();
   }
   return out;
 }
 
+// The figures of one curve from its segments' results, in segment order (the first
+// segment reaching the largest distance names the place, the first of each kind of
+// segment left over the bound too).
+void aggregate(const CurveState& st, CurveScan& out) {
+  for (const SegmentResult& r : st.seg) {
+    out.max_ratio = std::max(out.max_ratio, r.ratio);
+    if (r.event == 'n') {
+      ++out.narrow;
+      if (out.narrow_at < 0) out.narrow_at = r.event_at;
+    } else if (r.event == 'o') {
+      ++out.over;
+      if (out.over_at < 0) out.over_at = r.event_at;
+    }
+    if (r.narrow) {
+      if (r.max > out.narrow_max) out.narrow_max = r.max;
+    } else if (r.max > out.max) {
+      out.max = r.max, out.max_at = r.max_at;
+    }
+  }
+}
+
 // Inserts the middle of each source segment `split` (by its first point; sorted below)
 // into the curve's points, renumbers `keep` and `add` (sorted) and adds the new points to
-// `add`: they become control points.
+// `add`: they become control points. The state's source points and distances follow
+// (a middle's distance is measured when its segments are scanned again).
 void split_segments(WorkCurve& c, std::vector<std::uint32_t>& split, const geo::PolarSphere& ps,
-                    std::vector<std::uint32_t>& keep, std::vector<std::uint32_t>& add) {
+                    std::vector<std::uint32_t>& keep, std::vector<std::uint32_t>& add, CurveState& st) {
   std::sort(split.begin(), split.end());
   split.erase(std::unique(split.begin(), split.end()), split.end());
   const std::size_t n = c.full.size();
@@ -274,15 +398,21 @@ void split_segments(WorkCurve& c, std::vector<std::uint32_t>& split, const geo::
   std::vector<geo::LonLat> full;
   std::vector<Vec2> uv;
   std::vector<double> gamma;
+  std::vector<Vec3> src;
+  std::vector<double> dist;
   full.reserve(n + split.size());
   uv.reserve(n + split.size());
   gamma.reserve(n + split.size());
+  src.reserve(n + split.size());
+  dist.reserve(n + split.size());
   std::vector<std::uint32_t> mids;
   for (std::size_t j = 0, k = 0; j < n; ++j) {
     new_index[j] = static_cast<std::uint32_t>(full.size());
     full.push_back(c.full[j]);
     uv.push_back(c.uv[j]);
     gamma.push_back(c.gamma[j]);
+    src.push_back(st.src[j]);
+    dist.push_back(st.dist[j]);
     if (k < split.size() && split[k] == j) {
       const std::size_t e = (j + 1) % n;   // a periodic curve's last segment closes on 0
       const Vec2 mid = 0.5 * (c.uv[j] + c.uv[e]);
@@ -290,12 +420,20 @@ void split_segments(WorkCurve& c, std::vector<std::uint32_t>& split, const geo::
       full.push_back(ps.lonlat_from_param(mid));
       uv.push_back(mid);
       gamma.push_back(std::min(c.gamma[j], c.gamma[e]));
+      src.push_back(ps.point(mid));
+      dist.push_back(0.0);
       ++k;
     }
   }
   c.full = std::move(full);
   c.uv = std::move(uv);
   c.gamma = std::move(gamma);
+  st.src = std::move(src);
+  st.dist = std::move(dist);
+  for (SegmentResult& r : st.seg) {
+    if (r.max_at >= 0) r.max_at = new_index[static_cast<std::size_t>(r.max_at)];
+    if (r.event_at >= 0) r.event_at = new_index[static_cast<std::size_t>(r.event_at)];
+  }
   for (std::uint32_t& k : keep) k = new_index[k];
   for (std::uint32_t& k : add) k = new_index[k];
   std::vector<std::uint32_t> all;
@@ -303,12 +441,52 @@ void split_segments(WorkCurve& c, std::vector<std::uint32_t>& split, const geo::
   add = std::move(all);
 }
 
+// Puts the scan's points back into curve i's control points; the segments between old
+// control points keep their results under their new numbers (those near a new point are
+// scanned again next).
+std::size_t put_back(WorkCurve& curve, CurveScan& s, CurveState& st, const geo::PolarSphere& ps,
+                     std::size_t& segments_split) {
+  std::vector<std::uint32_t>& keep = curve.keep;
+  std::sort(s.add.begin(), s.add.end());
+  if (!s.split.empty()) {
+    split_segments(curve, s.split, ps, keep, s.add, st);
+    segments_split += s.split.size();
+  }
+  std::vector<std::uint32_t> merged;
+  merged.reserve(keep.size() + s.add.size());
+  std::merge(keep.begin(), keep.end(), s.add.begin(), s.add.end(), std::back_inserter(merged));
+  merged.erase(std::unique(merged.begin(), merged.end()), merged.end());
+  st.fresh.assign(merged.size(), 0);
+  for (std::size_t k = 0, a = 0; k < merged.size(); ++k) {  // which control points are new
+    while (a < s.add.size() && s.add[a] < merged[k]) ++a;
+    if (a < s.add.size() && s.add[a] == merged[k]) st.fresh[k] = 1;
+  }
+  // Segment k starts at control point k: an old one's segment was old - (new ones before).
+  const std::size_t segments = curve.periodic ? merged.size() : merged.size() - 1;
+  std::vector<SegmentResult> seg(segments);
+  for (std::size_t k = 0, added = 0; k < segments; ++k) {
+    if (st.fresh[k]) {
+      ++added;
+      continue;
+    }
+    const std::size_t old = k - added;
+    if (old < st.seg.size()) seg[k] = st.seg[old];
+  }
+  st.seg = std::move(seg);
+  st.stale = true;
+  const std::size_t added = merged.size() - keep.size();
+  keep = std::move(merged);
+  return added;
+}
+
 }  // namespace
 
 std::vector<double> source_distances(const WorkCurve& c, const DeviationOptions& opt) {
   const geo::PolarSphere ps({0, 0, 0}, opt.radius);
+  CurveState st;
+  scan_curve(c, ps, opt, st, nullptr);
   std::vector<double> d(c.full.size(), 0.0);
-  scan_curve(c, ps, opt, &d, nullptr);
+  if (!st.dist.empty()) d = st.dist;
   return d;
 }
 
@@ -317,16 +495,23 @@ DeviationReport bound_deviation(std::vector<WorkCurve>& curves, const DeviationO
   const geo::PolarSphere ps({0, 0, 0}, opt.radius);
   const int threads = resolve_thread_count(opt.threads);
   std::vector<CurveScan> scans(curves.size());
+  std::vector<CurveState> states(curves.size());
   std::vector<char> active(curves.size(), 1), changed(curves.size(), 0);
-  std::vector<std::vector<char>> fresh(curves.size());  // per control point: put back last round
   const int rounds = opt.fixed > 0 || opt.factor > 0 ? opt.max_rounds : 0;
   for (int round = 0; round < rounds; ++round) {
     parallel_for_chunks(threads, curves.size(), 64, [&](std::size_t b, std::size_t e) {
-      for (std::size_t i = b; i < e; ++i)
-        if (active[i]) scans[i] = scan_curve(curves[i], ps, opt, nullptr, round == 0 ? nullptr : &fresh[i]);
+      for (std::size_t i = b; i < e; ++i) {
+        if (!active[i]) continue;
+        scans[i] = scan_curve(curves[i], ps, opt, states[i], round == 0 ? nullptr : &states[i].fresh);
+        states[i].stale = false;
+      }
     });
     if (round == 0)
-      for (const CurveScan& s : scans) rep.max_before = std::max({rep.max_before, s.max, s.narrow_max});
+      for (std::size_t i = 0; i < curves.size(); ++i) {
+        CurveScan figures;
+        aggregate(states[i], figures);
+        rep.max_before = std::max({rep.max_before, figures.max, figures.narrow_max});
+      }
     bool any = false;
     for (std::size_t i = 0; i < curves.size(); ++i) {
       if (!active[i]) continue;
@@ -335,43 +520,36 @@ DeviationReport bound_deviation(std::vector<WorkCurve>& curves, const DeviationO
         active[i] = 0;
         continue;
       }
-      std::vector<std::uint32_t>& keep = curves[i].keep;
-      std::sort(s.add.begin(), s.add.end());
-      if (!s.split.empty()) {
-        split_segments(curves[i], s.split, ps, keep, s.add);
-        rep.segments_split += s.split.size();
-      }
-      std::vector<std::uint32_t> merged;
-      merged.reserve(keep.size() + s.add.size());
-      std::merge(keep.begin(), keep.end(), s.add.begin(), s.add.end(), std::back_inserter(merged));
-      merged.erase(std::unique(merged.begin(), merged.end()), merged.end());
-      fresh[i].assign(merged.size(), 0);
-      for (std::size_t k = 0, a = 0; k < merged.size(); ++k) {  // which control points are new
-        while (a < s.add.size() && s.add[a] < merged[k]) ++a;
-        if (a < s.add.size() && s.add[a] == merged[k]) fresh[i][k] = 1;
-      }
-      rep.points_added += merged.size() - keep.size();
-      keep = std::move(merged);
+      rep.points_added += put_back(curves[i], s, states[i], ps, rep.segments_split);
       changed[i] = 1;
       any = true;
     }
     rep.rounds = round + 1;
     if (!any) break;
   }
-  // The final figures over every curve.
-  std::vector<std::vector<double>> dist(curves.size());
+  // The final figures over every curve: from the segments' results, after scanning those
+  // the last round's points changed (when the rounds ran out), or every segment once when
+  // there is no bound (measured only).
   parallel_for_chunks(threads, curves.size(), 64, [&](std::size_t b, std::size_t e) {
     for (std::size_t i = b; i < e; ++i) {
-      if (curves[i].open_boundary || curves[i].keep.size() < 2) continue;
-      dist[i].assign(curves[i].full.size(), 0.0);
-      scans[i] = scan_curve(curves[i], ps, opt, &dist[i], nullptr);
+      CurveState& st = states[i];
+      if (curves[i].open_boundary || curves[i].keep.size() < 2) {
+        st = CurveState{};
+        continue;
+      }
+      if (rounds == 0) {
+        scan_curve(curves[i], ps, opt, st, nullptr);
+      } else if (st.stale) {
+        scan_curve(curves[i], ps, opt, st, &st.fresh);
+        st.stale = false;
+      }
     }
   });
   std::vector<double> all;
-  if (rep.rounds == 0)  // no bound: measured only
-    for (const CurveScan& s : scans) rep.max_before = std::max({rep.max_before, s.max, s.narrow_max});
   for (std::size_t i = 0; i < curves.size(); ++i) {
-    const CurveScan& s = scans[i];
+    CurveScan s;
+    aggregate(states[i], s);
+    if (rounds == 0) rep.max_before = std::max({rep.max_before, s.max, s.narrow_max});  // no bound: measured only
     rep.curves_changed += changed[i] ? 1 : 0;
     if (s.max > rep.max) rep.max = s.max, rep.where = curves[i].full[static_cast<std::size_t>(s.max_at)];
     rep.max_ratio = std::max(rep.max_ratio, s.max_ratio);
@@ -381,7 +559,7 @@ DeviationReport bound_deviation(std::vector<WorkCurve>& curves, const DeviationO
       rep.where_narrow = curves[i].full[static_cast<std::size_t>(s.narrow_at)];
     rep.narrow_features += s.narrow;
     rep.narrow_max = std::max(rep.narrow_max, s.narrow_max);
-    all.insert(all.end(), dist[i].begin(), dist[i].end());
+    all.insert(all.end(), states[i].dist.begin(), states[i].dist.end());
   }
   if (!all.empty()) {
     const std::size_t k = std::min(all.size() - 1, static_cast<std::size_t>(0.95 * static_cast<double>(all.size())));

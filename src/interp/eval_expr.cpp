@@ -227,6 +227,24 @@ Value Interpreter::eval_whole(const Expr& e, const Name& n) {
 }
 
 Value Interpreter::eval_index(const Expr& e, const Name& n, ExprId index) {
+  // An index that is a number or a variable changes nothing when evaluated, so the list
+  // is read in place: a copy of it per element read makes a script's loop over a list of
+  // n points (the stdlib's over the shore points, ocean_fields.geo) take n^2 time. Any
+  // other index may change the list (`a[a[0]++]`): it is read from a copy taken before.
+  const auto& ix = ast_.expr(index).node;
+  if (std::holds_alternative<NumberExpr>(ix) || std::holds_alternative<VarExpr>(ix) ||
+      std::holds_alternative<ConstantExpr>(ix)) {
+    const std::string name = resolve_name(n);
+    const NumSymbol* sym = symbols_.find_num(name);
+    const std::vector<std::string>* strs = sym ? nullptr : symbols_.find_str(name);
+    if (!sym && !strs) fail_fmt(e.range, Diag::UnknownVariable, name, unknown_name_hint(name));
+    const long long i = to_int(eval_number(index), ast_.expr(index).range);
+    const std::size_t size = sym ? sym->values.size() : strs->size();
+    if (i < 0 || static_cast<std::size_t>(i) >= size)
+      fail_fmt(ast_.expr(index).range, Diag::IndexOutOfRange, i, name, size);
+    if (sym) return Value::number(sym->values[static_cast<std::size_t>(i)]);
+    return Value::string((*strs)[static_cast<std::size_t>(i)]);
+  }
   const Value whole = eval_whole(e, n);
   const long long i = to_int(eval_number(index), ast_.expr(index).range);
   const std::size_t size = whole.is_numeric() ? whole.nums().size() : whole.strs().size();

@@ -162,3 +162,37 @@ TEST_CASE("deviation: a bend of the data with no point left between its control 
   }
   CHECK(max_of(source_distances(out, opt)) <= 10e3);
 }
+
+TEST_CASE("deviation: the figures kept from the rounds are those of a fresh scan of every curve") {
+  // The pass reads its final figures from each segment's result kept since it was last
+  // scanned (coast/deviation.cpp); a fresh scan of the curves as they end up must give
+  // the same numbers to the last bit: after all the rounds, after rounds cut short (the
+  // segments near the last points put back scanned at the end), on closed curves and on a
+  // piece.
+  std::vector<WorkCurve> base;
+  for (int i = 0; i < 5; ++i) base.push_back(curve_of(island_with_headland(20e3 + 15e3 * i, 30e3 + 5e3 * i), 25e3, 11 + 2 * i));
+  WorkCurve piece = curve_of(island_with_headland(50e3, 45e3), 25e3, 14);
+  piece.periodic = false;
+  if (piece.keep.back() != piece.full.size() - 1) piece.keep.push_back(static_cast<std::uint32_t>(piece.full.size() - 1));
+  base.push_back(piece);
+  for (const int rounds : {1, 2, 32}) {
+    CAPTURE(rounds);
+    std::vector<WorkCurve> curves = base;
+    DeviationOptions opt;
+    opt.radius = kR;
+    opt.max_rounds = rounds;
+    const DeviationReport rep = bound_deviation(curves, opt);
+    CHECK(rep.points_added > 0);
+    std::vector<double> all;
+    double max = 0;
+    for (const WorkCurve& c : curves) {
+      const std::vector<double> d = source_distances(c, opt);
+      all.insert(all.end(), d.begin(), d.end());
+      max = std::max(max, max_of(d));
+    }
+    const std::size_t k = std::min(all.size() - 1, static_cast<std::size_t>(0.95 * static_cast<double>(all.size())));
+    std::nth_element(all.begin(), all.begin() + static_cast<long>(k), all.end());
+    CHECK(rep.p95 == all[k]);
+    if (rep.narrow_features == 0) CHECK(rep.max == max);
+  }
+}
