@@ -101,7 +101,9 @@ bool cut_ring(const Ring& r, std::size_t ri, const LonLatBox& box, bool keep_ins
       else add(b, -1);
     } else {
       if (!meets) {
-        add(p, -1);
+        // A chain that starts here at a vertex on the box's edge (the ring came out of
+        // the box through it) starts on the perimeter: its end takes part in the linking.
+        add(p, strictly_outside(p, box) ? -1 : box_param(p, box));
         add(q, -1);
         continue;
       }

@@ -98,3 +98,25 @@ TEST_CASE("patch: errors") {
     CHECK(total == doctest::Approx(80 + 1));   // the square less the strip, and the island
   }
 }
+
+TEST_CASE("patch: a base ring leaving the box through a vertex on its edge") {
+  // Base: land [0,10]^2 with vertices exactly on the box's west edge x = 4 (the data's
+  // round coordinates: GSHHG holds vertices on whole degrees). The ring comes out of the
+  // box through (4, 10) and back in through (4, 0): the outside chain must start and end
+  // on the perimeter there, or the linking sees two chains leave in a row.
+  Ring base_ring;
+  base_ring.pts = {{0, 0}, {4, 0}, {10, 0}, {10, 10}, {4, 10}, {0, 10}};
+  std::vector<Ring> base{base_ring};
+  std::vector<Ring> local{patch_square(3, 7, -2, 4.5), patch_square(3, 7, 5.5, 12)};
+  orient_rings(base);
+  orient_rings(local);
+  // The same splice as the channel case, its box's west edge through the base's vertices.
+  PatchReport rep;
+  auto out = splice_patch(base, local, LonLatBox{4, 6, -1, 11}, 6371e3, &rep);
+  REQUIRE(out.ok());
+  REQUIRE(out->size() == 2);
+  double outer = 0, hole = 0;
+  for (const Ring& r : *out) (patch_signed_area(r) > 0 ? outer : hole) = patch_signed_area(r);
+  CHECK(outer == doctest::Approx(104));
+  CHECK(hole == doctest::Approx(-2));
+}
