@@ -211,14 +211,7 @@ void enforce_min_time_step(Interpreter& in, ModelMesh& mesh, const field::SizeFi
 }
 
 TimeStep time_step_of(Interpreter& in, const ModelMesh& mesh, const std::vector<double>& h) {
-  TimeStepOptions opt;
-  opt.min_depth = in.options().number("Mesh.TimeStepMinDepth");
-  for (const auto& [tag, g] : in.kernel().model.geometries()) {
-    opt.centre = g.centre();
-    opt.radius = g.radius();
-    break;
-  }
-  return courant_time_step(mesh, h, opt);
+  return courant_time_step(mesh, h, time_step_options(in));
 }
 
 // One line on what the depth field's MinDepth did to the nodes, at the field's definition

@@ -35,6 +35,16 @@ bool patch_has_point(const std::vector<Ring>& rings, geo::LonLat p) {
   return false;
 }
 
+// The channel case's splice over `base`: the box is the strip x in [4,6], y in [-1,11];
+// the local source, two blocks leaving the channel y in (4.5, 5.5) open and reaching past
+// [0,10]^2 at the top and bottom.
+auto splice_channel(std::vector<Ring> base, PatchReport& rep) {
+  std::vector<Ring> local{patch_square(3, 7, -2, 4.5), patch_square(3, 7, 5.5, 12)};
+  orient_rings(base);
+  orient_rings(local);
+  return splice_patch(base, local, LonLatBox{4, 6, -1, 11}, 6371e3, &rep);
+}
+
 }  // namespace
 
 TEST_CASE("patch: a channel cut through the base land inside the box") {
@@ -42,12 +52,8 @@ TEST_CASE("patch: a channel cut through the base land inside the box") {
   // blocks leaving the channel y in (4.5, 5.5) open and reaching past the base at the
   // top and bottom. Land = base outside the strip U local inside it: an outer ring of
   // 100 + 2 + 2 (the two bumps of the strip past the square) and the channel, a hole of 2.
-  std::vector<Ring> base{patch_square(0, 10, 0, 10)};
-  std::vector<Ring> local{patch_square(3, 7, -2, 4.5), patch_square(3, 7, 5.5, 12)};
-  orient_rings(base);
-  orient_rings(local);
   PatchReport rep;
-  auto out = splice_patch(base, local, LonLatBox{4, 6, -1, 11}, 6371e3, &rep);
+  auto out = splice_channel({patch_square(0, 10, 0, 10)}, rep);
   REQUIRE(out.ok());
   REQUIRE(out->size() == 2);
   double total = 0, outer = 0, hole = 0;
@@ -104,15 +110,11 @@ TEST_CASE("patch: a base ring leaving the box through a vertex on its edge") {
   // round coordinates: GSHHG holds vertices on whole degrees). The ring comes out of the
   // box through (4, 10) and back in through (4, 0): the outside chain must start and end
   // on the perimeter there, or the linking sees two chains leave in a row.
+  // The same splice as the channel case, its box's west edge through the base's vertices.
   Ring base_ring;
   base_ring.pts = {{0, 0}, {4, 0}, {10, 0}, {10, 10}, {4, 10}, {0, 10}};
-  std::vector<Ring> base{base_ring};
-  std::vector<Ring> local{patch_square(3, 7, -2, 4.5), patch_square(3, 7, 5.5, 12)};
-  orient_rings(base);
-  orient_rings(local);
-  // The same splice as the channel case, its box's west edge through the base's vertices.
   PatchReport rep;
-  auto out = splice_patch(base, local, LonLatBox{4, 6, -1, 11}, 6371e3, &rep);
+  auto out = splice_channel({base_ring}, rep);
   REQUIRE(out.ok());
   REQUIRE(out->size() == 2);
   double outer = 0, hole = 0;
