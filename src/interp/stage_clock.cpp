@@ -1,6 +1,8 @@
 // The run's stage account (see stage_clock.h).
 #include "interp/stage_clock.h"
 
+#include <time.h>
+
 #include <algorithm>
 
 #include <fmt/format.h>
@@ -13,17 +15,29 @@ double steady_seconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
+double process_cpu_seconds() {
+  timespec t{};
+  if (clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t) != 0) return 0;
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 }  // namespace
 
-StageClock::StageClock(std::string base, Clock now) : now_(now ? std::move(now) : Clock(steady_seconds)) {
+StageClock::StageClock(std::string base, Clock now, Clock cpu)
+    : now_(now ? std::move(now) : Clock(steady_seconds)), cpu_(cpu ? std::move(cpu) : Clock(process_cpu_seconds)) {
   started_ = last_ = now_();
+  last_cpu_ = cpu_();
   times_.push_back({std::move(base), 0});
+  cpu_times_.push_back(0);
   open_.push_back(0);
 }
 
 void StageClock::charge(double now) {
   times_[open_.back()].seconds += now - last_;
   last_ = now;
+  const double cpu = cpu_();
+  cpu_times_[open_.back()] += cpu - last_cpu_;
+  last_cpu_ = cpu;
 }
 
 void StageClock::begin(std::string_view name, std::uint64_t) {
@@ -35,6 +49,7 @@ void StageClock::begin(std::string_view name, std::uint64_t) {
     open_.push_back(static_cast<std::size_t>(it - times_.begin()));
   } else {
     times_.push_back({std::string(name), 0});
+    cpu_times_.push_back(0);
     open_.push_back(times_.size() - 1);
   }
 }
@@ -48,6 +63,14 @@ void StageClock::end() {
 std::vector<StageTime> StageClock::stages() const {
   std::vector<StageTime> out = times_;
   out[open_.back()].seconds += now_() - last_;
+  return out;
+}
+
+std::vector<StageTime> StageClock::cpu_stages() const {
+  std::vector<StageTime> out;
+  out.reserve(times_.size());
+  for (std::size_t i = 0; i < times_.size(); ++i) out.push_back({times_[i].name, cpu_times_[i]});
+  out[open_.back()].seconds += cpu_() - last_cpu_;
   return out;
 }
 

@@ -272,7 +272,15 @@ std::string stats_json(const MeshStats& s) {
   out += ", \"stages\": {";
   for (std::size_t i = 0; i < s.stages.size(); ++i)
     out += fmt::format("{}{}: {}", i ? ", " : "", json_string(s.stages[i].name), json_number(s.stages[i].seconds));
-  out += "}}\n";
+  out += "}";
+  if (!s.stages_cpu.empty()) {
+    out += ", \"stages_cpu\": {";
+    for (std::size_t i = 0; i < s.stages_cpu.size(); ++i)
+      out += fmt::format("{}{}: {}", i ? ", " : "", json_string(s.stages_cpu[i].name),
+                         json_number(s.stages_cpu[i].seconds));
+    out += "}";
+  }
+  out += "}\n";
   return out;
 }
 

@@ -35,7 +35,8 @@ struct MeshStats {
   bool has_sizes = false;                              // the length ratios below are set
   double len_median = 0, len_p05 = 0, len_p95 = 0;     // edge length / target size
   double share_len_07_14 = 0;                          // share of edges with ratio in [0.7, 1.4]
-  std::vector<StageTime> stages;                       // filled by the caller
+  std::vector<StageTime> stages;                       // filled by the caller: wall seconds
+  std::vector<StageTime> stages_cpu;                   // and CPU seconds (the run's own stages only)
   TimeStep time_step;                                  // with Mesh.DepthField: set by the caller
   // With a Bathymetry depth field as Mesh.DepthField, set by the caller: the nodes MinDepth raised.
   bool has_depth_clamp = false;

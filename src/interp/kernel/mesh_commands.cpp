@@ -710,6 +710,7 @@ std::string finish_run(Interpreter& in, bool print_time) {
   if (!k.has_mesh_stats) return {};
   MeshStats st = k.mesh_stats;
   st.stages = stages;
+  st.stages_cpu = fold_small_stages(k.clock.cpu_stages(), "field ", kMinFieldSeconds, "fields");
   return stats_json(st);
 }
 

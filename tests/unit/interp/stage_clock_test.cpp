@@ -124,3 +124,18 @@ TEST_CASE("stage clock: a meshing run's account names every stage and adds up to
   CHECK(json.find("\"writing\": ") != std::string::npos);
   fs::remove_all(dir);
 }
+
+TEST_CASE("stage clock: the CPU account charges the same stages with the CPU clock's seconds") {
+  double now = 0, cpu = 100;
+  StageClock c("script", [&] { return now; }, [&] { return cpu; });
+  now = 1, cpu = 100.5;        // script: 1 s wall, 0.5 s CPU
+  c.begin("2D", 0);
+  now = 2, cpu = 102.5;        // 2D: 1 s wall, 2 s CPU (two threads)
+  c.end();
+  now = 4, cpu = 103;          // script again: the open base is charged up to now
+  const std::vector<StageTime> wall = c.stages(), used = c.cpu_stages();
+  CHECK(stage_names(used) == stage_names(wall));
+  CHECK(stage_seconds(wall, "2D") == doctest::Approx(1));
+  CHECK(stage_seconds(used, "2D") == doctest::Approx(2));
+  CHECK(stage_seconds(used, "script") == doctest::Approx(1));
+}
