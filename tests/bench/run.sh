@@ -3,8 +3,9 @@
 # written to docs/benchmarks.md. Not part of the test suite: it takes a few minutes.
 #
 #   tests/bench/run.sh [BUILD_DIR]      (default: build; needs the bench_* programs built)
-#   tests/bench/run.sh --scale [BUILD_DIR] [THREADS]   (the full GSHHG: tests/bench/scale.sh,
-#                                                     then each stage: scale_stages.sh)
+#   tests/bench/run.sh --scale [BUILD_DIR]   (the full GSHHG: tests/bench/scale.sh measures into
+#                                           docs/bench/scale.json, tests/bench/scale_docs.py writes
+#                                           the docs from it)
 #
 # What it runs, each case through both command lines on the same .geo, one thread
 # (`stereomesh -2 -nt 1 -algo A X.geo` and `gmsh -2 -nt 1 -algo A X.geo`), timed and its peak
@@ -26,14 +27,13 @@
 # beside the checkout (it stops with a message otherwise).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-# --scale: the full GSHHG at 30, 10 and 3 km instead of the side-by-side run: the import
-# step by step and the whole runs (tests/bench/scale.sh), then every stage of the runs'
-# time account (tests/bench/scale_stages.sh, on the same system file).
+# --scale: the full GSHHG at 30, 10 and 3 km and the default example instead of the
+# side-by-side run, measured once (tests/bench/scale.sh), then every doc that quotes those
+# figures written from that one measurement (tests/bench/scale_docs.py).
 if [[ ${1:-} == --scale ]]; then
   shift
   "$here/scale.sh" "$@"
-  scale_build="$(cd "${1:-$here/../../build}" && pwd)"
-  exec "$here/scale_stages.sh" "$scale_build"
+  exec python3 "$here/scale_docs.py" --write
 fi
 root="$(cd "$here/../.." && pwd)"
 build="$(cd "${1:-$root/build}" && pwd)"
