@@ -220,6 +220,8 @@ std::span<const CoastOptionSpec> coast_options() { return kOptions; }
 
 const CoastOptionSpec& coast_option(CoastOpt o) { return kOptions[static_cast<std::size_t>(o)]; }
 
+std::string_view coast_option_name(CoastOpt o) { return coast_option(o).name; }
+
 const CoastOptionSpec* find_coast_option(std::string_view name) {
   for (const CoastOptionSpec& o : kOptions)
     if (o.name == name) return &o;

@@ -11,6 +11,7 @@
 #include <string>
 #include <string_view>
 
+#include "coast/coastline_option_id.h"
 #include "coast/import.h"
 #include "coast/read_loops2.h"
 
@@ -27,12 +28,6 @@ struct CoastlineSettings {
   std::string patch_file;              ///< read by the caller into import.patch
   Loops2Options loops2;
   ImportOptions import;
-};
-
-enum class CoastOpt : std::size_t {
-#define SM_COAST_OPTION(name, ...) name,
-#include "coast/coastline_options.def"
-#undef SM_COAST_OPTION
 };
 
 enum class CoastOptionType { Number, Flag, String, Path, List };
@@ -61,8 +56,6 @@ struct CoastOptionSpec {
 /// Every option, in the table's order.
 std::span<const CoastOptionSpec> coast_options();
 const CoastOptionSpec& coast_option(CoastOpt o);
-/// The name the script spells, for messages and the interpreter's records.
-inline std::string_view coast_option_name(CoastOpt o) { return coast_option(o).name; }
 /// Exact (case-sensitive) lookup; nullptr if unknown.
 const CoastOptionSpec* find_coast_option(std::string_view name);
 /// Why `v` is not a value of `o`'s type or passes not its check ("takes one number, not a

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "coast/coastline_option_id.h"
 #include "coast/deviation.h"
 #include "coast/passages.h"
 #include "coast/region_polygon.h"
@@ -326,7 +327,7 @@ Result<std::vector<char>> seas_at(const std::vector<geo::LonLat>& points, const 
       if (which.empty()) which = "no sea (it is on land or outside the water the import kept)";
     }
     CoastError e{"", -1, fmt::format("the SeaAt point (lon {:.6f}, lat {:.6f}) lies in {}", pt.lon, pt.lat, which), pt};
-    e.option = "SeaAt";
+    e.option = coast_option_string(CoastOpt::SeaAt);
     return e;
   }
   return kept;
