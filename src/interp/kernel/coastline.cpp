@@ -657,9 +657,9 @@ Value eval_coastline_query(Interpreter& in, ExprId e) {
       for (std::string_view s : kSelectors) known = known || s == what, names.emplace_back(s);
       if (!known || v.strs().size() != 1)
         in.fail_fmt(r, Diag::UnknownCoastlineOption,
-                    fmt::format("Coastline{{}} cannot return \"{}\"{}; it returns {}", what, did_you_mean(what, names),
-                                "Loops, Curves, OpenCurves, Points, CoastPoints, ControlPoints, Outer, LoopsPerSurface, CoastCurves, "
-                                "Surfaces, Closures, DroppedSeas, Straits or Deviation"));
+                    fmt::format("Coastline{{}} cannot return \"{}\"{}; it returns {} or {}", what, did_you_mean(what, names),
+                                fmt::join(std::begin(kSelectors), std::end(kSelectors) - 1, ", "),
+                                std::end(kSelectors)[-1]));
       continue;
     }
     for (double d : v.nums()) {
