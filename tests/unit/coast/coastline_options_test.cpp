@@ -24,7 +24,8 @@ namespace {
 // tests/scripts or in a script a unit test runs.
 std::set<std::string> options_set_by_tests() {
   std::set<std::string> found;
-  const std::regex set_re(R"(\]\.([A-Za-z]+)\s*=[^=])");
+  // Coastline[...] only: Field[1].FileName or Field[1].Resolution set a field's option.
+  const std::regex set_re(R"(Coastline\[[^\]]*\]\.([A-Za-z]+)\s*=[^=])");
   for (const char* dir : {"/tests/scripts", "/tests/unit"}) {
     for (const auto& e : std::filesystem::recursive_directory_iterator(std::string(SM_SOURCE_DIR) + dir)) {
       const std::string ext = e.path().extension().string();
