@@ -136,8 +136,8 @@ Result<GshhsPluginResult> run_gshhs_plugin(const GshhsPluginOptions& opt) {
   ImportOptions io;
   io.radius = opt.radius;
   io.gamma = positive;
-  io.strait_factor = opt.min_straits_factor > 0 ? opt.min_straits_factor : 1.0;
-  io.close_straits = opt.min_straits_factor > 0;
+  io.repair.strait_factor = opt.min_straits_factor > 0 ? opt.min_straits_factor : 1.0;
+  io.repair.close_straits = opt.min_straits_factor > 0;
   GshhsPluginResult res;
   {
     // Levels first (as the import would), then loops with negative values are cut.

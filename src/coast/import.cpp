@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "coast/coastline_option_id.h"
 #include "coast/deviation.h"
 #include "coast/passages.h"
 #include "coast/region_polygon.h"
@@ -74,6 +75,29 @@ std::string figure_of(const RepairEntry& e) {
     case RepairKind::SplineHull: return fmt::format("{} point{}", e.value, e.value == 1 ? "" : "s");
     default: return {};
   }
+}
+
+// Each step's options as the import holds them, with the context every step shares (the
+// sphere's radius, the threads, gamma) taken from the import: set once, in ImportOptions.
+CoarsenOptions in_context(CoarsenOptions o, const ImportOptions& opt) {
+  o.gamma = opt.gamma;
+  o.radius = opt.radius;
+  o.threads = opt.threads;
+  return o;
+}
+DeviationOptions in_context(DeviationOptions o, const ImportOptions& opt) {
+  o.radius = opt.radius;
+  o.threads = opt.threads;
+  return o;
+}
+RepairOptions in_context(RepairOptions o, const ImportOptions& opt) {
+  o.radius = opt.radius;
+  return o;
+}
+PassageOptions in_context(PassageOptions o, const ImportOptions& opt) {
+  o.radius = opt.radius;
+  o.width_at = nullptr;   // the import's own, from min_time_step
+  return o;
 }
 
 // A Region polygon's edge that grazes the shore crosses a cove or a bay's mouth for a few
@@ -303,7 +327,7 @@ Result<std::vector<char>> seas_at(const std::vector<geo::LonLat>& points, const 
       if (which.empty()) which = "no sea (it is on land or outside the water the import kept)";
     }
     CoastError e{"", -1, fmt::format("the SeaAt point (lon {:.6f}, lat {:.6f}) lies in {}", pt.lon, pt.lat, which), pt};
-    e.option = "SeaAt";
+    e.option = coast_option_string(CoastOpt::SeaAt);
     return e;
   }
   return kept;
@@ -452,12 +476,7 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
   step_done();
 
   // 4. Coarsening (a closed region box that is a single curve may not be dropped).
-  CoarsenOptions co;
-  co.gamma = opt.gamma;
-  co.radius = opt.radius;
-  co.min_area_km2 = opt.min_area_km2;
-  co.min_points = opt.min_points;
-  co.threads = opt.threads;
+  const CoarsenOptions co = in_context(opt.coarsen, opt);
   const std::size_t n_whole = piece_span.empty() ? to_coarsen.size() : piece_span.front().first;
   std::vector<Ring> whole(std::make_move_iterator(to_coarsen.begin()),
                           std::make_move_iterator(to_coarsen.begin() + static_cast<long>(n_whole)));
@@ -521,22 +540,11 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
   // The curves back within the bound of their source points (before the repair, which
   // then sees the curves as they will be drawn).
   {
-    DeviationOptions dev;
-    dev.radius = opt.radius;
-    dev.factor = opt.deviation_factor;
-    dev.fixed = opt.max_deviation;
-    dev.bspline = opt.bspline_curves;
-    dev.threads = opt.threads;
-    rep.deviation = bound_deviation(curves, dev);
+    rep.deviation = bound_deviation(curves, in_context(opt.deviation, opt));
   }
 
   // 6. Repair.
-  RepairOptions ro;
-  ro.max_rounds = opt.max_repair_rounds;
-  ro.radius = opt.radius;
-  ro.strait_factor = opt.strait_factor;
-  ro.close_straits = opt.close_straits;
-  ro.check_splines = opt.check_splines;
+  const RepairOptions ro = in_context(opt.repair, opt);
   // One repair pass over the loops, its rounds counted; errors name the shoreline file.
   auto repair = [&]() -> std::optional<CoastError> {
     auto rounds = repair_loops(curves, loops, ro, rep.repair);
@@ -554,7 +562,7 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
   if (!region_empty) handle_straits(curves, loops, ro, rep.repair);
   // A merge across a strait adds two bridge edges, checked against the polygons only: the
   // curves through them are checked again.
-  if (opt.check_splines && rep.count(RepairKind::MergedIslands) > merged_before)
+  if (ro.check_splines && rep.count(RepairKind::MergedIslands) > merged_before)
     if (auto e = repair()) return *e;
 
   // Orientation once the loops are simple (the extreme-vertex test needs a simple
@@ -575,9 +583,8 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
   // checked against the curves like any coast, and the loops they make are oriented by
   // construction.
   const bool by_step = opt.min_time_step > 0 && opt.depth_at;
-  if (opt.min_channel_width > 0 || by_step || !opt.dams.empty() || !opt.keep_open.empty()) {
-    PassageOptions po;
-    po.min_width = opt.min_channel_width;
+  if (opt.passages.min_width > 0 || by_step || !opt.passages.dams.empty() || !opt.passages.keep_open.empty()) {
+    PassageOptions po = in_context(opt.passages, opt);
     if (by_step) {
       // One element across a passage of width w at depth H gives the step w / sqrt(g H):
       // narrower than dt sqrt(g H) it is closed. The search radius is the widest such
@@ -591,13 +598,9 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
         if (!l.dead)
           for (std::uint32_t ci : l.curves)
             for (std::uint32_t j : curves[ci].keep) po.min_width = std::max(po.min_width, width_at(curves[ci].full[j]));
-      const double floor = opt.min_channel_width;
+      const double floor = opt.passages.min_width;
       po.width_at = [width_at, floor](geo::LonLat ll) { return std::max(floor, width_at(ll)); };
     }
-    po.keep_passages = opt.keep_passages;
-    po.dams = opt.dams;
-    po.keep_open = opt.keep_open;
-    po.radius = opt.radius;
     auto closed = close_passages(curves, loops, po, rep.repair);
     if (!closed) {
       CoastError e = closed.error();
@@ -605,7 +608,7 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
       e.file = data.file;
       return e;
     }
-    if (*closed && opt.check_splines)
+    if (*closed && ro.check_splines)
       if (auto e = repair()) return *e;
     // The straits were measured on the coarsened curves; the passages changed them: a cut
     // refused at a pinch puts the source points back (a 31 m gap between two 2 km

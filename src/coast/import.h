@@ -15,12 +15,20 @@
 #include "coast/clean.h"
 #include "coast/coarsen.h"
 #include "coast/coastline.h"
+#include "coast/deviation.h"
 #include "coast/deviation_report.h"
+#include "coast/passages.h"
+#include "coast/repair.h"
+#include "coast/repair_entry.h"
 #include "coast/patch.h"
 #include "coast/region.h"
 
 namespace sm::coast {
 
+/// The import's options: the context every step shares (gamma, radius, threads,
+/// progress), the source (levels, region, patch) and one struct per step, which the step
+/// receives as it is (build_coast_model fills in only the shared context: radius,
+/// threads and gamma are the import's, whatever the step's own copy holds).
 struct ImportOptions {
   std::vector<int> levels{1};          // GSHHS levels kept
   /// Antarctica in GSHHG >= 2.3 binaries is level 5 (ice front) or 6 (grounding line),
@@ -28,6 +36,10 @@ struct ImportOptions {
   int antarctica_level = 5;
   AccuracyFn gamma;                    // metres at 3D points of the sphere of `radius`
   double radius = geo::kEarthRadius;   // metres
+  /// Threads for the steps that work ring by ring (cleaning, coarsening, the deviation
+  /// pass; the accuracy field is called from the calling thread only): the result is
+  /// the same for every count (base/parallel.h). <= 0: the hardware concurrency.
+  int threads = 1;
   std::optional<LonLatBox> region;     // clip to this box
   /// Clip to this polygon instead (great-circle edges, region_polygon.h) when it has
   /// vertices; `region` is then its bounding box, for the readers.
@@ -37,26 +49,23 @@ struct ImportOptions {
   std::vector<Ring> patch;
   std::optional<LonLatBox> patch_box;
   bool use_file_region = true;         // else clip to the file's own -R box when it has open pieces
-  double min_area_km2 = 0;
-  std::size_t min_points = 3;
-  /// Narrow straits: places where two coastlines come closer than strait_factor * gamma
-  /// (Gmsh's MinStraitsFactor). Kept open (listed in the report) unless close_straits,
-  /// in which case the two islands are merged across the strait.
-  double strait_factor = 1.0;
-  bool close_straits = false;
-  /// Put original points back where the B-splines built through the control points cross
-  /// or come within 1e-3 gamma of each other (or of themselves), as far as the source data
-  /// allows (spline_check.h: precise test by Bezier subdivision; docs/coastlines.md 6).
-  bool check_splines = true;
-  /// Passages of water narrower than this (metres) are closed by dams (passages.h); 0: off.
-  double min_channel_width = 0;
-  /// With min_channel_width: only water that ends is closed (inlets, lagoons, a canal's
-  /// dead ends); a passage between two waters or a strait between two coasts stays open.
-  bool keep_passages = false;
-  /// Dams by hand: each segment between two lon/lat points closes the water it crosses.
-  std::vector<std::pair<geo::LonLat, geo::LonLat>> dams;
-  /// Points in passages that MinChannelWidth must leave open (passages.h).
-  std::vector<geo::LonLat> keep_open;
+  RegionOptions region_options;
+  /// Rings too small for gamma or below min_area_km2 are dropped (coarsen.h). Closed
+  /// pieces of a region loop are coarsened with min_area_km2 0 and min_points 3.
+  CoarsenOptions coarsen;
+  /// The coast curve kept within deviation.factor times gamma of the source points, or
+  /// deviation.fixed metres when > 0 (deviation.h; 0.5 by default: within gamma / 2; 0
+  /// measures and reports only, see docs/coastlines.md); the curve type measured is the
+  /// B-spline, or the control polygon when deviation.bspline is false.
+  DeviationOptions deviation;
+  /// Crossings put back on the source data, straits narrower than strait_factor * gamma
+  /// (Gmsh's MinStraitsFactor) reported or, with close_straits, merged; check_splines:
+  /// also where the B-splines through the control points cross or come within 1e-3 gamma
+  /// (spline_check.h; docs/coastlines.md 6).
+  RepairOptions repair;
+  /// Passages narrower than passages.min_width (metres) closed by dams, dams by hand,
+  /// KeepOpen points (passages.h). Its width_at is the import's own, from min_time_step.
+  PassageOptions passages;
   /// The time step the mesh must allow (Mesh.MinTimeStep, seconds; 0: off): with
   /// `depth_at`, a passage narrower than min_time_step sqrt(g H) at its place (one element
   /// across it, at Courant number 1) is closed too, and a KeepOpen passage narrower than
@@ -67,19 +76,6 @@ struct ImportOptions {
   std::function<double(geo::LonLat)> depth_at;
   /// Keep only the seas (surfaces) holding one of these points; empty: every sea.
   std::vector<geo::LonLat> sea_at;
-  int max_repair_rounds = 64;
-  /// The coast curve kept within this distance of the source points (deviation.h):
-  /// `max_deviation` metres when > 0, else `deviation_factor` times gamma (0.5 by default:
-  /// within gamma / 2; 0 measures and reports only, see docs/coastlines.md); the curve type
-  /// measured is the B-spline, or the control polygon when `bspline_curves` is false.
-  double deviation_factor = 0.5;
-  double max_deviation = 0;
-  bool bspline_curves = true;
-  /// Threads for the steps that work ring by ring (cleaning, coarsening; the accuracy field
-  /// is called from the calling thread only): the result is
-  /// the same for every count (base/parallel.h). <= 0: the hardware concurrency.
-  int threads = 1;
-  RegionOptions region_options;
   /// Reports stage "coastline" with one unit per pipeline step (levels, cleaning,
   /// clipping, coarsening, curves, repair, surfaces, output: 8); null: silent.
   Progress* progress = nullptr;
@@ -105,38 +101,6 @@ struct CoastLoop {
 struct CoastSurface {
   std::uint32_t outer;                 // loop index
   std::vector<std::uint32_t> holes;    // loop indices
-};
-
-enum class RepairKind {
-  Refined,        // original points put back on a segment that crossed another
-  DroppedIsland,  // island below the accuracy that still touched another loop
-  CutSliver,      // a loop meeting itself on the source data: its shorter side cut out
-  UnitedIslands,  // two islands overlapping in the source data: replaced by their union
-  MergedIslands,  // two islands joined across a strait narrower than the accuracy
-  NarrowStrait,   // a strait narrower than strait_factor * gamma, left open
-  OutsideWater,   // island outside every outer loop (for instance inland in a region), dropped
-  SplineHull,     // original points put back where two B-spline curves crossed or touched
-  SplineMayCross, // the B-splines still cross or touch on the source data
-  ClosedPassage,  // a passage narrower than min_channel_width closed by dams (width in metres)
-  NarrowWater,    // water cut off by a closure, all narrower than min_channel_width: dropped (mean width)
-  DamPlaced,      // a dam by hand closing the water it crosses (its length in metres)
-  KeptOpen,       // a passage kept open by a KeepOpen point (its width there in metres)
-  DroppedSea,     // a sea holding no SeaAt point, dropped (a point inside it, its area in km^2)
-  GrazingCrossing,  // a Region polygon edge crossing the shore for less than gamma: no open boundary (length in metres)
-  PocketLeftOut,    // water a Region polygon reaches only across such crossings: left out (its area in km^2)
-};
-
-struct RepairEntry {
-  RepairKind kind;
-  std::size_t record;
-  std::int64_t id;
-  geo::LonLat where;
-  double value = 0;   // refined: points added; strait: width in metres
-  /// With ImportOptions::min_time_step: a closed or kept-open passage's Courant time step
-  /// across it (width / sqrt(g H), seconds); NaN otherwise.
-  double step = std::numeric_limits<double>::quiet_NaN();
-  /// A KeepOpen passage whose step is under min_time_step: the mesh cannot reach it there.
-  bool step_unmet = false;
 };
 
 /// One line of the import report with its parts, so that a diagnostic listing many

@@ -18,6 +18,7 @@
 
 #include "base/check.h"
 #include "coast/coarsen.h"
+#include "coast/coastline_option_id.h"
 #include "coast/intersections.h"
 #include "coast/segment_grid.h"
 #include "exact/ring.h"
@@ -960,7 +961,7 @@ Result<std::size_t> place_dam(Work& w, geo::LonLat p_ll, geo::LonLat q_ll, std::
         w.gate_closed(w.flat[in.loop].p(in.seg), w.flat[out.loop].p(out.seg)))
       for (const Gate& g : w.gates)
         if (g.closes(w.flat[in.loop].p(in.seg), w.flat[out.loop].p(out.seg)))
-          return CoastError{"KeepOpen", -1,
+          return CoastError{coast_option_string(CoastOpt::KeepOpen), -1,
                             fmt::format("the KeepOpen point (lon {:.6f}, lat {:.6f}) keeps open the passage that the "
                                         "dam from (lon {:.6f}, lat {:.6f}) to (lon {:.6f}, lat {:.6f}) closes: remove "
                                         "one of them",
@@ -996,7 +997,7 @@ Result<std::size_t> place_dam(Work& w, geo::LonLat p_ll, geo::LonLat q_ll, std::
       if (fb2.p(j) == out.x) jb = j;
     if (ja == fa2.kept.size() || jb == fb2.kept.size() ||
         !cut_is_clean(w.flat, fa2.p(ja), fa2.p(ja + 1), fb2.p(jb), fb2.p(jb + 1), {}))
-      return CoastError{"Dams", -1,
+      return CoastError{coast_option_string(CoastOpt::Dams), -1,
                         fmt::format("the dam from (lon {:.6f}, lat {:.6f}) to (lon {:.6f}, lat {:.6f}) cannot close the "
                                     "water it crosses without crossing another coastline: move its ends onto the "
                                     "nearest land on each side",
@@ -1158,7 +1159,7 @@ Result<bool> find_gates(Work& w, std::vector<RepairEntry>& log) {
     const Vec2 p = unit_sphere().param_from_lonlat(ll);
     const Nearest a = nearest_coast(w, p, {0, 0});
     auto fail = [&](std::string why) {
-      return CoastError{"KeepOpen", -1, fmt::format("the KeepOpen point (lon {:.6f}, lat {:.6f}) {}", ll.lon, ll.lat, why),
+      return CoastError{coast_option_string(CoastOpt::KeepOpen), -1, fmt::format("the KeepOpen point (lon {:.6f}, lat {:.6f}) {}", ll.lon, ll.lat, why),
                         ll};
     };
     if (!std::isfinite(a.d2)) return fail("has no coastline near it");
@@ -1208,7 +1209,7 @@ Result<bool> close_passages(std::vector<WorkCurve>& curves, std::vector<WorkLoop
     auto placed = place_dam(w, p, q, log);
     if (!placed) return placed.error();
     if (*placed == 0)
-      return CoastError{"Dams", -1,
+      return CoastError{coast_option_string(CoastOpt::Dams), -1,
                         fmt::format("the dam from (lon {:.6f}, lat {:.6f}) to (lon {:.6f}, lat {:.6f}) crosses no water: "
                                     "both ends and the line between them lie on land (or in one stretch of water)",
                                     p.lon, p.lat, q.lon, q.lat),

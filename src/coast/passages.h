@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "coast/coastline.h"
-#include "coast/import.h"
+#include "coast/repair_entry.h"
 #include "coast/repair.h"
 
 namespace sm::coast {

@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "coast/coastline_option_id.h"
 #include "coast/perimeter_link.h"
 #include "coast/region_box.h"
 #include "exact/ring.h"
@@ -155,7 +156,7 @@ Result<std::vector<Ring>> splice_patch(const std::vector<Ring>& base, const std:
                       fmt::format("invalid patch box {}/{}/{}/{}: need west < east (less than 360 degrees apart) and "
                                   "-90 <= south < north <= 90",
                                   box.west, box.east, box.south, box.north),
-                      {}, "PatchBox"};
+                      {}, coast_option_string(CoastOpt::PatchBox)};
   PatchReport rep;
   std::vector<Ring> out;
   std::vector<PatchChain> chains;
@@ -183,7 +184,7 @@ Result<std::vector<Ring>> splice_patch(const std::vector<Ring>& base, const std:
       return CoastError{"patch", static_cast<std::int64_t>(r.record),
                         "a patch shoreline must be closed land rings (level 1): this one is open, a lake or round a pole",
                         r.pts.empty() ? std::optional<geo::LonLat>{} : std::optional<geo::LonLat>{r.pts.front()},
-                        "Patch"};
+                        coast_option_string(CoastOpt::Patch)};
     const std::size_t before = chains.size();
     if (!cut_ring(r, base.size() + i, box, true, chains)) {
       if (!strictly_outside(r.pts[0], box)) {   // wholly inside: an island of the patch
@@ -200,7 +201,7 @@ Result<std::vector<Ring>> splice_patch(const std::vector<Ring>& base, const std:
     return CoastError{"patch", -1,
                       fmt::format("the patch holds no shoreline inside its box {}/{}/{}/{}", box.west, box.east,
                                   box.south, box.north),
-                      {}, "Patch"};
+                      {}, coast_option_string(CoastOpt::Patch)};
   std::vector<PerimeterChain> ends(chains.size());
   for (std::size_t c = 0; c < chains.size(); ++c) ends[c] = {chains[c].t_first, chains[c].t_last, chains[c].outside};
   const PerimeterLink link = link_along_perimeter(ends, inside_filled, outside_filled);
@@ -212,7 +213,7 @@ Result<std::vector<Ring>> splice_patch(const std::vector<Ring>& base, const std:
                                   link.error == PerimeterLinkError::Inconsistent
                                       ? "two shorelines enter or leave the box in a row: orientations disagree"
                                       : "both sides of the box are land or both water at a shoreline's end"),
-                      b.pts.back(), "Patch"};
+                      b.pts.back(), coast_option_string(CoastOpt::Patch)};
   }
   // Walk: open chains (base polylines cut elsewhere) first, then the closed rings.
   std::vector<char> used(chains.size(), 0);

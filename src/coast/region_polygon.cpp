@@ -13,6 +13,7 @@
 
 #include <fmt/format.h>
 
+#include "coast/coastline_option_id.h"
 #include "coast/perimeter_link.h"
 #include "exact/ring.h"
 #include "exact/segments.h"
@@ -40,7 +41,7 @@ geo::LonLat lonlat_of(Vec3 u, double near_lon) {
 std::string where_text(geo::LonLat p) { return fmt::format("({:.6g}, {:.6g})", p.lon, p.lat); }
 
 CoastError polygon_error(std::string message, std::optional<geo::LonLat> at = std::nullopt) {
-  return CoastError{"region", -1, std::move(message), at, "Region"};
+  return CoastError{"region", -1, std::move(message), at, coast_option_string(CoastOpt::Region)};
 }
 
 // The side of the directed line a -> b a point x counts on: a point on the line counts as
@@ -395,7 +396,7 @@ Result<RegionResult> clip_to_polygon(const std::vector<Ring>& rings, const Regio
         for (auto p : r.pts) ring_xy.push_back({p.lon + 360.0 * k, p.lat});
         if (point_in_ring(ring_xy, {mid->lon, mid->lat}))
           return CoastError{"region", static_cast<std::int64_t>(r.record), "the region polygon lies wholly on land",
-                            *mid, "Region"};
+                            *mid, coast_option_string(CoastOpt::Region)};
       }
     }
     RegionLoop loop;

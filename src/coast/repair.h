@@ -8,7 +8,8 @@
 #include <vector>
 
 #include "coast/coastline.h"
-#include "coast/import.h"
+#include "coast/coarsen.h"
+#include "coast/repair_entry.h"
 
 namespace sm::coast {
 

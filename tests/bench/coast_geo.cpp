@@ -70,7 +70,7 @@ int main(int argc, char** argv) {
   const std::string path = std::string(SM_DATA_DIR) + "/gshhg/" + argv[1];
   const double gamma = std::atof(argv[2]);
   if (!(gamma > 0)) return std::fprintf(stderr, "bench_coast_geo: GAMMA_M must be positive\n"), 2;
-  bool check_splines = sm::coast::ImportOptions{}.check_splines;
+  bool check_splines = sm::coast::ImportOptions{}.repair.check_splines;
   for (int i = 4; i < argc; ++i) {
     if (std::strcmp(argv[i], "--no-check-splines") == 0) check_splines = false;
     else return std::fprintf(stderr, "bench_coast_geo: unknown option %s\n", argv[i]), 2;
@@ -79,7 +79,7 @@ int main(int argc, char** argv) {
   if (!coast) return std::fprintf(stderr, "%s\n", coast.error().to_string().c_str()), 1;
   sm::coast::ImportOptions io;
   io.radius = sm::geo::kEarthRadius;
-  io.check_splines = check_splines;
+  io.repair.check_splines = check_splines;
   io.gamma = [gamma](std::span<const sm::Vec3>, std::span<double> g) { std::fill(g.begin(), g.end(), gamma); };
   auto cm = sm::coast::build_coast_model(std::move(*coast), io);
   if (!cm) return std::fprintf(stderr, "%s\n", cm.error().to_string().c_str()), 1;

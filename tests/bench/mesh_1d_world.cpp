@@ -58,7 +58,7 @@ Built build(const std::string& path, double gamma_m, geo::CurveKind kind) {
   // Coarsened polygons do not cross, but B-splines through them may (at 10 km: near New
   // York, lon -73.9 lat 40.8, which the 1D repair rightly reports); the spline check puts
   // original points back until no two span hulls overlap.
-  o.check_splines = true;
+  o.repair.check_splines = true;
   o.gamma = [gamma_m](std::span<const Vec3>, std::span<double> g) { std::fill(g.begin(), g.end(), gamma_m); };
   auto cm = coast::build_coast_model(std::move(*data), o);
   if (!cm) {

@@ -260,7 +260,7 @@ int main(int argc, char** argv) {
   if (!coast) return std::fprintf(stderr, "%s\n", coast.error().to_string().c_str()), 1;
   sm::coast::ImportOptions io;
   io.radius = radius;
-  io.check_splines = true;   // BSplines through the control points must not cross (1D would stop)
+  io.repair.check_splines = true;   // BSplines through the control points must not cross (1D would stop)
   io.gamma = [gamma_km](std::span<const sm::Vec3>, std::span<double> g) { std::fill(g.begin(), g.end(), gamma_km * 1e3); };
   auto cm = sm::coast::build_coast_model(std::move(*coast), io);
   if (!cm) return std::fprintf(stderr, "%s\n", cm.error().to_string().c_str()), 1;

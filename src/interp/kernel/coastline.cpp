@@ -15,6 +15,7 @@
 #include <fmt/format.h>
 
 #include "base/check.h"
+#include "coast/coastline_options.h"
 #include "coast/import.h"
 #include "coast/read.h"
 #include "coast/read_shapefile.h"
@@ -61,43 +62,11 @@ using namespace sm::lang;
 
 namespace {
 
-enum class OptType { String, Number, List };
+using coast::CoastOpt;
 
-struct CoastOption {
-  std::string_view name;
-  OptType type;
-  bool loops2_only;
-  std::string_view help;
-};
-
-// Every option, with the value it takes; docs/interpreter.md lists the same.
-constexpr CoastOption kOptions[] = {
-    {"FileName", OptType::String, false, "shoreline file, relative to the script (GSHHG: optional, a binned_GSHHS_*.nc)"},
-    {"Resolution", OptType::String, false, "GSHHG only: \"c\", \"l\" (default), \"i\", \"h\" or \"f\", the system's binned file"},
-    {"Levels", OptType::List, false, "GSHHS levels kept (default {1})"},
-    {"AntarcticaLevel", OptType::Number, false, "level kept for Antarctica: 5 ice front (default), 6 grounding line, 0 none"},
-    {"AccuracyField", OptType::Number, false, "size field giving gamma(x) in metres (required)"},
-    {"Region", OptType::List, false, "{west, east, south, north} in degrees, or a polygon {lon1, lat1, lon2, lat2, lon3, lat3, ...} (great-circle edges)"},
-    {"RegionFile", OptType::String, false, "a shapefile holding one polygon: the Region polygon, relative to the script"},
-    {"Patch", OptType::String, false, "a local shoreline file (lon/lat text, or .shp) replacing this one inside PatchBox, relative to the script"},
-    {"PatchBox", OptType::List, false, "{west, east, south, north}: the box where Patch replaces the shoreline"},
-    {"MinArea", OptType::Number, false, "drop closed rings below this area (km^2)"},
-    {"CurveType", OptType::String, false, "\"BSpline\" (default) or \"Line\""},
-    {"MaxDeviation", OptType::Number, false, "the coast curve stays within this distance (m) of the source points (default: DeviationFactor * gamma)"},
-    {"DeviationFactor", OptType::Number, false, "the curve's bound as a fraction of gamma (default 0.5: within gamma / 2 but for inlets and spits too narrow for the accuracy, reported; 0: measured and reported only)"},
-    {"MinStraitsFactor", OptType::Number, false, "straits narrower than factor * gamma are reported (default 1)"},
-    {"CloseStraits", OptType::Number, false, "1: merge islands across such straits (default 0: keep them open)"},
-    {"CheckSplines", OptType::Number, false, "1 (default): put points back until no two B-splines cross; 0: off"},
-    {"MinChannelWidth", OptType::Number, false, "close passages of water narrower than this (m) by dams (default 0: off)"},
-    {"KeepPassages", OptType::Number, false, "1: MinChannelWidth fills only water that ends (inlets, lagoons); passages and straits stay open (default 0)"},
-    {"Dams", OptType::List, false, "{lon1, lat1, lon2, lat2, ...}: dams closing the water each segment crosses"},
-    {"SeaAt", OptType::List, false, "{lon, lat, ...}: keep only the seas holding these points"},
-    {"KeepOpen", OptType::List, false, "{lon, lat, ...}: the passage at each point stays open whatever MinChannelWidth"},
-    {"Coordinate", OptType::String, true, "lonlat, lonlat_degrees (default), utm or cartesian"},
-    {"UTMZone", OptType::Number, true, "UTM zone of utm coordinates"},
-    {"UTMEquatorialRadius", OptType::Number, true, "ellipsoid of utm coordinates (m)"},
-    {"UTMPolarRadius", OptType::Number, true, "ellipsoid of utm coordinates (m)"},
-};
+// The options are rows of coast/coastline_options.def: read, checked and applied through
+// its table (coast/coastline_options.h); here only their names are looked up.
+std::string_view name_of(CoastOpt o) { return coast::coast_option_name(o); }
 
 // What `Coastline{n, "What"}` returns.
 constexpr std::string_view kSelectors[] = {"Loops", "Curves", "OpenCurves", "Points", "CoastPoints", "ControlPoints",
@@ -111,12 +80,6 @@ std::vector<geo::LonLat> polygon_vertices(const std::vector<double>& x) {
   std::vector<geo::LonLat> v;
   for (std::size_t i = 0; i + 1 < x.size(); i += 2) v.push_back({x[i], x[i + 1]});
   return v;
-}
-
-const CoastOption* find_option(std::string_view name) {
-  for (const CoastOption& o : kOptions)
-    if (o.name == name) return &o;
-  return nullptr;
 }
 
 std::string did_you_mean(std::string_view name, const std::vector<std::string>& names) {
@@ -170,92 +133,34 @@ void exec_coast_new(Interpreter& in, const Stmt& s, const CoastlineNewStmt& n) {
   in.fail_fmt(at, Diag::WrongCoastlineOption, fmt::format("Coastline[{}].{} {}", id, option, why));
 }
 
-// Checks a value against its option now, so that a mistake is reported where it is written.
-void check_option_value(Interpreter& in, int id, const CoastOption& o, const Value& v, SourceRange at) {
-  if (o.type == OptType::String) {
-    if (!v.is_string() || v.strs().size() != 1) fail_option(in, at, id, o.name, "takes one string");
-    const std::string& t = v.strs().front();
-    if (o.name == "CurveType" && t != "BSpline" && t != "Line")
-      fail_option(in, at, id, o.name, fmt::format("must be \"BSpline\" or \"Line\", not \"{}\"", t));
-    if (o.name == "Coordinate" && !coast::parse_loops2_coordinate(t))
-      fail_option(in, at, id, o.name,
-                  fmt::format("must be lonlat, lonlat_degrees, utm or cartesian, not \"{}\"", t));
-    if (o.name == "FileName" && t.empty()) fail_option(in, at, id, o.name, "is empty");
-    if (o.name == "Resolution" && !coast::is_gshhg_resolution(t))
-      fail_option(in, at, id, o.name,
-                  fmt::format("must be \"c\", \"l\", \"i\", \"h\" or \"f\" (crude to full), not \"{}\"", t));
-    return;
+// A value as the table reads it (its numbers, or its strings).
+coast::CoastOptionValue table_value(const Value& v) {
+  coast::CoastOptionValue t;
+  if (v.is_string()) {
+    t.is_string = true;
+    t.strings = v.strs().size();
+    if (!v.strs().empty()) t.str = v.strs().front();
+  } else {
+    t.nums = v.nums();
   }
-  if (!v.is_numeric()) fail_option(in, at, id, o.name, o.type == OptType::List ? "takes a list of numbers" : "takes a number");
-  const std::vector<double>& x = v.nums();
-  for (double d : x)
-    if (!std::isfinite(d)) fail_option(in, at, id, o.name, "is not finite");
-  if (o.type == OptType::Number && x.size() != 1)
-    fail_option(in, at, id, o.name, fmt::format("takes one number, not a list of {}", x.size()));
-  const std::string_view name = o.name;
-  if (name == "Levels") {
-    if (x.empty()) fail_option(in, at, id, name, "is empty: no shoreline would be kept");
-    for (double d : x)
-      if (d != std::floor(d) || d < 1 || d > 6) fail_option(in, at, id, name, fmt::format("must list levels 1 to 6, not {}", d));
-  } else if (name == "AntarcticaLevel") {
-    if (x[0] != 0 && x[0] != 5 && x[0] != 6) fail_option(in, at, id, name, fmt::format("must be 0, 5 or 6, not {}", x[0]));
-  } else if (name == "AccuracyField" || name == "UTMZone") {
-    if (x[0] != std::floor(x[0]) || x[0] < (name == "UTMZone" ? 1 : 0) || x[0] > (name == "UTMZone" ? 60 : 2147483647.0))
-      fail_option(in, at, id, name, fmt::format("must be {}, not {}", name == "UTMZone" ? "a zone 1 to 60" : "a field id", x[0]));
-  } else if (name == "Region") {
-    if (x.size() != 4) {   // a polygon
-      if (x.size() < 6 || x.size() % 2 != 0)
-        fail_option(in, at, id, name,
-                    fmt::format("takes a box {{west, east, south, north}} or a polygon of 3 or more lon/lat vertices "
-                                "{{lon1, lat1, lon2, lat2, lon3, lat3, ...}}, not {} numbers",
-                                x.size()));
-      auto poly = coast::RegionPolygon::make(polygon_vertices(x));
-      if (!poly) fail_option(in, at, id, name, fmt::format("is not a usable polygon: {}", poly.error().message));
-      return;
-    }
-    if (!(x[0] < x[1]) || x[1] - x[0] > 360)
-      fail_option(in, at, id, name, fmt::format("needs west < east <= west + 360 (got {} and {})", x[0], x[1]));
-    if (!(x[2] < x[3]) || x[2] < -90 || x[3] > 90)
-      fail_option(in, at, id, name, fmt::format("needs -90 <= south < north <= 90 (got {} and {})", x[2], x[3]));
-  } else if (name == "PatchBox") {
-    if (x.size() != 4) fail_option(in, at, id, name, fmt::format("takes a box {{west, east, south, north}}, not {} numbers", x.size()));
-    if (!(x[0] < x[1]) || x[1] - x[0] >= 360)
-      fail_option(in, at, id, name, fmt::format("needs west < east < west + 360 (got {} and {})", x[0], x[1]));
-    if (!(x[2] < x[3]) || x[2] < -90 || x[3] > 90)
-      fail_option(in, at, id, name, fmt::format("needs -90 <= south < north <= 90 (got {} and {})", x[2], x[3]));
-  } else if (name == "MinArea") {
-    if (x[0] < 0) fail_option(in, at, id, name, "must not be negative");
-  } else if (name == "MinStraitsFactor" || name == "UTMEquatorialRadius" || name == "UTMPolarRadius") {
-    if (!(x[0] > 0)) fail_option(in, at, id, name, "must be positive");
-  } else if (name == "MaxDeviation") {
-    if (!(x[0] > 0)) fail_option(in, at, id, name, fmt::format("must be a positive distance in metres, not {}", x[0]));
-  } else if (name == "DeviationFactor") {
-    if (x[0] < 0) fail_option(in, at, id, name, fmt::format("must not be negative (0 is off), not {}", x[0]));
-  } else if (name == "MinChannelWidth") {
-    if (x[0] < 0) fail_option(in, at, id, name, fmt::format("must not be negative (0 is off), not {}", x[0]));
-  } else if (name == "Dams" || name == "SeaAt" || name == "KeepOpen") {
-    const std::size_t per = name == "Dams" ? 4 : 2;
-    if (x.empty() || x.size() % per != 0)
-      fail_option(in, at, id, name,
-                  fmt::format("takes {} per {}, not {} number(s)", per == 4 ? "{lon1, lat1, lon2, lat2}" : "{lon, lat}",
-                              per == 4 ? "dam" : "point", x.size()));
-    for (std::size_t i = 1; i < x.size(); i += 2)
-      if (x[i] < -90 || x[i] > 90)
-        fail_option(in, at, id, name, fmt::format("has latitude {} (value {}): latitudes lie in [-90, 90]", x[i], i + 1));
-  } else if (name == "CloseStraits" || name == "CheckSplines") {
-    if (x[0] != 0 && x[0] != 1) fail_option(in, at, id, name, fmt::format("must be 0 or 1, not {}", x[0]));
-  }
+  return t;
 }
 
-const Value* option_of(const CoastlineDef& d, std::string_view name) {
-  auto it = d.options.find(std::string(name));
+const Value* option(const CoastlineDef& d, CoastOpt o) {
+  auto it = d.options.find(name_of(o));
   return it == d.options.end() ? nullptr : &it->second;
+}
+
+// Where the script set option `o` (nullptr when it did not).
+const SourceRange* set_at(const CoastlineDef& d, CoastOpt o) {
+  auto it = d.option_at.find(name_of(o));
+  return it == d.option_at.end() ? nullptr : &it->second;
 }
 
 // RegionFile: the one polygon (one outer ring, no hole) of a shapefile, as a Region list.
 Value region_from_file(Interpreter& in, int id, const std::string& path, SourceRange at) {
   auto c = coast::read_shapefile(path);
-  if (!c) fail_option(in, at, id, "RegionFile", fmt::format("cannot be read: {}", c.error().to_string()));
+  if (!c) fail_option(in, at, id, name_of(CoastOpt::RegionFile), fmt::format("cannot be read: {}", c.error().to_string()));
   std::vector<const coast::Ring*> outer;
   std::size_t holes = 0;
   for (const coast::Ring& r : c->rings) {
@@ -263,34 +168,32 @@ Value region_from_file(Interpreter& in, int id, const std::string& path, SourceR
     else ++holes;
   }
   if (outer.size() != 1 || holes > 0)
-    fail_option(in, at, id, "RegionFile",
+    fail_option(in, at, id, name_of(CoastOpt::RegionFile),
                 fmt::format("{}: a region file must hold one polygon without holes, and it holds {} outer ring(s) and "
                             "{} other part(s)",
                             path, outer.size(), holes));
   std::vector<double> x;
   for (const geo::LonLat p : outer.front()->pts) x.insert(x.end(), {p.lon, p.lat});
   auto poly = coast::RegionPolygon::make(polygon_vertices(x));
-  if (!poly) fail_option(in, at, id, "RegionFile", fmt::format("{}: not a usable polygon: {}", path, poly.error().message));
+  if (!poly) fail_option(in, at, id, name_of(CoastOpt::RegionFile), fmt::format("{}: not a usable polygon: {}", path, poly.error().message));
   return Value::list(std::move(x));
 }
 
 void exec_coast_option(Interpreter& in, const Stmt& s, const CoastlineOptionStmt& n) {
   const int id = coast_id(in, n.id);
   CoastlineDef& d = require_coast(in, id, in.ast().expr(n.id).range, "set an option of");
-  const std::string option(in.ast().str(n.option));
-  const CoastOption* o = find_option(option);
+  const std::string name(in.ast().str(n.option));
+  const coast::CoastOptionSpec* o = coast::find_coast_option(name);
   if (!o) {
     std::vector<std::string> names;
-    for (const CoastOption& c : kOptions) names.emplace_back(c.name);
+    for (const coast::CoastOptionSpec& c : coast::coast_options()) names.emplace_back(c.name);
     in.fail_fmt(n.option_range, Diag::UnknownCoastlineOption,
-                fmt::format("Coastline[{}] ({}) has no option '{}'{}", id, d.format, option, did_you_mean(option, names)));
+                fmt::format("Coastline[{}] ({}) has no option '{}'{}", id, d.format, name, did_you_mean(name, names)));
   }
-  if (o->loops2_only && d.format != "Loops2")
+  if (!o->only.empty() && d.format != o->only)
     in.fail_fmt(n.option_range, Diag::UnknownCoastlineOption,
-                fmt::format("option '{}' applies to Loops2 coastlines only, and Coastline[{}] is {}", option, id, d.format));
-  if (o->name == "Resolution" && d.format != "GSHHG")
-    in.fail_fmt(n.option_range, Diag::UnknownCoastlineOption,
-                fmt::format("option 'Resolution' applies to GSHHG coastlines only, and Coastline[{}] is {}", id, d.format));
+                fmt::format("option '{}' applies to {} coastlines only, and Coastline[{}] is {}", name, o->only, id,
+                            d.format));
   if (d.imported) {
     try {
       in.fail_fmt(s.range, Diag::WrongCoastlineOption,
@@ -301,22 +204,25 @@ void exec_coast_option(Interpreter& in, const Stmt& s, const CoastlineOptionStmt
     }
   }
   Value v = in.eval(n.value);
-  const SourceRange value_at = in.ast().expr(n.value).range;
-  check_option_value(in, id, *o, v, value_at);
-  if (o->name == "FileName" || o->name == "Patch") v = Value::string(resolve_script_path(in.builtin_env(), v.strs().front()));
-  if ((o->name == "Region" && option_of(d, "RegionFile")) || (o->name == "RegionFile" && option_of(d, "Region") &&
-                                                              !option_of(d, "RegionFile")))
+  // Checked now, so that a mistake is reported where it is written.
+  if (auto why = coast::check_coast_option(*o, table_value(v))) fail_option(in, in.ast().expr(n.value).range, id, o->name, *why);
+  if (o->type == coast::CoastOptionType::Path) v = Value::string(resolve_script_path(in.builtin_env(), v.strs().front()));
+  const bool is_region = o == &coast::coast_option(CoastOpt::Region);
+  const bool is_region_file = o == &coast::coast_option(CoastOpt::RegionFile);
+  if ((is_region && option(d, CoastOpt::RegionFile)) ||
+      (is_region_file && option(d, CoastOpt::Region) && !option(d, CoastOpt::RegionFile)))
     fail_option(in, s.range, id, o->name,
-                "cannot be set with both Region and RegionFile: the region is either written or read from a file");
-  if (o->name == "RegionFile") {
+                fmt::format("cannot be set with both {} and {}: the region is either written or read from a file",
+                            name_of(CoastOpt::Region), name_of(CoastOpt::RegionFile)));
+  if (is_region_file) {
     // Read now, so that a file without one usable polygon is an error here; the polygon
     // then stands as the Region, set by this statement.
-    v = Value::string(resolve_script_path(in.builtin_env(), v.strs().front()));
-    d.options.insert_or_assign("Region", region_from_file(in, id, v.strs().front(), s.range));
-    d.option_at.insert_or_assign("Region", s.range);
+    const std::string region(name_of(CoastOpt::Region));
+    d.options.insert_or_assign(region, region_from_file(in, id, v.strs().front(), s.range));
+    d.option_at.insert_or_assign(region, s.range);
   }
-  d.options.insert_or_assign(option, std::move(v));
-  d.option_at.insert_or_assign(option, s.range);
+  d.options.insert_or_assign(name, std::move(v));
+  d.option_at.insert_or_assign(name, s.range);
 }
 
 void exec_delete_coast(Interpreter& in, const DeleteCoastlineStmt& n) {
@@ -325,26 +231,15 @@ void exec_delete_coast(Interpreter& in, const DeleteCoastlineStmt& n) {
   in.kernel().coastlines.erase(id);   // the entities an import created stay in the model
 }
 
-const Value* option(const CoastlineDef& d, std::string_view name) {
-  auto it = d.options.find(name);
-  return it == d.options.end() ? nullptr : &it->second;
-}
-
-double number_option(const CoastlineDef& d, std::string_view name, double fallback) {
-  const Value* v = option(d, name);
-  return v ? v->nums().front() : fallback;
-}
-
 // A kernel error at `at`, with notes at the definition and, for file errors, at FileName.
 [[noreturn]] void fail_coast(Interpreter& in, int id, const CoastlineDef& d, SourceRange at, const coast::CoastError& e,
                              bool file_error) {
   std::vector<DiagNote> notes;
   if (file_error) {
     // Records of the file, or a bad gamma(x) value at a place of it.
-    for (std::string_view o : {"FileName", "AccuracyField"}) {
-      auto it = d.option_at.find(o);
-      if (it != d.option_at.end()) notes.push_back({it->second, fmt::format("Coastline[{}].{} is set here", id, o)});
-    }
+    for (CoastOpt o : {CoastOpt::FileName, CoastOpt::AccuracyField})
+      if (const SourceRange* r = set_at(d, o))
+        notes.push_back({*r, fmt::format("Coastline[{}].{} is set here", id, name_of(o))});
   }
   notes.push_back({d.defined_at, fmt::format("Coastline[{}] ({}) is defined here", id, d.format)});
   in.fail_with_notes(at, Diag::CoastlineError, fmt::format("Coastline[{}]: {}", id, e.to_string()), std::move(notes));
@@ -389,28 +284,32 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
         {{d.defined_at, fmt::format("Coastline[{}] is defined here", id)}});
   }
   const geo::PolarSphere& sphere = *sg->polar();
-  const Value* file = option(d, "FileName");
+  // Every option the script set, applied by its row of the table in the table's order
+  // (each was checked when set).
+  coast::CoastlineSettings set;
+  for (const coast::CoastOptionSpec& o : coast::coast_options())
+    if (auto it = d.options.find(o.name); it != d.options.end()) o.apply(set, table_value(it->second));
+  coast::ImportOptions& io = set.import;
+  const std::string_view file_option = name_of(CoastOpt::FileName), accuracy_option = name_of(CoastOpt::AccuracyField);
   const bool gshhg = d.format == "GSHHG";
-  if (!file && !gshhg)
+  if (set.file_name.empty() && !gshhg)
     in.fail_with_notes(at, Diag::WrongCoastlineOption,
-                       fmt::format("Coastline[{}] has no FileName: set 'Coastline[{}].FileName = \"...\";'", id, id),
+                       fmt::format("Coastline[{}] has no {}: set 'Coastline[{}].{} = \"...\";'", id, file_option, id,
+                                   file_option),
                        {{d.defined_at, fmt::format("Coastline[{}] is defined here", id)}});
-  const Value* accuracy = option(d, "AccuracyField");
-  if (!accuracy)
+  if (!set.accuracy_field)
     in.fail_with_notes(at, Diag::WrongCoastlineOption,
-                       fmt::format("Coastline[{}] has no AccuracyField: set 'Coastline[{}].AccuracyField = n;' to a size "
+                       fmt::format("Coastline[{}] has no {}: set 'Coastline[{}].{} = n;' to a size "
                                    "field giving the accuracy gamma(x) in metres",
-                                   id, id),
+                                   id, accuracy_option, id, accuracy_option),
                        {{d.defined_at, fmt::format("Coastline[{}] is defined here", id)}});
 
   // The accuracy field: built now (errors located at this use), evaluated at points of
   // the kernel's origin-centred sphere moved to the PolarSphere's centre.
-  const int field_id = static_cast<int>(accuracy->nums().front());
-  auto fit = d.option_at.find("AccuracyField");
-  const field::FieldPtr gamma_field = built_fields(in, field_id, fit->second).shared(field_id);
+  const int field_id = *set.accuracy_field;
+  const field::FieldPtr gamma_field = built_fields(in, field_id, *set_at(d, CoastOpt::AccuracyField)).shared(field_id);
   const Vec3 centre = sphere.centre();
   std::vector<Vec3> moved;
-  coast::ImportOptions io;
   io.gamma = [gamma_field, centre, &moved](std::span<const Vec3> pts, std::span<double> gamma) {
     moved.resize(pts.size());
     for (std::size_t i = 0; i < pts.size(); ++i) moved[i] = pts[i] + centre;
@@ -446,60 +345,31 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
       return std::max(h, min_depth);
     };
   }
-  if (const Value* v = option(d, "Levels")) {
-    io.levels.clear();
-    for (double l : v->nums()) io.levels.push_back(static_cast<int>(l));
-  }
-  io.antarctica_level = static_cast<int>(number_option(d, "AntarcticaLevel", io.antarctica_level));
   std::optional<coast::RegionPolygon> polygon;
-  if (const Value* v = option(d, "Region")) {
-    const auto& r = v->nums();
-    if (r.size() == 4) {
-      io.region = coast::LonLatBox{r[0], r[1], r[2], r[3]};
-    } else {   // checked when set
-      io.region_polygon = polygon_vertices(r);
-      polygon = *coast::RegionPolygon::make(io.region_polygon);
-      io.region = polygon->bounding_box();
-    }
-  }
-  io.min_area_km2 = number_option(d, "MinArea", 0);
-  io.strait_factor = number_option(d, "MinStraitsFactor", io.strait_factor);
-  io.close_straits = number_option(d, "CloseStraits", 0) != 0;
-  io.check_splines = number_option(d, "CheckSplines", 1) != 0;
-  io.min_channel_width = number_option(d, "MinChannelWidth", 0);
-  io.keep_passages = number_option(d, "KeepPassages", 0) != 0;
-  io.max_deviation = number_option(d, "MaxDeviation", 0);
-  io.deviation_factor = number_option(d, "DeviationFactor", io.deviation_factor);
-  io.bspline_curves = !(option(d, "CurveType") && option(d, "CurveType")->strs().front() == "Line");
-  if (const Value* v = option(d, "Dams")) {
-    const auto& x = v->nums();
-    for (std::size_t i = 0; i + 3 < x.size(); i += 4) io.dams.push_back({{x[i], x[i + 1]}, {x[i + 2], x[i + 3]}});
-  }
+  if (!io.region_polygon.empty()) polygon = *coast::RegionPolygon::make(io.region_polygon);   // checked when set
   // Points in the water (SeaAt, KeepOpen): inside the Region, longitudes compared modulo
   // 360 as its box may run past +-180.
-  for (const std::string_view name : {"SeaAt", "KeepOpen"}) {
-    const Value* v = option(d, name);
-    if (!v) continue;
-    const auto& x = v->nums();
-    for (std::size_t i = 0; i + 1 < x.size(); i += 2) {
-      if (polygon && !polygon->contains({x[i], x[i + 1]}))
-        in.fail_with_notes(d.option_at.find(name)->second, Diag::WrongCoastlineOption,
+  const auto region_note = [&] {
+    return DiagNote{*set_at(d, CoastOpt::Region), fmt::format("Coastline[{}].{} is set here", id, name_of(CoastOpt::Region))};
+  };
+  for (const CoastOpt o : {CoastOpt::SeaAt, CoastOpt::KeepOpen}) {
+    const std::vector<geo::LonLat>& points = o == CoastOpt::SeaAt ? io.sea_at : io.passages.keep_open;
+    for (const geo::LonLat p : points) {
+      if (polygon && !polygon->contains(p))
+        in.fail_with_notes(*set_at(d, o), Diag::WrongCoastlineOption,
                            fmt::format("Coastline[{}].{} point (lon {}, lat {}) lies outside the Region polygon", id,
-                                       name, x[i], x[i + 1]),
-                           {{d.option_at.find("Region")->second, fmt::format("Coastline[{}].Region is set here", id)},
-                            {at, "the coastline is imported here"}});
+                                       name_of(o), p.lon, p.lat),
+                           {region_note(), {at, "the coastline is imported here"}});
       if (io.region && !polygon) {
         const coast::LonLatBox& b = *io.region;
-        const double lon = b.west + std::fmod(std::fmod(x[i] - b.west, 360.0) + 360.0, 360.0);
-        if (lon > b.east || x[i + 1] < b.south || x[i + 1] > b.north)
-          in.fail_with_notes(d.option_at.find(name)->second, Diag::WrongCoastlineOption,
+        const double lon = b.west + std::fmod(std::fmod(p.lon - b.west, 360.0) + 360.0, 360.0);
+        if (lon > b.east || p.lat < b.south || p.lat > b.north)
+          in.fail_with_notes(*set_at(d, o), Diag::WrongCoastlineOption,
                              fmt::format("Coastline[{}].{} point (lon {}, lat {}) lies outside the Region {{{}, {}, "
                                          "{}, {}}}",
-                                         id, name, x[i], x[i + 1], b.west, b.east, b.south, b.north),
-                             {{d.option_at.find("Region")->second, fmt::format("Coastline[{}].Region is set here", id)},
-                              {at, "the coastline is imported here"}});
+                                         id, name_of(o), p.lon, p.lat, b.west, b.east, b.south, b.north),
+                             {region_note(), {at, "the coastline is imported here"}});
       }
-      (name == "SeaAt" ? io.sea_at : io.keep_open).push_back({x[i], x[i + 1]});
     }
   }
   // Cleaning and coarsening ring by ring on -nt threads (the same rings for every count).
@@ -507,25 +377,21 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
   io.progress = progress_sink(in);
   // Patch: the local shoreline, read now so that an unreadable file is an error at its
   // statement; both Patch and PatchBox, or neither.
-  if (const Value* pf = option(d, "Patch"); pf || option(d, "PatchBox")) {
-    const char* missing = pf ? "PatchBox" : "Patch";
-    const SourceRange set_at = d.option_at.find(pf ? "Patch" : "PatchBox")->second;
-    if (!option(d, "PatchBox") || !pf)
-      fail_option(in, set_at, id, pf ? "Patch" : "PatchBox",
-                  fmt::format("needs Coastline[{}].{} too: the patch replaces the shoreline inside a box", id, missing));
-    const std::string& ppath = pf->strs().front();
+  if (!set.patch_file.empty() || io.patch_box) {
+    const CoastOpt given = set.patch_file.empty() ? CoastOpt::PatchBox : CoastOpt::Patch;
+    const CoastOpt missing = set.patch_file.empty() ? CoastOpt::Patch : CoastOpt::PatchBox;
+    const SourceRange given_at = *set_at(d, given);
+    if (set.patch_file.empty() || !io.patch_box)
+      fail_option(in, given_at, id, name_of(given),
+                  fmt::format("needs Coastline[{}].{} too: the patch replaces the shoreline inside a box", id,
+                              name_of(missing)));
+    const std::string& ppath = set.patch_file;
     const bool shp = ppath.size() > 4 && ppath.compare(ppath.size() - 4, 4, ".shp") == 0;
     auto pdata = coast::read_coastline(shp ? coast::CoastFormat::Shapefile : coast::CoastFormat::LonLatText, ppath);
-    if (!pdata) fail_option(in, set_at, id, "Patch", fmt::format("cannot be read: {}", pdata.error().to_string()));
-    const auto& b = option(d, "PatchBox")->nums();
+    if (!pdata)
+      fail_option(in, given_at, id, name_of(CoastOpt::Patch), fmt::format("cannot be read: {}", pdata.error().to_string()));
     io.patch = std::move(pdata->rings);
-    io.patch_box = coast::LonLatBox{b[0], b[1], b[2], b[3]};
   }
-  coast::Loops2Options l2;
-  if (const Value* v = option(d, "Coordinate")) l2.coordinate = *coast::parse_loops2_coordinate(v->strs().front());
-  l2.utm_zone = static_cast<int>(number_option(d, "UTMZone", l2.utm_zone));
-  l2.utm_equatorial_radius = number_option(d, "UTMEquatorialRadius", l2.utm_equatorial_radius);
-  l2.utm_polar_radius = number_option(d, "UTMPolarRadius", l2.utm_polar_radius);
 
   // The kernel's reading and building is the account's "import" stage; making the
   // script's entities from its loops below is the script's own time.
@@ -535,19 +401,17 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
   coast::GshhgBinnedOptions gopt;
   gopt.levels = io.levels;
   gopt.antarctica_level = io.antarctica_level;
-  gopt.min_area_km2 = io.min_area_km2;
+  gopt.min_area_km2 = io.coarsen.min_area_km2;
   gopt.region = io.region;
-  const Value* resolution = option(d, "Resolution");
-  const std::string path = file ? file->strs().front()
-                                : coast::gshhg_binned_file(resolution ? resolution->strs().front()[0] : 'l');
-  auto data = coast::read_coastline(*coast::parse_coast_format(d.format), path, l2, gopt);
+  const std::string path = !set.file_name.empty() ? set.file_name : coast::gshhg_binned_file(set.resolution.front());
+  auto data = coast::read_coastline(*coast::parse_coast_format(d.format), path, set.loops2, gopt);
   if (!data) {
     // At the statement that named the file: FileName, else Resolution, else the import.
-    auto f = d.option_at.find("FileName");
-    if (f == d.option_at.end()) f = d.option_at.find("Resolution");
-    if (f == d.option_at.end()) fail_coast(in, id, d, at, data.error(), false);
+    const SourceRange* f = set_at(d, CoastOpt::FileName);
+    if (!f) f = set_at(d, CoastOpt::Resolution);
+    if (!f) fail_coast(in, id, d, at, data.error(), false);
     try {
-      fail_coast(in, id, d, f->second, data.error(), false);
+      fail_coast(in, id, d, *f, data.error(), false);
     } catch (RuntimeError& err) {
       err.notes.insert(err.notes.begin(), DiagNote{at, "the coastline is imported here"});
       throw;
@@ -569,9 +433,10 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
         fail_coast(in, id, d, o->second, e, false);
       } catch (RuntimeError& err) {
         err.notes.insert(err.notes.begin(), DiagNote{at, "the coastline is imported here"});
-        if (auto dams = d.option_at.find("Dams"); e.option == "KeepOpen" && dams != d.option_at.end() &&
-                                                  e.message.find("dam from") != std::string::npos)
-          err.notes.insert(err.notes.begin(), DiagNote{dams->second, fmt::format("Coastline[{}].Dams is set here", id)});
+        const SourceRange* dams = set_at(d, CoastOpt::Dams);
+        if (e.option == name_of(CoastOpt::KeepOpen) && dams && e.message.find("dam from") != std::string::npos)
+          err.notes.insert(err.notes.begin(),
+                           DiagNote{*dams, fmt::format("Coastline[{}].{} is set here", id, name_of(CoastOpt::Dams))});
         throw;
       }
     }
@@ -580,7 +445,7 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
   const coast::CoastModel& m = *built;
   if (m.report.patch) {   // where the two shorelines disagree at the patch box
     const coast::PatchReport& pr = *m.report.patch;
-    in.diags().report(d.option_at.find("Patch")->second, Diag::CoastlineDeviation,
+    in.diags().report(*set_at(d, CoastOpt::Patch), Diag::CoastlineDeviation,
                       fmt::format("Coastline[{}]: the patch replaces the shoreline inside its box ({} base and {} patch "
                                   "chain(s) cut at the box); {} stretch(es) of box edge close the gaps between the two, "
                                   "the longest {:.0f} m at lon {:.4f} lat {:.4f}",
@@ -588,7 +453,7 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
                                   pr.max_step_at.lat));
   }
   if (m.seas_dropped > 0)
-    in.diags().report(d.option_at.find("SeaAt")->second, Diag::CoastlineSeasDropped,
+    in.diags().report(*set_at(d, CoastOpt::SeaAt), Diag::CoastlineSeasDropped,
                       fmt::format("Coastline[{}]: {} sea(s) holding no SeaAt point dropped, {} kept", id,
                                   m.seas_dropped, m.surfaces.size()));
   // Every change, each with its place and figure: the terminal groups the many of this
@@ -598,9 +463,9 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
   for (const coast::ReportLine& line : m.report.items()) {
     const std::string name = fmt::format("Coastline[{}]", id);
     const std::string text = fmt::format("{}: {}", name, line.text);
-    auto h = line.sea_dropped ? in.diags().report(d.option_at.find("SeaAt")->second, Diag::CoastlineSeasDropped, text)
-             : line.step_unmet ? in.diags().report(d.option_at.find("KeepOpen")->second, Diag::CoastlinePassage, text)
-             : line.kept_open ? in.diags().report(d.option_at.find("KeepOpen")->second, Diag::CoastlineKeptOpen, text)
+    auto h = line.sea_dropped ? in.diags().report(*set_at(d, CoastOpt::SeaAt), Diag::CoastlineSeasDropped, text)
+             : line.step_unmet ? in.diags().report(*set_at(d, CoastOpt::KeepOpen), Diag::CoastlinePassage, text)
+             : line.kept_open ? in.diags().report(*set_at(d, CoastOpt::KeepOpen), Diag::CoastlineKeptOpen, text)
              : line.passage   ? in.diags().report(at, Diag::CoastlinePassage, text)
                               : in.diags().report(at, Diag::CoastlineRepair, name, line.text);
     h.item(coastline_item(line));
@@ -616,12 +481,12 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
       imp->straits.insert(imp->straits.end(), {e.where.lon, e.where.lat, e.value, std::isnan(e.step) ? 0.0 : e.step});
   }
   if (m.region_empty) {   // the box of the Region, or of the file's own -R
-    auto r = d.option_at.find("Region");
+    const SourceRange* r = set_at(d, CoastOpt::Region);
     const std::string box =
         polygon ? std::string(" polygon")
         : io.region ? fmt::format(" {{{}, {}, {}, {}}}", io.region->west, io.region->east, io.region->south, io.region->north)
                   : std::string(" of the file");
-    in.diags().report(r != d.option_at.end() ? r->second : at, Diag::CoastlineRegionEmpty,
+    in.diags().report(r ? *r : at, Diag::CoastlineRegionEmpty,
                       fmt::format("Coastline[{}]: the Region{} holds no shoreline of the levels kept (none left at "
                                   "this accuracy and MinArea): its {} is the only loop, all open boundary",
                                   id, box, polygon ? "outline" : "box"));
@@ -641,7 +506,7 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
   for (std::uint32_t l = 0; l < m.loops.size(); ++l) add(l);
 
   sync_geometry_options(in);
-  const bool polyline = option(d, "CurveType") && option(d, "CurveType")->strs().front() == "Line";
+  const bool polyline = !io.deviation.bspline;   // CurveType "Line"
   imp->at = at;
   {
     const coast::DeviationReport& dev = m.report.deviation;
@@ -792,9 +657,9 @@ Value eval_coastline_query(Interpreter& in, ExprId e) {
       for (std::string_view s : kSelectors) known = known || s == what, names.emplace_back(s);
       if (!known || v.strs().size() != 1)
         in.fail_fmt(r, Diag::UnknownCoastlineOption,
-                    fmt::format("Coastline{{}} cannot return \"{}\"{}; it returns {}", what, did_you_mean(what, names),
-                                "Loops, Curves, OpenCurves, Points, CoastPoints, ControlPoints, Outer, LoopsPerSurface, CoastCurves, "
-                                "Surfaces, Closures, DroppedSeas, Straits or Deviation"));
+                    fmt::format("Coastline{{}} cannot return \"{}\"{}; it returns {} or {}", what, did_you_mean(what, names),
+                                fmt::join(std::begin(kSelectors), std::end(kSelectors) - 1, ", "),
+                                std::end(kSelectors)[-1]));
       continue;
     }
     for (double d : v.nums()) {
@@ -808,7 +673,7 @@ Value eval_coastline_query(Interpreter& in, ExprId e) {
   for (const auto& [id, r] : ids) {
     CoastlineDef& d = require_coast(in, id, r, "import");
     // A side or an edge the Region does not have: an error before the import runs.
-    const Value* region = option(d, "Region");
+    const Value* region = option(d, CoastOpt::Region);
     if (what == "OpenCurves" && edge >= 0) {
       const std::size_t n = region ? region->nums().size() / 2 : 0;
       if (!region || n == 2)

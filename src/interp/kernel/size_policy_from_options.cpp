@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "base/check.h"
+#include "coast/coastline_option_id.h"
 #include "field/channel_width.h"
 #include "interp/interpreter.h"
 #include "interp/kernel/dispatch.h"
@@ -57,8 +58,9 @@ field::FieldPtr with_channel_sizes(Interpreter& in, field::FieldPtr background) 
     const auto own = coastline_curves(k, id);
     if (!own) continue;
     coast.insert(coast.end(), own->begin(), own->end());
-    const auto f = def.options.find("AccuracyField");
-    const auto at = def.option_at.find("AccuracyField");
+    const std::string_view accuracy = coast::coast_option_name(coast::CoastOpt::AccuracyField);
+    const auto f = def.options.find(accuracy);
+    const auto at = def.option_at.find(accuracy);
     if (f == def.options.end() || f->second.nums().empty() || at == def.option_at.end()) continue;
     std::vector<Vec3> pts;
     for (int c : *own)

@@ -2,7 +2,9 @@
 // Island and Anglesey (4.564W 53.263N, 30.6 m wide in GSHHG full) at a 2 km accuracy. Its
 // 2 km segments made no clean cut at the 30 m pinch, so it was left open; the original
 // points near a refused cut are now put back and the place tried again: the strait is
-// closed (Holy Island joins Anglesey) and no coast point is left along it.
+// closed (Holy Island joins Anglesey) and no coast point is left along it. With
+// KeepPassages = 1 (Coastline 3) only water that ends is filled: the strait, a passage
+// between two waters, stays open as without MinChannelWidth.
 // compare_with_gmsh: skip (native Coastline statements)
 R = 6371009;
 Point(1) = {0, 0, 0};
@@ -10,7 +12,7 @@ Point(2) = {0, 0, R};
 PolarSphere(1) = {1, 2};
 Field[1] = MathEval;
 Field[1].F = "2000";
-For c In {1 : 2}
+For c In {1 : 3}
   Coastline[c] = LonLatText;
   Coastline[c].FileName = "../../../data/gshhg/gb_ireland_f.txt";
   Coastline[c].AccuracyField = 1;
@@ -18,7 +20,9 @@ For c In {1 : 2}
   Coastline[c].SeaAt = {-4.8, 53.3};
 EndFor
 Coastline[2].MinChannelWidth = 2000;
-For c In {1 : 2}
+Coastline[3].MinChannelWidth = 2000;
+Coastline[3].KeepPassages = 1;
+For c In {1 : 3}
   pts[] = Coastline{c, "Points"};
   strait = 0;
   For i In {0 : #pts[] - 1}
@@ -36,3 +40,4 @@ For c In {1 : 2}
 EndFor
 // expect: Coastline 1: 2 coast points along the strait, 0 closure(s) there
 // expect: Coastline 2: 0 coast points along the strait, 1 closure(s) there
+// expect: Coastline 3: 2 coast points along the strait, 0 closure(s) there

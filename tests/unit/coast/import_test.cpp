@@ -140,7 +140,7 @@ TEST_CASE("import: regions make open-boundary curves") {
 TEST_CASE("import: MinArea drops small islands") {
   ImportOptions o;
   o.gamma = sm::testing::constant_accuracy(150);
-  o.min_area_km2 = 10;
+  o.coarsen.min_area_km2 = 10;
   auto m = build_coast_model(load("gb_ireland_f.txt"), o);
   REQUIRE(m.ok());
   CHECK(m->surfaces[0].holes.size() < 200);
@@ -160,7 +160,7 @@ TEST_CASE("import: Figure 5, Great Britain and Ireland") {
     CAPTURE(r.gamma);
     ImportOptions o;
     o.gamma = sm::testing::constant_accuracy(r.gamma);
-    o.deviation_factor = 0;   // the paper's control points: coarsening alone, no point put back
+    o.deviation.factor = 0;   // the paper's control points: coarsening alone, no point put back
     auto m = build_coast_model(load("gb_ireland_f.txt"), o);
     REQUIRE(m.ok());
     REQUIRE(m->surfaces.size() == 1);
@@ -259,7 +259,7 @@ TEST_CASE("import: Antarctica's grounding line (level 6) absorbs the ice-shelf i
 TEST_CASE("import: the same input gives the same model, bit for bit") {
   ImportOptions o;
   o.gamma = sm::testing::constant_accuracy(5000);
-  o.close_straits = true;
+  o.repair.close_straits = true;
   auto a = build_coast_model(load("northsea_scheldt_f.txt"), o);
   auto b = build_coast_model(load("northsea_scheldt_f.txt"), o);
   REQUIRE(a.ok());

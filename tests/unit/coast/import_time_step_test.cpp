@@ -98,7 +98,7 @@ TEST_CASE("import time step: the width follows the depth of the place") {
 
 TEST_CASE("import time step: a KeepOpen inlet too narrow for dt stays open, marked as missing the step") {
   ImportOptions o = ts_options(100, 40);
-  o.keep_open = {{0, -0.25}};
+  o.passages.keep_open = {{0, -0.25}};
   auto m = build_coast_model(ts_inlet(), o);
   REQUIRE(m.ok());
   CHECK(m->report.count(RepairKind::ClosedPassage) == 0);

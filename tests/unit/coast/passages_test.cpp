@@ -50,7 +50,7 @@ ImportOptions pass_options(double min_width) {
   ImportOptions o;
   o.gamma = testing::constant_accuracy(300);
   o.region = LonLatBox{-1, 1, -1, 1};
-  o.min_channel_width = min_width;
+  o.passages.min_width = min_width;
   return o;
 }
 
@@ -221,7 +221,7 @@ TEST_CASE("passages: several inlets of one coast are closed, a wider one stays o
 TEST_CASE("passages: KeepPassages fills the inlets and keeps the canal and the strait open") {
   auto keep = [](double w) {
     ImportOptions o = pass_options(w);
-    o.keep_passages = true;
+    o.passages.keep_passages = true;
     return o;
   };
   // The canal between two seas: one sea, the canal's coast kept.
@@ -257,7 +257,7 @@ TEST_CASE("passages: KeepPassages fills the inlets and keeps the canal and the s
 
 TEST_CASE("passages: a dam by hand across the canal makes two seas; one on land is an error") {
   ImportOptions o = pass_options(0);
-  o.dams = {{{0, -0.5}, {0, 0.5}}};
+  o.passages.dams = {{{0, -0.5}, {0, 0.5}}};
   auto m = build_coast_model(pass_canal(kPassW), o);
   if (!m.ok()) MESSAGE(m.error().to_string());
   REQUIRE(m.ok());
@@ -266,7 +266,7 @@ TEST_CASE("passages: a dam by hand across the canal makes two seas; one on land 
   CHECK(m->report.count(RepairKind::DamPlaced) == 1);
   CHECK(pass_sea_of(*m, {-0.6, 0.5}) != pass_sea_of(*m, {0.6, 0.5}));
 
-  o.dams = {{{0, -0.5}, {0, -0.3}}};   // inside the south wall
+  o.passages.dams = {{{0, -0.5}, {0, -0.3}}};   // inside the south wall
   auto bad = build_coast_model(pass_canal(kPassW), o);
   REQUIRE_FALSE(bad.ok());
   CHECK(bad.error().option == "Dams");
@@ -292,7 +292,7 @@ TEST_CASE("passages: SeaAt keeps the sea holding the point; a point on land name
 
 TEST_CASE("passages: KeepOpen keeps the canal open whatever MinChannelWidth, reported with its width") {
   ImportOptions o = pass_options(1500);
-  o.keep_open = {{0.1, 0}};   // in the canal, off its middle
+  o.passages.keep_open = {{0.1, 0}};   // in the canal, off its middle
   auto m = build_coast_model(pass_canal(kPassW), o);
   if (!m.ok()) MESSAGE(m.error().to_string());
   REQUIRE(m.ok());
@@ -314,7 +314,7 @@ TEST_CASE("passages: KeepOpen keeps a strait between two islands open; the one e
   c.rings.push_back(pass_ring({{-0.5, -0.3}, {-kPassW / 2, -0.3}, {-kPassW / 2, 0.3}, {-0.5, 0.3}}, 0));
   c.rings.push_back(pass_ring({{kPassW / 2, -0.3}, {0.5, -0.3}, {0.5, 0.3}, {kPassW / 2, 0.3}}, 1));
   ImportOptions o = pass_options(1500);
-  o.keep_open = {{0, 0.2}};
+  o.passages.keep_open = {{0, 0.2}};
   auto m = build_coast_model(c, o);
   REQUIRE(m.ok());
   pass_check_clean(*m);
@@ -326,14 +326,14 @@ TEST_CASE("passages: KeepOpen keeps a strait between two islands open; the one e
 
 TEST_CASE("passages: a KeepOpen point on land, or with a dam across its passage, is an error") {
   ImportOptions o = pass_options(1500);
-  o.keep_open = {{0, 0.5}};   // in the north wall
+  o.passages.keep_open = {{0, 0.5}};   // in the north wall
   auto land = build_coast_model(pass_canal(kPassW), o);
   REQUIRE_FALSE(land.ok());
   CHECK(land.error().option == "KeepOpen");
   CHECK(land.error().message.find("lies on land") != std::string::npos);
 
-  o.keep_open = {{0, 0}};
-  o.dams = {{{0.05, -0.5}, {0.05, 0.5}}};   // across the canal near the point
+  o.passages.keep_open = {{0, 0}};
+  o.passages.dams = {{{0.05, -0.5}, {0.05, 0.5}}};   // across the canal near the point
   auto dam = build_coast_model(pass_canal(kPassW), o);
   REQUIRE_FALSE(dam.ok());
   CHECK(dam.error().option == "KeepOpen");
@@ -559,7 +559,7 @@ TEST_CASE("passages: a dam at a lagoon's mouth makes no corner sharper than the 
   const Coastline c = spit_lagoon();
   ImportOptions o = pass_options(2000);
   o.gamma = testing::constant_accuracy(300);   // every point kept, as the bound left them
-  o.deviation_factor = 0;                      // and no more: the passages see these points
+  o.deviation.factor = 0;                      // and no more: the passages see these points
   auto m = build_coast_model(c, o);
   if (!m.ok()) MESSAGE(m.error().to_string());
   REQUIRE(m.ok());

@@ -40,7 +40,7 @@ TEST_CASE("repair: a loop crossing itself in the source loses its twisted sliver
   o.gamma = sm::testing::constant_accuracy(10);
   // The control points as coarsening leaves them (the deviation bound would split the
   // data's long straight segments at the corners): the repair is what is tested.
-  o.deviation_factor = 0;
+  o.deviation.factor = 0;
   auto m = build_coast_model(std::move(c), o);
   REQUIRE_MESSAGE(m.ok(), (m.ok() ? "" : m.error().to_string()));
   REQUIRE(m->report.count(RepairKind::CutSliver) == 1);
@@ -82,14 +82,14 @@ TEST_CASE("repair: a strait narrower than gamma is listed, or closed on request"
   o.gamma = sm::testing::constant_accuracy(100);
   // The control points as coarsening leaves them (the deviation bound would split the
   // data's long straight segments at the corners): the repair is what is tested.
-  o.deviation_factor = 0;
+  o.deviation.factor = 0;
   auto open = build_coast_model(with_ocean({a, b}), o);
   REQUIRE(open.ok());
   REQUIRE(open->report.count(RepairKind::NarrowStrait) == 1);
   for (const auto& e : open->report.repair)
     if (e.kind == RepairKind::NarrowStrait) CHECK(e.value == doctest::Approx(71.6).epsilon(0.01));
   CHECK(open->surfaces[0].holes.size() == 2);
-  o.close_straits = true;
+  o.repair.close_straits = true;
   auto closed = build_coast_model(with_ocean({a, b}), o);
   REQUIRE(closed.ok());
   CHECK(closed->report.count(RepairKind::MergedIslands) == 1);
@@ -97,7 +97,7 @@ TEST_CASE("repair: a strait narrower than gamma is listed, or closed on request"
   REQUIRE(closed->surfaces[0].holes.size() == 1);
   const auto& merged = closed->curves[closed->loops[closed->surfaces[0].holes[0]].curves[0]];
   CHECK(merged.ll.size() == 8);
-  o.strait_factor = 0.5;   // 50 m: the 72 m strait stays open
+  o.repair.strait_factor = 0.5;   // 50 m: the 72 m strait stays open
   auto wide = build_coast_model(with_ocean({a, b}), o);
   REQUIRE(wide.ok());
   CHECK(wide->report.count(RepairKind::MergedIslands) == 0);
@@ -108,7 +108,7 @@ TEST_CASE("repair: closing straits at 15 km joins Anglesey to Great Britain acro
   REQUIRE(c.ok());
   ImportOptions o;
   o.gamma = sm::testing::constant_accuracy(15e3);
-  o.close_straits = true;
+  o.repair.close_straits = true;
   auto m = build_coast_model(std::move(*c), o);
   REQUIRE(m.ok());
   bool menai = false;
@@ -135,7 +135,7 @@ TEST_CASE("repair: random self-crossing shorelines end in a model or an error, n
     }
     ImportOptions o;
     o.gamma = sm::testing::constant_accuracy(1000 + 50e3 * rnd());
-    o.close_straits = trial % 2 == 1;
+    o.repair.close_straits = trial % 2 == 1;
     auto m = build_coast_model(with_ocean(islands), o);
     if (m.ok()) {
       ++ok;
@@ -155,7 +155,7 @@ TEST_CASE("repair: two islands overlapping in the source are united") {
   o.gamma = sm::testing::constant_accuracy(1000);
   // The control points as coarsening leaves them (the deviation bound would split the
   // data's long straight segments at the corners): the repair is what is tested.
-  o.deviation_factor = 0;
+  o.deviation.factor = 0;
   auto m = build_coast_model(with_ocean({a, b}), o);
   REQUIRE_MESSAGE(m.ok(), (m.ok() ? "" : m.error().to_string()));
   CHECK(m->report.count(RepairKind::UnitedIslands) == 1);

@@ -104,7 +104,7 @@ TEST_CASE("spline crossings: a thin U-shaped island whose arms' hulls overlap is
   o.gamma = [](std::span<const Vec3>, std::span<double> g) {
     for (double& x : g) x = 4000;
   };
-  o.check_splines = false;
+  o.repair.check_splines = false;
   auto plain = build_coast_model(c, o);
   REQUIRE_MESSAGE(plain.ok(), (plain.ok() ? "" : plain.error().to_string()));
   // The arms' span hulls overlap, yet the curves keep apart: nothing to repair.
@@ -112,7 +112,7 @@ TEST_CASE("spline crossings: a thin U-shaped island whose arms' hulls overlap is
   for (const auto& loop : plain->loops) sl.push_back({plain->curves[loop.curves[0]].uv, {}, true});
   REQUIRE_FALSE(find_hull_overlaps(sl).empty());
   REQUIRE(sampled_crossings(*plain).empty());
-  o.check_splines = true;
+  o.repair.check_splines = true;
   auto checked = build_coast_model(c, o);
   REQUIRE(checked.ok());
   CHECK(checked->report.count(RepairKind::SplineHull) == 0);
@@ -199,12 +199,12 @@ TEST_CASE("spline crossings: the import repairs a pair on original points by spl
   };
   // The curves as coarsening leaves them: the deviation bound's split points would pull
   // the L's spline back before the check does.
-  o.deviation_factor = 0;
-  o.check_splines = false;
+  o.deviation.factor = 0;
+  o.repair.check_splines = false;
   auto plain = build_coast_model(c, o);
   REQUIRE_MESSAGE(plain.ok(), (plain.ok() ? "" : plain.error().to_string()));
   REQUIRE_FALSE(sampled_crossings(*plain).empty());
-  o.check_splines = true;
+  o.repair.check_splines = true;
   auto checked = build_coast_model(c, o);
   REQUIRE(checked.ok());
   CHECK(checked->report.count(RepairKind::SplineHull) > 0);
@@ -213,7 +213,7 @@ TEST_CASE("spline crossings: the import repairs a pair on original points by spl
   CHECK(checked->report.points_out < plain->report.points_out + 40);
   CHECK(sampled_crossings(*checked).empty());
   // No repair rounds allowed: the crossing is reported with its place, not hidden.
-  o.max_repair_rounds = 0;
+  o.repair.max_rounds = 0;
   auto unrepaired = build_coast_model(c, o);
   REQUIRE(unrepaired.ok());
   REQUIRE(unrepaired->report.count(RepairKind::SplineMayCross) == 1);
@@ -248,12 +248,12 @@ TEST_CASE("spline crossings: real coastlines import with no two B-splines crossi
     o.gamma = gamma_of(k.gamma);
     // The curves as coarsening leaves them (the deviation bound's points put back also
     // take the Chilean fjords' crossing at 50 km away): what the check is for.
-    o.deviation_factor = 0;
-    o.check_splines = false;
+    o.deviation.factor = 0;
+    o.repair.check_splines = false;
     auto plain = build_coast_model(*data, o);
     REQUIRE(plain.ok());
     CHECK(sampled_crossings(*plain).empty() != k.crossed_before);
-    o.check_splines = true;
+    o.repair.check_splines = true;
     auto checked = build_coast_model(*data, o);
     REQUIRE(checked.ok());
     CHECK(sampled_crossings(*checked).empty());
