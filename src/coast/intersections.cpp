@@ -221,4 +221,47 @@ std::vector<NearMiss> find_near_misses(std::span<const std::vector<Vec2>> loops,
   return out;
 }
 
+std::vector<NearMiss> find_near_pairs(std::span<const std::vector<Vec2>> loops,
+                                      std::span<const std::vector<double>> width,
+                                      std::span<const std::vector<char>> active, std::size_t* searched) {
+  std::vector<NearMiss> out;
+  std::vector<Seg> on, off;   // active and inactive segments, each in (loop, index) order
+  for (const Seg& s : make_segments(loops, width)) (active[s.loop][s.index] ? on : off).push_back(s);
+  if (searched) *searched = on.size();
+  if (on.empty()) return out;
+  // The pair record as find_near_misses makes it: s before t in (loop, index) order.
+  auto test = [&](const Seg& s, const Seg& t) {
+    const double w = std::min(width[s.loop][s.index], width[t.loop][t.index]);
+    const double d = std::min({seg_distance_point(s.a, s.b, t.a), seg_distance_point(s.a, s.b, t.b),
+                               seg_distance_point(t.a, t.b, s.a), seg_distance_point(t.a, t.b, s.b)});
+    if (d >= w || d == 0) return;
+    out.push_back({s.loop, s.index, t.loop, t.index, d, 0.5 * (s.a + t.a)});
+  };
+  // The grid holds only the active segments: the pairs of two active ones are found as by
+  // find_near_misses, and each inactive one looks in the cells its box covers. A pair is
+  // taken only in the cell of the lower corner of the two boxes' overlap, which lies in
+  // both boxes and so in a cell each of them covers: once, whatever the cell size.
+  const Grid g = make_grid(on);
+  const auto cells = bin(on, g);
+  for_each_candidate(on, g, nullptr, [&](const Seg& s, const Seg& t) { test(s, t); });
+  for (const Seg& t : off)
+    for (std::int64_t y = g.iy(t.lo.y); y <= g.iy(t.hi.y); ++y)
+      for (std::int64_t x = g.ix(t.lo.x); x <= g.ix(t.hi.x); ++x) {
+        const std::int64_t cell = y * g.nx + x;
+        auto it = std::lower_bound(cells.begin(), cells.end(), std::pair<std::int64_t, std::uint32_t>{cell, 0});
+        for (; it != cells.end() && it->first == cell; ++it) {
+          const Seg& s = on[it->second];
+          if (s.lo.x > t.hi.x || t.lo.x > s.hi.x || s.lo.y > t.hi.y || t.lo.y > s.hi.y) continue;
+          const Vec2 corner{std::max(s.lo.x, t.lo.x), std::max(s.lo.y, t.lo.y)};
+          if (g.iy(corner.y) * g.nx + g.ix(corner.x) != cell) continue;   // taken in another cell
+          if (std::pair(s.loop, s.index) < std::pair(t.loop, t.index))
+            test(s, t);
+          else
+            test(t, s);
+        }
+      }
+  sort_place_pairs(out);
+  return out;
+}
+
 }  // namespace sm::coast

@@ -45,4 +45,15 @@ struct NearMiss {
 std::vector<NearMiss> find_near_misses(std::span<const std::vector<Vec2>> loops,
                                        std::span<const std::vector<double>> width);
 
+/// The pairs find_near_misses tests (boxes padded by the widths meeting, distance below the
+/// smaller width and not 0), of which at least one segment is active (active[l][s]), with
+/// no pair of one loop left out for being near along it: a caller that keeps the pairs of
+/// unchanged segments from one search to the next asks only about the segments that
+/// changed, and decides about pairs on one loop with the loop as it is then. (loop_a,
+/// seg_a) < (loop_b, seg_b); sorted as find_near_misses; `searched` (when given) is set to
+/// the number of segments entered in the grid (the active ones).
+std::vector<NearMiss> find_near_pairs(std::span<const std::vector<Vec2>> loops,
+                                      std::span<const std::vector<double>> width,
+                                      std::span<const std::vector<char>> active, std::size_t* searched = nullptr);
+
 }  // namespace sm::coast

@@ -20,6 +20,7 @@
 #include "coast/coarsen.h"
 #include "coast/coastline_option_id.h"
 #include "coast/intersections.h"
+#include "coast/place_pairs.h"
 #include "coast/segment_grid.h"
 #include "exact/ring.h"
 #include "exact/predicates.h"
@@ -123,6 +124,9 @@ struct FlatLoop {
   bool hole = true;
   bool dead = false;
   bool changed = false;
+  // Its polygon changed since the last closing round took it (made, or points put back or
+  // inserted): that round's polygon and widths (Work::polys) no longer hold.
+  bool fresh = true;
   // The polygon's orientation where make_loop found it (fate_of asks again otherwise): a
   // cut of a continent made its polygon three times per new loop.
   std::optional<Sign> orientation;
@@ -170,6 +174,21 @@ struct Work {
   std::vector<FlatLoop> flat = {};
   std::vector<DamInfo> dams = {};
   std::vector<Gate> gates = {};
+  // What a closing round keeps for the next (close_round). A round cuts a few places and
+  // puts a few points back; measuring every ring's polygon and searching every segment pair
+  // again each round made passage closing grow with rounds x coast (the coast bound's points
+  // put back add rounds). Per loop (by its number in `flat`, which only grows): the polygon
+  // and widths at the round's start, made again only for a loop that is `fresh`. Per node
+  // (sized when the first round starts, freed with the rounds): the end node of the kept
+  // segment it started at the last round's start (kNoNode: none), so a segment is the same
+  // as then when its start node has the same end (a node's point never moves), and its
+  // number in this round's list of segments. `near`: the last round's near pairs (before the
+  // one-loop test), by their segments' start nodes.
+  std::vector<std::vector<Vec2>> polys = {};
+  std::vector<std::vector<double>> width = {};
+  std::vector<std::uint32_t> seg_end = {};
+  std::vector<std::uint32_t> seg_here = {};
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> near = {};
   bool gate_closed(Vec2 a0, Vec2 b0) const {
     for (const Gate& g : gates)
       if (g.closes(a0, b0)) return true;
@@ -648,6 +667,7 @@ void reread_uv(const Work& w, FlatLoop& f) {
 
 void rekeep(Work& w, FlatLoop& f, std::uint32_t from, std::uint32_t to) {
   f.orientation.reset();
+  f.fresh = true;
   const std::size_t k = f.kept.size();
   const std::size_t i = static_cast<std::size_t>(std::find(f.kept.begin(), f.kept.end(), from) - f.kept.begin());
   const std::size_t t = static_cast<std::size_t>(std::find(f.kept.begin(), f.kept.end(), to) - f.kept.begin());
@@ -678,16 +698,93 @@ void rekeep(Work& w, FlatLoop& f, std::uint32_t from, std::uint32_t to) {
 }
 
 // One round of automatic closures: the narrowest clean cut of each loop. False: none left.
+// The near misses of the round-start polygons w.polys, as find_near_misses gives them: the
+// pairs of two segments unchanged since the last round are that round's (the test reads
+// only their points and widths), and only the segments new since then are searched.
+std::vector<NearMiss> round_near_misses(Work& w) {
+  constexpr std::uint32_t kNoNode = 0xFFFFFFFFu;
+  if (w.seg_end.empty()) {
+    w.seg_end.assign(w.nodes.size(), kNoNode);
+    w.seg_here.assign(w.nodes.size(), 0);
+  }
+  SM_ASSERT(w.seg_end.size() == w.nodes.size(), "close_passages: points added between closing rounds (passages.cpp, round_near_misses)");
+  std::vector<std::vector<char>> active(w.flat.size());
+  std::vector<std::uint32_t> start;                          // this round's segments: start node,
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> at;   // loop and position,
+  std::vector<char> same;                                    // whether unchanged since the last round
+  for (std::uint32_t l = 0; l < w.flat.size(); ++l) {
+    const FlatLoop& f = w.flat[l];
+    if (f.dead) continue;
+    const std::size_t k = f.kept.size();
+    active[l].resize(k);
+    for (std::size_t j = 0; j < k; ++j) {
+      const std::uint32_t n = f.kept[j], m = f.kept[j + 1 < k ? j + 1 : 0];
+      const bool unchanged = w.seg_end[n] == m;
+      active[l][j] = !unchanged;
+      w.seg_end[n] = m;
+      w.seg_here[n] = static_cast<std::uint32_t>(start.size());
+      start.push_back(n);
+      at.push_back({l, static_cast<std::uint32_t>(j)});
+      same.push_back(unchanged);
+    }
+  }
+  std::size_t searched = 0;
+  std::vector<NearMiss> near = find_near_pairs(w.polys, w.width, active, &searched);
+  w.stats.near_searched += searched;
+  // A node is this round's start of segment s only when start[s] names it (seg_here is
+  // not cleared for nodes that left the live loops).
+  auto where = [&](std::uint32_t n) -> std::optional<std::uint32_t> {
+    const std::uint32_t s = w.seg_here[n];
+    if (s < start.size() && start[s] == n && same[s]) return s;
+    return std::nullopt;
+  };
+  for (const auto& [na, nb] : w.near) {
+    const auto sa = where(na), sb = where(nb);
+    if (!sa || !sb) continue;
+    NearMiss m{at[*sa].first, at[*sa].second, at[*sb].first, at[*sb].second, 0, {}};
+    order_places(m);
+    near.push_back(m);
+    ++w.stats.near_kept;
+  }
+  w.near.clear();
+  for (const NearMiss& m : near) w.near.push_back({w.flat[m.loop_a].kept[m.seg_a], w.flat[m.loop_b].kept[m.seg_b]});
+  // Within one loop only far-apart parts count: at least 3 segments away both ways (as
+  // find_near_misses), with the loop as it is now.
+  std::erase_if(near, [&](const NearMiss& m) {
+    if (m.loop_a != m.loop_b) return false;
+    const std::uint32_t n = static_cast<std::uint32_t>(w.polys[m.loop_a].size());
+    const std::uint32_t d = m.seg_a > m.seg_b ? m.seg_a - m.seg_b : m.seg_b - m.seg_a;
+    return std::min(d, n - d) < 3;
+  });
+  sort_place_pairs(near);
+  return near;
+}
+
+// One round of automatic closures: the narrowest clean cut of each loop. False: none left.
 bool close_round(Work& w, std::vector<RepairEntry>& log) {
   const double W = w.opt.min_width;
   const double R = w.opt.radius;
-  std::vector<std::vector<Vec2>> polys(w.flat.size());
-  std::vector<std::vector<double>> width(w.flat.size());
+  // The round-start polygons and widths: those of loops unchanged since the last round kept.
+  w.polys.resize(w.flat.size());
+  w.width.resize(w.flat.size());
   for (std::size_t l = 0; l < w.flat.size(); ++l) {
-    if (w.flat[l].dead) continue;
-    polys[l] = polygon(w.flat[l]);
-    for (Vec2 p : polys[l]) width[l].push_back(1.01 * W / lambda_m(p, R));
+    FlatLoop& f = w.flat[l];
+    if (f.dead) {
+      std::vector<Vec2>().swap(w.polys[l]);
+      std::vector<double>().swap(w.width[l]);
+      continue;
+    }
+    if (!f.fresh) {
+      ++w.stats.polygons_kept;
+      continue;
+    }
+    w.polys[l] = polygon(f);
+    w.width[l].clear();
+    for (Vec2 p : w.polys[l]) w.width[l].push_back(1.01 * W / lambda_m(p, R));
+    f.fresh = false;
+    ++w.stats.polygons_made;
   }
+  const std::vector<std::vector<Vec2>>& polys = w.polys;
   // Cumulative metres round a loop, made when a candidate on one loop asks for them. The
   // entries of loops a cut has killed since are dropped first: each cut of a continent
   // makes a new loop of nearly its size, and keeping every one of them held 8 bytes per
@@ -722,7 +819,7 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
     return std::min(inner, outer) > kHalfPi * d;
   };
   std::vector<Candidate> cands;
-  for (const NearMiss& m : find_near_misses(polys, width)) {
+  for (const NearMiss& m : round_near_misses(w)) {
     const auto& pa = polys[m.loop_a];
     const auto& pb = polys[m.loop_b];
     const Vec2 a0 = pa[m.seg_a], a1 = pa[(m.seg_a + 1) % pa.size()];
@@ -901,6 +998,7 @@ std::uint32_t insert_on(Work& w, FlatLoop& f, std::size_t j, Vec2 x) {
   f.metres.push_back(std::numeric_limits<double>::quiet_NaN());
   f.head = b;
   f.changed = true;
+  f.fresh = true;
   f.orientation.reset();
   w.stats.kept_visits += k;
   return at;
@@ -1228,6 +1326,11 @@ Result<bool> close_passages(std::vector<WorkCurve>& curves, std::vector<WorkLoop
     std::vector<Vec2>().swap(f.uv);
     std::vector<double>().swap(f.metres);
   }
+  std::vector<std::vector<Vec2>>().swap(w.polys);
+  std::vector<std::vector<double>>().swap(w.width);
+  std::vector<std::uint32_t>().swap(w.seg_end);
+  std::vector<std::uint32_t>().swap(w.seg_here);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>>().swap(w.near);
   // The loops to rebuild (changed in place, or made by cuts) and the curves of the loops
   // cut or rebuilt, whose points the rebuilt curves take over. Each such curve is freed as
   // soon as the last ring reading it is rebuilt (rings read the curves' points until then):

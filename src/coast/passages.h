@@ -53,6 +53,11 @@ struct PassageStats {
   std::size_t cuts = 0;          // 2-opt moves made (closures, dead ends tried not counted)
   std::size_t node_visits = 0;   // loop points read or linked one by one (all points, kept or not)
   std::size_t kept_visits = 0;   // kept points copied or indexed by cuts, dead-end tests and follows
+  // Closing rounds keep what did not change since the round before (passages.cpp, close_round):
+  std::size_t polygons_made = 0;   // round-start polygons and widths made (a loop new or changed)
+  std::size_t polygons_kept = 0;   // those taken from the round before (the loop unchanged)
+  std::size_t near_searched = 0;   // segments searched for near misses (new since the round before)
+  std::size_t near_kept = 0;       // near pairs taken from the round before (both segments unchanged)
 };
 
 /// Closes passages and places dams in place (new loops appended, replaced loops marked

@@ -4,6 +4,8 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 #include <set>
 #include <tuple>
@@ -124,4 +126,70 @@ TEST_CASE("intersections: an active mask reports exactly the hits of the active 
   for (const auto& h : all) want += active[h.loop_a] || active[h.loop_b];
   CHECK(some.size() == want);
   for (const auto& h : some) CHECK((active[h.loop_a] || active[h.loop_b]));
+}
+
+TEST_CASE("intersections: near pairs of the active segments are those of all pairs with one active") {
+  // Wavy rings close together (many near pairs, some within one ring), segment widths
+  // varying; the oracle: the full search (every segment active), which with the one-loop
+  // filter is find_near_misses.
+  std::mt19937 rng(4242);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<std::vector<Vec2>> loops;
+  std::vector<std::vector<double>> width;
+  for (int l = 0; l < 10; ++l) {
+    const Vec2 c{u(rng), u(rng)};
+    std::vector<Vec2> p;
+    std::vector<double> w;
+    for (int i = 0; i < 40; ++i) {
+      const double a = 6.283185307179586 * i / 40;
+      const double r = 0.12 * (1 + 0.3 * std::sin(7 * a) + 0.2 * u(rng));
+      p.push_back({c.x + r * std::cos(a), c.y + r * std::sin(a)});
+      w.push_back(0.01 + 0.05 * u(rng));
+    }
+    loops.push_back(p);
+    width.push_back(w);
+  }
+  using Key = std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t>;
+  auto keys = [](const std::vector<NearMiss>& v) {
+    std::vector<Key> k;
+    for (const NearMiss& m : v) k.emplace_back(m.loop_a, m.seg_a, m.loop_b, m.seg_b);
+    return k;
+  };
+  std::vector<std::vector<char>> every;
+  for (const auto& p : loops) every.emplace_back(p.size(), 1);
+  std::size_t searched = 0;
+  const auto all = find_near_pairs(loops, width, every, &searched);
+  CHECK(searched == 400);
+  // With the one-loop filter: find_near_misses, in the same order.
+  std::vector<Key> filtered;
+  for (const NearMiss& m : all) {
+    const std::uint32_t d = m.seg_a > m.seg_b ? m.seg_a - m.seg_b : m.seg_b - m.seg_a;
+    if (m.loop_a != m.loop_b || std::min(d, 40 - d) >= 3) filtered.emplace_back(m.loop_a, m.seg_a, m.loop_b, m.seg_b);
+  }
+  CHECK(filtered == keys(find_near_misses(loops, width)));
+  REQUIRE(all.size() > 50);
+  // Random active sets, from one segment to half of them: exactly the pairs with one active.
+  for (int trial = 0; trial < 20; ++trial) {
+    std::vector<std::vector<char>> active;
+    const double frac = trial == 0 ? 0.0 : 0.5 * trial / 20;
+    for (const auto& p : loops) {
+      std::vector<char> a(p.size());
+      for (char& x : a) x = u(rng) < frac;
+      active.push_back(a);
+    }
+    if (trial == 0) active[4][17] = 1;
+    const auto some = find_near_pairs(loops, width, active, &searched);
+    std::vector<Key> want;
+    for (const NearMiss& m : all)
+      if (active[m.loop_a][m.seg_a] || active[m.loop_b][m.seg_b]) want.emplace_back(m.loop_a, m.seg_a, m.loop_b, m.seg_b);
+    CHECK(keys(some) == want);
+    std::size_t on = 0;
+    for (const auto& a : active) on += static_cast<std::size_t>(std::count(a.begin(), a.end(), 1));
+    CHECK(searched == on);
+    for (std::size_t i = 0; i < some.size(); ++i) {
+      const auto it = std::find_if(all.begin(), all.end(), [&](const NearMiss& m) { return keys({m}) == keys({some[i]}); });
+      REQUIRE(it != all.end());
+      CHECK(it->distance == some[i].distance);
+    }
+  }
 }

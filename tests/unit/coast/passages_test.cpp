@@ -579,3 +579,55 @@ TEST_CASE("passages: a dam at a lagoon's mouth makes no corner sharper than the 
   }
   CHECK(dams >= 2);
 }
+
+TEST_CASE("passages: a closing round keeps the polygons and near pairs of what did not change") {
+  // The sea of comb_loop with one narrow inlet, and two islands in it across a strait
+  // narrower than the width (kept open: KeepPassages = 1). The first round measures the
+  // three loops and searches every segment; it fills the inlet, which makes a new sea
+  // loop. The next round measures that loop alone, takes the islands' polygons from the
+  // round before, searches only the segments the cut made (the dam) and takes the
+  // strait's near pairs as they were.
+  auto [curves, loops] = comb_loop({0.3}, -0.5);
+  const geo::PolarSphere ps({0, 0, 0}, 1.0);
+  std::size_t segments = curves[0].keep.size();
+  auto island = [&](double lon0, double lon1) {   // clockwise: water on the left
+    WorkCurve c;
+    c.periodic = true;
+    for (geo::LonLat p : {geo::LonLat{lon0, 0.3}, {lon0, 0.4}, {lon1, 0.4}, {lon1, 0.3}}) {   // each side one segment
+      c.keep.push_back(static_cast<std::uint32_t>(c.full.size()));
+      c.full.push_back(p);
+      c.uv.push_back(ps.param_from_lonlat(p));
+      c.gamma.push_back(300);
+    }
+    segments += c.keep.size();
+    WorkLoop l;
+    l.curves = {static_cast<std::uint32_t>(curves.size())};
+    l.hole = true;
+    curves.push_back(std::move(c));
+    loops.push_back(std::move(l));
+  };
+  island(-0.2, -0.1);
+  island(-0.1 + kPassW, 0.0);
+  PassageOptions o;
+  o.min_width = 1500;
+  o.keep_passages = true;
+  std::vector<RepairEntry> log;
+  PassageStats stats;
+  auto changed = close_passages(curves, loops, o, log, &stats);
+  REQUIRE(changed.ok());
+  CHECK(*changed);
+  CHECK(stats.cuts >= 1);
+  // Made: the three loops, then the new sea; kept: the two islands in every later round.
+  CHECK(stats.polygons_made >= 4);
+  CHECK(stats.polygons_kept >= 2);
+  CHECK(stats.polygons_kept % 2 == 0);
+  // Every segment once, then only the few a cut made.
+  CHECK(stats.near_searched >= segments);
+  CHECK(stats.near_searched < segments + 10);
+  // The strait's pair (facing sides of the two islands) taken from the round before.
+  CHECK(stats.near_kept >= 1);
+  // The strait is kept open: both islands live on, unchanged.
+  std::size_t islands = 0;
+  for (std::size_t l = 1; l < 3; ++l) islands += !loops[l].dead;
+  CHECK(islands == 2);
+}
