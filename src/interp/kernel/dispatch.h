@@ -25,6 +25,8 @@ void exec_geometry_stmt(Interpreter& in, lang::StmtId s);
 /// `Transfinite Curve|Surface ...;`, `Recombine Surface{...};` (mesh_constraints.cpp): the
 /// kernel state's mesh constraints.
 void exec_mesh_constraint_stmt(Interpreter& in, lang::StmtId s);
+/// `Compound Curve|Surface{...};` (compound.cpp): a group meshed as one.
+void exec_compound_stmt(Interpreter& in, lang::StmtId s);
 /// `SetFactory("Built-in");` (geometry.cpp): the only kernel there is.
 void exec_set_factory_stmt(Interpreter& in, lang::StmtId s);
 /// `Coherence;` / `Coherence Point{...}` (geometry.cpp); `Coherence Mesh;` goes to exec_mesh_stmt.
