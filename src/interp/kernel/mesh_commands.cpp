@@ -663,6 +663,10 @@ bool exec_mesh_command(Interpreter& in, StmtId id, std::string_view command) {
       exec_save(in, id, *c);
       return true;
     }
+    if (command == "Merge" && c->arg.valid()) {
+      exec_merge(in, id, *c);   // merge.cpp
+      return true;
+    }
     if (command == "PartitionMesh" && c->arg.valid()) {
       exec_partition_mesh(in, id, *c);
       return true;
