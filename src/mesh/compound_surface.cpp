@@ -4,6 +4,7 @@
 #include "mesh/compound_surface.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <map>
@@ -273,6 +274,30 @@ void classify_compound_elements(const geo::Model& model, const CompoundSurfacePl
     }
     for (SurfaceMesh& p : parts) mesh.surfaces[p.tag] = std::move(p);
   }
+}
+
+void name_compound_unions(const CompoundSurfacePlan& plan, std::string& text) {
+  for (const CompoundSurfacePlan::Group& g : plan.groups) {
+    const std::string word = fmt::format("surface {}", g.union_tag);
+    // "surface U" only as a whole word: not the start of "surface U0".
+    for (std::size_t at = text.find(word); at != std::string::npos; at = text.find(word, at)) {
+      const std::size_t end = at + word.size();
+      if (end < text.size() && std::isdigit(static_cast<unsigned char>(text[end]))) {
+        at = end;
+        continue;
+      }
+      const std::string by = fmt::format("the union of Compound Surface{{{}}}", tag_list(g.surfaces));
+      text.replace(at, word.size(), by);
+      at += by.size();
+    }
+  }
+}
+
+void name_compound_unions(const CompoundSurfacePlan& plan, MeshError& error) {
+  for (const CompoundSurfacePlan::Group& g : plan.groups)
+    for (MeshEntity& e : error.entities)
+      if (e.dim == 2 && e.tag == g.union_tag) e.tag = g.surfaces[0];
+  name_compound_unions(plan, error.message);
 }
 
 }  // namespace sm

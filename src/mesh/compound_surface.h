@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "geo/model.h"
+#include "mesh/mesh_error.h"
 #include "mesh/model_mesh.h"
 
 namespace sm {
@@ -41,5 +42,12 @@ CompoundSurfacePlan plan_compound_surfaces(const geo::Model& model, const std::v
 /// nodes classified on the original surface holding the element's centroid (the node),
 /// the union's own entry removed, so that `mesh` matches the script's model.
 void classify_compound_elements(const geo::Model& model, const CompoundSurfacePlan& plan, ModelMesh& mesh);
+
+/// An error of the mesher on a union speaks of the script's surfaces: "surface U" in its
+/// message becomes "the union of Compound Surface{a, b}", and the entity U the first of
+/// them (whose statement the interpreter can show).
+void name_compound_unions(const CompoundSurfacePlan& plan, MeshError& error);
+/// The same in a warning's text.
+void name_compound_unions(const CompoundSurfacePlan& plan, std::string& text);
 
 }  // namespace sm

@@ -373,6 +373,7 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   if (dim >= 2)
     opt1.coarse_check = [&](const ModelMesh& coarse) {
       budget = check_face_budgets(meshed, coarse, opt2).error;
+      name_compound_unions(compounds, budget);
       return budget.ok();
     };
   std::optional<StageScope> stage_1d(std::in_place, &k.clock, nullptr, "1D");
@@ -412,6 +413,7 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   std::optional<StageScope> stage_2d(std::in_place, &k.clock, nullptr, "2D");
   Mesh2dResult r2 = mesh_surfaces(meshed, *mesh, opt2);
   stage_2d.reset();
+  name_compound_unions(compounds, r2.error);
   if (!r2.ok()) return failure_of(k, r2.error);
   classify_compound_elements(k.model, compounds, *mesh);
   for (const CompoundSurfacePlan::Group& g : compounds.groups)   // the union's target size on each original
@@ -423,6 +425,8 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   for (const StageTime& t : stage_times(r2.stats)) add_stage_time(k.mesh2d_parts, t);
   // As diagnostics, so that they print in order with Printf and the progress display
   // (the front end drops them below General.Verbosity 2).
+  for (std::string& w : r2.warnings) name_compound_unions(compounds, w);
+  for (std::string& w : r2.quality_warnings) name_compound_unions(compounds, w);
   for (const std::string& w : r2.warnings) in.diags().report_message(where, Diag::MeshWarning, w);
   for (const std::string& w : r2.quality_warnings) in.diags().report_message(where, Diag::MeshQualityFloor, w);
   // Statistics against the size each face's mesher aimed at (with the extension from

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <set>
 
+#include <fmt/format.h>
+
 #include "mesh/mesh1d.h"
 #include "mesh/mesh2d.h"
 
@@ -173,4 +175,19 @@ TEST_CASE("compound: surfaces not in one plane are meshed one by one") {
   const CompoundSurfacePlan one = plan_compound_surfaces(flat, {{1, 99}});
   CHECK(one.groups.empty());
   CHECK(one.warnings.empty());
+}
+
+TEST_CASE("compound: the mesher's words about a union name the script's surfaces") {
+  geo::Model m;
+  add_two_squares(m, 0.5);
+  const CompoundSurfacePlan plan = plan_compound_surfaces(m, {{1, 2}});
+  REQUIRE(plan.groups.size() == 1);
+  const int u = plan.groups[0].union_tag;
+  MeshError e;
+  e.kind = MeshErrorKind::Failed;
+  e.add_entity(2, u);
+  e.message = fmt::format("surface {}: no progress; surface {}0 untouched", u, u);
+  name_compound_unions(plan, e);
+  CHECK(e.tag(0) == 1);
+  CHECK(e.message == fmt::format("the union of Compound Surface{{1, 2}}: no progress; surface {}0 untouched", u));
 }
