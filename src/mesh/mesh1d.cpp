@@ -18,6 +18,7 @@
 #include "base/parallel.h"
 #include "exact/predicates.h"
 #include "mesh/boundary_recovery.h"
+#include "mesh/compound_curve.h"
 #include "mesh/transfinite_curve.h"
 
 namespace sm {
@@ -374,6 +375,8 @@ struct CurvePlan {
   // Boundary-layer points from the begin / end vertex (distances along the line), when
   // the curve leaves a layer's end point (Mesh1dOptions::boundary_layers).
   std::vector<double> layer_begin, layer_end;
+  /// In a `Compound Curve`: its nodes' parameters, shared out of the chain's (plan_compounds).
+  std::optional<std::vector<double>> compound_ts;
 };
 
 // The layer points of curve cp at its ends (Gmsh 4.8.4, meshGEdge.cpp: a curve not in a
@@ -675,9 +678,10 @@ void place_plan(const geo::Model& model, const Mesh1dOptions& opt, double bbox, 
   const int min_segs = cp.min_segs;
   auto size = curve_size(opt, bbox, cp);
   const bool layered = !cp.layer_begin.empty() || !cp.layer_end.empty();
-  std::vector<double> ts = cp.transfinite ? transfinite_parameters(shape, *cp.transfinite)
-                           : layered      ? layered_parameters(cp, norm(model.vertex(mc.end)->xyz - vb->xyz))
-                                          : place_n_nodes(cp.prim, static_cast<int>(cp.nodes));
+  std::vector<double> ts = cp.compound_ts  ? std::move(*cp.compound_ts)
+                           : cp.transfinite ? transfinite_parameters(shape, *cp.transfinite)
+                           : layered        ? layered_parameters(cp, norm(model.vertex(mc.end)->xyz - vb->xyz))
+                                            : place_n_nodes(cp.prim, static_cast<int>(cp.nodes));
   cp.prim = {};  // not needed any more: its samples are the largest part of a plan
   // Gmsh's filterPoints: an interior node closer than 0.3 h to the previous node kept
   // (noisy curves, tight turns) is dropped, unless that leaves fewer than the minimum.
@@ -686,7 +690,7 @@ void place_plan(const geo::Model& model, const Mesh1dOptions& opt, double bbox, 
   std::vector<Vec3> x;  // the nodes' positions while ts is unfiltered
   // No filter on a transfinite curve (its count is the script's) nor on a forced odd
   // count (dropping a node would make it even again).
-  if (ts.size() > 2 && !cp.transfinite && !cp.odd && !layered) {
+  if (ts.size() > 2 && !cp.transfinite && !cp.odd && !layered && !cp.compound_ts) {
     const std::size_t n = ts.size();
     x.resize(n);
     x[0] = cp.moves_vertex ? shape.point(0) : vb->xyz;
@@ -733,6 +737,44 @@ void place_plan(const geo::Model& model, const Mesh1dOptions& opt, double bbox, 
     if (on_surface) cp.uv[i] = shape.eval_uv(ts[i + 1]).p;
   }
   cp.ts = std::move(ts);
+}
+
+// `Compound Curve{...}` (compound_curve.h): the chain's nodes at equal increments of the
+// sum of its curves' integrals, each curve's share turned into its own parameters. A
+// group that is not one chain, or holds a transfinite, collapsed, layered or odd-count
+// curve (those counts are the script's or the recombination's), is meshed curve by curve.
+void plan_compounds(const geo::Model& model, const Mesh1dOptions& opt, std::vector<CurvePlan>& plans) {
+  if (!opt.constraints) return;
+  for (const std::vector<int>& group : opt.constraints->compound_curves) {
+    const std::vector<CompoundLink> chain = chain_compound(model, group);
+    if (chain.size() < 2) continue;
+    std::vector<CurvePlan*> members;
+    std::vector<double> totals;
+    for (const CompoundLink& l : chain) {
+      const auto it = std::lower_bound(plans.begin(), plans.end(), l.curve,
+                                       [](const CurvePlan& p, int tag) { return p.tag < tag; });
+      if (it == plans.end() || it->tag != l.curve) break;
+      CurvePlan& cp = *it;
+      if (cp.transfinite || cp.collapsed || cp.odd || cp.compound_ts || !cp.error.ok() || cp.thrown ||
+          !cp.layer_begin.empty() || !cp.layer_end.empty() || cp.prim.a.empty())
+        break;
+      members.push_back(&cp);
+      totals.push_back(cp.prim.total());
+    }
+    if (members.size() != chain.size()) continue;
+    const std::vector<std::vector<double>> shares = compound_node_positions(totals);
+    for (std::size_t i = 0; i < members.size(); ++i) {
+      CurvePlan& cp = *members[i];
+      std::vector<double> ts{0.0};
+      for (double pos : shares[i]) ts.push_back(primitive_inverse(cp.prim, chain[i].reversed ? totals[i] - pos : pos));
+      ts.push_back(1.0);
+      std::sort(ts.begin(), ts.end());
+      // Strictly increasing, as a curve mesh's parameters must be.
+      ts.erase(std::unique(ts.begin(), ts.end()), ts.end());
+      cp.nodes = static_cast<double>(ts.size());
+      cp.compound_ts = std::move(ts);
+    }
+  }
 }
 
 // The placed nodes numbered into `mesh`, curve by curve in tag order (exceptions of the
@@ -869,6 +911,7 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
     res.error = make_error(MeshErrorKind::Stopped, 0, 0, "stopped before placing the 1D nodes");
     return res;
   }
+  plan_compounds(model, opt, plans);
   // The nodes of each curve (parameters and coordinates), in parallel; then numbered.
   parallel_for_chunks(threads, plans.size(), 1, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) try {

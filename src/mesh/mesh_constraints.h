@@ -43,10 +43,14 @@ struct MeshConstraints {
   RecombineAlgorithm algorithm = RecombineAlgorithm::Matching;
   /// `MeshAlgorithm Surface{s} = n;`: Gmsh's algorithm number of those surfaces.
   std::map<int, int> surface_algorithm;
+  /// `Compound Curve{...};` and `Compound Surface{...};`: each group meshed as one
+  /// (mesh/compound_curve.h, mesh/compound_surface.h), tags as written.
+  std::vector<std::vector<int>> compound_curves, compound_surfaces;
 
   bool recombines(int surface) const { return recombine_all || recombine.count(surface) > 0; }
   bool empty() const {
-    return curves.empty() && surfaces.empty() && recombine.empty() && !recombine_all && surface_algorithm.empty();
+    return curves.empty() && surfaces.empty() && recombine.empty() && !recombine_all && surface_algorithm.empty() &&
+           compound_curves.empty() && compound_surfaces.empty();
   }
 };
 

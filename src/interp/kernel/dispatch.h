@@ -25,6 +25,8 @@ void exec_geometry_stmt(Interpreter& in, lang::StmtId s);
 /// `Transfinite Curve|Surface ...;`, `Recombine Surface{...};` (mesh_constraints.cpp): the
 /// kernel state's mesh constraints.
 void exec_mesh_constraint_stmt(Interpreter& in, lang::StmtId s);
+/// `Compound Curve|Surface{...};` (compound.cpp): a group meshed as one.
+void exec_compound_stmt(Interpreter& in, lang::StmtId s);
 /// `SetFactory("Built-in");` (geometry.cpp): the only kernel there is.
 void exec_set_factory_stmt(Interpreter& in, lang::StmtId s);
 /// `Coherence;` / `Coherence Point{...}` (geometry.cpp); `Coherence Mesh;` goes to exec_mesh_stmt.
@@ -43,6 +45,9 @@ void exec_mesh_stmt(Interpreter& in, lang::StmtId s);
 /// `FieldValue(n, x, y, z)` / `FieldArgmin(...)` (native, field_eval.cpp): the
 /// MODEL_BUILTIN rows of lang/builtin_functions.def. Checks its own arguments.
 Value eval_field_call(Interpreter& in, const lang::Expr& e, const lang::CallExpr& c);
+/// `Merge "file";` (merge.cpp): a missing file is an error at its name; the kinds Gmsh
+/// would make discrete entities of are reported as not supported, views are display only.
+void exec_merge(Interpreter& in, lang::StmtId s, const lang::CommandStmt& c);
 /// `Mesh 2;`, `Save "f";`, `Merge`, ... (`CommandStmt`s other than Include).
 /// Returns false for an unknown command name.
 bool exec_mesh_command(Interpreter& in, lang::StmtId s, std::string_view command);

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "interp/kernel/compound.h"
 #include "interp/kernel/dispatch.h"
 #include "interp/kernel/geometry_shapes.h"
 #include "interp/interpreter.h"
@@ -181,7 +182,8 @@ std::optional<geo::DimTag> exec_point(Interpreter& in, const Stmt& s, const Poin
 }
 
 std::optional<geo::DimTag> exec_curve(Interpreter& in, StmtId id, const Stmt& s, const CurveStmt& n) {
-  if (n.kind == CurveKind::Nurbs || n.kind == CurveKind::CompoundSpline || n.kind == CurveKind::CompoundBSpline) {
+  if (n.kind == CurveKind::CompoundSpline || n.kind == CurveKind::CompoundBSpline) return exec_compound_spline(in, s, n);
+  if (n.kind == CurveKind::Nurbs) {
     check_stmt_exprs(in, id);
     in.not_supported_stmt(id, stmt_name(in, id));
     return std::nullopt;
@@ -347,7 +349,7 @@ std::optional<geo::DimTag> create_geometry(Interpreter& in, StmtId id) {
   if (s.kind() == StmtKind::Curve) return std::nullopt;   // a kind reported as not supported
   // Surface Loop, Volume, Parametric Surface, Coherence Point{}, embedding in a volume and
   // the mesh constraints other than Transfinite and Recombine (MeshAlgorithm, Smoother,
-  // Periodic, ReverseMesh, Compound; mesh_constraints.cpp has those two): the model has
+  // Periodic, ReverseMesh; mesh_constraints.cpp has those two, compound.cpp the compounds): the model has
   // no place for them yet.
   check_stmt_exprs(in, id);
   in.not_supported_stmt(id, stmt_name(in, id));

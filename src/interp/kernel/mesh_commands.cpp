@@ -33,6 +33,7 @@
 #include "interp/progress_sink.h"
 #include "io/from_model_mesh.h"
 #include "io/output_format.h"
+#include "mesh/compound_surface.h"
 #include "mesh/mesh1d.h"
 #include "mesh/mesh2d.h"
 #include "mesh/mesh2d_algorithms.h"
@@ -364,13 +365,19 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   // Many 1D nodes: the faces' budgets first, on a coarse boundary, before the full 1D
   // mesh is paid for (a unit square at size 1e-7 has 4e7 boundary nodes, 2e14 triangles).
   MeshError budget;
+  // `Compound Surface{...}`: the model meshed holds each group's union in place of its
+  // surfaces (mesh/compound_surface.h); the elements go back to them after 2D.
+  const CompoundSurfacePlan compounds = plan_compound_surfaces(k.model, constraints.compound_surfaces);
+  const geo::Model& meshed = compounds.empty() ? k.model : compounds.model;
+  for (const std::string& w : compounds.warnings) in.diags().report_message(where, Diag::MeshWarning, w);
   if (dim >= 2)
     opt1.coarse_check = [&](const ModelMesh& coarse) {
-      budget = check_face_budgets(k.model, coarse, opt2).error;
+      budget = check_face_budgets(meshed, coarse, opt2).error;
+      name_compound_unions(compounds, budget);
       return budget.ok();
     };
   std::optional<StageScope> stage_1d(std::in_place, &k.clock, nullptr, "1D");
-  Mesh1dResult r = mesh_curves(k.model, opt1);
+  Mesh1dResult r = mesh_curves(meshed, opt1);
   stage_1d.reset();
   if (r.error.kind == MeshErrorKind::Stopped) return failure_of(k, budget);
   if (!r.ok()) return {diag_of(r.error), message_of(r.error), provenance_notes(k, r.error)};
@@ -404,12 +411,22 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   }
   opt2.progress = progress_sink(in);
   std::optional<StageScope> stage_2d(std::in_place, &k.clock, nullptr, "2D");
-  const Mesh2dResult r2 = mesh_surfaces(k.model, *mesh, opt2);
+  Mesh2dResult r2 = mesh_surfaces(meshed, *mesh, opt2);
   stage_2d.reset();
+  name_compound_unions(compounds, r2.error);
   if (!r2.ok()) return failure_of(k, r2.error);
+  classify_compound_elements(k.model, compounds, *mesh);
+  for (const CompoundSurfacePlan::Group& g : compounds.groups)   // the union's target size on each original
+    for (std::size_t i = 0, n = r2.target_sizes.size(); i < n; ++i)
+      if (r2.target_sizes[i].surface == g.union_tag) {
+        for (int s : g.surfaces) r2.target_sizes.push_back({s, r2.target_sizes[i].size});
+        r2.target_sizes[i].surface = 0;
+      }
   for (const StageTime& t : stage_times(r2.stats)) add_stage_time(k.mesh2d_parts, t);
   // As diagnostics, so that they print in order with Printf and the progress display
   // (the front end drops them below General.Verbosity 2).
+  for (std::string& w : r2.warnings) name_compound_unions(compounds, w);
+  for (std::string& w : r2.quality_warnings) name_compound_unions(compounds, w);
   for (const std::string& w : r2.warnings) in.diags().report_message(where, Diag::MeshWarning, w);
   for (const std::string& w : r2.quality_warnings) in.diags().report_message(where, Diag::MeshQualityFloor, w);
   // Statistics against the size each face's mesher aimed at (with the extension from
@@ -648,6 +665,10 @@ bool exec_mesh_command(Interpreter& in, StmtId id, std::string_view command) {
     }
     if (command == "Save" && c->arg.valid()) {
       exec_save(in, id, *c);
+      return true;
+    }
+    if (command == "Merge" && c->arg.valid()) {
+      exec_merge(in, id, *c);   // merge.cpp
       return true;
     }
     if (command == "PartitionMesh" && c->arg.valid()) {

@@ -1,0 +1,59 @@
+// `Merge "file";` (Gmsh 4.8.4's MergeFile, Common/OpenFile.cpp): the file is read by its
+// extension. A mesh (.msh) or an STL triangulation becomes discrete points, curves and
+// surfaces of the model, a .pos file a post-processing view, a .geo or .opt file is
+// parsed as a script. stereomesh's model has no discrete entities yet: a file that is
+// missing or unreadable is an error at its name (Gmsh stops there too), a view is display
+// only (as `View` is), and the other kinds are reported as not supported, each saying
+// what Gmsh would have made of the file.
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "interp/interpreter.h"
+#include "interp/kernel/dispatch.h"
+
+namespace sm::interp {
+
+using namespace sm::lang;
+
+void exec_merge(Interpreter& in, StmtId id, const CommandStmt& c) {
+  const Stmt& s = in.ast().stmt(id);
+  const std::string name = in.eval_string(c.arg);
+  const SourceRange at = in.ast().expr(c.arg).range;
+  // Relative to the script (Gmsh: relative to the directory of the file being parsed).
+  std::filesystem::path p(name);
+  if (p.is_relative()) p = std::filesystem::path(in.sources().path(s.range.file)).parent_path() / p;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(p, ec))
+    in.fail_fmt(at, Diag::CannotOpenFile,
+                fmt::format("cannot merge '{}': {}", name,
+                            std::filesystem::exists(p, ec) ? "not a regular file" : "no such file"));
+  if (std::ifstream f(p, std::ios::binary); !f || f.peek() == std::ifstream::traits_type::eof())
+    in.fail_fmt(at, Diag::CannotOpenFile, fmt::format("cannot merge '{}': cannot read it, or it is empty", name));
+  std::string ext = p.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+  if (ext == ".pos") {
+    in.display_only_stmt(id, "Merge of a post-processing view (.pos)");
+    return;
+  }
+  std::string what;
+  if (ext == ".msh")
+    what = "its nodes and elements become discrete points, curves and surfaces, which stereomesh's model has no "
+           "place for yet";
+  else if (ext == ".stl")
+    what = "its triangles become a discrete surface (for ClassifySurfaces and volumes), which stereomesh's model has "
+           "no place for";
+  else if (ext == ".geo" || ext == ".opt")
+    what = "it is parsed as a script: use Include";
+  else
+    what = fmt::format("Gmsh reads the file by its extension ('{}'), and stereomesh reads none yet", ext);
+  const auto h = in.diags().report(s.keyword.valid() ? s.keyword : s.range, Diag::NotSupportedYet,
+                                   fmt::format("Merge \"{}\"", name), fmt::format(" (in Gmsh {}): the statement is skipped", what));
+  (void)h;
+}
+
+}  // namespace sm::interp
