@@ -131,7 +131,7 @@ GeoStatus Model::remove(const std::vector<DimTag>& entities, bool recursive, std
 
 // ---- coherence ----
 
-int Model::coherence() {
+int Model::coherence(std::map<int, int>* curves_merged) {
   touch();
   if (vertices_.empty()) return 0;
   const double diag = bounding_box().diagonal();
@@ -217,6 +217,7 @@ int Model::coherence() {
   for (auto& [key, g] : physicals_)
     if (g.dim == 1)
       for (int& c : g.entities) map_curve(c);
+  if (curves_merged) *curves_merged = curve_replace;
   for (const auto& [from, to] : curve_replace) {
     curves_.erase(from);
     ++merged;
@@ -283,7 +284,7 @@ GeoResult<std::vector<DimTag>> Model::duplicate(const std::vector<DimTag>& entit
     if (e.dim == 0 && vertices_.count(t)) {
       out.push_back({0, copy_point(t)});
     } else if (e.dim == 1 && curves_.count(t)) {
-      out.push_back({1, copy_curve(t)});
+      out.push_back({1, copy_curve(e.tag)});   // a reversed curve's points are copied from its end
     } else if (e.dim == 2 && surfaces_.count(t)) {
       ModelSurface s = surfaces_.at(t);
       s.tag = new_surface_tag();
