@@ -221,11 +221,12 @@ GeoResult<int> Model::extrude_curve_entity(int c, const ExtrudeSpec& spec, bool 
   if (!re) return re.error();
   if (!cb && !ce) return top;
   // The boundary: the curve, the end's sweep, the top backwards, the beginning's sweep
-  // backwards (a swept end on the axis drops out: a triangle). The copy runs as the curve.
+  // backwards (a swept end on the axis drops out: a triangle).
+  const int st = c > 0 ? top : -top;   // the copy runs as the curve's tag does, so as c
   std::vector<int> loop;
-  if (!cb) loop = {c, ce, -top};
-  else if (!ce) loop = {-top, -cb, c};
-  else loop = {c, ce, -top, -cb};
+  if (!cb) loop = {c, ce, -st};
+  else if (!ce) loop = {-st, -cb, c};
+  else loop = {c, ce, -st, -cb};
   const int s = new_surface_tag();
   bump_max(2, s);
   ModelCurveLoop l;
@@ -279,6 +280,20 @@ GeoResult<int> Model::extrude_surface_entity(int s, const ExtrudeSpec& spec, int
   auto dup = duplicate({{2, std::abs(s)}});
   if (!dup) return dup.error();
   const int first_tag = dup->front().tag;
+  {   // The copy's curves copy the source's, loop by loop (for the top's structured mesh).
+    const ModelSurface& copy = surfaces_.at(first_tag);
+    for (std::size_t i = 0; i < copy.loops.size() && i < sit->second.loops.size(); ++i) {
+      const auto& cc = loops_.at(std::abs(copy.loops[i])).curves;
+      const auto& sc = loops_.at(std::abs(sit->second.loops[i])).curves;
+      for (std::size_t j = 0; j < cc.size() && j < sc.size(); ++j) {
+        Extrusion ce;
+        ce.spec = spec;
+        ce.source = std::abs(sc[j]);
+        ce.body = false;
+        extrusions_[{1, std::abs(cc[j])}] = ce;
+      }
+    }
+  }
   // Gmsh takes the volume's tag as if Geometry.OldNewReg were 0.
   const int v = max_tag_[3] + 1;
   bump_max(3, v);
