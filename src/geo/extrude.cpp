@@ -305,7 +305,9 @@ GeoResult<int> Model::extrude_surface_entity(int s, const ExtrudeSpec& spec, int
     int body = 0;
     auto r = extrude_curve_entity(c, spec, false, &body);
     if (!r) return r.error();
-    if (body) lateral.push_back(c < 0 ? -body : body);
+    // Gmsh 4.8.4's Boundary{Volume{}} lists the swept surfaces positive, also those swept
+    // from a reversed curve (measured): they are built on the curve as the loop runs it.
+    if (body) lateral.push_back(body);
   }
   if (auto st = transform_by({{2, first_tag}}, spec); !st) return st.error();
   // Renumbered last, as Gmsh does "for backward compatibility with the old numbering".
@@ -378,7 +380,8 @@ GeoResult<std::vector<DimTag>> Model::extrude(const std::vector<DimTag>& entitie
       out.push_back({2, body});
       if (spec.return_lateral)
         for (int c : loops_.at(surfaces_.at(body).loops.front()).curves)
-          if (std::abs(c) != std::abs(e.tag) && std::abs(c) != std::abs(*top)) out.push_back({1, c});
+          // Gmsh compares |c| with the tag as written: extruding Curve{-1} lists curve 1 (as -1).
+          if (std::abs(c) != e.tag && std::abs(c) != *top) out.push_back({1, c});
     } else if (e.dim == 2) {
       int vol = 0;
       auto top = extrude_surface_entity(e.tag, spec, &vol);
@@ -387,7 +390,7 @@ GeoResult<std::vector<DimTag>> Model::extrude(const std::vector<DimTag>& entitie
       out.push_back({3, vol});
       if (spec.return_lateral)
         for (int s : volumes_.at(vol).surfaces)
-          if (std::abs(s) != std::abs(e.tag) && std::abs(s) != std::abs(*top)) out.push_back({2, s});
+          if (std::abs(s) != e.tag && std::abs(s) != *top) out.push_back({2, std::abs(s)});   // listed unsigned, as Gmsh
     } else {
       return make_error(GeoErrorKind::BadArgument, EntityKind::Volume, {e.tag},
                         fmt::format("cannot extrude volume {}: the built-in kernel extrudes points, curves and surfaces",
