@@ -98,6 +98,10 @@ ParseOutcome parse_args(const std::vector<std::string>& argv) {
     };
     // Only the table's flags exist (the one exception: -IDIR, -I glued to its value).
     const bool flag = !arg.empty() && arg[0] == '-';
+    // Gmsh's -3: volumes (Volume, Extrude of a surface) are kept as entities only.
+    if (arg == "-3")
+      return fail("'-3': 3D meshing is not supported (volumes are kept as entities only): use -2 for the mesh of the "
+                  "surfaces");
     if (flag && !find_flag(arg) && !(arg.size() > 2 && arg.rfind("-I", 0) == 0))
       return fail(fmt::format("unknown option '{}'", arg));
     if (a.test && !flag) {

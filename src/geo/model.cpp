@@ -45,7 +45,7 @@ void Model::on_delete(int slot, int tag) {
 }
 
 int Model::new_reg() const {
-  int m = std::max({max_tag_[1], max_tag_[2], max_tag_[3], max_tag_[kLoopSlot]});
+  int m = std::max({max_tag_[1], max_tag_[2], max_tag_[3], max_tag_[kLoopSlot], max_tag_[kSurfaceLoopSlot]});
   // Physical tags count as a high-water mark: Gmsh keeps it when groups are emptied or
   // deleted (`Delete Physicals;` leaves newreg and the next auto tag where they were).
   return std::max(m, max_physical_tag_) + 1;
@@ -125,6 +125,7 @@ std::vector<int> Model::tags(int dim) const {
   if (dim == 0) collect(vertices_);
   else if (dim == 1) collect(curves_);
   else if (dim == 2) collect(surfaces_);
+  else if (dim == 3) collect(volumes_);
   return out;
 }
 
@@ -534,7 +535,7 @@ GeoResult<int> Model::add_physical(int dim, std::optional<int> tag, const std::s
     return make_error(GeoErrorKind::BadArgument, EntityKind::Physical, {}, fmt::format("bad physical dimension {}", dim));
   for (int e : entities) {
     const int a = std::abs(e);
-    const bool ok = (dim == 0 && vertex(a)) || (dim == 1 && curve(a)) || (dim == 2 && surface(a));
+    const bool ok = (dim == 0 && vertex(a)) || (dim == 1 && curve(a)) || (dim == 2 && surface(a)) || (dim == 3 && volumes_.count(a));
     if (!ok) return missing(static_cast<EntityKind>(dim), e, {}, fmt::format(" in physical group"));
   }
   int t = 0;
@@ -635,8 +636,12 @@ GeoResult<std::vector<DimTag>> Model::boundary(const std::vector<DimTag>& entiti
         else
           for (auto it = cs.rbegin(); it != cs.rend(); ++it) raw.push_back({1, -*it});
       }
+    } else if (e.dim == 3) {
+      const auto v = volumes_.find(a);
+      if (v == volumes_.end()) return missing(EntityKind::Volume, a, {}, " in Boundary");
+      for (int t : v->second.surfaces) raw.push_back({2, t});   // signed by orientation (geo/extrude.cpp)
     } else {
-      return make_error(GeoErrorKind::BadArgument, EntityKind::None, {e.tag}, "Boundary of a volume is not supported by this kernel");
+      return make_error(GeoErrorKind::BadArgument, EntityKind::None, {e.tag}, fmt::format("Boundary of an entity of dimension {}", e.dim));
     }
   }
   std::vector<DimTag> out;

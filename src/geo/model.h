@@ -5,6 +5,7 @@
 
 #include "geo/curve.h"
 #include "geo/error.h"
+#include "geo/extrude.h"
 #include "geo/surface_geometry.h"
 
 #include <array>
@@ -59,6 +60,20 @@ struct ModelSurface {
   int geometry = 0;                  // parametric on this surface geometry (0: planar)
   std::vector<int> embedded_points;  // Point{...} In Surface{tag}
   std::vector<int> embedded_curves;  // Curve{...} In Surface{tag}
+};
+
+/// "Surface Loop(t) = {surfaces};"
+struct ModelSurfaceLoop {
+  int tag = 0;
+  std::vector<int> surfaces;   // signed surface tags as written
+};
+
+/// "Volume(t) = {surface loops};" or a volume swept by Extrude (surfaces: its boundary,
+/// signed by orientation, as Gmsh lists it; loops empty).
+struct ModelVolume {
+  int tag = 0;
+  std::vector<int> loops;
+  std::vector<int> surfaces;
 };
 
 struct PhysicalGroup {
@@ -134,6 +149,17 @@ class Model {
   /// nothing when Gmsh's search (Newton from u = v = t = 0.5, Geo/Geo.cpp's
   /// IntersectCurvesWithSurface) does not converge.
   GeoResult<std::optional<double>> intersect_curve_surface(int curve, int surface) const;
+  /// "Surface Loop(t) = {...};" (every surface must exist) and "Volume(t) = {loops};" (every
+  /// loop must exist): kept so that scripts evaluate; nothing meshes volumes (geo/extrude.cpp).
+  GeoStatus add_surface_loop(int tag, const std::vector<int>& surfaces);
+  GeoStatus add_volume(int tag, const std::vector<int>& loops);
+  /// "Extrude {...} {entities}" as Gmsh 4.8.4 does it (geo/extrude.cpp): per entity its top,
+  /// then with a body its body and lateral entities (spec.return_lateral); tags signed.
+  GeoResult<std::vector<DimTag>> extrude(const std::vector<DimTag>& entities, const ExtrudeSpec& spec);
+  /// The extrusion record of (dim, tag), or null.
+  const Extrusion* extrusion(int dim, int tag) const;
+  const std::map<int, ModelVolume>& volumes() const { return volumes_; }
+  const std::map<int, ModelSurfaceLoop>& surface_loops() const { return surface_loops_; }
   /// "Physical Point|Curve|Surface(tag | "name" | "name", tag) =|+=|-= {...};". Returns
   /// the group's tag (Gmsh's auto-tag: 1 + the largest physical tag, all dimensions).
   GeoResult<int> add_physical(int dim, std::optional<int> tag, const std::string& name,
@@ -157,7 +183,7 @@ class Model {
   /// "Coherence;": merges points closer than tolerance x bounding-box diagonal (the lowest
   /// tag survives), then curves with the same kind and control points. Returns the number
   /// of entities merged.
-  int coherence();
+  int coherence(std::map<int, int>* curves_merged = nullptr);
   /// "Duplicata{...}": copies with new tags taken in Gmsh's order (see model_edit.cpp),
   /// sharing copied points between copied curves; a missing entity is skipped with a
   /// compat note. Returns the new entities.
@@ -211,6 +237,8 @@ class Model {
   int new_loop_tag() const;                                                     // newll
   int new_surface_tag() const;                                                  // news
   int new_reg() const;                                                          // newreg
+  int new_surface_loop_tag() const { return max_tag_[kSurfaceLoopSlot] + 1; }   // newsl (OldNewReg 0)
+  int new_volume_tag() const { return max_tag_[3] + 1; }                        // newv (OldNewReg 0)
   /// "SetMaxTag Point(n);" etc. (dim 0..3; -1: curve loops).
   void set_max_tag(int dim, int tag);
 
@@ -250,11 +278,20 @@ class Model {
   std::map<int, ModelCurveLoop> loops_;
   std::map<int, ModelSurface> surfaces_;
   std::map<int, SurfaceGeometry> geometries_;
+  std::map<int, ModelSurfaceLoop> surface_loops_;
+  std::map<int, ModelVolume> volumes_;
+  std::map<std::pair<int, int>, Extrusion> extrusions_;   // (dim, tag) -> how Extrude made it
+  // geo/extrude.cpp
+  GeoResult<int> extrude_point_entity(int p, const ExtrudeSpec& spec, int* body);
+  GeoResult<int> extrude_curve_entity(int c, const ExtrudeSpec& spec, bool final, int* body);
+  GeoResult<int> extrude_surface_entity(int s, const ExtrudeSpec& spec, int* volume);
+  GeoStatus transform_by(const std::vector<DimTag>& entities, const ExtrudeSpec& spec);
   std::map<std::pair<int, int>, PhysicalGroup> physicals_;   // (dim, tag)
   int current_geometry_ = 0;
   // High-water marks as Gmsh keeps them: slots 0..3 = dims, kLoopSlot = curve loops.
   static constexpr int kLoopSlot = 4;
-  std::array<int, 5> max_tag_{0, 0, 0, 0, 0};
+  static constexpr int kSurfaceLoopSlot = 5;
+  std::array<int, 6> max_tag_{0, 0, 0, 0, 0, 0};
   int max_physical_tag_ = 0;   // high-water mark of physical group tags (newreg, auto tags)
   std::uint64_t revision_ = 0;  // 0: the empty model
   std::vector<std::string> compat_notes_;   // see take_compat_notes()

@@ -106,10 +106,10 @@ GeoStatus Model::remove(const std::vector<DimTag>& entities, bool recursive, std
   for (const DimTag& e : entities) {
     const int t = std::abs(e.tag);
     const bool exists = (e.dim == 0 && vertices_.count(t)) || (e.dim == 1 && curves_.count(t)) ||
-                        (e.dim == 2 && surfaces_.count(t));
+                        (e.dim == 2 && surfaces_.count(t)) || (e.dim == 3 && volumes_.count(t));
     if (!exists)
-      return make_error(GeoErrorKind::MissingEntity, e.dim >= 0 && e.dim <= 2 ? static_cast<EntityKind>(e.dim) : EntityKind::None,
-                        {e.tag}, fmt::format("cannot delete unknown {} {}", e.dim == 0 ? "point" : e.dim == 1 ? "curve" : "surface", t));
+      return make_error(GeoErrorKind::MissingEntity, e.dim >= 0 && e.dim <= 3 ? static_cast<EntityKind>(e.dim) : EntityKind::None,
+                        {e.tag}, fmt::format("cannot delete unknown {} {}", e.dim == 0 ? "point" : e.dim == 1 ? "curve" : e.dim == 2 ? "surface" : "volume", t));
   }
   Usage u = usage();
   for (const DimTag& e : entities) {
@@ -123,6 +123,15 @@ GeoStatus Model::remove(const std::vector<DimTag>& entities, bool recursive, std
       if (!in_use) delete_curve(t, recursive, u);
     } else if (e.dim == 2 && surfaces_.count(t)) {
       delete_surface(t, recursive, u);
+    } else if (e.dim == 3 && volumes_.count(t)) {   // geo/extrude.cpp: kept as an entity only
+      const std::vector<int> bounding = volumes_.at(t).surfaces;
+      volumes_.erase(t);
+      extrusions_.erase({3, t});
+      drop_from_groups(3, t);
+      on_delete(3, t);
+      if (recursive)
+        for (int b : bounding)
+          if (surfaces_.count(std::abs(b))) delete_surface(std::abs(b), true, u);
     }
     if (in_use && skipped) skipped->push_back(e);
   }
@@ -131,7 +140,7 @@ GeoStatus Model::remove(const std::vector<DimTag>& entities, bool recursive, std
 
 // ---- coherence ----
 
-int Model::coherence() {
+int Model::coherence(std::map<int, int>* curves_merged) {
   touch();
   if (vertices_.empty()) return 0;
   const double diag = bounding_box().diagonal();
@@ -217,6 +226,7 @@ int Model::coherence() {
   for (auto& [key, g] : physicals_)
     if (g.dim == 1)
       for (int& c : g.entities) map_curve(c);
+  if (curves_merged) *curves_merged = curve_replace;
   for (const auto& [from, to] : curve_replace) {
     curves_.erase(from);
     ++merged;
@@ -283,7 +293,7 @@ GeoResult<std::vector<DimTag>> Model::duplicate(const std::vector<DimTag>& entit
     if (e.dim == 0 && vertices_.count(t)) {
       out.push_back({0, copy_point(t)});
     } else if (e.dim == 1 && curves_.count(t)) {
-      out.push_back({1, copy_curve(t)});
+      out.push_back({1, copy_curve(e.tag)});   // a reversed curve's points are copied from its end
     } else if (e.dim == 2 && surfaces_.count(t)) {
       ModelSurface s = surfaces_.at(t);
       s.tag = new_surface_tag();

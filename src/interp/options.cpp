@@ -142,6 +142,10 @@ const std::vector<std::pair<std::string_view, std::string_view>>& Options::alias
       {"Mesh.SurfaceNumbers", "Mesh.SurfaceLabels"},
       {"Mesh.VolumeNumbers", "Mesh.VolumeLabels"},
       {"Mesh.Points", "Mesh.Nodes"},
+      {"Mesh.PointSize", "Mesh.NodeSize"},
+      {"Mesh.PointType", "Mesh.NodeType"},
+      {"Mesh.Color.Points", "Mesh.Color.Nodes"},   // t3.geo sets it; gmsh -0 accepts it
+      {"Mesh.Color.PointsSup", "Mesh.Color.NodesSup"},
   };
   return a;
 }

@@ -143,13 +143,18 @@ struct IntersectExpr { ExprList curves; ExprId surface; };
 enum class BoundaryKind : std::uint8_t { Boundary, CombinedBoundary, PointsOf };
 /// `Boundary{ Surface{1}; }` etc.: signed tags of the boundary entities.
 struct BoundaryExpr { BoundaryKind kind = BoundaryKind::Boundary; ShapeBlock shapes; };
-enum class TransformKind : std::uint8_t { Translate, Rotate, Symmetry, Dilate, Duplicata };
+enum class TransformKind : std::uint8_t { Translate, Rotate, Symmetry, Dilate, Duplicata, Extrude };
 /// `Translate{dx,dy,dz}{shapes}`, `Rotate{{ax,ay,az},{px,py,pz},angle}{shapes}`,
 /// `Symmetry{a,b,c,d}{shapes}`, `Dilate{{cx,cy,cz},f}{shapes}` (f may be {fx,fy,fz}),
 /// `Duplicata{shapes}`. params are the items of the first braces as written
 /// (Rotate: [ListExpr axis, ListExpr point, angle]; Duplicata: empty).
 /// Result: the new/moved entity tags (Gmsh returns them as a list).
-struct TransformExpr { TransformKind kind = TransformKind::Translate; ExprList params; ShapeBlock shapes; };
+/// `Extrude {dx,dy,dz} | {{axis},{point},angle} | {{dx,dy,dz},{axis},{point},angle} {shapes
+/// [Layers{n}; | Layers{{n..},{h..}}; Recombine [expr]; ScaleLast; QuadTri...;]}`: params as
+/// written, layers the items of Layers' braces (empty: no Layers), recombine invalid
+/// without `Recombine` (a NumberExpr 1 when written bare). See docs/interpreter.md.
+struct ExtrudeMeshParams { ExprList layers; SourceRange layers_range; bool has_recombine = false; ExprId recombine; };
+struct TransformExpr { TransformKind kind = TransformKind::Translate; ExprList params; ShapeBlock shapes; ExtrudeMeshParams extrude; };
 /// Native extension: `Coastline{n, ...}` imports coastline object(s) n and
 /// returns the new curve-loop tags (outer loop first).
 struct CoastlineQueryExpr { ExprList ids; };

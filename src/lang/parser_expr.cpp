@@ -146,6 +146,7 @@ ExprId Parser::parse_primary() {
       return parse_entity_expr();
     case Tok::Translate: case Tok::Rotate: case Tok::Symmetry: case Tok::Dilate: case Tok::Duplicata:
       return parse_transform();
+    case Tok::Extrude: return parse_extrude();
     case Tok::Boundary: case Tok::CombinedBoundary: case Tok::PointsOf:
       return parse_boundary();
     case Tok::Coastline: return parse_coastline_query();

@@ -87,7 +87,7 @@ StmtId Parser::parse_geometry_statement() {
     case Tok::Periodic: return parse_periodic();
     case Tok::ReverseMesh: return parse_reverse_mesh();
     case Tok::Translate: case Tok::Rotate: case Tok::Symmetry: case Tok::Dilate: case Tok::Duplicata:
-    case Tok::Boundary: case Tok::CombinedBoundary: case Tok::PointsOf:
+    case Tok::Boundary: case Tok::CombinedBoundary: case Tok::PointsOf: case Tok::Extrude:
       return parse_shape_statement();
     case Tok::BoundingBox: {
       const Token kw = advance();
@@ -476,36 +476,41 @@ ShapeBlock Parser::parse_shape_block(const Token& owner) {
   ShapeBlock block;
   while (!at(Tok::RBrace)) {
     if (at(Tok::Eof)) expect_closing(Tok::RBrace, open);
-    const Token first = peek();
-    ShapeItem item;
-    if ((at(Tok::Physical) && at_entity(1) && at(Tok::LBrace, 2)) || (at_entity() && at(Tok::LBrace, 1))) {
-      item.kind = ShapeItem::Kind::Entities;
-      item.physical = accept(Tok::Physical);
-      item.ent = entity_of(advance().kind);
-      const Token lb = advance();
-      if (at(Tok::Colon) && at(Tok::RBrace, 1)) {
-        advance();
-        advance();
-        item.all = true;
-      } else {
-        item.tags = parse_items_until(Tok::RBrace, lb);
-      }
-      expect_semicolon();
-    } else if (at(Tok::Translate) || at(Tok::Rotate) || at(Tok::Symmetry) || at(Tok::Dilate) || at(Tok::Duplicata)) {
-      item.kind = ShapeItem::Kind::Nested;
-      item.nested = parse_transform();
-      accept(Tok::Semicolon);
-    } else if (is_keyword(kind()) && !at(Tok::Physical)) {
-      item.kind = ShapeItem::Kind::Create;
-      item.create = parse_geometry_statement();
-    } else {
-      fail_expected("a shape such as 'Point{...};' or '}'");
-    }
-    item.range = since(first);
-    block.push_back(std::move(item));
+    block.push_back(parse_shape_entry());
   }
   advance();  // '}'
   return block;
+}
+
+ShapeItem Parser::parse_shape_entry() {
+  const Token first = peek();
+  ShapeItem item;
+  if ((at(Tok::Physical) && at_entity(1) && at(Tok::LBrace, 2)) || (at_entity() && at(Tok::LBrace, 1))) {
+    item.kind = ShapeItem::Kind::Entities;
+    item.physical = accept(Tok::Physical);
+    item.ent = entity_of(advance().kind);
+    const Token lb = advance();
+    if (at(Tok::Colon) && at(Tok::RBrace, 1)) {
+      advance();
+      advance();
+      item.all = true;
+    } else {
+      item.tags = parse_items_until(Tok::RBrace, lb);
+    }
+    expect_semicolon();
+  } else if (at(Tok::Translate) || at(Tok::Rotate) || at(Tok::Symmetry) || at(Tok::Dilate) || at(Tok::Duplicata) ||
+             at(Tok::Extrude)) {
+    item.kind = ShapeItem::Kind::Nested;
+    item.nested = at(Tok::Extrude) ? parse_extrude() : parse_transform();
+    accept(Tok::Semicolon);
+  } else if (is_keyword(kind()) && !at(Tok::Physical)) {
+    item.kind = ShapeItem::Kind::Create;
+    item.create = parse_geometry_statement();
+  } else {
+    fail_expected("a shape such as 'Point{...};' or '}'");
+  }
+  item.range = since(first);
+  return item;
 }
 
 // transform_body := "{" ( transform [ ";" ] | { shape_entry } ) "}"

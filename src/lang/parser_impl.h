@@ -101,6 +101,8 @@ class Parser {
   Token expect_member_word(std::string_view what);
   ExprId parse_entity_expr();
   ExprId parse_transform();
+  ExprId parse_extrude();   // parser_extrude.cpp
+  ShapeItem parse_shape_entry();
   ExprId parse_boundary();
   ExprId parse_coastline_query();
   ExprId parse_intersect();

@@ -33,7 +33,7 @@ namespace sm::lang {
   X(Transfinite, "Transfinite") X(Using, "Using") X(Recombine, "Recombine") \
   X(MeshSize, "MeshSize") X(Characteristic, "Characteristic") X(Length, "Length") \
   X(Translate, "Translate") X(Rotate, "Rotate") X(Dilate, "Dilate") \
-  X(Symmetry, "Symmetry") X(Duplicata, "Duplicata")          \
+  X(Symmetry, "Symmetry") X(Duplicata, "Duplicata") X(Extrude, "Extrude") \
   X(Boundary, "Boundary") X(CombinedBoundary, "CombinedBoundary") X(PointsOf, "PointsOf") \
   X(BoundingBox, "BoundingBox") X(Coherence, "Coherence") X(Split, "Split") \
   X(SetFactory, "SetFactory") X(SetMaxTag, "SetMaxTag") X(Periodic, "Periodic") \
@@ -61,7 +61,7 @@ enum class Tok : std::uint8_t {
   Surface, Volume, Circle, Ellipse, Spline, BSpline, Bezier, Nurbs, Knots, Order, Compound,
   Plane, Sphere, PolarSphere, Parametric, Coordinates, Euclidean, Field, Coastline,
   Transfinite, Using, Recombine, MeshSize, Characteristic, Length, Translate, Rotate,
-  Dilate, Symmetry, Duplicata, Boundary, CombinedBoundary, PointsOf, BoundingBox,
+  Dilate, Symmetry, Duplicata, Extrude, Boundary, CombinedBoundary, PointsOf, BoundingBox,
   Coherence, Split, SetFactory, SetMaxTag, Periodic, ReverseMesh, Smoother, MeshAlgorithm,
   MeshSizeFromBoundary, Plugin, View, Color, Hide, Show,
   kCount

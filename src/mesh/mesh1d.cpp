@@ -2,6 +2,7 @@
 // with batched size evaluation, Gmsh's node count and placement, then the self-intersection
 // repair of mesh/boundary_recovery on the curves of each plane (parametric or Euclidean).
 #include "mesh/mesh1d.h"
+#include "mesh/extrude_mesh.h"
 
 #include <algorithm>
 #include <chrono>
@@ -779,9 +780,12 @@ void plan_compounds(const geo::Model& model, const Mesh1dOptions& opt, std::vect
 
 // The placed nodes numbered into `mesh`, curve by curve in tag order (exceptions of the
 // placement rethrown there), as one thread numbers them.
-void number_nodes(std::vector<CurvePlan>& plans, ModelMesh& mesh) {
+void number_nodes(const geo::Model& model, std::vector<CurvePlan>& plans, ModelMesh& mesh) {
   for (CurvePlan& cp : plans) {
     if (cp.thrown) std::rethrow_exception(cp.thrown);
+    // A curve Extrude made with Layers: its nodes are the layers' (a top copy its source's,
+    // numbered before it), whatever the sizes said (extrude_mesh.h).
+    if (!cp.collapsed && extruded_curve_nodes(model, mesh, cp.tag, cp.ts, cp.xyz)) cp.uv.clear();
     const geo::ModelCurve& mc = *cp.mc;
     CurveMesh cm;
     cm.tag = cp.tag;
@@ -920,7 +924,7 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
         plans[i].thrown = std::current_exception();
       }
   });
-  number_nodes(plans, mesh);
+  number_nodes(model, plans, mesh);
   stage.end();
   move_closed_curve_vertices(model, curves_at, mesh);
   res.stats.seconds_integrate = seconds_since(t0);

@@ -25,6 +25,7 @@
 #include "mesh/face_sizing.h"
 #include "mesh/face_smooth.h"
 #include "mesh/face_transfinite.h"
+#include "mesh/extrude_mesh.h"
 #include "mesh/face_work.h"
 #include "mesh/partition.h"
 
@@ -62,6 +63,7 @@ bool run_face(FaceWork& f, const geo::ModelSurface& s) {
                               "the (u,v) of its first loop's patch)",
                               std::abs(s.loops[1]),
                               s.loops.size() > 2 ? fmt::format(" and {} more", s.loops.size() - 2) : ""));
+  if (is_layered_extrusion(f.model, s.tag)) return f.estimate_only || mesh_extruded_face(f, s);   // Extrude's Layers
   if (f.opt.constraints)
     if (const auto it = f.opt.constraints->surfaces.find(s.tag); it != f.opt.constraints->surfaces.end()) {
       if (f.estimate_only) return true;  // a grid: its count is the curves' product

@@ -297,6 +297,19 @@ std::optional<geo::DimTag> create_geometry(Interpreter& in, StmtId id) {
       return std::nullopt;
     }
     case StmtKind::Surface: made = exec_surface(in, s, std::get<SurfaceStmt>(s.node)); break;
+    case StmtKind::SurfaceLoop: {
+      const auto& n = std::get<SurfaceLoopStmt>(s.node);
+      const int tag = eval_tag(in, n.tag);
+      check(in, m.add_surface_loop(tag, eval_tags(in, n.surfaces)), where(s));
+      return std::nullopt;
+    }
+    case StmtKind::Volume: {
+      const auto& n = std::get<VolumeStmt>(s.node);
+      const int tag = eval_tag(in, n.tag);
+      check(in, m.add_volume(tag, eval_tags(in, n.loops)), where(s));
+      made = geo::DimTag{3, tag};
+      break;
+    }
     case StmtKind::Sphere: {
       const auto& n = std::get<SphereStmt>(s.node);
       const int tag = eval_tag(in, n.tag);
@@ -324,6 +337,10 @@ std::optional<geo::DimTag> create_geometry(Interpreter& in, StmtId id) {
     case StmtKind::DeleteShapes: exec_delete_shapes(in, s, std::get<DeleteShapesStmt>(s.node)); return std::nullopt;
     case StmtKind::Embed: {
       const auto& n = std::get<EmbedStmt>(s.node);
+      if (n.target == EntityKind::Volume) {
+        embed_in_volume(in, s, n);
+        return std::nullopt;
+      }
       if (n.target != EntityKind::Surface || n.ent == EntityKind::Surface || n.ent == EntityKind::Volume) break;
       const std::vector<int> tags = eval_tags(in, n.tags);
       check(in, m.embed(dim_of(n.ent), tags, eval_tag(in, n.target_tag)), where(s));
@@ -347,7 +364,7 @@ std::optional<geo::DimTag> create_geometry(Interpreter& in, StmtId id) {
     return made;
   }
   if (s.kind() == StmtKind::Curve) return std::nullopt;   // a kind reported as not supported
-  // Surface Loop, Volume, Parametric Surface, Coherence Point{}, embedding in a volume and
+  // Parametric Surface, Coherence Point{}, embedding in a volume and
   // the mesh constraints other than Transfinite and Recombine (MeshAlgorithm, Smoother,
   // Periodic, ReverseMesh; mesh_constraints.cpp has those two, compound.cpp the compounds): the model has
   // no place for them yet.
@@ -383,9 +400,8 @@ double new_tag_constant(Interpreter& in, Constant c) {
     case Constant::NewLL:
     case Constant::NewCL: return m.new_loop_tag();
     case Constant::NewS: return m.new_surface_tag();
-    // No surface loops or volumes exist: their own counters stay at 0.
-    case Constant::NewSL:
-    case Constant::NewV: return m.options().old_new_reg ? m.new_reg() : 1;
+    case Constant::NewSL: return m.options().old_new_reg ? m.new_reg() : m.new_surface_loop_tag();
+    case Constant::NewV: return m.options().old_new_reg ? m.new_reg() : m.new_volume_tag();
     case Constant::NewF: return in.kernel().fields.next_id();
     default: return m.new_reg();
   }

@@ -47,6 +47,7 @@ Vec3 vec3(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
 
 std::vector<geo::DimTag> apply_transform(Interpreter& in, const Expr& x, const TransformExpr& t) {
   geo::Model& m = in.kernel().model;
+  if (t.kind == TransformKind::Extrude) return apply_extrude(in, x, t);
   const SourceRange at = x.range;
   // The parameters first, as Gmsh's parser reduces them before the shapes.
   std::vector<std::vector<double>> p;
@@ -81,6 +82,7 @@ std::vector<geo::DimTag> apply_transform(Interpreter& in, const Expr& x, const T
       st = m.dilate(ents, c, f);
       break;
     }
+    case TransformKind::Extrude: break;   // above
     case TransformKind::Duplicata: {
       auto r = m.duplicate(ents);
       report_compat_notes(in, at);
@@ -155,8 +157,7 @@ Value eval_entity_query(Interpreter& in, const Expr& x, const EntityQueryExpr& q
     return Value::list(std::move(out));
   }
   if (q.all) {
-    if (dim <= 2)
-      for (int t : m.tags(dim)) out.push_back(t);
+    for (int t : m.tags(dim)) out.push_back(t);
     return Value::list(std::move(out));
   }
   if (q.ent != EntityKind::Point)

@@ -30,6 +30,13 @@ std::vector<geo::DimTag> eval_shape_block(Interpreter& in, const lang::ShapeBloc
 /// A Translate/Rotate/Symmetry/Dilate/Duplicata/Boundary expression as entities.
 std::vector<geo::DimTag> eval_shape_expr(Interpreter& in, lang::ExprId e);
 
+/// `Extrude {...} {...}` (kernel/extrude.cpp): the new entities in Gmsh's order.
+std::vector<geo::DimTag> apply_extrude(Interpreter& in, const lang::Expr& x, const lang::TransformExpr& t);
+
+/// `Point|Curve|Surface{...} In Volume{v};` (kernel/extrude.cpp): checked, then kept by no
+/// one, since only 3D meshing would use it.
+void embed_in_volume(Interpreter& in, const lang::Stmt& s, const lang::EmbedStmt& n);
+
 /// Reports the kernel's compat notes (geo::Model::take_compat_notes) as gmsh-compat
 /// warnings at `at`.
 void report_compat_notes(Interpreter& in, lang::SourceRange at);
