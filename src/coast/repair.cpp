@@ -94,6 +94,64 @@ bool cut_sliver(WorkCurve& c, std::uint32_t a1, std::uint32_t a2) {
   return c.keep.size() >= 3 || !c.periodic;
 }
 
+// A loop of several curves (the pieces a binned or clipped source is read in, joined end
+// to end) whose source data meets itself across the end of a piece: the sliver between
+// segment a of the loop's curve i and segment b of its curve j is cut out the way
+// cut_sliver cuts it within one curve, going forward along the loop from (i, a) to (j, b)
+// (cyclically: j may come before i). Curve i keeps its points up to a and ends on point
+// b + 1 of curve j, where curve j now starts; the curves between them leave the loop, and
+// so does curve j when only that point is left of it. Every curve keeps both its end
+// points, so the loop stays closed. False (nothing changed) when the cut side holds the
+// region's box or fewer than three points would remain; the caller passes the shorter
+// side. `dropped` receives the curves that left the loop.
+bool cut_sliver_across(std::vector<WorkCurve>& curves, WorkLoop& loop, std::size_t i, std::uint32_t a, std::size_t j,
+                       std::uint32_t b, std::vector<std::uint32_t>& dropped) {
+  const std::size_t nl = loop.curves.size();
+  if (i == j || i >= nl || j >= nl) return false;
+  WorkCurve& A = curves[loop.curves[i]];
+  WorkCurve& B = curves[loop.curves[j]];
+  if (A.periodic || B.periodic || a + 1 >= A.full.size() || b + 1 >= B.full.size()) return false;
+  if (A.open_boundary || B.open_boundary) return false;
+  std::size_t total = 0;   // points of the loop, each curve's end counted as the next one's start
+  for (std::uint32_t ci : loop.curves) total += curves[ci].full.size() - 1;
+  std::size_t cut = (A.full.size() - 1 - a) + b + 1;   // A's a+1 .. end, B's 0 .. b (B's 0 is A's end)
+  for (std::size_t k = (i + 1) % nl; k != j; k = (k + 1) % nl) {
+    const WorkCurve& c = curves[loop.curves[k]];
+    if (c.open_boundary) return false;
+    cut += c.full.size() - 1;
+  }
+  cut -= 1;   // A's end and B's start are one point
+  if (cut >= total || total - cut < 3) return false;
+  const bool b_gone = b + 2 == B.full.size();   // only B's end would be left of it
+  // A: its points 0 .. a, then B's point b + 1.
+  A.full.resize(a + 1);
+  A.uv.resize(a + 1);
+  A.gamma.resize(a + 1);
+  A.full.push_back(B.full[b + 1]);
+  A.uv.push_back(B.uv[b + 1]);
+  A.gamma.push_back(B.gamma[b + 1]);
+  std::erase_if(A.keep, [a](std::uint32_t k) { return k > a; });
+  if (A.keep.empty() || A.keep.back() != a) A.keep.push_back(a);   // the cut's two ends stay vertices
+  A.keep.push_back(a + 1);
+  // B: its points b + 1 .. end.
+  if (!b_gone) {
+    B.full.erase(B.full.begin(), B.full.begin() + b + 1);
+    B.uv.erase(B.uv.begin(), B.uv.begin() + b + 1);
+    B.gamma.erase(B.gamma.begin(), B.gamma.begin() + b + 1);
+    std::vector<std::uint32_t> keep{0};
+    for (std::uint32_t k : B.keep)
+      if (k > b + 1) keep.push_back(k - b - 1);
+    B.keep = std::move(keep);
+  }
+  std::vector<char> leaves(nl, 0);
+  for (std::size_t k = (i + 1) % nl; k != j; k = (k + 1) % nl) leaves[k] = 1;
+  if (b_gone) leaves[j] = 1;
+  std::vector<std::uint32_t> rest;
+  for (std::size_t k = 0; k < nl; ++k) (leaves[k] ? dropped : rest).push_back(loop.curves[k]);
+  loop.curves = std::move(rest);
+  return true;
+}
+
 // Unites two islands whose source outlines cross (properly, at 2k points): the boundary of
 // the union of the two land polygons (both counter-clockwise, land inside). Walking from a
 // crossing where A leaves B: A up to the next crossing along A, then B up to the next
@@ -563,14 +621,54 @@ Result<std::size_t> repair_loops(std::vector<WorkCurve>& curves, std::vector<Wor
     // 3. A loop that meets itself on original data (a pinch or a twisted sliver, as in
     //    GSHHG's intermediate Baltic coast): cut out the shorter side.
     // One cut per curve per round (a cut renumbers the curve's points).
+    // A loop of several curves may meet itself across the end of a curve (the binned
+    // GSHHG comes in pieces cut at its bins' edges): the sliver is cut out across the
+    // curves, at most once per loop per round (the cut changes the loop's curves).
     bool cut = false;
-    std::vector<char> cut_curve(curves.size(), 0);
+    std::vector<char> cut_curve(curves.size(), 0), cut_loop(loops.size(), 0);
+    std::vector<std::uint32_t> left_loop;
     for (const SegmentHit* h : stuck) {
       if (h->loop_a != h->loop_b || loops[h->loop_a].dead) continue;
       const LoopVertexRef ra = refs[h->loop_a][h->seg_a], rb = refs[h->loop_b][h->seg_b];
-      if (ra.curve != rb.curve || cut_curve[ra.curve]) continue;
-      WorkCurve& c = curves[ra.curve];
       const geo::LonLat where = uv_to_lonlat(h->where);
+      if (ra.curve != rb.curve) {
+        WorkLoop& loop = loops[h->loop_a];
+        if (cut_loop[h->loop_a] || cut_curve[ra.curve] || cut_curve[rb.curve]) continue;
+        // Loop positions of the two segments: the forward side from the earlier one to the
+        // later one, or the rest of the loop, whichever holds fewer points, is cut.
+        const std::size_t sa = std::min(h->seg_a, h->seg_b), sb = std::max(h->seg_a, h->seg_b);
+        const LoopVertexRef r1 = refs[h->loop_a][sa], r2 = refs[h->loop_a][sb];
+        std::size_t i1 = loop.curves.size(), i2 = loop.curves.size();
+        for (std::size_t k = 0; k < loop.curves.size(); ++k) {
+          if (loop.curves[k] == r1.curve) i1 = k;
+          if (loop.curves[k] == r2.curve) i2 = k;
+        }
+        const std::uint32_t a1 = curves[r1.curve].keep[r1.k], a2 = curves[r2.curve].keep[r2.k];
+        std::size_t total = 0, forward = 0;   // points of the loop; those after a1 up to a2
+        for (std::size_t k = 0; k < loop.curves.size(); ++k) {
+          const std::size_t n = curves[loop.curves[k]].full.size() - 1;
+          total += n;
+          if (k == i1) forward += n - a1 - 1;
+          if (k > i1 && k < i2) forward += n;
+          if (k == i2) forward += a2 + 1;
+        }
+        const bool ok = forward <= total - forward
+                            ? cut_sliver_across(curves, loop, i1, a1, i2, a2, left_loop)
+                            : cut_sliver_across(curves, loop, i2, a2, i1, a1, left_loop);
+        if (ok) {
+          const WorkCurve& c = curves[r1.curve];
+          log.push_back({RepairKind::CutSliver, c.record, c.id, where, 0});
+          cut = true;
+          cut_loop[h->loop_a] = 1;
+          dirty[h->loop_a] = 1;
+          for (std::uint32_t ci : {r1.curve, r2.curve}) cut_curve[ci] = 1;
+          for (std::uint32_t ci : left_loop) cut_curve[ci] = 1;
+          left_loop.clear();
+        }
+        continue;
+      }
+      if (cut_curve[ra.curve]) continue;
+      WorkCurve& c = curves[ra.curve];
       if (cut_sliver(c, std::min(c.keep[ra.k], c.keep[rb.k]), std::max(c.keep[ra.k], c.keep[rb.k]))) {
         log.push_back({RepairKind::CutSliver, c.record, c.id, where, 0});
         cut = true;
