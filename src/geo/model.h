@@ -5,6 +5,7 @@
 
 #include "geo/curve.h"
 #include "geo/error.h"
+#include "geo/surface_filling.h"
 #include "geo/surface_geometry.h"
 
 #include <array>
@@ -130,6 +131,9 @@ class Model {
   GeoStatus add_surface_filling(int tag, const std::vector<int>& loops, std::optional<int> sphere_centre = std::nullopt);
   /// The point at (u,v) of a filling surface or of a surface on a geometry.
   GeoResult<Vec3> surface_point(int tag, Vec2 uv) const;
+  /// The transfinite patch of filling surface `s` (its first loop, Gmsh's sphere guess
+  /// when no "In Sphere" is given): valid while the model's curves are unchanged.
+  TransfinitePatch filling_patch(const ModelSurface& s) const;
   /// Where curve `curve` meets the filling surface `surface`: the curve's parameter, or
   /// nothing when Gmsh's search (Newton from u = v = t = 0.5, Geo/Geo.cpp's
   /// IntersectCurvesWithSurface) does not converge.

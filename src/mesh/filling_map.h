@@ -1,0 +1,52 @@
+// The plane of a non-planar filling Surface (docs/kernel.md, "Meshing faces"): the
+// parameters (u, v) of its transfinite patch (geo/surface_filling.h) scaled by the mean
+// lengths of opposite sides, p = (a u, b v), so that a patch whose sides are about as long
+// as the distances between them is near conformal. Gmsh 4.8.4 meshes such a face in
+// (u, v) with the metric of the map; here the mesh is isotropic in p with the size divided
+// by the local stretch sqrt|X_x x X_y| (FacePlane::lambda), which keeps the triangle count
+// of the metric mesh (sizes measured in 3D) though not the shapes where the map is far
+// from conformal. Immutable once built: the sizing reads it from several threads.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "base/vec.h"
+#include "geo/surface_filling.h"
+
+namespace sm {
+
+class FillingMap {
+ public:
+  /// `patch` of 3 or 4 sides; the side lengths fix the scale of the plane.
+  explicit FillingMap(geo::TransfinitePatch patch);
+
+  /// Plane point of side `side` at its own parameter s in [0,1] (the loop's direction):
+  /// 4 sides (s,0), (1,s), (1-s,1), (0,1-s); 3 sides (s,0), (1,s), (1-s,1-s), scaled.
+  Vec2 side_point(std::size_t side, double s) const;
+  /// The patch's point at plane point p.
+  Vec3 point(Vec2 p) const;
+  /// Lengths on the surface per length in the plane at p: sqrt|X_x x X_y| by central
+  /// differences (a degenerate point gets the smallest positive value of its cross).
+  double stretch(Vec2 p) const;
+  /// Records the plane point of a node at x (a boundary node placed from its curve's
+  /// parameter): plane_of(x) returns it exactly.
+  void remember(Vec3 x, Vec2 p) { known_[{x.x, x.y, x.z}] = p; }
+  /// The plane point of x: remembered, else the closest point of the patch (the nearest
+  /// of a grid of samples, then at most 40 damped Gauss-Newton steps).
+  Vec2 plane_of(Vec3 x) const;
+  const geo::TransfinitePatch& patch() const { return patch_; }
+  Vec2 scale() const { return scale_; }
+
+ private:
+  static constexpr int kGrid = 24;  // samples per direction of the initial guess
+  geo::TransfinitePatch patch_;
+  Vec2 scale_{1, 1};
+  std::map<std::array<double, 3>, Vec2> known_;
+  std::vector<std::pair<Vec2, Vec3>> samples_;
+};
+
+}  // namespace sm
