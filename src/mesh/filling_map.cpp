@@ -9,7 +9,7 @@ namespace sm {
 
 namespace {
 
-// Chord length of side i of the patch, on 64 samples: enough for the plane's scale,
+// Chord length of a side of the patch, on 64 samples: enough for the plane's scale,
 // which only conditions the map.
 double side_length(const geo::PatchSide& s) {
   constexpr int kSamples = 64;
@@ -27,23 +27,45 @@ double side_length(const geo::PatchSide& s) {
 
 FillingMap::FillingMap(geo::TransfinitePatch patch) : patch_(std::move(patch)) {
   const auto& s = patch_.sides;
-  double a = 0, b = 0;
-  if (s.size() == 4) {
-    a = 0.5 * (side_length(s[0]) + side_length(s[2]));
-    b = 0.5 * (side_length(s[1]) + side_length(s[3]));
+  const bool three = s.size() == 3;
+  // The mean of J^T J over a 16 x 16 grid of cell centres (those of Gmsh's triangle
+  // u >= v for 3 sides), by central differences.
+  constexpr int kMean = 16;
+  constexpr double kH = 1e-6;
+  double m11 = 0, m12 = 0, m22 = 0;
+  int count = 0;
+  for (int i = 0; i < kMean; ++i)
+    for (int j = 0; j < kMean; ++j) {
+      const double u = (i + 0.5) / kMean, v = (j + 0.5) / kMean;
+      if (three && v > u) continue;
+      const Vec3 xu = (patch_.point({u + kH, v}) - patch_.point({u - kH, v})) / (2 * kH);
+      const Vec3 xv = (patch_.point({u, v + kH}) - patch_.point({u, v - kH})) / (2 * kH);
+      m11 += dot(xu, xu), m12 += dot(xu, xv), m22 += dot(xv, xv);
+      ++count;
+    }
+  m11 /= count, m12 /= count, m22 /= count;
+  const double det = m11 * m22 - m12 * m12;
+  if (m11 > 0 && det > 1e-12 * m11 * m22 && std::isfinite(det)) {
+    l11_ = std::sqrt(m11);
+    l12_ = m12 / l11_;
+    l22_ = std::sqrt(det / m11);
   } else {
-    a = side_length(s[0]);
-    b = side_length(s[1]);
+    // A degenerate mean metric: the mean lengths of opposite sides (3 sides: the first
+    // two), a collapsed pair kept usable.
+    double a = three ? side_length(s[0]) : 0.5 * (side_length(s[0]) + side_length(s[2]));
+    double b = three ? side_length(s[1]) : 0.5 * (side_length(s[1]) + side_length(s[3]));
+    const double big = std::max(a, b);
+    a = big > 0 ? std::max(a, 1e-3 * big) : 1.0;
+    b = big > 0 ? std::max(b, 1e-3 * big) : 1.0;
+    l11_ = a, l12_ = 0, l22_ = b;
   }
-  // A collapsed pair of sides (a patch with a degenerate edge) keeps a usable scale.
-  const double big = std::max(a, b);
-  scale_ = big > 0 ? Vec2{std::max(a, 1e-3 * big), std::max(b, 1e-3 * big)} : Vec2{1, 1};
+  step_ = 1e-6 * std::sqrt(l11_ * l22_);
   samples_.reserve((kGrid + 1) * (kGrid + 1));
   for (int i = 0; i <= kGrid; ++i)
     for (int j = 0; j <= kGrid; ++j) {
       const double u = static_cast<double>(i) / kGrid, v = static_cast<double>(j) / kGrid;
-      if (s.size() == 3 && v > u) continue;  // Gmsh's triangle u >= v
-      const Vec2 p{u * scale_.x, v * scale_.y};
+      if (three && v > u) continue;  // Gmsh's triangle u >= v
+      const Vec2 p = to_plane({u, v});
       samples_.emplace_back(p, point(p));
     }
 }
@@ -57,13 +79,13 @@ Vec2 FillingMap::side_point(std::size_t side, double t) const {
     const Vec2 q[3] = {{t, 0}, {1, t}, {1 - t, 1 - t}};
     uv = q[side];
   }
-  return {uv.x * scale_.x, uv.y * scale_.y};
+  return to_plane(uv);
 }
 
-Vec3 FillingMap::point(Vec2 p) const { return patch_.point({p.x / scale_.x, p.y / scale_.y}); }
+Vec3 FillingMap::point(Vec2 p) const { return patch_.point(to_uv(p)); }
 
 double FillingMap::stretch(Vec2 p) const {
-  const double dx = 1e-5 * scale_.x, dy = 1e-5 * scale_.y;
+  const double dx = 10 * step_, dy = 10 * step_;
   const Vec3 xu = (point({p.x + dx, p.y}) - point({p.x - dx, p.y})) / (2 * dx);
   const Vec3 xv = (point({p.x, p.y + dy}) - point({p.x, p.y - dy})) / (2 * dy);
   const double area = norm(cross(xu, xv));
@@ -83,7 +105,7 @@ Vec2 FillingMap::plane_of(Vec3 x) const {
   }
   // Damped Gauss-Newton on |X(p) - x|^2 with central-difference tangents; the step is
   // halved (at most 30 times) until the distance does not grow.
-  const double hx = 1e-6 * scale_.x, hy = 1e-6 * scale_.y;
+  const double hx = step_, hy = step_;
   Vec3 r = point(p) - x;
   for (int iter = 0; iter < 40; ++iter) {
     const Vec3 xu = (point({p.x + hx, p.y}) - point({p.x - hx, p.y})) / (2 * hx);
@@ -103,7 +125,7 @@ Vec2 FillingMap::plane_of(Vec3 x) const {
       }
       step = 0.5 * step;
     }
-    if (!moved || (std::abs(step.x) < 1e-15 * scale_.x && std::abs(step.y) < 1e-15 * scale_.y)) break;
+    if (!moved || norm(step) < 1e-9 * step_) break;
   }
   return p;
 }
