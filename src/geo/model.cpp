@@ -721,6 +721,7 @@ TransfinitePatch Model::filling_patch(const ModelSurface& surf) const {
     for (int& c : cs) c = -c;
   }
   TransfinitePatch patch;
+  patch.old_style = options_.old_ruled_surface;
   for (int c : cs) patch.sides.push_back({&*curves_.at(std::abs(c)).shape, c < 0});
   if (s->sphere_centre) {
     patch.sphere_centre = vertices_.at(s->sphere_centre).xyz;

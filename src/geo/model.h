@@ -87,6 +87,7 @@ struct ModelOptions {
   double tolerance = 1e-8;     // Geometry.Tolerance: relative to the bounding box diagonal
   bool old_new_reg = true;     // Geometry.OldNewReg: newl/newc/newll/news return newreg
   bool auto_coherence = true;  // Geometry.AutoCoherence: Coherence after every transform
+  bool old_ruled_surface = false;  // Geometry.OldRuledSurface: Gmsh's old 3-sided patch
 };
 
 enum class PhysicalOp { Assign, Add, Remove };

@@ -27,6 +27,7 @@ double side_length(const geo::PatchSide& s) {
 
 FillingMap::FillingMap(geo::TransfinitePatch patch) : patch_(std::move(patch)) {
   const auto& s = patch_.sides;
+  // 3 sides: Gmsh's triangle u >= v (the old form's square is taken there, param()).
   const bool three = s.size() == 3;
   // The mean of J^T J over a 16 x 16 grid of cell centres (those of Gmsh's triangle
   // u >= v for 3 sides), by central differences.
@@ -38,8 +39,8 @@ FillingMap::FillingMap(geo::TransfinitePatch patch) : patch_(std::move(patch)) {
     for (int j = 0; j < kMean; ++j) {
       const double u = (i + 0.5) / kMean, v = (j + 0.5) / kMean;
       if (three && v > u) continue;
-      const Vec3 xu = (patch_.point({u + kH, v}) - patch_.point({u - kH, v})) / (2 * kH);
-      const Vec3 xv = (patch_.point({u, v + kH}) - patch_.point({u, v - kH})) / (2 * kH);
+      const Vec3 xu = (patch_.point(param({u + kH, v})) - patch_.point(param({u - kH, v}))) / (2 * kH);
+      const Vec3 xv = (patch_.point(param({u, v + kH})) - patch_.point(param({u, v - kH}))) / (2 * kH);
       m11 += dot(xu, xu), m12 += dot(xu, xv), m22 += dot(xv, xv);
       ++count;
     }
@@ -52,8 +53,8 @@ FillingMap::FillingMap(geo::TransfinitePatch patch) : patch_(std::move(patch)) {
   } else {
     // A degenerate mean metric: the mean lengths of opposite sides (3 sides: the first
     // two), a collapsed pair kept usable.
-    double a = three ? side_length(s[0]) : 0.5 * (side_length(s[0]) + side_length(s[2]));
-    double b = three ? side_length(s[1]) : 0.5 * (side_length(s[1]) + side_length(s[3]));
+    double a = s.size() == 3 ? side_length(s[0]) : 0.5 * (side_length(s[0]) + side_length(s[2]));
+    double b = s.size() == 3 ? side_length(s[1]) : 0.5 * (side_length(s[1]) + side_length(s[3]));
     const double big = std::max(a, b);
     a = big > 0 ? std::max(a, 1e-3 * big) : 1.0;
     b = big > 0 ? std::max(b, 1e-3 * big) : 1.0;
@@ -82,7 +83,14 @@ Vec2 FillingMap::side_point(std::size_t side, double t) const {
   return to_plane(uv);
 }
 
-Vec3 FillingMap::point(Vec2 p) const { return patch_.point(to_uv(p)); }
+Vec2 FillingMap::param(Vec2 t) const {
+  if (patch_.sides.size() != 3 || !patch_.old_style) return t;
+  // The old form's square (u, v) seen from the triangle (x, y) = (u, u v): its side u = 0,
+  // collapsed to S0 in space, becomes the corner (0, 0), where the form is regular.
+  return {t.x, t.x != 0 ? t.y / t.x : 0.0};
+}
+
+Vec3 FillingMap::point(Vec2 p) const { return patch_.point(param(to_uv(p))); }
 
 double FillingMap::stretch(Vec2 p) const {
   const double dx = 10 * step_, dy = 10 * step_;

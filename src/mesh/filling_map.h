@@ -27,7 +27,8 @@ class FillingMap {
   explicit FillingMap(geo::TransfinitePatch patch);
 
   /// Plane point of side `side` at its own parameter s in [0,1] (the loop's direction):
-  /// 4 sides (s,0), (1,s), (1-s,1), (0,1-s); 3 sides (s,0), (1,s), (1-s,1-s), mapped by L.
+  /// 4 sides (s,0), (1,s), (1-s,1), (0,1-s); 3 sides (s,0), (1,s), (1-s,1-s), both
+  /// forms (param()), mapped by L.
   Vec2 side_point(std::size_t side, double s) const;
   /// The patch's point at plane point p.
   Vec3 point(Vec2 p) const;
@@ -41,7 +42,12 @@ class FillingMap {
   /// of a grid of samples, then at most 40 damped Gauss-Newton steps).
   Vec2 plane_of(Vec3 x) const;
   const geo::TransfinitePatch& patch() const { return patch_; }
-  /// Plane point of patch parameters, and back.
+  /// The patch's (u, v) of a point t of the domain: t itself, but for the old 3-sided
+  /// form (Geometry.OldRuledSurface), on the unit square with its side u = 0 collapsed
+  /// to S0, (u, v) = (t.x, t.y / t.x) from Gmsh's triangle t.x >= t.y (its sides (s,0),
+  /// (1,s), (1-s,1) of gmshEdge::reparamOnFace become those of the new form).
+  Vec2 param(Vec2 t) const;
+  /// Plane point of domain points (patch parameters but for param()), and back.
   Vec2 to_plane(Vec2 uv) const { return {l11_ * uv.x + l12_ * uv.y, l22_ * uv.y}; }
   Vec2 to_uv(Vec2 p) const {
     const double v = p.y / l22_;
