@@ -24,6 +24,7 @@ KindSpec max_eigen_hessian_kind();
 KindSpec max_kind();
 KindSpec mean_kind();
 KindSpec min_kind();
+KindSpec min_aniso_kind();
 KindSpec param_kind();
 KindSpec restrict_kind();
 KindSpec structured_kind();

@@ -714,6 +714,11 @@ GeoResult<Vec3> Model::surface_point(int tag, Vec2 uv) const {
   if (!s->filling)
     return make_error(GeoErrorKind::BadArgument, EntityKind::Surface, {tag},
                       fmt::format("plane surface {} is not parametrised by (u,v): it lies in the plane of its boundary", tag));
+  return filling_patch(*s).point(uv);
+}
+
+TransfinitePatch Model::filling_patch(const ModelSurface& surf) const {
+  const ModelSurface* s = &surf;
   // Loop orientation: a negative loop tag reverses the loop.
   std::vector<int> cs = loops_.at(std::abs(s->loops[0])).curves;
   if (s->loops[0] < 0) {
@@ -721,6 +726,7 @@ GeoResult<Vec3> Model::surface_point(int tag, Vec2 uv) const {
     for (int& c : cs) c = -c;
   }
   TransfinitePatch patch;
+  patch.old_style = options_.old_ruled_surface;
   for (int c : cs) patch.sides.push_back({&*curves_.at(std::abs(c)).shape, c < 0});
   if (s->sphere_centre) {
     patch.sphere_centre = vertices_.at(s->sphere_centre).xyz;
@@ -747,7 +753,7 @@ GeoResult<Vec3> Model::surface_point(int tag, Vec2 uv) const {
     }
     if (circles && !one_plane) patch.sphere_centre = vertices_.at(centre).xyz;
   }
-  return patch.point(uv);
+  return patch;
 }
 
 GeoResult<std::optional<double>> Model::intersect_curve_surface(int curve_tag, int surface_tag) const {

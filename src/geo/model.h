@@ -6,6 +6,7 @@
 #include "geo/curve.h"
 #include "geo/error.h"
 #include "geo/extrude.h"
+#include "geo/surface_filling.h"
 #include "geo/surface_geometry.h"
 
 #include <array>
@@ -101,6 +102,7 @@ struct ModelOptions {
   double tolerance = 1e-8;     // Geometry.Tolerance: relative to the bounding box diagonal
   bool old_new_reg = true;     // Geometry.OldNewReg: newl/newc/newll/news return newreg
   bool auto_coherence = true;  // Geometry.AutoCoherence: Coherence after every transform
+  bool old_ruled_surface = false;  // Geometry.OldRuledSurface: Gmsh's old 3-sided patch
 };
 
 enum class PhysicalOp { Assign, Add, Remove };
@@ -145,6 +147,9 @@ class Model {
   GeoStatus add_surface_filling(int tag, const std::vector<int>& loops, std::optional<int> sphere_centre = std::nullopt);
   /// The point at (u,v) of a filling surface or of a surface on a geometry.
   GeoResult<Vec3> surface_point(int tag, Vec2 uv) const;
+  /// The transfinite patch of filling surface `s` (its first loop, Gmsh's sphere guess
+  /// when no "In Sphere" is given): valid while the model's curves are unchanged.
+  TransfinitePatch filling_patch(const ModelSurface& s) const;
   /// Where curve `curve` meets the filling surface `surface`: the curve's parameter, or
   /// nothing when Gmsh's search (Newton from u = v = t = 0.5, Geo/Geo.cpp's
   /// IntersectCurvesWithSurface) does not converge.

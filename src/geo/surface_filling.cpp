@@ -14,6 +14,8 @@ Vec3 TransfinitePatch::point(Vec2 uv) const {
   if (sides.size() == 4) {
     f = (1 - u) * c(3, 1 - v) + u * c(1, v) + (1 - v) * c(0, u) + v * c(2, 1 - u) -
         ((1 - u) * (1 - v) * s(0) + u * (1 - v) * s(1) + u * v * s(2) + (1 - u) * v * s(3));
+  } else if (old_style) {
+    f = u * c(1, v) + (1 - v) * c(0, u) + v * c(2, 1 - u) - (u * (1 - v) * s(1) + u * v * s(2));
   } else {
     f = (1 - u) * (c(0, u - v) + c(2, 1 - v) - s(0)) + (u - v) * (c(1, v) + c(0, u) - s(1)) +
         v * (c(2, 1 - u) + c(1, 1 - u + v) - s(2));

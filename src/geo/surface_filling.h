@@ -22,10 +22,14 @@ struct PatchSide {
 /// With 3 sides (Gmsh's default, Geometry.OldRuledSurface = 0):
 ///   f = (1-u)(C0(u-v) + C2(1-v) - S0) + (u-v)(C1(v) + C0(u) - S1) + v(C2(1-u) + C1(1-u+v) - S2),
 /// the triangle being u >= v (beyond it the sides are extrapolated, as in Gmsh). With a
-/// sphere centre O the point is moved radially to distance |S0 - O| from O.
+/// sphere centre O the point is moved radially to distance |S0 - O| from O. With 3 sides
+/// and Geometry.OldRuledSurface = 1 (`old_style`), Gmsh's old form on the unit square,
+/// the side u = 0 collapsed to S0 (Geo/GeoInterpolation.cpp's TRAN_TRI):
+///   f = u C1(v) + (1-v) C0(u) + v C2(1-u) - (u(1-v) S1 + uv S2).
 struct TransfinitePatch {
   std::vector<PatchSide> sides;
   std::optional<Vec3> sphere_centre;
+  bool old_style = false;
   Vec3 point(Vec2 uv) const;
 };
 

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -13,6 +14,7 @@
 #include "base/vec.h"
 #include "geo/sphere.h"
 #include "geo/surface_geometry.h"
+#include "mesh/filling_map.h"
 #include "mesh/model_mesh.h"
 
 namespace sm {
@@ -22,9 +24,11 @@ namespace sm {
 // of (lon, lat) becomes isotropic and the same refiners apply. A Euclidean plane gets an
 // orthonormal basis (e1, e2) such that e1 x e2 is the outer loop's Newell normal, so the
 // outer loop runs counter-clockwise in the plane; for a loop in z = const the basis is
-// (x, +-y) and the coordinates are exact.
+// (x, +-y) and the coordinates are exact. A non-planar filling Surface is meshed in the
+// scaled parameters of its patch (filling_map.h).
 struct FacePlane {
   const geo::SurfaceGeometry* geom = nullptr;
+  std::shared_ptr<const FillingMap> filling;  // set: the plane is the patch's (geom null)
   bool mercator = false;
   Vec3 o, e1, e2, n;
   bool ccw_is_outward = true;   // on a geometry: counter-clockwise triangles face outwards
@@ -34,9 +38,13 @@ struct FacePlane {
   Vec2 from_param(Vec2 uv) const { return mercator ? Vec2{uv.x, std::asinh(std::tan(uv.y))} : uv; }
   /// Surface parameters of a plane point.
   Vec2 to_param(Vec2 p) const { return mercator ? Vec2{p.x, std::atan(std::sinh(p.y))} : p; }
-  Vec3 to_space(Vec2 p) const { return geom ? geom->point(to_param(p)) : o + p.x * e1 + p.y * e2; }
+  Vec3 to_space(Vec2 p) const {
+    if (filling) return filling->point(p);
+    return geom ? geom->point(to_param(p)) : o + p.x * e1 + p.y * e2;
+  }
   /// Lengths on the surface per length in the plane at p (1 on a Euclidean plane).
   double lambda(Vec2 p) const {
+    if (filling) return filling->stretch(p);
     if (!geom) return 1.0;
     if (const geo::PolarSphere* ps = geom->polar()) return ps->lambda(p);
     return geom->radius() / std::cosh(p.y);
@@ -44,9 +52,17 @@ struct FacePlane {
   /// On a geometry: the node's surface parameters (its (u,v), else from its position).
   Vec2 node_param(const MeshNode& node) const { return node.has_uv ? node.uv : geom->param(node.xyz); }
   /// The node's place in the plane.
-  Vec2 node_plane(const MeshNode& node) const { return geom ? from_param(node_param(node)) : to_plane(node.xyz); }
+  Vec2 node_plane(const MeshNode& node) const {
+    if (filling) return filling->plane_of(node.xyz);
+    return geom ? from_param(node_param(node)) : to_plane(node.xyz);
+  }
   /// Plane point of a 3D point (taken radially onto a sphere first).
-  Vec2 plane_of_space(Vec3 x) const { return geom ? from_param(geom->param(x)) : to_plane(x); }
+  Vec2 plane_of_space(Vec3 x) const {
+    if (filling) return filling->plane_of(x);
+    return geom ? from_param(geom->param(x)) : to_plane(x);
+  }
+  /// Whether plane lengths differ from lengths on the surface (lambda is not 1).
+  bool scaled() const { return geom || filling; }
   /// On a geometry: the longitude/latitude (degrees) of a point of the face.
   geo::LonLat lonlat(Vec3 x) const;
 };

@@ -31,9 +31,10 @@ constexpr double kDel2dRadiusLimit = 0.73;
 // (smaller ones refine in well under a tenth of a second).
 constexpr std::uint64_t kNestedProgressTriangles = 65536;
 
-// RefineOptions::vertex_size_scale of the face: 1 / lambda on a sphere, null on a plane.
+// RefineOptions::vertex_size_scale of the face: 1 / lambda on a sphere or a filling
+// patch, null on a plane.
 PlaneSizeFn plane_scale(const FaceWork& f) {
-  if (!f.plane.geom) return nullptr;
+  if (!f.plane.scaled()) return nullptr;
   const std::shared_ptr<const FaceSizing> sizing = f.sizing;
   return [sizing](std::span<const Vec2> p, std::span<double> h) {
     for (std::size_t i = 0; i < p.size(); ++i) h[i] = 1 / sizing->plane.lambda(p[i]);

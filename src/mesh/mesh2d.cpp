@@ -2,7 +2,8 @@
 // FaceWork (face_work.h): boundary and plane (face_boundary), boundary mesh and sizing
 // (face_boundary_mesh; the boundary layers before it, face_layer), the element budget (here), refinement (face_refine), smoothing
 // and the quality pass (face_smooth), the quality floor (face_floor), output
-// (face_output); a transfinite face is filled instead (face_transfinite).
+// (face_output); a transfinite face is filled instead (face_transfinite); a filling
+// Surface gets its plane from face_filling.
 #include "mesh/mesh2d.h"
 
 #include <algorithm>
@@ -18,6 +19,7 @@
 #include "base/progress.h"
 #include "mesh/face_boundary.h"
 #include "mesh/face_boundary_mesh.h"
+#include "mesh/face_filling.h"
 #include "mesh/face_floor.h"
 #include "mesh/face_layer.h"
 #include "mesh/face_output.h"
@@ -58,25 +60,21 @@ bool check_budget(FaceWork& f, std::uint64_t& estimate) {
 // The pipeline of one face: a transfinite one filled, any other through the steps in
 // turn, each timed into its stage of Mesh2dStats.
 bool run_face(FaceWork& f, const geo::ModelSurface& s) {
-  if (s.filling && s.loops.size() > 1)
-    return f.fail(fmt::format("a filling 'Surface' with holes (curve loop {}{}) is not meshed yet (Gmsh meshes it in "
-                              "the (u,v) of its first loop's patch)",
-                              std::abs(s.loops[1]),
-                              s.loops.size() > 2 ? fmt::format(" and {} more", s.loops.size() - 2) : ""));
   if (is_layered_extrusion(f.model, s.tag)) return f.estimate_only || mesh_extruded_face(f, s);   // Extrude's Layers
   if (f.opt.constraints)
     if (const auto it = f.opt.constraints->surfaces.find(s.tag); it != f.opt.constraints->surfaces.end()) {
       if (f.estimate_only) return true;  // a grid: its count is the curves' product
       return mesh_transfinite_face(f, s, it->second);
     }
-  if (s.filling)
-    return f.fail("a filling 'Surface' is meshed only as a transfinite one: add 'Transfinite Surface{" +
-                  std::to_string(s.tag) + "};' (or use 'Plane Surface')");
   f.plane.geom = s.geometry ? f.model.geometry(s.geometry) : nullptr;
   if (s.geometry && !f.plane.geom) return f.fail(fmt::format("surface geometry {} does not exist", s.geometry));
   auto t0 = std::chrono::steady_clock::now();
-  if (!collect_boundary(f, s) || !choose_plane(f) || !build_boundary_layers(f) || !triangulate_boundary(f))
+  if (!collect_boundary(f, s)) return false;
+  if (s.filling && !s.geometry)
+    choose_filling_plane(f, s);  // its boundary's plane or its patch's (face_filling.h)
+  else if (!choose_plane(f))
     return false;
+  if (!build_boundary_layers(f) || !triangulate_boundary(f)) return false;
   make_sizing(f);
   std::uint64_t estimate = 0;
   if (!check_budget(f, estimate)) return false;

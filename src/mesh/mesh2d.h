@@ -26,8 +26,8 @@ std::vector<StageTime> stage_times(const Mesh2dStats& s);
 /// faces sharing curves share nodes; interior nodes get their (u,v) on a surface geometry.
 /// Triangles are oriented with the outward normal on a sphere and by the right-hand rule
 /// of the outer loop on a plane. Deterministic. On failure, surfaces meshed before the
-/// failing one are kept, the failing one is absent. A filling Surface is meshed only when
-/// it is transfinite (else an error).
+/// failing one are kept, the failing one is absent. A filling Surface is meshed in its
+/// boundary's plane when that is planar, else in its patch's parameters (face_filling.h).
 Mesh2dResult mesh_surfaces(const geo::Model& model, ModelMesh& mesh, const Mesh2dOptions& opt);
 
 /// The element budget of the faces on a coarse 1D mesh (Mesh1dOptions::coarse_check):

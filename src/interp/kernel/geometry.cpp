@@ -118,6 +118,7 @@ void sync_geometry_options(Interpreter& in) {
   o.tolerance = opt.number("Geometry.Tolerance");
   o.old_new_reg = opt.number("Geometry.OldNewReg") != 0;
   o.auto_coherence = opt.number("Geometry.AutoCoherence") != 0;
+  o.old_ruled_surface = opt.number("Geometry.OldRuledSurface") != 0;
 }
 
 int to_tag(Interpreter& in, double v, SourceRange at) {

@@ -23,6 +23,7 @@
 #include "interp/kernel/dispatch.h"
 #include "interp/kernel/field_context.h"
 #include "interp/kernel/field_eval.h"
+#include "interp/kernel/geometry_shapes.h"
 #include "interp/kernel/node_data_export.h"
 #include "interp/kernel/ocean_grid_export.h"
 #include "interp/kernel/output_options.h"
@@ -243,6 +244,7 @@ std::vector<DiagNote> set_here(const KernelState& k, const std::string& option) 
 // mesher's warnings are reported at `where` (the Mesh statement; none for -1/-2).
 MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   KernelState& k = in.kernel();
+  sync_geometry_options(in);  // Gmsh reads Geometry.OldRuledSurface when it meshes
   k.partition.reset();
   if (std::string why = check_elements_across_channels(in.options()); !why.empty()) {
     MeshFailure f{Diag::InvalidOptionValue, std::move(why), {}};

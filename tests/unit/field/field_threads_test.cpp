@@ -132,6 +132,8 @@ std::vector<int> define_all(FieldSet& fs, std::size_t coast_points) {
   fs.set(mn, "FieldsList", std::vector<double>{static_cast<double>(thr), static_cast<double>(wave)});
   const int mx = def("Max");
   fs.set(mx, "FieldsList", std::vector<double>{static_cast<double>(thr), static_cast<double>(expr)});
+  const int mna = def("MinAniso");
+  fs.set(mna, "FieldsList", std::vector<double>{static_cast<double>(mn), static_cast<double>(mx)});
 
   const int grad = def("Gradation");
   fs.set(grad, "InField", static_cast<double>(mn));

@@ -12,7 +12,7 @@ using namespace sm::field;
 TEST_CASE("registry: every kind of the issue is registered, sorted") {
   const char* expected[] = {"Ball", "Bathymetry", "BoundaryLayer", "Box", "ChannelWidth", "Constant", "Curvature", "Cylinder",
                             "Distance", "Gradation", "Gradient", "Laplacian", "LonLat", "MathEval",
-                            "Max", "MaxEigenHessian", "Mean", "Min", "Param", "Restrict",
+                            "Max", "MaxEigenHessian", "Mean", "Min", "MinAniso", "Param", "Restrict",
                             "Structured", "Threshold", "TimeStep"};
   REQUIRE(kinds().size() == std::size(expected));
   for (std::size_t i = 0; i < kinds().size(); ++i) CHECK(kinds()[i].name == expected[i]);

@@ -11,9 +11,11 @@ Surface(1) = {1, 2};
 b[] = Boundary{Surface{1};};
 Printf("%g: %g %g %g %g %g %g %g", #b[], b[0], b[1], b[2], b[3], b[4], b[5], b[6]);
 Printf("%g", news);
-// Meshing it is not done yet: a located error, not a wrong mesh.
-Mesh 2;
 // gmsh 4.8.4 -0 output:
 // expect: 7: 1 2 3 4 -7 -6 -5
 // expect: 8
-// expect error: 15:1: mesh-error
+// Meshed in the patch's parameters (non-planar: z = 0, 0.5, 0, 0.5 at the corners), the
+// hole's nodes projected onto the patch. `gmsh -2`: 292 triangles; ours within 15%.
+Mesh 2;
+Printf("%g", Fabs(Mesh.NbTriangles - 292) <= 0.15 * 292);
+// expect: 1
