@@ -100,8 +100,24 @@ bool choose_plane(FaceWork& f) {
   for (const auto* group : {&f.chains, &f.emb_curves})
     for (const FaceChain& ch : *group) curves.push_back(&ch.nodes);
   const double tol = std::max(f.model.options().tolerance * f.bbox, 1e-12 * f.bbox);
-  const std::optional<FacePlaneProblem> p = make_face_plane(f.plane, f.mesh, curves, f.emb_points, tol);
-  return p ? f.fail(p->message, p->where) : true;
+  // Gmsh meshes a Plane Surface in its mean plane however far its boundary lies off it,
+  // and only checks (in a debug message) that no point is off by more than 1e-3 of the
+  // bounding box's diagonal. Within that bound we mesh in the plane too, with a warning;
+  // beyond it the boundary is taken for a mistake.
+  constexpr double kGmshPlaneCoherence = 1e-3;
+  std::optional<FacePlaneOffset> off;
+  const std::optional<FacePlaneProblem> p =
+      make_face_plane(f.plane, f.mesh, curves, f.emb_points, tol, kGmshPlaneCoherence * f.bbox, &off);
+  if (p)
+    return f.fail(fmt::format("{} (off its plane by more than {:g} of its size, the bound Gmsh checks)", p->message,
+                              kGmshPlaneCoherence),
+                  p->where);
+  if (off)
+    f.res.warnings.push_back(fmt::format(
+        "surface {}: the boundary lies up to {:.3g} off the surface's plane (more than Geometry.Tolerance; {:.2g} of "
+        "its size) near {}: meshed in that plane, as Gmsh meshes a Plane Surface in its mean plane",
+        f.tag, off->distance, off->distance / f.bbox, f.where_text(off->where)));
+  return true;
 }
 
 }  // namespace sm

@@ -14,7 +14,8 @@ geo::LonLat FacePlane::lonlat(Vec3 x) const {
 
 std::optional<FacePlaneProblem> make_face_plane(FacePlane& plane, const ModelMesh& mesh,
                                                 std::span<const std::vector<std::uint32_t>* const> curves,
-                                                std::span<const std::uint32_t> points, double tolerance) {
+                                                std::span<const std::uint32_t> points, double tolerance,
+                                                double accept, std::optional<FacePlaneOffset>* offset) {
   if (plane.geom) {
     plane.mercator = plane.geom->lonlat() != nullptr;
     Vec2 uv{0, 0};
@@ -59,15 +60,22 @@ std::optional<FacePlaneProblem> make_face_plane(FacePlane& plane, const ModelMes
     plane.o = c;
     plane.n = n;
   }
-  auto in_plane = [&](std::uint32_t node) {
+  // Within the tolerance a node is in the plane; up to `accept` it is off but accepted (the
+  // farthest such node is reported); beyond, the face is not planar.
+  const double bound = std::max(tolerance, accept);
+  FacePlaneOffset farthest;
+  auto check = [&](std::uint32_t node) {
     const Vec3 x = mesh.nodes[node].xyz;
-    return std::abs(dot(x - plane.o, plane.n)) <= tolerance;
+    const double d = std::abs(dot(x - plane.o, plane.n));
+    if (d > tolerance && d > farthest.distance) farthest = {d, x};
+    return d <= bound;
   };
   for (const std::vector<std::uint32_t>* nodes : curves)
     for (std::uint32_t v : *nodes)
-      if (!in_plane(v)) return FacePlaneProblem{"the boundary is not planar", mesh.nodes[v].xyz};
+      if (!check(v)) return FacePlaneProblem{"the boundary is not planar", mesh.nodes[v].xyz};
   for (std::uint32_t v : points)
-    if (!in_plane(v)) return FacePlaneProblem{"an embedded point is not in the surface's plane", mesh.nodes[v].xyz};
+    if (!check(v)) return FacePlaneProblem{"an embedded point is not in the surface's plane", mesh.nodes[v].xyz};
+  if (offset && farthest.distance > 0) *offset = farthest;
   return std::nullopt;
 }
 

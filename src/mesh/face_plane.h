@@ -78,8 +78,21 @@ struct FacePlaneProblem {
 /// geometry (plane.geom set by the caller) no curve node may reach a pole of a lon/lat
 /// Sphere; on a Euclidean plane the outer loop must enclose an area and every node must
 /// lie within `tolerance` of the plane (Gmsh's Plane Surface is planar).
+/// How far a Plane Surface's boundary lies off the plane it is meshed in, when it is off by
+/// more than the tolerance but within the accepted bound (make_face_plane).
+struct FacePlaneOffset {
+  double distance = 0;
+  Vec3 where;
+};
+
+/// The plane of a face. Boundary nodes and embedded points farther than `tolerance` from a
+/// Plane Surface's plane are a problem unless within `accept` (>= tolerance): then the face is
+/// meshed in that plane all the same, its new nodes on it, as Gmsh meshes a Plane Surface in
+/// its mean plane, and `offset` (when given) says how far and where.
 std::optional<FacePlaneProblem> make_face_plane(FacePlane& plane, const ModelMesh& mesh,
                                                 std::span<const std::vector<std::uint32_t>* const> curves,
-                                                std::span<const std::uint32_t> points, double tolerance);
+                                                std::span<const std::uint32_t> points, double tolerance,
+                                                double accept = 0,
+                                                std::optional<FacePlaneOffset>* offset = nullptr);
 
 }  // namespace sm
