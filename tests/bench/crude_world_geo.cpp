@@ -19,17 +19,18 @@
 //   P are dropped. As Lines the loop retraces a segment; gmsh -2 stops on the second
 //   ("Unable to recover the edge ... on curve 3616"), stereomesh on the first (a located
 //   curves-intersect error, "distinct nodes at the same place").
-// - bsplines only: a ring whose B-spline crosses another ring's (coast/spline_check.h, the
-//   smaller ring of each crossing pair, or a ring crossing itself) is left out: the crude world's sliver islands (3
-//   points, two of them 40 m apart) cut across the continent beside them, as sampling
-//   Gmsh's own evaluation of the two curves confirms. Gmsh meshes such a file only because
-//   its 2-node mesh of the sliver misses the crossing; stereomesh stops with a located
-//   curves-intersect error.
+// - bsplines only: a ring whose B-spline crosses another ring's or its own
+//   (coast/spline_check.h; of a pair, the smaller ring) is left out: 12 small islands of 3
+//   to 8 points cut across the coast beside them. For the sliver off west Greenland (3
+//   points, two of them 40 m apart) sampling Gmsh's own evaluation of the two curves finds
+//   the crossings; Gmsh meshes such a file only because its 2-node mesh of the sliver
+//   misses them, stereomesh stops with a located curves-intersect error.
 // --raw writes every point and ring (the invalid script, to see those errors).
 //
 // Usage: bench_crude_world_geo lines|bsplines SIZE_M OUT.geo [--raw] [BINNED_FILE]
-// Both stereomesh -2 and gmsh -2 mesh OUT.geo (tests/scripts/crude_world/run.sh, the
+// Both stereomesh -2 and gmsh -2 mesh OUT.geo (tests/tools/check_crude_world.sh, the
 // figures in docs/coastlines.md).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
