@@ -37,6 +37,13 @@ void output_face(FaceWork& f) {
   sm_out.tag = f.tag;
   const std::uint32_t nv = f.tri.num_vertices();
   f.global.resize(nv, kNoLocal);  // the floor's curve nodes have theirs already
+  // The node array grown once for the face: by doubling it would hold the old array and
+  // one of twice its size at once (48 bytes a node) while the face's store is still
+  // alive. At least by half when it grows, so that many small faces stay linear.
+  const std::size_t need = f.mesh.nodes.size() + (nv - std::min(nv, f.fixed_count));
+  if (need > f.mesh.nodes.capacity())
+    f.mesh.nodes.reserve(std::max(need, f.mesh.nodes.capacity() + f.mesh.nodes.capacity() / 2));
+  sm_out.interior_nodes.reserve(nv - std::min(nv, f.fixed_count));
   for (std::uint32_t v = f.fixed_count; v < nv; ++v) {
     if (f.global[v] != kNoLocal) continue;
     const Vec2 p = f.tri.xy[v];
@@ -69,7 +76,19 @@ void output_face(FaceWork& f) {
     local = std::move(rr.triangles);
     local_quads = std::move(rr.quads);
   }
-  append_elements(sm_out, local, local_quads, flip, f.global);
+  if (local_quads.empty() && !f.has_layers()) {
+    // The common case: the local triangles become the surface's in place (a second
+    // array of 12 bytes a triangle otherwise), the face's store freed first (about 40
+    // bytes a triangle; nothing after the output reads it).
+    f.tri = TriangleStore{};
+    for (auto& t : local) {
+      const std::uint32_t a = f.global[t[0]], b = f.global[t[1]], c = f.global[t[2]];
+      t = flip ? std::array<std::uint32_t, 3>{a, c, b} : std::array<std::uint32_t, 3>{a, b, c};
+    }
+    sm_out.triangles = std::move(local);
+  } else {
+    append_elements(sm_out, local, local_quads, flip, f.global);
+  }
   // The boundary layers' elements (face_layer.h), already on global nodes.
   std::vector<std::uint32_t> identity;
   if (f.has_layers()) {

@@ -9,14 +9,11 @@
 #include <limits>
 #include <numeric>
 
-#if defined(__GLIBC__)
-#include <malloc.h>
-#endif
-
 #include <fmt/format.h>
 
 #include "base/elapsed.h"
 #include "base/parallel.h"
+#include "base/release_memory.h"
 #include "mesh/cdt.h"
 #include "mesh/delaunay.h"
 #include "mesh/frontal.h"
@@ -26,16 +23,6 @@ namespace {
 
 constexpr double kEquilateralArea = 0.4330127018922193;  // sqrt(3)/4: equilateral of side 1
 constexpr std::size_t kBatch = 4096;
-
-// Gives freed heap pages back to the system. A part's arrays (about a megabyte each) come
-// from the heap, not from their own mappings, so without this the parts freed during the
-// merge stay resident beside the merged arrays (square, 10M triangles: 85 -> 63 bytes per
-// triangle at the peak).
-void release_free_memory() {
-#if defined(__GLIBC__)
-  malloc_trim(0);
-#endif
-}
 
 double area(const TriangleStore& m, std::uint32_t t) {
   const Vec2 a = m.pos(m.vertex(TriId{t}, 0)), b = m.pos(m.vertex(TriId{t}, 1)), c = m.pos(m.vertex(TriId{t}, 2));
@@ -526,6 +513,9 @@ PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, 
         po = PartOut{};
       }
     });
+    // A part's arrays (about a megabyte each) come from the heap, not from their own
+    // mappings: without this the parts freed here stay resident beside the merged arrays
+    // (square, 10M triangles: 85 -> 63 bytes per triangle at the peak).
     release_free_memory();
   }
   std::vector<std::uint32_t> hull;
