@@ -160,6 +160,15 @@ void raise_face_floor(FaceWork& f) {
   double worst_start = 1;
   const std::uint32_t below_start = count_below(f.tri, space, f.opt.quality_floor, &worst_start);
   if (below_start == 0) return;
+  // The refinement's merge sized the store's arrays exactly (partition.cpp): room for
+  // the floor's points (at most QualityFloorOptions' default budget, each 2 triangles net,
+  // the insertion reusing the dead slots), else its first new triangle doubles every
+  // array of the store, a copy of it held beside the old one (the world at 10 km: 58 MiB
+  // more resident). Capacity only: the mesh is the same.
+  // Never more than the store's own size (what doubling would have added).
+  const auto room = static_cast<std::uint32_t>(
+      std::min<std::uint64_t>(4 * std::uint64_t{below_start} + 256 + 1024, f.tri.num_slots()));
+  f.tri.reserve(f.tri.num_vertices() + room, f.tri.num_slots() + 2 * room);
   const TriangleStore before = f.tri;
   const std::size_t nodes_start = f.mesh.nodes.size(), global_start = f.global.size();
   QualityFloorResult r, left;

@@ -36,16 +36,8 @@ void output_face(FaceWork& f) {
   SurfaceMesh sm_out;
   sm_out.tag = f.tag;
   const std::uint32_t nv = f.tri.num_vertices();
-  f.global.resize(nv, kNoLocal);  // the floor's curve nodes have theirs already
-  for (std::uint32_t v = f.fixed_count; v < nv; ++v) {
-    if (f.global[v] != kNoLocal) continue;
-    const Vec2 p = f.tri.xy[v];
-    f.global[v] =
-        f.plane.geom ? f.mesh.add_node(f.plane.to_space(p), f.plane.to_param(p)) : f.mesh.add_node(f.plane.to_space(p));
-    sm_out.interior_nodes.push_back(f.global[v]);
-  }
-  const bool flip = f.plane.geom && !f.plane.ccw_is_outward;
-  // Local triangles, counter-clockwise in the plane.
+  // Local triangles, counter-clockwise in the plane; then the store's topology is freed
+  // (about 32 bytes a triangle) before the nodes are made: only its points are read after.
   std::vector<std::array<std::uint32_t, 3>> local;
   local.reserve(f.tri.num_triangles());
   for (std::uint32_t t = 0; t < f.tri.num_slots(); ++t) {
@@ -53,6 +45,24 @@ void output_face(FaceWork& f) {
     local.push_back(
         {f.tri.vertex(TriId{t}, 0).value, f.tri.vertex(TriId{t}, 1).value, f.tri.vertex(TriId{t}, 2).value});
   }
+  std::vector<Vec2> xy = std::move(f.tri.xy);
+  f.tri = TriangleStore{};
+  f.global.resize(nv, kNoLocal);  // the floor's curve nodes have theirs already
+  // The node array grown once for the face: by doubling it would hold the old array and
+  // one of twice its size at once (48 bytes a node). At least by half when it grows, so
+  // that many small faces stay linear.
+  const std::size_t need = f.mesh.nodes.size() + (nv - std::min(nv, f.fixed_count));
+  if (need > f.mesh.nodes.capacity())
+    f.mesh.nodes.reserve(std::max(need, f.mesh.nodes.capacity() + f.mesh.nodes.capacity() / 2));
+  sm_out.interior_nodes.reserve(nv - std::min(nv, f.fixed_count));
+  for (std::uint32_t v = f.fixed_count; v < nv; ++v) {
+    if (f.global[v] != kNoLocal) continue;
+    const Vec2 p = xy[v];
+    f.global[v] =
+        f.plane.geom ? f.mesh.add_node(f.plane.to_space(p), f.plane.to_param(p)) : f.mesh.add_node(f.plane.to_space(p));
+    sm_out.interior_nodes.push_back(f.global[v]);
+  }
+  const bool flip = f.plane.geom && !f.plane.ccw_is_outward;
   std::vector<std::array<std::uint32_t, 4>> local_quads;
   if (f.recombined()) {
     std::vector<Vec3> xyz(nv);
@@ -65,11 +75,22 @@ void output_face(FaceWork& f) {
     std::sort(fixed.begin(), fixed.end());
     RecombineOptions ro;
     ro.algorithm = f.opt.constraints->algorithm;
-    RecombineResult rr = recombine(local, xyz, f.tri.xy, fixed, ro);
+    RecombineResult rr = recombine(local, xyz, xy, fixed, ro);
     local = std::move(rr.triangles);
     local_quads = std::move(rr.quads);
   }
-  append_elements(sm_out, local, local_quads, flip, f.global);
+  xy = {};
+  if (local_quads.empty() && !f.has_layers()) {
+    // The common case: the local triangles become the surface's in place (a second
+    // array of 12 bytes a triangle otherwise).
+    for (auto& t : local) {
+      const std::uint32_t a = f.global[t[0]], b = f.global[t[1]], c = f.global[t[2]];
+      t = flip ? std::array<std::uint32_t, 3>{a, c, b} : std::array<std::uint32_t, 3>{a, b, c};
+    }
+    sm_out.triangles = std::move(local);
+  } else {
+    append_elements(sm_out, local, local_quads, flip, f.global);
+  }
   // The boundary layers' elements (face_layer.h), already on global nodes.
   std::vector<std::uint32_t> identity;
   if (f.has_layers()) {

@@ -13,7 +13,8 @@ namespace sm {
 
 /// The interior nodes of f.tri to 3D (their (u,v) on a geometry), its triangles oriented
 /// (paired into quadrangles by recombine.h where the surface is recombined), the
-/// surface's mesh stored and its target size kept in f.res.target_sizes.
+/// surface's mesh stored and its target size kept in f.res.target_sizes. f.tri is
+/// emptied (freed before the nodes are made: the output is the face's last step).
 void output_face(FaceWork& f);
 
 /// Appends elements to `out`, their corners mapped by `node` (local -> global node) and

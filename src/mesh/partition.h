@@ -86,7 +86,7 @@ std::vector<Vec2> subdivide_segment(Vec2 a, Vec2 b, const PlaneSizeFn& size);
 /// Delaunay only within parts (a later make_delaunay or smoothing fixes the seams).
 /// part_sizes, if given, sets each part's size_at and vertex_size_at instead (its own
 /// functions, called from the part's thread); the coarse pass never sizes by vertices.
-/// The result is the same bytes for every thread count. on_parts, if given, is called on
+/// The result is the same bytes for every thread count; on failure m is left empty. on_parts, if given, is called on
 /// the calling thread only: (0, K) once the part count K is known, then (done, K) as parts
 /// finish (non-decreasing, last (K, K) when all succeed); the parts report nothing.
 PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, PartRefiner kind,

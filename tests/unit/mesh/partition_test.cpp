@@ -242,6 +242,9 @@ TEST_CASE("partition: a non-positive size is an error, not a crash") {
     const PartitionResult r = refine_partitioned(m, RefineOptions{}, PartRefiner::Del2d, make, PartitionOptions{}, 2);
     CHECK_FALSE(r.ok());
     CHECK(r.error.find("positive") != std::string::npos);
+    // The coarse pass took m's arrays (moved, not copied: partition.h).
+    CHECK(m.num_vertices() == 0);
+    CHECK(m.num_slots() == 0);
   }
 }
 
