@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <array>
 #include <bit>
+#include <span>
 #include <map>
 #include <set>
 #include <optional>
@@ -25,6 +26,7 @@
 #include "exact/ring.h"
 #include "exact/predicates.h"
 #include "exact/segments.h"
+#include "geo/curve_bspline.h"
 
 namespace sm::coast {
 namespace {
@@ -529,19 +531,46 @@ double water_angle(Vec2 u, Vec2 v, Vec2 x) {
   return a < 0 ? a + 4 * kHalfPi : a;
 }
 
+// The sharpest corner, in [0, 2 pi), that a dam from `end` to `across` makes with the coast
+// curve leaving `end` through the control points c1, c2, c3 (c1 next to the end), water
+// on the left of the way in (`in_side`: the coast comes in to `end`, the dam goes out) or
+// of the way out. The coast piece's B-spline (geo/curve_bspline.h: the uniform cubic,
+// its end point tripled) leaves the end along c1 - end only for the first sixth of that
+// segment: a spike at c1 is cut off, and the curve a mesh-size from the end (where the
+// mesh's first edge on it ends) lies towards c2. The corner the mesh gets is the one
+// between the dam and the chords from the end to those points: the first three spans
+// (they depend on end, c1, c2, c3 alone) are sampled and the sharpest chord kept. The
+// control polygon's own corner at the end was 65 degrees where the chord's was 0.5
+// (tests/unit/coast/passages_test.cpp, the river mouth of the Gulf of Tonkin).
+double dam_corner(Vec2 end, Vec2 across, Vec2 c1, Vec2 c2, Vec2 c3, bool in_side) {
+  constexpr int kSpans = 3, kPerSpan = 8;
+  const std::array<Vec2, 4> ctrl{end, c1, c2, c3};
+  double sharpest = in_side ? water_angle(c1, end, across) : water_angle(across, end, c1);
+  for (int i = 1; i <= kSpans * kPerSpan; ++i) {
+    // Parameter t of the 4-point open curve (5 pieces): spans 0..2 are t in [0, 3/5].
+    const double t = static_cast<double>(i) / (kPerSpan * 5);
+    const Vec2 q = geo::eval_bspline_uniform(std::span<const Vec2>(ctrl), false, t).p;
+    if (q == end) continue;
+    sharpest = std::min(sharpest, in_side ? water_angle(q, end, across) : water_angle(across, end, q));
+  }
+  return sharpest;
+}
+
 // Which end of the dams of the 2-opt at kept segments sa of loop la and sb of lb makes a
 // corner sharper than kMinDamCorner with the coast it joins, on water that stays (a piece
 // that drop_if_narrow removes does not count): 0 a0, 1 b1, 2 b0, 3 a1; -1 none. The dams
-// are a0 -> b1 (corners at a0 and b1) and b0 -> a1 (at b0 and a1); the B-spline of a
-// coast piece leaves its end along its first control segment, so the polygon's corner is
-// the curves' corner.
+// are a0 -> b1 (corners at a0 and b1) and b0 -> a1 (at b0 and a1); the corner is the one
+// between the dam and the coast's curve as drawn near the end (dam_corner).
 int sharp_dam_end(const Work& w, std::uint32_t la, std::size_t sa, std::uint32_t lb, std::size_t sb) {
   const FlatLoop& fa = w.flat[la];
   const FlatLoop& fb = w.flat[lb];
   const std::size_t ka = fa.kept.size(), kb = fb.kept.size();
   const Vec2 a0 = fa.p(sa), a1 = fa.p(sa + 1), b0 = fb.p(sb), b1 = fb.p(sb + 1);
-  const double angle[4] = {water_angle(fa.p(sa + ka - 1), a0, b1), water_angle(a0, b1, fb.p(sb + 2)),
-                           water_angle(fb.p(sb + kb - 1), b0, a1), water_angle(b0, a1, fa.p(sa + 2))};
+  const double angle[4] = {
+      dam_corner(a0, b1, fa.p(sa + ka - 1), fa.p(sa + ka - 2), fa.p(sa + ka - 3), true),
+      dam_corner(b1, a0, fb.p(sb + 2), fb.p(sb + 3), fb.p(sb + 4), false),
+      dam_corner(b0, a1, fb.p(sb + kb - 1), fb.p(sb + kb - 2), fb.p(sb + kb - 3), true),
+      dam_corner(a1, b0, fa.p(sa + 2), fa.p(sa + 3), fa.p(sa + 4), false)};
   int first = -1;
   for (int k = 0; k < 4 && first < 0; ++k)
     if (angle[k] < kMinDamCorner) first = k;
@@ -554,6 +583,77 @@ int sharp_dam_end(const Work& w, std::uint32_t la, std::size_t sa, std::uint32_t
   for (int k = 0; k < 4; ++k)
     if (angle[k] < kMinDamCorner && fate_of(w, parts[k / 2]) == Fate::Kept) return k;
   return -1;
+}
+
+// The water's corner at kept position j of f, with the coast's curve as drawn where a
+// coast piece meets a dam there (dam_corner): the segment into j and the one out of it
+// are each a dam (src past the curves) or a coast piece.
+double drawn_corner(const Work& w, const FlatLoop& f, std::size_t j) {
+  const std::size_t k = f.kept.size();
+  const bool in_dam = f.node(j + k - 1).src >= w.n_curves, out_dam = f.node(j).src >= w.n_curves;
+  const Vec2 u = f.p(j + k - 1), v = f.p(j), x = f.p(j + 1);
+  if (out_dam && !in_dam) return dam_corner(v, x, u, f.p(j + k - 2), f.p(j + k - 3), true);
+  if (in_dam && !out_dam) return dam_corner(v, u, x, f.p(j + 2), f.p(j + 3), false);
+  return water_angle(u, v, x);
+}
+
+// A dam end at a corner sharper than kMinDamCorner that no nearby clean cut avoids (the
+// pinch of a river mouth behind a spit: the cuts next to it are not clean, the dam runs
+// back along the spit's inner side): the wedge of water between the dam and the coast is
+// cut off, the dam moved from its end v to the coast's kept point u before it (or from
+// the far end to the point after it): u -> x replaces u -> v -> x, the triangle becoming
+// land. Only where the triangle is water (its corner at v convex), holds no other point,
+// its new side crosses nothing (`near`: the round's segments, `made`: the dams since),
+// and the corners at u and x are no sharper than kMinDamCorner; at most kDamShiftReach
+// points per dam end. `ends`: the node ids of the cut's dam ends.
+template <class Near>
+void trim_dam_wedges(Work& w, FlatLoop& f, std::array<std::uint32_t, 4> ends, Near&& near,
+                     std::vector<std::pair<Vec2, Vec2>>& made) {
+  for (std::uint32_t& end : ends)
+    for (int step = 0; step < kDamShiftReach; ++step) {
+      const std::size_t k = f.kept.size();
+      if (k < 8) return;   // the corners read three points each way
+      const auto it = std::find(f.kept.begin(), f.kept.end(), end);
+      if (it == f.kept.end()) break;
+      const auto j = static_cast<std::size_t>(it - f.kept.begin());
+      const bool in_dam = f.node(j + k - 1).src >= w.n_curves, out_dam = f.node(j).src >= w.n_curves;
+      if (in_dam == out_dam || !(drawn_corner(w, f, j) < kMinDamCorner)) break;
+      const Vec2 u = f.p(j + k - 1), v = f.p(j), x = f.p(j + 1);
+      if (!(water_angle(u, v, x) < 2 * kHalfPi) || orient2d(u, v, x) == Sign::Zero) break;
+      const Sign away = orient2d(u, v, x) == Sign::Positive ? Sign::Negative : Sign::Positive;
+      const Vec2 lo{std::min({u.x, v.x, x.x}), std::min({u.y, v.y, x.y})};
+      const Vec2 hi{std::max({u.x, v.x, x.x}), std::max({u.y, v.y, x.y})};
+      auto inside = [&](Vec2 q) {
+        if (q == u || q == v || q == x) return false;
+        const Sign o[3] = {orient2d(u, v, q), orient2d(v, x, q), orient2d(x, u, q)};
+        return std::none_of(o, o + 3, [&](Sign t) { return t == away; });
+      };
+      auto crosses = [&](Vec2 s0, Vec2 s1) {
+        if (s0 == u || s1 == u || s0 == x || s1 == x) return false;   // its neighbours
+        return segments_meet(u, x, s0, s1);
+      };
+      bool blocked = near(lo, hi, [&](Vec2 s0, Vec2 s1) { return inside(s0) || inside(s1) || crosses(s0, s1); });
+      for (const auto& e : made) blocked = blocked || crosses(e.first, e.second);
+      if (blocked) break;
+      // The corners at u and x once v is gone, u -> x a dam.
+      const bool in_dam_u = f.node(j + k - 2).src >= w.n_curves, out_dam_x = f.node(j + 1).src >= w.n_curves;
+      const double at_u = in_dam_u ? water_angle(f.p(j + k - 2), u, x)
+                                   : dam_corner(u, x, f.p(j + k - 2), f.p(j + k - 3), f.p(j + k - 4), true);
+      const double at_x = out_dam_x ? water_angle(u, x, f.p(j + 2)) : dam_corner(x, u, f.p(j + 2), f.p(j + 3), f.p(j + 4), false);
+      if (!(at_u >= kMinDamCorner && at_x >= kMinDamCorner)) break;
+      const std::uint32_t un = f.kept[(j + k - 1) % k], vn = f.kept[j], xn = f.kept[(j + 1) % k];
+      if (out_dam) w.nodes[un].src = w.nodes[vn].src;   // the dam now leaves u
+      w.next[un] = xn;
+      if (f.head == vn) f.head = xn;
+      f.kept.erase(f.kept.begin() + static_cast<std::ptrdiff_t>(j));
+      f.uv.erase(f.uv.begin() + static_cast<std::ptrdiff_t>(j));
+      f.metres.erase(f.metres.begin() + static_cast<std::ptrdiff_t>(j));
+      f.metres[j == 0 ? k - 2 : j - 1] = std::numeric_limits<double>::quiet_NaN();
+      f.orientation.reset();
+      f.fresh = true;
+      made.push_back({u, x});
+      end = out_dam ? un : xn;
+    }
 }
 
 // Where the kept segments of the loops made during a round are: a cut leaves every other
@@ -874,9 +974,11 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
     // bound put back next to the mouth of an inlet, and the dam nearly doubling back
     // along the coast): the cut moves to the nearest clean one without such a corner
     // (segments up to kDamShiftReach away, nearest first, in a fixed order); without one
-    // it is made as found and the mesh reports the corner.
+    // it is made as found and the wedge of water at the sharp end is cut off where it can
+    // be (trim_dam_wedges), else the mesh reports the corner.
     std::size_t sa_cut = sa, sb_cut = sb;
-    if (clean && sharp_dam_end(w, la, sa, lb, sb) >= 0) {
+    bool sharp = clean && sharp_dam_end(w, la, sa, lb, sb) >= 0;
+    if (sharp) {
       const std::size_t ka = w.flat[la].kept.size(), kb = w.flat[lb].kept.size();
       bool found = false;
       for (int reach = 1; reach <= kDamShiftReach && !found; ++reach)
@@ -898,6 +1000,7 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
               continue;
             sa_cut = ta, sb_cut = tb, found = true;
           }
+      sharp = !found;
     }
     if (!clean) {
       // Long segments at a pinch (a 30 m strait between 2 km segments) make no clean
@@ -917,11 +1020,14 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
     made.push_back({w.flat[la].p(sa_cut), w.flat[lb].p(sb_cut + 1)});
     made.push_back({w.flat[lb].p(sb_cut), w.flat[la].p(sa_cut + 1)});
     const DamInfo info = info_of(w, w.flat[la].node(sa_cut));
+    const std::array<std::uint32_t, 4> ends{w.flat[la].id(sa_cut), w.flat[la].id(sa_cut + 1), w.flat[lb].id(sb_cut),
+                                            w.flat[lb].id(sb_cut + 1)};
     const CutResult r = cut(w, la, sa_cut, lb, sb_cut, std::move(split));
     std::size_t dropped = 0;
     for (std::uint32_t l : r.new_loops) {
       drop_if_narrow(w, l, log);
       dropped += w.flat[l].dead;
+      if (sharp && !w.flat[l].dead) trim_dam_wedges(w, w.flat[l], ends, near, made);
     }
     if (dropped == 0)   // a cut that only trims narrow water is listed as NarrowWater
       log.push_back({RepairKind::ClosedPassage, info.record, info.id, unit_sphere().lonlat_from_param(c.where), c.width});

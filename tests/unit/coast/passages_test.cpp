@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <tuple>
 
 #include "coast/constant_accuracy.h"
@@ -13,6 +14,7 @@
 #include "coast/import.h"
 #include "coast/intersections.h"
 #include "exact/ring.h"
+#include "geo/curve_bspline.h"
 
 using namespace sm;
 using namespace sm::coast;
@@ -630,4 +632,118 @@ TEST_CASE("passages: a closing round keeps the polygons and near pairs of what d
   std::size_t islands = 0;
   for (std::size_t l = 1; l < 3; ++l) islands += !loops[l].dead;
   CHECK(islands == 2);
+}
+
+namespace {
+
+// A river mouth behind a spit as the full GSHHG has it near 105.81E 19.61N (Gulf of Tonkin,
+// the World Ocean at 3 km), its kept points after coarsening at 3 km: the points moved by
+// (-105.81, -19.61) degrees, longitudes scaled by cos 19.61 degrees (the same shape at the
+// equator), the coast running north with the land to the west and closed round it. From
+// the south: the coast up to the mouth's south bank (point 3), the river's channel (4, 5,
+// 6), the spit's inner side (7, its tip 8 lying 90 m east of point 3's bank) and its sea
+// side on north. The narrowest clean cut (1702 m) joins the spit's inner corner 7 to the
+// bank's point 3: its dam runs back along the spit's inner side, a corner of 2 degrees of
+// sea at 7; the cuts next to it are not clean, and the one the rule moved it to (6 to 3)
+// made a corner of 65 degrees on the control polygon but 0.5 on the B-spline, which cuts
+// the spike at 7 off (the mesh's worst triangle of the world, rho 0.0006).
+Coastline river_mouth_behind_spit() {
+  Coastline c;
+  c.file = "river mouth";
+  const std::vector<geo::LonLat> mouth = {
+      {0.001969, -0.085000}, {0.005887, -0.057530}, {0.008666, -0.030420}, {0.008186, -0.002520},   // 0-3
+      {-0.013000, -0.020030}, {-0.025538, -0.005000}, {-0.005916, 0.006660},                         // 4-6
+      {0.003919, 0.012890},  {0.012934, -0.014200},                                                 // 7, 8
+      {0.020046, 0.014980},  {0.026329, 0.041640},  {0.035683, 0.067470}, {0.047439, 0.092480}};    // 9-12
+  Ring r;
+  pass_line(r.pts, {0.001969, -2}, mouth.front());
+  r.pts.insert(r.pts.end(), mouth.begin(), mouth.end() - 1);
+  pass_line(r.pts, mouth.back(), {0.047439, 2});
+  pass_line(r.pts, {0.047439, 2}, {-2, 2});
+  pass_line(r.pts, {-2, 2}, {-2, -2});
+  pass_line(r.pts, {-2, -2}, {0.001969, -2});
+  r.id = 0;
+  r.record = 0;
+  c.rings.push_back(std::move(r));
+  return c;
+}
+
+// The sea's angle (degrees) where one curve of a loop meets the next, as a mesh of edge
+// `h` metres sees it: between the chords from the junction to the points of the two
+// curves as drawn (the uniform cubic B-spline, geo/curve_bspline.h) at arc length h along
+// each (or its far end when it is shorter). The smallest over h in `sizes`.
+std::vector<std::pair<double, geo::LonLat>> drawn_junction_angles(const CoastModel& m, std::vector<double> sizes) {
+  // The curve's points at arc lengths `sizes` from its start (forward) or its end.
+  auto at_lengths = [&](const CoastCurve& c, bool from_end) {
+    constexpr int kSamples = 4000;
+    std::vector<Vec2> line;
+    for (int i = 0; i <= kSamples; ++i) {
+      const double t = static_cast<double>(i) / kSamples;
+      line.push_back(geo::eval_bspline_uniform(std::span<const Vec2>(c.uv), false, from_end ? 1 - t : t).p);
+    }
+    std::vector<Vec2> out;
+    for (double h : sizes) {
+      double run = 0;
+      Vec2 q = line.back();
+      for (std::size_t i = 1; i < line.size(); ++i) {
+        const Vec2 mid = 0.5 * (line[i] + line[i - 1]);
+        run += norm(line[i] - line[i - 1]) * 2 * geo::kEarthRadius / (1 + norm2(mid));
+        if (run >= h) {
+          q = line[i];
+          break;
+        }
+      }
+      out.push_back(q);
+    }
+    return out;
+  };
+  std::vector<std::pair<double, geo::LonLat>> out;
+  for (const CoastLoop& loop : m.loops) {
+    if (loop.curves.size() < 2) continue;
+    for (std::size_t k = 0; k < loop.curves.size(); ++k) {
+      const CoastCurve& in = m.curves[loop.curves[k]];
+      const CoastCurve& next = m.curves[loop.curves[(k + 1) % loop.curves.size()]];
+      const Vec2 v = next.uv.front();
+      const auto ins = at_lengths(in, true), outs = at_lengths(next, false);
+      double sharpest = 360;
+      for (std::size_t s = 0; s < sizes.size(); ++s) {
+        const Vec2 o = outs[s] - v, i = ins[s] - v;
+        double a = std::atan2(o.x * i.y - o.y * i.x, dot(o, i));
+        if (a < 0) a += 2 * geo::kPi;
+        sharpest = std::min(sharpest, a * 180 / geo::kPi);
+      }
+      out.push_back({sharpest, next.ll.front()});
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("passages: a dam at a river mouth behind a spit makes no corner the mesh cannot fill, as drawn") {
+  const Coastline c = river_mouth_behind_spit();
+  ImportOptions o = pass_options(3000);          // MinChannelWidth 3 km, as the World Ocean at 3 km
+  o.passages.keep_passages = true;
+  o.gamma = testing::constant_accuracy(300);     // every point kept, as the coarsening left them
+  o.deviation.factor = 0;
+  auto m = build_coast_model(c, o);
+  if (!m.ok()) MESSAGE(m.error().to_string());
+  REQUIRE(m.ok());
+  pass_check_clean(*m);
+  CHECK(m->report.count(RepairKind::NarrowWater) >= 1);   // the river filled
+  // The river's channel is land now: no curve point inside it.
+  std::size_t in_river = 0;
+  for (const CoastCurve& cc : m->curves)
+    for (geo::LonLat p : cc.ll) in_river += p.lon > -0.024 && p.lon < -0.007 && p.lat > -0.015 && p.lat < 0.004;
+  CHECK(in_river == 0);
+  // Every junction of the sea's loop at the mesh sizes up to 3 km: at least 9.4 degrees, the
+  // angle Mesh.QualityFloor 0.3 needs (mesh/quality_floor.h); before, 2.5 degrees at point 6
+  // (0.5 between the World Ocean's mesh edges there).
+  std::size_t junctions = 0;
+  for (const auto& [angle, at] : drawn_junction_angles(*m, {500, 1000, 1500, 2000, 2500, 3000})) {
+    ++junctions;
+    INFO("corner at lon " << at.lon << " lat " << at.lat << ": " << angle << " degrees");
+    CHECK(angle >= 9.4);
+  }
+  CHECK(junctions >= 2);
 }
