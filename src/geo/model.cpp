@@ -112,8 +112,19 @@ const SurfaceGeometry* Model::geometry(int tag) const {
 std::vector<int> Model::physical_entities(int dim, int tag) const {
   std::vector<int> out;
   if (const PhysicalGroup* g = physical(dim, tag))
-    for (int e : g->entities) out.push_back(std::abs(e));
+    for (int e : g->entities)
+      if (has(dim, std::abs(e))) out.push_back(std::abs(e));
   return out;
+}
+
+bool Model::has(int dim, int tag) const {
+  switch (dim) {
+    case 0: return vertices_.count(tag) > 0;
+    case 1: return curves_.count(tag) > 0;
+    case 2: return surfaces_.count(tag) > 0;
+    case 3: return volumes_.count(tag) > 0;
+    default: return false;
+  }
 }
 
 std::vector<int> Model::tags(int dim) const {

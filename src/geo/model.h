@@ -191,8 +191,11 @@ class Model {
   int coherence(std::map<int, int>* curves_merged = nullptr);
   /// "Duplicata{...}": copies with new tags taken in Gmsh's order (see model_edit.cpp),
   /// sharing copied points between copied curves; a missing entity is skipped with a
-  /// compat note. Returns the new entities.
-  GeoResult<std::vector<DimTag>> duplicate(const std::vector<DimTag>& entities);
+  /// compat note. Returns the new entities; `copied`, when given, receives (dim, source
+  /// tag, copy tag) of every curve and surface made, the curves of copied surfaces too
+  /// (what Geometry.CopyMeshingMethod copies the meshing constraints along).
+  GeoResult<std::vector<DimTag>> duplicate(const std::vector<DimTag>& entities,
+                                           std::vector<std::array<int, 3>>* copied = nullptr);
   GeoStatus translate(const std::vector<DimTag>& entities, Vec3 d);
   GeoStatus rotate(const std::vector<DimTag>& entities, Vec3 axis, Vec3 point, double angle);
   GeoStatus dilate(const std::vector<DimTag>& entities, Vec3 centre, Vec3 factors);
@@ -225,7 +228,11 @@ class Model {
   const PhysicalGroup* physical(int dim, int tag) const;
   /// "Physical Curve{t}" as Gmsh 4.8.4 answers it: the group's entity tags without their
   /// orientation signs (the group keeps the signs for MSH 2 output); empty if no such group.
+  /// A group keeps the tags of deleted entities (an entity made again with the tag is in it
+  /// again, as in Gmsh); only the existing ones are listed here.
   std::vector<int> physical_entities(int dim, int tag) const;
+  /// Whether the entity (dim 0..3, tag > 0) exists.
+  bool has(int dim, int tag) const;
   const std::map<int, ModelVertex>& vertices() const { return vertices_; }
   const std::map<int, ModelCurve>& curves() const { return curves_; }
   const std::map<int, ModelCurveLoop>& curve_loops() const { return loops_; }
@@ -269,7 +276,7 @@ class Model {
     std::map<int, int> point, curve, loop;
   };
   Usage usage() const;
-  void drop_from_groups(int dim, int tag);
+  bool curve_on_surface(const Usage& u, int tag) const;
   void delete_point(int tag);
   void delete_curve(int tag, bool recursive, Usage& u);
   void delete_loop(int tag, bool recursive, Usage& u);

@@ -43,20 +43,28 @@ bool used(const std::map<int, int>& m, int tag) {
 
 }  // namespace
 
-// Deleted entities leave their physical groups; a group left empty disappears (as in Gmsh).
-void Model::drop_from_groups(int dim, int tag) {
-  touch();
-  for (auto it = physicals_.begin(); it != physicals_.end();) {
-    auto& e = it->second.entities;
-    if (it->second.dim == dim) e.erase(std::remove_if(e.begin(), e.end(), [tag](int x) { return std::abs(x) == tag; }), e.end());
-    it = (it->second.dim == dim && e.empty()) ? physicals_.erase(it) : std::next(it);
-  }
+// A curve blocks its deletion only on the boundary of a surface (a loop of an existing
+// surface) or embedded in one: Gmsh 4.8.4 checks the surfaces' curves, not the curve
+// loops, so `Delete{ Surface{1}; Curve{4}; }` deletes curve 4 once surface 1 is gone even
+// though its curve loop still names it (Gmsh's tutorial t6 does this). A loop left naming
+// a deleted curve fails only if a surface is later made of it, as in Gmsh.
+bool Model::curve_on_surface(const Usage& u, int tag) const {
+  for (const auto& [t, s] : surfaces_)
+    if (contains(s.embedded_curves, tag)) return true;
+  for (const auto& [t, l] : loops_)
+    if (used(u.loop, t) && std::any_of(l.curves.begin(), l.curves.end(), [tag](int c) { return std::abs(c) == tag; }))
+      return true;
+  return false;
 }
 
+// Physical groups keep the tags of deleted entities, as Gmsh's do: an entity made again
+// with the same tag is in the group again (tutorial t6 deletes surface 1 of t1, whose
+// group "My surface" then holds the new surface 1). Meanwhile the group answers as Gmsh's
+// does (Model::physical_entities: the existing members only; a group with none is neither
+// listed nor written).
 void Model::delete_point(int tag) {
   touch();
   vertices_.erase(tag);
-  drop_from_groups(0, tag);
   on_delete(0, tag);
 }
 
@@ -64,7 +72,6 @@ void Model::delete_curve(int tag, bool recursive, Usage& u) {
   touch();
   const std::vector<int> pts = curves_.at(tag).points;
   curves_.erase(tag);
-  drop_from_groups(1, tag);
   on_delete(1, tag);
   for (int p : pts) --u.point[p];
   if (!recursive) return;
@@ -87,7 +94,6 @@ void Model::delete_surface(int tag, bool recursive, Usage& u) {
   touch();
   const ModelSurface s = surfaces_.at(tag);
   surfaces_.erase(tag);
-  drop_from_groups(2, tag);
   on_delete(2, tag);
   for (int l : s.loops) --u.loop[std::abs(l)];
   for (int c : s.embedded_curves) --u.curve[c];
@@ -119,15 +125,24 @@ GeoStatus Model::remove(const std::vector<DimTag>& entities, bool recursive, std
       in_use = used(u.point, t);
       if (!in_use) delete_point(t);
     } else if (e.dim == 1 && curves_.count(t)) {
-      in_use = used(u.curve, t);
-      if (!in_use) delete_curve(t, recursive, u);
+      in_use = curve_on_surface(u, t);
+      if (!in_use) {
+        // The curve loops that name it bound no surface (else it would be in use): they go
+        // with it, so no loop names a missing curve. Gmsh keeps them dangling; a surface
+        // made of one later fails there as here (an unknown curve loop, not curve).
+        std::vector<int> dangling;
+        for (const auto& [lt, l] : loops_)
+          if (std::any_of(l.curves.begin(), l.curves.end(), [t](int c) { return std::abs(c) == t; }))
+            dangling.push_back(lt);
+        for (int lt : dangling) delete_loop(lt, false, u);
+        delete_curve(t, recursive, u);
+      }
     } else if (e.dim == 2 && surfaces_.count(t)) {
       delete_surface(t, recursive, u);
     } else if (e.dim == 3 && volumes_.count(t)) {   // geo/extrude.cpp: kept as an entity only
       const std::vector<int> bounding = volumes_.at(t).surfaces;
       volumes_.erase(t);
       extrusions_.erase({3, t});
-      drop_from_groups(3, t);
       on_delete(3, t);
       if (recursive)
         for (int b : bounding)
@@ -244,7 +259,8 @@ int Model::coherence(std::map<int, int>* curves_merged) {
 
 // ---- duplicata ----
 
-GeoResult<std::vector<DimTag>> Model::duplicate(const std::vector<DimTag>& entities) {
+GeoResult<std::vector<DimTag>> Model::duplicate(const std::vector<DimTag>& entities,
+                                                std::vector<std::array<int, 3>>* copied) {
   touch();
   // Tags are taken in Gmsh 4.8.4's order (Geo/Geo.cpp, DuplicateCurve/DuplicateSurface):
   // a surface takes its tag before its curves; a curve takes its tag, then one new point
@@ -285,6 +301,7 @@ GeoResult<std::vector<DimTag>> Model::duplicate(const std::vector<DimTag>& entit
     n.end = n.points.back();
     const int tag = n.tag;
     curves_.emplace(tag, std::move(n));
+    if (copied) copied->push_back({1, c, tag});
     return tag;
   };
   std::vector<DimTag> out;
@@ -316,6 +333,7 @@ GeoResult<std::vector<DimTag>> Model::duplicate(const std::vector<DimTag>& entit
       s.embedded_curves.clear();
       const int st = s.tag;
       surfaces_.emplace(st, std::move(s));
+      if (copied) copied->push_back({2, t, st});
       out.push_back({2, st});
     } else {
       note_compat(fmt::format("Duplicata of {} {}, which does not exist: Gmsh reports an error and copies the other "

@@ -45,19 +45,23 @@ std::vector<std::uint32_t> keep_mesh_only(const geo::Model& model, MeshModel& ou
     }
   }
   // A point no kept curve or face uses goes, once there is a 2D mesh: the ends of the
-  // dropped curves, and the construction points (a PolarSphere's centre and pole, a
-  // circle's centre), which are no part of the mesh. A point in a physical group stays (it
-  // was asked for by name, as Gmsh writes it), unless it ended a dropped curve.
+  // dropped curves, and, in a model on a sphere (a PolarSphere or Sphere geometry), the
+  // construction points (the sphere's centre and pole, a circle's centre), which are no
+  // part of its surface mesh, and in a model with physical groups those in none (Gmsh
+  // writes only the groups' entities then). A flat model without groups keeps them, as
+  // Gmsh writes every model point (a circle's centre in its benchmarks transfinite_b.geo
+  // and transf_complex.geo). A point in a physical group stays (it was asked for by name,
+  // as Gmsh writes it), unless it ended a dropped curve.
   std::vector<char> used_by_kept(out.xyz.size(), 0);
   for (std::size_t i = 0; i < out.entities.size(); ++i)
     if (!dropped_entity[i] && out.entities[i].dim > 0)
       for (std::uint32_t v : out.entities[i].connectivity) used_by_kept[v] = 1;
+  const bool drop_construction = !model.geometries().empty() || !out.physicals.empty();
   if (!meshed_surfaces.empty())
     for (std::size_t i = 0; i < out.entities.size(); ++i) {
       const EntityMesh& e = out.entities[i];
-      if (e.dim == 0 && e.nodes.size() == 1 && !used_by_kept[e.nodes[0]] &&
-          (e.physical_tags.empty() || on_dropped[e.nodes[0]]))
-        dropped_entity[i] = 1;
+      if (e.dim != 0 || e.nodes.size() != 1 || used_by_kept[e.nodes[0]]) continue;
+      if (on_dropped[e.nodes[0]] || (drop_construction && e.physical_tags.empty())) dropped_entity[i] = 1;
     }
   std::vector<EntityMesh> kept;
   kept.reserve(out.entities.size());
@@ -90,7 +94,10 @@ MeshModel from_model_mesh(const geo::Model& model, const ModelMesh& mesh, std::v
   for (const MeshNode& n : mesh.nodes) out.xyz.push_back(n.xyz);
   // (dim, |entity tag|) -> physical tags, ascending and without repeats.
   std::map<std::pair<int, int>, std::vector<int>> groups_of;
+  // A group keeps the tags of deleted entities (geo/model_edit.cpp): only the existing ones
+  // count, and a group with none is not written, as Gmsh writes it.
   for (const auto& [key, g] : model.physicals()) {
+    if (model.physical_entities(g.dim, g.tag).empty()) continue;
     out.physicals.push_back({g.dim, g.tag, g.name});
     for (int e : g.entities) {
       std::vector<int>& v = groups_of[{g.dim, std::abs(e)}];

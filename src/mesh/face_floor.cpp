@@ -115,6 +115,9 @@ void raise_face_floor(FaceWork& f) {
     const geo::ModelCurve* mc = c > 0 ? f.model.curve(c) : nullptr;
     const auto it = f.mesh.curves.find(c);
     if (!mc || !mc->shape || it == f.mesh.curves.end()) return std::nullopt;
+    // A transfinite curve keeps the node count its script gave (Gmsh's meaning of
+    // `Transfinite Curve{c} = n`: n nodes whatever the faces beside it become).
+    if (f.opt.constraints && f.opt.constraints->curves.count(c)) return std::nullopt;
     // A curve a face meshed before this one also holds stays as it is: that face's
     // triangle on the edge would have to be cut in two, unoptimised (a fan of slivers
     // after a few splits). Faces meshed later see the new nodes in the curve's 1D mesh.

@@ -2,6 +2,7 @@
 // Physical groups, In BoundingBox, Boundary/CombinedBoundary/PointsOf, and the
 // Translate/Rotate/Symmetry/Dilate/Duplicata transforms with their shape blocks.
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 
 #include <fmt/format.h>
@@ -23,8 +24,16 @@ namespace {
 std::vector<int> physical_members(const geo::Model& m, int dim, const std::vector<int>& tags) {
   std::vector<int> out;
   for (int t : tags)
-    if (const geo::PhysicalGroup* g = m.physical(dim, t))
-      for (int e : g->entities) out.push_back(std::abs(e));
+    for (int e : m.physical_entities(dim, t)) out.push_back(e);
+  return out;
+}
+
+// The groups of dimension dim with an existing member (`Physical Curve{:}`: a group whose
+// entities were all deleted is not listed, gmsh 4.8.4).
+std::vector<int> live_groups(const geo::Model& m, int dim) {
+  std::vector<int> out;
+  for (const auto& [key, g] : m.physicals())
+    if (key.first == dim && !m.physical_entities(dim, key.second).empty()) out.push_back(key.second);
   return out;
 }
 
@@ -44,6 +53,34 @@ std::vector<double> sized(Interpreter& in, SourceRange at, std::vector<double> v
 }
 
 Vec3 vec3(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
+
+// Geometry.CopyMeshingMethod 1: a copy made by Duplicata meshes as its source does, as in
+// Gmsh 4.8.4's CopyCurve/CopySurface: a curve's transfinite law, a surface's transfinite
+// flag, recombination and algorithm. Explicit transfinite corners are not copied (they
+// name the source's points): the copy takes its corners from its boundary, and Gmsh warns.
+void copy_meshing_method(Interpreter& in, SourceRange at, const std::vector<std::array<int, 3>>& copied) {
+  MeshConstraints& c = in.kernel().constraints;
+  bool dropped_corners = false;
+  for (const auto& [dim, from, to] : copied) {
+    if (dim == 1) {
+      if (const auto it = c.curves.find(from); it != c.curves.end()) c.curves[to] = it->second;
+      continue;
+    }
+    if (const auto it = c.surfaces.find(from); it != c.surfaces.end()) {
+      TransfiniteSurfaceSpec spec = it->second;
+      dropped_corners = dropped_corners || !spec.corners.empty();
+      spec.corners.clear();
+      c.surfaces[to] = spec;
+    }
+    if (c.recombine.count(from)) c.recombine.insert(to);
+    if (const auto it = c.surface_algorithm.find(from); it != c.surface_algorithm.end())
+      c.surface_algorithm[to] = it->second;
+  }
+  if (dropped_corners)
+    in.diags().report(at, Diag::GmshCompat,
+                      "only automatic transfinite surface specifications can be copied: the copy takes its "
+                      "corners from its boundary (as Gmsh)");
+}
 
 std::vector<geo::DimTag> apply_transform(Interpreter& in, const Expr& x, const TransformExpr& t) {
   geo::Model& m = in.kernel().model;
@@ -84,9 +121,11 @@ std::vector<geo::DimTag> apply_transform(Interpreter& in, const Expr& x, const T
     }
     case TransformKind::Extrude: break;   // above
     case TransformKind::Duplicata: {
-      auto r = m.duplicate(ents);
+      std::vector<std::array<int, 3>> copied;
+      auto r = m.duplicate(ents, &copied);
       report_compat_notes(in, at);
       if (!r) fail_geo(in, at, r.error());
+      if (in.options().number("Geometry.CopyMeshingMethod") != 0) copy_meshing_method(in, at, copied);
       for (const geo::DimTag& d : *r) record_created(in.kernel(), d.dim, std::abs(d.tag), at);
       return std::move(*r);
     }
@@ -144,8 +183,7 @@ Value eval_entity_query(Interpreter& in, const Expr& x, const EntityQueryExpr& q
   if (q.physical) {
     std::vector<int> groups;
     if (q.all) {   // `Physical Curve{:}`: the group tags themselves (gmsh 4.8.4)
-      for (const auto& [key, g] : m.physicals())
-        if (key.first == dim) out.push_back(key.second);
+      for (int t : live_groups(m, dim)) out.push_back(t);
       return Value::list(std::move(out));
     } else {
       for (ExprId e : q.tags) {
@@ -187,8 +225,7 @@ std::vector<geo::DimTag> eval_shape_block(Interpreter& in, const ShapeBlock& blo
         const int dim = static_cast<int>(item.ent);
         std::vector<int> tags;
         if (item.all && item.physical) {   // `Physical Curve{:};`: every group's members
-          for (const auto& [key, g] : m.physicals())
-            if (key.first == dim) tags.push_back(key.second);
+          tags = live_groups(m, dim);
         } else if (item.all) {
           tags = m.tags(dim);
         } else {

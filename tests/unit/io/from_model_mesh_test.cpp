@@ -198,3 +198,59 @@ TEST_CASE("from_model_mesh: without a 2D mesh every point and curve stays (Gmsh'
   for (const io::EntityMesh& e : mm.entities) curves += e.dim == 1;
   CHECK(curves == 6);
 }
+
+namespace {
+
+// The unit square (lc 0.5) and a free Point(9) at (2, 2): a circle's centre would be one.
+geo::Model square_and_free_point() {
+  geo::Model m;
+  const Vec3 c[4] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  for (int i = 0; i < 4; ++i) REQUIRE(m.add_point(i + 1, c[i], 0.5).ok());
+  for (int i = 0; i < 4; ++i) REQUIRE(m.add_curve(i + 1, geo::CurveKind::Line, {i + 1, (i + 1) % 4 + 1}).ok());
+  REQUIRE(m.add_curve_loop(1, {1, 2, 3, 4}).ok());
+  REQUIRE(m.add_plane_surface(1, {1}).ok());
+  REQUIRE(m.add_point(9, {2, 2, 0}, 0.5).ok());
+  return m;
+}
+
+bool has_point(const io::MeshModel& mm, int tag) {
+  return std::any_of(mm.entities.begin(), mm.entities.end(),
+                     [tag](const io::EntityMesh& e) { return e.dim == 0 && e.tag == tag; });
+}
+
+io::MeshModel mesh_of(const geo::Model& m) {
+  Mesh1dResult r1 = mesh_curves(m, {});
+  REQUIRE(r1.ok());
+  REQUIRE(mesh_surfaces(m, r1.mesh, {}).ok());
+  return io::from_model_mesh(m, r1.mesh);
+}
+
+}  // namespace
+
+TEST_CASE("from_model_mesh: a flat model without groups keeps its free points, as Gmsh writes every point") {
+  geo::Model m = square_and_free_point();
+  io::MeshModel mm = mesh_of(m);
+  CHECK(has_point(mm, 9));
+  CHECK(std::count(mm.xyz.begin(), mm.xyz.end(), Vec3{2, 2, 0}) == 1);
+  // With a physical group only the groups' entities are written (Gmsh's Mesh.SaveAll 0).
+  REQUIRE(m.add_physical(2, std::nullopt, "sea", {1}).ok());
+  mm = mesh_of(m);
+  CHECK_FALSE(has_point(mm, 9));
+  CHECK(std::count(mm.xyz.begin(), mm.xyz.end(), Vec3{2, 2, 0}) == 0);
+}
+
+TEST_CASE("from_model_mesh: a group keeps a deleted entity's tag; a group with no existing entity is not written") {
+  geo::Model m = square_and_free_point();
+  REQUIRE(m.add_physical(0, 7, "", {9}).ok());
+  REQUIRE(m.add_physical(2, 6, "sea", {1}).ok());
+  REQUIRE(m.remove({{2, 1}}, false).ok());
+  REQUIRE(m.remove({{0, 9}}, false).ok());
+  REQUIRE(m.add_plane_surface(1, {1}).ok());   // made again: in group 6 again
+  const io::MeshModel mm = mesh_of(m);
+  REQUIRE(mm.physicals.size() == 1);
+  CHECK(mm.physicals.front().tag == 6);
+  const auto surface = std::find_if(mm.entities.begin(), mm.entities.end(),
+                                    [](const io::EntityMesh& e) { return e.dim == 2 && e.tag == 1; });
+  REQUIRE(surface != mm.entities.end());
+  CHECK(surface->physical_tags == std::vector<int>{6});
+}
