@@ -86,8 +86,8 @@ def function_name(header):
     m = re.search(r"(operator\s*(?:\(\)|[^\s(]+))\s*\(", header)
     if m:
         pre = header[:m.start()]
-        s = re.search(r"([\w:~]*)$", pre.rstrip())
-        return (s.group(1) if s else "") + m.group(1).replace(" ", "")
+        s = re.search(r"((?:\w+::)*)$", pre)   # the class of a member operator
+        return s.group(1) + m.group(1).replace(" ", "")
     depth = 0
     for k, ch in enumerate(header):
         if ch == "<":
