@@ -370,84 +370,111 @@ double sea_area_km2(const std::vector<std::vector<Vec2>>& polys, std::uint32_t o
   return std::abs(a) * 1e-6;
 }
 
-}  // namespace
-
-Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
+// The import's state between its stages (build_coast_model below), each stage one of the
+// numbered steps of coast/import.h's account.
+struct ImportWork {
+  Coastline data;
+  const ImportOptions& opt;
   CoastModel model;
   ImportReport& rep = model.report;
-  const geo::PolarSphere ps({0, 0, 0}, 1.0);
-  // The stage ends on every return, errors included.
-  struct StageEnd {
-    Progress* p;
-    ~StageEnd() { progress_end(p); }
-  } stage_end{opt.progress};
-  progress_begin(opt.progress, "coastline", kImportSteps);
+  const geo::PolarSphere ps{{0, 0, 0}, 1.0};
   std::uint64_t steps_done = 0;
-  auto step_done = [&] { progress_update(opt.progress, ++steps_done); };
 
-  // 1. Levels.
   std::vector<Ring> rings;
-  for (Ring& r : data.rings) {
+  std::vector<Ring> land_rings;   // in lon/lat, to name the one a SeaAt point falls in
+  std::optional<LonLatBox> box;
+  std::vector<Ring> to_coarsen;                 // closed islands first, then loop pieces
+  std::vector<std::pair<std::size_t, std::size_t>> piece_span;   // per region loop: [first, last) in to_coarsen
+  std::vector<char> piece_is_boundary;
+  std::vector<std::vector<std::size_t>> piece_corners;       // per region piece: box corners in its pts
+  bool region_empty = false;
+  CoarsenResult whole;    // the closed rings coarsened
+  CoarsenResult pieces;   // the region loops' pieces coarsened
+  std::vector<WorkCurve> curves;
+  std::vector<WorkLoop> loops;
+  RepairOptions ro;
+  // Surfaces: the loops' polygons, the outer loops (largest first), the holes of each.
+  std::vector<std::vector<Vec2>> polys;
+  std::vector<std::uint32_t> outers;
+  std::vector<std::vector<std::uint32_t>> holes_of;
+  std::vector<std::uint32_t> unassigned;
+
+  ImportWork(Coastline d, const ImportOptions& o) : data(std::move(d)), opt(o) {}
+  ImportWork(const ImportWork&) = delete;
+  ImportWork& operator=(const ImportWork&) = delete;
+  void step_done() { progress_update(opt.progress, ++steps_done); }
+  // An error of a stage that names no file: the shoreline file's.
+  CoastError in_file(CoastError e) const {
+    e.file = data.file;
+    return e;
+  }
+};
+
+// 1. Levels: the rings of the levels asked for.
+void keep_levels(ImportWork& w) {
+  const ImportOptions& opt = w.opt;
+  for (Ring& r : w.data.rings) {
     const bool want = std::find(opt.levels.begin(), opt.levels.end(), r.level) != opt.levels.end() ||
                       (opt.antarctica_level != 0 && r.level == opt.antarctica_level);
-    if (want) rings.push_back(std::move(r));
+    if (want) w.rings.push_back(std::move(r));
   }
-  step_done();
-  // 2. Cleaning and orientation.
+}
+
+// 2. Cleaning and orientation; the patch, when given, replaces the data inside its box.
+std::optional<CoastError> clean_and_orient(ImportWork& w) {
+  const ImportOptions& opt = w.opt;
   {
     Coastline c;
-    c.rings = std::move(rings);
-    rep.clean = clean(c, opt.threads);
-    merge_touching_rings(c, rep.clean);
-    rings = std::move(c.rings);
+    c.rings = std::move(w.rings);
+    w.rep.clean = clean(c, opt.threads);
+    merge_touching_rings(c, w.rep.clean);
+    w.rings = std::move(c.rings);
   }
-  rep.reversed = orient_rings(rings);
+  w.rep.reversed = orient_rings(w.rings);
   if (opt.patch_box) {   // the local source replaces the data inside its box
     Coastline c;
     c.rings = opt.patch;
     clean(c, opt.threads);   // the same cleaning as the data's (its report is not merged)
     orient_rings(c.rings);
     PatchReport pr;
-    auto spliced = splice_patch(rings, c.rings, *opt.patch_box, opt.radius, &pr);
+    auto spliced = splice_patch(w.rings, c.rings, *opt.patch_box, opt.radius, &pr);
     if (!spliced) return spliced.error();
-    rings = std::move(*spliced);
-    rep.patch = pr;
+    w.rings = std::move(*spliced);
+    w.rep.patch = pr;
   }
-  // Land rings in lon/lat, to name the one a SeaAt point falls in.
-  std::vector<Ring> land_rings;
   if (!opt.sea_at.empty())
-    for (const Ring& r : rings)
-      if (r.closed && !r.wraps_pole && !is_water_level(r.level)) land_rings.push_back(r);
-  step_done();
+    for (const Ring& r : w.rings)
+      if (r.closed && !r.wraps_pole && !is_water_level(r.level)) w.land_rings.push_back(r);
+  return std::nullopt;
+}
 
-  // 3. Region clipping: which rings stay whole, which loops are made of pieces.
-  std::optional<LonLatBox> box = opt.region;
+// 3. Region clipping: which rings stay whole, which loops are made of pieces.
+std::optional<CoastError> clip_region(ImportWork& w) {
+  const ImportOptions& opt = w.opt;
+  std::vector<Ring>& rings = w.rings;
+  w.box = opt.region;
   const bool has_open = std::any_of(rings.begin(), rings.end(), [](const Ring& r) { return !r.closed; });
-  if (!box && has_open) {
-    if (opt.use_file_region && data.region)
-      box = data.region;
+  if (!w.box && has_open) {
+    if (opt.use_file_region && w.data.region)
+      w.box = w.data.region;
     else
-      return CoastError{data.file, -1, "the file holds open (cut) coastlines: a Region is needed to close them", {}};
+      return CoastError{w.data.file, -1, "the file holds open (cut) coastlines: a Region is needed to close them", {}};
   }
-  std::vector<Ring> to_coarsen;                 // closed islands first, then loop pieces
-  std::vector<std::pair<std::size_t, std::size_t>> piece_span;   // per region loop: [first, last) in to_coarsen
-  std::vector<char> piece_is_boundary;
-  std::vector<std::vector<std::size_t>> piece_corners;       // per region piece: box corners in its pts
-  if (box) {
+  if (w.box) {
     Result<RegionResult> clipped = RegionResult{};
     if (opt.region_polygon.empty()) {
-      clipped = clip_to_region(rings, *box, opt.region_options);
+      clipped = clip_to_region(rings, *w.box, opt.region_options);
     } else {
       auto poly = RegionPolygon::make(opt.region_polygon);
       if (!poly) return poly.error();
       clipped = clip_to_polygon(rings, *poly, opt.region_options);
-      if (clipped) skip_grazing_crossings(*clipped, opt, rep.repair);
+      if (clipped) skip_grazing_crossings(*clipped, opt, w.rep.repair);
     }
     if (!clipped) return clipped.error();
-    for (std::size_t i : clipped->inside) to_coarsen.push_back(rings[i]);
-    piece_is_boundary.assign(to_coarsen.size(), 0);
+    for (std::size_t i : clipped->inside) w.to_coarsen.push_back(rings[i]);
+    w.piece_is_boundary.assign(w.to_coarsen.size(), 0);
     for (const RegionLoop& loop : clipped->loops) {
-      const std::size_t first = to_coarsen.size();
+      const std::size_t first = w.to_coarsen.size();
       for (const RegionPiece& p : loop.pieces) {
         Ring r;
         r.pts = p.pts;
@@ -460,28 +487,31 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
           r.id = rings[p.ring].id;
           r.level = rings[p.ring].level;
         }
-        to_coarsen.push_back(std::move(r));
-        piece_is_boundary.push_back(p.open_boundary ? 1 : 0);
-        piece_corners.push_back(p.corners);
+        w.to_coarsen.push_back(std::move(r));
+        w.piece_is_boundary.push_back(p.open_boundary ? 1 : 0);
+        w.piece_corners.push_back(p.corners);
       }
-      piece_span.push_back({first, to_coarsen.size()});
+      w.piece_span.push_back({first, w.to_coarsen.size()});
     }
   } else {
-    to_coarsen = std::move(rings);
-    piece_is_boundary.assign(to_coarsen.size(), 0);
+    w.to_coarsen = std::move(rings);
+    w.piece_is_boundary.assign(w.to_coarsen.size(), 0);
   }
   // A Region holding no shoreline: its box is the only loop, all open boundary.
-  const bool region_empty =
-      box && std::all_of(piece_is_boundary.begin(), piece_is_boundary.end(), [](char b) { return b != 0; });
-  step_done();
+  w.region_empty = w.box && std::all_of(w.piece_is_boundary.begin(), w.piece_is_boundary.end(),
+                                        [](char b) { return b != 0; });
+  return std::nullopt;
+}
 
-  // 4. Coarsening (a closed region box that is a single curve may not be dropped).
+// 4. Coarsening (a closed region box that is a single curve may not be dropped).
+std::optional<CoastError> coarsen_rings(ImportWork& w) {
+  const ImportOptions& opt = w.opt;
   const CoarsenOptions co = in_context(opt.coarsen, opt);
-  const std::size_t n_whole = piece_span.empty() ? to_coarsen.size() : piece_span.front().first;
-  std::vector<Ring> whole(std::make_move_iterator(to_coarsen.begin()),
-                          std::make_move_iterator(to_coarsen.begin() + static_cast<long>(n_whole)));
-  std::vector<Ring> pieces(std::make_move_iterator(to_coarsen.begin() + static_cast<long>(n_whole)),
-                           std::make_move_iterator(to_coarsen.end()));
+  const std::size_t n_whole = w.piece_span.empty() ? w.to_coarsen.size() : w.piece_span.front().first;
+  std::vector<Ring> whole(std::make_move_iterator(w.to_coarsen.begin()),
+                          std::make_move_iterator(w.to_coarsen.begin() + static_cast<long>(n_whole)));
+  std::vector<Ring> pieces(std::make_move_iterator(w.to_coarsen.begin() + static_cast<long>(n_whole)),
+                           std::make_move_iterator(w.to_coarsen.end()));
   auto cw = coarsen(std::move(whole), co);
   if (!cw) return cw.error();
   CoarsenOptions cp = co;
@@ -490,19 +520,26 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
   auto cpieces = coarsen(std::move(pieces), cp);
   if (!cpieces) return cpieces.error();
   if (!cpieces->dropped.empty())   // only the box alone, as one closed curve, can be dropped
-    return CoastError{data.file, -1, "the region box is smaller than the accuracy", {}};
-  for (std::size_t k = 0; k < cpieces->rings.size(); ++k) keep_box_corners(cpieces->rings[k], piece_corners[k], opt.radius);
-  rep.dropped = std::move(cw->dropped);
-  rep.points_in = cw->points_in + cpieces->points_in;
-  step_done();
+    return CoastError{w.data.file, -1, "the region box is smaller than the accuracy", {}};
+  for (std::size_t k = 0; k < cpieces->rings.size(); ++k)
+    keep_box_corners(cpieces->rings[k], w.piece_corners[k], opt.radius);
+  w.rep.dropped = std::move(cw->dropped);
+  w.rep.points_in = cw->points_in + cpieces->points_in;
+  w.whole = std::move(*cw);
+  w.pieces = std::move(*cpieces);
+  return std::nullopt;
+}
 
-  // 5. Work curves and loops; orientation in (u,v) with water on the left.
-  std::vector<WorkCurve> curves;
-  std::vector<WorkLoop> loops;
-  for (CoarseRing& cr : cw->rings) {
+// 5. Work curves and loops; orientation in (u,v) with water on the left. Loops the
+// coarsening left without area (a corner of the region cut off by a coast piece, below the
+// accuracy) are dropped.
+void make_work_loops(ImportWork& w) {
+  std::vector<WorkCurve>& curves = w.curves;
+  std::vector<WorkLoop>& loops = w.loops;
+  for (CoarseRing& cr : w.whole.rings) {
     const int level = cr.ring.level;
     const bool pole = cr.ring.wraps_pole;
-    curves.push_back(make_curve(std::move(cr), false, ps));
+    curves.push_back(make_curve(std::move(cr), false, w.ps));
     WorkLoop loop;
     loop.curves = {static_cast<std::uint32_t>(curves.size() - 1)};
     // Land rings are holes in the water; the ring round the singular point (the South
@@ -511,20 +548,16 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
     loop.hole = !(south_pole_ring || is_water_level(level));
     loops.push_back(std::move(loop));
   }
-  {
-    std::size_t at = 0;
-    for (const auto& span : piece_span) {
-      WorkLoop loop;
-      loop.hole = false;
-      for (std::size_t k = span.first; k < span.second; ++k, ++at) {
-        curves.push_back(make_curve(std::move(cpieces->rings[at]), piece_is_boundary[k] != 0, ps));
-        loop.curves.push_back(static_cast<std::uint32_t>(curves.size() - 1));
-      }
-      loops.push_back(std::move(loop));
+  std::size_t at = 0;
+  for (const auto& span : w.piece_span) {
+    WorkLoop loop;
+    loop.hole = false;
+    for (std::size_t k = span.first; k < span.second; ++k, ++at) {
+      curves.push_back(make_curve(std::move(w.pieces.rings[at]), w.piece_is_boundary[k] != 0, w.ps));
+      loop.curves.push_back(static_cast<std::uint32_t>(curves.size() - 1));
     }
+    loops.push_back(std::move(loop));
   }
-  // Loops the coarsening left without area (a corner of the region cut off by a coast
-  // piece, below the accuracy) are dropped.
   std::vector<Vec2> poly;
   for (std::size_t l = 0; l < loops.size(); ++l) {
     WorkLoop& loop = loops[l];
@@ -532,203 +565,236 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
     if (poly.size() < 3 || all_collinear(poly)) {
       const WorkCurve& c = curves[loop.curves[0]];
       loop.dead = true;
-      rep.repair.push_back({RepairKind::DroppedIsland, c.record, c.id, c.full.front(), 0});
+      w.rep.repair.push_back({RepairKind::DroppedIsland, c.record, c.id, c.full.front(), 0});
     }
   }
-  step_done();
+}
 
-  // The curves back within the bound of their source points (before the repair, which
-  // then sees the curves as they will be drawn).
-  {
-    rep.deviation = bound_deviation(curves, in_context(opt.deviation, opt));
-  }
+// One repair pass over the loops, its rounds counted; errors name the shoreline file.
+std::optional<CoastError> repair_pass(ImportWork& w) {
+  auto rounds = repair_loops(w.curves, w.loops, w.ro, w.rep.repair);
+  if (!rounds) return w.in_file(rounds.error());
+  w.rep.repair_rounds += *rounds;
+  return std::nullopt;
+}
 
-  // 6. Repair.
-  const RepairOptions ro = in_context(opt.repair, opt);
-  // One repair pass over the loops, its rounds counted; errors name the shoreline file.
-  auto repair = [&]() -> std::optional<CoastError> {
-    auto rounds = repair_loops(curves, loops, ro, rep.repair);
-    if (!rounds) {
-      CoastError e = rounds.error();
-      e.file = data.file;
-      return e;
-    }
-    rep.repair_rounds += *rounds;
-    return std::nullopt;
-  };
-  if (auto e = repair()) return *e;
-  const std::size_t merged_before = rep.count(RepairKind::MergedIslands);
+// 6. Repair, the straits, and the orientation once the loops are simple (the
+// extreme-vertex test needs a simple polygon): water on the left, outer loops
+// counter-clockwise, holes clockwise.
+std::optional<CoastError> repair_and_orient(ImportWork& w) {
+  w.ro = in_context(w.opt.repair, w.opt);
+  if (auto e = repair_pass(w)) return e;
+  const std::size_t merged_before = w.rep.count(RepairKind::MergedIslands);
   // The box alone has no strait: near its corners its own sides came out as one.
-  if (!region_empty) handle_straits(curves, loops, ro, rep.repair);
+  if (!w.region_empty) handle_straits(w.curves, w.loops, w.ro, w.rep.repair);
   // A merge across a strait adds two bridge edges, checked against the polygons only: the
   // curves through them are checked again.
-  if (ro.check_splines && rep.count(RepairKind::MergedIslands) > merged_before)
-    if (auto e = repair()) return *e;
-
-  // Orientation once the loops are simple (the extreme-vertex test needs a simple
-  // polygon): water on the left, outer loops counter-clockwise, holes clockwise.
-  for (std::size_t l = 0; l < loops.size(); ++l) {
-    WorkLoop& loop = loops[l];
+  if (w.ro.check_splines && w.rep.count(RepairKind::MergedIslands) > merged_before)
+    if (auto e = repair_pass(w)) return e;
+  std::vector<Vec2> poly;
+  for (std::size_t l = 0; l < w.loops.size(); ++l) {
+    WorkLoop& loop = w.loops[l];
     if (loop.dead) continue;
-    loop_polygon(curves, loop, poly, nullptr);
+    loop_polygon(w.curves, loop, poly, nullptr);
     const Sign o = ring_orientation(poly);
     if ((o == Sign::Positive) != !loop.hole) {
       if (loop.curves.size() != 1)
-        return CoastError{data.file, -1, "a region loop runs the wrong way round (land data not land-on-left)",
-                          curves[loop.curves[0]].full.front()};
-      reverse_curve(curves[loop.curves[0]]);
+        return CoastError{w.data.file, -1, "a region loop runs the wrong way round (land data not land-on-left)",
+                          w.curves[loop.curves[0]].full.front()};
+      reverse_curve(w.curves[loop.curves[0]]);
     }
   }
-  // Passages and dams, on the simple loops oriented water on the left; the dams are
-  // checked against the curves like any coast, and the loops they make are oriented by
-  // construction.
-  const bool by_step = opt.min_time_step > 0 && opt.depth_at;
-  if (opt.passages.min_width > 0 || by_step || !opt.passages.dams.empty() || !opt.passages.keep_open.empty()) {
-    PassageOptions po = in_context(opt.passages, opt);
-    if (by_step) {
-      // One element across a passage of width w at depth H gives the step w / sqrt(g H):
-      // narrower than dt sqrt(g H) it is closed. The search radius is the widest such
-      // width at the coast's points (a passage lies between two of them).
-      const double dt = opt.min_time_step;
-      const auto& depth_at = opt.depth_at;
-      auto width_at = [dt, depth_at](geo::LonLat ll) {
-        return dt * std::sqrt(kImportGravity * std::max(0.0, depth_at(ll)));
-      };
-      for (const WorkLoop& l : loops)
-        if (!l.dead)
-          for (std::uint32_t ci : l.curves)
-            for (std::uint32_t j : curves[ci].keep) po.min_width = std::max(po.min_width, width_at(curves[ci].full[j]));
-      const double floor = opt.passages.min_width;
-      po.width_at = [width_at, floor](geo::LonLat ll) { return std::max(floor, width_at(ll)); };
-    }
-    auto closed = close_passages(curves, loops, po, rep.repair);
-    if (!closed) {
-      CoastError e = closed.error();
-      e.option = e.file;
-      e.file = data.file;
-      return e;
-    }
-    if (*closed && ro.check_splines)
-      if (auto e = repair()) return *e;
-    // The straits were measured on the coarsened curves; the passages changed them: a cut
-    // refused at a pinch puts the source points back (a 31 m gap between two 2 km
-    // segments is a 110 m strait in the source), and a closure makes land of a strait.
-    // They are measured again on the curves as they now are, without new merges (a strait
-    // the passages kept open stays open).
-    if (*closed && !region_empty) {
-      std::erase_if(rep.repair, [](const RepairEntry& e) { return e.kind == RepairKind::NarrowStrait; });
-      RepairOptions again = ro;
-      again.close_straits = false;
-      handle_straits(curves, loops, again, rep.repair);
-    }
-    // The step each closure saved, each strait left open and each KeepOpen passage costs,
-    // at its place's depth.
-    if (by_step)
-      for (RepairEntry& e : rep.repair) {
-        if (e.kind != RepairKind::ClosedPassage && e.kind != RepairKind::KeptOpen &&
-            e.kind != RepairKind::NarrowStrait && e.kind != RepairKind::MergedIslands)
-          continue;
-        const double h = opt.depth_at(e.where);
-        if (!(h > 0)) continue;
-        e.step = e.value / std::sqrt(kImportGravity * h);
-        e.step_unmet = e.kind == RepairKind::KeptOpen && e.step < opt.min_time_step;
-      }
-  }
-  step_done();
+  return std::nullopt;
+}
 
-  // 7. Surfaces: each hole goes to the smallest outer loop that contains it.
-  std::vector<std::vector<Vec2>> polys(loops.size());
+// Passages and dams, on the simple loops oriented water on the left; the dams are checked
+// against the curves like any coast, and the loops they make are oriented by construction.
+std::optional<CoastError> close_narrow_passages(ImportWork& w) {
+  const ImportOptions& opt = w.opt;
+  std::vector<WorkCurve>& curves = w.curves;
+  const bool by_step = opt.min_time_step > 0 && opt.depth_at;
+  if (!(opt.passages.min_width > 0 || by_step || !opt.passages.dams.empty() || !opt.passages.keep_open.empty()))
+    return std::nullopt;
+  PassageOptions po = in_context(opt.passages, opt);
+  if (by_step) {
+    // One element across a passage of width w at depth H gives the step w / sqrt(g H):
+    // narrower than dt sqrt(g H) it is closed. The search radius is the widest such
+    // width at the coast's points (a passage lies between two of them).
+    const double dt = opt.min_time_step;
+    const auto& depth_at = opt.depth_at;
+    auto width_at = [dt, depth_at](geo::LonLat ll) {
+      return dt * std::sqrt(kImportGravity * std::max(0.0, depth_at(ll)));
+    };
+    for (const WorkLoop& l : w.loops)
+      if (!l.dead)
+        for (std::uint32_t ci : l.curves)
+          for (std::uint32_t j : curves[ci].keep) po.min_width = std::max(po.min_width, width_at(curves[ci].full[j]));
+    const double floor = opt.passages.min_width;
+    po.width_at = [width_at, floor](geo::LonLat ll) { return std::max(floor, width_at(ll)); };
+  }
+  auto closed = close_passages(curves, w.loops, po, w.rep.repair);
+  if (!closed) {
+    CoastError e = closed.error();
+    e.option = e.file;
+    return w.in_file(std::move(e));
+  }
+  if (*closed && w.ro.check_splines)
+    if (auto e = repair_pass(w)) return e;
+  // The straits were measured on the coarsened curves; the passages changed them: a cut
+  // refused at a pinch puts the source points back (a 31 m gap between two 2 km
+  // segments is a 110 m strait in the source), and a closure makes land of a strait.
+  // They are measured again on the curves as they now are, without new merges (a strait
+  // the passages kept open stays open).
+  if (*closed && !w.region_empty) {
+    std::erase_if(w.rep.repair, [](const RepairEntry& e) { return e.kind == RepairKind::NarrowStrait; });
+    RepairOptions again = w.ro;
+    again.close_straits = false;
+    handle_straits(curves, w.loops, again, w.rep.repair);
+  }
+  // The step each closure saved, each strait left open and each KeepOpen passage costs,
+  // at its place's depth.
+  if (by_step)
+    for (RepairEntry& e : w.rep.repair) {
+      if (e.kind != RepairKind::ClosedPassage && e.kind != RepairKind::KeptOpen &&
+          e.kind != RepairKind::NarrowStrait && e.kind != RepairKind::MergedIslands)
+        continue;
+      const double h = opt.depth_at(e.where);
+      if (!(h > 0)) continue;
+      e.step = e.value / std::sqrt(kImportGravity * h);
+      e.step_unmet = e.kind == RepairKind::KeptOpen && e.step < opt.min_time_step;
+    }
+  return std::nullopt;
+}
+
+// 7. Surfaces: each hole goes to the smallest outer loop that contains it; the ocean
+// first: the loop round the South Pole or, in a region, the largest loop.
+void assign_holes(ImportWork& w) {
+  const std::vector<WorkLoop>& loops = w.loops;
+  w.polys.resize(loops.size());
   for (std::size_t l = 0; l < loops.size(); ++l)
-    if (!loops[l].dead) loop_polygon(curves, loops[l], polys[l], nullptr);
-  std::vector<std::uint32_t> outers;
+    if (!loops[l].dead) loop_polygon(w.curves, loops[l], w.polys[l], nullptr);
   for (std::uint32_t l = 0; l < loops.size(); ++l)
-    if (!loops[l].dead && !loops[l].hole) outers.push_back(l);
+    if (!loops[l].dead && !loops[l].hole) w.outers.push_back(l);
   auto area = [&](std::uint32_t l) {
     double a = 0;
-    const auto& p = polys[l];
+    const auto& p = w.polys[l];
     for (std::size_t i = 0; i < p.size(); ++i) a += cross(p[i], p[(i + 1) % p.size()]);
     return std::abs(a);
   };
-  // The ocean first: the loop round the South Pole or, in a region, the largest loop.
+  std::vector<std::uint32_t>& outers = w.outers;
   std::stable_sort(outers.begin(), outers.end(), [&](std::uint32_t a, std::uint32_t b) { return area(a) > area(b); });
-  std::vector<std::uint32_t> new_index(loops.size(), 0xFFFFFFFFu);
-  std::vector<std::vector<std::uint32_t>> holes_of(outers.size());
-  std::vector<std::uint32_t> unassigned;
+  w.holes_of.resize(outers.size());
   for (std::uint32_t l = 0; l < loops.size(); ++l) {
     if (loops[l].dead || !loops[l].hole) continue;
     std::size_t best = outers.size();
     for (std::size_t o = 0; o < outers.size(); ++o)
-      if (point_in_ring(polys[outers[o]], polys[l][0]) &&
+      if (point_in_ring(w.polys[outers[o]], w.polys[l][0]) &&
           (best == outers.size() || area(outers[o]) < area(outers[best])))
         best = o;
     if (best < outers.size()) {
-      holes_of[best].push_back(l);
+      w.holes_of[best].push_back(l);
     } else if (outers.empty()) {
-      unassigned.push_back(l);
+      w.unassigned.push_back(l);
     } else {
-      const WorkCurve& c = curves[loops[l].curves[0]];
-      rep.repair.push_back({RepairKind::OutsideWater, c.record, c.id, c.full[c.keep[0]], 0});
+      const WorkCurve& c = w.curves[loops[l].curves[0]];
+      w.rep.repair.push_back({RepairKind::OutsideWater, c.record, c.id, c.full[c.keep[0]], 0});
     }
   }
-  if (!opt.sea_at.empty()) {
-    auto kept = seas_at(opt.sea_at, polys, outers, holes_of, land_rings, curves, loops);
-    if (!kept) {
-      CoastError e = kept.error();
-      e.file = data.file;
-      return e;
+}
+
+// SeaAt: only the seas holding one of its points are kept, the others reported dropped.
+std::optional<CoastError> keep_seas(ImportWork& w) {
+  const ImportOptions& opt = w.opt;
+  if (opt.sea_at.empty()) return std::nullopt;
+  auto kept = seas_at(opt.sea_at, w.polys, w.outers, w.holes_of, w.land_rings, w.curves, w.loops);
+  if (!kept) return w.in_file(kept.error());
+  std::vector<std::uint32_t> outers_kept;
+  std::vector<std::vector<std::uint32_t>> holes_kept;
+  for (std::size_t o = 0; o < w.outers.size(); ++o) {
+    if ((*kept)[o]) {
+      outers_kept.push_back(w.outers[o]);
+      holes_kept.push_back(std::move(w.holes_of[o]));
+      continue;
     }
-    std::vector<std::uint32_t> outers_kept;
-    std::vector<std::vector<std::uint32_t>> holes_kept;
-    for (std::size_t o = 0; o < outers.size(); ++o) {
-      if ((*kept)[o]) {
-        outers_kept.push_back(outers[o]);
-        holes_kept.push_back(std::move(holes_of[o]));
-        continue;
-      }
-      ++model.seas_dropped;
-      const WorkCurve& c = curves[loops[outers[o]].curves[0]];
-      rep.repair.push_back({RepairKind::DroppedSea, c.record, c.id,
-                            ps.lonlat_from_param(point_inside(polys, outers[o], holes_of[o])),
-                            sea_area_km2(polys, outers[o], holes_of[o], opt.radius)});
-    }
-    outers = std::move(outers_kept);
-    holes_of = std::move(holes_kept);
-    unassigned.clear();
+    ++w.model.seas_dropped;
+    const WorkCurve& c = w.curves[w.loops[w.outers[o]].curves[0]];
+    w.rep.repair.push_back({RepairKind::DroppedSea, c.record, c.id,
+                            w.ps.lonlat_from_param(point_inside(w.polys, w.outers[o], w.holes_of[o])),
+                            sea_area_km2(w.polys, w.outers[o], w.holes_of[o], opt.radius)});
   }
-  step_done();
-  // 8. Output, loops numbered surface by surface (outer first, then its holes).
-  std::vector<std::uint32_t> curve_index(curves.size(), 0xFFFFFFFFu);
-  auto emit_loop = [&](std::uint32_t l) {
-    CoastLoop out;
-    for (std::uint32_t ci : loops[l].curves) {
-      const WorkCurve& c = curves[ci];
-      CoastCurve cc;
-      cc.periodic = c.periodic;
-      cc.open_boundary = c.open_boundary;
-      cc.record = c.record;
-      cc.id = c.id;
-      for (std::uint32_t k : c.keep) {
-        cc.ll.push_back(c.full[k]);
-        cc.uv.push_back(c.uv[k]);
-      }
-      rep.points_out += cc.ll.size();
-      curve_index[ci] = static_cast<std::uint32_t>(model.curves.size());
-      out.curves.push_back(curve_index[ci]);
-      model.curves.push_back(std::move(cc));
+  w.outers = std::move(outers_kept);
+  w.holes_of = std::move(holes_kept);
+  w.unassigned.clear();
+  return std::nullopt;
+}
+
+// One loop into the model (its curves' kept points); returns its index.
+std::uint32_t emit_loop(ImportWork& w, std::uint32_t l) {
+  CoastModel& model = w.model;
+  CoastLoop out;
+  for (std::uint32_t ci : w.loops[l].curves) {
+    const WorkCurve& c = w.curves[ci];
+    CoastCurve cc;
+    cc.periodic = c.periodic;
+    cc.open_boundary = c.open_boundary;
+    cc.record = c.record;
+    cc.id = c.id;
+    for (std::uint32_t k : c.keep) {
+      cc.ll.push_back(c.full[k]);
+      cc.uv.push_back(c.uv[k]);
     }
-    model.loops.push_back(std::move(out));
-    return static_cast<std::uint32_t>(model.loops.size() - 1);
-  };
-  for (std::size_t o = 0; o < outers.size(); ++o) {
+    w.rep.points_out += cc.ll.size();
+    out.curves.push_back(static_cast<std::uint32_t>(model.curves.size()));
+    model.curves.push_back(std::move(cc));
+  }
+  model.loops.push_back(std::move(out));
+  return static_cast<std::uint32_t>(model.loops.size() - 1);
+}
+
+// 8. Output, loops numbered surface by surface (outer first, then its holes).
+void emit_model(ImportWork& w) {
+  for (std::size_t o = 0; o < w.outers.size(); ++o) {
     CoastSurface s;
-    s.outer = emit_loop(outers[o]);
-    for (std::uint32_t h : holes_of[o]) s.holes.push_back(emit_loop(h));
-    model.surfaces.push_back(std::move(s));
+    s.outer = emit_loop(w, w.outers[o]);
+    for (std::uint32_t h : w.holes_of[o]) s.holes.push_back(emit_loop(w, h));
+    w.model.surfaces.push_back(std::move(s));
   }
-  for (std::uint32_t l : unassigned) model.unassigned.push_back(emit_loop(l));
-  step_done();
-  model.region_empty = region_empty;
-  return model;
+  for (std::uint32_t l : w.unassigned) w.model.unassigned.push_back(emit_loop(w, l));
+}
+
+}  // namespace
+
+Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
+  ImportWork w(std::move(data), opt);
+  // The stage ends on every return, errors included.
+  struct StageEnd {
+    Progress* p;
+    ~StageEnd() { progress_end(p); }
+  } stage_end{opt.progress};
+  progress_begin(opt.progress, "coastline", kImportSteps);
+  keep_levels(w);
+  w.step_done();
+  if (auto e = clean_and_orient(w)) return *e;
+  w.step_done();
+  if (auto e = clip_region(w)) return *e;
+  w.step_done();
+  if (auto e = coarsen_rings(w)) return *e;
+  w.step_done();
+  make_work_loops(w);
+  w.step_done();
+  // The curves back within the bound of their source points (before the repair, which
+  // then sees the curves as they will be drawn).
+  w.rep.deviation = bound_deviation(w.curves, in_context(opt.deviation, opt));
+  if (auto e = repair_and_orient(w)) return *e;
+  if (auto e = close_narrow_passages(w)) return *e;
+  w.step_done();
+  assign_holes(w);
+  if (auto e = keep_seas(w)) return *e;
+  w.step_done();
+  emit_model(w);
+  w.step_done();
+  w.model.region_empty = w.region_empty;
+  return std::move(w.model);
 }
 
 }  // namespace sm::coast

@@ -181,6 +181,146 @@ class NcFile {
   std::string error_;
 };
 
+// The file's variables, defined before its values are written.
+struct UgridVars {
+  int vx = -1, vy = -1;
+  int cart[3] = {-1, -1, -1};   // Earth-centred x, y, z (lon/lat files)
+  int vdepth = -1;
+  std::vector<std::pair<int, const NodeData*>> extra;   // Mesh.NodeData's fields
+  int vpart = -1, vf = -1, ve = -1, vkind = -1, vphys = -1;
+};
+
+// The mesh topology variable (UGRID's dummy variable naming the others).
+void define_topology(NcFile& nc, bool has_edges) {
+  const int topo = nc.var("mesh2d", NC_INT, {});
+  nc.text(topo, "cf_role", "mesh_topology");
+  nc.text(topo, "long_name", "Topology data of 2D mesh");
+  nc.ints(topo, "topology_dimension", {2});
+  nc.text(topo, "node_coordinates", "mesh2d_node_x mesh2d_node_y");
+  nc.text(topo, "node_dimension", "mesh2d_nNodes");
+  nc.text(topo, "face_node_connectivity", "mesh2d_face_nodes");
+  nc.text(topo, "face_dimension", "mesh2d_nFaces");
+  if (has_edges) {
+    nc.text(topo, "edge_node_connectivity", "mesh2d_edge_nodes");
+    nc.text(topo, "edge_dimension", "mesh2d_nEdges");
+  }
+}
+
+// The variables at the nodes: coordinates, Cartesian coordinates (lon/lat), depth and
+// Mesh.NodeData's fields.
+void define_node_vars(NcFile& nc, int d_node, const OceanGridOptions& opt, const std::vector<NodeData>& node_data,
+                      UgridVars& v) {
+  auto node_var = [&](const char* name, const char* standard, const char* long_name, const char* units) {
+    const int var = nc.var(name, NC_DOUBLE, {d_node});
+    if (*standard) nc.text(var, "standard_name", standard);
+    nc.text(var, "long_name", long_name);
+    nc.text(var, "units", units);
+    nc.text(var, "mesh", "mesh2d");
+    nc.text(var, "location", "node");
+    return var;
+  };
+  v.vx = opt.lonlat ? node_var("mesh2d_node_x", "longitude", "longitude of the mesh nodes", "degrees_east")
+                    : node_var("mesh2d_node_x", "projection_x_coordinate", "x of the mesh nodes", "1");
+  v.vy = opt.lonlat ? node_var("mesh2d_node_y", "latitude", "latitude of the mesh nodes", "degrees_north")
+                    : node_var("mesh2d_node_y", "projection_y_coordinate", "y of the mesh nodes", "1");
+  if (opt.lonlat) {
+    v.cart[0] = node_var("mesh2d_node_cartesian_x", "", "Cartesian x of the mesh nodes (Earth-centred)", "m");
+    v.cart[1] = node_var("mesh2d_node_cartesian_y", "", "Cartesian y of the mesh nodes (Earth-centred)", "m");
+    v.cart[2] = node_var("mesh2d_node_cartesian_z", "", "Cartesian z of the mesh nodes (Earth-centred)", "m");
+  }
+  if (!opt.depth.empty()) {
+    v.vdepth =
+        node_var("mesh2d_node_depth", "sea_floor_depth_below_geoid", "depth at the mesh nodes (Mesh.DepthField)", "m");
+    nc.text(v.vdepth, "positive", "down");
+  }
+  // Mesh.NodeData's fields; its depth is the one above (the same Mesh.DepthField).
+  for (const NodeData& d : node_data) {
+    if (d.name == "depth" && v.vdepth >= 0) continue;
+    const std::string name = "mesh2d_node_" + d.name;
+    v.extra.emplace_back(node_var(name.c_str(), "", d.long_name.c_str(), d.units.c_str()), &d);
+  }
+}
+
+// The variables of the faces: their partition (when partitioned) and their nodes.
+void define_face_vars(NcFile& nc, int d_face, int d_max, const Ugrid& u, UgridVars& v) {
+  if (!u.face_part.empty()) {
+    v.vpart = nc.var("mesh2d_face_partition", NC_INT, {d_face});
+    nc.text(v.vpart, "long_name", "partition of each face (Mesh.NbPartitions, METIS), 1 to the number of partitions");
+    nc.text(v.vpart, "mesh", "mesh2d");
+    nc.text(v.vpart, "location", "face");
+  }
+  v.vf = nc.var("mesh2d_face_nodes", NC_INT, {d_face, d_max});
+  nc.text(v.vf, "cf_role", "face_node_connectivity");
+  nc.text(v.vf, "long_name", "nodes of each face, anticlockwise");
+  nc.ints(v.vf, "start_index", {0});
+  nc.ints(v.vf, "_FillValue", {-1});
+}
+
+// The variables of the boundary edges: nodes, kind (mainland, island, open) and physical
+// curve group, its tags and words as flags.
+void define_edge_vars(NcFile& nc, int d_edge, int d_two, const Ugrid& u, UgridVars& v) {
+  v.ve = nc.var("mesh2d_edge_nodes", NC_INT, {d_edge, d_two});
+  nc.text(v.ve, "cf_role", "edge_node_connectivity");
+  nc.text(v.ve, "long_name", "nodes of each boundary edge");
+  nc.ints(v.ve, "start_index", {0});
+  v.vkind = nc.var("mesh2d_edge_type", NC_INT, {d_edge});
+  nc.text(v.vkind, "long_name", "kind of boundary edge");
+  nc.text(v.vkind, "mesh", "mesh2d");
+  nc.text(v.vkind, "location", "edge");
+  nc.ints(v.vkind, "flag_values", {kMainland, kIsland, kOpen});
+  nc.text(v.vkind, "flag_meanings", "mainland island open");
+  v.vphys = nc.var("mesh2d_edge_physical", NC_INT, {d_edge});
+  nc.text(v.vphys, "long_name", "physical curve group of the boundary edge (0: none)");
+  nc.text(v.vphys, "mesh", "mesh2d");
+  nc.text(v.vphys, "location", "edge");
+  std::vector<int> tags;
+  std::string words;
+  for (const auto& [tag, word] : u.curve_groups) {
+    tags.push_back(tag);
+    words += (words.empty() ? "" : " ") + word;
+  }
+  if (!tags.empty()) {
+    nc.ints(v.vphys, "flag_values", tags);
+    nc.text(v.vphys, "flag_meanings", words);
+  }
+}
+
+// The values at the nodes, in file node order.
+void write_node_values(NcFile& nc, const MeshModel& mesh, const OceanGridOptions& opt, const Ugrid& u,
+                       const UgridVars& v) {
+  const std::size_t nn = u.nodes.size();
+  std::vector<double> x(nn), y(nn);
+  const geo::PolarSphere sphere(opt.centre, opt.radius);
+  for (std::size_t i = 0; i < nn; ++i) {
+    const Vec3 p = mesh.xyz[u.nodes[i]];
+    if (opt.lonlat) {
+      const geo::LonLat ll = sphere.to_lonlat(p);
+      x[i] = ll.lon, y[i] = ll.lat;
+    } else {
+      x[i] = p.x, y[i] = p.y;
+    }
+  }
+  nc.put(v.vx, x);
+  nc.put(v.vy, y);
+  if (opt.lonlat) {
+    for (int k = 0; k < 3; ++k) {
+      for (std::size_t i = 0; i < nn; ++i) {
+        const Vec3 p = mesh.xyz[u.nodes[i]] - opt.centre;
+        x[i] = k == 0 ? p.x : (k == 1 ? p.y : p.z);
+      }
+      nc.put(v.cart[k], x);
+    }
+  }
+  if (v.vdepth >= 0) {
+    for (std::size_t i = 0; i < nn; ++i) x[i] = opt.depth[u.nodes[i]];
+    nc.put(v.vdepth, x);
+  }
+  for (const auto& [var, d] : v.extra) {
+    for (std::size_t i = 0; i < nn; ++i) x[i] = d->values[u.nodes[i]];
+    nc.put(var, x);
+  }
+}
+
 }  // namespace
 
 std::string ugrid_to_bytes(const MeshModel& mesh, const OceanGridOptions& opt, std::string* error,
@@ -205,131 +345,24 @@ std::string ugrid_to_bytes(const MeshModel& mesh, const OceanGridOptions& opt, s
   const int d_node = nc.dim("mesh2d_nNodes", nn), d_face = nc.dim("mesh2d_nFaces", nf);
   const int d_max = nc.dim("mesh2d_nMax_face_nodes", u.max_face_nodes), d_two = nc.dim("Two", 2);
   const int d_edge = ne ? nc.dim("mesh2d_nEdges", ne) : -1;
-
-  const int topo = nc.var("mesh2d", NC_INT, {});
-  nc.text(topo, "cf_role", "mesh_topology");
-  nc.text(topo, "long_name", "Topology data of 2D mesh");
-  nc.ints(topo, "topology_dimension", {2});
-  nc.text(topo, "node_coordinates", "mesh2d_node_x mesh2d_node_y");
-  nc.text(topo, "node_dimension", "mesh2d_nNodes");
-  nc.text(topo, "face_node_connectivity", "mesh2d_face_nodes");
-  nc.text(topo, "face_dimension", "mesh2d_nFaces");
-  if (ne) {
-    nc.text(topo, "edge_node_connectivity", "mesh2d_edge_nodes");
-    nc.text(topo, "edge_dimension", "mesh2d_nEdges");
-  }
-  auto node_var = [&](const char* name, const char* standard, const char* long_name, const char* units) {
-    const int v = nc.var(name, NC_DOUBLE, {d_node});
-    if (*standard) nc.text(v, "standard_name", standard);
-    nc.text(v, "long_name", long_name);
-    nc.text(v, "units", units);
-    nc.text(v, "mesh", "mesh2d");
-    nc.text(v, "location", "node");
-    return v;
-  };
-  const int vx = opt.lonlat ? node_var("mesh2d_node_x", "longitude", "longitude of the mesh nodes", "degrees_east")
-                            : node_var("mesh2d_node_x", "projection_x_coordinate", "x of the mesh nodes", "1");
-  const int vy = opt.lonlat ? node_var("mesh2d_node_y", "latitude", "latitude of the mesh nodes", "degrees_north")
-                            : node_var("mesh2d_node_y", "projection_y_coordinate", "y of the mesh nodes", "1");
-  int cart[3] = {-1, -1, -1};
-  if (opt.lonlat) {
-    cart[0] = node_var("mesh2d_node_cartesian_x", "", "Cartesian x of the mesh nodes (Earth-centred)", "m");
-    cart[1] = node_var("mesh2d_node_cartesian_y", "", "Cartesian y of the mesh nodes (Earth-centred)", "m");
-    cart[2] = node_var("mesh2d_node_cartesian_z", "", "Cartesian z of the mesh nodes (Earth-centred)", "m");
-  }
-  int vdepth = -1;
-  if (!opt.depth.empty()) {
-    vdepth = node_var("mesh2d_node_depth", "sea_floor_depth_below_geoid", "depth at the mesh nodes (Mesh.DepthField)", "m");
-    nc.text(vdepth, "positive", "down");
-  }
-  // Mesh.NodeData's fields; its depth is the one above (the same Mesh.DepthField).
-  std::vector<std::pair<int, const NodeData*>> extra;
-  for (const NodeData& d : node_data) {
-    if (d.name == "depth" && vdepth >= 0) continue;
-    const std::string name = "mesh2d_node_" + d.name;
-    extra.emplace_back(node_var(name.c_str(), "", d.long_name.c_str(), d.units.c_str()), &d);
-  }
-  int vpart = -1;
-  if (!u.face_part.empty()) {
-    vpart = nc.var("mesh2d_face_partition", NC_INT, {d_face});
-    nc.text(vpart, "long_name", "partition of each face (Mesh.NbPartitions, METIS), 1 to the number of partitions");
-    nc.text(vpart, "mesh", "mesh2d");
-    nc.text(vpart, "location", "face");
-  }
-  const int vf = nc.var("mesh2d_face_nodes", NC_INT, {d_face, d_max});
-  nc.text(vf, "cf_role", "face_node_connectivity");
-  nc.text(vf, "long_name", "nodes of each face, anticlockwise");
-  nc.ints(vf, "start_index", {0});
-  nc.ints(vf, "_FillValue", {-1});
-  int ve = -1, vkind = -1, vphys = -1;
-  if (ne) {
-    ve = nc.var("mesh2d_edge_nodes", NC_INT, {d_edge, d_two});
-    nc.text(ve, "cf_role", "edge_node_connectivity");
-    nc.text(ve, "long_name", "nodes of each boundary edge");
-    nc.ints(ve, "start_index", {0});
-    vkind = nc.var("mesh2d_edge_type", NC_INT, {d_edge});
-    nc.text(vkind, "long_name", "kind of boundary edge");
-    nc.text(vkind, "mesh", "mesh2d");
-    nc.text(vkind, "location", "edge");
-    nc.ints(vkind, "flag_values", {kMainland, kIsland, kOpen});
-    nc.text(vkind, "flag_meanings", "mainland island open");
-    vphys = nc.var("mesh2d_edge_physical", NC_INT, {d_edge});
-    nc.text(vphys, "long_name", "physical curve group of the boundary edge (0: none)");
-    nc.text(vphys, "mesh", "mesh2d");
-    nc.text(vphys, "location", "edge");
-    std::vector<int> tags;
-    std::string words;
-    for (const auto& [tag, word] : u.curve_groups) {
-      tags.push_back(tag);
-      words += (words.empty() ? "" : " ") + word;
-    }
-    if (!tags.empty()) {
-      nc.ints(vphys, "flag_values", tags);
-      nc.text(vphys, "flag_meanings", words);
-    }
-  }
+  UgridVars v;
+  define_topology(nc, ne != 0);
+  define_node_vars(nc, d_node, opt, node_data, v);
+  define_face_vars(nc, d_face, d_max, u, v);
+  if (ne) define_edge_vars(nc, d_edge, d_two, u, v);
   nc.text(NC_GLOBAL, "Conventions", "CF-1.8 UGRID-1.0");
   nc.text(NC_GLOBAL, "title", opt.title);
   nc.text(NC_GLOBAL, "source", "stereomesh");
   if (opt.lonlat) nc.doubles(NC_GLOBAL, "sphere_radius", {opt.radius});
   nc.end_definitions();
 
-  std::vector<double> x(nn), y(nn);
-  const geo::PolarSphere sphere(opt.centre, opt.radius);
-  for (std::size_t i = 0; i < nn; ++i) {
-    const Vec3 p = mesh.xyz[u.nodes[i]];
-    if (opt.lonlat) {
-      const geo::LonLat ll = sphere.to_lonlat(p);
-      x[i] = ll.lon, y[i] = ll.lat;
-    } else {
-      x[i] = p.x, y[i] = p.y;
-    }
-  }
-  nc.put(vx, x);
-  nc.put(vy, y);
-  if (opt.lonlat) {
-    for (int k = 0; k < 3; ++k) {
-      for (std::size_t i = 0; i < nn; ++i) {
-        const Vec3 p = mesh.xyz[u.nodes[i]] - opt.centre;
-        x[i] = k == 0 ? p.x : (k == 1 ? p.y : p.z);
-      }
-      nc.put(cart[k], x);
-    }
-  }
-  if (vdepth >= 0) {
-    for (std::size_t i = 0; i < nn; ++i) x[i] = opt.depth[u.nodes[i]];
-    nc.put(vdepth, x);
-  }
-  for (const auto& [var, d] : extra) {
-    for (std::size_t i = 0; i < nn; ++i) x[i] = d->values[u.nodes[i]];
-    nc.put(var, x);
-  }
-  nc.put(vf, u.face_nodes);
-  if (vpart >= 0) nc.put(vpart, u.face_part);
+  write_node_values(nc, mesh, opt, u, v);
+  nc.put(v.vf, u.face_nodes);
+  if (v.vpart >= 0) nc.put(v.vpart, u.face_part);
   if (ne) {
-    nc.put(ve, u.edge_nodes);
-    nc.put(vkind, u.edge_kind);
-    nc.put(vphys, u.edge_physical);
+    nc.put(v.ve, u.edge_nodes);
+    nc.put(v.vkind, u.edge_kind);
+    nc.put(v.vphys, u.edge_physical);
   }
   std::string bytes = nc.close();
   if (bytes.empty()) *error = nc.error().empty() ? "netCDF wrote nothing" : nc.error();

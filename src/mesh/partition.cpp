@@ -363,39 +363,39 @@ std::vector<Vec2> subdivide_segment(Vec2 a, Vec2 b, const PlaneSizeFn& size) {
   return out;
 }
 
-PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, PartRefiner kind,
-                                   const std::function<PlaneSizeFn()>& make_size, const PartitionOptions& opt,
-                                   int threads,
-                                   const std::function<void(std::uint32_t, std::uint32_t)>& on_parts,
-                                   const std::function<void(RefineOptions&)>& part_sizes) {
-  PartitionResult res;
-  auto t0 = std::chrono::steady_clock::now();
-  const PlaneSizeFn fine = make_size();
+namespace {
 
-  // Coarse pass: del2d at the scaled size (its vertices become vertices of the result).
-  // The coarse pass starts from m itself, moved rather than copied: the result replaces
-  // m, and a copy held the face's boundary triangulation twice through the parts (at the
-  // full world's 3 km, some 300,000 boundary vertices). m is left empty on failure.
-  Coarse c;
-  const std::uint32_t n0 = m.num_vertices();
+// The stages of refine_partitioned, in its order.
+
+// Coarse pass: del2d at the scaled size (its vertices become vertices of the result).
+// It starts from m itself, moved rather than copied: the result replaces m, and a copy
+// held the face's boundary triangulation twice through the parts (at the full world's
+// 3 km, some 300,000 boundary vertices). m is left empty on failure.
+bool refine_coarse(Coarse& c, TriangleStore& m, const RefineOptions& base, const PlaneSizeFn& fine,
+                   const PartitionOptions& opt, PartitionResult& res) {
   c.m = std::move(m);
   m = TriangleStore{};
-  {
-    RefineOptions co = base;
-    co.vertex_size_at = nullptr;
-    const double f = opt.coarse_factor;
-    co.size_at = [&fine, f](std::span<const Vec2> p, std::span<double> h) {
-      fine(p, h);
-      for (double& x : h) x *= f;
-    };
-    const RefineResult r = refine_del2d(c.m, co);
-    add_stats(res.stats.refine, r.stats);
-    if (!r.ok()) {
-      res.error = "coarse refinement: " + r.error;
-      return res;
-    }
+  RefineOptions co = base;
+  co.vertex_size_at = nullptr;
+  const double f = opt.coarse_factor;
+  co.size_at = [&fine, f](std::span<const Vec2> p, std::span<double> h) {
+    fine(p, h);
+    for (double& x : h) x *= f;
+  };
+  const RefineResult r = refine_del2d(c.m, co);
+  add_stats(res.stats.refine, r.stats);
+  if (!r.ok()) {
+    res.error = "coarse refinement: " + r.error;
+    return false;
   }
-  const std::vector<std::uint32_t> tris = live_triangles(c.m);
+  return true;
+}
+
+// The cut: the final triangle count estimated from the coarse triangles, the part count
+// from it, the coarse triangles bisected into that many parts of about equal weight.
+// Returns the part count.
+std::uint32_t cut_into_parts(Coarse& c, const std::vector<std::uint32_t>& tris, const PlaneSizeFn& fine,
+                             const PartitionOptions& opt, PartitionResult& res) {
   std::vector<Vec2> centre;
   std::vector<double> weight;
   estimate_each(c.m, tris, fine, centre, weight);
@@ -410,7 +410,11 @@ PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, 
     c.part_of[tris[i]] = part[i];
     c.part_tris[part[i]].push_back(tris[i]);
   }
-  // Border edges: subdivided once, from the smaller vertex id.
+  return k;
+}
+
+// Border edges: subdivided once, from the smaller vertex id.
+void subdivide_borders(Coarse& c, const std::vector<std::uint32_t>& tris, const PlaneSizeFn& fine) {
   c.border_of_side.assign(c.m.corner.size(), kNoIndex);
   for (std::uint32_t t : tris)
     for (std::uint32_t e = 0; e < 3; ++e) {
@@ -425,6 +429,11 @@ PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, 
       c.border_of_side[s.value] = c.border_of_side[o.value] = static_cast<std::uint32_t>(c.borders.size());
       c.borders.push_back(br);
     }
+}
+
+// The coarse vertices kept (Coarse::new_id): the input's n0 with their ids, then the
+// coarse vertices on borders in coarse id order.
+void number_kept_vertices(Coarse& c, std::uint32_t n0) {
   c.new_id.assign(c.m.num_vertices(), kNoIndex);
   for (std::uint32_t v = 0; v < n0; ++v) c.new_id[v] = v;
   for (const Border& br : c.borders)
@@ -433,11 +442,14 @@ PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, 
   c.n_kept = n0;
   for (std::uint32_t v = n0; v < c.m.num_vertices(); ++v)
     if (c.new_id[v] != kNoIndex) c.new_id[v] = c.n_kept++;
-  res.stats.border_edges = c.borders.size();
-  res.stats.border_points = c.border_xy.size();
-  res.stats.seconds_coarse = seconds_since(t0);
+}
 
-  t0 = std::chrono::steady_clock::now();
+// Each part meshed and refined on the threads, its size function its own (make_size's, or
+// part_sizes's options); the first failing part's error, in part order, is the result's.
+std::vector<PartOut> mesh_parts(const Coarse& c, std::uint32_t k, const RefineOptions& base, PartRefiner kind,
+                                const std::function<PlaneSizeFn()>& make_size, int threads,
+                                const std::function<void(std::uint32_t, std::uint32_t)>& on_parts,
+                                const std::function<void(RefineOptions&)>& part_sizes, PartitionResult& res) {
   std::vector<PartOut> parts(k);
   std::function<void(std::size_t)> parts_done;
   if (on_parts) {
@@ -463,26 +475,18 @@ PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, 
     add_stats(res.stats.refine, parts[p].stats);
     if (!parts[p].error.empty() && res.error.empty()) res.error = fmt::format("part {}: {}", p, parts[p].error);
   }
-  res.stats.seconds_parts = seconds_since(t0);
-  if (!res.ok()) return res;
+  return parts;
+}
 
-  // Merge: vertices and triangles in part order, twins inside parts kept, twins across
-  // borders found by sorting the parts' hull sides by their vertex pair.
-  t0 = std::chrono::steady_clock::now();
-  const std::uint32_t n_shared = c.n_kept + static_cast<std::uint32_t>(c.border_xy.size());
-  std::vector<std::uint64_t> vbase(k + 1, n_shared), tbase(k + 1, 0);
-  for (std::uint32_t p = 0; p < k; ++p) {
-    vbase[p + 1] = vbase[p] + (parts[p].st.num_vertices() - parts[p].n_init);
-    tbase[p + 1] = tbase[p] + parts[p].st.num_slots();
-  }
-  if (vbase[k] > base.max_vertices || 3 * tbase[k] >= kNoIndex) {
-    res.error = "refinement stopped at the vertex limit";
-    return res;
-  }
-  // Copied in waves of `threads` parts, each part on its own thread and freed once
-  // copied: the arrays are reserved up front and grown by one wave at a time, so the
-  // resident peak is about one mesh plus one wave of parts.
-  TriangleStore out;
+// The parts copied into one store: vertices and triangles in part order, twins inside
+// parts kept; vbase/tbase are each part's first vertex and triangle. Copied in waves of
+// `threads` parts, each part on its own thread and freed once copied: the arrays are
+// reserved up front and grown by one wave at a time, so the resident peak is about one
+// mesh plus one wave of parts. The coarse mesh is freed first. Returns the sides on the
+// parts' hulls (no twin yet), in part order.
+std::vector<std::uint32_t> copy_parts(Coarse& c, std::vector<PartOut>& parts, const std::vector<std::uint64_t>& vbase,
+                                      const std::vector<std::uint64_t>& tbase, int threads, TriangleStore& out) {
+  const auto k = static_cast<std::uint32_t>(parts.size());
   out.xy.reserve(vbase[k]);
   for (std::uint32_t v = 0; v < c.m.num_vertices(); ++v)
     if (c.new_id[v] != kNoIndex) out.xy.push_back(c.m.xy[v]);
@@ -529,6 +533,12 @@ PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, 
   }
   std::vector<std::uint32_t> hull;
   for (const auto& h : hull_of) hull.insert(hull.end(), h.begin(), h.end());
+  return hull;
+}
+
+// Twins across borders: the hull sides sorted by their vertex pair, each pair linked; a
+// pair used twice in one direction, or by more than two sides, is the result's error.
+void link_borders(TriangleStore& out, const std::vector<std::uint32_t>& hull, PartitionResult& res) {
   struct HullSide {
     std::uint32_t lo, hi, s;
   };
@@ -552,9 +562,60 @@ PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, 
     }
     i = j;
   }
-  if (!res.ok()) return res;
+}
+
+// Merge: the parts into one store (copy_parts), twins across borders found by sorting the
+// parts' hull sides by their vertex pair (link_borders); m replaced on success.
+void merge_parts(Coarse& c, std::vector<PartOut>& parts, const RefineOptions& base, int threads, TriangleStore& m,
+                 PartitionResult& res) {
+  const auto k = static_cast<std::uint32_t>(parts.size());
+  const std::uint32_t n_shared = c.n_kept + static_cast<std::uint32_t>(c.border_xy.size());
+  std::vector<std::uint64_t> vbase(k + 1, n_shared), tbase(k + 1, 0);
+  for (std::uint32_t p = 0; p < k; ++p) {
+    vbase[p + 1] = vbase[p] + (parts[p].st.num_vertices() - parts[p].n_init);
+    tbase[p + 1] = tbase[p] + parts[p].st.num_slots();
+  }
+  if (vbase[k] > base.max_vertices || 3 * tbase[k] >= kNoIndex) {
+    res.error = "refinement stopped at the vertex limit";
+    return;
+  }
+  TriangleStore out;
+  const std::vector<std::uint32_t> hull = copy_parts(c, parts, vbase, tbase, threads, out);
+  link_borders(out, hull, res);
+  if (!res.ok()) return;
   out.rebuild_out_side();
   m = std::move(out);
+}
+
+}  // namespace
+
+PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, PartRefiner kind,
+                                   const std::function<PlaneSizeFn()>& make_size, const PartitionOptions& opt,
+                                   int threads,
+                                   const std::function<void(std::uint32_t, std::uint32_t)>& on_parts,
+                                   const std::function<void(RefineOptions&)>& part_sizes) {
+  PartitionResult res;
+  auto t0 = std::chrono::steady_clock::now();
+  const PlaneSizeFn fine = make_size();
+  Coarse c;
+  const std::uint32_t n0 = m.num_vertices();
+  if (!refine_coarse(c, m, base, fine, opt, res)) return res;
+  const std::vector<std::uint32_t> tris = live_triangles(c.m);
+  const std::uint32_t k = cut_into_parts(c, tris, fine, opt, res);
+  subdivide_borders(c, tris, fine);
+  number_kept_vertices(c, n0);
+  res.stats.border_edges = c.borders.size();
+  res.stats.border_points = c.border_xy.size();
+  res.stats.seconds_coarse = seconds_since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  std::vector<PartOut> parts = mesh_parts(c, k, base, kind, make_size, threads, on_parts, part_sizes, res);
+  res.stats.seconds_parts = seconds_since(t0);
+  if (!res.ok()) return res;
+
+  t0 = std::chrono::steady_clock::now();
+  merge_parts(c, parts, base, threads, m, res);
+  if (!res.ok()) return res;
   res.stats.seconds_merge = seconds_since(t0);
   return res;
 }

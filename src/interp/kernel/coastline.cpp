@@ -269,133 +269,169 @@ std::uint8_t box_sides(const std::vector<geo::LonLat>& ll, const coast::LonLatBo
   return sides;
 }
 
-// Runs the import of Coastline[id] and adds its entities to the model.
-std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id, CoastlineDef& d, SourceRange at) {
-  KernelState& k = in.kernel();
-  geo::Model& model = k.model;
+// The import of one Coastline statement between its stages (import_coastline below): the
+// statement, the settings the script gave, what the kernel built and what the script gets.
+struct CoastImportWork {
+  Interpreter& in;
+  const int id;
+  CoastlineDef& d;
+  const SourceRange at;
+  int geometry = 0;                        // the current PolarSphere's geometry id
+  const geo::PolarSphere* sphere = nullptr;
+  coast::CoastlineSettings set;
+  std::vector<Vec3> moved;                 // the accuracy field's points, moved to the sphere's centre
+  std::optional<coast::RegionPolygon> polygon;
+  std::shared_ptr<CoastlineImport> imp = std::make_shared<CoastlineImport>();
+
+  CoastImportWork(Interpreter& i, int n, CoastlineDef& def, SourceRange a) : in(i), id(n), d(def), at(a) {}
+  coast::ImportOptions& io() { return set.import; }
+  DiagNote defined_note() const { return {d.defined_at, fmt::format("Coastline[{}] is defined here", id)}; }
+};
+
+// The current geometry, which must be a PolarSphere: the coast's points go on it.
+void find_polar_sphere(CoastImportWork& w) {
+  geo::Model& model = w.in.kernel().model;
   const int g = model.current_geometry();
   const geo::SurfaceGeometry* sg = g ? model.geometry(g) : nullptr;
   if (!sg || !sg->polar()) {
-    in.fail_with_notes(
-        at, Diag::CoastlineError,
+    w.in.fail_with_notes(
+        w.at, Diag::CoastlineError,
         fmt::format("Coastline{{{}}} puts its points on the current PolarSphere, and {}: define one first with "
                     "'PolarSphere(s) = {{centre, pole}};' (its radius gives the metres of the accuracy field)",
-                    id, !sg ? "there is none" : fmt::format("the current geometry {} is a lon/lat Sphere", g)),
-        {{d.defined_at, fmt::format("Coastline[{}] is defined here", id)}});
+                    w.id, !sg ? "there is none" : fmt::format("the current geometry {} is a lon/lat Sphere", g)),
+        {w.defined_note()});
   }
-  const geo::PolarSphere& sphere = *sg->polar();
-  // Every option the script set, applied by its row of the table in the table's order
-  // (each was checked when set).
-  coast::CoastlineSettings set;
-  for (const coast::CoastOptionSpec& o : coast::coast_options())
-    if (auto it = d.options.find(o.name); it != d.options.end()) o.apply(set, table_value(it->second));
-  coast::ImportOptions& io = set.import;
-  const std::string_view file_option = name_of(CoastOpt::FileName), accuracy_option = name_of(CoastOpt::AccuracyField);
-  const bool gshhg = d.format == "GSHHG";
-  if (set.file_name.empty() && !gshhg)
-    in.fail_with_notes(at, Diag::WrongCoastlineOption,
-                       fmt::format("Coastline[{}] has no {}: set 'Coastline[{}].{} = \"...\";'", id, file_option, id,
-                                   file_option),
-                       {{d.defined_at, fmt::format("Coastline[{}] is defined here", id)}});
-  if (!set.accuracy_field)
-    in.fail_with_notes(at, Diag::WrongCoastlineOption,
-                       fmt::format("Coastline[{}] has no {}: set 'Coastline[{}].{} = n;' to a size "
-                                   "field giving the accuracy gamma(x) in metres",
-                                   id, accuracy_option, id, accuracy_option),
-                       {{d.defined_at, fmt::format("Coastline[{}] is defined here", id)}});
+  w.geometry = g;
+  w.sphere = sg->polar();
+}
 
-  // The accuracy field: built now (errors located at this use), evaluated at points of
-  // the kernel's origin-centred sphere moved to the PolarSphere's centre.
-  const int field_id = *set.accuracy_field;
-  const field::FieldPtr gamma_field = built_fields(in, field_id, *set_at(d, CoastOpt::AccuracyField)).shared(field_id);
-  const Vec3 centre = sphere.centre();
-  std::vector<Vec3> moved;
-  io.gamma = [gamma_field, centre, &moved](std::span<const Vec3> pts, std::span<double> gamma) {
+// Every option the script set, applied by its row of the table in the table's order (each
+// was checked when set); FileName (but for GSHHG) and AccuracyField are required.
+void apply_settings(CoastImportWork& w) {
+  for (const coast::CoastOptionSpec& o : coast::coast_options())
+    if (auto it = w.d.options.find(o.name); it != w.d.options.end()) o.apply(w.set, table_value(it->second));
+  const int id = w.id;
+  const std::string_view file_option = name_of(CoastOpt::FileName), accuracy_option = name_of(CoastOpt::AccuracyField);
+  const bool gshhg = w.d.format == "GSHHG";
+  if (w.set.file_name.empty() && !gshhg)
+    w.in.fail_with_notes(w.at, Diag::WrongCoastlineOption,
+                         fmt::format("Coastline[{}] has no {}: set 'Coastline[{}].{} = \"...\";'", id, file_option, id,
+                                     file_option),
+                         {w.defined_note()});
+  if (!w.set.accuracy_field)
+    w.in.fail_with_notes(w.at, Diag::WrongCoastlineOption,
+                         fmt::format("Coastline[{}] has no {}: set 'Coastline[{}].{} = n;' to a size "
+                                     "field giving the accuracy gamma(x) in metres",
+                                     id, accuracy_option, id, accuracy_option),
+                         {w.defined_note()});
+}
+
+// The accuracy field: built now (errors located at this use), evaluated at points of
+// the kernel's origin-centred sphere moved to the PolarSphere's centre.
+void attach_accuracy_field(CoastImportWork& w) {
+  coast::ImportOptions& io = w.io();
+  const int field_id = *w.set.accuracy_field;
+  const field::FieldPtr gamma_field =
+      built_fields(w.in, field_id, *set_at(w.d, CoastOpt::AccuracyField)).shared(field_id);
+  const Vec3 centre = w.sphere->centre();
+  io.gamma = [gamma_field, centre, &moved = w.moved](std::span<const Vec3> pts, std::span<double> gamma) {
     moved.resize(pts.size());
     for (std::size_t i = 0; i < pts.size(); ++i) moved[i] = pts[i] + centre;
     gamma_field->eval(moved, gamma);
   };
-  io.radius = sphere.radius();
-  // Mesh.MinTimeStep set before the import: passages too narrow for it at the depth of
-  // Mesh.DepthField are closed with the MinChannelWidth ones (coast/import.h). The depth
-  // must be known now, as the closures change the coastline the script then builds on.
-  if (const double min_step = in.options().number("Mesh.MinTimeStep"); min_step > 0) {
-    const double depth_id = in.options().number("Mesh.DepthField");
-    std::vector<DiagNote> notes;
-    if (const auto it = k.option_set_at.find("Mesh.MinTimeStep"); it != k.option_set_at.end())
-      notes.push_back({it->second, "Mesh.MinTimeStep was set here"});
-    if (!(depth_id > 0) || !k.field_defined_at.count(static_cast<int>(depth_id)))
-      in.fail_with_notes(at, Diag::InvalidOptionValue,
-                         fmt::format("Coastline[{}]: Mesh.MinTimeStep = {:g} closes the passages too narrow for it "
-                                     "at their depth, and {}: define the depth field and set Mesh.DepthField before "
-                                     "this statement (or set Mesh.MinTimeStep after it)",
-                                     id, min_step,
-                                     depth_id > 0 ? fmt::format("Mesh.DepthField = {:g} names no field yet", depth_id)
-                                                  : std::string("Mesh.DepthField is not set")),
-                         std::move(notes));
-    const int did = static_cast<int>(depth_id);
-    const auto dat = k.option_set_at.find("Mesh.DepthField");
-    const field::FieldPtr depth = built_fields(in, did, dat != k.option_set_at.end() ? dat->second : at).shared(did);
-    const double min_depth = in.options().number("Mesh.TimeStepMinDepth");
-    io.min_time_step = min_step;
-    io.depth_at = [depth, sphere, min_depth](geo::LonLat ll) {
-      const Vec3 x = sphere.from_lonlat(ll);
-      double h = 0;
-      depth->eval(std::span<const Vec3>(&x, 1), std::span<double>(&h, 1));
-      return std::max(h, min_depth);
-    };
-  }
-  std::optional<coast::RegionPolygon> polygon;
-  if (!io.region_polygon.empty()) polygon = *coast::RegionPolygon::make(io.region_polygon);   // checked when set
-  // Points in the water (SeaAt, KeepOpen): inside the Region, longitudes compared modulo
-  // 360 as its box may run past +-180.
+  io.radius = w.sphere->radius();
+}
+
+// Mesh.MinTimeStep set before the import: passages too narrow for it at the depth of
+// Mesh.DepthField are closed with the MinChannelWidth ones (coast/import.h). The depth
+// must be known now, as the closures change the coastline the script then builds on.
+void attach_time_step_depth(CoastImportWork& w) {
+  Interpreter& in = w.in;
+  KernelState& k = in.kernel();
+  const double min_step = in.options().number("Mesh.MinTimeStep");
+  if (!(min_step > 0)) return;
+  const double depth_id = in.options().number("Mesh.DepthField");
+  std::vector<DiagNote> notes;
+  if (const auto it = k.option_set_at.find("Mesh.MinTimeStep"); it != k.option_set_at.end())
+    notes.push_back({it->second, "Mesh.MinTimeStep was set here"});
+  if (!(depth_id > 0) || !k.field_defined_at.count(static_cast<int>(depth_id)))
+    in.fail_with_notes(w.at, Diag::InvalidOptionValue,
+                       fmt::format("Coastline[{}]: Mesh.MinTimeStep = {:g} closes the passages too narrow for it "
+                                   "at their depth, and {}: define the depth field and set Mesh.DepthField before "
+                                   "this statement (or set Mesh.MinTimeStep after it)",
+                                   w.id, min_step,
+                                   depth_id > 0 ? fmt::format("Mesh.DepthField = {:g} names no field yet", depth_id)
+                                                : std::string("Mesh.DepthField is not set")),
+                       std::move(notes));
+  const int did = static_cast<int>(depth_id);
+  const auto dat = k.option_set_at.find("Mesh.DepthField");
+  const field::FieldPtr depth = built_fields(in, did, dat != k.option_set_at.end() ? dat->second : w.at).shared(did);
+  const double min_depth = in.options().number("Mesh.TimeStepMinDepth");
+  w.io().min_time_step = min_step;
+  w.io().depth_at = [depth, sphere = *w.sphere, min_depth](geo::LonLat ll) {
+    const Vec3 x = sphere.from_lonlat(ll);
+    double h = 0;
+    depth->eval(std::span<const Vec3>(&x, 1), std::span<double>(&h, 1));
+    return std::max(h, min_depth);
+  };
+}
+
+// Points in the water (SeaAt, KeepOpen): inside the Region, longitudes compared modulo
+// 360 as its box may run past +-180.
+void check_water_points(CoastImportWork& w) {
+  const coast::ImportOptions& io = w.io();
+  if (!io.region_polygon.empty()) w.polygon = *coast::RegionPolygon::make(io.region_polygon);   // checked when set
+  const int id = w.id;
   const auto region_note = [&] {
-    return DiagNote{*set_at(d, CoastOpt::Region), fmt::format("Coastline[{}].{} is set here", id, name_of(CoastOpt::Region))};
+    return DiagNote{*set_at(w.d, CoastOpt::Region), fmt::format("Coastline[{}].{} is set here", id, name_of(CoastOpt::Region))};
   };
   for (const CoastOpt o : {CoastOpt::SeaAt, CoastOpt::KeepOpen}) {
     const std::vector<geo::LonLat>& points = o == CoastOpt::SeaAt ? io.sea_at : io.passages.keep_open;
     for (const geo::LonLat p : points) {
-      if (polygon && !polygon->contains(p))
-        in.fail_with_notes(*set_at(d, o), Diag::WrongCoastlineOption,
-                           fmt::format("Coastline[{}].{} point (lon {}, lat {}) lies outside the Region polygon", id,
-                                       name_of(o), p.lon, p.lat),
-                           {region_note(), {at, "the coastline is imported here"}});
-      if (io.region && !polygon) {
+      if (w.polygon && !w.polygon->contains(p))
+        w.in.fail_with_notes(*set_at(w.d, o), Diag::WrongCoastlineOption,
+                             fmt::format("Coastline[{}].{} point (lon {}, lat {}) lies outside the Region polygon", id,
+                                         name_of(o), p.lon, p.lat),
+                             {region_note(), {w.at, "the coastline is imported here"}});
+      if (io.region && !w.polygon) {
         const coast::LonLatBox& b = *io.region;
         const double lon = b.west + std::fmod(std::fmod(p.lon - b.west, 360.0) + 360.0, 360.0);
         if (lon > b.east || p.lat < b.south || p.lat > b.north)
-          in.fail_with_notes(*set_at(d, o), Diag::WrongCoastlineOption,
-                             fmt::format("Coastline[{}].{} point (lon {}, lat {}) lies outside the Region {{{}, {}, "
-                                         "{}, {}}}",
-                                         id, name_of(o), p.lon, p.lat, b.west, b.east, b.south, b.north),
-                             {region_note(), {at, "the coastline is imported here"}});
+          w.in.fail_with_notes(*set_at(w.d, o), Diag::WrongCoastlineOption,
+                               fmt::format("Coastline[{}].{} point (lon {}, lat {}) lies outside the Region {{{}, {}, "
+                                           "{}, {}}}",
+                                           id, name_of(o), p.lon, p.lat, b.west, b.east, b.south, b.north),
+                               {region_note(), {w.at, "the coastline is imported here"}});
       }
     }
   }
-  // Cleaning and coarsening ring by ring on -nt threads (the same rings for every count).
-  io.threads = static_cast<int>(in.options().number("General.NumThreads"));
-  io.progress = progress_sink(in);
-  // Patch: the local shoreline, read now so that an unreadable file is an error at its
-  // statement; both Patch and PatchBox, or neither.
-  if (!set.patch_file.empty() || io.patch_box) {
-    const CoastOpt given = set.patch_file.empty() ? CoastOpt::PatchBox : CoastOpt::Patch;
-    const CoastOpt missing = set.patch_file.empty() ? CoastOpt::Patch : CoastOpt::PatchBox;
-    const SourceRange given_at = *set_at(d, given);
-    if (set.patch_file.empty() || !io.patch_box)
-      fail_option(in, given_at, id, name_of(given),
-                  fmt::format("needs Coastline[{}].{} too: the patch replaces the shoreline inside a box", id,
-                              name_of(missing)));
-    const std::string& ppath = set.patch_file;
-    const bool shp = ppath.size() > 4 && ppath.compare(ppath.size() - 4, 4, ".shp") == 0;
-    auto pdata = coast::read_coastline(shp ? coast::CoastFormat::Shapefile : coast::CoastFormat::LonLatText, ppath);
-    if (!pdata)
-      fail_option(in, given_at, id, name_of(CoastOpt::Patch), fmt::format("cannot be read: {}", pdata.error().to_string()));
-    io.patch = std::move(pdata->rings);
-  }
+}
 
-  // The kernel's reading and building is the account's "import" stage; making the
-  // script's entities from its loops below is the script's own time.
-  std::optional<StageScope> import_stage(std::in_place, &in.kernel().clock, nullptr, "import");
+// Patch: the local shoreline, read now so that an unreadable file is an error at its
+// statement; both Patch and PatchBox, or neither.
+void read_patch(CoastImportWork& w) {
+  coast::ImportOptions& io = w.io();
+  if (w.set.patch_file.empty() && !io.patch_box) return;
+  const int id = w.id;
+  const CoastOpt given = w.set.patch_file.empty() ? CoastOpt::PatchBox : CoastOpt::Patch;
+  const CoastOpt missing = w.set.patch_file.empty() ? CoastOpt::Patch : CoastOpt::PatchBox;
+  const SourceRange given_at = *set_at(w.d, given);
+  if (w.set.patch_file.empty() || !io.patch_box)
+    fail_option(w.in, given_at, id, name_of(given),
+                fmt::format("needs Coastline[{}].{} too: the patch replaces the shoreline inside a box", id,
+                            name_of(missing)));
+  const std::string& ppath = w.set.patch_file;
+  const bool shp = ppath.size() > 4 && ppath.compare(ppath.size() - 4, 4, ".shp") == 0;
+  auto pdata = coast::read_coastline(shp ? coast::CoastFormat::Shapefile : coast::CoastFormat::LonLatText, ppath);
+  if (!pdata)
+    fail_option(w.in, given_at, id, name_of(CoastOpt::Patch), fmt::format("cannot be read: {}", pdata.error().to_string()));
+  io.patch = std::move(pdata->rings);
+}
+
+// The shoreline file read; an unreadable one is an error at the statement that named it:
+// FileName, else Resolution, else the import.
+coast::Coastline read_shoreline(CoastImportWork& w) {
+  const coast::ImportOptions& io = w.io();
   // GSHHG: the reader itself keeps the levels, areas and bins asked for (the import
   // filters the same again), so that a Region reads only the polygons it touches.
   coast::GshhgBinnedOptions gopt;
@@ -403,21 +439,46 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
   gopt.antarctica_level = io.antarctica_level;
   gopt.min_area_km2 = io.coarsen.min_area_km2;
   gopt.region = io.region;
-  const std::string path = !set.file_name.empty() ? set.file_name : coast::gshhg_binned_file(set.resolution.front());
-  auto data = coast::read_coastline(*coast::parse_coast_format(d.format), path, set.loops2, gopt);
+  const std::string path =
+      !w.set.file_name.empty() ? w.set.file_name : coast::gshhg_binned_file(w.set.resolution.front());
+  auto data = coast::read_coastline(*coast::parse_coast_format(w.d.format), path, w.set.loops2, gopt);
   if (!data) {
-    // At the statement that named the file: FileName, else Resolution, else the import.
-    const SourceRange* f = set_at(d, CoastOpt::FileName);
-    if (!f) f = set_at(d, CoastOpt::Resolution);
-    if (!f) fail_coast(in, id, d, at, data.error(), false);
+    const SourceRange* f = set_at(w.d, CoastOpt::FileName);
+    if (!f) f = set_at(w.d, CoastOpt::Resolution);
+    if (!f) fail_coast(w.in, w.id, w.d, w.at, data.error(), false);
     try {
-      fail_coast(in, id, d, *f, data.error(), false);
+      fail_coast(w.in, w.id, w.d, *f, data.error(), false);
     } catch (RuntimeError& err) {
-      err.notes.insert(err.notes.begin(), DiagNote{at, "the coastline is imported here"});
+      err.notes.insert(err.notes.begin(), DiagNote{w.at, "the coastline is imported here"});
       throw;
     }
   }
-  auto built = coast::build_coast_model(std::move(*data), io);
+  return std::move(*data);
+}
+
+// The kernel's import failed: located where the option at fault is set (a dam, a SeaAt or
+// KeepOpen point), else at the import with notes at the definition and the file.
+[[noreturn]] void fail_build(CoastImportWork& w, const coast::CoastError& e) {
+  if (auto o = w.d.option_at.find(e.option); !e.option.empty() && o != w.d.option_at.end()) {
+    try {
+      fail_coast(w.in, w.id, w.d, o->second, e, false);
+    } catch (RuntimeError& err) {
+      err.notes.insert(err.notes.begin(), DiagNote{w.at, "the coastline is imported here"});
+      const SourceRange* dams = set_at(w.d, CoastOpt::Dams);
+      if (e.option == name_of(CoastOpt::KeepOpen) && dams && e.message.find("dam from") != std::string::npos)
+        err.notes.insert(err.notes.begin(),
+                         DiagNote{*dams, fmt::format("Coastline[{}].{} is set here", w.id, name_of(CoastOpt::Dams))});
+      throw;
+    }
+  }
+  fail_coast(w.in, w.id, w.d, w.at, e, true);
+}
+
+// The kernel's reading and building: the account's "import" stage (making the script's
+// entities from its loops is the script's own time).
+coast::CoastModel read_and_build(CoastImportWork& w) {
+  std::optional<StageScope> import_stage(std::in_place, &w.in.kernel().clock, nullptr, "import");
+  auto built = coast::build_coast_model(read_shoreline(w), w.io());
   import_stage.reset();
   // The import's working arrays (the source points three times over, the passage pool:
   // hundreds of MB for the full-resolution world) are freed now, but many came from the
@@ -426,23 +487,18 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
 #if defined(__GLIBC__)
   malloc_trim(0);
 #endif
-  if (!built) {
-    const coast::CoastError& e = built.error();
-    if (auto o = d.option_at.find(e.option); !e.option.empty() && o != d.option_at.end()) {
-      try {   // a dam, a SeaAt or KeepOpen point: located where the option is set
-        fail_coast(in, id, d, o->second, e, false);
-      } catch (RuntimeError& err) {
-        err.notes.insert(err.notes.begin(), DiagNote{at, "the coastline is imported here"});
-        const SourceRange* dams = set_at(d, CoastOpt::Dams);
-        if (e.option == name_of(CoastOpt::KeepOpen) && dams && e.message.find("dam from") != std::string::npos)
-          err.notes.insert(err.notes.begin(),
-                           DiagNote{*dams, fmt::format("Coastline[{}].{} is set here", id, name_of(CoastOpt::Dams))});
-        throw;
-      }
-    }
-    fail_coast(in, id, d, at, e, true);
-  }
-  const coast::CoastModel& m = *built;
+  if (!built) fail_build(w, built.error());
+  return std::move(*built);
+}
+
+// What the import changed, each with its place and figure: the terminal groups the many of
+// this statement (cli/diagnostic_stream.h), --diagnostics FILE keeps every one. A dropped
+// sea goes with the count of them, at SeaAt. The closures, dropped seas and straits are
+// kept for Coastline{n, "..."}.
+void report_changes(CoastImportWork& w, const coast::CoastModel& m) {
+  Interpreter& in = w.in;
+  const CoastlineDef& d = w.d;
+  const int id = w.id;
   if (m.report.patch) {   // where the two shorelines disagree at the patch box
     const coast::PatchReport& pr = *m.report.patch;
     in.diags().report(*set_at(d, CoastOpt::Patch), Diag::CoastlineDeviation,
@@ -456,43 +512,43 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
     in.diags().report(*set_at(d, CoastOpt::SeaAt), Diag::CoastlineSeasDropped,
                       fmt::format("Coastline[{}]: {} sea(s) holding no SeaAt point dropped, {} kept", id,
                                   m.seas_dropped, m.surfaces.size()));
-  // Every change, each with its place and figure: the terminal groups the many of this
-  // statement (cli/diagnostic_stream.h), --diagnostics FILE keeps every one.
-  // A dropped sea goes with the count of them, at SeaAt.
-  auto imp = std::make_shared<CoastlineImport>();
+  CoastlineImport& imp = *w.imp;
   for (const coast::ReportLine& line : m.report.items()) {
     const std::string name = fmt::format("Coastline[{}]", id);
     const std::string text = fmt::format("{}: {}", name, line.text);
     auto h = line.sea_dropped ? in.diags().report(*set_at(d, CoastOpt::SeaAt), Diag::CoastlineSeasDropped, text)
              : line.step_unmet ? in.diags().report(*set_at(d, CoastOpt::KeepOpen), Diag::CoastlinePassage, text)
              : line.kept_open ? in.diags().report(*set_at(d, CoastOpt::KeepOpen), Diag::CoastlineKeptOpen, text)
-             : line.passage   ? in.diags().report(at, Diag::CoastlinePassage, text)
-                              : in.diags().report(at, Diag::CoastlineRepair, name, line.text);
+             : line.passage   ? in.diags().report(w.at, Diag::CoastlinePassage, text)
+                              : in.diags().report(w.at, Diag::CoastlineRepair, name, line.text);
     h.item(coastline_item(line));
   }
   for (const coast::RepairEntry& e : m.report.repair) {   // for Coastline{n, "Closures"} and "DroppedSeas"
-    std::vector<double>* list = e.kind == coast::RepairKind::ClosedPassage ? &imp->closures
-                                : e.kind == coast::RepairKind::DroppedSea  ? &imp->dropped_seas
+    std::vector<double>* list = e.kind == coast::RepairKind::ClosedPassage ? &imp.closures
+                                : e.kind == coast::RepairKind::DroppedSea  ? &imp.dropped_seas
                                                                            : nullptr;
     if (list) list->insert(list->end(), {e.where.lon, e.where.lat, e.value});
     // The straits left open, with the Courant step one element across costs (0 without
     // Mesh.MinTimeStep): what a script checks a time step's closures against.
     if (e.kind == coast::RepairKind::NarrowStrait)
-      imp->straits.insert(imp->straits.end(), {e.where.lon, e.where.lat, e.value, std::isnan(e.step) ? 0.0 : e.step});
+      imp.straits.insert(imp.straits.end(), {e.where.lon, e.where.lat, e.value, std::isnan(e.step) ? 0.0 : e.step});
   }
   if (m.region_empty) {   // the box of the Region, or of the file's own -R
+    const coast::ImportOptions& io = w.io();
     const SourceRange* r = set_at(d, CoastOpt::Region);
     const std::string box =
-        polygon ? std::string(" polygon")
+        w.polygon ? std::string(" polygon")
         : io.region ? fmt::format(" {{{}, {}, {}, {}}}", io.region->west, io.region->east, io.region->south, io.region->north)
                   : std::string(" of the file");
-    in.diags().report(r ? *r : at, Diag::CoastlineRegionEmpty,
+    in.diags().report(r ? *r : w.at, Diag::CoastlineRegionEmpty,
                       fmt::format("Coastline[{}]: the Region{} holds no shoreline of the levels kept (none left at "
                                   "this accuracy and MinArea): its {} is the only loop, all open boundary",
-                                  id, box, polygon ? "outline" : "box"));
+                                  id, box, w.polygon ? "outline" : "box"));
   }
+}
 
-  // Loops surface by surface (outer first), then the holes no outer loop holds.
+// Loops surface by surface (outer first), then the holes no outer loop holds.
+std::vector<std::uint32_t> loop_order(const coast::CoastModel& m) {
   std::vector<std::uint32_t> order;
   std::vector<bool> listed(m.loops.size(), false);
   auto add = [&](std::uint32_t l) {
@@ -504,22 +560,21 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
   }
   for (std::uint32_t l : m.unassigned) add(l);
   for (std::uint32_t l = 0; l < m.loops.size(); ++l) add(l);
+  return order;
+}
 
-  sync_geometry_options(in);
-  const bool polyline = !io.deviation.bspline;   // CurveType "Line"
-  imp->at = at;
-  {
-    const coast::DeviationReport& dev = m.report.deviation;
-    imp->deviation = {dev.max, dev.p95, dev.max_before, dev.where.lon, dev.where.lat,
+// One line per import: how far the coast the mesher follows lies from the data. At the
+// coastline's definition: the import statement's own caret heads the group of its repairs
+// (cli/diagnostic_stream.h).
+void report_deviation(CoastImportWork& w, const coast::CoastModel& m) {
+  const coast::DeviationReport& dev = m.report.deviation;
+  w.imp->deviation = {dev.max, dev.p95, dev.max_before, dev.where.lon, dev.where.lat,
                       static_cast<double>(dev.points_added)};
-    // One line per import: how far the coast the mesher follows lies from the data.
-    // At the coastline's definition: the import statement's own caret heads the group of
-    // its repairs (cli/diagnostic_stream.h).
-    in.diags().report(d.defined_at, Diag::CoastlineDeviation,
+  w.in.diags().report(w.d.defined_at, Diag::CoastlineDeviation,
                       fmt::format("Coastline[{}]: the coast curves lie within {:.0f} m of the source points (95% within "
                                   "{:.0f} m; {:.0f} m before {} control point(s) were put back), farthest at lon {:.4f} "
                                   "lat {:.4f}{}{}",
-                                  id, dev.max, dev.p95, dev.max_before, dev.points_added, dev.where.lon, dev.where.lat,
+                                  w.id, dev.max, dev.p95, dev.max_before, dev.points_added, dev.where.lon, dev.where.lat,
                                   dev.narrow_features > 0
                                       ? fmt::format("; {} inlet(s) or spit(s) too narrow for the accuracy left out (up to "
                                                     "{:.0f} m deep; the first at lon {:.4f} lat {:.4f})",
@@ -531,72 +586,105 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
                                                     "(first at lon {:.4f} lat {:.4f})",
                                                     dev.left_over_bound, dev.where_over.lon, dev.where_over.lat)
                                       : std::string()));
-  }
-  std::vector<int> loop_tag(m.loops.size(), 0);
+}
+
+// One loop's points, curves and curve loop in the model; returns the loop's tag. Each piece
+// of a loop writes all its points but the last, which is the next piece's first; a periodic
+// curve (a whole island) writes all of its points and closes on the first. All points of
+// the loop exist before its curves refer to them.
+int add_loop(CoastImportWork& w, const coast::CoastModel& m, const coast::CoastLoop& loop,
+             std::unordered_set<int>& coast_point_seen) {
+  Interpreter& in = w.in;
+  KernelState& k = in.kernel();
+  geo::Model& model = k.model;
+  const SourceRange at = w.at;
+  const coast::ImportOptions& io = w.io();
+  CoastlineImport& imp = *w.imp;
+  const bool polyline = !io.deviation.bspline;   // CurveType "Line"
   std::vector<int> pts;
-  std::unordered_set<int> coast_point_seen;
-  for (std::uint32_t l : order) {
-    const coast::CoastLoop& loop = m.loops[l];
-    // Each piece of a loop writes all its points but the last, which is the next piece's
-    // first; a periodic curve (a whole island) writes all of its points and closes on
-    // the first. All points of the loop exist before its curves refer to them.
-    pts.clear();
-    std::vector<std::size_t> start(loop.curves.size());
-    for (std::size_t c = 0; c < loop.curves.size(); ++c) {
-      const coast::CoastCurve& cc = m.curves[loop.curves[c]];
-      start[c] = pts.size();
-      const std::size_t n = cc.periodic || cc.uv.empty() ? cc.uv.size() : cc.uv.size() - 1;
-      for (std::size_t i = 0; i < n; ++i) {
-        const int tag = model.new_point_tag();
-        check_geo(in, at, model.add_point_on_geometry(tag, g, cc.uv[i]));
-        record_created(k, 0, tag, at);
-        pts.push_back(tag);
-      }
+  std::vector<std::size_t> start(loop.curves.size());
+  for (std::size_t c = 0; c < loop.curves.size(); ++c) {
+    const coast::CoastCurve& cc = m.curves[loop.curves[c]];
+    start[c] = pts.size();
+    const std::size_t n = cc.periodic || cc.uv.empty() ? cc.uv.size() : cc.uv.size() - 1;
+    for (std::size_t i = 0; i < n; ++i) {
+      const int tag = model.new_point_tag();
+      check_geo(in, at, model.add_point_on_geometry(tag, w.geometry, cc.uv[i]));
+      record_created(k, 0, tag, at);
+      pts.push_back(tag);
     }
-    if (pts.size() < 2)   // the kernel never returns such a loop; refuse it rather than guess
-      in.fail_fmt(at, Diag::CoastlineError,
-                  fmt::format("Coastline[{}]: the import produced a loop with {} point(s)", id, pts.size()));
-    std::vector<int> curves;
-    for (std::size_t c = 0; c < loop.curves.size(); ++c) {
-      const coast::CoastCurve& cc = m.curves[loop.curves[c]];
-      const std::size_t end = c + 1 < loop.curves.size() ? start[c + 1] : pts.size();
-      std::vector<int> cp(pts.begin() + static_cast<std::ptrdiff_t>(start[c]), pts.begin() + static_cast<std::ptrdiff_t>(end));
-      cp.push_back(cc.periodic ? pts[start[c]] : pts[end == pts.size() ? 0 : end]);
-      const geo::CurveKind kind = polyline || cp.size() == 2 ? geo::CurveKind::Line : geo::CurveKind::BSpline;
-      const int tag = model.new_curve_tag();
-      check_geo(in, at, model.add_curve(tag, kind, cp));
-      record_created(k, 1, tag, at);
-      curves.push_back(tag);
-      imp->curves.push_back(tag);
-      if (cc.open_boundary) {
-        imp->open_curves.push_back(tag);
-        imp->open_sides.push_back(io.region && !polygon ? box_sides(cc.ll, *io.region) : 0);
-        imp->open_edges.push_back(polygon ? polygon->edges_along(cc.ll) : std::vector<std::size_t>{});
-      } else {
-        imp->coast_curves.push_back(tag);
-        // Its points, the ends it shares with its neighbours once (the loop's first point
-        // may come last, closing the loop).
-        for (int p : cp)
-          if (coast_point_seen.insert(p).second) imp->coast_points.push_back(p);
-      }
-    }
-    const int tag = model.new_loop_tag();
-    check_geo(in, at, model.add_curve_loop(tag, curves));
-    record_created(k, kCurveLoopKey, tag, at);
-    loop_tag[l] = tag;
-    imp->loops.push_back(tag);
-    imp->loop_points.push_back(static_cast<int>(pts.size()));
-    imp->points.insert(imp->points.end(), pts.begin(), pts.end());
   }
+  if (pts.size() < 2)   // the kernel never returns such a loop; refuse it rather than guess
+    in.fail_fmt(at, Diag::CoastlineError,
+                fmt::format("Coastline[{}]: the import produced a loop with {} point(s)", w.id, pts.size()));
+  std::vector<int> curves;
+  for (std::size_t c = 0; c < loop.curves.size(); ++c) {
+    const coast::CoastCurve& cc = m.curves[loop.curves[c]];
+    const std::size_t end = c + 1 < loop.curves.size() ? start[c + 1] : pts.size();
+    std::vector<int> cp(pts.begin() + static_cast<std::ptrdiff_t>(start[c]), pts.begin() + static_cast<std::ptrdiff_t>(end));
+    cp.push_back(cc.periodic ? pts[start[c]] : pts[end == pts.size() ? 0 : end]);
+    const geo::CurveKind kind = polyline || cp.size() == 2 ? geo::CurveKind::Line : geo::CurveKind::BSpline;
+    const int tag = model.new_curve_tag();
+    check_geo(in, at, model.add_curve(tag, kind, cp));
+    record_created(k, 1, tag, at);
+    curves.push_back(tag);
+    imp.curves.push_back(tag);
+    if (cc.open_boundary) {
+      imp.open_curves.push_back(tag);
+      imp.open_sides.push_back(io.region && !w.polygon ? box_sides(cc.ll, *io.region) : 0);
+      imp.open_edges.push_back(w.polygon ? w.polygon->edges_along(cc.ll) : std::vector<std::size_t>{});
+    } else {
+      imp.coast_curves.push_back(tag);
+      // Its points, the ends it shares with its neighbours once (the loop's first point
+      // may come last, closing the loop).
+      for (int p : cp)
+        if (coast_point_seen.insert(p).second) imp.coast_points.push_back(p);
+    }
+  }
+  const int tag = model.new_loop_tag();
+  check_geo(in, at, model.add_curve_loop(tag, curves));
+  record_created(k, kCurveLoopKey, tag, at);
+  imp.loops.push_back(tag);
+  imp.loop_points.push_back(static_cast<int>(pts.size()));
+  imp.points.insert(imp.points.end(), pts.begin(), pts.end());
+  return tag;
+}
+
+// The script's entities: the loops in loop_order, then each surface's loops (outer first).
+void add_entities(CoastImportWork& w, const coast::CoastModel& m, const std::vector<std::uint32_t>& order) {
+  std::vector<int> loop_tag(m.loops.size(), 0);
+  std::unordered_set<int> coast_point_seen;
+  for (std::uint32_t l : order) loop_tag[l] = add_loop(w, m, m.loops[l], coast_point_seen);
   for (const coast::CoastSurface& s : m.surfaces) {
     std::vector<int> sl{loop_tag[s.outer]};
     for (std::uint32_t h : s.holes) sl.push_back(loop_tag[h]);
-    imp->surface_loops.push_back(std::move(sl));
-    imp->outer.push_back(loop_tag[s.outer]);
-    imp->loops_per_surface.push_back(static_cast<int>(1 + s.holes.size()));
+    w.imp->surface_loops.push_back(std::move(sl));
+    w.imp->outer.push_back(loop_tag[s.outer]);
+    w.imp->loops_per_surface.push_back(static_cast<int>(1 + s.holes.size()));
   }
+}
+
+// Runs the import of Coastline[id] and adds its entities to the model.
+std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id, CoastlineDef& d, SourceRange at) {
+  CoastImportWork w(in, id, d, at);
+  find_polar_sphere(w);
+  apply_settings(w);
+  attach_accuracy_field(w);
+  attach_time_step_depth(w);
+  check_water_points(w);
+  // Cleaning and coarsening ring by ring on -nt threads (the same rings for every count).
+  w.io().threads = static_cast<int>(in.options().number("General.NumThreads"));
+  w.io().progress = progress_sink(in);
+  read_patch(w);
+  const coast::CoastModel m = read_and_build(w);
+  report_changes(w, m);
+  const std::vector<std::uint32_t> order = loop_order(m);
+  sync_geometry_options(in);
+  w.imp->at = at;
+  report_deviation(w, m);
+  add_entities(w, m, order);
   invalidate_field_cache(in);
-  return imp;
+  return w.imp;
 }
 
 }  // namespace
