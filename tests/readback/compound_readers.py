@@ -10,11 +10,10 @@ curves each.
 Exit 0: all checks hold; 1: a check failed (each is printed); 77: a reader is missing.
 """
 import os
-import subprocess
 import sys
 import tempfile
 
-from readback import HERE, check, finish
+from readback import check, finish, run_script
 import gmsh
 
 
@@ -31,11 +30,8 @@ def inside(poly, p):
 def main():
     stereomesh = sys.argv[1]
     with tempfile.TemporaryDirectory() as out:
-        run = subprocess.run([stereomesh, "-0", os.path.join(HERE, "compound_plate.geo"), "-setstring", "OutDir", out],
-                             capture_output=True, text=True)
-        check(run.returncode == 0, "stereomesh ran")
-        if run.returncode != 0:
-            print(run.stdout, run.stderr)
+        run = run_script(stereomesh, "compound_plate.geo", out, what="stereomesh ran")
+        if not run:
             finish()
             return
         triangles = int(run.stdout.split()[0])

@@ -10,11 +10,10 @@ hgrid.gr3 must list "id 4 n1 n2 n3 n4" lines as SCHISM reads them.
 Exit 0: all checks hold; 1: a check failed (each is printed); 77: a reader is missing.
 """
 import os
-import subprocess
 import sys
 import tempfile
 
-from readback import HERE, check, finish, reader  # exits 77 when a reader is missing
+from readback import check, finish, run_script, reader  # exits 77 when a reader is missing
 import gmsh
 import netCDF4
 import numpy as np
@@ -50,11 +49,8 @@ def gmsh_quads(path):
 def main():
     stereomesh = sys.argv[1]
     with tempfile.TemporaryDirectory() as out:
-        run = subprocess.run([stereomesh, "-0", os.path.join(HERE, "quads_channel.geo"), "-setstring", "OutDir", out],
-                             capture_output=True, text=True)
-        check(run.returncode == 0, "stereomesh ran")
-        if run.returncode != 0:
-            print(run.stdout, run.stderr)
+        run = run_script(stereomesh, "quads_channel.geo", out, what="stereomesh ran")
+        if not run:
             finish()
             return
         words = run.stdout.split()

@@ -25,15 +25,16 @@ def check(ok, what):
 
 
 def run_script(stereomesh, script, out_dir, extra=(), what=None):
-    """stereomesh -0 SCRIPT -setstring OutDir OUT_DIR [EXTRA...]; False (a failed check) if
-    it fails. With `what`, its success is a check of that name too."""
+    """stereomesh -0 SCRIPT -setstring OutDir OUT_DIR [EXTRA...]: the finished run (its stdout
+    holds the script's Printf lines), or None (a failed check) if it fails. With `what`, its
+    success is a check of that name too."""
     run = subprocess.run([stereomesh, "-0", os.path.join(HERE, script), "-setstring", "OutDir", out_dir, *extra],
                          capture_output=True, text=True)
     if run.returncode != 0:
         print(run.stdout, run.stderr)
     if run.returncode != 0 or what:
         check(run.returncode == 0, what or "stereomesh ran")
-    return run.returncode == 0
+    return run if run.returncode == 0 else None
 
 
 def reader(name):
