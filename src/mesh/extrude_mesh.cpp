@@ -18,15 +18,6 @@ const geo::Extrusion* layered(const geo::Model& model, int dim, int tag) {
   return ex && ex->spec.layered ? ex : nullptr;
 }
 
-// The nodes of a curve's mesh in the direction of the signed tag.
-std::vector<std::uint32_t> oriented_nodes(const ModelMesh& mesh, int signed_curve) {
-  const auto it = mesh.curves.find(std::abs(signed_curve));
-  if (it == mesh.curves.end()) return {};
-  std::vector<std::uint32_t> n = it->second.nodes;
-  if (signed_curve < 0) std::reverse(n.begin(), n.end());
-  return n;
-}
-
 }  // namespace
 
 bool extruded_curve_nodes(const geo::Model& model, const ModelMesh& mesh, int tag, std::vector<double>& ts,
@@ -61,8 +52,8 @@ namespace {
 bool mesh_swept_face(FaceWork& f, const geo::Extrusion& ex) {
   const std::vector<double> fr = ex.spec.layers.fractions();
   const std::size_t K = fr.size() - 1;
-  const std::vector<std::uint32_t> src = oriented_nodes(f.mesh, ex.source);
-  const std::vector<std::uint32_t> top = oriented_nodes(f.mesh, ex.source > 0 ? ex.top : -ex.top);
+  const std::vector<std::uint32_t> src = f.mesh.curve_nodes(ex.source);
+  const std::vector<std::uint32_t> top = f.mesh.curve_nodes(ex.source > 0 ? ex.top : -ex.top);
   if (src.size() < 2 || top.size() != src.size())
     return f.fail(fmt::format("its top curve {} has {} nodes where its source curve {} has {}: the layers need a "
                               "copy of the source's mesh",
@@ -71,7 +62,7 @@ bool mesh_swept_face(FaceWork& f, const geo::Extrusion& ex) {
   const std::size_t M = src.size() - 1;
   auto side = [&](int curve, std::uint32_t base) -> std::vector<std::uint32_t> {
     if (!curve) return std::vector<std::uint32_t>(K + 1, base);
-    return oriented_nodes(f.mesh, curve);
+    return f.mesh.curve_nodes(curve);
   };
   const std::vector<std::uint32_t> left = side(ex.begin_curve, src.front());
   const std::vector<std::uint32_t> right = side(ex.end_curve, src.back());

@@ -30,6 +30,14 @@ std::size_t ModelMesh::num_curve_edges() const {
   return n;
 }
 
+std::vector<std::uint32_t> ModelMesh::curve_nodes(int signed_tag) const {
+  const auto it = curves.find(std::abs(signed_tag));
+  if (it == curves.end()) return {};
+  std::vector<std::uint32_t> n = it->second.nodes;
+  if (signed_tag < 0) std::reverse(n.begin(), n.end());
+  return n;
+}
+
 namespace {
 
 // Integrand |X'(t)| / h(t) at a batch of parameters, and |X'(t)| (the smoothing needs it).

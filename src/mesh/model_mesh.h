@@ -59,6 +59,9 @@ struct ModelMesh {
     return static_cast<std::uint32_t>(nodes.size() - 1);
   }
   std::size_t num_curve_edges() const;
+  /// The nodes of curve |signed_tag|'s mesh in the direction of the sign (reversed for a
+  /// negative tag); empty when the curve has no mesh.
+  std::vector<std::uint32_t> curve_nodes(int signed_tag) const;
 };
 
 }  // namespace sm

@@ -28,15 +28,6 @@ bool is_open_group(const std::string& name) {
   return lower == "open";
 }
 
-// The nodes of one signed curve, in the loop's direction.
-std::vector<std::uint32_t> curve_nodes(const ModelMesh& mesh, int signed_tag) {
-  const auto it = mesh.curves.find(std::abs(signed_tag));
-  if (it == mesh.curves.end()) return {};
-  std::vector<std::uint32_t> nodes = it->second.nodes;
-  if (signed_tag < 0) std::reverse(nodes.begin(), nodes.end());
-  return nodes;
-}
-
 // Appends `more` to `chain`, dropping the shared joint node.
 void extend(std::vector<std::uint32_t>& chain, const std::vector<std::uint32_t>& more) {
   const std::size_t skip = !chain.empty() && !more.empty() && chain.back() == more.front() ? 1 : 0;
@@ -94,7 +85,7 @@ std::string boundary_strings(const geo::Model& model, const ModelMesh& mesh,
         // open boundaries: the World Ocean's Antarctic coast) keeps the first node again at
         // the end, so that its closing edge is listed too.
         io::BoundaryString b{k == 0 ? Kind::Mainland : Kind::Island, {}};
-        for (int c : curves) extend(b.nodes, curve_nodes(mesh, c));
+        for (int c : curves) extend(b.nodes, mesh.curve_nodes(c));
         if (b.kind == Kind::Island && b.nodes.size() > 1 && b.nodes.front() == b.nodes.back()) b.nodes.pop_back();
         const bool meshed = std::all_of(b.nodes.begin(), b.nodes.end(), [&](std::uint32_t v) { return used.count(v); });
         if (meshed) out.push_back(to_model(std::move(b)));
@@ -109,7 +100,7 @@ std::string boundary_strings(const geo::Model& model, const ModelMesh& mesh,
         const Side here = side(curves[i]);
         io::BoundaryString b{here == Side::Open ? Kind::Open : Kind::Mainland, {}};
         do {
-          extend(b.nodes, curve_nodes(mesh, curves[i]));
+          extend(b.nodes, mesh.curve_nodes(curves[i]));
           i = (i + 1) % curves.size();
         } while (i != start % curves.size() && side(curves[i]) == here);
         if (here != Side::Between) out.push_back(to_model(std::move(b)));
