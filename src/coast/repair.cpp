@@ -97,30 +97,38 @@ bool cut_sliver(WorkCurve& c, std::uint32_t a1, std::uint32_t a2) {
 // A loop of several curves (the pieces a binned or clipped source is read in, joined end
 // to end) whose source data meets itself across the end of a piece: the sliver between
 // segment a of the loop's curve i and segment b of its curve j is cut out the way
-// cut_sliver cuts it within one curve, going forward along the loop from (i, a) to (j, b)
-// (cyclically: j may come before i). Curve i keeps its points up to a and ends on point
-// b + 1 of curve j, where curve j now starts; the curves between them leave the loop, and
-// so does curve j when only that point is left of it. Every curve keeps both its end
-// points, so the loop stays closed. False (nothing changed) when the cut side holds the
-// region's box or fewer than three points would remain; the caller passes the shorter
-// side. `dropped` receives the curves that left the loop.
+// cut_sliver cuts it within one curve, on the side of the loop holding fewer points: going
+// forward along the loop from (i, a) to (j, b), or from (j, b) to (i, a) (cyclically).
+// Going from (i, a) to (j, b), curve i keeps its points up to a and ends on point b + 1 of
+// curve j, where curve j now starts; the curves between them leave the loop, and so does
+// curve j when only that point is left of it. Every curve keeps both its end points, so the
+// loop stays closed. False (nothing changed) when the cut side holds the region's box or
+// fewer than three points would remain. `dropped` receives the curves that left the loop.
 bool cut_sliver_across(std::vector<WorkCurve>& curves, WorkLoop& loop, std::size_t i, std::uint32_t a, std::size_t j,
                        std::uint32_t b, std::vector<std::uint32_t>& dropped) {
   const std::size_t nl = loop.curves.size();
   if (i == j || i >= nl || j >= nl) return false;
+  std::size_t total = 0;   // points of the loop, each curve's end counted as the next one's start
+  for (std::uint32_t ci : loop.curves) total += curves[ci].full.size() - 1;
+  // The points cut going forward from (i, a) to (j, b): i's after a, the curves between,
+  // j's up to b + 1 (j's first point being i's last), the rest of the loop the other way.
+  auto forward = [&](std::size_t from, std::uint32_t at, std::size_t to, std::uint32_t upto) {
+    std::size_t n = (curves[loop.curves[from]].full.size() - 1 - at) + upto;
+    for (std::size_t k = (from + 1) % nl; k != to; k = (k + 1) % nl) n += curves[loop.curves[k]].full.size() - 1;
+    return n;
+  };
+  std::size_t cut = forward(i, a, j, b);
+  if (cut > total - cut) {
+    std::swap(i, j);
+    std::swap(a, b);
+    cut = total - cut;
+  }
   WorkCurve& A = curves[loop.curves[i]];
   WorkCurve& B = curves[loop.curves[j]];
   if (A.periodic || B.periodic || a + 1 >= A.full.size() || b + 1 >= B.full.size()) return false;
   if (A.open_boundary || B.open_boundary) return false;
-  std::size_t total = 0;   // points of the loop, each curve's end counted as the next one's start
-  for (std::uint32_t ci : loop.curves) total += curves[ci].full.size() - 1;
-  std::size_t cut = (A.full.size() - 1 - a) + b + 1;   // A's a+1 .. end, B's 0 .. b (B's 0 is A's end)
-  for (std::size_t k = (i + 1) % nl; k != j; k = (k + 1) % nl) {
-    const WorkCurve& c = curves[loop.curves[k]];
-    if (c.open_boundary) return false;
-    cut += c.full.size() - 1;
-  }
-  cut -= 1;   // A's end and B's start are one point
+  for (std::size_t k = (i + 1) % nl; k != j; k = (k + 1) % nl)
+    if (curves[loop.curves[k]].open_boundary) return false;
   if (cut >= total || total - cut < 3) return false;
   const bool b_gone = b + 2 == B.full.size();   // only B's end would be left of it
   // A: its points 0 .. a, then B's point b + 1.
@@ -634,8 +642,7 @@ Result<std::size_t> repair_loops(std::vector<WorkCurve>& curves, std::vector<Wor
       if (ra.curve != rb.curve) {
         WorkLoop& loop = loops[h->loop_a];
         if (cut_loop[h->loop_a] || cut_curve[ra.curve] || cut_curve[rb.curve]) continue;
-        // Loop positions of the two segments: the forward side from the earlier one to the
-        // later one, or the rest of the loop, whichever holds fewer points, is cut.
+        // The two segments' places on the loop, the earlier one first.
         const std::size_t sa = std::min(h->seg_a, h->seg_b), sb = std::max(h->seg_a, h->seg_b);
         const LoopVertexRef r1 = refs[h->loop_a][sa], r2 = refs[h->loop_a][sb];
         std::size_t i1 = loop.curves.size(), i2 = loop.curves.size();
@@ -644,18 +651,7 @@ Result<std::size_t> repair_loops(std::vector<WorkCurve>& curves, std::vector<Wor
           if (loop.curves[k] == r2.curve) i2 = k;
         }
         const std::uint32_t a1 = curves[r1.curve].keep[r1.k], a2 = curves[r2.curve].keep[r2.k];
-        std::size_t total = 0, forward = 0;   // points of the loop; those after a1 up to a2
-        for (std::size_t k = 0; k < loop.curves.size(); ++k) {
-          const std::size_t n = curves[loop.curves[k]].full.size() - 1;
-          total += n;
-          if (k == i1) forward += n - a1 - 1;
-          if (k > i1 && k < i2) forward += n;
-          if (k == i2) forward += a2 + 1;
-        }
-        const bool ok = forward <= total - forward
-                            ? cut_sliver_across(curves, loop, i1, a1, i2, a2, left_loop)
-                            : cut_sliver_across(curves, loop, i2, a2, i1, a1, left_loop);
-        if (ok) {
+        if (cut_sliver_across(curves, loop, i1, a1, i2, a2, left_loop)) {
           const WorkCurve& c = curves[r1.curve];
           log.push_back({RepairKind::CutSliver, c.record, c.id, where, 0});
           cut = true;
