@@ -585,16 +585,22 @@ int sharp_dam_end(const Work& w, std::uint32_t la, std::size_t sa, std::uint32_t
   return -1;
 }
 
-// The water's corner at kept position j of f, with the coast's curve as drawn where a
-// coast piece meets a dam there (dam_corner): the segment into j and the one out of it
-// are each a dam (src past the curves) or a coast piece.
+// The water's corner at v between the segments u -> v and v -> x, each a dam or a coast
+// piece, with the coast's curve as drawn where exactly one is a dam (dam_corner): u2, u3
+// the kept points before u, x2, x3 those after x.
+double corner_between(bool in_dam, bool out_dam, Vec2 u3, Vec2 u2, Vec2 u, Vec2 v, Vec2 x, Vec2 x2, Vec2 x3) {
+  if (out_dam && !in_dam) return dam_corner(v, x, u, u2, u3, true);
+  if (in_dam && !out_dam) return dam_corner(v, u, x, x2, x3, false);
+  return water_angle(u, v, x);
+}
+
+// The water's corner at kept position j of f (corner_between): the segment into j and the
+// one out of it are each a dam (src past the curves) or a coast piece.
 double drawn_corner(const Work& w, const FlatLoop& f, std::size_t j) {
   const std::size_t k = f.kept.size();
   const bool in_dam = f.node(j + k - 1).src >= w.n_curves, out_dam = f.node(j).src >= w.n_curves;
-  const Vec2 u = f.p(j + k - 1), v = f.p(j), x = f.p(j + 1);
-  if (out_dam && !in_dam) return dam_corner(v, x, u, f.p(j + k - 2), f.p(j + k - 3), true);
-  if (in_dam && !out_dam) return dam_corner(v, u, x, f.p(j + 2), f.p(j + 3), false);
-  return water_angle(u, v, x);
+  return corner_between(in_dam, out_dam, f.p(j + k - 3), f.p(j + k - 2), f.p(j + k - 1), f.p(j), f.p(j + 1),
+                        f.p(j + 2), f.p(j + 3));
 }
 
 // A dam end at a corner sharper than kMinDamCorner that no nearby clean cut avoids (the
@@ -637,9 +643,10 @@ void trim_dam_wedges(Work& w, FlatLoop& f, std::array<std::uint32_t, 4> ends, Ne
       if (blocked) break;
       // The corners at u and x once v is gone, u -> x a dam.
       const bool in_dam_u = f.node(j + k - 2).src >= w.n_curves, out_dam_x = f.node(j + 1).src >= w.n_curves;
-      const double at_u = in_dam_u ? water_angle(f.p(j + k - 2), u, x)
-                                   : dam_corner(u, x, f.p(j + k - 2), f.p(j + k - 3), f.p(j + k - 4), true);
-      const double at_x = out_dam_x ? water_angle(u, x, f.p(j + 2)) : dam_corner(x, u, f.p(j + 2), f.p(j + 3), f.p(j + 4), false);
+      const double at_u = corner_between(in_dam_u, true, f.p(j + k - 4), f.p(j + k - 3), f.p(j + k - 2), u, x,
+                                         f.p(j + 2), f.p(j + 3));
+      const double at_x = corner_between(true, out_dam_x, f.p(j + k - 3), f.p(j + k - 2), u, x, f.p(j + 2),
+                                         f.p(j + 3), f.p(j + 4));
       if (!(at_u >= kMinDamCorner && at_x >= kMinDamCorner)) break;
       const std::uint32_t un = f.kept[(j + k - 1) % k], vn = f.kept[j], xn = f.kept[(j + 1) % k];
       if (out_dam) w.nodes[un].src = w.nodes[vn].src;   // the dam now leaves u
