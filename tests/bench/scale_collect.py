@@ -40,9 +40,8 @@ def main(tmp, root):
     imports.sort(key=lambda r: -r["gamma"])
     runs = []
     folder = os.path.join(tmp, "runs")
-    order = [line.split()[0] for line in read(os.path.join(folder, "order")).splitlines() if line.strip()]
-    ids = order or sorted(n[:-5] for n in os.listdir(folder) if n.endswith(".args"))
-    for case in ids:
+    # The cases in the order scale.sh ran them (it writes each id to `order`).
+    for case in read(os.path.join(folder, "order")).split():
         base = os.path.join(folder, case)
         run = {"id": case, "args": read(base + ".args").split("\n")[:-1], "threads": int(read(base + ".threads", "1")),
                "exit": int(read(base + ".rc", "-1").strip() or -1)}
