@@ -4,7 +4,8 @@
 # with every default on, next to the default example (GSHHG intermediate, 30 km) in the
 # same run. It measures and writes the raw figures to docs/bench/scale.json; then
 # tests/bench/scale_docs.py writes from that one file docs/benchmarks_scale.md, the cost
-# table of docs/scaling.md and the World Ocean table of README.md, so that no figure in
+# table of docs/scaling.md, the World Ocean table of README.md and the examples' table of
+# docs/examples.md, so that no figure in
 # them is typed by hand (the test `bench_docs_current` fails when one is edited).
 #
 #   tests/bench/run.sh --scale [BUILD_DIR]
@@ -17,6 +18,7 @@
 #   full10     gamma = coast size = 10 km
 #   full3      gamma = coast size = 3 km
 #   full3nt2   the 3 km case with -nt 2: its wall time against full3's, and the same bytes
+#   example_X  each other example (examples/X.geo) as it comes: docs/examples.md's table
 # and the import alone (bench_coast_scale: each step with its peak memory) at 30, 10 and
 # 3 km. About 3 minutes of CPU on this project's machine.
 set -euo pipefail
@@ -47,26 +49,30 @@ for g in 30000 10000 3000; do
 done
 
 full_args=(-setstring CoastResolution f -setnumber CoastMinArea 0)
-run_case() {  # id threads arguments...
-  local id="$1" threads="$2" rc=0
-  shift 2
+run_case() {  # id threads script arguments...
+  local id="$1" threads="$2" script="$3" rc=0
+  shift 3
   echo "scale.sh: $id" >&2
   echo "$id" >> "$tmp/runs/order"
   printf '%s\n' "$@" > "$tmp/runs/$id.args"
   (cd "$tmp" && /usr/bin/time -f "%e %U %S %M" -o "$tmp/runs/$id.time" "$build/stereomesh" -2 -nt "$threads" \
-     "$root/examples/world_ocean.geo" "$@" -o "$tmp/runs/$id.msh" --stats "$tmp/runs/$id.json" \
+     "$root/examples/$script.geo" "$@" -o "$tmp/runs/$id.msh" --stats "$tmp/runs/$id.json" \
      > /dev/null 2> "$tmp/runs/$id.log") || rc=$?
   echo "$rc" > "$tmp/runs/$id.rc"
   echo "$threads" > "$tmp/runs/$id.threads"
   [[ -f "$tmp/runs/$id.msh" ]] && sha256sum "$tmp/runs/$id.msh" | cut -d' ' -f1 > "$tmp/runs/$id.sha256"
   rm -f "$tmp/runs/$id.msh"
 }
-run_case default 1
-run_case full30 1 "${full_args[@]}"
-run_case full30open 1 "${full_args[@]}" -setnumber CloseNarrowWater 0
-run_case full10 1 "${full_args[@]}" -setnumber CoastAccuracy 10000 -setnumber ShoreSizeMin 10000
-run_case full3 1 "${full_args[@]}" -setnumber CoastAccuracy 3000 -setnumber ShoreSizeMin 3000
-run_case full3nt2 2 "${full_args[@]}" -setnumber CoastAccuracy 3000 -setnumber ShoreSizeMin 3000
+run_case default 1 world_ocean
+run_case full30 1 world_ocean "${full_args[@]}"
+run_case full30open 1 world_ocean "${full_args[@]}" -setnumber CloseNarrowWater 0
+run_case full10 1 world_ocean "${full_args[@]}" -setnumber CoastAccuracy 10000 -setnumber ShoreSizeMin 10000
+run_case full3 1 world_ocean "${full_args[@]}" -setnumber CoastAccuracy 3000 -setnumber ShoreSizeMin 3000
+run_case full3nt2 2 world_ocean "${full_args[@]}" -setnumber CoastAccuracy 3000 -setnumber ShoreSizeMin 3000
+# The other examples as `stereomesh -2 examples/X.geo` runs them: docs/examples.md's table.
+for example in gb_ireland arctic great_barrier_reef north_sea_scheldt gulf_of_mexico irish_sea mediterranean; do
+  run_case "example_$example" 1 "$example"
+done
 echo "load_end $(cut -d' ' -f1-3 /proc/loadavg)" >> "$tmp/machine.txt"
 
 mkdir -p "$root/docs/bench"

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes the scale figures into the docs from one measured run (docs/bench/scale.json, made by
-tests/bench/scale.sh): all of docs/benchmarks_scale.md, and the marked blocks of docs/scaling.md
-and README.md. With --check it writes nothing and exits 1 when a doc differs from what the JSON
+tests/bench/scale.sh): all of docs/benchmarks_scale.md, and the marked blocks of docs/scaling.md,
+README.md and docs/examples.md. With --check it writes nothing and exits 1 when a doc differs from what the JSON
 gives (the test `bench_docs_current`), so a figure typed by hand, or a run not written out, is
 caught. Standard library only.
 
@@ -19,6 +19,18 @@ TITLES = {
     "full3": "full GSHHG, 3 km",
     "full3nt2": "full GSHHG, 3 km, `-nt 2`",
 }
+# The examples' table of docs/examples.md: run id, script, what it meshes, the paper's figures.
+EXAMPLES = [
+    ("default", "world_ocean", "Figs. 9-10", "436,409 triangles, 35 s"),
+    ("example_gb_ireland", "gb_ireland", "Fig. 8, 15 km",
+     "18,698 / 19,514 / 17,154; 93.2% / 88.1% / 84.5% rho > 0.9; 0.7 / 0.5 / 5.7 s"),
+    ("example_arctic", "arctic", "Fig. 11", "17,053 triangles"),
+    ("example_great_barrier_reef", "great_barrier_reef", "Fig. 14", "20,384 elements"),
+    ("example_north_sea_scheldt", "north_sea_scheldt", "Fig. 13", "27,472 elements"),
+    ("example_gulf_of_mexico", "gulf_of_mexico", "regional", "-"),
+    ("example_irish_sea", "irish_sea", "regional", "-"),
+    ("example_mediterranean", "mediterranean", "regional", "-"),
+]
 STAGES = ["script", "import", "fields", "1D", "2D", "statistics", "writing"]
 BEGIN = "<!-- written by tests/bench/scale_docs.py from docs/bench/scale.json: {} -->"
 END = "<!-- end of {} -->"
@@ -242,6 +254,27 @@ def readme_table(data, runs):
     return "\n".join(out) + "\n"
 
 
+def examples_table(data, runs):
+    out = [f"`stereomesh -2 -nt 1 examples/X.geo` with every default, {header(data)}. Time is the whole run's CPU "
+           "(user + sys), peak memory its maximum resident set.", "",
+           "| example | paper | triangles | rho min | rho > 0.9 | in range | CPU | peak memory | paper's mesh |",
+           "|---|---|---:|---:|---:|---:|---:|---:|---|"]
+    for run_id, script, figure, paper in EXAMPLES:
+        r = runs.get(run_id)
+        if r is None:
+            out.append(f"| `{script}.geo` | {figure} | not measured in this run | | | | | | {paper} |")
+            continue
+        if not r.ok:
+            out.append(f"| `{script}.geo` | {figure} | failed (exit {r.raw.get('exit')}): `{r.raw.get('error', '')}` "
+                       f"| | | | | | {paper} |")
+            continue
+        s = r.stats
+        out.append(f"| `{script}.geo` | {figure} | {fmt_int(r.triangles)} | {s.get('rho_min', 0):.2f} | "
+                   f"{100 * s.get('rho_share_above_0.9', 0):.1f}% | {100 * s.get('length_ratio_share_0.7_1.4', 0):.1f}% | "
+                   f"{r.cpu:.2f} s | {r.peak:.0f} MiB | {paper} |")
+    return "\n".join(out) + "\n"
+
+
 def replace_block(text, name, body, path):
     begin, end = BEGIN.format(name), END.format(name)
     i, j = text.find(begin), text.find(end)
@@ -258,7 +291,8 @@ def main(argv):
     data, runs = load(root)
     wanted = {os.path.join("docs", "benchmarks_scale.md"): lambda old: benchmarks_scale(data, runs)}
     blocks = {os.path.join("docs", "scaling.md"): [("costs", scaling_costs), ("estimate", scaling_estimate)],
-              "README.md": [("world ocean", readme_table)]}
+              "README.md": [("world ocean", readme_table)],
+              os.path.join("docs", "examples.md"): [("examples", examples_table)]}
     for path, items in blocks.items():
         def render(old, items=items, path=path):
             for name, fn in items:
