@@ -182,6 +182,16 @@ MeshModel from_model_mesh(const geo::Model& model, const ModelMesh& mesh, std::v
     out.entities.push_back(std::move(e));
   }
   std::vector<std::uint32_t> index = keep_mesh_only(model, out);
+  // The periodic correspondences whose entities and nodes are all kept.
+  std::set<std::pair<int, int>> kept;
+  for (const EntityMesh& e : out.entities) kept.insert({e.dim, e.tag});
+  for (const PeriodicLink& l : mesh.periodic) {
+    if (!kept.count({l.dim, l.tag}) || !kept.count({l.dim, l.master})) continue;
+    PeriodicEntity p{l.dim, l.tag, l.master, l.affine, {}};
+    for (const auto& [a, b] : l.nodes)
+      if (index[a] != kDropped && index[b] != kDropped) p.nodes.emplace_back(index[a], index[b]);
+    if (p.nodes.size() == l.nodes.size()) out.periodic.push_back(std::move(p));
+  }
   if (node_index) *node_index = std::move(index);
   return out;
 }

@@ -21,6 +21,7 @@
 
 #include "base/output_file.h"
 #include "interp/kernel/dispatch.h"
+#include "mesh/periodic_curve.h"
 #include "interp/kernel/field_context.h"
 #include "interp/kernel/field_eval.h"
 #include "interp/kernel/geometry_shapes.h"
@@ -418,6 +419,11 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   name_compound_unions(compounds, r2.error);
   if (!r2.ok()) return failure_of(k, r2.error);
   classify_compound_elements(k.model, compounds, *mesh);
+  if (!constraints.periodic_curves.empty()) {   // the quality floor may have split a curve edge
+    std::string why;
+    mesh->periodic = periodic_links(k.model, *mesh, constraints, &why);
+    if (!why.empty()) return {Diag::MeshFailed, why, {}};
+  }
   for (const CompoundSurfacePlan::Group& g : compounds.groups)   // the union's target size on each original
     for (std::size_t i = 0, n = r2.target_sizes.size(); i < n; ++i)
       if (r2.target_sizes[i].surface == g.union_tag) {
