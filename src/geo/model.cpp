@@ -301,7 +301,34 @@ GeoResult<Curve> Model::build_shape(const ModelCurve& c) const {
     d.xyz.push_back(v.xyz);
     if (c.geometry) d.uv.push_back(v.uv);
   }
+  if (c.discrete) {   // the polyline through the nodes between its two points
+    d.periodic = false;
+    d.xyz.insert(d.xyz.begin() + 1, c.inner.begin(), c.inner.end());
+  }
   return Curve::make(std::move(d));
+}
+
+GeoStatus Model::add_discrete_curve(int tag, int begin, int end, std::vector<Vec3> inner) {
+  touch();
+  if (auto s = check_new_tag(EntityKind::Curve, tag, curves_.count(tag) > 0); !s) return s;
+  for (int p : {begin, end})
+    if (!vertex(p)) return missing(EntityKind::Point, p, {tag}, fmt::format(" used by discrete curve {}", tag));
+  if (begin == end && inner.size() < 2)
+    return make_error(GeoErrorKind::SelfReference, EntityKind::Curve, {tag, begin},
+                      fmt::format("discrete curve {} is closed at point {} with fewer than 3 edges", tag, begin));
+  ModelCurve c;
+  c.tag = tag;
+  c.kind = CurveKind::Line;
+  c.points = {begin, end};
+  c.begin = begin, c.end = end;
+  c.discrete = true;
+  c.inner = std::move(inner);
+  auto shape = build_shape(c);
+  if (!shape) return shape.error();
+  c.shape = std::move(*shape);
+  curves_.emplace(tag, std::move(c));
+  bump_max(1, tag);
+  return {};
 }
 
 GeoStatus Model::add_curve(int tag, CurveKind kind, const std::vector<int>& points, std::optional<Vec3> plane_normal) {

@@ -38,6 +38,10 @@ struct ModelCurve {
   int geometry = 0;                   // all control points on this geometry (else 0)
   int begin = 0, end = 0;             // bounding vertices (first / last control point)
   std::optional<Curve> shape;         // the evaluator, rebuilt whenever a point moves
+  /// A discrete curve (`Merge` of a mesh file: Gmsh's discreteEdge): a polyline through
+  /// its mesh nodes, begin, `inner`, end, whose mesh is those nodes (never remeshed).
+  bool discrete = false;
+  std::vector<Vec3> inner;
 
   bool periodic() const { return begin == end; }
 };
@@ -135,6 +139,9 @@ class Model {
   /// Line, Spline, BSpline, Bezier (>= 2 points), Circle (3), Ellipse (3 or 4).
   GeoStatus add_curve(int tag, CurveKind kind, const std::vector<int>& points,
                       std::optional<Vec3> plane_normal = std::nullopt);
+  /// A discrete curve (ModelCurve::discrete) from point `begin` through `inner` to point
+  /// `end` (the mesh nodes of a merged file's curve, in order; begin == end: closed).
+  GeoStatus add_discrete_curve(int tag, int begin, int end, std::vector<Vec3> inner);
   /// "Curve Loop(t) = {...};": must close; reordered as Gmsh does when the signs are
   /// consistent; a loop may hold several closed chains (Gmsh's "subloops").
   GeoStatus add_curve_loop(int tag, const std::vector<int>& curves);

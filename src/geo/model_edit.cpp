@@ -226,6 +226,7 @@ int Model::coherence(std::map<int, int>* curves_merged) {
   std::map<CurveKey, int> first_of;
   std::map<int, int> curve_replace;
   for (const auto& [t, c] : curves_) {
+    if (c.discrete) continue;   // two discrete curves between the same points differ in between
     const Vec3 n = c.plane_normal.value_or(Vec3{});
     CurveKey key{static_cast<int>(c.kind), c.points, c.plane_normal.has_value(), n.x, n.y, n.z};
     auto [it, fresh] = first_of.emplace(std::move(key), t);

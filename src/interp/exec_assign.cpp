@@ -22,6 +22,9 @@ bool known_other_category(std::string_view c) {
   return c == "View" || c == "Print" || c == "PostProcessing" || c == "Solver" || c == "Plugin";
 }
 
+// Options that change only how Gmsh's window draws post-processing views or prints it.
+bool display_category(std::string_view c) { return c == "View" || c == "Print" || c == "PostProcessing"; }
+
 }  // namespace
 
 std::string Interpreter::option_name(const OptionRef& o) {
@@ -65,9 +68,15 @@ void Interpreter::assign_option(const LValue& t, AffOp op, ExprId value, SourceR
   const std::string name = option_name(o);
   const OptionInfo* info = options_.find(name);
   if (!info) {
+    if (display_category(ast_.str(o.category))) {
+      // Views' drawing and printing options only matter to Gmsh's window: the value is
+      // evaluated (its mistakes are the script's), then skipped with one note per run.
+      (void)eval(value);
+      display_only_stmt(current_stmt_, fmt::format("{}.* options", ast_.str(o.category)));
+      return;
+    }
     if (known_other_category(ast_.str(o.category))) {
-      // Post-processing and printing options only matter to the GUI and the
-      // post-processor: skipped like an unsupported statement.
+      // Solver and plugin options would change what a run computes: not supported yet.
       not_supported_stmt(current_stmt_, fmt::format("{}.* options", ast_.str(o.category)));
       return;
     }

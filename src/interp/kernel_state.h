@@ -19,6 +19,7 @@
 #include "interp/value.h"
 #include "lang/source.h"
 #include "io/mesh_partition.h"
+#include "mesh/discrete_mesh.h"
 #include "mesh/mesh_constraints.h"
 #include "mesh/model_mesh.h"
 
@@ -46,6 +47,9 @@ struct KernelState {
   /// `Transfinite ...;` and `Recombine ...;` as set so far (kernel/mesh_constraints.cpp);
   /// Mesh.RecombineAll and Mesh.RecombinationAlgorithm are added when meshing.
   MeshConstraints constraints;
+  /// The discrete entities of merged mesh files (kernel/merge.cpp): their surfaces'
+  /// elements, and which node tags the model's discrete points and curves stand on.
+  DiscreteEntities discrete;
   field::FieldSet fields;
   std::optional<int> background_field;                  // `Background Field = n;`
   std::map<int, lang::SourceRange> field_defined_at;    // Field[n] = ... statement

@@ -138,19 +138,12 @@ MeshModel from_model_mesh(const geo::Model& model, const ModelMesh& mesh, std::v
     }
     out.entities.push_back(std::move(e));
   }
-  for (const auto& [tag, s] : model.surfaces()) {
+  // A surface's entity (its elements when meshed) with its signed boundary curves.
+  auto add_surface = [&](int tag, std::vector<int> boundary) {
     EntityMesh e;
     e.dim = 2, e.tag = tag, e.type = ElementType::Triangle3;
     e.physical_tags = physicals(2, tag);
-    for (int l : s.loops) {
-      const geo::ModelCurveLoop* loop = model.curve_loop(std::abs(l));
-      if (!loop) continue;
-      if (l > 0) {
-        e.boundary.insert(e.boundary.end(), loop->curves.begin(), loop->curves.end());
-      } else {
-        for (auto it = loop->curves.rbegin(); it != loop->curves.rend(); ++it) e.boundary.push_back(-*it);
-      }
-    }
+    e.boundary = std::move(boundary);
     const auto it = mesh.surfaces.find(tag);
     if (it != mesh.surfaces.end()) {
       const SurfaceMesh& sm = it->second;
@@ -175,13 +168,39 @@ MeshModel from_model_mesh(const geo::Model& model, const ModelMesh& mesh, std::v
         } else {
           out.entities.push_back(std::move(e));
           out.entities.push_back(std::move(q));
-          continue;
+          return;
         }
       }
     }
     out.entities.push_back(std::move(e));
+  };
+  for (const auto& [tag, s] : model.surfaces()) {
+    std::vector<int> boundary;
+    for (int l : s.loops) {
+      const geo::ModelCurveLoop* loop = model.curve_loop(std::abs(l));
+      if (!loop) continue;
+      if (l > 0) {
+        boundary.insert(boundary.end(), loop->curves.begin(), loop->curves.end());
+      } else {
+        for (auto it = loop->curves.rbegin(); it != loop->curves.rend(); ++it) boundary.push_back(-*it);
+      }
+    }
+    add_surface(tag, std::move(boundary));
   }
+  // The discrete surfaces of a merged mesh (mesh/discrete_mesh.h): elements, no loops.
+  for (const auto& [tag, s] : mesh.surfaces)
+    if (!model.surface(tag)) add_surface(tag, {});
   std::vector<std::uint32_t> index = keep_mesh_only(model, out);
+  // The periodic correspondences whose entities and nodes are all kept.
+  std::set<std::pair<int, int>> kept;
+  for (const EntityMesh& e : out.entities) kept.insert({e.dim, e.tag});
+  for (const PeriodicLink& l : mesh.periodic) {
+    if (!kept.count({l.dim, l.tag}) || !kept.count({l.dim, l.master})) continue;
+    PeriodicEntity p{l.dim, l.tag, l.master, l.affine, {}};
+    for (const auto& [a, b] : l.nodes)
+      if (index[a] != kDropped && index[b] != kDropped) p.nodes.emplace_back(index[a], index[b]);
+    if (p.nodes.size() == l.nodes.size()) out.periodic.push_back(std::move(p));
+  }
   if (node_index) *node_index = std::move(index);
   return out;
 }

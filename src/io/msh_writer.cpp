@@ -147,6 +147,58 @@ void write_physical_names(Out& o, const MeshModel& m) {
   o.text("$EndPhysicalNames\n");
 }
 
+// $Periodic (Gmsh 4.8.4's writeMSHPeriodicNodes and writeMSH4PeriodicNodes): per periodic
+// entity its dim, tag and master's tag, its affine map (2.2: an "Affine" line when there
+// is one; 4.1: the count 0 or 16 and the numbers), then its node pairs by node tag. Only
+// the entities whose elements are written with their master's (Gmsh 2.2's rule; its 4.1
+// writes all and its reader skips nodes it does not find), so that every tag is in the file.
+template <class Tag>
+void write_periodic(Out& o, const MeshModel& m, const Plan& p, const std::vector<Tag>& tag, bool v41, bool binary) {
+  std::map<std::pair<int, int>, bool> saved;
+  for (std::size_t i = 0; i < m.entities.size(); ++i) {
+    bool& any = saved[{m.entities[i].dim, m.entities[i].tag}];
+    any = any || p.saved[i] != 0;
+  }
+  std::vector<const PeriodicEntity*> links;
+  for (const PeriodicEntity& l : m.periodic) {
+    const auto a = saved.find({l.dim, l.tag}), b = saved.find({l.dim, l.master});
+    if (a == saved.end() || b == saved.end() || !a->second || !b->second) continue;
+    if (std::all_of(l.nodes.begin(), l.nodes.end(), [&](const auto& q) { return tag[q.first] && tag[q.second]; }))
+      links.push_back(&l);
+  }
+  if (links.empty()) return;
+  binary = binary && v41;   // Gmsh writes MSH 2.2's section as text in a binary file too
+  o.text("$Periodic\n");
+  if (binary) o.bin<std::uint64_t>(links.size());
+  else o.f("{}\n", links.size());
+  for (const PeriodicEntity* l : links) {
+    std::vector<std::pair<std::uint64_t, std::uint64_t>> pairs;
+    for (const auto& [a, b] : l->nodes) pairs.emplace_back(tag[a], tag[b]);
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    const bool affine = l->affine.size() == 16;
+    if (binary) {
+      o.bin<int>(l->dim), o.bin<int>(l->tag), o.bin<int>(l->master);
+      o.bin<std::uint64_t>(affine ? 16 : 0);
+      if (affine)
+        for (double v : l->affine) o.bin(v);
+      o.bin<std::uint64_t>(pairs.size());
+      for (const auto& [a, b] : pairs) o.bin<std::uint64_t>(a), o.bin<std::uint64_t>(b);
+      continue;
+    }
+    o.f("{} {} {}\n", l->dim, l->tag, l->master);
+    if (v41 || affine) {
+      o.text(!affine ? "0" : v41 ? "16" : "Affine");
+      if (affine)
+        for (double v : l->affine) o.f(" {:.16g}", v);
+      o.text("\n");
+    }
+    o.f("{}\n", pairs.size());
+    for (const auto& [a, b] : pairs) o.f("{} {}\n", a, b);
+  }
+  o.text(binary ? "\n$EndPeriodic\n" : "$EndPeriodic\n");
+}
+
 // ---- MSH 2.2 ---------------------------------------------------------------
 
 // One $NodeData section per field, over the written nodes (tag, node) in tag order: one
@@ -247,6 +299,7 @@ void write_msh22(Out& o, const MeshModel& m, const MshOptions& opt, const Plan& 
   }
   if (opt.binary) o.text("\n");
   o.text("$EndElements\n");
+  write_periodic(o, m, p, tag, /*v41=*/false, opt.binary);
   if (!opt.node_data.empty()) {
     std::vector<std::pair<std::uint64_t, std::uint32_t>> written;
     for (std::uint32_t n : node_order) written.emplace_back(tag[n], n);
@@ -473,6 +526,7 @@ void write_msh41(Out& o, const MeshModel& m, const MshOptions& opt, const Plan& 
     }
   }
   o.text(opt.binary ? "\n$EndElements\n" : "$EndElements\n");
+  if (m.num_partitions == 0) write_periodic(o, m, p, tag, /*v41=*/true, opt.binary);
   if (!opt.node_data.empty()) {
     std::vector<std::pair<std::uint64_t, std::uint32_t>> written;
     for (std::size_t i : p.order)

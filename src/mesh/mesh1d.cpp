@@ -20,6 +20,7 @@
 #include "exact/predicates.h"
 #include "mesh/boundary_recovery.h"
 #include "mesh/compound_curve.h"
+#include "mesh/periodic_curve.h"
 #include "mesh/transfinite_curve.h"
 
 namespace sm {
@@ -681,6 +682,15 @@ void place_plan(const geo::Model& model, const Mesh1dOptions& opt, double bbox, 
     return;
   }
   const geo::ModelCurve& mc = *cp.mc;
+  if (mc.discrete) {   // a merged mesh's curve: its nodes, at its polyline's corners
+    const std::size_t n = mc.inner.size() + 2;
+    cp.ts.resize(n);
+    for (std::size_t i = 0; i < n; ++i) cp.ts[i] = static_cast<double>(i) / static_cast<double>(n - 1);
+    cp.ts.back() = 1.0;
+    cp.xyz = mc.inner;
+    cp.uv.clear();
+    return;
+  }
   const geo::Curve& shape = *mc.shape;
   const geo::ModelVertex* vb = model.vertex(mc.begin);
   const double stretch = cp.stretch;
@@ -786,31 +796,74 @@ void plan_compounds(const geo::Model& model, const Mesh1dOptions& opt, std::vect
   }
 }
 
+// Plan cp's nodes numbered into `mesh` as its curve's mesh.
+void number_plan(const geo::Model& model, CurvePlan& cp, ModelMesh& mesh) {
+  // A curve Extrude made with Layers: its nodes are the layers' (a top copy its source's,
+  // numbered before it), whatever the sizes said (extrude_mesh.h).
+  if (!cp.collapsed && extruded_curve_nodes(model, mesh, cp.tag, cp.ts, cp.xyz)) cp.uv.clear();
+  const geo::ModelCurve& mc = *cp.mc;
+  CurveMesh cm;
+  cm.tag = cp.tag;
+  cm.nodes.reserve(cp.ts.size());
+  cm.nodes.push_back(mesh.vertex_node.at(mc.begin));
+  if (cp.collapsed) {  // its end's node is its start's
+    cm.t = std::move(cp.ts);
+    mesh.curves.emplace(cp.tag, std::move(cm));
+    return;
+  }
+  for (std::size_t i = 0; i < cp.xyz.size(); ++i)
+    cm.nodes.push_back(cp.uv.empty() ? mesh.add_node(cp.xyz[i]) : mesh.add_node(cp.xyz[i], cp.uv[i]));
+  cm.nodes.push_back(mesh.vertex_node.at(mc.end));
+  cm.t = std::move(cp.ts);
+  cp.xyz = {}, cp.uv = {};
+  mesh.curves.emplace(cp.tag, std::move(cm));
+}
+
+// A `Periodic Curve` target's nodes copied from its source's mesh (periodic_curve.h).
+MeshError copy_periodic_plan(const geo::Model& model, const PeriodicCurveSpec& spec, CurvePlan& cp,
+                             ModelMesh& mesh) {
+  std::string why;
+  if (!periodic_curve_nodes(model, mesh, cp.tag, spec, cp.ts, cp.xyz, &why))
+    return make_error(MeshErrorKind::Invalid, cp.tag, spec.source, fmt::format("periodic curve {}: {}", cp.tag, why));
+  cp.uv.clear();
+  if (cp.mc->shape->on_surface())
+    for (std::size_t i = 1; i + 1 < cp.ts.size(); ++i) cp.uv.push_back(cp.mc->shape->eval_uv(cp.ts[i]).p);
+  number_plan(model, cp, mesh);
+  return {};
+}
+
 // The placed nodes numbered into `mesh`, curve by curve in tag order (exceptions of the
-// placement rethrown there), as one thread numbers them.
-void number_nodes(const geo::Model& model, std::vector<CurvePlan>& plans, ModelMesh& mesh) {
+// placement rethrown there), as one thread numbers them; then the periodic targets,
+// each once its source has its mesh: a round numbers at least one of those left, or the
+// rest copy one another in a cycle.
+MeshError number_nodes(const geo::Model& model, const Mesh1dOptions& opt, std::vector<CurvePlan>& plans,
+                       ModelMesh& mesh) {
+  const std::map<int, PeriodicCurveSpec> none;
+  const std::map<int, PeriodicCurveSpec>& periodic = opt.constraints ? opt.constraints->periodic_curves : none;
+  std::vector<CurvePlan*> copies;
   for (CurvePlan& cp : plans) {
     if (cp.thrown) std::rethrow_exception(cp.thrown);
-    // A curve Extrude made with Layers: its nodes are the layers' (a top copy its source's,
-    // numbered before it), whatever the sizes said (extrude_mesh.h).
-    if (!cp.collapsed && extruded_curve_nodes(model, mesh, cp.tag, cp.ts, cp.xyz)) cp.uv.clear();
-    const geo::ModelCurve& mc = *cp.mc;
-    CurveMesh cm;
-    cm.tag = cp.tag;
-    cm.nodes.reserve(cp.ts.size());
-    cm.nodes.push_back(mesh.vertex_node.at(mc.begin));
-    if (cp.collapsed) {  // its end's node is its start's
-      cm.t = std::move(cp.ts);
-      mesh.curves.emplace(cp.tag, std::move(cm));
-      continue;
-    }
-    for (std::size_t i = 0; i < cp.xyz.size(); ++i)
-      cm.nodes.push_back(cp.uv.empty() ? mesh.add_node(cp.xyz[i]) : mesh.add_node(cp.xyz[i], cp.uv[i]));
-    cm.nodes.push_back(mesh.vertex_node.at(mc.end));
-    cm.t = std::move(cp.ts);
-    cp.xyz = {}, cp.uv = {};
-    mesh.curves.emplace(cp.tag, std::move(cm));
+    if (!cp.collapsed && periodic.count(cp.tag)) copies.push_back(&cp);
+    else number_plan(model, cp, mesh);
   }
+  while (!copies.empty()) {
+    std::vector<CurvePlan*> waiting;
+    for (CurvePlan* cp : copies) {
+      const PeriodicCurveSpec& spec = periodic.at(cp->tag);
+      if (!mesh.curves.count(spec.source)) {
+        waiting.push_back(cp);
+        continue;
+      }
+      if (MeshError e = copy_periodic_plan(model, spec, *cp, mesh); !e.ok()) return e;
+    }
+    if (waiting.size() == copies.size())
+      return make_error(MeshErrorKind::Invalid, waiting.front()->tag, periodic.at(waiting.front()->tag).source,
+                        fmt::format("periodic curve {} copies curve {}, which is not meshed first: the periodic "
+                                    "curves copy one another in a cycle, or the source is not a curve of the model",
+                                    waiting.front()->tag, periodic.at(waiting.front()->tag).source));
+    copies.swap(waiting);
+  }
+  return {};
 }
 
 // The nodes of the vertices that move (vertex_moves) put at their curve's start.
@@ -932,7 +985,8 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
         plans[i].thrown = std::current_exception();
       }
   });
-  number_nodes(model, plans, mesh);
+  res.error = number_nodes(model, opt, plans, mesh);
+  if (!res.ok()) return res;
   stage.end();
   move_closed_curve_vertices(model, curves_at, mesh);
   res.stats.seconds_integrate = seconds_since(t0);
@@ -942,6 +996,14 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
     res.error = repair_intersections(model, opt, mesh, res.stats);
     if (!res.ok()) return res;
     res.stats.seconds_repair = seconds_since(t0);
+  }
+  if (opt.constraints && !opt.constraints->periodic_curves.empty()) {
+    std::string why;
+    mesh.periodic = periodic_links(model, mesh, *opt.constraints, &why);
+    if (!why.empty()) {
+      res.error = make_error(MeshErrorKind::Failed, 0, 0, why);
+      return res;
+    }
   }
   res.stats.curves = mesh.curves.size();
   res.stats.nodes = mesh.nodes.size();

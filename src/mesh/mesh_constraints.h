@@ -32,6 +32,24 @@ struct TransfiniteSurfaceSpec {
   TriangleArrangement arrangement = TriangleArrangement::Left;
 };
 
+/// `Periodic Curve{target} = {source} [transform];` (Gmsh's meshMaster of the target):
+/// the target's mesh is a copy of its source's, as many nodes, run in `orientation`
+/// (+1: the target's begin matches the source's begin, -1: the source's end). `affine`:
+/// empty (the nodes keep their parameters, Gmsh's "identical parametrisations") or the
+/// 16 numbers, row by row, of the 4x4 map from the source onto the target.
+struct PeriodicCurveSpec {
+  int source = 0;   // > 0
+  int orientation = 1;
+  std::vector<double> affine;
+};
+
+/// A model point made periodic by its curve's statement: its node corresponds to its
+/// master's (Gmsh writes those pairs too, with the curve's transform).
+struct PeriodicPointSpec {
+  int master = 0;
+  std::vector<double> affine;
+};
+
 /// Mesh.RecombinationAlgorithm 0 (simple) and 1 (blossom-quality; see recombine.h).
 enum class RecombineAlgorithm { Simple = 0, Matching = 1 };
 
@@ -46,11 +64,15 @@ struct MeshConstraints {
   /// `Compound Curve{...};` and `Compound Surface{...};`: each group meshed as one
   /// (mesh/compound_curve.h, mesh/compound_surface.h), tags as written.
   std::vector<std::vector<int>> compound_curves, compound_surfaces;
+  /// `Periodic Curve`: target curve tag -> its source; target point -> its master (the
+  /// last statement naming a point wins, as in Gmsh).
+  std::map<int, PeriodicCurveSpec> periodic_curves;
+  std::map<int, PeriodicPointSpec> periodic_points;
 
   bool recombines(int surface) const { return recombine_all || recombine.count(surface) > 0; }
   bool empty() const {
     return curves.empty() && surfaces.empty() && recombine.empty() && !recombine_all && surface_algorithm.empty() &&
-           compound_curves.empty() && compound_surfaces.empty();
+           compound_curves.empty() && compound_surfaces.empty() && periodic_curves.empty();
   }
 };
 

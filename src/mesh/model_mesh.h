@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "base/vec.h"
@@ -43,12 +44,24 @@ struct SurfaceMesh {
   std::vector<std::array<std::uint32_t, 4>> quads;
 };
 
+/// A periodic entity's correspondence (Gmsh's $Periodic section): each of its nodes with
+/// the master's node it copies, and the map from the master onto it (empty, or 16
+/// numbers row by row).
+struct PeriodicLink {
+  int dim = 0;
+  int tag = 0;
+  int master = 0;
+  std::vector<double> affine;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> nodes;   // (node, master's node)
+};
+
 struct ModelMesh {
   std::vector<MeshNode> nodes;
   std::map<int, std::uint32_t> vertex_node;   // model vertex tag -> its node
   std::map<int, CurveMesh> curves;            // curve tag -> its mesh
   std::map<int, SurfaceMesh> surfaces;
   int dim = 0;                                // highest dimension meshed
+  std::vector<PeriodicLink> periodic;         // points, then curves, in tag order
 
   std::uint32_t add_node(Vec3 xyz) {
     nodes.push_back({xyz, {}, false});

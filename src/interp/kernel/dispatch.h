@@ -3,6 +3,7 @@
 // expressions the evaluator hands over. Each family file owns its part.
 #pragma once
 
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -45,9 +46,14 @@ void exec_mesh_stmt(Interpreter& in, lang::StmtId s);
 /// `FieldValue(n, x, y, z)` / `FieldArgmin(...)` (native, field_eval.cpp): the
 /// MODEL_BUILTIN rows of lang/builtin_functions.def. Checks its own arguments.
 Value eval_field_call(Interpreter& in, const lang::Expr& e, const lang::CallExpr& c);
-/// `Merge "file";` (merge.cpp): a missing file is an error at its name; the kinds Gmsh
-/// would make discrete entities of are reported as not supported, views are display only.
+/// `Merge "file";` (merge.cpp): a missing file is an error at its name; a mesh file
+/// (.msh) becomes discrete entities (merge_mesh_file), views are display only, the other
+/// kinds Gmsh reads are reported as not supported.
 void exec_merge(Interpreter& in, lang::StmtId s, const lang::CommandStmt& c);
+/// The mesh file at `path` (`name` as the script wrote it) into discrete entities of the
+/// model (merge_mesh.cpp); errors are at `at`.
+void merge_mesh_file(Interpreter& in, const std::filesystem::path& path, const std::string& name,
+                     lang::SourceRange at);
 /// `Mesh 2;`, `Save "f";`, `Merge`, ... (`CommandStmt`s other than Include).
 /// Returns false for an unknown command name.
 bool exec_mesh_command(Interpreter& in, lang::StmtId s, std::string_view command);

@@ -1,10 +1,10 @@
 // `Merge "file";` (Gmsh 4.8.4's MergeFile, Common/OpenFile.cpp): the file is read by its
-// extension. A mesh (.msh) or an STL triangulation becomes discrete points, curves and
-// surfaces of the model, a .pos file a post-processing view, a .geo or .opt file is
-// parsed as a script. stereomesh's model has no discrete entities yet: a file that is
-// missing or unreadable is an error at its name (Gmsh stops there too), a view is display
-// only (as `View` is), and the other kinds are reported as not supported, each saying
-// what Gmsh would have made of the file.
+// extension. A mesh (.msh) becomes discrete points, curves and surfaces of the model
+// (merge_mesh.cpp), an STL triangulation a discrete surface, a .pos file a
+// post-processing view, a .geo or .opt file is parsed as a script. A file that is missing
+// or unreadable is an error at its name (Gmsh stops there too), a view is display only
+// (as `View` is), and the other kinds are reported as not supported, each saying what
+// Gmsh would have made of the file.
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -40,11 +40,12 @@ void exec_merge(Interpreter& in, StmtId id, const CommandStmt& c) {
     in.display_only_stmt(id, "Merge of a post-processing view (.pos)");
     return;
   }
+  if (ext == ".msh") {
+    merge_mesh_file(in, p, name, at);
+    return;
+  }
   std::string what;
-  if (ext == ".msh")
-    what = "its nodes and elements become discrete points, curves and surfaces, which stereomesh's model has no "
-           "place for yet";
-  else if (ext == ".stl")
+  if (ext == ".stl")
     what = "its triangles become a discrete surface (for ClassifySurfaces and volumes), which stereomesh's model has "
            "no place for";
   else if (ext == ".geo" || ext == ".opt")

@@ -21,6 +21,8 @@
 
 #include "base/output_file.h"
 #include "interp/kernel/dispatch.h"
+#include "mesh/discrete_mesh.h"
+#include "mesh/periodic_curve.h"
 #include "interp/kernel/field_context.h"
 #include "interp/kernel/field_eval.h"
 #include "interp/kernel/geometry_shapes.h"
@@ -384,6 +386,9 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   if (r.error.kind == MeshErrorKind::Stopped) return failure_of(k, budget);
   if (!r.ok()) return {diag_of(r.error), message_of(r.error), provenance_notes(k, r.error)};
   auto mesh = std::make_shared<ModelMesh>(std::move(r.mesh));
+  // The merged files' surfaces, meshed as they are, on their points' and curves' nodes.
+  if (const std::string why = add_discrete_surfaces(k.discrete, *mesh); !why.empty())
+    return {Diag::MeshFailed, why, {}};
   if (dim < 2) {
     if (in.options().number("Mesh.NbPartitions") > 0)
       return {Diag::InvalidOptionValue,
@@ -418,6 +423,11 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   name_compound_unions(compounds, r2.error);
   if (!r2.ok()) return failure_of(k, r2.error);
   classify_compound_elements(k.model, compounds, *mesh);
+  if (!constraints.periodic_curves.empty()) {   // the quality floor may have split a curve edge
+    std::string why;
+    mesh->periodic = periodic_links(k.model, *mesh, constraints, &why);
+    if (!why.empty()) return {Diag::MeshFailed, why, {}};
+  }
   for (const CompoundSurfacePlan::Group& g : compounds.groups)   // the union's target size on each original
     for (std::size_t i = 0, n = r2.target_sizes.size(); i < n; ++i)
       if (r2.target_sizes[i].surface == g.union_tag) {
@@ -673,6 +683,9 @@ bool exec_mesh_command(Interpreter& in, StmtId id, std::string_view command) {
       exec_merge(in, id, *c);   // merge.cpp
       return true;
     }
+    // Merge makes the discrete curves' end points as it reads a mesh file (merge_mesh.cpp),
+    // so that Gmsh's `CreateTopology;` after it has nothing left to do.
+    if (command == "CreateTopology" && !c->arg.valid()) return true;
     if (command == "PartitionMesh" && c->arg.valid()) {
       exec_partition_mesh(in, id, *c);
       return true;

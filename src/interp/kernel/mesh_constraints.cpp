@@ -9,6 +9,7 @@
 #include "interp/interpreter.h"
 #include "interp/kernel/dispatch.h"
 #include "interp/kernel/geometry_shapes.h"
+#include "mesh/periodic_curve.h"
 
 namespace sm::interp {
 
@@ -135,6 +136,82 @@ void exec_entity_setting(Interpreter& in, StmtId id, const Stmt& s, const Entity
   }
 }
 
+// The 16 numbers of a `Periodic Curve` statement's transform (empty without one).
+std::vector<double> periodic_affine(Interpreter& in, const Stmt& s, const PeriodicStmt& n) {
+  std::vector<std::vector<double>> items;
+  std::vector<double> all;
+  for (ExprId e : n.transform_args) {
+    items.push_back(in.eval_numbers(e));
+    all.insert(all.end(), items.back().begin(), items.back().end());
+  }
+  auto bad = [&](const char* form) {
+    in.fail_fmt(s.range, Diag::InvalidOperation, fmt::format("{}: found {} numbers", form, all.size()));
+  };
+  switch (n.transform) {
+    case PeriodicTransform::None: return {};
+    case PeriodicTransform::Translate:
+      if (all.size() != 3) bad("'Translate {dx, dy, dz}' takes 3 numbers");
+      return periodic_translation({all[0], all[1], all[2]});
+    case PeriodicTransform::Rotate: {
+      if (items.size() != 3 || items[0].size() != 3 || items[1].size() != 3 || items[2].size() != 1)
+        bad("'Rotate {{ax, ay, az}, {px, py, pz}, angle}' takes an axis, a point and an angle");
+      std::vector<double> a = periodic_rotation({items[0][0], items[0][1], items[0][2]},
+                                                {items[1][0], items[1][1], items[1][2]}, items[2][0]);
+      if (a.empty()) in.fail_fmt(s.range, Diag::InvalidOperation, "the axis of a periodic rotation is zero");
+      return a;
+    }
+    case PeriodicTransform::Affine:
+      // Gmsh reads the first 12 (the matrix's three rows); the last row is 0 0 0 1.
+      if (all.size() != 12 && all.size() != 16) bad("'Affine {...}' takes the 12 or 16 numbers of a 4x4 matrix by rows");
+      all.resize(12);
+      all.insert(all.end(), {0, 0, 0, 1});
+      return all;
+  }
+  return {};
+}
+
+// `Periodic Curve{targets} = {sources} [Translate{..} | Rotate{..} | Affine{..}];`
+// (Gmsh 4.8.4's addPeriodicEdge): each target's mesh becomes a copy of its source's.
+// Without a transform the signs give the direction; with one, the transform must take
+// the source's end points onto the target's (within Geometry.Tolerance of the model's
+// size, as Gmsh's GEdge::setMeshMaster checks), which gives the direction.
+void exec_periodic_curve(Interpreter& in, const Stmt& s, const PeriodicStmt& n) {
+  KernelState& k = in.kernel();
+  const geo::Model& m = k.model;
+  const std::vector<int> targets = eval_tags(in, n.slaves), sources = eval_tags(in, n.masters);
+  if (targets.size() != sources.size())
+    in.fail_fmt(s.range, Diag::InvalidOperation,
+                fmt::format("'Periodic Curve' pairs {} target curves with {} source curves: give as many of each",
+                            targets.size(), sources.size()));
+  const std::vector<double> affine = periodic_affine(in, s, n);
+  const double tolerance = m.options().tolerance * m.bounding_box().diagonal();
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    const int t = std::abs(targets[i]), src = std::abs(sources[i]);
+    for (int c : {t, src})
+      if (!m.curve(c))
+        in.fail_fmt(s.range, Diag::InvalidOperation, fmt::format("periodic curve {}: curve {} does not exist", t, c));
+    if (t == src)
+      in.fail_fmt(s.range, Diag::InvalidOperation, fmt::format("curve {} cannot be periodic with itself", t));
+    PeriodicCurveSpec spec{src, (targets[i] < 0) != (sources[i] < 0) ? -1 : 1, affine};
+    if (!affine.empty()) {
+      std::pair<double, double> d{0, 0};
+      const std::optional<int> o = periodic_orientation(m, t, src, affine, tolerance, &d);
+      if (!o)
+        in.fail_fmt(s.range, Diag::InvalidOperation,
+                    fmt::format("the transform does not map the end points of curve {} onto those of curve {}: they "
+                                "land {:g} and {:g} away, beyond the tolerance {:g} (Geometry.Tolerance times the "
+                                "model's size)",
+                                src, t, d.first, d.second, tolerance));
+      spec.orientation = *o;
+    }
+    const geo::ModelCurve& tc = *m.curve(t);
+    const geo::ModelCurve& sc = *m.curve(src);
+    k.constraints.periodic_points[tc.begin] = {spec.orientation > 0 ? sc.begin : sc.end, affine};
+    k.constraints.periodic_points[tc.end] = {spec.orientation > 0 ? sc.end : sc.begin, affine};
+    k.constraints.periodic_curves[t] = std::move(spec);
+  }
+}
+
 }  // namespace
 
 void exec_mesh_constraint_stmt(Interpreter& in, StmtId id) {
@@ -144,6 +221,13 @@ void exec_mesh_constraint_stmt(Interpreter& in, StmtId id) {
     case StmtKind::TransfiniteSurface: exec_transfinite_surface(in, s, std::get<TransfiniteSurfaceStmt>(s.node)); break;
     case StmtKind::Recombine: exec_recombine(in, id, s, std::get<RecombineStmt>(s.node)); break;
     case StmtKind::EntitySetting: exec_entity_setting(in, id, s, std::get<EntitySettingStmt>(s.node)); break;
+    case StmtKind::Periodic: {
+      const auto& n = std::get<PeriodicStmt>(s.node);
+      // `Periodic Surface` (a copy of a surface's mesh) is not supported yet: reported as such.
+      if (n.ent == EntityKind::Curve && !n.slave_surface.valid()) exec_periodic_curve(in, s, n);
+      else exec_geometry_stmt(in, id);
+      break;
+    }
     default: break;
   }
 }

@@ -1,7 +1,8 @@
 // Gmsh's surface form of Periodic (as in its benchmarks/2d/periodic_rotation_on_axis.geo):
 // "Periodic Surface slave {slave curves} = master {master curves};" with the curve lists
 // given by Boundary. It parses, its expressions are evaluated (a wrong tag inside would be
-// reported), and the constraint is reported as not supported yet; the script goes on.
+// reported), and the constraint is reported as not supported yet; the script goes on
+// (Periodic Curve with a transform after it is supported: curve 6 copies curve 4).
 Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {1, 1, 0}; Point(4) = {0, 1, 0};
 Point(5) = {2, 0, 0}; Point(6) = {2, 1, 0};
 Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
@@ -10,7 +11,6 @@ Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
 Curve Loop(2) = {5, 6, 7, -2}; Plane Surface(2) = {2};
 s = 2;
 Periodic Surface s {Boundary{Surface{s};}} = 1 {Boundary{Surface{1};}};
-Periodic Curve {6} = {4} Rotate {{0, 0, 1}, {0, 0, 0}, 0};
+Periodic Curve {6} = {4} Translate {2, 0, 0};
 Printf("%g", newp);  // expect: 7
-// expect error: 12:1: not-supported-yet
 // expect error: 13:1: not-supported-yet

@@ -1,0 +1,9 @@
+// Periodic Curve without a transform: curve 3's mesh is a copy of curve -1's (its nodes
+// at the same parameters, in the sign's direction), not what its own sizes ask (9
+// interior nodes): 54 nodes where the curves alone have 51. Counts: gmsh 4.8.4 -0.
+Point(1) = {0, 0, 0, 0.02}; Point(2) = {1, 0, 0, 0.2};
+Point(3) = {1, 1, 0, 0.1}; Point(4) = {0, 1, 0, 0.1};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
+Periodic Curve {3} = {-1};
+Mesh 1;
+Printf("%g nodes", Mesh.NbNodes);   // expect: 54 nodes
