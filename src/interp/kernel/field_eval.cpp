@@ -225,7 +225,7 @@ void fail_field_error(Interpreter& in, const field::FieldError& e, SourceRange a
     }
   }
   try {
-    in.fail(where, diag_of(e.code()), message);
+    in.fail_message(where, diag_of(e.code()), message);
   } catch (RuntimeError& err) {
     err.notes.insert(err.notes.begin(), notes.begin(), notes.end());
     throw;

@@ -608,7 +608,7 @@ void exec_mesh(Interpreter& in, StmtId id, const CommandStmt& c) {
     return;
   }
   const MeshFailure f = mesh_model(in, n >= 2 ? 2 : 1, s.range);
-  if (f.failed()) in.fail_with_notes(s.range, f.kind, f.message, f.notes);
+  if (f.failed()) in.fail_message_with_notes(s.range, f.kind, f.message, f.notes);
 }
 
 // An ocean-model grid (fort.14, hgrid.gr3) holds a depth per node that the model runs on:
