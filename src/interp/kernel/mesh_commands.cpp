@@ -346,7 +346,7 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   std::vector<field::BoundaryLayerParams> layers;
   for (const auto& [fid, at] : k.boundary_layer_fields) {
     if (!k.fields.contains(fid))
-      in.fail_fmt(at, Diag::MissingField, fmt::format("the boundary-layer field, Field[{}], is not defined", fid));
+      in.fail(at, Diag::MissingBoundaryLayerField, fid);
     const std::string kind = k.fields.options(fid).kind().name;
     if (kind != "BoundaryLayer")
       in.fail_fmt(at, Diag::BadFieldValue,

@@ -41,3 +41,14 @@ TEST_CASE("typed report: the table's sentence with the values passed") {
   CHECK(diags.all()[2].message == "invalid byte 0xC3 (binary data or text that is not UTF-8)");
   CHECK(format_diag<int>(Diag::CallTooDeep, 100) == "macro calls nested deeper than 100 (infinite recursion?)");
 }
+
+TEST_CASE("typed report: the field errors' sentences, one kind per shape") {
+  CHECK(format_diag<std::string, std::string>(Diag::UnknownFieldKind, "Treshold", " (did you mean 'Threshold'?)") ==
+        "unknown field type 'Treshold' (did you mean 'Threshold'?)");
+  CHECK(format_diag<int, std::string, int>(Diag::MissingFieldReference, 1, "Threshold", 5) ==
+        "Field[1] (Threshold) references Field[5], which is not defined");
+  CHECK(format_diag<std::string, int, std::string>(Diag::FieldExpressionError, "x +* 2", 4, "unexpected '*'") ==
+        "MathEval expression \"x +* 2\", column 4: unexpected '*'");
+  // One kebab name for the family the script tests match on.
+  CHECK(diag_info(Diag::MissingFieldReference).kebab == diag_info(Diag::MissingField).kebab);
+}
