@@ -506,10 +506,7 @@ MeshFailure mesh_model(Interpreter& in, int dim, SourceRange where) {
   } catch (const field::FieldError& e) {
     fail_field_error(in, e, in.kernel().background_field_at);
   } catch (const std::bad_alloc&) {
-    return {Diag::OutOfMemory,
-            fmt::format("out of memory while meshing in {}D: check the mesh sizes, or lower Mesh.MaxElements "
-                        "(now {:g})",
-                        dim, in.options().number("Mesh.MaxElements")),
+    return {Diag::OutOfMemory, format_diag<int, double>(Diag::OutOfMemory, dim, in.options().number("Mesh.MaxElements")),
             {}};
   }
 }
