@@ -172,6 +172,7 @@ std::vector<std::string> file_names(const BuildInputs& in) {
 [[noreturn]] void grid_error(const BuildInputs& in, const std::filesystem::path& path, const std::string& what) {
   FieldError e(FieldErrc::FileError, fmt::format("{}: {}", path.string(), what));
   e.file = path.string();
+  e.reason = what;
   e.field_id = in.id;
   throw e;
 }

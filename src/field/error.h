@@ -1,5 +1,7 @@
 // Typed errors of the field module: what went wrong, on which field id,
-// option, file or expression column, so the interpreter can locate it.
+// option, file or expression column, so the interpreter can locate it. The codes have
+// no names here: the interpreter maps each to a diagnostic kind (interp/kernel/field_eval.cpp),
+// whose kebab name and message shape lang/diag_kinds.def declares.
 #pragma once
 
 #include <optional>
@@ -23,8 +25,6 @@ enum class FieldErrc {
   ParseError,       // MathEval expression syntax
 };
 
-const char* to_string(FieldErrc code);
-
 class FieldError : public std::runtime_error {
  public:
   FieldError(FieldErrc code, std::string message) : std::runtime_error(message), code_(code) {}
@@ -36,6 +36,9 @@ class FieldError : public std::runtime_error {
   std::string suggestion;     ///< closest known name, for "did you mean"
   std::vector<int> ids;       ///< MissingField: the missing id; Cycle: the loop, in order
   std::string file;           ///< FileError: the path
+  std::string name;           ///< UnknownKind: the kind named; UnknownOption: the field's kind
+  std::string expression;     ///< ParseError: the MathEval expression
+  std::string reason;         ///< FileError, ParseError: what is wrong, after the file or column
   int column = -1;            ///< ParseError: 1-based column in the expression
   std::optional<Vec3> point;  ///< BadValue from an evaluation: where the field was evaluated
 

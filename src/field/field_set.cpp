@@ -33,6 +33,7 @@ void FieldSet::define(int id, std::string_view kind) {
     for (const KindSpec& k : kinds()) names.push_back(k.name);
     FieldError e(FieldErrc::UnknownKind, fmt::format("unknown field type '{}'", kind));
     e.field_id = id;
+    e.name = kind;
     e.suggestion = closest_name(kind, names);
     throw e;
   }

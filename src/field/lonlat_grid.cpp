@@ -35,6 +35,7 @@ constexpr std::uint64_t kMaxGridValues = std::uint64_t{1} << 31;
 [[noreturn]] void file_error(const std::filesystem::path& file, const std::string& what) {
   FieldError e(FieldErrc::FileError, fmt::format("{}: {}", file.string(), what));
   e.file = file.string();
+  e.reason = what;
   throw e;
 }
 

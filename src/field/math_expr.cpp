@@ -167,6 +167,8 @@ class MathParser {
     FieldError e(FieldErrc::ParseError,
                  fmt::format("MathEval expression \"{}\", column {}: {}", s_, at + 1, what));
     e.column = static_cast<int>(at) + 1;
+    e.expression = std::string(s_);
+    e.reason = what;
     throw e;
   }
 

@@ -78,6 +78,7 @@ void Options::set(std::string_view name, OptionValue value) {
     FieldError e(FieldErrc::UnknownOption,
                  fmt::format("unknown option '{}' for field kind '{}'", name, kind_->name));
     e.option = std::string(name);
+    e.name = kind_->name;
     e.suggestion = closest_name(name, names);
     throw e;
   }
@@ -113,6 +114,7 @@ int Options::index_or_die(std::string_view name) const {
     FieldError e(FieldErrc::UnknownOption,
                  fmt::format("internal: kind '{}' has no option '{}'", kind_->name, name));
     e.option = std::string(name);
+    e.name = kind_->name;
     throw e;
   }
   return i;

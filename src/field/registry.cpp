@@ -12,21 +12,6 @@
 
 namespace sm::field {
 
-const char* to_string(FieldErrc code) {
-  switch (code) {
-    case FieldErrc::UnknownKind: return "unknown-field-kind";
-    case FieldErrc::UnknownOption: return "unknown-field-option";
-    case FieldErrc::WrongOptionType: return "wrong-field-option-type";
-    case FieldErrc::DuplicateId: return "duplicate-field-id";
-    case FieldErrc::MissingField: return "missing-field";
-    case FieldErrc::Cycle: return "field-cycle";
-    case FieldErrc::BadValue: return "bad-field-value";
-    case FieldErrc::FileError: return "field-file-error";
-    case FieldErrc::ParseError: return "field-expression-error";
-  }
-  return "field-error";
-}
-
 const std::vector<KindSpec>& kinds() {
   // Built once, immutable afterwards (thread-safe static initialisation).
   static const std::vector<KindSpec> all = [] {

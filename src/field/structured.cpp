@@ -25,6 +25,7 @@ struct Grid3 {
 [[noreturn]] void file_error(const std::filesystem::path& file, const std::string& what) {
   FieldError e(FieldErrc::FileError, fmt::format("{}: {}", file.string(), what));
   e.file = file.string();
+  e.reason = what;
   throw e;
 }
 

@@ -348,12 +348,12 @@ Value Interpreter::eval_range(const Expr& e, const RangeExpr& r) {
   const double a = eval_number(r.from);
   const double b = eval_number(r.to);
   if (!std::isfinite(a) || !std::isfinite(b))
-    fail_fmt(e.range, Diag::InvalidRange, "range bounds must be finite numbers");
+    fail(e.range, Diag::NonFiniteRange, "range bounds");
   double step;
   if (r.step.valid()) {
     step = eval_number(r.step);
-    if (step == 0) fail_fmt(ast_.expr(r.step).range, Diag::InvalidRange, "range step is 0");
-    if (!std::isfinite(step)) fail_fmt(ast_.expr(r.step).range, Diag::InvalidRange, "range step must be finite");
+    if (step == 0) fail(ast_.expr(r.step).range, Diag::InvalidRange);
+    if (!std::isfinite(step)) fail(ast_.expr(r.step).range, Diag::NonFiniteRange, "range step");
   } else {
     step = (a <= b) ? 1.0 : -1.0;   // `5:1` counts down
   }

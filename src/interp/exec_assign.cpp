@@ -374,11 +374,8 @@ void Interpreter::note_ignored_define(const DefineEntry& entry, const std::strin
   }
   reported_define_ignored_.insert(name);
   const lang::LineCol lc = sources_.line_col(at->second.begin_loc());
-  diags_.report(entry.range, Diag::DefineConstantIgnored,
-                fmt::format("{} keeps {} from {}:{}; this value ({}) is ignored: set it before the Include "
-                            "(General.WarnOnIgnoredDefineConstant = 0 silences this)",
-                            name, value_text(name), std::filesystem::path(sources_.path(at->second.file)).filename().string(),
-                            lc.line, asked));
+  diags_.report(entry.range, Diag::DefineConstantIgnored, name, value_text(name),
+                std::filesystem::path(sources_.path(at->second.file)).filename().string(), lc.line, asked);
 }
 
 void Interpreter::exec_define_constant(const DefineConstantStmt& d) {

@@ -46,7 +46,7 @@ Interpreter::Flow Interpreter::exec_for(const Stmt& st, const ForStmt& f) {
   const double to = eval_number(f.to);
   const double step = f.step.valid() ? eval_number(f.step) : 1.0;
   if (!std::isfinite(from) || !std::isfinite(to) || !std::isfinite(step))
-    fail_fmt(st.keyword, Diag::InvalidRange, "loop bounds and step must be finite numbers");
+    fail(st.keyword, Diag::NonFiniteRange, "loop bounds and step");
   if (step != 0) {
     const double n = std::floor((to - from) / step) + 1;
     if (n > static_cast<double>(settings_.limits.max_list_size))
@@ -176,7 +176,7 @@ Interpreter::Flow Interpreter::exec_include(const Stmt& s, const IncludeStmt& in
     const std::size_t before = diags_.error_count();
     ParseResult pr = parse_file(sources_, file, ast_, diags_);
     if (!pr.ok || diags_.error_count() > before) {
-      fail_fmt(r, Diag::IncludeFailed, fmt::format("'{}' has syntax errors; nothing of it was run", name));
+      fail(r, Diag::IncludeSyntaxErrors, name);
     }
     parsed = parsed_files_.emplace(file.value, std::move(pr.stmts)).first;
   }

@@ -244,11 +244,12 @@ std::vector<DiagNote> Interpreter::frame_notes() const {
   return notes;
 }
 
-void Interpreter::fail(SourceRange range, Diag kind, std::string message) {
+void Interpreter::fail_message(SourceRange range, Diag kind, std::string message) {
   throw RuntimeError{range, kind, std::move(message), frame_notes()};
 }
 
-void Interpreter::fail_with_notes(SourceRange range, Diag kind, std::string message, std::vector<DiagNote> notes) {
+void Interpreter::fail_message_with_notes(SourceRange range, Diag kind, std::string message,
+                                          std::vector<DiagNote> notes) {
   for (auto& n : frame_notes()) notes.push_back(std::move(n));
   throw RuntimeError{range, kind, std::move(message), std::move(notes)};
 }

@@ -9,6 +9,7 @@
 #include <set>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "interp/builtins/builtins.h"
@@ -90,14 +91,34 @@ class Interpreter {
 
   /// Counts one executed statement or loop iteration against the statement limit.
   void count_statement(lang::SourceRange r);
-  [[noreturn]] void fail(lang::SourceRange range, lang::Diag kind, std::string message);
-  /// fail() with extra notes (e.g. where the entities a kernel error names were created).
-  [[noreturn]] void fail_with_notes(lang::SourceRange range, lang::Diag kind, std::string message,
-                                    std::vector<lang::DiagNote> notes);
+  /// Throws the RuntimeError of `kind` with `args` (checked against the kind's format at
+  /// compile time, see lang/diag_format.h).
   template <class... Args>
-  [[noreturn]] void fail_fmt(lang::SourceRange range, lang::Diag kind, const Args&... args) {
-    fail(range, kind, fmt::vformat(lang::diag_info(kind).format, fmt::make_format_args(args...)));
+  [[noreturn]] void fail(lang::SourceRange range, std::type_identity_t<lang::DiagFormat<Args...>> kind,
+                         const Args&... args) {
+    fail_message(range, kind.kind(), lang::format_diag<Args...>(kind, args...));
   }
+  /// fail(), the name the older call sites use.
+  template <class... Args>
+  [[noreturn]] void fail_fmt(lang::SourceRange range, std::type_identity_t<lang::DiagFormat<Args...>> kind,
+                             const Args&... args) {
+    fail_message(range, kind.kind(), lang::format_diag<Args...>(kind, args...));
+  }
+  /// fail() with extra notes (e.g. where the entities a kernel error names were created).
+  [[noreturn]] void fail_with_notes(lang::SourceRange range, lang::DiagFormat<std::string> kind, std::string message,
+                                    std::vector<lang::DiagNote> notes) {
+    fail_message_with_notes(range, kind.kind(), lang::format_diag<std::string>(kind, message), std::move(notes));
+  }
+  template <class... Args>
+  [[noreturn]] void fail_with_notes(lang::SourceRange range, std::vector<lang::DiagNote> notes,
+                                    std::type_identity_t<lang::DiagFormat<Args...>> kind, const Args&... args) {
+    fail_message_with_notes(range, kind.kind(), lang::format_diag<Args...>(kind, args...), std::move(notes));
+  }
+  /// Throws with a message formatted by a fail() or a typed report before (a RuntimeError
+  /// caught and thrown again with more context).
+  [[noreturn]] void fail_message(lang::SourceRange range, lang::Diag kind, std::string message);
+  [[noreturn]] void fail_message_with_notes(lang::SourceRange range, lang::Diag kind, std::string message,
+                                            std::vector<lang::DiagNote> notes);
   /// A statement the kernel cannot run yet: reported once per kind of
   /// statement, then the run goes on (the script's variables stay usable).
   void not_supported_stmt(lang::StmtId s, std::string_view what);

@@ -118,7 +118,7 @@ std::vector<lang::DiagNote> provenance_notes(const KernelState& k, const MeshErr
 }
 
 void fail_geo(Interpreter& in, lang::SourceRange at, const geo::GeoError& e) {
-  in.fail_with_notes(at, diag_of(e.kind), e.message, provenance_notes(in.kernel(), e));
+  in.fail_message_with_notes(at, diag_of(e.kind), e.message, provenance_notes(in.kernel(), e));
 }
 
 }  // namespace sm::interp

@@ -85,7 +85,7 @@ Diagnostics::Handle Diagnostics::report_message(SourceRange range, Diag kind, st
   if (sev == Severity::Error && max_errors_ != 0 && errors_ >= max_errors_) {
     stopped_ = true;
     diags_.push_back({Diag::TooManyErrors, Severity::Error, range,
-                      fmt::format(fmt::runtime(diag_info(Diag::TooManyErrors).format), errors_), {}, {}});
+                      format_diag<std::size_t>(Diag::TooManyErrors, errors_), {}, {}});
     ++errors_;
     return Handle(this, Handle::kDropped);
   }

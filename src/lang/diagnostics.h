@@ -9,22 +9,17 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include <fmt/format.h>
 
+#include "lang/diag_format.h"
 #include "lang/source.h"
 
 namespace sm::lang {
 
 enum class Severity : std::uint8_t { Error, Warning, Note };
-
-enum class Diag : std::uint16_t {
-#define DIAG(name, severity, kebab, format) name,
-#include "lang/diag_kinds.def"
-#undef DIAG
-  kCount
-};
 
 struct DiagInfo {
   Severity severity;
@@ -89,17 +84,11 @@ class Diagnostics {
 
   explicit Diagnostics(const SourceManager& sources) : sources_(&sources) {}
 
-  /// diags.report(tok.range, Diag::UnknownField, name): formats the kind's
-  /// message with fmt. Never throws (a bad argument list is reported in the text).
+  /// diags.report(tok.range, Diag::UnknownField, name): formats the kind's message with
+  /// `args`, whose number and types are checked against the format at compile time.
   template <class... Args>
-  Handle report(SourceRange range, Diag kind, const Args&... args) {
-    std::string message;
-    try {
-      message = fmt::vformat(diag_info(kind).format, fmt::make_format_args(args...));
-    } catch (const fmt::format_error&) {
-      message = std::string(diag_info(kind).format) + " (bad diagnostic arguments)";
-    }
-    return report_message(range, kind, std::move(message));
+  Handle report(SourceRange range, std::type_identity_t<DiagFormat<Args...>> kind, const Args&... args) {
+    return report_message(range, kind.kind(), format_diag<Args...>(kind, args...));
   }
   /// Reports with an already formatted message.
   Handle report_message(SourceRange range, Diag kind, std::string message);

@@ -32,23 +32,57 @@ struct FieldCache {
 
 namespace {
 
-Diag diag_of(field::FieldErrc c) {
-  switch (c) {
-    case field::FieldErrc::UnknownKind: return Diag::UnknownFieldKind;
-    case field::FieldErrc::UnknownOption: return Diag::UnknownFieldOption;
-    case field::FieldErrc::WrongOptionType: return Diag::WrongFieldOptionType;
-    case field::FieldErrc::DuplicateId: return Diag::DuplicateFieldId;
-    case field::FieldErrc::MissingField: return Diag::MissingField;
-    case field::FieldErrc::Cycle: return Diag::FieldCycle;
-    case field::FieldErrc::BadValue: return Diag::BadFieldValue;
-    case field::FieldErrc::FileError: return Diag::FieldFileError;
-    case field::FieldErrc::ParseError: return Diag::FieldExpressionError;
-  }
-  return Diag::BadFieldValue;
-}
-
 std::string kind_of(Interpreter& in, int id) {
   return in.kernel().fields.contains(id) ? in.kernel().fields.options(id).kind().name : "?";
+}
+
+/// " (did you mean 'x'?)" after an unknown name, or "".
+std::string did_you_mean(const std::string& suggestion) {
+  return suggestion.empty() ? std::string() : fmt::format(" (did you mean '{}'?)", suggestion);
+}
+
+/// A field error's diagnostic: each field::FieldErrc is reported as the kind of
+/// lang/diag_kinds.def that names it, with the values its message's shape takes.
+struct FieldDiagnostic {
+  Diag kind;
+  std::string message;
+};
+
+FieldDiagnostic field_diagnostic(Interpreter& in, const field::FieldError& e) {
+  const int first = e.ids.empty() ? e.field_id : e.ids.front();
+  switch (e.code()) {
+    case field::FieldErrc::UnknownKind:
+      return {Diag::UnknownFieldKind, format_diag<std::string, std::string>(Diag::UnknownFieldKind, e.name,
+                                                                            did_you_mean(e.suggestion))};
+    case field::FieldErrc::UnknownOption:
+      if (e.field_id >= 0)
+        return {Diag::UnknownFieldOption,
+                format_diag<int, std::string, std::string, std::string>(Diag::UnknownFieldOption, e.field_id, e.name,
+                                                                        e.option, did_you_mean(e.suggestion))};
+      return {Diag::UnknownKindOption, format_diag<std::string, std::string, std::string>(
+                                           Diag::UnknownKindOption, e.option, e.name, did_you_mean(e.suggestion))};
+    case field::FieldErrc::DuplicateId:
+      return {Diag::DuplicateFieldId, format_diag<int>(Diag::DuplicateFieldId, e.field_id)};
+    case field::FieldErrc::MissingField:
+      if (e.field_id >= 0 && e.field_id != first)
+        return {Diag::MissingFieldReference, format_diag<int, std::string, int>(Diag::MissingFieldReference, e.field_id,
+                                                                                kind_of(in, e.field_id), first)};
+      return {Diag::MissingField, format_diag<int>(Diag::MissingField, first)};
+    case field::FieldErrc::Cycle: {
+      std::string loop;
+      for (std::size_t i = 0; i < e.ids.size(); ++i) loop += fmt::format("{}Field[{}]", i ? " -> " : "", e.ids[i]);
+      return {Diag::FieldCycle, format_diag<std::string>(Diag::FieldCycle, loop)};
+    }
+    case field::FieldErrc::FileError:
+      return {Diag::FieldFileError, format_diag<std::string, std::string>(Diag::FieldFileError, e.file, e.reason)};
+    case field::FieldErrc::ParseError:
+      return {Diag::FieldExpressionError, format_diag<std::string, int, std::string>(
+                                              Diag::FieldExpressionError, e.expression, e.column, e.reason)};
+    case field::FieldErrc::WrongOptionType:
+      return {Diag::WrongFieldOptionType, format_diag<std::string>(Diag::WrongFieldOptionType, e.what())};
+    case field::FieldErrc::BadValue: break;
+  }
+  return {Diag::BadFieldValue, format_diag<std::string>(Diag::BadFieldValue, e.what())};
 }
 
 // Where option `option` (any spelling) of field `id` was set, if a statement did.
@@ -172,8 +206,8 @@ void check_reference_depth(Interpreter& in, int root, SourceRange use) {
 }  // namespace
 
 void fail_field_error(Interpreter& in, const field::FieldError& e, SourceRange at) {
-  std::string message = e.what();
-  if (!e.suggestion.empty()) message += fmt::format(" (did you mean '{}'?)", e.suggestion);
+  FieldDiagnostic d = field_diagnostic(in, e);
+  std::string& message = d.message;
   std::vector<DiagNote> notes;
   SourceRange where = at;
   switch (e.code()) {
@@ -225,7 +259,7 @@ void fail_field_error(Interpreter& in, const field::FieldError& e, SourceRange a
     }
   }
   try {
-    in.fail(where, diag_of(e.code()), message);
+    in.fail_message(where, d.kind, std::move(message));
   } catch (RuntimeError& err) {
     err.notes.insert(err.notes.begin(), notes.begin(), notes.end());
     throw;
@@ -270,8 +304,7 @@ const field::BuiltFields& built_fields(Interpreter& in, int root, SourceRange us
   }
   auto it = k.field_cache->by_root.find(root);
   if (it != k.field_cache->by_root.end()) return it->second;
-  if (!k.fields.contains(root))
-    in.fail_fmt(use, Diag::MissingField, fmt::format("Field[{}] is not defined", root));
+  if (!k.fields.contains(root)) in.fail(use, Diag::MissingField, root);
   check_reference_depth(in, root, use);
   try {
     const StageScope stage(&k.clock, nullptr, "fields");
@@ -288,8 +321,7 @@ field::FieldPtr background_size_field(Interpreter& in, const CurveMeshNodes* mes
   const int id = *k.background_field;
   if (!k.fields.contains(id)) {
     try {
-      in.fail_fmt(k.background_field_at, Diag::MissingField,
-                  fmt::format("the background field, Field[{}], is not defined", id));
+      in.fail(k.background_field_at, Diag::MissingBackgroundField, id);
     } catch (RuntimeError& err) {
       if (!k.fields.ids().empty())
         err.notes.insert(err.notes.begin(),

@@ -30,10 +30,8 @@ int field_id(Interpreter& in, ExprId e) {
 void require_field(Interpreter& in, int id, ExprId id_expr, std::string_view doing) {
   if (in.kernel().fields.contains(id)) return;
   const auto ids = in.kernel().fields.ids();
-  in.fail_fmt(in.ast().expr(id_expr).range, Diag::MissingField,
-              fmt::format("cannot {} Field[{}]: it is not defined{}", doing, id,
-                          ids.empty() ? std::string(" (no field is)")
-                                      : fmt::format(" (defined: {})", fmt::join(ids, ", "))));
+  in.fail(in.ast().expr(id_expr).range, Diag::MissingFieldFor, doing, id,
+          ids.empty() ? std::string(" (no field is)") : fmt::format(" (defined: {})", fmt::join(ids, ", ")));
 }
 
 void exec_field_new(Interpreter& in, const Stmt& s, const FieldNewStmt& n) {
@@ -45,10 +43,8 @@ void exec_field_new(Interpreter& in, const Stmt& s, const FieldNewStmt& n) {
   } catch (const field::FieldError& e) {
     if (e.code() == field::FieldErrc::DuplicateId) {
       // Gmsh 4.8.4: "Field id n is already defined", and the old field stays.
-      std::string message = e.what();
-      message += ": 'Delete Field[n];' first to redefine it";
       try {
-        in.fail(in.ast().expr(n.id).range, Diag::DuplicateFieldId, message);
+        in.fail(in.ast().expr(n.id).range, Diag::DuplicateFieldId, id);
       } catch (RuntimeError& err) {
         auto it = k.field_defined_at.find(id);
         if (it != k.field_defined_at.end())
@@ -146,9 +142,8 @@ void exec_field_option(Interpreter& in, const Stmt& s, const FieldOptionStmt& n)
       names.insert(names.end(), o.aliases.begin(), o.aliases.end());
     }
     const std::string best = field::closest_name(option, names);
-    in.fail(n.option_range, Diag::UnknownFieldOption,
-            fmt::format("Field[{}] ({}) has no option '{}'{}", id, opts.kind().name, option,
-                        best.empty() ? std::string() : fmt::format(" (did you mean '{}'?)", best)));
+    in.fail(n.option_range, Diag::UnknownFieldOption, id, opts.kind().name, option,
+            best.empty() ? std::string() : fmt::format(" (did you mean '{}'?)", best));
   }
   field::OptionValue value;
   if (!option_value(in, n, id, spec, value)) return;

@@ -29,11 +29,10 @@ void exec_merge(Interpreter& in, StmtId id, const CommandStmt& c) {
   if (p.is_relative()) p = std::filesystem::path(in.sources().path(s.range.file)).parent_path() / p;
   std::error_code ec;
   if (!std::filesystem::is_regular_file(p, ec))
-    in.fail_fmt(at, Diag::CannotOpenFile,
-                fmt::format("cannot merge '{}': {}", name,
-                            std::filesystem::exists(p, ec) ? "not a regular file" : "no such file"));
+    in.fail(at, Diag::CannotMerge, name,
+            std::string_view(std::filesystem::exists(p, ec) ? "not a regular file" : "no such file"));
   if (std::ifstream f(p, std::ios::binary); !f || f.peek() == std::ifstream::traits_type::eof())
-    in.fail_fmt(at, Diag::CannotOpenFile, fmt::format("cannot merge '{}': cannot read it, or it is empty", name));
+    in.fail(at, Diag::CannotMerge, name, std::string_view("cannot read it, or it is empty"));
   std::string ext = p.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
   if (ext == ".pos") {

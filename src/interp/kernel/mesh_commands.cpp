@@ -348,7 +348,7 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   std::vector<field::BoundaryLayerParams> layers;
   for (const auto& [fid, at] : k.boundary_layer_fields) {
     if (!k.fields.contains(fid))
-      in.fail_fmt(at, Diag::MissingField, fmt::format("the boundary-layer field, Field[{}], is not defined", fid));
+      in.fail(at, Diag::MissingBoundaryLayerField, fid);
     const std::string kind = k.fields.options(fid).kind().name;
     if (kind != "BoundaryLayer")
       in.fail_fmt(at, Diag::BadFieldValue,
@@ -516,10 +516,7 @@ MeshFailure mesh_model(Interpreter& in, int dim, SourceRange where) {
   } catch (const field::FieldError& e) {
     fail_field_error(in, e, in.kernel().background_field_at);
   } catch (const std::bad_alloc&) {
-    return {Diag::OutOfMemory,
-            fmt::format("out of memory while meshing in {}D: check the mesh sizes, or lower Mesh.MaxElements "
-                        "(now {:g})",
-                        dim, in.options().number("Mesh.MaxElements")),
+    return {Diag::OutOfMemory, format_diag<int, double>(Diag::OutOfMemory, dim, in.options().number("Mesh.MaxElements")),
             {}};
   }
 }
@@ -618,7 +615,7 @@ void exec_mesh(Interpreter& in, StmtId id, const CommandStmt& c) {
     return;
   }
   const MeshFailure f = mesh_model(in, n >= 2 ? 2 : 1, s.range);
-  if (f.failed()) in.fail_with_notes(s.range, f.kind, f.message, f.notes);
+  if (f.failed()) in.fail_message_with_notes(s.range, f.kind, f.message, f.notes);
 }
 
 // An ocean-model grid (fort.14, hgrid.gr3) holds a depth per node that the model runs on:

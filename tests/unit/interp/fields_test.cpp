@@ -133,7 +133,7 @@ TEST_CASE("fields: a missing background field or a cycle is located at Backgroun
     background_size_field(r.in);
     FAIL("expected a missing-field error");
   } catch (const RuntimeError& e) {
-    CHECK(e.kind == lang::Diag::MissingField);
+    CHECK(e.kind == lang::Diag::MissingBackgroundField);
     CHECK(e.message == "the background field, Field[4], is not defined");
     CHECK(r.sources.line_col(e.range.begin_loc()).line == 1);
   }

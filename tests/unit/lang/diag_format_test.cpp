@@ -1,0 +1,54 @@
+// Typed diagnostic formats: the slots a format reads, and typed reports' text.
+#include <doctest/doctest.h>
+
+#include <string>
+
+#include "lang/diag_format.h"
+#include "lang/diagnostics.h"
+#include "lang/source.h"
+
+using namespace sm::lang;
+
+TEST_CASE("diag_format_arity: automatic and numbered slots, literal braces") {
+  static_assert(diag_format_arity("division by zero") == 0);
+  static_assert(diag_format_arity("index {} is out of range for '{}' of size {}") == 3);
+  static_assert(diag_format_arity("invalid byte 0x{:02X} (binary data)") == 1);
+  static_assert(diag_format_arity("Coastline[{0}] is already defined: 'Delete Coastline[{0}];'") == 1);
+  static_assert(diag_format_arity("{1} before {0}") == 2);
+  static_assert(diag_format_arity("write {{{}}}") == 1);
+  static_assert(diag_format_arity("braces {{}} only") == 0);
+  CHECK(diag_format_arity("unclosed {") == -1);
+  CHECK(diag_format_arity("stray }") == -1);
+}
+
+TEST_CASE("diag_format_arity: every kind's format is well formed") {
+  for (std::size_t i = 0; i < static_cast<std::size_t>(Diag::kCount); ++i) {
+    CAPTURE(diag_info(static_cast<Diag>(i)).kebab);
+    CHECK(diag_format_arity(kDiagFormats[i]) >= 0);
+    CHECK(kDiagFormats[i] == diag_info(static_cast<Diag>(i)).format);
+  }
+}
+
+TEST_CASE("typed report: the table's sentence with the values passed") {
+  SourceManager sm;
+  Diagnostics diags(sm);
+  diags.report(SourceRange{}, Diag::IndexOutOfRange, 7, "xs", std::size_t{3});
+  diags.report(SourceRange{}, Diag::DuplicateCoastline, 4);
+  diags.report(SourceRange{}, Diag::InvalidByte, 0xC3);
+  REQUIRE(diags.all().size() == 3);
+  CHECK(diags.all()[0].message == "index 7 is out of range for 'xs' of size 3");
+  CHECK(diags.all()[1].message == "Coastline[4] is already defined: 'Delete Coastline[4];' first to redefine it");
+  CHECK(diags.all()[2].message == "invalid byte 0xC3 (binary data or text that is not UTF-8)");
+  CHECK(format_diag<int>(Diag::CallTooDeep, 100) == "macro calls nested deeper than 100 (infinite recursion?)");
+}
+
+TEST_CASE("typed report: the field errors' sentences, one kind per shape") {
+  CHECK(format_diag<std::string, std::string>(Diag::UnknownFieldKind, "Treshold", " (did you mean 'Threshold'?)") ==
+        "unknown field type 'Treshold' (did you mean 'Threshold'?)");
+  CHECK(format_diag<int, std::string, int>(Diag::MissingFieldReference, 1, "Threshold", 5) ==
+        "Field[1] (Threshold) references Field[5], which is not defined");
+  CHECK(format_diag<std::string, int, std::string>(Diag::FieldExpressionError, "x +* 2", 4, "unexpected '*'") ==
+        "MathEval expression \"x +* 2\", column 4: unexpected '*'");
+  // One kebab name for the family the script tests match on.
+  CHECK(diag_info(Diag::MissingFieldReference).kebab == diag_info(Diag::MissingField).kebab);
+}
