@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "field/bounded_field.h"
 #include "field/kinds.h"
 
 namespace sm::field {
@@ -13,12 +14,18 @@ class ThresholdField final : public CompositeField {
   ThresholdField(FieldPtr in, double size_min, double size_max, double dist_min, double dist_max,
                  bool sigmoid, bool stop)
       : in_(std::move(in)), size_min_(size_min), size_max_(size_max), dist_min_(dist_min),
-        dist_max_(dist_max), sigmoid_(sigmoid), stop_(stop) {}
+        dist_max_(dist_max), sigmoid_(sigmoid), stop_(stop), bounded_(dynamic_cast<const BoundedEval*>(in_.get())) {}
 
  protected:
   void run(const EntityRef* on, std::span<const Vec3> pts, std::span<double> h) const override {
-    eval_input(*in_, on, pts, h);
     const double span = dist_max_ - dist_min_;
+    // Every input above DistMax gives r = 1 (and StopAtDistMax's MAX_LC), so those
+    // values need not be exact: a Distance input stops its search there.
+    if (bounded_ && std::isfinite(span)) {
+      bounded_->eval_below(pts, dist_max_, h);
+    } else {
+      eval_input(*in_, on, pts, h);
+    }
     for (double& v : h) {
       const double d = v;
       // DistMin == DistMax is a step at DistMin (Gmsh would divide by zero).
@@ -37,6 +44,7 @@ class ThresholdField final : public CompositeField {
   FieldPtr in_;
   double size_min_, size_max_, dist_min_, dist_max_;
   bool sigmoid_, stop_;
+  const BoundedEval* bounded_;  // in_ itself, when it can stop early
 };
 
 FieldPtr make_threshold(const BuildInputs& in) {
