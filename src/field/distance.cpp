@@ -20,7 +20,7 @@ class DistanceField final : public SizeField, public BoundedEval {
 
   void eval(std::span<const Vec3> pts, std::span<double> h) const override { tree_.nearest(pts, h); }
   // Beyond the limit the search stops: a far point costs one descent of the tree.
-  void eval_below(std::span<const Vec3> pts, double limit, std::span<double> h) const override {
+  void eval_below(std::span<const Vec3> pts, std::span<const double> limit, std::span<double> h) const override {
     tree_.nearest_below(pts, limit, h);
   }
 

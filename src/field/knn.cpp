@@ -241,23 +241,26 @@ KdTree::~KdTree() = default;
 
 void KdTree::nearest(std::span<const Vec3> queries, std::span<double> dist,
                      std::span<std::uint32_t> index) const {
-  nearest_capped(queries, std::numeric_limits<double>::infinity(), dist, index);
+  const double none = std::numeric_limits<double>::infinity();
+  nearest_capped(queries, std::span<const double>(&none, 1), dist, index);
 }
 
-void KdTree::nearest_below(std::span<const Vec3> queries, double limit, std::span<double> dist) const {
+void KdTree::nearest_below(std::span<const Vec3> queries, std::span<const double> limit,
+                           std::span<double> dist) const {
   // The reach is a hair above the limit, so that a point at a distance up to the limit
-  // is found whatever the rounding of its squared distance.
+  // is found whatever the rounding of its squared distance; no limit (or a non-positive
+  // one) is no cut.
   constexpr double kReachMargin = 1e-9;
-  const double reach = limit * (1 + kReachMargin);
-  if (!(limit > 0) || !std::isfinite(reach * reach)) {
-    nearest(queries, dist);
-    return;
+  std::vector<double> far2(limit.size());
+  for (std::size_t i = 0; i < limit.size(); ++i) {
+    const double reach = limit[i] * (1 + kReachMargin);
+    far2[i] = limit[i] > 0 && std::isfinite(reach * reach) ? reach * reach : std::numeric_limits<double>::infinity();
   }
-  nearest_capped(queries, reach * reach, dist, {});
+  nearest_capped(queries, far2, dist, {});
 }
 
-void KdTree::nearest_capped(std::span<const Vec3> queries, double far2, std::span<double> dist,
-                            std::span<std::uint32_t> index) const {
+void KdTree::nearest_capped(std::span<const Vec3> queries, std::span<const double> far2_of,
+                            std::span<double> dist, std::span<std::uint32_t> index) const {
   constexpr std::uint32_t kNoIndex = std::numeric_limits<std::uint32_t>::max();
   if (!impl_) {
     for (double& d : dist) d = kMaxLc;
@@ -270,6 +273,8 @@ void KdTree::nearest_capped(std::span<const Vec3> queries, double far2, std::spa
   std::vector<std::uint32_t> order;
   if (opts_.sort_queries && queries.size() > 1) order = morton_order(queries);
   std::size_t prev = NearestResult::kNone;
+  // The current query's cap (squared).
+  double far2 = std::numeric_limits<double>::infinity();
 
   // One bounded search, seeded with the previous answer: (index, squared
   // distance). If nothing beats the seed (possible only with eps > 0, which
@@ -317,6 +322,7 @@ void KdTree::nearest_capped(std::span<const Vec3> queries, double far2, std::spa
   for (std::size_t k = 0; k < queries.size(); ++k) {
     const std::size_t i = order.empty() ? k : order[k];
     const Vec3 q = queries[i];
+    if (!far2_of.empty()) far2 = far2_of[far2_of.size() == 1 ? 0 : i];
     if (!two_level || prev == NearestResult::kNone) {
       store(i, search(q));
       continue;

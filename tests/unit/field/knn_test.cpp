@@ -129,7 +129,7 @@ TEST_CASE("knn: nearest_below is exact up to the limit and above it beyond, on b
   std::vector<double> full(q.size()), below(q.size());
   tree.nearest(q, full);
   const double limit = norm(q.back() - pts[41]);
-  tree.nearest_below(q, limit, below);
+  tree.nearest_below(q, std::span<const double>(&limit, 1), below);
   int within = 0, beyond = 0;
   for (std::size_t i = 0; i < q.size(); ++i) {
     if (full[i] <= limit) {
@@ -149,12 +149,25 @@ TEST_CASE("knn: nearest_below is exact up to the limit and above it beyond, on b
   for (double d : below) stopped += std::isinf(d) ? 1 : 0;
   CHECK(stopped > beyond / 2);
   // No limit (or none that bounds anything) is the plain search.
-  tree.nearest_below(q, std::numeric_limits<double>::infinity(), below);
+  const double none = std::numeric_limits<double>::infinity();
+  tree.nearest_below(q, std::span<const double>(&none, 1), below);
   for (std::size_t i = 0; i < q.size(); ++i) CHECK(below[i] == full[i]);
+  // One limit per query: every other query without one.
+  std::vector<double> limits(q.size());
+  for (std::size_t i = 0; i < q.size(); ++i) limits[i] = i % 2 ? limit : none;
+  tree.nearest_below(q, limits, below);
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    if (i % 2 == 0 || full[i] <= limit) {
+      CHECK(below[i] == full[i]);
+    } else {
+      CHECK(below[i] > limit);
+    }
+  }
   // A non-finite query still reads NaN.
   const std::vector<Vec3> bad = {{std::nan(""), 0, 0}, pts[3]};
   std::vector<double> bd(2);
-  tree.nearest_below(bad, 0.5, bd);
+  const double half = 0.5;
+  tree.nearest_below(bad, std::span<const double>(&half, 1), bd);
   CHECK(std::isnan(bd[0]));
   CHECK(bd[1] == 0);
 }

@@ -1,5 +1,6 @@
 #include <cmath>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <doctest/doctest.h>
@@ -115,4 +116,65 @@ TEST_CASE("threshold: over a Distance, the search stops at DistMax and the sizes
     CHECK(far > 10);
     CHECK(d.back() == doctest::Approx(2).epsilon(1e-15));
   }
+}
+
+TEST_CASE("threshold: inside a Min, a Distance is searched only where it can lower the size; same sizes") {
+  // Min(Threshold(Distance to A), Threshold(Distance to B)) against the same Min over
+  // MathEval distances (evaluated everywhere): identical sizes, including where one
+  // criterion's size is below the other's SizeMin (B not searched at all) and where
+  // both are at SizeMax.
+  BuildContext ctx;
+  const std::vector<Vec3> where = {{0, 0, 0}, {1, 0, 0}, {4, 1, 0}, {6, -1, 0}};
+  ctx.point_position = [&](int tag) -> std::optional<Vec3> {
+    if (tag < 1 || tag > 4) return std::nullopt;
+    return where[static_cast<std::size_t>(tag - 1)];
+  };
+  const auto dist_to = [&](int a, int b) {
+    std::string f = "Min(";
+    for (int t = a; t <= b; ++t) {
+      const Vec3& p = where[static_cast<std::size_t>(t - 1)];
+      if (t > a) f += t == b ? ", " : ", Min(";
+      f += "Sqrt((x-(" + std::to_string(p.x) + "))^2+(y-(" + std::to_string(p.y) + "))^2+z^2)";
+    }
+    for (int t = a + 2; t <= b; ++t) f += ")";
+    return f + ")";
+  };
+  FieldSet fs;
+  fs.define(1, "Distance");
+  fs.set(1, "PointsList", std::vector<double>{1, 2});
+  fs.define(2, "Distance");
+  fs.set(2, "PointsList", std::vector<double>{3, 4});
+  fs.define(3, "MathEval");
+  fs.set(3, "F", dist_to(1, 2));
+  fs.define(4, "MathEval");
+  fs.set(4, "F", dist_to(3, 4));
+  // Fields 11, 12: Thresholds of the Distances; 13, 14: of the MathEvals.
+  for (int id : {11, 12, 13, 14}) {
+    const bool first = id % 2 == 1;
+    fs.define(id, "Threshold");
+    fs.set(id, "InField", static_cast<double>(id <= 12 ? (first ? 1 : 2) : (first ? 3 : 4)));
+    fs.set(id, "SizeMin", first ? 0.1 : 0.3);
+    fs.set(id, "SizeMax", 1.0);
+    fs.set(id, "DistMin", 0.2);
+    fs.set(id, "DistMax", 3.0);
+  }
+  fs.define(20, "Min");
+  fs.set(20, "FieldsList", std::vector<double>{11, 12});
+  fs.define(21, "Min");
+  fs.set(21, "FieldsList", std::vector<double>{13, 14});
+  std::vector<Vec3> q;
+  for (int i = -30; i <= 110; ++i)
+    for (int j = -20; j <= 20; j += 5) q.push_back({0.1 * i, 0.1 * j, 0.05 * (j % 3)});
+  q.push_back({4, 4, 0});   // 3 from point 3: at DistMax
+  const std::vector<double> fast = sm::field::testing::eval_field(fs, 20, q, ctx);
+  const std::vector<double> slow = sm::field::testing::eval_field(fs, 21, q, ctx);
+  const std::vector<double> first = sm::field::testing::eval_field(fs, 11, q, ctx);
+  int below_other_min = 0, both_max = 0;
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    CHECK(fast[i] == doctest::Approx(slow[i]).epsilon(1e-12));
+    below_other_min += first[i] < 0.3 ? 1 : 0;
+    both_max += fast[i] == 1.0 ? 1 : 0;
+  }
+  CHECK(below_other_min > 20);
+  CHECK(both_max > 20);
 }
