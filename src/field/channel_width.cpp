@@ -44,15 +44,19 @@ constexpr double kDefaultCapSpacings = 64;
 }  // namespace
 
 struct ChannelWidths::Impl {
-  std::vector<Vec3> pts;
-  std::vector<std::uint32_t> chain, prev, next;  // per sample; prev/next == self at an open end
+  // The samples are held once: by `own` until the k-d tree takes them, then by the tree.
+  std::vector<Vec3> own;
+  std::span<const Vec3> pts;                     // the samples, wherever they are held
+  std::vector<std::uint32_t> prev, next;         // per sample; prev/next == self at an open end
+  // Only the set-up's searches read these; released after them.
+  std::vector<std::uint32_t> chain;              // per sample
   std::vector<double> s;                         // arc length from the chain's first sample
   std::vector<double> length;                    // per chain (closed: with the closing segment)
   std::vector<char> closed;
   std::vector<Vec3> side;                        // unit normal to the coast in the surface (0: unknown)
   std::vector<double> spacing;                   // larger of the two segments at the sample
   std::vector<double> w_pos, w_neg;              // width on the +side / -side, at most cap
-  std::vector<int> water;                        // per chain: CoastChain::water_side
+  std::vector<int> water;                        // per chain: CoastChain::water_side (set-up only)
   double cap = kMaxLc;
   std::unique_ptr<KdTree> tree;
   // Per cell, the smallest width that a point there can read: a point reads the
@@ -71,15 +75,22 @@ ChannelWidths::ChannelWidths(std::vector<CoastChain> chains, double cap, int thr
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   m.cap = cap;
+  std::size_t total = 0;
+  for (const CoastChain& c : chains) total += c.points.size();
+  m.own.reserve(total);
+  m.chain.reserve(total);
+  m.s.reserve(total);
+  m.prev.reserve(total);
+  m.next.reserve(total);
   for (const CoastChain& c : chains) {
     if (c.points.empty()) continue;
-    const auto first = static_cast<std::uint32_t>(m.pts.size());
+    const auto first = static_cast<std::uint32_t>(m.own.size());
     const auto id = static_cast<std::uint32_t>(m.length.size());
     const std::size_t n = c.points.size();
     double arc = 0;
     for (std::size_t k = 0; k < n; ++k) {
       if (k > 0) arc += norm(c.points[k] - c.points[k - 1]);
-      m.pts.push_back(c.points[k]);
+      m.own.push_back(c.points[k]);
       m.chain.push_back(id);
       m.s.push_back(arc);
       const bool wrap = c.closed && n > 2;
@@ -92,6 +103,9 @@ ChannelWidths::ChannelWidths(std::vector<CoastChain> chains, double cap, int thr
     m.closed.push_back(wrap ? 1 : 0);
     m.water.push_back(c.water_side);
   }
+  // The chains' own copies of the points are not needed any more.
+  std::vector<CoastChain>().swap(chains);
+  m.pts = m.own;
   const std::size_t n = m.pts.size();
   // The surface's normal: a flat model's plane (z constant), else the sphere's
   // radial direction (the PolarSphere models are centred on the origin).
@@ -115,7 +129,9 @@ ChannelWidths::ChannelWidths(std::vector<CoastChain> chains, double cap, int thr
   m.w_pos.assign(n, m.cap);
   m.w_neg.assign(n, m.cap);
   if (n == 0 || m.cap == 0) return;
-  m.tree = std::make_unique<KdTree>(m.pts);
+  m.tree = std::make_unique<KdTree>(std::move(m.own));
+  m.pts = m.tree->points();
+  std::vector<Vec3>().swap(m.own);
   // Each sample's search reads the tree and writes only its own widths: samples are
   // independent, so chunks of them run on `threads` threads with the same result.
   const auto search = [&m](std::size_t i) {
@@ -158,6 +174,11 @@ ChannelWidths::ChannelWidths(std::vector<CoastChain> chains, double cap, int thr
   parallel_for_chunks(resolve_thread_count(threads), n, kSamplesPerChunk, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) search(i);
   });
+  std::vector<std::uint32_t>().swap(m.chain);
+  std::vector<double>().swap(m.s);
+  std::vector<double>().swap(m.length);
+  std::vector<char>().swap(m.closed);
+  std::vector<int>().swap(m.water);
   std::vector<double> least(n);
   for (std::size_t i = 0; i < n; ++i)
     least[i] = std::min({m.w_pos[i], m.w_neg[i], m.w_pos[m.prev[i]], m.w_neg[m.prev[i]], m.w_pos[m.next[i]],

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "field/bounded_field.h"
 #include "field/error.h"
 #include "field/kinds.h"
 #include "field/knn.h"
@@ -13,11 +14,15 @@
 namespace sm::field {
 namespace {
 
-class DistanceField final : public SizeField {
+class DistanceField final : public SizeField, public BoundedEval {
  public:
   DistanceField(std::vector<Vec3> samples, KnnOptions opts) : tree_(std::move(samples), opts) {}
 
   void eval(std::span<const Vec3> pts, std::span<double> h) const override { tree_.nearest(pts, h); }
+  // Beyond the limit the search stops: a far point costs one descent of the tree.
+  void eval_below(std::span<const Vec3> pts, std::span<const double> limit, std::span<double> h) const override {
+    tree_.nearest_below(pts, limit, h);
+  }
 
  private:
   KdTree tree_;

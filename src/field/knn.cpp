@@ -241,6 +241,27 @@ KdTree::~KdTree() = default;
 
 void KdTree::nearest(std::span<const Vec3> queries, std::span<double> dist,
                      std::span<std::uint32_t> index) const {
+  const double none = std::numeric_limits<double>::infinity();
+  nearest_capped(queries, std::span<const double>(&none, 1), dist, index);
+}
+
+void KdTree::nearest_below(std::span<const Vec3> queries, std::span<const double> limit,
+                           std::span<double> dist) const {
+  // The reach is a hair above the limit, so that a point at a distance up to the limit
+  // is found whatever the rounding of its squared distance; no limit (or a non-positive
+  // one) is no cut.
+  constexpr double kReachMargin = 1e-9;
+  std::vector<double> far2(limit.size());
+  for (std::size_t i = 0; i < limit.size(); ++i) {
+    const double reach = limit[i] * (1 + kReachMargin);
+    far2[i] = limit[i] > 0 && std::isfinite(reach * reach) ? reach * reach : std::numeric_limits<double>::infinity();
+  }
+  nearest_capped(queries, far2, dist, {});
+}
+
+void KdTree::nearest_capped(std::span<const Vec3> queries, std::span<const double> far2_of,
+                            std::span<double> dist, std::span<std::uint32_t> index) const {
+  constexpr std::uint32_t kNoIndex = std::numeric_limits<std::uint32_t>::max();
   if (!impl_) {
     for (double& d : dist) d = kMaxLc;
     for (std::uint32_t& i : index) i = std::numeric_limits<std::uint32_t>::max();
@@ -252,6 +273,8 @@ void KdTree::nearest(std::span<const Vec3> queries, std::span<double> dist,
   std::vector<std::uint32_t> order;
   if (opts_.sort_queries && queries.size() > 1) order = morton_order(queries);
   std::size_t prev = NearestResult::kNone;
+  // The current query's cap (squared).
+  double far2 = std::numeric_limits<double>::infinity();
 
   // One bounded search, seeded with the previous answer: (index, squared
   // distance). If nothing beats the seed (possible only with eps > 0, which
@@ -261,23 +284,29 @@ void KdTree::nearest(std::span<const Vec3> queries, std::span<double> dist,
     std::size_t index;
     double d2;
   };
+  // Without a cap (far2 infinite) every finite query finds its nearest point; with
+  // one, a query that finds none within sqrt(far2) keeps the previous seed for the next.
   auto search = [&](const Vec3& q) -> Found {
     double bound = std::numeric_limits<double>::infinity();
     const std::size_t seed = prev;
     // Slightly inflated so the previous answer itself still qualifies.
     if (seed != NearestResult::kNone) bound = norm2(points_[seed] - q) * (1 + 1e-9) + 1e-300;
+    const bool seeded = !(far2 < bound);  // also when the bound is NaN (a non-finite query)
+    if (!seeded) bound = far2;
     NearestResult r(bound);
     impl_->tree.findNeighbors(r, &q.x, params);
     Found f{r.index(), r.best()};
-    if (f.index == NearestResult::kNone && seed != NearestResult::kNone && std::isfinite(bound))
+    if (f.index == NearestResult::kNone && seeded && seed != NearestResult::kNone && std::isfinite(bound))
       f = {seed, norm2(points_[seed] - q)};
-    prev = f.index;
+    if (f.index != NearestResult::kNone || std::isinf(far2)) prev = f.index;
     return f;
   };
   auto store = [&](std::size_t i, const Found& f) {
-    if (f.index == NearestResult::kNone) {  // only for a non-finite query
-      dist[i] = std::numeric_limits<double>::quiet_NaN();
-      if (!index.empty()) index[i] = std::numeric_limits<std::uint32_t>::max();
+    if (f.index == NearestResult::kNone) {  // a non-finite query, or none within the cap
+      const Vec3& q = queries[i];
+      const bool beyond = std::isfinite(far2) && std::isfinite(q.x + q.y + q.z);
+      dist[i] = beyond ? std::numeric_limits<double>::infinity() : std::numeric_limits<double>::quiet_NaN();
+      if (!index.empty()) index[i] = kNoIndex;
       return;
     }
     dist[i] = std::sqrt(f.d2);
@@ -293,11 +322,14 @@ void KdTree::nearest(std::span<const Vec3> queries, std::span<double> dist,
   for (std::size_t k = 0; k < queries.size(); ++k) {
     const std::size_t i = order.empty() ? k : order[k];
     const Vec3 q = queries[i];
+    if (!far2_of.empty()) far2 = far2_of[far2_of.size() == 1 ? 0 : i];
     if (!two_level || prev == NearestResult::kNone) {
       store(i, search(q));
       continue;
     }
     double best2 = norm2(points_[prev] - q);
+    std::size_t arg = prev;
+    if (far2 < best2) best2 = far2, arg = NearestResult::kNone;  // the seed lies beyond the cap
     if (!(best2 >= im.tau * im.tau)) {  // also catches a NaN query
       store(i, search(q));
       continue;
@@ -313,7 +345,6 @@ void KdTree::nearest(std::span<const Vec3> queries, std::span<double> dist,
     }
     // The bucket that may come closest is scanned first: its answer is
     // usually the nearest, and the bound it gives prunes most of the others.
-    std::size_t arg = prev;
     gaps.clear();
     std::size_t first = 0;
     for (std::uint32_t b : near) {
@@ -330,6 +361,11 @@ void KdTree::nearest(std::span<const Vec3> queries, std::span<double> dist,
         const double d2 = dx * dx + dy * dy + dz * dz;
         if (d2 < best2 || (d2 == best2 && im.bid[m] < arg)) best2 = d2, arg = im.bid[m];
       }
+    }
+    if (arg == NearestResult::kNone) {  // nothing within the cap
+      dist[i] = std::numeric_limits<double>::infinity();
+      if (!index.empty()) index[i] = kNoIndex;
+      continue;
     }
     prev = arg;
     dist[i] = std::sqrt(best2);

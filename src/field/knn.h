@@ -39,6 +39,12 @@ class KdTree {
   void nearest(std::span<const Vec3> queries, std::span<double> dist,
                std::span<std::uint32_t> index = {}) const;
 
+  /// As nearest(), but exact only up to `limit`: a query whose nearest point is
+  /// farther may get +infinity instead (one with no point within limit (1 + 1e-9)
+  /// does), and far queries stop early (a Threshold's Distance beyond its DistMax).
+  /// `limit`: one value for every query, or one per query.
+  void nearest_below(std::span<const Vec3> queries, std::span<const double> limit, std::span<double> dist) const;
+
   /// As nearest(), but only looking as far as max_dist (one value for every
   /// query, or one per query): a query with no point nearer gets dist = +infinity
   /// and index = UINT32_MAX. Far queries then cost one descent of the tree
@@ -55,6 +61,11 @@ class KdTree {
                     const std::function<double(std::uint32_t, double)>& visit) const;
 
  private:
+  // nearest() with the search cut at squared distance far2 (one value, or one per query;
+  // infinite: no cut); a query with no point nearer gets +infinity and UINT32_MAX.
+  void nearest_capped(std::span<const Vec3> queries, std::span<const double> far2, std::span<double> dist,
+                      std::span<std::uint32_t> index) const;
+
   struct Impl;
   std::vector<Vec3> points_;  // FLANN indexes this memory in place
   KnnOptions opts_;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "field/bounded_field.h"
 #include "field/kinds.h"
 
 namespace sm::field {
@@ -12,8 +13,9 @@ namespace {
 
 class ExtremumField final : public CompositeField {
  public:
-  ExtremumField(std::vector<std::pair<int, FieldPtr>> in, bool is_min)
-      : in_(std::move(in)), is_min_(is_min) {}
+  ExtremumField(std::vector<std::pair<int, FieldPtr>> in, bool is_min) : in_(std::move(in)), is_min_(is_min) {
+    for (const auto& [id, f] : in_) lowers_.push_back(is_min_ ? dynamic_cast<const MinInput*>(f.get()) : nullptr);
+  }
 
   bool is_min() const { return is_min_; }
 
@@ -22,7 +24,14 @@ class ExtremumField final : public CompositeField {
     std::fill(h.begin(), h.end(), is_min_ ? kMaxLc : -kMaxLc);
     if (!which.empty()) std::fill(which.begin(), which.end(), -1);
     std::vector<double> tmp(pts.size());
-    for (const auto& [id, f] : in_) {
+    for (std::size_t n = 0; n < in_.size(); ++n) {
+      const auto& [id, f] = in_[n];
+      // An input that can skip the points where it cannot be the smallest does so
+      // (without argmin: there a tie must still be seen).
+      if (lowers_[n] && which.empty()) {
+        lowers_[n]->lower(on, pts, h);
+        continue;
+      }
       eval_input(*f, on, pts, tmp);
       for (std::size_t i = 0; i < pts.size(); ++i) {
         const bool better = is_min_ ? tmp[i] < h[i] : tmp[i] > h[i];
@@ -41,6 +50,7 @@ class ExtremumField final : public CompositeField {
 
  private:
   std::vector<std::pair<int, FieldPtr>> in_;
+  std::vector<const MinInput*> lowers_;  // per input: itself, when it is one
   bool is_min_;
 };
 

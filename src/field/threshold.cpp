@@ -2,41 +2,94 @@
 // of section 3.1 (linear or sigmoid ramp), Gmsh's Threshold field.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
+#include "field/bounded_field.h"
 #include "field/kinds.h"
 
 namespace sm::field {
 namespace {
 
-class ThresholdField final : public CompositeField {
+class ThresholdField final : public CompositeField, public MinInput {
  public:
   ThresholdField(FieldPtr in, double size_min, double size_max, double dist_min, double dist_max,
                  bool sigmoid, bool stop)
       : in_(std::move(in)), size_min_(size_min), size_max_(size_max), dist_min_(dist_min),
-        dist_max_(dist_max), sigmoid_(sigmoid), stop_(stop) {}
+        dist_max_(dist_max), sigmoid_(sigmoid), stop_(stop), bounded_(dynamic_cast<const BoundedEval*>(in_.get())) {}
+
+  // Inside a Min: only a distance below the one whose size is h[i] can lower h[i], so a
+  // Distance input is searched that far (and no farther than DistMax, beyond which
+  // every distance gives the same size). The ramp is inverted with a margin of
+  // kRampMargin in r: beyond the limit the computed size is at least h[i] whatever the
+  // rounding (the sizes' spread, at least kSpread of SizeMax, keeps the margin's size
+  // step far above it), so the result is that of evaluating and taking the min.
+  void lower(const EntityRef* on, std::span<const Vec3> pts, std::span<double> h) const override {
+    constexpr double kRampMargin = 1e-9, kSpread = 1e-5, kBelowMin = 1e-12, kFarOrigin = 1e3;
+    const double span = dist_max_ - dist_min_;
+    const double spread = size_max_ - size_min_;
+    std::vector<double> v;
+    // Where the margin would not cover the rounding (a sigmoid, sizes almost equal,
+    // DistMin far from 0 against the span), every point is evaluated.
+    const bool invertible = !sigmoid_ && std::isfinite(span) && span > 0 && spread > kSpread * size_max_ &&
+                            std::fabs(dist_min_) <= kFarOrigin * span;
+    if (!bounded_ || !invertible) {
+      v.resize(pts.size());
+      run(on, pts, v);
+      for (std::size_t i = 0; i < h.size(); ++i)
+        if (v[i] < h[i]) h[i] = v[i];
+      return;
+    }
+    std::vector<std::uint32_t> which;
+    std::vector<Vec3> at;
+    std::vector<double> limit;
+    for (std::size_t i = 0; i < h.size(); ++i) {
+      // No distance gives a size below SizeMin (up to rounding).
+      if (h[i] < size_min_ * (1 - kBelowMin)) continue;
+      double lim = dist_max_;  // also for a NaN h
+      if (h[i] < size_max_) lim = std::min(lim, dist_min_ + ((h[i] - size_min_) / spread + kRampMargin) * span);
+      which.push_back(static_cast<std::uint32_t>(i));
+      at.push_back(pts[i]);
+      limit.push_back(lim);
+    }
+    if (which.empty()) return;
+    v.resize(at.size());
+    bounded_->eval_below(at, limit, v);
+    for (double& x : v) x = size_at(x);
+    for (std::size_t k = 0; k < which.size(); ++k)
+      if (v[k] < h[which[k]]) h[which[k]] = v[k];
+  }
 
  protected:
   void run(const EntityRef* on, std::span<const Vec3> pts, std::span<double> h) const override {
-    eval_input(*in_, on, pts, h);
-    const double span = dist_max_ - dist_min_;
-    for (double& v : h) {
-      const double d = v;
-      // DistMin == DistMax is a step at DistMin (Gmsh would divide by zero).
-      double r = span > 0 ? (d - dist_min_) / span : (d > dist_min_ ? 1.0 : 0.0);
-      r = std::clamp(r, 0.0, 1.0);
-      if (sigmoid_) {
-        const double e = std::exp(12 * r - 6);
-        r = e / (1 + e);
-      }
-      v = size_min_ * (1 - r) + size_max_ * r;
-      if (stop_ && d >= dist_max_) v = kMaxLc;
+    // Every input above DistMax gives r = 1 (and StopAtDistMax's MAX_LC), so those
+    // values need not be exact: a Distance input stops its search there.
+    if (bounded_ && std::isfinite(dist_max_ - dist_min_)) {
+      bounded_->eval_below(pts, std::span<const double>(&dist_max_, 1), h);
+    } else {
+      eval_input(*in_, on, pts, h);
     }
+    for (double& v : h) v = size_at(v);
   }
 
  private:
+  double size_at(double d) const {
+    const double span = dist_max_ - dist_min_;
+    // DistMin == DistMax is a step at DistMin (Gmsh would divide by zero).
+    double r = span > 0 ? (d - dist_min_) / span : (d > dist_min_ ? 1.0 : 0.0);
+    r = std::clamp(r, 0.0, 1.0);
+    if (sigmoid_) {
+      const double e = std::exp(12 * r - 6);
+      r = e / (1 + e);
+    }
+    const double v = size_min_ * (1 - r) + size_max_ * r;
+    return stop_ && d >= dist_max_ ? kMaxLc : v;
+  }
+
   FieldPtr in_;
   double size_min_, size_max_, dist_min_, dist_max_;
   bool sigmoid_, stop_;
+  const BoundedEval* bounded_;  // in_ itself, when it can stop early
 };
 
 FieldPtr make_threshold(const BuildInputs& in) {

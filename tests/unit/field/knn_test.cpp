@@ -114,3 +114,60 @@ TEST_CASE("knn: nearest_within agrees with brute force inside the radius, +inf b
   CHECK(near > 300);
   CHECK(near < static_cast<int>(q.size()) - 300);
 }
+
+TEST_CASE("knn: nearest_below is exact up to the limit and above it beyond, on both search paths") {
+  // 6000 samples: the coarse tree over buckets is built (4096 or more), and queries far
+  // from the samples take it; near ones take the seeded fine search.
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<Vec3> pts(6000), q(4000);
+  for (Vec3& p : pts) p = {u(rng), u(rng), 0.05 * u(rng)};
+  for (Vec3& p : q) p = {2 * u(rng), 2 * u(rng), 1.5 * u(rng)};
+  q.push_back(pts[40]);                          // on a point
+  q.push_back(pts[41] + Vec3{0, 0, 0.8});         // at the limit below, up to rounding
+  const KdTree tree(pts);
+  std::vector<double> full(q.size()), below(q.size());
+  tree.nearest(q, full);
+  const double limit = norm(q.back() - pts[41]);
+  tree.nearest_below(q, std::span<const double>(&limit, 1), below);
+  int within = 0, beyond = 0;
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    if (full[i] <= limit) {
+      ++within;
+      CHECK(below[i] == full[i]);
+    } else {
+      ++beyond;
+      CHECK(below[i] > limit);
+      CHECK((below[i] == full[i] || std::isinf(below[i])));
+    }
+  }
+  CHECK(below.back() == full.back());
+  CHECK(within > 500);
+  CHECK(beyond > 500);
+  // Far queries stop early: most of them read +infinity, not their distance.
+  int stopped = 0;
+  for (double d : below) stopped += std::isinf(d) ? 1 : 0;
+  CHECK(stopped > beyond / 2);
+  // No limit (or none that bounds anything) is the plain search.
+  const double none = std::numeric_limits<double>::infinity();
+  tree.nearest_below(q, std::span<const double>(&none, 1), below);
+  for (std::size_t i = 0; i < q.size(); ++i) CHECK(below[i] == full[i]);
+  // One limit per query: every other query without one.
+  std::vector<double> limits(q.size());
+  for (std::size_t i = 0; i < q.size(); ++i) limits[i] = i % 2 ? limit : none;
+  tree.nearest_below(q, limits, below);
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    if (i % 2 == 0 || full[i] <= limit) {
+      CHECK(below[i] == full[i]);
+    } else {
+      CHECK(below[i] > limit);
+    }
+  }
+  // A non-finite query still reads NaN.
+  const std::vector<Vec3> bad = {{std::nan(""), 0, 0}, pts[3]};
+  std::vector<double> bd(2);
+  const double half = 0.5;
+  tree.nearest_below(bad, std::span<const double>(&half, 1), bd);
+  CHECK(std::isnan(bd[0]));
+  CHECK(bd[1] == 0);
+}

@@ -1,4 +1,7 @@
 #include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include <doctest/doctest.h>
 
@@ -66,4 +69,112 @@ TEST_CASE("threshold: negative or NaN sizes and reversed distances are rejected"
   fs.set(2, "SizeMin", 0.1);
   fs.set(2, "DistMax", 1.0);
   CHECK_THROWS_AS(fs.build(2, {}), FieldError);
+}
+
+TEST_CASE("threshold: over a Distance, the search stops at DistMax and the sizes stay the same") {
+  // The same Threshold over a Distance field (which stops its search at DistMax) and over
+  // a MathEval of that distance (which cannot): identical sizes, linear, sigmoid, a step
+  // (DistMin = DistMax) and StopAtDistMax, including points exactly at DistMax.
+  BuildContext ctx;
+  ctx.point_position = [](int tag) -> std::optional<Vec3> {
+    if (tag < 1 || tag > 3) return std::nullopt;
+    return Vec3{static_cast<double>(tag), 0, 0};
+  };
+  std::vector<Vec3> q;
+  for (int i = -40; i <= 80; ++i) q.push_back({0.1 * i, 0.5, 0});
+  q.push_back({3, 2, 0});   // 2 from point 3: at DistMax below
+  struct Case {
+    double dmin, dmax, sigmoid, stop;
+  };
+  for (const Case c : {Case{0.5, 2, 0, 0}, Case{0.5, 2, 1, 0}, Case{2, 2, 0, 0}, Case{0.5, 2, 0, 1}}) {
+    CAPTURE(c.dmin);
+    CAPTURE(c.sigmoid);
+    CAPTURE(c.stop);
+    FieldSet fs;
+    fs.define(1, "Distance");
+    fs.set(1, "PointsList", std::vector<double>{1, 2, 3});
+    fs.define(2, "MathEval");
+    fs.set(2, "F", std::string("Min(Min(Sqrt((x-1)^2+y^2+z^2), Sqrt((x-2)^2+y^2+z^2)), Sqrt((x-3)^2+y^2+z^2))"));
+    for (int id : {3, 4}) {
+      fs.define(id, "Threshold");
+      fs.set(id, "InField", id == 3 ? 1.0 : 2.0);
+      fs.set(id, "SizeMin", 0.1);
+      fs.set(id, "SizeMax", 1.0);
+      fs.set(id, "DistMin", c.dmin);
+      fs.set(id, "DistMax", c.dmax);
+      fs.set(id, "Sigmoid", c.sigmoid);
+      fs.set(id, "StopAtDistMax", c.stop);
+    }
+    const std::vector<double> d = sm::field::testing::eval_field(fs, 1, q, ctx);
+    const std::vector<double> bounded = sm::field::testing::eval_field(fs, 3, q, ctx);
+    const std::vector<double> plain = sm::field::testing::eval_field(fs, 4, q, ctx);
+    int far = 0;
+    for (std::size_t i = 0; i < q.size(); ++i) {
+      CHECK(bounded[i] == doctest::Approx(plain[i]).epsilon(1e-12));
+      far += d[i] > c.dmax ? 1 : 0;
+    }
+    CHECK(far > 10);
+    CHECK(d.back() == doctest::Approx(2).epsilon(1e-15));
+  }
+}
+
+TEST_CASE("threshold: inside a Min, a Distance is searched only where it can lower the size; same sizes") {
+  // Min(Threshold(Distance to A), Threshold(Distance to B)) against the same Min over
+  // MathEval distances (evaluated everywhere): identical sizes, including where one
+  // criterion's size is below the other's SizeMin (B not searched at all) and where
+  // both are at SizeMax.
+  BuildContext ctx;
+  const std::vector<Vec3> where = {{0, 0, 0}, {1, 0, 0}, {4, 1, 0}, {6, -1, 0}};
+  ctx.point_position = [&](int tag) -> std::optional<Vec3> {
+    if (tag < 1 || tag > 4) return std::nullopt;
+    return where[static_cast<std::size_t>(tag - 1)];
+  };
+  const auto dist_to = [&](int a, int b) {
+    std::string f = "Min(";
+    for (int t = a; t <= b; ++t) {
+      const Vec3& p = where[static_cast<std::size_t>(t - 1)];
+      if (t > a) f += t == b ? ", " : ", Min(";
+      f += "Sqrt((x-(" + std::to_string(p.x) + "))^2+(y-(" + std::to_string(p.y) + "))^2+z^2)";
+    }
+    for (int t = a + 2; t <= b; ++t) f += ")";
+    return f + ")";
+  };
+  FieldSet fs;
+  fs.define(1, "Distance");
+  fs.set(1, "PointsList", std::vector<double>{1, 2});
+  fs.define(2, "Distance");
+  fs.set(2, "PointsList", std::vector<double>{3, 4});
+  fs.define(3, "MathEval");
+  fs.set(3, "F", dist_to(1, 2));
+  fs.define(4, "MathEval");
+  fs.set(4, "F", dist_to(3, 4));
+  // Fields 11, 12: Thresholds of the Distances; 13, 14: of the MathEvals.
+  for (int id : {11, 12, 13, 14}) {
+    const bool first = id % 2 == 1;
+    fs.define(id, "Threshold");
+    fs.set(id, "InField", static_cast<double>(id <= 12 ? (first ? 1 : 2) : (first ? 3 : 4)));
+    fs.set(id, "SizeMin", first ? 0.1 : 0.3);
+    fs.set(id, "SizeMax", 1.0);
+    fs.set(id, "DistMin", 0.2);
+    fs.set(id, "DistMax", 3.0);
+  }
+  fs.define(20, "Min");
+  fs.set(20, "FieldsList", std::vector<double>{11, 12});
+  fs.define(21, "Min");
+  fs.set(21, "FieldsList", std::vector<double>{13, 14});
+  std::vector<Vec3> q;
+  for (int i = -30; i <= 110; ++i)
+    for (int j = -20; j <= 20; j += 5) q.push_back({0.1 * i, 0.1 * j, 0.05 * (j % 3)});
+  q.push_back({4, 4, 0});   // 3 from point 3: at DistMax
+  const std::vector<double> fast = sm::field::testing::eval_field(fs, 20, q, ctx);
+  const std::vector<double> slow = sm::field::testing::eval_field(fs, 21, q, ctx);
+  const std::vector<double> first = sm::field::testing::eval_field(fs, 11, q, ctx);
+  int below_other_min = 0, both_max = 0;
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    CHECK(fast[i] == doctest::Approx(slow[i]).epsilon(1e-12));
+    below_other_min += first[i] < 0.3 ? 1 : 0;
+    both_max += fast[i] == 1.0 ? 1 : 0;
+  }
+  CHECK(below_other_min > 20);
+  CHECK(both_max > 20);
 }
