@@ -99,7 +99,7 @@ class Polyline {
 // points are mapped to the sphere where a scan reads them (a division and a few products
 // each, about four times per point and scan): kept for every curve between the rounds,
 // they were 24 bytes a source point, 220 MB of the import's peak on the full-resolution
-// world (docs/coastlines.md).
+// world (docs/kernel.md, "Memory of the 2D pipeline": the 3 km world's peak is the import's).
 class CurveView {
  public:
   CurveView(const WorkCurve& c, const geo::PolarSphere& ps, const DeviationOptions& opt)
