@@ -95,13 +95,15 @@ class Polyline {
 };
 
 // One curve seen by the pass: its control points, spans and source points on the sphere.
-// Spans are sampled when first asked for and kept for the rest of the scan.
+// Spans are sampled when first asked for and kept for the rest of the scan. The source
+// points are mapped to the sphere where a scan reads them (a division and a few products
+// each, about four times per point and scan): kept for every curve between the rounds,
+// they were 24 bytes a source point, 220 MB of the import's peak on the full-resolution
+// world (docs/kernel.md, "Memory of the 2D pipeline": the 3 km world's peak is the import's).
 class CurveView {
  public:
-  CurveView(const WorkCurve& c, const std::vector<Vec3>& src, const geo::PolarSphere& ps,
-            const DeviationOptions& opt)
-      : c_(c), ps_(ps), opt_(opt), n_(static_cast<long>(c.full.size())), m_(static_cast<long>(c.keep.size())),
-        src_(src) {
+  CurveView(const WorkCurve& c, const geo::PolarSphere& ps, const DeviationOptions& opt)
+      : c_(c), ps_(ps), opt_(opt), n_(static_cast<long>(c.full.size())), m_(static_cast<long>(c.keep.size())) {
     if (opt.bspline) {
       // A piece has spans -1 to m-1; a periodic curve's span k is span k mod m.
       const std::size_t count = static_cast<std::size_t>(c.periodic ? m_ : m_ + 1);
@@ -121,7 +123,7 @@ class CurveView {
     long b = s + 1 < m_ ? static_cast<long>(c_.keep[static_cast<std::size_t>(s + 1)]) : c_.keep[0] + n_;
     return {a, b};
   }
-  const Vec3& source(long j) const { return src_[static_cast<std::size_t>(((j % n_) + n_) % n_)]; }
+  Vec3 source(long j) const { return ps_.point(c_.uv[static_cast<std::size_t>(((j % n_) + n_) % n_)]); }
   double bound(long j) const {
     const double g = c_.gamma[static_cast<std::size_t>(((j % n_) + n_) % n_)];
     if (opt_.fixed > 0) return opt_.fixed;
@@ -177,7 +179,6 @@ class CurveView {
   const geo::PolarSphere& ps_;
   const DeviationOptions& opt_;
   long n_, m_;
-  const std::vector<Vec3>& src_;
   std::vector<Vec3> samples_;
   std::vector<char> sampled_;
 };
@@ -193,10 +194,9 @@ struct SegmentResult {
   long event_at = -1;
 };
 
-// What the pass keeps of one curve between rounds: its source points on the sphere, each
-// segment's result and each source point's distance to the curve.
+// What the pass keeps of one curve between rounds: each segment's result and each source
+// point's distance to the curve.
 struct CurveState {
-  std::vector<Vec3> src;
   std::vector<SegmentResult> seg;
   std::vector<double> dist;
   std::vector<char> fresh;  // per control point: put back by the last change
@@ -231,11 +231,7 @@ CurveScan scan_curve(const WorkCurve& c, const geo::PolarSphere& ps, const Devia
                      const std::vector<char>* fresh) {
   CurveScan out;
   if (c.keep.size() < 2 || c.open_boundary) return out;
-  if (st.src.size() != c.uv.size()) {
-    st.src.resize(c.uv.size());
-    for (std::size_t i = 0; i < c.uv.size(); ++i) st.src[i] = ps.point(c.uv[i]);
-  }
-  CurveView v(c, st.src, ps, opt);
+  CurveView v(c, ps, opt);
   const long n = static_cast<long>(c.full.size());
   const long m = static_cast<long>(c.keep.size());
   st.seg.resize(static_cast<std::size_t>(v.segments()));
@@ -387,7 +383,7 @@ void aggregate(const CurveState& st, CurveScan& out) {
 
 // Inserts the middle of each source segment `split` (by its first point; sorted below)
 // into the curve's points, renumbers `keep` and `add` (sorted) and adds the new points to
-// `add`: they become control points. The state's source points and distances follow
+// `add`: they become control points. The state's distances follow
 // (a middle's distance is measured when its segments are scanned again).
 void split_segments(WorkCurve& c, std::vector<std::uint32_t>& split, const geo::PolarSphere& ps,
                     std::vector<std::uint32_t>& keep, std::vector<std::uint32_t>& add, CurveState& st) {
@@ -398,12 +394,10 @@ void split_segments(WorkCurve& c, std::vector<std::uint32_t>& split, const geo::
   std::vector<geo::LonLat> full;
   std::vector<Vec2> uv;
   std::vector<double> gamma;
-  std::vector<Vec3> src;
   std::vector<double> dist;
   full.reserve(n + split.size());
   uv.reserve(n + split.size());
   gamma.reserve(n + split.size());
-  src.reserve(n + split.size());
   dist.reserve(n + split.size());
   std::vector<std::uint32_t> mids;
   for (std::size_t j = 0, k = 0; j < n; ++j) {
@@ -411,7 +405,6 @@ void split_segments(WorkCurve& c, std::vector<std::uint32_t>& split, const geo::
     full.push_back(c.full[j]);
     uv.push_back(c.uv[j]);
     gamma.push_back(c.gamma[j]);
-    src.push_back(st.src[j]);
     dist.push_back(st.dist[j]);
     if (k < split.size() && split[k] == j) {
       const std::size_t e = (j + 1) % n;   // a periodic curve's last segment closes on 0
@@ -420,7 +413,6 @@ void split_segments(WorkCurve& c, std::vector<std::uint32_t>& split, const geo::
       full.push_back(ps.lonlat_from_param(mid));
       uv.push_back(mid);
       gamma.push_back(std::min(c.gamma[j], c.gamma[e]));
-      src.push_back(ps.point(mid));
       dist.push_back(0.0);
       ++k;
     }
@@ -428,7 +420,6 @@ void split_segments(WorkCurve& c, std::vector<std::uint32_t>& split, const geo::
   c.full = std::move(full);
   c.uv = std::move(uv);
   c.gamma = std::move(gamma);
-  st.src = std::move(src);
   st.dist = std::move(dist);
   for (SegmentResult& r : st.seg) {
     if (r.max_at >= 0) r.max_at = new_index[static_cast<std::size_t>(r.max_at)];
@@ -545,7 +536,12 @@ DeviationReport bound_deviation(std::vector<WorkCurve>& curves, const DeviationO
       }
     }
   });
+  // Every source point's distance in one array for the 95th percentile, each curve's freed
+  // as it is copied (the two at once were 8 bytes a source point more at the import's peak).
+  std::size_t total = 0;
+  for (const CurveState& st : states) total += st.dist.size();
   std::vector<double> all;
+  all.reserve(total);
   for (std::size_t i = 0; i < curves.size(); ++i) {
     CurveScan s;
     aggregate(states[i], s);
@@ -560,6 +556,7 @@ DeviationReport bound_deviation(std::vector<WorkCurve>& curves, const DeviationO
     rep.narrow_features += s.narrow;
     rep.narrow_max = std::max(rep.narrow_max, s.narrow_max);
     all.insert(all.end(), states[i].dist.begin(), states[i].dist.end());
+    states[i] = CurveState{};
   }
   if (!all.empty()) {
     const std::size_t k = std::min(all.size() - 1, static_cast<std::size_t>(0.95 * static_cast<double>(all.size())));

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "base/release_memory.h"
 #include "coast/coastline_option_id.h"
 #include "coast/deviation.h"
 #include "coast/passages.h"
@@ -785,7 +786,12 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
   // The curves back within the bound of their source points (before the repair, which
   // then sees the curves as they will be drawn).
   w.rep.deviation = bound_deviation(w.curves, in_context(opt.deviation, opt));
+  // Its per-curve arrays (many from the heap) are freed: their pages are given back, or
+  // they stay resident under the repair's and the passages' arrays (the import's peak).
+  release_free_memory();
   if (auto e = repair_and_orient(w)) return *e;
+  // The same for the repair rounds' polygons and grids, before the passages' pool is made.
+  release_free_memory();
   if (auto e = close_narrow_passages(w)) return *e;
   w.step_done();
   assign_holes(w);
