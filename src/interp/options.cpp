@@ -158,6 +158,7 @@ void Options::reset() {
   strs_.assign(t.size(), std::string());
   colors_.assign(t.size(), Color{0, 0, 0, 255});
   boxes_.assign(t.size(), LonLatBox{0, 0, 0, 0});
+  set_.assign(t.size(), false);
   for (std::size_t i = 0; i < t.size(); ++i) {
     switch (t[i].kind) {
       case OptionKind::Number: nums_[i] = std::atof(std::string(t[i].default_text).c_str()); break;
@@ -202,6 +203,12 @@ const Color& Options::color(std::string_view name) const {
 
 const LonLatBox& Options::box(std::string_view name) const { return boxes_[index_of(name, OptionKind::Box)]; }
 
+bool Options::was_set(std::string_view name) const {
+  const std::size_t i = name_index().find(name);
+  SM_ASSERT(i != NameIndex::kNotFound, "unknown option");
+  return set_[i];
+}
+
 std::string Options::set_number(std::string_view name, double v, bool internal) {
   const std::size_t i = name_index().find(name);
   if (i == NameIndex::kNotFound) return fmt::format("unknown option '{}'", name);
@@ -230,6 +237,7 @@ std::string Options::set_number(std::string_view name, double v, bool internal) 
     break;
   }
   nums_[i] = v;
+  set_[i] = true;
   return "";
 }
 
@@ -245,6 +253,7 @@ std::string Options::set_string(std::string_view name, std::string v, bool inter
     if (split_node_data_names(v, &why).empty() && !why.empty()) return why;
   }
   strs_[i] = std::move(v);
+  set_[i] = true;
   return "";
 }
 
@@ -257,6 +266,7 @@ std::string Options::set_color(std::string_view name, const Color& c) {
   for (double x : c)
     if (!(x >= 0 && x <= 255)) return fmt::format("color components of '{}' must be in 0..255", name);
   colors_[i] = c;
+  set_[i] = true;
   return "";
 }
 
@@ -270,6 +280,7 @@ std::string Options::set_box(std::string_view name, const LonLatBox& b) {
     if (std::string why = io::normalise_picture_box(b[0], b[1], b[2], b[3], &normalised); !why.empty()) return why;
   }
   boxes_[i] = b;
+  set_[i] = true;
   return "";
 }
 

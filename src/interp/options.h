@@ -55,6 +55,11 @@ class Options {
   /// outside [-90, 90], W = E; io/picture.h's normalise_picture_box).
   std::string set_box(std::string_view name, const LonLatBox& b);
 
+  /// Whether the option was given a value since the last reset (by a statement, the
+  /// command line or the Python module), rather than holding its default: for the
+  /// options whose default depends on the model (interp/kernel/quality_floor_option.h).
+  bool was_set(std::string_view name) const;
+
   /// Back to the defaults (`Delete Options;`).
   void reset();
 
@@ -69,6 +74,7 @@ class Options {
   std::vector<std::string> strs_;
   std::vector<Color> colors_;
   std::vector<LonLatBox> boxes_;
+  std::vector<bool> set_;   // per option: given a value since the last reset
 };
 
 /// Named colours accepted on the right of `X.Color.Y = Name;` ("Red", ...).

@@ -30,6 +30,7 @@
 #include "interp/kernel/ocean_grid_export.h"
 #include "interp/kernel/output_options.h"
 #include "interp/kernel/partition_export.h"
+#include "interp/kernel/quality_floor_option.h"
 #include "interp/kernel/size_policy_from_options.h"
 #include "interp/interpreter.h"
 #include "interp/provenance.h"
@@ -279,7 +280,7 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
     opt2.bbox_diag = model_bbox_diag(k.model);
     opt2.smoothing = static_cast<int>(in.options().number("Mesh.Smoothing"));
     opt2.quality_pass = in.options().number("Mesh.QualityPass") != 0;
-    opt2.quality_floor = in.options().number("Mesh.QualityFloor");
+    opt2.quality_floor = quality_floor_in_effect(in);
     opt2.max_elements = max_elements;
     // Threads for faces refined in parts: Mesh.MaxNumThreads2D, else General.NumThreads (0:
     // the hardware's). The mesh is the same for any count; meshadapt stays serial.

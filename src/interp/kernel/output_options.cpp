@@ -10,6 +10,7 @@
 
 #include "interp/interpreter.h"
 #include "interp/kernel/node_data_export.h"
+#include "interp/kernel/quality_floor_option.h"
 #include "io/node_coordinates.h"
 
 namespace sm::interp {
@@ -118,9 +119,9 @@ std::string picture_options(Interpreter& in, const io::MeshModel& mm, io::Pictur
     po.box = b;
   }
   po.worst = static_cast<int>(in.options().number("Mesh.PictureWorst"));
-  // The floor the mesher lifted triangles to; with it off (0), the default 0.3 still
-  // flags the triangles a model may choke on.
-  if (const double floor = in.options().number("Mesh.QualityFloor"); floor > 0) po.quality_floor = floor;
+  // The floor the mesher lifted triangles to; with it off (0, and on a flat model by
+  // default), the default 0.3 still flags the triangles a model may choke on.
+  if (const double floor = quality_floor_in_effect(in); floor > 0) po.quality_floor = floor;
   po.draw_points = in.options().number("Mesh.PicturePoints") != 0;
   po.colour_min = in.options().number("Mesh.PictureColourMin");
   po.colour_max = in.options().number("Mesh.PictureColourMax");

@@ -1,5 +1,6 @@
 // A transfinite curve keeps its node count beside an unstructured face: the quality floor
-// (Mesh.QualityFloor 0.3) splits curve edges to lift slivers, but never those of a
+// (Mesh.QualityFloor 0.3, set: on a flat model it is off by default) splits curve edges
+// to lift slivers, but never those of a
 // `Transfinite Curve{c} = n`, which means n nodes in Gmsh whatever the face beside it
 // becomes. The strip 1 x 0.01 is all slivers; the floor may add interior points, so the
 // test counts the boundary nodes: a triangulated polygon with b boundary and i interior
@@ -9,5 +10,6 @@ Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
 Curve Loop(1) = {1, 2, 3, 4};
 Plane Surface(1) = {1};
 Transfinite Curve{1, 3} = 11;
-Mesh 2;   // expect warning: 12:1: mesh-quality-floor
+Mesh.QualityFloor = 0.3;   // gmsh -0: an unknown option, reported, the script goes on
+Mesh 2;   // expect warning: 14:1: mesh-quality-floor
 Printf("%g boundary nodes", 2 * Mesh.NbNodes - Mesh.NbTriangles - 2);   // expect: 22 boundary nodes
