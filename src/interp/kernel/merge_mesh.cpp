@@ -52,7 +52,7 @@ std::vector<std::uint64_t> chain_of(const io::MshBlock& b) {
 }
 
 [[noreturn]] void fail_merge(Interpreter& in, SourceRange at, const std::string& name, const std::string& why) {
-  in.fail_fmt(at, Diag::CannotOpenFile, fmt::format("cannot merge '{}': {}", name, why));
+  in.fail(at, Diag::CannotMerge, name, why);
 }
 
 void add_points(Interpreter& in, const io::MshFile& f, SourceRange at, const std::string& name) {
