@@ -1,4 +1,4 @@
-// `Periodic Curve` (Gmsh 4.8.4's GEdge::setMeshMaster and meshGEdge.cpp's copyMesh): the
+// `Periodic Curve` (its meaning in Gmsh 4.8.4: the target curve's mesh a copy of the source's): the
 // affine maps of its Translate and Rotate forms, the check that a map takes the source's
 // end points onto the target's, and the target's nodes copied from the source's mesh.
 #pragma once

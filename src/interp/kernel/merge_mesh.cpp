@@ -1,4 +1,4 @@
-// `Merge "file.msh";` (Gmsh 4.8.4's GModel::readMSH, then CreateTopology): the file's
+// `Merge "file.msh";` (as Gmsh 4.8.4 reads it, then CreateTopology): the file's
 // elements become discrete entities of the model (mesh/discrete_mesh.h), by their
 // elementary tags. A point element is a model point on its node; a curve's line elements,
 // one chain, are a discrete curve between the points on its end nodes (new points where

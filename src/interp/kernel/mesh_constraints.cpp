@@ -174,7 +174,7 @@ std::vector<double> periodic_affine(Interpreter& in, const Stmt& s, const Period
 // (Gmsh 4.8.4's addPeriodicEdge): each target's mesh becomes a copy of its source's.
 // Without a transform the signs give the direction; with one, the transform must take
 // the source's end points onto the target's (within Geometry.Tolerance of the model's
-// size, as Gmsh's GEdge::setMeshMaster checks), which gives the direction.
+// size, as Gmsh 4.8.4 checks it), which gives the direction.
 void exec_periodic_curve(Interpreter& in, const Stmt& s, const PeriodicStmt& n) {
   KernelState& k = in.kernel();
   const geo::Model& m = k.model;
