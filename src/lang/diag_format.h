@@ -75,8 +75,13 @@ class DiagFormat {
   consteval DiagFormat(Diag kind)  // NOLINT: implicit, so that callers write Diag::Name
       : kind_(kind) {
     const std::string_view format = kDiagFormats[static_cast<std::size_t>(kind)];
+#if !defined(__clang__) || __clang_major__ >= 16
+    // clang before 16 refuses fmt's consteval check inside this consteval constructor (it
+    // takes the nested call for an immediate invocation); the project's own build (g++,
+    // CMakeLists.txt) checks every slot's type, the fuzz build (clang) the count only.
     const fmt::format_string<Args...> checked(format);
     static_cast<void>(checked);
+#endif
     if (diag_format_arity(format) != static_cast<int>(sizeof...(Args)))
       detail::diag_argument_count_differs_from_format();
   }
