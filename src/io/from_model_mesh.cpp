@@ -196,7 +196,7 @@ MeshModel from_model_mesh(const geo::Model& model, const ModelMesh& mesh, std::v
   for (const EntityMesh& e : out.entities) kept.insert({e.dim, e.tag});
   for (const PeriodicLink& l : mesh.periodic) {
     if (!kept.count({l.dim, l.tag}) || !kept.count({l.dim, l.master})) continue;
-    PeriodicEntity p{l.dim, l.tag, l.master, l.affine, {}};
+    PeriodicLink p{l.dim, l.tag, l.master, l.affine, {}};
     for (const auto& [a, b] : l.nodes)
       if (index[a] != kDropped && index[b] != kDropped) p.nodes.emplace_back(index[a], index[b]);
     if (p.nodes.size() == l.nodes.size()) out.periodic.push_back(std::move(p));

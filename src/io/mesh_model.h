@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "base/vec.h"
+#include "mesh/periodic_link.h"
 
 namespace sm::io {
 
@@ -45,23 +46,12 @@ struct PhysicalGroup {
   std::string name;  // may be empty
 };
 
-/// A periodic entity (MSH's $Periodic): each of its nodes with its master entity's
-/// corresponding node (indices into MeshModel::xyz), and the affine map from the master
-/// onto it (16 numbers row by row, or empty).
-struct PeriodicEntity {
-  int dim = 0;
-  int tag = 0;
-  int master = 0;
-  std::vector<double> affine;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> nodes;   // (node, master's node)
-};
-
 struct MeshModel {
   std::vector<Vec3> xyz;                 // every node, in any order
   std::vector<EntityMesh> entities;      // any order: writers sort by (dim, tag)
   std::vector<PhysicalGroup> physicals;
   int num_partitions = 0;                // > 0: the mesh is in the partitioned entities
-  std::vector<PeriodicEntity> periodic;  // by increasing (dim, tag)
+  std::vector<PeriodicLink> periodic;  // by increasing (dim, tag)
 
   std::size_t element_count() const;
 };

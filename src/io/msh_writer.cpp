@@ -159,8 +159,8 @@ void write_periodic(Out& o, const MeshModel& m, const Plan& p, const std::vector
     bool& any = saved[{m.entities[i].dim, m.entities[i].tag}];
     any = any || p.saved[i] != 0;
   }
-  std::vector<const PeriodicEntity*> links;
-  for (const PeriodicEntity& l : m.periodic) {
+  std::vector<const PeriodicLink*> links;
+  for (const PeriodicLink& l : m.periodic) {
     const auto a = saved.find({l.dim, l.tag}), b = saved.find({l.dim, l.master});
     if (a == saved.end() || b == saved.end() || !a->second || !b->second) continue;
     if (std::all_of(l.nodes.begin(), l.nodes.end(), [&](const auto& q) { return tag[q.first] && tag[q.second]; }))
@@ -171,7 +171,7 @@ void write_periodic(Out& o, const MeshModel& m, const Plan& p, const std::vector
   o.text("$Periodic\n");
   if (binary) o.bin<std::uint64_t>(links.size());
   else o.f("{}\n", links.size());
-  for (const PeriodicEntity* l : links) {
+  for (const PeriodicLink* l : links) {
     std::vector<std::pair<std::uint64_t, std::uint64_t>> pairs;
     for (const auto& [a, b] : l->nodes) pairs.emplace_back(tag[a], tag[b]);
     std::sort(pairs.begin(), pairs.end());

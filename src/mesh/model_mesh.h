@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "base/vec.h"
+#include "mesh/periodic_link.h"
 
 namespace sm {
 
@@ -42,17 +43,6 @@ struct SurfaceMesh {
   std::vector<std::uint32_t> interior_nodes;          // nodes classified on the surface
   std::vector<std::array<std::uint32_t, 3>> triangles;
   std::vector<std::array<std::uint32_t, 4>> quads;
-};
-
-/// A periodic entity's correspondence (Gmsh's $Periodic section): each of its nodes with
-/// the master's node it copies, and the map from the master onto it (empty, or 16
-/// numbers row by row).
-struct PeriodicLink {
-  int dim = 0;
-  int tag = 0;
-  int master = 0;
-  std::vector<double> affine;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> nodes;   // (node, master's node)
 };
 
 struct ModelMesh {
