@@ -78,12 +78,18 @@ void pass_check_clean(const CoastModel& m) {
   }
 }
 
-// Curve points strictly inside the box lon (lo, hi), lat (-w/2, w/2): water left in the canal.
-std::size_t pass_points_in(const CoastModel& m, double lo, double hi, double half) {
+// Curve points strictly inside the box lon (lon_lo, lon_hi), lat (lat_lo, lat_hi): water left
+// where a passage was filled.
+std::size_t pass_points_in_box(const CoastModel& m, double lon_lo, double lon_hi, double lat_lo, double lat_hi) {
   std::size_t n = 0;
   for (const CoastCurve& c : m.curves)
-    for (geo::LonLat p : c.ll) n += p.lon > lo && p.lon < hi && std::abs(p.lat) < half;
+    for (geo::LonLat p : c.ll) n += p.lon > lon_lo && p.lon < lon_hi && p.lat > lat_lo && p.lat < lat_hi;
   return n;
+}
+
+// The same in lon (lo, hi), lat (-half, half): water left in the canal.
+std::size_t pass_points_in(const CoastModel& m, double lo, double hi, double half) {
+  return pass_points_in_box(m, lo, hi, -half, half);
 }
 
 // The narrowest (vertex, facing segment) distance of the canal, as the kernel measures it.
@@ -163,10 +169,8 @@ TEST_CASE("passages: a strait between two islands narrower than W merges them") 
   CHECK(m->surfaces[0].holes.size() == 1);
   CHECK(m->report.count(RepairKind::ClosedPassage) >= 1);
   // The strait is land along its whole length but its ends.
-  std::size_t in_strait = 0;
-  for (const CoastCurve& cc : m->curves)
-    for (geo::LonLat p : cc.ll) in_strait += std::abs(p.lon) < kPassW / 2 - 1e-9 && std::abs(p.lat) < 0.3 - 0.045;
-  CHECK(in_strait == 0);
+  const double lon_half = kPassW / 2 - 1e-9, lat_half = 0.3 - 0.045;
+  CHECK(pass_points_in_box(*m, -lon_half, lon_half, -lat_half, lat_half) == 0);
 }
 
 TEST_CASE("passages: a dead-end inlet narrower than W is closed at its mouth") {
@@ -406,10 +410,7 @@ TEST_CASE("passages: a 30 m pinch between long coarse segments is closed (KeepPa
   CHECK(m->surfaces[0].holes.size() == 1);   // the islands joined
   // The spike is land up to where the water beside it is wider than W: no point of it
   // within 0.01 degrees (1.1 km) of its tip, where the water is narrower than 600 m.
-  std::size_t in_pinch = 0;
-  for (const CoastCurve& cc : m->curves)
-    for (geo::LonLat p : cc.ll) in_pinch += p.lon > 0 && p.lon < 0.01 && std::abs(p.lat) < 0.01;
-  CHECK(in_pinch == 0);
+  CHECK(pass_points_in(*m, 0, 0.01, 0.01) == 0);
 }
 
 namespace {
@@ -567,10 +568,7 @@ TEST_CASE("passages: a dam at a lagoon's mouth makes no corner sharper than the 
   REQUIRE(m.ok());
   pass_check_clean(*m);
   CHECK(m->report.count(RepairKind::NarrowWater) >= 1);   // the lagoon filled
-  std::size_t in_lagoon = 0;
-  for (const CoastCurve& cc : m->curves)
-    for (geo::LonLat p : cc.ll) in_lagoon += p.lon > -0.04 && p.lon < 0.02 && p.lat < -0.01 && p.lat > -0.05;
-  CHECK(in_lagoon == 0);
+  CHECK(pass_points_in_box(*m, -0.04, 0.02, -0.05, -0.01) == 0);   // no point left in the lagoon
   // Every corner of the sea where a dam meets the coast: at least 15 degrees (the floor's
   // rho 0.3 needs 9.4); before, 1.8 degrees at the far bank's point (0, -0.000757).
   std::size_t dams = 0;
@@ -732,10 +730,7 @@ TEST_CASE("passages: a dam at a river mouth behind a spit makes no corner the me
   pass_check_clean(*m);
   CHECK(m->report.count(RepairKind::NarrowWater) >= 1);   // the river filled
   // The river's channel is land now: no curve point inside it.
-  std::size_t in_river = 0;
-  for (const CoastCurve& cc : m->curves)
-    for (geo::LonLat p : cc.ll) in_river += p.lon > -0.024 && p.lon < -0.007 && p.lat > -0.015 && p.lat < 0.004;
-  CHECK(in_river == 0);
+  CHECK(pass_points_in_box(*m, -0.024, -0.007, -0.015, 0.004) == 0);
   // Every junction of the sea's loop at the mesh sizes up to 3 km: at least 9.4 degrees, the
   // angle Mesh.QualityFloor 0.3 needs (mesh/quality_floor.h); before, 2.5 degrees at point 6
   // (0.5 between the World Ocean's mesh edges there).
