@@ -282,137 +282,132 @@ void crossings_of(const RegionPolygon& poly, Vec2 p, Vec2 q, std::vector<EdgeCro
             [](const EdgeCrossing& x, const EdgeCrossing& y) { return x.t != y.t ? x.t < y.t : x.param < y.param; });
 }
 
-}  // namespace
-
-Result<RegionResult> clip_to_polygon(const std::vector<Ring>& rings, const RegionPolygon& poly,
-                                     const RegionOptions& opt) {
-  RegionResult out;
-  std::vector<CutChain> chains;
-  std::vector<Vec2> xy;
-  std::vector<char> near;   // projected (within 85 degrees of the centre)
+// Walks ring `ri` along the polygon's edges, appending the pieces of it that lie inside
+// (each with the perimeter parameters where it enters and leaves) to `chains`; a closed
+// ring wholly inside goes to out.inside. The walk starts from point 0, whose side is
+// known, and toggles at each crossing.
+std::optional<CoastError> cut_ring(const RegionPolygon& poly, const Ring& r, std::size_t ri,
+                                   std::vector<CutChain>& chains, RegionResult& out) {
+  const std::size_t n = r.pts.size();
+  std::vector<Vec2> xy(n);
+  std::vector<char> near(n, 0);   // projected (within 85 degrees of the centre)
+  bool any_near = false;
+  for (std::size_t i = 0; i < n; ++i) any_near |= (near[i] = poly.project(r.pts[i], xy[i]) ? 1 : 0) != 0;
+  if (!any_near) return std::nullopt;
+  const std::size_t nseg = r.closed ? n : n - 1;
+  bool inside = poly.contains(r.pts[0]);
+  const bool start_inside = inside;
+  const std::size_t first_chain = chains.size();
+  bool crossed = false;
+  std::optional<CutChain> cur;
+  if (inside) {
+    cur.emplace();
+    cur->ring = ri;
+    cur->pts.push_back(r.pts[0]);
+  }
   std::vector<EdgeCrossing> cx;
-  for (std::size_t ri = 0; ri < rings.size(); ++ri) {
-    const Ring& r = rings[ri];
-    const std::size_t n = r.pts.size();
-    if (n < 2) continue;
-    xy.assign(n, Vec2{});
-    near.assign(n, 0);
-    bool any_near = false;
-    for (std::size_t i = 0; i < n; ++i) any_near |= (near[i] = poly.project(r.pts[i], xy[i]) ? 1 : 0) != 0;
-    if (!any_near) continue;
-    // Walk from a point whose side is known; status toggles at each crossing.
-    const std::size_t nseg = r.closed ? n : n - 1;
-    bool inside = poly.contains(r.pts[0]);
-    const bool start_inside = inside;
-    const std::size_t first_chain = chains.size();
-    bool crossed = false;
-    std::optional<CutChain> cur;
-    if (inside) {
-      cur.emplace();
-      cur->ring = ri;
-      cur->pts.push_back(r.pts[0]);
+  for (std::size_t s = 0; s < nseg; ++s) {
+    const std::size_t i = s, j = (s + 1) % n;
+    if (!near[i] || !near[j]) {
+      if (inside || (near[i] && poly.contains(r.pts[i])) || (near[j] && poly.contains(r.pts[j])))
+        return CoastError{"region", static_cast<std::int64_t>(r.record),
+                          "a shoreline segment reaches into the region polygon from more than 85 degrees away",
+                          r.pts[near[i] ? i : j]};
+      continue;
     }
-    for (std::size_t s = 0; s < nseg; ++s) {
-      const std::size_t i = s, j = (s + 1) % n;
-      if (!near[i] || !near[j]) {
-        if (inside || (near[i] && poly.contains(r.pts[i])) || (near[j] && poly.contains(r.pts[j])))
-          return CoastError{"region", static_cast<std::int64_t>(r.record),
-                            "a shoreline segment reaches into the region polygon from more than 85 degrees away",
-                            r.pts[near[i] ? i : j]};
-        continue;
-      }
-      crossings_of(poly, xy[i], xy[j], cx);
-      for (const EdgeCrossing& c : cx) {
-        crossed = true;
-        const geo::LonLat at = poly.unproject(c.at, r.pts[i].lon);
-        if (!inside) {
-          cur.emplace();
-          cur->ring = ri;
-          cur->t_in = c.param;
-          cur->pts.push_back(at);
-        } else {
-          if (!(cur->pts.back().lon == at.lon && cur->pts.back().lat == at.lat)) cur->pts.push_back(at);
-          cur->t_out = c.param;
-          chains.push_back(std::move(*cur));
-          cur.reset();
-        }
-        inside = !inside;
-      }
-      if (inside && (r.closed ? j != 0 : true)) cur->pts.push_back(r.pts[j]);
-    }
-    if (r.closed && inside != start_inside)
-      return CoastError{"region", static_cast<std::int64_t>(r.record),
-                        "a shoreline crosses the region polygon an odd number of times (it touches a vertex of the "
-                        "polygon exactly: move that vertex a little)",
-                        r.pts[0]};
-    if (!crossed) {
-      if (r.closed) {
-        if (start_inside) out.inside.push_back(ri);
-        continue;
-      }
-      if (!start_inside) continue;
-    }
-    if (cur) {   // still inside at the end
-      if (r.closed && start_inside && first_chain < chains.size()) {
-        // The walk began inside at point 0, which this chain stopped short of: the chain
-        // the walk began with continues this one.
-        CutChain& head = chains[first_chain];
-        cur->pts.insert(cur->pts.end(), head.pts.begin(), head.pts.end());
-        cur->t_out = head.t_out;
-        head = std::move(*cur);
+    crossings_of(poly, xy[i], xy[j], cx);
+    for (const EdgeCrossing& c : cx) {
+      crossed = true;
+      const geo::LonLat at = poly.unproject(c.at, r.pts[i].lon);
+      if (!inside) {
+        cur.emplace();
+        cur->ring = ri;
+        cur->t_in = c.param;
+        cur->pts.push_back(at);
       } else {
+        if (!(cur->pts.back().lon == at.lon && cur->pts.back().lat == at.lat)) cur->pts.push_back(at);
+        cur->t_out = c.param;
         chains.push_back(std::move(*cur));
+        cur.reset();
       }
+      inside = !inside;
+    }
+    if (inside && (r.closed ? j != 0 : true)) cur->pts.push_back(r.pts[j]);
+  }
+  if (r.closed && inside != start_inside)
+    return CoastError{"region", static_cast<std::int64_t>(r.record),
+                      "a shoreline crosses the region polygon an odd number of times (it touches a vertex of the "
+                      "polygon exactly: move that vertex a little)",
+                      r.pts[0]};
+  if (!crossed) {
+    if (r.closed && start_inside) out.inside.push_back(ri);
+    if (r.closed || !start_inside) return std::nullopt;
+  }
+  if (cur) {   // still inside at the end
+    if (r.closed && start_inside && first_chain < chains.size()) {
+      // The walk began inside at point 0, which this chain stopped short of: the chain
+      // the walk began with continues this one.
+      CutChain& head = chains[first_chain];
+      cur->pts.insert(cur->pts.end(), head.pts.begin(), head.pts.end());
+      cur->t_out = head.t_out;
+      head = std::move(*cur);
+    } else {
+      chains.push_back(std::move(*cur));
     }
   }
-  for (const CutChain& c : chains)
-    if (c.t_in < 0 || c.t_out < 0)
-      return CoastError{"region", static_cast<std::int64_t>(rings[c.ring].record),
-                        "an open coastline ends inside the region polygon: it cannot be closed along the polygon "
-                        "(choose a region within the data's own box)",
-                        c.t_in < 0 ? c.pts.front() : c.pts.back()};
-  if (chains.empty()) {
-    // No coastline crosses the polygon: all ocean unless it lies inside a land ring.
-    // A point inside: the lowest vertex is convex, and a point just inside its corner is
-    // inside the polygon once no other vertex comes closer than the step.
-    std::size_t low = 0;
-    for (std::size_t i = 1; i < poly.size(); ++i)
-      if (poly.plane(i).y < poly.plane(low).y) low = i;
-    const Vec2 v = poly.plane(low), a = poly.plane((low + poly.size() - 1) % poly.size()),
-               b = poly.plane((low + 1) % poly.size());
-    std::optional<geo::LonLat> mid;
-    double f = 0.25;
-    for (int k = 0; k < 60 && !mid; ++k, f *= 0.5) {
-      const Vec2 m = v + f * (0.5 * (a - v) + 0.5 * (b - v));
-      const geo::LonLat ll = poly.unproject(m, poly.vertex(low).lon);
-      if (poly.contains(ll)) mid = ll;
-    }
-    if (!mid) return polygon_error("the region polygon has no point inside it");
-    std::vector<Vec2> ring_xy;
-    for (const Ring& r : rings) {
-      if (!r.closed || r.wraps_pole || r.level != 1) continue;
-      for (int k = -1; k <= 1; ++k) {
-        ring_xy.clear();
-        for (auto p : r.pts) ring_xy.push_back({p.lon + 360.0 * k, p.lat});
-        if (point_in_ring(ring_xy, {mid->lon, mid->lat}))
-          return CoastError{"region", static_cast<std::int64_t>(r.record), "the region polygon lies wholly on land",
-                            *mid, coast_option_string(CoastOpt::Region)};
-      }
-    }
-    RegionLoop loop;
-    RegionPiece piece;
-    piece.open_boundary = true;
-    const geo::LonLat v0 = poly.vertex(0);
-    piece.pts = polygon_path(poly, v0, 0, v0, static_cast<double>(poly.size()), opt.boundary_step_deg,
-                             opt.corner_step_deg, &piece.corners, /*closed=*/true);
-    piece.pts.pop_back();   // closed on itself: the first point is not repeated
-    piece.corners.insert(piece.corners.begin(), 0);
-    loop.pieces.push_back(std::move(piece));
-    out.loops.push_back(std::move(loop));
-    return out;
+  return std::nullopt;
+}
+
+// No coastline crosses the polygon: the whole polygon is one loop of open boundary,
+// unless it lies inside a land ring. A point inside: the lowest vertex is convex, and a
+// point just inside its corner is inside the polygon once no other vertex comes closer
+// than the step.
+Result<RegionResult> polygon_all_ocean(const std::vector<Ring>& rings, const RegionPolygon& poly,
+                                       const RegionOptions& opt) {
+  std::size_t low = 0;
+  for (std::size_t i = 1; i < poly.size(); ++i)
+    if (poly.plane(i).y < poly.plane(low).y) low = i;
+  const Vec2 v = poly.plane(low), a = poly.plane((low + poly.size() - 1) % poly.size()),
+             b = poly.plane((low + 1) % poly.size());
+  std::optional<geo::LonLat> mid;
+  double f = 0.25;
+  for (int k = 0; k < 60 && !mid; ++k, f *= 0.5) {
+    const Vec2 m = v + f * (0.5 * (a - v) + 0.5 * (b - v));
+    const geo::LonLat ll = poly.unproject(m, poly.vertex(low).lon);
+    if (poly.contains(ll)) mid = ll;
   }
-  // Linking along the perimeter as clip_to_region does along the box (perimeter_link.h):
-  // from a chain's start the polygon runs through ocean to the end of the next chain.
+  if (!mid) return polygon_error("the region polygon has no point inside it");
+  std::vector<Vec2> ring_xy;
+  for (const Ring& r : rings) {
+    if (!r.closed || r.wraps_pole || r.level != 1) continue;
+    for (int k = -1; k <= 1; ++k) {
+      ring_xy.clear();
+      for (auto p : r.pts) ring_xy.push_back({p.lon + 360.0 * k, p.lat});
+      if (point_in_ring(ring_xy, {mid->lon, mid->lat}))
+        return CoastError{"region", static_cast<std::int64_t>(r.record), "the region polygon lies wholly on land",
+                          *mid, coast_option_string(CoastOpt::Region)};
+    }
+  }
+  RegionResult out;
+  RegionLoop loop;
+  RegionPiece piece;
+  piece.open_boundary = true;
+  const geo::LonLat v0 = poly.vertex(0);
+  piece.pts = polygon_path(poly, v0, 0, v0, static_cast<double>(poly.size()), opt.boundary_step_deg,
+                           opt.corner_step_deg, &piece.corners, /*closed=*/true);
+  piece.pts.pop_back();   // closed on itself: the first point is not repeated
+  piece.corners.insert(piece.corners.begin(), 0);
+  loop.pieces.push_back(std::move(piece));
+  out.loops.push_back(std::move(loop));
+  return out;
+}
+
+// The chains closed into loops along the perimeter, as clip_to_region does along the box
+// (perimeter_link.h): from a chain's start the polygon runs through ocean to the end of
+// the next chain.
+std::optional<CoastError> link_chains(const std::vector<Ring>& rings, const RegionPolygon& poly,
+                                      const RegionOptions& opt, const std::vector<CutChain>& chains,
+                                      RegionResult& out) {
   std::vector<PerimeterChain> ends(chains.size());
   for (std::size_t c = 0; c < chains.size(); ++c) ends[c] = {chains[c].t_out, chains[c].t_in, false};
   const PerimeterLink link = link_along_perimeter(ends);
@@ -452,6 +447,30 @@ Result<RegionResult> clip_to_polygon(const std::vector<Ring>& rings, const Regio
                         "coastlines cut by the region polygon do not close into loops along it", chains[c0].pts.front()};
     out.loops.push_back(std::move(loop));
   }
+  return std::nullopt;
+}
+
+}  // namespace
+
+Result<RegionResult> clip_to_polygon(const std::vector<Ring>& rings, const RegionPolygon& poly,
+                                     const RegionOptions& opt) {
+  RegionResult out;
+  std::vector<CutChain> chains;
+  for (std::size_t ri = 0; ri < rings.size(); ++ri)
+    if (rings[ri].pts.size() >= 2)
+      if (std::optional<CoastError> e = cut_ring(poly, rings[ri], ri, chains, out)) return std::move(*e);
+  for (const CutChain& c : chains)
+    if (c.t_in < 0 || c.t_out < 0)
+      return CoastError{"region", static_cast<std::int64_t>(rings[c.ring].record),
+                        "an open coastline ends inside the region polygon: it cannot be closed along the polygon "
+                        "(choose a region within the data's own box)",
+                        c.t_in < 0 ? c.pts.front() : c.pts.back()};
+  if (chains.empty()) {
+    Result<RegionResult> all = polygon_all_ocean(rings, poly, opt);
+    if (all.ok()) all.value().inside = std::move(out.inside);
+    return all;
+  }
+  if (std::optional<CoastError> e = link_chains(rings, poly, opt, chains, out)) return std::move(*e);
   return out;
 }
 
