@@ -21,12 +21,12 @@ struct Pair {
   double deviation = 0;   // max |90 - angle|, degrees
 };
 
-}  // namespace
-
-RecombineResult recombine(std::span<const std::array<std::uint32_t, 3>> tris, std::span<const Vec3> xyz,
-                          std::span<const Vec2> plane, std::span<const std::pair<std::uint32_t, std::uint32_t>> fixed,
-                          const RecombineOptions& opt) {
-  RecombineResult res;
+// The candidate pairs across interior, manifold, unfixed edges whose quadrangle is
+// convex and good enough, best first (ties by triangle index).
+std::vector<Pair> candidate_pairs(std::span<const std::array<std::uint32_t, 3>> tris, std::span<const Vec3> xyz,
+                                  std::span<const Vec2> plane,
+                                  std::span<const std::pair<std::uint32_t, std::uint32_t>> fixed,
+                                  const RecombineOptions& opt) {
   const std::uint32_t nt = static_cast<std::uint32_t>(tris.size());
   // Interior edges: (smaller node, larger node, triangle, local edge) sorted, so the two
   // sides of an edge are neighbours.
@@ -67,7 +67,152 @@ RecombineResult recombine(std::span<const std::array<std::uint32_t, 3>> tris, st
   std::sort(pairs.begin(), pairs.end(), [](const Pair& x, const Pair& y) {
     return x.deviation != y.deviation ? x.deviation < y.deviation : (x.t1 != y.t1 ? x.t1 < y.t1 : x.t2 < y.t2);
   });
-  std::vector<std::uint32_t> mate(nt, kNoIndex);     // triangle -> its partner
+  return pairs;
+}
+
+// Edmonds' blossom search over the dual graph of the candidate pairs (maximum
+// cardinality): from each unpaired triangle a breadth-first alternating tree, odd cycles
+// shrunk to their base, an unpaired triangle reached ends an augmenting path, which is
+// flipped. The per-vertex state is stamped per search, so a search costs what it visits,
+// at most max_search triangles; every walk up the tree is bounded by the triangles the
+// search touched.
+class AugmentingPaths {
+ public:
+  AugmentingPaths(const std::vector<Pair>& pairs, std::uint32_t nt, std::vector<std::uint32_t>& mate,
+                  std::uint32_t max_search)
+      : pairs_(pairs), mate_(mate), max_search_(max_search), start_(nt + 1, 0), adj_(2 * pairs.size()),
+        stamp_(nt, 0), parent_(nt), base_(nt), mark_(nt, 0), in_blossom_(nt, 0), used_(nt) {
+    // The dual graph in CSR form (pair indices per triangle).
+    for (const Pair& p : pairs) ++start_[p.t1 + 1], ++start_[p.t2 + 1];
+    for (std::uint32_t t = 0; t < nt; ++t) start_[t + 1] += start_[t];
+    std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
+    for (std::uint32_t i = 0; i < pairs.size(); ++i) adj_[fill[pairs[i].t1]++] = i, adj_[fill[pairs[i].t2]++] = i;
+  }
+
+  // Augments from every unpaired triangle with a candidate pair; the count of paths flipped.
+  std::uint64_t run() {
+    std::uint64_t flipped = 0;
+    const auto nt = static_cast<std::uint32_t>(stamp_.size());
+    for (std::uint32_t root = 0; root < nt; ++root) {
+      if (mate_[root] != kNoIndex || start_[root] == start_[root + 1]) continue;
+      const std::uint32_t end = search(root);
+      if (end == kNoIndex) continue;
+      // The path alternates unmatched and matched edges back to the root: at most the
+      // triangles this search touched.
+      std::uint32_t v = end;
+      for (std::size_t step = 0; v != kNoIndex && step <= touched_.size(); ++step) {
+        const std::uint32_t pv = parent_[v], next = mate_[pv];
+        mate_[v] = pv, mate_[pv] = v;
+        v = next;
+      }
+      ++flipped;
+    }
+    return flipped;
+  }
+
+  // The candidate pair joining t to its mate (kNoIndex when unpaired).
+  std::uint32_t pair_of(std::uint32_t t) const {
+    if (mate_[t] == kNoIndex) return kNoIndex;
+    std::uint32_t found = kNoIndex;
+    for (std::uint32_t k = start_[t]; k < start_[t + 1]; ++k)
+      if (other(adj_[k], t) == mate_[t]) found = adj_[k];
+    return found;
+  }
+
+ private:
+  std::uint32_t other(std::uint32_t pi, std::uint32_t v) const {
+    return pairs_[pi].t1 == v ? pairs_[pi].t2 : pairs_[pi].t1;
+  }
+
+  void touch(std::uint32_t v) {
+    if (stamp_[v] == cur_) return;
+    stamp_[v] = cur_, parent_[v] = kNoIndex, base_[v] = v, used_[v] = 0;
+    touched_.push_back(v);
+  }
+
+  // The base of the innermost blossom holding both a and b: each walk goes up the
+  // alternating tree, at most the triangles touched.
+  std::uint32_t lca(std::uint32_t a, std::uint32_t b) {
+    ++mark_stamp_;
+    for (std::size_t step = 0; step <= touched_.size(); ++step) {
+      a = base_[a];
+      mark_[a] = mark_stamp_;
+      if (mate_[a] == kNoIndex) break;
+      a = parent_[mate_[a]];
+    }
+    for (std::size_t step = 0; step <= touched_.size(); ++step) {
+      b = base_[b];
+      if (mark_[b] == mark_stamp_) return b;
+      b = parent_[mate_[b]];
+    }
+    return b;
+  }
+
+  void mark_path(std::uint32_t v, std::uint32_t b, std::uint32_t child) {
+    for (std::size_t step = 0; base_[v] != b && step <= touched_.size(); ++step) {
+      in_blossom_[base_[v]] = in_blossom_[base_[mate_[v]]] = blossom_stamp_;
+      parent_[v] = child;
+      child = mate_[v];
+      v = parent_[mate_[v]];
+    }
+  }
+
+  // An unpaired triangle reached by an augmenting path from root, or kNoIndex.
+  std::uint32_t search(std::uint32_t root) {
+    ++cur_;
+    touched_.clear();
+    touch(root);
+    used_[root] = 1;
+    queue_.assign(1, root);
+    for (std::size_t q = 0; q < queue_.size(); ++q) {
+      if (touched_.size() > max_search_) return kNoIndex;
+      const std::uint32_t v = queue_[q];
+      for (std::uint32_t k = start_[v]; k < start_[v + 1]; ++k) {
+        const std::uint32_t to = other(adj_[k], v);
+        touch(to);
+        if (mate_[to] != kNoIndex) touch(mate_[to]);
+        if (base_[v] == base_[to] || mate_[v] == to) continue;
+        if (to == root || (mate_[to] != kNoIndex && parent_[mate_[to]] != kNoIndex)) {
+          const std::uint32_t b = lca(v, to);
+          ++blossom_stamp_;
+          mark_path(v, b, to);
+          mark_path(to, b, v);
+          for (std::uint32_t i : touched_)
+            if (in_blossom_[base_[i]] == blossom_stamp_) {
+              base_[i] = b;
+              if (!used_[i]) used_[i] = 1, queue_.push_back(i);
+            }
+        } else if (parent_[to] == kNoIndex) {
+          parent_[to] = v;
+          if (mate_[to] == kNoIndex) return to;
+          used_[mate_[to]] = 1;
+          queue_.push_back(mate_[to]);
+        }
+      }
+    }
+    return kNoIndex;
+  }
+
+  const std::vector<Pair>& pairs_;
+  std::vector<std::uint32_t>& mate_;   // triangle -> its partner
+  std::uint32_t max_search_;
+  std::vector<std::uint32_t> start_, adj_;
+  std::vector<std::uint32_t> stamp_, parent_, base_, mark_, in_blossom_;
+  std::vector<std::uint8_t> used_;
+  std::vector<std::uint32_t> touched_, queue_;
+  std::uint32_t cur_ = 0, mark_stamp_ = 0, blossom_stamp_ = 0;
+};
+
+}  // namespace
+
+RecombineResult recombine(std::span<const std::array<std::uint32_t, 3>> tris, std::span<const Vec3> xyz,
+                          std::span<const Vec2> plane, std::span<const std::pair<std::uint32_t, std::uint32_t>> fixed,
+                          const RecombineOptions& opt) {
+  RecombineResult res;
+  const std::uint32_t nt = static_cast<std::uint32_t>(tris.size());
+  const std::vector<Pair> pairs = candidate_pairs(tris, xyz, plane, fixed, opt);
+  // Gmsh's greedy pass: the best pairs first.
+  std::vector<std::uint32_t> mate(nt, kNoIndex);        // triangle -> its partner
   std::vector<std::uint32_t> mate_pair(nt, kNoIndex);   // triangle -> its pair's index
   for (std::uint32_t i = 0; i < pairs.size(); ++i) {
     const Pair& p = pairs[i];
@@ -76,102 +221,9 @@ RecombineResult recombine(std::span<const std::array<std::uint32_t, 3>> tris, st
     mate_pair[p.t1] = mate_pair[p.t2] = i;
   }
   if (opt.algorithm == RecombineAlgorithm::Matching) {
-    // The dual graph of the candidate pairs, in CSR form (pair indices per triangle).
-    std::vector<std::uint32_t> start(nt + 1, 0), adj(2 * pairs.size());
-    for (const Pair& p : pairs) ++start[p.t1 + 1], ++start[p.t2 + 1];
-    for (std::uint32_t t = 0; t < nt; ++t) start[t + 1] += start[t];
-    {
-      std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-      for (std::uint32_t i = 0; i < pairs.size(); ++i) adj[fill[pairs[i].t1]++] = i, adj[fill[pairs[i].t2]++] = i;
-    }
-    // Edmonds' blossom search from each unpaired triangle (maximum cardinality): a
-    // breadth-first alternating tree, odd cycles shrunk to their base, an unpaired
-    // triangle reached ends an augmenting path, which is flipped. The per-vertex state
-    // is stamped per search, so a search costs what it visits, at most max_search.
-    std::vector<std::uint32_t> stamp(nt, 0), parent(nt), base(nt), mark(nt, 0), in_blossom(nt, 0);
-    std::vector<std::uint8_t> used(nt);
-    std::vector<std::uint32_t> touched, queue;
-    std::uint32_t cur = 0, mark_stamp = 0, blossom_stamp = 0;
-    auto touch = [&](std::uint32_t v) {
-      if (stamp[v] == cur) return;
-      stamp[v] = cur, parent[v] = kNoIndex, base[v] = v, used[v] = 0;
-      touched.push_back(v);
-    };
-    auto lca = [&](std::uint32_t a, std::uint32_t b) {
-      ++mark_stamp;
-      while (true) {
-        a = base[a];
-        mark[a] = mark_stamp;
-        if (mate[a] == kNoIndex) break;
-        a = parent[mate[a]];
-      }
-      while (true) {
-        b = base[b];
-        if (mark[b] == mark_stamp) return b;
-        b = parent[mate[b]];
-      }
-    };
-    auto mark_path = [&](std::uint32_t v, std::uint32_t b, std::uint32_t child) {
-      while (base[v] != b) {
-        in_blossom[base[v]] = in_blossom[base[mate[v]]] = blossom_stamp;
-        parent[v] = child;
-        child = mate[v];
-        v = parent[mate[v]];
-      }
-    };
-    auto other = [&](std::uint32_t pi, std::uint32_t v) { return pairs[pi].t1 == v ? pairs[pi].t2 : pairs[pi].t1; };
-    auto search = [&](std::uint32_t root) -> std::uint32_t {
-      ++cur;
-      touched.clear();
-      touch(root);
-      used[root] = 1;
-      queue.assign(1, root);
-      for (std::size_t q = 0; q < queue.size(); ++q) {
-        if (touched.size() > opt.max_search) return kNoIndex;
-        const std::uint32_t v = queue[q];
-        for (std::uint32_t k = start[v]; k < start[v + 1]; ++k) {
-          const std::uint32_t to = other(adj[k], v);
-          touch(to);
-          if (mate[to] != kNoIndex) touch(mate[to]);
-          if (base[v] == base[to] || mate[v] == to) continue;
-          if (to == root || (mate[to] != kNoIndex && parent[mate[to]] != kNoIndex)) {
-            const std::uint32_t b = lca(v, to);
-            ++blossom_stamp;
-            mark_path(v, b, to);
-            mark_path(to, b, v);
-            for (std::uint32_t i : touched)
-              if (in_blossom[base[i]] == blossom_stamp) {
-                base[i] = b;
-                if (!used[i]) used[i] = 1, queue.push_back(i);
-              }
-          } else if (parent[to] == kNoIndex) {
-            parent[to] = v;
-            if (mate[to] == kNoIndex) return to;
-            used[mate[to]] = 1;
-            queue.push_back(mate[to]);
-          }
-        }
-      }
-      return kNoIndex;
-    };
-    for (std::uint32_t root = 0; root < nt; ++root) {
-      if (mate[root] != kNoIndex || start[root] == start[root + 1]) continue;
-      const std::uint32_t end = search(root);
-      if (end == kNoIndex) continue;
-      for (std::uint32_t v = end; v != kNoIndex;) {
-        const std::uint32_t pv = parent[v], next = mate[pv];
-        mate[v] = pv, mate[pv] = v;
-        v = next;
-      }
-      ++res.augmentations;
-    }
-    // The pair of each matched triangle.
-    for (std::uint32_t t = 0; t < nt; ++t) {
-      mate_pair[t] = kNoIndex;
-      if (mate[t] == kNoIndex) continue;
-      for (std::uint32_t k = start[t]; k < start[t + 1]; ++k)
-        if (other(adj[k], t) == mate[t]) mate_pair[t] = adj[k];
-    }
+    AugmentingPaths paths(pairs, nt, mate, opt.max_search);
+    res.augmentations = paths.run();
+    for (std::uint32_t t = 0; t < nt; ++t) mate_pair[t] = paths.pair_of(t);
   }
   for (std::uint32_t t = 0; t < nt; ++t) {
     if (mate[t] == kNoIndex) {
