@@ -243,54 +243,42 @@ std::vector<DiagNote> set_here(const KernelState& k, const std::string& option) 
   return notes;
 }
 
-// Meshes the model up to `dim` into the kernel state; on failure returns why. The
-// mesher's warnings are reported at `where` (the Mesh statement; none for -1/-2).
-MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
+// The 2D mesher's options from Mesh.*: the algorithm, sizes, passes and threads.
+MeshFailure mesh2d_options(Interpreter& in, const field::SizeField* background, Mesh2dOptions& opt2) {
   KernelState& k = in.kernel();
-  sync_geometry_options(in);  // Gmsh reads Geometry.OldRuledSurface when it meshes
-  k.partition.reset();
-  if (std::string why = check_elements_across_channels(in.options()); !why.empty()) {
-    MeshFailure f{Diag::InvalidOptionValue, std::move(why), {}};
-    if (const auto it = k.option_set_at.find("Mesh.ElementsAcrossChannels"); it != k.option_set_at.end())
-      f.notes.push_back({it->second, "Mesh.ElementsAcrossChannels was set here"});
+  const int algo = static_cast<int>(in.options().number("Mesh.Algorithm"));
+  // A row of mesh/mesh2d_algorithms.h; the others are refused by their number.
+  const Mesh2dAlgorithmRow* row = mesh2d_algorithm_numbered(algo);
+  if (!row) {
+    MeshFailure f{Diag::MeshFailed,
+                  fmt::format("Mesh.Algorithm {} is not available: use {}", algo, mesh2d_algorithm_numbers()), {}};
+    if (const auto it = k.option_set_at.find("Mesh.Algorithm"); it != k.option_set_at.end())
+      f.notes.push_back({it->second, "Mesh.Algorithm was set here"});
     return f;
   }
-  // The background field with the coastlines' channel widths inside its Min.
-  // Shown as a stage when there is a field to set up (not for a model with sizes at points).
-  const bool has_fields = (k.background_field && *k.background_field > 0) || !k.coastlines.empty();
-  std::optional<StageScope> fields_stage(std::in_place, &k.clock, has_fields ? progress_sink(in) : nullptr, "fields");
-  field::FieldPtr background = with_channel_sizes(in, background_size_field(in));
-  fields_stage.reset();
-  const double max_elements = in.options().number("Mesh.MaxElements");
-  Mesh2dOptions opt2;
-  if (dim >= 2) {
-    const int algo = static_cast<int>(in.options().number("Mesh.Algorithm"));
-    // A row of mesh/mesh2d_algorithms.h; the others are refused by their number.
-    const Mesh2dAlgorithmRow* row = mesh2d_algorithm_numbered(algo);
-    if (!row) {
-      MeshFailure f{Diag::MeshFailed,
-                    fmt::format("Mesh.Algorithm {} is not available: use {}", algo, mesh2d_algorithm_numbers()), {}};
-      if (const auto it = k.option_set_at.find("Mesh.Algorithm"); it != k.option_set_at.end())
-        f.notes.push_back({it->second, "Mesh.Algorithm was set here"});
-      return f;
-    }
-    opt2.algorithm = row->algorithm;
-    opt2.size = size_policy_from_options(in.options());
-    opt2.background = background.get();
-    opt2.bbox_diag = model_bbox_diag(k.model);
-    opt2.smoothing = static_cast<int>(in.options().number("Mesh.Smoothing"));
-    opt2.quality_pass = in.options().number("Mesh.QualityPass") != 0;
-    opt2.quality_floor = quality_floor_in_effect(in);
-    opt2.max_elements = max_elements;
-    // Threads for faces refined in parts: Mesh.MaxNumThreads2D, else General.NumThreads (0:
-    // the hardware's). The mesh is the same for any count; meshadapt stays serial.
-    const int threads_2d = static_cast<int>(in.options().number("Mesh.MaxNumThreads2D"));
-    opt2.threads = threads_2d > 0 ? threads_2d : static_cast<int>(in.options().number("General.NumThreads"));
-  }
-  // The depth field is read only when a fort.14 / hgrid.gr3 is written, after meshing:
-  // one that names no field is refused before the meshing is paid for.
+  opt2.algorithm = row->algorithm;
+  opt2.size = size_policy_from_options(in.options());
+  opt2.background = background;
+  opt2.bbox_diag = model_bbox_diag(k.model);
+  opt2.smoothing = static_cast<int>(in.options().number("Mesh.Smoothing"));
+  opt2.quality_pass = in.options().number("Mesh.QualityPass") != 0;
+  opt2.quality_floor = quality_floor_in_effect(in);
+  opt2.max_elements = in.options().number("Mesh.MaxElements");
+  // Threads for faces refined in parts: Mesh.MaxNumThreads2D, else General.NumThreads (0:
+  // the hardware's). The mesh is the same for any count; meshadapt stays serial.
+  const int threads_2d = static_cast<int>(in.options().number("Mesh.MaxNumThreads2D"));
+  opt2.threads = threads_2d > 0 ? threads_2d : static_cast<int>(in.options().number("General.NumThreads"));
+  return {};
+}
+
+// The depth field named by Mesh.DepthField, built now so that one that names no field or
+// cannot be built is reported before the meshing is paid for (it is read only when a
+// fort.14 / hgrid.gr3 is written, after meshing); null when none is set.
+MeshFailure depth_field_for_mesh(Interpreter& in, field::FieldPtr& depth) {
+  KernelState& k = in.kernel();
   const double depth_field = in.options().number("Mesh.DepthField");
-  if (depth_field > 0 && !k.field_defined_at.count(static_cast<int>(depth_field))) {
+  if (!(depth_field > 0)) return {};
+  if (!k.field_defined_at.count(static_cast<int>(depth_field))) {
     MeshFailure f{Diag::InvalidOptionValue,
                   fmt::format("Mesh.DepthField = {:g} names no field: define Field[{:g}], or set Mesh.DepthField = 0",
                               depth_field, depth_field),
@@ -299,30 +287,18 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
       f.notes.push_back({it->second, "Mesh.DepthField was set here"});
     return f;
   }
-  // Built now, so that a depth field that cannot be built is reported before meshing.
-  field::FieldPtr depth;
-  if (depth_field > 0) {
-    const auto it = k.option_set_at.find("Mesh.DepthField");
-    const int id = static_cast<int>(depth_field);
-    depth = built_fields(in, id, it != k.option_set_at.end() ? it->second : SourceRange{}).shared(id);
-    if (std::string why = check_depth_sampling(in, *depth); !why.empty())
-      return {Diag::InvalidOptionValue, std::move(why), set_here(k, "Mesh.DepthSampling")};
-  }
-  // Mesh.MinTimeStep: no size below the one a gravity wave crosses in the step (with a
-  // margin, as the shortest edge of a good triangle is about 0.7 of its size).
-  const double min_step = in.options().number("Mesh.MinTimeStep");
-  if (min_step > 0 && !depth)
-    return {Diag::InvalidOptionValue,
-            fmt::format("Mesh.MinTimeStep = {:g} needs the depth of the water: set Mesh.DepthField to a depth field "
-                        "(a Bathymetry, say), or set Mesh.MinTimeStep = 0",
-                        min_step),
-            set_here(k, "Mesh.MinTimeStep")};
-  if (min_step > 0 && background) {
-    background = field::time_step_floor(background, depth, min_step, in.options().number("Mesh.TimeStepMinDepth"),
-                                        kMinStepSizeFactor);
-    opt2.background = background.get();
-  }
-  // The structured constraints with the Mesh.* options that complete them.
+  const auto it = k.option_set_at.find("Mesh.DepthField");
+  const int id = static_cast<int>(depth_field);
+  depth = built_fields(in, id, it != k.option_set_at.end() ? it->second : SourceRange{}).shared(id);
+  if (std::string why = check_depth_sampling(in, *depth); !why.empty())
+    return {Diag::InvalidOptionValue, std::move(why), set_here(k, "Mesh.DepthSampling")};
+  return {};
+}
+
+// The structured constraints with the Mesh.* options that complete them, and each
+// surface's own algorithm (MeshAlgorithm Surface).
+MeshFailure structured_constraints(Interpreter& in, int dim, Mesh2dOptions& opt2) {
+  KernelState& k = in.kernel();
   MeshConstraints& constraints = k.constraints;
   constraints.recombine_all = in.options().number("Mesh.RecombineAll") != 0;
   const int recombination = static_cast<int>(in.options().number("Mesh.RecombinationAlgorithm"));
@@ -344,8 +320,13 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
                          {}};
     opt2.surface_algorithm[surface] = row->algorithm;
   }
-  // The boundary-layer fields, built here so that bad options and missing curves are
-  // reported at their statements before anything is meshed.
+  return {};
+}
+
+// The boundary-layer fields, built here so that bad options and missing curves are
+// reported at their statements before anything is meshed.
+std::vector<field::BoundaryLayerParams> boundary_layers_of(Interpreter& in) {
+  KernelState& k = in.kernel();
   std::vector<field::BoundaryLayerParams> layers;
   for (const auto& [fid, at] : k.boundary_layer_fields) {
     if (!k.fields.contains(fid))
@@ -361,18 +342,171 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
       fail_field_error(in, e, at);
     }
   }
+  return layers;
+}
+
+// -1's end: the node count and the summary of the curves' edges, as -2 prints the 2D
+// statistics (edges along the model's sphere when it has one: metres with earth.geo, as
+// the time step measures them).
+MeshFailure finish_1d(Interpreter& in, std::shared_ptr<ModelMesh> mesh) {
+  KernelState& k = in.kernel();
+  if (in.options().number("Mesh.NbPartitions") > 0)
+    return {Diag::InvalidOptionValue,
+            fmt::format("Mesh.NbPartitions = {:g}: partitions are made of the 2D mesh (mesh with -2 or 'Mesh 2;')",
+                        in.options().number("Mesh.NbPartitions")),
+            set_here(k, "Mesh.NbPartitions")};
+  in.options().set_number("Mesh.NbNodes", static_cast<double>(mesh->nodes.size()), /*internal=*/true);
+  Vec3 centre{};
+  double radius = 0;
+  for (const auto& [tag, g] : k.model.geometries()) {
+    centre = g.centre();
+    radius = g.radius();
+    break;
+  }
+  k.curve_stats = curve_stats(*mesh, centre, radius);
+  k.has_curve_stats = true;
+  k.has_mesh_stats = false;
+  if (in.options().number("General.Verbosity") >= 4) {
+    std::fflush(stdout);
+    std::fputs(format_curve_stats(k.curve_stats).c_str(), stderr);
+    std::fflush(stderr);
+  }
+  k.mesh = std::move(mesh);
+  return {};
+}
+
+// The worst triangle's place in longitude/latitude when its surface is on a sphere.
+void locate_worst_triangle(const geo::Model& model, MeshStats& st) {
+  const geo::ModelSurface* ws = st.min_rho_surface ? model.surface(st.min_rho_surface) : nullptr;
+  const geo::SurfaceGeometry* g = ws && ws->geometry ? model.geometry(ws->geometry) : nullptr;
+  if (!g) return;
+  geo::LonLat ll;
+  if (g->polar()) {
+    ll = g->polar()->to_lonlat(st.min_rho_at);
+  } else {
+    const Vec2 uv = g->param(st.min_rho_at);
+    ll = {uv.x * geo::kRadToDeg, uv.y * geo::kRadToDeg};
+  }
+  st.has_min_rho_lonlat = true;
+  st.min_rho_lon = ll.lon, st.min_rho_lat = ll.lat;
+}
+
+// The depths the ocean grids get at the nodes of the 2D elements (those the written files
+// hold; Mesh.DepthSampling included), the time step they give, and what MinDepth did to them.
+MeshFailure depth_and_time_step(Interpreter& in, const ModelMesh& mesh, MeshStats& st) {
+  constexpr std::uint32_t kUnused = 0xFFFFFFFFu;
+  std::vector<std::uint32_t> local(mesh.nodes.size(), kUnused);
+  std::vector<Vec3> xyz;
+  auto use = [&](std::uint32_t v) {
+    if (local[v] == kUnused) {
+      local[v] = static_cast<std::uint32_t>(xyz.size());
+      xyz.push_back(mesh.nodes[v].xyz);
+    }
+    return local[v];
+  };
+  std::vector<std::array<std::uint32_t, 2>> edges;
+  const bool sampled = in.options().number("Mesh.DepthSampling") == 1;
+  auto add_element = [&](const std::uint32_t* corners, std::size_t n) {
+    for (std::size_t c = 0; c < n; ++c) {
+      const std::uint32_t a = use(corners[c]), b = use(corners[(c + 1) % n]);
+      if (sampled) edges.push_back({a, b});
+    }
+  };
+  for (const auto& [tag, surf] : mesh.surfaces) {
+    for (const auto& t : surf.triangles) add_element(t.data(), 3);
+    for (const auto& q : surf.quads) add_element(q.data(), 4);
+  }
+  std::vector<double> h;
+  std::optional<field::DepthClampReport> clamp;
+  if (std::string why = depth_at(in, xyz, edges, h, &clamp); !why.empty())
+    return {Diag::InvalidOptionValue, std::move(why), set_here(in.kernel(), "Mesh.DepthField")};
+  std::vector<double> node_h(mesh.nodes.size(), 0.0);   // nodes of no element: not read
+  for (std::size_t v = 0; v < local.size(); ++v)
+    if (local[v] != kUnused) node_h[v] = h[local[v]];
+  st.time_step = time_step_of(in, mesh, node_h);
+  if (clamp) {
+    st.has_depth_clamp = true;
+    st.depth_clamp = *clamp;
+    report_depth_clamp(in, *clamp);
+  }
+  return {};
+}
+
+// After 2D: the compound unions' elements back on their surfaces (with each union's target
+// size), the periodic node pairs, and the mesher's warnings as diagnostics at `where`, so
+// that they print in order with Printf and the progress display (the front end drops them
+// below General.Verbosity 2).
+MeshFailure finish_2d_elements(Interpreter& in, const CompoundSurfacePlan& compounds, ModelMesh& mesh,
+                               Mesh2dResult& r2, SourceRange where) {
+  KernelState& k = in.kernel();
+  classify_compound_elements(k.model, compounds, mesh);
+  if (!k.constraints.periodic_curves.empty()) {   // the quality floor may have split a curve edge
+    std::string why;
+    mesh.periodic = periodic_links(k.model, mesh, k.constraints, &why);
+    if (!why.empty()) return {Diag::MeshFailed, why, {}};
+  }
+  for (const CompoundSurfacePlan::Group& g : compounds.groups)   // the union's target size on each original
+    for (std::size_t i = 0, n = r2.target_sizes.size(); i < n; ++i)
+      if (r2.target_sizes[i].surface == g.union_tag) {
+        for (int s : g.surfaces) r2.target_sizes.push_back({s, r2.target_sizes[i].size});
+        r2.target_sizes[i].surface = 0;
+      }
+  for (const StageTime& t : stage_times(r2.stats)) add_stage_time(k.mesh2d_parts, t);
+  for (std::string& w : r2.warnings) name_compound_unions(compounds, w);
+  for (std::string& w : r2.quality_warnings) name_compound_unions(compounds, w);
+  for (const std::string& w : r2.warnings) in.diags().report_message(where, Diag::MeshWarning, w);
+  for (const std::string& w : r2.quality_warnings) in.diags().report_message(where, Diag::MeshQualityFloor, w);
+  return {};
+}
+
+// Meshes the model up to `dim` into the kernel state; on failure returns why. The
+// mesher's warnings are reported at `where` (the Mesh statement; none for -1/-2). Every
+// option is checked and every field built before the 1D mesher runs.
+MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
+  KernelState& k = in.kernel();
+  sync_geometry_options(in);  // Gmsh reads Geometry.OldRuledSurface when it meshes
+  k.partition.reset();
+  if (std::string why = check_elements_across_channels(in.options()); !why.empty())
+    return {Diag::InvalidOptionValue, std::move(why), set_here(k, "Mesh.ElementsAcrossChannels")};
+  // The background field with the coastlines' channel widths inside its Min.
+  // Shown as a stage when there is a field to set up (not for a model with sizes at points).
+  const bool has_fields = (k.background_field && *k.background_field > 0) || !k.coastlines.empty();
+  std::optional<StageScope> fields_stage(std::in_place, &k.clock, has_fields ? progress_sink(in) : nullptr, "fields");
+  field::FieldPtr background = with_channel_sizes(in, background_size_field(in));
+  fields_stage.reset();
+  Mesh2dOptions opt2;
+  if (dim >= 2)
+    if (MeshFailure f = mesh2d_options(in, background.get(), opt2); f.failed()) return f;
+  field::FieldPtr depth;
+  if (MeshFailure f = depth_field_for_mesh(in, depth); f.failed()) return f;
+  // Mesh.MinTimeStep: no size below the one a gravity wave crosses in the step (with a
+  // margin, as the shortest edge of a good triangle is about 0.7 of its size).
+  const double min_step = in.options().number("Mesh.MinTimeStep");
+  if (min_step > 0 && !depth)
+    return {Diag::InvalidOptionValue,
+            fmt::format("Mesh.MinTimeStep = {:g} needs the depth of the water: set Mesh.DepthField to a depth field "
+                        "(a Bathymetry, say), or set Mesh.MinTimeStep = 0",
+                        min_step),
+            set_here(k, "Mesh.MinTimeStep")};
+  if (min_step > 0 && background) {
+    background = field::time_step_floor(background, depth, min_step, in.options().number("Mesh.TimeStepMinDepth"),
+                                        kMinStepSizeFactor);
+    opt2.background = background.get();
+  }
+  if (MeshFailure f = structured_constraints(in, dim, opt2); f.failed()) return f;
+  const std::vector<field::BoundaryLayerParams> layers = boundary_layers_of(in);
   opt2.boundary_layers = layers.empty() ? nullptr : &layers;
   opt2.boundary_layer_fan_elements = static_cast<int>(in.options().number("Mesh.BoundaryLayerFanElements"));
   Mesh1dOptions opt1 = mesh1d_options(in, background.get());
   opt1.boundary_layers = opt2.boundary_layers;
-  opt1.max_elements = max_elements;
-  opt1.constraints = &constraints;   // -1 too: Gmsh's odd counts are made in 1D
+  opt1.max_elements = in.options().number("Mesh.MaxElements");
+  opt1.constraints = &k.constraints;   // -1 too: Gmsh's odd counts are made in 1D
   // Many 1D nodes: the faces' budgets first, on a coarse boundary, before the full 1D
   // mesh is paid for (a unit square at size 1e-7 has 4e7 boundary nodes, 2e14 triangles).
   MeshError budget;
   // `Compound Surface{...}`: the model meshed holds each group's union in place of its
   // surfaces (mesh/compound_surface.h); the elements go back to them after 2D.
-  const CompoundSurfacePlan compounds = plan_compound_surfaces(k.model, constraints.compound_surfaces);
+  const CompoundSurfacePlan compounds = plan_compound_surfaces(k.model, k.constraints.compound_surfaces);
   const geo::Model& meshed = compounds.empty() ? k.model : compounds.model;
   for (const std::string& w : compounds.warnings) in.diags().report_message(where, Diag::MeshWarning, w);
   if (dim >= 2)
@@ -390,115 +524,22 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   // The merged files' surfaces, meshed as they are, on their points' and curves' nodes.
   if (const std::string why = add_discrete_surfaces(k.discrete, *mesh); !why.empty())
     return {Diag::MeshFailed, why, {}};
-  if (dim < 2) {
-    if (in.options().number("Mesh.NbPartitions") > 0)
-      return {Diag::InvalidOptionValue,
-              fmt::format("Mesh.NbPartitions = {:g}: partitions are made of the 2D mesh (mesh with -2 or 'Mesh 2;')",
-                          in.options().number("Mesh.NbPartitions")),
-              set_here(k, "Mesh.NbPartitions")};
-    in.options().set_number("Mesh.NbNodes", static_cast<double>(mesh->nodes.size()), /*internal=*/true);
-    // -1's summary, as -2 prints the 2D statistics: edges along the model's sphere
-    // when it has one (metres with earth.geo, as the time step measures them).
-    Vec3 centre{};
-    double radius = 0;
-    for (const auto& [tag, g] : k.model.geometries()) {
-      centre = g.centre();
-      radius = g.radius();
-      break;
-    }
-    k.curve_stats = curve_stats(*mesh, centre, radius);
-    k.has_curve_stats = true;
-    k.has_mesh_stats = false;
-    if (in.options().number("General.Verbosity") >= 4) {
-      std::fflush(stdout);
-      std::fputs(format_curve_stats(k.curve_stats).c_str(), stderr);
-      std::fflush(stderr);
-    }
-    k.mesh = std::move(mesh);
-    return {};
-  }
+  if (dim < 2) return finish_1d(in, std::move(mesh));
   opt2.progress = progress_sink(in);
   std::optional<StageScope> stage_2d(std::in_place, &k.clock, nullptr, "2D");
   Mesh2dResult r2 = mesh_surfaces(meshed, *mesh, opt2);
   stage_2d.reset();
   name_compound_unions(compounds, r2.error);
   if (!r2.ok()) return failure_of(k, r2.error);
-  classify_compound_elements(k.model, compounds, *mesh);
-  if (!constraints.periodic_curves.empty()) {   // the quality floor may have split a curve edge
-    std::string why;
-    mesh->periodic = periodic_links(k.model, *mesh, constraints, &why);
-    if (!why.empty()) return {Diag::MeshFailed, why, {}};
-  }
-  for (const CompoundSurfacePlan::Group& g : compounds.groups)   // the union's target size on each original
-    for (std::size_t i = 0, n = r2.target_sizes.size(); i < n; ++i)
-      if (r2.target_sizes[i].surface == g.union_tag) {
-        for (int s : g.surfaces) r2.target_sizes.push_back({s, r2.target_sizes[i].size});
-        r2.target_sizes[i].surface = 0;
-      }
-  for (const StageTime& t : stage_times(r2.stats)) add_stage_time(k.mesh2d_parts, t);
-  // As diagnostics, so that they print in order with Printf and the progress display
-  // (the front end drops them below General.Verbosity 2).
-  for (std::string& w : r2.warnings) name_compound_unions(compounds, w);
-  for (std::string& w : r2.quality_warnings) name_compound_unions(compounds, w);
-  for (const std::string& w : r2.warnings) in.diags().report_message(where, Diag::MeshWarning, w);
-  for (const std::string& w : r2.quality_warnings) in.diags().report_message(where, Diag::MeshQualityFloor, w);
+  if (MeshFailure f = finish_2d_elements(in, compounds, *mesh, r2, where); f.failed()) return f;
   // Statistics against the size each face's mesher aimed at (with the extension from
   // the boundary where it is on).
   std::optional<StageScope> stage_stats(std::in_place, &k.clock, progress_sink(in), "statistics");
   MeshStats st = mesh_stats(*mesh, r2.target_sizes, static_cast<int>(in.options().number("General.NumThreads")));
-  // The worst triangle's place in longitude/latitude when its surface is on a sphere.
-  if (const geo::ModelSurface* ws = st.min_rho_surface ? k.model.surface(st.min_rho_surface) : nullptr)
-    if (const geo::SurfaceGeometry* g = ws->geometry ? k.model.geometry(ws->geometry) : nullptr) {
-      geo::LonLat ll;
-      if (g->polar()) {
-        ll = g->polar()->to_lonlat(st.min_rho_at);
-      } else {
-        const Vec2 uv = g->param(st.min_rho_at);
-        ll = {uv.x * geo::kRadToDeg, uv.y * geo::kRadToDeg};
-      }
-      st.has_min_rho_lonlat = true;
-      st.min_rho_lon = ll.lon, st.min_rho_lat = ll.lat;
-    }
+  locate_worst_triangle(k.model, st);
   if (depth && min_step > 0) enforce_min_time_step(in, *mesh, *depth, min_step, where);
-  if (depth) {
-    // The depths the ocean grids get at the nodes of the 2D elements (those the written
-    // files hold; Mesh.DepthSampling included), and what MinDepth did to them.
-    constexpr std::uint32_t kUnused = 0xFFFFFFFFu;
-    std::vector<std::uint32_t> local(mesh->nodes.size(), kUnused);
-    std::vector<Vec3> xyz;
-    auto use = [&](std::uint32_t v) {
-      if (local[v] == kUnused) {
-        local[v] = static_cast<std::uint32_t>(xyz.size());
-        xyz.push_back(mesh->nodes[v].xyz);
-      }
-      return local[v];
-    };
-    std::vector<std::array<std::uint32_t, 2>> edges;
-    const bool sampled = in.options().number("Mesh.DepthSampling") == 1;
-    auto add_element = [&](const std::uint32_t* corners, std::size_t n) {
-      for (std::size_t c = 0; c < n; ++c) {
-        const std::uint32_t a = use(corners[c]), b = use(corners[(c + 1) % n]);
-        if (sampled) edges.push_back({a, b});
-      }
-    };
-    for (const auto& [tag, surf] : mesh->surfaces) {
-      for (const auto& t : surf.triangles) add_element(t.data(), 3);
-      for (const auto& q : surf.quads) add_element(q.data(), 4);
-    }
-    std::vector<double> h;
-    std::optional<field::DepthClampReport> clamp;
-    if (std::string why = depth_at(in, xyz, edges, h, &clamp); !why.empty())
-      return {Diag::InvalidOptionValue, std::move(why), set_here(k, "Mesh.DepthField")};
-    std::vector<double> node_h(mesh->nodes.size(), 0.0);   // nodes of no element: not read
-    for (std::size_t v = 0; v < local.size(); ++v)
-      if (local[v] != kUnused) node_h[v] = h[local[v]];
-    st.time_step = time_step_of(in, *mesh, node_h);
-    if (clamp) {
-      st.has_depth_clamp = true;
-      st.depth_clamp = *clamp;
-      report_depth_clamp(in, *clamp);
-    }
-  }
+  if (depth)
+    if (MeshFailure f = depth_and_time_step(in, *mesh, st); f.failed()) return f;
   stage_stats.reset();   // a stage of its own, not counted twice in the time line
   if (std::string why = partition_mesh_now(in, *mesh, &st); !why.empty())
     return {Diag::InvalidOptionValue, std::move(why), set_here(k, "Mesh.NbPartitions")};
