@@ -207,6 +207,16 @@ Interpreter::Flow Interpreter::exec_command(const Stmt& s, const CommandStmt& c)
     }
     return Flow::Normal;
   }
+  if (name == "Homology" || name == "Cohomology" || name == "Betti") {
+    // Gmsh adds the bases it finds to the mesh as physical groups, after meshing: the
+    // lists are evaluated (their mistakes are the script's), the request noted once.
+    if (c.arg.valid()) (void)eval(c.arg);
+    if (reported_unsupported_.insert("(co)homology").second) {   // one note for the three
+      auto h = diags_.report(c.command_range, Diag::HomologySkipped, name, " (noted once per run)");
+      for (const auto& n : frame_notes()) h.note(n.range, n.message);
+    }
+    return Flow::Normal;
+  }
   if (!exec_mesh_command(*this, current_stmt_, name)) not_supported_stmt(current_stmt_, name);
   return Flow::Normal;
 }

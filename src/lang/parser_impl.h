@@ -117,6 +117,7 @@ class Parser {
   StmtId parse_ident_statement();
   StmtId parse_assignment(const Token& first);
   StmtId parse_command(const Token& word);
+  StmtId parse_homology(const Token& word);
   StmtId parse_print();
   StmtId parse_define_constant();
   OnelabAttr parse_onelab_attr_after(const Token& key, Tok closer);

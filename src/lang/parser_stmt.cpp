@@ -24,6 +24,9 @@ constexpr std::string_view kBareCommands[] = {
     "RefineMesh", "RecombineMesh", "RenumberMeshNodes", "RenumberMeshElements", "SyncModel", "CreateTopology",
     "ClassifySurfaces", "Draw", "NewModel", "CreateGeometry",
 };
+// Gmsh's (co)homology requests (Parser/Gmsh.y's HomologyCommand): words of their own there,
+// so never a variable's name.
+constexpr std::string_view kHomologyCommands[] = {"Homology", "Cohomology", "Betti"};
 
 template <std::size_t N>
 bool in(const std::string_view (&list)[N], std::string_view w) {
@@ -59,6 +62,7 @@ std::string_view closest_statement_word(std::string_view w) {
   for (std::string_view k : kStringCommands) consider(k);
   for (std::string_view k : kNumberCommands) consider(k);
   for (std::string_view k : kBareCommands) consider(k);
+  for (std::string_view k : kHomologyCommands) consider(k);
   return best;
 }
 
@@ -86,6 +90,8 @@ StmtId Parser::parse_ident_statement() {
   const std::string_view w = text(t);
   const Tok next = kind(1);
   if (next == Tok::Field) return parse_background_field();
+  if (in(kHomologyCommands, w) && (next == Tok::Semicolon || next == Tok::LBrace || next == Tok::LParen))
+    return parse_homology(advance());
   const bool assignment_like = next == Tok::Dot || is_affop(next) || next == Tok::LBracket || next == Tok::LParen ||
                                next == Tok::Tilde || next == Tok::PlusPlus || next == Tok::MinusMinus;
   if (!assignment_like) {
@@ -119,6 +125,35 @@ StmtId Parser::parse_command(const Token& word) {
   node.command = ast_.intern(w);
   node.command_range = word.range;
   if (!at(Tok::Semicolon)) node.arg = parse_expr();
+  expect_semicolon();
+  return add(word, node);
+}
+
+// homology := ("Homology" | "Cohomology" | "Betti")
+//             [ "(" expr ")" "{" item "," item "}" | "{" item [ "," item ] "}" ] ";"
+// The command's argument: a list of the dimensions (when given: a number or a list), the
+// domain and the subdomain (when given), as written.
+StmtId Parser::parse_homology(const Token& word) {
+  CommandStmt node;
+  node.command = ast_.intern(text(word));
+  node.command_range = word.range;
+  ExprList parts;
+  const bool dims = at(Tok::LParen);
+  if (dims) {
+    const Token open = advance();
+    parts.push_back(parse_expr());
+    expect_closing(Tok::RParen, open);
+    if (!at(Tok::LBrace)) fail_expected("'{' and the domain and subdomain after the dimensions");
+  }
+  if (at(Tok::LBrace)) {
+    const Token open = advance();
+    ExprList lists = parse_items_until(Tok::RBrace, open);
+    if (lists.empty() || lists.size() > 2 || (dims && lists.size() != 2))
+      fail_expected(fmt::format("{} in '{}'", dims ? "{domain, subdomain}" : "{domain} or {domain, subdomain}",
+                                text(word)));
+    for (ExprId e : lists) parts.push_back(e);
+    node.arg = add_expr(open, ListExpr{std::move(parts)});
+  }
   expect_semicolon();
   return add(word, node);
 }
