@@ -4,7 +4,8 @@
 // a discrete curve through them and writes it as a curve of its own; here every mesh
 // edge stays on the original curve it lies on, so each inner end point keeps a node: the
 // concatenation's node nearest to it is moved onto it (the count stays Gmsh's), or, when
-// that node is an end or already moved, the end point is one node more.
+// that node is an end or already moved, the end point is one node more. Gmsh's discrete
+// curve takes at least 2 segments (3 when closed), a compound of one curve too.
 #pragma once
 
 #include <vector>

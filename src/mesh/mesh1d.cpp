@@ -766,7 +766,7 @@ void plan_compounds(const geo::Model& model, const Mesh1dOptions& opt, std::vect
   if (!opt.constraints) return;
   for (const std::vector<int>& group : opt.constraints->compound_curves) {
     const std::vector<CompoundLink> chain = chain_compound(model, group);
-    if (chain.size() < 2) continue;
+    if (chain.empty()) continue;
     std::vector<CurvePlan*> members;
     std::vector<double> totals;
     for (const CompoundLink& l : chain) {
@@ -781,7 +781,13 @@ void plan_compounds(const geo::Model& model, const Mesh1dOptions& opt, std::vect
       totals.push_back(cp.prim.total());
     }
     if (members.size() != chain.size()) continue;
-    const std::vector<std::vector<double>> shares = compound_node_positions(totals);
+    // Gmsh meshes the compound as a discrete curve, which takes at least 2 segments, 3 when
+    // it is closed (Geo/discreteEdge.h's minimumMeshSegments): a one-curve compound too.
+    const CompoundLink& first = chain.front();
+    const CompoundLink& last = chain.back();
+    const int start = first.reversed ? members.front()->mc->end : members.front()->mc->begin;
+    const int finish = last.reversed ? members.back()->mc->begin : members.back()->mc->end;
+    const std::vector<std::vector<double>> shares = compound_node_positions(totals, start == finish ? 3 : 2);
     for (std::size_t i = 0; i < members.size(); ++i) {
       CurvePlan& cp = *members[i];
       std::vector<double> ts{0.0};
