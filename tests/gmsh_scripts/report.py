@@ -217,7 +217,7 @@ def write_markdown(results, out, timeout, build_dir=None):
     in_eval = sum(r["eval"] in ("agrees", "differs") for r in in_scope)
     if in_scope:
         lines.append(f"- In the project's scope (2D, the built-in geometry kernel, no post-processing views): "
-                     f"**{in_eval} of {len(in_scope)}** evaluate ({100 * in_eval / len(in_scope):.0f}%); out of "
+                     f"**{in_eval} of {len(in_scope)}** evaluate ({100 * in_eval / len(in_scope):.1f}%); out of "
                      "scope: " + (", ".join(f"{n} ({why})" for n, why in outside) or "none") + ".")
     # Every script both mesh with elements, quadrangle meshes included.
     meshed_both = [r for r in tried if r["sm2"]["status"] == "ok" and r["gmsh2"]["status"] == "ok"
@@ -227,7 +227,7 @@ def write_markdown(results, out, timeout, build_dir=None):
     far = [os.path.basename(n) for n, r in results if id(r) in both_ids and id(r) not in close_ids]
     if meshed_both:
         lines.append(f"- Where both mesh (triangles or quadrangles), **{len(close)} of {len(meshed_both)}** "
-                     f"({100 * len(close) / len(meshed_both):.0f}%) have an element count (triangles + quadrangles) "
+                     f"({100 * len(close) / len(meshed_both):.1f}%) have an element count (triangles + quadrangles) "
                      "within 15% of gmsh's"
                      + (f" (not: {', '.join(far)})." if far else "."))
     # Scripts with Transfinite constraints: their grids are Gmsh's, so the counts must be equal.
