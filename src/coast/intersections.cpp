@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <tuple>
 
@@ -35,17 +36,24 @@ struct Grid {
 };
 
 // pad: per-loop, per-segment half widths added to the boxes (empty: none).
-std::vector<Seg> make_segments(std::span<const std::vector<Vec2>> loops, std::span<const std::vector<double>> pad) {
+// With `active`: only the segments whose flag is `want`, and of those only the ones whose
+// box meets [lo, hi].
+std::vector<Seg> make_segments(std::span<const std::vector<Vec2>> loops, std::span<const std::vector<double>> pad,
+                               std::span<const std::vector<char>> active = {}, bool want = true,
+                               Vec2 lo = {-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()},
+                               Vec2 hi = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()}) {
   std::vector<Seg> segs;
   for (std::uint32_t l = 0; l < loops.size(); ++l) {
     const auto& p = loops[l];
     const auto n = static_cast<std::uint32_t>(p.size());
     if (n < 2) continue;
     for (std::uint32_t i = 0; i < n; ++i) {
+      if (!active.empty() && (active[l][i] != 0) != want) continue;
       Seg s{p[i], p[(i + 1) % n], l, i, n, {}, {}};
       const double pd = pad.empty() ? 0.0 : 0.5 * pad[l][i];
       s.lo = {std::min(s.a.x, s.b.x) - pd, std::min(s.a.y, s.b.y) - pd};
       s.hi = {std::max(s.a.x, s.b.x) + pd, std::max(s.a.y, s.b.y) + pd};
+      if (s.lo.x > hi.x || s.hi.x < lo.x || s.lo.y > hi.y || s.hi.y < lo.y) continue;
       segs.push_back(s);
     }
   }
@@ -225,8 +233,7 @@ std::vector<NearMiss> find_near_pairs(std::span<const std::vector<Vec2>> loops,
                                       std::span<const std::vector<double>> width,
                                       std::span<const std::vector<char>> active, std::size_t* searched) {
   std::vector<NearMiss> out;
-  std::vector<Seg> on, off;   // active and inactive segments, each in (loop, index) order
-  for (const Seg& s : make_segments(loops, width)) (active[s.loop][s.index] ? on : off).push_back(s);
+  const std::vector<Seg> on = make_segments(loops, width, active, true);   // in (loop, index) order
   if (searched) *searched = on.size();
   if (on.empty()) return out;
   // The pair record as find_near_misses makes it: s before t in (loop, index) order.
@@ -240,11 +247,14 @@ std::vector<NearMiss> find_near_pairs(std::span<const std::vector<Vec2>> loops,
   // The grid holds only the active segments: the pairs of two active ones are found as by
   // find_near_misses, and each inactive one looks in the cells its box covers. A pair is
   // taken only in the cell of the lower corner of the two boxes' overlap, which lies in
-  // both boxes and so in a cell each of them covers: once, whatever the cell size.
+  // both boxes and so in a cell each of them covers: once, whatever the cell size. An
+  // inactive segment whose box misses the active ones' bounding box meets none of them.
   const Grid g = make_grid(on);
   const auto cells = bin(on, g);
   for_each_candidate(on, g, nullptr, [&](const Seg& s, const Seg& t) { test(s, t); });
-  for (const Seg& t : off)
+  Vec2 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()}, hi = -lo;
+  for (const Seg& s : on) lo = {std::min(lo.x, s.lo.x), std::min(lo.y, s.lo.y)}, hi = {std::max(hi.x, s.hi.x), std::max(hi.y, s.hi.y)};
+  for (const Seg& t : make_segments(loops, width, active, false, lo, hi))
     for (std::int64_t y = g.iy(t.lo.y); y <= g.iy(t.hi.y); ++y)
       for (std::int64_t x = g.ix(t.lo.x); x <= g.ix(t.hi.x); ++x) {
         const std::int64_t cell = y * g.nx + x;
@@ -261,6 +271,32 @@ std::vector<NearMiss> find_near_pairs(std::span<const std::vector<Vec2>> loops,
         }
       }
   sort_place_pairs(out);
+  return out;
+}
+
+std::vector<NearMiss> find_near_misses_again(std::span<const std::vector<Vec2>> loops,
+                                             std::span<const std::vector<double>> width,
+                                             std::span<const char> changed, std::vector<NearMiss> before) {
+  std::erase_if(before, [&](const NearMiss& m) { return changed[m.loop_a] || changed[m.loop_b]; });
+  std::vector<std::vector<char>> active(loops.size());
+  bool any = false;
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    active[l].assign(loops[l].size(), changed[l] ? 1 : 0);
+    any = any || (changed[l] && !loops[l].empty());
+  }
+  if (!any) return before;
+  std::vector<NearMiss> found = find_near_pairs(loops, width, active);
+  // Within one loop only far-apart parts count: at least 3 segments away both ways.
+  std::erase_if(found, [&](const NearMiss& m) {
+    if (m.loop_a != m.loop_b) return false;
+    const auto n = static_cast<std::uint32_t>(loops[m.loop_a].size());
+    const std::uint32_t d = m.seg_a > m.seg_b ? m.seg_a - m.seg_b : m.seg_b - m.seg_a;
+    return std::min(d, n - d) < 3;
+  });
+  std::vector<NearMiss> out;
+  out.reserve(before.size() + found.size());
+  std::merge(before.begin(), before.end(), found.begin(), found.end(), std::back_inserter(out),
+             [](const NearMiss& a, const NearMiss& b) { return place_pair_key(a) < place_pair_key(b); });
   return out;
 }
 

@@ -56,4 +56,14 @@ std::vector<NearMiss> find_near_pairs(std::span<const std::vector<Vec2>> loops,
                                       std::span<const std::vector<double>> width,
                                       std::span<const std::vector<char>> active, std::size_t* searched = nullptr);
 
+/// find_near_misses after some loops changed: `before` is find_near_misses of the loops as
+/// they were, and changed[l] marks each loop whose polygon or widths changed since (a loop
+/// emptied counts as changed). The pairs of two unchanged loops are those of `before`; the
+/// others are searched (find_near_pairs over the changed loops' segments, with the one-loop
+/// filter of find_near_misses). The result is find_near_misses(loops, width), record for
+/// record, at the cost of the changed loops' segments and the segments near them.
+std::vector<NearMiss> find_near_misses_again(std::span<const std::vector<Vec2>> loops,
+                                             std::span<const std::vector<double>> width,
+                                             std::span<const char> changed, std::vector<NearMiss> before);
+
 }  // namespace sm::coast

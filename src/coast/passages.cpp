@@ -370,18 +370,21 @@ struct KeptPart {
 
 // The kept nodes of the two loops a 2-opt at kept segments ja and jb of one loop makes:
 // a1 ... b0 and b1 ... a0 (kept positions ja + 1 .. jb and jb + 1 .. ja, cyclic).
+// Kept positions from .. to of f, inclusive, cyclic.
+KeptPart kept_range(const FlatLoop& f, std::size_t from, std::size_t to) {
+  const std::size_t k = f.kept.size();
+  KeptPart out;
+  const std::size_t len = (to + k - from) % k + 1;
+  out.ids.reserve(len);
+  out.uv.reserve(len);
+  out.metres.reserve(len);
+  out.append(f, from, len);
+  return out;
+}
+
 std::pair<KeptPart, KeptPart> split_kept(const FlatLoop& f, std::size_t ja, std::size_t jb) {
   const std::size_t k = f.kept.size();
-  auto range = [&](std::size_t from, std::size_t to) {   // positions from .. to inclusive, cyclic
-    KeptPart out;
-    const std::size_t len = (to + k - from) % k + 1;
-    out.ids.reserve(len);
-    out.uv.reserve(len);
-    out.metres.reserve(len);
-    out.append(f, from, len);
-    return out;
-  };
-  return {range((ja + 1) % k, jb), range((jb + 1) % k, ja)};
+  return {kept_range(f, (ja + 1) % k, jb), kept_range(f, (jb + 1) % k, ja)};
 }
 
 // The 2-opt at kept segment ja of loop la and jb of loop lb (see passages.h): four nodes
@@ -576,12 +579,19 @@ int sharp_dam_end(const Work& w, std::uint32_t la, std::size_t sa, std::uint32_t
     if (angle[k] < kMinDamCorner) first = k;
   if (first < 0 || la != lb) return first;   // two loops become one, which stays
   // One loop becomes two: b1 ... a0 (corners 0, 1) and a1 ... b0 (corners 2, 3).
-  auto [a_side, b_side] = split_kept(fa, sa, sb);   // a1 ... b0, b1 ... a0
-  const std::uint32_t head_a = a_side.ids.front(), head_b = b_side.ids.front();
-  const FlatLoop parts[2] = {make_loop(w, head_b, std::move(b_side.ids), std::move(b_side.uv)),
-                             make_loop(w, head_a, std::move(a_side.ids), std::move(a_side.uv))};
-  for (int k = 0; k < 4; ++k)
-    if (angle[k] < kMinDamCorner && fate_of(w, parts[k / 2]) == Fate::Kept) return k;
+  // Each part is made only when one of its corners is sharp (a part of a continent is its
+  // size): b1 ... a0 for corners 0 and 1, a1 ... b0 for 2 and 3.
+  std::optional<Fate> fate[2];
+  for (int k = 0; k < 4; ++k) {
+    if (!(angle[k] < kMinDamCorner)) continue;
+    const int side = k / 2;
+    if (!fate[side]) {
+      KeptPart part = side == 0 ? kept_range(fa, (sb + 1) % ka, sa) : kept_range(fa, (sa + 1) % ka, sb);
+      const std::uint32_t head = part.ids.front();
+      fate[side] = fate_of(w, make_loop(w, head, std::move(part.ids), std::move(part.uv)));
+    }
+    if (*fate[side] == Fate::Kept) return k;
+  }
   return -1;
 }
 
@@ -676,7 +686,8 @@ void trim_dam_wedges(Work& w, FlatLoop& f, std::array<std::uint32_t, 4> ends, Ne
 // cost O(size log size) per loop followed.
 class ChainTracker {
  public:
-  explicit ChainTracker(std::uint32_t l, std::size_t size) : loop_(l), count_(size), tree_(size + 1, 0) {
+  explicit ChainTracker(std::uint32_t l, std::size_t size)
+      : loop_(l), count_(size), tree_(size + 1, 0), here_(size, 1) {
     for (std::size_t i = 1; i <= size; ++i) {   // every position present: O(n) build
       tree_[i] += 1;
       if (const std::size_t up = i + (i & (~i + 1)); up <= size) tree_[up] += tree_[i];
@@ -694,21 +705,22 @@ class ChainTracker {
         if (!w.flat[c.loop].dead || !w.flat[c.loop].children.empty()) on = &c, ++going_on;
       if (going_on != 1 || on->offset != 0 || on->size != count_) return;
       // Positions from + len .. from + size - 1 of the current loop (cyclic) leave.
-      const std::size_t base = rank(start_);
+      const std::size_t base = base_;
       std::vector<std::uint32_t> gone;
       gone.reserve(count_ - on->len);
       for (std::size_t t = on->len; t < count_; ++t) gone.push_back(select((base + on->from + t) % count_));
       const std::uint32_t new_start = select((base + on->from) % count_);
       for (std::uint32_t x : gone) remove(x);
       start_ = new_start;
+      base_ = rank(start_);
       count_ = on->len;
       loop_ = on->loop;
     }
   }
   /// The loop reached and the place there of the round-start position p (none: p left).
   std::optional<std::pair<std::uint32_t, std::uint32_t>> at(std::uint32_t p) const {
-    if (!present(p)) return std::nullopt;
-    const std::size_t r = rank(p), b = rank(start_);
+    if (!here_[p]) return std::nullopt;
+    const std::size_t r = rank(p), b = base_;
     return std::pair{loop_, static_cast<std::uint32_t>((r + count_ - b) % count_)};
   }
 
@@ -719,7 +731,6 @@ class ChainTracker {
     for (std::size_t i = x; i > 0; i -= i & (~i + 1)) r += tree_[i];
     return r;
   }
-  bool present(std::uint32_t x) const { return rank(x + 1) - rank(x) == 1; }
   // The position with `r` present positions before it.
   std::uint32_t select(std::size_t r) const {
     std::size_t at = 0;
@@ -729,12 +740,17 @@ class ChainTracker {
     return static_cast<std::uint32_t>(at);
   }
   void remove(std::uint32_t x) {
+    here_[x] = 0;
     for (std::size_t i = std::size_t{x} + 1; i < tree_.size(); i += i & (~i + 1)) tree_[i] -= 1;
   }
   std::uint32_t loop_;
   std::size_t count_;
   std::uint32_t start_ = 0;
+  std::size_t base_ = 0;   // rank(start_), made again when start_ moves or positions leave
   std::vector<std::uint32_t> tree_;
+  // Whether each position is still in the chain: at() asks once per candidate, where two
+  // tree walks (a rank each) told it, a cache miss per level on a continent's tree.
+  std::vector<char> here_;
 };
 
 /// The live loop and kept position of the segment s0 -> s1 that was at kept position j of

@@ -746,11 +746,21 @@ void handle_straits(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops
   // Each pass merges every island at most once (its polygon changes); chains of islands
   // across several straits take several passes.
   constexpr int kMaxPasses = 16;
+  // A pass changes only the loops it merges (one made of two, the other dead): the next
+  // pass makes the polygons and widths of those again, keeps the others', and searches
+  // near misses only for the changed loops' segments (find_near_misses_again), where a
+  // full search of the world each pass was most of the straits' time (16 passes at 3 km).
+  std::vector<std::vector<Vec2>> polys(loops.size());
+  std::vector<std::vector<LoopVertexRef>> refs(loops.size());
+  std::vector<std::vector<double>> width(loops.size());
+  std::vector<char> changed(loops.size(), 1);
+  std::vector<NearMiss> near;
   for (int pass = 0; pass < kMaxPasses; ++pass) {
-    std::vector<std::vector<Vec2>> polys(loops.size());
-    std::vector<std::vector<LoopVertexRef>> refs(loops.size());
-    std::vector<std::vector<double>> width(loops.size());
     for (std::size_t l = 0; l < loops.size(); ++l) {
+      if (!changed[l]) continue;
+      polys[l].clear();
+      refs[l].clear();
+      width[l].clear();
       if (loops[l].dead) continue;
       loop_polygon(curves, loops[l], polys[l], &refs[l]);
       for (std::size_t s = 0; s < polys[l].size(); ++s) {
@@ -759,7 +769,8 @@ void handle_straits(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops
         width[l].push_back(opt.strait_factor * c.gamma[c.keep[r.k]] / lambda(polys[l][s], opt.radius));
       }
     }
-    const std::vector<NearMiss> near = find_near_misses(polys, width);
+    near = pass == 0 ? find_near_misses(polys, width) : find_near_misses_again(polys, width, changed, std::move(near));
+    std::fill(changed.begin(), changed.end(), 0);
     std::optional<SegmentGrid> grid;   // made at the pass's first merge tried
     // Narrowest place per pair of loops, narrowest pairs first; a place where the two
     // segments face each other (run in opposite directions, more than 120 degrees apart)
@@ -793,7 +804,6 @@ void handle_straits(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops
     std::stable_sort(order.begin(), order.end(),
                      [&](std::size_t a, std::size_t b) { return best[a].distance < best[b].distance; });
     bool merged = false;
-    std::vector<char> touched(loops.size(), 0);
     std::vector<RepairEntry> pending;
     for (std::size_t oi : order) {
       const NearMiss& m = best[oi];
@@ -803,8 +813,8 @@ void handle_straits(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops
       WorkLoop& la = loops[m.loop_a];
       WorkLoop& lb = loops[m.loop_b];
       const bool can_merge = opt.close_straits && best_facing[oi] && m.loop_a != m.loop_b && la.hole && lb.hole &&
-                             la.curves.size() == 1 && lb.curves.size() == 1 && !touched[m.loop_a] &&
-                             !touched[m.loop_b] && curves[la.curves[0]].periodic && curves[lb.curves[0]].periodic;
+                             la.curves.size() == 1 && lb.curves.size() == 1 && !changed[m.loop_a] &&
+                             !changed[m.loop_b] && curves[la.curves[0]].periodic && curves[lb.curves[0]].periodic;
       if (can_merge) {
         // The merge adds only the two bridge edges a[k]->b[k+1] and b[k]->a[k+1]; the
         // loops were intersection-free, so checking those two edges is enough.
@@ -833,7 +843,7 @@ void handle_straits(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops
         }
         if (!bad) {
           merge_across(curves, la, ra.k, lb, rb.k);
-          touched[m.loop_a] = touched[m.loop_b] = 1;
+          changed[m.loop_a] = changed[m.loop_b] = 1;   // merged once this pass, made again the next
           merged = true;
           log.push_back({RepairKind::MergedIslands, ca.record, ca.id, uv_to_lonlat(m.where), metres});
           continue;

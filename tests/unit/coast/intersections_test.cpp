@@ -10,6 +10,7 @@
 #include <set>
 #include <tuple>
 
+#include "coast/place_pairs.h"
 #include "exact/predicates.h"
 
 using namespace sm;
@@ -191,5 +192,62 @@ TEST_CASE("intersections: near pairs of the active segments are those of all pai
       REQUIRE(it != all.end());
       CHECK(it->distance == some[i].distance);
     }
+  }
+}
+
+TEST_CASE("intersections: near misses searched again for the changed loops are the full search's") {
+  // Wavy rings; between two searches some rings move, one is emptied (a loop merged away)
+  // and one gets new widths: the pairs kept from before plus those searched for the changed
+  // loops are find_near_misses of the new rings, record for record.
+  std::mt19937 rng(977);
+  std::uniform_real_distribution<double> u(0, 1);
+  auto ring = [&](Vec2 c, int n) {
+    std::vector<Vec2> p;
+    for (int i = 0; i < n; ++i) {
+      const double a = 6.283185307179586 * i / n;
+      const double r = 0.12 * (1 + 0.3 * std::sin(5 * a) + 0.2 * u(rng));
+      p.push_back({c.x + r * std::cos(a), c.y + r * std::sin(a)});
+    }
+    return p;
+  };
+  std::vector<std::vector<Vec2>> loops;
+  std::vector<std::vector<double>> width;
+  for (int l = 0; l < 12; ++l) {
+    loops.push_back(ring({u(rng), u(rng)}, 30 + 3 * l));
+    std::vector<double> w;
+    for (std::size_t i = 0; i < loops.back().size(); ++i) w.push_back(0.01 + 0.05 * u(rng));
+    width.push_back(w);
+  }
+  auto same = [](const std::vector<NearMiss>& a, const std::vector<NearMiss>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+      if (place_pair_key(a[i]) != place_pair_key(b[i]) || a[i].distance != b[i].distance || !(a[i].where == b[i].where))
+        return false;
+    return true;
+  };
+  std::vector<NearMiss> near = find_near_misses(loops, width);
+  REQUIRE(near.size() > 50);
+  for (int trial = 0; trial < 8; ++trial) {
+    std::vector<char> changed(loops.size(), 0);
+    const auto moved = static_cast<std::size_t>(trial % 12), emptied = static_cast<std::size_t>((trial * 5 + 3) % 12);
+    loops[moved] = ring({u(rng), u(rng)}, 40);
+    width[moved].assign(40, 0.03);
+    changed[moved] = 1;
+    if (trial % 2 == 0 && emptied != moved) {
+      loops[emptied].clear();
+      width[emptied].clear();
+      changed[emptied] = 1;
+    }
+    const auto rewidthed = static_cast<std::size_t>((trial * 7 + 1) % 12);
+    if (!loops[rewidthed].empty()) {
+      for (double& w : width[rewidthed]) w *= 1.5;
+      changed[rewidthed] = 1;
+    }
+    const std::vector<NearMiss> full = find_near_misses(loops, width);
+    const std::vector<NearMiss> again = find_near_misses_again(loops, width, changed, near);
+    CHECK(same(again, full));
+    // The loops left unmarked keep their old pairs: marking none misses the changes.
+    if (trial == 0) CHECK(!same(find_near_misses_again(loops, width, std::vector<char>(loops.size(), 0), near), full));
+    near = again;
   }
 }

@@ -57,3 +57,44 @@ TEST_CASE("segment grid: every segment whose box meets the query's is visited on
   SegmentGrid empty(none);
   CHECK_FALSE(empty.any_near({0, 0}, {1, 1}, [](Vec2, Vec2) { return true; }));
 }
+
+TEST_CASE("segment grid: a dense place is cut finer, so a small query there reads few segments") {
+  // One wide polygon and a cluster of 4,000 short segments in a corner a thousandth of its
+  // size (the coast near the map's centre against the far north): the coarse cells there
+  // hold the whole cluster; a query the size of one segment reads a handful of them, and
+  // still every segment its box meets (the oracle).
+  std::vector<std::vector<Vec2>> polys;
+  polys.push_back({{-100, -100}, {100, -100}, {100, 100}, {-100, 100}});
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> in(0.0, 0.1), step(-0.001, 0.001);
+  for (int r = 0; r < 400; ++r) {
+    std::vector<Vec2> p;
+    Vec2 x{in(rng), in(rng)};
+    for (int i = 0; i < 10; ++i) p.push_back(x), x = x + Vec2{step(rng), step(rng)};
+    polys.push_back(p);
+  }
+  SegmentGrid grid(polys);
+  std::uniform_real_distribution<double> q(0.0, 0.1);
+  std::size_t found = 0;
+  for (int k = 0; k < 200; ++k) {
+    const Vec2 lo{q(rng), q(rng)}, hi = lo + Vec2{0.002, 0.002};
+    std::size_t want = 0, got = 0;
+    for (const auto& p : polys)
+      for (std::size_t j = 0; j < p.size(); ++j) {
+        const Vec2 a = p[j], b = p[(j + 1) % p.size()];
+        want += std::max(a.x, b.x) >= lo.x && std::min(a.x, b.x) <= hi.x && std::max(a.y, b.y) >= lo.y &&
+                std::min(a.y, b.y) <= hi.y;
+      }
+    grid.any_near(lo, hi, [&](Vec2 a, Vec2 b) {
+      got += std::max(a.x, b.x) >= lo.x && std::min(a.x, b.x) <= hi.x && std::max(a.y, b.y) >= lo.y &&
+             std::min(a.y, b.y) <= hi.y;
+      return false;
+    });
+    CHECK(got == want);
+    found += want;
+  }
+  CHECK(found > 200);
+  // 200 queries: about a hundred segments each at most, where the coarse cells alone gave
+  // the whole cluster (4,000) to every one.
+  CHECK(grid.visited() < 200 * 100);
+}
