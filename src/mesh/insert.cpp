@@ -74,11 +74,12 @@ InsertOutcome PointInserter::insert(Vec2 c, TriId t0) {
     }
     void visit(std::uint32_t nt) {
       if (marked) {
+        in.m_.will_change_tri(TriId{nt});
         in.m_.tri_flags[nt] |= kMark;
       } else if (in.cavity_.size() + in.stack_.size() > kScanned) {
         marked = true;
-        for (const std::uint32_t x : in.cavity_) in.m_.tri_flags[x] |= kMark;
-        for (const std::uint32_t x : in.stack_) in.m_.tri_flags[x] |= kMark;
+        for (const std::uint32_t x : in.cavity_) in.m_.will_change_tri(TriId{x}), in.m_.tri_flags[x] |= kMark;
+        for (const std::uint32_t x : in.stack_) in.m_.will_change_tri(TriId{x}), in.m_.tri_flags[x] |= kMark;
       }
     }
     void boundary(std::uint32_t t, std::uint32_t e) {
@@ -121,11 +122,12 @@ InsertOutcome PointInserter::insert(Vec2 c, TriId t0) {
   for (std::size_t i = 0; i < k; ++i) {
     const Bound& bd = bound_[i];
     const std::uint32_t t = cavity_[i], s = 3 * t;
+    m_.will_change_tri(TriId{t});
     m_.tri_flags[t] = 0;
     m_.corner[s] = bd.a, m_.corner[s + 1] = bd.b, m_.corner[s + 2] = v;
     m_.side_flags[s] = bd.flags, m_.side_flags[s + 1] = 0, m_.side_flags[s + 2] = 0;
     m_.link(Side{s}, bd.outer);
-    if (keep_out_side) m_.out_side[bd.a.value] = Side{s};
+    if (keep_out_side) m_.will_change_vertex(bd.a), m_.out_side[bd.a.value] = Side{s};
   }
   if (keep_out_side) m_.out_side[v.value] = Side{3 * cavity_[0] + 2};
   // Link b -> v of the triangle on (a, b) with v -> b of the one on (b, c).

@@ -223,6 +223,7 @@ bool Floor::bulge_is_clear(Side s, Vec2 p) {
   const Vec2 pa = m_.pos(a), pb = m_.pos(b);
   near_.clear();
   near_.push_back(tri_of(s));
+  m_.will_change_tri(tri_of(s));
   m_.tri_flags[tri_of(s).value] |= kMark;
   for (std::size_t begin = 0, ring = 0; ring < kRings; ++ring) {
     const std::size_t end = near_.size();
@@ -230,6 +231,7 @@ bool Floor::bulge_is_clear(Side s, Vec2 p) {
       for (std::uint32_t e = 0; e < 3; ++e) {
         const Side o = m_.twin[side_of(near_[i], e).value];
         if (!o.valid() || (m_.tri_flags[tri_of(o).value] & kMark)) continue;
+        m_.will_change_tri(tri_of(o));
         m_.tri_flags[tri_of(o).value] |= kMark;
         near_.push_back(tri_of(o));
       }
@@ -324,6 +326,12 @@ VertexId Floor::split_with_flips(VertexId a, VertexId b, Vec2 p, double must_bea
   const auto put_back = [&] {
     for (int i = n_undo - 1; i >= 0; --i) {
       const Undo& u = undo[i];
+      // The slots and vertices were first changed by the flips logged, so the store's
+      // own journal (store_undo.h) holds them already; told again all the same.
+      if (u.kind == Undo::Out)
+        m_.will_change_vertex(VertexId{u.at});
+      else
+        m_.will_change_tri_of(Side{u.at});
       switch (u.kind) {
         case Undo::Corner: m_.corner[u.at] = VertexId{u.value}; break;
         case Undo::Flags: m_.side_flags[u.at] = static_cast<std::uint8_t>(u.value); break;

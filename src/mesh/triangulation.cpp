@@ -6,6 +6,7 @@
 
 #include "base/check.h"
 #include "mesh/delaunay.h"
+#include "mesh/store_undo.h"
 
 namespace sm {
 
@@ -20,6 +21,7 @@ TriId TriangleStore::add_triangle(VertexId a, VertexId b, VertexId c) {
   if (!free_tris.empty()) {
     t = free_tris.back();
     free_tris.pop_back();
+    will_change_tri(t);
     tri_flags[t.value] = 0;
   } else {
     t = TriId{num_slots()};
@@ -33,6 +35,7 @@ TriId TriangleStore::add_triangle(VertexId a, VertexId b, VertexId c) {
   twin[b3] = twin[b3 + 1] = twin[b3 + 2] = Side{};
   side_flags[b3] = side_flags[b3 + 1] = side_flags[b3 + 2] = 0;
   // Keep an out_side that is still good: the new triangle is not linked yet.
+  for (const VertexId v : {a, b, c}) will_change_vertex(v);
   if (!out_side_ok(a)) out_side[a.value] = Side{b3};
   if (!out_side_ok(b)) out_side[b.value] = Side{b3 + 1};
   if (!out_side_ok(c)) out_side[c.value] = Side{b3 + 2};
@@ -41,11 +44,13 @@ TriId TriangleStore::add_triangle(VertexId a, VertexId b, VertexId c) {
 
 void TriangleStore::kill_triangle(TriId t) {
   SM_ASSERT(alive(t), "kill_triangle on a dead triangle");
+  will_change_tri(t);
   // Repair out_side first, while all three twins are still readable.
   for (std::uint32_t e = 0; e < 3; ++e) {
     const Side s = side_of(t, e);
     const VertexId v = corner[s.value];
     if (out_side[v.value] != s) continue;
+    will_change_vertex(v);
     const Side o = twin[s.value];                 // dest -> v: next(o) leaves v
     const Side p = twin[prev(s).value];           // v -> apex
     out_side[v.value] = o.valid() ? next(o) : p;
@@ -53,6 +58,7 @@ void TriangleStore::kill_triangle(TriId t) {
   for (std::uint32_t e = 0; e < 3; ++e) {
     const Side s = side_of(t, e);
     const Side o = twin[s.value];
+    will_change_tri_of(o);
     if (o.valid()) twin[o.value] = Side{};
     twin[s.value] = Side{};
   }
@@ -61,18 +67,23 @@ void TriangleStore::kill_triangle(TriId t) {
 }
 
 void TriangleStore::rebuild_out_side() {
+  for (std::uint32_t v = 0; v < xy.size(); ++v) will_change_vertex(VertexId{v});
   out_side.assign(xy.size(), Side{});
   for (std::uint32_t s = 0; s < corner.size(); ++s)
     if (!(tri_flags[s / 3] & kDead)) out_side[corner[s].value] = Side{s};
 }
 
 void TriangleStore::set_edge_flags(Side s, std::uint8_t f) {
+  will_change_tri_of(s);
+  will_change_tri_of(twin[s.value]);
   side_flags[s.value] |= f;
   const Side o = twin[s.value];
   if (o.valid()) side_flags[o.value] |= f;
 }
 
 void TriangleStore::clear_edge_flags(Side s, std::uint8_t f) {
+  will_change_tri_of(s);
+  will_change_tri_of(twin[s.value]);
   side_flags[s.value] &= static_cast<std::uint8_t>(~f);
   const Side o = twin[s.value];
   if (o.valid()) side_flags[o.value] &= static_cast<std::uint8_t>(~f);
@@ -123,6 +134,9 @@ Side TriangleStore::flip(Side s) {
   const std::uint8_t f_ad = side_flags[s_ad.value], f_db = side_flags[s_db.value];
   // t1 = (c, a, d): sides c->a, a->d, d->c.  t2 = (d, b, c): sides d->b, b->c, c->d.
   const std::uint32_t b1 = 3 * t1.value, b2 = 3 * t2.value;
+  will_change_tri(t1);
+  will_change_tri(t2);
+  for (const VertexId v : {a, b, c, d}) will_change_vertex(v);
   corner[b1] = c, corner[b1 + 1] = a, corner[b1 + 2] = d;
   corner[b2] = d, corner[b2 + 1] = b, corner[b2 + 2] = c;
   side_flags[b1] = f_ca, side_flags[b1 + 1] = f_ad, side_flags[b1 + 2] = 0;
@@ -140,6 +154,7 @@ Side TriangleStore::flip(Side s) {
 }
 
 void TriangleStore::compact() {
+  SM_ASSERT(!undo_link.journal, "a store renumbered under an undo journal");
   std::vector<std::uint32_t> new_id(num_slots(), TriId::kNone);
   std::uint32_t n = 0;
   for (std::uint32_t t = 0; t < num_slots(); ++t)
@@ -180,6 +195,7 @@ void permute(std::vector<T>& v, const std::vector<std::uint32_t>& map, std::size
 
 void TriangleStore::sort_spatially(std::uint32_t first_movable, std::vector<std::uint32_t>& new_slot,
                                    std::vector<std::uint32_t>& new_vertex) {
+  SM_ASSERT(!undo_link.journal, "a store renumbered under an undo journal");
   Vec2 lo{1e300, 1e300}, hi{-1e300, -1e300};
   for (const Vec2& p : xy) {
     lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
@@ -240,6 +256,7 @@ void TriangleStore::sort_spatially(std::uint32_t first_movable, std::vector<std:
 }
 
 void TriangleStore::clear() {
+  SM_ASSERT(!undo_link.journal, "a store renumbered under an undo journal");
   xy.clear();
   out_side.clear();
   corner.clear();
@@ -292,5 +309,9 @@ bool build_triangulation(std::vector<Vec2> xy, const std::vector<std::array<std:
   }
   return true;
 }
+
+void TriangleStore::save_for_undo(TriId t) { undo_link.journal->save_tri(*this, t.value); }
+
+void TriangleStore::save_for_undo(VertexId v) { undo_link.journal->save_vertex(*this, v.value); }
 
 }  // namespace sm

@@ -11,6 +11,8 @@
 
 namespace sm {
 
+class StoreUndo;
+
 //            apex          side s = 3t+e runs org -> dest, counter-clockwise;
 //            /  \          corner[s] = org(s); twin[s] = the same edge seen
 //     prev  /    \  next   from the neighbour (kNone on the hull or beside a
@@ -27,6 +29,14 @@ enum SideFlag : std::uint8_t { kConstrained = 1, kBoundary = 2 };
 enum TriFlag : std::uint8_t { kDead = 1, kQueued = 2, kMark = 4 };
 
 struct TriangleStore {
+  /// The undo journal attached to the store, if any (store_undo.h). Not copied with the
+  /// store: a copy starts without one, and an assignment keeps the target's.
+  struct UndoLink {
+    StoreUndo* journal = nullptr;
+    UndoLink() = default;
+    UndoLink(const UndoLink&) {}
+    UndoLink& operator=(const UndoLink&) { return *this; }
+  };
   std::vector<Vec2> xy;                  // per vertex (plane or stereographic plane)
   std::vector<Side> out_side;            // per vertex: a side leaving it, kNone if isolated
   std::vector<VertexId> corner;          // per side: origin vertex
@@ -34,6 +44,19 @@ struct TriangleStore {
   std::vector<std::uint8_t> side_flags;  // per side: SideFlag bits
   std::vector<std::uint8_t> tri_flags;   // per triangle: TriFlag bits
   std::vector<TriId> free_tris;          // dead slots, reused before growing
+  UndoLink undo_link;                    // see UndoLink
+
+  /// Every change of a slot's sides or flags, or of a vertex's point or out_side, first
+  /// tells the attached journal (none: nothing to do), so that it can be undone.
+  void will_change_tri(TriId t) {
+    if (undo_link.journal) save_for_undo(t);
+  }
+  void will_change_tri_of(Side s) {
+    if (undo_link.journal && s.valid()) save_for_undo(tri_of(s));
+  }
+  void will_change_vertex(VertexId v) {
+    if (undo_link.journal) save_for_undo(v);
+  }
 
   std::uint32_t num_vertices() const { return static_cast<std::uint32_t>(xy.size()); }
   /// Triangle slots, dead ones included.
@@ -65,6 +88,8 @@ struct TriangleStore {
   void rebuild_out_side();
   /// Makes a and b twins of each other.
   void link(Side a, Side b) {
+    will_change_tri_of(a);
+    will_change_tri_of(b);
     twin[a.value] = b;
     if (b.valid()) twin[b.value] = a;
   }
@@ -96,6 +121,10 @@ struct TriangleStore {
                       std::vector<std::uint32_t>& new_vertex);
   void clear();
   void reserve(std::uint32_t vertices, std::uint32_t triangles);
+
+ private:
+  void save_for_undo(TriId t);
+  void save_for_undo(VertexId v);
 };
 
 /// A store from vertex positions and counter-clockwise triangles; twins are

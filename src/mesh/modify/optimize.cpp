@@ -316,6 +316,7 @@ class Optimizer {
     if (bank_blocked_) stuck_[v.value] = 0;
     if (cur == start) return false;
     bank_ += good - good0;
+    m_.will_change_vertex(v);
     m_.xy[v.value] = cur;
     if (space_) xyz_[v.value] = opt_.to_space(cur), have_xyz_[v.value] = 1;
     for (std::uint32_t t : star_tris_) touch(t);
@@ -366,6 +367,7 @@ class Optimizer {
         double best = 0;
         int good = 0;
         const Vec2 p = optimise_position(m_.pos(v), best, good, st);
+        m_.will_change_vertex(v);
         m_.xy[v.value] = p;
         if (space_) xyz_[v.value] = opt_.to_space(p), have_xyz_[v.value] = 1;
       }
@@ -378,6 +380,7 @@ class Optimizer {
       return true;
     }
     for (std::size_t i = 0; i < 4; ++i) {
+      m_.will_change_vertex(vs[i]);
       m_.xy[vs[i].value] = old_xy[i];
       if (space_) xyz_[vs[i].value] = opt_.to_space(old_xy[i]), have_xyz_[vs[i].value] = 1;
     }

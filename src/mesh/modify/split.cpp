@@ -33,6 +33,10 @@ VertexId split_edge(TriangleStore& m, Side s, Vec2 p, bool allow_constrained, Pr
   // t1 keeps its slot as (c, a, p): sides c->a (kept twin), a->p, p->c.
   const TriId t1 = tri_of(s);
   const std::uint32_t b1 = 3 * t1.value;
+  m.will_change_tri(t1);
+  if (ts.valid()) m.will_change_tri(tri_of(ts));
+  for (const VertexId x : {a, b, c}) m.will_change_vertex(x);
+  if (d.valid()) m.will_change_vertex(d);
   const Side o_ca = m.twin[s_ca.value];
   m.corner[b1] = c, m.corner[b1 + 1] = a, m.corner[b1 + 2] = v;
   m.side_flags[b1] = f_ca, m.side_flags[b1 + 1] = fe, m.side_flags[b1 + 2] = 0;
