@@ -28,22 +28,20 @@ const char* to_string(CurveKind k) {
 GeoResult<Curve> Curve::make(CurveDef def) {
   const int tag = def.tag;
   const std::size_t n = def.xyz.size();
-  auto fail = [&](GeoErrorKind k, std::string msg) { return make_error(k, EntityKind::Curve, {tag}, std::move(msg)); };
-  if (def.surface && def.uv.size() != n)
-    return fail(GeoErrorKind::BadArgument, fmt::format("curve {}: (u,v) and xyz control point counts differ", tag));
+  const int given = static_cast<int>(n);
+  if (def.surface && def.uv.size() != n) return make_error(GeoErrorId::UvCountDiffers, EntityKind::Curve, {tag});
   const char* name = to_string(def.kind);
   switch (def.kind) {
     case CurveKind::Circle:
       if (n != 3)
-        return fail(GeoErrorKind::TooFewPoints, fmt::format("circle {} needs 3 points (start, centre, end), got {}", tag, n));
+        return make_error(GeoErrorId::CirclePointCount, EntityKind::Curve, {tag}, {given});
       break;
     case CurveKind::Ellipse:
       if (n != 3 && n != 4)
-        return fail(GeoErrorKind::TooFewPoints,
-                    fmt::format("ellipse {} needs 3 or 4 points (start, centre, <major axis,> end), got {}", tag, n));
+        return make_error(GeoErrorId::EllipsePointCount, EntityKind::Curve, {tag}, {given});
       break;
     default:
-      if (n < 2) return fail(GeoErrorKind::TooFewPoints, fmt::format("{} {} needs at least 2 points, got {}", name, tag, n));
+      if (n < 2) return make_error(GeoErrorId::CurvePointCount, EntityKind::Curve, {tag}, {given}, {}, {name});
       break;
   }
 
@@ -69,7 +67,7 @@ GeoResult<Curve> Curve::make(CurveDef def) {
     c.clamped_ = !c.surface_ && !c.periodic_;
   }
   if (c.periodic_ && (c.kind_ == CurveKind::Spline || c.kind_ == CurveKind::BSpline) && n < 3)
-    return fail(GeoErrorKind::TooFewPoints, fmt::format("periodic {} {} needs at least 3 points", name, tag));
+    return make_error(GeoErrorId::PeriodicCurvePointCount, EntityKind::Curve, {tag}, {}, {}, {name});
   return c;
 }
 

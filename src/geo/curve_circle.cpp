@@ -21,11 +21,9 @@ GeoResult<CircleArc> make_circle_arc(Vec3 start, Vec3 centre, Vec3 end, std::opt
   const Vec3 d0 = start - centre, d2 = end - centre;
   const double r1 = norm(d0), r2 = norm(d2);
   if (r1 == 0 || r2 == 0)
-    return make_error(GeoErrorKind::CoincidentPoints, EntityKind::Curve, {tag},
-                      fmt::format("circle {}: an end point coincides with the centre", tag));
+    return make_error(GeoErrorId::CircleEndAtCentre, EntityKind::Curve, {tag});
   if (std::abs(r1 - r2) > 0.1 * (r1 + r2))
-    return make_error(GeoErrorKind::NotCocircular, EntityKind::Curve, {tag},
-                      fmt::format("circle {}: control points are not cocircular (R1={:g}, R2={:g})", tag, r1, r2));
+    return make_error(GeoErrorId::NotCocircular, EntityKind::Curve, {tag}, {}, {r1, r2});
   const Vec3 n = arc_normal(d0, d2, plane_normal);
   CircleArc a;
   a.centre = centre;
@@ -33,10 +31,7 @@ GeoResult<CircleArc> make_circle_arc(Vec3 start, Vec3 centre, Vec3 end, std::opt
   a.x_axis = d0 / r1;
   const Vec3 y = cross(n, a.x_axis);
   if (norm(y) < 1e-12)
-    return make_error(GeoErrorKind::DegenerateArc, EntityKind::Curve, {tag},
-                      fmt::format("circle {}: the arc plane is undefined (start, centre and end are collinear "
-                                  "along the plane normal); give a Plane{{}} normal",
-                                  tag));
+    return make_error(GeoErrorId::CirclePlaneUndefined, EntityKind::Curve, {tag});
   a.y_axis = y / norm(y);
   a.angle = std::atan2(dot(d2, a.y_axis), dot(d2, a.x_axis));
   // Collinear points (a half circle about the fallback normal): Gmsh always turns +pi about
@@ -45,10 +40,7 @@ GeoResult<CircleArc> make_circle_arc(Vec3 start, Vec3 centre, Vec3 end, std::opt
   // Start and end in the same direction: Gmsh measures a full turn and rejects the arc as
   // "greater than Pi".
   if (std::abs(a.angle) <= 1e-12)
-    return make_error(GeoErrorKind::DegenerateArc, EntityKind::Curve, {tag},
-                      fmt::format("circle {}: start and end lie in the same direction from the centre (a full "
-                                  "circle): split it into arcs smaller than Pi",
-                                  tag));
+    return make_error(GeoErrorId::CircleFull, EntityKind::Curve, {tag});
   return a;
 }
 

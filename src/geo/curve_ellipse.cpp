@@ -13,13 +13,11 @@ namespace sm::geo {
 GeoResult<EllipseArc> make_ellipse_arc(Vec3 start, Vec3 centre, Vec3 major_point, Vec3 end,
                                        std::optional<Vec3> plane_normal, int tag) {
   const Vec3 d0 = start - centre, d2 = end - centre, dm = major_point - centre;
-  auto degenerate = [tag](const char* why) {
-    return make_error(GeoErrorKind::DegenerateArc, EntityKind::Curve, {tag}, fmt::format("ellipse {}: {}", tag, why));
-  };
-  if (norm(d0) == 0 || norm(d2) == 0 || norm(dm) == 0) return degenerate("a control point coincides with the centre");
+  auto degenerate = [tag](GeoErrorId why) { return make_error(why, EntityKind::Curve, {tag}); };
+  if (norm(d0) == 0 || norm(d2) == 0 || norm(dm) == 0) return degenerate(GeoErrorId::EllipseCentrePoint);
   const Vec3 n = arc_normal(d0, d2, plane_normal);
   const Vec3 mp = dm - dot(dm, n) * n;
-  if (norm(mp) < 1e-12 * norm(dm)) return degenerate("the major axis is normal to the arc plane");
+  if (norm(mp) < 1e-12 * norm(dm)) return degenerate(GeoErrorId::EllipseAxisNormal);
   EllipseArc e;
   e.centre = centre;
   e.major = mp / norm(mp);
@@ -33,11 +31,11 @@ GeoResult<EllipseArc> make_ellipse_arc(Vec3 start, Vec3 centre, Vec3 major_point
     // Both points symmetric about an axis (or one on it and the other too): the start's
     // axis distance is a semi-axis and the other is undetermined unless one lies on it.
     if (std::abs(y0) <= 1e-14 * norm(d0) && std::abs(y2) <= 1e-14 * norm(d2))
-      return degenerate("start and end both lie on the major axis");
-    return degenerate("the semi-axes are not determined by the start and end points");
+      return degenerate(GeoErrorId::EllipseEndsOnAxis);
+    return degenerate(GeoErrorId::EllipseAxesUndetermined);
   }
   const double ia = (y2 * y2 - y0 * y0) / det, ib = (x0 * x0 - x2 * x2) / det;
-  if (!(ia > 0) || !(ib > 0)) return degenerate("no ellipse with this major axis passes through start and end");
+  if (!(ia > 0) || !(ib > 0)) return degenerate(GeoErrorId::EllipseNoFit);
   e.a = 1.0 / std::sqrt(ia);
   e.b = 1.0 / std::sqrt(ib);
   e.theta0 = std::atan2(y0 / e.b, x0 / e.a);
@@ -47,8 +45,7 @@ GeoResult<EllipseArc> make_ellipse_arc(Vec3 start, Vec3 centre, Vec3 major_point
   // Collinear start and end: half an ellipse, turning +pi about the fallback normal.
   if (norm(cross(d0, d2)) <= 1e-12 * norm(d0) * norm(d2) && sweep < 0) sweep += 2 * kPi;
   if (std::abs(sweep) <= 1e-12)
-    return degenerate("start and end lie in the same direction from the centre (a full ellipse): split it into "
-                      "arcs smaller than Pi");
+    return degenerate(GeoErrorId::EllipseFull);
   e.sweep = sweep;
   return e;
 }

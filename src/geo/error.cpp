@@ -1,5 +1,8 @@
-// Names of the geometry error kinds (stable: tests and diagnostics match on them).
+// The geometry errors' kinds by shape, and their kernel-side names (geo::summary).
 #include "geo/error.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace sm::geo {
 
@@ -17,7 +20,6 @@ const char* to_string(GeoErrorKind k) {
     case GeoErrorKind::LoopEmpty: return "loop-empty";
     case GeoErrorKind::HoleOutside: return "hole-outside";
     case GeoErrorKind::SharedBoundary: return "shared-boundary";
-    case GeoErrorKind::EntityInUse: return "entity-in-use";
     case GeoErrorKind::BadArgument: return "bad-argument";
   }
   return "unknown";
@@ -32,17 +34,39 @@ const char* to_string(EntityKind k) {
     case EntityKind::CurveLoop: return "curve loop";
     case EntityKind::SurfaceGeometry: return "surface geometry";
     case EntityKind::Physical: return "physical group";
+    case EntityKind::SurfaceLoop: return "surface loop";
     case EntityKind::None: return "none";
   }
   return "?";
 }
 
-GeoError make_error(GeoErrorKind kind, EntityKind entity, std::vector<int> tags, std::string message) {
+GeoErrorKind kind_of(GeoErrorId id) {
+  switch (id) {
+#define SM_GEO_ERROR(name, kind) \
+  case GeoErrorId::name: return GeoErrorKind::kind;
+#include "geo/error_ids.def"
+#undef SM_GEO_ERROR
+  }
+  return GeoErrorKind::BadArgument;
+}
+
+std::string summary(const GeoError& e) {
+  std::string s = to_string(e.kind);
+  if (e.entity != EntityKind::None && !e.tags.empty()) s += fmt::format(": {} {}", to_string(e.entity), e.tags[0]);
+  if (e.tags.size() > 1) s += fmt::format(" ({})", fmt::join(e.tags, ", "));
+  return s;
+}
+
+GeoError make_error(GeoErrorId id, EntityKind entity, std::vector<int> tags, std::vector<int> ids,
+                    std::vector<double> numbers, std::vector<std::string> words) {
   GeoError e;
-  e.kind = kind;
+  e.id = id;
+  e.kind = kind_of(id);
   e.entity = entity;
   e.tags = std::move(tags);
-  e.message = std::move(message);
+  e.ids = std::move(ids);
+  e.numbers = std::move(numbers);
+  e.words = std::move(words);
   return e;
 }
 

@@ -1,5 +1,7 @@
-// Typed errors of the geometry kernel: a kind, the entity tags involved (the interpreter maps
-// them back to the statements that created them) and a message; never thrown, never printed.
+// Typed errors of the geometry kernel: which message shape (GeoErrorId, geo/error_ids.def),
+// the entity tags involved (the interpreter maps them back to the statements that created
+// them) and the other values the message states; never thrown, never worded here: the
+// interpreter words them through the diagnostic table (interp/geo_diagnostic.cpp).
 #pragma once
 
 #include <string>
@@ -22,23 +24,42 @@ enum class GeoErrorKind {
   LoopEmpty,
   HoleOutside,        // a hole of a plane surface is not inside its outer loop
   SharedBoundary,     // a hole shares a curve with the outer loop or another hole
-  EntityInUse,        // delete refused: a higher-dimensional entity uses it
   BadArgument,        // anything else malformed (wrong counts, zero axis, ...)
 };
+
+/// One message shape of a geometry error (geo/error_ids.def says which values it states).
+enum class GeoErrorId {
+#define SM_GEO_ERROR(id, kind) id,
+#include "geo/error_ids.def"
+#undef SM_GEO_ERROR
+};
+
+/// The kind a shape belongs to.
+GeoErrorKind kind_of(GeoErrorId id);
 
 const char* to_string(GeoErrorKind k);
 
 /// What a tag in an error names (the first four are Gmsh's entity dimensions).
-enum class EntityKind { Point = 0, Curve = 1, Surface = 2, Volume = 3, CurveLoop, SurfaceGeometry, Physical, None };
+enum class EntityKind {
+  Point = 0, Curve = 1, Surface = 2, Volume = 3, CurveLoop, SurfaceGeometry, Physical, SurfaceLoop, None
+};
 
 const char* to_string(EntityKind k);
 
 struct GeoError {
-  GeoErrorKind kind = GeoErrorKind::BadArgument;
+  GeoErrorId id = GeoErrorId::RotationAxisZero;
+  GeoErrorKind kind = GeoErrorKind::BadArgument;   // kind_of(id)
   EntityKind entity = EntityKind::None;   // what tags[0] is
   std::vector<int> tags;                  // that entity first, then others involved (signed for curves)
-  std::string message;                    // lowercase, no final period; mentions the tags
+  std::vector<int> ids;                   // other integers the message states (points, counts, dimensions)
+  std::vector<double> numbers;            // measured or given values (radii, angles, sizes)
+  std::vector<std::string> words;         // kernel names the message states (a curve's kind, a role)
 };
+
+/// Kernel words for code that cannot reach the diagnostic table: the kind's name, the
+/// entity and the tags ("loop-not-closed: curve loop 3 (3, 7)"). The script's user reads
+/// the interpreter's sentence instead.
+std::string summary(const GeoError& e);
 
 /// Either a value or a GeoError: the kernel's return type for operations that can fail.
 template <class T>
@@ -74,6 +95,7 @@ class GeoStatus {
   GeoError error_;
 };
 
-GeoError make_error(GeoErrorKind kind, EntityKind entity, std::vector<int> tags, std::string message);
+GeoError make_error(GeoErrorId id, EntityKind entity, std::vector<int> tags, std::vector<int> ids = {},
+                    std::vector<double> numbers = {}, std::vector<std::string> words = {});
 
 }  // namespace sm::geo

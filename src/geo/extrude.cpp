@@ -52,15 +52,14 @@ Vec3 extrude_point(const ExtrudeSpec& s, Vec3 p, double t) {
 GeoStatus Model::add_surface_loop(int tag, const std::vector<int>& surfaces) {
   touch();
   if (tag <= 0)
-    return make_error(GeoErrorKind::InvalidTag, EntityKind::None, {tag}, fmt::format("surface loop tag {} must be > 0", tag));
+    return make_error(GeoErrorId::TagMustBePositive, EntityKind::SurfaceLoop, {tag});
   if (surface_loops_.count(tag))
-    return make_error(GeoErrorKind::DuplicateTag, EntityKind::None, {tag}, fmt::format("surface loop {} already exists", tag));
+    return make_error(GeoErrorId::AlreadyExists, EntityKind::SurfaceLoop, {tag});
   for (int s : surfaces)
     if (!surfaces_.count(std::abs(s)))
-      return make_error(GeoErrorKind::MissingEntity, EntityKind::Surface, {std::abs(s)},
-                        fmt::format("unknown surface {} in surface loop {}", std::abs(s), tag));
+      return make_error(GeoErrorId::UnknownEntityIn, EntityKind::Surface, {std::abs(s), tag}, {}, {}, {"surface loop"});
   if (surfaces.empty())
-    return make_error(GeoErrorKind::LoopEmpty, EntityKind::None, {tag}, fmt::format("surface loop {} is empty", tag));
+    return make_error(GeoErrorId::LoopEmpty, EntityKind::SurfaceLoop, {tag});
   surface_loops_[tag] = ModelSurfaceLoop{tag, surfaces};
   bump_max(kSurfaceLoopSlot, tag);
   return {};
@@ -69,15 +68,14 @@ GeoStatus Model::add_surface_loop(int tag, const std::vector<int>& surfaces) {
 GeoStatus Model::add_volume(int tag, const std::vector<int>& loops) {
   touch();
   if (tag <= 0)
-    return make_error(GeoErrorKind::InvalidTag, EntityKind::Volume, {tag}, fmt::format("volume tag {} must be > 0", tag));
+    return make_error(GeoErrorId::TagMustBePositive, EntityKind::Volume, {tag});
   if (volumes_.count(tag))
-    return make_error(GeoErrorKind::DuplicateTag, EntityKind::Volume, {tag}, fmt::format("volume {} already exists", tag));
+    return make_error(GeoErrorId::AlreadyExists, EntityKind::Volume, {tag});
   if (loops.empty())
-    return make_error(GeoErrorKind::LoopEmpty, EntityKind::Volume, {tag}, fmt::format("volume {} has no surface loop", tag));
+    return make_error(GeoErrorId::NoLoop, EntityKind::Volume, {tag}, {}, {}, {"volume", "surface loop"});
   for (int l : loops)
     if (!surface_loops_.count(std::abs(l)))
-      return make_error(GeoErrorKind::MissingEntity, EntityKind::Volume, {tag},
-                        fmt::format("unknown surface loop {} in volume {}", std::abs(l), tag));
+      return make_error(GeoErrorId::UnknownEntityIn, EntityKind::SurfaceLoop, {std::abs(l), tag}, {}, {}, {"volume"});
   ModelVolume v;
   v.tag = tag;
   v.loops = loops;
@@ -116,7 +114,7 @@ GeoResult<int> Model::extrude_point_entity(int p, const ExtrudeSpec& spec, int* 
   *body = 0;
   const auto vit = vertices_.find(p);
   if (vit == vertices_.end())
-    return make_error(GeoErrorKind::MissingEntity, EntityKind::Point, {p}, fmt::format("cannot extrude unknown point {}", p));
+    return make_error(GeoErrorId::CannotActOnUnknown, EntityKind::Point, {p}, {}, {}, {"extrude"});
   const ModelVertex src = vit->second;
   const double diag = bounding_box().diagonal();
   const double eps = options_.tolerance * (diag > 0 ? diag : 1.0);
@@ -155,10 +153,7 @@ GeoResult<int> Model::extrude_point_entity(int p, const ExtrudeSpec& spec, int* 
       if (auto st = add_curve(curve, CurveKind::Line, {p, top}); !st) return st.error();
     } else {
       if (std::abs(spec.angle) > kPi * (1 + 1e-12))
-        return make_error(GeoErrorKind::BadArgument, EntityKind::Point, {p},
-                          fmt::format("extruding point {} by a rotation of {} rad makes a circle arc of more than Pi, "
-                                      "which the built-in kernel does not hold: split the rotation in two",
-                                      p, spec.angle));
+        return make_error(GeoErrorId::ExtrudedArcTooWide, EntityKind::Point, {p}, {}, {spec.angle});
       const Vec3 k = spec.axis / norm(spec.axis);
       const Vec3 centre = spec.point + k * dot(src.xyz - spec.point, k);
       bump_max(1, curve);   // Gmsh numbers the centre after the curve
@@ -198,7 +193,7 @@ GeoResult<int> Model::extrude_curve_entity(int c, const ExtrudeSpec& spec, bool 
   *body = 0;
   const auto cit = curves_.find(std::abs(c));
   if (c == 0 || cit == curves_.end())
-    return make_error(GeoErrorKind::MissingEntity, EntityKind::Curve, {c}, fmt::format("cannot extrude unknown curve {}", std::abs(c)));
+    return make_error(GeoErrorId::CannotActOnUnknown, EntityKind::Curve, {c}, {}, {}, {"extrude"});
   int beg = cit->second.begin, end = cit->second.end;
   if (c < 0) std::swap(beg, end);
   if (beg == end)
@@ -272,8 +267,7 @@ GeoResult<int> Model::extrude_surface_entity(int s, const ExtrudeSpec& spec, int
   *volume = 0;
   const auto sit = surfaces_.find(std::abs(s));
   if (sit == surfaces_.end())
-    return make_error(GeoErrorKind::MissingEntity, EntityKind::Surface, {std::abs(s)},
-                      fmt::format("cannot extrude unknown surface {}", std::abs(s)));
+    return make_error(GeoErrorId::CannotActOnUnknown, EntityKind::Surface, {std::abs(s)}, {}, {}, {"extrude"});
   std::vector<int> generatrices;
   for (int l : sit->second.loops)
     for (int c : loops_.at(std::abs(l)).curves) generatrices.push_back(l > 0 ? c : -c);
@@ -347,7 +341,7 @@ GeoResult<int> Model::extrude_surface_entity(int s, const ExtrudeSpec& spec, int
 GeoResult<std::vector<DimTag>> Model::extrude(const std::vector<DimTag>& entities, const ExtrudeSpec& spec) {
   touch();
   if (spec.kind != ExtrudeKind::Translate && !(norm(spec.axis) > 0))
-    return make_error(GeoErrorKind::BadArgument, EntityKind::None, {}, "the extrusion's rotation axis has zero length");
+    return make_error(GeoErrorId::ExtrusionAxisZero, EntityKind::None, {});
   std::vector<DimTag> out;
   const double diag = bounding_box().diagonal();
   const double eps = options_.tolerance * (diag > 0 ? diag : 1.0);
@@ -392,9 +386,7 @@ GeoResult<std::vector<DimTag>> Model::extrude(const std::vector<DimTag>& entitie
         for (int s : volumes_.at(vol).surfaces)
           if (std::abs(s) != e.tag && std::abs(s) != *top) out.push_back({2, std::abs(s)});   // listed unsigned, as Gmsh
     } else {
-      return make_error(GeoErrorKind::BadArgument, EntityKind::Volume, {e.tag},
-                        fmt::format("cannot extrude volume {}: the built-in kernel extrudes points, curves and surfaces",
-                                    std::abs(e.tag)));
+      return make_error(GeoErrorId::CannotExtrudeVolume, EntityKind::Volume, {e.tag});
     }
   }
   return out;

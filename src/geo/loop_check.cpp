@@ -50,19 +50,12 @@ GeoResult<std::vector<int>> chain_loop(int loop_tag, const std::vector<LoopEdge>
         // Name a remaining curve that ends here: it fits with the opposite sign.
         for (std::size_t k = 0; k < n; ++k)
           if (!used[k] && edges[k].to == end)
-            return make_error(GeoErrorKind::LoopNotClosed, EntityKind::CurveLoop, {loop_tag, edges[k].curve, last_curve},
-                              fmt::format("curve loop {} is broken at curve {}: it ends at point {} where curve {} "
-                                          "also ends (use {} to reverse it)",
-                                          loop_tag, last_curve, end, edges[k].curve, -edges[k].curve));
+            return make_error(GeoErrorId::LoopCurveReversed, EntityKind::CurveLoop,
+                              {loop_tag, edges[k].curve, last_curve}, {end});
         if (out.size() == n)
-          return make_error(GeoErrorKind::LoopNotClosed, EntityKind::CurveLoop, {loop_tag, last_curve},
-                            fmt::format("curve loop {} does not close: curve {} ends at point {} but the loop "
-                                        "started at point {}",
-                                        loop_tag, last_curve, end, chain_start));
-        return make_error(GeoErrorKind::LoopNotClosed, EntityKind::CurveLoop, {loop_tag, last_curve},
-                          fmt::format("curve loop {} is broken at curve {}: no remaining curve starts at its end "
-                                      "point {}",
-                                      loop_tag, last_curve, end));
+          return make_error(GeoErrorId::LoopDoesNotClose, EntityKind::CurveLoop, {loop_tag, last_curve},
+                            {end, chain_start});
+        return make_error(GeoErrorId::LoopBroken, EntityKind::CurveLoop, {loop_tag, last_curve}, {end});
       }
       take(i);
       end = edges[i].to;

@@ -16,11 +16,13 @@ namespace sm::geo {
 
 namespace {
 
-GeoError missing(EntityKind k, int tag, std::vector<int> context, const std::string& where) {
+// An unknown entity `tag` of kind `k`, said in the shape `id`; `context` the entities
+// the statement was making (for the message, not the provenance notes).
+GeoError missing(GeoErrorId id, EntityKind k, int tag, std::vector<int> context = {},
+                 std::vector<std::string> words = {}) {
   std::vector<int> tags{tag};
   tags.insert(tags.end(), context.begin(), context.end());
-  return make_error(GeoErrorKind::MissingEntity, k, std::move(tags),
-                    fmt::format("unknown {} {}{}", to_string(k), tag, where));
+  return make_error(id, k, std::move(tags), {}, {}, std::move(words));
 }
 
 }  // namespace
@@ -68,12 +70,8 @@ GeoStatus Model::check_new_tag(EntityKind kind, int tag, bool exists) {
     note_compat(fmt::format("{} tag 0: Gmsh accepts it; so do we, but tags are meant to be positive", to_string(kind)));
     return {};
   }
-  if (tag <= 0)
-    return make_error(GeoErrorKind::InvalidTag, kind, {tag},
-                      fmt::format("{} tag {} is invalid: tags must be positive", to_string(kind), tag));
-  if (exists)
-    return make_error(GeoErrorKind::DuplicateTag, kind, {tag},
-                      fmt::format("{} {} already exists", to_string(kind), tag));
+  if (tag <= 0) return make_error(GeoErrorId::TagNotPositive, kind, {tag});
+  if (exists) return make_error(GeoErrorId::AlreadyExists, kind, {tag});
   return {};
 }
 
@@ -202,12 +200,12 @@ GeoStatus Model::add_sphere_geometry(int tag, int centre_point, int pole_point, 
   const ModelVertex* c = vertex(centre_point);
   const ModelVertex* p = vertex(pole_point);
   const char* what = polar ? "PolarSphere" : "Sphere";
-  if (!c) return missing(EntityKind::Point, centre_point, {tag}, fmt::format(" (centre of {} {})", what, tag));
-  if (!p) return missing(EntityKind::Point, pole_point, {tag}, fmt::format(" (pole of {} {})", what, tag));
+  if (!c) return missing(GeoErrorId::UnknownPartOf, EntityKind::Point, centre_point, {tag}, {"centre", what});
+  if (!p) return missing(GeoErrorId::UnknownPartOf, EntityKind::Point, pole_point, {tag}, {"pole", what});
   const double r = norm(p->xyz - c->xyz);
   if (!(r > 0))
-    return make_error(GeoErrorKind::CoincidentPoints, EntityKind::SurfaceGeometry, {tag, centre_point, pole_point},
-                      fmt::format("{} {} has radius 0: points {} and {} coincide", what, tag, centre_point, pole_point));
+    return make_error(GeoErrorId::SphereRadiusZero, EntityKind::SurfaceGeometry, {tag, centre_point, pole_point}, {},
+                      {}, {what});
   if (polar) geometries_.emplace(tag, SurfaceGeometry(PolarSphere(c->xyz, r)));
   else geometries_.emplace(tag, SurfaceGeometry(Sphere(c->xyz, r)));
   current_geometry_ = tag;
@@ -219,7 +217,7 @@ GeoStatus Model::add_lonlat_sphere(int tag, int c, int p) { return add_sphere_ge
 
 GeoStatus Model::set_current_geometry(int tag) {
   touch();
-  if (!geometry(tag)) return missing(EntityKind::SurfaceGeometry, tag, {}, "");
+  if (!geometry(tag)) return missing(GeoErrorId::UnknownEntity, EntityKind::SurfaceGeometry, tag);
   current_geometry_ = tag;
   return {};
 }
@@ -231,8 +229,7 @@ namespace {
 GeoStatus check_finite(int tag, std::initializer_list<double> values) {
   for (double v : values)
     if (!std::isfinite(v))
-      return make_error(GeoErrorKind::BadArgument, EntityKind::Point, {tag},
-                        fmt::format("point {} has a non-finite coordinate or size ({})", tag, v));
+      return make_error(GeoErrorId::PointNotFinite, EntityKind::Point, {tag}, {}, {v});
   return {};
 }
 
@@ -256,7 +253,7 @@ GeoStatus Model::add_point_on_geometry(int tag, int geometry_tag, Vec2 uv, doubl
   touch();
   if (auto s = check_new_tag(EntityKind::Point, tag, vertices_.count(tag) > 0); !s) return s;
   const SurfaceGeometry* g = geometry(geometry_tag);
-  if (!g) return missing(EntityKind::SurfaceGeometry, geometry_tag, {tag}, fmt::format(" (for point {})", tag));
+  if (!g) return missing(GeoErrorId::UnknownGeometryOfPoint, EntityKind::SurfaceGeometry, geometry_tag, {tag});
   if (auto s = check_finite(tag, {uv.x, uv.y, lc}); !s) return s;
   ModelVertex v;
   v.tag = tag;
@@ -272,7 +269,7 @@ GeoStatus Model::add_point_on_geometry(int tag, int geometry_tag, Vec2 uv, doubl
 GeoStatus Model::set_mesh_size(const std::vector<int>& points, double lc) {
   touch();
   if (!std::isfinite(lc))
-    return make_error(GeoErrorKind::BadArgument, EntityKind::Point, points, fmt::format("mesh size {} is not finite", lc));
+    return make_error(GeoErrorId::MeshSizeNotFinite, EntityKind::Point, points, {}, {lc});
   for (int p : points) {
     if (vertex(p)) {
       vertices_[p].lc = lc > 0 ? lc : kMaxLc;
@@ -312,10 +309,9 @@ GeoStatus Model::add_discrete_curve(int tag, int begin, int end, std::vector<Vec
   touch();
   if (auto s = check_new_tag(EntityKind::Curve, tag, curves_.count(tag) > 0); !s) return s;
   for (int p : {begin, end})
-    if (!vertex(p)) return missing(EntityKind::Point, p, {tag}, fmt::format(" used by discrete curve {}", tag));
+    if (!vertex(p)) return missing(GeoErrorId::UnknownEntityUsedBy, EntityKind::Point, p, {tag}, {"discrete curve"});
   if (begin == end && inner.size() < 2)
-    return make_error(GeoErrorKind::SelfReference, EntityKind::Curve, {tag, begin},
-                      fmt::format("discrete curve {} is closed at point {} with fewer than 3 edges", tag, begin));
+    return make_error(GeoErrorId::DiscreteCurveClosed, EntityKind::Curve, {tag, begin});
   ModelCurve c;
   c.tag = tag;
   c.kind = CurveKind::Line;
@@ -335,7 +331,7 @@ GeoStatus Model::add_curve(int tag, CurveKind kind, const std::vector<int>& poin
   touch();
   if (auto s = check_new_tag(EntityKind::Curve, tag, curves_.count(tag) > 0); !s) return s;
   for (int p : points)
-    if (!vertex(p)) return missing(EntityKind::Point, p, {tag}, fmt::format(" used by {} {}", to_string(kind), tag));
+    if (!vertex(p)) return missing(GeoErrorId::UnknownEntityUsedBy, EntityKind::Point, p, {tag}, {to_string(kind)});
   if (points.size() == 2 && points[0] == points[1]) {
     if (kind == CurveKind::Line) {
       // Gmsh keeps such a line as a degenerate curve that gets no mesh elements. We
@@ -346,21 +342,18 @@ GeoStatus Model::add_curve(int tag, CurveKind kind, const std::vector<int>& poin
       bump_max(1, tag);
       return {};
     }
-    return make_error(GeoErrorKind::SelfReference, EntityKind::Curve, {tag, points[0]},
-                      fmt::format("{} {} starts and ends at point {}", to_string(kind), tag, points[0]));
+    return make_error(GeoErrorId::CurveStartsAtEnd, EntityKind::Curve, {tag, points[0]}, {}, {}, {to_string(kind)});
   }
   // A zero-length piece of a Line or Spline: the same point twice in a row. (B-splines and
   // Bezier curves may repeat control points: Gmsh uses that to sharpen them.)
   const bool interpolating = kind == CurveKind::Line || kind == CurveKind::Spline;
   for (std::size_t i = 0; interpolating && i + 1 < points.size(); ++i)
     if (points[i] == points[i + 1])
-      return make_error(GeoErrorKind::SelfReference, EntityKind::Curve, {tag, points[i]},
-                        fmt::format("{} {} uses point {} twice in a row", to_string(kind), tag, points[i]));
+      return make_error(GeoErrorId::CurvePointTwice, EntityKind::Curve, {tag, points[i]}, {}, {}, {to_string(kind)});
   if ((kind == CurveKind::Circle || kind == CurveKind::Ellipse) && points.size() >= 3) {
     const int centre = points[1];
     if (points.front() == centre || points.back() == centre || points.front() == points.back())
-      return make_error(GeoErrorKind::SelfReference, EntityKind::Curve, {tag},
-                        fmt::format("{} {} repeats a point among start, centre and end", to_string(kind), tag));
+      return make_error(GeoErrorId::ArcRepeatsPoint, EntityKind::Curve, {tag}, {}, {}, {to_string(kind)});
   }
   std::vector<int> control = points;
   if (kind == CurveKind::Ellipse && points.size() == 4 && vertices_.at(points[2]).xyz == vertices_.at(points[1]).xyz) {
@@ -421,12 +414,12 @@ GeoStatus Model::add_curve_loop(int tag, const std::vector<int>& curves) {
   touch();
   if (auto s = check_new_tag(EntityKind::CurveLoop, tag, loops_.count(tag) > 0); !s) return s;
   if (curves.empty())
-    return make_error(GeoErrorKind::LoopEmpty, EntityKind::CurveLoop, {tag}, fmt::format("curve loop {} is empty", tag));
+    return make_error(GeoErrorId::LoopEmpty, EntityKind::CurveLoop, {tag});
   std::vector<LoopEdge> edges;
   edges.reserve(curves.size());
   for (int sc : curves) {
     const ModelCurve* c = curve(std::abs(sc));
-    if (sc == 0 || !c) return missing(EntityKind::Curve, sc, {tag}, fmt::format(" in curve loop {}", tag));
+    if (sc == 0 || !c) return missing(GeoErrorId::UnknownEntityIn, EntityKind::Curve, sc, {tag}, {"curve loop"});
     edges.push_back(sc > 0 ? LoopEdge{sc, c->begin, c->end} : LoopEdge{sc, c->end, c->begin});
   }
   auto chained = chain_loop(tag, edges);
@@ -434,9 +427,7 @@ GeoStatus Model::add_curve_loop(int tag, const std::vector<int>& curves) {
   ModelCurveLoop l;
   l.tag = tag;
   if (!chained) {
-    note_compat(fmt::format("{}: Gmsh 4.8.4 creates the loop unchecked, and so do we; a surface bounded by it is "
-                            "an error",
-                            chained.error().message));
+    compat_notes_.push_back({std::string(), chained.error()});
     l.curves = curves;
     l.unclosed = chained.error();
   } else {
@@ -454,17 +445,16 @@ GeoStatus Model::add_plane_surface(int tag, const std::vector<int>& loops) {
   touch();
   if (auto s = check_new_tag(EntityKind::Surface, tag, surfaces_.count(tag) > 0); !s) return s;
   if (loops.empty())
-    return make_error(GeoErrorKind::LoopEmpty, EntityKind::Surface, {tag},
-                      fmt::format("plane surface {} has no curve loop", tag));
+    return make_error(GeoErrorId::NoLoop, EntityKind::Surface, {tag}, {}, {}, {"plane surface", "curve loop"});
   for (int l : loops) {
-    if (l == 0 || !curve_loop(std::abs(l))) return missing(EntityKind::CurveLoop, l, {tag}, fmt::format(" in plane surface {}", tag));
+    if (l == 0 || !curve_loop(std::abs(l)))
+      return missing(GeoErrorId::UnknownEntityIn, EntityKind::CurveLoop, l, {tag}, {"plane surface"});
     if (const auto& open = curve_loop(std::abs(l))->unclosed) return *open;
   }
   for (std::size_t i = 0; i < loops.size(); ++i)
     for (std::size_t j = 0; j < i; ++j)
       if (std::abs(loops[i]) == std::abs(loops[j]))
-        return make_error(GeoErrorKind::SharedBoundary, EntityKind::Surface, {tag, std::abs(loops[i])},
-                          fmt::format("plane surface {} uses curve loop {} twice", tag, std::abs(loops[i])));
+        return make_error(GeoErrorId::LoopTwice, EntityKind::Surface, {tag, std::abs(loops[i])});
   // No curve may appear in two loops of one surface (a seam may appear twice in one loop).
   std::map<int, int> owner;   // |curve| -> loop
   int geometry_tag = -1;
@@ -473,9 +463,7 @@ GeoStatus Model::add_plane_surface(int tag, const std::vector<int>& loops) {
       const int c = std::abs(sc);
       auto [it, fresh] = owner.emplace(c, l);
       if (!fresh && std::abs(it->second) != std::abs(l))
-        return make_error(GeoErrorKind::SharedBoundary, EntityKind::Surface, {tag, c, it->second, l},
-                          fmt::format("plane surface {}: curve {} belongs to both curve loops {} and {}", tag, c,
-                                      std::abs(it->second), std::abs(l)));
+        return make_error(GeoErrorId::CurveInTwoLoops, EntityKind::Surface, {tag, c, it->second, l});
       const int g = curves_.at(c).geometry;
       geometry_tag = geometry_tag == -1 ? g : (geometry_tag == g ? g : 0);
     }
@@ -535,16 +523,12 @@ GeoStatus Model::add_plane_surface(int tag, const std::vector<int>& loops) {
       // which holds the projection pole, the plane's infinity, where no face can reach.
       // Gmsh 4.8.4 reports nothing and meshes only the inside of the outer loop
       // (docs/language.md): it stays our error, said so.
-      std::string pole_side;
-      if (g && g->polar() && first.crossing.empty() && first.outside.size() + 1 == loops.size())
-        pole_side = fmt::format(": in the (u,v) plane of PolarSphere {} every hole lies outside it, so the region "
-                                "they leave holds the projection pole (the plane's infinity), which a face cannot hold",
-                                s.geometry);
+      const bool pole_side = g && g->polar() && first.crossing.empty() && first.outside.size() + 1 == loops.size();
       const std::size_t bad = first.outside.empty() ? first.crossing.front() : first.outside.front();
       const int l = std::abs(loops[bad]);
-      return make_error(GeoErrorKind::HoleOutside, EntityKind::Surface, {tag, l, std::abs(loops[0])},
-                        fmt::format("plane surface {}: hole (curve loop {}) is not inside the outer curve loop {}{}", tag,
-                                    l, std::abs(loops[0]), pole_side));
+      if (pole_side)
+        return make_error(GeoErrorId::HoleOutsidePolar, EntityKind::Surface, {tag, l, std::abs(loops[0])}, {s.geometry});
+      return make_error(GeoErrorId::HoleOutside, EntityKind::Surface, {tag, l, std::abs(loops[0])});
     }
     if (outer != 0) {
       note_compat(fmt::format("plane surface {}: curve loop {} encloses the others but is listed after curve loop {}; "
@@ -570,11 +554,11 @@ GeoResult<int> Model::add_physical(int dim, std::optional<int> tag, const std::s
                                    const std::vector<int>& entities, PhysicalOp op) {
   touch();
   if (dim < 0 || dim > 3)
-    return make_error(GeoErrorKind::BadArgument, EntityKind::Physical, {}, fmt::format("bad physical dimension {}", dim));
+    return make_error(GeoErrorId::PhysicalDimension, EntityKind::Physical, {}, {dim});
   for (int e : entities) {
     const int a = std::abs(e);
     const bool ok = (dim == 0 && vertex(a)) || (dim == 1 && curve(a)) || (dim == 2 && surface(a)) || (dim == 3 && volumes_.count(a));
-    if (!ok) return missing(static_cast<EntityKind>(dim), e, {}, fmt::format(" in physical group"));
+    if (!ok) return missing(GeoErrorId::UnknownInPhysicalGroup, static_cast<EntityKind>(dim), e);
   }
   int t = 0;
   if (tag) {
@@ -591,8 +575,8 @@ GeoResult<int> Model::add_physical(int dim, std::optional<int> tag, const std::s
   auto it = physicals_.find({dim, t});
   if (op == PhysicalOp::Assign) {
     if (it != physicals_.end())
-      return make_error(GeoErrorKind::DuplicateTag, EntityKind::Physical, {t},
-                        fmt::format("physical {} {} already exists", dim == 0 ? "point" : dim == 1 ? "curve" : dim == 2 ? "surface" : "volume", t));
+      return make_error(GeoErrorId::PhysicalAlreadyExists, EntityKind::Physical, {t}, {}, {},
+                        {to_string(static_cast<EntityKind>(dim))});
     PhysicalGroup g;
     g.dim = dim;
     g.tag = t;
@@ -603,7 +587,7 @@ GeoResult<int> Model::add_physical(int dim, std::optional<int> tag, const std::s
     return t;
   }
   if (it == physicals_.end()) {
-    if (op == PhysicalOp::Remove) return missing(EntityKind::Physical, t, {}, "");
+    if (op == PhysicalOp::Remove) return missing(GeoErrorId::UnknownEntity, EntityKind::Physical, t);
     PhysicalGroup g;   // += creates the group, as Gmsh does
     g.dim = dim;
     g.tag = t;
@@ -628,13 +612,13 @@ GeoResult<int> Model::add_physical(int dim, std::optional<int> tag, const std::s
 GeoStatus Model::embed(int dim, const std::vector<int>& tags_in, int surface_tag) {
   touch();
   auto it = surfaces_.find(surface_tag);
-  if (it == surfaces_.end()) return missing(EntityKind::Surface, surface_tag, {}, " (embedding target)");
+  if (it == surfaces_.end()) return missing(GeoErrorId::UnknownEmbeddingTarget, EntityKind::Surface, surface_tag);
   for (int t : tags_in) {
-    if (dim == 0 && !vertex(t)) return missing(EntityKind::Point, t, {surface_tag}, fmt::format(" embedded in surface {}", surface_tag));
-    if (dim == 1 && !curve(std::abs(t))) return missing(EntityKind::Curve, t, {surface_tag}, fmt::format(" embedded in surface {}", surface_tag));
+    if (dim == 0 && !vertex(t)) return missing(GeoErrorId::UnknownEmbedded, EntityKind::Point, t, {surface_tag});
+    if (dim == 1 && !curve(std::abs(t))) return missing(GeoErrorId::UnknownEmbedded, EntityKind::Curve, t, {surface_tag});
   }
   if (dim != 0 && dim != 1)
-    return make_error(GeoErrorKind::BadArgument, EntityKind::Surface, {surface_tag}, "only points and curves can be embedded in a surface");
+    return make_error(GeoErrorId::EmbedDimension, EntityKind::Surface, {surface_tag});
   auto& list = dim == 0 ? it->second.embedded_points : it->second.embedded_curves;
   for (int t : tags_in)
     if (std::find(list.begin(), list.end(), std::abs(t)) == list.end()) list.push_back(std::abs(t));
@@ -648,17 +632,17 @@ GeoResult<std::vector<DimTag>> Model::boundary(const std::vector<DimTag>& entiti
   for (const DimTag& e : entities) {
     const int a = std::abs(e.tag);
     if (e.dim == 0) {
-      if (!vertex(a)) return missing(EntityKind::Point, a, {}, " in Boundary");
+      if (!vertex(a)) return missing(GeoErrorId::UnknownInBoundary, EntityKind::Point, a);
     } else if (e.dim == 1) {
       const ModelCurve* c = curve(a);
-      if (!c) return missing(EntityKind::Curve, e.tag, {}, " in Boundary");
+      if (!c) return missing(GeoErrorId::UnknownInBoundary, EntityKind::Curve, e.tag);
       // Oriented: the start point counts negatively, the end positively.
       const int b = e.tag > 0 ? c->begin : c->end, f = e.tag > 0 ? c->end : c->begin;
       raw.push_back({0, -b});
       raw.push_back({0, f});
     } else if (e.dim == 2) {
       const ModelSurface* s = surface(a);
-      if (!s) return missing(EntityKind::Surface, e.tag, {}, " in Boundary");
+      if (!s) return missing(GeoErrorId::UnknownInBoundary, EntityKind::Surface, e.tag);
       // In the script's order (an outer loop listed after a hole moved to the front).
       std::vector<int> listed = s->loops;
       std::rotate(listed.begin(), listed.begin() + 1, listed.begin() + static_cast<std::ptrdiff_t>(s->listed_outer) + 1);
@@ -676,10 +660,10 @@ GeoResult<std::vector<DimTag>> Model::boundary(const std::vector<DimTag>& entiti
       }
     } else if (e.dim == 3) {
       const auto v = volumes_.find(a);
-      if (v == volumes_.end()) return missing(EntityKind::Volume, a, {}, " in Boundary");
+      if (v == volumes_.end()) return missing(GeoErrorId::UnknownInBoundary, EntityKind::Volume, a);
       for (int t : v->second.surfaces) raw.push_back({2, t});   // signed by orientation (geo/extrude.cpp)
     } else {
-      return make_error(GeoErrorKind::BadArgument, EntityKind::None, {e.tag}, fmt::format("Boundary of an entity of dimension {}", e.dim));
+      return make_error(GeoErrorId::BoundaryDimension, EntityKind::None, {e.tag}, {e.dim});
     }
   }
   std::vector<DimTag> out;
@@ -710,25 +694,23 @@ GeoStatus Model::add_surface_filling(int tag, const std::vector<int>& loops, std
   touch();
   if (auto s = check_new_tag(EntityKind::Surface, tag, surfaces_.count(tag) > 0); !s) return s;
   if (loops.empty())
-    return make_error(GeoErrorKind::LoopEmpty, EntityKind::Surface, {tag}, fmt::format("surface {} has no curve loop", tag));
+    return make_error(GeoErrorId::NoLoop, EntityKind::Surface, {tag}, {}, {}, {"surface", "curve loop"});
   // Gmsh 4.8.4 (Geo/GModelIO_GEO.cpp's addSurfaceFilling): the first loop, of 3 or 4
   // curves, is the patch; the others are holes in it (benchmarks/2d/ruled_on_sphere.geo).
   for (std::size_t i = 0; i < loops.size(); ++i) {
     const ModelCurveLoop* h = curve_loop(std::abs(loops[i]));
-    if (loops[i] == 0 || !h) return missing(EntityKind::CurveLoop, loops[i], {tag}, fmt::format(" in surface {}", tag));
+    if (loops[i] == 0 || !h) return missing(GeoErrorId::UnknownEntityIn, EntityKind::CurveLoop, loops[i], {tag}, {"surface"});
     if (h->unclosed) return *h->unclosed;
     for (std::size_t j = 0; j < i; ++j)
       if (std::abs(loops[i]) == std::abs(loops[j]))
-        return make_error(GeoErrorKind::BadArgument, EntityKind::Surface, {tag, std::abs(loops[i])},
-                          fmt::format("surface {} lists curve loop {} twice", tag, std::abs(loops[i])));
+        return make_error(GeoErrorId::FillingLoopTwice, EntityKind::Surface, {tag, std::abs(loops[i])});
   }
   const ModelCurveLoop* l = curve_loop(std::abs(loops[0]));
   if (l->curves.size() != 3 && l->curves.size() != 4)
-    return make_error(GeoErrorKind::BadArgument, EntityKind::Surface, {tag, std::abs(loops[0])},
-                      fmt::format("surface {}: curve loop {} has {} curves, a filling needs 3 or 4", tag,
-                                  std::abs(loops[0]), l->curves.size()));
+    return make_error(GeoErrorId::FillingCurveCount, EntityKind::Surface, {tag, std::abs(loops[0])},
+                      {static_cast<int>(l->curves.size())});
   if (sphere_centre && !vertex(*sphere_centre))
-    return missing(EntityKind::Point, *sphere_centre, {tag}, fmt::format(" (sphere centre of surface {})", tag));
+    return missing(GeoErrorId::UnknownPartOf, EntityKind::Point, *sphere_centre, {tag}, {"sphere centre", "surface"});
   ModelSurface s;
   s.tag = tag;
   s.filling = true;
@@ -747,11 +729,10 @@ GeoStatus Model::add_surface_filling(int tag, const std::vector<int>& loops, std
 
 GeoResult<Vec3> Model::surface_point(int tag, Vec2 uv) const {
   const ModelSurface* s = surface(tag);
-  if (!s) return missing(EntityKind::Surface, tag, {}, "");
+  if (!s) return missing(GeoErrorId::UnknownEntity, EntityKind::Surface, tag);
   if (s->geometry) return geometries_.at(s->geometry).point(uv);
   if (!s->filling)
-    return make_error(GeoErrorKind::BadArgument, EntityKind::Surface, {tag},
-                      fmt::format("plane surface {} is not parametrised by (u,v): it lies in the plane of its boundary", tag));
+    return make_error(GeoErrorId::PlaneSurfaceNoUv, EntityKind::Surface, {tag});
   return filling_patch(*s).point(uv);
 }
 
@@ -796,8 +777,9 @@ TransfinitePatch Model::filling_patch(const ModelSurface& surf) const {
 
 GeoResult<std::optional<double>> Model::intersect_curve_surface(int curve_tag, int surface_tag) const {
   const ModelCurve* c = curve(curve_tag);
-  if (!c || !c->shape) return missing(EntityKind::Curve, curve_tag, {}, fmt::format(" to intersect with surface {}", surface_tag));
-  if (!surface(surface_tag)) return missing(EntityKind::Surface, surface_tag, {}, "");
+  if (!c || !c->shape)
+    return make_error(GeoErrorId::UnknownToIntersect, EntityKind::Curve, {curve_tag}, {surface_tag});
+  if (!surface(surface_tag)) return missing(GeoErrorId::UnknownEntity, EntityKind::Surface, surface_tag);
   // F(u, v, t) = S(u, v) - C(t) = 0 by Newton's method with a forward-difference Jacobian,
   // as Gmsh does: at most 10 steps from (0.5, 0.5, 0.5), relative step 1e-4, converged when
   // the step is below 1e-6. A singular Jacobian or a runaway iterate is no intersection.

@@ -266,7 +266,13 @@ class Model {
   /// outer loop, tag 0, a split at a point that is not on the curve...) the kernel does
   /// what Gmsh does and leaves a sentence saying what Gmsh does and what was done; the
   /// interpreter reports each as a located gmsh-compat warning. Taking them empties the list.
-  std::vector<std::string> take_compat_notes() { return std::exchange(compat_notes_, {}); }
+  /// A curve loop that does not close is kept unchecked, as Gmsh does: its note carries the
+  /// loop's error, which the interpreter words.
+  struct CompatNote {
+    std::string sentence;                   // empty when unchecked_loop is set
+    std::optional<GeoError> unchecked_loop;
+  };
+  std::vector<CompatNote> take_compat_notes() { return std::exchange(compat_notes_, {}); }
 
  private:
   GeoStatus add_sphere_geometry(int tag, int centre_point, int pole_point, bool polar);
@@ -289,7 +295,7 @@ class Model {
   void delete_loop(int tag, bool recursive, Usage& u);
   void delete_surface(int tag, bool recursive, Usage& u);
   void touch();   // a new revision_ from one counter shared by all models
-  void note_compat(std::string sentence) { compat_notes_.push_back(std::move(sentence)); }
+  void note_compat(std::string sentence) { compat_notes_.push_back({std::move(sentence), std::nullopt}); }
 
   ModelOptions options_;
   std::map<int, ModelVertex> vertices_;
@@ -313,7 +319,7 @@ class Model {
   std::array<int, 6> max_tag_{0, 0, 0, 0, 0, 0};
   int max_physical_tag_ = 0;   // high-water mark of physical group tags (newreg, auto tags)
   std::uint64_t revision_ = 0;  // 0: the empty model
-  std::vector<std::string> compat_notes_;   // see take_compat_notes()
+  std::vector<CompatNote> compat_notes_;   // see take_compat_notes()
   int hidden_loop_tag_ = 0;   // loops of duplicated surfaces: counted down from INT_MAX (see duplicate())
   bool duplicate_took_spare_points_ = false;   // see coherence()
 };

@@ -114,8 +114,8 @@ GeoStatus Model::remove(const std::vector<DimTag>& entities, bool recursive, std
     const bool exists = (e.dim == 0 && vertices_.count(t)) || (e.dim == 1 && curves_.count(t)) ||
                         (e.dim == 2 && surfaces_.count(t)) || (e.dim == 3 && volumes_.count(t));
     if (!exists)
-      return make_error(GeoErrorKind::MissingEntity, e.dim >= 0 && e.dim <= 3 ? static_cast<EntityKind>(e.dim) : EntityKind::None,
-                        {e.tag}, fmt::format("cannot delete unknown {} {}", e.dim == 0 ? "point" : e.dim == 1 ? "curve" : e.dim == 2 ? "surface" : "volume", t));
+      return make_error(GeoErrorId::CannotActOnUnknown, static_cast<EntityKind>(std::clamp(e.dim, 0, 3)), {e.tag}, {},
+                        {}, {"delete"});
   }
   Usage u = usage();
   for (const DimTag& e : entities) {
@@ -381,8 +381,8 @@ GeoStatus Model::transform_points(const std::vector<DimTag>& entities, const std
     const int t = std::abs(e.tag);
     if ((e.dim == 0 && !vertices_.count(t)) || (e.dim == 1 && !curves_.count(t)) || (e.dim == 2 && !surfaces_.count(t)) ||
         e.dim < 0 || e.dim > 2)
-      return make_error(GeoErrorKind::MissingEntity, e.dim >= 0 && e.dim <= 2 ? static_cast<EntityKind>(e.dim) : EntityKind::None,
-                        {e.tag}, fmt::format("cannot transform unknown entity {} of dimension {}", t, e.dim));
+      return make_error(GeoErrorId::CannotTransformUnknown,
+                        e.dim >= 0 && e.dim <= 2 ? static_cast<EntityKind>(e.dim) : EntityKind::None, {e.tag}, {e.dim});
   }
   const std::vector<int> pts = points_of(entities);
   std::vector<ModelVertex> before;
@@ -418,7 +418,7 @@ GeoStatus Model::translate(const std::vector<DimTag>& entities, Vec3 d) {
 GeoStatus Model::rotate(const std::vector<DimTag>& entities, Vec3 axis, Vec3 p, double angle) {
   const double n = norm(axis);
   if (!(n > 0))
-    return make_error(GeoErrorKind::BadArgument, EntityKind::None, {}, "rotation axis has zero length");
+    return make_error(GeoErrorId::RotationAxisZero, EntityKind::None, {});
   const Vec3 k = axis / n;
   const double c = std::cos(angle), s = std::sin(angle), t = 1 - c;
   // Rodrigues' rotation matrix about the unit axis k.
@@ -439,7 +439,7 @@ GeoStatus Model::dilate(const std::vector<DimTag>& entities, Vec3 c, Vec3 f) {
 GeoStatus Model::symmetry(const std::vector<DimTag>& entities, double a, double b, double c, double d) {
   const double n2 = a * a + b * b + c * c;
   if (!(n2 > 0))
-    return make_error(GeoErrorKind::BadArgument, EntityKind::None, {}, "symmetry plane has a zero normal");
+    return make_error(GeoErrorId::SymmetryPlaneZero, EntityKind::None, {});
   // x' = x - 2 (n.x + d) n / |n|^2
   const double k = 2.0 / n2;
   return transform_points(entities, {1 - k * a * a, -k * a * b, -k * a * c, -k * a * d,
@@ -452,12 +452,10 @@ GeoStatus Model::symmetry(const std::vector<DimTag>& entities, double a, double 
 GeoResult<std::vector<int>> Model::split_curve(int tag, const std::vector<int>& requested_points) {
   touch();
   auto it = curves_.find(tag);
-  if (it == curves_.end()) return make_error(GeoErrorKind::MissingEntity, EntityKind::Curve, {tag}, fmt::format("cannot split unknown curve {}", tag));
+  if (it == curves_.end()) return make_error(GeoErrorId::CannotActOnUnknown, EntityKind::Curve, {tag}, {}, {}, {"split"});
   const ModelCurve old = it->second;
   if (old.kind == CurveKind::Circle || old.kind == CurveKind::Ellipse)
-    return make_error(GeoErrorKind::BadArgument, EntityKind::Curve, {tag},
-                      fmt::format("cannot split {} {}: only Line, Spline, BSpline and Bezier curves split at control points",
-                                  to_string(old.kind), tag));
+    return make_error(GeoErrorId::CannotSplitArc, EntityKind::Curve, {tag}, {}, {}, {to_string(old.kind)});
   std::vector<int> split_points;
   for (int p : requested_points) {
     if (contains(old.points, p)) {

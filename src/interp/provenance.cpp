@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "interp/geo_diagnostic.h"
 #include "interp/interpreter.h"
 
 namespace sm::interp {
@@ -17,26 +18,6 @@ using lang::Diag;
 
 void record_created(KernelState& k, int key_dim, int tag, lang::SourceRange at) {
   k.created_at.insert_or_assign(std::make_pair(key_dim, tag), at);
-}
-
-Diag diag_of(GeoErrorKind kind) {
-  switch (kind) {
-    case GeoErrorKind::MissingEntity: return Diag::GeoMissingEntity;
-    case GeoErrorKind::DuplicateTag: return Diag::GeoDuplicateTag;
-    case GeoErrorKind::InvalidTag: return Diag::GeoInvalidTag;
-    case GeoErrorKind::TooFewPoints: return Diag::GeoTooFewPoints;
-    case GeoErrorKind::SelfReference: return Diag::GeoSelfReference;
-    case GeoErrorKind::CoincidentPoints: return Diag::GeoCoincidentPoints;
-    case GeoErrorKind::NotCocircular: return Diag::GeoNotCocircular;
-    case GeoErrorKind::DegenerateArc: return Diag::GeoDegenerateArc;
-    case GeoErrorKind::LoopNotClosed: return Diag::GeoLoopNotClosed;
-    case GeoErrorKind::LoopEmpty: return Diag::GeoLoopEmpty;
-    case GeoErrorKind::HoleOutside: return Diag::GeoHoleOutside;
-    case GeoErrorKind::SharedBoundary: return Diag::GeoSharedBoundary;
-    case GeoErrorKind::EntityInUse: return Diag::GeoEntityInUse;
-    case GeoErrorKind::BadArgument: return Diag::GeoBadArgument;
-  }
-  return Diag::GeoBadArgument;
 }
 
 namespace {
@@ -118,7 +99,8 @@ std::vector<lang::DiagNote> provenance_notes(const KernelState& k, const MeshErr
 }
 
 void fail_geo(Interpreter& in, lang::SourceRange at, const geo::GeoError& e) {
-  in.fail_message_with_notes(at, diag_of(e.kind), e.message, provenance_notes(in.kernel(), e));
+  GeoDiagnostic d = geo_diagnostic(e);
+  in.fail_message_with_notes(at, d.kind, std::move(d.message), provenance_notes(in.kernel(), e));
 }
 
 }  // namespace sm::interp

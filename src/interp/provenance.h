@@ -22,9 +22,6 @@ inline constexpr int kPhysicalKeyBase = 10;   ///< physical group of dimension d
 /// Records (or, for a re-created tag, replaces) the statement that created an entity.
 void record_created(KernelState& k, int key_dim, int tag, lang::SourceRange at);
 
-/// The diagnostic kind of a kernel error (its kebab name is what fail_ tests match).
-lang::Diag diag_of(geo::GeoErrorKind kind);
-
 /// "point 3 was created here" notes for the existing entities an error names.
 std::vector<lang::DiagNote> provenance_notes(const KernelState& k, const geo::GeoError& e);
 

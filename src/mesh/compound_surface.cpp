@@ -148,7 +148,7 @@ std::string combine(CompoundSurfacePlan& plan, const geo::Model& model, const st
   const std::size_t outer = outer_chain(model, u.chains);
   for (std::size_t i = 0; i < u.chains.size(); ++i) {
     const int tag = m.new_loop_tag();
-    if (const geo::GeoStatus st = m.add_curve_loop(tag, u.chains[i]); !st) return st.error().message;
+    if (const geo::GeoStatus st = m.add_curve_loop(tag, u.chains[i]); !st) return geo::summary(st.error());
     if (i == outer) loops.insert(loops.begin(), tag);
     else loops.push_back(tag);
   }
@@ -161,16 +161,16 @@ std::string combine(CompoundSurfacePlan& plan, const geo::Model& model, const st
   }
   std::vector<geo::DimTag> originals;
   for (int t : tags) originals.push_back({2, t});
-  if (const geo::GeoStatus st = m.remove(originals, false); !st) return st.error().message;
-  if (const geo::GeoStatus st = m.add_plane_surface(union_tag, loops); !st) return st.error().message;
+  if (const geo::GeoStatus st = m.remove(originals, false); !st) return geo::summary(st.error());
+  if (const geo::GeoStatus st = m.add_plane_surface(union_tag, loops); !st) return geo::summary(st.error());
   for (std::vector<int>* list : {&points, &curves}) {
     std::sort(list->begin(), list->end());
     list->erase(std::unique(list->begin(), list->end()), list->end());
   }
   if (!points.empty())
-    if (const geo::GeoStatus st = m.embed(0, points, union_tag); !st) return st.error().message;
+    if (const geo::GeoStatus st = m.embed(0, points, union_tag); !st) return geo::summary(st.error());
   if (!curves.empty())
-    if (const geo::GeoStatus st = m.embed(1, curves, union_tag); !st) return st.error().message;
+    if (const geo::GeoStatus st = m.embed(1, curves, union_tag); !st) return geo::summary(st.error());
   (void)m.take_compat_notes();   // the copy's notes: the script's statements made theirs
   plan.groups.push_back({union_tag, tags, u.geometry, u.normal});
   return {};

@@ -98,7 +98,7 @@ int main() {
   std::printf("  points + BSplines + loops    %8.3f s\n", t_curves);
   std::printf("  plane surface (hole checks)  %8.3f s\n", t_surface);
   std::printf("  model build total            %8.3f s  (%s)\n", t_curves + t_surface,
-              ok ? "valid" : (st.ok() ? "error" : st.error().message.c_str()));
+              ok ? "valid" : (st.ok() ? "error" : geo::summary(st.error()).c_str()));
 
   // Evaluation cost per call: same number of calls on a 35k-point and a ~100-point curve.
   const int calls = 2'000'000;

@@ -93,7 +93,7 @@ Built build(const std::string& path, double gamma_m, geo::CurveKind kind) {
     std::vector<int> loops{loop_tag[s.outer]};
     for (std::uint32_t h : s.holes) loops.push_back(loop_tag[h]);
     const geo::GeoStatus st = m.add_plane_surface(m.new_surface_tag(), loops);
-    if (!st.ok()) std::fprintf(stderr, "surface: %s\n", st.error().message.c_str());
+    if (!st.ok()) std::fprintf(stderr, "surface: %s\n", geo::summary(st.error()).c_str());
     ok = ok && st.ok();
   }
   b.seconds = seconds_since(t0);

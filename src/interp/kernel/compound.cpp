@@ -79,7 +79,7 @@ std::optional<geo::DimTag> exec_compound_spline(Interpreter& in, const Stmt& s, 
                 tag == 0 ? std::string("0 is not a valid curve tag here") : fmt::format("curve {} already exists", tag));
   for (int c : curves)
     if (const geo::ModelCurve* mc = m.curve(std::abs(c)); !mc || !mc->shape)
-      in.fail_fmt(in.ast().expr(n.points).range, Diag::GeoMissingEntity, fmt::format("curve {} does not exist", std::abs(c)));
+      in.fail(in.ast().expr(n.points).range, Diag::GeoNoSuchCurve, std::abs(c));
   std::vector<int> points;
   for (std::size_t i = 0; i < curves.size(); ++i) {
     // Curve -c is c run backwards (Gmsh's reversed copy of every curve).

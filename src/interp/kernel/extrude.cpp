@@ -125,15 +125,13 @@ void embed_in_volume(Interpreter& in, const Stmt& s, const EmbedStmt& n) {
   const geo::Model& m = in.kernel().model;
   const int v = eval_tag(in, n.target_tag);
   if (!m.volumes().count(v))
-    fail_geo(in, s.range, geo::make_error(geo::GeoErrorKind::MissingEntity, geo::EntityKind::Volume, {v},
-                                          fmt::format("unknown volume {} to embed in", v)));
+    in.fail(s.range, Diag::GeoUnknownEmbeddingVolume, v);
   const int dim = static_cast<int>(n.ent);
   for (int t : eval_tags(in, n.tags)) {
     const int a = std::abs(t);
     const bool ok = (dim == 0 && m.vertex(a)) || (dim == 1 && m.curve(a)) || (dim == 2 && m.surface(a));
     if (!ok)
-      fail_geo(in, s.range, geo::make_error(geo::GeoErrorKind::MissingEntity, static_cast<geo::EntityKind>(std::min(dim, 3)), {a},
-                                            fmt::format("unknown {} {} to embed in volume {}", entity_name(n.ent), a, v)));
+      in.fail(s.range, Diag::GeoUnknownToEmbedIn, std::string(entity_name(n.ent)), a, v);
   }
   // Gmsh embeds them in the volume's 3D mesh only: a 2D mesh is the same without them.
 }

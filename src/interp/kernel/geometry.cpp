@@ -9,6 +9,7 @@
 #include "interp/kernel/compound.h"
 #include "interp/kernel/dispatch.h"
 #include "interp/kernel/geometry_shapes.h"
+#include "interp/geo_diagnostic.h"
 #include "interp/interpreter.h"
 #include "interp/provenance.h"
 
@@ -260,7 +261,12 @@ void exec_split_curve(Interpreter& in, const Stmt& s, const SplitCurveStmt& n) {
 }  // namespace
 
 void report_compat_notes(Interpreter& in, SourceRange at) {
-  for (std::string& note : in.kernel().model.take_compat_notes()) in.diags().report(at, Diag::GmshCompat, note);
+  for (geo::Model::CompatNote& note : in.kernel().model.take_compat_notes()) {
+    if (note.unchecked_loop)
+      in.diags().report(at, Diag::GmshCompatUncheckedLoop, geo_diagnostic(*note.unchecked_loop).message);
+    else
+      in.diags().report(at, Diag::GmshCompat, note.sentence);
+  }
 }
 
 namespace {

@@ -206,8 +206,7 @@ Value eval_entity_query(Interpreter& in, const Expr& x, const EntityQueryExpr& q
     for (int t : eval_tags(in, e)) {
       const geo::ModelVertex* v = m.vertex(t);
       if (!v)
-        fail_geo(in, x.range, geo::make_error(geo::GeoErrorKind::MissingEntity, geo::EntityKind::Point, {t},
-                                             fmt::format("unknown point {} in Point{{}}", t)));
+        in.fail(x.range, Diag::GeoUnknownQueriedPoint, t);
       out.insert(out.end(), {v->xyz.x, v->xyz.y, v->xyz.z});
     }
   }

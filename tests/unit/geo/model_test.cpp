@@ -118,7 +118,8 @@ TEST_CASE("model errors: missing point, duplicate tag, self reference, bad tag")
   REQUIRE_FALSE(miss);
   CHECK(miss.error().kind == GeoErrorKind::MissingEntity);
   CHECK(miss.error().tags == std::vector<int>{9, 5});
-  CHECK(miss.error().message == "unknown point 9 used by Line 5");
+  CHECK(miss.error().id == GeoErrorId::UnknownEntityUsedBy);
+  CHECK(miss.error().words == std::vector<std::string>{"Line"});
   auto self = m.add_curve(6, CurveKind::Spline, {1, 1});
   REQUIRE_FALSE(self);
   CHECK(self.error().kind == GeoErrorKind::SelfReference);
@@ -165,7 +166,7 @@ TEST_CASE("curve loops: closing, Gmsh's reordering, subloops, located breaks") {
   REQUIRE(wrong);
   CHECK(wrong->kind == GeoErrorKind::LoopNotClosed);
   CHECK(wrong->tags == std::vector<int>{12, -3, 2});
-  CHECK(wrong->message.find("use 3 to reverse it") != std::string::npos);
+  CHECK(wrong->id == GeoErrorId::LoopCurveReversed);   // "... (use 3 to reverse it)"
   CHECK(m.curve_loop(12)->curves == std::vector<int>{1, 2, -3, 4});
   CHECK(m.add_plane_surface(90, {12}).error().kind == GeoErrorKind::LoopNotClosed);
   CHECK(m.add_surface_filling(91, {12}, std::nullopt).error().kind == GeoErrorKind::LoopNotClosed);
@@ -174,7 +175,8 @@ TEST_CASE("curve loops: closing, Gmsh's reordering, subloops, located breaks") {
   const std::optional<GeoError>& open = m.curve_loop(13)->unclosed;
   REQUIRE(open);
   CHECK(open->tags == std::vector<int>{13, 3});
-  CHECK(open->message == "curve loop 13 does not close: curve 3 ends at point 4 but the loop started at point 1");
+  CHECK(open->id == GeoErrorId::LoopDoesNotClose);
+  CHECK(open->ids == std::vector<int>{4, 1});   // curve 3 ends at point 4, the loop started at point 1
   REQUIRE(m.add_curve_loop(14, {1, 2, 3, 4, 5}));
   REQUIRE(m.curve_loop(14)->unclosed);
   CHECK(m.curve_loop(14)->unclosed->tags == std::vector<int>{14, 5});

@@ -75,7 +75,7 @@ int build_world(Model& m, const std::vector<Segment>& segs, int& outer, std::vec
   loops.insert(loops.end(), holes.begin(), holes.end());
   const int s = m.new_surface_tag();
   const GeoStatus st = m.add_plane_surface(s, loops);
-  REQUIRE_MESSAGE(st.ok(), (st.ok() ? "" : st.error().message));
+  REQUIRE_MESSAGE(st.ok(), (st.ok() ? "" : summary(st.error())));
   return s;
 }
 
@@ -136,7 +136,7 @@ TEST_CASE("world model: world_c.txt as closed BSplines on a PolarSphere, Antarct
   loops.insert(loops.end(), holes.begin(), holes.end());
   const int s = m.new_surface_tag();
   auto status = m.add_plane_surface(s, loops);
-  REQUIRE_MESSAGE(status.ok(), (status.ok() ? "" : status.error().message));
+  REQUIRE_MESSAGE(status.ok(), (status.ok() ? "" : summary(status.error())));
   CHECK(m.surfaces().size() == 1);
   CHECK(m.surface(s)->geometry == 1);
   CHECK(m.surface(s)->loops.size() == 743);
