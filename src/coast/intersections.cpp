@@ -276,28 +276,59 @@ std::vector<NearMiss> find_near_pairs(std::span<const std::vector<Vec2>> loops,
 
 std::vector<NearMiss> find_near_misses_again(std::span<const std::vector<Vec2>> loops,
                                              std::span<const std::vector<double>> width,
-                                             std::span<const char> changed, std::vector<NearMiss> before) {
-  std::erase_if(before, [&](const NearMiss& m) { return changed[m.loop_a] || changed[m.loop_b]; });
-  std::vector<std::vector<char>> active(loops.size());
-  bool any = false;
-  for (std::size_t l = 0; l < loops.size(); ++l) {
-    active[l].assign(loops[l].size(), changed[l] ? 1 : 0);
-    any = any || (changed[l] && !loops[l].empty());
-  }
-  if (!any) return before;
-  std::vector<NearMiss> found = find_near_pairs(loops, width, active);
+                                             std::span<const std::vector<char>> active, std::vector<NearMiss> before) {
   // Within one loop only far-apart parts count: at least 3 segments away both ways.
-  std::erase_if(found, [&](const NearMiss& m) {
+  auto near_along = [&](const NearMiss& m) {
     if (m.loop_a != m.loop_b) return false;
     const auto n = static_cast<std::uint32_t>(loops[m.loop_a].size());
     const std::uint32_t d = m.seg_a > m.seg_b ? m.seg_a - m.seg_b : m.seg_b - m.seg_a;
     return std::min(d, n - d) < 3;
+  };
+  // A place past its loop's end names a segment that is gone: dropped as an active one.
+  auto searched = [&](std::uint32_t l, std::uint32_t s) { return s >= active[l].size() || active[l][s]; };
+  std::erase_if(before, [&](const NearMiss& m) {
+    return searched(m.loop_a, m.seg_a) || searched(m.loop_b, m.seg_b) || near_along(m);
   });
+  sort_place_pairs(before);
+  std::vector<NearMiss> found = find_near_pairs(loops, width, active);
+  std::erase_if(found, near_along);
   std::vector<NearMiss> out;
   out.reserve(before.size() + found.size());
   std::merge(before.begin(), before.end(), found.begin(), found.end(), std::back_inserter(out),
              [](const NearMiss& a, const NearMiss& b) { return place_pair_key(a) < place_pair_key(b); });
   return out;
+}
+
+void renumber_for_joins(std::span<const LoopJoin> joins, std::vector<NearMiss>& near,
+                        std::vector<std::vector<char>>& active) {
+  constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+  std::uint32_t loops = 0;
+  for (const LoopJoin& j : joins) loops = std::max({loops, j.into + 1, j.from + 1});
+  std::vector<std::uint32_t> join_of(loops, kNone);
+  for (std::uint32_t i = 0; i < joins.size(); ++i) join_of[joins[i].into] = join_of[joins[i].from] = i;
+  // A joined segment keeps its points and its start point's width; the replaced ones are
+  // numbered as the bridges that replace them (searched again).
+  auto place = [&](std::uint32_t& l, std::uint32_t& s) {
+    if (l >= loops || join_of[l] == kNone) return;
+    const LoopJoin& j = joins[join_of[l]];
+    if (l == j.into) {
+      s = s == j.k_into ? j.n_into - 1 : (s + j.n_into - j.k_into - 1) % j.n_into;
+    } else {
+      s = j.n_into + (s == j.k_from ? j.n_from - 1 : (s + j.n_from - j.k_from - 1) % j.n_from);
+      l = j.into;
+    }
+  };
+  for (NearMiss& m : near) {
+    place(m.loop_a, m.seg_a);
+    place(m.loop_b, m.seg_b);
+    order_places(m);   // the distance and the place (a half sum) do not depend on the order
+  }
+  for (const LoopJoin& j : joins) {
+    const std::uint32_t n = j.n_into + j.n_from;
+    std::vector<char>& a = active[j.into];
+    for (const std::uint32_t bridge : {j.n_into - 1, n - 1})
+      for (std::uint32_t d = 0; d < 5; ++d) a[(bridge + n - 2 + d) % n] = 1;
+  }
 }
 
 }  // namespace sm::coast

@@ -56,14 +56,32 @@ std::vector<NearMiss> find_near_pairs(std::span<const std::vector<Vec2>> loops,
                                       std::span<const std::vector<double>> width,
                                       std::span<const std::vector<char>> active, std::size_t* searched = nullptr);
 
-/// find_near_misses after some loops changed: `before` is find_near_misses of the loops as
-/// they were, and changed[l] marks each loop whose polygon or widths changed since (a loop
-/// emptied counts as changed). The pairs of two unchanged loops are those of `before`; the
-/// others are searched (find_near_pairs over the changed loops' segments, with the one-loop
-/// filter of find_near_misses). The result is find_near_misses(loops, width), record for
-/// record, at the cost of the changed loops' segments and the segments near them.
+/// find_near_misses after the loops changed in places: `before` is find_near_misses of the
+/// loops as they were, each place numbered as it is now (a loop renumbered or merged into
+/// another: its records renumbered, in any order), and active[l][s] marks each segment
+/// that is new or whose pairs may have changed (its geometry, width, or its distance along
+/// its loop to the other segment of a pair); a place past its loop's end is gone. The records of two inactive segments are
+/// those of `before` (the one-loop filter made again), the others are searched
+/// (find_near_pairs). The result is find_near_misses(loops, width), record for record, at
+/// the cost of the active segments and the segments near them.
 std::vector<NearMiss> find_near_misses_again(std::span<const std::vector<Vec2>> loops,
                                              std::span<const std::vector<double>> width,
-                                             std::span<const char> changed, std::vector<NearMiss> before);
+                                             std::span<const std::vector<char>> active, std::vector<NearMiss> before);
+
+/// Two loops joined across segment k_into of `into` and k_from of `from` (repair.cpp,
+/// merge_across): into's polygon becomes its vertices from k_into + 1 round to k_into, then
+/// from's from k_from + 1 round to k_from, the two segments replaced by the bridges
+/// k_into -> k_from + 1 and k_from -> k_into + 1; from's polygon is emptied. n_into and
+/// n_from: their vertex counts before.
+struct LoopJoin {
+  std::uint32_t into, from, k_into, k_from, n_into, n_from;
+};
+
+/// Renumbers the places of `near` for the joins (each loop in one join at most), and marks
+/// in `active` (one flag per segment of the loops after the joins, cleared by the caller)
+/// what find_near_misses_again must search again: the bridges and the two segments on each
+/// side of each (a pair there may have been near along one loop, or become so).
+void renumber_for_joins(std::span<const LoopJoin> joins, std::vector<NearMiss>& near,
+                        std::vector<std::vector<char>>& active);
 
 }  // namespace sm::coast

@@ -747,14 +747,17 @@ void handle_straits(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops
   // across several straits take several passes.
   constexpr int kMaxPasses = 16;
   // A pass changes only the loops it merges (one made of two, the other dead): the next
-  // pass makes the polygons and widths of those again, keeps the others', and searches
-  // near misses only for the changed loops' segments (find_near_misses_again), where a
-  // full search of the world each pass was most of the straits' time (16 passes at 3 km).
+  // pass makes the polygons and widths of those again and keeps the others'. Its near
+  // misses are the pass before's, renumbered through the merges, with only the segments
+  // at the bridges searched again (renumber_for_joins, find_near_misses_again): a full
+  // search of the world each pass was most of the straits' time (16 passes at 3 km), and
+  // searching every segment of a merged continent again was half of that.
   std::vector<std::vector<Vec2>> polys(loops.size());
   std::vector<std::vector<LoopVertexRef>> refs(loops.size());
   std::vector<std::vector<double>> width(loops.size());
   std::vector<char> changed(loops.size(), 1);
   std::vector<NearMiss> near;
+  std::vector<LoopJoin> joins;   // the pass before's merges
   for (int pass = 0; pass < kMaxPasses; ++pass) {
     for (std::size_t l = 0; l < loops.size(); ++l) {
       if (!changed[l]) continue;
@@ -769,8 +772,22 @@ void handle_straits(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops
         width[l].push_back(opt.strait_factor * c.gamma[c.keep[r.k]] / lambda(polys[l][s], opt.radius));
       }
     }
-    near = pass == 0 ? find_near_misses(polys, width) : find_near_misses_again(polys, width, changed, std::move(near));
+    if (pass == 0) {
+      near = find_near_misses(polys, width);
+    } else {
+      std::vector<std::vector<char>> active(loops.size());
+      for (std::size_t l = 0; l < loops.size(); ++l)
+        if (changed[l]) active[l].assign(polys[l].size(), 0);
+      for (const LoopJoin& j : joins)
+        SM_ASSERT(polys[j.into].size() == std::size_t{j.n_into} + j.n_from && polys[j.from].empty(),
+                  "handle_straits: a merged loop's polygon is not its two loops' (repair.cpp, handle_straits)");
+      renumber_for_joins(joins, near, active);
+      for (std::size_t l = 0; l < loops.size(); ++l)
+        if (active[l].size() != polys[l].size()) active[l].assign(polys[l].size(), 0);
+      near = find_near_misses_again(polys, width, active, std::move(near));
+    }
     std::fill(changed.begin(), changed.end(), 0);
+    joins.clear();
     std::optional<SegmentGrid> grid;   // made at the pass's first merge tried
     // Narrowest place per pair of loops, narrowest pairs first; a place where the two
     // segments face each other (run in opposite directions, more than 120 degrees apart)
@@ -842,6 +859,8 @@ void handle_straits(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops
           });
         }
         if (!bad) {
+          joins.push_back({m.loop_a, m.loop_b, ra.k, rb.k, static_cast<std::uint32_t>(pa.size()),
+                           static_cast<std::uint32_t>(pb.size())});
           merge_across(curves, la, ra.k, lb, rb.k);
           changed[m.loop_a] = changed[m.loop_b] = 1;   // merged once this pass, made again the next
           merged = true;
