@@ -360,9 +360,7 @@ Value Interpreter::eval_range(const Expr& e, const RangeExpr& r) {
   const double count = std::floor((b - a) / step) + 1;
   const std::size_t max_list = settings_.limits.max_list_size;
   if (count > static_cast<double>(max_list))
-    fail_fmt(e.range, Diag::LimitExceeded,
-             fmt::format("range {}:{}:{} has {} elements, more than the limit of {}", format_g(a),
-                         format_g(b), format_g(step), format_g(count), max_list));
+    fail(e.range, Diag::LimitRange, format_g(a), format_g(b), format_g(step), format_g(count), max_list);
   std::vector<double> out;
   if (count > 0) out.reserve(static_cast<std::size_t>(count) + 1);
   // Accumulated like Gmsh (d += step, no tolerance): 0:0.3:0.1 gives 0, 0.1, 0.2.
@@ -386,8 +384,7 @@ Value Interpreter::eval_list(const Expr& e, const ListExpr& l) {
     if (!nums.empty() && !strs.empty())
       fail_fmt(ast_.expr(item).range, Diag::WrongType, "a list cannot mix numbers and strings");
     if (nums.size() > settings_.limits.max_list_size)
-      fail_fmt(e.range, Diag::LimitExceeded,
-               fmt::format("list longer than the limit of {}", settings_.limits.max_list_size));
+      fail(e.range, Diag::LimitListLength, settings_.limits.max_list_size);
   }
   if (!strs.empty()) return Value::string_list(std::move(strs));
   return Value::list(std::move(nums));

@@ -157,8 +157,7 @@ void Interpreter::exec_assign(const Stmt& s, const AssignStmt& a) {
   const SourceRange vr = ast_.expr(a.value).range;
   auto grow_check = [&](std::size_t n) {
     if (n > settings_.limits.max_list_size)
-      fail_fmt(s.range, Diag::LimitExceeded,
-               fmt::format("list '{}' would exceed {} elements", name, settings_.limits.max_list_size));
+      fail(s.range, Diag::LimitListGrowth, name, settings_.limits.max_list_size);
   };
   auto arith = [&](double cur, double v) -> double {
     switch (a.op) {

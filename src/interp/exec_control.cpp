@@ -50,9 +50,8 @@ Interpreter::Flow Interpreter::exec_for(const Stmt& st, const ForStmt& f) {
   if (step != 0) {
     const double n = std::floor((to - from) / step) + 1;
     if (n > static_cast<double>(settings_.limits.max_list_size))
-      fail_fmt(st.keyword, Diag::LimitExceeded,
-               fmt::format("loop {}:{}:{} would run {} iterations, more than the limit of {}", format_g(from),
-                           format_g(to), format_g(step), format_g(n), settings_.limits.max_list_size));
+      fail(st.keyword, Diag::LimitLoopIterations, format_g(from), format_g(to), format_g(step), format_g(n),
+           settings_.limits.max_list_size);
   }
   const bool has_var = f.var.valid();
   const std::string var = has_var ? std::string(ast_.str(f.var)) : std::string();

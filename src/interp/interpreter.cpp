@@ -146,17 +146,13 @@ Interpreter::Flow Interpreter::exec_block(const StmtList& body) {
 
 void Interpreter::count_statement(SourceRange r) {
   if (++statements_run_ > settings_.limits.max_statements)
-    fail_fmt(r, Diag::LimitExceeded,
-             fmt::format("more than {} statements executed: stopping a runaway loop",
-                         settings_.limits.max_statements));
+    fail(r, Diag::LimitStatements, settings_.limits.max_statements);
 }
 
 Interpreter::DepthGuard::DepthGuard(Interpreter& in, SourceRange r) : in_(in) {
   if (++in_.depth_ > in_.settings_.limits.max_eval_depth) {
     --in_.depth_;   // the destructor does not run when the constructor throws
-    in_.fail_fmt(r, Diag::LimitExceeded,
-                 fmt::format("evaluation nested deeper than {} levels (deeply nested blocks inside "
-                             "recursive macro calls?)", in_.settings_.limits.max_eval_depth));
+    in_.fail(r, Diag::LimitEvalDepth, in_.settings_.limits.max_eval_depth);
   }
 }
 

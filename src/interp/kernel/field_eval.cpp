@@ -175,9 +175,7 @@ void check_reference_depth(Interpreter& in, int root, SourceRange use) {
     open.insert(id);
     stack.push_back({id, std::move(refs)});
     if (static_cast<int>(stack.size()) > kMaxFieldDepth)
-      in.fail_fmt(use, Diag::LimitExceeded,
-                  fmt::format("Field[{}] references fields nested deeper than {} levels (Field[{}] -> "
-                              "Field[{}] -> ...)", root, kMaxFieldDepth, stack[0].id, stack[1].id));
+      in.fail(use, Diag::LimitFieldNestingPath, root, kMaxFieldDepth, stack[0].id, stack[1].id);
   };
   if (!set.contains(root)) return;
   push(root);
@@ -194,9 +192,7 @@ void check_reference_depth(Interpreter& in, int root, SourceRange use) {
       if (it != depth.end()) d = std::max(d, it->second + 1);
     }
     if (d >= kMaxFieldDepth)
-      in.fail_fmt(use, Diag::LimitExceeded,
-                  fmt::format("Field[{}] references fields nested deeper than {} levels", root,
-                              kMaxFieldDepth));
+      in.fail(use, Diag::LimitFieldNesting, root, kMaxFieldDepth);
     depth[top.id] = d;
     open.erase(top.id);
     stack.pop_back();

@@ -73,30 +73,30 @@ Diag diag_of(const MeshError& e) {
   switch (e.kind) {
     case MeshErrorKind::Intersection:
     case MeshErrorKind::DuplicatePoint: return Diag::MeshCurvesIntersect;
-    case MeshErrorKind::LimitExceeded: return Diag::LimitExceeded;
     default: return Diag::MeshFailed;
   }
 }
 
-constexpr std::string_view kBudgetFix = "check the mesh sizes, or raise Mesh.MaxElements";
 // Mesh.MinTimeStep's size floor is this times dt sqrt(g H): a frontal mesh's edges run
 // from about 0.7 to 1.4 of the size (docs/kernel.md), so the shortest stays near dt sqrt(g H).
 constexpr double kMinStepSizeFactor = 1.5;
 // The places under Mesh.MinTimeStep listed after meshing, worst first (the count says the rest).
 constexpr std::size_t kMaxStepUnmetReported = 10;
 
-// The limit a count exceeds, as the user can change it.
-std::string over_limit(double limit) {
-  if (limit >= kMaxCurveNodes) return fmt::format("over the {:g} nodes a curve can have: check the mesh sizes", limit);
-  return fmt::format("over Mesh.MaxElements = {:g}: {}", limit, kBudgetFix);
-}
-
-std::string message_of(const MeshError& e) {
-  if (e.kind != MeshErrorKind::LimitExceeded) return e.message;
+// A 1D mesher error's kind and message: a node count over its limit says which limit, as
+// the user can change it (Mesh.MaxElements, or the cap of nodes on one curve).
+std::pair<Diag, std::string> worded_1d(const MeshError& e) {
+  if (e.kind != MeshErrorKind::LimitExceeded) return {diag_of(e), e.message};
+  const bool cap = e.limit >= kMaxCurveNodes;
+  if (e.all_curves && cap)
+    return {Diag::LimitAllCurvesCap, format_diag<double, int, double>(Diag::LimitAllCurvesCap, e.count, e.tag(0), e.limit)};
   if (e.all_curves)
-    return fmt::format("the curves would get about {:.1e} nodes in all (curve {} the most), {}", e.count, e.tag(0),
-                       over_limit(e.limit));
-  return fmt::format("curve {} would get about {:.1e} nodes, {}", e.tag(0), e.count, over_limit(e.limit));
+    return {Diag::LimitAllCurvesBudget,
+            format_diag<double, int, double>(Diag::LimitAllCurvesBudget, e.count, e.tag(0), e.limit)};
+  if (cap)
+    return {Diag::LimitCurveNodesCap, format_diag<int, double, double>(Diag::LimitCurveNodesCap, e.tag(0), e.count, e.limit)};
+  return {Diag::LimitCurveNodesBudget,
+          format_diag<int, double, double>(Diag::LimitCurveNodesBudget, e.tag(0), e.count, e.limit)};
 }
 
 // A meshing failure on its way to a diagnostic (kind, message, notes at the
@@ -111,9 +111,8 @@ struct MeshFailure {
 MeshFailure failure_of(const KernelState& k, const MeshError& e) {
   MeshFailure f{Diag::MeshFailed, e.message, provenance_notes(k, e)};
   if (e.kind == MeshErrorKind::LimitExceeded) {
-    f.kind = Diag::LimitExceeded;
-    f.message = fmt::format("surface {} would get about {:.1e} triangles, over Mesh.MaxElements = {:g}: {}", e.tag(0),
-                            e.count, e.limit, kBudgetFix);
+    f.kind = Diag::LimitSurfaceTriangles;
+    f.message = format_diag<int, double, double>(Diag::LimitSurfaceTriangles, e.tag(0), e.count, e.limit);
   } else if (e.has_lonlat) {
     f.message += fmt::format(" (near lon {:.4f}, lat {:.4f})", e.where.lon, e.where.lat);
   }
@@ -519,7 +518,10 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   Mesh1dResult r = mesh_curves(meshed, opt1);
   stage_1d.reset();
   if (r.error.kind == MeshErrorKind::Stopped) return failure_of(k, budget);
-  if (!r.ok()) return {diag_of(r.error), message_of(r.error), provenance_notes(k, r.error)};
+  if (!r.ok()) {
+    auto [kind, message] = worded_1d(r.error);
+    return {kind, std::move(message), provenance_notes(k, r.error)};
+  }
   auto mesh = std::make_shared<ModelMesh>(std::move(r.mesh));
   // The merged files' surfaces, meshed as they are, on their points' and curves' nodes.
   if (const std::string why = add_discrete_surfaces(k.discrete, *mesh); !why.empty())

@@ -52,3 +52,19 @@ TEST_CASE("typed report: the field errors' sentences, one kind per shape") {
   // One kebab name for the family the script tests match on.
   CHECK(diag_info(Diag::MissingFieldReference).kebab == diag_info(Diag::MissingField).kebab);
 }
+
+TEST_CASE("typed report: the limits' sentences, one kind per shape") {
+  CHECK(format_diag<std::string, std::string, std::string, std::string, std::size_t>(
+            Diag::LimitLoopIterations, "1", "1e+09", "1", "1e+09", std::size_t{10000000}) ==
+        "loop 1:1e+09:1 would run 1e+09 iterations, more than the limit of 10000000");
+  CHECK(format_diag<int, int, int, int>(Diag::LimitFieldNestingPath, 1, 100, 1, 2) ==
+        "Field[1] references fields nested deeper than 100 levels (Field[1] -> Field[2] -> ...)");
+  CHECK(format_diag<int, double, double>(Diag::LimitCurveNodesBudget, 3, 2.5e7, 1e7) ==
+        "curve 3 would get about 2.5e+07 nodes, over Mesh.MaxElements = 1e+07: check the mesh sizes, or raise "
+        "Mesh.MaxElements");
+  CHECK(format_diag<double, int, double>(Diag::LimitAllCurvesCap, 3.1e9, 4, 2e9) ==
+        "the curves would get about 3.1e+09 nodes in all (curve 4 the most), over the 2e+09 nodes a curve can have: "
+        "check the mesh sizes");
+  CHECK(std::string(diag_info(Diag::LimitSurfaceTriangles).kebab) == "limit-exceeded");
+  CHECK(diag_info(Diag::LimitStatements).kebab == diag_info(Diag::LimitRange).kebab);
+}
