@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -28,18 +29,24 @@ constexpr float kAbandoned = -1.0f;
 // Gmsh 4.8.4's rule for a new point (RefineOptions::gmsh_rejection), asked by the
 // inserter once the cavity is known: each triangle (a, b, point) of the fan must keep the
 // point 0.5 L from a and b, 0.4 L from the line ab when both are boundary nodes, and its
-// angle at the point below acos(-0.9999), L the mean size of a, b and the point; a cavity
-// of one triangle is refused. Distances in plain arithmetic: they are size decisions.
+// angle at the point below acos(-0.9999); a cavity of one triangle is refused. L is the
+// smaller of the means over a, b and the point of the target sizes and of the edge sizes
+// (Gmsh's vSizes: on entry a vertex's shortest edge, at least half its boundary edges;
+// interpolated into the triangle that gets a new vertex). Distances in plain arithmetic:
+// they are size decisions.
 class GmshRule final : public CavityCheck {
  public:
-  GmshRule(const TriangleStore& m, const std::vector<double>& vsize, std::uint32_t first_inner)
-      : m_(m), vsize_(vsize), first_inner_(first_inner) {}
-  double point_size = 0;  // the size at the point, set before each insertion
+  GmshRule(const TriangleStore& m, const std::vector<double>& vsize, const std::vector<double>& vedge,
+           std::uint32_t first_inner)
+      : m_(m), vsize_(vsize), vedge_(vedge), first_inner_(first_inner) {}
+  double point_size = 0, point_edge = 0;  // the point's sizes, set before each insertion
   bool accept(Vec2 p, std::size_t triangles, std::span<const CavityEdge> boundary) override {
     if (triangles == 1) return false;
     for (const CavityEdge& e : boundary) {
       const Vec2 a = m_.pos(e.a), b = m_.pos(e.b);
-      const double l = (vsize_[e.a.value] + vsize_[e.b.value] + point_size) / 3;
+      const double l = std::min(vsize_[e.a.value] + vsize_[e.b.value] + point_size,
+                                vedge_[e.a.value] + vedge_[e.b.value] + point_edge) /
+                       3;
       const double d1 = norm(a - p), d2 = norm(b - p), d3 = norm(b - a);
       if (d1 < 0.5 * l || d2 < 0.5 * l) return false;
       if (e.a.value < first_inner_ && e.b.value < first_inner_ && std::abs(cross(b - a, p - a)) < 0.4 * l * d3)
@@ -52,13 +59,14 @@ class GmshRule final : public CavityCheck {
  private:
   const TriangleStore& m_;
   const std::vector<double>& vsize_;
+  const std::vector<double>& vedge_;
   std::uint32_t first_inner_;  // vertices below it were present on entry: boundary nodes
 };
 
 class Frontal : detail::RefineDriver {
  public:
   Frontal(TriangleStore& m, const RefineOptions& opt, FrontalResult& res)
-      : RefineDriver(m, opt, res), fres_(res), rule_(m, vsize_, m.num_vertices()) {}
+      : RefineDriver(m, opt, res), fres_(res), rule_(m, vsize_, vedge_, m.num_vertices()) {}
   void run();
 
  private:
@@ -89,6 +97,8 @@ class Frontal : detail::RefineDriver {
   /// Classifies freshly sized triangles and queues those on the front.
   void classify(std::span<const std::uint32_t> tris);
   void grow_slots();
+  /// vedge_ of the vertices present on entry (GmshRule).
+  void init_edge_sizes();
   /// Moves the per-slot ratios and per-vertex sizes after sort_spatially.
   void renumber(const std::vector<std::uint32_t>& new_slot, const std::vector<std::uint32_t>& new_vertex);
 
@@ -96,7 +106,8 @@ class Frontal : detail::RefineDriver {
   double limit2_ = 0;
   std::vector<float> ratio_;   // per slot: R^2 / h^2
   std::vector<double> vsize_;  // per vertex: target size
-  GmshRule rule_;              // reads vsize_
+  std::vector<double> vedge_;  // per vertex, with gmsh_rejection: Gmsh's edge size (GmshRule)
+  GmshRule rule_;              // reads vsize_ and vedge_
 };
 
 bool Frontal::on_front(Side s) const {
@@ -183,6 +194,34 @@ void Frontal::renumber(const std::vector<std::uint32_t>& new_slot, const std::ve
   std::vector<double> vsize(vsize_.size());
   for (std::size_t v = 0; v < vsize_.size(); ++v) vsize[new_vertex[v]] = vsize_[v];
   vsize_.swap(vsize);
+  if (!vedge_.empty()) {
+    std::vector<double> vedge(vedge_.size());
+    for (std::size_t v = 0; v < vedge_.size(); ++v) vedge[new_vertex[v]] = vedge_[v];
+    vedge_.swap(vedge);
+  }
+}
+
+void Frontal::init_edge_sizes() {
+  vedge_.assign(m_.num_vertices(), std::numeric_limits<double>::infinity());
+  for (const std::uint32_t t : live_triangles())
+    for (std::uint32_t e = 0; e < 3; ++e) {
+      const Side s{3 * t + e};
+      const VertexId a = m_.org(s), b = m_.dest(s);
+      const double l = norm(m_.pos(b) - m_.pos(a));
+      vedge_[a.value] = std::min(vedge_[a.value], l);
+      vedge_[b.value] = std::min(vedge_[b.value], l);
+    }
+  // A short boundary edge does not make its ends' sizes smaller than half of it (as Gmsh
+  // keeps small curve edges from polluting the sizes).
+  for (const std::uint32_t t : live_triangles())
+    for (std::uint32_t e = 0; e < 3; ++e) {
+      const Side s{3 * t + e};
+      if (!m_.constrained(s) && m_.twin[s.value].valid()) continue;
+      const VertexId a = m_.org(s), b = m_.dest(s);
+      const double l = 0.5 * norm(m_.pos(b) - m_.pos(a));
+      vedge_[a.value] = std::max(vedge_[a.value], l);
+      vedge_[b.value] = std::max(vedge_[b.value], l);
+    }
 }
 
 InsertOutcome Frontal::insert_rebay(std::uint32_t t, Side s) {
@@ -217,6 +256,7 @@ InsertOutcome Frontal::insert_checked(Vec2 x, std::uint32_t t) {
   const TriId tt = ins_.locate(x, TriId{t});
   if (!tt.valid()) return InsertOutcome::Outside;
   rule_.point_size = size_at_point(x, tt);
+  rule_.point_edge = vertex_interpolation(x, {m_.vertex(tt, 0), m_.vertex(tt, 1), m_.vertex(tt, 2)}, vedge_);
   return ins_.insert(x, tt, &rule_);
 }
 
@@ -249,6 +289,7 @@ void Frontal::run() {
       if (!evaluate({}, std::span<const VertexId>(verts.data() + i, std::min<std::size_t>(4096, verts.size() - i))))
         return finish();
   }
+  if (opt_.gmsh_rejection) init_edge_sizes();
   const std::vector<std::uint32_t> live = live_triangles();
   for (std::size_t i = 0; i < live.size(); i += 4096)
     if (!evaluate(std::span<const std::uint32_t>(live.data() + i, std::min<std::size_t>(4096, live.size() - i)), {}))
@@ -283,6 +324,10 @@ void Frontal::run() {
     inserted();
     grow_slots();
     const VertexId v = ins_.last_vertex();
+    if (opt_.gmsh_rejection) {
+      if (vedge_.size() <= v.value) vedge_.resize(v.value + 1, std::numeric_limits<double>::infinity());
+      vedge_[v.value] = vertex_interpolation(m_.pos(v), ins_.last_container(), vedge_);
+    }
     if (!evaluate(ins_.created(), std::span<const VertexId>(&v, 1))) break;
     classify(ins_.created());
     if (maybe_sort(new_slot, new_vertex)) {

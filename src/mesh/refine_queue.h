@@ -112,6 +112,9 @@ class RefineDriver {
   /// size) at p, with vertex_size_at the smaller of that and the scaled barycentric
   /// interpolation of t's vertex sizes (as inserted() carries them).
   double size_at_point(Vec2 p, TriId t);
+  /// The barycentric interpolation at p of the finite sizes `h` (per vertex) of the
+  /// triangle c's corners (inf when none is).
+  double vertex_interpolation(Vec2 p, const std::array<VertexId, 3>& c, const std::vector<double>& h) const;
   /// The live triangle slots, in order.
   std::vector<std::uint32_t> live_triangles() const;
   /// True, with the error recorded, when no vertex may be added any more.
@@ -145,9 +148,6 @@ class RefineDriver {
   bool size_new_vertices();
   /// The mean of the finite vertex sizes of t (inf when none is).
   double vertex_mean(TriId t) const;
-  /// The barycentric interpolation at p of the finite vertex sizes of the triangle c (inf
-  /// when none is).
-  double vertex_interpolation(Vec2 p, const std::array<VertexId, 3>& c) const;
 
   std::vector<double> vsize_at_;   // per vertex: RefineOptions::vertex_size_at
   std::vector<Vec2> vpts_;
