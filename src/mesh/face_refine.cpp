@@ -60,6 +60,7 @@ bool refine_in_plane(FaceWork& f, const std::function<void(std::span<const Vec2>
     ro.vertex_size_scale = plane_scale(f);
   }
   const bool frontal = f.opt.algorithm == Mesh2dAlgorithm::Frontal;
+  ro.gmsh_rejection = frontal && f.opt.gmsh_rejection;
   if (f.opt.radius_limit > 0)
     ro.radius_limit = f.opt.radius_limit;
   else if (!frontal)

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -20,13 +21,63 @@ namespace {
 // (without the test: 99.92%, 0.55); 0.5 gave 99.94%, 0.7 the same as 0.6.
 constexpr double kCrowded = 0.6;
 
+// ratio_ of a triangle whose point Gmsh's rule refused: never served again, and not
+// resolved either, so its neighbours' sides towards it are not on the front (Gmsh 4.8.4
+// gives it a radius of -1: Mesh/meshGFaceDelaunayInsertion.cpp in its source tree).
+constexpr float kAbandoned = -1.0f;
+
+// Gmsh 4.8.4's rule for a new point (RefineOptions::gmsh_rejection), asked by the
+// inserter once the cavity is known: each triangle (a, b, point) of the fan must keep the
+// point 0.5 L from a and b, 0.4 L from the line ab when both are boundary nodes, and its
+// angle at the point below acos(-0.9999); a cavity of one triangle is refused. L is the
+// smaller of the means over a, b and the point of the target sizes and of the edge sizes
+// (Gmsh's vSizes: on entry a vertex's shortest edge, at least half its boundary edges;
+// interpolated into the triangle that gets a new vertex). Distances in plain arithmetic:
+// they are size decisions.
+class GmshRule final : public CavityCheck {
+ public:
+  GmshRule(const TriangleStore& m, const std::vector<double>& vsize, const std::vector<double>& vedge,
+           std::uint32_t first_inner)
+      : m_(m), vsize_(vsize), vedge_(vedge), first_inner_(first_inner) {}
+  double point_size = 0, point_edge = 0;  // the point's sizes, set before each insertion
+  bool accept(Vec2 p, std::size_t triangles, std::span<const CavityEdge> boundary) override {
+    if (triangles == 1) return false;
+    for (const CavityEdge& e : boundary) {
+      const Vec2 a = m_.pos(e.a), b = m_.pos(e.b);
+      const double l = std::min(vsize_[e.a.value] + vsize_[e.b.value] + point_size,
+                                vedge_[e.a.value] + vedge_[e.b.value] + point_edge) /
+                       3;
+      const double d1 = norm(a - p), d2 = norm(b - p), d3 = norm(b - a);
+      if (d1 < 0.5 * l || d2 < 0.5 * l) return false;
+      if (e.a.value < first_inner_ && e.b.value < first_inner_ && std::abs(cross(b - a, p - a)) < 0.4 * l * d3)
+        return false;
+      if (d1 * d1 + d2 * d2 - d3 * d3 < -0.9999 * 2 * d1 * d2) return false;
+    }
+    return true;
+  }
+
+ private:
+  const TriangleStore& m_;
+  const std::vector<double>& vsize_;
+  const std::vector<double>& vedge_;
+  std::uint32_t first_inner_;  // vertices below it were present on entry: boundary nodes
+};
+
 class Frontal : detail::RefineDriver {
  public:
-  Frontal(TriangleStore& m, const RefineOptions& opt, FrontalResult& res) : RefineDriver(m, opt, res), fres_(res) {}
+  Frontal(TriangleStore& m, const RefineOptions& opt, FrontalResult& res)
+      : RefineDriver(m, opt, res), fres_(res), rule_(m, vsize_, vedge_, m.num_vertices()) {}
   void run();
 
  private:
-  bool resolved(std::uint32_t t) const { return ratio_[t] <= limit2_; }
+  bool resolved(std::uint32_t t) const { return ratio_[t] >= 0 && ratio_[t] <= limit2_; }
+  bool abandoned(std::uint32_t t) const { return ratio_[t] < 0; }
+  /// Rebay's point on each front side of t from s on, else t's circumcentre.
+  InsertOutcome insert_rebay(std::uint32_t t, Side s);
+  /// The same points under Gmsh's rule: Rejected as soon as it refuses one.
+  InsertOutcome insert_gmsh(std::uint32_t t, Side s);
+  /// x inserted from t under Gmsh's rule.
+  InsertOutcome insert_checked(Vec2 x, std::uint32_t t);
   /// The front side of unresolved t: a constrained or hull side, or one
   /// whose neighbour is resolved (first in side order); kNone if t is not
   /// on the front.
@@ -46,6 +97,8 @@ class Frontal : detail::RefineDriver {
   /// Classifies freshly sized triangles and queues those on the front.
   void classify(std::span<const std::uint32_t> tris);
   void grow_slots();
+  /// vedge_ of the vertices present on entry (GmshRule).
+  void init_edge_sizes();
   /// Moves the per-slot ratios and per-vertex sizes after sort_spatially.
   void renumber(const std::vector<std::uint32_t>& new_slot, const std::vector<std::uint32_t>& new_vertex);
 
@@ -53,6 +106,8 @@ class Frontal : detail::RefineDriver {
   double limit2_ = 0;
   std::vector<float> ratio_;   // per slot: R^2 / h^2
   std::vector<double> vsize_;  // per vertex: target size
+  std::vector<double> vedge_;  // per vertex, with gmsh_rejection: Gmsh's edge size (GmshRule)
+  GmshRule rule_;              // reads vsize_ and vedge_
 };
 
 bool Frontal::on_front(Side s) const {
@@ -98,7 +153,7 @@ void Frontal::wake_neighbours(std::uint32_t t) {
     const Side o = m_.twin[s.value];
     if (!o.valid()) continue;
     const std::uint32_t nt = o.value / 3;
-    if (!resolved(nt) && !queue_.queued(nt)) push(nt);
+    if (!resolved(nt) && !abandoned(nt) && !queue_.queued(nt)) push(nt);
   }
 }
 
@@ -139,6 +194,89 @@ void Frontal::renumber(const std::vector<std::uint32_t>& new_slot, const std::ve
   std::vector<double> vsize(vsize_.size());
   for (std::size_t v = 0; v < vsize_.size(); ++v) vsize[new_vertex[v]] = vsize_[v];
   vsize_.swap(vsize);
+  if (!vedge_.empty()) {
+    std::vector<double> vedge(vedge_.size());
+    for (std::size_t v = 0; v < vedge_.size(); ++v) vedge[new_vertex[v]] = vedge_[v];
+    vedge_.swap(vedge);
+  }
+}
+
+void Frontal::init_edge_sizes() {
+  vedge_.assign(m_.num_vertices(), std::numeric_limits<double>::infinity());
+  for (const std::uint32_t t : live_triangles())
+    for (std::uint32_t e = 0; e < 3; ++e) {
+      const Side s{3 * t + e};
+      const VertexId a = m_.org(s), b = m_.dest(s);
+      const double l = norm(m_.pos(b) - m_.pos(a));
+      vedge_[a.value] = std::min(vedge_[a.value], l);
+      vedge_[b.value] = std::min(vedge_[b.value], l);
+    }
+  // A short boundary edge does not make its ends' sizes smaller than half of it (as Gmsh
+  // keeps small curve edges from polluting the sizes).
+  for (const std::uint32_t t : live_triangles())
+    for (std::uint32_t e = 0; e < 3; ++e) {
+      const Side s{3 * t + e};
+      if (!m_.constrained(s) && m_.twin[s.value].valid()) continue;
+      const VertexId a = m_.org(s), b = m_.dest(s);
+      const double l = 0.5 * norm(m_.pos(b) - m_.pos(a));
+      vedge_[a.value] = std::max(vedge_[a.value], l);
+      vedge_[b.value] = std::max(vedge_[b.value], l);
+    }
+}
+
+InsertOutcome Frontal::insert_rebay(std::uint32_t t, Side s) {
+  InsertOutcome out = InsertOutcome::Outside;
+  // Rebay's point on each front side in turn (a side beside a constraint
+  // may put it beyond another one in a narrow passage). A point crowding
+  // a vertex means two fronts meet here: the circumcentre closes the gap
+  // better (it is what lifts the seams' worst rho from 0.27 to 0.63).
+  bool crowded = false;
+  for (std::uint32_t k = 0; k < 3 && out != InsertOutcome::Inserted && !crowded; ++k) {
+    const Side fs{3 * t + (s.value - 3 * t + k) % 3};
+    if (k > 0 && !on_front(fs)) continue;
+    const Vec2 x = frontal_point(fs);
+    // The point must be in t's circumcircle, or t would survive the
+    // insertion and come back forever.
+    if (incircle(m_.pos(m_.org(fs)), m_.pos(m_.dest(fs)), m_.pos(m_.apex(fs)), x, &res_.stats.predicates) !=
+        Sign::Positive)
+      continue;
+    if ((crowded = crowds_vertex(fs, x))) break;
+    out = ins_.insert_near(x, TriId{t});
+    if (out == InsertOutcome::Inserted) ++fres_.frontal_points;
+  }
+  if (out != InsertOutcome::Inserted) {
+    const TriId tt{t};
+    out = ins_.insert_near(circumcentre(m_.pos(m_.vertex(tt, 0)), m_.pos(m_.vertex(tt, 1)), m_.pos(m_.vertex(tt, 2))), tt);
+    if (out == InsertOutcome::Inserted) ++fres_.circumcentre_fallbacks;
+  }
+  return out;
+}
+
+InsertOutcome Frontal::insert_checked(Vec2 x, std::uint32_t t) {
+  const TriId tt = ins_.locate(x, TriId{t});
+  if (!tt.valid()) return InsertOutcome::Outside;
+  rule_.point_size = size_at_point(x, tt);
+  rule_.point_edge = vertex_interpolation(x, {m_.vertex(tt, 0), m_.vertex(tt, 1), m_.vertex(tt, 2)}, vedge_);
+  return ins_.insert(x, tt, &rule_);
+}
+
+InsertOutcome Frontal::insert_gmsh(std::uint32_t t, Side s) {
+  InsertOutcome out = InsertOutcome::Outside;
+  for (std::uint32_t k = 0; k < 3; ++k) {
+    const Side fs{3 * t + (s.value - 3 * t + k) % 3};
+    if (k > 0 && !on_front(fs)) continue;
+    const Vec2 x = frontal_point(fs);
+    if (incircle(m_.pos(m_.org(fs)), m_.pos(m_.dest(fs)), m_.pos(m_.apex(fs)), x, &res_.stats.predicates) !=
+        Sign::Positive)
+      continue;
+    out = insert_checked(x, t);
+    if (out == InsertOutcome::Inserted) ++fres_.frontal_points;
+    if (out == InsertOutcome::Inserted || out == InsertOutcome::Rejected) return out;
+  }
+  const TriId tt{t};
+  out = insert_checked(circumcentre(m_.pos(m_.vertex(tt, 0)), m_.pos(m_.vertex(tt, 1)), m_.pos(m_.vertex(tt, 2))), t);
+  if (out == InsertOutcome::Inserted) ++fres_.circumcentre_fallbacks;
+  return out;
 }
 
 void Frontal::run() {
@@ -151,6 +289,7 @@ void Frontal::run() {
       if (!evaluate({}, std::span<const VertexId>(verts.data() + i, std::min<std::size_t>(4096, verts.size() - i))))
         return finish();
   }
+  if (opt_.gmsh_rejection) init_edge_sizes();
   const std::vector<std::uint32_t> live = live_triangles();
   for (std::size_t i = 0; i < live.size(); i += 4096)
     if (!evaluate(std::span<const std::uint32_t>(live.data() + i, std::min<std::size_t>(4096, live.size() - i)), {}))
@@ -168,29 +307,12 @@ void Frontal::run() {
       continue;
     }
     if (at_vertex_limit()) break;
-    InsertOutcome out = InsertOutcome::Outside;
-    // Rebay's point on each front side in turn (a side beside a constraint
-    // may put it beyond another one in a narrow passage). A point crowding
-    // a vertex means two fronts meet here: the circumcentre closes the gap
-    // better (it is what lifts the seams' worst rho from 0.27 to 0.63).
-    bool crowded = false;
-    for (std::uint32_t k = 0; k < 3 && out != InsertOutcome::Inserted && !crowded; ++k) {
-      const Side fs{3 * t + (s.value - 3 * t + k) % 3};
-      if (k > 0 && !on_front(fs)) continue;
-      const Vec2 x = frontal_point(fs);
-      // The point must be in t's circumcircle, or t would survive the
-      // insertion and come back forever.
-      if (incircle(m_.pos(m_.org(fs)), m_.pos(m_.dest(fs)), m_.pos(m_.apex(fs)), x, &res_.stats.predicates) !=
-          Sign::Positive)
-        continue;
-      if ((crowded = crowds_vertex(fs, x))) break;
-      out = ins_.insert_near(x, TriId{t});
-      if (out == InsertOutcome::Inserted) ++fres_.frontal_points;
-    }
-    if (out != InsertOutcome::Inserted) {
-      const TriId tt{t};
-      out = ins_.insert_near(circumcentre(m_.pos(m_.vertex(tt, 0)), m_.pos(m_.vertex(tt, 1)), m_.pos(m_.vertex(tt, 2))), tt);
-      if (out == InsertOutcome::Inserted) ++fres_.circumcentre_fallbacks;
+    const InsertOutcome out = opt_.gmsh_rejection ? insert_gmsh(t, s) : insert_rebay(t, s);
+    if (out == InsertOutcome::Rejected) {
+      ++res_.stats.rejected;
+      ++fres_.gmsh_rejected;
+      ratio_[t] = kAbandoned;
+      continue;
     }
     if (out != InsertOutcome::Inserted) {
       ++res_.stats.rejected;
@@ -202,6 +324,10 @@ void Frontal::run() {
     inserted();
     grow_slots();
     const VertexId v = ins_.last_vertex();
+    if (opt_.gmsh_rejection) {
+      if (vedge_.size() <= v.value) vedge_.resize(v.value + 1, std::numeric_limits<double>::infinity());
+      vedge_[v.value] = vertex_interpolation(m_.pos(v), ins_.last_container(), vedge_);
+    }
     if (!evaluate(ins_.created(), std::span<const VertexId>(&v, 1))) break;
     classify(ins_.created());
     if (maybe_sort(new_slot, new_vertex)) {

@@ -15,6 +15,7 @@ struct FrontalResult : RefineResult {
   std::uint64_t frontal_points = 0;         // points placed by Rebay's rule
   std::uint64_t circumcentre_fallbacks = 0; // frontal point unusable, circumcentre inserted instead
   std::uint64_t given_up = 0;               // neither could be inserted: triangle accepted as resolved
+  std::uint64_t gmsh_rejected = 0;          // refused by Gmsh's rule (RefineOptions::gmsh_rejection): left as it is
 };
 
 /// Refines a constrained Delaunay triangulation of the domain (outside

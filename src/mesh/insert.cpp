@@ -34,7 +34,7 @@ TriId PointInserter::locate(Vec2 c, TriId hint) {
   return scan_for(w, c, hint);
 }
 
-InsertOutcome PointInserter::insert(Vec2 c, TriId t0) {
+InsertOutcome PointInserter::insert(Vec2 c, TriId t0, CavityCheck* check) {
   if (!std::isfinite(c.x) || !std::isfinite(c.y)) return InsertOutcome::Outside;
   const std::uint32_t nv = m_.num_vertices();
   for (std::uint32_t e = 0; e < 3; ++e)
@@ -102,6 +102,11 @@ InsertOutcome PointInserter::insert(Vec2 c, TriId t0) {
           bound_, [](VertexId v) { return v.value; }, std::size_t{m_.num_vertices()} + 1, vmap_,
           [this](std::size_t i, std::size_t j) { next_[i] = static_cast<std::uint32_t>(j); }))
     return InsertOutcome::NotVisible;
+  if (check) {
+    edges_.clear();
+    for (const Bound& bd : bound_) edges_.push_back({bd.a, bd.b});
+    if (!check->accept(c, cavity_.size(), edges_)) return InsertOutcome::Rejected;
+  }
   stats.cavity_triangles += cavity_.size();
   const VertexId v = m_.add_vertex(c);
   // Slots: the cavity's, then dead ones, then new ones (k = cavity + 2).

@@ -20,6 +20,22 @@ enum class InsertOutcome : std::uint8_t {
   Outside,     // beyond a constrained or hull edge from the start triangle
   Duplicate,   // equal to a corner of its triangle
   NotVisible,  // the cavity has an edge the point does not see strictly (on a constraint, say)
+  Rejected,    // refused by the caller's CavityCheck
+};
+
+/// An edge of a cavity's boundary, counter-clockwise around the cavity: the new point
+/// would make the triangle (a, b, point).
+struct CavityEdge {
+  VertexId a, b;
+};
+
+/// A caller's last word on an insertion, asked once the cavity is known and before the
+/// mesh changes (the frontal mesher's Gmsh rule, frontal.cpp).
+class CavityCheck {
+ public:
+  virtual ~CavityCheck() = default;
+  /// False refuses p, whose cavity has `triangles` triangles and is bounded by `boundary`.
+  virtual bool accept(Vec2 p, std::size_t triangles, std::span<const CavityEdge> boundary) = 0;
 };
 
 struct InsertStats {
@@ -44,8 +60,8 @@ class PointInserter {
   /// flags of the cavity boundary are kept; out_side is maintained (see
   /// keep_out_side). The
   /// mesh is unchanged unless the outcome is Inserted; a point that is not
-  /// finite is Outside.
-  InsertOutcome insert(Vec2 p, TriId t);
+  /// finite is Outside. A `check` that refuses the cavity makes it Rejected.
+  InsertOutcome insert(Vec2 p, TriId t, CavityCheck* check = nullptr);
 
   /// locate() then insert().
   InsertOutcome insert_near(Vec2 p, TriId hint) {
@@ -68,7 +84,7 @@ class PointInserter {
 
  private:
   struct Bound {
-    VertexId a, b;
+    VertexId a, b;  // first, as in CavityEdge (the boundary handed to a CavityCheck)
     Side outer;
     std::uint8_t flags;
   };
@@ -80,6 +96,7 @@ class PointInserter {
   std::size_t created_ = 0;
   std::vector<std::uint32_t> stack_, cavity_, vmap_, next_;
   std::vector<Bound> bound_;
+  std::vector<CavityEdge> edges_;  // bound_'s edges, for a CavityCheck
 };
 
 }  // namespace sm

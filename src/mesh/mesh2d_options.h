@@ -51,6 +51,10 @@ struct Mesh2dOptions {
   /// when the bounded work runs out, are reported in Mesh2dResult::quality_warnings.
   /// <= 0: off.
   double quality_floor = 0;
+  /// front2d refuses the points Gmsh 4.8.4 refuses (RefineOptions::gmsh_rejection): too
+  /// close to a node or to a boundary edge. On for flat models, where a script should get
+  /// Gmsh's triangle counts; off on the sphere, whose meshes it would coarsen near coasts.
+  bool gmsh_rejection = false;
   std::uint32_t max_vertices_per_face = 0xFFFFFFF0u;
   /// `BoundaryLayer Field = n;`: the layers built along their curves before the rest of
   /// each face is meshed (face_layer.h); null: none. A face with layers gets no quality

@@ -36,6 +36,14 @@ struct RefineOptions {
   /// A triangle is refined while circumradius / size exceeds this. For an
   /// equilateral triangle of side h, R / h = 1/sqrt(3) ~ 0.577.
   double radius_limit = 0.7071067811865476;
+  /// front2d only: Gmsh 4.8.4's rule for a new point (docs/kernel.md, Frontal-Delaunay):
+  /// refused when it would make a triangle (a, b, point) on its cavity's boundary with the
+  /// point closer than 0.5 L to a or b, closer than 0.4 L to the line ab when a and b were
+  /// both present on entry (boundary nodes), or an angle at the point above acos(-0.9999),
+  /// L the mean size of a, b and the point; or when its cavity is one triangle. The
+  /// triangle it was for is then left as it is, and its neighbours do not count it resolved.
+  /// For flat (Gmsh) models: it gives Gmsh's triangle counts.
+  bool gmsh_rejection = false;
   std::uint32_t max_vertices = 0xFFFFFFF0u;
   std::uint64_t seed = 0x2545F4914F6CDD1Dull;  // walk edge order
   /// Called every `progress_every` insertions with the live triangle count, on the

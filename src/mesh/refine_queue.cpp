@@ -120,6 +120,36 @@ double RefineDriver::vertex_mean(TriId t) const {
   return n ? sum / n : std::numeric_limits<double>::infinity();
 }
 
+double RefineDriver::vertex_interpolation(Vec2 p, const std::array<VertexId, 3>& c,
+                                          const std::vector<double>& hv) const {
+  const Vec2 a = m_.pos(c[0]), b = m_.pos(c[1]), d = m_.pos(c[2]);
+  const double area = (b.x - a.x) * (d.y - a.y) - (b.y - a.y) * (d.x - a.x);
+  double w[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
+  if (area > 0) {
+    w[0] = std::max(0.0, ((b.x - p.x) * (d.y - p.y) - (b.y - p.y) * (d.x - p.x)) / area);
+    w[1] = std::max(0.0, ((d.x - p.x) * (a.y - p.y) - (d.y - p.y) * (a.x - p.x)) / area);
+    w[2] = std::max(0.0, ((a.x - p.x) * (b.y - p.y) - (a.y - p.y) * (b.x - p.x)) / area);
+  }
+  double sum = 0, sum_w = 0;
+  for (int k = 0; k < 3; ++k) {
+    const double h = c[k].value < hv.size() ? hv[c[k].value] : std::numeric_limits<double>::infinity();
+    if (std::isfinite(h)) sum += w[k] * h, sum_w += w[k];
+  }
+  return sum_w > 0 ? sum / sum_w : std::numeric_limits<double>::infinity();
+}
+
+double RefineDriver::size_at_point(Vec2 p, TriId t) {
+  double h = opt_.size;
+  ++res_.stats.size_samples;
+  if (opt_.size_at) opt_.size_at(std::span<const Vec2>(&p, 1), std::span<double>(&h, 1));
+  if (opt_.vertex_size_at) {
+    double scale = 1;
+    if (opt_.vertex_size_scale) opt_.vertex_size_scale(std::span<const Vec2>(&p, 1), std::span<double>(&scale, 1));
+    h = std::min(h, scale * vertex_interpolation(p, {m_.vertex(t, 0), m_.vertex(t, 1), m_.vertex(t, 2)}, vsize_at_));
+  }
+  return h;
+}
+
 std::vector<std::uint32_t> RefineDriver::live_triangles() const {
   std::vector<std::uint32_t> live;
   live.reserve(m_.num_triangles());
@@ -138,22 +168,9 @@ void RefineDriver::inserted() {
   ++res_.stats.inserted;
   if (opt_.vertex_size_at) {
     const VertexId v = ins_.last_vertex();
-    const std::array<VertexId, 3>& c = ins_.last_container();
-    const Vec2 p = m_.pos(v), a = m_.pos(c[0]), b = m_.pos(c[1]), d = m_.pos(c[2]);
-    const double area = (b.x - a.x) * (d.y - a.y) - (b.y - a.y) * (d.x - a.x);
-    double w[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
-    if (area > 0) {
-      w[0] = std::max(0.0, ((b.x - p.x) * (d.y - p.y) - (b.y - p.y) * (d.x - p.x)) / area);
-      w[1] = std::max(0.0, ((d.x - p.x) * (a.y - p.y) - (d.y - p.y) * (a.x - p.x)) / area);
-      w[2] = std::max(0.0, ((a.x - p.x) * (b.y - p.y) - (a.y - p.y) * (b.x - p.x)) / area);
-    }
-    double sum = 0, sum_w = 0;
-    for (int k = 0; k < 3; ++k) {
-      const double h = c[k].value < vsize_at_.size() ? vsize_at_[c[k].value] : std::numeric_limits<double>::infinity();
-      if (std::isfinite(h)) sum += w[k] * h, sum_w += w[k];
-    }
+    const double h = vertex_interpolation(m_.pos(v), ins_.last_container(), vsize_at_);
     if (vsize_at_.size() <= v.value) vsize_at_.resize(v.value + 1, std::numeric_limits<double>::infinity());
-    vsize_at_[v.value] = sum_w > 0 ? sum / sum_w : std::numeric_limits<double>::infinity();
+    vsize_at_[v.value] = h;
   }
   queue_.grow(m_.num_slots());
   if (opt_.on_progress && res_.stats.inserted % std::max<std::uint64_t>(opt_.progress_every, 1) == 0)

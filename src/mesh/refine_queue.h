@@ -108,6 +108,13 @@ class RefineDriver {
   /// vertices `verts` (after them), from one size_at call. False, with the
   /// error recorded, when a size is not positive and finite.
   bool sample_sizes(std::span<const std::uint32_t> tris, std::span<const VertexId> verts = {});
+  /// The size at p, in triangle t, as a vertex inserted there would get it: size_at (or
+  /// size) at p, with vertex_size_at the smaller of that and the scaled barycentric
+  /// interpolation of t's vertex sizes (as inserted() carries them).
+  double size_at_point(Vec2 p, TriId t);
+  /// The barycentric interpolation at p of the finite sizes `h` (per vertex) of the
+  /// triangle c's corners (inf when none is).
+  double vertex_interpolation(Vec2 p, const std::array<VertexId, 3>& c, const std::vector<double>& h) const;
   /// The live triangle slots, in order.
   std::vector<std::uint32_t> live_triangles() const;
   /// True, with the error recorded, when no vertex may be added any more.

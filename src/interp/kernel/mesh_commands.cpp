@@ -262,6 +262,7 @@ MeshFailure mesh2d_options(Interpreter& in, const field::SizeField* background, 
   opt2.smoothing = static_cast<int>(in.options().number("Mesh.Smoothing"));
   opt2.quality_pass = in.options().number("Mesh.QualityPass") != 0;
   opt2.quality_floor = quality_floor_in_effect(in);
+  opt2.gmsh_rejection = gmsh_rejection_in_effect(k);
   opt2.max_elements = in.options().number("Mesh.MaxElements");
   // Threads for faces refined in parts: Mesh.MaxNumThreads2D, else General.NumThreads (0:
   // the hardware's). The mesh is the same for any count; meshadapt stays serial.

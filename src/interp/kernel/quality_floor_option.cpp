@@ -1,4 +1,5 @@
-// The one place that decides whether Mesh.QualityFloor's default applies to the model.
+// The one place that decides what the model's being on the sphere or flat changes in the
+// 2D mesher: Mesh.QualityFloor's default, and front2d's Gmsh rule.
 #include "interp/kernel/quality_floor_option.h"
 
 #include "interp/interpreter.h"
@@ -18,5 +19,7 @@ double quality_floor_in_effect(Interpreter& in) {
   if (in.options().was_set("Mesh.QualityFloor")) return floor;
   return model_on_sphere(in.kernel()) ? floor : 0.0;
 }
+
+bool gmsh_rejection_in_effect(const KernelState& k) { return !model_on_sphere(k); }
 
 }  // namespace sm::interp

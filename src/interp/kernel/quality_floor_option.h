@@ -1,5 +1,6 @@
-// Mesh.QualityFloor's value in effect: set where a script, the command line or the Python
-// module gives it, else its default on a model on the sphere and off on a flat model.
+// Mesh.QualityFloor's value in effect (set where a script, the command line or the Python
+// module gives it, else its default on a model on the sphere and off on a flat model), and
+// whether front2d applies Gmsh's rule for new points (on a flat model only).
 #pragma once
 
 namespace sm::interp {
@@ -16,5 +17,10 @@ bool model_on_sphere(const KernelState& k);
 /// on the sphere and 0 on a flat model: the floor splits curve edges, which Gmsh never does,
 /// so a flat Gmsh script gets Gmsh's curve meshes (docs/interpreter.md, Quality floor).
 double quality_floor_in_effect(Interpreter& in);
+
+/// Whether front2d refuses the points Gmsh 4.8.4 refuses (Mesh2dOptions::gmsh_rejection):
+/// on a flat model, so that a Gmsh script gets Gmsh's triangle counts; not on the sphere,
+/// whose ocean meshes keep the points (docs/kernel.md, Frontal-Delaunay).
+bool gmsh_rejection_in_effect(const KernelState& k);
 
 }  // namespace sm::interp

@@ -11,6 +11,8 @@ Printf("blossom-quality: %g triangles left", Mesh.NbTriangles);   // expect: blo
 Printf("%g quadrangles", Mesh.NbQuadrangles);   // expect: 123 quadrangles
 Mesh.RecombinationAlgorithm = 0;
 Mesh 2;
-Printf("simple: %g triangles left", Mesh.NbTriangles);   // expect: simple: 32 triangles left
-Printf("%g quadrangles", Mesh.NbQuadrangles);   // expect: 107 quadrangles
+// With Gmsh's rule for frontal points (docs/kernel.md) 28 and 109; before it 32 and 107;
+// gmsh 4.8.4 -2 leaves 30 triangles and 106 quadrangles.
+Printf("simple: %g triangles left", Mesh.NbTriangles);   // expect: simple: 28 triangles left
+Printf("%g quadrangles", Mesh.NbQuadrangles);   // expect: 109 quadrangles
 // compare_with_gmsh: skip
