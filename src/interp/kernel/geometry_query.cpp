@@ -98,7 +98,7 @@ std::vector<geo::DimTag> apply_transform(Interpreter& in, const Expr& x, const T
       break;
     case TransformKind::Rotate: {
       if (p.size() != 3)
-        in.fail_fmt(at, Diag::ListSizeMismatch, "Rotate needs {{{{ax, ay, az}}, {{px, py, pz}}, angle}}");
+        in.fail_fmt(at, Diag::ListSizeMismatch, "Rotate needs {{ax, ay, az}, {px, py, pz}, angle}");
       const Vec3 axis = vec3(sized(in, at, p[0], 3, "the Rotate axis"));
       const Vec3 point = vec3(sized(in, at, p[1], 3, "the Rotate point"));
       st = m.rotate(ents, axis, point, sized(in, at, p[2], 1, "the Rotate angle")[0]);
@@ -110,7 +110,7 @@ std::vector<geo::DimTag> apply_transform(Interpreter& in, const Expr& x, const T
       break;
     }
     case TransformKind::Dilate: {
-      if (p.size() != 2) in.fail_fmt(at, Diag::ListSizeMismatch, "Dilate needs {{{{cx, cy, cz}}, factor}}");
+      if (p.size() != 2) in.fail_fmt(at, Diag::ListSizeMismatch, "Dilate needs {{cx, cy, cz}, factor}");
       const Vec3 c = vec3(sized(in, at, p[0], 3, "the Dilate centre"));
       if (p[1].size() != 1 && p[1].size() != 3)
         in.fail_fmt(at, Diag::ListSizeMismatch,

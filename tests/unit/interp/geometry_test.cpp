@@ -84,3 +84,15 @@ TEST_CASE("geometry: the world_c script is one valid face on the PolarSphere, An
   }
   CHECK(points == 7156);   // 7,899 vertices less the 743 closing copies
 }
+
+// The transforms' argument messages show Gmsh's syntax once: the message is the format's
+// only argument, printed as it is, so its braces are not doubled.
+TEST_CASE("Rotate and Dilate with the wrong arguments name their syntax with single braces") {
+  const auto rot = run_script("Point(1) = {1, 0, 0};\nRotate{{0, 0, 1}, Pi / 2}{ Point{1}; }\n");
+  CHECK_FALSE(rot.ok);
+  CHECK(rot.rendered.find("Rotate needs {{ax, ay, az}, {px, py, pz}, angle}") != std::string::npos);
+  CHECK(rot.rendered.find("{{{{") == std::string::npos);
+  const auto dil = run_script("Point(1) = {1, 0, 0};\nDilate{{0, 0, 0}}{ Point{1}; }\n");
+  CHECK_FALSE(dil.ok);
+  CHECK(dil.rendered.find("Dilate needs {{cx, cy, cz}, factor}") != std::string::npos);
+}
