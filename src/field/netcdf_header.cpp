@@ -66,8 +66,9 @@ class HeaderCursor {
   std::uint64_t pos_ = 0;
 };
 
-// The walk stops at the first count that cannot fit (`refused`) or at a header libnetcdf
-// will refuse on its own (`done` without a reason): both end the check.
+// The walk stops at the first count that cannot fit or the end of the file inside the
+// header (`refused`), or at a header libnetcdf will refuse on its own (a non-empty list
+// with the wrong tag: `done` without a reason): each ends the check.
 struct Walk {
   HeaderCursor& in;
   int w;            // bytes of a count
@@ -80,6 +81,12 @@ struct Walk {
     done = true;
     return false;
   }
+  // The file ends inside the header. libnetcdf does not refuse such a header on its own:
+  // it reads a whole block and decodes past the end of the file, so a variable's rank
+  // there can ask for gigabytes (a fuzz finding: a 158-byte file, an 8 GB allocation).
+  bool cut(const std::string& inside) {
+    return stop(fmt::format("the header is cut short: the file ends inside {}", inside));
+  }
   // `count` items of at least `each` bytes must fit in what is left.
   bool fits(std::uint64_t count, std::uint64_t each, const std::string& what) {
     if (count <= in.left() / each) return true;
@@ -88,20 +95,20 @@ struct Walk {
   }
   bool name(const std::string& of) {
     std::uint64_t len = 0;
-    if (!in.uint(w, len)) return stop();
+    if (!in.uint(w, len)) return cut("the name of " + of);
     if (len > in.left())
       return stop(fmt::format("the header declares a name of {} bytes for {} but the file holds {} more bytes", len,
                               of, in.left()));
-    return in.skip(pad4(len)) || stop();
+    return in.skip(pad4(len)) || cut("the name of " + of);
   }
   bool known_type(std::uint64_t type, const std::string& of) {
     if (type >= 1 && type <= last_type(w)) return true;
     return stop(fmt::format("{} has type {}, not a type of this format (1 to {})", of, type, last_type(w)));
   }
   // A list's tag and count; false when it is absent (or the walk stopped).
-  bool list(std::uint32_t tag, std::uint64_t& count) {
+  bool list(std::uint32_t tag, std::uint64_t& count, const std::string& what) {
     std::uint64_t t = 0;
-    if (!in.uint(4, t) || !in.uint(w, count)) return stop();
+    if (!in.uint(4, t) || !in.uint(w, count)) return cut("the list of " + what);
     // libnetcdf reads an empty list whatever its tag says (a hostile tag with count 0 is
     // not refused), and refuses a non-empty one whose tag is wrong.
     if (count == 0) return false;
@@ -110,45 +117,49 @@ struct Walk {
   }
   bool attributes(const std::string& of) {
     std::uint64_t n = 0;
-    if (!list(kTagAttribute, n)) return !done;
+    if (!list(kTagAttribute, n, "attributes of " + of)) return !done;
     if (!fits(n, 2 * static_cast<std::uint64_t>(w) + 4, "attributes of " + of)) return false;
     for (std::uint64_t a = 0; a < n; ++a) {
       const std::string what = fmt::format("attribute {} of {}", a, of);
       std::uint64_t type = 0, values = 0;
-      if (!name(what) || !in.uint(4, type) || !in.uint(w, values)) return stop(refused);
+      if (!name(what)) return false;
+      if (!in.uint(4, type) || !in.uint(w, values)) return cut(what);
       if (!known_type(type, what)) return false;
       const std::uint64_t each = value_bytes(type);
       if (!fits(values, each, "values in " + what)) return false;
-      if (!in.skip(pad4(values * each))) return stop();
+      if (!in.skip(pad4(values * each))) return cut("the values of " + what);
     }
     return true;
   }
   bool run() {
     std::uint64_t numrecs = 0, n = 0;
-    if (!in.uint(w, numrecs)) return stop();
-    if (list(kTagDimension, n)) {
+    if (!in.uint(w, numrecs)) return cut("the record count");
+    if (list(kTagDimension, n, "dimensions")) {
       if (!fits(n, 2 * static_cast<std::uint64_t>(w), "dimensions")) return false;
       for (std::uint64_t d = 0; d < n; ++d) {
         std::uint64_t len = 0;
-        if (!name(fmt::format("dimension {}", d)) || !in.uint(w, len)) return stop(refused);
+        const std::string what = fmt::format("dimension {}", d);
+        if (!name(what)) return false;
+        if (!in.uint(w, len)) return cut(what);
       }
     } else if (done) {
       return false;
     }
     if (!attributes("the file")) return false;
-    if (list(kTagVariable, n)) {
+    if (list(kTagVariable, n, "variables")) {
       const std::uint64_t ww = static_cast<std::uint64_t>(w);
       if (!fits(n, 4 * ww + 8 + static_cast<std::uint64_t>(begin_bytes), "variables")) return false;
       for (std::uint64_t v = 0; v < n; ++v) {
         const std::string what = fmt::format("variable {}", v);
         std::uint64_t ndims = 0, type = 0, vsize = 0, begin = 0;
-        if (!name(what) || !in.uint(w, ndims)) return stop(refused);
+        if (!name(what)) return false;
+        if (!in.uint(w, ndims)) return cut(what);
         if (!fits(ndims, ww, "dimension ids of " + what)) return false;
-        if (!in.skip(ndims * ww)) return stop();
+        if (!in.skip(ndims * ww)) return cut("the dimension ids of " + what);
         if (!attributes(what)) return false;
-        if (!in.uint(4, type)) return stop();
+        if (!in.uint(4, type)) return cut(what);
         if (!known_type(type, what)) return false;
-        if (!in.uint(w, vsize) || !in.uint(begin_bytes, begin)) return stop();
+        if (!in.uint(w, vsize) || !in.uint(begin_bytes, begin)) return cut(what);
       }
     }
     return !done;

@@ -15,9 +15,10 @@ namespace sm::field {
 /// declared count times the fewest bytes one item takes, or an attribute's values,
 /// exceed the bytes left in the file. Returns the reason, or nullopt when every count
 /// fits. A variable or attribute type outside the format's types is refused too
-/// (libnetcdf 4.9 divides by zero on NC_STRING in a CDF-5 header). Files that are not
-/// classic netCDF (HDF5-based netCDF-4, anything else) and headers libnetcdf refuses on
-/// its own (unknown list tags, a header cut short) are left to nc_open.
+/// (libnetcdf 4.9 divides by zero on NC_STRING in a CDF-5 header), and so is a header
+/// the file ends inside (libnetcdf decodes past the end). Files that are not classic
+/// netCDF (HDF5-based netCDF-4, anything else) and headers libnetcdf refuses on its own
+/// (a non-empty list with the wrong tag) are left to nc_open.
 std::optional<std::string> check_netcdf_header_counts(const std::filesystem::path& file);
 
 }  // namespace sm::field

@@ -147,3 +147,12 @@ TEST_CASE("netcdf header: the sound test grids and fuzz seeds pass the walk") {
     CHECK_FALSE(check_netcdf_header_counts(std::string(SM_TEST_DATA) + f).has_value());
   }
 }
+
+TEST_CASE("netcdf header: a header the file ends inside is refused (libnetcdf decodes past the end)") {
+  // The fuzz finding: 158 bytes whose third list's first variable name runs to the end of
+  // the file; nc_open then read a rank from beyond it and asked for 8 GB.
+  const auto why = check_netcdf_header_counts(std::string(SM_TEST_DATA) +
+                                              "/../fuzz/crashes_netcdf/header_cut_inside_variable_rank.nc");
+  REQUIRE(why.has_value());
+  CHECK(*why == "the header is cut short: the file ends inside variable 0");
+}
