@@ -73,6 +73,9 @@ class Frontal : detail::RefineDriver {
   bool resolved(std::uint32_t t) const { return ratio_[t] >= 0 && ratio_[t] <= limit2_; }
   bool abandoned(std::uint32_t t) const { return ratio_[t] < 0; }
   /// Rebay's point on each front side of t from s on, else t's circumcentre.
+  // The k-th side of t from s (s itself, then the others only on the front) and its
+  // Rebay point, when that point lies in t's circumcircle.
+  bool front_candidate(std::uint32_t t, Side s, std::uint32_t k, Side& fs, Vec2& x);
   InsertOutcome insert_rebay(std::uint32_t t, Side s);
   /// The same points under Gmsh's rule: Rejected as soon as it refuses one.
   InsertOutcome insert_gmsh(std::uint32_t t, Side s);
@@ -224,6 +227,16 @@ void Frontal::init_edge_sizes() {
     }
 }
 
+bool Frontal::front_candidate(std::uint32_t t, Side s, std::uint32_t k, Side& fs, Vec2& x) {
+  fs = Side{3 * t + (s.value - 3 * t + k) % 3};
+  if (k > 0 && !on_front(fs)) return false;
+  x = frontal_point(fs);
+  // The point must be in t's circumcircle, or t would survive the insertion and come
+  // back forever.
+  return incircle(m_.pos(m_.org(fs)), m_.pos(m_.dest(fs)), m_.pos(m_.apex(fs)), x, &res_.stats.predicates) ==
+         Sign::Positive;
+}
+
 InsertOutcome Frontal::insert_rebay(std::uint32_t t, Side s) {
   InsertOutcome out = InsertOutcome::Outside;
   // Rebay's point on each front side in turn (a side beside a constraint
@@ -232,14 +245,9 @@ InsertOutcome Frontal::insert_rebay(std::uint32_t t, Side s) {
   // better (it is what lifts the seams' worst rho from 0.27 to 0.63).
   bool crowded = false;
   for (std::uint32_t k = 0; k < 3 && out != InsertOutcome::Inserted && !crowded; ++k) {
-    const Side fs{3 * t + (s.value - 3 * t + k) % 3};
-    if (k > 0 && !on_front(fs)) continue;
-    const Vec2 x = frontal_point(fs);
-    // The point must be in t's circumcircle, or t would survive the
-    // insertion and come back forever.
-    if (incircle(m_.pos(m_.org(fs)), m_.pos(m_.dest(fs)), m_.pos(m_.apex(fs)), x, &res_.stats.predicates) !=
-        Sign::Positive)
-      continue;
+    Side fs{};
+    Vec2 x{};
+    if (!front_candidate(t, s, k, fs, x)) continue;
     if ((crowded = crowds_vertex(fs, x))) break;
     out = ins_.insert_near(x, TriId{t});
     if (out == InsertOutcome::Inserted) ++fres_.frontal_points;
@@ -263,12 +271,9 @@ InsertOutcome Frontal::insert_checked(Vec2 x, std::uint32_t t) {
 InsertOutcome Frontal::insert_gmsh(std::uint32_t t, Side s) {
   InsertOutcome out = InsertOutcome::Outside;
   for (std::uint32_t k = 0; k < 3; ++k) {
-    const Side fs{3 * t + (s.value - 3 * t + k) % 3};
-    if (k > 0 && !on_front(fs)) continue;
-    const Vec2 x = frontal_point(fs);
-    if (incircle(m_.pos(m_.org(fs)), m_.pos(m_.dest(fs)), m_.pos(m_.apex(fs)), x, &res_.stats.predicates) !=
-        Sign::Positive)
-      continue;
+    Side fs{};
+    Vec2 x{};
+    if (!front_candidate(t, s, k, fs, x)) continue;
     out = insert_checked(x, t);
     if (out == InsertOutcome::Inserted) ++fres_.frontal_points;
     if (out == InsertOutcome::Inserted || out == InsertOutcome::Rejected) return out;
