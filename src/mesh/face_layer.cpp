@@ -281,21 +281,55 @@ class OverlapGrid {
   std::vector<std::vector<Item>> cells_;
 };
 
-}  // namespace
+// Slit s joined into the first ring that holds one of its end nodes: from that node out
+// along the slit to its tip and back, then on as before. False when no ring holds either.
+bool join_slit(std::vector<Ring>& rings, const FaceChain& s) {
+  for (int end = 0; end < 2; ++end) {
+    std::vector<std::uint32_t> nodes = s.nodes;
+    std::vector<int> curves = s.edge_curve;
+    if (end == 1) {
+      std::reverse(nodes.begin(), nodes.end());
+      std::reverse(curves.begin(), curves.end());
+    }
+    for (Ring& g : rings) {
+      const auto pos = std::find(g.r.begin(), g.r.end(), nodes.front());
+      if (pos == g.r.end()) continue;
+      const std::size_t i = static_cast<std::size_t>(pos - g.r.begin());
+      // r[i], out along the slit to its end and back to r[i], then on as before.
+      // Each walk node with the curve of the edge leaving it: out along curves[m], the
+      // tip back along its last edge, back along curves[m - 1], and r[i] again onward
+      // along the ring's old edge i.
+      const std::size_t last = nodes.size() - 1;
+      std::vector<std::uint32_t> walk;
+      std::vector<int> wc;
+      for (std::size_t m = 1; m < last; ++m) walk.push_back(nodes[m]), wc.push_back(curves[m]);
+      walk.push_back(nodes[last]), wc.push_back(curves[last - 1]);
+      for (std::size_t m = last; m-- > 1;) walk.push_back(nodes[m]), wc.push_back(curves[m - 1]);
+      walk.push_back(nodes[0]), wc.push_back(g.ec[i]);
+      g.ec[i] = curves.front();
+      g.r.insert(g.r.begin() + static_cast<std::ptrdiff_t>(i + 1), walk.begin(), walk.end());
+      g.ec.insert(g.ec.begin() + static_cast<std::ptrdiff_t>(i + 1), wc.begin(), wc.end());
+      return true;
+    }
+  }
+  return false;
+}
 
-bool build_boundary_layers(FaceWork& f) {
-  if (!f.opt.boundary_layers || f.opt.boundary_layers->empty() || f.estimate_only) return true;
-  LayerBuild b{f, {}, {}};
-  bool any = false;
-  for (const FaceChain& ch : f.chains)
-    for (int c : ch.edge_curve) any = any || b.field_of(c);
-  for (const FaceChain& ch : f.emb_curves)
-    for (int c : ch.edge_curve) any = any || b.field_of(c);
-  if (!any) return true;
-  for (const auto& [vt, node] : f.mesh.vertex_node) b.vertex_of.emplace(node, vt);
+// A slit touching no ring: a ring of its own, walked out and back.
+Ring slit_ring(const FaceChain& s) {
+  Ring g;
+  for (std::size_t k = 0; k < s.nodes.size(); ++k) g.r.push_back(s.nodes[k]);
+  for (std::size_t k = 0; k + 1 < s.nodes.size(); ++k) g.ec.push_back(s.edge_curve[k]);
+  for (std::size_t k = s.nodes.size() - 1; k-- > 1;) g.r.push_back(s.nodes[k]);
+  for (std::size_t k = s.nodes.size() - 1; k-- > 0;) g.ec.push_back(s.edge_curve[k]);
+  return g;
+}
 
-  // The rings: the loops with the face on their left, then the embedded layer curves as
-  // slits, joined to a ring at an end node they share with it (else rings of their own).
+// The rings: the loops with the face on their left, then the embedded layer curves as
+// slits, joined to a ring at an end node they share with it (else rings of their own).
+// The embedded curves without layers are handed back in `plain_embedded`.
+std::vector<Ring> layer_rings(LayerBuild& b, std::vector<FaceChain>& plain_embedded) {
+  FaceWork& f = b.f;
   std::vector<Ring> rings;
   for (std::size_t ci = 0; ci < f.chains.size(); ++ci) {
     Ring g{f.chains[ci].nodes, f.chains[ci].edge_curve};
@@ -303,55 +337,19 @@ bool build_boundary_layers(FaceWork& f) {
     if (ccw != (ci == 0)) reverse_ring(g);
     rings.push_back(std::move(g));
   }
-  std::vector<FaceChain> plain_embedded;
   std::vector<FaceChain> slits;
   for (FaceChain& ch : f.emb_curves) {
     bool layered = false;
     for (int c : ch.edge_curve) layered = layered || b.field_of(c);
     (layered ? slits : plain_embedded).push_back(std::move(ch));
   }
-  f.emb_curves.clear();  // given back below: the plain ones, and slit edges left bare
-  for (const FaceChain& s : slits) {
-    bool joined = false;
-    for (int end = 0; end < 2 && !joined; ++end) {
-      std::vector<std::uint32_t> nodes = s.nodes;
-      std::vector<int> curves = s.edge_curve;
-      if (end == 1) {
-        std::reverse(nodes.begin(), nodes.end());
-        std::reverse(curves.begin(), curves.end());
-      }
-      for (Ring& g : rings) {
-        const auto pos = std::find(g.r.begin(), g.r.end(), nodes.front());
-        if (pos == g.r.end()) continue;
-        const std::size_t i = static_cast<std::size_t>(pos - g.r.begin());
-        // r[i], out along the slit to its end and back to r[i], then on as before.
-        // Each walk node with the curve of the edge leaving it: out along curves[m], the
-        // tip back along its last edge, back along curves[m - 1], and r[i] again onward
-        // along the ring's old edge i.
-        const std::size_t last = nodes.size() - 1;
-        std::vector<std::uint32_t> walk;
-        std::vector<int> wc;
-        for (std::size_t m = 1; m < last; ++m) walk.push_back(nodes[m]), wc.push_back(curves[m]);
-        walk.push_back(nodes[last]), wc.push_back(curves[last - 1]);
-        for (std::size_t m = last; m-- > 1;) walk.push_back(nodes[m]), wc.push_back(curves[m - 1]);
-        walk.push_back(nodes[0]), wc.push_back(g.ec[i]);
-        g.ec[i] = curves.front();
-        g.r.insert(g.r.begin() + static_cast<std::ptrdiff_t>(i + 1), walk.begin(), walk.end());
-        g.ec.insert(g.ec.begin() + static_cast<std::ptrdiff_t>(i + 1), wc.begin(), wc.end());
-        joined = true;
-        break;
-      }
-    }
-    if (!joined) {
-      Ring g;
-      for (std::size_t k = 0; k < s.nodes.size(); ++k) g.r.push_back(s.nodes[k]);
-      for (std::size_t k = 0; k + 1 < s.nodes.size(); ++k) g.ec.push_back(s.edge_curve[k]);
-      for (std::size_t k = s.nodes.size() - 1; k-- > 1;) g.r.push_back(s.nodes[k]);
-      for (std::size_t k = s.nodes.size() - 1; k-- > 0;) g.ec.push_back(s.edge_curve[k]);
-      rings.push_back(std::move(g));
-    }
-  }
+  f.emb_curves.clear();  // given back later: the plain ones, and slit edges left bare
+  for (const FaceChain& s : slits)
+    if (!join_slit(rings, s)) rings.push_back(slit_ring(s));
+  return rings;
+}
 
+DirectedEdges boundary_edges(const std::vector<Ring>& rings) {
   DirectedEdges de;
   for (const Ring& g : rings)
     for (std::size_t k = 0; k < g.r.size(); ++k) {
@@ -359,95 +357,110 @@ bool build_boundary_layers(FaceWork& f) {
       de.add(a, c);
       de.curve[{a, c}] = g.ec[k];
     }
+  return de;
+}
 
-  // The elements with their layer (1 at the wall) and their column (those of one edge,
-  // or of one slot of a fan), as Gmsh numbers them for its overlap filter.
+// The elements with their layer (1 at the wall) and their column (those of one edge,
+// or of one slot of a fan), as Gmsh numbers them for its overlap filter.
+struct LayerElements {
+  const LayerBuild& b;
   std::vector<LayerElement> els;
   int column_id = 0;
-  auto element = [&](std::array<std::uint32_t, 4> v, int nv, int layer, const BoundaryLayerParams& p) {
+  void add(std::array<std::uint32_t, 4> v, int nv, int layer, const BoundaryLayerParams& p) {
     if (orient2d(b.xy(v[0]), b.xy(v[1]), b.xy(v[2])) == Sign::Negative) std::swap(v[1], v[static_cast<std::size_t>(nv - 1)]);
     els.push_back({v, nv, layer, column_id, p.quads});
-  };
+  }
+};
 
-  for (const Ring& g : rings) {
-    const std::size_t n = g.r.size();
-    std::vector<std::vector<Column>> cols(n);
-    std::vector<bool> fan_at(n, false);
-    for (std::size_t k = 0; k < n; ++k) {
-      const int cp = g.ec[(k + n - 1) % n], cn = g.ec[k];
-      const BoundaryLayerParams* fp = b.field_of(cp);
-      const BoundaryLayerParams* fn = b.field_of(cn);
-      if (!fp && !fn) continue;
-      const std::uint32_t v = g.r[k];
-      if (fp && fn) {
-        const Vec2 pv = b.xy(v), pp = b.xy(g.r[(k + n - 1) % n]), pn = b.xy(g.r[(k + 1) % n]);
-        const Vec2 dp = unit(pv - pp), dn = unit(pn - pv);
-        const Vec2 np = left_of(dp), nn = left_of(dn);
-        const Sign turn = orient2d(pp, pv, pn);
-        // Away from the face: a right turn, or a U-turn (a slit's tip).
-        const bool uturn = turn == Sign::Zero && dot(dp, dn) < 0;
-        const bool reflex = turn == Sign::Negative || uturn;
-        const auto vt = b.vertex_of.find(v);
-        const bool fan = reflex && vt != b.vertex_of.end() && fn->is_fan_point(vt->second);
-        if (fan || uturn) {
-          // The turn from np clockwise to nn, in (0, pi].
-          double theta = uturn ? std::numbers::pi : -std::atan2(cross(dp, dn), dot(dp, dn));
-          theta = std::clamp(theta, 0.0, std::numbers::pi);
-          const int size = fan ? fn->fan_size(vt->second, f.opt.boundary_layer_fan_elements) : 0;
-          const int extra = std::clamp(static_cast<int>(theta / std::numbers::pi * size + 0.5), 0, 1000);
-          for (int j = 0; j <= extra + 1; ++j)
-            cols[k].push_back(b.column(*fn, v, cn, unit(rotate_cw(np, theta * j / (extra + 1)))));
-          // Without a fan (extra = 0), Gmsh's tip keeps its two columns and nothing between.
-          fan_at[k] = fan;
-        } else {
-          Vec2 d = unit(np + nn);
-          if (d.x == 0 && d.y == 0) d = np;
-          cols[k].push_back(b.column(*fn, v, cn, d));
-        }
-      } else if (fp) {
-        cols[k].push_back(end_column(g, k, +1));
+// The columns at each place k of ring g: one along the bisector, a fan at a fan point or
+// a slit's tip, or the end column where the layer stops; `fan_at[k]` marks the fans.
+std::vector<std::vector<Column>> ring_columns(LayerBuild& b, const Ring& g, std::vector<bool>& fan_at) {
+  const FaceWork& f = b.f;
+  const std::size_t n = g.r.size();
+  std::vector<std::vector<Column>> cols(n);
+  fan_at.assign(n, false);
+  for (std::size_t k = 0; k < n; ++k) {
+    const int cp = g.ec[(k + n - 1) % n], cn = g.ec[k];
+    const BoundaryLayerParams* fp = b.field_of(cp);
+    const BoundaryLayerParams* fn = b.field_of(cn);
+    if (!fp && !fn) continue;
+    const std::uint32_t v = g.r[k];
+    if (fp && fn) {
+      const Vec2 pv = b.xy(v), pp = b.xy(g.r[(k + n - 1) % n]), pn = b.xy(g.r[(k + 1) % n]);
+      const Vec2 dp = unit(pv - pp), dn = unit(pn - pv);
+      const Vec2 np = left_of(dp), nn = left_of(dn);
+      const Sign turn = orient2d(pp, pv, pn);
+      // Away from the face: a right turn, or a U-turn (a slit's tip).
+      const bool uturn = turn == Sign::Zero && dot(dp, dn) < 0;
+      const bool reflex = turn == Sign::Negative || uturn;
+      const auto vt = b.vertex_of.find(v);
+      const bool fan = reflex && vt != b.vertex_of.end() && fn->is_fan_point(vt->second);
+      if (fan || uturn) {
+        // The turn from np clockwise to nn, in (0, pi].
+        double theta = uturn ? std::numbers::pi : -std::atan2(cross(dp, dn), dot(dp, dn));
+        theta = std::clamp(theta, 0.0, std::numbers::pi);
+        const int size = fan ? fn->fan_size(vt->second, f.opt.boundary_layer_fan_elements) : 0;
+        const int extra = std::clamp(static_cast<int>(theta / std::numbers::pi * size + 0.5), 0, 1000);
+        for (int j = 0; j <= extra + 1; ++j)
+          cols[k].push_back(b.column(*fn, v, cn, unit(rotate_cw(np, theta * j / (extra + 1)))));
+        // Without a fan (extra = 0), Gmsh's tip keeps its two columns and nothing between.
+        fan_at[k] = fan;
       } else {
-        cols[k].push_back(end_column(g, k, -1));
+        Vec2 d = unit(np + nn);
+        if (d.x == 0 && d.y == 0) d = np;
+        cols[k].push_back(b.column(*fn, v, cn, d));
       }
-    }
-    // The elements of each layer edge, then of each fan.
-    for (std::size_t k = 0; k < n; ++k) {
-      const BoundaryLayerParams* fl = b.field_of(g.ec[k]);
-      if (!fl) continue;
-      const std::size_t k1 = (k + 1) % n;
-      const Column& c1 = cols[k].back();
-      const Column& c2 = cols[k1].front();
-      const std::size_t N = std::min(c1.size(), c2.size());
-      if (N == 0) continue;
-      for (std::size_t l = 0; l < N; ++l) {
-        const std::uint32_t v11 = l == 0 ? g.r[k] : c1[l - 1], v12 = l == 0 ? g.r[k1] : c2[l - 1];
-        element({v11, v12, c2[l], c1[l]}, 4, static_cast<int>(l + 1), *fl);
-      }
-      if (c1.size() != c2.size())
-        element({c1[N - 1], c2[N - 1], c1.size() > c2.size() ? c1[N] : c2[N], 0}, 3, static_cast<int>(N + 1), *fl);
-      ++column_id;
-    }
-    for (std::size_t k = 0; k < n; ++k) {
-      const BoundaryLayerParams* fl = b.field_of(g.ec[k]);
-      for (std::size_t i = 0; fl && fan_at[k] && i + 1 < cols[k].size(); ++i) {
-        const Column& c1 = cols[k][i];
-        const Column& c2 = cols[k][i + 1];
-        const std::size_t N = std::min(c1.size(), c2.size());
-        for (std::size_t l = 0; l < N; ++l) {
-          if (l == 0)
-            element({g.r[k], c2[0], c1[0], 0}, 3, 1, *fl);
-          else
-            element({c1[l - 1], c2[l - 1], c2[l], c1[l]}, 4, static_cast<int>(l + 1), *fl);
-        }
-        ++column_id;
-      }
+    } else if (fp) {
+      cols[k].push_back(end_column(g, k, +1));
+    } else {
+      cols[k].push_back(end_column(g, k, -1));
     }
   }
+  return cols;
+}
 
-  // Gmsh's filter (Mesh/filterElements.cpp there): layer by layer, an element whose
-  // edges cross the face's boundary or an element kept before (not of its own column)
-  // is dropped, and each column ends below its first dropped element (its first
-  // element stays all the same).
+// The elements of each layer edge of ring g, then of each fan.
+void ring_elements(const LayerBuild& b, const Ring& g, const std::vector<std::vector<Column>>& cols,
+                   const std::vector<bool>& fan_at, LayerElements& out) {
+  const std::size_t n = g.r.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const BoundaryLayerParams* fl = b.field_of(g.ec[k]);
+    if (!fl) continue;
+    const std::size_t k1 = (k + 1) % n;
+    const Column& c1 = cols[k].back();
+    const Column& c2 = cols[k1].front();
+    const std::size_t N = std::min(c1.size(), c2.size());
+    if (N == 0) continue;
+    for (std::size_t l = 0; l < N; ++l) {
+      const std::uint32_t v11 = l == 0 ? g.r[k] : c1[l - 1], v12 = l == 0 ? g.r[k1] : c2[l - 1];
+      out.add({v11, v12, c2[l], c1[l]}, 4, static_cast<int>(l + 1), *fl);
+    }
+    if (c1.size() != c2.size())
+      out.add({c1[N - 1], c2[N - 1], c1.size() > c2.size() ? c1[N] : c2[N], 0}, 3, static_cast<int>(N + 1), *fl);
+    ++out.column_id;
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    const BoundaryLayerParams* fl = b.field_of(g.ec[k]);
+    for (std::size_t i = 0; fl && fan_at[k] && i + 1 < cols[k].size(); ++i) {
+      const Column& c1 = cols[k][i];
+      const Column& c2 = cols[k][i + 1];
+      const std::size_t N = std::min(c1.size(), c2.size());
+      for (std::size_t l = 0; l < N; ++l) {
+        if (l == 0)
+          out.add({g.r[k], c2[0], c1[0], 0}, 3, 1, *fl);
+        else
+          out.add({c1[l - 1], c2[l - 1], c2[l], c1[l]}, 4, static_cast<int>(l + 1), *fl);
+      }
+      ++out.column_id;
+    }
+  }
+}
+
+// Gmsh's filter (Mesh/filterElements.cpp there): layer by layer, an element whose
+// edges cross the face's boundary or an element kept before (not of its own column)
+// is dropped, and each column ends below its first dropped element (its first
+// element stays all the same).
+std::vector<bool> kept_elements(const LayerBuild& b, const std::vector<LayerElement>& els, const DirectedEdges& de) {
   std::vector<std::pair<Vec2, Vec2>> lines;
   for (const auto& [e, cnt] : de.count) lines.push_back({b.xy(e.first), b.xy(e.second)});
   std::vector<std::size_t> order(els.size());
@@ -464,18 +477,24 @@ bool build_boundary_layers(FaceWork& f) {
     }
   }
   std::vector<bool> keep(els.size(), false);
-  {
-    std::map<int, std::vector<std::size_t>> by_column;
-    for (std::size_t i = 0; i < els.size(); ++i) by_column[els[i].column].push_back(i);
-    for (const auto& [col, members] : by_column) {
-      for (std::size_t j = 0; j < members.size(); ++j) {
-        if (dropped[members[j]] && j > 0) break;
-        keep[members[j]] = true;
-        if (dropped[members[j]]) break;
-      }
+  std::map<int, std::vector<std::size_t>> by_column;
+  for (std::size_t i = 0; i < els.size(); ++i) by_column[els[i].column].push_back(i);
+  for (const auto& [col, members] : by_column) {
+    for (std::size_t j = 0; j < members.size(); ++j) {
+      if (dropped[members[j]] && j > 0) break;
+      keep[members[j]] = true;
+      if (dropped[members[j]]) break;
     }
   }
-  // The kept elements' pending points made nodes, in the order they are met.
+  return keep;
+}
+
+// The kept elements into the face: their pending points made nodes in the order they are
+// met, quadrangles kept or split along their shorter diagonal; every edge of every
+// element cancels against the boundary and its neighbours in `de`.
+void emit_layer_elements(LayerBuild& b, const std::vector<LayerElement>& els, const std::vector<bool>& keep,
+                         DirectedEdges& de) {
+  FaceWork& f = b.f;
   std::vector<std::uint32_t> made(b.pending.size(), kNoLocal);
   auto node_of = [&](std::uint32_t v) {
     if (!(v & kPending)) return v;
@@ -487,8 +506,6 @@ bool build_boundary_layers(FaceWork& f) {
     }
     return m;
   };
-  // The elements: quadrangles kept or split along their shorter diagonal; every edge
-  // of every element cancels against the boundary and its neighbours.
   const bool recombined = f.recombined();
   for (std::size_t i = 0; i < els.size(); ++i) {
     if (!keep[i]) continue;
@@ -511,9 +528,13 @@ bool build_boundary_layers(FaceWork& f) {
       }
     }
   }
+}
 
-  // What is left: edges walked both ways become embedded edges (a slit without layers),
-  // the rest is chained into the loops of the rest of the face.
+// What is left of the face's boundary after the layers: edges walked both ways become
+// embedded edges (a slit without layers), the rest is chained into the loops of the rest
+// of the face, the outer one (the largest area) first.
+bool rest_of_face(LayerBuild& b, const DirectedEdges& de, std::vector<FaceChain>& plain_embedded) {
+  FaceWork& f = b.f;
   std::map<std::uint32_t, std::vector<std::uint32_t>> out;
   for (const auto& [e, cnt] : de.count) {
     const auto back = de.count.find({e.second, e.first});
@@ -552,7 +573,6 @@ bool build_boundary_layers(FaceWork& f) {
                     f.mesh.nodes[start].xyz);
     loops.push_back(std::move(ch));
   }
-  // The outer loop first: the one enclosing the largest area.
   auto area = [&](const FaceChain& ch) {
     double a = 0;
     for (std::size_t i = 0; i < ch.nodes.size(); ++i)
@@ -566,6 +586,33 @@ bool build_boundary_layers(FaceWork& f) {
   std::swap(loops[0], loops[outer]);
   f.chains = std::move(loops);
   return true;
+}
+
+}  // namespace
+
+bool build_boundary_layers(FaceWork& f) {
+  if (!f.opt.boundary_layers || f.opt.boundary_layers->empty() || f.estimate_only) return true;
+  LayerBuild b{f, {}, {}};
+  bool any = false;
+  for (const FaceChain& ch : f.chains)
+    for (int c : ch.edge_curve) any = any || b.field_of(c);
+  for (const FaceChain& ch : f.emb_curves)
+    for (int c : ch.edge_curve) any = any || b.field_of(c);
+  if (!any) return true;
+  for (const auto& [vt, node] : f.mesh.vertex_node) b.vertex_of.emplace(node, vt);
+
+  std::vector<FaceChain> plain_embedded;
+  const std::vector<Ring> rings = layer_rings(b, plain_embedded);
+  DirectedEdges de = boundary_edges(rings);
+  LayerElements elements{b, {}, 0};
+  for (const Ring& g : rings) {
+    std::vector<bool> fan_at;
+    const std::vector<std::vector<Column>> cols = ring_columns(b, g, fan_at);
+    ring_elements(b, g, cols, fan_at, elements);
+  }
+  const std::vector<bool> keep = kept_elements(b, elements.els, de);
+  emit_layer_elements(b, elements.els, keep, de);
+  return rest_of_face(b, de, plain_embedded);
 }
 
 }  // namespace sm
