@@ -94,68 +94,158 @@ void report_floor(FaceWork& f, const QualityFloorResult& r) {
   }
 }
 
-}  // namespace
+// Where the floor's split of boundary edge ab falls on its curve, `along` from a: the
+// curve's own point (so the geometry does not change), kept pending until the split is
+// done; none when the edge's curve must keep its nodes.
+std::optional<Vec2> floor_curve_point(const FaceWork& f, FloorCurves& fl, VertexId a, VertexId b, double along) {
+  const int c = curve_of(fl, a, b);
+  const geo::ModelCurve* mc = c > 0 ? f.model.curve(c) : nullptr;
+  const auto it = f.mesh.curves.find(c);
+  if (!mc || !mc->shape || it == f.mesh.curves.end()) return std::nullopt;
+  // A transfinite curve keeps the node count its script gave (Gmsh's meaning of
+  // `Transfinite Curve{c} = n`: n nodes whatever the faces beside it become).
+  if (f.opt.constraints && f.opt.constraints->curves.count(c)) return std::nullopt;
+  // A curve a face meshed before this one also holds stays as it is: that face's
+  // triangle on the edge would have to be cut in two, unoptimised (a fan of slivers
+  // after a few splits). Faces meshed later see the new nodes in the curve's 1D mesh.
+  for (const auto& [st, sm] : f.mesh.surfaces)
+    if (st != f.tag && surface_uses_curve(f.model, st, c)) return std::nullopt;
+  const CurveMesh& cm = it->second;
+  const std::uint32_t ga = f.global[a.value], gb = f.global[b.value];
+  for (std::size_t k = 0; k + 1 < cm.nodes.size(); ++k) {
+    if (!((cm.nodes[k] == ga && cm.nodes[k + 1] == gb) || (cm.nodes[k] == gb && cm.nodes[k + 1] == ga))) continue;
+    fl.pending.curve = c;
+    fl.pending.k = k;
+    const double fk = cm.nodes[k] == ga ? along : 1 - along;
+    fl.pending.t = (1 - fk) * cm.t[k] + fk * cm.t[k + 1];
+    const geo::Curve& shape = *mc->shape;
+    fl.pending.node = shape.on_surface() ? MeshNode{shape.point(fl.pending.t), shape.eval_uv(fl.pending.t).p, true}
+                                         : MeshNode{shape.point(fl.pending.t), {}, false};
+    return f.plane.node_plane(fl.pending.node);
+  }
+  return std::nullopt;
+}
 
-void raise_face_floor(FaceWork& f) {
-  // Not with boundary layers: the floor splits boundary edges, the layers' among them.
-  if (!(f.opt.quality_floor > 0) || f.has_layers()) return;
-  FloorCurves fl;
-  for (std::size_t i = 0; i < f.edges.size(); ++i)
-    fl.edge_curve_of[std::minmax(f.edges[i].first.value, f.edges[i].second.value)] = f.edge_curve[i];
-  std::vector<std::uint32_t> corners;  // global nodes of model vertices, sorted
-  for (const auto& [vt, node] : f.mesh.vertex_node) corners.push_back(node);
-  std::sort(corners.begin(), corners.end());
+// The pending split done as local vertex v between a and b: its node into the mesh and
+// into its curve's 1D mesh, and the two halves' curve recorded.
+void record_curve_split(FaceWork& f, FloorCurves& fl, VertexId a, VertexId b, VertexId v) {
+  f.mesh.nodes.push_back(fl.pending.node);
+  const std::uint32_t node = static_cast<std::uint32_t>(f.mesh.nodes.size() - 1);
+  CurveMesh& cm = f.mesh.curves.at(fl.pending.curve);
+  const auto at = static_cast<std::ptrdiff_t>(fl.pending.k + 1);
+  cm.nodes.insert(cm.nodes.begin() + at, node);
+  cm.t.insert(cm.t.begin() + at, fl.pending.t);
+  fl.floor_nodes.emplace_back(fl.pending.curve, node);
+  if (cm.h.size() > fl.pending.k + 1) cm.h.insert(cm.h.begin() + at, 0.5 * (cm.h[fl.pending.k] + cm.h[fl.pending.k + 1]));
+  if (f.global.size() <= v.value) f.global.resize(v.value + 1, kNoLocal);
+  f.global[v.value] = node;
+  fl.edge_curve_of.erase(std::minmax(a.value, b.value));
+  fl.edge_curve_of[std::minmax(a.value, v.value)] = fl.pending.curve;
+  fl.edge_curve_of[std::minmax(v.value, b.value)] = fl.pending.curve;
+}
+
+// The face as the floor sees it: its map to space, its corners (`corners`: the global
+// nodes of model vertices, sorted) and its curves to split.
+FloorFace floor_face(FaceWork& f, FloorCurves& fl, const std::vector<std::uint32_t>& corners) {
   FloorFace face;
   face.space = [&f](VertexId v) { return space_of(f, v); };
   face.to_space = [&f](Vec2 p) { return f.plane.to_space(p); };
   face.is_corner = [&f, &corners](VertexId v) {
     return v.value < f.global.size() && std::binary_search(corners.begin(), corners.end(), f.global[v.value]);
   };
-  face.curve_point = [&f, &fl](VertexId a, VertexId b, double along) -> std::optional<Vec2> {
-    const int c = curve_of(fl, a, b);
-    const geo::ModelCurve* mc = c > 0 ? f.model.curve(c) : nullptr;
-    const auto it = f.mesh.curves.find(c);
-    if (!mc || !mc->shape || it == f.mesh.curves.end()) return std::nullopt;
-    // A transfinite curve keeps the node count its script gave (Gmsh's meaning of
-    // `Transfinite Curve{c} = n`: n nodes whatever the faces beside it become).
-    if (f.opt.constraints && f.opt.constraints->curves.count(c)) return std::nullopt;
-    // A curve a face meshed before this one also holds stays as it is: that face's
-    // triangle on the edge would have to be cut in two, unoptimised (a fan of slivers
-    // after a few splits). Faces meshed later see the new nodes in the curve's 1D mesh.
-    for (const auto& [st, sm] : f.mesh.surfaces)
-      if (st != f.tag && surface_uses_curve(f.model, st, c)) return std::nullopt;
-    const CurveMesh& cm = it->second;
-    const std::uint32_t ga = f.global[a.value], gb = f.global[b.value];
-    for (std::size_t k = 0; k + 1 < cm.nodes.size(); ++k) {
-      if (!((cm.nodes[k] == ga && cm.nodes[k + 1] == gb) || (cm.nodes[k] == gb && cm.nodes[k + 1] == ga))) continue;
-      // On the curve itself, so the geometry does not change; `along` from the node of a.
-      fl.pending.curve = c;
-      fl.pending.k = k;
-      const double fk = cm.nodes[k] == ga ? along : 1 - along;
-      fl.pending.t = (1 - fk) * cm.t[k] + fk * cm.t[k + 1];
-      const geo::Curve& shape = *mc->shape;
-      fl.pending.node = shape.on_surface() ? MeshNode{shape.point(fl.pending.t), shape.eval_uv(fl.pending.t).p, true}
-                                           : MeshNode{shape.point(fl.pending.t), {}, false};
-      return f.plane.node_plane(fl.pending.node);
+  face.curve_point = [&f, &fl](VertexId a, VertexId b, double along) { return floor_curve_point(f, fl, a, b, along); };
+  face.curve_split_done = [&f, &fl](VertexId a, VertexId b, VertexId v) { record_curve_split(f, fl, a, b, v); };
+  return face;
+}
+
+void set_edge_curves(const FaceWork& f, FloorCurves& fl) {
+  fl.edge_curve_of.clear();
+  for (std::size_t i = 0; i < f.edges.size(); ++i)
+    fl.edge_curve_of[std::minmax(f.edges[i].first.value, f.edges[i].second.value)] = f.edge_curve[i];
+}
+
+// What the floor and its quality pass change, journalled to be put back (store_undo.h: a
+// copy of the whole store here was 40 bytes a triangle at the 2D peak): the
+// triangulation, the curve nodes (appended last, so the node array is cut back) and the
+// bookkeeping.
+class FloorUndo {
+ public:
+  FloorUndo(FaceWork& f, FloorCurves& fl)
+      : f_(f), fl_(fl), before_(f.tri), nodes_start_(f.mesh.nodes.size()), global_start_(f.global.size()) {}
+
+  void put_back() {
+    before_.restore(f_.tri);
+    for (auto it = fl_.floor_nodes.rbegin(); it != fl_.floor_nodes.rend(); ++it) {
+      CurveMesh& cm = f_.mesh.curves.at(it->first);
+      const auto k = std::find(cm.nodes.begin(), cm.nodes.end(), it->second) - cm.nodes.begin();
+      cm.nodes.erase(cm.nodes.begin() + k);
+      cm.t.erase(cm.t.begin() + k);
+      if (static_cast<std::size_t>(k) < cm.h.size()) cm.h.erase(cm.h.begin() + k);
     }
-    return std::nullopt;
-  };
-  face.curve_split_done = [&f, &fl](VertexId a, VertexId b, VertexId v) {
-    f.mesh.nodes.push_back(fl.pending.node);
-    const std::uint32_t node = static_cast<std::uint32_t>(f.mesh.nodes.size() - 1);
-    CurveMesh& cm = f.mesh.curves.at(fl.pending.curve);
-    const auto at = static_cast<std::ptrdiff_t>(fl.pending.k + 1);
-    cm.nodes.insert(cm.nodes.begin() + at, node);
-    cm.t.insert(cm.t.begin() + at, fl.pending.t);
-    fl.floor_nodes.emplace_back(fl.pending.curve, node);
-    if (cm.h.size() > fl.pending.k + 1)
-      cm.h.insert(cm.h.begin() + at, 0.5 * (cm.h[fl.pending.k] + cm.h[fl.pending.k + 1]));
-    if (f.global.size() <= v.value) f.global.resize(v.value + 1, kNoLocal);
-    f.global[v.value] = node;
-    fl.edge_curve_of.erase(std::minmax(a.value, b.value));
-    fl.edge_curve_of[std::minmax(a.value, v.value)] = fl.pending.curve;
-    fl.edge_curve_of[std::minmax(v.value, b.value)] = fl.pending.curve;
-  };
+    fl_.floor_nodes.clear();
+    f_.mesh.nodes.resize(nodes_start_);
+    f_.global.resize(global_start_);
+    set_edge_curves(f_, fl_);
+  }
+
+  // An internal error of the floor (a walk that did not end: the triangulation is not
+  // consistent there) puts the face back as it was before the floor, a valid mesh, and is
+  // reported with its place.
+  bool faulted(const QualityFloorResult& q) {
+    if (q.fault.empty()) return false;
+    const std::string at = f_.where_text(space_of(f_, q.fault_at));
+    put_back();
+    f_.res.quality_warnings.push_back(
+        fmt::format("surface {}: internal error: {} near {}; the face is left as it was before Mesh.QualityFloor",
+                    f_.tag, q.fault, at));
+    return true;
+  }
+
+ private:
+  FaceWork& f_;
+  FloorCurves& fl_;
+  StoreUndo before_;
+  std::size_t nodes_start_, global_start_;
+};
+
+// The floor's options for one run: losses allowed or never below the face's start, and,
+// above the floor refinement can reach, the smaller budgets.
+QualityFloorOptions floor_run_options(const FaceWork& f, bool never_worse, bool beyond_refinement,
+                                      std::uint32_t below_start) {
+  QualityFloorOptions fo;
+  fo.floor = f.opt.quality_floor;
+  fo.never_below_start = never_worse;
+  if (beyond_refinement) {
+    // Most of what is below such a floor stays below it: a quarter of the budgets (one
+    // point per triangle below it at the start), so that the run stays within about
+    // twice the floor-off time (measured on the examples at 0.9).
+    fo.max_points = below_start + 256;
+    fo.max_work = 4 * std::uint64_t{below_start} + 64 * std::uint64_t(fo.max_rounds) + 1024;
+  }
+  return fo;
+}
+
+// The quality pass again, on what the floor changed: only triangles below the floor (and
+// a margin) are worked on; the rest of the face was optimised already.
+void requality_after_floor(FaceWork& f) {
+  OptimizeOptions oo;
+  oo.threshold = std::min(0.9, f.opt.quality_floor + 0.2);
+  oo.sacrifice_below = oo.threshold;
+  oo.compound_below = std::min(oo.threshold, f.opt.quality_floor + 0.1);
+  optimize_quality(f.tri, f.fixed_count, oo);
+}
+
+}  // namespace
+
+void raise_face_floor(FaceWork& f) {
+  // Not with boundary layers: the floor splits boundary edges, the layers' among them.
+  if (!(f.opt.quality_floor > 0) || f.has_layers()) return;
+  FloorCurves fl;
+  set_edge_curves(f, fl);
+  std::vector<std::uint32_t> corners;  // global nodes of model vertices, sorted
+  for (const auto& [vt, node] : f.mesh.vertex_node) corners.push_back(node);
+  std::sort(corners.begin(), corners.end());
+  const FloorFace face = floor_face(f, fl, corners);
   // First with transient losses allowed (a split may leave a triangle at half the one
   // worked on, for the next rounds to mend); if the face ends worse than it started (its
   // worst rho lower, or more triangles below q), everything is put back and the floor
@@ -173,41 +263,8 @@ void raise_face_floor(FaceWork& f) {
   const auto room = static_cast<std::uint32_t>(
       std::min<std::uint64_t>(4 * std::uint64_t{below_start} + 256 + 1024, f.tri.num_slots()));
   f.tri.reserve(f.tri.num_vertices() + room, f.tri.num_slots() + 2 * room);
-  // What the floor and its quality pass change, journalled to be put back (store_undo.h):
-  // a copy of the whole store here was 40 bytes a triangle at the 2D peak.
-  StoreUndo before(f.tri);
-  const std::size_t nodes_start = f.mesh.nodes.size(), global_start = f.global.size();
+  FloorUndo undo(f, fl);
   QualityFloorResult r, left;
-  // Undo: the triangulation, the curve nodes (appended last, so the node array is cut
-  // back) and the bookkeeping.
-  const auto put_back = [&] {
-    before.restore(f.tri);
-    for (auto it = fl.floor_nodes.rbegin(); it != fl.floor_nodes.rend(); ++it) {
-      CurveMesh& cm = f.mesh.curves.at(it->first);
-      const auto k = std::find(cm.nodes.begin(), cm.nodes.end(), it->second) - cm.nodes.begin();
-      cm.nodes.erase(cm.nodes.begin() + k);
-      cm.t.erase(cm.t.begin() + k);
-      if (static_cast<std::size_t>(k) < cm.h.size()) cm.h.erase(cm.h.begin() + k);
-    }
-    fl.floor_nodes.clear();
-    f.mesh.nodes.resize(nodes_start);
-    f.global.resize(global_start);
-    fl.edge_curve_of.clear();
-    for (std::size_t i = 0; i < f.edges.size(); ++i)
-      fl.edge_curve_of[std::minmax(f.edges[i].first.value, f.edges[i].second.value)] = f.edge_curve[i];
-  };
-  // An internal error of the floor (a walk that did not end: the triangulation is not
-  // consistent there) puts the face back as it was before the floor, a valid mesh, and is
-  // reported with its place.
-  const auto faulted = [&](const QualityFloorResult& q) {
-    if (q.fault.empty()) return false;
-    const std::string at = f.where_text(space_of(f, q.fault_at));
-    put_back();
-    f.res.quality_warnings.push_back(
-        fmt::format("surface {}: internal error: {} near {}; the face is left as it was before Mesh.QualityFloor",
-                    f.tag, q.fault, at));
-    return true;
-  };
   // Above the floor that Ruppert's refinement can reach (its 20.7-degree angle bound,
   // rho 0.59: higher floors make sharp_angle_limit wider) the loss-allowing run cannot
   // converge and only spends its budget: the never-worse run alone.
@@ -216,33 +273,16 @@ void raise_face_floor(FaceWork& f) {
   bool worse = false;
   for (const bool never_worse : {false, true}) {
     if (!never_worse && beyond_refinement) continue;
-    if (never_worse && !beyond_refinement) put_back();
-    QualityFloorOptions fo;
-    fo.floor = f.opt.quality_floor;
-    fo.never_below_start = never_worse;
-    if (beyond_refinement) {
-      // Most of what is below such a floor stays below it: a quarter of the budgets (one
-      // point per triangle below it at the start), so that the run stays within about
-      // twice the floor-off time (measured on the examples at 0.9).
-      fo.max_points = below_start + 256;
-      fo.max_work = 4 * std::uint64_t{below_start} + 64 * std::uint64_t(fo.max_rounds) + 1024;
-    }
+    if (never_worse && !beyond_refinement) undo.put_back();
+    const QualityFloorOptions fo = floor_run_options(f, never_worse, beyond_refinement, below_start);
     r = raise_quality_floor(f.tri, face, fo);
-    if (faulted(r)) return;
-    if (r.changed() && f.opt.smoothing > 0 && f.opt.quality_pass) {
-      // The quality pass again, on what the floor changed: only triangles below the floor
-      // (and a margin) are worked on; the rest of the face was optimised already.
-      OptimizeOptions oo;
-      oo.threshold = std::min(0.9, f.opt.quality_floor + 0.2);
-      oo.sacrifice_below = oo.threshold;
-      oo.compound_below = std::min(oo.threshold, f.opt.quality_floor + 0.1);
-      optimize_quality(f.tri, f.fixed_count, oo);
-    }
+    if (undo.faulted(r)) return;
+    if (r.changed() && f.opt.smoothing > 0 && f.opt.quality_pass) requality_after_floor(f);
     // What is left, measured after the quality pass (no rounds: only the count).
     QualityFloorOptions count_only = fo;
     count_only.max_rounds = 0;
     left = raise_quality_floor(f.tri, face, count_only);
-    if (faulted(left)) return;
+    if (undo.faulted(left)) return;
     double worst_end = 1;
     count_below(f.tri, space, f.opt.quality_floor, &worst_end);
     worse = r.changed() && !(worst_end >= worst_start && left.below_after <= below_start);
@@ -252,12 +292,12 @@ void raise_face_floor(FaceWork& f) {
     // Even the never-worse run (its quality pass may lose) left more triangles below the
     // floor, or a worse one, than the face started with: the face goes back as it was.
     const std::uint32_t ended = left.below_after;
-    put_back();
+    undo.put_back();
     QualityFloorOptions count_only;
     count_only.floor = f.opt.quality_floor;
     count_only.max_rounds = 0;
     left = raise_quality_floor(f.tri, face, count_only);
-    if (faulted(left)) return;
+    if (undo.faulted(left)) return;
     f.res.quality_warnings.push_back(fmt::format(
         "surface {}: Mesh.QualityFloor = {:g} left {} triangles below it where the face had {} (after {} round{} and "
         "{} new points); the face is left as it was before the floor",
