@@ -21,6 +21,7 @@
 #include "coast/coarsen.h"
 #include "coast/coastline_option_id.h"
 #include "coast/intersections.h"
+#include "coast/kept_rope.h"
 #include "coast/place_pairs.h"
 #include "coast/segment_grid.h"
 #include "exact/ring.h"
@@ -97,23 +98,25 @@ struct PointPool {
 };
 
 // The points of every loop live once in Work's pool, linked into rings; a loop is its
-// first node and its kept nodes (the polygon). A cut relinks four nodes and splits the
-// kept list; the original points are never copied (a continent's ring is 3 M points at
-// full resolution, and a cut per inlet copied it: cuts x ring size, 474 s on the world).
+// first node and its kept nodes (the polygon), a rope of Work::ropes (kept_rope.h). A cut
+// relinks four nodes and splits or joins the ropes; neither the original points nor the
+// kept ones are copied (a continent's ring is 3 M points at full resolution and 16,000 kept
+// at 3 km, and a cut per inlet that copied it made passage closing cuts x ring size).
 //
 //   pool:  ... a0 -> (originals of a0-a1, dropped) -> a1 ...  b0 -> ... -> b1 ...
 //   cut:   next[a0] = b1, next[b0] = a1; src[a0], src[b0] become the two dams
+//
+// A rope point's metres are those of its kept segment (to the next kept point), measured
+// when the segment is made; the value is that of chord() of its two ends whenever it is
+// measured, so measuring it early changes no sum.
+using Rope = KeptRopes::Rope;
+using TreeNode = KeptRopes::TreeNode;
+constexpr Rope kNoRope = KeptRopes::kNone;
 struct FlatLoop {
   const PointPool* pool = nullptr;
-  std::uint32_t head = 0;              // the node the loop's rebuild starts from
-  std::vector<std::uint32_t> kept;     // kept node ids in ring order from head: the polygon
-  // The (u,v) points of kept, in step with it: the polygon read in order rather than
-  // through the pool (each cut of a continent reads its 100,000 points again).
-  std::vector<Vec2> uv;
-  // The metres of kept segment j (kept[j] -> kept[j + 1]) in step with kept, NaN where not
-  // measured yet: a cut carries them into the loops it makes (only its two new segments are
-  // measured), where a map by start node was looked up 100,000 times per cut of a continent.
-  std::vector<double> metres;
+  KeptRopes* ropes = nullptr;
+  std::uint32_t head = 0;   // the node the loop's rebuild starts from
+  Rope rope = kNoRope;      // kept node ids in ring order from head: the polygon
   // Where a cut that killed this loop (in this round) put its kept positions: position p
   // is at child.offset + (p - from) mod size in loop child.loop when (p - from) mod size <
   // len (close_round follows a candidate's segments through the cuts with it; a per-node
@@ -129,19 +132,19 @@ struct FlatLoop {
   // Its polygon changed since the last closing round took it (made, or points put back or
   // inserted): that round's polygon and widths (Work::polys) no longer hold.
   bool fresh = true;
-  // The polygon's orientation where make_loop found it (fate_of asks again otherwise): a
-  // cut of a continent made its polygon three times per new loop.
+  // The polygon's orientation where make_loop found it (fate_of asks again otherwise).
   std::optional<Sign> orientation;
-  std::uint32_t id(std::size_t j) const { return kept[j % kept.size()]; }
+  std::size_t size() const { return ropes->size(rope); }
+  TreeNode tree_node(std::size_t j) const { return ropes->at(rope, j % size()); }
+  std::uint32_t id(std::size_t j) const { return ropes->id(tree_node(j)); }
   const Node& node(std::size_t j) const { return pool->nodes[id(j)]; }
-  Vec2 p(std::size_t j) const { return uv[j % uv.size()]; }
+  Vec2 p(std::size_t j) const { return ropes->uv(tree_node(j)); }
   geo::LonLat ll(std::size_t j) const { return pool->ll(id(j)); }
-  /// Dead: nothing reads it again, so its kept list is freed.
+  /// Dead: nothing reads it again, so its rope goes back to be reused.
   void kill() {
     dead = true;
-    std::vector<std::uint32_t>().swap(kept);
-    std::vector<Vec2>().swap(uv);
-    std::vector<double>().swap(metres);
+    ropes->release(rope);
+    rope = kNoRope;
   }
 };
 
@@ -171,6 +174,7 @@ struct Work {
   const PassageOptions& opt;
   PassageStats& stats;
   PointPool pool = {&curves};                // every loop's points (FlatLoop::pool)
+  KeptRopes ropes = {};                      // every live loop's kept points (FlatLoop::rope)
   std::vector<Node>& nodes = pool.nodes;
   std::vector<std::uint32_t> next = {};      // per node: the next node of its ring
   std::vector<FlatLoop> flat = {};
@@ -218,6 +222,8 @@ struct Work {
 void flatten(Work& w, const WorkLoop& loop) {
   FlatLoop f;
   f.pool = &w.pool;
+  f.ropes = &w.ropes;
+  std::vector<KeptRopes::Item> f_kept;
   f.hole = loop.hole;
   f.dead = loop.dead;
   f.head = static_cast<std::uint32_t>(w.nodes.size());
@@ -230,10 +236,12 @@ void flatten(Work& w, const WorkLoop& loop) {
       SM_ASSERT(m <= kMaxIndex, "close_passages: a curve with more points than 31-bit indices (passages.cpp, flatten)");
       for (std::size_t i = 0; i < m; ++i) {
         const std::uint32_t id = w.add_node({ci, ci, static_cast<std::uint32_t>(i) & kMaxIndex, kept[i] != 0});
-        if (kept[i]) f.kept.push_back(id), f.uv.push_back(c.uv[i]);
+        if (kept[i]) f_kept.push_back({id, c.uv[i], 0.0});
       }
     }
-  f.metres.assign(f.kept.size(), std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t j = 0; j < f_kept.size(); ++j)
+    f_kept[j].metres = chord(w.pool.ll(f_kept[j].id), w.pool.ll(f_kept[(j + 1) % f_kept.size()].id), w.opt.radius);
+  f.rope = w.ropes.make(f_kept);
   const auto end = static_cast<std::uint32_t>(w.nodes.size());
   for (std::uint32_t i = f.head; i < end; ++i) w.next[i] = i + 1 == end ? f.head : i + 1;
   w.stats.node_visits += end - f.head;
@@ -246,18 +254,25 @@ double signed_area(const std::vector<Vec2>& p) {
   return 0.5 * a;
 }
 
-// Mean width 2A/P of a loop's water in metres (a strip of width w: about w).
-double mean_width_m(const FlatLoop& f, double radius) {
+// The polygon's points in order (one pass over the rope).
+std::vector<Vec2> polygon(const FlatLoop& f) {
   std::vector<Vec2> p;
+  p.reserve(f.size());
+  f.ropes->for_each(f.rope, [&](TreeNode t) { p.push_back(f.ropes->uv(t)); });
+  return p;
+}
+
+// Mean width 2A/P of a loop's water in metres (a strip of width w: about w). Read in
+// order: only water loops ask (fate_of), among them the pieces a cut drops.
+double mean_width_m(const FlatLoop& f, double radius) {
+  const std::vector<Vec2> p = polygon(f);
   Vec2 mean{0, 0};
-  for (std::size_t j = 0; j < f.kept.size(); ++j) p.push_back(f.p(j)), mean = mean + f.p(j);
+  for (Vec2 x : p) mean = mean + x;
   mean = (1.0 / static_cast<double>(p.size())) * mean;
   double per = 0;
   for (std::size_t i = 0; i < p.size(); ++i) per += norm(p[(i + 1) % p.size()] - p[i]);
   return per > 0 ? 2.0 * std::abs(signed_area(p)) / per * lambda_m(mean, radius) : 0.0;
 }
-
-std::vector<Vec2> polygon(const FlatLoop& f) { return f.uv; }
 
 bool in_box(Vec2 p, Vec2 lo, Vec2 hi) { return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y; }
 
@@ -303,8 +318,9 @@ bool cut_is_clean(const std::vector<FlatLoop>& flat, Vec2 a0, Vec2 a1, Vec2 b0, 
   auto all = [&](Vec2, Vec2, auto&& f) {
     for (const FlatLoop& l : flat) {
       if (l.dead) continue;
-      for (std::size_t j = 0; j < l.kept.size(); ++j)
-        if (f(l.p(j), l.p(j + 1))) return true;
+      const std::vector<Vec2> pts = polygon(l);
+      for (std::size_t j = 0; j < pts.size(); ++j)
+        if (f(pts[j], pts[(j + 1) % pts.size()])) return true;
     }
     return false;
   };
@@ -318,24 +334,28 @@ std::uint32_t new_dam(Work& w, const Node& from) {
   return static_cast<std::uint32_t>(w.n_curves + w.dams.size() - 1);
 }
 
-// `uv`, `metres`: the points of `kept` and its segments' metres when the caller has them
-// (empty: read from the pool, measured when asked).
-FlatLoop make_loop(const Work& w, std::uint32_t head, std::vector<std::uint32_t> kept, std::vector<Vec2> uv = {},
-                   std::vector<double> metres = {}) {
+// ring_orientation (exact/ring.h) of a rope: the same point (the first of least (y, x)),
+// the same neighbours and the same orient2d, found down the tree.
+Sign rope_orientation(const KeptRopes& ropes, Rope r) {
+  const std::size_t n = ropes.size(r);
+  if (n < 3) return Sign::Zero;
+  const std::size_t lo = ropes.rank(ropes.lowest(r));
+  const Vec2 p_lo = ropes.uv(ropes.at(r, lo));
+  std::size_t prev = (lo + n - 1) % n, next = (lo + 1) % n;
+  while (prev != lo && ropes.uv(ropes.at(r, prev)) == p_lo) prev = (prev + n - 1) % n;
+  while (next != lo && ropes.uv(ropes.at(r, next)) == p_lo) next = (next + 1) % n;
+  if (prev == lo || next == lo || prev == next) return Sign::Zero;
+  return orient2d(ropes.uv(ropes.at(r, prev)), p_lo, ropes.uv(ropes.at(r, next)));
+}
+
+FlatLoop make_loop(Work& w, std::uint32_t head, Rope rope) {
   FlatLoop f;
   f.pool = &w.pool;
+  f.ropes = &w.ropes;
   f.head = head;
-  f.kept = std::move(kept);
-  f.uv = std::move(uv);
-  f.metres = std::move(metres);
-  if (f.uv.size() != f.kept.size()) {
-    f.uv.clear();
-    f.uv.reserve(f.kept.size());
-    for (std::uint32_t id : f.kept) f.uv.push_back(w.pool.uv(id));
-  }
-  if (f.metres.size() != f.kept.size()) f.metres.assign(f.kept.size(), std::numeric_limits<double>::quiet_NaN());
+  f.rope = rope;
   f.changed = true;
-  if (f.kept.size() >= 3) f.orientation = ring_orientation(f.uv);
+  if (f.size() >= 3) f.orientation = rope_orientation(w.ropes, rope);
   f.hole = f.orientation == Sign::Negative;
   return f;
 }
@@ -344,104 +364,71 @@ struct CutResult {
   std::vector<std::uint32_t> new_loops;
 };
 
-// Kept node ids, their points and their segments' metres (FlatLoop::kept, uv and metres)
-// of a loop being made.
-struct KeptPart {
-  std::vector<std::uint32_t> ids;
-  std::vector<Vec2> uv;
-  std::vector<double> metres;
-  /// Appends f's kept positions from, from + 1, ... (len of them, cyclic) in two block
-  /// copies; the last one's segment is a new one (a dam): not measured yet.
-  void append(const FlatLoop& f, std::size_t from, std::size_t len) {
-    const std::size_t k = f.kept.size();
-    const std::size_t first = std::min(len, k - from);
-    auto copy = [&](const auto& v, auto& out, std::size_t at, std::size_t n) {
-      out.insert(out.end(), v.begin() + static_cast<std::ptrdiff_t>(at), v.begin() + static_cast<std::ptrdiff_t>(at + n));
-    };
-    copy(f.kept, ids, from, first);
-    copy(f.uv, uv, from, first);
-    copy(f.metres, metres, from, first);
-    copy(f.kept, ids, 0, len - first);
-    copy(f.uv, uv, 0, len - first);
-    copy(f.metres, metres, 0, len - first);
-    if (len > 0) metres.back() = std::numeric_limits<double>::quiet_NaN();
-  }
-};
-
-// The kept nodes of the two loops a 2-opt at kept segments ja and jb of one loop makes:
-// a1 ... b0 and b1 ... a0 (kept positions ja + 1 .. jb and jb + 1 .. ja, cyclic).
-// Kept positions from .. to of f, inclusive, cyclic.
-KeptPart kept_range(const FlatLoop& f, std::size_t from, std::size_t to) {
-  const std::size_t k = f.kept.size();
-  KeptPart out;
-  const std::size_t len = (to + k - from) % k + 1;
-  out.ids.reserve(len);
-  out.uv.reserve(len);
-  out.metres.reserve(len);
-  out.append(f, from, len);
-  return out;
+// The two ropes a 2-opt at kept segments ja and jb of one loop makes: a1 ... b0 and
+// b1 ... a0 (kept positions ja + 1 .. jb and jb + 1 .. ja, cyclic). `r` is used up.
+std::pair<Rope, Rope> split_ring(KeptRopes& ropes, Rope r, std::size_t ja, std::size_t jb) {
+  const std::size_t k = ropes.size(r);
+  const std::size_t from = (ja + 1) % k, len = (jb + k - from) % k + 1;
+  return ropes.split(ropes.rotate(r, from), len);
 }
 
-std::pair<KeptPart, KeptPart> split_kept(const FlatLoop& f, std::size_t ja, std::size_t jb) {
-  const std::size_t k = f.kept.size();
-  return {kept_range(f, (ja + 1) % k, jb), kept_range(f, (jb + 1) % k, ja)};
+// The rope split_ring split, as it was (the same points from the same first one).
+Rope unsplit_ring(KeptRopes& ropes, std::pair<Rope, Rope> parts, std::size_t ja) {
+  const Rope r = ropes.join(parts.first, parts.second);
+  const std::size_t k = ropes.size(r);
+  return ropes.rotate(r, (k - (ja + 1) % k) % k);
+}
+
+// The metres of the segment (a dam, or one a point left) from kept node a to kept node b,
+// on a's rope point t.
+void measure_segment(Work& w, TreeNode t, std::uint32_t a, std::uint32_t b) {
+  w.ropes.set_metres(t, chord(w.pool.ll(a), w.pool.ll(b), w.opt.radius));
 }
 
 // The 2-opt at kept segment ja of loop la and jb of loop lb (see passages.h): four nodes
-// relinked, the kept lists split or joined; the dropped original points stay unlinked in
-// the pool.
-// `split`: the two loops of a cut of one loop that cut_fills_dead_end made already.
-CutResult cut(Work& w, std::uint32_t la, std::size_t ja, std::uint32_t lb, std::size_t jb,
-              std::vector<FlatLoop> split = {}) {
+// relinked, the ropes split or joined; the dropped original points stay unlinked in the
+// pool.
+CutResult cut(Work& w, std::uint32_t la, std::size_t ja, std::uint32_t lb, std::size_t jb) {
   CutResult r;
   ++w.stats.cuts;
   const FlatLoop& fa = w.flat[la];
   const FlatLoop& fb = w.flat[lb];
-  const std::uint32_t a0 = fa.kept[ja], a1 = fa.kept[(ja + 1) % fa.kept.size()];
-  const std::uint32_t b0 = fb.kept[jb], b1 = fb.kept[(jb + 1) % fb.kept.size()];
-  std::vector<KeptPart> parts;
+  const TreeNode ta0 = fa.tree_node(ja), tb0 = fb.tree_node(jb);
+  const std::uint32_t a0 = fa.id(ja), a1 = fa.id(ja + 1);
+  const std::uint32_t b0 = fb.id(jb), b1 = fb.id(jb + 1);
+  std::vector<Rope> parts;
   std::vector<std::uint32_t> heads;
   const auto next_loop = static_cast<std::uint32_t>(w.flat.size());
-  const auto ka = static_cast<std::uint32_t>(fa.kept.size()), kb = static_cast<std::uint32_t>(fb.kept.size());
+  const auto ka = static_cast<std::uint32_t>(fa.size()), kb = static_cast<std::uint32_t>(fb.size());
   const auto sa = static_cast<std::uint32_t>((ja + 1) % ka), sb = static_cast<std::uint32_t>((jb + 1) % kb);
   if (la != lb) {
     // a1 ... a0 then b1 ... b0: one loop.
-    KeptPart kept;
-    kept.ids.reserve(fa.kept.size() + fb.kept.size());
-    kept.uv.reserve(fa.kept.size() + fb.kept.size());
-    kept.metres.reserve(fa.kept.size() + fb.kept.size());
-    kept.append(fa, sa, ka);
-    kept.append(fb, sb, kb);
-    w.stats.kept_visits += kept.ids.size();
+    parts.push_back(w.ropes.join(w.ropes.rotate(fa.rope, sa), w.ropes.rotate(fb.rope, sb)));
     w.nodes[a0].src = new_dam(w, w.nodes[a0]);   // a0 -> b1
     w.nodes[b0].src = new_dam(w, w.nodes[b0]);   // b0 -> a1
-    parts.push_back(std::move(kept));
     heads.push_back(a1);
+    w.flat[la].rope = w.flat[lb].rope = kNoRope;
     w.flat[la].kill();
     w.flat[lb].kill();
     w.flat[la].children = {{next_loop, sa, ka, ka, 0}};
     w.flat[lb].children = {{next_loop, sb, kb, kb, ka}};
   } else {
-    KeptPart first, second;
-    if (split.empty()) {
-      std::tie(first, second) = split_kept(fa, ja, jb);
-      w.stats.kept_visits += first.ids.size() + second.ids.size();
-    }
+    const auto [first, second] = split_ring(w.ropes, fa.rope, ja, jb);
     const auto len1 = static_cast<std::uint32_t>((jb + ka - sa) % ka + 1);
     w.nodes[b0].src = new_dam(w, w.nodes[b0]);   // b0 -> a1
     w.nodes[a0].src = new_dam(w, w.nodes[a0]);   // a0 -> b1
-    parts.push_back(std::move(first));
-    parts.push_back(std::move(second));
+    parts = {first, second};
     heads = {a1, b1};
+    w.flat[la].rope = kNoRope;
     w.flat[la].kill();
     w.flat[la].children = {{next_loop, sa, len1, ka, 0}, {next_loop + 1, sb, ka - len1, ka, 0}};
   }
+  measure_segment(w, ta0, a0, b1);
+  measure_segment(w, tb0, b0, a1);
   w.next[a0] = b1;
   w.next[b0] = a1;
   for (std::size_t i = 0; i < parts.size(); ++i) {
-    w.flat.push_back(split.empty() ? make_loop(w, heads[i], std::move(parts[i].ids), std::move(parts[i].uv),
-                                               std::move(parts[i].metres))
-                                   : std::move(split[i]));
+    w.flat.push_back(make_loop(w, heads[i], parts[i]));
     r.new_loops.push_back(static_cast<std::uint32_t>(w.flat.size() - 1));
   }
   return r;
@@ -459,32 +446,38 @@ struct Candidate {
   Vec2 where;
 };
 
-// Cumulative metres along each kept polygon (entry j: from vertex 0 to vertex j; last:
-// perimeter). Each cut of a continent makes a new loop of nearly its size whose passages
-// ask for these again: the segments' metres are kept by start node (with the end node, as a
-// cut or a point put back gives a node another segment), so that a new loop adds them up
-// (the same numbers in the same order) instead of measuring its 100,000 segments again
-// (half of the import's CPU on the world at 3 km).
-std::vector<double> ring_metres(const Work& w, FlatLoop& f, double radius) {
-  const std::size_t k = f.kept.size();
-  SM_ASSERT(f.metres.size() == k, "close_passages: a loop's metres are out of step with its kept points (passages.cpp, ring_metres)");
-  std::vector<double> cum;
-  cum.reserve(k + 1);
-  cum.push_back(0);
-  for (std::size_t j = 0; j < k; ++j) {
-    double& m = f.metres[j];
-    if (std::isnan(m)) m = chord(w.pool.ll(f.kept[j]), w.pool.ll(f.kept[j + 1 < k ? j + 1 : 0]), radius);
-    cum.push_back(cum.back() + m);
-  }
-  return cum;
+// Two parts of one ring (kept segments sa and sb of f): a passage only when the way round
+// between them is much longer than the way across `d` (not the two sides of a corner). The
+// ways round are sums of the kept segments' metres, as a running sum from position 0 once
+// gave them: the rope's sums (added in another order) decide when they are farther from
+// the bound than the two orders' rounding can differ (each way within about 6 k rounding
+// units of the perimeter, k segments; 32 k taken), and the running sum is made again when
+// not (near ties only), so that every decision is the running sum's.
+bool passage_on_one_ring(const Work& w, const FlatLoop& f, std::size_t sa, std::size_t sb, double d) {
+  const std::size_t k = f.size();
+  const std::size_t i = std::min(sa, sb), j = std::max(sa, sb);
+  const double bound = kHalfPi * d;
+  const KeptRopes& ropes = w.ropes;
+  const double total = ropes.total_metres(f.rope);
+  const double inner = ropes.prefix_metres(f.rope, j) - ropes.prefix_metres(f.rope, i + 1);
+  const double outer = total - (ropes.prefix_metres(f.rope, j + 1) - ropes.prefix_metres(f.rope, i));
+  const double slack = 16.0 * static_cast<double>(k + 2) * std::numeric_limits<double>::epsilon() * total;
+  const double way = std::min(inner, outer);
+  if (way - slack > bound) return true;
+  if (way + slack < bound) return false;
+  std::vector<double> c;
+  c.reserve(k + 1);
+  c.push_back(0);
+  ropes.for_each(f.rope, [&](TreeNode t) { c.push_back(c.back() + ropes.metres(t)); });
+  return std::min(c[j] - c[i + 1], c.back() - (c[j + 1] - c[i])) > bound;
 }
 
 // What becomes of a new loop: kept, or dropped as degenerate (fewer than 3 points or no
 // area) or as water (counter-clockwise) all narrower than the width.
 enum class Fate { Kept, Degenerate, Narrow };
 Fate fate_of(const Work& w, const FlatLoop& f, double* mean_width = nullptr) {
-  if (f.kept.size() < 3) return Fate::Degenerate;
-  if ((f.orientation ? *f.orientation : ring_orientation(f.uv)) == Sign::Zero) return Fate::Degenerate;
+  if (f.size() < 3) return Fate::Degenerate;
+  if ((f.orientation ? *f.orientation : rope_orientation(w.ropes, f.rope)) == Sign::Zero) return Fate::Degenerate;
   if (f.hole) return Fate::Kept;
   const double mw = mean_width_m(f, w.opt.radius);
   if (mean_width) *mean_width = mw;
@@ -506,20 +499,29 @@ void drop_if_narrow(Work& w, std::uint32_t l, std::vector<RepairEntry>& log) {
   if (fate != Fate::Kept) f.kill();
 }
 
+// The fate of each loop the 2-opt at kept segments ja and jb of loop l would make (a1 ...
+// b0 first, b1 ... a0 second; `which`: 1 the first only, 2 the second only, 3 both; Kept
+// for one not asked): the rope is split, the two looked at and joined back, its points
+// and their order as they were.
+std::array<Fate, 2> split_fates(Work& w, std::uint32_t l, std::size_t ja, std::size_t jb, int which) {
+  const std::pair<Rope, Rope> parts = split_ring(w.ropes, w.flat[l].rope, ja, jb);
+  w.flat[l].rope = kNoRope;
+  std::array<Fate, 2> fate{Fate::Kept, Fate::Kept};
+  const Rope part[2] = {parts.first, parts.second};
+  for (int i = 0; i < 2; ++i) {
+    if (!(which & (1 << i))) continue;
+    FlatLoop trial = make_loop(w, w.ropes.id(w.ropes.at(part[i], 0)), part[i]);
+    fate[static_cast<std::size_t>(i)] = fate_of(w, trial);
+  }
+  w.flat[l].rope = unsplit_ring(w.ropes, parts, ja);
+  return fate;
+}
+
 // Whether the 2-opt at kept segments ja and jb of loop l leaves a piece that
-// drop_if_narrow removes: a dead end filled rather than a passage cut in two. The two
-// loops it makes are left in `split` for cut (a split of a continent is its size).
-bool cut_fills_dead_end(const Work& w, std::uint32_t l, std::size_t ja, std::size_t jb,
-                        std::vector<FlatLoop>& split) {
-  auto [first, second] = split_kept(w.flat[l], ja, jb);
-  w.stats.kept_visits += first.ids.size() + second.ids.size();
-  const std::uint32_t heads[2] = {first.ids.front(), second.ids.front()};
-  split.clear();
-  split.push_back(make_loop(w, heads[0], std::move(first.ids), std::move(first.uv), std::move(first.metres)));
-  split.push_back(make_loop(w, heads[1], std::move(second.ids), std::move(second.uv), std::move(second.metres)));
-  for (const FlatLoop& f : split)
-    if (fate_of(w, f) != Fate::Kept) return true;
-  return false;
+// drop_if_narrow removes: a dead end filled rather than a passage cut in two.
+bool cut_fills_dead_end(Work& w, std::uint32_t l, std::size_t ja, std::size_t jb) {
+  const std::array<Fate, 2> fate = split_fates(w, l, ja, jb, 3);
+  return fate[0] != Fate::Kept || fate[1] != Fate::Kept;
 }
 
 DamInfo info_of(const Work& w, const Node& n) {
@@ -564,10 +566,10 @@ double dam_corner(Vec2 end, Vec2 across, Vec2 c1, Vec2 c2, Vec2 c3, bool in_side
 // that drop_if_narrow removes does not count): 0 a0, 1 b1, 2 b0, 3 a1; -1 none. The dams
 // are a0 -> b1 (corners at a0 and b1) and b0 -> a1 (at b0 and a1); the corner is the one
 // between the dam and the coast's curve as drawn near the end (dam_corner).
-int sharp_dam_end(const Work& w, std::uint32_t la, std::size_t sa, std::uint32_t lb, std::size_t sb) {
+int sharp_dam_end(Work& w, std::uint32_t la, std::size_t sa, std::uint32_t lb, std::size_t sb) {
   const FlatLoop& fa = w.flat[la];
   const FlatLoop& fb = w.flat[lb];
-  const std::size_t ka = fa.kept.size(), kb = fb.kept.size();
+  const std::size_t ka = fa.size(), kb = fb.size();
   const Vec2 a0 = fa.p(sa), a1 = fa.p(sa + 1), b0 = fb.p(sb), b1 = fb.p(sb + 1);
   const double angle[4] = {
       dam_corner(a0, b1, fa.p(sa + ka - 1), fa.p(sa + ka - 2), fa.p(sa + ka - 3), true),
@@ -578,20 +580,14 @@ int sharp_dam_end(const Work& w, std::uint32_t la, std::size_t sa, std::uint32_t
   for (int k = 0; k < 4 && first < 0; ++k)
     if (angle[k] < kMinDamCorner) first = k;
   if (first < 0 || la != lb) return first;   // two loops become one, which stays
-  // One loop becomes two: b1 ... a0 (corners 0, 1) and a1 ... b0 (corners 2, 3).
-  // Each part is made only when one of its corners is sharp (a part of a continent is its
-  // size): b1 ... a0 for corners 0 and 1, a1 ... b0 for 2 and 3.
-  std::optional<Fate> fate[2];
-  for (int k = 0; k < 4; ++k) {
-    if (!(angle[k] < kMinDamCorner)) continue;
-    const int side = k / 2;
-    if (!fate[side]) {
-      KeptPart part = side == 0 ? kept_range(fa, (sb + 1) % ka, sa) : kept_range(fa, (sa + 1) % ka, sb);
-      const std::uint32_t head = part.ids.front();
-      fate[side] = fate_of(w, make_loop(w, head, std::move(part.ids), std::move(part.uv)));
-    }
-    if (*fate[side] == Fate::Kept) return k;
-  }
+  // One loop becomes two: b1 ... a0 (corners 0, 1) and a1 ... b0 (corners 2, 3), the
+  // second and the first of split_fates. Only a part with a sharp corner is looked at.
+  int which = 0;
+  for (int k = 0; k < 4; ++k)
+    if (angle[k] < kMinDamCorner) which |= k / 2 == 0 ? 2 : 1;
+  const std::array<Fate, 2> fate = split_fates(w, la, sa, sb, which);
+  for (int k = 0; k < 4; ++k)
+    if (angle[k] < kMinDamCorner && fate[k / 2 == 0 ? 1 : 0] == Fate::Kept) return k;
   return -1;
 }
 
@@ -607,7 +603,7 @@ double corner_between(bool in_dam, bool out_dam, Vec2 u3, Vec2 u2, Vec2 u, Vec2 
 // The water's corner at kept position j of f (corner_between): the segment into j and the
 // one out of it are each a dam (src past the curves) or a coast piece.
 double drawn_corner(const Work& w, const FlatLoop& f, std::size_t j) {
-  const std::size_t k = f.kept.size();
+  const std::size_t k = f.size();
   const bool in_dam = f.node(j + k - 1).src >= w.n_curves, out_dam = f.node(j).src >= w.n_curves;
   return corner_between(in_dam, out_dam, f.p(j + k - 3), f.p(j + k - 2), f.p(j + k - 1), f.p(j), f.p(j + 1),
                         f.p(j + 2), f.p(j + 3));
@@ -623,15 +619,16 @@ double drawn_corner(const Work& w, const FlatLoop& f, std::size_t j) {
 // and the corners at u and x are no sharper than kMinDamCorner; at most kDamShiftReach
 // points per dam end. `ends`: the node ids of the cut's dam ends.
 template <class Near>
-void trim_dam_wedges(Work& w, FlatLoop& f, std::array<std::uint32_t, 4> ends, Near&& near,
+void trim_dam_wedges(Work& w, FlatLoop& f, std::array<TreeNode, 4> ends, Near&& near,
                      std::vector<std::pair<Vec2, Vec2>>& made) {
-  for (std::uint32_t& end : ends)
+  for (TreeNode& end : ends)
     for (int step = 0; step < kDamShiftReach; ++step) {
-      const std::size_t k = f.kept.size();
+      const std::size_t k = f.size();
       if (k < 8) return;   // the corners read three points each way
-      const auto it = std::find(f.kept.begin(), f.kept.end(), end);
-      if (it == f.kept.end()) break;
-      const auto j = static_cast<std::size_t>(it - f.kept.begin());
+      // A dam end's rope point, if it is in f (a point of a piece dropped went back to the
+      // free list, and no point has been made since the cut: it is in no live rope).
+      if (w.ropes.root_of(end) != f.rope) break;
+      const std::size_t j = w.ropes.rank(end);
       const bool in_dam = f.node(j + k - 1).src >= w.n_curves, out_dam = f.node(j).src >= w.n_curves;
       if (in_dam == out_dam || !(drawn_corner(w, f, j) < kMinDamCorner)) break;
       const Vec2 u = f.p(j + k - 1), v = f.p(j), x = f.p(j + 1);
@@ -658,18 +655,20 @@ void trim_dam_wedges(Work& w, FlatLoop& f, std::array<std::uint32_t, 4> ends, Ne
       const double at_x = corner_between(true, out_dam_x, f.p(j + k - 3), f.p(j + k - 2), u, x, f.p(j + 2),
                                          f.p(j + 3), f.p(j + 4));
       if (!(at_u >= kMinDamCorner && at_x >= kMinDamCorner)) break;
-      const std::uint32_t un = f.kept[(j + k - 1) % k], vn = f.kept[j], xn = f.kept[(j + 1) % k];
+      const TreeNode ut = f.tree_node(j + k - 1), xt = f.tree_node(j + 1);
+      const std::uint32_t un = w.ropes.id(ut), vn = w.ropes.id(end), xn = w.ropes.id(xt);
       if (out_dam) w.nodes[un].src = w.nodes[vn].src;   // the dam now leaves u
       w.next[un] = xn;
       if (f.head == vn) f.head = xn;
-      f.kept.erase(f.kept.begin() + static_cast<std::ptrdiff_t>(j));
-      f.uv.erase(f.uv.begin() + static_cast<std::ptrdiff_t>(j));
-      f.metres.erase(f.metres.begin() + static_cast<std::ptrdiff_t>(j));
-      f.metres[j == 0 ? k - 2 : j - 1] = std::numeric_limits<double>::quiet_NaN();
+      const auto [before, from_v] = w.ropes.split(f.rope, j);
+      const auto [v_alone, after] = w.ropes.split(from_v, 1);
+      w.ropes.release(v_alone);
+      f.rope = w.ropes.join(before, after);
+      measure_segment(w, ut, un, xn);
       f.orientation.reset();
       f.fresh = true;
       made.push_back({u, x});
-      end = out_dam ? un : xn;
+      end = out_dam ? ut : xt;
     }
 }
 
@@ -772,7 +771,7 @@ std::optional<std::pair<std::uint32_t, std::uint32_t>> follow_find(const Work& w
     j = to->offset + (j + to->size - to->from) % to->size;
     l = to->loop;
   }
-  if (j >= w.flat[l].kept.size()) return std::nullopt;
+  if (j >= w.flat[l].size()) return std::nullopt;
   if (!(w.flat[l].p(j) == s0) || !(w.flat[l].p(j + 1) == s1)) return std::nullopt;
   return std::pair{l, j};
 }
@@ -781,43 +780,55 @@ std::optional<std::pair<std::uint32_t, std::uint32_t>> follow_find(const Work& w
 // were marked kept: the entries between them replaced, in ring order. Where the stretch
 // wraps past the end of the list (round the loop's head), the list is made again from the
 // head, as the positions count from it.
-// FlatLoop::uv read again from the pool after its kept list changed in place.
-void reread_uv(const Work& w, FlatLoop& f) {
-  f.uv.clear();
-  f.uv.reserve(f.kept.size());
-  for (std::uint32_t id : f.kept) f.uv.push_back(w.pool.uv(id));
+// The rope of kept nodes ids (with their metres) in order, measured now.
+Rope make_rope(Work& w, const std::vector<std::uint32_t>& ids, std::uint32_t then) {
+  std::vector<KeptRopes::Item> items;
+  items.reserve(ids.size());
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    const std::uint32_t to = i + 1 < ids.size() ? ids[i + 1] : then;
+    items.push_back({ids[i], w.pool.uv(ids[i]), chord(w.pool.ll(ids[i]), w.pool.ll(to), w.opt.radius)});
+  }
+  return w.ropes.make(items);
 }
 
-void rekeep(Work& w, FlatLoop& f, std::uint32_t from, std::uint32_t to) {
+// The kept position of node `id` in f, its rope point `t` when that still holds it (a
+// loop made again from its head gave its points new rope points), else found in order.
+std::size_t position_of(const Work& w, const FlatLoop& f, TreeNode t, std::uint32_t id) {
+  if (w.ropes.root_of(t) == f.rope && w.ropes.id(t) == id) return w.ropes.rank(t);
+  std::size_t j = 0, at = f.size();
+  w.ropes.for_each(f.rope, [&](TreeNode x) {
+    if (w.ropes.id(x) == id && at == f.size()) at = j;
+    ++j;
+  });
+  return at;
+}
+
+void rekeep(Work& w, FlatLoop& f, TreeNode from_t, std::uint32_t from, TreeNode to_t, std::uint32_t to) {
   f.orientation.reset();
   f.fresh = true;
-  const std::size_t k = f.kept.size();
-  const std::size_t i = static_cast<std::size_t>(std::find(f.kept.begin(), f.kept.end(), from) - f.kept.begin());
-  const std::size_t t = static_cast<std::size_t>(std::find(f.kept.begin(), f.kept.end(), to) - f.kept.begin());
+  const std::size_t k = f.size();
+  const std::size_t i = position_of(w, f, from_t, from), t = position_of(w, f, to_t, to);
   SM_ASSERT(i < k && t < k, "close_passages: a refused cut's segment is not in its loop (passages.cpp, rekeep)");
-  w.stats.kept_visits += k;
   std::vector<std::uint32_t> between;
   if (t > i) {
     w.walk(from, to, [&](std::uint32_t n) {
       if (w.nodes[n].kept) between.push_back(n);
     });
-    f.kept.erase(f.kept.begin() + static_cast<std::ptrdiff_t>(i + 1), f.kept.begin() + static_cast<std::ptrdiff_t>(t));
-    f.kept.insert(f.kept.begin() + static_cast<std::ptrdiff_t>(i + 1), between.begin(), between.end());
-    // Segment i and the new ones are measured when asked.
-    f.metres[i] = std::numeric_limits<double>::quiet_NaN();
-    f.metres.erase(f.metres.begin() + static_cast<std::ptrdiff_t>(i + 1), f.metres.begin() + static_cast<std::ptrdiff_t>(t));
-    f.metres.insert(f.metres.begin() + static_cast<std::ptrdiff_t>(i + 1), between.size(),
-                    std::numeric_limits<double>::quiet_NaN());
-    reread_uv(w, f);
+    // Positions i + 1 .. t - 1 replaced by `between`; segment i and the new ones measured.
+    const auto [head, rest] = w.ropes.split(f.rope, i + 1);
+    const auto [old_mid, tail] = w.ropes.split(rest, t - (i + 1));
+    w.ropes.release(old_mid);
+    const TreeNode i_t = w.ropes.at(head, i);
+    f.rope = w.ropes.join(w.ropes.join(head, make_rope(w, between, to)), tail);
+    measure_segment(w, i_t, from, between.empty() ? to : between.front());
     return;
   }
   if (w.nodes[f.head].kept) between.push_back(f.head);
   w.walk(f.head, f.head, [&](std::uint32_t n) {
     if (w.nodes[n].kept) between.push_back(n);
   });
-  f.kept = std::move(between);
-  f.metres.assign(f.kept.size(), std::numeric_limits<double>::quiet_NaN());
-  reread_uv(w, f);
+  w.ropes.release(f.rope);
+  f.rope = make_rope(w, between, between.empty() ? 0 : between.front());
 }
 
 // One round of automatic closures: the narrowest clean cut of each loop. False: none left.
@@ -835,13 +846,18 @@ std::vector<NearMiss> round_near_misses(Work& w) {
   std::vector<std::uint32_t> start;                          // this round's segments: start node,
   std::vector<std::pair<std::uint32_t, std::uint32_t>> at;   // loop and position,
   std::vector<char> same;                                    // whether unchanged since the last round
+  std::vector<std::size_t> first(w.flat.size(), 0);          // per loop: its first segment's number
+  std::vector<std::uint32_t> ids;
   for (std::uint32_t l = 0; l < w.flat.size(); ++l) {
     const FlatLoop& f = w.flat[l];
     if (f.dead) continue;
-    const std::size_t k = f.kept.size();
+    const std::size_t k = f.size();
     active[l].resize(k);
+    first[l] = start.size();
+    ids.clear();
+    w.ropes.for_each(f.rope, [&](TreeNode t) { ids.push_back(w.ropes.id(t)); });
     for (std::size_t j = 0; j < k; ++j) {
-      const std::uint32_t n = f.kept[j], m = f.kept[j + 1 < k ? j + 1 : 0];
+      const std::uint32_t n = ids[j], m = ids[j + 1 < k ? j + 1 : 0];
       const bool unchanged = w.seg_end[n] == m;
       active[l][j] = !unchanged;
       w.seg_end[n] = m;
@@ -870,7 +886,7 @@ std::vector<NearMiss> round_near_misses(Work& w) {
     ++w.stats.near_kept;
   }
   w.near.clear();
-  for (const NearMiss& m : near) w.near.push_back({w.flat[m.loop_a].kept[m.seg_a], w.flat[m.loop_b].kept[m.seg_b]});
+  for (const NearMiss& m : near) w.near.push_back({start[first[m.loop_a] + m.seg_a], start[first[m.loop_b] + m.seg_b]});
   // Within one loop only far-apart parts count: at least 3 segments away both ways (as
   // find_near_misses), with the loop as it is now.
   std::erase_if(near, [&](const NearMiss& m) {
@@ -908,38 +924,10 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
     ++w.stats.polygons_made;
   }
   const std::vector<std::vector<Vec2>>& polys = w.polys;
-  // Cumulative metres round a loop, made when a candidate on one loop asks for them. The
-  // entries of loops a cut has killed since are dropped first: each cut of a continent
-  // makes a new loop of nearly its size, and keeping every one of them held 8 bytes per
-  // kept point per cut (1.4 GB of the 2.4 GB peak of the world at 3 km).
-  // The dead loops' entries are dropped when what the map holds has doubled since the last
-  // sweep (a sweep at every new entry walked the map each time: quadratic in the loops
-  // asked for in a round), so it holds at most about twice the live loops' entries.
-  std::map<std::uint32_t, std::vector<double>> cum;
-  std::size_t cum_held = 0, cum_after_sweep = 0;
-  auto ring = [&](std::uint32_t l) -> const std::vector<double>& {
-    auto it = cum.find(l);
-    if (it == cum.end()) {
-      if (cum_held > 2 * cum_after_sweep + 4096) {
-        std::erase_if(cum, [&](const auto& e) {
-          if (!w.flat[e.first].dead) return false;
-          cum_held -= e.second.size();
-          return true;
-        });
-        cum_after_sweep = cum_held;
-      }
-      it = cum.emplace(l, ring_metres(w, w.flat[l], R)).first;
-      cum_held += it->second.size();
-    }
-    return it->second;
-  };
-  // Two parts of one ring (kept segments i and j): a passage only when the way round
-  // between them is much longer than the way across (not the two sides of a corner).
+  // Two parts of one ring: a passage only when the way round between them is much longer
+  // than the way across (passage_on_one_ring).
   auto passage_on_one_ring = [&](std::uint32_t l, std::uint32_t sa, std::uint32_t sb, double d) {
-    const auto& c = ring(l);
-    const std::uint32_t i = std::min(sa, sb), j = std::max(sa, sb);
-    const double inner = c[j] - c[i + 1], outer = c.back() - (c[j + 1] - c[i]);
-    return std::min(inner, outer) > kHalfPi * d;
+    return coast::passage_on_one_ring(w, w.flat[l], sa, sb, d);
   };
   std::vector<Candidate> cands;
   for (const NearMiss& m : round_near_misses(w)) {
@@ -965,7 +953,9 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
   auto near = [&](Vec2 lo, Vec2 hi, auto&& f) { return grid.any_near(lo, hi, f); };
   std::vector<std::pair<Vec2, Vec2>> made;
   struct Refine {
-    std::uint32_t loop, from, to;   // a refused cut's segment (its end nodes)
+    std::uint32_t loop;
+    TreeNode from_t, to_t;          // a refused cut's segment: its ends' rope points
+    std::uint32_t from, to;         // and nodes
     Vec2 o0, o1;                    // the other segment of the cut
   };
   std::vector<Refine> refine;
@@ -1002,7 +992,7 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
     std::size_t sa_cut = sa, sb_cut = sb;
     bool sharp = clean && sharp_dam_end(w, la, sa, lb, sb) >= 0;
     if (sharp) {
-      const std::size_t ka = w.flat[la].kept.size(), kb = w.flat[lb].kept.size();
+      const std::size_t ka = w.flat[la].size(), kb = w.flat[lb].size();
       bool found = false;
       for (int reach = 1; reach <= kDamShiftReach && !found; ++reach)
         for (int da = -reach; da <= reach && !found; ++da)
@@ -1033,19 +1023,18 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
       if (!w.opt.keep_passages) {
         const FlatLoop& fa = w.flat[la];
         const FlatLoop& fb = w.flat[lb];
-        refine.push_back({la, fa.kept[sa], fa.kept[(sa + 1) % fa.kept.size()], b0, b1});
-        refine.push_back({lb, fb.kept[sb], fb.kept[(sb + 1) % fb.kept.size()], a0, a1});
+        refine.push_back({la, fa.tree_node(sa), fa.tree_node(sa + 1), fa.id(sa), fa.id(sa + 1), b0, b1});
+        refine.push_back({lb, fb.tree_node(sb), fb.tree_node(sb + 1), fb.id(sb), fb.id(sb + 1), a0, a1});
       }
       continue;
     }
-    std::vector<FlatLoop> split;
-    if (w.opt.keep_passages && !cut_fills_dead_end(w, la, sa_cut, sb_cut, split)) continue;   // a passage
+    if (w.opt.keep_passages && !cut_fills_dead_end(w, la, sa_cut, sb_cut)) continue;   // a passage
     made.push_back({w.flat[la].p(sa_cut), w.flat[lb].p(sb_cut + 1)});
     made.push_back({w.flat[lb].p(sb_cut), w.flat[la].p(sa_cut + 1)});
     const DamInfo info = info_of(w, w.flat[la].node(sa_cut));
-    const std::array<std::uint32_t, 4> ends{w.flat[la].id(sa_cut), w.flat[la].id(sa_cut + 1), w.flat[lb].id(sb_cut),
-                                            w.flat[lb].id(sb_cut + 1)};
-    const CutResult r = cut(w, la, sa_cut, lb, sb_cut, std::move(split));
+    const std::array<TreeNode, 4> ends{w.flat[la].tree_node(sa_cut), w.flat[la].tree_node(sa_cut + 1),
+                                       w.flat[lb].tree_node(sb_cut), w.flat[lb].tree_node(sb_cut + 1)};
+    const CutResult r = cut(w, la, sa_cut, lb, sb_cut);
     std::size_t dropped = 0;
     for (std::uint32_t l : r.new_loops) {
       drop_if_narrow(w, l, log);
@@ -1062,7 +1051,7 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
   // they replace), the dams made, the points put back before, nor themselves (the source
   // may cross itself where the coarse segment did not).
   std::vector<std::pair<Vec2, Vec2>> put_back;
-  for (const auto& [l, from, to, o0, o1] : refine) {
+  for (const auto& [l, from_t, to_t, from, to, o0, o1] : refine) {
     FlatLoop& f = w.flat[l];
     if (f.dead) continue;
     std::vector<std::uint32_t> run;   // the original points within W of the other segment
@@ -1091,7 +1080,7 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
     if (crosses) continue;
     for (std::size_t i = 0; i + 1 < pts.size(); ++i) put_back.push_back({pts[i], pts[i + 1]});
     for (std::uint32_t i : run) w.nodes[i].kept = true;
-    rekeep(w, f, from, to);
+    rekeep(w, f, from_t, from, to_t, to);
     f.changed = true;
     any = true;
   }
@@ -1102,8 +1091,9 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
 // dropped); returns the new node's id. The loop then starts at the segment's end b and its
 // kept list runs b ... a x, as the loop's order decides where its rebuild starts.
 std::uint32_t insert_on(Work& w, FlatLoop& f, std::size_t j, Vec2 x) {
-  const std::size_t k = f.kept.size();
-  const std::uint32_t a = f.kept[j], b = f.kept[(j + 1) % k];
+  const std::size_t k = f.size();
+  const std::uint32_t a = f.id(j), b = f.id(j + 1);
+  const TreeNode ta = f.tree_node(j);
   const Vec2 ua = w.pool.uv(a), ub = w.pool.uv(b);
   if (x == ua) return a;   // the dam meets the coast at a vertex: no new point
   if (x == ub) return b;
@@ -1117,33 +1107,35 @@ std::uint32_t insert_on(Work& w, FlatLoop& f, std::size_t j, Vec2 x) {
       w.add_node({kAdded, w.nodes[a].src, static_cast<std::uint32_t>(w.pool.added_uv.size() - 1) & kMaxIndex, true});
   w.next[a] = at;
   w.next[at] = b;
-  std::rotate(f.kept.begin(), f.kept.begin() + static_cast<std::ptrdiff_t>((j + 1) % k), f.kept.end());
-  f.kept.push_back(at);
-  std::rotate(f.uv.begin(), f.uv.begin() + static_cast<std::ptrdiff_t>((j + 1) % k), f.uv.end());
-  f.uv.push_back(x);
+  const std::vector<std::uint32_t> x_alone{at};
+  f.rope = w.ropes.join(w.ropes.rotate(f.rope, (j + 1) % k), make_rope(w, x_alone, b));
   // a (now last but one) -> x and x -> b are new segments.
-  std::rotate(f.metres.begin(), f.metres.begin() + static_cast<std::ptrdiff_t>((j + 1) % k), f.metres.end());
-  f.metres.back() = std::numeric_limits<double>::quiet_NaN();
-  f.metres.push_back(std::numeric_limits<double>::quiet_NaN());
+  measure_segment(w, ta, a, at);
   f.head = b;
   f.changed = true;
   f.fresh = true;
   f.orientation.reset();
-  w.stats.kept_visits += k;
   return at;
 }
 
 std::size_t kept_position(const FlatLoop& f, std::uint32_t node) {
-  return static_cast<std::size_t>(std::find(f.kept.begin(), f.kept.end(), node) - f.kept.begin());
+  std::size_t j = 0, at = f.size();
+  f.ropes->for_each(f.rope, [&](TreeNode t) {
+    if (f.ropes->id(t) == node && at == f.size()) at = j;
+    ++j;
+  });
+  return at;
 }
 
 // The kept segment of f crossed by p-q closest to x (x was constructed on it).
 std::size_t crossed_segment(const FlatLoop& f, Vec2 p, Vec2 q, Vec2 x) {
   std::size_t best = 0;
   double best_d = std::numeric_limits<double>::infinity();
-  for (std::size_t j = 0; j < f.kept.size(); ++j) {
-    if (!segments_meet(f.p(j), f.p(j + 1), p, q)) continue;
-    const double d = norm(closest_on_segment(x, f.p(j), f.p(j + 1)) - x);
+  const std::vector<Vec2> pts = polygon(f);
+  for (std::size_t j = 0; j < pts.size(); ++j) {
+    const Vec2 s0 = pts[j], s1 = pts[(j + 1) % pts.size()];
+    if (!segments_meet(s0, s1, p, q)) continue;
+    const double d = norm(closest_on_segment(x, s0, s1) - x);
     if (d < best_d) best_d = d, best = j;
   }
   return best;
@@ -1163,8 +1155,9 @@ Result<std::size_t> place_dam(Work& w, geo::LonLat p_ll, geo::LonLat q_ll, std::
   for (std::uint32_t l = 0; l < w.flat.size(); ++l) {
     const FlatLoop& f = w.flat[l];
     if (f.dead) continue;
-    for (std::uint32_t j = 0; j < f.kept.size(); ++j) {
-      const Vec2 s0 = f.p(j), s1 = f.p(j + 1);
+    const std::vector<Vec2> pts = polygon(f);
+    for (std::uint32_t j = 0; j < pts.size(); ++j) {
+      const Vec2 s0 = pts[j], s1 = pts[(j + 1) % pts.size()];
       const Sign o0 = orient2d(s0, s1, p), o1 = orient2d(s0, s1, q);
       const Sign o2 = orient2d(p, q, s0), o3 = orient2d(p, q, s1);
       if (o0 == Sign::Zero || o1 == Sign::Zero || o0 == o1) continue;   // a dam end on the coast: no crossing
@@ -1208,7 +1201,7 @@ Result<std::size_t> place_dam(Work& w, geo::LonLat p_ll, geo::LonLat q_ll, std::
     };
     FlatLoop& fa = w.flat[in.loop];
     const std::uint32_t nx = insert_on(w, fa, in.seg, in.x);
-    const std::size_t jx = kept_position(fa, nx), ka = fa.kept.size();
+    const std::size_t jx = kept_position(fa, nx), ka = fa.size();
     insert_on(w, fa, (jx + ka - 1) % ka, toward(in.x, fa.p(jx + ka - 1)));
     FlatLoop& fb = w.flat[out.loop];
     const std::uint32_t ny = insert_on(w, fb, crossed_segment(fb, p, q, out.x), out.x);
@@ -1216,13 +1209,14 @@ Result<std::size_t> place_dam(Work& w, geo::LonLat p_ll, geo::LonLat q_ll, std::
     insert_on(w, fb, jy, toward(out.x, fb.p(jy + 1)));
     // Kept positions of X2 and Y (segments X2 -> X and Y -> Y2).
     FlatLoop& fa2 = w.flat[in.loop];
-    std::size_t ja = fa2.kept.size(), jb = w.flat[out.loop].kept.size();
-    for (std::size_t j = 0; j < fa2.kept.size(); ++j)
-      if (fa2.p(j + 1) == in.x) ja = j;
+    const std::vector<Vec2> pa = polygon(fa2), pb = polygon(w.flat[out.loop]);
+    std::size_t ja = pa.size(), jb = pb.size();
+    for (std::size_t j = 0; j < pa.size(); ++j)
+      if (pa[(j + 1) % pa.size()] == in.x) ja = j;
     const FlatLoop& fb2 = w.flat[out.loop];
-    for (std::size_t j = 0; j < fb2.kept.size(); ++j)
-      if (fb2.p(j) == out.x) jb = j;
-    if (ja == fa2.kept.size() || jb == fb2.kept.size() ||
+    for (std::size_t j = 0; j < pb.size(); ++j)
+      if (pb[j] == out.x) jb = j;
+    if (ja == pa.size() || jb == pb.size() ||
         !cut_is_clean(w.flat, fa2.p(ja), fa2.p(ja + 1), fb2.p(jb), fb2.p(jb + 1), {}))
       return CoastError{coast_option_string(CoastOpt::Dams), -1,
                         fmt::format("the dam from (lon {:.6f}, lat {:.6f}) to (lon {:.6f}, lat {:.6f}) cannot close the "
@@ -1309,9 +1303,10 @@ Nearest nearest_coast(const Work& w, Vec2 p, Vec2 n) {
   for (std::uint32_t l = 0; l < w.flat.size(); ++l) {
     const FlatLoop& f = w.flat[l];
     if (f.dead) continue;
-    for (std::uint32_t j = 0; j < f.kept.size(); ++j) {
-      const auto x = n == Vec2{0, 0} ? std::optional<Vec2>(closest_on_segment(p, f.p(j), f.p(j + 1)))
-                                     : closest_away(p, f.p(j), f.p(j + 1), n);
+    const std::vector<Vec2> pts = polygon(f);
+    for (std::uint32_t j = 0; j < pts.size(); ++j) {
+      const Vec2 s0 = pts[j], s1 = pts[(j + 1) % pts.size()];
+      const auto x = n == Vec2{0, 0} ? std::optional<Vec2>(closest_on_segment(p, s0, s1)) : closest_away(p, s0, s1, n);
       if (!x) continue;
       const double d2 = norm2(*x - p);
       if (d2 < best.d2) best = {l, j, *x, d2};
@@ -1324,7 +1319,7 @@ Nearest nearest_coast(const Work& w, Vec2 p, Vec2 n) {
 // the left): at a vertex, on the left of both segments at a convex corner of the water,
 // of either at a reflex one.
 bool in_water(const FlatLoop& f, std::uint32_t j, Vec2 x, Vec2 p) {
-  const std::size_t k = f.kept.size();
+  const std::size_t k = f.size();
   Vec2 u = f.p(j), v = f.p(j + 1), z = f.p(j + 2);
   if (x == f.p(j)) u = f.p(j + k - 1), v = f.p(j), z = f.p(j + 1);
   else if (!(x == f.p(j + 1))) return orient2d(u, v, p) == Sign::Positive;
@@ -1348,7 +1343,7 @@ std::array<std::set<UvKey>, 2> banks_of(const Work& w, std::uint32_t la, std::ui
     return std::min({uv_point_segment_metres(a0, b0, b1, R), uv_point_segment_metres(a1, b0, b1, R),
                      uv_point_segment_metres(b0, a0, a1, R), uv_point_segment_metres(b1, a0, a1, R)});
   };
-  const std::size_t bound = w.flat[la].kept.size() + w.flat[lb].kept.size() + 4;
+  const std::size_t bound = w.flat[la].size() + w.flat[lb].size() + 4;
   for (std::size_t step = 0; step < bound; ++step) {
     bool grew = false;
     for (int i = 0; i < 2; ++i)
@@ -1356,7 +1351,7 @@ std::array<std::set<UvKey>, 2> banks_of(const Work& w, std::uint32_t la, std::ui
         if (!open[i][d]) continue;
         const FlatLoop& f = w.flat[loop[i]];
         const FlatLoop& g = w.flat[loop[1 - i]];
-        const auto k = static_cast<std::uint32_t>(f.kept.size());
+        const auto k = static_cast<std::uint32_t>(f.size());
         const std::uint32_t next = d ? (end[i][d] + 1) % k : (end[i][d] + k - 1) % k;
         if (segs[i].count(next) || (loop[0] == loop[1] && segs[1 - i].count(next))) {
           open[i][d] = false;
@@ -1431,7 +1426,7 @@ Result<bool> close_passages(std::vector<WorkCurve>& curves, std::vector<WorkLoop
   for (const WorkLoop& l : loops) flatten(w, l);
   if (auto g = find_gates(w, log); !g) return g.error();
   std::size_t vertices = 0;
-  for (const FlatLoop& f : w.flat) vertices += f.dead ? 0 : f.kept.size();
+  for (const FlatLoop& f : w.flat) vertices += f.dead ? 0 : f.size();
   for (const auto& [p, q] : opt.dams) {
     auto placed = place_dam(w, p, q, log);
     if (!placed) return placed.error();
@@ -1450,11 +1445,9 @@ Result<bool> close_passages(std::vector<WorkCurve>& curves, std::vector<WorkLoop
   bool changed = false;
   const std::size_t n_old = loops.size();
   // The rebuild reads only the rings: the polygons are freed first.
-  for (FlatLoop& f : w.flat) {
-    std::vector<std::uint32_t>().swap(f.kept);
-    std::vector<Vec2>().swap(f.uv);
-    std::vector<double>().swap(f.metres);
-  }
+  for (FlatLoop& f : w.flat) f.rope = kNoRope;
+  w.stats.kept_visits += w.ropes.work();
+  w.ropes = KeptRopes();
   std::vector<std::vector<Vec2>>().swap(w.polys);
   std::vector<std::vector<double>>().swap(w.width);
   std::vector<std::uint32_t>().swap(w.seg_end);
