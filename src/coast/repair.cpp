@@ -478,6 +478,13 @@ double mean_gamma(const WorkCurve& c) {
 
 }  // namespace
 
+void free_points(WorkCurve& c) {
+  std::vector<geo::LonLat>().swap(c.full);
+  std::vector<Vec2>().swap(c.uv);
+  std::vector<double>().swap(c.gamma);
+  std::vector<std::uint32_t>().swap(c.keep);
+}
+
 void loop_polygon(const std::vector<WorkCurve>& curves, const WorkLoop& loop, std::vector<Vec2>& uv,
                   std::vector<LoopVertexRef>* refs) {
   uv.clear();
@@ -695,10 +702,12 @@ Result<std::size_t> repair_loops(std::vector<WorkCurve>& curves, std::vector<Wor
 namespace {
 
 // Joins island loop lb into la across the facing kept segments (la, ka) and (lb, kb):
-// la's points from the end of its segment round to its start, then lb's likewise.
+// la's points from the end of its segment round to its start, then lb's likewise. lb is
+// dead then and nothing reads its curve again: its points are freed (kept, the islands a
+// continent took in held their points twice, to the end of the import).
 void merge_across(std::vector<WorkCurve>& curves, WorkLoop& la, std::uint32_t ka, WorkLoop& lb, std::uint32_t kb) {
   WorkCurve& A = curves[la.curves[0]];
-  const WorkCurve& B = curves[lb.curves[0]];
+  WorkCurve& B = curves[lb.curves[0]];
   WorkCurve M;
   M.periodic = true;
   M.record = A.record;
@@ -733,6 +742,7 @@ void merge_across(std::vector<WorkCurve>& curves, WorkLoop& la, std::uint32_t ka
   append(A, ka);
   append(B, kb);
   A = std::move(M);
+  free_points(B);
   lb.dead = true;
 }
 

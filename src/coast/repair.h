@@ -25,6 +25,10 @@ struct WorkCurve {
   std::int64_t id = -1;
 };
 
+/// Frees a curve's points (their capacity too): for a curve no live loop uses any more,
+/// whose 40 bytes a source point would otherwise stay allocated to the end of the import.
+void free_points(WorkCurve& c);
+
 struct WorkLoop {
   std::vector<std::uint32_t> curves;    // consecutive; a non-periodic curve ends where the next starts
   bool hole = true;

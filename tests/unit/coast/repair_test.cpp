@@ -187,3 +187,42 @@ TEST_CASE("repair: an island straddling the ring round the South Pole becomes pa
   for (auto p : m->curves[m->loops[m->surfaces[0].outer].curves[0]].ll) north = std::max(north, p.lat);
   CHECK(north == doctest::Approx(-69.5));   // the island's north side is now Antarctica's coast
 }
+
+TEST_CASE("repair: an island merged across a strait gives its points up; the merged curve holds both") {
+  // The two squares of the test above, as work curves (orientation and ocean left out:
+  // handle_straits looks at the two holes only).
+  const geo::PolarSphere ps({0, 0, 0}, 1.0);
+  auto curve = [&](std::vector<geo::LonLat> pts) {
+    WorkCurve c;
+    c.periodic = true;
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      c.uv.push_back(ps.param_from_lonlat(pts[i]));
+      c.gamma.push_back(100);
+      c.keep.push_back(static_cast<std::uint32_t>(i));
+    }
+    c.full = std::move(pts);
+    return c;
+  };
+  std::vector<WorkCurve> curves{curve({{0, 50}, {0, 50.01}, {0.01, 50.01}, {0.01, 50}}),
+                                curve({{0.011, 50}, {0.011, 50.01}, {0.021, 50.01}, {0.021, 50}})};
+  std::vector<WorkLoop> loops{{{0}, true, false}, {{1}, true, false}};
+  RepairOptions o;
+  o.close_straits = true;
+  std::vector<RepairEntry> log;
+  handle_straits(curves, loops, o, log);
+  REQUIRE(log.size() == 1);
+  CHECK(log[0].kind == RepairKind::MergedIslands);
+  REQUIRE(loops[0].dead != loops[1].dead);
+  const WorkCurve& kept = curves[loops[0].dead ? 1 : 0];
+  const WorkCurve& gone = curves[loops[0].dead ? 0 : 1];
+  CHECK(kept.full.size() == 8);
+  CHECK(kept.uv.size() == 8);
+  CHECK(kept.gamma.size() == 8);
+  CHECK(kept.keep.size() == 8);
+  // Nothing reads a dead loop's curve again: its arrays are freed, capacity included.
+  CHECK(gone.full.capacity() == 0);
+  CHECK(gone.uv.capacity() == 0);
+  CHECK(gone.gamma.capacity() == 0);
+  CHECK(gone.keep.capacity() == 0);
+  CHECK(gone.record == 0);
+}
