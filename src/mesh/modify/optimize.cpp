@@ -274,16 +274,24 @@ class Optimizer {
     lap *= k, ideal *= k;
     for (int it = 0; it < opt_.smooth_iterations; ++it) {
       const Vec2 targets[3] = {ideal, ideal_apex(star_[worst].b, star_[worst].c), lap};
+      // The worst may not drop at all: a candidate is measured only while above this.
+      const double floor = std::nextafter(best, -2.0);
       Vec2 best_p = cur;
       best_q_ = cur_q_;
+      // The chosen candidate's worst rho, count above kGood and worst triangle: measured
+      // in full (nothing below the floor), so the same as measuring the star there again.
+      double chosen = best;
+      int chosen_good = good;
+      std::size_t chosen_worst = worst;
       for (const Vec2 target : targets) {
         for (double step = 1; step >= 1.0 / 128; step *= 0.5) {
           const Vec2 p = cur + step * (target - cur);
           int g = 0;
-          // The worst may not drop at all; the sorted qualities must rise (leximin).
-          const double q = star_quality(p, std::nextafter(best, -2.0), &g, nullptr, &cand_q_);
+          std::size_t w = 0;
+          // The sorted qualities must rise (leximin).
+          const double q = star_quality(p, floor, &g, &w, &cand_q_);
           if (q >= best && leximin_better(cand_q_, cur_q_) && fair_trade(q - best, good - g, best, good0 - g)) {
-            if (leximin_better(cand_q_, best_q_)) best_q_ = cand_q_, best_p = p;
+            if (leximin_better(cand_q_, best_q_)) best_q_ = cand_q_, best_p = p, chosen = q, chosen_good = g, chosen_worst = w;
             break;
           }
         }
@@ -294,7 +302,8 @@ class Optimizer {
         break;
       }
       cur = best_p;
-      best = star_quality(cur, -2, &good, &worst, &cur_q_);
+      best = chosen, good = chosen_good, worst = chosen_worst;
+      cur_q_.swap(best_q_);
     }
     return cur;
   }
