@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -193,6 +194,7 @@ class Optimizer {
   bool gather_star(VertexId v) {
     star_.clear();
     star_tris_.clear();
+    fail_first_ = SIZE_MAX;
     if (v.value < fixed_count_ || !m_.out_side_ok(v)) return false;
     const Side start = m_.out_side[v.value];
     Side s = start;
@@ -224,19 +226,34 @@ class Optimizer {
     if (sorted) sorted->clear();
     Vec3 ps{};
     if (space_) ps = opt_.to_space(p);
-    for (std::size_t i = 0; i < star_.size(); ++i) {
-      const StarEdge& e = star_[i];
-      double q;
+    // The rho of the triangle on e with its centre at p, or -1 when that triangle is not
+    // counter-clockwise or not above the floor.
+    const auto measure = [&](const StarEdge& e) -> double {
       if (space_) {
         if (!(cross(e.b - p, e.c - p) > 0)) return -1;
-        q = rho(ps, e.sb, e.sc);
-        if (!(q > floor)) return -1;
-      } else {
-        // rho = num / den; the early exit compares without the division.
-        const RhoTerms r = rho_terms(p, e.b, e.c);
-        if (!(r.area2 > 0)) return -1;
-        if (!(r.num > floor * r.den)) return -1;
-        q = r.num / r.den;
+        const double q = rho(ps, e.sb, e.sc);
+        return q > floor ? q : -1;
+      }
+      // rho = num / den; the early exit compares without the division.
+      const RhoTerms r = rho_terms(p, e.b, e.c);
+      if (!(r.area2 > 0) || !(r.num > floor * r.den)) return -1;
+      return r.num / r.den;
+    };
+    // The triangle that failed last is measured first: along a line search the same one
+    // fails step after step. Whichever fails, the answer is -1 (the counts, partial then,
+    // are not read), so the order changes nothing else.
+    std::size_t tried = star_.size();
+    double tried_q = 0;
+    if (fail_first_ < star_.size()) {
+      tried_q = measure(star_[fail_first_]);
+      if (tried_q < 0) return -1;
+      tried = fail_first_;
+    }
+    for (std::size_t i = 0; i < star_.size(); ++i) {
+      const double q = i == tried ? tried_q : measure(star_[i]);
+      if (q < 0) {
+        fail_first_ = i;
+        return -1;
       }
       *good += q > kGood;
       if (sorted) sorted->push_back(q);
@@ -446,6 +463,7 @@ class Optimizer {
   std::vector<double> cur_q_, cand_q_, best_q_, region_q0_, region_q1_;
   std::vector<Side> stack_;
   std::vector<StarEdge> star_;
+  std::size_t fail_first_ = SIZE_MAX;  // the star's triangle that last fell below the floor
   std::vector<std::uint32_t> star_tris_;
   std::vector<VertexId> order_;
 };
