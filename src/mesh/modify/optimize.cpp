@@ -34,6 +34,7 @@ inline Vec2 ideal_apex(Vec2 b, Vec2 c) {
 struct StarEdge {
   Vec2 b, c;
   Vec3 sb, sc;  // on the surface, with OptimizeOptions::to_space
+  double length = 0;  // norm(sb - sc): the same for every position of the centre
 };
 
 // Sorted qualities compared worst first: the first pair that differs by more than
@@ -211,8 +212,8 @@ class Optimizer {
   }
 
   void add_star_edge(VertexId b, VertexId c) {
-    StarEdge e{m_.pos(b), m_.pos(c), {}, {}};
-    if (space_) e.sb = xyz(b), e.sc = xyz(c);
+    StarEdge e{m_.pos(b), m_.pos(c), {}, {}, 0};
+    if (space_) e.sb = xyz(b), e.sc = xyz(c), e.length = norm(e.sb - e.sc);
     star_.push_back(e);
   }
 
@@ -231,7 +232,7 @@ class Optimizer {
     const auto measure = [&](const StarEdge& e) -> double {
       if (space_) {
         if (!(cross(e.b - p, e.c - p) > 0)) return -1;
-        const double q = rho(ps, e.sb, e.sc);
+        const double q = rho(ps, e.sb, e.sc, e.length);
         return q > floor ? q : -1;
       }
       // rho = num / den; the early exit compares without the division.
