@@ -110,6 +110,26 @@ class Polyline {
   double margin_ = 0;
 };
 
+// Whether one of the source segments of `pts` near segment `around` (kNearSegments on
+// each side) lies within `bound` of p, each measured as Polyline measures it: then
+// Polyline::farther_than over all of them is false too (the minimum it finds is at most
+// that segment's, the same number), without the polyline's set-up.
+constexpr std::size_t kNearSegments = 4;
+bool near_source(const std::vector<Vec3>& pts, std::size_t around, const Vec3& p, double bound) {
+  const std::size_t segments = pts.size() > 0 ? pts.size() - 1 : 0;
+  const std::size_t lo = around > kNearSegments ? around - kNearSegments : 0;
+  const std::size_t hi = std::min(segments, around + kNearSegments);
+  for (std::size_t i = lo; i < hi; ++i) {
+    const Vec3& a = pts[i];
+    const Vec3 ab = pts[i + 1] - pts[i];
+    const double l2 = norm2(ab);
+    double t = l2 > 0 ? dot(p - a, ab) / l2 : 0.0;
+    t = std::clamp(t, 0.0, 1.0);
+    if (!(std::sqrt(norm2(p - (a + t * ab))) / bound > 1)) return true;
+  }
+  return false;
+}
+
 // One curve seen by the pass: its control points, spans and source points on the sphere.
 // Spans are sampled when first asked for and kept for the rest of the scan. The source
 // points are mapped to the sphere where a scan reads them (a division and a few products
@@ -340,14 +360,17 @@ CurveScan scan_curve(const WorkCurve& c, const geo::PolarSphere& ps, const Devia
       }
       points.clear();
       for (long j = from; j <= to; ++j) points.push_back(v.source(j));
-      source_line.assign(points, margin);
       // The i-th sample of the span lies, as a rule, nearest the source points that far
-      // along the segment.
-      for (std::size_t i = 0; i < own.size() && !curve_over; ++i) {
+      // along the segment: the source segments there are tried first, and the whole
+      // polyline only from the first sample none of them is within the bound of.
+      const auto along = [&](std::size_t i) {
         const long steps = static_cast<long>(std::max<std::size_t>(own.size() - 1, 1));
-        const long along = (a - from) + (b - a) * static_cast<long>(i) / steps;
-        curve_over = source_line.farther_than(own[i], static_cast<std::size_t>(along), v.bound(a));
-      }
+        return static_cast<std::size_t>((a - from) + (b - a) * static_cast<long>(i) / steps);
+      };
+      std::size_t i = 0;
+      while (i < own.size() && near_source(points, along(i), own[i], v.bound(a))) ++i;
+      if (i < own.size()) source_line.assign(points, margin);
+      for (; i < own.size() && !curve_over; ++i) curve_over = source_line.farther_than(own[i], along(i), v.bound(a));
     }
     if (r.ratio <= 1 && !curve_over) continue;
     // The farthest source point that makes no spike; a few tries, farthest first.
