@@ -67,8 +67,24 @@ class Polyline {
   // segment `first` is measured first (the nearest one, as a rule, so that the others
   // are passed over).
   double distance(const Vec3& p, std::size_t first = 0) const {
+    return std::sqrt(nearest2(p, first, [](double) { return false; }));
+  }
+  // Whether distance(p, first) / bound > 1, the search ended once a segment within the
+  // bound is found: the minimum only falls as segments are measured, and the root and
+  // the division are monotone, so an answer of "not over" on the way stays so.
+  bool farther_than(const Vec3& p, std::size_t first, double bound) const {
+    const auto over = [bound](double d2) { return std::sqrt(d2) / bound > 1; };
+    return over(nearest2(p, first, [&](double d2) { return !over(d2); }));
+  }
+
+ private:
+  // The smallest squared distance from p to a segment, or the smaller one reached when
+  // done(d2) holds after a group (or after the first point).
+  template <class Done>
+  double nearest2(const Vec3& p, std::size_t first, const Done& done) const {
     if (a_.empty()) return HUGE_VAL;
     double d2 = norm2(p - a_.front());
+    if (done(d2)) return d2;
     const std::size_t groups = centre_.size();
     const std::size_t g0 = std::min(first, ab_.size() > 0 ? ab_.size() - 1 : 0) / kGroup;
     for (std::size_t k = 0; k < groups; ++k) {
@@ -84,15 +100,35 @@ class Polyline {
         t = std::clamp(t, 0.0, 1.0);
         d2 = std::min(d2, norm2(p - (a + t * ab)));
       }
+      if (done(d2)) return d2;
     }
-    return std::sqrt(d2);
+    return d2;
   }
 
- private:
   std::vector<Vec3> a_, ab_, centre_;
   std::vector<double> l2_, reach_;
   double margin_ = 0;
 };
+
+// Whether one of the source segments of `pts` near segment `around` (kNearSegments on
+// each side) lies within `bound` of p, each measured as Polyline measures it: then
+// Polyline::farther_than over all of them is false too (the minimum it finds is at most
+// that segment's, the same number), without the polyline's set-up.
+constexpr std::size_t kNearSegments = 4;
+bool near_source(const std::vector<Vec3>& pts, std::size_t around, const Vec3& p, double bound) {
+  const std::size_t segments = pts.size() > 0 ? pts.size() - 1 : 0;
+  const std::size_t lo = around > kNearSegments ? around - kNearSegments : 0;
+  const std::size_t hi = std::min(segments, around + kNearSegments);
+  for (std::size_t i = lo; i < hi; ++i) {
+    const Vec3& a = pts[i];
+    const Vec3 ab = pts[i + 1] - pts[i];
+    const double l2 = norm2(ab);
+    double t = l2 > 0 ? dot(p - a, ab) / l2 : 0.0;
+    t = std::clamp(t, 0.0, 1.0);
+    if (!(std::sqrt(norm2(p - (a + t * ab))) / bound > 1)) return true;
+  }
+  return false;
+}
 
 // One curve seen by the pass: its control points, spans and source points on the sphere.
 // Spans are sampled when first asked for and kept for the rest of the scan. The source
@@ -304,10 +340,12 @@ CurveScan scan_curve(const WorkCurve& c, const geo::PolarSphere& ps, const Devia
       if (j > a && j < b) candidates.emplace_back(q, j);
     }
     // The curve to the source points: the span that follows the segment against the
-    // source polyline from the control point before it to the one after. Without a
-    // bound (measuring only, the default) it decides nothing and is not computed.
-    double curve_ratio = 0;
-    if (bounded) {
+    // source polyline from the control point before it to the one after. It decides only
+    // whether the segment is over the bound: not computed when its source points are
+    // already over it, nor without a bound (measuring only, the default), and each sample
+    // of the span measured only until a source segment within the bound is found.
+    bool curve_over = false;
+    if (bounded && r.ratio <= 1) {
       v.span(s, own);
       long from = a, to = b;
       if (s > 0) {
@@ -322,16 +360,19 @@ CurveScan scan_curve(const WorkCurve& c, const geo::PolarSphere& ps, const Devia
       }
       points.clear();
       for (long j = from; j <= to; ++j) points.push_back(v.source(j));
-      source_line.assign(points, margin);
       // The i-th sample of the span lies, as a rule, nearest the source points that far
-      // along the segment.
-      for (std::size_t i = 0; i < own.size(); ++i) {
+      // along the segment: the source segments there are tried first, and the whole
+      // polyline only from the first sample none of them is within the bound of.
+      const auto along = [&](std::size_t i) {
         const long steps = static_cast<long>(std::max<std::size_t>(own.size() - 1, 1));
-        const long along = (a - from) + (b - a) * static_cast<long>(i) / steps;
-        curve_ratio = std::max(curve_ratio, source_line.distance(own[i], static_cast<std::size_t>(along)) / v.bound(a));
-      }
+        return static_cast<std::size_t>((a - from) + (b - a) * static_cast<long>(i) / steps);
+      };
+      std::size_t i = 0;
+      while (i < own.size() && near_source(points, along(i), own[i], v.bound(a))) ++i;
+      if (i < own.size()) source_line.assign(points, margin);
+      for (; i < own.size() && !curve_over; ++i) curve_over = source_line.farther_than(own[i], along(i), v.bound(a));
     }
-    if (r.ratio <= 1 && curve_ratio <= 1) continue;
+    if (r.ratio <= 1 && !curve_over) continue;
     // The farthest source point that makes no spike; a few tries, farthest first.
     std::sort(candidates.begin(), candidates.end(), [](const auto& x, const auto& y) {
       return x.first != y.first ? x.first > y.first : x.second < y.second;

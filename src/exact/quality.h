@@ -43,14 +43,18 @@ inline double rho_ccw(Vec2 a, Vec2 b, Vec2 c) {
   return t.area2 > 0 ? t.num / t.den : -1.0;
 }
 
-/// rho of a triangle in space (chord lengths, the flat triangle through the three points);
-/// 0 when degenerate.
-inline double rho(Vec3 a, Vec3 b, Vec3 c) {
-  const double la = norm(b - c), lb = norm(c - a), lc = norm(a - b);
+/// rho of a triangle in space, with la = norm(b - c) given: the outer edge of a vertex
+/// star, the same wherever the optimiser tries its centre a.
+inline double rho(Vec3 a, Vec3 b, Vec3 c, double la) {
+  const double lb = norm(c - a), lc = norm(a - b);
   const double area2_sq = norm2(cross(b - a, c - a));   // (2A)^2
   const double den = (la + lb + lc) * la * lb * lc;
   return den > 0 ? 4 * area2_sq / den : 0.0;
 }
+
+/// rho of a triangle in space (chord lengths, the flat triangle through the three points);
+/// 0 when degenerate.
+inline double rho(Vec3 a, Vec3 b, Vec3 c) { return rho(a, b, c, norm(b - c)); }
 
 /// Mean ratio 4 sqrt(3) area / (sum of squared edge lengths), in [0, 1].
 double eta(Vec2 a, Vec2 b, Vec2 c);

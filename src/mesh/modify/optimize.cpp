@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -33,6 +34,7 @@ inline Vec2 ideal_apex(Vec2 b, Vec2 c) {
 struct StarEdge {
   Vec2 b, c;
   Vec3 sb, sc;  // on the surface, with OptimizeOptions::to_space
+  double length = 0;  // norm(sb - sc): the same for every position of the centre
 };
 
 // Sorted qualities compared worst first: the first pair that differs by more than
@@ -193,6 +195,7 @@ class Optimizer {
   bool gather_star(VertexId v) {
     star_.clear();
     star_tris_.clear();
+    fail_first_ = SIZE_MAX;
     if (v.value < fixed_count_ || !m_.out_side_ok(v)) return false;
     const Side start = m_.out_side[v.value];
     Side s = start;
@@ -209,8 +212,8 @@ class Optimizer {
   }
 
   void add_star_edge(VertexId b, VertexId c) {
-    StarEdge e{m_.pos(b), m_.pos(c), {}, {}};
-    if (space_) e.sb = xyz(b), e.sc = xyz(c);
+    StarEdge e{m_.pos(b), m_.pos(c), {}, {}, 0};
+    if (space_) e.sb = xyz(b), e.sc = xyz(c), e.length = norm(e.sb - e.sc);
     star_.push_back(e);
   }
 
@@ -224,19 +227,34 @@ class Optimizer {
     if (sorted) sorted->clear();
     Vec3 ps{};
     if (space_) ps = opt_.to_space(p);
-    for (std::size_t i = 0; i < star_.size(); ++i) {
-      const StarEdge& e = star_[i];
-      double q;
+    // The rho of the triangle on e with its centre at p, or -1 when that triangle is not
+    // counter-clockwise or not above the floor.
+    const auto measure = [&](const StarEdge& e) -> double {
       if (space_) {
         if (!(cross(e.b - p, e.c - p) > 0)) return -1;
-        q = rho(ps, e.sb, e.sc);
-        if (!(q > floor)) return -1;
-      } else {
-        // rho = num / den; the early exit compares without the division.
-        const RhoTerms r = rho_terms(p, e.b, e.c);
-        if (!(r.area2 > 0)) return -1;
-        if (!(r.num > floor * r.den)) return -1;
-        q = r.num / r.den;
+        const double q = rho(ps, e.sb, e.sc, e.length);
+        return q > floor ? q : -1;
+      }
+      // rho = num / den; the early exit compares without the division.
+      const RhoTerms r = rho_terms(p, e.b, e.c);
+      if (!(r.area2 > 0) || !(r.num > floor * r.den)) return -1;
+      return r.num / r.den;
+    };
+    // The triangle that failed last is measured first: along a line search the same one
+    // fails step after step. Whichever fails, the answer is -1 (the counts, partial then,
+    // are not read), so the order changes nothing else.
+    std::size_t tried = star_.size();
+    double tried_q = 0;
+    if (fail_first_ < star_.size()) {
+      tried_q = measure(star_[fail_first_]);
+      if (tried_q < 0) return -1;
+      tried = fail_first_;
+    }
+    for (std::size_t i = 0; i < star_.size(); ++i) {
+      const double q = i == tried ? tried_q : measure(star_[i]);
+      if (q < 0) {
+        fail_first_ = i;
+        return -1;
       }
       *good += q > kGood;
       if (sorted) sorted->push_back(q);
@@ -274,16 +292,24 @@ class Optimizer {
     lap *= k, ideal *= k;
     for (int it = 0; it < opt_.smooth_iterations; ++it) {
       const Vec2 targets[3] = {ideal, ideal_apex(star_[worst].b, star_[worst].c), lap};
+      // The worst may not drop at all: a candidate is measured only while above this.
+      const double floor = std::nextafter(best, -2.0);
       Vec2 best_p = cur;
       best_q_ = cur_q_;
+      // The chosen candidate's worst rho, count above kGood and worst triangle: measured
+      // in full (nothing below the floor), so the same as measuring the star there again.
+      double chosen = best;
+      int chosen_good = good;
+      std::size_t chosen_worst = worst;
       for (const Vec2 target : targets) {
         for (double step = 1; step >= 1.0 / 128; step *= 0.5) {
           const Vec2 p = cur + step * (target - cur);
           int g = 0;
-          // The worst may not drop at all; the sorted qualities must rise (leximin).
-          const double q = star_quality(p, std::nextafter(best, -2.0), &g, nullptr, &cand_q_);
+          std::size_t w = 0;
+          // The sorted qualities must rise (leximin).
+          const double q = star_quality(p, floor, &g, &w, &cand_q_);
           if (q >= best && leximin_better(cand_q_, cur_q_) && fair_trade(q - best, good - g, best, good0 - g)) {
-            if (leximin_better(cand_q_, best_q_)) best_q_ = cand_q_, best_p = p;
+            if (leximin_better(cand_q_, best_q_)) best_q_ = cand_q_, best_p = p, chosen = q, chosen_good = g, chosen_worst = w;
             break;
           }
         }
@@ -294,7 +320,8 @@ class Optimizer {
         break;
       }
       cur = best_p;
-      best = star_quality(cur, -2, &good, &worst, &cur_q_);
+      best = chosen, good = chosen_good, worst = chosen_worst;
+      cur_q_.swap(best_q_);
     }
     return cur;
   }
@@ -437,6 +464,7 @@ class Optimizer {
   std::vector<double> cur_q_, cand_q_, best_q_, region_q0_, region_q1_;
   std::vector<Side> stack_;
   std::vector<StarEdge> star_;
+  std::size_t fail_first_ = SIZE_MAX;  // the star's triangle that last fell below the floor
   std::vector<std::uint32_t> star_tris_;
   std::vector<VertexId> order_;
 };
