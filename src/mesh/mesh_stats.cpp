@@ -62,7 +62,9 @@ MeshStats compute_stats(const ModelMesh& mesh, const std::vector<const SizeAt3*>
   s.min_rho = 1;
   std::vector<EdgeKey> edges, border, seen_border, merged;
   std::vector<double> ratio;
-  constexpr std::size_t kBatch = 4096, kRhoChunk = 1 << 14;
+  // The qualities are measured a block of triangles at a time: a slot per triangle of the
+  // surface was 8 bytes a triangle at the statistics' peak (the ten-million-triangle run's).
+  constexpr std::size_t kBatch = 4096, kRhoChunk = 1 << 14, kRhoBlock = 64 * kRhoChunk;
   std::vector<double> rhos;
   std::size_t index = 0;
   for (const auto& [tag, sf] : mesh.surfaces) {
@@ -73,24 +75,27 @@ MeshStats compute_stats(const ModelMesh& mesh, const std::vector<const SizeAt3*>
     // (A named reference: a lambda may not capture a structured binding before C++20's
     // P1091 in clang 15.)
     const auto& triangles = sf.triangles;
-    rhos.resize(triangles.size());
-    parallel_for_chunks(threads, triangles.size(), kRhoChunk, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t k = begin; k < end; ++k) {
-        const auto& t = triangles[k];
-        rhos[k] = rho(mesh.nodes[t[0]].xyz, mesh.nodes[t[1]].xyz, mesh.nodes[t[2]].xyz);
+    for (std::size_t first = 0; first < triangles.size(); first += kRhoBlock) {
+      const std::size_t count = std::min(kRhoBlock, triangles.size() - first);
+      rhos.resize(count);
+      parallel_for_chunks(threads, count, kRhoChunk, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t k = begin; k < end; ++k) {
+          const auto& t = triangles[first + k];
+          rhos[k] = rho(mesh.nodes[t[0]].xyz, mesh.nodes[t[1]].xyz, mesh.nodes[t[2]].xyz);
+        }
+      });
+      for (std::size_t k = 0; k < count; ++k) {
+        const auto& t = triangles[first + k];
+        const double r = rhos[k];
+        sum += r;
+        if (r < s.min_rho || s.min_rho_surface == 0) {
+          s.min_rho = std::min(s.min_rho, r);
+          s.min_rho_surface = tag;
+          s.min_rho_at = (mesh.nodes[t[0]].xyz + mesh.nodes[t[1]].xyz + mesh.nodes[t[2]].xyz) / 3.0;
+        }
+        if (r > 0.9) ++good;
+        ++s.triangles;
       }
-    });
-    for (std::size_t k = 0; k < sf.triangles.size(); ++k) {
-      const auto& t = sf.triangles[k];
-      const double r = rhos[k];
-      sum += r;
-      if (r < s.min_rho || s.min_rho_surface == 0) {
-        s.min_rho = std::min(s.min_rho, r);
-        s.min_rho_surface = tag;
-        s.min_rho_at = (mesh.nodes[t[0]].xyz + mesh.nodes[t[1]].xyz + mesh.nodes[t[2]].xyz) / 3.0;
-      }
-      if (r > 0.9) ++good;
-      ++s.triangles;
     }
     for (const auto& q : sf.quads) {
       const double qq = quad_quality(mesh.nodes[q[0]].xyz, mesh.nodes[q[1]].xyz, mesh.nodes[q[2]].xyz, mesh.nodes[q[3]].xyz);
