@@ -899,11 +899,10 @@ std::vector<NearMiss> round_near_misses(Work& w) {
   return near;
 }
 
-// One round of automatic closures: the narrowest clean cut of each loop. False: none left.
-bool close_round(Work& w, std::vector<RepairEntry>& log) {
-  const double W = w.opt.min_width;
-  const double R = w.opt.radius;
-  // The round-start polygons and widths: those of loops unchanged since the last round kept.
+// The round-start polygons and widths (Work::polys, width): those of loops unchanged since
+// the last round kept.
+void round_polygons(Work& w) {
+  const double W = w.opt.min_width, R = w.opt.radius;
   w.polys.resize(w.flat.size());
   w.width.resize(w.flat.size());
   for (std::size_t l = 0; l < w.flat.size(); ++l) {
@@ -923,12 +922,13 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
     f.fresh = false;
     ++w.stats.polygons_made;
   }
+}
+
+// The round's candidates, narrowest first: near misses of facing segments closer than the
+// width there, two parts of one ring only when the way round is much longer.
+std::vector<Candidate> round_candidates(Work& w) {
+  const double W = w.opt.min_width, R = w.opt.radius;
   const std::vector<std::vector<Vec2>>& polys = w.polys;
-  // Two parts of one ring: a passage only when the way round between them is much longer
-  // than the way across (passage_on_one_ring).
-  auto passage_on_one_ring = [&](std::uint32_t l, std::uint32_t sa, std::uint32_t sb, double d) {
-    return coast::passage_on_one_ring(w, w.flat[l], sa, sb, d);
-  };
   std::vector<Candidate> cands;
   for (const NearMiss& m : round_near_misses(w)) {
     const auto& pa = polys[m.loop_a];
@@ -942,116 +942,64 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
     if (!(d < (w.opt.width_at ? passage_width_at(w.opt, unit_sphere().lonlat_from_param(mid)) : W) *
                   (1 - kWidthTolerance)))
       continue;
-    if (m.loop_a == m.loop_b && !passage_on_one_ring(m.loop_a, m.seg_a, m.seg_b, d)) continue;
+    if (m.loop_a == m.loop_b && !passage_on_one_ring(w, w.flat[m.loop_a], m.seg_a, m.seg_b, d)) continue;
     cands.push_back({d, m.loop_a, m.seg_a, m.loop_b, m.seg_b, 0.25 * (a0 + a1 + b0 + b1)});
   }
   std::stable_sort(cands.begin(), cands.end(), [](const Candidate& x, const Candidate& y) { return x.width < y.width; });
-  // The round's segments as they were at its start: the cuts made since only replaced two
-  // segments by two dams (in `made`) or dropped water, so checking against the start's
-  // segments too is the same or stricter (a stricter refusal is retried next round).
-  SegmentGrid grid(polys);
-  auto near = [&](Vec2 lo, Vec2 hi, auto&& f) { return grid.any_near(lo, hi, f); };
-  std::vector<std::pair<Vec2, Vec2>> made;
-  struct Refine {
-    std::uint32_t loop;
-    TreeNode from_t, to_t;          // a refused cut's segment: its ends' rope points
-    std::uint32_t from, to;         // and nodes
-    Vec2 o0, o1;                    // the other segment of the cut
+  return cands;
+}
+
+// A dam end at a corner sharper than the mesh can follow (a coast point the deviation
+// bound put back next to the mouth of an inlet, and the dam nearly doubling back along the
+// coast): the nearest clean cut without such a corner, segments up to kDamShiftReach from
+// kept segments sa of la and sb of lb (nearest first, in a fixed order); none: nullopt.
+template <class Near>
+std::optional<std::pair<std::size_t, std::size_t>> unsharp_cut(Work& w, std::uint32_t la, std::size_t sa,
+                                                              std::uint32_t lb, std::size_t sb, Near&& near,
+                                                              const std::vector<std::pair<Vec2, Vec2>>& made) {
+  const std::size_t ka = w.flat[la].size(), kb = w.flat[lb].size();
+  const auto shifted = [](std::size_t j, int d, std::size_t k) {
+    const long kl = static_cast<long>(k);
+    return static_cast<std::size_t>(((static_cast<long>(j) + d) % kl + kl) % kl);
   };
-  std::vector<Refine> refine;
-  std::map<std::uint32_t, ChainTracker> chains;   // per round-start loop cut this round
-  bool any = false;
-  for (const Candidate& c : cands) {
-    const auto& pa = polys[c.la];
-    const auto& pb = polys[c.lb];
-    const Vec2 a0 = pa[c.sa], a1 = pa[(c.sa + 1) % pa.size()];
-    const Vec2 b0 = pb[c.sb], b1 = pb[(c.sb + 1) % pb.size()];
-    // Its segments where they are now: as found, or in the loops a cut made this round
-    // (where the one-ring test is made again, as the next round would).
-    const auto where = [&](std::uint32_t l, std::uint32_t j, Vec2 s0, Vec2 s1) {
-      if (!w.flat[l].dead) return std::optional<std::pair<std::uint32_t, std::uint32_t>>{{l, j}};
-      auto it = chains.find(l);
-      if (it == chains.end()) it = chains.emplace(l, ChainTracker(l, polys[l].size())).first;
-      return follow_find(w, l, j, s0, s1, it->second);
-    };
-    const auto ra = where(c.la, c.sa, a0, a1), rb = where(c.lb, c.sb, b0, b1);
-    if (!ra || !rb) continue;
-    const auto [la, sa] = *ra;
-    const auto [lb, sb] = *rb;
-    const bool followed = w.flat[c.la].dead || w.flat[c.lb].dead;
-    if (followed && la == lb && (sa == sb || !passage_on_one_ring(la, sa, sb, c.width))) continue;
-    if (w.opt.keep_passages && la != lb) continue;   // a strait between two coasts
-    if (w.gate_closed(a0, b0)) continue;              // a passage kept open
-    const bool clean = cut_is_clean_near(near, a0, a1, b0, b1, made);
-    // A dam end at a corner sharper than the mesh can follow (a coast point the deviation
-    // bound put back next to the mouth of an inlet, and the dam nearly doubling back
-    // along the coast): the cut moves to the nearest clean one without such a corner
-    // (segments up to kDamShiftReach away, nearest first, in a fixed order); without one
-    // it is made as found and the wedge of water at the sharp end is cut off where it can
-    // be (trim_dam_wedges), else the mesh reports the corner.
-    std::size_t sa_cut = sa, sb_cut = sb;
-    bool sharp = clean && sharp_dam_end(w, la, sa, lb, sb) >= 0;
-    if (sharp) {
-      const std::size_t ka = w.flat[la].size(), kb = w.flat[lb].size();
-      bool found = false;
-      for (int reach = 1; reach <= kDamShiftReach && !found; ++reach)
-        for (int da = -reach; da <= reach && !found; ++da)
-          for (int db = -reach; db <= reach && !found; ++db) {
-            if (std::max(std::abs(da), std::abs(db)) != reach) continue;   // the ring at this reach
-            const auto shifted = [](std::size_t j, int d, std::size_t k) {
-              const long kl = static_cast<long>(k);
-              return static_cast<std::size_t>(((static_cast<long>(j) + d) % kl + kl) % kl);
-            };
-            const std::size_t ta = shifted(sa, da, ka), tb = shifted(sb, db, kb);
-            // On one loop the two segments must stay apart (a cut of neighbours is no cut).
-            if (la == lb && (ta == tb || (ta + 1) % ka == tb || (tb + 1) % ka == ta)) continue;
-            const FlatLoop& fa = w.flat[la];
-            const FlatLoop& fb = w.flat[lb];
-            if (w.gate_closed(fa.p(ta), fb.p(tb)) ||
-                !cut_is_clean_near(near, fa.p(ta), fa.p(ta + 1), fb.p(tb), fb.p(tb + 1), made) ||
-                sharp_dam_end(w, la, ta, lb, tb) >= 0)
-              continue;
-            sa_cut = ta, sb_cut = tb, found = true;
-          }
-      sharp = !found;
-    }
-    if (!clean) {
-      // Long segments at a pinch (a 30 m strait between 2 km segments) make no clean
-      // quad: their original points within W of the other side are put back at the
-      // round's end and the place is tried again, so that a passage narrower than W is
-      // not left open for that (KeepPassages = 0: every such passage is to be closed).
-      if (!w.opt.keep_passages) {
+  for (int reach = 1; reach <= kDamShiftReach; ++reach)
+    for (int da = -reach; da <= reach; ++da)
+      for (int db = -reach; db <= reach; ++db) {
+        if (std::max(std::abs(da), std::abs(db)) != reach) continue;   // the ring at this reach
+        const std::size_t ta = shifted(sa, da, ka), tb = shifted(sb, db, kb);
+        // On one loop the two segments must stay apart (a cut of neighbours is no cut).
+        if (la == lb && (ta == tb || (ta + 1) % ka == tb || (tb + 1) % ka == ta)) continue;
         const FlatLoop& fa = w.flat[la];
         const FlatLoop& fb = w.flat[lb];
-        refine.push_back({la, fa.tree_node(sa), fa.tree_node(sa + 1), fa.id(sa), fa.id(sa + 1), b0, b1});
-        refine.push_back({lb, fb.tree_node(sb), fb.tree_node(sb + 1), fb.id(sb), fb.id(sb + 1), a0, a1});
+        if (w.gate_closed(fa.p(ta), fb.p(tb)) ||
+            !cut_is_clean_near(near, fa.p(ta), fa.p(ta + 1), fb.p(tb), fb.p(tb + 1), made) ||
+            sharp_dam_end(w, la, ta, lb, tb) >= 0)
+          continue;
+        return std::pair{ta, tb};
       }
-      continue;
-    }
-    if (w.opt.keep_passages && !cut_fills_dead_end(w, la, sa_cut, sb_cut)) continue;   // a passage
-    made.push_back({w.flat[la].p(sa_cut), w.flat[lb].p(sb_cut + 1)});
-    made.push_back({w.flat[lb].p(sb_cut), w.flat[la].p(sa_cut + 1)});
-    const DamInfo info = info_of(w, w.flat[la].node(sa_cut));
-    const std::array<TreeNode, 4> ends{w.flat[la].tree_node(sa_cut), w.flat[la].tree_node(sa_cut + 1),
-                                       w.flat[lb].tree_node(sb_cut), w.flat[lb].tree_node(sb_cut + 1)};
-    const CutResult r = cut(w, la, sa_cut, lb, sb_cut);
-    std::size_t dropped = 0;
-    for (std::uint32_t l : r.new_loops) {
-      drop_if_narrow(w, l, log);
-      dropped += w.flat[l].dead;
-      if (sharp && !w.flat[l].dead) trim_dam_wedges(w, w.flat[l], ends, near, made);
-    }
-    if (dropped == 0)   // a cut that only trims narrow water is listed as NarrowWater
-      log.push_back({RepairKind::ClosedPassage, info.record, info.id, unit_sphere().lonlat_from_param(c.where), c.width});
-    any = true;
-  }
-  // The refused cuts' segments: their original points kept (node indices are those of
-  // the loops as they are now; a loop a cut replaced since is skipped).
-  // Only where the original points cross nothing: not the round's segments (but the one
-  // they replace), the dams made, the points put back before, nor themselves (the source
-  // may cross itself where the coarse segment did not).
+  return std::nullopt;
+}
+
+// A cut refused for not being clean: one of its segments (its end points' rope points and
+// nodes, in its loop then) and the other segment.
+struct RefusedCut {
+  std::uint32_t loop;
+  TreeNode from_t, to_t;
+  std::uint32_t from, to;
+  Vec2 o0, o1;
+};
+
+// The refused cuts' segments: their original points within W of the other segment kept
+// (a loop a cut replaced since is skipped), only where those cross nothing: not the round's
+// segments (but the one they replace), the dams made, the points put back before, nor
+// themselves (the source may cross itself where the coarse segment did not). Whether any
+// point was put back.
+bool put_back_refused(Work& w, const std::vector<RefusedCut>& refused, SegmentGrid& grid,
+                      const std::vector<std::pair<Vec2, Vec2>>& made) {
+  const double W = w.opt.min_width, R = w.opt.radius;
+  bool any = false;
   std::vector<std::pair<Vec2, Vec2>> put_back;
-  for (const auto& [l, from_t, to_t, from, to, o0, o1] : refine) {
+  for (const auto& [l, from_t, to_t, from, to, o0, o1] : refused) {
     FlatLoop& f = w.flat[l];
     if (f.dead) continue;
     std::vector<std::uint32_t> run;   // the original points within W of the other segment
@@ -1085,6 +1033,86 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
     any = true;
   }
   return any;
+}
+
+// One round of automatic closures: the narrowest clean cut of each loop. False: none left.
+bool close_round(Work& w, std::vector<RepairEntry>& log) {
+  round_polygons(w);
+  const std::vector<std::vector<Vec2>>& polys = w.polys;
+  const std::vector<Candidate> cands = round_candidates(w);
+  // The round's segments as they were at its start: the cuts made since only replaced two
+  // segments by two dams (in `made`) or dropped water, so checking against the start's
+  // segments too is the same or stricter (a stricter refusal is retried next round).
+  SegmentGrid grid(polys);
+  auto near = [&](Vec2 lo, Vec2 hi, auto&& f) { return grid.any_near(lo, hi, f); };
+  std::vector<std::pair<Vec2, Vec2>> made;
+  std::vector<RefusedCut> refused;
+  std::map<std::uint32_t, ChainTracker> chains;   // per round-start loop cut this round
+  bool any = false;
+  for (const Candidate& c : cands) {
+    const auto& pa = polys[c.la];
+    const auto& pb = polys[c.lb];
+    const Vec2 a0 = pa[c.sa], a1 = pa[(c.sa + 1) % pa.size()];
+    const Vec2 b0 = pb[c.sb], b1 = pb[(c.sb + 1) % pb.size()];
+    // Its segments where they are now: as found, or in the loops a cut made this round
+    // (where the one-ring test is made again, as the next round would).
+    const auto where = [&](std::uint32_t l, std::uint32_t j, Vec2 s0, Vec2 s1) {
+      if (!w.flat[l].dead) return std::optional<std::pair<std::uint32_t, std::uint32_t>>{{l, j}};
+      auto it = chains.find(l);
+      if (it == chains.end()) it = chains.emplace(l, ChainTracker(l, polys[l].size())).first;
+      return follow_find(w, l, j, s0, s1, it->second);
+    };
+    const auto ra = where(c.la, c.sa, a0, a1), rb = where(c.lb, c.sb, b0, b1);
+    if (!ra || !rb) continue;
+    const auto [la, sa] = *ra;
+    const auto [lb, sb] = *rb;
+    const bool followed = w.flat[c.la].dead || w.flat[c.lb].dead;
+    if (followed && la == lb && (sa == sb || !passage_on_one_ring(w, w.flat[la], sa, sb, c.width))) continue;
+    if (w.opt.keep_passages && la != lb) continue;   // a strait between two coasts
+    if (w.gate_closed(a0, b0)) continue;              // a passage kept open
+    const bool clean = cut_is_clean_near(near, a0, a1, b0, b1, made);
+    // A dam end at a corner sharper than the mesh can follow: the cut moves to the nearest
+    // clean one without such a corner (unsharp_cut); without one it is made as found and
+    // the wedge of water at the sharp end is cut off where it can be (trim_dam_wedges),
+    // else the mesh reports the corner.
+    std::size_t sa_cut = sa, sb_cut = sb;
+    bool sharp = clean && sharp_dam_end(w, la, sa, lb, sb) >= 0;
+    if (sharp) {
+      const auto moved = unsharp_cut(w, la, sa, lb, sb, near, made);
+      if (moved) std::tie(sa_cut, sb_cut) = *moved;
+      sharp = !moved;
+    }
+    if (!clean) {
+      // Long segments at a pinch (a 30 m strait between 2 km segments) make no clean
+      // quad: their original points within W of the other side are put back at the
+      // round's end and the place is tried again, so that a passage narrower than W is
+      // not left open for that (KeepPassages = 0: every such passage is to be closed).
+      if (!w.opt.keep_passages) {
+        const FlatLoop& fa = w.flat[la];
+        const FlatLoop& fb = w.flat[lb];
+        refused.push_back({la, fa.tree_node(sa), fa.tree_node(sa + 1), fa.id(sa), fa.id(sa + 1), b0, b1});
+        refused.push_back({lb, fb.tree_node(sb), fb.tree_node(sb + 1), fb.id(sb), fb.id(sb + 1), a0, a1});
+      }
+      continue;
+    }
+    if (w.opt.keep_passages && !cut_fills_dead_end(w, la, sa_cut, sb_cut)) continue;   // a passage
+    made.push_back({w.flat[la].p(sa_cut), w.flat[lb].p(sb_cut + 1)});
+    made.push_back({w.flat[lb].p(sb_cut), w.flat[la].p(sa_cut + 1)});
+    const DamInfo info = info_of(w, w.flat[la].node(sa_cut));
+    const std::array<TreeNode, 4> ends{w.flat[la].tree_node(sa_cut), w.flat[la].tree_node(sa_cut + 1),
+                                       w.flat[lb].tree_node(sb_cut), w.flat[lb].tree_node(sb_cut + 1)};
+    const CutResult r = cut(w, la, sa_cut, lb, sb_cut);
+    std::size_t dropped = 0;
+    for (std::uint32_t l : r.new_loops) {
+      drop_if_narrow(w, l, log);
+      dropped += w.flat[l].dead;
+      if (sharp && !w.flat[l].dead) trim_dam_wedges(w, w.flat[l], ends, near, made);
+    }
+    if (dropped == 0)   // a cut that only trims narrow water is listed as NarrowWater
+      log.push_back({RepairKind::ClosedPassage, info.record, info.id, unit_sphere().lonlat_from_param(c.where), c.width});
+    any = true;
+  }
+  return put_back_refused(w, refused, grid, made) || any;
 }
 
 // Inserts a kept node at uv point x on kept segment j of loop f (its original points

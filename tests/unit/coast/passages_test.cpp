@@ -415,11 +415,12 @@ TEST_CASE("passages: a 30 m pinch between long coarse segments is closed (KeepPa
 
 namespace {
 
-// A sea (lon -1..1, lat 0..0.5, counter-clockwise: water on the left) whose south coast has
+// A sea (lon -1..1, lat 0..north, counter-clockwise: water on the left) whose south coast has
 // a dead-end inlet 0.2 degrees deep at each of `centres`: the one at `wide` three times
 // kPassW wide, the others kPassW. Points every 0.0005 degrees, every 20th kept (and the
 // corners), so that the loop has 20 times more points than its polygon.
-std::pair<std::vector<WorkCurve>, std::vector<WorkLoop>> comb_loop(const std::vector<double>& centres, double wide) {
+std::pair<std::vector<WorkCurve>, std::vector<WorkLoop>> comb_loop(const std::vector<double>& centres, double wide,
+                                                                    double north = 0.5) {
   const geo::PolarSphere ps({0, 0, 0}, 1.0);
   WorkCurve c;
   c.periodic = true;
@@ -439,7 +440,7 @@ std::pair<std::vector<WorkCurve>, std::vector<WorkLoop>> comb_loop(const std::ve
     for (geo::LonLat p : {geo::LonLat{x - half, 0}, {x - half, -0.2}, {x + half, -0.2}, {x + half, 0}})
       corners.push_back(p);
   }
-  for (geo::LonLat p : {geo::LonLat{1, 0}, {1, 0.5}, {-1, 0.5}}) corners.push_back(p);
+  for (geo::LonLat p : {geo::LonLat{1, 0}, {1, north}, {-1, north}}) corners.push_back(p);
   for (std::size_t i = 0; i < corners.size(); ++i) line(corners[i], corners[(i + 1) % corners.size()]);
   WorkLoop l;
   l.curves = {0};
@@ -454,8 +455,8 @@ struct CombRun {
   std::size_t left_in_narrow = 0, left_in_wide = 0;   // points below lat -0.025 in the inlets after
 };
 
-CombRun comb_run(const std::vector<double>& centres, double wide) {
-  auto [curves, loops] = comb_loop(centres, wide);
+CombRun comb_run(const std::vector<double>& centres, double wide, double north = 0.5) {
+  auto [curves, loops] = comb_loop(centres, wide, north);
   CombRun r;
   r.points = curves[0].full.size();
   PassageOptions o;
@@ -503,6 +504,22 @@ TEST_CASE("passages: closing many inlets of one loop reads each of its points a 
   std::sort(reference.begin(), reference.end());
   CHECK(all.closures.size() == reference.size());
   CHECK(all.closures == reference);
+}
+
+TEST_CASE("passages: a cut's work on the kept points does not grow with the loop's size") {
+  // The forty inlets of the test above, on a sea 1 and 40 degrees deep: 44,000 and 200,000
+  // points, 2,200 and 10,000 kept. Each cut and dead-end test once copied the loop's kept
+  // points (three times its size per cut); the ropes' work per cut grows with log n only.
+  std::vector<double> centres;
+  for (int k = 0; k < 40; ++k) centres.push_back(-0.78 + 0.04 * k);
+  const CombRun shallow = comb_run(centres, centres[17], 1.0), deep = comb_run(centres, centres[17], 40.0);
+  REQUIRE(shallow.stats.cuts >= 39);
+  CHECK(deep.closures == shallow.closures);
+  const double per_cut_shallow = static_cast<double>(shallow.stats.kept_visits) / static_cast<double>(shallow.stats.cuts);
+  const double per_cut_deep = static_cast<double>(deep.stats.kept_visits) / static_cast<double>(deep.stats.cuts);
+  MESSAGE("kept points visited per cut: ", per_cut_shallow, " at ", shallow.points, " points, ", per_cut_deep, " at ",
+          deep.points);
+  CHECK(per_cut_deep < 1.5 * per_cut_shallow);
 }
 
 namespace {
