@@ -63,7 +63,7 @@ long long Interpreter::to_int(double v, SourceRange r) {
   // Gmsh converts with a C (int) cast; values outside the exactly
   // representable integers are refused instead of being undefined behaviour.
   if (!(std::fabs(v) < 9007199254740992.0))
-    fail_fmt(r, Diag::InvalidOperation, fmt::format("value {} is not a valid integer", format_g(v)));
+    fail(r, Diag::NotAnInteger, format_g(v));
   return static_cast<long long>(v);
 }
 
@@ -78,9 +78,9 @@ std::string Interpreter::resolve_name(const Name& n) {
 double Interpreter::eval_number(ExprId e) {
   const Value v = eval(e);
   if (!v.is_numeric())
-    fail_fmt(ast_.expr(e).range, Diag::WrongType, fmt::format("expected a number, found {}", kind_phrase(v)));
+    fail(ast_.expr(e).range, Diag::TypeExpectedNumber, kind_phrase(v));
   if (v.nums().empty())
-    fail_fmt(ast_.expr(e).range, Diag::WrongType, "expected a number, found an empty list");
+    fail(ast_.expr(e).range, Diag::TypeExpectedNumber, std::string_view("an empty list"));
   return v.nums()[0];
 }
 
@@ -88,7 +88,7 @@ std::string Interpreter::eval_string(ExprId e) {
   if (std::string name; physical_group_name(*this, e, name)) return name;
   const Value v = eval(e);
   if (!v.is_string())
-    fail_fmt(ast_.expr(e).range, Diag::WrongType, fmt::format("expected a string, found {}", kind_phrase(v)));
+    fail(ast_.expr(e).range, Diag::TypeExpectedString, kind_phrase(v));
   if (v.kind() == Value::Kind::StringList) return join_lines(v.strs());
   return v.strs()[0];
 }
@@ -106,7 +106,7 @@ Value Interpreter::eval_list_arg(ExprId e) {
 std::vector<double> Interpreter::eval_numbers(ExprId e) {
   Value v = eval(e);
   if (!v.is_numeric())
-    fail_fmt(ast_.expr(e).range, Diag::WrongType, fmt::format("expected numbers, found {}", kind_phrase(v)));
+    fail(ast_.expr(e).range, Diag::TypeExpectedNumbers, kind_phrase(v));
   return std::move(v.nums());
 }
 
@@ -117,7 +117,7 @@ Value Interpreter::eval(ExprId id) {
       [&](const auto& n) -> Value {
         using T = std::decay_t<decltype(n)>;
         if constexpr (std::is_same_v<T, ErrorExpr>) {
-          fail_fmt(e.range, Diag::InvalidOperation, "cannot evaluate an expression with a syntax error");
+          fail(e.range, Diag::EvalSyntaxError);
         } else if constexpr (std::is_same_v<T, NumberExpr>) {
           return Value::number(n.value);
         } else if constexpr (std::is_same_v<T, StringExpr>) {
@@ -208,12 +208,12 @@ Value Interpreter::eval_var(const Expr& e, const VarExpr& v) {
   if (const NumSymbol* sym = symbols_.find_num(name)) {
     // A list used as a scalar gives its element 0 (Gmsh).
     if (sym->values.empty())
-      fail_fmt(e.range, Diag::WrongType, fmt::format("'{}' is an empty list, not a number", name));
+      fail(e.range, Diag::TypeEmptyListNotNumber, name);
     return Value::number(sym->values[0]);
   }
   if (const auto* strs = symbols_.find_str(name)) {
     if (strs->empty())
-      fail_fmt(e.range, Diag::WrongType, fmt::format("'{}' is an empty string list", name));
+      fail(e.range, Diag::TypeEmptyStringList, name);
     return Value::string((*strs)[0]);
   }
   fail_fmt(e.range, Diag::UnknownVariable, name, unknown_name_hint(name));
@@ -257,8 +257,7 @@ Value Interpreter::eval_index(const Expr& e, const Name& n, ExprId index) {
 Value Interpreter::eval_unary(const Expr& e, const UnaryExpr& u) {
   Value v = eval(u.operand);
   if (!v.is_numeric())
-    fail_fmt(e.range, Diag::WrongType,
-             fmt::format("operator '{}' needs a number, found {}", op_text(u.op), kind_phrase(v)));
+    fail(e.range, Diag::TypeOperatorOperand, op_text(u.op), kind_phrase(v));
   for (double& x : v.nums()) {
     if (u.op == Tok::Minus) x = -x;
     else if (u.op == Tok::Not) x = (x == 0) ? 1 : 0;
@@ -287,9 +286,7 @@ Value Interpreter::eval_binary(const Expr& e, const BinaryExpr& b) {
 
 Value Interpreter::apply_binary(const Expr& e, const BinaryExpr& b, const Value& l, const Value& r) {
   if (!l.is_numeric() || !r.is_numeric())
-    fail_fmt(e.range, Diag::WrongType,
-             fmt::format("operator '{}' needs numbers, found {} and {}", op_text(b.op), kind_phrase(l),
-                         kind_phrase(r)));
+    fail(e.range, Diag::TypeOperatorOperands, op_text(b.op), kind_phrase(l), kind_phrase(r));
   const SourceRange rr = ast_.expr(b.rhs).range;
   const SourceRange lr = ast_.expr(b.lhs).range;
   auto apply = [&](double x, double y) -> double {
@@ -311,7 +308,7 @@ Value Interpreter::apply_binary(const Expr& e, const BinaryExpr& b, const Value&
       case Tok::ShiftRight: {
         const long long xi = to_int(x, lr), yi = to_int(y, rr);
         if (yi < 0 || yi > 52)
-          fail_fmt(rr, Diag::InvalidOperation, fmt::format("shift count {} is outside 0..52", yi));
+          fail(rr, Diag::ShiftCountRange, yi);
         if (b.op == Tok::ShiftRight) return static_cast<double>(xi >> yi);
         return static_cast<double>(xi) * std::ldexp(1.0, static_cast<int>(yi));
       }
@@ -326,7 +323,7 @@ Value Interpreter::apply_binary(const Expr& e, const BinaryExpr& b, const Value&
       case Tok::AmpAmp: return (x != 0) && (y != 0);
       case Tok::PipePipe: return (x != 0) || (y != 0);
       default:
-        fail_fmt(e.range, Diag::InvalidOperation, fmt::format("unknown operator '{}'", op_text(b.op)));
+        fail(e.range, Diag::UnknownOperator, op_text(b.op));
     }
   };
   const bool ll = l.kind() == Value::Kind::List, rl = r.kind() == Value::Kind::List;
@@ -335,9 +332,7 @@ Value Interpreter::apply_binary(const Expr& e, const BinaryExpr& b, const Value&
   const auto& a = l.nums();
   const auto& c = r.nums();
   if (ll && rl && a.size() != c.size())
-    fail_fmt(e.range, Diag::ListSizeMismatch,
-             fmt::format("operator '{}' on lists of different sizes ({} and {})", op_text(b.op), a.size(),
-                         c.size()));
+    fail(e.range, Diag::ListOperandSizes, op_text(b.op), a.size(), c.size());
   const std::size_t n = ll ? a.size() : c.size();
   std::vector<double> out(n);
   for (std::size_t i = 0; i < n; ++i) out[i] = apply(ll ? a[i] : a[0], rl ? c[i] : c[0]);
@@ -382,7 +377,7 @@ Value Interpreter::eval_list(const Expr& e, const ListExpr& l) {
       strs.insert(strs.end(), v.strs().begin(), v.strs().end());
     }
     if (!nums.empty() && !strs.empty())
-      fail_fmt(ast_.expr(item).range, Diag::WrongType, "a list cannot mix numbers and strings");
+      fail(ast_.expr(item).range, Diag::TypeMixedList);
     if (nums.size() > settings_.limits.max_list_size)
       fail(e.range, Diag::LimitListLength, settings_.limits.max_list_size);
   }
@@ -398,11 +393,11 @@ Value Interpreter::eval_postfix(const Expr& e, const PostfixExpr& p) {
     NumSymbol* sym = symbols_.find_num(name);
     if (!sym) {
       if (symbols_.find_str(name))
-        fail_fmt(t.range, Diag::WrongType, fmt::format("'{}' is a string, not a number", name));
+        fail(t.range, Diag::TypeStringNotNumber, name);
       fail_fmt(t.range, Diag::UnknownVariable, name, unknown_name_hint(name));
     }
     if (sym->values.empty())
-      fail_fmt(t.range, Diag::WrongType, fmt::format("'{}' is an empty list, not a number", name));
+      fail(t.range, Diag::TypeEmptyListNotNumber, name);
     const double old = sym->values[0];
     sym->values[0] = old + delta;
     return Value::number(old);
@@ -411,7 +406,7 @@ Value Interpreter::eval_postfix(const Expr& e, const PostfixExpr& p) {
     const std::string name = resolve_name(ix->name);
     eval_index(t, ix->name, ix->index);   // checks existence and range
     NumSymbol* sym = symbols_.find_num(name);
-    if (!sym) fail_fmt(t.range, Diag::WrongType, fmt::format("'{}' is not a numeric list", name));
+    if (!sym) fail(t.range, Diag::TypeNotNumericList, name);
     const auto i = static_cast<std::size_t>(to_int(eval_number(ix->index), t.range));
     const double old = sym->values[i];
     sym->values[i] = old + delta;
@@ -424,7 +419,7 @@ Value Interpreter::eval_postfix(const Expr& e, const PostfixExpr& p) {
       fail_fmt(t.range, Diag::InvalidOptionValue, err);
     return Value::number(old);
   }
-  fail_fmt(e.range, Diag::InvalidOperation, "'++' and '--' need a variable, a list element or an option");
+  fail(e.range, Diag::IncDecExprTarget);
 }
 
 Value Interpreter::eval_call(const Expr& e, const CallExpr& c) {
@@ -448,7 +443,7 @@ Value Interpreter::eval_call(const Expr& e, const CallExpr& c) {
         } else if (const auto* w = std::get_if<WholeListExpr>(&x.node)) {
           args.push_back(Value::string(resolve_name(w->name)));
         } else {
-          fail_fmt(x.range, Diag::WrongType, fmt::format("'{}' needs a variable name", fn.name));
+          fail(x.range, Diag::TypeNeedsVariableName, fn.name);
         }
         break;
       }

@@ -103,13 +103,13 @@ void Interpreter::assign_option(const LValue& t, AffOp op, ExprId value, SourceR
     }
     case OptionKind::String: {
       if (op != AffOp::Assign)
-        fail_fmt(r, Diag::InvalidOperation, fmt::format("string option '{}' only takes '='", name));
+        fail(r, Diag::OptionOnlyAssign, std::string_view("string"), name);
       err = options_.set_string(name, eval_string(value));
       break;
     }
     case OptionKind::Color: {
       if (op != AffOp::Assign)
-        fail_fmt(r, Diag::InvalidOperation, fmt::format("color option '{}' only takes '='", name));
+        fail(r, Diag::OptionOnlyAssign, std::string_view("color"), name);
       Color c{0, 0, 0, 255};
       const Expr& ve = ast_.expr(value);
       // `= Red`: a colour name written as an identifier or a string.
@@ -134,7 +134,7 @@ void Interpreter::assign_option(const LValue& t, AffOp op, ExprId value, SourceR
     }
     case OptionKind::Box: {
       if (op != AffOp::Assign)
-        fail_fmt(r, Diag::InvalidOperation, fmt::format("box option '{}' only takes '='", name));
+        fail(r, Diag::OptionOnlyAssign, std::string_view("box"), name);
       const std::vector<double> v = eval_numbers(value);
       if (v.size() != 4)
         fail_fmt(vr, Diag::InvalidOptionValue,
@@ -182,8 +182,7 @@ void Interpreter::exec_assign(const Stmt& s, const AssignStmt& a) {
         if (it != list.end()) list.erase(it);
       }
     } else {
-      fail_fmt(s.range, Diag::InvalidOperation,
-               fmt::format("'{}' is not defined on the list '{}'", affop_text(a.op), name));
+      fail(s.range, Diag::OperatorOnList, affop_text(a.op), name);
     }
   };
 
@@ -203,8 +202,7 @@ void Interpreter::exec_assign(const Stmt& s, const AssignStmt& a) {
           cur.insert(cur.end(), strs.begin(), strs.end());
           symbols_.set_str(name, std::move(cur));
         } else {
-          fail_fmt(s.range, Diag::InvalidOperation,
-                   fmt::format("'{}' is not defined on strings", affop_text(a.op)));
+          fail(s.range, Diag::OperatorOnStrings, affop_text(a.op));
         }
         return;
       }
@@ -223,7 +221,7 @@ void Interpreter::exec_assign(const Stmt& s, const AssignStmt& a) {
           return;
         }
         if (symbols_.find_str(name))
-          fail_fmt(t.range, Diag::WrongType, fmt::format("'{}' is a string, not a number", name));
+          fail(t.range, Diag::TypeStringNotNumber, name);
         fail_fmt(t.range, Diag::UnknownVariable, name, "");
       }
       if (whole || sym->is_list || rhs_list) {
@@ -231,7 +229,7 @@ void Interpreter::exec_assign(const Stmt& s, const AssignStmt& a) {
         sym->is_list = true;
         return;
       }
-      if (v.nums().empty()) fail_fmt(vr, Diag::WrongType, "expected a number, found an empty list");
+      if (v.nums().empty()) fail(vr, Diag::TypeExpectedNumber, std::string_view("an empty list"));
       sym->values.resize(1);
       sym->values[0] = arith(sym->values[0], v.nums()[0]);
       return;
@@ -250,7 +248,7 @@ void Interpreter::exec_assign(const Stmt& s, const AssignStmt& a) {
         // Elements of a string list.
         const auto* old = symbols_.find_str(name);
         if (a.op != AffOp::Assign || !old || idx.size() != v.strs().size())
-          fail_fmt(s.range, Diag::WrongType, fmt::format("cannot assign strings to elements of '{}'", name));
+          fail(s.range, Diag::TypeStringsIntoElements, name);
         std::vector<std::string> cur = *old;
         for (std::size_t k = 0; k < idx.size(); ++k) {
           if (idx[k].first < 0 || static_cast<std::size_t>(idx[k].first) >= cur.size())
@@ -261,12 +259,11 @@ void Interpreter::exec_assign(const Stmt& s, const AssignStmt& a) {
         return;
       }
       if (v.nums().size() != idx.size())
-        fail_fmt(s.range, Diag::ListSizeMismatch,
-                 fmt::format("{} indices but {} values", idx.size(), v.nums().size()));
+        fail(s.range, Diag::ListIndicesValues, idx.size(), v.nums().size());
       NumSymbol* sym = symbols_.find_num(name);
       if (!sym) {
         if (symbols_.find_str(name))
-          fail_fmt(t.range, Diag::WrongType, fmt::format("'{}' is a string, not a numeric list", name));
+          fail(t.range, Diag::TypeStringNotNumericList, name);
         symbols_.set_num(name, NumSymbol{{}, true});   // a missing list is created
         sym = symbols_.find_num(name);
       } else if (!sym->is_list) {
@@ -295,7 +292,7 @@ void Interpreter::exec_incdec(const Stmt& s, const IncDecStmt& a) {
       const std::string name = option_name(t.option);
       const Value cur = read_option(t.option);
       if (cur.kind() != Value::Kind::Number)
-        fail_fmt(t.range, Diag::WrongType, fmt::format("'{}' is not a number option", name));
+        fail(t.range, Diag::TypeNotNumberOption, name);
       if (auto err = options_.set_number(name, cur.nums()[0] + delta); !err.empty())
         fail_fmt(s.range, Diag::InvalidOptionValue, err);
       return;
@@ -305,7 +302,7 @@ void Interpreter::exec_incdec(const Stmt& s, const IncDecStmt& a) {
       NumSymbol* sym = symbols_.find_num(name);
       if (!sym) fail_fmt(t.range, Diag::UnknownVariable, name, "");
       if (sym->is_list || sym->values.size() != 1)
-        fail_fmt(t.range, Diag::InvalidOperation, fmt::format("'++'/'--' on the list '{}'", name));
+        fail(t.range, Diag::IncDecOnList, name);
       sym->values[0] += delta;
       return;
     }
@@ -320,7 +317,7 @@ void Interpreter::exec_incdec(const Stmt& s, const IncDecStmt& a) {
       return;
     }
     default:
-      fail_fmt(s.range, Diag::InvalidOperation, "'++'/'--' needs a variable, an element or an option");
+      fail(s.range, Diag::IncDecTarget);
   }
 }
 

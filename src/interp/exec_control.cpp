@@ -27,6 +27,19 @@ struct PopGuard {
   ~PopGuard() { stack.pop_back(); }
 };
 
+// An included file the SourceManager did not load, at the Include's path.
+[[noreturn]] void fail_include_load(Interpreter& in, SourceRange r, const std::string& path,
+                                    const SourceManager::LoadResult& loaded) {
+  switch (loaded.failure) {
+    case SourceManager::LoadFailure::IsDirectory: in.fail(r, Diag::IncludeIsDirectory, path);
+    case SourceManager::LoadFailure::TooLarge: in.fail(r, Diag::IncludeTooLarge, path, SourceManager::kMaxFileMiB);
+    case SourceManager::LoadFailure::CannotRead: in.fail(r, Diag::IncludeCannotRead, path);
+    case SourceManager::LoadFailure::CannotOpen:
+    case SourceManager::LoadFailure::None: break;
+  }
+  in.fail(r, Diag::IncludeCannotOpen, path, loaded.reason);
+}
+
 }  // namespace
 
 Interpreter::Flow Interpreter::exec_if(const IfStmt& s) {
@@ -167,7 +180,7 @@ Interpreter::Flow Interpreter::exec_include(const Stmt& s, const IncludeStmt& in
   FileId file = sources_.find_loaded(path);
   if (!file.valid()) {
     const auto loaded = sources_.load_file(path);
-    if (!loaded.file.valid()) fail_fmt(r, Diag::IncludeFailed, loaded.error);
+    if (!loaded.file.valid()) fail_include_load(*this, r, path, loaded);
     file = loaded.file;
   }
   auto parsed = parsed_files_.find(file.value);

@@ -26,9 +26,9 @@ std::string Interpreter::format_args(ExprId format, const ExprList& args, Source
     SourceRange where = ast_.expr(format).range;
     if (res.arg_index >= 0 && static_cast<std::size_t>(res.arg_index) < origin.size())
       where = ast_.expr(origin[static_cast<std::size_t>(res.arg_index)]).range;
-    else if (res.error.rfind("too few", 0) == 0)
+    else if (res.kind == Diag::FormatTooFewArguments)
       where = r;
-    fail_fmt(where, Diag::FormatError, res.error);
+    fail_message(where, res.kind, std::move(res.error));
   }
   return std::move(res.text);
 }

@@ -10,7 +10,24 @@
 #include <fmt/format.h>
 
 namespace sm::interp {
+
+using lang::Diag;
+using lang::DiagFormat;
+using lang::format_diag;
+
 namespace {
+
+// Why a format failed: its Format* kind and that kind's message.
+struct FormatFailure {
+  Diag kind = Diag::kCount;
+  std::string message;
+  bool failed() const { return kind != Diag::kCount; }
+};
+
+template <class... Args>
+FormatFailure format_failure(std::type_identity_t<DiagFormat<Args...>> kind, const Args&... args) {
+  return {kind.kind(), format_diag<Args...>(kind, args...)};
+}
 
 // Widths and precisions beyond this are refused: a script must not be able to
 // ask snprintf for gigabytes with "%999999999g".
@@ -23,39 +40,40 @@ struct Directive {
   std::string spec;        // "%-8.3" + length-free conversion, ready for snprintf
 };
 
-// Parses the directive starting at fmt[pos] == '%'. Returns an error message or "".
-std::string parse_directive(std::string_view fmt, std::size_t pos, Directive& d) {
+// Parses the directive starting at fmt[pos] == '%'. Returns why it is refused, if it is.
+FormatFailure parse_directive(std::string_view fmt, std::size_t pos, Directive& d) {
   d.begin = pos;
   std::size_t i = pos + 1;
   std::string spec = "%";
   while (i < fmt.size() && std::string_view("-+ #0").find(fmt[i]) != std::string_view::npos)
     spec += fmt[i++];
-  auto read_number = [&](const char* what) -> std::string {
+  auto read_number = [&](std::string_view what) -> FormatFailure {
     long n = 0;
     while (i < fmt.size() && fmt[i] >= '0' && fmt[i] <= '9') {
       n = n * 10 + (fmt[i] - '0');
-      if (n > kMaxWidth) return fmt::format("format {} larger than {}", what, kMaxWidth);
+      if (n > kMaxWidth) return format_failure(Diag::FormatNumberTooLarge, what, kMaxWidth);
       spec += fmt[i++];
     }
-    return "";
+    return {};
   };
-  if (i < fmt.size() && fmt[i] == '*') return "'*' width is not supported in a format";
-  if (auto e = read_number("width"); !e.empty()) return e;
+  if (i < fmt.size() && fmt[i] == '*') return format_failure(Diag::FormatStarNotSupported, std::string_view("width"));
+  if (auto e = read_number("width"); e.failed()) return e;
   if (i < fmt.size() && fmt[i] == '.') {
     spec += fmt[i++];
-    if (i < fmt.size() && fmt[i] == '*') return "'*' precision is not supported in a format";
-    if (auto e = read_number("precision"); !e.empty()) return e;
+    if (i < fmt.size() && fmt[i] == '*')
+      return format_failure(Diag::FormatStarNotSupported, std::string_view("precision"));
+    if (auto e = read_number("precision"); e.failed()) return e;
   }
   // Length modifiers carry no meaning here: every number is a double.
   while (i < fmt.size() && std::string_view("hlLqjzt").find(fmt[i]) != std::string_view::npos) ++i;
-  if (i >= fmt.size()) return "incomplete '%' directive at the end of the format";
+  if (i >= fmt.size()) return format_failure(Diag::FormatIncompleteDirective);
   const char c = fmt[i];
   if (std::string_view("gGeEfFaAdiouxXcs").find(c) == std::string_view::npos)
-    return fmt::format("invalid conversion '%{}' in format", c);
+    return format_failure(Diag::FormatInvalidConversion, c);
   d.conv = c;
   d.end = i + 1;
   d.spec = spec;
-  return "";
+  return {};
 }
 
 bool is_int_conv(char c) { return std::string_view("diouxXc").find(c) != std::string_view::npos; }
@@ -69,21 +87,21 @@ std::string run_snprintf(const std::string& spec, auto value) {
   return out;
 }
 
-// Formats one directive with one argument; returns an error message or "".
-std::string format_one(const Directive& d, const FormatArg& arg, std::string& out) {
+// Formats one directive with one argument; returns why it cannot, if it cannot.
+FormatFailure format_one(const Directive& d, const FormatArg& arg, std::string& out) {
   if (d.conv == 's') {
     const auto* s = std::get_if<std::string>(&arg);
-    if (!s) return "'%s' expects a string argument, got a number";
+    if (!s) return format_failure(Diag::FormatStringExpected);
     out += run_snprintf(d.spec + "s", s->c_str());
-    return "";
+    return {};
   }
   const auto* v = std::get_if<double>(&arg);
-  if (!v) return fmt::format("'%{}' expects a number, got a string", d.conv);
+  if (!v) return format_failure(Diag::FormatNumberExpected, d.conv);
   if (is_int_conv(d.conv)) {
     // C printf semantics on the truncated value (Gmsh 4.8.4 passes a double
     // to "%d" and prints garbage).
     if (!std::isfinite(*v) || std::fabs(*v) >= 9.2e18)
-      return fmt::format("value {} does not fit the integer conversion '%{}'", format_g(*v), d.conv);
+      return format_failure(Diag::FormatIntegerOverflow, format_g(*v), d.conv);
     const auto iv = static_cast<long long>(*v);
     if (d.conv == 'd' || d.conv == 'i')
       out += run_snprintf(d.spec + "ll" + d.conv, iv);
@@ -91,10 +109,19 @@ std::string format_one(const Directive& d, const FormatArg& arg, std::string& ou
       out += run_snprintf(d.spec + "c", static_cast<int>(static_cast<unsigned char>(iv)));
     else
       out += run_snprintf(d.spec + "ll" + d.conv, static_cast<unsigned long long>(iv));
-    return "";
+    return {};
   }
   out += run_snprintf(d.spec + d.conv, *v);
-  return "";
+  return {};
+}
+
+FormatResult failed_result(FormatFailure f, int arg_index) {
+  FormatResult r;
+  r.ok = false;
+  r.kind = f.kind;
+  r.error = std::move(f.message);
+  r.arg_index = arg_index;
+  return r;
 }
 
 }  // namespace
@@ -112,11 +139,7 @@ FormatResult format_gmsh(std::string_view fmt, const std::vector<FormatArg>& arg
       continue;
     }
     Directive d;
-    if (auto e = parse_directive(fmt, i, d); !e.empty()) {
-      r.ok = false;
-      r.error = std::move(e);
-      return r;
-    }
+    if (auto e = parse_directive(fmt, i, d); e.failed()) return failed_result(std::move(e), -1);
     dirs.push_back(d);
     i = d.end - 1;
   }
@@ -137,29 +160,19 @@ FormatResult format_gmsh(std::string_view fmt, const std::vector<FormatArg>& arg
     }
     return r;
   }
-  if (args.size() < dirs.size()) {
-    r.ok = false;
-    r.error = fmt::format("too few arguments for the format: {} directive{} but {} argument{}",
-                          dirs.size(), dirs.size() == 1 ? "" : "s", args.size(),
-                          args.size() == 1 ? "" : "s");
-    return r;
-  }
+  auto plural = [](std::size_t n) { return std::string_view(n == 1 ? "" : "s"); };
+  if (args.size() < dirs.size())
+    return failed_result(
+        format_failure(Diag::FormatTooFewArguments, dirs.size(), plural(dirs.size()), args.size(), plural(args.size())),
+        -1);
   if (args.size() > dirs.size()) {
     const std::size_t extra = args.size() - dirs.size();
-    r.ok = false;
-    r.error = fmt::format("{} extra argument{} for the format", extra, extra == 1 ? "" : "s");
-    r.arg_index = static_cast<int>(dirs.size());
-    return r;
+    return failed_result(format_failure(Diag::FormatExtraArguments, extra, plural(extra)), static_cast<int>(dirs.size()));
   }
   std::size_t pos = 0;
   for (std::size_t k = 0; k < dirs.size(); ++k) {
     literal(pos, dirs[k].begin);
-    if (auto e = format_one(dirs[k], args[k], r.text); !e.empty()) {
-      r.ok = false;
-      r.error = std::move(e);
-      r.arg_index = static_cast<int>(k);
-      return r;
-    }
+    if (auto e = format_one(dirs[k], args[k], r.text); e.failed()) return failed_result(std::move(e), static_cast<int>(k));
     pos = dirs[k].end;
   }
   literal(pos, fmt.size());

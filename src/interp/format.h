@@ -8,6 +8,8 @@
 #include <variant>
 #include <vector>
 
+#include "lang/diag_format.h"
+
 namespace sm::interp {
 
 /// One Printf argument: a number, or a string (a native extension: Gmsh 4.8.4
@@ -17,7 +19,8 @@ using FormatArg = std::variant<double, std::string>;
 struct FormatResult {
   bool ok = true;
   std::string text;     ///< the formatted text when ok
-  std::string error;    ///< why it failed otherwise (lowercase, no period)
+  lang::Diag kind = lang::Diag::kCount;   ///< the Format* kind of diag_kinds.def when not ok
+  std::string error;    ///< why it failed otherwise: that kind's message
   int arg_index = -1;   ///< argument the error is about, -1 for the format itself
 };
 

@@ -16,6 +16,24 @@ namespace sm::interp {
 
 using namespace sm::lang;
 
+namespace {
+
+// The main script (a file or a buffer) the SourceManager did not load, by its name.
+void report_script_load(Diagnostics& diags, const std::string& name, const SourceManager::LoadResult& loaded) {
+  switch (loaded.failure) {
+    case SourceManager::LoadFailure::IsDirectory: diags.report(SourceRange{}, Diag::ScriptIsDirectory, name); return;
+    case SourceManager::LoadFailure::TooLarge:
+      diags.report(SourceRange{}, Diag::ScriptTooLarge, name, SourceManager::kMaxFileMiB);
+      return;
+    case SourceManager::LoadFailure::CannotRead: diags.report(SourceRange{}, Diag::ScriptCannotRead, name); return;
+    case SourceManager::LoadFailure::CannotOpen:
+    case SourceManager::LoadFailure::None: break;
+  }
+  diags.report(SourceRange{}, Diag::ScriptCannotOpen, name, loaded.reason);
+}
+
+}  // namespace
+
 Interpreter::Interpreter(SourceManager& sources, Diagnostics& diags, std::ostream& out,
                          RunSettings settings)
     : sources_(sources),
@@ -71,7 +89,7 @@ std::string Interpreter::preset_box(const std::string& name, const std::string& 
 RunStatus Interpreter::run_file(const std::string& path) {
   const auto loaded = sources_.load_file(path);
   if (!loaded.file.valid()) {
-    diags_.report(SourceRange{}, Diag::CannotOpenFile, loaded.error);
+    report_script_load(diags_, path, loaded);
     return RunStatus::Errors;
   }
   std::error_code ec;
@@ -84,7 +102,7 @@ RunStatus Interpreter::run_file(const std::string& path) {
 RunStatus Interpreter::run_buffer(const std::string& name, const std::string& text) {
   const auto loaded = sources_.add_buffer(name, text);
   if (!loaded.file.valid()) {
-    diags_.report(SourceRange{}, Diag::CannotOpenFile, loaded.error);
+    report_script_load(diags_, name, loaded);
     return RunStatus::Errors;
   }
   include_stack_.push_back(name);

@@ -1,4 +1,4 @@
-// SourceManager: loading files (errors as strings, size limit) and lazily built
+// SourceManager: loading files (failures as LoadFailure, size limit) and lazily built
 // per-file line tables for line:column lookups.
 #include "lang/source.h"
 
@@ -42,9 +42,9 @@ std::string canonical_path(const std::string& path) {
 
 SourceManager::LoadResult SourceManager::load_file(const std::string& path) {
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) return {FileId{}, "cannot read '" + path + "': is a directory"};
+  if (std::filesystem::is_directory(path, ec)) return {FileId{}, LoadFailure::IsDirectory, {}};
   std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (!f) return {FileId{}, "cannot open '" + path + "': " + std::strerror(errno)};
+  if (!f) return {FileId{}, LoadFailure::CannotOpen, std::strerror(errno)};
   base::note_input_file(path);
   std::string text;
   char buf[1 << 16];
@@ -59,21 +59,20 @@ SourceManager::LoadResult SourceManager::load_file(const std::string& path) {
   }
   const bool read_error = std::ferror(f) != 0;
   std::fclose(f);
-  if (too_big) return {FileId{}, "cannot load '" + path + "': larger than the 256 MiB limit for a script"};
-  if (read_error) return {FileId{}, "cannot read '" + path + "'"};
+  if (too_big) return {FileId{}, LoadFailure::TooLarge, {}};
+  if (read_error) return {FileId{}, LoadFailure::CannotRead, {}};
   LoadResult r = add_buffer(path, std::move(text));
   if (r.file.valid()) files_.back()->canonical = canonical_path(path);
   return r;
 }
 
 SourceManager::LoadResult SourceManager::add_buffer(std::string name, std::string text) {
-  if (text.size() > kMaxFileBytes)
-    return {FileId{}, "cannot load '" + name + "': larger than the 256 MiB limit for a script"};
+  if (text.size() > kMaxFileBytes) return {FileId{}, LoadFailure::TooLarge, {}};
   auto f = std::make_unique<File>();
   f->path = std::move(name);
   f->text = std::move(text);
   files_.push_back(std::move(f));
-  return {FileId{static_cast<std::uint32_t>(files_.size() - 1)}, {}};
+  return {FileId{static_cast<std::uint32_t>(files_.size() - 1)}, LoadFailure::None, {}};
 }
 
 const SourceManager::File& SourceManager::file(FileId f) const {

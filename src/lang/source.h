@@ -45,11 +45,17 @@ struct LineCol {
 /// token ranges into them stay valid for the manager's lifetime.
 class SourceManager {
  public:
-  static constexpr std::size_t kMaxFileBytes = std::size_t{256} << 20;
+
+  /// Why a file was not loaded; the caller words it (the kinds Script* and Include* of
+  /// diag_kinds.def) with the path it asked for.
+  enum class LoadFailure : std::uint8_t { None, IsDirectory, CannotOpen, TooLarge, CannotRead };
+  static constexpr std::size_t kMaxFileMiB = 256;
+  static constexpr std::size_t kMaxFileBytes = kMaxFileMiB << 20;
 
   struct LoadResult {
-    FileId file;        ///< valid on success
-    std::string error;  ///< non-empty on failure: "cannot open 'x.geo': No such file or directory"
+    FileId file;                               ///< valid on success
+    LoadFailure failure = LoadFailure::None;   ///< set on failure
+    std::string reason;                        ///< CannotOpen: the system's words ("No such file or directory")
   };
 
   SourceManager();
@@ -58,7 +64,7 @@ class SourceManager {
   SourceManager& operator=(const SourceManager&) = delete;
 
   /// Reads a file from disk; never throws. Files larger than kMaxFileBytes are
-  /// rejected with a message. `path` is kept as given for messages.
+  /// rejected (LoadFailure::TooLarge). `path` is kept as given for messages.
   LoadResult load_file(const std::string& path);
   /// Adds an in-memory buffer (tests, `-string`, generated text). Buffers
   /// larger than kMaxFileBytes are rejected like files.

@@ -293,16 +293,9 @@ MeshError repair_group(const geo::Model& model, const PlaneGroup& g, ModelMesh& 
       e.has_lonlat = true;
       e.where = {w.x * geo::kRadToDeg, w.y * geo::kRadToDeg};
     }
-    const std::string place = e.has_lonlat ? fmt::format("lon {:.6f}, lat {:.6f}", e.where.lon, e.where.lat)
-                                           : fmt::format("({}, {}, {})", e.xyz.x, e.xyz.y, e.xyz.z);
-    const std::uint32_t ca = br.error.curve_a, cb = br.error.curve_b;
-    if (kind == MeshErrorKind::Intersection)
-      e.message = ca == cb ? fmt::format("curve {} intersects itself near {}", ca, place)
-                           : fmt::format("curves {} and {} intersect near {}", ca, cb, place);
-    else if (kind == MeshErrorKind::DuplicatePoint)
-      e.message = fmt::format("curves {} and {} have distinct nodes at the same place near {}", ca, cb, place);
-    else
-      e.message = br.error.message;
+    // A crossing or a duplicate node is told by its kind, curves and place (the interpreter
+    // words it); any other failure keeps the recovery's own words.
+    if (kind != MeshErrorKind::Intersection && kind != MeshErrorKind::DuplicatePoint) e.message = br.error.message;
     return e;
   }
   if (br.splits == 0) return {};

@@ -90,7 +90,7 @@ std::string did_you_mean(std::string_view name, const std::vector<std::string>& 
 int coast_id(Interpreter& in, ExprId e) {
   const double v = in.eval_number(e);
   if (!std::isfinite(v) || std::abs(v) > 2147483647.0)
-    in.fail_fmt(in.ast().expr(e).range, Diag::WrongType, fmt::format("a coastline id must be an integer, not {}", v));
+    in.fail(in.ast().expr(e).range, Diag::TypeIdNotInteger, std::string_view("coastline"), v);
   return static_cast<int>(v);
 }
 
@@ -752,7 +752,7 @@ Value eval_coastline_query(Interpreter& in, ExprId e) {
     }
     for (double d : v.nums()) {
       if (!std::isfinite(d) || std::abs(d) > 2147483647.0)
-        in.fail_fmt(r, Diag::WrongType, fmt::format("a coastline id must be an integer, not {}", d));
+        in.fail(r, Diag::TypeIdNotInteger, std::string_view("coastline"), d);
       ids.emplace_back(static_cast<int>(d), r);
     }
   }

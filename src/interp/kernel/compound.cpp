@@ -67,16 +67,14 @@ std::optional<geo::DimTag> exec_compound_spline(Interpreter& in, const Stmt& s, 
   const double using_n = in.eval_number(n.using_n);
   const SourceRange at_n = in.ast().expr(n.using_n).range;
   if (!std::isfinite(using_n) || std::fabs(using_n) > 1e6)
-    in.fail_fmt(at_n, Diag::InvalidOperation, fmt::format("{:g} is not a number of intervals", using_n));
+    in.fail(at_n, Diag::CompoundIntervalsNotNumber, using_n);
   const int intervals = static_cast<int>(using_n);   // Gmsh: (int)
   if (intervals < 0)
-    in.fail_fmt(at_n, Diag::InvalidOperation,
-                fmt::format("a compound spline needs a number of intervals >= 0, got {}", intervals));
+    in.fail(at_n, Diag::CompoundIntervalsNegative, intervals);
   if (curves.empty())
-    in.fail_fmt(in.ast().expr(n.points).range, Diag::InvalidOperation, "a compound spline needs at least one curve");
-  if (m.curve(std::abs(tag)) || tag == 0)
-    in.fail_fmt(s.range, Diag::InvalidOperation,
-                tag == 0 ? std::string("0 is not a valid curve tag here") : fmt::format("curve {} already exists", tag));
+    in.fail(in.ast().expr(n.points).range, Diag::CompoundNoCurve);
+  if (tag == 0) in.fail(s.range, Diag::CompoundTagZero);
+  if (m.curve(std::abs(tag))) in.fail(s.range, Diag::CompoundCurveExists, tag);
   for (int c : curves)
     if (const geo::ModelCurve* mc = m.curve(std::abs(c)); !mc || !mc->shape)
       in.fail(in.ast().expr(n.points).range, Diag::GeoNoSuchCurve, std::abs(c));

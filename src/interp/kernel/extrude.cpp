@@ -23,14 +23,14 @@ constexpr double kMaxLayerElements = 1e6;
 
 Vec3 vec3_of(Interpreter& in, SourceRange at, const std::vector<double>& v, const char* what) {
   if (v.size() != 3)
-    in.fail_fmt(at, Diag::ListSizeMismatch, fmt::format("{} needs 3 numbers, got {}", what, v.size()));
+    in.fail(at, Diag::ListNeedsNumbers, what, std::size_t{3}, v.size());
   return {v[0], v[1], v[2]};
 }
 
 double angle_of(Interpreter& in, SourceRange at, const std::vector<double>& v) {
   if (v.size() != 1)
-    in.fail_fmt(at, Diag::ListSizeMismatch, fmt::format("the extrusion's angle needs 1 number, got {}", v.size()));
-  if (!std::isfinite(v[0])) in.fail_fmt(at, Diag::InvalidOperation, "the extrusion's angle is not a finite number");
+    in.fail(at, Diag::ListNeedsOneNumber, std::string_view("the extrusion's angle"), v.size());
+  if (!std::isfinite(v[0])) in.fail(at, Diag::ExtrudeAngleNotFinite);
   return v[0];
 }
 
@@ -43,7 +43,7 @@ void read_layers(Interpreter& in, const ExtrudeMeshParams& mp, geo::ExtrudeSpec&
   if (items.size() == 1 && items[0].size() == 1) {
     const double n = std::fabs(items[0][0]);
     if (!std::isfinite(n) || n >= kMaxLayerElements)
-      in.fail_fmt(at, Diag::InvalidOperation, fmt::format("Layers{{{}}}: the number of elements must be below {}", items[0][0], kMaxLayerElements));
+      in.fail(at, Diag::LayersElementCount, items[0][0], kMaxLayerElements);
     if (static_cast<int>(n) == 0) return;   // Gmsh accepts 0 to switch the layers off
     spec.layered = true;
     spec.layers.elements = {static_cast<int>(n)};
@@ -51,20 +51,18 @@ void read_layers(Interpreter& in, const ExtrudeMeshParams& mp, geo::ExtrudeSpec&
     return;
   }
   if (items.size() != 2 || items[0].size() != items[1].size() || items[0].empty())
-    in.fail_fmt(at, Diag::ListSizeMismatch,
-                "Layers needs {n} or {{n1, n2, ...}, {h1, h2, ...}} with as many heights as element counts");
+    in.fail(at, Diag::ListLayers);
   double prev = 0;
   for (std::size_t i = 0; i < items[0].size(); ++i) {
     const double d = items[0][i], h = items[1][i];
     if (!std::isfinite(d) || !std::isfinite(h))
-      in.fail_fmt(at, Diag::InvalidOperation, "Layers: element counts and heights must be finite numbers");
+      in.fail(at, Diag::LayersNotFinite);
     const int n = d > 0 ? static_cast<int>(std::min(d, kMaxLayerElements)) : 1;   // Gmsh: d > 0 ? (int)d : 1
     total += n;
     if (total >= kMaxLayerElements)
-      in.fail_fmt(at, Diag::InvalidOperation, fmt::format("Layers: {} elements or more along one extrusion", kMaxLayerElements));
+      in.fail(at, Diag::LayersTotalElements, kMaxLayerElements);
     if (!(h > prev))
-      in.fail_fmt(at, Diag::InvalidOperation,
-                  fmt::format("Layers: the heights must increase from 0 (height {} is {} after {})", i + 1, h, prev));
+      in.fail(at, Diag::LayersHeightsNotIncreasing, i + 1, h, prev);
     prev = h;
     spec.layers.elements.push_back(n);
     spec.layers.heights.push_back(h);
@@ -94,17 +92,14 @@ std::vector<geo::DimTag> apply_extrude(Interpreter& in, const Expr& x, const Tra
     std::vector<double> all;
     for (const auto& v : p) all.insert(all.end(), v.begin(), v.end());
     if (all.size() != 3)
-      in.fail_fmt(at, Diag::ListSizeMismatch,
-                  fmt::format("Extrude needs {{dx, dy, dz}}, {{{{ax, ay, az}}, {{px, py, pz}}, angle}} or "
-                              "{{{{dx, dy, dz}}, {{ax, ay, az}}, {{px, py, pz}}, angle}}, got {} numbers",
-                              all.size()));
+      in.fail(at, Diag::ListExtrudeParameters, all.size());
     spec.translation = {all[0], all[1], all[2]};
   }
   for (double v : {spec.translation.x, spec.translation.y, spec.translation.z, spec.axis.x, spec.axis.y, spec.axis.z,
                    spec.point.x, spec.point.y, spec.point.z})
-    if (!std::isfinite(v)) in.fail_fmt(at, Diag::InvalidOperation, "the extrusion's parameters must be finite numbers");
+    if (!std::isfinite(v)) in.fail(at, Diag::ExtrudeParametersNotFinite);
   if (spec.kind != geo::ExtrudeKind::Translate && !(norm(spec.axis) > 0))
-    in.fail_fmt(at, Diag::InvalidOperation, "the extrusion's rotation axis has zero length");
+    in.fail(at, Diag::ExtrudeAxisZero);
   std::vector<geo::DimTag> ents = eval_shape_block(in, t.shapes, true);
   read_layers(in, t.extrude, spec);
   if (t.extrude.has_recombine) spec.recombine = in.eval_number(t.extrude.recombine) != 0;

@@ -22,8 +22,7 @@ namespace {
 int field_id(Interpreter& in, ExprId e) {
   const double v = in.eval_number(e);
   if (!std::isfinite(v) || std::abs(v) > 2147483647.0)
-    in.fail_fmt(in.ast().expr(e).range, Diag::WrongType,
-                fmt::format("a field id must be an integer, not {}", v));
+    in.fail(in.ast().expr(e).range, Diag::TypeIdNotInteger, std::string_view("field"), v);
   return static_cast<int>(v);
 }
 
@@ -183,12 +182,11 @@ void exec_background_field(Interpreter& in, const Stmt& s, const BackgroundField
     // fields; checked when the mesher builds them, as options may still change.
     const Value v = in.eval(n.value);
     if (v.is_string())
-      in.fail(in.ast().expr(n.value).range, Diag::WrongType, "'BoundaryLayer Field =' takes field ids, not a string");
+      in.fail(in.ast().expr(n.value).range, Diag::TypeBoundaryLayerFieldString);
     KernelState& k = in.kernel();
     for (double x : v.nums()) {
       if (!std::isfinite(x) || std::abs(x) > 2147483647.0)
-        in.fail_fmt(in.ast().expr(n.value).range, Diag::WrongType,
-                    fmt::format("a field id must be an integer, not {}", x));
+        in.fail(in.ast().expr(n.value).range, Diag::TypeIdNotInteger, std::string_view("field"), x);
       const int fid = static_cast<int>(x);
       bool seen = false;
       for (const auto& e : k.boundary_layer_fields) seen = seen || e.first == fid;

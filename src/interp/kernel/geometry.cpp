@@ -124,7 +124,7 @@ void sync_geometry_options(Interpreter& in) {
 
 int to_tag(Interpreter& in, double v, SourceRange at) {
   if (!std::isfinite(v) || std::fabs(v) > std::numeric_limits<int>::max())
-    in.fail_fmt(at, Diag::InvalidOperation, fmt::format("{} is not a valid entity tag", v));
+    in.fail(at, Diag::InvalidEntityTag, v);
   return static_cast<int>(v);
 }
 
@@ -162,8 +162,7 @@ void check(Interpreter& in, const geo::GeoStatus& st, SourceRange at) {
 Vec3 eval_vec3(Interpreter& in, ExprId e, const char* what) {
   const std::vector<double> v = in.eval_numbers(e);
   if (v.size() != 3)
-    in.fail_fmt(in.ast().expr(e).range, Diag::ListSizeMismatch,
-                fmt::format("{} needs 3 numbers, got {}", what, v.size()));
+    in.fail(in.ast().expr(e).range, Diag::ListNeedsNumbers, what, std::size_t{3}, v.size());
   return {v[0], v[1], v[2]};
 }
 
@@ -174,8 +173,7 @@ std::optional<geo::DimTag> exec_point(Interpreter& in, const Stmt& s, const Poin
   const int tag = eval_tag(in, n.tag);
   const std::vector<double> c = in.eval_numbers(n.coords);
   if (c.size() != 3 && c.size() != 4)
-    in.fail_fmt(in.ast().expr(n.coords).range, Diag::ListSizeMismatch,
-                fmt::format("Point needs {{x, y, z}} or {{x, y, z, lc}}, got {} numbers", c.size()));
+    in.fail(in.ast().expr(n.coords).range, Diag::ListPointCoordinates, c.size());
   // Gmsh scales coordinates and the size (and, on a sphere, (u, v)) by Geometry.ScalingFactor.
   const double f = in.options().number("Geometry.ScalingFactor");
   const double lc = c.size() == 4 ? f * c[3] : 0.0;
@@ -229,7 +227,7 @@ void exec_physical(Interpreter& in, const Stmt& s, const PhysicalStmt& n) {
   if (n.op == AffOp::Add) op = geo::PhysicalOp::Add;
   else if (n.op == AffOp::Sub) op = geo::PhysicalOp::Remove;
   else if (n.op != AffOp::Assign)
-    in.fail_fmt(where(s), Diag::InvalidOperation, fmt::format("'{}' cannot change a physical group", affop_text(n.op)));
+    in.fail(where(s), Diag::PhysicalGroupOperator, affop_text(n.op));
   const int dim = dim_of(n.ent);
   auto r = in.kernel().model.add_physical(dim, tag, name, entities, op);
   if (!r) fail_geo(in, where(s), r.error());
@@ -322,8 +320,7 @@ std::optional<geo::DimTag> create_geometry(Interpreter& in, StmtId id) {
       const int tag = eval_tag(in, n.tag);
       const std::vector<int> pts = eval_tags(in, n.points);
       if (pts.size() != 2)
-        in.fail_fmt(in.ast().expr(n.points).range, Diag::ListSizeMismatch,
-                    fmt::format("{} needs {{centre, pole}} point tags, got {} tags", stmt_name(in, id), pts.size()));
+        in.fail(in.ast().expr(n.points).range, Diag::ListSpherePoints, stmt_name(in, id), pts.size());
       check(in, n.polar ? m.add_polar_sphere(tag, pts[0], pts[1]) : m.add_lonlat_sphere(tag, pts[0], pts[1]), where(s));
       record_created(k, kGeometryKey, tag, where(s));
       return std::nullopt;

@@ -47,8 +47,8 @@ std::vector<double> numbers_of(Interpreter& in, const ExprList& items) {
 }
 
 std::vector<double> sized(Interpreter& in, SourceRange at, std::vector<double> v, std::size_t n, const char* what) {
-  if (v.size() != n)
-    in.fail_fmt(at, Diag::ListSizeMismatch, fmt::format("{} needs {} numbers, got {}", what, n, v.size()));
+  if (v.size() != n && n == 1) in.fail(at, Diag::ListNeedsOneNumber, what, v.size());
+  if (v.size() != n) in.fail(at, Diag::ListNeedsNumbers, what, n, v.size());
   return v;
 }
 
@@ -98,7 +98,7 @@ std::vector<geo::DimTag> apply_transform(Interpreter& in, const Expr& x, const T
       break;
     case TransformKind::Rotate: {
       if (p.size() != 3)
-        in.fail_fmt(at, Diag::ListSizeMismatch, "Rotate needs {{ax, ay, az}, {px, py, pz}, angle}");
+        in.fail(at, Diag::ListRotateParameters);
       const Vec3 axis = vec3(sized(in, at, p[0], 3, "the Rotate axis"));
       const Vec3 point = vec3(sized(in, at, p[1], 3, "the Rotate point"));
       st = m.rotate(ents, axis, point, sized(in, at, p[2], 1, "the Rotate angle")[0]);
@@ -110,11 +110,10 @@ std::vector<geo::DimTag> apply_transform(Interpreter& in, const Expr& x, const T
       break;
     }
     case TransformKind::Dilate: {
-      if (p.size() != 2) in.fail_fmt(at, Diag::ListSizeMismatch, "Dilate needs {{cx, cy, cz}, factor}");
+      if (p.size() != 2) in.fail(at, Diag::ListDilateParameters);
       const Vec3 c = vec3(sized(in, at, p[0], 3, "the Dilate centre"));
       if (p[1].size() != 1 && p[1].size() != 3)
-        in.fail_fmt(at, Diag::ListSizeMismatch,
-                    fmt::format("the Dilate factor needs 1 or 3 numbers, got {}", p[1].size()));
+        in.fail(at, Diag::ListDilateFactor, p[1].size());
       const Vec3 f = p[1].size() == 1 ? Vec3{p[1][0], p[1][0], p[1][0]} : vec3(p[1]);
       st = m.dilate(ents, c, f);
       break;
@@ -199,9 +198,7 @@ Value eval_entity_query(Interpreter& in, const Expr& x, const EntityQueryExpr& q
     return Value::list(std::move(out));
   }
   if (q.ent != EntityKind::Point)
-    in.fail_fmt(x.range, Diag::InvalidOperation,
-                fmt::format("'{}{{t}}' has no value: only Point{{t}} (its coordinates) and {}{{:}} (all tags)",
-                            entity_name(q.ent), entity_name(q.ent)));
+    in.fail(x.range, Diag::EntityQueryNoValue, entity_name(q.ent));
   for (ExprId e : q.tags) {
     for (int t : eval_tags(in, e)) {
       const geo::ModelVertex* v = m.vertex(t);
@@ -254,7 +251,7 @@ std::vector<geo::DimTag> eval_shape_expr(Interpreter& in, ExprId e) {
   const Expr& x = in.ast().expr(e);
   if (const auto* t = std::get_if<TransformExpr>(&x.node)) return apply_transform(in, x, *t);
   if (const auto* b = std::get_if<BoundaryExpr>(&x.node)) return eval_boundary(in, x, *b);
-  in.fail_fmt(x.range, Diag::WrongType, "expected a transform, Duplicata or Boundary expression");
+  in.fail(x.range, Diag::TypeExpectedShape);
 }
 
 bool physical_group_name(Interpreter& in, ExprId e, std::string& out) {

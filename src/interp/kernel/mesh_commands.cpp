@@ -69,12 +69,26 @@ Mesh1dOptions mesh1d_options(Interpreter& in, const field::SizeField* background
   return opt;
 }
 
-Diag diag_of(const MeshError& e) {
-  switch (e.kind) {
-    case MeshErrorKind::Intersection:
-    case MeshErrorKind::DuplicatePoint: return Diag::MeshCurvesIntersect;
-    default: return Diag::MeshFailed;
+template <class... Args>
+std::pair<Diag, std::string> worded_mesh(std::type_identity_t<DiagFormat<Args...>> kind, const Args&... args) {
+  return {kind.kind(), format_diag<Args...>(kind, args...)};
+}
+
+// A crossing of the 1D mesh (one curve, or two) or two curves' nodes at one place, with the
+// curves and the place: lon/lat on a sphere, else the model's x, y, z.
+std::pair<Diag, std::string> worded_crossing(const MeshError& e) {
+  const int a = e.tag(0), b = e.tag(1);
+  const bool itself = b == 0;
+  const double lon = e.where.lon, lat = e.where.lat, x = e.xyz.x, y = e.xyz.y, z = e.xyz.z;
+  if (e.kind == MeshErrorKind::DuplicatePoint) {
+    const int second = itself ? a : b;
+    if (e.has_lonlat) return worded_mesh(Diag::MeshCurvesShareNodePlace, a, second, lon, lat);
+    return worded_mesh(Diag::MeshCurvesShareNodePlaceXyz, a, second, x, y, z);
   }
+  if (itself && e.has_lonlat) return worded_mesh(Diag::MeshCurveCrossesItself, a, lon, lat);
+  if (itself) return worded_mesh(Diag::MeshCurveCrossesItselfXyz, a, x, y, z);
+  if (e.has_lonlat) return worded_mesh(Diag::MeshCurvesCross, a, b, lon, lat);
+  return worded_mesh(Diag::MeshCurvesCrossXyz, a, b, x, y, z);
 }
 
 // Mesh.MinTimeStep's size floor is this times dt sqrt(g H): a frontal mesh's edges run
@@ -86,7 +100,8 @@ constexpr std::size_t kMaxStepUnmetReported = 10;
 // A 1D mesher error's kind and message: a node count over its limit says which limit, as
 // the user can change it (Mesh.MaxElements, or the cap of nodes on one curve).
 std::pair<Diag, std::string> worded_1d(const MeshError& e) {
-  if (e.kind != MeshErrorKind::LimitExceeded) return {diag_of(e), e.message};
+  if (e.kind == MeshErrorKind::Intersection || e.kind == MeshErrorKind::DuplicatePoint) return worded_crossing(e);
+  if (e.kind != MeshErrorKind::LimitExceeded) return {Diag::MeshFailed, e.message};
   const bool cap = e.limit >= kMaxCurveNodes;
   if (e.all_curves && cap)
     return {Diag::LimitAllCurvesCap, format_diag<double, int, double>(Diag::LimitAllCurvesCap, e.count, e.tag(0), e.limit)};

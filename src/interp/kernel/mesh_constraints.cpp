@@ -29,8 +29,7 @@ void exec_transfinite_curve(Interpreter& in, const Stmt& s, const TransfiniteCur
   TransfiniteCurveSpec spec;
   const double nodes = in.eval_number(n.nodes);
   if (!std::isfinite(nodes) || nodes > 1e8)
-    in.fail_fmt(in.ast().expr(n.nodes).range, Diag::InvalidOperation,
-                fmt::format("{:g} is not a number of nodes for a transfinite curve", nodes));
+    in.fail(in.ast().expr(n.nodes).range, Diag::TransfiniteNodeCount, nodes);
   spec.nodes = std::max(2, static_cast<int>(nodes));   // Gmsh: fewer than 2 is 2
   if (n.distribution.valid()) {
     const std::string_view law = in.ast().str(n.distribution);
@@ -38,8 +37,7 @@ void exec_transfinite_curve(Interpreter& in, const Stmt& s, const TransfiniteCur
     else if (law == "Bump") spec.law = TransfiniteLaw::Bump;
     else if (law == "Beta") spec.law = TransfiniteLaw::Beta;
     else
-      in.fail_fmt(s.range, Diag::InvalidOperation,
-                  fmt::format("unknown transfinite law '{}': use Progression, Bump or Beta", law));
+      in.fail(s.range, Diag::UnknownTransfiniteLaw, law);
     spec.coef = std::fabs(in.eval_number(n.coef));   // Gmsh takes |coef|: a sign reverses nothing
   }
   const std::vector<int> tags = n.all ? m.tags(1) : eval_tags(in, n.curves);
@@ -65,21 +63,16 @@ void exec_transfinite_surface(Interpreter& in, const Stmt& s, const TransfiniteS
     else if (a == "Alternate" || a == "AlternateRight") spec.arrangement = TriangleArrangement::AlternateRight;
     else if (a == "AlternateLeft") spec.arrangement = TriangleArrangement::AlternateLeft;
     else
-      in.fail_fmt(s.range, Diag::InvalidOperation,
-                  fmt::format("unknown triangle arrangement '{}': use Left, Right, Alternate, AlternateRight or "
-                              "AlternateLeft",
-                              a));
+      in.fail(s.range, Diag::UnknownTriangleArrangement, a);
   }
   if (n.corners.valid()) {
     spec.corners = eval_tags(in, n.corners);
     if (!spec.corners.empty() && spec.corners.size() != 3 && spec.corners.size() != 4)
-      in.fail_fmt(in.ast().expr(n.corners).range, Diag::InvalidOperation,
-                  fmt::format("a transfinite surface has 3 or 4 corners, not {}", spec.corners.size()));
+      in.fail(in.ast().expr(n.corners).range, Diag::TransfiniteCornerCount, spec.corners.size());
     for (int& c : spec.corners) {
       c = std::abs(c);
       if (!m.vertex(c))
-        in.fail_fmt(in.ast().expr(n.corners).range, Diag::InvalidOperation,
-                    fmt::format("transfinite corner {} is not a point", c));
+        in.fail(in.ast().expr(n.corners).range, Diag::TransfiniteCornerNotPoint, c);
     }
   }
   const std::vector<int> tags = n.all ? m.tags(2) : eval_tags(in, n.surfaces);
@@ -124,8 +117,7 @@ void exec_entity_setting(Interpreter& in, StmtId id, const Stmt& s, const Entity
   const geo::Model& m = k.model;
   const double v = in.eval_number(n.value);
   if (!std::isfinite(v) || std::fabs(v) > 1e6)
-    in.fail_fmt(in.ast().expr(n.value).range, Diag::InvalidOperation,
-                fmt::format("{:g} is not a mesh algorithm number", v));
+    in.fail(in.ast().expr(n.value).range, Diag::NotMeshAlgorithm, v);
   const std::vector<int> tags = n.all ? m.tags(2) : eval_tags(in, n.tags);
   for (int t : tags) {
     if (!m.surface(std::abs(t))) {
@@ -144,25 +136,24 @@ std::vector<double> periodic_affine(Interpreter& in, const Stmt& s, const Period
     items.push_back(in.eval_numbers(e));
     all.insert(all.end(), items.back().begin(), items.back().end());
   }
-  auto bad = [&](const char* form) {
-    in.fail_fmt(s.range, Diag::InvalidOperation, fmt::format("{}: found {} numbers", form, all.size()));
-  };
+  // The kind names the form the transform takes; its argument is the count found.
+  auto bad = [&](DiagFormat<std::size_t> form) { in.fail(s.range, form, all.size()); };
   switch (n.transform) {
     case PeriodicTransform::None: return {};
     case PeriodicTransform::Translate:
-      if (all.size() != 3) bad("'Translate {dx, dy, dz}' takes 3 numbers");
+      if (all.size() != 3) bad(Diag::PeriodicTranslateArguments);
       return periodic_translation({all[0], all[1], all[2]});
     case PeriodicTransform::Rotate: {
       if (items.size() != 3 || items[0].size() != 3 || items[1].size() != 3 || items[2].size() != 1)
-        bad("'Rotate {{ax, ay, az}, {px, py, pz}, angle}' takes an axis, a point and an angle");
+        bad(Diag::PeriodicRotateArguments);
       std::vector<double> a = periodic_rotation({items[0][0], items[0][1], items[0][2]},
                                                 {items[1][0], items[1][1], items[1][2]}, items[2][0]);
-      if (a.empty()) in.fail_fmt(s.range, Diag::InvalidOperation, "the axis of a periodic rotation is zero");
+      if (a.empty()) in.fail(s.range, Diag::PeriodicAxisZero);
       return a;
     }
     case PeriodicTransform::Affine:
       // Gmsh reads the first 12 (the matrix's three rows); the last row is 0 0 0 1.
-      if (all.size() != 12 && all.size() != 16) bad("'Affine {...}' takes the 12 or 16 numbers of a 4x4 matrix by rows");
+      if (all.size() != 12 && all.size() != 16) bad(Diag::PeriodicAffineArguments);
       all.resize(12);
       all.insert(all.end(), {0, 0, 0, 1});
       return all;
@@ -180,28 +171,22 @@ void exec_periodic_curve(Interpreter& in, const Stmt& s, const PeriodicStmt& n) 
   const geo::Model& m = k.model;
   const std::vector<int> targets = eval_tags(in, n.slaves), sources = eval_tags(in, n.masters);
   if (targets.size() != sources.size())
-    in.fail_fmt(s.range, Diag::InvalidOperation,
-                fmt::format("'Periodic Curve' pairs {} target curves with {} source curves: give as many of each",
-                            targets.size(), sources.size()));
+    in.fail(s.range, Diag::PeriodicCurveCounts, targets.size(), sources.size());
   const std::vector<double> affine = periodic_affine(in, s, n);
   const double tolerance = m.options().tolerance * m.bounding_box().diagonal();
   for (std::size_t i = 0; i < targets.size(); ++i) {
     const int t = std::abs(targets[i]), src = std::abs(sources[i]);
     for (int c : {t, src})
       if (!m.curve(c))
-        in.fail_fmt(s.range, Diag::InvalidOperation, fmt::format("periodic curve {}: curve {} does not exist", t, c));
+        in.fail(s.range, Diag::PeriodicCurveMissing, t, c);
     if (t == src)
-      in.fail_fmt(s.range, Diag::InvalidOperation, fmt::format("curve {} cannot be periodic with itself", t));
+      in.fail(s.range, Diag::PeriodicCurveItself, t);
     PeriodicCurveSpec spec{src, (targets[i] < 0) != (sources[i] < 0) ? -1 : 1, affine};
     if (!affine.empty()) {
       std::pair<double, double> d{0, 0};
       const std::optional<int> o = periodic_orientation(m, t, src, affine, tolerance, &d);
       if (!o)
-        in.fail_fmt(s.range, Diag::InvalidOperation,
-                    fmt::format("the transform does not map the end points of curve {} onto those of curve {}: they "
-                                "land {:g} and {:g} away, beyond the tolerance {:g} (Geometry.Tolerance times the "
-                                "model's size)",
-                                src, t, d.first, d.second, tolerance));
+        in.fail(s.range, Diag::PeriodicEndsMissed, src, t, d.first, d.second, tolerance);
       spec.orientation = *o;
     }
     const geo::ModelCurve& tc = *m.curve(t);

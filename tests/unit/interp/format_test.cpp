@@ -68,3 +68,22 @@ TEST_CASE("format: hostile formats are refused, never passed to snprintf") {
   CHECK_FALSE(format_gmsh("%g", {std::string("a")}).ok);
   CHECK_FALSE(format_gmsh("%d", {1e300}).ok);
 }
+
+TEST_CASE("format: a failure names its typed kind, whose message it carries") {
+  using sm::lang::Diag;
+  const auto star = format_gmsh("%.*g", {1.0});
+  CHECK(star.kind == Diag::FormatStarNotSupported);
+  CHECK(star.error == "'*' precision is not supported in a format");
+  const auto few = format_gmsh("%g %g", {1.0});
+  CHECK(few.kind == Diag::FormatTooFewArguments);
+  CHECK(few.error == "too few arguments for the format: 2 directives but 1 argument");
+  const auto wide = format_gmsh("%99999g", {1.0});
+  CHECK(wide.kind == Diag::FormatNumberTooLarge);
+  CHECK(wide.error == "format width larger than 4096");
+  const auto big = format_gmsh("%x", {1e300});
+  CHECK(big.kind == Diag::FormatIntegerOverflow);
+  CHECK(big.error == "value 1e+300 does not fit the integer conversion '%x'");
+  CHECK(format_gmsh("%y", {1.0}).error == "invalid conversion '%y' in format");
+  CHECK(format_gmsh("%d", {std::string("a")}).error == "'%d' expects a number, got a string");
+  CHECK(format_gmsh("%g", {1.0}).kind == Diag::kCount);
+}

@@ -68,3 +68,45 @@ TEST_CASE("typed report: the limits' sentences, one kind per shape") {
   CHECK(std::string(diag_info(Diag::LimitSurfaceTriangles).kebab) == "limit-exceeded");
   CHECK(diag_info(Diag::LimitStatements).kebab == diag_info(Diag::LimitRange).kebab);
 }
+
+TEST_CASE("typed report: wrong types, list sizes and invalid operations, one kind per shape") {
+  CHECK(format_diag<std::string_view>(Diag::TypeExpectedNumber, "a string list") ==
+        "expected a number, found a string list");
+  CHECK(format_diag<std::string_view, double>(Diag::TypeIdNotInteger, "field", 1e20) ==
+        "a field id must be an integer, not 1e+20");
+  CHECK(format_diag<std::string_view, std::string_view, std::string_view>(Diag::TypeOperatorOperands, "+", "a string",
+                                                                          "a number") ==
+        "operator '+' needs numbers, found a string and a number");
+  // The braces of the syntax a message names are Gmsh's, once each.
+  CHECK(format_diag<std::size_t>(Diag::ListExtrudeParameters, 5) ==
+        "Extrude needs {dx, dy, dz}, {{ax, ay, az}, {px, py, pz}, angle} or "
+        "{{dx, dy, dz}, {ax, ay, az}, {px, py, pz}, angle}, got 5 numbers");
+  CHECK(format_diag<>(Diag::ListLayers) ==
+        "Layers needs {n} or {{n1, n2, ...}, {h1, h2, ...}} with as many heights as element counts");
+  CHECK(format_diag<>(Diag::ListDilateParameters) == "Dilate needs {{cx, cy, cz}, factor}");
+  CHECK(format_diag<const char*, std::size_t>(Diag::ListNeedsOneNumber, "the Rotate angle", 2) ==
+        "the Rotate angle needs 1 number, got 2");
+  CHECK(format_diag<std::size_t>(Diag::PeriodicRotateArguments, 4) ==
+        "'Rotate {{ax, ay, az}, {px, py, pz}, angle}' takes an axis, a point and an angle: found 4 numbers");
+  CHECK(format_diag<std::string_view>(Diag::EntityQueryNoValue, "Curve") ==
+        "'Curve{t}' has no value: only Point{t} (its coordinates) and Curve{:} (all tags)");
+  CHECK(format_diag<double, double>(Diag::LayersElementCount, 2e6, 1e6) ==
+        "Layers{2000000}: the number of elements must be below 1000000");
+  CHECK(format_diag<std::string_view, std::string>(Diag::OptionOnlyAssign, "box", "Mesh.Region") ==
+        "box option 'Mesh.Region' only takes '='");
+  CHECK(diag_info(Diag::TypeMixedList).kebab == std::string_view("wrong-type"));
+  CHECK(diag_info(Diag::ListOperandSizes).kebab == std::string_view("list-size-mismatch"));
+  CHECK(diag_info(Diag::PeriodicEndsMissed).kebab == std::string_view("invalid-operation"));
+  CHECK(diag_info(Diag::IncludeCannotOpen).kebab == std::string_view("include-failed"));
+  CHECK(diag_info(Diag::ScriptCannotOpen).kebab == std::string_view("cannot-open-file"));
+}
+
+TEST_CASE("typed report: the 1D mesh's crossings, by their curves and place") {
+  CHECK(format_diag<int, double, double>(Diag::MeshCurveCrossesItself, 3, 10.0000004, -40.25) ==
+        "curve 3 intersects itself near lon 10.000000, lat -40.250000");
+  CHECK(format_diag<int, int, double, double, double>(Diag::MeshCurvesCrossXyz, 1, 2, 0.5, 1.0, 0.0) ==
+        "curves 1 and 2 intersect near (0.5, 1, 0)");
+  CHECK(format_diag<int, int, double, double>(Diag::MeshCurvesShareNodePlace, 4, 7, 1.5, 2.5) ==
+        "curves 4 and 7 have distinct nodes at the same place near lon 1.500000, lat 2.500000");
+  CHECK(diag_info(Diag::MeshCurvesShareNodePlaceXyz).kebab == std::string_view("curves-intersect"));
+}

@@ -66,14 +66,18 @@ TEST_CASE("diagnostics: long lines are shown as a window around the caret") {
   CHECK(semi == caret);
 }
 
-TEST_CASE("diagnostics: files are loaded with errors as strings") {
+TEST_CASE("diagnostics: a file not loaded says why, for the caller to word") {
   SourceManager sm;
   auto r = sm.load_file("/nonexistent/dir/x.geo");
   CHECK_FALSE(r.file.valid());
-  CHECK(r.error.find("cannot open '/nonexistent/dir/x.geo'") == 0);
+  CHECK(r.failure == SourceManager::LoadFailure::CannotOpen);
+  CHECK(r.reason == "No such file or directory");
+  CHECK(format_diag<std::string, std::string>(Diag::ScriptCannotOpen, "/nonexistent/dir/x.geo", r.reason) ==
+        "cannot open '/nonexistent/dir/x.geo': No such file or directory");
   r = sm.load_file("/tmp");
   CHECK_FALSE(r.file.valid());
-  CHECK(r.error.find("is a directory") != std::string::npos);
+  CHECK(r.failure == SourceManager::LoadFailure::IsDirectory);
+  CHECK(format_diag<std::string>(Diag::IncludeIsDirectory, "/tmp") == "cannot read '/tmp': is a directory");
   CHECK(diag_from_kebab("expected-semicolon") == Diag::ExpectedSemicolon);
 }
 

@@ -94,7 +94,9 @@ TEST_CASE("hostile: files over the size limit are rejected with a message") {
   SourceManager sm;
   const auto r = sm.add_buffer("big.geo", std::string(SourceManager::kMaxFileBytes + 1, ' '));
   CHECK_FALSE(r.file.valid());
-  CHECK(r.error == "cannot load 'big.geo': larger than the 256 MiB limit for a script");
+  CHECK(r.failure == SourceManager::LoadFailure::TooLarge);
+  CHECK(format_diag<std::string, std::size_t>(Diag::ScriptTooLarge, "big.geo", SourceManager::kMaxFileMiB) ==
+        "cannot load 'big.geo': larger than the 256 MiB limit for a script");
 }
 
 TEST_CASE("hostile: huge tokens are clipped in messages") {
