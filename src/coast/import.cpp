@@ -202,6 +202,8 @@ std::vector<ReportLine> ImportReport::items() const {
         e.record == static_cast<std::size_t>(-1) ? std::string() : fmt::format("record {} (id {}) ", e.record, e.id);
     l.text = fmt::format("{}at lon {:.5f} lat {:.5f}: {}{}", source, l.where.lon, l.where.lat, l.what,
                          l.figure.empty() ? std::string() : " (" + l.figure + ")");
+    l.entry = e;
+    l.entry->where = l.where;
     out.push_back(std::move(l));
   }
   return out;

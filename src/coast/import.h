@@ -119,6 +119,9 @@ struct ReportLine {
   /// The figure as a number when its largest matter most (a closed passage's width, a
   /// dropped sea's area): a short list shows the largest first; NaN otherwise.
   double rank = std::numeric_limits<double>::quiet_NaN();
+  /// The change the line tells, for the interpreter to word (its `where` as `where` above);
+  /// none for the summaries.
+  std::optional<RepairEntry> entry = std::nullopt;
 };
 
 struct ImportReport {

@@ -31,9 +31,7 @@ class DistanceField final : public SizeField, public BoundedEval {
 // A listed point or curve that does not exist: Gmsh's Distance skips it (Mesh/Field.cpp).
 void skip_missing(const BuildInputs& in, std::string_view option, std::string_view what, int tag) {
   if (!in.ctx.compat_note) in.bad(option, fmt::format("{} {} does not exist", what, tag));
-  in.ctx.compat_note(in.id, option,
-                     fmt::format("Field[{}].{} lists {} {}, which does not exist: Gmsh skips it, and so do we", in.id,
-                                 option, what, tag));
+  in.ctx.compat_note(in.id, option, what, tag);
 }
 
 FieldPtr make_distance(const BuildInputs& in) {

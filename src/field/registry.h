@@ -46,9 +46,9 @@ struct BuildContext {
   Progress* setup_clock = nullptr;
   /// Where Gmsh is lenient (a Distance field listing a point or curve that does not
   /// exist: Gmsh skips it), a factory that finds this set calls it with its field id, the
-  /// option and a sentence saying what Gmsh does and what was done, and goes on; without
-  /// it, that is an error. The interpreter reports the sentences as gmsh-compat warnings.
-  std::function<void(int field_id, std::string_view option, const std::string& sentence)> compat_note;
+  /// option, the entity's kind ("Point", "Curve") and tag, and goes on; without it, that is
+  /// an error. The interpreter words each as a gmsh-compat warning.
+  std::function<void(int field_id, std::string_view option, std::string_view entity, int tag)> compat_note;
 };
 
 using FieldPtr = std::shared_ptr<const SizeField>;

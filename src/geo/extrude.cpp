@@ -9,7 +9,6 @@
 #include <cmath>
 #include <limits>
 
-#include <fmt/format.h>
 
 #include "geo/model.h"
 
@@ -197,9 +196,7 @@ GeoResult<int> Model::extrude_curve_entity(int c, const ExtrudeSpec& spec, bool 
   int beg = cit->second.begin, end = cit->second.end;
   if (c < 0) std::swap(beg, end);
   if (beg == end)
-    note_compat(fmt::format("curve {} is closed: Gmsh warns that extruding a periodic curve is not supported by the "
-                            "built-in kernel and extrudes it all the same; so do we",
-                            std::abs(c)));
+    note_compat(CompatNoteId::ExtrudeClosedCurve, {std::abs(c)});
   auto dup = duplicate({{1, c}});
   if (!dup) return dup.error();
   const int top = dup->front().tag;

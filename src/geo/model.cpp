@@ -5,7 +5,6 @@
 #include "geo/loop_check.h"
 #include "geo/surface_filling.h"
 
-#include <fmt/format.h>
 
 #include <algorithm>
 #include <atomic>
@@ -67,7 +66,7 @@ GeoStatus Model::check_new_tag(EntityKind kind, int tag, bool exists) {
   // Gmsh takes tag 0 for points and physical groups (they are never referred to with a
   // sign); a curve, loop or surface 0 could not be reversed as -0, so those stay errors.
   if (tag == 0 && !exists && (kind == EntityKind::Point || kind == EntityKind::Physical)) {
-    note_compat(fmt::format("{} tag 0: Gmsh accepts it; so do we, but tags are meant to be positive", to_string(kind)));
+    note_compat(CompatNoteId::TagZero, {}, to_string(kind));
     return {};
   }
   if (tag <= 0) return make_error(GeoErrorId::TagNotPositive, kind, {tag});
@@ -274,7 +273,7 @@ GeoStatus Model::set_mesh_size(const std::vector<int>& points, double lc) {
     if (vertex(p)) {
       vertices_[p].lc = lc > 0 ? lc : kMaxLc;
     } else {
-      note_compat(fmt::format("MeshSize of point {}, which does not exist: Gmsh ignores it; so do we", p));
+      note_compat(CompatNoteId::MeshSizeOfMissingPoint, {p});
     }
   }
   return {};
@@ -336,9 +335,7 @@ GeoStatus Model::add_curve(int tag, CurveKind kind, const std::vector<int>& poin
     if (kind == CurveKind::Line) {
       // Gmsh keeps such a line as a degenerate curve that gets no mesh elements. We
       // create no curve (a later use of it is an error) but take its tag, as Gmsh does.
-      note_compat(fmt::format("line {} goes from point {} to itself: Gmsh keeps it as a degenerate curve with no "
-                              "mesh elements; we do not create it (only its tag is taken)",
-                              tag, points[0]));
+      note_compat(CompatNoteId::LineToItself, {tag, points[0]});
       bump_max(1, tag);
       return {};
     }
@@ -359,9 +356,7 @@ GeoStatus Model::add_curve(int tag, CurveKind kind, const std::vector<int>& poin
   if (kind == CurveKind::Ellipse && points.size() == 4 && vertices_.at(points[2]).xyz == vertices_.at(points[1]).xyz) {
     // Gmsh's ellipse then measures the major axis's angle from a zero vector, which is
     // 0: the direction of the start point. We use the start point as the major-axis point.
-    note_compat(fmt::format("ellipse {}: the major-axis point {} is the centre: Gmsh then takes the direction of the "
-                            "start point {} as the major axis, and so do we",
-                            tag, points[2], points[0]));
+    note_compat(CompatNoteId::EllipseAxisAtCentre, {tag, points[2], points[0]});
     control[2] = points[0];
   }
   ModelCurve c;
@@ -382,9 +377,7 @@ GeoStatus Model::add_curve(int tag, CurveKind kind, const std::vector<int>& poin
   if (!shape) return shape.error();
   c.shape = std::move(*shape);
   if (collapses(*this, c))
-    note_compat(fmt::format("{} {} has zero length (points {} and {} are at the same place): Gmsh collapses it, "
-                            "and so do we: both points get one mesh node and the curve no mesh edge",
-                            to_string(kind), tag, c.begin, c.end));
+    note_compat(CompatNoteId::ZeroLengthCurve, {tag, c.begin, c.end}, to_string(kind));
   curves_.emplace(tag, std::move(c));
   bump_max(1, tag);
   return {};
@@ -427,7 +420,7 @@ GeoStatus Model::add_curve_loop(int tag, const std::vector<int>& curves) {
   ModelCurveLoop l;
   l.tag = tag;
   if (!chained) {
-    compat_notes_.push_back({std::string(), chained.error()});
+    compat_notes_.push_back({CompatNoteId::UncheckedLoop, {}, {}, chained.error()});
     l.curves = curves;
     l.unclosed = chained.error();
   } else {
@@ -531,17 +524,13 @@ GeoStatus Model::add_plane_surface(int tag, const std::vector<int>& loops) {
       return make_error(GeoErrorId::HoleOutside, EntityKind::Surface, {tag, l, std::abs(loops[0])});
     }
     if (outer != 0) {
-      note_compat(fmt::format("plane surface {}: curve loop {} encloses the others but is listed after curve loop {}; "
-                              "Gmsh finds the enclosing loop, and so do we: curve loop {} is the outer one",
-                              tag, std::abs(loops[outer]), std::abs(loops[0]), std::abs(loops[outer])));
+      note_compat(CompatNoteId::OuterListedLater, {tag, std::abs(loops[outer]), std::abs(loops[0])});
       std::rotate(s.loops.begin(), s.loops.begin() + static_cast<std::ptrdiff_t>(outer),
                   s.loops.begin() + static_cast<std::ptrdiff_t>(outer) + 1);
       s.listed_outer = outer;
     }
     for (std::size_t i : chosen.crossing)
-      note_compat(fmt::format("plane surface {}: hole (curve loop {}) crosses the outer curve loop {}: Gmsh meshes "
-                              "them as discretised, and so do we (the 1D mesh refuses mesh edges that cross)",
-                              tag, std::abs(loops[i]), std::abs(loops[outer])));
+      note_compat(CompatNoteId::HoleCrossesOuter, {tag, std::abs(loops[i]), std::abs(loops[outer])});
   }
   surfaces_.emplace(tag, std::move(s));
   bump_max(2, tag);

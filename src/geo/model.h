@@ -265,11 +265,26 @@ class Model {
   /// Where Gmsh accepts a statement that is wrong on its face (a hole listed before its
   /// outer loop, tag 0, a split at a point that is not on the curve...) the kernel does
   /// what Gmsh does and leaves a sentence saying what Gmsh does and what was done; the
-  /// interpreter reports each as a located gmsh-compat warning. Taking them empties the list.
-  /// A curve loop that does not close is kept unchecked, as Gmsh does: its note carries the
-  /// loop's error, which the interpreter words.
+  /// interpreter words each (interp/geo_diagnostic.cpp) as a located gmsh-compat warning.
+  /// Taking them empties the list. A curve loop that does not close is kept unchecked, as
+  /// Gmsh does: its note carries the loop's error.
+  enum class CompatNoteId {
+    UncheckedLoop,           // unchecked_loop
+    TagZero,                 // word: the entity's kind
+    MeshSizeOfMissingPoint,  // tags: the point
+    LineToItself,            // tags: the line, its point
+    EllipseAxisAtCentre,     // tags: the ellipse, the major-axis point, the start point
+    ZeroLengthCurve,         // word: the curve's kind; tags: the curve, its begin and end points
+    OuterListedLater,        // tags: the surface, the enclosing loop, the loop listed first
+    HoleCrossesOuter,        // tags: the surface, the hole's loop, the outer loop
+    ExtrudeClosedCurve,      // tags: the curve
+    DuplicataOfMissing,      // word: the entity's kind; tags: its tag
+    SplitAtOtherPoint,       // tags: the curve, the point
+  };
   struct CompatNote {
-    std::string sentence;                   // empty when unchecked_loop is set
+    CompatNoteId id = CompatNoteId::UncheckedLoop;
+    std::vector<int> tags;
+    std::string word;
     std::optional<GeoError> unchecked_loop;
   };
   std::vector<CompatNote> take_compat_notes() { return std::exchange(compat_notes_, {}); }
@@ -295,7 +310,9 @@ class Model {
   void delete_loop(int tag, bool recursive, Usage& u);
   void delete_surface(int tag, bool recursive, Usage& u);
   void touch();   // a new revision_ from one counter shared by all models
-  void note_compat(std::string sentence) { compat_notes_.push_back({std::move(sentence), std::nullopt}); }
+  void note_compat(CompatNoteId id, std::vector<int> tags, std::string word = {}) {
+    compat_notes_.push_back({id, std::move(tags), std::move(word), std::nullopt});
+  }
 
   ModelOptions options_;
   std::map<int, ModelVertex> vertices_;

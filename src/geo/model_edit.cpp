@@ -2,7 +2,6 @@
 // Coherence, Duplicata, Translate/Rotate/Dilate/Symmetry (with AutoCoherence), Split Curve.
 #include "geo/model.h"
 
-#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -337,9 +336,8 @@ GeoResult<std::vector<DimTag>> Model::duplicate(const std::vector<DimTag>& entit
       if (copied) copied->push_back({2, t, st});
       out.push_back({2, st});
     } else {
-      note_compat(fmt::format("Duplicata of {} {}, which does not exist: Gmsh reports an error and copies the other "
-                              "entities; we copy the others and warn",
-                              e.dim == 0 ? "point" : e.dim == 1 ? "curve" : e.dim == 2 ? "surface" : "entity", t));
+      note_compat(CompatNoteId::DuplicataOfMissing, {t},
+                  e.dim == 0 ? "point" : e.dim == 1 ? "curve" : e.dim == 2 ? "surface" : "entity");
     }
   }
   return out;
@@ -461,9 +459,7 @@ GeoResult<std::vector<int>> Model::split_curve(int tag, const std::vector<int>& 
     if (contains(old.points, p)) {
       split_points.push_back(p);
     } else {
-      note_compat(fmt::format("curve {} is not split at point {}, which is not one of its control points: Gmsh skips "
-                              "such a point, and so do we",
-                              tag, p));
+      note_compat(CompatNoteId::SplitAtOtherPoint, {tag, p});
     }
   }
   std::vector<int> pts = old.points;

@@ -108,4 +108,26 @@ GeoDiagnostic geo_diagnostic(const geo::GeoError& e) {
   return worded(Diag::GeoUnknownEntity, v.entity(), v.tag(0));   // not reached: every id has its case
 }
 
+GeoDiagnostic geo_compat_diagnostic(const geo::Model::CompatNote& note) {
+  using Id = geo::Model::CompatNoteId;
+  // A tag the kernel left out reads as 0 (a kernel bug, visible in the message).
+  const auto tag = [&note](std::size_t i) { return i < note.tags.size() ? note.tags[i] : 0; };
+  switch (note.id) {
+    case Id::UncheckedLoop:
+      if (note.unchecked_loop) return worded(Diag::GmshCompatUncheckedLoop, geo_diagnostic(*note.unchecked_loop).message);
+      break;
+    case Id::TagZero: return worded(Diag::GmshCompatTagZero, note.word);
+    case Id::MeshSizeOfMissingPoint: return worded(Diag::GmshCompatMeshSizeOfMissingPoint, tag(0));
+    case Id::LineToItself: return worded(Diag::GmshCompatLineToItself, tag(0), tag(1));
+    case Id::EllipseAxisAtCentre: return worded(Diag::GmshCompatEllipseAxisAtCentre, tag(0), tag(1), tag(2));
+    case Id::ZeroLengthCurve: return worded(Diag::GmshCompatZeroLengthCurve, note.word, tag(0), tag(1), tag(2));
+    case Id::OuterListedLater: return worded(Diag::GmshCompatOuterListedLater, tag(0), tag(1), tag(2));
+    case Id::HoleCrossesOuter: return worded(Diag::GmshCompatHoleCrossesOuter, tag(0), tag(1), tag(2));
+    case Id::ExtrudeClosedCurve: return worded(Diag::GmshCompatExtrudeClosedCurve, tag(0));
+    case Id::DuplicataOfMissing: return worded(Diag::GmshCompatDuplicataOfMissing, note.word, tag(0));
+    case Id::SplitAtOtherPoint: return worded(Diag::GmshCompatSplitAtOtherPoint, tag(0), tag(1));
+  }
+  return worded(Diag::GmshCompatUncheckedLoop, std::string("curve loop (no error recorded)"));   // a kernel bug
+}
+
 }  // namespace sm::interp

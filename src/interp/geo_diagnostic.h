@@ -5,6 +5,7 @@
 #include <string>
 
 #include "geo/error.h"
+#include "geo/model.h"
 #include "lang/diag_format.h"
 
 namespace sm::interp {
@@ -16,5 +17,8 @@ struct GeoDiagnostic {
 
 /// The kind and message of a kernel error (its kebab name is its geo::GeoErrorKind's).
 GeoDiagnostic geo_diagnostic(const geo::GeoError& e);
+
+/// The gmsh-compat warning of a kernel note (geo::Model::take_compat_notes).
+GeoDiagnostic geo_compat_diagnostic(const geo::Model::CompatNote& note);
 
 }  // namespace sm::interp

@@ -60,8 +60,8 @@ struct KernelState {
   /// (field id, canonical option name) -> the `Field[n].Option = v;` statement that set it.
   std::map<std::pair<int, std::string>, lang::SourceRange> field_option_at;
   std::shared_ptr<FieldCache> field_cache;               // dropped when a Field statement runs
-  /// The field builds' gmsh-compat sentences already reported: a field is built again
-  /// for the mesher (with the 1D mesh nodes) and must not warn twice.
+  /// The field builds' gmsh-compat notes already reported (field, option, entity, tag): a
+  /// field is built again for the mesher (with the 1D mesh nodes) and must not warn twice.
   std::set<std::string> field_compat_reported;
   std::map<int, CoastlineDef> coastlines;
   /// `Plugin(GSHHS).Option = value;` as set so far (plugin_gshhs.cpp), name -> value.

@@ -44,9 +44,11 @@ std::string place_and_figure(const Diagnostic& d) {
   return s.empty() ? d.message : s;
 }
 
-// A sort of member (a kind, and the DiagItem::what within it) and who belongs to it.
+// A sort of member (a kind, and the DiagItem::what within it) and who belongs to it. Kinds
+// are told by their kebab name: the kinds of one kebab name are one message's shapes (a
+// passage with or without its source record), one kind to the reader.
 struct Sort {
-  Diag kind;
+  std::string_view kebab;
   std::string_view what;
   std::vector<const Diagnostic*> members;
 };
@@ -56,20 +58,20 @@ std::string render_group(const Diagnostics& diags, const std::vector<const Diagn
   const Diagnostic& first = *group.front();
   // Sorts in the order of their first member; kinds likewise for the header's counts.
   std::vector<Sort> sorts;
-  std::vector<std::pair<Diag, std::size_t>> kinds;
+  std::vector<std::pair<std::string_view, std::size_t>> kinds;
   for (const Diagnostic* d : group) {
+    const std::string_view kebab = diag_info(d->kind).kebab;
     auto k = kinds.begin();
-    while (k != kinds.end() && k->first != d->kind) ++k;
-    if (k == kinds.end()) kinds.emplace_back(d->kind, 1);
+    while (k != kinds.end() && k->first != kebab) ++k;
+    if (k == kinds.end()) kinds.emplace_back(kebab, 1);
     else ++k->second;
     auto s = sorts.begin();
-    while (s != sorts.end() && (s->kind != d->kind || s->what != d->item.what)) ++s;
-    if (s == sorts.end()) sorts.push_back({d->kind, d->item.what, {d}});
+    while (s != sorts.end() && (s->kebab != kebab || s->what != d->item.what)) ++s;
+    if (s == sorts.end()) sorts.push_back({kebab, d->item.what, {d}});
     else s->members.push_back(d);
   }
   std::string counts;
-  for (const auto& [kind, n] : kinds)
-    counts += fmt::format("{}{} [{}]", counts.empty() ? "" : ", ", n, diag_info(kind).kebab);
+  for (const auto& [kebab, n] : kinds) counts += fmt::format("{}{} [{}]", counts.empty() ? "" : ", ", n, kebab);
   Diagnostic header;
   header.severity = first.severity;
   header.range = first.range;
@@ -79,7 +81,7 @@ std::string render_group(const Diagnostics& diags, const std::vector<const Diagn
 
   std::size_t hidden = 0;
   for (const Sort& s : sorts) {
-    const std::string_view kebab = diag_info(s.kind).kebab;
+    const std::string_view kebab = s.kebab;
     if (s.what.empty()) {
       const std::size_t shown = options.list_all ? s.members.size() : std::min(s.members.size(), kGroupShownPlain);
       for (std::size_t i = 0; i < shown; ++i) out += fmt::format("  {} [{}]\n", s.members[i]->message, kebab);

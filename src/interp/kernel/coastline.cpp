@@ -21,6 +21,7 @@
 #include "coast/read_shapefile.h"
 #include "coast/region_polygon.h"
 #include "field/registry.h"
+#include "interp/coast_diagnostic.h"
 #include "interp/kernel/coastline_report.h"
 #include "interp/kernel/dispatch.h"
 #include "interp/kernel/field_eval.h"
@@ -100,10 +101,8 @@ CoastlineDef& require_coast(Interpreter& in, int id, SourceRange at, std::string
   if (it != defs.end()) return it->second;
   std::vector<int> ids;
   for (const auto& [k, d] : defs) ids.push_back(k);
-  in.fail_fmt(at, Diag::MissingCoastline,
-              fmt::format("cannot {} Coastline[{}]: it is not defined{}", doing, id,
-                          ids.empty() ? std::string(" (no coastline is; write 'Coastline[n] = GSHHS;' first)")
-                                      : fmt::format(" (defined: {})", fmt::join(ids, ", "))));
+  if (ids.empty()) in.fail(at, Diag::CoastlineNoneDefined, doing, id);
+  in.fail(at, Diag::CoastlineNotDefined, doing, id, fmt::format("{}", fmt::join(ids, ", ")));
 }
 
 void exec_coast_new(Interpreter& in, const Stmt& s, const CoastlineNewStmt& n) {
@@ -129,9 +128,6 @@ void exec_coast_new(Interpreter& in, const Stmt& s, const CoastlineNewStmt& n) {
   defs.emplace(id, std::move(d));
 }
 
-[[noreturn]] void fail_option(Interpreter& in, SourceRange at, int id, std::string_view option, const std::string& why) {
-  in.fail_fmt(at, Diag::WrongCoastlineOption, fmt::format("Coastline[{}].{} {}", id, option, why));
-}
 
 // A value as the table reads it (its numbers, or its strings).
 coast::CoastOptionValue table_value(const Value& v) {
@@ -160,7 +156,8 @@ const SourceRange* set_at(const CoastlineDef& d, CoastOpt o) {
 // RegionFile: the one polygon (one outer ring, no hole) of a shapefile, as a Region list.
 Value region_from_file(Interpreter& in, int id, const std::string& path, SourceRange at) {
   auto c = coast::read_shapefile(path);
-  if (!c) fail_option(in, at, id, name_of(CoastOpt::RegionFile), fmt::format("cannot be read: {}", c.error().to_string()));
+  const std::string_view region_file = name_of(CoastOpt::RegionFile);
+  if (!c) in.fail(at, Diag::CoastlineOptionUnreadable, id, region_file, c.error().to_string());
   std::vector<const coast::Ring*> outer;
   std::size_t holes = 0;
   for (const coast::Ring& r : c->rings) {
@@ -168,14 +165,11 @@ Value region_from_file(Interpreter& in, int id, const std::string& path, SourceR
     else ++holes;
   }
   if (outer.size() != 1 || holes > 0)
-    fail_option(in, at, id, name_of(CoastOpt::RegionFile),
-                fmt::format("{}: a region file must hold one polygon without holes, and it holds {} outer ring(s) and "
-                            "{} other part(s)",
-                            path, outer.size(), holes));
+    in.fail(at, Diag::CoastlineRegionFileParts, id, region_file, path, outer.size(), holes);
   std::vector<double> x;
   for (const geo::LonLat p : outer.front()->pts) x.insert(x.end(), {p.lon, p.lat});
   auto poly = coast::RegionPolygon::make(polygon_vertices(x));
-  if (!poly) fail_option(in, at, id, name_of(CoastOpt::RegionFile), fmt::format("{}: not a usable polygon: {}", path, poly.error().message));
+  if (!poly) in.fail(at, Diag::CoastlineRegionFileUnusable, id, region_file, path, poly.error().message);
   return Value::list(std::move(x));
 }
 
@@ -187,17 +181,13 @@ void exec_coast_option(Interpreter& in, const Stmt& s, const CoastlineOptionStmt
   if (!o) {
     std::vector<std::string> names;
     for (const coast::CoastOptionSpec& c : coast::coast_options()) names.emplace_back(c.name);
-    in.fail_fmt(n.option_range, Diag::UnknownCoastlineOption,
-                fmt::format("Coastline[{}] ({}) has no option '{}'{}", id, d.format, name, did_you_mean(name, names)));
+    in.fail(n.option_range, Diag::CoastlineNoOption, id, d.format, name, did_you_mean(name, names));
   }
   if (!o->only.empty() && d.format != o->only)
-    in.fail_fmt(n.option_range, Diag::UnknownCoastlineOption,
-                fmt::format("option '{}' applies to {} coastlines only, and Coastline[{}] is {}", name, o->only, id,
-                            d.format));
+    in.fail(n.option_range, Diag::CoastlineOptionOtherFormat, name, o->only, id, d.format);
   if (d.imported) {
     try {
-      in.fail_fmt(s.range, Diag::WrongCoastlineOption,
-                  fmt::format("Coastline[{}] was already imported: its options can no longer change", id));
+      in.fail(s.range, Diag::CoastlineOptionFrozen, id);
     } catch (RuntimeError& err) {
       err.notes.insert(err.notes.begin(), DiagNote{d.imported->at, "imported here"});
       throw;
@@ -205,15 +195,14 @@ void exec_coast_option(Interpreter& in, const Stmt& s, const CoastlineOptionStmt
   }
   Value v = in.eval(n.value);
   // Checked now, so that a mistake is reported where it is written.
-  if (auto why = coast::check_coast_option(*o, table_value(v))) fail_option(in, in.ast().expr(n.value).range, id, o->name, *why);
+  if (auto why = coast::check_coast_option(*o, table_value(v)))
+    in.fail(in.ast().expr(n.value).range, Diag::CoastlineOptionRefused, id, o->name, *why);
   if (o->type == coast::CoastOptionType::Path) v = Value::string(resolve_script_path(in.builtin_env(), v.strs().front()));
   const bool is_region = o == &coast::coast_option(CoastOpt::Region);
   const bool is_region_file = o == &coast::coast_option(CoastOpt::RegionFile);
   if ((is_region && option(d, CoastOpt::RegionFile)) ||
       (is_region_file && option(d, CoastOpt::Region) && !option(d, CoastOpt::RegionFile)))
-    fail_option(in, s.range, id, o->name,
-                fmt::format("cannot be set with both {} and {}: the region is either written or read from a file",
-                            name_of(CoastOpt::Region), name_of(CoastOpt::RegionFile)));
+    in.fail(s.range, Diag::CoastlineRegionTwice, id, o->name, name_of(CoastOpt::Region), name_of(CoastOpt::RegionFile));
   if (is_region_file) {
     // Read now, so that a file without one usable polygon is an error here; the polygon
     // then stands as the Region, set by this statement.
@@ -242,7 +231,8 @@ void exec_delete_coast(Interpreter& in, const DeleteCoastlineStmt& n) {
         notes.push_back({*r, fmt::format("Coastline[{}].{} is set here", id, name_of(o))});
   }
   notes.push_back({d.defined_at, fmt::format("Coastline[{}] ({}) is defined here", id, d.format)});
-  in.fail_with_notes(at, Diag::CoastlineError, fmt::format("Coastline[{}]: {}", id, e.to_string()), std::move(notes));
+  const CoastDiagnostic cd = coast_diagnostic(e, id);
+  in.fail_message_with_notes(at, cd.kind, cd.message, std::move(notes));
 }
 
 void check_geo(Interpreter& in, SourceRange at, const geo::GeoStatus& st) {
@@ -294,12 +284,8 @@ void find_polar_sphere(CoastImportWork& w) {
   const int g = model.current_geometry();
   const geo::SurfaceGeometry* sg = g ? model.geometry(g) : nullptr;
   if (!sg || !sg->polar()) {
-    w.in.fail_with_notes(
-        w.at, Diag::CoastlineError,
-        fmt::format("Coastline{{{}}} puts its points on the current PolarSphere, and {}: define one first with "
-                    "'PolarSphere(s) = {{centre, pole}};' (its radius gives the metres of the accuracy field)",
-                    w.id, !sg ? "there is none" : fmt::format("the current geometry {} is a lon/lat Sphere", g)),
-        {w.defined_note()});
+    if (!sg) w.in.fail_with_notes(w.at, {w.defined_note()}, Diag::CoastlineNoPolarSphere, w.id);
+    w.in.fail_with_notes(w.at, {w.defined_note()}, Diag::CoastlineOnLonLatSphere, w.id, g);
   }
   w.geometry = g;
   w.sphere = sg->polar();
@@ -314,16 +300,9 @@ void apply_settings(CoastImportWork& w) {
   const std::string_view file_option = name_of(CoastOpt::FileName), accuracy_option = name_of(CoastOpt::AccuracyField);
   const bool gshhg = w.d.format == "GSHHG";
   if (w.set.file_name.empty() && !gshhg)
-    w.in.fail_with_notes(w.at, Diag::WrongCoastlineOption,
-                         fmt::format("Coastline[{}] has no {}: set 'Coastline[{}].{} = \"...\";'", id, file_option, id,
-                                     file_option),
-                         {w.defined_note()});
+    w.in.fail_with_notes(w.at, {w.defined_note()}, Diag::CoastlineNoFileName, id, file_option);
   if (!w.set.accuracy_field)
-    w.in.fail_with_notes(w.at, Diag::WrongCoastlineOption,
-                         fmt::format("Coastline[{}] has no {}: set 'Coastline[{}].{} = n;' to a size "
-                                     "field giving the accuracy gamma(x) in metres",
-                                     id, accuracy_option, id, accuracy_option),
-                         {w.defined_note()});
+    w.in.fail_with_notes(w.at, {w.defined_note()}, Diag::CoastlineNoAccuracy, id, accuracy_option);
 }
 
 // The accuracy field: built now (errors located at this use), evaluated at points of
@@ -389,19 +368,15 @@ void check_water_points(CoastImportWork& w) {
     const std::vector<geo::LonLat>& points = o == CoastOpt::SeaAt ? io.sea_at : io.passages.keep_open;
     for (const geo::LonLat p : points) {
       if (w.polygon && !w.polygon->contains(p))
-        w.in.fail_with_notes(*set_at(w.d, o), Diag::WrongCoastlineOption,
-                             fmt::format("Coastline[{}].{} point (lon {}, lat {}) lies outside the Region polygon", id,
-                                         name_of(o), p.lon, p.lat),
-                             {region_note(), {w.at, "the coastline is imported here"}});
+        w.in.fail_with_notes(*set_at(w.d, o), {region_note(), {w.at, "the coastline is imported here"}},
+                             Diag::CoastlinePointOutsidePolygon, id, name_of(o), p.lon, p.lat);
       if (io.region && !w.polygon) {
         const coast::LonLatBox& b = *io.region;
         const double lon = b.west + std::fmod(std::fmod(p.lon - b.west, 360.0) + 360.0, 360.0);
         if (lon > b.east || p.lat < b.south || p.lat > b.north)
-          w.in.fail_with_notes(*set_at(w.d, o), Diag::WrongCoastlineOption,
-                               fmt::format("Coastline[{}].{} point (lon {}, lat {}) lies outside the Region {{{}, {}, "
-                                           "{}, {}}}",
-                                           id, name_of(o), p.lon, p.lat, b.west, b.east, b.south, b.north),
-                               {region_note(), {w.at, "the coastline is imported here"}});
+          w.in.fail_with_notes(*set_at(w.d, o), {region_note(), {w.at, "the coastline is imported here"}},
+                               Diag::CoastlinePointOutsideBox, id, name_of(o), p.lon, p.lat, b.west, b.east, b.south,
+                               b.north);
       }
     }
   }
@@ -417,14 +392,12 @@ void read_patch(CoastImportWork& w) {
   const CoastOpt missing = w.set.patch_file.empty() ? CoastOpt::Patch : CoastOpt::PatchBox;
   const SourceRange given_at = *set_at(w.d, given);
   if (w.set.patch_file.empty() || !io.patch_box)
-    fail_option(w.in, given_at, id, name_of(given),
-                fmt::format("needs Coastline[{}].{} too: the patch replaces the shoreline inside a box", id,
-                            name_of(missing)));
+    w.in.fail(given_at, Diag::CoastlinePatchAlone, id, name_of(given), name_of(missing));
   const std::string& ppath = w.set.patch_file;
   const bool shp = ppath.size() > 4 && ppath.compare(ppath.size() - 4, 4, ".shp") == 0;
   auto pdata = coast::read_coastline(shp ? coast::CoastFormat::Shapefile : coast::CoastFormat::LonLatText, ppath);
   if (!pdata)
-    fail_option(w.in, given_at, id, name_of(CoastOpt::Patch), fmt::format("cannot be read: {}", pdata.error().to_string()));
+    w.in.fail(given_at, Diag::CoastlineOptionUnreadable, id, name_of(CoastOpt::Patch), pdata.error().to_string());
   io.patch = std::move(pdata->rings);
 }
 
@@ -501,27 +474,23 @@ void report_changes(CoastImportWork& w, const coast::CoastModel& m) {
   const int id = w.id;
   if (m.report.patch) {   // where the two shorelines disagree at the patch box
     const coast::PatchReport& pr = *m.report.patch;
-    in.diags().report(*set_at(d, CoastOpt::Patch), Diag::CoastlineDeviation,
-                      fmt::format("Coastline[{}]: the patch replaces the shoreline inside its box ({} base and {} patch "
-                                  "chain(s) cut at the box); {} stretch(es) of box edge close the gaps between the two, "
-                                  "the longest {:.0f} m at lon {:.4f} lat {:.4f}",
-                                  id, pr.base_chains, pr.local_chains, pr.steps, pr.max_step_m, pr.max_step_at.lon,
-                                  pr.max_step_at.lat));
+    in.diags().report(*set_at(d, CoastOpt::Patch), Diag::CoastlinePatchSplice, id, pr.base_chains, pr.local_chains,
+                      pr.steps, pr.max_step_m, pr.max_step_at.lon, pr.max_step_at.lat);
   }
   if (m.seas_dropped > 0)
-    in.diags().report(*set_at(d, CoastOpt::SeaAt), Diag::CoastlineSeasDropped,
-                      fmt::format("Coastline[{}]: {} sea(s) holding no SeaAt point dropped, {} kept", id,
-                                  m.seas_dropped, m.surfaces.size()));
+    in.diags().report(*set_at(d, CoastOpt::SeaAt), Diag::CoastlineSeasDroppedCount, id, m.seas_dropped,
+                      m.surfaces.size());
   CoastlineImport& imp = *w.imp;
   for (const coast::ReportLine& line : m.report.items()) {
-    const std::string name = fmt::format("Coastline[{}]", id);
-    const std::string text = fmt::format("{}: {}", name, line.text);
-    auto h = line.sea_dropped ? in.diags().report(*set_at(d, CoastOpt::SeaAt), Diag::CoastlineSeasDropped, text)
-             : line.step_unmet ? in.diags().report(*set_at(d, CoastOpt::KeepOpen), Diag::CoastlinePassage, text)
-             : line.kept_open ? in.diags().report(*set_at(d, CoastOpt::KeepOpen), Diag::CoastlineKeptOpen, text)
-             : line.passage   ? in.diags().report(w.at, Diag::CoastlinePassage, text)
-                              : in.diags().report(w.at, Diag::CoastlineRepair, name, line.text);
-    h.item(coastline_item(line));
+    // A dropped sea at SeaAt, a passage kept open at KeepOpen, a closure at the import.
+    if (line.sea_dropped)
+      report_passage_change(in.diags(), *set_at(d, CoastOpt::SeaAt), id, line);
+    else if (line.step_unmet || line.kept_open)
+      report_passage_change(in.diags(), *set_at(d, CoastOpt::KeepOpen), id, line);
+    else if (line.passage)
+      report_passage_change(in.diags(), w.at, id, line);
+    else
+      in.diags().report(w.at, Diag::CoastlineRepair, fmt::format("Coastline[{}]", id), line.text).item(coastline_item(line));
   }
   for (const coast::RepairEntry& e : m.report.repair) {   // for Coastline{n, "Closures"} and "DroppedSeas"
     std::vector<double>* list = e.kind == coast::RepairKind::ClosedPassage ? &imp.closures
@@ -536,14 +505,14 @@ void report_changes(CoastImportWork& w, const coast::CoastModel& m) {
   if (m.region_empty) {   // the box of the Region, or of the file's own -R
     const coast::ImportOptions& io = w.io();
     const SourceRange* r = set_at(d, CoastOpt::Region);
-    const std::string box =
-        w.polygon ? std::string(" polygon")
-        : io.region ? fmt::format(" {{{}, {}, {}, {}}}", io.region->west, io.region->east, io.region->south, io.region->north)
-                  : std::string(" of the file");
-    in.diags().report(r ? *r : w.at, Diag::CoastlineRegionEmpty,
-                      fmt::format("Coastline[{}]: the Region{} holds no shoreline of the levels kept (none left at "
-                                  "this accuracy and MinArea): its {} is the only loop, all open boundary",
-                                  id, box, w.polygon ? "outline" : "box"));
+    const SourceRange region_at = r ? *r : w.at;
+    if (w.polygon)
+      in.diags().report(region_at, Diag::CoastlineRegionPolygonEmpty, id);
+    else if (io.region)
+      in.diags().report(region_at, Diag::CoastlineRegionBoxEmpty, id, io.region->west, io.region->east, io.region->south,
+                        io.region->north);
+    else
+      in.diags().report(region_at, Diag::CoastlineFileRegionEmpty, id);
   }
 }
 
@@ -570,22 +539,23 @@ void report_deviation(CoastImportWork& w, const coast::CoastModel& m) {
   const coast::DeviationReport& dev = m.report.deviation;
   w.imp->deviation = {dev.max, dev.p95, dev.max_before, dev.where.lon, dev.where.lat,
                       static_cast<double>(dev.points_added)};
-  w.in.diags().report(w.d.defined_at, Diag::CoastlineDeviation,
-                      fmt::format("Coastline[{}]: the coast curves lie within {:.0f} m of the source points (95% within "
-                                  "{:.0f} m; {:.0f} m before {} control point(s) were put back), farthest at lon {:.4f} "
-                                  "lat {:.4f}{}{}",
-                                  w.id, dev.max, dev.p95, dev.max_before, dev.points_added, dev.where.lon, dev.where.lat,
-                                  dev.narrow_features > 0
-                                      ? fmt::format("; {} inlet(s) or spit(s) too narrow for the accuracy left out (up to "
-                                                    "{:.0f} m deep; the first at lon {:.4f} lat {:.4f})",
-                                                    dev.narrow_features, dev.narrow_max, dev.where_narrow.lon,
-                                                    dev.where_narrow.lat)
-                                      : std::string(),
-                                  dev.left_over_bound > 0
-                                      ? fmt::format("; {} span(s) over the bound with no source point left to put back "
-                                                    "(first at lon {:.4f} lat {:.4f})",
-                                                    dev.left_over_bound, dev.where_over.lon, dev.where_over.lat)
-                                      : std::string()));
+  lang::Diagnostics& diags = w.in.diags();
+  const SourceRange at = w.d.defined_at;
+  const bool narrow = dev.narrow_features > 0, over = dev.left_over_bound > 0;
+  if (narrow && over)
+    diags.report(at, Diag::CoastlineDeviationNarrowOverBound, w.id, dev.max, dev.p95, dev.max_before, dev.points_added,
+                 dev.where.lon, dev.where.lat, dev.narrow_features, dev.narrow_max, dev.where_narrow.lon,
+                 dev.where_narrow.lat, dev.left_over_bound, dev.where_over.lon, dev.where_over.lat);
+  else if (narrow)
+    diags.report(at, Diag::CoastlineDeviationNarrow, w.id, dev.max, dev.p95, dev.max_before, dev.points_added,
+                 dev.where.lon, dev.where.lat, dev.narrow_features, dev.narrow_max, dev.where_narrow.lon,
+                 dev.where_narrow.lat);
+  else if (over)
+    diags.report(at, Diag::CoastlineDeviationOverBound, w.id, dev.max, dev.p95, dev.max_before, dev.points_added,
+                 dev.where.lon, dev.where.lat, dev.left_over_bound, dev.where_over.lon, dev.where_over.lat);
+  else
+    diags.report(at, Diag::CoastlineDeviation, w.id, dev.max, dev.p95, dev.max_before, dev.points_added, dev.where.lon,
+                 dev.where.lat);
 }
 
 // One loop's points, curves and curve loop in the model; returns the loop's tag. Each piece
@@ -615,8 +585,7 @@ int add_loop(CoastImportWork& w, const coast::CoastModel& m, const coast::CoastL
     }
   }
   if (pts.size() < 2)   // the kernel never returns such a loop; refuse it rather than guess
-    in.fail_fmt(at, Diag::CoastlineError,
-                fmt::format("Coastline[{}]: the import produced a loop with {} point(s)", w.id, pts.size()));
+    in.fail(at, Diag::CoastlineLoopTooShort, w.id, pts.size());
   std::vector<int> curves;
   for (std::size_t c = 0; c < loop.curves.size(); ++c) {
     const coast::CoastCurve& cc = m.curves[loop.curves[c]];
@@ -699,9 +668,7 @@ void exec_coastline_stmt(Interpreter& in, StmtId id) {
       const auto& n = std::get<CoastlineActionStmt>(s.node);
       const int cid = coast_id(in, n.id);
       require_coast(in, cid, in.ast().expr(n.id).range, "run an action of");
-      in.fail_fmt(n.action_range, Diag::UnknownCoastlineOption,
-                  fmt::format("Coastline[{}] has no action '{}': import it with 'loops[] = Coastline{{{}}};'", cid,
-                              in.ast().str(n.action), cid));
+      in.fail(n.action_range, Diag::CoastlineNoAction, cid, std::string(in.ast().str(n.action)));
       break;
     }
     default: SM_ASSERT(false, "kernel/statements.def sent a statement that is not a coastline statement");
@@ -725,16 +692,12 @@ Value eval_coastline_query(Interpreter& in, ExprId e) {
       for (std::size_t k = 0; k < std::size(kSides); ++k)
         if (names.emplace_back(kSides[k]), kSides[k] == t) side = static_cast<int>(k);
       if (what != "OpenCurves")
-        in.fail_fmt(r, Diag::UnknownCoastlineOption,
-                    fmt::format("Coastline{{}} takes a side (\"{}\") only after \"OpenCurves\", not after \"{}\"", t, what));
+        in.fail(r, Diag::CoastlineSideMisplaced, t, what);
       if (side < 0 && v.strs().size() == 1 && t.size() > 4 && t.size() < 12 && t.starts_with("Edge") &&
           t.find_first_not_of("0123456789", 4) == std::string::npos && t[4] != '0')
         edge = std::stol(t.substr(4)) - 1;
       if ((side < 0 && edge < 0) || v.strs().size() != 1)
-        in.fail_fmt(r, Diag::UnknownCoastlineOption,
-                    fmt::format("Coastline{{}}: \"{}\" is not a side of the Region box{}; the sides are West, East, South "
-                                "and North (Edge1, Edge2, ... for a Region polygon)",
-                                t, did_you_mean(t, names)));
+        in.fail(r, Diag::CoastlineNotASide, t, did_you_mean(t, names));
       continue;
     }
     if (v.is_string()) {
@@ -744,10 +707,9 @@ Value eval_coastline_query(Interpreter& in, ExprId e) {
       std::vector<std::string> names;
       for (std::string_view s : kSelectors) known = known || s == what, names.emplace_back(s);
       if (!known || v.strs().size() != 1)
-        in.fail_fmt(r, Diag::UnknownCoastlineOption,
-                    fmt::format("Coastline{{}} cannot return \"{}\"{}; it returns {} or {}", what, did_you_mean(what, names),
-                                fmt::join(std::begin(kSelectors), std::end(kSelectors) - 1, ", "),
-                                std::end(kSelectors)[-1]));
+        in.fail(r, Diag::CoastlineUnknownSelector, what, did_you_mean(what, names),
+                fmt::format("{}", fmt::join(std::begin(kSelectors), std::end(kSelectors) - 1, ", ")),
+                std::end(kSelectors)[-1]);
       continue;
     }
     for (double d : v.nums()) {
@@ -756,7 +718,7 @@ Value eval_coastline_query(Interpreter& in, ExprId e) {
       ids.emplace_back(static_cast<int>(d), r);
     }
   }
-  if (ids.empty()) in.fail_fmt(x.range, Diag::MissingCoastline, "Coastline{} needs the id of a coastline: 'Coastline{1}'");
+  if (ids.empty()) in.fail(x.range, Diag::CoastlineQueryNoId);
   std::vector<double> out;
   for (const auto& [id, r] : ids) {
     CoastlineDef& d = require_coast(in, id, r, "import");
@@ -764,27 +726,13 @@ Value eval_coastline_query(Interpreter& in, ExprId e) {
     const Value* region = option(d, CoastOpt::Region);
     if (what == "OpenCurves" && edge >= 0) {
       const std::size_t n = region ? region->nums().size() / 2 : 0;
-      if (!region || n == 2)
-        in.fail_fmt(r, Diag::WrongCoastlineOption,
-                    fmt::format("Coastline{{{}, \"OpenCurves\", \"Edge{}\"}} needs a Region polygon: {}", id, edge + 1,
-                                region ? "this Region is a box, whose sides are West, East, South and North"
-                                       : "there is no Region"));
-      if (static_cast<std::size_t>(edge) >= n)
-        in.fail_fmt(r, Diag::WrongCoastlineOption,
-                    fmt::format("Coastline{{{}, \"OpenCurves\", \"Edge{}\"}}: the Region polygon has {} edges, Edge1 to "
-                                "Edge{}",
-                                id, edge + 1, n, n));
+      if (!region) in.fail(r, Diag::CoastlineEdgeNoRegion, id, edge + 1);
+      if (n == 2) in.fail(r, Diag::CoastlineEdgeOfBox, id, edge + 1);
+      if (static_cast<std::size_t>(edge) >= n) in.fail(r, Diag::CoastlineEdgeOutOfRange, id, edge + 1, n);
     }
     if (what == "OpenCurves" && side >= 0) {
-      if (!region)
-        in.fail_fmt(r, Diag::WrongCoastlineOption,
-                    fmt::format("Coastline{{{}, \"OpenCurves\", \"{}\"}} needs a Region: the sides are those of its box",
-                                id, kSides[side]));
-      if (region->nums().size() != 4)
-        in.fail_fmt(r, Diag::WrongCoastlineOption,
-                    fmt::format("Coastline{{{}, \"OpenCurves\", \"{}\"}}: the Region is a polygon, whose edges are "
-                                "Edge1, Edge2, ...",
-                                id, kSides[side]));
+      if (!region) in.fail(r, Diag::CoastlineSideNoRegion, id, kSides[side]);
+      if (region->nums().size() != 4) in.fail(r, Diag::CoastlineSideOfPolygon, id, kSides[side]);
     }
     if (!d.imported) d.imported = import_coastline(in, id, d, x.range);
     const CoastlineImport& imp = *d.imported;

@@ -10,4 +10,9 @@ namespace sm::interp {
 /// The sort of change, its figure and its lon/lat, for lang::Diagnostics::Handle::item.
 lang::DiagItem coastline_item(const coast::ReportLine& line);
 
+/// Reports a closed passage, a dam, water removed behind one, a passage kept open or a
+/// dropped sea of Coastline[id] at `at`, worded by its kind (coast::RepairEntry), with its item.
+lang::Diagnostics::Handle report_passage_change(lang::Diagnostics& diags, lang::SourceRange at, int id,
+                                                const coast::ReportLine& line);
+
 }  // namespace sm::interp

@@ -25,8 +25,7 @@ using namespace sm::lang;
 namespace {
 
 void report_missing_compound(Interpreter& in, SourceRange at, const char* what, int tag) {
-  in.diags().report(at, Diag::GmshCompat,
-                    fmt::format("{} {} does not exist: Gmsh 4.8.4 leaves it out of the compound, and so do we", what, tag));
+  in.diags().report(at, Diag::GmshCompatCompoundMissing, what, tag);
 }
 
 }  // namespace
@@ -53,9 +52,7 @@ void exec_compound_stmt(Interpreter& in, StmtId id) {
   }
   if (group.empty()) return;
   if (curves && group.size() > 1 && chain_compound(m, group).empty())
-    in.diags().report(s.range, Diag::GmshCompat,
-                      "these curves are not one chain (end to end, no branch): Gmsh 4.8.4 meshes them as one curve "
-                      "all the same and warns; stereomesh meshes them one by one");
+    in.diags().report(s.range, Diag::GmshCompatCompoundNotChain);
   (curves ? k.constraints.compound_curves : k.constraints.compound_surfaces).push_back(std::move(group));
 }
 

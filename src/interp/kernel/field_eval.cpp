@@ -274,17 +274,18 @@ field::BuildContext kernel_build_context(const KernelState& k, const CurveMeshNo
 
 namespace {
 
-// The build context of the interpreter's fields: their gmsh-compat sentences become
-// warnings at the option statement they name (else at `use`), each once.
+// The build context of the interpreter's fields: their gmsh-compat notes become warnings at
+// the option statement they name (else at `use`), each once.
 field::BuildContext interp_build_context(Interpreter& in, const CurveMeshNodes* mesh_nodes, SourceRange use) {
   field::BuildContext ctx = kernel_build_context(in.kernel(), mesh_nodes);
   ctx.threads = static_cast<int>(in.options().number("General.NumThreads"));
   Interpreter* interp = &in;
-  ctx.compat_note = [interp, use](int id, std::string_view option, const std::string& sentence) {
+  ctx.compat_note = [interp, use](int id, std::string_view option, std::string_view entity, int tag) {
     KernelState& k = interp->kernel();
-    if (!k.field_compat_reported.insert(sentence).second) return;
+    if (!k.field_compat_reported.insert(fmt::format("{} {} {} {}", id, option, entity, tag)).second) return;
     auto it = k.field_option_at.find({id, std::string(option)});
-    interp->diags().report(it != k.field_option_at.end() ? it->second : use, Diag::GmshCompat, sentence);
+    interp->diags().report(it != k.field_option_at.end() ? it->second : use, Diag::GmshCompatFieldMissing, id, option,
+                           entity, tag);
   };
   return ctx;
 }

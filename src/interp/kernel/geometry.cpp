@@ -259,11 +259,9 @@ void exec_split_curve(Interpreter& in, const Stmt& s, const SplitCurveStmt& n) {
 }  // namespace
 
 void report_compat_notes(Interpreter& in, SourceRange at) {
-  for (geo::Model::CompatNote& note : in.kernel().model.take_compat_notes()) {
-    if (note.unchecked_loop)
-      in.diags().report(at, Diag::GmshCompatUncheckedLoop, geo_diagnostic(*note.unchecked_loop).message);
-    else
-      in.diags().report(at, Diag::GmshCompat, note.sentence);
+  for (const geo::Model::CompatNote& note : in.kernel().model.take_compat_notes()) {
+    const GeoDiagnostic d = geo_compat_diagnostic(note);
+    in.diags().report_message(at, d.kind, d.message);
   }
 }
 

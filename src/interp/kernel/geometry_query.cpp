@@ -77,9 +77,7 @@ void copy_meshing_method(Interpreter& in, SourceRange at, const std::vector<std:
       c.surface_algorithm[to] = it->second;
   }
   if (dropped_corners)
-    in.diags().report(at, Diag::GmshCompat,
-                      "only automatic transfinite surface specifications can be copied: the copy takes its "
-                      "corners from its boundary (as Gmsh)");
+    in.diags().report(at, Diag::GmshCompatTransfiniteCopy);
 }
 
 std::vector<geo::DimTag> apply_transform(Interpreter& in, const Expr& x, const TransformExpr& t) {

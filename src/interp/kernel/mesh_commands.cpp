@@ -202,10 +202,7 @@ void enforce_min_time_step(Interpreter& in, ModelMesh& mesh, const field::SizeFi
   for (const StepRemoval& rm : r.removed) {
     double lon = 0, lat = 0;
     time_step_lonlat(rm.where, opt, lon, lat);
-    in.diags().report_message(where, Diag::MeshWarning,
-                              fmt::format("surface {}: node at lon {:.5f} lat {:.5f} removed for Mesh.MinTimeStep "
-                                          "(edge {:.1f} m, time step {:.3g} s)",
-                                          rm.surface, lon, lat, rm.edge, rm.step));
+    in.diags().report(where, Diag::MeshStepNodeRemoved, rm.surface, lon, lat, rm.edge, rm.step);
   }
   const std::vector<double> steps = triangle_time_steps(mesh, h, opt);
   std::vector<std::pair<double, std::size_t>> under;
@@ -220,12 +217,10 @@ void enforce_min_time_step(Interpreter& in, ModelMesh& mesh, const field::SizeFi
   for (std::size_t i = 0; i < under.size() && i < kMaxStepUnmetReported; ++i) {
     double lon = 0, lat = 0;
     time_step_lonlat(centroid[under[i].second], opt, lon, lat);
-    in.diags().report_message(where, Diag::MeshWarning,
-                              fmt::format("Mesh.MinTimeStep = {:g} s not met at lon {:.5f} lat {:.5f}: time step "
-                                          "{:.3g} s there ({} triangle(s) under it{}; a passage kept open, or coast "
-                                          "nodes no collapse can remove)",
-                                          min_step, lon, lat, under[i].first, under.size(),
-                                          under.size() > kMaxStepUnmetReported ? ", the worst listed" : ""));
+    if (under.size() > kMaxStepUnmetReported)
+      in.diags().report(where, Diag::MeshStepUnmetWorst, min_step, lon, lat, under[i].first, under.size());
+    else
+      in.diags().report(where, Diag::MeshStepUnmet, min_step, lon, lat, under[i].first, under.size());
   }
 }
 
@@ -241,12 +236,11 @@ void report_depth_clamp(Interpreter& in, const field::DepthClampReport& c) {
   const auto def = k.field_defined_at.find(id);
   if (def == k.field_defined_at.end()) return;
   const double share = c.points ? 100.0 * static_cast<double>(c.clamped) / static_cast<double>(c.points) : 0.0;
-  std::string text = fmt::format("Field[{}]: MinDepth {:g} m raised {} of {} node depths ({:.1f}%; {} of them on land "
-                                 "in the grid)", id, c.min_depth, c.clamped, c.points, share, c.dry);
   if (c.has_worst)
-    text += fmt::format("; the most at lon {:.4f} lat {:.4f}, from {:.4g} m in the grid to {:.4g} m", c.lon, c.lat,
-                        c.grid_depth, c.value);
-  in.diags().report(def->second, Diag::DepthMinClamp, text);
+    in.diags().report(def->second, Diag::DepthMinClampWorst, id, c.min_depth, c.clamped, c.points, share, c.dry, c.lon,
+                      c.lat, c.grid_depth, c.value);
+  else
+    in.diags().report(def->second, Diag::DepthMinClamp, id, c.min_depth, c.clamped, c.points, share, c.dry);
 }
 
 // The notes pointing at where `option` was set, if a statement set it.

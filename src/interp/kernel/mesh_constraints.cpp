@@ -19,8 +19,7 @@ namespace {
 
 // Gmsh ignores constraints on entities that do not exist; we say so.
 void report_missing(Interpreter& in, SourceRange at, const char* what, int tag) {
-  in.diags().report(at, Diag::GmshCompat,
-                    fmt::format("{} {} does not exist: Gmsh 4.8.4 ignores its mesh constraint, and so do we", what, tag));
+  in.diags().report(at, Diag::GmshCompatConstraintMissing, what, tag);
 }
 
 void exec_transfinite_curve(Interpreter& in, const Stmt& s, const TransfiniteCurveStmt& n) {

@@ -11,6 +11,7 @@
 
 #include "coast/gshhs_plugin_geo.h"
 #include "field/registry.h"
+#include "interp/coast_diagnostic.h"
 #include "interp/kernel/coastline_report.h"
 #include "interp/kernel/dispatch.h"
 #include "interp/kernel/field_eval.h"
@@ -46,18 +47,15 @@ void set_plugin_option(Interpreter& in, const PluginStmt& p, const std::string& 
     std::vector<std::string> names;
     for (const PluginOption& c : kPluginOptions) names.emplace_back(c.name);
     const std::string best = field::closest_name(name, names);
-    in.fail_fmt(p.member_range, Diag::UnknownPluginOption,
-                fmt::format("Plugin(GSHHS) has no option '{}'{}", name,
-                            best.empty() ? fmt::format(" (its options: {}; its action: Run)", fmt::join(names, ", "))
-                                         : fmt::format(" (did you mean '{}'?)", best)));
+    if (best.empty()) in.fail(p.member_range, Diag::PluginNoOption, name, fmt::format("{}", fmt::join(names, ", ")));
+    in.fail(p.member_range, Diag::PluginNoOptionLike, name, best);
   }
   const Value v = in.eval(p.value);
   const SourceRange at = in.ast().expr(p.value).range;
   if (o->is_string != v.is_string() || (v.is_string() ? v.strs().size() : v.nums().size()) != 1)
-    in.fail_fmt(at, Diag::PluginError,
-                fmt::format("Plugin(GSHHS).{} takes {}", name, o->is_string ? "one string" : "one number"));
+    in.fail(at, Diag::PluginOptionType, name, std::string_view(o->is_string ? "one string" : "one number"));
   if (!o->is_string && !std::isfinite(v.nums().front()))
-    in.fail_fmt(at, Diag::PluginError, fmt::format("Plugin(GSHHS).{} is not finite", name));
+    in.fail(at, Diag::PluginOptionNotFinite, name);
   in.kernel().gshhs_plugin_options.insert_or_assign(name, v);
 }
 
@@ -97,7 +95,8 @@ void run_plugin(Interpreter& in, const Stmt& s) {
     std::filesystem::remove(opt.out_file_name, ec);
     coast::CoastError e = res.error();
     if (e.file == opt.out_file_name) e.file = out;
-    in.fail_fmt(s.range, Diag::PluginError, e.to_string());
+    const CoastDiagnostic cd = coast_diagnostic(e, std::nullopt);
+    in.fail_message(s.range, cd.kind, cd.message);
   }
   std::filesystem::rename(opt.out_file_name, out, ec);
   if (ec) {
@@ -117,8 +116,7 @@ void exec_gshhs_plugin_stmt(Interpreter& in, StmtId id) {
     return;
   }
   if (member != "Run")
-    in.fail_fmt(p.member_range, Diag::UnknownPluginOption,
-                fmt::format("Plugin(GSHHS) has no action '{}' (its action is 'Run')", member));
+    in.fail(p.member_range, Diag::PluginNoAction, member);
   run_plugin(in, s);
 }
 

@@ -54,3 +54,27 @@ TEST_CASE("geo_diagnostic: loops, circles and holes, one kind per shape") {
   CHECK(geo_diagnostic(gone).message == "cannot extrude unknown curve 4");
   CHECK(std::string(diag_info(geo_diagnostic(gone).kind).kebab) == "missing-entity");
 }
+
+TEST_CASE("geo_compat_diagnostic: the kernel's gmsh-compat notes carry values, the table words them") {
+  Model m;
+  REQUIRE(m.add_point(0, {0, 0, 0}));   // tag 0: accepted with a note
+  REQUIRE(m.add_point(1, {1, 0, 0}));
+  REQUIRE(m.add_curve(4, CurveKind::Line, {1, 1}));   // a line to itself: its tag taken, no curve
+  REQUIRE(m.set_mesh_size({7}, 0.1));                  // a missing point: ignored with a note
+  const auto notes = m.take_compat_notes();
+  REQUIRE(notes.size() == 3);
+  using sm::interp::geo_compat_diagnostic;
+  CHECK(geo_compat_diagnostic(notes[0]).kind == Diag::GmshCompatTagZero);
+  CHECK(geo_compat_diagnostic(notes[0]).message ==
+        "point tag 0: Gmsh accepts it; so do we, but tags are meant to be positive");
+  CHECK(geo_compat_diagnostic(notes[1]).message ==
+        "line 4 goes from point 1 to itself: Gmsh keeps it as a degenerate curve with no mesh elements; we do not "
+        "create it (only its tag is taken)");
+  CHECK(geo_compat_diagnostic(notes[2]).message == "MeshSize of point 7, which does not exist: Gmsh ignores it; so do we");
+  for (const auto& n : notes) CHECK(std::string(diag_info(geo_compat_diagnostic(n).kind).kebab) == "gmsh-compat");
+
+  Model::CompatNote later{Model::CompatNoteId::OuterListedLater, {3, 2, 1}, {}, std::nullopt};
+  CHECK(geo_compat_diagnostic(later).message ==
+        "plane surface 3: curve loop 2 encloses the others but is listed after curve loop 1; Gmsh finds the enclosing "
+        "loop, and so do we: curve loop 2 is the outer one");
+}

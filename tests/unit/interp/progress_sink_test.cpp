@@ -70,7 +70,7 @@ void check_stage(const Stage& s) {
   }
 }
 
-const char* const kSquare =
+const char* const kSquareMesh =
     "Point(1) = {0, 0, 0, 0.1}; Point(2) = {1, 0, 0, 0.1};\n"
     "Point(3) = {1, 1, 0, 0.1}; Point(4) = {0, 1, 0, 0.1};\n"
     "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};\n"
@@ -83,7 +83,7 @@ const char* const kSquare =
 
 TEST_CASE("progress: 1D one unit per curve, then 2D, every stage ended") {
   RecordingProgress p;
-  const Run r = run_with(std::string(kSquare) + "Mesh 2;\n", &p);
+  const Run r = run_with(std::string(kSquareMesh) + "Mesh 2;\n", &p);
   INFO(r.rendered);
   REQUIRE(r.ok);
   CHECK_FALSE(p.nested);
@@ -130,9 +130,9 @@ TEST_CASE("progress: a face refined in parts nests '2D refine' inside '2D', one 
 
 TEST_CASE("progress: silent below General.Verbosity 4, and without a sink") {
   RecordingProgress p;
-  REQUIRE(run_with("General.Verbosity = 3;\n" + std::string(kSquare) + "Mesh 2;\n", &p).ok);
+  REQUIRE(run_with("General.Verbosity = 3;\n" + std::string(kSquareMesh) + "Mesh 2;\n", &p).ok);
   CHECK(p.stages.empty());
-  REQUIRE(run_with(std::string(kSquare) + "Mesh 2;\n", nullptr).ok);
+  REQUIRE(run_with(std::string(kSquareMesh) + "Mesh 2;\n", nullptr).ok);
 }
 
 TEST_CASE("progress: a failing 1D mesh still ends its stage") {

@@ -28,9 +28,10 @@ struct ImportLike {
     for (int i = 0; i < 7; ++i)
       diags.report(at, sm::lang::Diag::CoastlineRepair, "Coastline[1]", "record ... strait")
           .item({"strait kept open", "width " + std::to_string(100 + i) + " m", true, 10.0 + i, -5.5});
-    for (int i = 0; i < 2; ++i)
-      diags.report(at, sm::lang::Diag::CoastlinePassage, "Coastline[1]: passage")
-          .item({"passage closed", "width 42 m", true, 1, 2});
+    // Two kinds of one kebab name (a passage with and without its source record): one kind
+    // and one sort to the reader.
+    for (const sm::lang::Diag kind : {sm::lang::Diag::CoastlinePassageClosed, sm::lang::Diag::CoastlinePassageClosedAt})
+      diags.report_message(at, kind, "Coastline[1]: passage").item({"passage closed", "width 42 m", true, 1, 2});
     diags.report(sm::lang::SourceRange{f, 0, 1}, sm::lang::Diag::UserWarning, "elsewhere");
   }
 };
@@ -94,7 +95,7 @@ TEST_CASE("diagnostic groups: a ranked sort lists its largest five, largest firs
   for (double w : widths) {
     sm::lang::DiagItem item{"passage closed", "width " + std::to_string(static_cast<int>(w)) + " m", true, w / 100, 0};
     item.rank = w;
-    diags.report(at, sm::lang::Diag::CoastlinePassage, "Coastline[1]: passage").item(item);
+    diags.report_message(at, sm::lang::Diag::CoastlinePassageClosedAt, "Coastline[1]: passage").item(item);
   }
   sm::lang::GroupRenderOptions opt;
   opt.how_to_see_all = "see all";

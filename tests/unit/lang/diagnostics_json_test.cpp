@@ -9,7 +9,9 @@ TEST_CASE("diagnostics json: every field, nulls without a location") {
   sm::lang::SourceManager sources;
   const sm::lang::FileId f = sources.add_buffer("dir/w \"1\".geo", "x = 1;\nL[] = Coastline{1};\n").file;
   sm::lang::Diagnostics diags(sources);
-  diags.report(sm::lang::SourceRange{f, 13, 25}, sm::lang::Diag::CoastlinePassage, "Coastline[1]: passage")
+  diags
+      .report_message(sm::lang::SourceRange{f, 13, 25}, sm::lang::Diag::CoastlinePassageClosedAt,
+                      "Coastline[1]: passage")
       .item({"passage closed", "width 42 m", true, 12.5, -0.25})
       .note(sm::lang::SourceRange{f, 0, 1}, "set here");
   diags.report_message(sm::lang::SourceRange{}, sm::lang::Diag::MeshWarning, "tab\there");
