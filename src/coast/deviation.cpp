@@ -363,7 +363,9 @@ CurveScan scan_curve(const WorkCurve& c, const geo::PolarSphere& ps, const Devia
       // The i-th sample of the span lies, as a rule, nearest the source points that far
       // along the segment: the source segments there are tried first, and the whole
       // polyline only from the first sample none of them is within the bound of.
-      const auto along = [&](std::size_t i) {
+      // (The bounds passed by value: a lambda may not capture structured bindings before
+      // C++20's P1091 reached every compiler, clang 14 included.)
+      const auto along = [&, a = a, b = b](std::size_t i) {
         const long steps = static_cast<long>(std::max<std::size_t>(own.size() - 1, 1));
         return static_cast<std::size_t>((a - from) + (b - a) * static_cast<long>(i) / steps);
       };
