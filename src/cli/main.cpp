@@ -165,19 +165,19 @@ int run(const std::vector<std::string>& argv) {
   diags.set_sink(stream);
   for (const auto& [name, v] : a.option_numbers) {
     if (auto err = interp.options().set_number(name, v); !err.empty()) {
-      std::fprintf(stderr, "stereomesh: %s\n", err.c_str());
+      std::fprintf(stderr, "stereomesh: %s\n", err.message.c_str());
       return kExitUsage;
     }
   }
   for (const auto& [name, v] : a.set_numbers) {
     if (auto err = interp.preset_number(name, v); !err.empty()) {
-      std::fprintf(stderr, "stereomesh: -setnumber: %s\n", err.c_str());
+      std::fprintf(stderr, "stereomesh: -setnumber: %s\n", err.message.c_str());
       return kExitUsage;
     }
   }
   for (const auto& [name, v] : a.set_strings) {
     if (auto err = interp.preset_string(name, v); !err.empty()) {
-      std::fprintf(stderr, "stereomesh: -setstring: %s\n", err.c_str());
+      std::fprintf(stderr, "stereomesh: -setstring: %s\n", err.message.c_str());
       return kExitUsage;
     }
   }

@@ -416,7 +416,7 @@ Value Interpreter::eval_postfix(const Expr& e, const PostfixExpr& p) {
     const double old = read_option(o->option).nums().at(0);
     const std::string name = option_name(o->option);
     if (auto err = options_.set_number(name, old + delta); !err.empty())
-      fail_fmt(t.range, Diag::InvalidOptionValue, err);
+      fail_message(t.range, err.kind, std::move(err.message));
     return Value::number(old);
   }
   fail(e.range, Diag::IncDecExprTarget);

@@ -83,7 +83,7 @@ void Interpreter::assign_option(const LValue& t, AffOp op, ExprId value, SourceR
     fail_fmt(o.range, Diag::UnknownOption, name, fmt::format(" (did you mean '{}'?)", options_.closest(name)));
   }
   const SourceRange vr = ast_.expr(value).range;
-  std::string err;
+  OptionRefusal err;
   switch (info->kind) {
     case OptionKind::Number: {
       const double v = eval_number(value);
@@ -121,12 +121,11 @@ void Interpreter::assign_option(const LValue& t, AffOp op, ExprId value, SourceR
         cname = std::string(ast_.str(s->text));
       if (!cname.empty()) {
         if (!named_color(cname, c))
-          fail_fmt(vr, Diag::InvalidOptionValue, fmt::format("unknown color name '{}'", cname));
+          fail(vr, Diag::OptionUnknownColorName, cname);
       } else {
         const std::vector<double> rgba = eval_numbers(value);
         if (rgba.size() != 3 && rgba.size() != 4)
-          fail_fmt(vr, Diag::InvalidOptionValue,
-                   fmt::format("a color is {{r, g, b}} or {{r, g, b, a}}, found {} numbers", rgba.size()));
+          fail(vr, Diag::OptionColorSize, rgba.size());
         std::copy(rgba.begin(), rgba.end(), c.begin());
       }
       err = options_.set_color(name, c);
@@ -137,13 +136,12 @@ void Interpreter::assign_option(const LValue& t, AffOp op, ExprId value, SourceR
         fail(r, Diag::OptionOnlyAssign, std::string_view("box"), name);
       const std::vector<double> v = eval_numbers(value);
       if (v.size() != 4)
-        fail_fmt(vr, Diag::InvalidOptionValue,
-                 fmt::format("'{}' is a box {{west, east, south, north}} in degrees, found {} numbers", name, v.size()));
+        fail(vr, Diag::OptionBoxSize, name, v.size());
       err = options_.set_box(name, {v[0], v[1], v[2], v[3]});
       break;
     }
   }
-  if (!err.empty()) fail_fmt(vr, Diag::InvalidOptionValue, err);
+  if (!err.empty()) fail_message(vr, err.kind, std::move(err.message));
   kernel_.option_set_at[std::string(info->name)] = r;
 }
 
@@ -294,7 +292,7 @@ void Interpreter::exec_incdec(const Stmt& s, const IncDecStmt& a) {
       if (cur.kind() != Value::Kind::Number)
         fail(t.range, Diag::TypeNotNumberOption, name);
       if (auto err = options_.set_number(name, cur.nums()[0] + delta); !err.empty())
-        fail_fmt(s.range, Diag::InvalidOptionValue, err);
+        fail_message(s.range, err.kind, std::move(err.message));
       return;
     }
     case LValue::Kind::Var: {

@@ -42,29 +42,27 @@ Interpreter::Interpreter(SourceManager& sources, Diagnostics& diags, std::ostrea
       settings_(std::move(settings)),
       env_{symbols_, options_, onelab_numbers_, onelab_strings_, "", rand_state_, &settings_.limits, &redirects_} {}
 
-std::string Interpreter::preset_number(const std::string& name, double v) {
+OptionRefusal Interpreter::preset_number(const std::string& name, double v) {
   if (name.find('.') != std::string::npos) {
-    if (!options_.find(name))
-      return fmt::format("unknown option '{}' (did you mean '{}'?)", name, options_.closest(name));
+    if (!options_.find(name)) return option_refusal(Diag::OptionNotKnownDidYouMean, name, options_.closest(name));
     return options_.set_number(name, v);
   }
   symbols_.set_num(name, NumSymbol{{v}, false});
-  return "";
+  return {};
 }
 
-std::string Interpreter::preset_string(const std::string& name, const std::string& v) {
+OptionRefusal Interpreter::preset_string(const std::string& name, const std::string& v) {
   if (name.find('.') != std::string::npos) {
-    if (!options_.find(name))
-      return fmt::format("unknown option '{}' (did you mean '{}'?)", name, options_.closest(name));
+    if (!options_.find(name)) return option_refusal(Diag::OptionNotKnownDidYouMean, name, options_.closest(name));
     if (options_.find(name)->kind == OptionKind::Box) return preset_box(name, v);
     return options_.set_string(name, v);
   }
   symbols_.set_str(name, {v});
-  return "";
+  return {};
 }
 
 // `-setstring Mesh.PictureBox "W,E,S,N"`: four numbers separated by commas or spaces.
-std::string Interpreter::preset_box(const std::string& name, const std::string& v) {
+OptionRefusal Interpreter::preset_box(const std::string& name, const std::string& v) {
   std::vector<double> numbers;
   std::string item;
   bool bad = false;
@@ -81,8 +79,7 @@ std::string Interpreter::preset_box(const std::string& name, const std::string& 
     else item += c;
   }
   take();
-  if (bad || numbers.size() != 4)
-    return fmt::format("'{}' is a box: give four numbers \"west,east,south,north\" in degrees, not '{}'", name, v);
+  if (bad || numbers.size() != 4) return option_refusal(Diag::OptionBoxText, name, v);
   return options_.set_box(name, {numbers[0], numbers[1], numbers[2], numbers[3]});
 }
 

@@ -60,9 +60,9 @@ class Interpreter {
 
   /// `-setnumber NAME V` / `-setstring NAME S`: an option when NAME has a '.',
   /// else a variable defined before the script (DefineConstant keeps it).
-  /// Returns "" or why the value is refused.
-  std::string preset_number(const std::string& name, double v);
-  std::string preset_string(const std::string& name, const std::string& v);
+  /// Returns nothing (empty()) or why the value is refused: a kind and its message.
+  OptionRefusal preset_number(const std::string& name, double v);
+  OptionRefusal preset_string(const std::string& name, const std::string& v);
 
   /// Loads, parses and runs a file (or an in-memory buffer for tests). A file
   /// with syntax errors is not run. Several files share all state, in order.
@@ -134,7 +134,7 @@ class Interpreter {
   BuiltinEnv& builtin_env() { return env_; }
 
  private:
-  std::string preset_box(const std::string& name, const std::string& v);
+  OptionRefusal preset_box(const std::string& name, const std::string& v);
   RunStatus run_loaded(lang::FileId file);
   /// The end of a top-level run: Printf's files put in place, or dropped after errors.
   RunStatus finish_run(RunStatus st);

@@ -209,79 +209,80 @@ bool Options::was_set(std::string_view name) const {
   return set_[i];
 }
 
-std::string Options::set_number(std::string_view name, double v, bool internal) {
+OptionRefusal Options::set_number(std::string_view name, double v, bool internal) {
   const std::size_t i = name_index().find(name);
-  if (i == NameIndex::kNotFound) return fmt::format("unknown option '{}'", name);
+  if (i == NameIndex::kNotFound) return option_refusal(lang::Diag::OptionNotKnown, name);
   const OptionInfo& info = table()[i];
   if (info.kind != OptionKind::Number)
-    return fmt::format("option '{}' is a {}, not a number", name, kind_name(info.kind));
-  if (info.read_only && !internal) return fmt::format("option '{}' is read-only", name);
-  if (!std::isfinite(v)) return fmt::format("option '{}' must be finite", name);
+    return option_refusal(lang::Diag::OptionWrongKind, name, kind_name(info.kind), std::string_view("number"));
+  if (info.read_only && !internal) return option_refusal(lang::Diag::OptionReadOnly, name);
+  if (!std::isfinite(v)) return option_refusal(lang::Diag::OptionNotFinite, name);
   for (const ValueCheck& c : value_checks()) {
     if (c.name != info.name) continue;
     if (!c.allowed.empty()) {
       if (std::find(c.allowed.begin(), c.allowed.end(), v) != c.allowed.end()) break;
       std::string list;
       for (double a : c.allowed) list += fmt::format("{}{}", list.empty() ? "" : ", ", a);
-      return fmt::format("invalid value {} for option '{}' (allowed: {})", v, name, list);
+      return option_refusal(lang::Diag::OptionValueNotAllowed, v, name, list);
     }
     if (c.whole && (v != std::floor(v) || v < c.min || v > c.max))
-      return fmt::format("invalid value {} for option '{}' (must be a whole number from {} to {})", v, name, c.min,
-                         c.max);
+      return option_refusal(lang::Diag::OptionValueNotWhole, v, name, c.min, c.max);
     if (v < c.min || (c.strict && v == c.min) || v > c.max) {
-      if (c.max == kNoMax)
-        return fmt::format("invalid value {} for option '{}' (must be {} {})", v, name, c.strict ? ">" : ">=", c.min);
-      return fmt::format("invalid value {} for option '{}' (must be {} {} and <= {})", v, name,
-                         c.strict ? ">" : ">=", c.min, c.max);
+      const std::string_view bound = c.strict ? ">" : ">=";
+      if (c.max == kNoMax) return option_refusal(lang::Diag::OptionValueBelow, v, name, bound, c.min);
+      return option_refusal(lang::Diag::OptionValueOutside, v, name, bound, c.min, c.max);
     }
     break;
   }
   nums_[i] = v;
   set_[i] = true;
-  return "";
+  return {};
 }
 
-std::string Options::set_string(std::string_view name, std::string v, bool internal) {
+OptionRefusal Options::set_string(std::string_view name, std::string v, bool internal) {
   const std::size_t i = name_index().find(name);
-  if (i == NameIndex::kNotFound) return fmt::format("unknown option '{}'", name);
+  if (i == NameIndex::kNotFound) return option_refusal(lang::Diag::OptionNotKnown, name);
   const OptionInfo& info = table()[i];
   if (info.kind != OptionKind::String)
-    return fmt::format("option '{}' is a {}, not a string", name, kind_name(info.kind));
-  if (info.read_only && !internal) return fmt::format("option '{}' is read-only", name);
+    return option_refusal(lang::Diag::OptionWrongKind, name, kind_name(info.kind), std::string_view("string"));
+  if (info.read_only && !internal) return option_refusal(lang::Diag::OptionReadOnly, name);
   if (name == "Mesh.NodeData") {
     std::string why;
-    if (split_node_data_names(v, &why).empty() && !why.empty()) return why;
+    if (split_node_data_names(v, &why).empty() && !why.empty())
+      return option_refusal(lang::Diag::InvalidOptionValue, why);
   }
   strs_[i] = std::move(v);
   set_[i] = true;
-  return "";
+  return {};
 }
 
-std::string Options::set_color(std::string_view name, const Color& c) {
+OptionRefusal Options::set_color(std::string_view name, const Color& c) {
   const std::size_t i = name_index().find(name);
-  if (i == NameIndex::kNotFound) return fmt::format("unknown option '{}'", name);
+  if (i == NameIndex::kNotFound) return option_refusal(lang::Diag::OptionNotKnown, name);
   const OptionInfo& info = table()[i];
   if (info.kind != OptionKind::Color)
-    return fmt::format("option '{}' is a {}, not a color", name, kind_name(info.kind));
+    return option_refusal(lang::Diag::OptionWrongKind, name, kind_name(info.kind), std::string_view("color"));
   for (double x : c)
-    if (!(x >= 0 && x <= 255)) return fmt::format("color components of '{}' must be in 0..255", name);
+    if (!(x >= 0 && x <= 255)) return option_refusal(lang::Diag::OptionColorComponents, name);
   colors_[i] = c;
   set_[i] = true;
-  return "";
+  return {};
 }
 
-std::string Options::set_box(std::string_view name, const LonLatBox& b) {
+OptionRefusal Options::set_box(std::string_view name, const LonLatBox& b) {
   const std::size_t i = name_index().find(name);
-  if (i == NameIndex::kNotFound) return fmt::format("unknown option '{}'", name);
+  if (i == NameIndex::kNotFound) return option_refusal(lang::Diag::OptionNotKnown, name);
   const OptionInfo& info = table()[i];
-  if (info.kind != OptionKind::Box) return fmt::format("option '{}' is a {}, not a box", name, kind_name(info.kind));
+  if (info.kind != OptionKind::Box)
+    return option_refusal(lang::Diag::OptionWrongKind, name, kind_name(info.kind), std::string_view("box"));
   if (b != LonLatBox{0, 0, 0, 0}) {
     io::PictureBox normalised;
-    if (std::string why = io::normalise_picture_box(b[0], b[1], b[2], b[3], &normalised); !why.empty()) return why;
+    if (std::string why = io::normalise_picture_box(b[0], b[1], b[2], b[3], &normalised); !why.empty())
+      return option_refusal(lang::Diag::InvalidOptionValue, why);
   }
   boxes_[i] = b;
   set_[i] = true;
-  return "";
+  return {};
 }
 
 bool named_color(std::string_view name, Color& out) {

@@ -11,6 +11,8 @@
 #include <string_view>
 #include <vector>
 
+#include "lang/diag_format.h"
+
 namespace sm::interp {
 
 enum class OptionKind { Number, String, Color, Box };
@@ -27,6 +29,24 @@ struct OptionInfo {
 using Color = std::array<double, 4>;
 /// A lon/lat box {west, east, south, north} in degrees (Mesh.PictureBox); all 0: none.
 using LonLatBox = std::array<double, 4>;
+
+/// Why a setter refused a value: its kind of diag_kinds.def (an Option* kind, or
+/// InvalidOptionValue for a reason another module worded: Mesh.NodeData's names, a picture
+/// box) and that kind's message, which the interpreter, the CLI and the Python module print.
+/// No kind (kCount) and no message: the value was taken.
+struct OptionRefusal {
+  lang::Diag kind = lang::Diag::kCount;
+  std::string message;
+
+  /// Whether the value was taken (nothing refused).
+  bool empty() const { return kind == lang::Diag::kCount; }
+};
+
+/// The refusal of `kind` with `args` (checked against the kind's format at compile time).
+template <class... Args>
+OptionRefusal option_refusal(std::type_identity_t<lang::DiagFormat<Args...>> kind, const Args&... args) {
+  return {kind.kind(), lang::format_diag<Args...>(kind, args...)};
+}
 
 /// All option values of one run. A plain value passed in the interpreter's
 /// context: no global state, so two runs never see each other's settings.
@@ -45,15 +65,15 @@ class Options {
   const Color& color(std::string_view name) const;
   const LonLatBox& box(std::string_view name) const;
 
-  /// Setters return "" or the reason the value is refused (unknown option,
-  /// wrong kind, read-only, outside the allowed set). `internal` lets the
-  /// program update read-only statistics.
-  std::string set_number(std::string_view name, double v, bool internal = false);
-  std::string set_string(std::string_view name, std::string v, bool internal = false);
-  std::string set_color(std::string_view name, const Color& c);
+  /// Setters return nothing (empty()) or why the value is refused (unknown option, wrong
+  /// kind, read-only, outside the allowed set), as a kind and its message. `internal` lets
+  /// the program update read-only statistics.
+  OptionRefusal set_number(std::string_view name, double v, bool internal = false);
+  OptionRefusal set_string(std::string_view name, std::string v, bool internal = false);
+  OptionRefusal set_color(std::string_view name, const Color& c);
   /// {W, E, S, N}, or all 0 for none; refused when it frames nothing (S >= N, a latitude
   /// outside [-90, 90], W = E; io/picture.h's normalise_picture_box).
-  std::string set_box(std::string_view name, const LonLatBox& b);
+  OptionRefusal set_box(std::string_view name, const LonLatBox& b);
 
   /// Whether the option was given a value since the last reset (by a statement, the
   /// command line or the Python module), rather than holding its default: for the

@@ -106,9 +106,9 @@ Mesh run(const py::object& error_type, const std::string& path, const std::map<s
     throw py::error_already_set();
   };
   for (const auto& [name, v] : setnumber)
-    if (std::string why = in.preset_number(name, v); !why.empty()) refuse("setnumber: " + why);
+    if (auto why = in.preset_number(name, v); !why.empty()) refuse("setnumber: " + why.message);
   for (const auto& [name, v] : setstring)
-    if (std::string why = in.preset_string(name, v); !why.empty()) refuse("setstring: " + why);
+    if (auto why = in.preset_string(name, v); !why.empty()) refuse("setstring: " + why.message);
   if (algo) {
     // The names of the command line's -algo (mesh/mesh2d_algorithms.h).
     const Mesh2dAlgorithmRow* row = mesh2d_algorithm_named(*algo);

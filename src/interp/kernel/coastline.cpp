@@ -333,15 +333,11 @@ void attach_time_step_depth(CoastImportWork& w) {
   std::vector<DiagNote> notes;
   if (const auto it = k.option_set_at.find("Mesh.MinTimeStep"); it != k.option_set_at.end())
     notes.push_back({it->second, "Mesh.MinTimeStep was set here"});
-  if (!(depth_id > 0) || !k.field_defined_at.count(static_cast<int>(depth_id)))
-    in.fail_with_notes(w.at, Diag::InvalidOptionValue,
-                       fmt::format("Coastline[{}]: Mesh.MinTimeStep = {:g} closes the passages too narrow for it "
-                                   "at their depth, and {}: define the depth field and set Mesh.DepthField before "
-                                   "this statement (or set Mesh.MinTimeStep after it)",
-                                   w.id, min_step,
-                                   depth_id > 0 ? fmt::format("Mesh.DepthField = {:g} names no field yet", depth_id)
-                                                : std::string("Mesh.DepthField is not set")),
-                       std::move(notes));
+  if (!(depth_id > 0) || !k.field_defined_at.count(static_cast<int>(depth_id))) {
+    if (depth_id > 0)
+      in.fail_with_notes(w.at, std::move(notes), Diag::CoastlineMinTimeStepFieldUndefined, w.id, min_step, depth_id);
+    in.fail_with_notes(w.at, std::move(notes), Diag::CoastlineMinTimeStepNoDepthField, w.id, min_step);
+  }
   const int did = static_cast<int>(depth_id);
   const auto dat = k.option_set_at.find("Mesh.DepthField");
   const field::FieldPtr depth = built_fields(in, did, dat != k.option_set_at.end() ? dat->second : w.at).shared(did);

@@ -288,10 +288,7 @@ MeshFailure depth_field_for_mesh(Interpreter& in, field::FieldPtr& depth) {
   const double depth_field = in.options().number("Mesh.DepthField");
   if (!(depth_field > 0)) return {};
   if (!k.field_defined_at.count(static_cast<int>(depth_field))) {
-    MeshFailure f{Diag::InvalidOptionValue,
-                  fmt::format("Mesh.DepthField = {:g} names no field: define Field[{:g}], or set Mesh.DepthField = 0",
-                              depth_field, depth_field),
-                  {}};
+    MeshFailure f{Diag::DepthFieldNamesNoField, format_diag(Diag::DepthFieldNamesNoField, depth_field), {}};
     if (const auto it = k.option_set_at.find("Mesh.DepthField"); it != k.option_set_at.end())
       f.notes.push_back({it->second, "Mesh.DepthField was set here"});
     return f;
@@ -313,10 +310,7 @@ MeshFailure structured_constraints(Interpreter& in, int dim, Mesh2dOptions& opt2
   const int recombination = static_cast<int>(in.options().number("Mesh.RecombinationAlgorithm"));
   const bool recombining = constraints.recombine_all || !constraints.recombine.empty();
   if (dim >= 2 && recombining && recombination > 1)
-    return {Diag::InvalidOptionValue,
-            fmt::format("Mesh.RecombinationAlgorithm {} (full-quad: Gmsh recombines a coarser mesh and splits it) is "
-                        "not available: use 0 (simple) or 1 (blossom-quality matching)",
-                        recombination),
+    return {Diag::RecombinationFullQuad, format_diag(Diag::RecombinationFullQuad, recombination),
             set_here(k, "Mesh.RecombinationAlgorithm")};
   constraints.algorithm = recombination == 0 ? RecombineAlgorithm::Simple : RecombineAlgorithm::Matching;
   opt2.constraints = &constraints;
@@ -360,9 +354,8 @@ std::vector<field::BoundaryLayerParams> boundary_layers_of(Interpreter& in) {
 MeshFailure finish_1d(Interpreter& in, std::shared_ptr<ModelMesh> mesh) {
   KernelState& k = in.kernel();
   if (in.options().number("Mesh.NbPartitions") > 0)
-    return {Diag::InvalidOptionValue,
-            fmt::format("Mesh.NbPartitions = {:g}: partitions are made of the 2D mesh (mesh with -2 or 'Mesh 2;')",
-                        in.options().number("Mesh.NbPartitions")),
+    return {Diag::PartitionsNeed2dMesh,
+            format_diag(Diag::PartitionsNeed2dMesh, in.options().number("Mesh.NbPartitions")),
             set_here(k, "Mesh.NbPartitions")};
   in.options().set_number("Mesh.NbNodes", static_cast<double>(mesh->nodes.size()), /*internal=*/true);
   Vec3 centre{};
@@ -492,10 +485,7 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   // margin, as the shortest edge of a good triangle is about 0.7 of its size).
   const double min_step = in.options().number("Mesh.MinTimeStep");
   if (min_step > 0 && !depth)
-    return {Diag::InvalidOptionValue,
-            fmt::format("Mesh.MinTimeStep = {:g} needs the depth of the water: set Mesh.DepthField to a depth field "
-                        "(a Bathymetry, say), or set Mesh.MinTimeStep = 0",
-                        min_step),
+    return {Diag::MinTimeStepNeedsDepth, format_diag(Diag::MinTimeStepNeedsDepth, min_step),
             set_here(k, "Mesh.MinTimeStep")};
   if (min_step > 0 && background) {
     background = field::time_step_floor(background, depth, min_step, in.options().number("Mesh.TimeStepMinDepth"),
@@ -703,15 +693,13 @@ void exec_partition_mesh(Interpreter& in, StmtId id, const CommandStmt& c) {
   const double n = in.eval_number(c.arg);
   const SourceRange at = in.ast().expr(c.arg).range;
   if (!(n >= 1) || n != std::floor(n))
-    in.fail_fmt(at, Diag::InvalidOptionValue,
-                fmt::format("PartitionMesh {:g}: give a whole number of partitions, 1 or more", n));
-  if (std::string err = in.options().set_number("Mesh.NbPartitions", n); !err.empty())
-    in.fail_fmt(at, Diag::InvalidOptionValue, err);
+    in.fail(at, Diag::PartitionMeshCount, n);
+  if (OptionRefusal err = in.options().set_number("Mesh.NbPartitions", n); !err.empty())
+    in.fail_message(at, err.kind, std::move(err.message));
   KernelState& k = in.kernel();
   k.option_set_at["Mesh.NbPartitions"] = s.range;
   if (!k.mesh || !k.has_mesh_stats)
-    in.fail_fmt(s.range, Diag::InvalidOptionValue,
-                std::string("PartitionMesh: there is no 2D mesh to partition (put it after 'Mesh 2;')"));
+    in.fail(s.range, Diag::PartitionMeshNoMesh);
   k.partition.reset();
   if (std::string why = partition_mesh_now(in, *k.mesh, &k.mesh_stats); !why.empty())
     in.fail_fmt(s.range, Diag::InvalidOptionValue, why);

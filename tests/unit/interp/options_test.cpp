@@ -2,10 +2,12 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <limits>
 
 #include "interp/options.h"
 
 using sm::interp::Options;
+using sm::lang::Diag;
 
 TEST_CASE("options: defaults from the 4.8.4 manual") {
   Options o;
@@ -32,7 +34,7 @@ TEST_CASE("options: CharacteristicLength aliases share storage") {
 
 TEST_CASE("options: validation") {
   Options o;
-  CHECK(o.set_number("Mesh.Algorithm", 4).find("allowed") != std::string::npos);
+  CHECK(o.set_number("Mesh.Algorithm", 4).kind == Diag::OptionValueNotAllowed);
   CHECK(o.number("Mesh.Algorithm") == 6);
   CHECK(o.set_number("Mesh.Algorithm", 5).empty());
   CHECK_FALSE(o.set_number("Mesh.MeshSizeFactor", 0).empty());
@@ -43,6 +45,36 @@ TEST_CASE("options: validation") {
   CHECK_FALSE(o.set_number("Mesh.Foo", 1).empty());
   CHECK(o.set_color("Geometry.Color.Points", {1, 2, 3, 255}).empty());
   CHECK_FALSE(o.set_color("Geometry.Color.Points", {1, 2, 300, 255}).empty());
+}
+
+TEST_CASE("options: each refusal is a kind with its message") {
+  Options o;
+  const auto refusal = [](const sm::interp::OptionRefusal& r, Diag kind, const char* message) {
+    CHECK(r.kind == kind);
+    CHECK(r.message == message);
+  };
+  refusal(o.set_number("Mesh.Foo", 1), Diag::OptionNotKnown, "unknown option 'Mesh.Foo'");
+  refusal(o.set_number("Mesh.NodeData", 1), Diag::OptionWrongKind, "option 'Mesh.NodeData' is a string, not a number");
+  refusal(o.set_string("Mesh.PictureBox", "x"), Diag::OptionWrongKind,
+          "option 'Mesh.PictureBox' is a box {W, E, S, N}, not a string");
+  refusal(o.set_box("Mesh.Algorithm", {0, 0, 0, 0}), Diag::OptionWrongKind,
+          "option 'Mesh.Algorithm' is a number, not a box");
+  refusal(o.set_color("Mesh.Algorithm", {0, 0, 0, 255}), Diag::OptionWrongKind,
+          "option 'Mesh.Algorithm' is a number, not a color");
+  refusal(o.set_number("Mesh.NbNodes", 3), Diag::OptionReadOnly, "option 'Mesh.NbNodes' is read-only");
+  refusal(o.set_number("Mesh.MeshSizeFactor", std::numeric_limits<double>::infinity()), Diag::OptionNotFinite,
+          "option 'Mesh.MeshSizeFactor' must be finite");
+  refusal(o.set_number("Mesh.MshFileVersion", 5), Diag::OptionValueNotAllowed,
+          "invalid value 5 for option 'Mesh.MshFileVersion' (allowed: 1, 2, 2.2, 3, 4, 4.1)");
+  refusal(o.set_number("Mesh.PictureWorst", 2.5), Diag::OptionValueNotWhole,
+          "invalid value 2.5 for option 'Mesh.PictureWorst' (must be a whole number from 0 to 1000000)");
+  refusal(o.set_number("Mesh.MinTimeStep", -1), Diag::OptionValueBelow,
+          "invalid value -1 for option 'Mesh.MinTimeStep' (must be >= 0)");
+  refusal(o.set_number("Mesh.MaxElements", 0), Diag::OptionValueOutside,
+          "invalid value 0 for option 'Mesh.MaxElements' (must be > 0 and <= 1000000000000000)");
+  refusal(o.set_color("Geometry.Color.Points", {1, 2, -1, 255}), Diag::OptionColorComponents,
+          "color components of 'Geometry.Color.Points' must be in 0..255");
+  CHECK(o.set_box("Mesh.PictureBox", {10, 10, 0, 5}).kind == Diag::InvalidOptionValue);
 }
 
 TEST_CASE("options: closest name for unknown options") {

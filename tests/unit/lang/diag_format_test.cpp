@@ -110,3 +110,26 @@ TEST_CASE("typed report: the 1D mesh's crossings, by their curves and place") {
         "curves 4 and 7 have distinct nodes at the same place near lon 1.500000, lat 2.500000");
   CHECK(diag_info(Diag::MeshCurvesShareNodePlaceXyz).kebab == std::string_view("curves-intersect"));
 }
+
+TEST_CASE("typed report: option refusals and the mesh options' checks, all invalid-option-value") {
+  CHECK(format_diag<std::size_t>(Diag::OptionColorSize, 5) ==
+        "a color is {r, g, b} or {r, g, b, a}, found 5 numbers");
+  CHECK(format_diag<std::string, std::size_t>(Diag::OptionBoxSize, "Mesh.PictureBox", 3) ==
+        "'Mesh.PictureBox' is a box {west, east, south, north} in degrees, found 3 numbers");
+  CHECK(format_diag<std::string, std::string>(Diag::OptionBoxText, "Mesh.PictureBox", "1,2") ==
+        "'Mesh.PictureBox' is a box: give four numbers \"west,east,south,north\" in degrees, not '1,2'");
+  CHECK(format_diag<std::string, std::string>(Diag::OptionNotKnownDidYouMean, "Mesh.Algorthm", "Mesh.Algorithm") ==
+        "unknown option 'Mesh.Algorthm' (did you mean 'Mesh.Algorithm'?)");
+  CHECK(format_diag<double>(Diag::PartitionMeshCount, 2.5) ==
+        "PartitionMesh 2.5: give a whole number of partitions, 1 or more");
+  CHECK(format_diag<double>(Diag::DepthFieldNamesNoField, 7) ==
+        "Mesh.DepthField = 7 names no field: define Field[7], or set Mesh.DepthField = 0");
+  CHECK(format_diag<int, double, double>(Diag::CoastlineMinTimeStepFieldUndefined, 2, 30, 5) ==
+        "Coastline[2]: Mesh.MinTimeStep = 30 closes the passages too narrow for it at their depth, and "
+        "Mesh.DepthField = 5 names no field yet: define the depth field and set Mesh.DepthField before this "
+        "statement (or set Mesh.MinTimeStep after it)");
+  for (Diag d : {Diag::OptionNotKnown, Diag::OptionWrongKind, Diag::OptionValueOutside, Diag::OptionUnknownColorName,
+                 Diag::PartitionMeshNoMesh, Diag::RecombinationFullQuad, Diag::PartitionsNeed2dMesh,
+                 Diag::MinTimeStepNeedsDepth, Diag::CoastlineMinTimeStepNoDepthField})
+    CHECK(diag_info(d).kebab == std::string_view("invalid-option-value"));
+}
