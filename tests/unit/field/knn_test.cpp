@@ -171,3 +171,61 @@ TEST_CASE("knn: nearest_below is exact up to the limit and above it beyond, on b
   CHECK(std::isnan(bd[0]));
   CHECK(bd[1] == 0);
 }
+
+// Each thread's last answer seeds the first search of its next batch on the same tree
+// (src/field/knn.cpp, LastAnswer). On a lattice with repeated points and queries halfway
+// between lattice points, many queries have several nearest points at exactly the same
+// distance: every answer must still be brute force's (the smallest index among the
+// nearest), whatever batch came before, on both search paths (6,000 points: with buckets).
+TEST_CASE("knn: a batch seeded by the previous batch's answer keeps brute force's answers, ties included") {
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> cell(0, 19), half(0, 1), len(1, 8);
+  std::vector<Vec3> pts(6000);
+  for (Vec3& p : pts) p = {double(cell(rng)), double(cell(rng)), double(cell(rng))};
+  for (std::size_t i = 0; i < 200; ++i) pts[5000 + i] = pts[i];  // repeated points, later index
+  std::vector<Vec3> q(3000);
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    // On the lattice, between two, four or eight lattice points, or far outside it.
+    q[i] = {cell(rng) + 0.5 * half(rng), cell(rng) + 0.5 * half(rng), cell(rng) + 0.5 * half(rng)};
+    if (i % 50 == 0) q[i] = q[i] * 4.0 - Vec3{30, 30, 30};
+  }
+  std::vector<double> bd(q.size());
+  std::vector<std::uint32_t> bidx(q.size());
+  nearest_brute_force(pts, q, bd, bidx);
+  std::size_t ties = 0;
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    std::size_t at_best = 0;
+    for (const Vec3& p : pts) at_best += norm(p - q[i]) == bd[i];
+    ties += at_best > 1;
+  }
+  CHECK(ties > q.size() / 2);  // the ties are there to be broken
+
+  for (const bool buckets : {true, false}) {
+    KdTree tree(pts, {32, 0, true, buckets});
+    std::vector<double> d(8), wd(8);
+    std::vector<std::uint32_t> idx(8), widx(8);
+    const std::vector<double> far{25.0};  // nearest_within: covers every lattice query
+    for (std::size_t first = 0; first < q.size();) {
+      const std::size_t n = std::min<std::size_t>(static_cast<std::size_t>(len(rng)), q.size() - first);
+      // Each batch is seeded by the batch before (random lengths: the seed comes from
+      // near and from far queries), and by a far point before nearest_within.
+      const std::span<const Vec3> batch(q.data() + first, n);
+      tree.nearest(batch, std::span<double>(d.data(), n), std::span<std::uint32_t>(idx.data(), n));
+      const Vec3 far_point = q[(first * 7919) % q.size()];
+      tree.nearest(std::span<const Vec3>(&far_point, 1), std::span<double>(wd.data(), 1));
+      tree.nearest_within(batch, far, std::span<double>(wd.data(), n), std::span<std::uint32_t>(widx.data(), n));
+      for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t i = first + k;
+        CHECK(idx[k] == bidx[i]);
+        CHECK(d[k] == bd[i]);
+        if (bd[i] < 25.0) {
+          CHECK(widx[k] == bidx[i]);
+          CHECK(wd[k] == bd[i]);
+        } else {
+          CHECK(widx[k] == std::numeric_limits<std::uint32_t>::max());
+        }
+      }
+      first += n;
+    }
+  }
+}
