@@ -13,6 +13,8 @@
 #include "field/knn.h"
 
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -165,7 +167,40 @@ std::vector<std::uint32_t> morton_order(std::span<const Vec3> q) {
   return order;
 }
 
+/// Each thread's last answer on each tree: the seed of the first search of the thread's
+/// next batch on that tree (batches are small, about 4.6 queries on the Arctic, and follow
+/// each other along the mesh front, so an unbounded first search was a large share of the
+/// descents). A size evaluation asks several trees in turn (the Distance fields,
+/// ChannelWidth), so each tree has its slot: kLastSlots of them, by tree id (ids are given
+/// in sequence, so the trees of one run do not share a slot unless there are more); a slot
+/// another tree took just gives no seed. The seed only sets the starting bound: every search
+/// keeps the nearest point, ties to the smallest index, whatever its bound, so the answers
+/// do not depend on which thread asked what before (-nt 1 and -nt 2 give the same meshes).
+struct LastAnswer {
+  std::uint64_t tree_id = 0;  // 0: none (tree ids start at 1)
+  std::size_t index = 0;
+};
+constexpr std::size_t kLastSlots = 16;
+thread_local std::array<LastAnswer, kLastSlots> tl_last_answer;
+
+std::uint64_t next_tree_id() {
+  static std::atomic<std::uint64_t> counter{0};
+  return counter.fetch_add(1, std::memory_order_relaxed) + 1;
+}
+
 }  // namespace
+
+std::size_t KdTree::seed_of_batch() const {
+  // Only for exact searches: with eps > 0 the seed may stand as the answer.
+  const LastAnswer& last = tl_last_answer[id_ % kLastSlots];
+  if (opts_.eps != 0 || last.tree_id != id_ || last.index >= points_.size())
+    return std::numeric_limits<std::size_t>::max();
+  return last.index;
+}
+
+void KdTree::keep_last_answer(std::size_t index) const {
+  if (index < points_.size()) tl_last_answer[id_ % kLastSlots] = {id_, index};
+}
 
 struct KdTree::Impl {
   Impl(flann::Matrix<double> data, const KnnOptions& o)
@@ -193,7 +228,8 @@ struct KdTree::Impl {
   void build_buckets(const std::vector<Vec3>& pts);
 };
 
-KdTree::KdTree(std::vector<Vec3> points, KnnOptions opts) : points_(std::move(points)), opts_(opts) {
+KdTree::KdTree(std::vector<Vec3> points, KnnOptions opts)
+    : points_(std::move(points)), opts_(opts), id_(next_tree_id()) {
   static_assert(sizeof(Vec3) == 3 * sizeof(double));
   if (points_.empty()) return;
   flann::Matrix<double> data(reinterpret_cast<double*>(points_.data()), points_.size(), 3);
@@ -282,7 +318,7 @@ void KdTree::nearest_capped(std::span<const Vec3> queries, std::span<const doubl
   const flann::SearchParams params(flann::FLANN_CHECKS_UNLIMITED, opts_.eps);
   std::vector<std::uint32_t> order;
   if (opts_.sort_queries && queries.size() > 1) order = morton_order(queries);
-  std::size_t prev = NearestResult::kNone;
+  std::size_t prev = seed_of_batch();
   // The current query's cap (squared).
   double far2 = std::numeric_limits<double>::infinity();
 
@@ -381,6 +417,7 @@ void KdTree::nearest_capped(std::span<const Vec3> queries, std::span<const doubl
     dist[i] = std::sqrt(best2);
     if (!index.empty()) index[i] = static_cast<std::uint32_t>(arg);
   }
+  keep_last_answer(prev);
 }
 
 void KdTree::nearest_within(std::span<const Vec3> queries, std::span<const double> max_dist,
@@ -394,7 +431,7 @@ void KdTree::nearest_within(std::span<const Vec3> queries, std::span<const doubl
   const flann::SearchParams params(flann::FLANN_CHECKS_UNLIMITED, 0);
   std::vector<std::uint32_t> order;
   if (opts_.sort_queries && queries.size() > 1) order = morton_order(queries);
-  std::size_t prev = NearestResult::kNone;
+  std::size_t prev = seed_of_batch();
   for (std::size_t k = 0; k < queries.size(); ++k) {
     const std::size_t i = order.empty() ? k : order[k];
     const Vec3& q = queries[i];
@@ -428,6 +465,7 @@ void KdTree::nearest_within(std::span<const Vec3> queries, std::span<const doubl
     dist[i] = std::sqrt(d2);
     index[i] = static_cast<std::uint32_t>(found);
   }
+  keep_last_answer(prev);
 }
 
 void KdTree::visit_within(const Vec3& q, double bound2,

@@ -66,9 +66,15 @@ class KdTree {
   void nearest_capped(std::span<const Vec3> queries, std::span<const double> far2, std::span<double> dist,
                       std::span<std::uint32_t> index) const;
 
+  // The calling thread's last answer on this tree if it has one (exact searches only),
+  // else SIZE_MAX: the seed of a batch's first search; and the update after a batch.
+  std::size_t seed_of_batch() const;
+  void keep_last_answer(std::size_t index) const;
+
   struct Impl;
   std::vector<Vec3> points_;  // FLANN indexes this memory in place
   KnnOptions opts_;
+  std::uint64_t id_;  // unique per tree of the process: keys the threads' last answers
   std::unique_ptr<Impl> impl_;
 };
 
