@@ -16,6 +16,20 @@
 using namespace sm;
 using namespace sm::coast;
 
+namespace {
+
+// Whether two near-miss lists hold the same records in the same order: pair, distance
+// and place.
+bool same_near_misses(const std::vector<NearMiss>& a, const std::vector<NearMiss>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (place_pair_key(a[i]) != place_pair_key(b[i]) || a[i].distance != b[i].distance || !(a[i].where == b[i].where))
+      return false;
+  return true;
+}
+
+}  // namespace
+
 TEST_CASE("intersections: crossing, touching, overlapping, folding back") {
   const std::vector<std::vector<Vec2>> cross{{{0, 0}, {2, 0}, {2, 2}, {0, 2}}, {{1, 1}, {3, 1}, {3, 3}, {1, 3}}};
   auto h = find_intersections(cross);
@@ -218,13 +232,6 @@ TEST_CASE("intersections: near misses searched again for the changed loops are t
     for (std::size_t i = 0; i < loops.back().size(); ++i) w.push_back(0.01 + 0.05 * u(rng));
     width.push_back(w);
   }
-  auto same = [](const std::vector<NearMiss>& a, const std::vector<NearMiss>& b) {
-    if (a.size() != b.size()) return false;
-    for (std::size_t i = 0; i < a.size(); ++i)
-      if (place_pair_key(a[i]) != place_pair_key(b[i]) || a[i].distance != b[i].distance || !(a[i].where == b[i].where))
-        return false;
-    return true;
-  };
   std::vector<NearMiss> near = find_near_misses(loops, width);
   REQUIRE(near.size() > 50);
   for (int trial = 0; trial < 8; ++trial) {
@@ -250,9 +257,9 @@ TEST_CASE("intersections: near misses searched again for the changed loops are t
     }
     const std::vector<NearMiss> full = find_near_misses(loops, width);
     const std::vector<NearMiss> again = find_near_misses_again(loops, width, active, near);
-    CHECK(same(again, full));
+    CHECK(same_near_misses(again, full));
     // The segments left unmarked keep their old pairs: marking none misses the changes.
-    if (trial == 0) CHECK(!same(find_near_misses_again(loops, width, none, near), full));
+    if (trial == 0) CHECK(!same_near_misses(find_near_misses_again(loops, width, none, near), full));
     near = again;
   }
 }
@@ -280,13 +287,6 @@ TEST_CASE("intersections: near misses after loops are joined are the full search
     for (int i = 0; i < n; ++i) w.push_back(0.02 + 0.04 * u(rng));
     width.push_back(w);
   }
-  auto same = [](const std::vector<NearMiss>& a, const std::vector<NearMiss>& b) {
-    if (a.size() != b.size()) return false;
-    for (std::size_t i = 0; i < a.size(); ++i)
-      if (place_pair_key(a[i]) != place_pair_key(b[i]) || a[i].distance != b[i].distance || !(a[i].where == b[i].where))
-        return false;
-    return true;
-  };
   std::vector<NearMiss> near = find_near_misses(loops, width);
   REQUIRE(near.size() > 30);
   const std::pair<std::uint32_t, std::uint32_t> rounds[3][2] = {{{0, 1}, {2, 3}}, {{4, 0}, {5, 6}}, {{2, 7}, {8, 9}}};
@@ -311,7 +311,7 @@ TEST_CASE("intersections: near misses after loops are joined are the full search
     renumber_for_joins(joins, renumbered, active);
     const std::vector<NearMiss> full = find_near_misses(loops, width);
     const std::vector<NearMiss> again = find_near_misses_again(loops, width, active, renumbered);
-    CHECK(same(again, full));
+    CHECK(same_near_misses(again, full));
     near = again;
   }
 }
