@@ -14,6 +14,7 @@
 
 #include <fmt/format.h>
 
+#include "coast/land_ring.h"
 #include "coast/perimeter_link.h"
 #include "coast/region_box.h"
 #include "exact/ring.h"
@@ -264,16 +265,8 @@ Result<RegionResult> clip_to_region(const std::vector<Ring>& rings, const LonLat
     // No coastline crosses the box: the box is all ocean (outer loop = the box) unless it
     // lies inside a land ring.
     const geo::LonLat mid{0.5 * (box.west + box.east), band ? 90.0 : 0.5 * (box.south + box.north)};
-    std::vector<Vec2> xy;
-    for (const Ring& r : rings) {
-      if (!r.closed || r.wraps_pole || r.level != 1) continue;
-      for (int k = -1; k <= 1; ++k) {
-        xy.clear();
-        for (auto p : r.pts) xy.push_back({p.lon + 360.0 * k, p.lat});
-        if (point_in_ring(xy, v2(mid)))
-          return CoastError{"region", static_cast<std::int64_t>(r.record), "the region lies wholly on land", mid};
-      }
-    }
+    if (const Ring* land = land_ring_holding(rings, mid))
+      return CoastError{"region", static_cast<std::int64_t>(land->record), "the region lies wholly on land", mid};
     RegionLoop loop;
     RegionPiece piece;
     piece.open_boundary = true;

@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "coast/coastline_option_id.h"
+#include "coast/land_ring.h"
 #include "coast/perimeter_link.h"
 #include "exact/ring.h"
 #include "exact/segments.h"
@@ -377,17 +378,9 @@ Result<RegionResult> polygon_all_ocean(const std::vector<Ring>& rings, const Reg
     if (poly.contains(ll)) mid = ll;
   }
   if (!mid) return polygon_error("the region polygon has no point inside it");
-  std::vector<Vec2> ring_xy;
-  for (const Ring& r : rings) {
-    if (!r.closed || r.wraps_pole || r.level != 1) continue;
-    for (int k = -1; k <= 1; ++k) {
-      ring_xy.clear();
-      for (auto p : r.pts) ring_xy.push_back({p.lon + 360.0 * k, p.lat});
-      if (point_in_ring(ring_xy, {mid->lon, mid->lat}))
-        return CoastError{"region", static_cast<std::int64_t>(r.record), "the region polygon lies wholly on land",
-                          *mid, coast_option_string(CoastOpt::Region)};
-    }
-  }
+  if (const Ring* land = land_ring_holding(rings, *mid))
+    return CoastError{"region", static_cast<std::int64_t>(land->record), "the region polygon lies wholly on land", *mid,
+                      coast_option_string(CoastOpt::Region)};
   RegionResult out;
   RegionLoop loop;
   RegionPiece piece;
