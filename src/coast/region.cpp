@@ -17,6 +17,7 @@
 #include "coast/land_ring.h"
 #include "coast/perimeter_link.h"
 #include "coast/region_box.h"
+#include "coast/region_loops.h"
 #include "exact/ring.h"
 
 namespace sm::coast {
@@ -291,40 +292,22 @@ Result<RegionResult> clip_to_region(const std::vector<Ring>& rings, const LonLat
                       "coastlines cut by the region are not consistently oriented (land on the left): "
                       "two coastlines enter the box in a row",
                       chains[link.bad_chain].pts.front()};
-  const std::vector<std::size_t>& succ = link.next;
-  std::vector<char> used(chains.size(), 0);
-  for (std::size_t c0 = 0; c0 < chains.size(); ++c0) {
-    if (used[c0]) continue;
-    RegionLoop loop;
-    std::size_t c = c0;
-    while (!used[c]) {
-      used[c] = 1;
-      RegionPiece coast;
-      coast.ring = chains[c].ring;
-      coast.pts.assign(chains[c].pts.rbegin(), chains[c].pts.rend());   // ocean on the left
-      const geo::LonLat from = chains[c].pts.front();
-      const std::size_t nc = succ[c];
-      const geo::LonLat to = chains[nc].pts.back();
-      loop.pieces.push_back(std::move(coast));
-      const double ta = box_param(from, box), tb = box_param(to, box);
-      if (!(from.lon == to.lon && from.lat == to.lat)) {
-        RegionPiece bnd;
-        bnd.open_boundary = true;
-        bnd.pts = box_path(from, ta, to, tb == ta ? ta + 4.0 : tb, box, opt.boundary_step_deg, opt.corner_step_deg,
-                           &bnd.corners);
-        if (band) {   // keep the piece's longitudes contiguous with the coast pieces it joins
-          bnd.pts.back().lon = bnd.pts[bnd.pts.size() - 2].lon +
-                               wrap_delta(bnd.pts[bnd.pts.size() - 2].lon, bnd.pts.back().lon);
-        }
-        loop.pieces.push_back(std::move(bnd));
-      }
-      c = nc;
+  const auto box_piece = [&](std::size_t c, std::size_t nc) {
+    const geo::LonLat from = chains[c].pts.front(), to = chains[nc].pts.back();
+    const double ta = box_param(from, box), tb = box_param(to, box);
+    RegionPiece bnd;
+    bnd.open_boundary = true;
+    bnd.pts = box_path(from, ta, to, tb == ta ? ta + 4.0 : tb, box, opt.boundary_step_deg, opt.corner_step_deg,
+                       &bnd.corners);
+    if (band) {   // keep the piece's longitudes contiguous with the coast pieces it joins
+      bnd.pts.back().lon =
+          bnd.pts[bnd.pts.size() - 2].lon + wrap_delta(bnd.pts[bnd.pts.size() - 2].lon, bnd.pts.back().lon);
     }
-    if (c != c0)
-      return CoastError{"region", static_cast<std::int64_t>(rings[chains[c0].ring].record),
-                        "coastlines cut by the region do not close into loops along the box", chains[c0].pts.front()};
-    out.loops.push_back(std::move(loop));
-  }
+    return bnd;
+  };
+  if (const std::optional<std::size_t> c0 = close_region_loops(chains, link.next, box_piece, out.loops))
+    return CoastError{"region", static_cast<std::int64_t>(rings[chains[*c0].ring].record),
+                      "coastlines cut by the region do not close into loops along the box", chains[*c0].pts.front()};
   return out;
 }
 

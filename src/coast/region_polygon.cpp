@@ -16,6 +16,7 @@
 #include "coast/coastline_option_id.h"
 #include "coast/land_ring.h"
 #include "coast/perimeter_link.h"
+#include "coast/region_loops.h"
 #include "exact/ring.h"
 #include "exact/segments.h"
 
@@ -409,37 +410,18 @@ std::optional<CoastError> link_chains(const std::vector<Ring>& rings, const Regi
                       "coastlines cut by the region polygon are not consistently oriented (land on the left): "
                       "two coastlines enter it in a row",
                       chains[link.bad_chain].pts.front()};
-  const std::vector<std::size_t>& succ = link.next;
-  std::vector<char> used(chains.size(), 0);
-  for (std::size_t c0 = 0; c0 < chains.size(); ++c0) {
-    if (used[c0]) continue;
-    RegionLoop loop;
-    std::size_t c = c0;
-    // Each step marks one chain used: at most chains.size() steps.
-    while (!used[c]) {
-      used[c] = 1;
-      RegionPiece coast;
-      coast.ring = chains[c].ring;
-      coast.pts.assign(chains[c].pts.rbegin(), chains[c].pts.rend());   // ocean on the left
-      const geo::LonLat from = chains[c].pts.front();
-      const std::size_t nc = succ[c];
-      const geo::LonLat to = chains[nc].pts.back();
-      loop.pieces.push_back(std::move(coast));
-      if (!(from.lon == to.lon && from.lat == to.lat)) {
-        RegionPiece bnd;
-        bnd.open_boundary = true;
-        const double ta = chains[c].t_in, tb = chains[nc].t_out;
-        bnd.pts = polygon_path(poly, from, ta, to, tb == ta ? ta + static_cast<double>(poly.size()) : tb,
-                               opt.boundary_step_deg, opt.corner_step_deg, &bnd.corners);
-        loop.pieces.push_back(std::move(bnd));
-      }
-      c = nc;
-    }
-    if (c != c0)
-      return CoastError{"region", static_cast<std::int64_t>(rings[chains[c0].ring].record),
-                        "coastlines cut by the region polygon do not close into loops along it", chains[c0].pts.front()};
-    out.loops.push_back(std::move(loop));
-  }
+  const auto polygon_piece = [&](std::size_t c, std::size_t nc) {
+    const double ta = chains[c].t_in, tb = chains[nc].t_out;
+    RegionPiece bnd;
+    bnd.open_boundary = true;
+    bnd.pts = polygon_path(poly, chains[c].pts.front(), ta, chains[nc].pts.back(),
+                           tb == ta ? ta + static_cast<double>(poly.size()) : tb, opt.boundary_step_deg,
+                           opt.corner_step_deg, &bnd.corners);
+    return bnd;
+  };
+  if (const std::optional<std::size_t> c0 = close_region_loops(chains, link.next, polygon_piece, out.loops))
+    return CoastError{"region", static_cast<std::int64_t>(rings[chains[*c0].ring].record),
+                      "coastlines cut by the region polygon do not close into loops along it", chains[*c0].pts.front()};
   return std::nullopt;
 }
 
