@@ -382,24 +382,30 @@ StmtId Parser::parse_for() {
   return add(kw, std::move(node));
 }
 
+// macro_name := IDENT | STRING | sexpr | keyword: the name a Macro defines or a Call runs.
+// A keyword is a name here (`Macro Circle`, `Call Circle;`), not a command.
+void Parser::parse_macro_name(StrId& name, ExprId& name_expr, std::string_view what) {
+  if (at(Tok::Ident) && call_at() == BuiltinId::kNone) {
+    name = ast_.intern(text(advance()));
+  } else if (at(Tok::String)) {
+    const Token s = advance();
+    name = ast_.intern(text(s).substr(1, text(s).size() - 2));
+  } else if (starts_string_expr()) {
+    name_expr = parse_expr();
+  } else if (is_keyword(kind())) {
+    name = ast_.intern(text(advance()));
+  } else {
+    fail_expected(what);
+  }
+}
+
 // macro_stmt := ("Macro" | "Function") (IDENT | sexpr) block "Return"
 StmtId Parser::parse_macro() {
   const Token kw = advance();
   MacroStmt node;
   if (std::any_of(blocks_.begin(), blocks_.end(), [](const OpenBlock& b) { return b.kind == Block::Macro; }))
     diags_.report(kw.range, Diag::NestedMacro);
-  if (at(Tok::Ident) && call_at() == BuiltinId::kNone) {
-    node.name = ast_.intern(text(advance()));
-  } else if (at(Tok::String)) {
-    const Token s = advance();
-    node.name = ast_.intern(text(s).substr(1, text(s).size() - 2));
-  } else if (starts_string_expr()) {
-    node.name_expr = parse_expr();
-  } else if (is_keyword(kind())) {
-    node.name = ast_.intern(text(advance()));  // `Macro Circle`: a name, not a command
-  } else {
-    fail_expected("a macro name");
-  }
+  parse_macro_name(node.name, node.name_expr, "a macro name");
   node.body = parse_block(kw, Block::Macro);
   close_block(kw, Tok::Return, "Return");
   return add(kw, std::move(node));
@@ -416,18 +422,7 @@ StmtId Parser::parse_return() {
 StmtId Parser::parse_call() {
   const Token kw = advance();
   CallStmt node;
-  if (at(Tok::Ident) && call_at() == BuiltinId::kNone) {
-    node.name = ast_.intern(text(advance()));
-  } else if (at(Tok::String)) {
-    const Token s = advance();
-    node.name = ast_.intern(text(s).substr(1, text(s).size() - 2));
-  } else if (starts_string_expr()) {
-    node.name_expr = parse_expr();
-  } else if (is_keyword(kind())) {
-    node.name = ast_.intern(text(advance()));  // `Call Circle;` (a macro named like a keyword)
-  } else {
-    fail_expected("a macro name after 'Call'");
-  }
+  parse_macro_name(node.name, node.name_expr, "a macro name after 'Call'");
   expect_semicolon();
   const StmtId id = add(kw, std::move(node));
   warn_statement_after(kw, ast_.stmt(id).range);

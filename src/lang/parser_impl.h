@@ -76,6 +76,7 @@ class Parser {
   StmtId parse_if();
   StmtId parse_for();
   StmtId parse_macro();
+  void parse_macro_name(StrId& name, ExprId& name_expr, std::string_view what);
   StmtId parse_call();
   StmtId parse_return();
   StmtId parse_exit_abort();
