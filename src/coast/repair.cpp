@@ -476,6 +476,209 @@ double mean_gamma(const WorkCurve& c) {
   return c.gamma.empty() ? 0 : g / static_cast<double>(c.gamma.size());
 }
 
+// The loops being repaired, as polygons with their vertices' origins, and the loops changed
+// since they were last checked: pairs of unchanged loops keep their earlier (clean) verdict.
+struct LoopRepair {
+  std::vector<WorkCurve>& curves;
+  std::vector<WorkLoop>& loops;
+  std::vector<RepairEntry>& log;
+  std::vector<std::vector<Vec2>> polys;
+  std::vector<std::vector<LoopVertexRef>> refs;
+  std::vector<char> dirty;
+
+  LoopRepair(std::vector<WorkCurve>& c, std::vector<WorkLoop>& l, std::vector<RepairEntry>& lg)
+      : curves(c), loops(l), log(lg), polys(l.size()), refs(l.size()), dirty(l.size(), 1) {}
+
+  void rebuild_polygons() {
+    for (std::size_t l = 0; l < loops.size(); ++l) {
+      if (loops[l].dead) {
+        polys[l].clear();
+        refs[l].clear();
+      } else {
+        loop_polygon(curves, loops[l], polys[l], &refs[l]);
+      }
+    }
+  }
+
+  void mark_loops_using(std::uint32_t ci) {
+    for (std::size_t l = 0; l < loops.size(); ++l)
+      for (std::uint32_t c : loops[l].curves)
+        if (c == ci) dirty[l] = 1;
+  }
+};
+
+// 1. Puts original points back on every offending segment that has some. True when some
+// were put back; the hits whose two segments are both original are listed in `stuck`.
+bool put_back_original_points(LoopRepair& r, const std::vector<SegmentHit>& hits, std::size_t round,
+                              std::vector<const SegmentHit*>& stuck) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> inserts;   // (curve, full index)
+  std::vector<std::uint32_t> idx;
+  for (const SegmentHit& h : hits) {
+    bool any = false;
+    for (const auto& [l, s] : {std::pair{h.loop_a, h.seg_a}, std::pair{h.loop_b, h.seg_b}}) {
+      const LoopVertexRef ref = r.refs[l][s];   // the segment's first vertex owns it
+      refine_indices(r.curves[ref.curve], ref.k, round, idx);
+      for (std::uint32_t i : idx) inserts.push_back({ref.curve, i});
+      any |= !idx.empty();
+    }
+    if (!any) stuck.push_back(&h);
+  }
+  if (inserts.empty()) return false;
+  std::sort(inserts.begin(), inserts.end());
+  inserts.erase(std::unique(inserts.begin(), inserts.end()), inserts.end());
+  for (std::size_t i = 0; i < inserts.size();) {
+    const std::uint32_t ci = inserts[i].first;
+    WorkCurve& c = r.curves[ci];
+    std::size_t j = i;
+    while (j < inserts.size() && inserts[j].first == ci) c.keep.push_back(inserts[j++].second);
+    std::sort(c.keep.begin(), c.keep.end());
+    c.keep.erase(std::unique(c.keep.begin(), c.keep.end()), c.keep.end());
+    r.mark_loops_using(ci);
+    r.log.push_back({RepairKind::Refined, c.record, c.id, c.full[inserts[i].second], static_cast<double>(j - i)});
+    i = j;
+  }
+  return true;
+}
+
+// 2. Original data still meets: drops an island below the accuracy (one per stuck hit).
+bool drop_small_islands(LoopRepair& r, const std::vector<const SegmentHit*>& stuck, double radius) {
+  bool dropped = false;
+  for (const SegmentHit* h : stuck) {
+    for (std::uint32_t l : {h->loop_a, h->loop_b}) {
+      WorkLoop& loop = r.loops[l];
+      if (loop.dead || !loop.hole || loop.curves.size() != 1) continue;
+      const WorkCurve& c = r.curves[loop.curves[0]];
+      if (!c.periodic || island_perimeter_m(c, radius) >= 5.0 * mean_gamma(c)) continue;
+      loop.dead = true;
+      dropped = true;
+      r.log.push_back({RepairKind::DroppedIsland, c.record, c.id, uv_to_lonlat(h->where), 0});
+      break;
+    }
+  }
+  return dropped;
+}
+
+// 2b. Unites two islands whose source outlines overlap, or an island with the water loop
+// it overlaps; each loop at most once per round.
+bool unite_overlapping_islands(LoopRepair& r, const std::vector<const SegmentHit*>& stuck) {
+  std::vector<WorkCurve>& curves = r.curves;
+  std::vector<WorkLoop>& loops = r.loops;
+  bool united = false;
+  std::vector<const SegmentHit*> by_pair(stuck.begin(), stuck.end());
+  std::stable_sort(by_pair.begin(), by_pair.end(), [](const SegmentHit* x, const SegmentHit* y) {
+    return std::pair(x->loop_a, x->loop_b) < std::pair(y->loop_a, y->loop_b);
+  });
+  std::vector<char> used(loops.size(), 0);
+  for (std::size_t i = 0; i < by_pair.size();) {
+    const std::uint32_t a = by_pair[i]->loop_a, b = by_pair[i]->loop_b;
+    std::size_t j = i;
+    while (j < by_pair.size() && by_pair[j]->loop_a == a && by_pair[j]->loop_b == b) ++j;
+    const std::vector<const SegmentHit*> pair(by_pair.begin() + static_cast<long>(i),
+                                              by_pair.begin() + static_cast<long>(j));
+    i = j;
+    if (a != b && !used[a] && !used[b] && !loops[a].dead && !loops[b].dead && loops[a].hole != loops[b].hole) {
+      const std::uint32_t isl = loops[a].hole ? a : b, water = loops[a].hole ? b : a;
+      const WorkLoop& il = loops[isl];
+      if (il.curves.size() == 1 && curves[il.curves[0]].periodic) {   // an island against water
+        const WorkCurve& ci = curves[il.curves[0]];
+        const std::size_t rec = ci.record;
+        const std::int64_t id = ci.id;
+        if (unite_island_with_coast(curves, loops[isl], r.polys[isl], r.refs[isl], r.polys[water], r.refs[water],
+                                    pair, isl == a)) {
+          used[a] = used[b] = 1;
+          r.dirty[a] = r.dirty[b] = 1;
+          united = true;
+          r.log.push_back({RepairKind::UnitedIslands, rec, id, uv_to_lonlat(pair.front()->where), 0});
+        }
+      }
+      continue;
+    }
+    if (a == b || used[a] || used[b] || loops[a].dead || loops[b].dead || !loops[a].hole || !loops[b].hole ||
+        loops[a].curves.size() != 1 || loops[b].curves.size() != 1 || !curves[loops[a].curves[0]].periodic ||
+        !curves[loops[b].curves[0]].periodic)
+      continue;
+    const WorkCurve& cb = curves[loops[b].curves[0]];
+    const std::size_t rec_b = cb.record;
+    const std::int64_t id_b = cb.id;
+    if (unite_islands(curves, loops[a], loops[b], r.polys[a], r.refs[a], r.polys[b], r.refs[b], pair, true)) {
+      used[a] = used[b] = 1;
+      r.dirty[a] = r.dirty[b] = 1;
+      united = true;
+      r.log.push_back({RepairKind::UnitedIslands, rec_b, id_b, uv_to_lonlat(pair.front()->where), 0});
+    }
+  }
+  return united;
+}
+
+// 3. A loop that meets itself on original data (a pinch or a twisted sliver, as in GSHHG's
+// intermediate Baltic coast): cuts out the shorter side. One cut per curve per round (a
+// cut renumbers the curve's points). A loop of several curves may meet itself across the
+// end of a curve (the binned GSHHG comes in pieces cut at its bins' edges): the sliver is
+// cut out across the curves, at most once per loop per round (the cut changes the loop's
+// curves).
+bool cut_slivers(LoopRepair& r, const std::vector<const SegmentHit*>& stuck) {
+  bool cut = false;
+  std::vector<char> cut_curve(r.curves.size(), 0), cut_loop(r.loops.size(), 0);
+  std::vector<std::uint32_t> left_loop;
+  for (const SegmentHit* h : stuck) {
+    if (h->loop_a != h->loop_b || r.loops[h->loop_a].dead) continue;
+    const LoopVertexRef ra = r.refs[h->loop_a][h->seg_a], rb = r.refs[h->loop_b][h->seg_b];
+    const geo::LonLat where = uv_to_lonlat(h->where);
+    if (ra.curve != rb.curve) {
+      WorkLoop& loop = r.loops[h->loop_a];
+      if (cut_loop[h->loop_a] || cut_curve[ra.curve] || cut_curve[rb.curve]) continue;
+      // The two segments' places on the loop, the earlier one first.
+      const std::size_t sa = std::min(h->seg_a, h->seg_b), sb = std::max(h->seg_a, h->seg_b);
+      const LoopVertexRef r1 = r.refs[h->loop_a][sa], r2 = r.refs[h->loop_a][sb];
+      std::size_t i1 = loop.curves.size(), i2 = loop.curves.size();
+      for (std::size_t k = 0; k < loop.curves.size(); ++k) {
+        if (loop.curves[k] == r1.curve) i1 = k;
+        if (loop.curves[k] == r2.curve) i2 = k;
+      }
+      const std::uint32_t a1 = r.curves[r1.curve].keep[r1.k], a2 = r.curves[r2.curve].keep[r2.k];
+      if (cut_sliver_across(r.curves, loop, i1, a1, i2, a2, left_loop)) {
+        const WorkCurve& c = r.curves[r1.curve];
+        r.log.push_back({RepairKind::CutSliver, c.record, c.id, where, 0});
+        cut = true;
+        cut_loop[h->loop_a] = 1;
+        r.dirty[h->loop_a] = 1;
+        for (std::uint32_t ci : {r1.curve, r2.curve}) cut_curve[ci] = 1;
+        for (std::uint32_t ci : left_loop) cut_curve[ci] = 1;
+        left_loop.clear();
+      }
+      continue;
+    }
+    if (cut_curve[ra.curve]) continue;
+    WorkCurve& c = r.curves[ra.curve];
+    if (cut_sliver(c, std::min(c.keep[ra.k], c.keep[rb.k]), std::max(c.keep[ra.k], c.keep[rb.k]))) {
+      r.log.push_back({RepairKind::CutSliver, c.record, c.id, where, 0});
+      cut = true;
+      cut_curve[ra.curve] = 1;
+      r.mark_loops_using(ra.curve);
+    }
+  }
+  return cut;
+}
+
+// The error when the first stuck hit is on original data that no step could change.
+CoastError unrepairable_error(const LoopRepair& r, const std::vector<const SegmentHit*>& stuck) {
+  const SegmentHit& h = *stuck.front();
+  const WorkCurve& ca = r.curves[r.refs[h.loop_a][h.seg_a].curve];
+  const WorkCurve& cb = r.curves[r.refs[h.loop_b][h.seg_b].curve];
+  const char* kind = h.kind == HitKind::Cross ? "cross" : h.kind == HitKind::Touch ? "touch" : "overlap";
+  const std::string what =
+      &ca == &cb || (ca.record == cb.record && ca.id == cb.id)
+          ? fmt::format("the source shoreline (record {} id {}) meets itself ({}) and no sliver can be cut out",
+                        ca.record, ca.id, kind)
+          : fmt::format("the source shorelines (record {} id {} and record {} id {}) {} each other", ca.record,
+                        ca.id, cb.record, cb.id, kind);
+  return CoastError{"repair", static_cast<std::int64_t>(ca.record),
+                    fmt::format("{}; {} such places cannot be repaired (a finer accuracy or a region avoiding "
+                                "them may help)",
+                                what, stuck.size()),
+                    uv_to_lonlat(h.where)};
+}
+
 }  // namespace
 
 void free_points(WorkCurve& c) {
@@ -501,200 +704,32 @@ void loop_polygon(const std::vector<WorkCurve>& curves, const WorkLoop& loop, st
 
 Result<std::size_t> repair_loops(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops,
                                  const RepairOptions& opt, std::vector<RepairEntry>& log) {
-  std::vector<std::vector<Vec2>> polys(loops.size());
-  std::vector<std::vector<LoopVertexRef>> refs(loops.size());
-  auto rebuild = [&] {
-    for (std::size_t l = 0; l < loops.size(); ++l) {
-      if (loops[l].dead) {
-        polys[l].clear();
-        refs[l].clear();
-      } else {
-        loop_polygon(curves, loops[l], polys[l], &refs[l]);
-      }
-    }
-  };
-  // Loops changed since they were last checked; pairs of unchanged loops keep their
-  // earlier (clean) verdict.
-  std::vector<char> dirty(loops.size(), 1);
-  auto mark_curve = [&](std::uint32_t ci) {
-    for (std::size_t l = 0; l < loops.size(); ++l)
-      for (std::uint32_t c : loops[l].curves)
-        if (c == ci) dirty[l] = 1;
-  };
+  LoopRepair r(curves, loops, log);
   std::size_t round = 0;
   for (;; ++round) {
-    rebuild();
-    const std::vector<SegmentHit> hits = find_intersections(polys, nullptr, dirty);
+    r.rebuild_polygons();
+    const std::vector<SegmentHit> hits = find_intersections(r.polys, nullptr, r.dirty);
     // Next round re-checks the loops met here (a hit left alone this round stays) and
     // those changed below.
-    std::fill(dirty.begin(), dirty.end(), 0);
-    for (const SegmentHit& h : hits) dirty[h.loop_a] = dirty[h.loop_b] = 1;
+    std::fill(r.dirty.begin(), r.dirty.end(), 0);
+    for (const SegmentHit& h : hits) r.dirty[h.loop_a] = r.dirty[h.loop_b] = 1;
     if (hits.empty()) {
-      if (!opt.check_splines ||
-          spline_pass(curves, loops, polys, refs, round, opt.radius, static_cast<int>(round) < opt.max_rounds, log))
+      if (!opt.check_splines || spline_pass(curves, loops, r.polys, r.refs, round, opt.radius,
+                                            static_cast<int>(round) < opt.max_rounds, log))
         break;
-      std::fill(dirty.begin(), dirty.end(), 1);
+      std::fill(r.dirty.begin(), r.dirty.end(), 1);
       continue;   // points were put back: check the polygons again
     }
     if (static_cast<int>(round) >= opt.max_rounds)
-      return CoastError{"repair", static_cast<std::int64_t>(curves[refs[hits[0].loop_a][0].curve].record),
+      return CoastError{"repair", static_cast<std::int64_t>(curves[r.refs[hits[0].loop_a][0].curve].record),
                         fmt::format("{} intersections left after {} repair rounds", hits.size(), round),
                         uv_to_lonlat(hits[0].where)};
-    // 1. Put original points back on every offending segment that has some.
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> inserts;   // (curve, full index)
     std::vector<const SegmentHit*> stuck;
-    std::vector<std::uint32_t> idx;
-    for (const SegmentHit& h : hits) {
-      bool any = false;
-      for (const auto& [l, s] : {std::pair{h.loop_a, h.seg_a}, std::pair{h.loop_b, h.seg_b}}) {
-        const LoopVertexRef r = refs[l][s];   // the segment's first vertex owns it
-        refine_indices(curves[r.curve], r.k, round, idx);
-        for (std::uint32_t i : idx) inserts.push_back({r.curve, i});
-        any |= !idx.empty();
-      }
-      if (!any) stuck.push_back(&h);
-    }
-    if (!inserts.empty()) {
-      std::sort(inserts.begin(), inserts.end());
-      inserts.erase(std::unique(inserts.begin(), inserts.end()), inserts.end());
-      for (std::size_t i = 0; i < inserts.size();) {
-        const std::uint32_t ci = inserts[i].first;
-        WorkCurve& c = curves[ci];
-        std::size_t j = i;
-        while (j < inserts.size() && inserts[j].first == ci) c.keep.push_back(inserts[j++].second);
-        std::sort(c.keep.begin(), c.keep.end());
-        c.keep.erase(std::unique(c.keep.begin(), c.keep.end()), c.keep.end());
-        mark_curve(ci);
-        log.push_back({RepairKind::Refined, c.record, c.id, c.full[inserts[i].second], static_cast<double>(j - i)});
-        i = j;
-      }
-      continue;
-    }
-    // 2. Original data still meets: drop an island below the accuracy, else fail.
-    bool dropped = false;
-    for (const SegmentHit* h : stuck) {
-      for (std::uint32_t l : {h->loop_a, h->loop_b}) {
-        WorkLoop& loop = loops[l];
-        if (loop.dead || !loop.hole || loop.curves.size() != 1) continue;
-        const WorkCurve& c = curves[loop.curves[0]];
-        if (!c.periodic || island_perimeter_m(c, opt.radius) >= 5.0 * mean_gamma(c)) continue;
-        loop.dead = true;
-        dropped = true;
-        log.push_back({RepairKind::DroppedIsland, c.record, c.id, uv_to_lonlat(h->where), 0});
-        break;
-      }
-    }
-    if (dropped) continue;
-    // 2b. Two islands whose source outlines overlap: united into one.
-    bool united = false;
-    {
-      std::vector<const SegmentHit*> by_pair(stuck.begin(), stuck.end());
-      std::stable_sort(by_pair.begin(), by_pair.end(), [](const SegmentHit* x, const SegmentHit* y) {
-        return std::pair(x->loop_a, x->loop_b) < std::pair(y->loop_a, y->loop_b);
-      });
-      std::vector<char> used(loops.size(), 0);
-      for (std::size_t i = 0; i < by_pair.size();) {
-        const std::uint32_t a = by_pair[i]->loop_a, b = by_pair[i]->loop_b;
-        std::size_t j = i;
-        while (j < by_pair.size() && by_pair[j]->loop_a == a && by_pair[j]->loop_b == b) ++j;
-        const std::vector<const SegmentHit*> pair(by_pair.begin() + static_cast<long>(i),
-                                                  by_pair.begin() + static_cast<long>(j));
-        i = j;
-        if (a != b && !used[a] && !used[b] && !loops[a].dead && !loops[b].dead && loops[a].hole != loops[b].hole) {
-          const std::uint32_t isl = loops[a].hole ? a : b, water = loops[a].hole ? b : a;
-          const WorkLoop& il = loops[isl];
-          if (il.curves.size() == 1 && curves[il.curves[0]].periodic) {   // an island against water
-            const WorkCurve& ci = curves[il.curves[0]];
-            const std::size_t rec = ci.record;
-            const std::int64_t id = ci.id;
-            if (unite_island_with_coast(curves, loops[isl], polys[isl], refs[isl], polys[water], refs[water], pair,
-                                        isl == a)) {
-              used[a] = used[b] = 1;
-          dirty[a] = dirty[b] = 1;
-              united = true;
-              log.push_back({RepairKind::UnitedIslands, rec, id, uv_to_lonlat(pair.front()->where), 0});
-            }
-          }
-          continue;
-        }
-        if (a == b || used[a] || used[b] || loops[a].dead || loops[b].dead || !loops[a].hole || !loops[b].hole ||
-            loops[a].curves.size() != 1 || loops[b].curves.size() != 1 || !curves[loops[a].curves[0]].periodic ||
-            !curves[loops[b].curves[0]].periodic)
-          continue;
-        const WorkCurve& cb = curves[loops[b].curves[0]];
-        const std::size_t rec_b = cb.record;
-        const std::int64_t id_b = cb.id;
-        if (unite_islands(curves, loops[a], loops[b], polys[a], refs[a], polys[b], refs[b], pair, true)) {
-          used[a] = used[b] = 1;
-          dirty[a] = dirty[b] = 1;
-          united = true;
-          log.push_back({RepairKind::UnitedIslands, rec_b, id_b, uv_to_lonlat(pair.front()->where), 0});
-        }
-      }
-    }
-    if (united) continue;
-    // 3. A loop that meets itself on original data (a pinch or a twisted sliver, as in
-    //    GSHHG's intermediate Baltic coast): cut out the shorter side.
-    // One cut per curve per round (a cut renumbers the curve's points).
-    // A loop of several curves may meet itself across the end of a curve (the binned
-    // GSHHG comes in pieces cut at its bins' edges): the sliver is cut out across the
-    // curves, at most once per loop per round (the cut changes the loop's curves).
-    bool cut = false;
-    std::vector<char> cut_curve(curves.size(), 0), cut_loop(loops.size(), 0);
-    std::vector<std::uint32_t> left_loop;
-    for (const SegmentHit* h : stuck) {
-      if (h->loop_a != h->loop_b || loops[h->loop_a].dead) continue;
-      const LoopVertexRef ra = refs[h->loop_a][h->seg_a], rb = refs[h->loop_b][h->seg_b];
-      const geo::LonLat where = uv_to_lonlat(h->where);
-      if (ra.curve != rb.curve) {
-        WorkLoop& loop = loops[h->loop_a];
-        if (cut_loop[h->loop_a] || cut_curve[ra.curve] || cut_curve[rb.curve]) continue;
-        // The two segments' places on the loop, the earlier one first.
-        const std::size_t sa = std::min(h->seg_a, h->seg_b), sb = std::max(h->seg_a, h->seg_b);
-        const LoopVertexRef r1 = refs[h->loop_a][sa], r2 = refs[h->loop_a][sb];
-        std::size_t i1 = loop.curves.size(), i2 = loop.curves.size();
-        for (std::size_t k = 0; k < loop.curves.size(); ++k) {
-          if (loop.curves[k] == r1.curve) i1 = k;
-          if (loop.curves[k] == r2.curve) i2 = k;
-        }
-        const std::uint32_t a1 = curves[r1.curve].keep[r1.k], a2 = curves[r2.curve].keep[r2.k];
-        if (cut_sliver_across(curves, loop, i1, a1, i2, a2, left_loop)) {
-          const WorkCurve& c = curves[r1.curve];
-          log.push_back({RepairKind::CutSliver, c.record, c.id, where, 0});
-          cut = true;
-          cut_loop[h->loop_a] = 1;
-          dirty[h->loop_a] = 1;
-          for (std::uint32_t ci : {r1.curve, r2.curve}) cut_curve[ci] = 1;
-          for (std::uint32_t ci : left_loop) cut_curve[ci] = 1;
-          left_loop.clear();
-        }
-        continue;
-      }
-      if (cut_curve[ra.curve]) continue;
-      WorkCurve& c = curves[ra.curve];
-      if (cut_sliver(c, std::min(c.keep[ra.k], c.keep[rb.k]), std::max(c.keep[ra.k], c.keep[rb.k]))) {
-        log.push_back({RepairKind::CutSliver, c.record, c.id, where, 0});
-        cut = true;
-        cut_curve[ra.curve] = 1;
-        mark_curve(ra.curve);
-      }
-    }
-    if (cut) continue;
-    const SegmentHit& h = *stuck.front();
-    const WorkCurve& ca = curves[refs[h.loop_a][h.seg_a].curve];
-    const WorkCurve& cb = curves[refs[h.loop_b][h.seg_b].curve];
-    const char* kind = h.kind == HitKind::Cross ? "cross" : h.kind == HitKind::Touch ? "touch" : "overlap";
-    const std::string what =
-        &ca == &cb || (ca.record == cb.record && ca.id == cb.id)
-            ? fmt::format("the source shoreline (record {} id {}) meets itself ({}) and no sliver can be cut out",
-                          ca.record, ca.id, kind)
-            : fmt::format("the source shorelines (record {} id {} and record {} id {}) {} each other", ca.record,
-                          ca.id, cb.record, cb.id, kind);
-    return CoastError{"repair", static_cast<std::int64_t>(ca.record),
-                      fmt::format("{}; {} such places cannot be repaired (a finer accuracy or a region avoiding "
-                                  "them may help)",
-                                  what, stuck.size()),
-                      uv_to_lonlat(h.where)};
+    if (put_back_original_points(r, hits, round, stuck)) continue;
+    if (drop_small_islands(r, stuck, opt.radius)) continue;
+    if (unite_overlapping_islands(r, stuck)) continue;
+    if (cut_slivers(r, stuck)) continue;
+    return unrepairable_error(r, stuck);
   }
   return round;
 }

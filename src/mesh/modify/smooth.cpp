@@ -6,6 +6,7 @@
 
 #include "base/parallel.h"
 #include "mesh/geometry.h"
+#include "mesh/modify/flip_queue.h"
 
 namespace sm {
 namespace {
@@ -13,29 +14,19 @@ namespace {
 // and results do not depend on the thread count.
 constexpr std::size_t kSmoothChunk = 16384;
 
-// Lawson flips from the edges on `stack` (each marked in `queued`, keyed by the smaller
-// side of the pair) until every edge reached is locally Delaunay.
-std::uint64_t flip_from(TriangleStore& m, std::vector<Side>& stack, std::vector<std::uint8_t>& queued) {
+// Lawson flips from the edges queued on q until every edge reached is locally Delaunay.
+std::uint64_t flip_from(TriangleStore& m, FlipQueue& q) {
   const PlanarGeometry g{&m.xy};
   std::uint64_t flips = 0;
-  while (!stack.empty()) {
-    const Side s = stack.back();
-    stack.pop_back();
-    queued[s.value] = 0;
+  while (!q.empty()) {
+    const Side s = q.pop();
     const Side o = m.twin[s.value];
     if (!o.valid() || m.constrained(s)) continue;
     const VertexId u = m.org(s), w = m.dest(s), c = m.apex(s), d = m.apex(o);
     if (g.in_circle_sos(u, w, c, d) != Sign::Positive) continue;
     if (g.orient(c, u, d) != Sign::Positive || g.orient(d, w, c) != Sign::Positive) continue;
-    const Side n = m.flip(s);  // d -> c; the four outer edges may now be illegal
+    q.push_outer_edges(m, m.flip(s));  // d -> c; the four outer edges may now be illegal
     ++flips;
-    const Side outer[4] = {next(n), prev(n), next(m.twin[n.value]), prev(m.twin[n.value])};
-    for (Side x : outer) {
-      const Side y = m.twin[x.value];
-      if (!y.valid() || m.constrained(x)) continue;
-      const Side key = x.value < y.value ? x : y;
-      if (!queued[key.value]) queued[key.value] = 1, stack.push_back(key);
-    }
   }
   return flips;
 }
@@ -43,31 +34,19 @@ std::uint64_t flip_from(TriangleStore& m, std::vector<Side>& stack, std::vector<
 }  // namespace
 
 std::uint64_t make_delaunay(TriangleStore& m) {
-  std::vector<Side> stack;
-  std::vector<std::uint8_t> queued(m.corner.size(), 0);
-  for (std::uint32_t s = 0; s < m.corner.size(); ++s) {
-    const Side o = m.twin[s];
-    if (m.alive(tri_of(Side{s})) && o.valid() && s < o.value && !m.constrained(Side{s})) {
-      stack.push_back(Side{s});
-      queued[s] = 1;
-    }
-  }
-  return flip_from(m, stack, queued);
+  FlipQueue q(m.corner.size());
+  for (std::uint32_t s = 0; s < m.corner.size(); ++s)
+    if (m.alive(tri_of(Side{s})) && s < m.twin[s].value) q.push_edge(m, Side{s});
+  return flip_from(m, q);
 }
 
 std::uint64_t make_delaunay_around(TriangleStore& m, std::span<const TriId> tris) {
-  std::vector<Side> stack;
-  std::vector<std::uint8_t> queued(m.corner.size(), 0);
+  FlipQueue q(m.corner.size());
   for (const TriId t : tris) {
     if (!m.alive(t)) continue;
-    for (std::uint32_t e = 0; e < 3; ++e) {
-      const Side s = side_of(t, e), o = m.twin[s.value];
-      if (!o.valid() || m.constrained(s)) continue;
-      const Side key = s.value < o.value ? s : o;
-      if (!queued[key.value]) queued[key.value] = 1, stack.push_back(key);
-    }
+    for (std::uint32_t e = 0; e < 3; ++e) q.push_edge(m, side_of(t, e));
   }
-  return flip_from(m, stack, queued);
+  return flip_from(m, q);
 }
 
 SmoothStats smooth_laplacian(TriangleStore& m, int passes, int threads, std::uint32_t pinned) {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "mesh/modify/flip_queue.h"
 
 namespace sm {
 
@@ -22,31 +23,16 @@ double swap_gain(const TriangleStore& m, Side s, PredicateStats* st) {
 
 SwapStats swap_for_quality(TriangleStore& m, double min_gain, std::uint64_t max_swaps, PredicateStats* st) {
   SwapStats out;
-  std::vector<Side> stack;
-  std::vector<std::uint8_t> queued(m.corner.size(), 0);
-  for (auto s = static_cast<std::uint32_t>(m.corner.size()); s-- > 0;) {
-    const Side o = m.twin[s];
-    if (m.alive(tri_of(Side{s})) && o.valid() && s < o.value && !m.constrained(Side{s})) {
-      stack.push_back(Side{s});
-      queued[s] = 1;
-    }
-  }
-  while (!stack.empty() && out.swaps < max_swaps) {
-    const Side s = stack.back();
-    stack.pop_back();
-    queued[s.value] = 0;
+  FlipQueue q(m.corner.size());
+  for (auto s = static_cast<std::uint32_t>(m.corner.size()); s-- > 0;)
+    if (m.alive(tri_of(Side{s})) && s < m.twin[s].value) q.push_edge(m, Side{s});
+  while (!q.empty() && out.swaps < max_swaps) {
+    const Side s = q.pop();
     ++out.tested;
     const double g = swap_gain(m, s, st);
     if (!(g > min_gain)) continue;
-    const Side n = m.flip(s);
+    q.push_outer_edges(m, m.flip(s));
     ++out.swaps;
-    const Side outer[4] = {next(n), prev(n), next(m.twin[n.value]), prev(m.twin[n.value])};
-    for (Side x : outer) {
-      const Side y = m.twin[x.value];
-      if (!y.valid() || m.constrained(x)) continue;
-      const Side key = x.value < y.value ? x : y;
-      if (!queued[key.value]) queued[key.value] = 1, stack.push_back(key);
-    }
   }
   return out;
 }
