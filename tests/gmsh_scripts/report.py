@@ -32,6 +32,25 @@ SCRIPT_GLOBS = ["tutorial/*.geo", "benchmarks/2d/*.geo", "benchmarks/statreport/
                 "benchmarks/2d_large/*.geo"]
 
 
+# Why a script's element count is not within 15% of gmsh's, where we know: what Gmsh 4.8.4
+# does (read in its source tree) and why ours differs. Written under the figures; a script
+# far from gmsh's count and missing here is listed as not yet explained.
+COUNT_NOTES = {
+    "square.geo":
+        "a tie that Gmsh's rounding breaks. Its front2d sizes a triangle by the mean of its "
+        "nodes' shortest edges, written 0.3333333333 * (sum): the two triangles of the 10 x 10 "
+        "square (circumradius 7.07) get size 9.999999999, so R/h passes 1/sqrt 2 by 1e-10 and "
+        "Gmsh adds the centre (4 triangles). Ours computes R/h = 1/sqrt 2 exactly and keeps the "
+        "2 triangles; any rectangle not square gets its centre in both.",
+    "Square-Attr3.geo":
+        "Gmsh's front2d misses the Box field. It sizes a triangle by the sizes at its nodes "
+        "only, and every node starts on the boundary, outside the box (size 0.1): the "
+        "triangles over the box are resolved before a node falls inside it. Gmsh's own del2d "
+        "(3,800 triangles) and meshadapt (5,092) refine the box, as ours does (front2d "
+        "3,644, del2d 4,216): ours sizes a triangle at its circumcentre as well. Deliberate.",
+}
+
+
 def run(cmd, cwd, timeout):
     """(returncode or None on timeout, stdout, stderr, seconds)."""
     start = time.monotonic()
@@ -230,6 +249,8 @@ def write_markdown(results, out, timeout, build_dir=None):
                      f"({100 * len(close) / len(meshed_both):.1f}%) have an element count (triangles + quadrangles) "
                      "within 15% of gmsh's"
                      + (f" (not: {', '.join(far)})." if far else "."))
+        for name in far:
+            lines.append(f"  - {name}: " + COUNT_NOTES.get(name, "not explained yet."))
     # Scripts with Transfinite constraints: their grids are Gmsh's, so the counts must be equal.
     structured = [(name, r) for name, r in results if r.get("structured") and "sm2" in r
                   and r["sm2"]["status"] == "ok" and r["gmsh2"]["status"] == "ok"]
