@@ -32,6 +32,64 @@ SCRIPT_GLOBS = ["tutorial/*.geo", "benchmarks/2d/*.geo", "benchmarks/statreport/
                 "benchmarks/2d_large/*.geo"]
 
 
+# Why a script's element count is not within 15% of gmsh's, where we know: what Gmsh 4.8.4
+# does (read in its source tree) and why ours differs. Written under the figures; a script
+# far from gmsh's count and missing here is listed as not yet explained.
+COUNT_NOTES = {
+    "square.geo":
+        "a tie that Gmsh's rounding breaks. Its front2d sizes a triangle by the mean of its "
+        "nodes' shortest edges, written 0.3333333333 * (sum): the two triangles of the 10 x 10 "
+        "square (circumradius 7.07) get size 9.999999999, so R/h passes 1/sqrt 2 by 1e-10 and "
+        "Gmsh adds the centre (4 triangles). Ours computes R/h = 1/sqrt 2 exactly and keeps the "
+        "2 triangles; any rectangle not square gets its centre in both.",
+    "Square-Attr3.geo":
+        "Gmsh's front2d all but misses the Box field (size 0.01 in [0.2, 0.6]^2, 0.1 outside): "
+        "82 triangles in the box, where its own del2d puts 3,523 (3,800 in all; meshadapt "
+        "5,092) and our front2d 3,365 (3,644 in all). It sizes a triangle by the field at its "
+        "nodes only, and they start on the boundary, outside the box: a triangle over the box "
+        "is resolved unless one of its nodes falls inside. Ours takes the field at a "
+        "triangle's circumcentre. Deliberate.",
+    "compound_with_physicals.geo":
+        "Gmsh meshes each compound chain as one discrete curve of its own, whose nodes pass over "
+        "the chain's inner points: the bottom and top chains (25 long, lc 20) get 2 edges each, 8 "
+        "boundary nodes, 6 triangles. Ours keeps every mesh edge on the curve it lies on "
+        "(src/mesh/compound_curve.h), so the inner points 2, 3, 6 and 7 stay nodes: 3 edges per "
+        "chain, 10 boundary nodes, 14 triangles. Deliberate; without the `Compound Curve` lines "
+        "both mesh 8 line elements, gmsh 12 triangles, ours 10.",
+    "coin.geo":
+        "Gmsh's front2d is the outlier among its own algorithms at this graded re-entrant corner "
+        "(point size 1e-6, Mesh.SmoothRatio 21.5): 3,798 triangles, rho min 0.00, 10 below 0.3, "
+        "where its del2d makes 9,478 and meshadapt 15,488 (ours: front2d 6,384, rho min 0.79; "
+        "del2d 7,714; meshadapt 9,714). Beyond 0.1 from the corner the counts agree within 7% "
+        "(1,903 and 2,035); below 1e-4, then from 1e-4 to 1e-3, 1e-3 to 1e-2 and 1e-2 to 0.1, "
+        "Gmsh's front2d has 181, 334, 511 and 869 triangles against our 631, 1,309, 1,158 and "
+        "1,251: it leaves the corner coarser than its boundary edges. Not followed.",
+    "Square-Attr2.geo":
+        "the difference is Gmsh's front2d's: its del2d makes 13,306 triangles, ours 13,330 "
+        "(del2d) and 12,868 (front2d). Where: triangles whose centroid lies 0.02 to 0.03 from "
+        "the Distance curves (the fine zone's edge, h = 0.005, the Threshold ramp starting at "
+        "0.03 with slope 3.2) are 2,030 of mean area 0.78 h^2 in Gmsh's front2d against 3,013 "
+        "of 0.57 h^2 in ours; in the zone's core (below 0.02) 7,988 of 0.45 h^2 against 8,605 "
+        "of 0.42 h^2. Gmsh's front2d takes the field at a triangle's nodes (their mean), ours "
+        "at its circumcentre (each then the smaller of that and the boundary sizes extended "
+        "to its nodes). Not followed.",
+    "wing.geo":
+        "not explained yet. Same 1D mesh (569 edges); gmsh's front2d makes 23,753 triangles and "
+        "its del2d 14,131, ours 17,559 (front2d) and 17,079 (del2d). The difference lies between "
+        "0.1 and 10 from the wing (sizes growing from lc 0.02-0.03 to the box's 20, extended "
+        "from the boundary): 20,264 triangles in Gmsh's front2d, 14,078 in ours, 10,479 in its "
+        "del2d. Taking Gmsh's boundary node size (the node's shortest edge of the initial "
+        "triangulation, at least half of its curve edges) for ours (the mean of its curve "
+        "edges) moves ours only to 17,699.",
+    "naca12_2d.geo":
+        "Gmsh's 1D mesher measures the anisotropic background (MinAniso of a Box and a "
+        "BoundaryLayer field) along each curve's tangent, where the BoundaryLayer metric's size "
+        "is the tangential one; ours has isotropic fields only and gives the airfoil curves the "
+        "wall size: 2,534 line elements against 180, and so the triangles and layers "
+        "(docs/fields.md, \"MinAniso and anisotropic inputs\"). Known loss, not fixed here.",
+}
+
+
 def run(cmd, cwd, timeout):
     """(returncode or None on timeout, stdout, stderr, seconds)."""
     start = time.monotonic()
@@ -230,6 +288,8 @@ def write_markdown(results, out, timeout, build_dir=None):
                      f"({100 * len(close) / len(meshed_both):.1f}%) have an element count (triangles + quadrangles) "
                      "within 15% of gmsh's"
                      + (f" (not: {', '.join(far)})." if far else "."))
+        for name in far:
+            lines.append(f"  - {name}: " + COUNT_NOTES.get(name, "not explained yet."))
     # Scripts with Transfinite constraints: their grids are Gmsh's, so the counts must be equal.
     structured = [(name, r) for name, r in results if r.get("structured") and "sm2" in r
                   and r["sm2"]["status"] == "ok" and r["gmsh2"]["status"] == "ok"]
