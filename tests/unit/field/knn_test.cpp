@@ -14,7 +14,7 @@
 using namespace sm;
 using namespace sm::field;
 
-TEST_CASE("knn: FLANN k-d tree equals brute force on random points") {
+TEST_CASE("knn: the k-d tree equals brute force on random points") {
   std::mt19937 rng(42);
   std::uniform_real_distribution<double> u(-1, 1);
   std::vector<Vec3> pts(3000), q(500);
@@ -33,7 +33,7 @@ TEST_CASE("knn: FLANN k-d tree equals brute force on random points") {
     CHECK(norm(pts[idx[i]] - q[i]) == doctest::Approx(bd[i]).epsilon(1e-12));
   }
   CHECK(d[0] == 0);
-  // FLANN's plain per-query search and the Morton-ordered, bounded one agree.
+  // The queries in their own order and in Morton order (each beating the answer before) agree.
   KdTree plain(pts, {10, 0, false});
   std::vector<double> pd(q.size());
   plain.nearest(q, pd);
@@ -116,8 +116,7 @@ TEST_CASE("knn: nearest_within agrees with brute force inside the radius, +inf b
 }
 
 TEST_CASE("knn: nearest_below is exact up to the limit and above it beyond, on both search paths") {
-  // 6000 samples: the coarse tree over buckets is built (4096 or more), and queries far
-  // from the samples take it; near ones take the seeded fine search.
+  // 6000 samples; queries near the samples and far from them.
   std::mt19937 rng(23);
   std::uniform_real_distribution<double> u(-1, 1);
   std::vector<Vec3> pts(6000), q(4000);
@@ -176,7 +175,7 @@ TEST_CASE("knn: nearest_below is exact up to the limit and above it beyond, on b
 // lattice with repeated points and queries halfway between lattice points, many queries
 // have several nearest points at exactly the same distance: every answer must still be
 // brute force's (the smallest index among the nearest), whatever batch came before, on
-// both search paths (6,000 points: with buckets).
+// both query orders (Morton-sorted, where each answer is the next one's candidate, and as given).
 TEST_CASE("knn: batches of seeded searches keep brute force's answers, ties included") {
   std::mt19937 rng(7);
   std::uniform_int_distribution<int> cell(0, 19), half(0, 1), len(1, 8);
@@ -200,8 +199,8 @@ TEST_CASE("knn: batches of seeded searches keep brute force's answers, ties incl
   }
   CHECK(ties > q.size() / 2);  // the ties are there to be broken
 
-  for (const bool buckets : {true, false}) {
-    KdTree tree(pts, {32, 0, true, buckets});
+  for (const bool sorted : {true, false}) {
+    KdTree tree(pts, {32, 0, sorted});
     std::vector<double> d(8), wd(8);
     std::vector<std::uint32_t> idx(8), widx(8);
     const std::vector<double> far{25.0};  // nearest_within: covers every lattice query
