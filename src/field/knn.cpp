@@ -1,5 +1,5 @@
-// Exact nearest-neighbour search over a k-d tree of our own, and FLANN's k-d tree for
-// the approximate searches and visit_within (the only FLANN user of the project). Batches
+// Exact nearest-neighbour search and visits over a k-d tree of our own, and FLANN's k-d
+// tree for the approximate searches (the only FLANN user of the project). Batches
 // are answered in Morton (space-filling curve) order, each query starting with the
 // previous answer as the candidate to beat, so that most cells are skipped from the
 // start; the tie rule (of several points at the same distance, the smallest index) makes
@@ -58,23 +58,6 @@ class NearestResult final : public flann::ResultSet<double> {
   double worst_;
   double bound_ = 0;
   std::size_t index_ = kNone;
-};
-
-/// Hands every point to a callback that sets the pruning bound.
-class VisitResult final : public flann::ResultSet<double> {
- public:
-  VisitResult(double bound2, const std::function<double(std::uint32_t, double)>& visit)
-      : bound2_(bound2), visit_(visit) {}
-  bool full() const override { return true; }
-  void addPoint(double dist, std::size_t index) override {
-    if (!(dist < bound2_)) return;
-    bound2_ = std::min(bound2_, visit_(static_cast<std::uint32_t>(index), dist));
-  }
-  double worstDist() const override { return bound2_; }
-
- private:
-  double bound2_;
-  const std::function<double(std::uint32_t, double)>& visit_;
 };
 
 /// Spreads the low 21 bits of v to every third bit.
@@ -190,6 +173,38 @@ class NearTree {
     }
   }
 
+  /// Calls visit(index, squared distance) for each point nearer than sqrt(bound2), in the
+  /// tree's order; bound2 becomes min(bound2, what visit returns), and cells beyond it
+  /// are skipped.
+  void visit(const Vec3& q, double bound2, const std::function<double(std::uint32_t, double)>& fn) const {
+    std::array<std::pair<std::uint32_t, double>, kMaxDepth> stack;
+    std::size_t top = 0;
+    std::uint32_t k = 0;
+    double bound = box2(nodes_[0], q);
+    for (;;) {
+      if (bound <= bound2) {
+        const Node& nd = nodes_[k];
+        if (nd.child != 0) {
+          const double b1 = box2(nodes_[nd.child], q), b2 = box2(nodes_[nd.child + 1], q);
+          const bool first_nearer = b1 <= b2;
+          stack[top++] = first_nearer ? std::pair{nd.child + 1, b2} : std::pair{nd.child, b1};
+          k = first_nearer ? nd.child : nd.child + 1;
+          bound = first_nearer ? b1 : b2;
+          continue;
+        }
+        for (std::uint32_t m = nd.begin; m < nd.end; ++m) {
+          const double dx = x_[m] - q.x, dy = y_[m] - q.y, dz = z_[m] - q.z;
+          const double d2 = dx * dx + dy * dy + dz * dz;
+          if (d2 < bound2) bound2 = std::min(bound2, fn(id_[m], d2));
+        }
+      }
+      if (top == 0) return;
+      --top;
+      k = stack[top].first;
+      bound = stack[top].second;
+    }
+  }
+
   /// The "index" that no point's index is below: a tie with it never wins.
   static constexpr std::uint32_t kNoTie = 0;
 
@@ -227,11 +242,11 @@ class NearTree {
       int axis = 0;
       for (int a = 1; a < 3; ++a)
         if (nd.hi[a] - nd.lo[a] > nd.hi[axis] - nd.lo[axis]) axis = a;
-      const auto coord = [&](std::uint32_t i) { return axis == 0 ? pts[i].x : axis == 1 ? pts[i].y : pts[i].z; };
+      // Point i's coordinate on the axis: the axis-th double of pts[i] (Vec3 is three doubles).
+      const double* coord = &pts[0].x + axis;
       const std::uint32_t mid = begin + (end - begin) / 2;
-      std::nth_element(ids.begin() + begin, ids.begin() + mid, ids.begin() + end, [&](std::uint32_t i, std::uint32_t j) {
-        return coord(i) < coord(j) || (coord(i) == coord(j) && i < j);
-      });
+      std::nth_element(ids.begin() + begin, ids.begin() + mid, ids.begin() + end,
+                       [coord](std::uint32_t i, std::uint32_t j) { return coord[3 * i] < coord[3 * j]; });
       nd.child = static_cast<std::uint32_t>(nodes_.size());
       nodes_.push_back({});
       nodes_.push_back({});
@@ -251,18 +266,20 @@ class NearTree {
 }  // namespace
 
 struct KdTree::Impl {
-  Impl(flann::Matrix<double> data, const KnnOptions& o, const std::vector<Vec3>& pts)
-      : tree(data, flann::KDTreeSingleIndexParams(o.leaf_size, /*reorder=*/true)), near(pts) {}
-  Tree tree;      // FLANN's: the approximate searches (eps > 0) and visit_within
-  NearTree near;  // ours: the exact nearest searches
+  explicit Impl(const std::vector<Vec3>& pts) : near(pts) {}
+  NearTree near;               // ours: the exact searches and visit_within
+  std::unique_ptr<Tree> flann;  // FLANN's, built only for approximate searches (eps > 0)
 };
 
 KdTree::KdTree(std::vector<Vec3> points, KnnOptions opts) : points_(std::move(points)), opts_(opts) {
   static_assert(sizeof(Vec3) == 3 * sizeof(double));
   if (points_.empty()) return;
-  flann::Matrix<double> data(reinterpret_cast<double*>(points_.data()), points_.size(), 3);
-  impl_ = std::make_unique<Impl>(data, opts_, points_);
-  impl_->tree.buildIndex();
+  impl_ = std::make_unique<Impl>(points_);
+  if (opts_.eps > 0) {
+    flann::Matrix<double> data(reinterpret_cast<double*>(points_.data()), points_.size(), 3);
+    impl_->flann = std::make_unique<Tree>(data, flann::KDTreeSingleIndexParams(opts_.leaf_size, /*reorder=*/true));
+    impl_->flann->buildIndex();
+  }
 }
 
 KdTree::~KdTree() = default;
@@ -307,7 +324,7 @@ void KdTree::nearest_capped(std::span<const Vec3> queries, std::span<const doubl
     double best2 = far2;
     std::uint32_t best = NearTree::kNoTie;
     bool found = false;
-    if (opts_.eps == 0) {
+    if (!impl_->flann) {
       // The previous query's answer is the candidate to beat when it lies within the cap:
       // in Morton order it is usually near, and most cells are skipped from the start.
       if (prev != kNoIndex) {
@@ -319,7 +336,7 @@ void KdTree::nearest_capped(std::span<const Vec3> queries, std::span<const doubl
     } else {
       // A (1 + eps)-approximate search: FLANN's.
       NearestResult r(far2);
-      impl_->tree.findNeighbors(r, &q.x, params);
+      impl_->flann->findNeighbors(r, &q.x, params);
       found = r.index() != NearestResult::kNone;
       if (found) best2 = r.best(), best = static_cast<std::uint32_t>(r.index());
     }
@@ -373,8 +390,7 @@ void KdTree::nearest_within(std::span<const Vec3> queries, std::span<const doubl
 void KdTree::visit_within(const Vec3& q, double bound2,
                           const std::function<double(std::uint32_t, double)>& visit) const {
   if (!impl_ || !(bound2 > 0)) return;
-  VisitResult r(bound2, visit);
-  impl_->tree.findNeighbors(r, &q.x, flann::SearchParams(flann::FLANN_CHECKS_UNLIMITED, 0));
+  impl_->near.visit(q, bound2, visit);
 }
 
 void nearest_brute_force(std::span<const Vec3> points, std::span<const Vec3> queries,

@@ -1,5 +1,5 @@
 // Nearest-neighbour queries on 3D point sets: an exact k-d tree of our own, FLANN's for
-// the approximate and visiting searches (the shore-proximity function f3 of paper
+// the approximate searches (the shore-proximity function f3 of paper
 // section 3.1 uses ANN).
 #pragma once
 
@@ -14,7 +14,7 @@
 namespace sm::field {
 
 struct KnnOptions {
-  int leaf_size = 32;  ///< points per leaf of FLANN's k-d tree (32: fastest measured)
+  int leaf_size = 32;  ///< points per leaf of FLANN's k-d tree, built when eps > 0
   /// 0: exact. Otherwise the distance found is at most (1 + eps) times the true one.
   float eps = 0;
   /// Answer the queries of a batch in Morton (space-filling curve) order,

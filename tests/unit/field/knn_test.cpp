@@ -1,5 +1,6 @@
 #include "field/knn.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <fstream>
@@ -226,5 +227,41 @@ TEST_CASE("knn: batches of seeded searches keep brute force's answers, ties incl
       }
       first += n;
     }
+  }
+}
+
+// visit_within hands over every point nearer than the bound, and the bound shrinks to what
+// the callback returns: with the squared distance returned, the least one seen is the
+// nearest point's (ChannelWidth's searches rely on both).
+TEST_CASE("knn: visit_within sees every point within the bound, and prunes by the callback's") {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<Vec3> pts(5000), q(300);
+  for (Vec3& p : pts) p = {u(rng), u(rng), 0.1 * u(rng)};
+  for (Vec3& p : q) p = {1.2 * u(rng), 1.2 * u(rng), 0.3 * u(rng)};
+  const KdTree tree(pts);
+  std::vector<double> bd(q.size());
+  nearest_brute_force(pts, q, bd);
+  const double r2 = 0.01;
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    std::vector<std::uint32_t> seen, want;
+    tree.visit_within(q[i], r2, [&](std::uint32_t j, double d2) {
+      CHECK(d2 == norm2(pts[j] - q[i]));
+      seen.push_back(j);
+      return r2;
+    });
+    for (std::uint32_t j = 0; j < pts.size(); ++j)
+      if (norm2(pts[j] - q[i]) < r2) want.push_back(j);
+    std::sort(seen.begin(), seen.end());
+    CHECK(seen == want);
+    double least = std::numeric_limits<double>::infinity();
+    std::size_t visits = 0;
+    tree.visit_within(q[i], 4.0, [&](std::uint32_t, double d2) {
+      ++visits;
+      least = std::min(least, d2);
+      return d2;
+    });
+    CHECK(std::sqrt(least) == bd[i]);
+    CHECK(visits < 200);  // pruned: not the 5000 points within the first bound
   }
 }
