@@ -6,7 +6,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <map>
 #include <utility>
 #include <vector>
 
@@ -64,7 +63,6 @@ class Optimizer {
     tri_mark_.assign(m.num_slots(), 0);
     vert_stamp_.assign(m.num_vertices(), 0);
     stuck_.assign(m.num_vertices(), 0);
-    changed_at_.assign(m.num_vertices(), 0);
   }
 
   OptimizeStats run() {
@@ -134,42 +132,6 @@ class Optimizer {
     return false;
   }
 
-  // Flips s (TriangleStore::flip) and notes that the stars of its four vertices changed.
-  Side flip(Side s) {
-    const Side n = m_.flip(s);
-    const TriId t1 = tri_of(n), t2 = tri_of(m_.twin[n.value]);
-    ++clock_;
-    for (std::uint32_t e = 0; e < 3; ++e) changed_at_[m_.vertex(t1, e).value] = changed_at_[m_.vertex(t2, e).value] = clock_;
-    return n;
-  }
-  // Moves v to p and notes the change.
-  void move(VertexId v, Vec2 p) {
-    m_.will_change_vertex(v);
-    m_.xy[v.value] = p;
-    if (space_) xyz_[v.value] = opt_.to_space(p), have_xyz_[v.value] = 1;
-    changed_at_[v.value] = ++clock_;
-  }
-
-  // Whether no vertex of the stars of vs (their positions, their stars) changed after
-  // clock `since`; conservative where a star is not a closed fan.
-  bool region_unchanged(const std::array<VertexId, 4>& vs, std::uint64_t since) const {
-    const auto unchanged = [&](VertexId v) { return changed_at_[v.value] <= since; };
-    for (VertexId v : vs) {
-      if (!unchanged(v) || !m_.out_side_ok(v)) return false;
-      const Side start = m_.out_side[v.value];
-      Side s = start;
-      for (std::size_t k = 0; k <= m_.corner.size(); ++k) {
-        if (!unchanged(m_.dest(s)) || !unchanged(m_.apex(s))) return false;
-        const Side t = m_.twin[prev(s).value];
-        if (!t.valid()) return false;  // on the hull: not worth the backward walk
-        s = t;
-        if (s == start) break;
-      }
-      if (s != start) return false;
-    }
-    return true;
-  }
-
   // Triangle t is to be measured again by refresh_bad.
   void mark(std::uint32_t t) {
     if (!tri_mark_[t]) tri_mark_[t] = 1, touched_.push_back(t);
@@ -206,7 +168,7 @@ class Optimizer {
     if (orient2d(m_.pos(c), m_.pos(a), m_.pos(d)) != Sign::Positive ||
         orient2d(m_.pos(d), m_.pos(b), m_.pos(c)) != Sign::Positive)
       return false;
-    const Side n = flip(s);
+    const Side n = m_.flip(s);
     bank_ -= lost;
     touch(tri_of(n).value);
     touch(tri_of(m_.twin[n.value]).value);
@@ -381,7 +343,9 @@ class Optimizer {
     if (bank_blocked_) stuck_[v.value] = 0;
     if (cur == start) return false;
     bank_ += good - good0;
-    move(v, cur);
+    m_.will_change_vertex(v);
+    m_.xy[v.value] = cur;
+    if (space_) xyz_[v.value] = opt_.to_space(cur), have_xyz_[v.value] = 1;
     for (std::uint32_t t : star_tris_) touch(t);
     return true;
   }
@@ -412,13 +376,6 @@ class Optimizer {
   // (two sweeps, no sacrifice); kept only when the worst rho round them rises and no
   // triangle drops below kGood, otherwise undone exactly (positions, then the flip back).
   // Escapes the local optima of single moves where a vertex has one neighbour too many.
-  //
-  // A failed change is a function of the quad (a, b, c, d) in that order, the stars of
-  // its vertices and the points of those stars only: the stars are gathered after the
-  // flip, which sets the four out_sides from the quad alone (TriangleStore::flip), and
-  // nothing in strict_ mode reads bank_. So where none of that changed since the same
-  // quad failed, it fails again: only its traces are made again (the flip and the flip
-  // back, which exchange the two slots, the marks, the refused count).
   bool try_compound(Side s, OptimizeStats& st) {
     const Side o = m_.twin[s.value];
     if (!o.valid() || m_.constrained(s)) return false;
@@ -426,27 +383,20 @@ class Optimizer {
     if (orient2d(m_.pos(vs[2]), m_.pos(vs[0]), m_.pos(vs[3])) != Sign::Positive ||
         orient2d(m_.pos(vs[3]), m_.pos(vs[1]), m_.pos(vs[2])) != Sign::Positive)
       return false;
-    const std::array<std::uint32_t, 4> key = {vs[0].value, vs[1].value, vs[2].value, vs[3].value};
-    if (const auto it = failed_.find(key); it != failed_.end() && region_unchanged(vs, it->second.at)) {
-      const Side back = flip(flip(s));
-      mark(tri_of(back).value);
-      mark(tri_of(m_.twin[back.value]).value);
-      st.refused += it->second.refused;
-      it->second.at = clock_;
-      return false;
-    }
-    const std::uint64_t refused0 = st.refused;
     const auto [q0, g0] = region_quality(vs, tri_of(s).value, tri_of(o).value, region_q0_);
     std::array<Vec2, 4> old_xy;
     for (std::size_t i = 0; i < 4; ++i) old_xy[i] = m_.pos(vs[i]);
-    const Side n = flip(s);
+    const Side n = m_.flip(s);
     strict_ = true;
     for (int sweep = 0; sweep < 2; ++sweep)
       for (VertexId v : vs) {
         if (!gather_star(v)) continue;
         double best = 0;
         int good = 0;
-        move(v, optimise_position(m_.pos(v), best, good, st));
+        const Vec2 p = optimise_position(m_.pos(v), best, good, st);
+        m_.will_change_vertex(v);
+        m_.xy[v.value] = p;
+        if (space_) xyz_[v.value] = opt_.to_space(p), have_xyz_[v.value] = 1;
       }
     strict_ = false;
     const auto [q1, g1] = region_quality(vs, tri_of(n).value, tri_of(m_.twin[n.value]).value, region_q1_);
@@ -456,12 +406,15 @@ class Optimizer {
       for (std::size_t i = 0; i < 4; ++i) st.moves += !(m_.pos(vs[i]) == old_xy[i]);
       return true;
     }
-    for (std::size_t i = 0; i < 4; ++i) move(vs[i], old_xy[i]);
+    for (std::size_t i = 0; i < 4; ++i) {
+      m_.will_change_vertex(vs[i]);
+      m_.xy[vs[i].value] = old_xy[i];
+      if (space_) xyz_[vs[i].value] = opt_.to_space(old_xy[i]), have_xyz_[vs[i].value] = 1;
+    }
     // The flip back restores the two triangles with their slots exchanged: measure both again.
-    const Side back = flip(n);
+    const Side back = m_.flip(n);
     mark(tri_of(back).value);
     mark(tri_of(m_.twin[back.value]).value);
-    failed_[key] = {clock_, st.refused - refused0};
     return false;
   }
 
@@ -501,15 +454,6 @@ class Optimizer {
   std::vector<std::uint8_t> tri_mark_;
   std::vector<std::uint32_t> vert_stamp_;
   std::vector<std::uint8_t> stuck_;  // per vertex: smoothing found nothing, star unchanged since
-  // Per vertex: the clock of its last move or change of star (flip(), move()).
-  std::vector<std::uint64_t> changed_at_;
-  std::uint64_t clock_ = 0;
-  // Compound changes that failed, by quad (a, b, c, d): when, and the refused steps they counted.
-  struct FailedCompound {
-    std::uint64_t at = 0;
-    std::uint64_t refused = 0;
-  };
-  std::map<std::array<std::uint32_t, 4>, FailedCompound> failed_;
   std::uint32_t stamp_ = 0;
   // Triangles above kGood gained minus lost so far: never negative, so the share of
   // rho > 0.9 never falls below the input's.
