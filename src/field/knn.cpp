@@ -1,18 +1,13 @@
-// FLANN-backed exact nearest-neighbour search. This is the only file of the
-// project that includes FLANN. Two ideas make batches fast while keeping the
-// answers exact:
-// - queries are answered in Morton order, and each starts from the bound
-//   given by the previous answer (distance from the query to the previous
-//   query's nearest sample), so FLANN prunes from the start instead of first
-//   descending to a far leaf;
-// - far from the samples (mid-ocean points and a coastline), a k-d tree over
-//   individual samples visits many cells. There the search runs on a second,
-//   coarse tree over "buckets" (Morton runs of up to 64 samples with a centre
-//   and a radius): a radius search over the centres finds every bucket that
-//   may hold a point within the bound, and their points are scanned.
+// Exact nearest-neighbour search and visits over a k-d tree of our own, and FLANN's k-d
+// tree for the approximate searches (the only FLANN user of the project). Batches
+// are answered in Morton (space-filling curve) order, each query starting with the
+// previous answer as the candidate to beat, so that most cells are skipped from the
+// start; the tie rule (of several points at the same distance, the smallest index) makes
+// every answer independent of that order.
 #include "field/knn.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -63,48 +58,6 @@ class NearestResult final : public flann::ResultSet<double> {
   double worst_;
   double bound_ = 0;
   std::size_t index_ = kNone;
-};
-
-/// Every point within sqrt(r2) of the query, up to `cap` of them; past the
-/// cap the search is cut short (worstDist() < 0 prunes everything left).
-class RadiusResult final : public flann::ResultSet<double> {
- public:
-  RadiusResult(double r2, std::size_t cap, std::vector<std::uint32_t>& out)
-      : r2_(r2), cap_(cap), out_(out) {}
-  bool full() const override { return true; }
-  void addPoint(double dist, std::size_t index) override {
-    if (overflow_ || !(dist < r2_)) return;
-    if (out_.size() == cap_) {
-      overflow_ = true;
-      return;
-    }
-    out_.push_back(static_cast<std::uint32_t>(index));
-  }
-  double worstDist() const override { return overflow_ ? -1.0 : r2_; }
-  bool overflow() const { return overflow_; }
-
- private:
-  double r2_;
-  std::size_t cap_;
-  std::vector<std::uint32_t>& out_;
-  bool overflow_ = false;
-};
-
-/// Hands every point to a callback that sets the pruning bound.
-class VisitResult final : public flann::ResultSet<double> {
- public:
-  VisitResult(double bound2, const std::function<double(std::uint32_t, double)>& visit)
-      : bound2_(bound2), visit_(visit) {}
-  bool full() const override { return true; }
-  void addPoint(double dist, std::size_t index) override {
-    if (!(dist < bound2_)) return;
-    bound2_ = std::min(bound2_, visit_(static_cast<std::uint32_t>(index), dist));
-  }
-  double worstDist() const override { return bound2_; }
-
- private:
-  double bound2_;
-  const std::function<double(std::uint32_t, double)>& visit_;
 };
 
 /// Spreads the low 21 bits of v to every third bit.
@@ -165,86 +118,168 @@ std::vector<std::uint32_t> morton_order(std::span<const Vec3> q) {
   return order;
 }
 
+// The exact nearest-point tree of our own: a k-d tree over the points, split at the
+// median of the widest side of each cell's box, leaves of at most kNearLeaf points
+// whose coordinates lie together (x, y, z arrays in leaf order). A cell is skipped only
+// when the squared distance from the query to its box is above the best so far: for a
+// point inside the box every per-axis gap, computed in doubles, is at most the point's
+// (rounding is monotone), so the box's figure is never above any of its points' squared
+// distance, and a point at exactly the best distance with a smaller index is still seen.
+//
+//   node k: box lo[3], hi[3]; a leaf holds x/y/z/id[begin .. end); an inner node's two
+//   children are nodes child and child + 1 (nearer one searched first)
+class NearTree {
+ public:
+  explicit NearTree(const std::vector<Vec3>& pts) {
+    const std::size_t n = pts.size();
+    std::vector<std::uint32_t> ids(n);
+    for (std::size_t i = 0; i < n; ++i) ids[i] = static_cast<std::uint32_t>(i);
+    nodes_.reserve(2 * (n / kNearLeaf + 1));
+    nodes_.push_back({});
+    build(pts, ids, 0, 0, static_cast<std::uint32_t>(n), 0);
+    x_.resize(n), y_.resize(n), z_.resize(n), id_ = ids;
+    for (std::size_t k = 0; k < n; ++k) x_[k] = pts[ids[k]].x, y_[k] = pts[ids[k]].y, z_[k] = pts[ids[k]].z;
+  }
+
+  /// Lowers (best2, best) to the nearest point's squared distance and index when it is
+  /// nearer, or as near with a smaller index; `best` = kNoTie lets only a strictly nearer
+  /// point in (a cap, not a candidate).
+  void search(const Vec3& q, double& best2, std::uint32_t& best) const {
+    std::array<std::pair<std::uint32_t, double>, kMaxDepth> stack;
+    std::size_t top = 0;
+    std::uint32_t k = 0;
+    double bound = box2(nodes_[0], q);
+    for (;;) {
+      if (bound <= best2) {  // false for a NaN query
+        const Node& nd = nodes_[k];
+        if (nd.child != 0) {
+          const double b1 = box2(nodes_[nd.child], q), b2 = box2(nodes_[nd.child + 1], q);
+          const bool first_nearer = b1 <= b2;
+          stack[top++] = first_nearer ? std::pair{nd.child + 1, b2} : std::pair{nd.child, b1};
+          k = first_nearer ? nd.child : nd.child + 1;
+          bound = first_nearer ? b1 : b2;
+          continue;
+        }
+        for (std::uint32_t m = nd.begin; m < nd.end; ++m) {
+          const double dx = x_[m] - q.x, dy = y_[m] - q.y, dz = z_[m] - q.z;
+          const double d2 = dx * dx + dy * dy + dz * dz;
+          if (d2 < best2 || (d2 == best2 && id_[m] < best)) best2 = d2, best = id_[m];
+        }
+      }
+      if (top == 0) return;
+      --top;
+      k = stack[top].first;
+      bound = stack[top].second;
+    }
+  }
+
+  /// Calls visit(index, squared distance) for each point nearer than sqrt(bound2), in the
+  /// tree's order; bound2 becomes min(bound2, what visit returns), and cells beyond it
+  /// are skipped.
+  void visit(const Vec3& q, double bound2, const std::function<double(std::uint32_t, double)>& fn) const {
+    std::array<std::pair<std::uint32_t, double>, kMaxDepth> stack;
+    std::size_t top = 0;
+    std::uint32_t k = 0;
+    double bound = box2(nodes_[0], q);
+    for (;;) {
+      if (bound <= bound2) {
+        const Node& nd = nodes_[k];
+        if (nd.child != 0) {
+          const double b1 = box2(nodes_[nd.child], q), b2 = box2(nodes_[nd.child + 1], q);
+          const bool first_nearer = b1 <= b2;
+          stack[top++] = first_nearer ? std::pair{nd.child + 1, b2} : std::pair{nd.child, b1};
+          k = first_nearer ? nd.child : nd.child + 1;
+          bound = first_nearer ? b1 : b2;
+          continue;
+        }
+        for (std::uint32_t m = nd.begin; m < nd.end; ++m) {
+          const double dx = x_[m] - q.x, dy = y_[m] - q.y, dz = z_[m] - q.z;
+          const double d2 = dx * dx + dy * dy + dz * dz;
+          if (d2 < bound2) bound2 = std::min(bound2, fn(id_[m], d2));
+        }
+      }
+      if (top == 0) return;
+      --top;
+      k = stack[top].first;
+      bound = stack[top].second;
+    }
+  }
+
+  /// The "index" that no point's index is below: a tie with it never wins.
+  static constexpr std::uint32_t kNoTie = 0;
+
+ private:
+  static constexpr std::uint32_t kNearLeaf = 8;
+  // Each level halves the points, so the depth stays below log2(2^32 / kNearLeaf) + 1.
+  static constexpr std::size_t kMaxDepth = 32;
+  struct Node {
+    double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+    std::uint32_t begin = 0, end = 0;
+    std::uint32_t child = 0;  // 0: a leaf
+  };
+
+  static double box2(const Node& nd, const Vec3& q) {
+    const double c[3] = {q.x, q.y, q.z};
+    double s = 0;
+    for (int a = 0; a < 3; ++a) {
+      const double g = c[a] < nd.lo[a] ? nd.lo[a] - c[a] : c[a] > nd.hi[a] ? c[a] - nd.hi[a] : 0.0;
+      s += g * g;
+    }
+    return s;
+  }
+
+  void build(const std::vector<Vec3>& pts, std::vector<std::uint32_t>& ids, std::uint32_t k, std::uint32_t begin,
+             std::uint32_t end, std::size_t depth) {
+    Node nd;
+    nd.begin = begin, nd.end = end;
+    for (int a = 0; a < 3; ++a) nd.lo[a] = std::numeric_limits<double>::infinity(), nd.hi[a] = -nd.lo[a];
+    for (std::uint32_t m = begin; m < end; ++m) {
+      const Vec3& p = pts[ids[m]];
+      const double c[3] = {p.x, p.y, p.z};
+      for (int a = 0; a < 3; ++a) nd.lo[a] = std::min(nd.lo[a], c[a]), nd.hi[a] = std::max(nd.hi[a], c[a]);
+    }
+    if (end - begin > kNearLeaf && depth + 1 < kMaxDepth) {
+      int axis = 0;
+      for (int a = 1; a < 3; ++a)
+        if (nd.hi[a] - nd.lo[a] > nd.hi[axis] - nd.lo[axis]) axis = a;
+      // Point i's coordinate on the axis: the axis-th double of pts[i] (Vec3 is three doubles).
+      const double* coord = &pts[0].x + axis;
+      const std::uint32_t mid = begin + (end - begin) / 2;
+      std::nth_element(ids.begin() + begin, ids.begin() + mid, ids.begin() + end,
+                       [coord](std::uint32_t i, std::uint32_t j) { return coord[3 * i] < coord[3 * j]; });
+      nd.child = static_cast<std::uint32_t>(nodes_.size());
+      nodes_.push_back({});
+      nodes_.push_back({});
+      nodes_[k] = nd;
+      build(pts, ids, nd.child, begin, mid, depth + 1);
+      build(pts, ids, nd.child + 1, mid, end, depth + 1);
+      return;
+    }
+    nodes_[k] = nd;
+  }
+
+  std::vector<Node> nodes_;
+  std::vector<double> x_, y_, z_;
+  std::vector<std::uint32_t> id_;
+};
+
 }  // namespace
 
 struct KdTree::Impl {
-  Impl(flann::Matrix<double> data, const KnnOptions& o)
-      : tree(data, flann::KDTreeSingleIndexParams(o.leaf_size, /*reorder=*/true)) {}
-  Tree tree;
-
-  // Buckets: the samples in Morton order, cut into runs of at most kBucket
-  // points (cut early where a run would get wider than the median width,
-  // so Morton jumps do not make wide buckets). Bucket b holds
-  // bx/by/bz/bid[start[b] .. start[b+1]) (coordinates and sample index),
-  // with centre centre[b] and radius radius[b] <= tau; the coarse tree
-  // indexes the centres. The far search looks at every bucket whose centre
-  // is within (bound + tau), so a small tau (the largest radius) matters:
-  // cutting at the median width rather than twice it took tau from 0.016
-  // to 0.0078 and uniform queries from 0.95 to 1.02 M/s. 64 points and a
-  // cut at 1x were the fastest of 32..128 and 0.7x..2x on world_i_A100.
-  static constexpr std::size_t kBucket = 64;
-  std::vector<double> bx, by, bz;
-  std::vector<std::uint32_t> bid, start;
-  std::vector<Vec3> centre;
-  std::vector<double> radius;
-  double tau = 0;
-  std::unique_ptr<Tree> coarse;
-
-  void build_buckets(const std::vector<Vec3>& pts);
+  explicit Impl(const std::vector<Vec3>& pts) : near(pts) {}
+  NearTree near;               // ours: the exact searches and visit_within
+  std::unique_ptr<Tree> flann;  // FLANN's, built only for approximate searches (eps > 0)
 };
 
 KdTree::KdTree(std::vector<Vec3> points, KnnOptions opts) : points_(std::move(points)), opts_(opts) {
   static_assert(sizeof(Vec3) == 3 * sizeof(double));
   if (points_.empty()) return;
-  flann::Matrix<double> data(reinterpret_cast<double*>(points_.data()), points_.size(), 3);
-  impl_ = std::make_unique<Impl>(data, opts_);
-  impl_->tree.buildIndex();
-  if (opts_.buckets && points_.size() >= 4096) impl_->build_buckets(points_);
-}
-
-void KdTree::Impl::build_buckets(const std::vector<Vec3>& pts) {
-  const std::vector<std::uint32_t> order = morton_order(pts);
-  // First pass: fixed runs, to learn the typical run width.
-  std::vector<double> widths;
-  for (std::size_t b = 0; b < order.size(); b += kBucket) {
-    const std::size_t e = std::min(order.size(), b + kBucket);
-    double w = 0;
-    for (std::size_t k = b + 1; k < e; ++k) w = std::max(w, norm(pts[order[k]] - pts[order[b]]));
-    widths.push_back(w);
+  impl_ = std::make_unique<Impl>(points_);
+  if (opts_.eps > 0) {
+    flann::Matrix<double> data(reinterpret_cast<double*>(points_.data()), points_.size(), 3);
+    impl_->flann = std::make_unique<Tree>(data, flann::KDTreeSingleIndexParams(opts_.leaf_size, /*reorder=*/true));
+    impl_->flann->buildIndex();
   }
-  std::nth_element(widths.begin(), widths.begin() + static_cast<long>(widths.size() / 2), widths.end());
-  tau = std::max(widths[widths.size() / 2], 1e-300);
-  // Second pass: runs cut where a point is farther than tau from the run's first.
-  start.push_back(0);
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    const std::size_t first = start.back();
-    if (k > first && (k - first == kBucket || norm(pts[order[k]] - pts[order[first]]) > tau))
-      start.push_back(static_cast<std::uint32_t>(k));
-  }
-  start.push_back(static_cast<std::uint32_t>(order.size()));
-  bx.resize(order.size());
-  by.resize(order.size());
-  bz.resize(order.size());
-  bid.resize(order.size());
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    const Vec3& p = pts[order[k]];
-    bx[k] = p.x, by[k] = p.y, bz[k] = p.z, bid[k] = order[k];
-  }
-  double rmax = 0;
-  for (std::size_t b = 0; b + 1 < start.size(); ++b) {
-    Vec3 c{};
-    for (std::size_t k = start[b]; k < start[b + 1]; ++k) c += pts[order[k]];
-    c = c / static_cast<double>(start[b + 1] - start[b]);
-    double r = 0;
-    for (std::size_t k = start[b]; k < start[b + 1]; ++k) r = std::max(r, norm(pts[order[k]] - c));
-    centre.push_back(c);
-    radius.push_back(r);
-    rmax = std::max(rmax, r);
-  }
-  tau = rmax;
-  flann::Matrix<double> cdata(reinterpret_cast<double*>(centre.data()), centre.size(), 3);
-  coarse = std::make_unique<Tree>(cdata, flann::KDTreeSingleIndexParams(8, /*reorder=*/true));
-  coarse->buildIndex();
 }
 
 KdTree::~KdTree() = default;
@@ -274,112 +309,46 @@ void KdTree::nearest_capped(std::span<const Vec3> queries, std::span<const doubl
   constexpr std::uint32_t kNoIndex = std::numeric_limits<std::uint32_t>::max();
   if (!impl_) {
     for (double& d : dist) d = kMaxLc;
-    for (std::uint32_t& i : index) i = std::numeric_limits<std::uint32_t>::max();
+    for (std::uint32_t& i : index) i = kNoIndex;
     return;
   }
   if (queries.empty()) return;
-  constexpr std::size_t kMaxBuckets = 4096;  // past this, the fine search
-  const flann::SearchParams params(flann::FLANN_CHECKS_UNLIMITED, opts_.eps);
   std::vector<std::uint32_t> order;
   if (opts_.sort_queries && queries.size() > 1) order = morton_order(queries);
-  std::size_t prev = NearestResult::kNone;
-  // The current query's cap (squared).
-  double far2 = std::numeric_limits<double>::infinity();
-
-  // One bounded search, seeded with the previous answer: (index, squared
-  // distance). If nothing beats the seed (possible only with eps > 0, which
-  // may prune the seed's own cell), the seed is the answer; it is within the
-  // (1+eps) guarantee because everything pruned was at least that far.
-  struct Found {
-    std::size_t index;
-    double d2;
-  };
-  // Without a cap (far2 infinite) every finite query finds its nearest point; with
-  // one, a query that finds none within sqrt(far2) keeps the previous seed for the next.
-  auto search = [&](const Vec3& q) -> Found {
-    double bound = std::numeric_limits<double>::infinity();
-    const std::size_t seed = prev;
-    // Slightly inflated so the previous answer itself still qualifies.
-    if (seed != NearestResult::kNone) bound = norm2(points_[seed] - q) * (1 + 1e-9) + 1e-300;
-    const bool seeded = !(far2 < bound);  // also when the bound is NaN (a non-finite query)
-    if (!seeded) bound = far2;
-    NearestResult r(bound);
-    impl_->tree.findNeighbors(r, &q.x, params);
-    Found f{r.index(), r.best()};
-    if (f.index == NearestResult::kNone && seeded && seed != NearestResult::kNone && std::isfinite(bound))
-      f = {seed, norm2(points_[seed] - q)};
-    if (f.index != NearestResult::kNone || std::isinf(far2)) prev = f.index;
-    return f;
-  };
-  auto store = [&](std::size_t i, const Found& f) {
-    if (f.index == NearestResult::kNone) {  // a non-finite query, or none within the cap
-      const Vec3& q = queries[i];
+  const flann::SearchParams params(flann::FLANN_CHECKS_UNLIMITED, opts_.eps);
+  std::uint32_t prev = kNoIndex;
+  for (std::size_t k = 0; k < queries.size(); ++k) {
+    const std::size_t i = order.empty() ? k : order[k];
+    const Vec3& q = queries[i];
+    const double far2 = far2_of.empty() ? std::numeric_limits<double>::infinity() : far2_of[far2_of.size() == 1 ? 0 : i];
+    double best2 = far2;
+    std::uint32_t best = NearTree::kNoTie;
+    bool found = false;
+    if (!impl_->flann) {
+      // The previous query's answer is the candidate to beat when it lies within the cap:
+      // in Morton order it is usually near, and most cells are skipped from the start.
+      if (prev != kNoIndex) {
+        const double seed2 = norm2(points_[prev] - q);
+        if (seed2 < far2) best2 = seed2, best = prev;
+      }
+      impl_->near.search(q, best2, best);
+      found = best2 < far2;
+    } else {
+      // A (1 + eps)-approximate search: FLANN's.
+      NearestResult r(far2);
+      impl_->flann->findNeighbors(r, &q.x, params);
+      found = r.index() != NearestResult::kNone;
+      if (found) best2 = r.best(), best = static_cast<std::uint32_t>(r.index());
+    }
+    if (!found) {  // a non-finite query, or none within the cap
       const bool beyond = std::isfinite(far2) && std::isfinite(q.x + q.y + q.z);
       dist[i] = beyond ? std::numeric_limits<double>::infinity() : std::numeric_limits<double>::quiet_NaN();
       if (!index.empty()) index[i] = kNoIndex;
-      return;
-    }
-    dist[i] = std::sqrt(f.d2);
-    if (!index.empty()) index[i] = static_cast<std::uint32_t>(f.index);
-  };
-
-  // Within about one bucket radius of the samples the seeded fine search is
-  // cheapest; farther out, the coarse tree over buckets.
-  const Impl& im = *impl_;
-  const bool two_level = im.coarse && opts_.eps == 0;
-  std::vector<std::uint32_t> near;
-  std::vector<std::pair<double, std::uint32_t>> gaps;
-  for (std::size_t k = 0; k < queries.size(); ++k) {
-    const std::size_t i = order.empty() ? k : order[k];
-    const Vec3 q = queries[i];
-    if (!far2_of.empty()) far2 = far2_of[far2_of.size() == 1 ? 0 : i];
-    if (!two_level || prev == NearestResult::kNone) {
-      store(i, search(q));
       continue;
     }
-    double best2 = norm2(points_[prev] - q);
-    std::size_t arg = prev;
-    if (far2 < best2) best2 = far2, arg = NearestResult::kNone;  // the seed lies beyond the cap
-    if (!(best2 >= im.tau * im.tau)) {  // also catches a NaN query
-      store(i, search(q));
-      continue;
-    }
-    // Every bucket that may hold a point closer than the seed.
-    const double u = std::sqrt(best2) + im.tau;
-    near.clear();
-    RadiusResult rs(u * u * (1 + 1e-9), kMaxBuckets, near);
-    im.coarse->findNeighbors(rs, &q.x, params);
-    if (rs.overflow()) {
-      store(i, search(q));
-      continue;
-    }
-    // The bucket that may come closest is scanned first: its answer is
-    // usually the nearest, and the bound it gives prunes most of the others.
-    gaps.clear();
-    std::size_t first = 0;
-    for (std::uint32_t b : near) {
-      const double gap = norm(im.centre[b] - q) - im.radius[b];
-      if (gap > 0 && gap * gap > best2) continue;
-      if (!gaps.empty() && gap < gaps[first].first) first = gaps.size();
-      gaps.push_back({gap, b});
-    }
-    if (!gaps.empty()) std::swap(gaps[0], gaps[first]);
-    for (const auto& [gap, b] : gaps) {
-      if (gap > 0 && gap * gap > best2) continue;
-      for (std::size_t m = im.start[b]; m < im.start[b + 1]; ++m) {
-        const double dx = im.bx[m] - q.x, dy = im.by[m] - q.y, dz = im.bz[m] - q.z;
-        const double d2 = dx * dx + dy * dy + dz * dz;
-        if (d2 < best2 || (d2 == best2 && im.bid[m] < arg)) best2 = d2, arg = im.bid[m];
-      }
-    }
-    if (arg == NearestResult::kNone) {  // nothing within the cap
-      dist[i] = std::numeric_limits<double>::infinity();
-      if (!index.empty()) index[i] = kNoIndex;
-      continue;
-    }
-    prev = arg;
+    prev = best;
     dist[i] = std::sqrt(best2);
-    if (!index.empty()) index[i] = static_cast<std::uint32_t>(arg);
+    if (!index.empty()) index[i] = best;
   }
 }
 
@@ -391,50 +360,37 @@ void KdTree::nearest_within(std::span<const Vec3> queries, std::span<const doubl
     std::fill(index.begin(), index.end(), kNoIndex);
     return;
   }
-  const flann::SearchParams params(flann::FLANN_CHECKS_UNLIMITED, 0);
   std::vector<std::uint32_t> order;
   if (opts_.sort_queries && queries.size() > 1) order = morton_order(queries);
-  std::size_t prev = NearestResult::kNone;
+  std::uint32_t prev = kNoIndex;
   for (std::size_t k = 0; k < queries.size(); ++k) {
     const std::size_t i = order.empty() ? k : order[k];
     const Vec3& q = queries[i];
     const double r = max_dist.size() == 1 ? max_dist[0] : max_dist[i];
     const double far2 = r > 0 ? r * r : 0;
-    // Seeded with the previous answer when that is nearer than max_dist (inflated so
-    // that it still qualifies itself).
-    double bound = far2;
-    const double seed2 = prev == NearestResult::kNone ? far2 : norm2(points_[prev] - q) * (1 + 1e-9) + 1e-300;
-    const bool seeded = seed2 < far2;
-    if (seeded) bound = seed2;
-    std::size_t found = NearestResult::kNone;
-    double d2 = 0;
-    if (bound > 0) {
-      NearestResult res(bound);
-      impl_->tree.findNeighbors(res, &q.x, params);
-      found = res.index();
-      d2 = res.best();
+    double best2 = far2;
+    std::uint32_t best = NearTree::kNoTie;
+    if (prev != kNoIndex) {
+      const double seed2 = norm2(points_[prev] - q);
+      if (seed2 < far2) best2 = seed2, best = prev;
     }
-    if (found == NearestResult::kNone && seeded) {
-      found = prev;
-      d2 = norm2(points_[prev] - q);
-    }
-    if (found == NearestResult::kNone || !(d2 < far2)) {
+    impl_->near.search(q, best2, best);
+    if (!(best2 < far2)) {
       dist[i] = std::isfinite(q.x + q.y + q.z) ? std::numeric_limits<double>::infinity()
                                               : std::numeric_limits<double>::quiet_NaN();
       index[i] = kNoIndex;
       continue;
     }
-    prev = found;
-    dist[i] = std::sqrt(d2);
-    index[i] = static_cast<std::uint32_t>(found);
+    prev = best;
+    dist[i] = std::sqrt(best2);
+    index[i] = best;
   }
 }
 
 void KdTree::visit_within(const Vec3& q, double bound2,
                           const std::function<double(std::uint32_t, double)>& visit) const {
   if (!impl_ || !(bound2 > 0)) return;
-  VisitResult r(bound2, visit);
-  impl_->tree.findNeighbors(r, &q.x, flann::SearchParams(flann::FLANN_CHECKS_UNLIMITED, 0));
+  impl_->near.visit(q, bound2, visit);
 }
 
 void nearest_brute_force(std::span<const Vec3> points, std::span<const Vec3> queries,

@@ -1,5 +1,6 @@
-// Nearest-neighbour queries on 3D point sets: an exact k-d tree built by
-// FLANN (the shore-proximity function f3 of paper section 3.1 uses ANN).
+// Nearest-neighbour queries on 3D point sets: an exact k-d tree of our own, FLANN's for
+// the approximate searches (the shore-proximity function f3 of paper
+// section 3.1 uses ANN).
 #pragma once
 
 #include <cstdint>
@@ -13,15 +14,12 @@
 namespace sm::field {
 
 struct KnnOptions {
-  int leaf_size = 32;  ///< points per leaf of the k-d tree (32: fastest measured)
+  int leaf_size = 32;  ///< points per leaf of FLANN's k-d tree, built when eps > 0
   /// 0: exact. Otherwise the distance found is at most (1 + eps) times the true one.
   float eps = 0;
   /// Answer the queries of a batch in Morton (space-filling curve) order,
   /// each search starting with the bound given by the previous answer.
   bool sort_queries = true;
-  /// Far from the samples, search a coarse tree over runs of samples
-  /// ("buckets", built for 4096 samples or more) instead of the fine tree.
-  bool buckets = true;
 };
 
 class KdTree {

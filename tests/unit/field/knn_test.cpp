@@ -1,5 +1,6 @@
 #include "field/knn.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <fstream>
@@ -14,7 +15,7 @@
 using namespace sm;
 using namespace sm::field;
 
-TEST_CASE("knn: FLANN k-d tree equals brute force on random points") {
+TEST_CASE("knn: the k-d tree equals brute force on random points") {
   std::mt19937 rng(42);
   std::uniform_real_distribution<double> u(-1, 1);
   std::vector<Vec3> pts(3000), q(500);
@@ -33,7 +34,7 @@ TEST_CASE("knn: FLANN k-d tree equals brute force on random points") {
     CHECK(norm(pts[idx[i]] - q[i]) == doctest::Approx(bd[i]).epsilon(1e-12));
   }
   CHECK(d[0] == 0);
-  // FLANN's plain per-query search and the Morton-ordered, bounded one agree.
+  // The queries in their own order and in Morton order (each beating the answer before) agree.
   KdTree plain(pts, {10, 0, false});
   std::vector<double> pd(q.size());
   plain.nearest(q, pd);
@@ -116,8 +117,7 @@ TEST_CASE("knn: nearest_within agrees with brute force inside the radius, +inf b
 }
 
 TEST_CASE("knn: nearest_below is exact up to the limit and above it beyond, on both search paths") {
-  // 6000 samples: the coarse tree over buckets is built (4096 or more), and queries far
-  // from the samples take it; near ones take the seeded fine search.
+  // 6000 samples; queries near the samples and far from them.
   std::mt19937 rng(23);
   std::uniform_real_distribution<double> u(-1, 1);
   std::vector<Vec3> pts(6000), q(4000);
@@ -176,7 +176,7 @@ TEST_CASE("knn: nearest_below is exact up to the limit and above it beyond, on b
 // lattice with repeated points and queries halfway between lattice points, many queries
 // have several nearest points at exactly the same distance: every answer must still be
 // brute force's (the smallest index among the nearest), whatever batch came before, on
-// both search paths (6,000 points: with buckets).
+// both query orders (Morton-sorted, where each answer is the next one's candidate, and as given).
 TEST_CASE("knn: batches of seeded searches keep brute force's answers, ties included") {
   std::mt19937 rng(7);
   std::uniform_int_distribution<int> cell(0, 19), half(0, 1), len(1, 8);
@@ -200,8 +200,8 @@ TEST_CASE("knn: batches of seeded searches keep brute force's answers, ties incl
   }
   CHECK(ties > q.size() / 2);  // the ties are there to be broken
 
-  for (const bool buckets : {true, false}) {
-    KdTree tree(pts, {32, 0, true, buckets});
+  for (const bool sorted : {true, false}) {
+    KdTree tree(pts, {32, 0, sorted});
     std::vector<double> d(8), wd(8);
     std::vector<std::uint32_t> idx(8), widx(8);
     const std::vector<double> far{25.0};  // nearest_within: covers every lattice query
@@ -227,5 +227,41 @@ TEST_CASE("knn: batches of seeded searches keep brute force's answers, ties incl
       }
       first += n;
     }
+  }
+}
+
+// visit_within hands over every point nearer than the bound, and the bound shrinks to what
+// the callback returns: with the squared distance returned, the least one seen is the
+// nearest point's (ChannelWidth's searches rely on both).
+TEST_CASE("knn: visit_within sees every point within the bound, and prunes by the callback's") {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<Vec3> pts(5000), q(300);
+  for (Vec3& p : pts) p = {u(rng), u(rng), 0.1 * u(rng)};
+  for (Vec3& p : q) p = {1.2 * u(rng), 1.2 * u(rng), 0.3 * u(rng)};
+  const KdTree tree(pts);
+  std::vector<double> bd(q.size());
+  nearest_brute_force(pts, q, bd);
+  const double r2 = 0.01;
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    std::vector<std::uint32_t> seen, want;
+    tree.visit_within(q[i], r2, [&](std::uint32_t j, double d2) {
+      CHECK(d2 == norm2(pts[j] - q[i]));
+      seen.push_back(j);
+      return r2;
+    });
+    for (std::uint32_t j = 0; j < pts.size(); ++j)
+      if (norm2(pts[j] - q[i]) < r2) want.push_back(j);
+    std::sort(seen.begin(), seen.end());
+    CHECK(seen == want);
+    double least = std::numeric_limits<double>::infinity();
+    std::size_t visits = 0;
+    tree.visit_within(q[i], 4.0, [&](std::uint32_t, double d2) {
+      ++visits;
+      least = std::min(least, d2);
+      return d2;
+    });
+    CHECK(std::sqrt(least) == bd[i]);
+    CHECK(visits < 200);  // pruned: not the 5000 points within the first bound
   }
 }
