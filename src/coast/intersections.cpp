@@ -207,6 +207,48 @@ std::vector<SegmentHit> find_intersections(std::span<const std::vector<Vec2>> lo
   return hits;
 }
 
+std::vector<SegmentHit> find_intersections_at(std::span<const std::vector<Vec2>> loops,
+                                              std::span<const std::vector<char>> active) {
+  std::vector<SegmentHit> hits;
+  const std::vector<Seg> on = make_segments(loops, {}, active, true);   // in (loop, index) order
+  if (on.empty()) return hits;
+  auto test = [&hits](const Seg& s, const Seg& t) {
+    HitKind kind;
+    Vec2 where;
+    if (!classify(s, t, kind, where)) return;
+    SegmentHit h{s.loop, s.index, t.loop, t.index, kind, where};
+    order_places(h);
+    hits.push_back(h);
+  };
+  // As find_near_pairs: a pair is taken only in the cell of the lower corner of the
+  // overlap of its two boxes, a cell both boxes cover, so once whatever the cell size.
+  const Grid g = make_grid(on);
+  const auto cells = bin(on, g);
+  for_each_candidate(on, g, nullptr, test);
+  Vec2 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()}, hi = -lo;
+  for (const Seg& s : on) lo = {std::min(lo.x, s.lo.x), std::min(lo.y, s.lo.y)}, hi = {std::max(hi.x, s.hi.x), std::max(hi.y, s.hi.y)};
+  for (const Seg& t : make_segments(loops, {}, active, false, lo, hi))
+    for (std::int64_t y = g.iy(t.lo.y); y <= g.iy(t.hi.y); ++y)
+      for (std::int64_t x = g.ix(t.lo.x); x <= g.ix(t.hi.x); ++x) {
+        const std::int64_t cell = y * g.nx + x;
+        auto it = std::lower_bound(cells.begin(), cells.end(), std::pair<std::int64_t, std::uint32_t>{cell, 0});
+        for (; it != cells.end() && it->first == cell; ++it) {
+          const Seg& s = on[it->second];
+          if (s.lo.x > t.hi.x || t.lo.x > s.hi.x || s.lo.y > t.hi.y || t.lo.y > s.hi.y) continue;
+          const Vec2 corner{std::max(s.lo.x, t.lo.x), std::max(s.lo.y, t.lo.y)};
+          if (g.iy(corner.y) * g.nx + g.ix(corner.x) != cell) continue;   // taken in another cell
+          // The earlier segment in (loop, index) order first, as find_intersections has
+          // them: the place a hit is reported at is measured on its first segment.
+          if (std::pair(s.loop, s.index) < std::pair(t.loop, t.index))
+            test(s, t);
+          else
+            test(t, s);
+        }
+      }
+  sort_place_pairs(hits);
+  return hits;
+}
+
 std::vector<NearMiss> find_near_misses(std::span<const std::vector<Vec2>> loops,
                                        std::span<const std::vector<double>> width) {
   std::vector<NearMiss> out;
