@@ -798,43 +798,49 @@ namespace {
 // la's points from the end of its segment round to its start, then lb's likewise. lb is
 // dead then and nothing reads its curve again: its points are freed (kept, the islands a
 // continent took in held their points twice, to the end of the import).
+//
+// la's curve is made so in place: its arrays turned to start at the end of its segment,
+// the dropped originals of the segment cut off the end, lb's run appended. A continent
+// takes in tens of islands across the straits' passes (Eurasia, 3 million source points
+// at full resolution), and a new curve per merge copied it each time into fresh pages. The
+// arrays grow by an eighth beyond what a merge needs when they must grow (not by doubling:
+// the full GSHHG's peak memory at 30 km), and handle_straits fits them to their size at
+// its end.
 void merge_across(std::vector<WorkCurve>& curves, WorkLoop& la, std::uint32_t ka, WorkLoop& lb, std::uint32_t kb) {
   WorkCurve& A = curves[la.curves[0]];
   WorkCurve& B = curves[lb.curves[0]];
-  WorkCurve M;
-  M.periodic = true;
-  M.record = A.record;
-  M.id = A.id;
   // From keep[k+1] round to keep[k] (inclusive): every retained point of the curve lies on
-  // that run, in the order of the keep list from k+1 on. The merged curve is sized
-  // exactly first: Eurasia (1.2 million points) merged across a hundred straits would
-  // otherwise grow by doubling each time (the full GSHHG's peak memory at 30 km).
+  // that run, in the order of the keep list from k+1 on.
   auto run_length = [](const WorkCurve& c, std::uint32_t k) {
     const std::size_t n = c.full.size();
     return (c.keep[k] + n - c.keep[(k + 1) % c.keep.size()]) % n + 1;
   };
-  const std::size_t total = run_length(A, ka) + run_length(B, kb);
-  M.full.reserve(total);
-  M.uv.reserve(total);
-  M.gamma.reserve(total);
-  M.keep.reserve(A.keep.size() + B.keep.size());
-  auto append = [&M, &run_length](const WorkCurve& c, std::uint32_t k) {
-    const std::size_t n = c.full.size(), nk = c.keep.size();
-    const std::size_t from = c.keep[(k + 1) % nk];
-    const std::size_t len = run_length(c, k);
-    const std::size_t base = M.full.size();
-    for (std::size_t s = 0; s < len; ++s) {
-      const std::size_t i = (from + s) % n;
-      M.full.push_back(c.full[i]);
-      M.uv.push_back(c.uv[i]);
-      M.gamma.push_back(c.gamma[i]);
-    }
-    for (std::size_t j = 0; j < nk; ++j)
-      M.keep.push_back(static_cast<std::uint32_t>(base + (c.keep[(k + 1 + j) % nk] + n - from) % n));
+  const std::size_t na = A.full.size(), nka = A.keep.size();
+  const std::size_t from_a = A.keep[(ka + 1) % nka];
+  const std::size_t len_a = run_length(A, ka), len_b = run_length(B, kb);
+  const std::size_t total = len_a + len_b;
+  auto turn = [&](auto& v) {
+    std::rotate(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(from_a), v.end());
+    v.resize(len_a);
+    if (v.capacity() < total) v.reserve(total + total / 8);
   };
-  append(A, ka);
-  append(B, kb);
-  A = std::move(M);
+  turn(A.full);
+  turn(A.uv);
+  turn(A.gamma);
+  std::rotate(A.keep.begin(), A.keep.begin() + static_cast<std::ptrdiff_t>((ka + 1) % nka), A.keep.end());
+  for (std::uint32_t& k : A.keep) k = static_cast<std::uint32_t>((k + na - from_a) % na);
+  const std::size_t nb = B.full.size(), nkb = B.keep.size();
+  const std::size_t from_b = B.keep[(kb + 1) % nkb];
+  if (A.keep.capacity() < nka + nkb) A.keep.reserve(nka + nkb + (nka + nkb) / 8);
+  for (std::size_t s = 0; s < len_b; ++s) {
+    const std::size_t i = (from_b + s) % nb;
+    A.full.push_back(B.full[i]);
+    A.uv.push_back(B.uv[i]);
+    A.gamma.push_back(B.gamma[i]);
+  }
+  for (std::size_t j = 0; j < nkb; ++j)
+    A.keep.push_back(static_cast<std::uint32_t>(len_a + (B.keep[(kb + 1 + j) % nkb] + nb - from_b) % nb));
+  A.periodic = true;
   free_points(B);
   lb.dead = true;
 }
@@ -975,9 +981,21 @@ void handle_straits(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops
     }
     if (!merged || pass + 1 == kMaxPasses) {   // straits left open: reported once, from the final pass
       log.insert(log.end(), pending.begin(), pending.end());
-      return;
+      break;
     }
   }
+  // The merged curves' arrays, grown with room to spare (merge_across), fitted to their
+  // size before the passages' pool is made beside them.
+  for (const WorkLoop& l : loops)
+    if (!l.dead && l.curves.size() == 1) {
+      WorkCurve& c = curves[l.curves[0]];
+      if (c.full.capacity() > c.full.size()) {
+        c.full.shrink_to_fit();
+        c.uv.shrink_to_fit();
+        c.gamma.shrink_to_fit();
+        c.keep.shrink_to_fit();
+      }
+    }
 }
 
 }  // namespace sm::coast
