@@ -35,14 +35,13 @@ struct Grid {
   }
 };
 
-// pad: per-loop, per-segment half widths added to the boxes (empty: none).
-// With `active`: only the segments whose flag is `want`, and of those only the ones whose
-// box meets [lo, hi].
-std::vector<Seg> make_segments(std::span<const std::vector<Vec2>> loops, std::span<const std::vector<double>> pad,
-                               std::span<const std::vector<char>> active = {}, bool want = true,
-                               Vec2 lo = {-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()},
-                               Vec2 hi = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()}) {
-  std::vector<Seg> segs;
+// Calls f(seg) for each segment; pad: per-loop, per-segment half widths added to the boxes
+// (empty: none). With `active`: only the segments whose flag is `want`, and of those only
+// the ones whose box meets [lo, hi]. A visit, not a list: the inactive segments a search
+// looks through are most of the coast (1.5 million at 3 km), copied each time.
+template <class F>
+void for_each_segment(std::span<const std::vector<Vec2>> loops, std::span<const std::vector<double>> pad,
+                      std::span<const std::vector<char>> active, bool want, Vec2 lo, Vec2 hi, F&& f) {
   for (std::uint32_t l = 0; l < loops.size(); ++l) {
     const auto& p = loops[l];
     const auto n = static_cast<std::uint32_t>(p.size());
@@ -54,9 +53,18 @@ std::vector<Seg> make_segments(std::span<const std::vector<Vec2>> loops, std::sp
       s.lo = {std::min(s.a.x, s.b.x) - pd, std::min(s.a.y, s.b.y) - pd};
       s.hi = {std::max(s.a.x, s.b.x) + pd, std::max(s.a.y, s.b.y) + pd};
       if (s.lo.x > hi.x || s.hi.x < lo.x || s.lo.y > hi.y || s.hi.y < lo.y) continue;
-      segs.push_back(s);
+      f(s);
     }
   }
+}
+
+constexpr Vec2 kNoLow{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+constexpr Vec2 kNoHigh{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+
+std::vector<Seg> make_segments(std::span<const std::vector<Vec2>> loops, std::span<const std::vector<double>> pad,
+                               std::span<const std::vector<char>> active = {}, bool want = true) {
+  std::vector<Seg> segs;
+  for_each_segment(loops, pad, active, want, kNoLow, kNoHigh, [&](const Seg& s) { segs.push_back(s); });
   return segs;
 }
 
@@ -175,6 +183,45 @@ void for_each_candidate(const std::vector<Seg>& segs, const Grid& g, Intersectio
   }
 }
 
+// Calls test(s, t) once for each pair of segments whose (padded) boxes overlap and of which
+// one at least is active, s before t in (loop, index) order: the grid holds only the active
+// segments; the pairs of two active ones are found as for_each_candidate finds them, and
+// each inactive segment looks in the cells its box covers. A pair is taken only in the
+// cell of the lower corner of the two boxes' overlap, which lies in both boxes and so in a
+// cell each of them covers: once, whatever the cell size. An inactive segment whose box
+// misses the active ones' bounding box meets none of them. The cells are an array of
+// offsets (the active grid has at most about 16 cells per active segment, make_grid), so
+// an inactive segment finds its cells' entries without a search.
+template <class Test>
+void for_each_active_pair(std::span<const std::vector<Vec2>> loops, std::span<const std::vector<double>> pad,
+                          std::span<const std::vector<char>> active, const std::vector<Seg>& on, Test test) {
+  const Grid g = make_grid(on);
+  for_each_candidate(on, g, nullptr, test);
+  const auto cells = bin(on, g);
+  std::vector<std::uint32_t> start(static_cast<std::size_t>(g.nx * g.ny) + 1, 0);
+  for (const auto& c : cells) ++start[static_cast<std::size_t>(c.first) + 1];
+  for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
+  Vec2 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()}, hi = -lo;
+  for (const Seg& s : on) lo = {std::min(lo.x, s.lo.x), std::min(lo.y, s.lo.y)}, hi = {std::max(hi.x, s.hi.x), std::max(hi.y, s.hi.y)};
+  for_each_segment(loops, pad, active, false, lo, hi, [&](const Seg& t) {
+    for (std::int64_t y = g.iy(t.lo.y); y <= g.iy(t.hi.y); ++y)
+      for (std::int64_t x = g.ix(t.lo.x); x <= g.ix(t.hi.x); ++x) {
+        const std::int64_t cell = y * g.nx + x;
+        const auto c = static_cast<std::size_t>(cell);
+        for (std::uint32_t e = start[c]; e < start[c + 1]; ++e) {   // entries in cell order, as bin sorted them
+          const Seg& s = on[cells[e].second];
+          if (s.lo.x > t.hi.x || t.lo.x > s.hi.x || s.lo.y > t.hi.y || t.lo.y > s.hi.y) continue;
+          const Vec2 corner{std::max(s.lo.x, t.lo.x), std::max(s.lo.y, t.lo.y)};
+          if (g.iy(corner.y) * g.nx + g.ix(corner.x) != cell) continue;   // taken in another cell
+          if (std::pair(s.loop, s.index) < std::pair(t.loop, t.index))
+            test(s, t);
+          else
+            test(t, s);
+        }
+      }
+  });
+}
+
 }  // namespace
 
 std::vector<SegmentHit> find_intersections(std::span<const std::vector<Vec2>> loops, IntersectionStats* stats,
@@ -203,6 +250,26 @@ std::vector<SegmentHit> find_intersections(std::span<const std::vector<Vec2>> lo
     order_places(h);
     hits.push_back(h);
   });
+  sort_place_pairs(hits);
+  return hits;
+}
+
+std::vector<SegmentHit> find_intersections_at(std::span<const std::vector<Vec2>> loops,
+                                              std::span<const std::vector<char>> active) {
+  std::vector<SegmentHit> hits;
+  const std::vector<Seg> on = make_segments(loops, {}, active, true);   // in (loop, index) order
+  if (on.empty()) return hits;
+  auto test = [&hits](const Seg& s, const Seg& t) {
+    HitKind kind;
+    Vec2 where;
+    if (!classify(s, t, kind, where)) return;
+    SegmentHit h{s.loop, s.index, t.loop, t.index, kind, where};
+    order_places(h);
+    hits.push_back(h);
+  };
+  // The earlier segment in (loop, index) order first, as find_intersections has them: the
+  // place a hit is reported at is measured on its first segment.
+  for_each_active_pair(loops, {}, active, on, test);
   sort_place_pairs(hits);
   return hits;
 }
@@ -244,32 +311,7 @@ std::vector<NearMiss> find_near_pairs(std::span<const std::vector<Vec2>> loops,
     if (d >= w || d == 0) return;
     out.push_back({s.loop, s.index, t.loop, t.index, d, 0.5 * (s.a + t.a)});
   };
-  // The grid holds only the active segments: the pairs of two active ones are found as by
-  // find_near_misses, and each inactive one looks in the cells its box covers. A pair is
-  // taken only in the cell of the lower corner of the two boxes' overlap, which lies in
-  // both boxes and so in a cell each of them covers: once, whatever the cell size. An
-  // inactive segment whose box misses the active ones' bounding box meets none of them.
-  const Grid g = make_grid(on);
-  const auto cells = bin(on, g);
-  for_each_candidate(on, g, nullptr, [&](const Seg& s, const Seg& t) { test(s, t); });
-  Vec2 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()}, hi = -lo;
-  for (const Seg& s : on) lo = {std::min(lo.x, s.lo.x), std::min(lo.y, s.lo.y)}, hi = {std::max(hi.x, s.hi.x), std::max(hi.y, s.hi.y)};
-  for (const Seg& t : make_segments(loops, width, active, false, lo, hi))
-    for (std::int64_t y = g.iy(t.lo.y); y <= g.iy(t.hi.y); ++y)
-      for (std::int64_t x = g.ix(t.lo.x); x <= g.ix(t.hi.x); ++x) {
-        const std::int64_t cell = y * g.nx + x;
-        auto it = std::lower_bound(cells.begin(), cells.end(), std::pair<std::int64_t, std::uint32_t>{cell, 0});
-        for (; it != cells.end() && it->first == cell; ++it) {
-          const Seg& s = on[it->second];
-          if (s.lo.x > t.hi.x || t.lo.x > s.hi.x || s.lo.y > t.hi.y || t.lo.y > s.hi.y) continue;
-          const Vec2 corner{std::max(s.lo.x, t.lo.x), std::max(s.lo.y, t.lo.y)};
-          if (g.iy(corner.y) * g.nx + g.ix(corner.x) != cell) continue;   // taken in another cell
-          if (std::pair(s.loop, s.index) < std::pair(t.loop, t.index))
-            test(s, t);
-          else
-            test(t, s);
-        }
-      }
+  for_each_active_pair(loops, width, active, on, test);
   sort_place_pairs(out);
   return out;
 }

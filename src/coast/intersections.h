@@ -35,6 +35,15 @@ struct IntersectionStats {
 std::vector<SegmentHit> find_intersections(std::span<const std::vector<Vec2>> loops,
                                            IntersectionStats* stats = nullptr, std::span<const char> active = {});
 
+/// find_intersections on the pairs of which at least one segment is active (active[l][s],
+/// one flag per segment): the repair's rounds change a few segments of a loop (a point put
+/// back, a hit left for the next round), and a pair of two unchanged segments keeps its
+/// verdict. Only the active segments are entered in a grid; each inactive one whose box
+/// meets theirs looks in the cells it covers. The same records, sorted the same way, as
+/// find_intersections restricted to those pairs.
+std::vector<SegmentHit> find_intersections_at(std::span<const std::vector<Vec2>> loops,
+                                              std::span<const std::vector<char>> active);
+
 /// Segments of different loops (or far apart in one loop) closer than `width(loop, seg)`
 /// without touching: narrow straits. Found with the same grid, cells enlarged by the width.
 struct NearMiss {

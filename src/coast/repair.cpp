@@ -368,13 +368,65 @@ bool unite_island_with_coast(std::vector<WorkCurve>& curves, WorkLoop& island, c
 // anything a mesh of size gamma resolves, far above rounding.
 constexpr double kSplineTolerance = 1e-3;
 
+// What a repair round changed, for the next round's intersection test: pairs of two
+// segments unchanged since they were last tested keep their verdict (no hit, or they would
+// be marked), so only pairs with a marked segment are tested again. A loop cut or united
+// is marked whole; a point put back marks the segments that end at it; a hit marks its two
+// segments (left alone, it is found again). Points are named by curve and full index,
+// which a round's changes other than the whole-loop ones keep.
+struct RoundChanges {
+  std::vector<char> whole;                        // per loop: every segment
+  std::vector<std::vector<std::uint32_t>> at;     // per curve: full indices of marked points
+
+  RoundChanges(std::size_t loops, std::size_t curves) : whole(loops, 1), at(curves) {}
+  void touch(std::uint32_t curve, std::uint32_t full) { at[curve].push_back(full); }
+  // A curve renumbered (a sliver cut out, a segment split): the loops using it, whole.
+  void whole_curve(const std::vector<WorkLoop>& loops, std::uint32_t curve) {
+    for (std::size_t l = 0; l < loops.size(); ++l)
+      for (std::uint32_t c : loops[l].curves)
+        if (c == curve) whole[l] = 1;
+  }
+  void touch_segment(const std::vector<WorkCurve>& curves, const std::vector<LoopVertexRef>& refs, std::uint32_t s) {
+    for (const LoopVertexRef r : {refs[s], refs[(s + 1) % refs.size()]}) touch(r.curve, curves[r.curve].keep[r.k]);
+  }
+  // Per loop and segment of the polygons as they are now: marked or not. The marks are
+  // cleared for the next round.
+  void active(const std::vector<WorkCurve>& curves, const std::vector<WorkLoop>& loops,
+              const std::vector<std::vector<LoopVertexRef>>& refs, std::vector<std::vector<char>>& out) {
+    out.resize(loops.size());
+    for (auto& a : at) {
+      std::sort(a.begin(), a.end());
+      a.erase(std::unique(a.begin(), a.end()), a.end());
+    }
+    for (std::size_t l = 0; l < loops.size(); ++l) {
+      const std::size_t n = refs[l].size();
+      out[l].assign(n, whole[l]);
+      if (whole[l] || n == 0) continue;
+      bool any = false;
+      for (std::uint32_t ci : loops[l].curves) any = any || !at[ci].empty();
+      if (!any) continue;
+      for (std::size_t v = 0; v < n; ++v) {
+        const LoopVertexRef r = refs[l][v];
+        const std::vector<std::uint32_t>& a = at[r.curve];
+        if (a.empty() || !std::binary_search(a.begin(), a.end(), curves[r.curve].keep[r.k])) continue;
+        out[l][v] = 1;               // the segment leaving the point
+        out[l][(v + n - 1) % n] = 1;   // and the one reaching it
+      }
+    }
+    std::fill(whole.begin(), whole.end(), 0);
+    for (auto& a : at) a.clear();
+  }
+};
+
 // One pass of the spline check on intersection-free polygons. Puts original points back on
 // the control segments around spans whose curves cross (or come within the tolerance), or
 // splits those segments; returns true when nothing was changed (done), after logging the
-// places left. With !may_fix (no repair rounds left) every place found is logged.
+// places left. With !may_fix (no repair rounds left) every place found is logged. What it
+// changed is marked in `changes`.
 bool spline_pass(std::vector<WorkCurve>& curves, const std::vector<WorkLoop>& loops,
                  const std::vector<std::vector<Vec2>>& polys, const std::vector<std::vector<LoopVertexRef>>& refs,
-                 std::size_t round, double radius, bool may_fix, std::vector<RepairEntry>& log) {
+                 std::size_t round, double radius, bool may_fix, std::vector<RepairEntry>& log,
+                 RoundChanges& changes) {
   std::vector<std::vector<std::uint32_t>> starts(loops.size());
   std::vector<std::vector<double>> tol(loops.size());
   std::vector<SplineLoop> sl(loops.size());
@@ -441,7 +493,10 @@ bool spline_pass(std::vector<WorkCurve>& curves, const std::vector<WorkLoop>& lo
     const std::uint32_t ci = inserts[i].first;
     WorkCurve& c = curves[ci];
     std::size_t j = i;
-    while (j < inserts.size() && inserts[j].first == ci) c.keep.push_back(inserts[j++].second);
+    while (j < inserts.size() && inserts[j].first == ci) {
+      c.keep.push_back(inserts[j].second);
+      changes.touch(ci, inserts[j++].second);
+    }
     std::sort(c.keep.begin(), c.keep.end());
     c.keep.erase(std::unique(c.keep.begin(), c.keep.end()), c.keep.end());
     log.push_back({RepairKind::SplineHull, c.record, c.id, c.full[inserts[i].second], static_cast<double>(j - i)});
@@ -452,6 +507,7 @@ bool spline_pass(std::vector<WorkCurve>& curves, const std::vector<WorkLoop>& lo
   for (std::size_t i = splits.size(); i > 0;) {
     const std::uint32_t ci = splits[i - 1].first;
     WorkCurve& c = curves[ci];
+    changes.whole_curve(loops, ci);
     std::size_t j = i;
     while (j > 0 && splits[j - 1].first == ci) {   // from the last index down: earlier ones stay valid
       const std::uint32_t a = splits[--j].second;
@@ -476,18 +532,20 @@ double mean_gamma(const WorkCurve& c) {
   return c.gamma.empty() ? 0 : g / static_cast<double>(c.gamma.size());
 }
 
-// The loops being repaired, as polygons with their vertices' origins, and the loops changed
-// since they were last checked: pairs of unchanged loops keep their earlier (clean) verdict.
+// The loops being repaired, as polygons with their vertices' origins, and what changed since
+// they were last checked (RoundChanges): pairs of unchanged segments keep their earlier
+// (clean) verdict.
 struct LoopRepair {
   std::vector<WorkCurve>& curves;
   std::vector<WorkLoop>& loops;
   std::vector<RepairEntry>& log;
   std::vector<std::vector<Vec2>> polys;
   std::vector<std::vector<LoopVertexRef>> refs;
-  std::vector<char> dirty;
+  RoundChanges changes;
+  std::vector<std::vector<char>> active;   // per loop and segment: tested this round
 
   LoopRepair(std::vector<WorkCurve>& c, std::vector<WorkLoop>& l, std::vector<RepairEntry>& lg)
-      : curves(c), loops(l), log(lg), polys(l.size()), refs(l.size()), dirty(l.size(), 1) {}
+      : curves(c), loops(l), log(lg), polys(l.size()), refs(l.size()), changes(l.size(), c.size()) {}
 
   void rebuild_polygons() {
     for (std::size_t l = 0; l < loops.size(); ++l) {
@@ -500,11 +558,7 @@ struct LoopRepair {
     }
   }
 
-  void mark_loops_using(std::uint32_t ci) {
-    for (std::size_t l = 0; l < loops.size(); ++l)
-      for (std::uint32_t c : loops[l].curves)
-        if (c == ci) dirty[l] = 1;
-  }
+  void mark_loops_using(std::uint32_t ci) { changes.whole_curve(loops, ci); }
 };
 
 // 1. Puts original points back on every offending segment that has some. True when some
@@ -530,10 +584,12 @@ bool put_back_original_points(LoopRepair& r, const std::vector<SegmentHit>& hits
     const std::uint32_t ci = inserts[i].first;
     WorkCurve& c = r.curves[ci];
     std::size_t j = i;
-    while (j < inserts.size() && inserts[j].first == ci) c.keep.push_back(inserts[j++].second);
+    while (j < inserts.size() && inserts[j].first == ci) {
+      c.keep.push_back(inserts[j].second);
+      r.changes.touch(ci, inserts[j++].second);   // the two segments that end at it are new
+    }
     std::sort(c.keep.begin(), c.keep.end());
     c.keep.erase(std::unique(c.keep.begin(), c.keep.end()), c.keep.end());
-    r.mark_loops_using(ci);
     r.log.push_back({RepairKind::Refined, c.record, c.id, c.full[inserts[i].second], static_cast<double>(j - i)});
     i = j;
   }
@@ -586,7 +642,7 @@ bool unite_overlapping_islands(LoopRepair& r, const std::vector<const SegmentHit
         if (unite_island_with_coast(curves, loops[isl], r.polys[isl], r.refs[isl], r.polys[water], r.refs[water],
                                     pair, isl == a)) {
           used[a] = used[b] = 1;
-          r.dirty[a] = r.dirty[b] = 1;
+          r.changes.whole[a] = r.changes.whole[b] = 1;
           united = true;
           r.log.push_back({RepairKind::UnitedIslands, rec, id, uv_to_lonlat(pair.front()->where), 0});
         }
@@ -602,7 +658,7 @@ bool unite_overlapping_islands(LoopRepair& r, const std::vector<const SegmentHit
     const std::int64_t id_b = cb.id;
     if (unite_islands(curves, loops[a], loops[b], r.polys[a], r.refs[a], r.polys[b], r.refs[b], pair, true)) {
       used[a] = used[b] = 1;
-      r.dirty[a] = r.dirty[b] = 1;
+      r.changes.whole[a] = r.changes.whole[b] = 1;
       united = true;
       r.log.push_back({RepairKind::UnitedIslands, rec_b, id_b, uv_to_lonlat(pair.front()->where), 0});
     }
@@ -641,7 +697,7 @@ bool cut_slivers(LoopRepair& r, const std::vector<const SegmentHit*>& stuck) {
         r.log.push_back({RepairKind::CutSliver, c.record, c.id, where, 0});
         cut = true;
         cut_loop[h->loop_a] = 1;
-        r.dirty[h->loop_a] = 1;
+        r.changes.whole[h->loop_a] = 1;
         for (std::uint32_t ci : {r1.curve, r2.curve}) cut_curve[ci] = 1;
         for (std::uint32_t ci : left_loop) cut_curve[ci] = 1;
         left_loop.clear();
@@ -708,16 +764,18 @@ Result<std::size_t> repair_loops(std::vector<WorkCurve>& curves, std::vector<Wor
   std::size_t round = 0;
   for (;; ++round) {
     r.rebuild_polygons();
-    const std::vector<SegmentHit> hits = find_intersections(r.polys, nullptr, r.dirty);
-    // Next round re-checks the loops met here (a hit left alone this round stays) and
+    r.changes.active(curves, loops, r.refs, r.active);
+    const std::vector<SegmentHit> hits = find_intersections_at(r.polys, r.active);
+    // Next round re-checks the segments met here (a hit left alone this round stays) and
     // those changed below.
-    std::fill(r.dirty.begin(), r.dirty.end(), 0);
-    for (const SegmentHit& h : hits) r.dirty[h.loop_a] = r.dirty[h.loop_b] = 1;
+    for (const SegmentHit& h : hits) {
+      r.changes.touch_segment(curves, r.refs[h.loop_a], h.seg_a);
+      r.changes.touch_segment(curves, r.refs[h.loop_b], h.seg_b);
+    }
     if (hits.empty()) {
       if (!opt.check_splines || spline_pass(curves, loops, r.polys, r.refs, round, opt.radius,
-                                            static_cast<int>(round) < opt.max_rounds, log))
+                                            static_cast<int>(round) < opt.max_rounds, log, r.changes))
         break;
-      std::fill(r.dirty.begin(), r.dirty.end(), 1);
       continue;   // points were put back: check the polygons again
     }
     if (static_cast<int>(round) >= opt.max_rounds)
@@ -740,43 +798,49 @@ namespace {
 // la's points from the end of its segment round to its start, then lb's likewise. lb is
 // dead then and nothing reads its curve again: its points are freed (kept, the islands a
 // continent took in held their points twice, to the end of the import).
+//
+// la's curve is made so in place: its arrays turned to start at the end of its segment,
+// the dropped originals of the segment cut off the end, lb's run appended. A continent
+// takes in tens of islands across the straits' passes (Eurasia, 3 million source points
+// at full resolution), and a new curve per merge copied it each time into fresh pages. The
+// arrays grow by an eighth beyond what a merge needs when they must grow (not by doubling:
+// the full GSHHG's peak memory at 30 km), and handle_straits fits them to their size at
+// its end.
 void merge_across(std::vector<WorkCurve>& curves, WorkLoop& la, std::uint32_t ka, WorkLoop& lb, std::uint32_t kb) {
   WorkCurve& A = curves[la.curves[0]];
   WorkCurve& B = curves[lb.curves[0]];
-  WorkCurve M;
-  M.periodic = true;
-  M.record = A.record;
-  M.id = A.id;
   // From keep[k+1] round to keep[k] (inclusive): every retained point of the curve lies on
-  // that run, in the order of the keep list from k+1 on. The merged curve is sized
-  // exactly first: Eurasia (1.2 million points) merged across a hundred straits would
-  // otherwise grow by doubling each time (the full GSHHG's peak memory at 30 km).
+  // that run, in the order of the keep list from k+1 on.
   auto run_length = [](const WorkCurve& c, std::uint32_t k) {
     const std::size_t n = c.full.size();
     return (c.keep[k] + n - c.keep[(k + 1) % c.keep.size()]) % n + 1;
   };
-  const std::size_t total = run_length(A, ka) + run_length(B, kb);
-  M.full.reserve(total);
-  M.uv.reserve(total);
-  M.gamma.reserve(total);
-  M.keep.reserve(A.keep.size() + B.keep.size());
-  auto append = [&M, &run_length](const WorkCurve& c, std::uint32_t k) {
-    const std::size_t n = c.full.size(), nk = c.keep.size();
-    const std::size_t from = c.keep[(k + 1) % nk];
-    const std::size_t len = run_length(c, k);
-    const std::size_t base = M.full.size();
-    for (std::size_t s = 0; s < len; ++s) {
-      const std::size_t i = (from + s) % n;
-      M.full.push_back(c.full[i]);
-      M.uv.push_back(c.uv[i]);
-      M.gamma.push_back(c.gamma[i]);
-    }
-    for (std::size_t j = 0; j < nk; ++j)
-      M.keep.push_back(static_cast<std::uint32_t>(base + (c.keep[(k + 1 + j) % nk] + n - from) % n));
+  const std::size_t na = A.full.size(), nka = A.keep.size();
+  const std::size_t from_a = A.keep[(ka + 1) % nka];
+  const std::size_t len_a = run_length(A, ka), len_b = run_length(B, kb);
+  const std::size_t total = len_a + len_b;
+  auto turn = [&](auto& v) {
+    std::rotate(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(from_a), v.end());
+    v.resize(len_a);
+    if (v.capacity() < total) v.reserve(total + total / 8);
   };
-  append(A, ka);
-  append(B, kb);
-  A = std::move(M);
+  turn(A.full);
+  turn(A.uv);
+  turn(A.gamma);
+  std::rotate(A.keep.begin(), A.keep.begin() + static_cast<std::ptrdiff_t>((ka + 1) % nka), A.keep.end());
+  for (std::uint32_t& k : A.keep) k = static_cast<std::uint32_t>((k + na - from_a) % na);
+  const std::size_t nb = B.full.size(), nkb = B.keep.size();
+  const std::size_t from_b = B.keep[(kb + 1) % nkb];
+  if (A.keep.capacity() < nka + nkb) A.keep.reserve(nka + nkb + (nka + nkb) / 8);
+  for (std::size_t s = 0; s < len_b; ++s) {
+    const std::size_t i = (from_b + s) % nb;
+    A.full.push_back(B.full[i]);
+    A.uv.push_back(B.uv[i]);
+    A.gamma.push_back(B.gamma[i]);
+  }
+  for (std::size_t j = 0; j < nkb; ++j)
+    A.keep.push_back(static_cast<std::uint32_t>(len_a + (B.keep[(kb + 1 + j) % nkb] + nb - from_b) % nb));
+  A.periodic = true;
   free_points(B);
   lb.dead = true;
 }
@@ -917,9 +981,21 @@ void handle_straits(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops
     }
     if (!merged || pass + 1 == kMaxPasses) {   // straits left open: reported once, from the final pass
       log.insert(log.end(), pending.begin(), pending.end());
-      return;
+      break;
     }
   }
+  // The merged curves' arrays, grown with room to spare (merge_across), fitted to their
+  // size before the passages' pool is made beside them.
+  for (const WorkLoop& l : loops)
+    if (!l.dead && l.curves.size() == 1) {
+      WorkCurve& c = curves[l.curves[0]];
+      if (c.full.capacity() > c.full.size()) {
+        c.full.shrink_to_fit();
+        c.uv.shrink_to_fit();
+        c.gamma.shrink_to_fit();
+        c.keep.shrink_to_fit();
+      }
+    }
 }
 
 }  // namespace sm::coast

@@ -143,6 +143,51 @@ TEST_CASE("intersections: an active mask reports exactly the hits of the active 
   for (const auto& h : some) CHECK((active[h.loop_a] || active[h.loop_b]));
 }
 
+TEST_CASE("intersections: hits of the active segments are the full search's with one segment active") {
+  // Random star loops crossing each other, some with collinear junk (overlaps, touches):
+  // for random segment masks, find_intersections_at gives the records of the full search
+  // of which one segment is marked, record for record (kind and place too: the place is
+  // measured on the pair's first segment).
+  std::mt19937 rng(4242);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<std::vector<Vec2>> loops;
+  for (int l = 0; l < 14; ++l) {
+    const Vec2 c{u(rng), u(rng)};
+    const int n = 8 + 3 * l;
+    std::vector<Vec2> p;
+    for (int i = 0; i < n; ++i) {
+      const double a = 6.283185307179586 * i / n;
+      const double r = 0.15 * (0.5 + u(rng));
+      p.push_back({c.x + r * std::cos(a), c.y + r * std::sin(a)});
+    }
+    if (l % 3 == 0) p[2] = p[0] + 0.5 * (p[1] - p[0]);   // folds back onto its first segment
+    loops.push_back(p);
+  }
+  loops[5][4] = loops[6][3];   // a shared vertex: a touch
+  const std::vector<SegmentHit> all = find_intersections(loops);
+  REQUIRE(all.size() > 40);
+  for (int trial = 0; trial < 20; ++trial) {
+    std::vector<std::vector<char>> active;
+    const double frac = trial == 0 ? 0.0 : 0.05 * trial;
+    for (const auto& p : loops) {
+      std::vector<char> a(p.size());
+      for (char& x : a) x = u(rng) < frac;
+      active.push_back(a);
+    }
+    if (trial == 0) active[5][4] = 1;
+    const std::vector<SegmentHit> some = find_intersections_at(loops, active);
+    std::vector<SegmentHit> want;
+    for (const SegmentHit& h : all)
+      if (active[h.loop_a][h.seg_a] || active[h.loop_b][h.seg_b]) want.push_back(h);
+    REQUIRE(some.size() == want.size());
+    for (std::size_t i = 0; i < some.size(); ++i) {
+      CHECK(place_pair_key(some[i]) == place_pair_key(want[i]));
+      CHECK(some[i].kind == want[i].kind);
+      CHECK(some[i].where == want[i].where);
+    }
+  }
+}
+
 TEST_CASE("intersections: near pairs of the active segments are those of all pairs with one active") {
   // Wavy rings close together (many near pairs, some within one ring), segment widths
   // varying; the oracle: the full search (every segment active), which with the one-loop
