@@ -18,6 +18,7 @@
 #include <fmt/format.h>
 
 #include "base/check.h"
+#include "base/release_memory.h"
 #include "coast/coarsen.h"
 #include "coast/coastline_option_id.h"
 #include "coast/intersections.h"
@@ -1452,6 +1453,11 @@ Result<bool> close_passages(std::vector<WorkCurve>& curves, std::vector<WorkLoop
   w.nodes.reserve(points);
   w.next.reserve(points);
   for (const WorkLoop& l : loops) flatten(w, l);
+  // Flattening's per-curve scratch, freed among the pool's and the ropes' arrays, and each
+  // round's (its segment lists, grid and near pairs) would stay resident under the next
+  // round's, which come from elsewhere in the heap: the import's peak on the full-resolution
+  // world (docs/kernel.md, "Memory").
+  release_free_memory();
   if (auto g = find_gates(w, log); !g) return g.error();
   std::size_t vertices = 0;
   for (const FlatLoop& f : w.flat) vertices += f.dead ? 0 : f.size();
@@ -1468,8 +1474,10 @@ Result<bool> close_passages(std::vector<WorkCurve>& curves, std::vector<WorkLoop
   // Each round closes at most one passage per loop, and every cut either drops water or
   // joins/splits loops; the bound only guards against a geometry that would not settle.
   if (opt.min_width > 0)
-    for (std::size_t round = 0; round < 4 * vertices + 16; ++round)
+    for (std::size_t round = 0; round < 4 * vertices + 16; ++round) {
       if (!close_round(w, log)) break;
+      release_free_memory();
+    }
   bool changed = false;
   const std::size_t n_old = loops.size();
   // The rebuild reads only the rings: the polygons are freed first.
