@@ -11,6 +11,7 @@
 #include <set>
 #include <optional>
 #include <tuple>
+#include <unordered_map>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -18,6 +19,7 @@
 #include <fmt/format.h>
 
 #include "base/check.h"
+#include "base/release_memory.h"
 #include "coast/coarsen.h"
 #include "coast/coastline_option_id.h"
 #include "coast/intersections.h"
@@ -68,6 +70,7 @@ Vec2 closest_on_segment(Vec2 p, Vec2 a, Vec2 b) {
 // 39 MB of the pool on the full-resolution world).
 constexpr std::uint32_t kAdded = 0xFFFFFFFFu;
 constexpr std::uint32_t kMaxIndex = 0x7FFFFFFFu;   // index has 31 bits
+constexpr std::uint32_t kNoNode = 0xFFFFFFFFu;     // no node (Work::SegAt)
 struct Node {
   std::uint32_t curve;
   std::uint32_t src;
@@ -185,15 +188,20 @@ struct Work {
   // again each round made passage closing grow with rounds x coast (the coast bound's points
   // put back add rounds). Per loop (by its number in `flat`, which only grows): the polygon
   // and widths at the round's start, made again only for a loop that is `fresh`. Per node
-  // (sized when the first round starts, freed with the rounds): the end node of the kept
-  // segment it started at the last round's start (kNoNode: none), so a segment is the same
-  // as then when its start node has the same end (a node's point never moves), and its
-  // number in this round's list of segments. `near`: the last round's near pairs (before the
-  // one-loop test), by their segments' start nodes.
+  // that started a kept segment at a round's start (`seg_at`, freed with the rounds): the
+  // end node of that segment at the last round's start (none: kNoNode), so a segment is the
+  // same as then when its start node has the same end (a node's point never moves), and its
+  // number in this round's list of segments. Only kept nodes start segments (323,000 of 7 M
+  // at 3 km on the full GSHHG): two words for every node of the pool were 56 MB under the
+  // import's peak. `near`: the last round's near pairs (before the one-loop test), by their
+  // segments' start nodes.
+  struct SegAt {
+    std::uint32_t end = kNoNode;
+    std::uint32_t here = 0;
+  };
   std::vector<std::vector<Vec2>> polys = {};
   std::vector<std::vector<double>> width = {};
-  std::vector<std::uint32_t> seg_end = {};
-  std::vector<std::uint32_t> seg_here = {};
+  std::unordered_map<std::uint32_t, SegAt> seg_at = {};
   std::vector<std::pair<std::uint32_t, std::uint32_t>> near = {};
   bool gate_closed(Vec2 a0, Vec2 b0) const {
     for (const Gate& g : gates)
@@ -836,12 +844,6 @@ void rekeep(Work& w, FlatLoop& f, TreeNode from_t, std::uint32_t from, TreeNode 
 // pairs of two segments unchanged since the last round are that round's (the test reads
 // only their points and widths), and only the segments new since then are searched.
 std::vector<NearMiss> round_near_misses(Work& w) {
-  constexpr std::uint32_t kNoNode = 0xFFFFFFFFu;
-  if (w.seg_end.empty()) {
-    w.seg_end.assign(w.nodes.size(), kNoNode);
-    w.seg_here.assign(w.nodes.size(), 0);
-  }
-  SM_ASSERT(w.seg_end.size() == w.nodes.size(), "close_passages: points added between closing rounds (passages.cpp, round_near_misses)");
   std::vector<std::vector<char>> active(w.flat.size());
   std::vector<std::uint32_t> start;                          // this round's segments: start node,
   std::vector<std::pair<std::uint32_t, std::uint32_t>> at;   // loop and position,
@@ -858,10 +860,11 @@ std::vector<NearMiss> round_near_misses(Work& w) {
     w.ropes.for_each(f.rope, [&](TreeNode t) { ids.push_back(w.ropes.id(t)); });
     for (std::size_t j = 0; j < k; ++j) {
       const std::uint32_t n = ids[j], m = ids[j + 1 < k ? j + 1 : 0];
-      const bool unchanged = w.seg_end[n] == m;
+      Work::SegAt& at_n = w.seg_at[n];
+      const bool unchanged = at_n.end == m;
       active[l][j] = !unchanged;
-      w.seg_end[n] = m;
-      w.seg_here[n] = static_cast<std::uint32_t>(start.size());
+      at_n.end = m;
+      at_n.here = static_cast<std::uint32_t>(start.size());
       start.push_back(n);
       at.push_back({l, static_cast<std::uint32_t>(j)});
       same.push_back(unchanged);
@@ -870,10 +873,12 @@ std::vector<NearMiss> round_near_misses(Work& w) {
   std::size_t searched = 0;
   std::vector<NearMiss> near = find_near_pairs(w.polys, w.width, active, &searched);
   w.stats.near_searched += searched;
-  // A node is this round's start of segment s only when start[s] names it (seg_here is
+  // A node is this round's start of segment s only when start[s] names it (seg_at is
   // not cleared for nodes that left the live loops).
   auto where = [&](std::uint32_t n) -> std::optional<std::uint32_t> {
-    const std::uint32_t s = w.seg_here[n];
+    const auto it = w.seg_at.find(n);
+    if (it == w.seg_at.end()) return std::nullopt;
+    const std::uint32_t s = it->second.here;
     if (s < start.size() && start[s] == n && same[s]) return s;
     return std::nullopt;
   };
@@ -1452,6 +1457,11 @@ Result<bool> close_passages(std::vector<WorkCurve>& curves, std::vector<WorkLoop
   w.nodes.reserve(points);
   w.next.reserve(points);
   for (const WorkLoop& l : loops) flatten(w, l);
+  // Flattening's per-curve scratch, freed among the pool's and the ropes' arrays, and each
+  // round's (its segment lists, grid and near pairs) would stay resident under the next
+  // round's, which come from elsewhere in the heap: the import's peak on the full-resolution
+  // world (docs/kernel.md, "Memory").
+  release_free_memory();
   if (auto g = find_gates(w, log); !g) return g.error();
   std::size_t vertices = 0;
   for (const FlatLoop& f : w.flat) vertices += f.dead ? 0 : f.size();
@@ -1468,8 +1478,10 @@ Result<bool> close_passages(std::vector<WorkCurve>& curves, std::vector<WorkLoop
   // Each round closes at most one passage per loop, and every cut either drops water or
   // joins/splits loops; the bound only guards against a geometry that would not settle.
   if (opt.min_width > 0)
-    for (std::size_t round = 0; round < 4 * vertices + 16; ++round)
+    for (std::size_t round = 0; round < 4 * vertices + 16; ++round) {
       if (!close_round(w, log)) break;
+      release_free_memory();
+    }
   bool changed = false;
   const std::size_t n_old = loops.size();
   // The rebuild reads only the rings: the polygons are freed first.
@@ -1478,8 +1490,7 @@ Result<bool> close_passages(std::vector<WorkCurve>& curves, std::vector<WorkLoop
   w.ropes = KeptRopes();
   std::vector<std::vector<Vec2>>().swap(w.polys);
   std::vector<std::vector<double>>().swap(w.width);
-  std::vector<std::uint32_t>().swap(w.seg_end);
-  std::vector<std::uint32_t>().swap(w.seg_here);
+  std::unordered_map<std::uint32_t, Work::SegAt>().swap(w.seg_at);
   std::vector<std::pair<std::uint32_t, std::uint32_t>>().swap(w.near);
   // The loops to rebuild (changed in place, or made by cuts) and the curves of the loops
   // cut or rebuilt, whose points the rebuilt curves take over. Each such curve is freed as

@@ -17,6 +17,7 @@
 
 #include "base/elapsed.h"
 #include "base/parallel.h"
+#include "base/release_memory.h"
 #include "exact/predicates.h"
 #include "mesh/boundary_recovery.h"
 #include "mesh/compound_curve.h"
@@ -143,6 +144,9 @@ CurvePrimitive integrate_curve(const geo::Curve& c, const CurveSizeFn& size, dou
   }
   if (smooth_ratio > 1) smooth_sizes(t, xp, f, std::sqrt(smooth_ratio));
   out.t = std::move(t);
+  // Grown pass by pass, t has up to twice its size in capacity: every curve's primitive is
+  // held until the nodes are placed (the 1D peak at 3 km on the full GSHHG).
+  out.t.shrink_to_fit();
   out.a.resize(out.t.size());
   out.a[0] = 0;
   for (std::size_t i = 1; i < out.t.size(); ++i)
@@ -987,6 +991,11 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
   res.error = number_nodes(model, opt, plans, mesh);
   if (!res.ok()) return res;
   stage.end();
+  // The plans (each curve's size integral and nodes) are the mesh's now: freed, and their
+  // heap given back, before the repair's arrays are made beside them (at 3 km on the full
+  // GSHHG they made the peak of the repair, which was the run's; docs/kernel.md, "Memory").
+  std::vector<CurvePlan>().swap(plans);
+  release_free_memory();
   move_closed_curve_vertices(model, curves_at, mesh);
   res.stats.seconds_integrate = seconds_since(t0);
   if (opt.repair_intersections) {
