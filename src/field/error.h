@@ -13,6 +13,8 @@
 
 namespace sm::field {
 
+enum class OptionType;   // field/options.h
+
 enum class FieldErrc {
   UnknownKind,      // Field[n] = NoSuchKind;
   UnknownOption,    // Field[n].NoSuchOption = ...;
@@ -41,6 +43,10 @@ class FieldError : public std::runtime_error {
   std::string reason;         ///< FileError, ParseError: what is wrong, after the file or column
   int column = -1;            ///< ParseError: 1-based column in the expression
   std::optional<Vec3> point;  ///< BadValue from an evaluation: where the field was evaluated
+  /// WrongOptionType: the type the option takes and the type of the value given (`name` is
+  /// the field's kind, `option` the option).
+  OptionType expected{}, given{};
+  std::optional<double> value;  ///< BadValue of an option of field ids: the number that is no id
 
  private:
   FieldErrc code_;

@@ -88,6 +88,9 @@ void Options::set(std::string_view name, OptionValue value) {
                  fmt::format("option '{}' of field kind '{}' expects {}, got {}", name,
                              kind_->name, type_name(spec.type), type_name(type_of(value))));
     e.option = std::string(name);
+    e.name = kind_->name;
+    e.expected = spec.type;
+    e.given = type_of(value);
     throw e;
   }
   if (spec.role != OptionRole::Plain) {
@@ -101,6 +104,8 @@ void Options::set(std::string_view name, OptionValue value) {
                      fmt::format("option '{}' of field kind '{}' expects field ids, got {}", name,
                                  kind_->name, id));
         e.option = std::string(name);
+        e.name = kind_->name;
+        e.value = id;
         throw e;
       }
   }

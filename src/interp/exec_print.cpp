@@ -43,16 +43,17 @@ void Interpreter::exec_print(const Stmt& s, const PrintStmt& p) {
       fail_fmt(where, Diag::FileWriteError, path, reason);
     return;
   }
+  using namespace fmt::literals;   // "text"_a: the user-text slot of UserWarning and UserError
   switch (p.kind) {
     case PrintKind::Printf: out_ << text << '\n'; break;
     case PrintKind::Warning: {
-      auto h = diags_.report(s.range, Diag::UserWarning, text);
+      auto h = diags_.report(s.range, Diag::UserWarning, "text"_a = text);
       for (const auto& n : frame_notes()) h.note(n.range, n.message);
       break;
     }
     case PrintKind::Error: {
       // Like Gmsh, the script goes on; the run ends with errors (exit 1).
-      auto h = diags_.report(s.range, Diag::UserError, text);
+      auto h = diags_.report(s.range, Diag::UserError, "text"_a = text);
       for (const auto& n : frame_notes()) h.note(n.range, n.message);
       break;
     }

@@ -2,9 +2,9 @@
 # A diagnostic reported with the wrong arguments for its kind's format does not build
 # (src/lang/diag_format.h): one call with the right arguments compiles, and each of the
 # wrong ones (an argument too few, one too many, a string where the slot formats an
-# integer, a kind chosen at run time) is refused by the compiler, for its reason (fmt names
-# a bad slot through its error_handler). Run by CTest with the project's compiler:
-# check_diag_format_compile.sh CXX SRC_DIR.
+# integer, a kind chosen at run time, a plain string for a named slot) is refused by the
+# compiler, for its reason (fmt names a bad slot through its error_handler). Run by CTest
+# with the project's compiler: check_diag_format_compile.sh CXX SRC_DIR.
 cxx="$1"
 src="$2"
 [ -n "$cxx" ] && [ -f "$src/lang/diag_format.h" ] || { echo "usage: $0 CXX SRC_DIR"; exit 2; }
@@ -45,4 +45,11 @@ compile too_many diag_argument_count_differs_from_format \
 compile wrong_type "error_handler::on_error" \
   'diags.report(SourceRange{}, Diag::InvalidByte, std::string("x"))'
 compile runtime_kind "not a constant expression" 'diags.report(SourceRange{}, runtime_kind, 1)'
+# A named slot ("{text}", the script's own text of UserError) takes only its named argument:
+# a sentence passed as a plain string, or under another name, is refused.
+compile user_text ok 'using namespace fmt::literals; diags.report(SourceRange{}, Diag::UserError, "text"_a = std::string("x"))'
+compile user_text_plain "named argument is not found" \
+  'diags.report(SourceRange{}, Diag::UserError, std::string("x"))'
+compile user_text_other_name "named argument is not found" \
+  'using namespace fmt::literals; diags.report(SourceRange{}, Diag::UserError, "message"_a = std::string("x"))'
 exit $status

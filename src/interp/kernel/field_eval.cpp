@@ -36,6 +36,19 @@ std::string kind_of(Interpreter& in, int id) {
   return in.kernel().fields.contains(id) ? in.kernel().fields.options(id).kind().name : "?";
 }
 
+}  // namespace
+
+std::string_view option_type_phrase(field::OptionType t) {
+  switch (t) {
+    case field::OptionType::Number: return "a number";
+    case field::OptionType::String: return "a string";
+    case field::OptionType::List: return "a list in braces";
+  }
+  return "a value";
+}
+
+namespace {
+
 /// " (did you mean 'x'?)" after an unknown name, or "".
 std::string did_you_mean(const std::string& suggestion) {
   return suggestion.empty() ? std::string() : fmt::format(" (did you mean '{}'?)", suggestion);
@@ -79,7 +92,10 @@ FieldDiagnostic field_diagnostic(Interpreter& in, const field::FieldError& e) {
       return {Diag::FieldExpressionError, format_diag<std::string, int, std::string>(
                                               Diag::FieldExpressionError, e.expression, e.column, e.reason)};
     case field::FieldErrc::WrongOptionType:
-      return {Diag::WrongFieldOptionType, format_diag<std::string>(Diag::WrongFieldOptionType, e.what())};
+      return {Diag::FieldOptionWrongType,
+              format_diag<std::string, std::string, std::string_view, std::string_view>(
+                  Diag::FieldOptionWrongType, e.option, e.name, option_type_phrase(e.expected),
+                  option_type_phrase(e.given))};
     case field::FieldErrc::BadValue: break;
   }
   return {Diag::BadFieldValue, format_diag<std::string>(Diag::BadFieldValue, e.what())};

@@ -8,6 +8,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "base/vec.h"
@@ -34,6 +35,9 @@ field::BuildContext kernel_build_context(const KernelState& k, const CurveMeshNo
 /// at the `Field[n] = ...` and `Field[n].Option = ...` statements involved
 /// (every field of a cycle, the option naming a missing field, ...).
 [[noreturn]] void fail_field_error(Interpreter& in, const field::FieldError& e, lang::SourceRange at);
+
+/// A field option's type as the diagnostics name it: 'a number', 'a string', 'a list in braces'.
+std::string_view option_type_phrase(field::OptionType t);
 
 /// Field `root` and every field it references, built from the current
 /// definitions and model. Cached until a Field statement runs or the model

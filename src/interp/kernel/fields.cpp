@@ -70,9 +70,7 @@ bool option_value(Interpreter& in, const FieldOptionStmt& n, int id, const field
     // comma-separated (field/bathymetry.cpp).
     const bool grid_list = spec && spec->name == "FileName" && in.kernel().fields.options(id).kind().name == "Bathymetry";
     if (v.kind() == Value::Kind::StringList && v.strs().size() != 1 && !(grid_list && v.strs().size() > 1))
-      in.fail_fmt(value_at, Diag::WrongFieldOptionType,
-                  fmt::format("option '{}' of Field[{}] takes one string, not a list of {}",
-                              in.ast().str(n.option), id, v.strs().size()));
+      in.fail(value_at, Diag::FieldOptionOneString, in.ast().str(n.option), id, v.strs().size());
     std::string text;
     if (grid_list) {
       std::vector<std::string> names;
@@ -149,8 +147,13 @@ void exec_field_option(Interpreter& in, const Stmt& s, const FieldOptionStmt& n)
   try {
     k.fields.set(id, option, std::move(value));
   } catch (const field::FieldError& e) {
-    in.fail(in.ast().expr(n.value).range, Diag::WrongFieldOptionType,
-            fmt::format("Field[{}]: {}", id, e.what()));
+    const SourceRange at = in.ast().expr(n.value).range;
+    if (e.code() == field::FieldErrc::WrongOptionType)
+      in.fail(at, Diag::FieldOptionWrongTypeOf, id, e.option, e.name, option_type_phrase(e.expected),
+              option_type_phrase(e.given));
+    if (e.code() == field::FieldErrc::BadValue && e.value)
+      in.fail(at, Diag::FieldOptionNotIdsOf, id, e.option, e.name, *e.value);
+    fail_field_error(in, e, at);
   }
   k.field_option_at[{id, spec->name}] = s.range;
   invalidate_field_cache(in);

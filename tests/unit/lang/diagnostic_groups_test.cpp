@@ -32,7 +32,7 @@ struct ImportLike {
     // and one sort to the reader.
     for (const sm::lang::Diag kind : {sm::lang::Diag::CoastlinePassageClosed, sm::lang::Diag::CoastlinePassageClosedAt})
       diags.report_message(at, kind, "Coastline[1]: passage").item({"passage closed", "width 42 m", true, 1, 2});
-    diags.report(sm::lang::SourceRange{f, 0, 1}, sm::lang::Diag::UserWarning, "elsewhere");
+    diags.report(sm::lang::SourceRange{f, 0, 1}, sm::lang::Diag::UserWarning, fmt::arg("text", "elsewhere"));
   }
 };
 
