@@ -222,34 +222,25 @@ void for_each_active_pair(std::span<const std::vector<Vec2>> loops, std::span<co
   });
 }
 
+// The hit of segments s and t, if they meet, recorded with its places in their order.
+void record_hit(const Seg& s, const Seg& t, std::vector<SegmentHit>& hits) {
+  HitKind kind;
+  Vec2 where;
+  if (!classify(s, t, kind, where)) return;
+  SegmentHit h{s.loop, s.index, t.loop, t.index, kind, where};
+  order_places(h);
+  hits.push_back(h);
+}
+
 }  // namespace
 
-std::vector<SegmentHit> find_intersections(std::span<const std::vector<Vec2>> loops, IntersectionStats* stats,
-                                           std::span<const char> active) {
+std::vector<SegmentHit> find_intersections(std::span<const std::vector<Vec2>> loops, IntersectionStats* stats) {
   std::vector<SegmentHit> hits;
-  std::vector<Seg> segs = make_segments(loops, {});
-  if (!active.empty()) {
-    // Segments of inactive loops matter only where an active segment's box reaches them:
-    // keep those whose box meets the union box of the active segments.
-    Vec2 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()}, hi = -lo;
-    for (const Seg& s : segs)
-      if (active[s.loop]) lo = {std::min(lo.x, s.lo.x), std::min(lo.y, s.lo.y)}, hi = {std::max(hi.x, s.hi.x), std::max(hi.y, s.hi.y)};
-    std::erase_if(segs, [&](const Seg& s) {
-      return !active[s.loop] && (s.lo.x > hi.x || s.hi.x < lo.x || s.lo.y > hi.y || s.hi.y < lo.y);
-    });
-  }
+  const std::vector<Seg> segs = make_segments(loops, {});
   if (stats) *stats = {segs.size(), 0, 0};
   if (segs.size() < 2) return hits;
   const Grid g = make_grid(segs);
-  for_each_candidate(segs, g, stats, [&](const Seg& s, const Seg& t) {
-    if (!active.empty() && !active[s.loop] && !active[t.loop]) return;
-    HitKind kind;
-    Vec2 where;
-    if (!classify(s, t, kind, where)) return;
-    SegmentHit h{s.loop, s.index, t.loop, t.index, kind, where};
-    order_places(h);
-    hits.push_back(h);
-  });
+  for_each_candidate(segs, g, stats, [&hits](const Seg& s, const Seg& t) { record_hit(s, t, hits); });
   sort_place_pairs(hits);
   return hits;
 }
@@ -259,17 +250,9 @@ std::vector<SegmentHit> find_intersections_at(std::span<const std::vector<Vec2>>
   std::vector<SegmentHit> hits;
   const std::vector<Seg> on = make_segments(loops, {}, active, true);   // in (loop, index) order
   if (on.empty()) return hits;
-  auto test = [&hits](const Seg& s, const Seg& t) {
-    HitKind kind;
-    Vec2 where;
-    if (!classify(s, t, kind, where)) return;
-    SegmentHit h{s.loop, s.index, t.loop, t.index, kind, where};
-    order_places(h);
-    hits.push_back(h);
-  };
   // The earlier segment in (loop, index) order first, as find_intersections has them: the
   // place a hit is reported at is measured on its first segment.
-  for_each_active_pair(loops, {}, active, on, test);
+  for_each_active_pair(loops, {}, active, on, [&hits](const Seg& s, const Seg& t) { record_hit(s, t, hits); });
   sort_place_pairs(hits);
   return hits;
 }

@@ -30,10 +30,8 @@ struct IntersectionStats {
 
 /// Every pair of non-adjacent segments that cross, touch or overlap, plus adjacent ones
 /// that fold back. Loops are closed (first point not repeated). Sorted, deterministic.
-/// With `active` (one flag per loop), only pairs involving an active loop are tested: the
-/// repair re-checks just the loops it changed.
 std::vector<SegmentHit> find_intersections(std::span<const std::vector<Vec2>> loops,
-                                           IntersectionStats* stats = nullptr, std::span<const char> active = {});
+                                           IntersectionStats* stats = nullptr);
 
 /// find_intersections on the pairs of which at least one segment is active (active[l][s],
 /// one flag per segment): the repair's rounds change a few segments of a loop (a point put

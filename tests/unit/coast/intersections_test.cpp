@@ -136,7 +136,9 @@ TEST_CASE("intersections: an active mask reports exactly the hits of the active 
   REQUIRE_FALSE(all.empty());
   std::vector<char> active(loops.size(), 0);
   active[3] = active[7] = 1;
-  const auto some = find_intersections(loops, nullptr, active);
+  std::vector<std::vector<char>> segments_active;   // every segment of an active loop
+  for (std::size_t l = 0; l < loops.size(); ++l) segments_active.emplace_back(loops[l].size(), active[l]);
+  const auto some = find_intersections_at(loops, segments_active);
   std::size_t want = 0;
   for (const auto& h : all) want += active[h.loop_a] || active[h.loop_b];
   CHECK(some.size() == want);

@@ -75,7 +75,7 @@ void pieces_check_shape(const WorkCurve& c, const std::vector<Vec2>& want) {
 bool pieces_simple(const std::vector<WorkCurve>& curves, const WorkLoop& loop) {
   std::vector<std::vector<Vec2>> polys(1);
   loop_polygon(curves, loop, polys[0], nullptr);
-  return find_intersections(polys, nullptr, std::vector<char>(1, 1)).empty();
+  return find_intersections(polys).empty();
 }
 
 RepairOptions pieces_options() {
