@@ -145,44 +145,35 @@ class NearTree {
   /// nearer, or as near with a smaller index; `best` = kNoTie lets only a strictly nearer
   /// point in (a cap, not a candidate).
   void search(const Vec3& q, double& best2, std::uint32_t& best) const {
-    std::array<std::pair<std::uint32_t, double>, kMaxDepth> stack;
-    std::size_t top = 0;
-    std::uint32_t k = 0;
-    double bound = box2(nodes_[0], q);
-    for (;;) {
-      if (bound <= best2) {  // false for a NaN query
-        const Node& nd = nodes_[k];
-        if (nd.child != 0) {
-          const double b1 = box2(nodes_[nd.child], q), b2 = box2(nodes_[nd.child + 1], q);
-          const bool first_nearer = b1 <= b2;
-          stack[top++] = first_nearer ? std::pair{nd.child + 1, b2} : std::pair{nd.child, b1};
-          k = first_nearer ? nd.child : nd.child + 1;
-          bound = first_nearer ? b1 : b2;
-          continue;
-        }
-        for (std::uint32_t m = nd.begin; m < nd.end; ++m) {
-          const double dx = x_[m] - q.x, dy = y_[m] - q.y, dz = z_[m] - q.z;
-          const double d2 = dx * dx + dy * dy + dz * dz;
-          if (d2 < best2 || (d2 == best2 && id_[m] < best)) best2 = d2, best = id_[m];
-        }
-      }
-      if (top == 0) return;
-      --top;
-      k = stack[top].first;
-      bound = stack[top].second;
-    }
+    walk(q, best2, [&](std::uint32_t m, double d2) {
+      if (d2 < best2 || (d2 == best2 && id_[m] < best)) best2 = d2, best = id_[m];
+    });
   }
 
   /// Calls visit(index, squared distance) for each point nearer than sqrt(bound2), in the
   /// tree's order; bound2 becomes min(bound2, what visit returns), and cells beyond it
   /// are skipped.
   void visit(const Vec3& q, double bound2, const std::function<double(std::uint32_t, double)>& fn) const {
+    walk(q, bound2, [&](std::uint32_t m, double d2) {
+      if (d2 < bound2) bound2 = std::min(bound2, fn(id_[m], d2));
+    });
+  }
+
+  /// The "index" that no point's index is below: a tie with it never wins.
+  static constexpr std::uint32_t kNoTie = 0;
+
+ private:
+  /// The descent search and visit share: the nearer child first, a cell entered only while
+  /// its box is no farther than `limit`, which `leaf(slot, squared distance)` may lower for
+  /// each point of a leaf entered. A stack of kMaxDepth pending cells bounds it.
+  template <class Leaf>
+  void walk(const Vec3& q, const double& limit, Leaf&& leaf) const {
     std::array<std::pair<std::uint32_t, double>, kMaxDepth> stack;
     std::size_t top = 0;
     std::uint32_t k = 0;
     double bound = box2(nodes_[0], q);
     for (;;) {
-      if (bound <= bound2) {
+      if (bound <= limit) {  // false for a NaN query
         const Node& nd = nodes_[k];
         if (nd.child != 0) {
           const double b1 = box2(nodes_[nd.child], q), b2 = box2(nodes_[nd.child + 1], q);
@@ -194,8 +185,7 @@ class NearTree {
         }
         for (std::uint32_t m = nd.begin; m < nd.end; ++m) {
           const double dx = x_[m] - q.x, dy = y_[m] - q.y, dz = z_[m] - q.z;
-          const double d2 = dx * dx + dy * dy + dz * dz;
-          if (d2 < bound2) bound2 = std::min(bound2, fn(id_[m], d2));
+          leaf(m, dx * dx + dy * dy + dz * dz);
         }
       }
       if (top == 0) return;
@@ -205,10 +195,6 @@ class NearTree {
     }
   }
 
-  /// The "index" that no point's index is below: a tie with it never wins.
-  static constexpr std::uint32_t kNoTie = 0;
-
- private:
   static constexpr std::uint32_t kNearLeaf = 8;
   // Each level halves the points, so the depth stays below log2(2^32 / kNearLeaf) + 1.
   static constexpr std::size_t kMaxDepth = 32;
