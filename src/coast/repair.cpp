@@ -418,6 +418,28 @@ struct RoundChanges {
   }
 };
 
+// Puts original points (curve, full index) back among their curves' kept points, marks
+// each for the next round (the two segments that end at it are new) and logs one entry of
+// `kind` a curve, at its first point put back.
+void put_back_points(std::vector<WorkCurve>& curves, std::vector<std::pair<std::uint32_t, std::uint32_t>>& inserts,
+                     RepairKind kind, RoundChanges& changes, std::vector<RepairEntry>& log) {
+  std::sort(inserts.begin(), inserts.end());
+  inserts.erase(std::unique(inserts.begin(), inserts.end()), inserts.end());
+  for (std::size_t i = 0; i < inserts.size();) {
+    const std::uint32_t ci = inserts[i].first;
+    WorkCurve& c = curves[ci];
+    std::size_t j = i;
+    while (j < inserts.size() && inserts[j].first == ci) {
+      c.keep.push_back(inserts[j].second);
+      changes.touch(ci, inserts[j++].second);
+    }
+    std::sort(c.keep.begin(), c.keep.end());
+    c.keep.erase(std::unique(c.keep.begin(), c.keep.end()), c.keep.end());
+    log.push_back({kind, c.record, c.id, c.full[inserts[i].second], static_cast<double>(j - i)});
+    i = j;
+  }
+}
+
 // One pass of the spline check on intersection-free polygons. Puts original points back on
 // the control segments around spans whose curves cross (or come within the tolerance), or
 // splits those segments; returns true when nothing was changed (done), after logging the
@@ -487,21 +509,7 @@ bool spline_pass(std::vector<WorkCurve>& curves, const std::vector<WorkLoop>& lo
     return true;
   }
   // Points put back first (full indices unchanged), then the splits, which renumber.
-  std::sort(inserts.begin(), inserts.end());
-  inserts.erase(std::unique(inserts.begin(), inserts.end()), inserts.end());
-  for (std::size_t i = 0; i < inserts.size();) {
-    const std::uint32_t ci = inserts[i].first;
-    WorkCurve& c = curves[ci];
-    std::size_t j = i;
-    while (j < inserts.size() && inserts[j].first == ci) {
-      c.keep.push_back(inserts[j].second);
-      changes.touch(ci, inserts[j++].second);
-    }
-    std::sort(c.keep.begin(), c.keep.end());
-    c.keep.erase(std::unique(c.keep.begin(), c.keep.end()), c.keep.end());
-    log.push_back({RepairKind::SplineHull, c.record, c.id, c.full[inserts[i].second], static_cast<double>(j - i)});
-    i = j;
-  }
+  put_back_points(curves, inserts, RepairKind::SplineHull, changes, log);
   std::sort(splits.begin(), splits.end());
   splits.erase(std::unique(splits.begin(), splits.end()), splits.end());
   for (std::size_t i = splits.size(); i > 0;) {
@@ -578,21 +586,7 @@ bool put_back_original_points(LoopRepair& r, const std::vector<SegmentHit>& hits
     if (!any) stuck.push_back(&h);
   }
   if (inserts.empty()) return false;
-  std::sort(inserts.begin(), inserts.end());
-  inserts.erase(std::unique(inserts.begin(), inserts.end()), inserts.end());
-  for (std::size_t i = 0; i < inserts.size();) {
-    const std::uint32_t ci = inserts[i].first;
-    WorkCurve& c = r.curves[ci];
-    std::size_t j = i;
-    while (j < inserts.size() && inserts[j].first == ci) {
-      c.keep.push_back(inserts[j].second);
-      r.changes.touch(ci, inserts[j++].second);   // the two segments that end at it are new
-    }
-    std::sort(c.keep.begin(), c.keep.end());
-    c.keep.erase(std::unique(c.keep.begin(), c.keep.end()), c.keep.end());
-    r.log.push_back({RepairKind::Refined, c.record, c.id, c.full[inserts[i].second], static_cast<double>(j - i)});
-    i = j;
-  }
+  put_back_points(r.curves, inserts, RepairKind::Refined, r.changes, r.log);
   return true;
 }
 
