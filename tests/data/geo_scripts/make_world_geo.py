@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the issue-3 world script from a GSHHG text export (data/gshhg/*.txt).
+"""Writes the world script (the paper's world model) from a GSHHG text export (data/gshhg/*.txt).
 
 Usage: make_world_geo.py ../../../data/gshhg/world_c.txt > world_c.geo
 

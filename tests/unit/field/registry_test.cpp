@@ -9,7 +9,7 @@
 
 using namespace sm::field;
 
-TEST_CASE("registry: every kind of the issue is registered, sorted") {
+TEST_CASE("registry: every field kind listed here is registered, sorted") {
   const char* expected[] = {"Ball", "Bathymetry", "BoundaryLayer", "Box", "ChannelWidth", "Constant", "Curvature", "Cylinder",
                             "Distance", "Gradation", "Gradient", "Laplacian", "LonLat", "MathEval",
                             "Max", "MaxEigenHessian", "Mean", "Min", "MinAniso", "Param", "Restrict",
