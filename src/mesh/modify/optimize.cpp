@@ -372,10 +372,25 @@ class Optimizer {
     return {mn, good};
   }
 
+  // Whether triangle t (its corners among vs) keeps every corner fixed through a compound
+  // change's sweeps and has a rho below q: region_quality then measures it again in the
+  // same slot, corners in the same order (the same double), so the change's worst rho
+  // stays below q whatever the sweeps do. Round a dam or a coast edge much shorter than
+  // its neighbours most quads are so (docs/benchmarks.md: the deviation bound's extra
+  // closures); deciding it before the sweeps leaves only the failure's traces to make.
+  bool pinned_below(std::uint32_t t, const std::array<VertexId, 4>& vs, const std::array<bool, 4>& free, double q) {
+    for (std::uint32_t e = 0; e < 3; ++e)
+      for (std::size_t i = 0; i < 4; ++i)
+        if (free[i] && m_.vertex(TriId{t}, e) == vs[i]) return false;
+    return tri_quality(TriId{t}) < q;
+  }
+
   // Flips s even when that alone does not help, then moves the four corners of the quad
   // (two sweeps, no sacrifice); kept only when the worst rho round them rises and no
   // triangle drops below kGood, otherwise undone exactly (positions, then the flip back).
   // Escapes the local optima of single moves where a vertex has one neighbour too many.
+  // A change that pinned_below shows to fail makes only the failure's traces (the flip,
+  // the positions written back, the flip back that exchanges the two slots, the marks).
   bool try_compound(Side s, OptimizeStats& st) {
     const Side o = m_.twin[s.value];
     if (!o.valid() || m_.constrained(s)) return false;
@@ -387,24 +402,34 @@ class Optimizer {
     std::array<Vec2, 4> old_xy;
     for (std::size_t i = 0; i < 4; ++i) old_xy[i] = m_.pos(vs[i]);
     const Side n = m_.flip(s);
-    strict_ = true;
-    for (int sweep = 0; sweep < 2; ++sweep)
-      for (VertexId v : vs) {
-        if (!gather_star(v)) continue;
-        double best = 0;
-        int good = 0;
-        const Vec2 p = optimise_position(m_.pos(v), best, good, st);
-        m_.will_change_vertex(v);
-        m_.xy[v.value] = p;
-        if (space_) xyz_[v.value] = opt_.to_space(p), have_xyz_[v.value] = 1;
+    // Only the corners free after the flip move (whether a vertex is free depends on the
+    // edges round it, which the sweeps do not change).
+    std::array<bool, 4> free{};
+    for (std::size_t i = 0; i < 4; ++i) free[i] = gather_star(vs[i]);
+    ++st.compound_tried;
+    if (pinned_below(tri_of(n).value, vs, free, q0) || pinned_below(tri_of(m_.twin[n.value]).value, vs, free, q0)) {
+      ++st.compound_pinned;
+    } else {
+      strict_ = true;
+      for (int sweep = 0; sweep < 2; ++sweep)
+        for (std::size_t i = 0; i < 4; ++i) {
+          const VertexId v = vs[i];
+          if (!free[i] || !gather_star(v)) continue;
+          double best = 0;
+          int good = 0;
+          const Vec2 p = optimise_position(m_.pos(v), best, good, st);
+          m_.will_change_vertex(v);
+          m_.xy[v.value] = p;
+          if (space_) xyz_[v.value] = opt_.to_space(p), have_xyz_[v.value] = 1;
+        }
+      strict_ = false;
+      const auto [q1, g1] = region_quality(vs, tri_of(n).value, tri_of(m_.twin[n.value]).value, region_q1_);
+      if (q1 >= q0 && leximin_better(region_q1_, region_q0_) && g1 >= g0) {
+        for (std::uint32_t t : region_) touch(t);
+        ++st.swaps;
+        for (std::size_t i = 0; i < 4; ++i) st.moves += !(m_.pos(vs[i]) == old_xy[i]);
+        return true;
       }
-    strict_ = false;
-    const auto [q1, g1] = region_quality(vs, tri_of(n).value, tri_of(m_.twin[n.value]).value, region_q1_);
-    if (q1 >= q0 && leximin_better(region_q1_, region_q0_) && g1 >= g0) {
-      for (std::uint32_t t : region_) touch(t);
-      ++st.swaps;
-      for (std::size_t i = 0; i < 4; ++i) st.moves += !(m_.pos(vs[i]) == old_xy[i]);
-      return true;
     }
     for (std::size_t i = 0; i < 4; ++i) {
       m_.will_change_vertex(vs[i]);
