@@ -936,6 +936,10 @@ std::vector<Candidate> round_candidates(Work& w) {
   const std::vector<std::vector<Vec2>>& polys = w.polys;
   std::vector<Candidate> cands;
   for (const NearMiss& m : round_near_misses(w)) {
+    // KeepPassages: a cut joining two loops is never made, and a round's cuts only split
+    // loops, so two round-start loops' segments stay on two loops (close_round would follow
+    // the pair and skip it; at 3 km, 128,000 of the 524,000 candidates of six rounds).
+    if (w.opt.keep_passages && m.loop_a != m.loop_b) continue;
     const auto& pa = polys[m.loop_a];
     const auto& pb = polys[m.loop_b];
     const Vec2 a0 = pa[m.seg_a], a1 = pa[(m.seg_a + 1) % pa.size()];
