@@ -433,7 +433,7 @@ std::optional<CoastError> clean_and_orient(ImportWork& w) {
     Coastline c;
     c.rings = std::move(w.rings);
     w.rep.clean = clean(c, opt.threads);
-    merge_touching_rings(c, w.rep.clean);
+    merge_touching_rings(c, w.rep.clean, opt.threads);
     w.rings = std::move(c.rings);
   }
   w.rep.reversed = orient_rings(w.rings);
