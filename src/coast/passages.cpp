@@ -18,6 +18,7 @@
 #include <fmt/format.h>
 
 #include "base/check.h"
+#include "base/parallel.h"
 #include "base/release_memory.h"
 #include "coast/coarsen.h"
 #include "coast/coastline_option_id.h"
@@ -926,30 +927,50 @@ void round_polygons(Work& w) {
   }
 }
 
+// The way across a near miss in metres when it is a candidate: facing segments closer than
+// the width there (NaN: not one).
+double way_across(const Work& w, const NearMiss& m) {
+  const double R = w.opt.radius;
+  const auto& pa = w.polys[m.loop_a];
+  const auto& pb = w.polys[m.loop_b];
+  const Vec2 a0 = pa[m.seg_a], a1 = pa[(m.seg_a + 1) % pa.size()];
+  const Vec2 b0 = pb[m.seg_b], b1 = pb[(m.seg_b + 1) % pb.size()];
+  constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+  if (dot(a1 - a0, b1 - b0) >= 0) return kNone;   // not facing
+  const double d = std::min({uv_point_segment_metres(a0, b0, b1, R), uv_point_segment_metres(a1, b0, b1, R),
+                             uv_point_segment_metres(b0, a0, a1, R), uv_point_segment_metres(b1, a0, a1, R)});
+  const Vec2 mid = 0.25 * (a0 + a1 + b0 + b1);
+  const double W = w.opt.width_at ? passage_width_at(w.opt, unit_sphere().lonlat_from_param(mid)) : w.opt.min_width;
+  return d < W * (1 - kWidthTolerance) ? d : kNone;
+}
+
 // The round's candidates, narrowest first: near misses of facing segments closer than the
-// width there, two parts of one ring only when the way round is much longer.
+// width there, two parts of one ring only when the way round is much longer. The ways
+// across (four points' distances on the sphere each, 150,000 near misses a round at 3 km)
+// are measured on threads, in fixed chunks, unless the width comes from width_at (a depth
+// look-up not known to be safe to share); the ropes' sums are read in order after.
 std::vector<Candidate> round_candidates(Work& w) {
-  const double W = w.opt.min_width, R = w.opt.radius;
-  const std::vector<std::vector<Vec2>>& polys = w.polys;
+  std::vector<NearMiss> near = round_near_misses(w);
+  // KeepPassages: a cut joining two loops is never made, and a round's cuts only split
+  // loops, so two round-start loops' segments stay on two loops (close_round would follow
+  // the pair and skip it; at 3 km, 128,000 of the 524,000 candidates of six rounds).
+  if (w.opt.keep_passages) std::erase_if(near, [](const NearMiss& m) { return m.loop_a != m.loop_b; });
+  std::vector<double> across(near.size());
+  constexpr std::size_t kChunk = 4096;
+  parallel_for_chunks(w.opt.width_at ? 1 : resolve_thread_count(w.opt.threads), near.size(), kChunk,
+                      [&](std::size_t b, std::size_t e) {
+                        for (std::size_t i = b; i < e; ++i) across[i] = way_across(w, near[i]);
+                      });
   std::vector<Candidate> cands;
-  for (const NearMiss& m : round_near_misses(w)) {
-    // KeepPassages: a cut joining two loops is never made, and a round's cuts only split
-    // loops, so two round-start loops' segments stay on two loops (close_round would follow
-    // the pair and skip it; at 3 km, 128,000 of the 524,000 candidates of six rounds).
-    if (w.opt.keep_passages && m.loop_a != m.loop_b) continue;
-    const auto& pa = polys[m.loop_a];
-    const auto& pb = polys[m.loop_b];
-    const Vec2 a0 = pa[m.seg_a], a1 = pa[(m.seg_a + 1) % pa.size()];
-    const Vec2 b0 = pb[m.seg_b], b1 = pb[(m.seg_b + 1) % pb.size()];
-    if (dot(a1 - a0, b1 - b0) >= 0) continue;   // not facing
-    const double d = std::min({uv_point_segment_metres(a0, b0, b1, R), uv_point_segment_metres(a1, b0, b1, R),
-                               uv_point_segment_metres(b0, a0, a1, R), uv_point_segment_metres(b1, a0, a1, R)});
-    const Vec2 mid = 0.25 * (a0 + a1 + b0 + b1);
-    if (!(d < (w.opt.width_at ? passage_width_at(w.opt, unit_sphere().lonlat_from_param(mid)) : W) *
-                  (1 - kWidthTolerance)))
-      continue;
+  for (std::size_t i = 0; i < near.size(); ++i) {
+    const NearMiss& m = near[i];
+    const double d = across[i];
+    if (std::isnan(d)) continue;
     if (m.loop_a == m.loop_b && !passage_on_one_ring(w, w.flat[m.loop_a], m.seg_a, m.seg_b, d)) continue;
-    cands.push_back({d, m.loop_a, m.seg_a, m.loop_b, m.seg_b, 0.25 * (a0 + a1 + b0 + b1)});
+    const auto& pa = w.polys[m.loop_a];
+    const auto& pb = w.polys[m.loop_b];
+    const Vec2 mid = 0.25 * (pa[m.seg_a] + pa[(m.seg_a + 1) % pa.size()] + pb[m.seg_b] + pb[(m.seg_b + 1) % pb.size()]);
+    cands.push_back({d, m.loop_a, m.seg_a, m.loop_b, m.seg_b, mid});
   }
   std::stable_sort(cands.begin(), cands.end(), [](const Candidate& x, const Candidate& y) { return x.width < y.width; });
   return cands;
