@@ -97,6 +97,7 @@ RepairOptions in_context(RepairOptions o, const ImportOptions& opt) {
 }
 PassageOptions in_context(PassageOptions o, const ImportOptions& opt) {
   o.radius = opt.radius;
+  o.threads = opt.threads;
   o.width_at = nullptr;   // the import's own, from min_time_step
   return o;
 }
