@@ -198,8 +198,10 @@ struct FlatRings {
 std::vector<Edge> candidate_edges(const Coastline& c, int threads) {
   const FlatRings flat(c);
   const std::size_t vertices = flat.vertices();
-  // Two bits a slot side by side (seen, repeated): one memory access a vertex. The threads
-  // set them with atomic ORs: a slot hit twice ends "repeated" whichever thread came first.
+  // Two bits a slot side by side (seen, repeated): one memory access a vertex. Several
+  // threads set them with atomic ORs: a slot hit twice ends "repeated" whichever thread came
+  // first. One thread sets the same bits with plain ORs (an atomic OR whose old value is read
+  // is a compare-and-swap loop).
   std::size_t slots = 512;
   while (slots < 8 * vertices) slots *= 2;
   std::vector<std::uint64_t> table(slots / 32, 0);
@@ -210,8 +212,13 @@ std::vector<Edge> candidate_edges(const Coastline& c, int threads) {
   parallel_for_chunks(threads, vertices, kChunk, [&](std::size_t begin, std::size_t end) {
     flat.each(begin, end, [&](std::uint32_t r, std::uint32_t i) {
       const std::size_t at = slot(key(point(r, i)));
-      std::atomic_ref<std::uint64_t> w(table[at / 32]);
       const unsigned b = 2 * static_cast<unsigned>(at % 32);
+      if (threads <= 1) {
+        std::uint64_t& plain = table[at / 32];
+        plain |= (((plain >> b) & 1u) << (b + 1)) | (std::uint64_t{1} << b);
+        return;
+      }
+      std::atomic_ref<std::uint64_t> w(table[at / 32]);
       const std::uint64_t before = w.fetch_or(std::uint64_t{1} << b, std::memory_order_relaxed);
       if ((before >> b) & 1u) w.fetch_or(std::uint64_t{1} << (b + 1), std::memory_order_relaxed);
     });
