@@ -416,7 +416,7 @@ Value eval_field_call(Interpreter& in, const Expr& e, const CallExpr& c) {
   return Value::number(which);
 }
 
-std::string depth_at(Interpreter& in, const io::MeshModel& mm, std::vector<double>& depth) {
+OptionRefusal depth_at(Interpreter& in, const io::MeshModel& mm, std::vector<double>& depth) {
   std::vector<std::array<std::uint32_t, 2>> edges;
   if (in.options().number("Mesh.DepthSampling") == 1)
     for (const io::EntityMesh& e : mm.entities) {
@@ -428,20 +428,19 @@ std::string depth_at(Interpreter& in, const io::MeshModel& mm, std::vector<doubl
   return depth_at(in, mm.xyz, edges, depth);
 }
 
-std::string check_depth_sampling(Interpreter& in, const field::SizeField& depth) {
+OptionRefusal check_depth_sampling(Interpreter& in, const field::SizeField& depth) {
   if (in.options().number("Mesh.DepthSampling") == 0 || dynamic_cast<const field::GridDepthField*>(&depth)) return {};
-  return "Mesh.DepthSampling = 1 averages the cells of a relief grid: Mesh.DepthField must be a Bathymetry field with "
-         "Output \"depth\"";
+  return option_refusal(Diag::DepthSamplingNeedsGrid);
 }
 
-std::string depth_at(Interpreter& in, std::span<const Vec3> xyz, const std::vector<std::array<std::uint32_t, 2>>& edges,
-                     std::vector<double>& depth, std::optional<field::DepthClampReport>* report) {
+OptionRefusal depth_at(Interpreter& in, std::span<const Vec3> xyz, const std::vector<std::array<std::uint32_t, 2>>& edges,
+                       std::vector<double>& depth, std::optional<field::DepthClampReport>* report) {
   const KernelState& k = in.kernel();
   const int id = static_cast<int>(in.options().number("Mesh.DepthField"));
   const auto at = k.option_set_at.find("Mesh.DepthField");
   const field::SizeField* f = built_fields(in, id, at != k.option_set_at.end() ? at->second : SourceRange{}).get(id);
-  if (!f) return fmt::format("Mesh.DepthField = {}: no such field", id);
-  if (std::string why = check_depth_sampling(in, *f); !why.empty()) return why;
+  if (!f) return option_refusal(Diag::DepthFieldNoSuchField, id);
+  if (OptionRefusal r = check_depth_sampling(in, *f); !r.empty()) return r;
   depth.resize(xyz.size());
   const auto* grid = dynamic_cast<const field::GridDepthField*>(f);
   if (!grid) {
