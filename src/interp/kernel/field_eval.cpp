@@ -61,6 +61,35 @@ struct FieldDiagnostic {
   std::string message;
 };
 
+// A BadValue error in the words of its kind (field::BadValueWhat says which value).
+FieldDiagnostic bad_value_diagnostic(const field::FieldError& e) {
+  const double value = e.value.value_or(0);
+  switch (e.bad) {
+    case field::BadValueWhat::Option: break;
+    case field::BadValueWhat::NotFieldIds:
+      return {Diag::FieldOptionNotIds, format_diag(Diag::FieldOptionNotIds, e.option, e.name, value)};
+    case field::BadValueWhat::Size: {
+      const Vec3 p = e.point.value_or(Vec3{});
+      return {Diag::FieldSizeNotPositive,
+              format_diag(Diag::FieldSizeNotPositive, e.field_id, e.name, value, p.x, p.y, p.z)};
+    }
+    case field::BadValueWhat::DistanceSample:
+      return {Diag::DistanceSampleNotFinite,
+              format_diag(Diag::DistanceSampleNotFinite, static_cast<std::size_t>(value))};
+    case field::BadValueWhat::CoastSample:
+      return {Diag::ChannelWidthSampleNotFinite, format_diag(Diag::ChannelWidthSampleNotFinite)};
+    case field::BadValueWhat::ElementsAcross:
+      return {Diag::ChannelWidthElementsAcross, format_diag(Diag::ChannelWidthElementsAcross)};
+    case field::BadValueWhat::TooManySamples: {
+      const auto limit = static_cast<std::size_t>(value);
+      if (e.option == "NumPointsPerCurve")
+        return {Diag::CurveSamplesOverLimitNumPoints, format_diag(Diag::CurveSamplesOverLimitNumPoints, limit)};
+      return {Diag::CurveSamplesOverLimit, format_diag(Diag::CurveSamplesOverLimit, limit)};
+    }
+  }
+  return {Diag::FieldOptionRefused, format_diag(Diag::FieldOptionRefused, e.field_id, e.name, e.option, e.reason)};
+}
+
 FieldDiagnostic field_diagnostic(Interpreter& in, const field::FieldError& e) {
   const int first = e.ids.empty() ? e.field_id : e.ids.front();
   switch (e.code()) {
@@ -96,9 +125,9 @@ FieldDiagnostic field_diagnostic(Interpreter& in, const field::FieldError& e) {
               format_diag<std::string, std::string, std::string_view, std::string_view>(
                   Diag::FieldOptionWrongType, e.option, e.name, option_type_phrase(e.expected),
                   option_type_phrase(e.given))};
-    case field::FieldErrc::BadValue: break;
+    case field::FieldErrc::BadValue: return bad_value_diagnostic(e);
   }
-  return {Diag::BadFieldValue, format_diag<std::string>(Diag::BadFieldValue, e.what())};
+  return bad_value_diagnostic(e);   // not reached: every code is a case
 }
 
 // Where option `option` (any spelling) of field `id` was set, if a statement did.

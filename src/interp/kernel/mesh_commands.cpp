@@ -336,8 +336,7 @@ std::vector<field::BoundaryLayerParams> boundary_layers_of(Interpreter& in) {
       in.fail(at, Diag::MissingBoundaryLayerField, fid);
     const std::string kind = k.fields.options(fid).kind().name;
     if (kind != "BoundaryLayer")
-      in.fail_fmt(at, Diag::BadFieldValue,
-                  fmt::format("'BoundaryLayer Field = {}' names a {} field: it must be a BoundaryLayer field", fid, kind));
+      in.fail(at, Diag::BoundaryLayerFieldWrongKind, fid, kind);
     (void)built_fields(in, fid, at);
     try {
       layers.push_back(field::boundary_layer_params(k.fields.options(fid), fid));
