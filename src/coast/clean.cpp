@@ -4,6 +4,7 @@
 #include "coast/clean.h"
 
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cstdint>
 #include <cmath>
@@ -168,47 +169,68 @@ std::uint64_t key_hash(Key k) {
   return h;
 }
 
-std::vector<Edge> candidate_edges(const Coastline& c) {
-  auto counted = [](const Ring& r) { return r.closed && !r.wraps_pole; };
-  std::size_t vertices = 0;
-  for (const Ring& r : c.rings)
-    if (counted(r)) vertices += r.pts.size();
-  // Two bits a slot side by side (seen, repeated): one memory access a vertex.
+// The vertices of the rings the merge looks at, numbered one after another ring by ring:
+// the threads take fixed runs of that numbering, so a continent is shared among them.
+struct FlatRings {
+  std::vector<std::uint32_t> ring;       // counted rings, in order
+  std::vector<std::size_t> first;        // per counted ring: its first vertex; then the total
+
+  explicit FlatRings(const Coastline& c) {
+    first.push_back(0);
+    for (std::uint32_t r = 0; r < c.rings.size(); ++r)
+      if (c.rings[r].closed && !c.rings[r].wraps_pole && !c.rings[r].pts.empty()) {
+        ring.push_back(r);
+        first.push_back(first.back() + c.rings[r].pts.size());
+      }
+  }
+  std::size_t vertices() const { return first.back(); }
+  // Calls f(ring, i) for the vertices [begin, end) of the numbering, in order.
+  template <class F>
+  void each(std::size_t begin, std::size_t end, F&& f) const {
+    auto k = static_cast<std::size_t>(std::upper_bound(first.begin(), first.end(), begin) - first.begin()) - 1;
+    for (std::size_t v = begin; v < end; ++k) {
+      const std::size_t stop = std::min(end, first[k + 1]);
+      for (; v < stop; ++v) f(ring[k], static_cast<std::uint32_t>(v - first[k]));
+    }
+  }
+};
+
+std::vector<Edge> candidate_edges(const Coastline& c, int threads) {
+  const FlatRings flat(c);
+  const std::size_t vertices = flat.vertices();
+  // Two bits a slot side by side (seen, repeated): one memory access a vertex. The threads
+  // set them with atomic ORs: a slot hit twice ends "repeated" whichever thread came first.
   std::size_t slots = 512;
   while (slots < 8 * vertices) slots *= 2;
   std::vector<std::uint64_t> table(slots / 32, 0);
   auto slot = [&](Key k) { return static_cast<std::size_t>(key_hash(k) & (slots - 1)); };
   auto repeated = [&](std::size_t i) { return (table[i / 32] >> (2 * (i % 32) + 1)) & 1u; };
-  for (const Ring& r : c.rings) {
-    if (!counted(r)) continue;
-    for (auto p : r.pts) {
-      const std::size_t i = slot(key(p));
-      std::uint64_t& w = table[i / 32];
-      const unsigned b = 2 * static_cast<unsigned>(i % 32);
-      w |= (((w >> b) & 1u) << (b + 1)) | (std::uint64_t{1} << b);
-    }
-  }
+  auto point = [&](std::uint32_t r, std::uint32_t i) { return c.rings[r].pts[i]; };
+  constexpr std::size_t kChunk = std::size_t{1} << 16;   // vertices
+  parallel_for_chunks(threads, vertices, kChunk, [&](std::size_t begin, std::size_t end) {
+    flat.each(begin, end, [&](std::uint32_t r, std::uint32_t i) {
+      const std::size_t at = slot(key(point(r, i)));
+      std::atomic_ref<std::uint64_t> w(table[at / 32]);
+      const unsigned b = 2 * static_cast<unsigned>(at % 32);
+      const std::uint64_t before = w.fetch_or(std::uint64_t{1} << b, std::memory_order_relaxed);
+      if ((before >> b) & 1u) w.fetch_or(std::uint64_t{1} << (b + 1), std::memory_order_relaxed);
+    });
+  });
+  // The edge leaving each vertex, kept when both its ends are marked; the runs' lists are
+  // joined in order (the sort below orders them fully in any case).
+  std::vector<std::vector<Edge>> parts((vertices + kChunk - 1) / kChunk);
+  parallel_for_chunks(threads, vertices, kChunk, [&](std::size_t begin, std::size_t end) {
+    std::vector<Edge>& out = parts[begin / kChunk];
+    flat.each(begin, end, [&](std::uint32_t r, std::uint32_t i) {
+      const auto n = static_cast<std::uint32_t>(c.rings[r].pts.size());
+      const Key a = key(point(r, i));
+      if (!repeated(slot(a))) return;
+      const Key b = key(point(r, (i + 1) % n));
+      if (repeated(slot(b))) out.push_back({a, b, r, i});
+    });
+  });
   std::vector<Edge> edges;
-  std::vector<char> mark;
-  std::vector<Key> keys;
-  for (std::uint32_t r = 0; r < c.rings.size(); ++r) {
-    const Ring& ring = c.rings[r];
-    if (!counted(ring)) continue;
-    const auto n = static_cast<std::uint32_t>(ring.pts.size());
-    keys.resize(n);
-    mark.resize(n);
-    bool any = false;
-    for (std::uint32_t i = 0; i < n; ++i) {
-      keys[i] = key(ring.pts[i]);
-      mark[i] = static_cast<char>(repeated(slot(keys[i])));
-      any = any || mark[i];
-    }
-    if (!any) continue;
-    for (std::uint32_t i = 0; i < n; ++i) {
-      const std::uint32_t j = (i + 1) % n;
-      if (mark[i] && mark[j]) edges.push_back({keys[i], keys[j], r, i});
-    }
-  }
+  for (const std::vector<Edge>& p : parts) edges.insert(edges.end(), p.begin(), p.end());
   std::sort(edges.begin(), edges.end());
   return edges;
 }
@@ -256,10 +278,10 @@ void split_dateline_edges(Coastline& c) {
   }
 }
 
-void merge_touching_rings(Coastline& c, CleanReport& rep) {
+void merge_touching_rings(Coastline& c, CleanReport& rep, int threads) {
   split_dateline_edges(c);
   for (;;) {
-    const std::vector<Edge> edges = candidate_edges(c);
+    const std::vector<Edge> edges = candidate_edges(c, resolve_thread_count(threads));
     std::vector<char> busy(c.rings.size(), 0), dead(c.rings.size(), 0);
     bool merged = false;
     for (const Edge& e : edges) {

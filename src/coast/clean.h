@@ -38,7 +38,8 @@ CleanReport clean(Coastline& c, int threads = 1);
 /// Joins closed rings of the same level that share an edge run in opposite directions
 /// (shapefiles split polygons at the dateline: GSHHS_l_L1.shp, Natural Earth's Fiji and
 /// Chukotka; touching islands in general). The merged ring replaces the first of the two;
-/// the leftover shared run becomes spikes, which are removed. Appends to `rep`.
-void merge_touching_rings(Coastline& c, CleanReport& rep);
+/// the leftover shared run becomes spikes, which are removed. Appends to `rep`. The same
+/// for every number of `threads`.
+void merge_touching_rings(Coastline& c, CleanReport& rep, int threads = 1);
 
 }  // namespace sm::coast

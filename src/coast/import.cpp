@@ -97,6 +97,7 @@ RepairOptions in_context(RepairOptions o, const ImportOptions& opt) {
 }
 PassageOptions in_context(PassageOptions o, const ImportOptions& opt) {
   o.radius = opt.radius;
+  o.threads = opt.threads;
   o.width_at = nullptr;   // the import's own, from min_time_step
   return o;
 }
@@ -433,7 +434,7 @@ std::optional<CoastError> clean_and_orient(ImportWork& w) {
     Coastline c;
     c.rings = std::move(w.rings);
     w.rep.clean = clean(c, opt.threads);
-    merge_touching_rings(c, w.rep.clean);
+    merge_touching_rings(c, w.rep.clean, opt.threads);
     w.rings = std::move(c.rings);
   }
   w.rep.reversed = orient_rings(w.rings);

@@ -11,7 +11,6 @@
 #include <set>
 #include <optional>
 #include <tuple>
-#include <unordered_map>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -19,6 +18,7 @@
 #include <fmt/format.h>
 
 #include "base/check.h"
+#include "base/parallel.h"
 #include "base/release_memory.h"
 #include "coast/coarsen.h"
 #include "coast/coastline_option_id.h"
@@ -70,7 +70,7 @@ Vec2 closest_on_segment(Vec2 p, Vec2 a, Vec2 b) {
 // 39 MB of the pool on the full-resolution world).
 constexpr std::uint32_t kAdded = 0xFFFFFFFFu;
 constexpr std::uint32_t kMaxIndex = 0x7FFFFFFFu;   // index has 31 bits
-constexpr std::uint32_t kNoNode = 0xFFFFFFFFu;     // no node (Work::SegAt)
+constexpr std::uint32_t kNoSegment = 0xFFFFFFFFu;  // no segment (round_near_misses)
 struct Node {
   std::uint32_t curve;
   std::uint32_t src;
@@ -187,21 +187,21 @@ struct Work {
   // puts a few points back; measuring every ring's polygon and searching every segment pair
   // again each round made passage closing grow with rounds x coast (the coast bound's points
   // put back add rounds). Per loop (by its number in `flat`, which only grows): the polygon
-  // and widths at the round's start, made again only for a loop that is `fresh`. Per node
-  // that started a kept segment at a round's start (`seg_at`, freed with the rounds): the
-  // end node of that segment at the last round's start (none: kNoNode), so a segment is the
-  // same as then when its start node has the same end (a node's point never moves), and its
-  // number in this round's list of segments. Only kept nodes start segments (323,000 of 7 M
-  // at 3 km on the full GSHHG): two words for every node of the pool were 56 MB under the
-  // import's peak. `near`: the last round's near pairs (before the one-loop test), by their
-  // segments' start nodes.
-  struct SegAt {
-    std::uint32_t end = kNoNode;
-    std::uint32_t here = 0;
+  // and widths at the round's start, made again only for a loop that is `fresh`. The last
+  // round's segments (`segs`, by start node, freed with the rounds): each its start and end
+  // node and its number in that round's list, so a segment is the same as then when its
+  // start node has the same end (a node's point never moves; a node that left the live
+  // loops never comes back). Only kept nodes start segments (323,000 of 7 M at 3 km on the
+  // full GSHHG): two words for every node of the pool were 56 MB under the import's peak,
+  // and a hash map from node to segment a cache miss per segment and per near pair each
+  // round. `near`: the last round's near pairs (before the one-loop test), by their
+  // segments' numbers in that round.
+  struct Segment {
+    std::uint32_t start, end, number;
   };
   std::vector<std::vector<Vec2>> polys = {};
   std::vector<std::vector<double>> width = {};
-  std::unordered_map<std::uint32_t, SegAt> seg_at = {};
+  std::vector<Segment> segs = {};
   std::vector<std::pair<std::uint32_t, std::uint32_t>> near = {};
   bool gate_closed(Vec2 a0, Vec2 b0) const {
     for (const Gate& g : gates)
@@ -845,53 +845,51 @@ void rekeep(Work& w, FlatLoop& f, TreeNode from_t, std::uint32_t from, TreeNode 
 // only their points and widths), and only the segments new since then are searched.
 std::vector<NearMiss> round_near_misses(Work& w) {
   std::vector<std::vector<char>> active(w.flat.size());
-  std::vector<std::uint32_t> start;                          // this round's segments: start node,
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> at;   // loop and position,
-  std::vector<char> same;                                    // whether unchanged since the last round
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> at;   // this round's segments: loop and position
   std::vector<std::size_t> first(w.flat.size(), 0);          // per loop: its first segment's number
+  std::vector<Work::Segment> segs;                            // this round's, by start node below
   std::vector<std::uint32_t> ids;
   for (std::uint32_t l = 0; l < w.flat.size(); ++l) {
     const FlatLoop& f = w.flat[l];
     if (f.dead) continue;
     const std::size_t k = f.size();
-    active[l].resize(k);
-    first[l] = start.size();
+    active[l].assign(k, 1);
+    first[l] = at.size();
     ids.clear();
     w.ropes.for_each(f.rope, [&](TreeNode t) { ids.push_back(w.ropes.id(t)); });
     for (std::size_t j = 0; j < k; ++j) {
-      const std::uint32_t n = ids[j], m = ids[j + 1 < k ? j + 1 : 0];
-      Work::SegAt& at_n = w.seg_at[n];
-      const bool unchanged = at_n.end == m;
-      active[l][j] = !unchanged;
-      at_n.end = m;
-      at_n.here = static_cast<std::uint32_t>(start.size());
-      start.push_back(n);
+      segs.push_back({ids[j], ids[j + 1 < k ? j + 1 : 0], static_cast<std::uint32_t>(at.size())});
       at.push_back({l, static_cast<std::uint32_t>(j)});
-      same.push_back(unchanged);
     }
   }
+  // A node starts one segment a round (it is on one ring): the two rounds' lists sorted by
+  // start node are matched in one pass. `renumber`: a last-round segment's number now when
+  // it is unchanged, else kNoSegment.
+  std::sort(segs.begin(), segs.end(), [](const Work::Segment& x, const Work::Segment& y) { return x.start < y.start; });
+  std::vector<std::uint32_t> renumber(w.segs.size(), kNoSegment);
+  for (std::size_t i = 0, o = 0; i < segs.size(); ++i) {
+    while (o < w.segs.size() && w.segs[o].start < segs[i].start) ++o;
+    if (o == w.segs.size() || w.segs[o].start != segs[i].start || w.segs[o].end != segs[i].end) continue;
+    renumber[w.segs[o].number] = segs[i].number;
+    const auto [l, j] = at[segs[i].number];
+    active[l][j] = 0;
+  }
+  w.segs = std::move(segs);
   std::size_t searched = 0;
   std::vector<NearMiss> near = find_near_pairs(w.polys, w.width, active, &searched);
   w.stats.near_searched += searched;
-  // A node is this round's start of segment s only when start[s] names it (seg_at is
-  // not cleared for nodes that left the live loops).
-  auto where = [&](std::uint32_t n) -> std::optional<std::uint32_t> {
-    const auto it = w.seg_at.find(n);
-    if (it == w.seg_at.end()) return std::nullopt;
-    const std::uint32_t s = it->second.here;
-    if (s < start.size() && start[s] == n && same[s]) return s;
-    return std::nullopt;
-  };
   for (const auto& [na, nb] : w.near) {
-    const auto sa = where(na), sb = where(nb);
-    if (!sa || !sb) continue;
-    NearMiss m{at[*sa].first, at[*sa].second, at[*sb].first, at[*sb].second, 0, {}};
+    const std::uint32_t sa = renumber[na], sb = renumber[nb];
+    if (sa == kNoSegment || sb == kNoSegment) continue;
+    NearMiss m{at[sa].first, at[sa].second, at[sb].first, at[sb].second, 0, {}};
     order_places(m);
     near.push_back(m);
     ++w.stats.near_kept;
   }
   w.near.clear();
-  for (const NearMiss& m : near) w.near.push_back({start[first[m.loop_a] + m.seg_a], start[first[m.loop_b] + m.seg_b]});
+  for (const NearMiss& m : near)
+    w.near.push_back({static_cast<std::uint32_t>(first[m.loop_a] + m.seg_a),
+                      static_cast<std::uint32_t>(first[m.loop_b] + m.seg_b)});
   // Within one loop only far-apart parts count: at least 3 segments away both ways (as
   // find_near_misses), with the loop as it is now.
   std::erase_if(near, [&](const NearMiss& m) {
@@ -929,26 +927,50 @@ void round_polygons(Work& w) {
   }
 }
 
+// The way across a near miss in metres when it is a candidate: facing segments closer than
+// the width there (NaN: not one).
+double way_across(const Work& w, const NearMiss& m) {
+  const double R = w.opt.radius;
+  const auto& pa = w.polys[m.loop_a];
+  const auto& pb = w.polys[m.loop_b];
+  const Vec2 a0 = pa[m.seg_a], a1 = pa[(m.seg_a + 1) % pa.size()];
+  const Vec2 b0 = pb[m.seg_b], b1 = pb[(m.seg_b + 1) % pb.size()];
+  constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+  if (dot(a1 - a0, b1 - b0) >= 0) return kNone;   // not facing
+  const double d = std::min({uv_point_segment_metres(a0, b0, b1, R), uv_point_segment_metres(a1, b0, b1, R),
+                             uv_point_segment_metres(b0, a0, a1, R), uv_point_segment_metres(b1, a0, a1, R)});
+  const Vec2 mid = 0.25 * (a0 + a1 + b0 + b1);
+  const double W = w.opt.width_at ? passage_width_at(w.opt, unit_sphere().lonlat_from_param(mid)) : w.opt.min_width;
+  return d < W * (1 - kWidthTolerance) ? d : kNone;
+}
+
 // The round's candidates, narrowest first: near misses of facing segments closer than the
-// width there, two parts of one ring only when the way round is much longer.
+// width there, two parts of one ring only when the way round is much longer. The ways
+// across (four points' distances on the sphere each, 150,000 near misses a round at 3 km)
+// are measured on threads, in fixed chunks, unless the width comes from width_at (a depth
+// look-up not known to be safe to share); the ropes' sums are read in order after.
 std::vector<Candidate> round_candidates(Work& w) {
-  const double W = w.opt.min_width, R = w.opt.radius;
-  const std::vector<std::vector<Vec2>>& polys = w.polys;
+  std::vector<NearMiss> near = round_near_misses(w);
+  // KeepPassages: a cut joining two loops is never made, and a round's cuts only split
+  // loops, so two round-start loops' segments stay on two loops (close_round would follow
+  // the pair and skip it; at 3 km, 128,000 of the 524,000 candidates of six rounds).
+  if (w.opt.keep_passages) std::erase_if(near, [](const NearMiss& m) { return m.loop_a != m.loop_b; });
+  std::vector<double> across(near.size());
+  constexpr std::size_t kChunk = 4096;
+  parallel_for_chunks(w.opt.width_at ? 1 : resolve_thread_count(w.opt.threads), near.size(), kChunk,
+                      [&](std::size_t b, std::size_t e) {
+                        for (std::size_t i = b; i < e; ++i) across[i] = way_across(w, near[i]);
+                      });
   std::vector<Candidate> cands;
-  for (const NearMiss& m : round_near_misses(w)) {
-    const auto& pa = polys[m.loop_a];
-    const auto& pb = polys[m.loop_b];
-    const Vec2 a0 = pa[m.seg_a], a1 = pa[(m.seg_a + 1) % pa.size()];
-    const Vec2 b0 = pb[m.seg_b], b1 = pb[(m.seg_b + 1) % pb.size()];
-    if (dot(a1 - a0, b1 - b0) >= 0) continue;   // not facing
-    const double d = std::min({uv_point_segment_metres(a0, b0, b1, R), uv_point_segment_metres(a1, b0, b1, R),
-                               uv_point_segment_metres(b0, a0, a1, R), uv_point_segment_metres(b1, a0, a1, R)});
-    const Vec2 mid = 0.25 * (a0 + a1 + b0 + b1);
-    if (!(d < (w.opt.width_at ? passage_width_at(w.opt, unit_sphere().lonlat_from_param(mid)) : W) *
-                  (1 - kWidthTolerance)))
-      continue;
+  for (std::size_t i = 0; i < near.size(); ++i) {
+    const NearMiss& m = near[i];
+    const double d = across[i];
+    if (std::isnan(d)) continue;
     if (m.loop_a == m.loop_b && !passage_on_one_ring(w, w.flat[m.loop_a], m.seg_a, m.seg_b, d)) continue;
-    cands.push_back({d, m.loop_a, m.seg_a, m.loop_b, m.seg_b, 0.25 * (a0 + a1 + b0 + b1)});
+    const auto& pa = w.polys[m.loop_a];
+    const auto& pb = w.polys[m.loop_b];
+    const Vec2 mid = 0.25 * (pa[m.seg_a] + pa[(m.seg_a + 1) % pa.size()] + pb[m.seg_b] + pb[(m.seg_b + 1) % pb.size()]);
+    cands.push_back({d, m.loop_a, m.seg_a, m.loop_b, m.seg_b, mid});
   }
   std::stable_sort(cands.begin(), cands.end(), [](const Candidate& x, const Candidate& y) { return x.width < y.width; });
   return cands;
@@ -1490,7 +1512,7 @@ Result<bool> close_passages(std::vector<WorkCurve>& curves, std::vector<WorkLoop
   w.ropes = KeptRopes();
   std::vector<std::vector<Vec2>>().swap(w.polys);
   std::vector<std::vector<double>>().swap(w.width);
-  std::unordered_map<std::uint32_t, Work::SegAt>().swap(w.seg_at);
+  std::vector<Work::Segment>().swap(w.segs);
   std::vector<std::pair<std::uint32_t, std::uint32_t>>().swap(w.near);
   // The loops to rebuild (changed in place, or made by cuts) and the curves of the loops
   // cut or rebuilt, whose points the rebuilt curves take over. Each such curve is freed as

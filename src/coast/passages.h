@@ -42,6 +42,9 @@ struct PassageOptions {
   /// at such a point (kKeepOpenReach), and a dam across them is an error (option "KeepOpen").
   std::vector<geo::LonLat> keep_open;
   double radius = geo::kEarthRadius;
+  /// Threads for the closing rounds' searches (<= 0: the hardware concurrency); the result
+  /// is the same for every count.
+  int threads = 1;
   /// When set, the width (metres) below which a passage at a place is closed, in place of
   /// min_width there; min_width must bound it from above (it is the search radius).
   std::function<double(geo::LonLat)> width_at;

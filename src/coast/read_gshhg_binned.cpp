@@ -17,10 +17,12 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <iterator>
 #include <mutex>
 #include <fmt/format.h>
 
 #include "base/netcdf_lock.h"
+#include "base/parallel.h"
 #include "field/netcdf_header.h"
 
 namespace sm::coast {
@@ -477,18 +479,32 @@ Coastline read(const std::string& path, const GshhgBinnedOptions& opt, std::uint
   // Pieces by polygon (bin order kept inside one), then each polygon's pieces joined into
   // rings.
   std::stable_sort(pieces.begin(), pieces.end(), [](const Piece& a, const Piece& b) { return a.polygon < b.polygon; });
+  // The polygons are independent: runs of them on threads, each run's rings joined in
+  // polygon order (a failure is the first polygon's, by run order, as on one thread).
+  std::vector<std::size_t> polygon_first;
+  for (std::size_t p = 0; p < pieces.size(); ++p)
+    if (p == 0 || pieces[p].polygon != pieces[p - 1].polygon) polygon_first.push_back(p);
+  const std::size_t n_polygons = polygon_first.size();
+  polygon_first.push_back(pieces.size());
+  constexpr std::size_t kChunk = 512;   // polygons
+  std::vector<Coastline> parts((n_polygons + kChunk - 1) / kChunk);
+  parallel_for_chunks(resolve_thread_count(opt.threads), n_polygons, kChunk, [&](std::size_t begin, std::size_t end) {
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> starts;   // (start key, piece) of one polygon
+    std::vector<char> used;
+    std::vector<std::vector<At>> cycles;
+    for (std::size_t g = begin; g < end; ++g) {
+      const std::size_t p0 = polygon_first[g], p1 = polygon_first[g + 1];
+      join_pieces(pieces, p0, p1, pts, starts, used, cycles);
+      splice_touching_cycles(pts, cycles);
+      emit_rings(t, pts, pieces[p0], cycles, parts[begin / kChunk]);
+    }
+  });
   Coastline out;
   out.file = path;
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> starts;   // (start key, piece) of one polygon
-  std::vector<char> used;
-  std::vector<std::vector<At>> cycles;
-  for (std::size_t p0 = 0, p1 = 0; p0 < pieces.size(); p0 = p1) {
-    p1 = p0;
-    while (p1 < pieces.size() && pieces[p1].polygon == pieces[p0].polygon) ++p1;
-    join_pieces(pieces, p0, p1, pts, starts, used, cycles);
-    splice_touching_cycles(pts, cycles);
-    emit_rings(t, pts, pieces[p0], cycles, out);
-  }
+  std::size_t rings = 0;
+  for (const Coastline& part : parts) rings += part.rings.size();
+  out.rings.reserve(rings);
+  for (Coastline& part : parts) std::move(part.rings.begin(), part.rings.end(), std::back_inserter(out.rings));
   return out;
 }
 

@@ -29,6 +29,9 @@ struct GshhgBinnedOptions {
   /// Only the polygons with a piece in a bin overlapping this box are read (whole: their
   /// pieces in the other bins too); longitudes compared modulo 360.
   std::optional<LonLatBox> region;
+  /// Threads joining the polygons' pieces into rings (<= 0: the hardware concurrency): the
+  /// same rings for every count.
+  int threads = 1;
 };
 
 /// True for the resolution letters c, l, i, h, f.

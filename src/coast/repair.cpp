@@ -374,47 +374,87 @@ constexpr double kSplineTolerance = 1e-3;
 // is marked whole; a point put back marks the segments that end at it; a hit marks its two
 // segments (left alone, it is found again). Points are named by curve and full index,
 // which a round's changes other than the whole-loop ones keep.
+//
+// The same marks are gathered a second time from one spline pass to the next (`spline`):
+// a span is the curve on four consecutive control points, so two spans none of whose
+// points changed since the last pass keep that pass's verdict (apart, or the pair was
+// found and its spans marked again: `touch_span`).
 struct RoundChanges {
-  std::vector<char> whole;                        // per loop: every segment
-  std::vector<std::vector<std::uint32_t>> at;     // per curve: full indices of marked points
+  struct Marks {
+    std::vector<char> whole;                        // per loop: every segment
+    std::vector<std::vector<std::uint32_t>> at;     // per curve: full indices of marked points
+  };
+  Marks round, spline;
 
-  RoundChanges(std::size_t loops, std::size_t curves) : whole(loops, 1), at(curves) {}
-  void touch(std::uint32_t curve, std::uint32_t full) { at[curve].push_back(full); }
+  RoundChanges(std::size_t loops, std::size_t curves)
+      : round{std::vector<char>(loops, 1), std::vector<std::vector<std::uint32_t>>(curves)}, spline(round) {}
+  void touch(std::uint32_t curve, std::uint32_t full) {
+    round.at[curve].push_back(full);
+    spline.at[curve].push_back(full);
+  }
+  void whole_loop(std::size_t l) { round.whole[l] = spline.whole[l] = 1; }
   // A curve renumbered (a sliver cut out, a segment split): the loops using it, whole.
   void whole_curve(const std::vector<WorkLoop>& loops, std::uint32_t curve) {
     for (std::size_t l = 0; l < loops.size(); ++l)
       for (std::uint32_t c : loops[l].curves)
-        if (c == curve) whole[l] = 1;
+        if (c == curve) whole_loop(l);
   }
   void touch_segment(const std::vector<WorkCurve>& curves, const std::vector<LoopVertexRef>& refs, std::uint32_t s) {
     for (const LoopVertexRef r : {refs[s], refs[(s + 1) % refs.size()]}) touch(r.curve, curves[r.curve].keep[r.k]);
   }
-  // Per loop and segment of the polygons as they are now: marked or not. The marks are
-  // cleared for the next round.
+  // A span found by a spline pass is tested again by the next one: its point s marked
+  // (the span following segment s holds point s).
+  void touch_span(const std::vector<WorkCurve>& curves, const std::vector<LoopVertexRef>& refs, std::uint32_t s) {
+    const LoopVertexRef r = refs[s];
+    spline.at[r.curve].push_back(curves[r.curve].keep[r.k]);
+  }
+  // Per loop and segment of the polygons as they are now: marked or not. The round's marks
+  // are cleared for the next round.
   void active(const std::vector<WorkCurve>& curves, const std::vector<WorkLoop>& loops,
               const std::vector<std::vector<LoopVertexRef>>& refs, std::vector<std::vector<char>>& out) {
+    marked_segments(round, curves, loops, refs, out);
+  }
+  // Per loop and segment: whether the span following it holds a point marked since the
+  // last spline pass (segment s-1, s or s+1 marked: the span on points s-1 .. s+2, which a
+  // loop of pieces clamps inside its piece). The spline marks are cleared.
+  void spline_active(const std::vector<WorkCurve>& curves, const std::vector<WorkLoop>& loops,
+                     const std::vector<std::vector<LoopVertexRef>>& refs, std::vector<std::vector<char>>& out) {
+    marked_segments(spline, curves, loops, refs, out);
+    std::vector<char> seg;
+    for (std::vector<char>& a : out) {
+      const std::size_t n = a.size();
+      if (n == 0 || std::all_of(a.begin(), a.end(), [](char c) { return c != 0; })) continue;
+      seg = a;
+      for (std::size_t s = 0; s < n; ++s)
+        a[s] = static_cast<char>(seg[(s + n - 1) % n] | seg[s] | seg[(s + 1) % n]);
+    }
+  }
+
+ private:
+  static void marked_segments(Marks& m, const std::vector<WorkCurve>& curves, const std::vector<WorkLoop>& loops,
+                              const std::vector<std::vector<LoopVertexRef>>& refs, std::vector<std::vector<char>>& out) {
     out.resize(loops.size());
-    for (auto& a : at) {
+    for (auto& a : m.at) {
       std::sort(a.begin(), a.end());
       a.erase(std::unique(a.begin(), a.end()), a.end());
     }
     for (std::size_t l = 0; l < loops.size(); ++l) {
       const std::size_t n = refs[l].size();
-      out[l].assign(n, whole[l]);
-      if (whole[l] || n == 0) continue;
+      out[l].assign(n, m.whole[l]);
+      if (m.whole[l] || n == 0) continue;
       bool any = false;
-      for (std::uint32_t ci : loops[l].curves) any = any || !at[ci].empty();
+      for (std::uint32_t ci : loops[l].curves) any = any || !m.at[ci].empty();
       if (!any) continue;
       for (std::size_t v = 0; v < n; ++v) {
         const LoopVertexRef r = refs[l][v];
-        const std::vector<std::uint32_t>& a = at[r.curve];
+        const std::vector<std::uint32_t>& a = m.at[r.curve];
         if (a.empty() || !std::binary_search(a.begin(), a.end(), curves[r.curve].keep[r.k])) continue;
         out[l][v] = 1;               // the segment leaving the point
         out[l][(v + n - 1) % n] = 1;   // and the one reaching it
       }
     }
-    std::fill(whole.begin(), whole.end(), 0);
-    for (auto& a : at) a.clear();
+    std::fill(m.whole.begin(), m.whole.end(), 0);
+    for (auto& a : m.at) a.clear();
   }
 };
 
@@ -451,6 +491,8 @@ bool spline_pass(std::vector<WorkCurve>& curves, const std::vector<WorkLoop>& lo
                  RoundChanges& changes) {
   std::vector<std::vector<std::uint32_t>> starts(loops.size());
   std::vector<std::vector<double>> tol(loops.size());
+  std::vector<std::vector<char>> active;
+  changes.spline_active(curves, loops, refs, active);
   std::vector<SplineLoop> sl(loops.size());
   for (std::size_t l = 0; l < loops.size(); ++l) {
     const auto& r = refs[l];
@@ -465,9 +507,14 @@ bool spline_pass(std::vector<WorkCurve>& curves, const std::vector<WorkLoop>& lo
     sl[l].piece_start = starts[l];
     sl[l].periodic = loops[l].curves.size() == 1 && !loops[l].dead && curves[loops[l].curves[0]].periodic;
     sl[l].tol = tol[l];
+    sl[l].active = active[l];
   }
   const std::vector<HullOverlap> over = find_spline_crossings(sl);
   if (over.empty()) return true;
+  for (const HullOverlap& o : over) {   // found again by the next pass unless mended
+    changes.touch_span(curves, refs[o.loop_a], o.seg_a);
+    changes.touch_span(curves, refs[o.loop_b], o.seg_b);
+  }
   std::vector<std::pair<std::uint32_t, std::uint32_t>> inserts, splits;   // (curve, full index)
   std::vector<std::uint32_t> idx;
   std::vector<const HullOverlap*> stuck;
@@ -636,7 +683,8 @@ bool unite_overlapping_islands(LoopRepair& r, const std::vector<const SegmentHit
         if (unite_island_with_coast(curves, loops[isl], r.polys[isl], r.refs[isl], r.polys[water], r.refs[water],
                                     pair, isl == a)) {
           used[a] = used[b] = 1;
-          r.changes.whole[a] = r.changes.whole[b] = 1;
+          r.changes.whole_loop(a);
+          r.changes.whole_loop(b);
           united = true;
           r.log.push_back({RepairKind::UnitedIslands, rec, id, uv_to_lonlat(pair.front()->where), 0});
         }
@@ -652,7 +700,8 @@ bool unite_overlapping_islands(LoopRepair& r, const std::vector<const SegmentHit
     const std::int64_t id_b = cb.id;
     if (unite_islands(curves, loops[a], loops[b], r.polys[a], r.refs[a], r.polys[b], r.refs[b], pair, true)) {
       used[a] = used[b] = 1;
-      r.changes.whole[a] = r.changes.whole[b] = 1;
+      r.changes.whole_loop(a);
+      r.changes.whole_loop(b);
       united = true;
       r.log.push_back({RepairKind::UnitedIslands, rec_b, id_b, uv_to_lonlat(pair.front()->where), 0});
     }
@@ -691,7 +740,7 @@ bool cut_slivers(LoopRepair& r, const std::vector<const SegmentHit*>& stuck) {
         r.log.push_back({RepairKind::CutSliver, c.record, c.id, where, 0});
         cut = true;
         cut_loop[h->loop_a] = 1;
-        r.changes.whole[h->loop_a] = 1;
+        r.changes.whole_loop(h->loop_a);
         for (std::uint32_t ci : {r1.curve, r2.curve}) cut_curve[ci] = 1;
         for (std::uint32_t ci : left_loop) cut_curve[ci] = 1;
         left_loop.clear();

@@ -315,6 +315,7 @@ struct Span {
   std::uint32_t loop, seg;
   std::uint32_t next;   // the span starting where this one ends (index in the span list)
   double tol;
+  bool active;          // tested (SplineLoop::active)
 };
 
 }  // namespace
@@ -391,9 +392,10 @@ std::vector<HullOverlap> find_spline_crossings(std::span<const SplineLoop> loops
       fallback = 1e-7 * std::max(hi.x - lo.x, hi.y - lo.y);
     }
     auto tol_at = [&](std::uint32_t i) { return L.tol.size() == n ? L.tol[i] : fallback; };
+    auto active_at = [&](std::uint32_t i) { return L.active.size() != n || L.active[i] != 0; };
     const auto first = static_cast<std::uint32_t>(spans.size());
     auto add = [&](const Bez& b, std::uint32_t seg) {
-      Span sp{b, {}, {}, l, seg, kNone, tol_at(seg)};
+      Span sp{b, {}, {}, l, seg, kNone, tol_at(seg), active_at(seg)};
       box_of(b, sp.lo, sp.hi);
       spans.push_back(sp);
     };
@@ -434,12 +436,16 @@ std::vector<HullOverlap> find_spline_crossings(std::span<const SplineLoop> loops
     out.push_back(o);
   };
   for (const Span& s : spans) {
+    if (!s.active) continue;
     MeetContext cx{s.tol, kMeetBudget, {}};
     if (curve_meets_itself(s.b, cx)) found(s, s, cx.where);
   }
+  // Every span stays in the grid, so the pairs tested are visited in the order of a full
+  // search: the same records in the same order before the sort.
   for_box_pairs(spans, [&](std::uint32_t ia, std::uint32_t ib) {
     const Span& a = spans[ia];
     const Span& b = spans[ib];
+    if (!a.active && !b.active) return;
     MeetContext cx{std::min(a.tol, b.tol), kMeetBudget, {}};
     bool meet;
     if (a.next == ib && b.next == ia) {   // a loop of two spans: both ends joined

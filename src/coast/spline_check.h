@@ -24,6 +24,10 @@ struct SplineLoop {
   /// whose hulls still overlap count as meeting (find_spline_crossings). Empty: 1e-7 of
   /// the loop's extent.
   std::span<const double> tol{};
+  /// Per control point: whether the span following segment i (from point i to i+1) is
+  /// tested. Empty: every span. A pair of two untested spans is taken as not meeting: the
+  /// caller marks only the spans that changed since a check that found them apart.
+  std::span<const char> active{};
 };
 
 /// Two spans whose hulls overlap. A span is named by the control-polygon segment it
@@ -45,7 +49,9 @@ std::vector<HullOverlap> find_hull_overlaps(std::span<const SplineLoop> loops);
 /// decided by halving both cubic Bezier spans (de Casteljau) while their control hulls
 /// overlap (exact orient2d), down to the tolerance. Consecutive spans, which meet at their
 /// joint, are separate when the directions from the joint to their control points span
-/// disjoint angles. Sorted, each pair once.
+/// disjoint angles. Only pairs with an active span (SplineLoop::active) are decided, in the
+/// same order as with every span active, so the result is the full search's when no pair
+/// of two inactive spans meets. Sorted, each pair once.
 std::vector<HullOverlap> find_spline_crossings(std::span<const SplineLoop> loops);
 
 }  // namespace sm::coast

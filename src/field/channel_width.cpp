@@ -53,8 +53,6 @@ struct ChannelWidths::Impl {
   std::vector<double> s;                         // arc length from the chain's first sample
   std::vector<double> length;                    // per chain (closed: with the closing segment)
   std::vector<char> closed;
-  std::vector<Vec3> side;                        // unit normal to the coast in the surface (0: unknown)
-  std::vector<double> spacing;                   // larger of the two segments at the sample
   std::vector<double> w_pos, w_neg;              // width on the +side / -side, at most cap
   std::vector<int> water;                        // per chain: CoastChain::water_side (set-up only)
   double cap = kMaxLc;
@@ -63,10 +61,26 @@ struct ChannelWidths::Impl {
   // widths of its nearest sample and of one of that sample's neighbours along the
   // coast, so sample i carries the smallest of both sides' widths at i, prev and next.
   std::unique_ptr<MinGrid> narrowest;
+  // A flat model's normal is z; else the sphere's radial direction (the PolarSphere
+  // models are centred on the origin).
+  bool flat = true;
+
+  // The unit normal to the coast in the surface at sample i (0: unknown) and the larger
+  // of its two segments: computed where they are read, from the samples and their
+  // neighbours (the same expressions give the same bits), not held (32 bytes a sample).
+  Vec3 side(std::uint32_t i) const {
+    const Vec3& p = pts[i];
+    const Vec3 up = flat || norm(p) == 0 ? Vec3{0, 0, 1} : p / norm(p);
+    const Vec3 c = cross(up, pts[next[i]] - pts[prev[i]]);
+    return norm(c) > 0 ? c / norm(c) : Vec3{0, 0, 0};
+  }
+  double spacing(std::uint32_t i) const {
+    return std::max(norm(pts[next[i]] - pts[i]), norm(pts[i] - pts[prev[i]]));
+  }
 
   double width_at(std::uint32_t i, const Vec3& x) const {
-    const double off = dot(x - pts[i], side[i]);
-    if (std::fabs(off) <= kOnCoast * spacing[i]) return std::min(w_pos[i], w_neg[i]);
+    const double off = dot(x - pts[i], side(i));
+    if (std::fabs(off) <= kOnCoast * spacing(i)) return std::min(w_pos[i], w_neg[i]);
     return off > 0 ? w_pos[i] : w_neg[i];
   }
 };
@@ -107,24 +121,14 @@ ChannelWidths::ChannelWidths(std::vector<CoastChain> chains, double cap, int thr
   std::vector<CoastChain>().swap(chains);
   m.pts = m.own;
   const std::size_t n = m.pts.size();
-  // The surface's normal: a flat model's plane (z constant), else the sphere's
-  // radial direction (the PolarSphere models are centred on the origin).
+  // The surface's normal (Impl::side): a flat model's plane (z constant), else the
+  // sphere's radial direction.
   double zmin = std::numeric_limits<double>::infinity(), zmax = -zmin, ext = 0;
   for (const Vec3& p : m.pts) {
     zmin = std::min(zmin, p.z), zmax = std::max(zmax, p.z);
     ext = std::max({ext, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
   }
-  const bool flat = n == 0 || zmax - zmin <= 1e-12 * std::max(ext, 1e-300);
-  m.side.resize(n);
-  m.spacing.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3& p = m.pts[i];
-    const Vec3 up = flat || norm(p) == 0 ? Vec3{0, 0, 1} : p / norm(p);
-    const Vec3 t = m.pts[m.next[i]] - m.pts[m.prev[i]];
-    const Vec3 c = cross(up, t);
-    m.side[i] = norm(c) > 0 ? c / norm(c) : Vec3{0, 0, 0};
-    m.spacing[i] = std::max(norm(m.pts[m.next[i]] - p), norm(p - m.pts[m.prev[i]]));
-  }
+  m.flat = n == 0 || zmax - zmin <= 1e-12 * std::max(ext, 1e-300);
   if (!(m.cap > 0)) m.cap = 0;
   m.w_pos.assign(n, m.cap);
   m.w_neg.assign(n, m.cap);
@@ -135,7 +139,7 @@ ChannelWidths::ChannelWidths(std::vector<CoastChain> chains, double cap, int thr
   // Each sample's search reads the tree and writes only its own widths: samples are
   // independent, so chunks of them run on `threads` threads with the same result.
   const auto search = [&m](std::size_t i) {
-    const Vec3 p = m.pts[i], side = m.side[i];
+    const Vec3 p = m.pts[i], side = m.side(static_cast<std::uint32_t>(i));
     double wp = m.w_pos[i], wn = m.w_neg[i];
     // Where the water side is known, the land side is not searched: it stays at 0
     // during the search (so that it does not hold the bound up) and gets the water
@@ -184,7 +188,8 @@ ChannelWidths::ChannelWidths(std::vector<CoastChain> chains, double cap, int thr
     least[i] = std::min({m.w_pos[i], m.w_neg[i], m.w_pos[m.prev[i]], m.w_neg[m.prev[i]], m.w_pos[m.next[i]],
                          m.w_neg[m.next[i]]});
   // Level-0 cells of about the median spacing: finer cells would only hold one sample.
-  std::vector<double> gaps = m.spacing;
+  std::vector<double> gaps(n);
+  for (std::size_t i = 0; i < n; ++i) gaps[i] = m.spacing(static_cast<std::uint32_t>(i));
   std::nth_element(gaps.begin(), gaps.begin() + static_cast<long>(n / 2), gaps.end());
   m.narrowest = std::make_unique<MinGrid>(m.pts, least, gaps[n / 2]);
 }

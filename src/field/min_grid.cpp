@@ -24,6 +24,12 @@ constexpr double kMargin = 1e-9;
 
 std::int64_t cell_of(double offset, double cell) { return static_cast<std::int64_t>(std::floor(offset / cell)); }
 
+// The largest float not above v (v itself when a float holds it; NaN stays NaN).
+float float_at_most(double v) {
+  const float f = static_cast<float>(v);
+  return static_cast<double>(f) > v ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+}
+
 }  // namespace
 
 std::uint64_t MinGrid::key(int level, std::int64_t i, std::int64_t j, std::int64_t k) const {
@@ -91,14 +97,14 @@ MinGrid::MinGrid(std::span<const Vec3> pts, std::span<const double> value, doubl
     std::size_t slot = static_cast<std::size_t>((k * 0x9E3779B97F4A7C15ull) >> shift_);
     while (keys_[slot] != kEmpty) slot = (slot + 1) & (capacity - 1);
     keys_[slot] = k;
-    minima_[slot] = v;
+    minima_[slot] = float_at_most(v);
   }
 }
 
 double MinGrid::find(std::uint64_t k) const {
   const std::size_t mask = keys_.size() - 1;
   for (std::size_t slot = static_cast<std::size_t>((k * 0x9E3779B97F4A7C15ull) >> shift_);; slot = (slot + 1) & mask) {
-    if (keys_[slot] == k) return minima_[slot];
+    if (keys_[slot] == k) return static_cast<double>(minima_[slot]);
     if (keys_[slot] == kEmpty) return std::numeric_limits<double>::infinity();
   }
 }

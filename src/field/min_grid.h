@@ -39,7 +39,9 @@ class MinGrid {
   int levels_ = 0;
   std::size_t entries_ = 0;
   std::vector<std::uint64_t> keys_;  // open addressing, linear probing; kEmpty marks a free slot
-  std::vector<double> minima_;
+  // Each cell's minimum rounded down to a float: still a lower bound (half the bytes of
+  // a double, where a query needs a bound and not the value).
+  std::vector<float> minima_;
   int shift_ = 64;
 };
 

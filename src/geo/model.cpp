@@ -514,8 +514,9 @@ GeoStatus Model::add_plane_surface(int tag, const std::vector<int>& loops) {
       // outer loop there. Holes all beyond it (benchmarks/2d/world.geo: a small outer loop
       // round the plane's origin, the continents around it) mean the sea on the other side,
       // which holds the projection pole, the plane's infinity, where no face can reach.
-      // Gmsh 4.8.4 reports nothing and meshes only the inside of the outer loop
-      // (docs/language.md): it stays our error, said so.
+      // Gmsh 4.8.4 reports nothing and meshes the inside of one of the loops that no other
+      // encloses, whichever its Delaunay edge list meets first, not the first listed
+      // (docs/language.md): no rule of the script's own picks it, so it stays our error.
       const bool pole_side = g && g->polar() && first.crossing.empty() && first.outside.size() + 1 == loops.size();
       const std::size_t bad = first.outside.empty() ? first.crossing.front() : first.outside.front();
       const int l = std::abs(loops[bad]);

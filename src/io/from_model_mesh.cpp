@@ -20,8 +20,9 @@ constexpr std::uint32_t kDropped = 0xFFFFFFFFu;
 // the points that no kept curve or face uses, are removed; then the nodes are
 // renumbered 0.. in entity order ((dim, tag), each entity's own nodes in order), keeping
 // only the nodes some kept entity owns. Returns old node -> new node (kDropped: gone).
-std::vector<std::uint32_t> keep_mesh_only(const geo::Model& model, MeshModel& out) {
-  std::vector<char> in_2d(out.xyz.size(), 0);
+std::vector<std::uint32_t> keep_mesh_only(const geo::Model& model, const std::vector<MeshNode>& nodes,
+                                          MeshModel& out) {
+  std::vector<char> in_2d(nodes.size(), 0);
   std::set<int> meshed_surfaces;
   for (const EntityMesh& e : out.entities)
     if (e.dim == 2 && !e.connectivity.empty()) {
@@ -35,7 +36,7 @@ std::vector<std::uint32_t> keep_mesh_only(const geo::Model& model, MeshModel& ou
         if (const geo::ModelCurveLoop* loop = model.curve_loop(std::abs(l)))
           for (int c : loop->curves) bounding.insert(std::abs(c));
   std::vector<char> dropped_entity(out.entities.size(), 0);
-  std::vector<char> on_dropped(out.xyz.size(), 0);
+  std::vector<char> on_dropped(nodes.size(), 0);
   for (std::size_t i = 0; i < out.entities.size(); ++i) {
     const EntityMesh& e = out.entities[i];
     if (e.dim != 1 || e.connectivity.empty() || !bounding.count(e.tag)) continue;
@@ -52,7 +53,7 @@ std::vector<std::uint32_t> keep_mesh_only(const geo::Model& model, MeshModel& ou
   // Gmsh writes every model point (a circle's centre in its benchmarks transfinite_b.geo
   // and transf_complex.geo). A point in a physical group stays (it was asked for by name,
   // as Gmsh writes it), unless it ended a dropped curve.
-  std::vector<char> used_by_kept(out.xyz.size(), 0);
+  std::vector<char> used_by_kept(nodes.size(), 0);
   for (std::size_t i = 0; i < out.entities.size(); ++i)
     if (!dropped_entity[i] && out.entities[i].dim > 0)
       for (std::uint32_t v : out.entities[i].connectivity) used_by_kept[v] = 1;
@@ -69,29 +70,29 @@ std::vector<std::uint32_t> keep_mesh_only(const geo::Model& model, MeshModel& ou
     if (!dropped_entity[i]) kept.push_back(std::move(out.entities[i]));
   out.entities = std::move(kept);
 
-  std::vector<std::uint32_t> index(out.xyz.size(), kDropped);
-  std::vector<Vec3> xyz;
-  xyz.reserve(out.xyz.size());
-  for (std::size_t i : entity_order(out))
+  // The points straight from the ModelMesh's nodes, counted first so that the array is
+  // sized once: no second copy of every point beside it at the writing's peak.
+  std::vector<std::uint32_t> index(nodes.size(), kDropped);
+  std::size_t kept_nodes = 0;
+  const std::vector<std::size_t> order = entity_order(out);
+  for (std::size_t i : order)
     for (std::uint32_t v : out.entities[i].nodes)
-      if (index[v] == kDropped) {
-        index[v] = static_cast<std::uint32_t>(xyz.size());
-        xyz.push_back(out.xyz[v]);
-      }
+      if (index[v] == kDropped) index[v] = static_cast<std::uint32_t>(kept_nodes++);
+  out.xyz.resize(kept_nodes);
+  for (std::size_t v = 0; v < nodes.size(); ++v)
+    if (index[v] != kDropped) out.xyz[index[v]] = nodes[v].xyz;
   for (EntityMesh& e : out.entities) {
     for (std::uint32_t& v : e.nodes) v = index[v];
     for (std::uint32_t& v : e.connectivity) v = index[v];   // every used node is owned (validate_mesh_model)
   }
-  out.xyz = std::move(xyz);
   return index;
 }
 
 }  // namespace
 
-MeshModel from_model_mesh(const geo::Model& model, const ModelMesh& mesh, std::vector<std::uint32_t>* node_index) {
-  MeshModel out;
-  out.xyz.reserve(mesh.nodes.size());
-  for (const MeshNode& n : mesh.nodes) out.xyz.push_back(n.xyz);
+MeshModel from_model_mesh(const geo::Model& model, const ModelMesh& mesh, std::vector<std::uint32_t>* node_index,
+                          bool parametric) {
+  MeshModel out;   // its points are filled last, by keep_mesh_only
   // (dim, |entity tag|) -> physical tags, ascending and without repeats.
   std::map<std::pair<int, int>, std::vector<int>> groups_of;
   // A group keeps the tags of deleted entities (geo/model_edit.cpp): only the existing ones
@@ -129,7 +130,7 @@ MeshModel from_model_mesh(const geo::Model& model, const ModelMesh& mesh, std::v
     if (mc) e.boundary = {mc->begin, -mc->end};
     for (std::size_t k = 1; k + 1 < c.nodes.size(); ++k) {
       e.nodes.push_back(c.nodes[k]);
-      e.params.push_back(c.t[k]);
+      if (parametric) e.params.push_back(c.t[k]);
     }
     e.connectivity.reserve(2 * c.num_edges());
     for (std::size_t k = 0; k + 1 < c.nodes.size(); ++k) {
@@ -148,10 +149,15 @@ MeshModel from_model_mesh(const geo::Model& model, const ModelMesh& mesh, std::v
     if (it != mesh.surfaces.end()) {
       const SurfaceMesh& sm = it->second;
       e.nodes = sm.interior_nodes;
-      const bool uv = std::all_of(sm.interior_nodes.begin(), sm.interior_nodes.end(),
+      const bool uv = parametric && std::all_of(sm.interior_nodes.begin(), sm.interior_nodes.end(),
                                   [&](std::uint32_t n) { return mesh.nodes[n].has_uv; });
-      if (uv)
+      // Sized once (grown by doubling, the last growth held the old array and one twice
+      // its size at once: up to 36 bytes a triangle for 12).
+      if (uv) {
+        e.params.reserve(2 * sm.interior_nodes.size());
         for (std::uint32_t n : sm.interior_nodes) e.params.insert(e.params.end(), {mesh.nodes[n].uv.x, mesh.nodes[n].uv.y});
+      }
+      e.connectivity.reserve(3 * sm.triangles.size());
       for (const auto& t : sm.triangles) e.connectivity.insert(e.connectivity.end(), t.begin(), t.end());
       if (!sm.quads.empty()) {
         // Quadrangles only: the entity's one block is theirs. Both kinds: a second record of
@@ -190,7 +196,7 @@ MeshModel from_model_mesh(const geo::Model& model, const ModelMesh& mesh, std::v
   // The discrete surfaces of a merged mesh (mesh/discrete_mesh.h): elements, no loops.
   for (const auto& [tag, s] : mesh.surfaces)
     if (!model.surface(tag)) add_surface(tag, {});
-  std::vector<std::uint32_t> index = keep_mesh_only(model, out);
+  std::vector<std::uint32_t> index = keep_mesh_only(model, mesh.nodes, out);
   // The periodic correspondences whose entities and nodes are all kept.
   std::set<std::pair<int, int>> kept;
   for (const EntityMesh& e : out.entities) kept.insert({e.dim, e.tag});

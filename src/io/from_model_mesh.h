@@ -28,7 +28,10 @@ namespace sm::io {
 /// of the .msh, fort.14 and hgrid.gr3 and node i of VTK, UGRID and the Python arrays.
 /// `node_index`, when given, receives ModelMesh node -> MeshModel node (0xFFFFFFFF: left
 /// out), for what is built from the ModelMesh directly (the ocean grids' boundary strings).
+/// Without `parametric` the entities get no parametric coordinates (EntityMesh::params
+/// empty), for a file that will not hold them (MSH without Mesh.SaveParametric, every
+/// other format): 16 bytes a surface node less at the writing's peak.
 MeshModel from_model_mesh(const geo::Model& model, const ModelMesh& mesh,
-                          std::vector<std::uint32_t>* node_index = nullptr);
+                          std::vector<std::uint32_t>* node_index = nullptr, bool parametric = true);
 
 }  // namespace sm::io

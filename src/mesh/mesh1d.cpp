@@ -144,8 +144,8 @@ CurvePrimitive integrate_curve(const geo::Curve& c, const CurveSizeFn& size, dou
   }
   if (smooth_ratio > 1) smooth_sizes(t, xp, f, std::sqrt(smooth_ratio));
   out.t = std::move(t);
-  // Grown pass by pass, t has up to twice its size in capacity: every curve's primitive is
-  // held until the nodes are placed (the 1D peak at 3 km on the full GSHHG).
+  // Grown pass by pass, t has up to twice its size in capacity: a curve's primitive may be
+  // held until every count is checked (mesh1d.cpp's take_parameters).
   out.t.shrink_to_fit();
   out.a.resize(out.t.size());
   out.a[0] = 0;
@@ -368,9 +368,16 @@ struct CurvePlan {
   bool moves_vertex = false;
   std::optional<double> lc0, lc1;
   double stretch = 1;
+  // The size integral's samples, freed once the node parameters are taken from them
+  // (take_parameters); its total and evaluations are kept apart for the budget check.
   CurvePrimitive prim;
+  double total = 0;
+  std::uint64_t evaluations = 0;
   int min_segs = 1;
   double nodes = 0;
+  bool in_compound = false;  // a `Compound Curve` member: plan_compounds reads its primitive
+  bool parameters_taken = false;  // ts (and coarse_ts) hold the primitive's placement
+  std::vector<double> coarse_ts;  // the coarse mesh's parameters, when taken early
   MeshError error;            // no shape, no end point
   std::exception_ptr thrown;  // from the background field
   std::vector<double> ts;     // the nodes' parameters, first 0 and last 1
@@ -497,6 +504,11 @@ std::vector<CurvePlan> make_plans(const geo::Model& model, const Mesh1dOptions& 
   std::vector<CurvePlan> plans;
   plans.reserve(model.curves().size());
   const std::vector<int> odd_curves = odd_count_curves(model, opt);
+  std::vector<int> compound_members;
+  if (opt.constraints)
+    for (const std::vector<int>& group : opt.constraints->compound_curves)
+      for (int c : group) compound_members.push_back(std::abs(c));
+  std::sort(compound_members.begin(), compound_members.end());
   for (const auto& [tag, mc] : model.curves()) {
     CurvePlan& cp = plans.emplace_back();
     cp.tag = tag;
@@ -507,6 +519,7 @@ std::vector<CurvePlan> make_plans(const geo::Model& model, const Mesh1dOptions& 
         cp.transfinite = &it->second;
     cp.odd = !cp.transfinite && std::binary_search(odd_curves.begin(), odd_curves.end(), tag);
     cp.collapsed = std::binary_search(collapsed.begin(), collapsed.end(), tag);
+    cp.in_compound = std::binary_search(compound_members.begin(), compound_members.end(), tag);
   }
   return plans;
 }
@@ -539,6 +552,22 @@ auto curve_size(const Mesh1dOptions& opt, double bbox, const CurvePlan& cp) {
       h[i] = cp.stretch * field::final_size(opt.size, q).size;
     }
   };
+}
+
+// Every curve's primitive was held until the budget check, and with it the 1D peak (16
+// bytes a sample, about 8 samples a node on the full GSHHG at 3 km; docs/kernel.md,
+// "Memory"). A curve whose count is known needs only the parameters place_plan and
+// coarse_mesh take from it: they are taken now and the primitive freed, where they are
+// no larger than it (so a count beyond the budget still costs no more than its samples).
+// A layered curve or a compound's member reads its primitive later: kept.
+void take_parameters(const Mesh1dOptions& opt, CurvePlan& cp) {
+  const bool layered = !cp.layer_begin.empty() || !cp.layer_end.empty();
+  if (layered || cp.in_compound || !(cp.nodes <= static_cast<double>(cp.prim.t.size()))) return;
+  const int n = static_cast<int>(cp.nodes);
+  if (opt.max_elements > 0 && opt.coarse_check) cp.coarse_ts = place_n_nodes(cp.prim, std::min(n, kCoarseCurveNodes));
+  cp.ts = place_n_nodes(cp.prim, n);
+  cp.parameters_taken = true;
+  cp.prim = {};
 }
 
 // Curve cp's size integral, hence its node count (its error or exception kept in it).
@@ -579,10 +608,13 @@ void integrate_plan(const geo::Model& model, const Mesh1dOptions& opt, double bb
     return;
   }
   cp.min_segs = min_segments(shape, opt);
+  cp.total = cp.prim.total();
+  cp.evaluations = cp.prim.evaluations;
   cp.nodes = node_count(cp.prim, cp.min_segs);
   plan_layer_points(model, opt, cp);
   if (!cp.layer_begin.empty() || !cp.layer_end.empty()) cp.nodes += static_cast<double>(cp.layer_begin.size() + cp.layer_end.size());
   if (cp.odd && cp.nodes <= kMaxCurveNodes - 1 && std::fmod(cp.nodes, 2.0) == 0) cp.nodes += 1;
+  take_parameters(opt, cp);
 }
 
 // The node counts in tag order (errors and exceptions of the integration taken up there,
@@ -601,8 +633,8 @@ bool check_node_budget(std::vector<CurvePlan>& plans, const Mesh1dOptions& opt, 
       res.error = std::move(cp.error);
       return false;
     }
-    res.stats.size_evaluations += cp.prim.evaluations;
-    if (!std::isfinite(cp.prim.total())) {
+    res.stats.size_evaluations += cp.evaluations;
+    if (!std::isfinite(cp.total)) {
       res.error = make_error(
           MeshErrorKind::Invalid, tag, tag,
           fmt::format("curve {}: the size integral is not finite (a size of zero or a degenerate curve)", tag));
@@ -654,8 +686,9 @@ ModelMesh coarse_mesh(const std::vector<CurvePlan>& plans, const Mesh1dOptions& 
       coarse.curves.emplace(cp.tag, std::move(cm));
       continue;
     }
-    cm.t = cp.transfinite ? transfinite_parameters(shape, *cp.transfinite)
-                          : place_n_nodes(cp.prim, static_cast<int>(std::min<double>(cp.nodes, kCoarseCurveNodes)));
+    cm.t = cp.transfinite       ? transfinite_parameters(shape, *cp.transfinite)
+           : cp.parameters_taken ? cp.coarse_ts
+                                 : place_n_nodes(cp.prim, static_cast<int>(std::min<double>(cp.nodes, kCoarseCurveNodes)));
     cm.nodes.push_back(coarse.vertex_node.at(cp.mc->begin));
     const bool uv = shape.on_surface();
     for (std::size_t i = 1; i + 1 < cm.t.size(); ++i)
@@ -697,8 +730,10 @@ void place_plan(const geo::Model& model, const Mesh1dOptions& opt, double bbox, 
   std::vector<double> ts = cp.compound_ts  ? std::move(*cp.compound_ts)
                            : cp.transfinite ? transfinite_parameters(shape, *cp.transfinite)
                            : layered        ? layered_parameters(cp, norm(model.vertex(mc.end)->xyz - vb->xyz))
+                           : cp.parameters_taken ? std::move(cp.ts)
                                             : place_n_nodes(cp.prim, static_cast<int>(cp.nodes));
   cp.prim = {};  // not needed any more: its samples are the largest part of a plan
+  cp.coarse_ts = {};
   // Gmsh's filterPoints: an interior node closer than 0.3 h to the previous node kept
   // (noisy curves, tight turns) is dropped, unless that leaves fewer than the minimum.
   // Sizes come one at a time (each depends on the node kept before), so first a batch

@@ -3,6 +3,7 @@
 #include "mesh/mesh_stats.h"
 
 #include <algorithm>
+#include <bit>
 #include <limits>
 #include <cmath>
 #include <map>
@@ -19,27 +20,41 @@ namespace sm {
 
 namespace {
 
-// The q-quantile of `v` (linear between the two order statistics around q (n - 1)), as
-// from the sorted values; `v` is reordered. Selection instead of a sort: linear in the
-// edges, where sorting the 2.9 million of the 3 km world took a tenth of the statistics.
-double quantile(std::vector<double>& v, double q) {
+// A length ratio kept as its bits: a ratio is a length over a positive size, >= 0, and
+// non-negative doubles (+0 to +inf) order as their bit patterns do as unsigned integers, so
+// selection among the bits picks the same order statistics as among the doubles.
+double ratio_of(std::uint64_t bits) { return std::bit_cast<double>(bits); }
+std::uint64_t bits_of(double ratio) { return std::bit_cast<std::uint64_t>(ratio); }
+
+// The q-quantile of the ratios whose bits are `v` (linear between the two order statistics
+// around q (n - 1)), as from the sorted values; `v` is reordered. Selection instead of a
+// sort: linear in the edges, where sorting the 2.9 million of the 3 km world took a tenth
+// of the statistics.
+double quantile(std::vector<std::uint64_t>& v, double q) {
   if (v.empty()) return 0;
   const double pos = q * static_cast<double>(v.size() - 1);
   const std::size_t i = static_cast<std::size_t>(pos);
   const double f = pos - static_cast<double>(i);
   const auto at = v.begin() + static_cast<std::ptrdiff_t>(i);
   std::nth_element(v.begin(), at, v.end());
-  if (i + 1 >= v.size()) return *at;
+  if (i + 1 >= v.size()) return ratio_of(*at);
   // The next order statistic: the smallest of those after the i-th.
-  const double next = *std::min_element(at + 1, v.end());
-  return *at * (1 - f) + next * f;
+  const double next = ratio_of(*std::min_element(at + 1, v.end()));
+  return ratio_of(*at) * (1 - f) + next * f;
 }
 
 }  // namespace
 
 namespace {
 
-using EdgeKey = std::pair<std::uint32_t, std::uint32_t>;
+// An edge as one integer, its smaller node in the high half: the keys order as the
+// (smaller, larger) pairs do.
+using EdgeKey = std::uint64_t;
+EdgeKey undirected_key(std::uint32_t a, std::uint32_t b) {
+  return std::uint64_t{std::min(a, b)} << 32 | std::max(a, b);
+}
+std::uint32_t smaller_node(EdgeKey k) { return static_cast<std::uint32_t>(k >> 32); }
+std::uint32_t larger_node(EdgeKey k) { return static_cast<std::uint32_t>(k); }
 
 // The statistics with size_of[k] the target size of the k-th surface in tag order (null:
 // none), on `threads` threads (the same figures for any count). Surfaces are measured one
@@ -60,8 +75,19 @@ MeshStats compute_stats(const ModelMesh& mesh, const std::vector<const SizeAt3*>
   double sum = 0, quad_sum = 0;
   std::uint64_t good = 0, in_range = 0;
   s.min_rho = 1;
-  std::vector<EdgeKey> edges, border, seen_border, merged;
-  std::vector<double> ratio;
+  std::vector<EdgeKey> border, seen_border, merged;
+  // One array for the edges and their length ratios: the bits of the ratios of the
+  // surfaces measured so far (bits_of), then the current surface's edge keys, each
+  // replaced by its ratio's bits once measured. Sized once for every side of the sized
+  // surfaces, 8 bytes a side: the ratios in an array of their own beside the keys were
+  // another 8 bytes an edge at the statistics' peak (the run's, on the largest meshes).
+  std::vector<std::uint64_t> slots;
+  {
+    std::size_t sides = 0, index = 0;
+    for (const auto& [tag, sf] : mesh.surfaces)
+      if (index < size_of.size() && size_of[index++]) sides += 3 * sf.triangles.size() + 4 * sf.quads.size();
+    slots.reserve(sides);
+  }
   // The qualities are measured a block of triangles at a time: a slot per triangle of the
   // surface was 8 bytes a triangle at the statistics' peak (the ten-million-triangle run's).
   constexpr std::size_t kBatch = 4096, kRhoChunk = 1 << 14, kRhoBlock = 64 * kRhoChunk;
@@ -105,14 +131,12 @@ MeshStats compute_stats(const ModelMesh& mesh, const std::vector<const SizeAt3*>
     }
     if (!size) continue;
     s.has_sizes = true;
-    edges.clear();
-    // Sized once: grown by doubling the array (8 bytes a side) would hold twice the
-    // sides, an old copy beside it, at the statistics' peak (the run's, on the examples).
-    edges.reserve(3 * sf.triangles.size() + 4 * sf.quads.size());
+    const std::size_t first = slots.size();
     for (const auto& t : sf.triangles)
-      for (int e = 0; e < 3; ++e) edges.push_back(std::minmax(t[e], t[(e + 1) % 3]));
+      for (int e = 0; e < 3; ++e) slots.push_back(undirected_key(t[e], t[(e + 1) % 3]));
     for (const auto& q : sf.quads)
-      for (int e = 0; e < 4; ++e) edges.push_back(std::minmax(q[e], q[(e + 1) % 4]));
+      for (int e = 0; e < 4; ++e) slots.push_back(undirected_key(q[e], q[(e + 1) % 4]));
+    const std::span<EdgeKey> edges(slots.data() + first, slots.size() - first);
     std::sort(edges.begin(), edges.end());
     // Edges in one triangle only (the border), then each distinct edge once, less those
     // an earlier surface measured.
@@ -125,28 +149,30 @@ MeshStats compute_stats(const ModelMesh& mesh, const std::vector<const SizeAt3*>
       if (!std::binary_search(seen_border.begin(), seen_border.end(), edges[r])) edges[w++] = edges[r];
       r = q;
     }
-    edges.resize(w);
+    slots.resize(first + w);
+    const std::span<EdgeKey> distinct(slots.data() + first, w);
     merged.resize(seen_border.size() + border.size());
     std::merge(seen_border.begin(), seen_border.end(), border.begin(), border.end(), merged.begin());
     merged.erase(std::unique(merged.begin(), merged.end()), merged.end());
     seen_border.swap(merged);
     // The sizes at the midpoints in batches of fixed bounds on `threads` threads (the size
-    // function is thread-safe, Mesh2dResult::target_sizes), each ratio in its edge's slot.
-    const std::size_t first = ratio.size();
-    ratio.resize(first + edges.size());
-    const std::size_t batches = (edges.size() + kBatch - 1) / kBatch;
+    // function is thread-safe, Mesh2dResult::target_sizes), each ratio in its edge's slot
+    // (a batch reads its keys before it writes its ratios, and no other batch reads them).
+    const std::size_t batches = (w + kBatch - 1) / kBatch;
     std::vector<std::uint64_t> batch_in_range(batches, 0);
-    parallel_for_chunks(threads, edges.size(), kBatch, [&](std::size_t begin, std::size_t end) {
+    parallel_for_chunks(threads, w, kBatch, [&](std::size_t begin, std::size_t end) {
       std::vector<Vec3> mid(end - begin);
-      std::vector<double> h(end - begin);
-      for (std::size_t k = begin; k < end; ++k)
-        mid[k - begin] = 0.5 * (mesh.nodes[edges[k].first].xyz + mesh.nodes[edges[k].second].xyz);
+      std::vector<double> h(end - begin), len(end - begin);
+      for (std::size_t k = begin; k < end; ++k) {
+        const Vec3 a = mesh.nodes[smaller_node(distinct[k])].xyz, b = mesh.nodes[larger_node(distinct[k])].xyz;
+        mid[k - begin] = 0.5 * (a + b);
+        len[k - begin] = norm(a - b);
+      }
       (*size)(mid, h);
       std::uint64_t in = 0;
       for (std::size_t k = begin; k < end; ++k) {
-        const double len = norm(mesh.nodes[edges[k].first].xyz - mesh.nodes[edges[k].second].xyz);
-        const double r = len / h[k - begin];
-        ratio[first + k] = r;
+        const double r = len[k - begin] / h[k - begin];
+        distinct[k] = bits_of(r);
         if (r >= 0.7 && r <= 1.4) ++in;
       }
       batch_in_range[begin / kBatch] = in;
@@ -166,12 +192,12 @@ MeshStats compute_stats(const ModelMesh& mesh, const std::vector<const SizeAt3*>
     s.share_rho_09 = static_cast<double>(good) / static_cast<double>(s.triangles);
   }
   if (!s.has_sizes) return s;
-  s.edges = ratio.size();
-  if (ratio.empty()) return s;
-  s.share_len_07_14 = static_cast<double>(in_range) / static_cast<double>(ratio.size());
-  s.len_median = quantile(ratio, 0.5);
-  s.len_p05 = quantile(ratio, 0.05);
-  s.len_p95 = quantile(ratio, 0.95);
+  s.edges = slots.size();   // every slot holds a ratio now
+  if (slots.empty()) return s;
+  s.share_len_07_14 = static_cast<double>(in_range) / static_cast<double>(slots.size());
+  s.len_median = quantile(slots, 0.5);
+  s.len_p05 = quantile(slots, 0.05);
+  s.len_p95 = quantile(slots, 0.95);
   return s;
 }
 

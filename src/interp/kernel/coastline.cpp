@@ -408,6 +408,7 @@ coast::Coastline read_shoreline(CoastImportWork& w) {
   gopt.antarctica_level = io.antarctica_level;
   gopt.min_area_km2 = io.coarsen.min_area_km2;
   gopt.region = io.region;
+  gopt.threads = io.threads;
   const std::string path =
       !w.set.file_name.empty() ? w.set.file_name : coast::gshhg_binned_file(w.set.resolution.front());
   auto data = coast::read_coastline(*coast::parse_coast_format(w.d.format), path, w.set.loops2, gopt);

@@ -595,8 +595,10 @@ std::string save_mesh(Interpreter& in, const std::string& path, const std::strin
   const KernelState& k = in.kernel();
   const ModelMesh empty;
   std::vector<std::uint32_t> node_index;   // ModelMesh -> mm node, for the ocean grids' boundary strings
-  io::MeshModel mm = io::from_model_mesh(k.model, k.mesh ? *k.mesh : empty, &node_index);
   const Options& o = in.options();
+  // The parametric coordinates only for a file that holds them (MSH's, with the option).
+  io::MeshModel mm = io::from_model_mesh(k.model, k.mesh ? *k.mesh : empty, &node_index,
+                                         o.number("Mesh.SaveParametric") != 0);
   const io::OutputFormat* f = nullptr;
   if (format.empty()) {
     std::string why;
@@ -638,6 +640,7 @@ std::string save_mesh(Interpreter& in, const std::string& path, const std::strin
       if (std::string why = apply_node_coordinates(in, mm); !why.empty()) return why;
       break;
   }
+  node_index = {};   // read by the ocean grids' options only: not held through the writing
   if (settings.partition) aligned = io::aligned_partition(*k.partition, mm);
   settings.binary = o.number("Mesh.Binary") != 0;
   settings.save_all = o.number("Mesh.SaveAll") != 0;

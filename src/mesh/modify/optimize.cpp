@@ -6,6 +6,8 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <tuple>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -61,6 +63,7 @@ class Optimizer {
       : m_(m), fixed_count_(fixed_count), opt_(opt), space_(static_cast<bool>(opt.to_space)) {
     if (space_) xyz_.resize(m.num_vertices()), have_xyz_.assign(m.num_vertices(), 0);
     tri_mark_.assign(m.num_slots(), 0);
+    changed_.assign(m.num_vertices(), 0);
     vert_stamp_.assign(m.num_vertices(), 0);
     stuck_.assign(m.num_vertices(), 0);
   }
@@ -136,9 +139,16 @@ class Optimizer {
   void mark(std::uint32_t t) {
     if (!tri_mark_[t]) tri_mark_[t] = 1, touched_.push_back(t);
   }
-  // Triangle t changed (flip, a corner moved): measured again, corners smoothed again.
+  // Triangle t changed (flip, a corner moved): measured again, corners smoothed again, and
+  // their stars changed now (every change of a star, or of a position in it, touches a
+  // triangle of the star: a move touches the mover's star, a flip its two new triangles).
   void touch(std::uint32_t t) {
-    for (std::uint32_t e = 0; e < 3; ++e) stuck_[m_.vertex(TriId{t}, e).value] = 0;
+    ++clock_;
+    for (std::uint32_t e = 0; e < 3; ++e) {
+      const std::uint32_t v = m_.vertex(TriId{t}, e).value;
+      stuck_[v] = 0;
+      changed_[v] = clock_;
+    }
     mark(t);
   }
 
@@ -372,10 +382,26 @@ class Optimizer {
     return {mn, good};
   }
 
+  // Whether triangle t (its corners among vs) keeps every corner fixed through a compound
+  // change's sweeps and has a rho below q: region_quality then measures it again in the
+  // same slot, corners in the same order (the same double), so the change's worst rho
+  // stays below q whatever the sweeps do. Round a dam or a coast edge much shorter than
+  // its neighbours most quads are so (docs/benchmarks.md: the deviation bound's extra
+  // closures); deciding it before the sweeps leaves only the failure's traces to make.
+  bool pinned_below(std::uint32_t t, const std::array<VertexId, 4>& vs, const std::array<bool, 4>& free, double q) {
+    for (std::uint32_t e = 0; e < 3; ++e)
+      for (std::size_t i = 0; i < 4; ++i)
+        if (free[i] && m_.vertex(TriId{t}, e) == vs[i]) return false;
+    return tri_quality(TriId{t}) < q;
+  }
+
   // Flips s even when that alone does not help, then moves the four corners of the quad
   // (two sweeps, no sacrifice); kept only when the worst rho round them rises and no
   // triangle drops below kGood, otherwise undone exactly (positions, then the flip back).
   // Escapes the local optima of single moves where a vertex has one neighbour too many.
+  // A change that pinned_below shows to fail, or that failed before with nothing round it
+  // changed since, makes only the failure's traces (the flip, the positions written back,
+  // the flip back that exchanges the two slots, the marks).
   bool try_compound(Side s, OptimizeStats& st) {
     const Side o = m_.twin[s.value];
     if (!o.valid() || m_.constrained(s)) return false;
@@ -383,34 +409,58 @@ class Optimizer {
     if (orient2d(m_.pos(vs[2]), m_.pos(vs[0]), m_.pos(vs[3])) != Sign::Positive ||
         orient2d(m_.pos(vs[3]), m_.pos(vs[1]), m_.pos(vs[2])) != Sign::Positive)
       return false;
-    const auto [q0, g0] = region_quality(vs, tri_of(s).value, tri_of(o).value, region_q0_);
+    // The change reads the stars of the quad's corners and the points in them only; it
+    // failed on this edge (the same corners in the same roles) before, and none of those
+    // stars changed since: it fails again.
+    const std::uint64_t key = (std::uint64_t{vs[0].value} << 32) | vs[1].value;
+    const auto known = failed_.find(key);
+    const bool repeat = known != failed_.end() && std::max({changed_[vs[0].value], changed_[vs[1].value],
+                                                            changed_[vs[2].value], changed_[vs[3].value]}) <= known->second;
+    double q0 = 0;
+    int g0 = 0;
+    if (!repeat) std::tie(q0, g0) = region_quality(vs, tri_of(s).value, tri_of(o).value, region_q0_);
     std::array<Vec2, 4> old_xy;
     for (std::size_t i = 0; i < 4; ++i) old_xy[i] = m_.pos(vs[i]);
     const Side n = m_.flip(s);
-    strict_ = true;
-    for (int sweep = 0; sweep < 2; ++sweep)
-      for (VertexId v : vs) {
-        if (!gather_star(v)) continue;
-        double best = 0;
-        int good = 0;
-        const Vec2 p = optimise_position(m_.pos(v), best, good, st);
-        m_.will_change_vertex(v);
-        m_.xy[v.value] = p;
-        if (space_) xyz_[v.value] = opt_.to_space(p), have_xyz_[v.value] = 1;
+    // Only the corners free after the flip move (whether a vertex is free depends on the
+    // edges round it, which the sweeps do not change).
+    std::array<bool, 4> free{};
+    if (!repeat)
+      for (std::size_t i = 0; i < 4; ++i) free[i] = gather_star(vs[i]);
+    ++st.compound_tried;
+    if (repeat) {
+      ++st.compound_repeated;
+    } else if (pinned_below(tri_of(n).value, vs, free, q0) ||
+               pinned_below(tri_of(m_.twin[n.value]).value, vs, free, q0)) {
+      ++st.compound_pinned;
+    } else {
+      strict_ = true;
+      for (int sweep = 0; sweep < 2; ++sweep)
+        for (std::size_t i = 0; i < 4; ++i) {
+          const VertexId v = vs[i];
+          if (!free[i] || !gather_star(v)) continue;
+          double best = 0;
+          int good = 0;
+          const Vec2 p = optimise_position(m_.pos(v), best, good, st);
+          m_.will_change_vertex(v);
+          m_.xy[v.value] = p;
+          if (space_) xyz_[v.value] = opt_.to_space(p), have_xyz_[v.value] = 1;
+        }
+      strict_ = false;
+      const auto [q1, g1] = region_quality(vs, tri_of(n).value, tri_of(m_.twin[n.value]).value, region_q1_);
+      if (q1 >= q0 && leximin_better(region_q1_, region_q0_) && g1 >= g0) {
+        for (std::uint32_t t : region_) touch(t);
+        ++st.swaps;
+        for (std::size_t i = 0; i < 4; ++i) st.moves += !(m_.pos(vs[i]) == old_xy[i]);
+        return true;
       }
-    strict_ = false;
-    const auto [q1, g1] = region_quality(vs, tri_of(n).value, tri_of(m_.twin[n.value]).value, region_q1_);
-    if (q1 >= q0 && leximin_better(region_q1_, region_q0_) && g1 >= g0) {
-      for (std::uint32_t t : region_) touch(t);
-      ++st.swaps;
-      for (std::size_t i = 0; i < 4; ++i) st.moves += !(m_.pos(vs[i]) == old_xy[i]);
-      return true;
     }
     for (std::size_t i = 0; i < 4; ++i) {
       m_.will_change_vertex(vs[i]);
       m_.xy[vs[i].value] = old_xy[i];
       if (space_) xyz_[vs[i].value] = opt_.to_space(old_xy[i]), have_xyz_[vs[i].value] = 1;
     }
+    failed_[key] = clock_;
     // The flip back restores the two triangles with their slots exchanged: measure both again.
     const Side back = m_.flip(n);
     mark(tri_of(back).value);
@@ -454,6 +504,11 @@ class Optimizer {
   std::vector<std::uint8_t> tri_mark_;
   std::vector<std::uint32_t> vert_stamp_;
   std::vector<std::uint8_t> stuck_;  // per vertex: smoothing found nothing, star unchanged since
+  // Per vertex: the clock_ of the last change of its star (touch); per edge (org << 32 |
+  // dest) whose compound change failed: the clock_ then.
+  std::vector<std::uint64_t> changed_;
+  std::uint64_t clock_ = 0;
+  std::unordered_map<std::uint64_t, std::uint64_t> failed_;
   std::uint32_t stamp_ = 0;
   // Triangles above kGood gained minus lost so far: never negative, so the share of
   // rho > 0.9 never falls below the input's.

@@ -48,6 +48,11 @@ struct OptimizeOptions {
 struct OptimizeStats {
   std::uint64_t swaps = 0, moves = 0;
   std::uint64_t refused = 0;                         // a move failing the exact check
+  // Compound changes tried (an edge flipped), and of those the ones decided to fail before
+  // their moves: a new triangle with its three corners fixed and below the worst rho
+  // round the quad before (round a coast edge much shorter than its neighbours, a dam),
+  // or the same change failed before with the stars of its corners unchanged since.
+  std::uint64_t compound_tried = 0, compound_pinned = 0, compound_repeated = 0;
   std::uint32_t bad_before = 0, bad_after = 0;       // triangles below the threshold
   double min_before = 0, min_after = 0;              // worst rho (as measured by the pass)
   int rounds = 0;

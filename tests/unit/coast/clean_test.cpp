@@ -4,6 +4,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "coast/read_lonlat_text.h"
@@ -99,9 +100,23 @@ TEST_CASE("clean: rings sharing an edge are merged (polygons split at the dateli
     auto c = read_shapefile(std::string(SM_DATA_DIR) + f.path);
     REQUIRE(c.ok());
     const std::size_t before = c->rings.size();
+    Coastline c2 = *c;
     CleanReport r = clean(*c);
     merge_touching_rings(*c, r);
     CHECK(r.count(CleanAction::MergedRings) == f.merges);
+    // On two threads (the vertex runs cut the largest rings): the same rings, in order.
+    CleanReport r2 = clean(c2, 2);
+    merge_touching_rings(c2, r2, 2);
+    REQUIRE(c2.rings.size() == c->rings.size());
+    std::size_t differ = 0;
+    for (std::size_t k = 0; k < c->rings.size(); ++k) {
+      const auto& p1 = c->rings[k].pts;
+      const auto& p2 = c2.rings[k].pts;
+      differ += p1.size() != p2.size();
+      for (std::size_t i = 0; i < std::min(p1.size(), p2.size()); ++i) differ += p1[i].lon != p2[i].lon || p1[i].lat != p2[i].lat;
+    }
+    CHECK(differ == 0);
+    CHECK(r2.entries.size() == r.entries.size());
     CHECK(c->rings.size() + f.merges + r.count(CleanAction::DegenerateRing) == before);
     for (const auto& e : r.entries)
       if (e.action == CleanAction::MergedRings) CHECK(std::abs(std::abs(std::fmod(e.where.lon, 360.0)) - 180.0) < 1e-6);

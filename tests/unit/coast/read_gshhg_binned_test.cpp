@@ -99,6 +99,20 @@ TEST_CASE("gshhg binned: intermediate world, 100 km^2, equals world_i_A100.txt")
   for (const std::string& s : m.misses) MESSAGE(s);
   CHECK(m.binned == 1440);
   CHECK(m.matched == 1440);
+  // On two threads (runs of 512 polygons): the same rings in the same order.
+  o.threads = 2;
+  auto two = read_gshhg_binned(gshhg_binned_file('i'), o);
+  REQUIRE(two.ok());
+  REQUIRE(two->rings.size() == bin->rings.size());
+  std::size_t differ = 0;
+  for (std::size_t k = 0; k < bin->rings.size(); ++k) {
+    const Ring& a = bin->rings[k];
+    const Ring& b = two->rings[k];
+    differ += a.pts.size() != b.pts.size() || a.id != b.id || a.record != b.record || a.level != b.level;
+    for (std::size_t i = 0; i < std::min(a.pts.size(), b.pts.size()); ++i)
+      differ += a.pts[i].lon != b.pts[i].lon || a.pts[i].lat != b.pts[i].lat;
+  }
+  CHECK(differ == 0);
 }
 
 TEST_CASE("gshhg binned: a Region reads its bins' polygons whole (full resolution, Great Britain and Ireland)") {

@@ -9,6 +9,7 @@
 
 #include "coast/import.h"
 #include "coast/intersections.h"
+#include "coast/place_pairs.h"
 #include "coast/read_lonlat_text.h"
 #include "geo/curve_bspline.h"
 
@@ -134,6 +135,34 @@ TEST_CASE("spline crossings: control polygons apart, curves crossing, found exac
     CHECK((o.seg_a == 2 || o.seg_a == 3));   // the L's spans round the reflex corner (2,2)
     CHECK(norm(o.where - Vec2{7.0 / 3, 7.0 / 3}) < 0.1);
   }
+}
+
+TEST_CASE("spline crossings: with some spans marked active, exactly the full search's pairs holding one") {
+  const std::vector<std::vector<Vec2>> loops{kL, square({7.0 / 3, 7.0 / 3}, 0.03)};
+  std::vector<SplineLoop> sl{{loops[0], {}, true}, {loops[1], {}, true}};
+  const auto full = find_spline_crossings(sl);
+  REQUIRE_FALSE(full.empty());
+  std::vector<std::vector<char>> active{std::vector<char>(loops[0].size(), 0), std::vector<char>(loops[1].size(), 0)};
+  sl[0].active = active[0];
+  sl[1].active = active[1];
+  CHECK(find_spline_crossings(sl).empty());   // nothing marked: nothing tested
+  std::size_t found = 0;
+  for (std::uint32_t l = 0; l < 2; ++l)
+    for (std::uint32_t s = 0; s < loops[l].size(); ++s) {
+      active[l][s] = 1;
+      std::vector<HullOverlap> expect;
+      for (const HullOverlap& o : full)
+        if ((o.loop_a == l && o.seg_a == s) || (o.loop_b == l && o.seg_b == s)) expect.push_back(o);
+      const auto got = find_spline_crossings(sl);
+      REQUIRE(got.size() == expect.size());
+      for (std::size_t i = 0; i < got.size(); ++i) {
+        CHECK(place_pair_key(got[i]) == place_pair_key(expect[i]));
+        CHECK(got[i].where == expect[i].where);
+      }
+      found += got.size();
+      active[l][s] = 0;
+    }
+  CHECK(found == 2 * full.size());   // each pair through either of its spans
 }
 
 TEST_CASE("spline crossings: a near miss with overlapping hulls is not a crossing") {

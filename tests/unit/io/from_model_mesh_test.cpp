@@ -68,6 +68,27 @@ TEST_CASE("from_model_mesh: entities, classification and parameters") {
   }
 }
 
+TEST_CASE("from_model_mesh: without parametric coordinates, the same mesh and the same file") {
+  const geo::Model m = square_model(false);
+  const Mesh1dResult r = mesh_curves(m, {});
+  REQUIRE(r.ok());
+  const io::MeshModel with = io::from_model_mesh(m, r.mesh);
+  const io::MeshModel without = io::from_model_mesh(m, r.mesh, nullptr, /*parametric=*/false);
+  CHECK(without.xyz == with.xyz);
+  REQUIRE(without.entities.size() == with.entities.size());
+  std::size_t params = 0;
+  for (std::size_t i = 0; i < with.entities.size(); ++i) {
+    CHECK(without.entities[i].nodes == with.entities[i].nodes);
+    CHECK(without.entities[i].connectivity == with.entities[i].connectivity);
+    CHECK(without.entities[i].params.empty());
+    params += with.entities[i].params.size();
+  }
+  CHECK(params > 0);
+  // MSH without Mesh.SaveParametric writes no parametric coordinates: the same bytes.
+  const io::MshOptions o;
+  CHECK(io::msh_to_string(without, o) == io::msh_to_string(with, o));
+}
+
 TEST_CASE("from_model_mesh: physical groups select what MSH 4.1 and 2.2 write, as Gmsh") {
   const geo::Model m = square_model(true);
   const Mesh1dResult r = mesh_curves(m, {});

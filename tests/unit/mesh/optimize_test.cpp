@@ -254,3 +254,39 @@ TEST_CASE("optimize_quality: a bare CDT of a many-sided polygon, where only swap
   CHECK(after.min_rho == doctest::Approx(before.min_rho));
   CHECK(after.share_rho_09 >= before.share_rho_09);
 }
+
+TEST_CASE("optimize_quality: compound changes round short boundary edges (dams) decided before their moves") {
+  // A square at size 0.1 with a channel 0.12 wide (its triangles span it, every corner on
+  // the boundary), edges of 0.01 to 0.02 between edges of 0.1 on the channel and the
+  // square's top (the dams across narrow passages of a coast): many compound changes
+  // there make a new triangle of fixed corners below the worst rho round the quad, and
+  // fail whatever the moves would do.
+  TriangleStore m;
+  const Loop l = testing::polygon_loop(m,
+                                       {{0, 0}, {1, 0}, {1, 0.45}, {2, 0.45}, {2, 0.57}, {1.51, 0.57}, {1.5, 0.57},
+                                        {1.215, 0.57}, {1.2, 0.57}, {1, 0.57}, {1, 1}, {0.21, 1}, {0.2, 1}, {0, 1}},
+                                       0.1, false);
+  std::vector<Edge> edges;
+  REQUIRE(testing::boundary_mesh(m, {l}, &edges));
+  const std::uint32_t fixed = m.num_vertices();
+  RefineOptions ro;
+  ro.size = 0.1;
+  REQUIRE(refine_del2d(m, ro).ok());
+  smooth_laplacian(m, 1);
+  const std::vector<Vec2> fixed_xy(m.xy.begin(), m.xy.begin() + fixed);
+  const QualityStats before = mesh_quality(m);
+  TriangleStore copy = m;
+  const OptimizeStats st = optimize_quality(m, fixed);
+  check_invariants(m, edges, fixed_xy);
+  const QualityStats after = mesh_quality(m);
+  MESSAGE("dams: rho min " << before.min_rho << " -> " << after.min_rho << "; compound changes " << st.compound_tried
+                           << ", decided before their moves " << st.compound_pinned << ", failed before "
+                           << st.compound_repeated);
+  CHECK(st.compound_pinned > 0);
+  CHECK(st.compound_repeated > 0);
+  CHECK(st.compound_pinned + st.compound_repeated < st.compound_tried);
+  CHECK(after.min_rho >= before.min_rho);
+  CHECK(after.share_rho_09 >= before.share_rho_09);
+  optimize_quality(copy, fixed);
+  CHECK(same_points_corners_twins(copy, m));
+}
