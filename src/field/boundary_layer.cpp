@@ -96,6 +96,8 @@ class BoundaryLayerField final : public SizeField {
   FieldError e(FieldErrc::BadValue, fmt::format("Field[{}] (BoundaryLayer): option '{}': {}", id, option, why));
   e.field_id = id;
   e.option = std::string(option);
+  e.name = "BoundaryLayer";
+  e.reason = why;
   throw e;
 }
 

@@ -339,10 +339,16 @@ std::shared_ptr<const ChannelWidthField> make_channel_width_field(std::vector<Co
                                                                   const ChannelWidthOptions& opts) {
   for (const CoastChain& c : chains)
     for (const Vec3& p : c.points)
-      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-        throw FieldError(FieldErrc::BadValue, "ChannelWidth: a coast sample is not finite");
-  if (!(opts.elements_across >= 1))
-    throw FieldError(FieldErrc::BadValue, "ChannelWidth: ElementsAcross must be at least 1");
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+        FieldError e(FieldErrc::BadValue, "ChannelWidth: a coast sample is not finite");
+        e.bad = BadValueWhat::CoastSample;
+        throw e;
+      }
+  if (!(opts.elements_across >= 1)) {
+    FieldError e(FieldErrc::BadValue, "ChannelWidth: ElementsAcross must be at least 1");
+    e.bad = BadValueWhat::ElementsAcross;
+    throw e;
+  }
   const double cap = search_cap(chains, opts);
   return std::make_shared<ChannelWidthField>(std::move(chains), opts, cap);
 }

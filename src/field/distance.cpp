@@ -74,6 +74,8 @@ FieldPtr make_distance_field(std::vector<Vec3> samples) {
     const Vec3& p = samples[i];
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
       FieldError e(FieldErrc::BadValue, fmt::format("Distance: sample point {} is not finite", i));
+      e.bad = BadValueWhat::DistanceSample;
+      e.value = static_cast<double>(i);
       throw e;
     }
   }

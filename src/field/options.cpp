@@ -105,6 +105,7 @@ void Options::set(std::string_view name, OptionValue value) {
                                  kind_->name, id));
         e.option = std::string(name);
         e.name = kind_->name;
+        e.bad = BadValueWhat::NotFieldIds;
         e.value = id;
         throw e;
       }

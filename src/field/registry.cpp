@@ -95,6 +95,8 @@ void BuildInputs::bad(std::string_view option, const std::string& why) const {
                fmt::format("Field[{}] ({}): option '{}': {}", id, opts.kind().name, option, why));
   e.field_id = id;
   e.option = std::string(option);
+  e.name = opts.kind().name;
+  e.reason = why;
   throw e;
 }
 

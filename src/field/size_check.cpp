@@ -36,6 +36,9 @@ class CheckedSizeField final : public SizeField {
                    fmt::format("Field[{}] ({}) gives the mesh size {} at ({}, {}, {}): a size must be "
                                "finite and positive", id_, kind_, h[i], p.x, p.y, p.z));
       e.field_id = id_;
+      e.name = kind_;
+      e.bad = BadValueWhat::Size;
+      e.value = h[i];
       e.point = p;
       throw e;
     }

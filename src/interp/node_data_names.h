@@ -13,8 +13,9 @@ namespace sm::interp {
 inline constexpr std::array<std::string_view, 3> kNodeDataNames = {"depth", "size", "criterion"};
 
 /// The names of a Mesh.NodeData value in order, each once (spaces around commas allowed);
-/// empty with *why set when one is not in kNodeDataNames.
-inline std::vector<std::string> split_node_data_names(std::string_view v, std::string* why) {
+/// empty with *unknown set to the first name not in kNodeDataNames when there is one (the
+/// caller words it: NodeDataUnknownValue of lang/diag_kinds.def).
+inline std::vector<std::string> split_node_data_names(std::string_view v, std::string* unknown) {
   std::vector<std::string> names;
   std::size_t start = 0;
   while (start <= v.size()) {
@@ -27,7 +28,7 @@ inline std::vector<std::string> split_node_data_names(std::string_view v, std::s
       bool known = false;
       for (std::string_view k : kNodeDataNames) known |= k == w;
       if (!known) {
-        *why = "Mesh.NodeData: unknown value '" + std::string(w) + "' (use depth, size or criterion, comma-separated)";
+        *unknown = std::string(w);
         return {};
       }
       bool seen = false;

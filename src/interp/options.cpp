@@ -247,9 +247,9 @@ OptionRefusal Options::set_string(std::string_view name, std::string v, bool int
     return option_refusal(lang::Diag::OptionWrongKind, name, kind_name(info.kind), std::string_view("string"));
   if (info.read_only && !internal) return option_refusal(lang::Diag::OptionReadOnly, name);
   if (name == "Mesh.NodeData") {
-    std::string why;
-    if (split_node_data_names(v, &why).empty() && !why.empty())
-      return option_refusal(lang::Diag::InvalidOptionValue, why);
+    std::string unknown;
+    if (split_node_data_names(v, &unknown).empty() && !unknown.empty())
+      return option_refusal(lang::Diag::NodeDataUnknownValue, unknown);
   }
   strs_[i] = std::move(v);
   set_[i] = true;
@@ -277,11 +277,25 @@ OptionRefusal Options::set_box(std::string_view name, const LonLatBox& b) {
     return option_refusal(lang::Diag::OptionWrongKind, name, kind_name(info.kind), std::string_view("box"));
   if (b != LonLatBox{0, 0, 0, 0}) {
     io::PictureBox normalised;
-    if (std::string why = io::normalise_picture_box(b[0], b[1], b[2], b[3], &normalised); !why.empty())
-      return option_refusal(lang::Diag::InvalidOptionValue, why);
+    if (OptionRefusal r = check_picture_box(b, &normalised); !r.empty()) return r;
   }
   boxes_[i] = b;
   set_[i] = true;
+  return {};
+}
+
+OptionRefusal check_picture_box(const LonLatBox& b, io::PictureBox* out) {
+  using lang::Diag;
+  const auto [west, east, south, north] = b;
+  switch (io::normalise_picture_box(west, east, south, north, out)) {
+    case io::PictureBoxProblem::None: break;
+    case io::PictureBoxProblem::NotFinite: return option_refusal(Diag::PictureBoxNotFinite);
+    case io::PictureBoxProblem::Longitudes: return option_refusal(Diag::PictureBoxLongitudes, west, east);
+    case io::PictureBoxProblem::Latitudes: return option_refusal(Diag::PictureBoxLatitudes, south, north);
+    case io::PictureBoxProblem::SouthNotBelowNorth: return option_refusal(Diag::PictureBoxSouthNorth, south, north);
+    case io::PictureBoxProblem::NoWidth: return option_refusal(Diag::PictureBoxNoWidth, west);
+    case io::PictureBoxProblem::TooWide: return option_refusal(Diag::PictureBoxTooWide, west, east);
+  }
   return {};
 }
 

@@ -13,6 +13,10 @@
 
 #include "lang/diag_format.h"
 
+namespace sm::io {
+struct PictureBox;
+}
+
 namespace sm::interp {
 
 enum class OptionKind { Number, String, Color, Box };
@@ -30,9 +34,9 @@ using Color = std::array<double, 4>;
 /// A lon/lat box {west, east, south, north} in degrees (Mesh.PictureBox); all 0: none.
 using LonLatBox = std::array<double, 4>;
 
-/// Why a setter refused a value: its kind of diag_kinds.def (an Option* kind, or
-/// InvalidOptionValue for a reason another module worded: Mesh.NodeData's names, a picture
-/// box) and that kind's message, which the interpreter, the CLI and the Python module print.
+/// Why a setter or a check of an option refused a value: its kind of diag_kinds.def (an
+/// Option* kind, NodeDataUnknownValue, a PictureBox* kind, the Mesh.* checks made when
+/// meshing) and that kind's message, which the interpreter, the CLI and the Python module print.
 /// No kind (kCount) and no message: the value was taken.
 struct OptionRefusal {
   lang::Diag kind = lang::Diag::kCount;
@@ -47,6 +51,10 @@ template <class... Args>
 OptionRefusal option_refusal(std::type_identity_t<lang::DiagFormat<Args...>> kind, const Args&... args) {
   return {kind.kind(), lang::format_diag<Args...>(kind, args...)};
 }
+
+/// Whether box `b` {W, E, S, N} frames a picture (io/picture.h's normalise_picture_box, the
+/// normalised box in `*out`), or the refusal naming its bounds (a PictureBox* kind).
+OptionRefusal check_picture_box(const LonLatBox& b, io::PictureBox* out);
 
 /// All option values of one run. A plain value passed in the interpreter's
 /// context: no global state, so two runs never see each other's settings.

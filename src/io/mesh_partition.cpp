@@ -43,14 +43,14 @@ MeshPartition aligned_partition(const MeshPartition& partition, const MeshModel&
   return out;
 }
 
-bool partition_mesh(const MeshModel& mesh, const MeshPartitionOptions& opt, MeshPartition* out, std::string* error) {
+bool partition_mesh(const MeshModel& mesh, const MeshPartitionOptions& opt, MeshPartition* out, PartitionError* error) {
   const DualGraph g = dual_graph_2d(mesh);
   if (g.size() == 0) {
-    *error = "the mesh has no 2D elements to partition";
+    *error = {PartitionProblem::NoElements, 0};
     return false;
   }
   if (opt.parts < 1 || static_cast<std::size_t>(opt.parts) > g.size()) {
-    *error = fmt::format("{} partitions of {} 2D elements: give between 1 and {}", opt.parts, g.size(), g.size());
+    *error = {PartitionProblem::PartCount, g.size()};
     return false;
   }
   std::vector<idx_t> part(g.size(), 0);
@@ -71,7 +71,7 @@ bool partition_mesh(const MeshModel& mesh, const MeshPartitionOptions& opt, Mesh
                        : METIS_PartGraphRecursive(&n, &ncon, xadj.data(), adjncy.data(), nullptr, nullptr, nullptr,
                                                   &nparts, nullptr, nullptr, options, &objval, part.data());
     if (rc != METIS_OK) {
-      *error = rc == METIS_ERROR_MEMORY ? "METIS ran out of memory" : "METIS failed to partition the mesh";
+      error->problem = rc == METIS_ERROR_MEMORY ? PartitionProblem::MetisOutOfMemory : PartitionProblem::MetisFailed;
       return false;
     }
   }

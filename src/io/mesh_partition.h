@@ -29,10 +29,18 @@ struct MeshPartition {
   double imbalance = 1;                        ///< largest part / the mean (1.03: 3% over)
 };
 
-/// Partitions `mesh`; false with *error when it cannot (no 2D element, more parts than
-/// elements, METIS failing). The answer depends only on the mesh and the options (METIS
-/// seeded, the graph in a fixed order), never on threads.
-bool partition_mesh(const MeshModel& mesh, const MeshPartitionOptions& opt, MeshPartition* out, std::string* error);
+/// Why partition_mesh could not partition (the interpreter words it): no 2D element, more
+/// parts than 2D elements (or fewer than 1), METIS out of memory or failing otherwise.
+enum class PartitionProblem { None, NoElements, PartCount, MetisOutOfMemory, MetisFailed };
+
+struct PartitionError {
+  PartitionProblem problem = PartitionProblem::None;
+  std::size_t elements = 0;   ///< PartCount: the 2D elements there are to partition
+};
+
+/// Partitions `mesh`; false with *error when it cannot. The answer depends only on the mesh
+/// and the options (METIS seeded, the graph in a fixed order), never on threads.
+bool partition_mesh(const MeshModel& mesh, const MeshPartitionOptions& opt, MeshPartition* out, PartitionError* error);
 
 /// `partition` with its rows in the order of `mesh`'s entities, matched by (dim, tag): for a
 /// MeshModel built from the same mesh but with entities left out or reordered since (a

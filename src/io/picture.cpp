@@ -156,23 +156,18 @@ bool meets_box(const PictureBox& b, const std::array<Vec2, N>& q) {
 
 }  // namespace
 
-std::string normalise_picture_box(double west, double east, double south, double north, PictureBox* out) {
+PictureBoxProblem normalise_picture_box(double west, double east, double south, double north, PictureBox* out) {
   for (double v : {west, east, south, north})
-    if (!std::isfinite(v)) return "Mesh.PictureBox: the box {W, E, S, N} must be finite numbers";
-  if (west < -360 || west > 360 || east < -360 || east > 360)
-    return fmt::format("Mesh.PictureBox: longitudes west {:g} and east {:g} must lie in [-360, 360]", west, east);
-  if (south < -90 || north > 90)
-    return fmt::format("Mesh.PictureBox: latitudes south {:g} and north {:g} must lie in [-90, 90]", south, north);
-  if (!(south < north))
-    return fmt::format("Mesh.PictureBox: south {:g} must be below north {:g} (the box is {{W, E, S, N}})", south,
-                       north);
-  if (west == east) return fmt::format("Mesh.PictureBox: west and east are both {:g}: the box has no width", west);
+    if (!std::isfinite(v)) return PictureBoxProblem::NotFinite;
+  if (west < -360 || west > 360 || east < -360 || east > 360) return PictureBoxProblem::Longitudes;
+  if (south < -90 || north > 90) return PictureBoxProblem::Latitudes;
+  if (!(south < north)) return PictureBoxProblem::SouthNotBelowNorth;
+  if (west == east) return PictureBoxProblem::NoWidth;
   // W > E: the box crosses the dateline (170, -170 is 170 to 190).
   const double e = west > east ? east + 360 : east;
-  if (e - west > 360)
-    return fmt::format("Mesh.PictureBox: from west {:g} to east {:g} is more than 360 degrees", west, east);
+  if (e - west > 360) return PictureBoxProblem::TooWide;
   *out = {west, e, south, north};
-  return {};
+  return PictureBoxProblem::None;
 }
 
 std::vector<QualityClass> quality_classes(const std::vector<double>& rho, double floor) {

@@ -36,9 +36,14 @@ struct PictureBox {
   double west = 0, east = 0, south = 0, north = 0;
 };
 
-/// "" when `b` is a box a picture can frame, else what is wrong with it. W > E is read
+/// What keeps a box from framing a picture (the interpreter words it with the bounds):
+/// a bound not finite, a longitude outside [-360, 360], a latitude outside [-90, 90],
+/// south not below north, west = east, more than 360 degrees from west to east.
+enum class PictureBoxProblem { None, NotFinite, Longitudes, Latitudes, SouthNotBelowNorth, NoWidth, TooWide };
+
+/// None when `b` is a box a picture can frame, else what is wrong with it. W > E is read
 /// as a box across the dateline (E + 360); the result is in `*out`.
-std::string normalise_picture_box(double west, double east, double south, double north, PictureBox* out);
+PictureBoxProblem normalise_picture_box(double west, double east, double south, double north, PictureBox* out);
 
 struct PictureOptions {
   PictureView view = PictureView::LonLat;

@@ -112,6 +112,8 @@ field::BuildContext make_build_context(const geo::Model& model, std::filesystem:
                           fmt::format("NumPointsPerCurve: more than {} curve samples in one build",
                                       kMaxCurveSamples));
       e.option = "NumPointsPerCurve";
+      e.bad = field::BadValueWhat::TooManySamples;
+      e.value = static_cast<double>(kMaxCurveSamples);
       throw e;
     }
     std::span<const Vec3> nodes;
@@ -141,6 +143,8 @@ field::BuildContext make_build_context(const geo::Model& model, std::filesystem:
       if (*total > kMaxCurveSamples) {
         field::FieldError e(field::FieldErrc::BadValue,
                             fmt::format("more than {} curve samples in one build", kMaxCurveSamples));
+        e.bad = field::BadValueWhat::TooManySamples;
+        e.value = static_cast<double>(kMaxCurveSamples);
         throw e;
       }
       for (int i = 0; i < k; ++i) chain.points.push_back(c.eval(static_cast<double>(i) / k, signed_tag < 0).p);

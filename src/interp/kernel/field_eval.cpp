@@ -61,6 +61,35 @@ struct FieldDiagnostic {
   std::string message;
 };
 
+// A BadValue error in the words of its kind (field::BadValueWhat says which value).
+FieldDiagnostic bad_value_diagnostic(const field::FieldError& e) {
+  const double value = e.value.value_or(0);
+  switch (e.bad) {
+    case field::BadValueWhat::Option: break;
+    case field::BadValueWhat::NotFieldIds:
+      return {Diag::FieldOptionNotIds, format_diag(Diag::FieldOptionNotIds, e.option, e.name, value)};
+    case field::BadValueWhat::Size: {
+      const Vec3 p = e.point.value_or(Vec3{});
+      return {Diag::FieldSizeNotPositive,
+              format_diag(Diag::FieldSizeNotPositive, e.field_id, e.name, value, p.x, p.y, p.z)};
+    }
+    case field::BadValueWhat::DistanceSample:
+      return {Diag::DistanceSampleNotFinite,
+              format_diag(Diag::DistanceSampleNotFinite, static_cast<std::size_t>(value))};
+    case field::BadValueWhat::CoastSample:
+      return {Diag::ChannelWidthSampleNotFinite, format_diag(Diag::ChannelWidthSampleNotFinite)};
+    case field::BadValueWhat::ElementsAcross:
+      return {Diag::ChannelWidthElementsAcross, format_diag(Diag::ChannelWidthElementsAcross)};
+    case field::BadValueWhat::TooManySamples: {
+      const auto limit = static_cast<std::size_t>(value);
+      if (e.option == "NumPointsPerCurve")
+        return {Diag::CurveSamplesOverLimitNumPoints, format_diag(Diag::CurveSamplesOverLimitNumPoints, limit)};
+      return {Diag::CurveSamplesOverLimit, format_diag(Diag::CurveSamplesOverLimit, limit)};
+    }
+  }
+  return {Diag::FieldOptionRefused, format_diag(Diag::FieldOptionRefused, e.field_id, e.name, e.option, e.reason)};
+}
+
 FieldDiagnostic field_diagnostic(Interpreter& in, const field::FieldError& e) {
   const int first = e.ids.empty() ? e.field_id : e.ids.front();
   switch (e.code()) {
@@ -96,9 +125,9 @@ FieldDiagnostic field_diagnostic(Interpreter& in, const field::FieldError& e) {
               format_diag<std::string, std::string, std::string_view, std::string_view>(
                   Diag::FieldOptionWrongType, e.option, e.name, option_type_phrase(e.expected),
                   option_type_phrase(e.given))};
-    case field::FieldErrc::BadValue: break;
+    case field::FieldErrc::BadValue: return bad_value_diagnostic(e);
   }
-  return {Diag::BadFieldValue, format_diag<std::string>(Diag::BadFieldValue, e.what())};
+  return bad_value_diagnostic(e);   // not reached: every code is a case
 }
 
 // Where option `option` (any spelling) of field `id` was set, if a statement did.
@@ -416,7 +445,7 @@ Value eval_field_call(Interpreter& in, const Expr& e, const CallExpr& c) {
   return Value::number(which);
 }
 
-std::string depth_at(Interpreter& in, const io::MeshModel& mm, std::vector<double>& depth) {
+OptionRefusal depth_at(Interpreter& in, const io::MeshModel& mm, std::vector<double>& depth) {
   std::vector<std::array<std::uint32_t, 2>> edges;
   if (in.options().number("Mesh.DepthSampling") == 1)
     for (const io::EntityMesh& e : mm.entities) {
@@ -428,20 +457,19 @@ std::string depth_at(Interpreter& in, const io::MeshModel& mm, std::vector<doubl
   return depth_at(in, mm.xyz, edges, depth);
 }
 
-std::string check_depth_sampling(Interpreter& in, const field::SizeField& depth) {
+OptionRefusal check_depth_sampling(Interpreter& in, const field::SizeField& depth) {
   if (in.options().number("Mesh.DepthSampling") == 0 || dynamic_cast<const field::GridDepthField*>(&depth)) return {};
-  return "Mesh.DepthSampling = 1 averages the cells of a relief grid: Mesh.DepthField must be a Bathymetry field with "
-         "Output \"depth\"";
+  return option_refusal(Diag::DepthSamplingNeedsGrid);
 }
 
-std::string depth_at(Interpreter& in, std::span<const Vec3> xyz, const std::vector<std::array<std::uint32_t, 2>>& edges,
-                     std::vector<double>& depth, std::optional<field::DepthClampReport>* report) {
+OptionRefusal depth_at(Interpreter& in, std::span<const Vec3> xyz, const std::vector<std::array<std::uint32_t, 2>>& edges,
+                       std::vector<double>& depth, std::optional<field::DepthClampReport>* report) {
   const KernelState& k = in.kernel();
   const int id = static_cast<int>(in.options().number("Mesh.DepthField"));
   const auto at = k.option_set_at.find("Mesh.DepthField");
   const field::SizeField* f = built_fields(in, id, at != k.option_set_at.end() ? at->second : SourceRange{}).get(id);
-  if (!f) return fmt::format("Mesh.DepthField = {}: no such field", id);
-  if (std::string why = check_depth_sampling(in, *f); !why.empty()) return why;
+  if (!f) return option_refusal(Diag::DepthFieldNoSuchField, id);
+  if (OptionRefusal r = check_depth_sampling(in, *f); !r.empty()) return r;
   depth.resize(xyz.size());
   const auto* grid = dynamic_cast<const field::GridDepthField*>(f);
   if (!grid) {

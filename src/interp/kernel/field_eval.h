@@ -15,6 +15,7 @@
 #include "field/depth_clamp.h"
 #include "field/error.h"
 #include "interp/kernel/field_context.h"
+#include "interp/options.h"
 #include "field/field_set.h"
 #include "lang/source.h"
 
@@ -56,17 +57,17 @@ field::FieldPtr background_size_field(Interpreter& in, const CurveMeshNodes* mes
 
 /// The depth of Mesh.DepthField (> 0: the caller checks) at `xyz` into `depth`, built
 /// with its errors located at the option's assignment (the field may have changed since
-/// the mesh was made); "" or why not.
+/// the mesh was made); nothing (empty()) or why not.
 /// With `edges` (node index pairs of the elements' edges), sampled as Mesh.DepthSampling
 /// says: 1 averages the grid cells within half the mean incident edge of each node.
 /// `report`, if given, is set when the field is a grid depth (Bathymetry, Output "depth").
-std::string depth_at(Interpreter& in, std::span<const Vec3> xyz, const std::vector<std::array<std::uint32_t, 2>>& edges,
-                     std::vector<double>& depth, std::optional<field::DepthClampReport>* report = nullptr);
+OptionRefusal depth_at(Interpreter& in, std::span<const Vec3> xyz, const std::vector<std::array<std::uint32_t, 2>>& edges,
+                       std::vector<double>& depth, std::optional<field::DepthClampReport>* report = nullptr);
 
 /// depth_at on the nodes of a mesh to write, with the edges of its surface elements.
-std::string depth_at(Interpreter& in, const io::MeshModel& mm, std::vector<double>& depth);
+OptionRefusal depth_at(Interpreter& in, const io::MeshModel& mm, std::vector<double>& depth);
 
-/// Why Mesh.DepthSampling cannot be used with `depth` (Mesh.DepthField's field), or "".
-std::string check_depth_sampling(Interpreter& in, const field::SizeField& depth);
+/// Why Mesh.DepthSampling cannot be used with `depth` (Mesh.DepthField's field), or nothing.
+OptionRefusal check_depth_sampling(Interpreter& in, const field::SizeField& depth);
 
 }  // namespace sm::interp

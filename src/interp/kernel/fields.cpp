@@ -108,12 +108,8 @@ bool option_value(Interpreter& in, const FieldOptionStmt& n, int id, const field
                             spec->role != field::OptionRole::Plain);
   for (double x : v.nums()) {
     if (!std::isfinite(x))
-      in.fail_fmt(value_at, Diag::BadFieldValue,
-                  fmt::format("option '{}' of Field[{}] is not finite", in.ast().str(n.option), id));
-    if (ids && std::abs(x) > 2147483647.0)
-      in.fail_fmt(value_at, Diag::BadFieldValue,
-                  fmt::format("option '{}' of Field[{}]: {} is not a valid id", in.ast().str(n.option),
-                              id, x));
+      in.fail(value_at, Diag::FieldOptionNotFinite, in.ast().str(n.option), id);
+    if (ids && std::abs(x) > 2147483647.0) in.fail(value_at, Diag::FieldOptionNotValidId, in.ast().str(n.option), id, x);
   }
   if (list) {
     out = v.nums();

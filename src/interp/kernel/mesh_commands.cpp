@@ -296,8 +296,8 @@ MeshFailure depth_field_for_mesh(Interpreter& in, field::FieldPtr& depth) {
   const auto it = k.option_set_at.find("Mesh.DepthField");
   const int id = static_cast<int>(depth_field);
   depth = built_fields(in, id, it != k.option_set_at.end() ? it->second : SourceRange{}).shared(id);
-  if (std::string why = check_depth_sampling(in, *depth); !why.empty())
-    return {Diag::InvalidOptionValue, std::move(why), set_here(k, "Mesh.DepthSampling")};
+  if (OptionRefusal r = check_depth_sampling(in, *depth); !r.empty())
+    return {r.kind, std::move(r.message), set_here(k, "Mesh.DepthSampling")};
   return {};
 }
 
@@ -336,8 +336,7 @@ std::vector<field::BoundaryLayerParams> boundary_layers_of(Interpreter& in) {
       in.fail(at, Diag::MissingBoundaryLayerField, fid);
     const std::string kind = k.fields.options(fid).kind().name;
     if (kind != "BoundaryLayer")
-      in.fail_fmt(at, Diag::BadFieldValue,
-                  fmt::format("'BoundaryLayer Field = {}' names a {} field: it must be a BoundaryLayer field", fid, kind));
+      in.fail(at, Diag::BoundaryLayerFieldWrongKind, fid, kind);
     (void)built_fields(in, fid, at);
     try {
       layers.push_back(field::boundary_layer_params(k.fields.options(fid), fid));
@@ -420,8 +419,8 @@ MeshFailure depth_and_time_step(Interpreter& in, const ModelMesh& mesh, MeshStat
   }
   std::vector<double> h;
   std::optional<field::DepthClampReport> clamp;
-  if (std::string why = depth_at(in, xyz, edges, h, &clamp); !why.empty())
-    return {Diag::InvalidOptionValue, std::move(why), set_here(in.kernel(), "Mesh.DepthField")};
+  if (OptionRefusal r = depth_at(in, xyz, edges, h, &clamp); !r.empty())
+    return {r.kind, std::move(r.message), set_here(in.kernel(), "Mesh.DepthField")};
   std::vector<double> node_h(mesh.nodes.size(), 0.0);   // nodes of no element: not read
   for (std::size_t v = 0; v < local.size(); ++v)
     if (local[v] != kUnused) node_h[v] = h[local[v]];
@@ -468,8 +467,8 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   KernelState& k = in.kernel();
   sync_geometry_options(in);  // Gmsh reads Geometry.OldRuledSurface when it meshes
   k.partition.reset();
-  if (std::string why = check_elements_across_channels(in.options()); !why.empty())
-    return {Diag::InvalidOptionValue, std::move(why), set_here(k, "Mesh.ElementsAcrossChannels")};
+  if (OptionRefusal refused = check_elements_across_channels(in.options()); !refused.empty())
+    return {refused.kind, std::move(refused.message), set_here(k, "Mesh.ElementsAcrossChannels")};
   // The background field with the coastlines' channel widths inside its Min.
   // Shown as a stage when there is a field to set up (not for a model with sizes at points).
   const bool has_fields = (k.background_field && *k.background_field > 0) || !k.coastlines.empty();
@@ -543,8 +542,8 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   if (depth)
     if (MeshFailure f = depth_and_time_step(in, *mesh, st); f.failed()) return f;
   stage_stats.reset();   // a stage of its own, not counted twice in the time line
-  if (std::string why = partition_mesh_now(in, *mesh, &st); !why.empty())
-    return {Diag::InvalidOptionValue, std::move(why), set_here(k, "Mesh.NbPartitions")};
+  if (OptionRefusal refused = partition_mesh_now(in, *mesh, &st); !refused.empty())
+    return {refused.kind, std::move(refused.message), set_here(k, "Mesh.NbPartitions")};
   publish_stats(in, *mesh, st);
   k.mesh = std::move(mesh);
   return {};
@@ -704,8 +703,8 @@ void exec_partition_mesh(Interpreter& in, StmtId id, const CommandStmt& c) {
   if (!k.mesh || !k.has_mesh_stats)
     in.fail(s.range, Diag::PartitionMeshNoMesh);
   k.partition.reset();
-  if (std::string why = partition_mesh_now(in, *k.mesh, &k.mesh_stats); !why.empty())
-    in.fail_fmt(s.range, Diag::InvalidOptionValue, why);
+  if (OptionRefusal r = partition_mesh_now(in, *k.mesh, &k.mesh_stats); !r.empty())
+    in.fail_message(s.range, r.kind, std::move(r.message));
 }
 
 }  // namespace

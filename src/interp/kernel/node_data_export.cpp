@@ -16,9 +16,9 @@ namespace sm::interp {
 
 std::string node_data_for_output(Interpreter& in, const io::MeshModel& mm, std::vector<io::NodeData>& out) {
   out.clear();
-  std::string why;
-  const std::vector<std::string> names = split_node_data_names(in.options().string("Mesh.NodeData"), &why);
-  if (!why.empty()) return why;
+  std::string unknown;
+  const std::vector<std::string> names = split_node_data_names(in.options().string("Mesh.NodeData"), &unknown);
+  if (!unknown.empty()) return lang::format_diag(lang::Diag::NodeDataUnknownValue, unknown);
   return node_data_named(in, mm, names, out);
 }
 
@@ -48,7 +48,7 @@ std::string node_data_named(Interpreter& in, const io::MeshModel& mm, const std:
     if (name == "depth") {
       if (!(in.options().number("Mesh.DepthField") > 0))
         return "Mesh.NodeData: depth needs Mesh.DepthField (a field giving the depth)";
-      if (std::string w = depth_at(in, mm, values); !w.empty()) return w;
+      if (OptionRefusal r = depth_at(in, mm, values); !r.empty()) return r.message;
       out.push_back({name, "m", "depth at the mesh nodes (Mesh.DepthField), positive down", std::move(values)});
     } else if (name == "size") {
       if (std::string w = sizes(); !w.empty()) return w;

@@ -125,7 +125,7 @@ std::string ocean_grid_options(Interpreter& in, const std::string& path, const i
   }
   opt.lonlat = !k.model.geometries().empty();
   if (in.options().number("Mesh.DepthField") > 0)
-    if (std::string why = depth_at(in, mm, opt.depth); !why.empty()) return why;
+    if (OptionRefusal r = depth_at(in, mm, opt.depth); !r.empty()) return r.message;
   return boundary_strings(k.model, *k.mesh, node_index, opt.boundaries);
 }
 

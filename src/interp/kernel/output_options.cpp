@@ -115,7 +115,7 @@ std::string picture_options(Interpreter& in, const io::MeshModel& mm, io::Pictur
   const interp::LonLatBox& box = in.options().box("Mesh.PictureBox");
   if (box != interp::LonLatBox{0, 0, 0, 0}) {
     io::PictureBox b;
-    if (std::string why = io::normalise_picture_box(box[0], box[1], box[2], box[3], &b); !why.empty()) return why;
+    if (OptionRefusal r = check_picture_box(box, &b); !r.empty()) return r.message;
     po.box = b;
   }
   po.worst = static_cast<int>(in.options().number("Mesh.PictureWorst"));

@@ -20,7 +20,24 @@ io::MeshPartitionOptions partition_options(const Options& o) {
   return po;
 }
 
-std::string partition_mesh_now(Interpreter& in, const ModelMesh& mesh, MeshStats* stats) {
+namespace {
+
+// Mesh.NbPartitions = parts refused for `error`.
+OptionRefusal partition_refusal(int parts, const io::PartitionError& error) {
+  using lang::Diag;
+  switch (error.problem) {
+    case io::PartitionProblem::None: break;
+    case io::PartitionProblem::NoElements: return option_refusal(Diag::PartitionsNoElements, parts);
+    case io::PartitionProblem::PartCount: return option_refusal(Diag::PartitionsTooMany, parts, error.elements);
+    case io::PartitionProblem::MetisOutOfMemory: return option_refusal(Diag::PartitionsMetisMemory, parts);
+    case io::PartitionProblem::MetisFailed: break;
+  }
+  return option_refusal(Diag::PartitionsMetisFailed, parts);
+}
+
+}  // namespace
+
+OptionRefusal partition_mesh_now(Interpreter& in, const ModelMesh& mesh, MeshStats* stats) {
   KernelState& k = in.kernel();
   const io::MeshPartitionOptions po = partition_options(in.options());
   if (po.parts <= 0) return {};
@@ -28,14 +45,12 @@ std::string partition_mesh_now(Interpreter& in, const ModelMesh& mesh, MeshStats
   // quadrangles is not split into them yet.
   for (const auto& [tag, s] : mesh.surfaces)
     if (!s.quads.empty())
-      return fmt::format("Mesh.NbPartitions = {}: surface {} has quadrangles, which are not partitioned yet (mesh it "
-                         "without Recombine, or set Mesh.NbPartitions = 0)",
-                         po.parts, tag);
+      return option_refusal(lang::Diag::PartitionsQuadrangles, po.parts, tag);
   const StageScope stage(&k.clock, progress_sink(in), "partitions");
   const io::MeshModel mm = io::from_model_mesh(k.model, mesh);
   auto partition = std::make_shared<io::MeshPartition>();
-  std::string why;
-  if (!io::partition_mesh(mm, po, partition.get(), &why)) return fmt::format("Mesh.NbPartitions = {}: {}", po.parts, why);
+  io::PartitionError error;
+  if (!io::partition_mesh(mm, po, partition.get(), &error)) return partition_refusal(po.parts, error);
   if (stats) {
     stats->partitions = partition->parts;
     stats->partition_edge_cut = partition->edge_cut;
@@ -55,7 +70,7 @@ std::string current_partition(Interpreter& in) {
   if (k.partition && have.parts == want.parts && have.algorithm == want.algorithm && have.ufactor == want.ufactor)
     return {};
   if (!k.mesh) return "Mesh.NbPartitions: there is no 2D mesh to partition (mesh with -2 or 'Mesh 2;' first)";
-  return partition_mesh_now(in, *k.mesh, nullptr);
+  return partition_mesh_now(in, *k.mesh, nullptr).message;
 }
 
 bool holds_partitions(const io::OutputFormat& f, const Options& o) {

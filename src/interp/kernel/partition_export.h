@@ -7,6 +7,7 @@
 
 #include "io/mesh_partition.h"
 #include "io/output_format.h"
+#include "interp/options.h"
 #include "mesh/mesh_stats.h"
 #include "mesh/model_mesh.h"
 
@@ -20,9 +21,9 @@ class Options;
 io::MeshPartitionOptions partition_options(const Options& o);
 
 /// Partitions `mesh` as the options ask into the kernel state (KernelState::partition),
-/// with its figures in *stats when given; "" or why not (more parts than elements, ...).
-/// Nothing to do, and "", without Mesh.NbPartitions.
-std::string partition_mesh_now(Interpreter& in, const ModelMesh& mesh, MeshStats* stats);
+/// with its figures in *stats when given; nothing (empty()) or why not (more parts than
+/// elements, ...). Nothing to do, and nothing refused, without Mesh.NbPartitions.
+OptionRefusal partition_mesh_now(Interpreter& in, const ModelMesh& mesh, MeshStats* stats);
 
 /// The kernel's partition made with the options' settings now (a Save after the options
 /// changed since meshing partitions again); "" or why not.

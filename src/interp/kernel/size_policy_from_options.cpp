@@ -33,12 +33,9 @@ field::SizePolicyOptions size_policy_from_options(const Options& options) {
   return out;
 }
 
-std::string check_elements_across_channels(const Options& options) {
+OptionRefusal check_elements_across_channels(const Options& options) {
   const double n = options.number("Mesh.ElementsAcrossChannels");
-  if (n > 0 && n < 1)
-    return fmt::format("Mesh.ElementsAcrossChannels = {:g}: a channel needs at least 1 element across (0 turns the "
-                       "criterion off)",
-                       n);
+  if (n > 0 && n < 1) return option_refusal(lang::Diag::ElementsAcrossChannelsBelowOne, n);
   return {};
 }
 

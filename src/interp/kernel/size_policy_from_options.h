@@ -16,8 +16,8 @@ class Interpreter;
 
 field::SizePolicyOptions size_policy_from_options(const Options& options);
 
-/// Why Mesh.ElementsAcrossChannels cannot be used ("" when it can): 0 < N < 1.
-std::string check_elements_across_channels(const Options& options);
+/// Why Mesh.ElementsAcrossChannels cannot be used (nothing when it can): 0 < N < 1.
+OptionRefusal check_elements_across_channels(const Options& options);
 
 /// `background` (may be null) with, when Mesh.ElementsAcrossChannels = N > 0 and a
 /// coastline is imported, the ChannelWidth of every imported coastline's curves

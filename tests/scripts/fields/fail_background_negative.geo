@@ -15,4 +15,4 @@ Field[1] = MathEval;
 Field[1].F = "0.1 * (x - 0.5)";
 Background Field = 1;
 Mesh 2;
-// expect error: 14:1: bad-field-value
+// expect error: 14:1: bad-field-value: Field[1] (MathEval) gives the mesh size -0.05 at (0, 0, 0): a size must be finite and positive

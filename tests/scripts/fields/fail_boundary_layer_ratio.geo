@@ -8,4 +8,4 @@ Field[1].CurvesList = {1};
 Field[1].Ratio = 0.8;
 BoundaryLayer Field = 1;
 Mesh 2;
-// expect error: 8:1: bad-field-value
+// expect error: 8:1: bad-field-value: Field[1] (BoundaryLayer): option 'Ratio': must be at least 1 (each layer at least as high as the one before), not 0.8

@@ -6,4 +6,4 @@ Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
 Field[1] = Box;
 BoundaryLayer Field = 1;
 Mesh 2;
-// expect error: 7:1: bad-field-value
+// expect error: 7:1: bad-field-value: 'BoundaryLayer Field = 1' names a Box field: it must be a BoundaryLayer field

@@ -13,4 +13,4 @@ Field[1].F = "10";
 Mesh.DepthField = 1;
 Mesh.DepthSampling = 1;
 Mesh 2;
-// expect error: 15:1: invalid-option-value
+// expect error: 15:1: invalid-option-value: Mesh.DepthSampling = 1 averages the cells of a relief grid: Mesh.DepthField must be a Bathymetry field with Output "depth"

@@ -9,4 +9,4 @@ Line(3) = {3, 1};
 Curve Loop(1) = {1, 2, 3};
 Plane Surface(1) = {1};
 Mesh.ElementsAcrossChannels = 0.5;
-Mesh 2;                                  // expect error: 12:1: invalid-option-value
+Mesh 2;                                  // expect error: 12:1: invalid-option-value: Mesh.ElementsAcrossChannels = 0.5: a channel needs at least 1 element across (0 turns the criterion off)

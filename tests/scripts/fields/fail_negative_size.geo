@@ -5,4 +5,4 @@ Field[2] = Threshold;
 Field[2].InField = 1;
 Field[2].SizeMin = -0.1;
 h = FieldValue(2, 1, 0, 0);
-// expect error: 6:1: bad-field-value
+// expect error: 6:1: bad-field-value: Field[2] (Threshold): option 'SizeMin': a size must be positive and finite

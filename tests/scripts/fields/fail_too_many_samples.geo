@@ -6,4 +6,4 @@ Field[1] = Distance;
 Field[1].CurvesList = {1};
 Field[1].NumPointsPerCurve = 6e7;
 h = FieldValue(1, 0, 0, 0);
-// expect error: 7:1: bad-field-value
+// expect error: 7:1: bad-field-value: NumPointsPerCurve: more than 50000000 curve samples in one build

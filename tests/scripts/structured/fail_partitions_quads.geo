@@ -6,5 +6,5 @@ Curve Loop(1) = {1, 2, 3, 4};
 Plane Surface(1) = {1};
 Recombine Surface{1};
 Mesh.NbPartitions = 2;
-Mesh 2;   // expect error: 9:1: invalid-option-value
+Mesh 2;   // expect error: 9:1: invalid-option-value: Mesh.NbPartitions = 2: surface 1 has quadrangles, which are not partitioned yet (mesh it without Recombine, or set Mesh.NbPartitions = 0)
 // compare_with_gmsh: skip

@@ -2,6 +2,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "interp/options.h"
@@ -74,7 +75,22 @@ TEST_CASE("options: each refusal is a kind with its message") {
           "invalid value 0 for option 'Mesh.MaxElements' (must be > 0 and <= 1000000000000000)");
   refusal(o.set_color("Geometry.Color.Points", {1, 2, -1, 255}), Diag::OptionColorComponents,
           "color components of 'Geometry.Color.Points' must be in 0..255");
-  CHECK(o.set_box("Mesh.PictureBox", {10, 10, 0, 5}).kind == Diag::InvalidOptionValue);
+  // A box that frames nothing, in the words the interpreter gives io::PictureBoxProblem.
+  const double nan = std::nan("");
+  refusal(o.set_box("Mesh.PictureBox", {10, 10, 0, 5}), Diag::PictureBoxNoWidth,
+          "Mesh.PictureBox: west and east are both 10: the box has no width");
+  refusal(o.set_box("Mesh.PictureBox", {0, 10, nan, 5}), Diag::PictureBoxNotFinite,
+          "Mesh.PictureBox: the box {W, E, S, N} must be finite numbers");
+  refusal(o.set_box("Mesh.PictureBox", {-400, 10, 0, 5}), Diag::PictureBoxLongitudes,
+          "Mesh.PictureBox: longitudes west -400 and east 10 must lie in [-360, 360]");
+  refusal(o.set_box("Mesh.PictureBox", {0, 10, -95, 30}), Diag::PictureBoxLatitudes,
+          "Mesh.PictureBox: latitudes south -95 and north 30 must lie in [-90, 90]");
+  refusal(o.set_box("Mesh.PictureBox", {0, 10, 40, 30.5}), Diag::PictureBoxSouthNorth,
+          "Mesh.PictureBox: south 40 must be below north 30.5 (the box is {W, E, S, N})");
+  refusal(o.set_box("Mesh.PictureBox", {-300, 200, 0, 1}), Diag::PictureBoxTooWide,
+          "Mesh.PictureBox: from west -300 to east 200 is more than 360 degrees");
+  refusal(o.set_string("Mesh.NodeData", "depth, slope"), Diag::NodeDataUnknownValue,
+          "Mesh.NodeData: unknown value 'slope' (use depth, size or criterion, comma-separated)");
 }
 
 TEST_CASE("options: closest name for unknown options") {

@@ -19,9 +19,9 @@ sm::io::MeshPartition partition_of(const sm::io::MeshModel& m, int parts, int al
   opt.parts = parts;
   opt.algorithm = algorithm;
   sm::io::MeshPartition p;
-  std::string error;
+  sm::io::PartitionError error;
   REQUIRE(sm::io::partition_mesh(m, opt, &p, &error));
-  CHECK(error.empty());
+  CHECK(error.problem == sm::io::PartitionProblem::None);
   return p;
 }
 
@@ -81,14 +81,15 @@ TEST_CASE("mesh partition: one part, too many parts, nothing to partition") {
   sm::io::MeshPartitionOptions opt;
   opt.parts = 9;   // 8 triangles
   sm::io::MeshPartition p;
-  std::string error;
+  sm::io::PartitionError error;
   CHECK_FALSE(sm::io::partition_mesh(m, opt, &p, &error));
-  CHECK(error == "9 partitions of 8 2D elements: give between 1 and 8");
+  CHECK(error.problem == sm::io::PartitionProblem::PartCount);
+  CHECK(error.elements == 8);
   sm::io::MeshModel lines = m;
   lines.entities.pop_back();
   opt.parts = 2;
   CHECK_FALSE(sm::io::partition_mesh(lines, opt, &p, &error));
-  CHECK(error == "the mesh has no 2D elements to partition");
+  CHECK(error.problem == sm::io::PartitionProblem::NoElements);
 }
 
 TEST_CASE("partitioned model: pieces, interfaces and partition points, each node owned once") {

@@ -33,7 +33,7 @@ MeshModel dateline_patch(int n) {
 
 PictureBox box(double w, double e, double s, double n) {
   PictureBox b;
-  REQUIRE(sm::io::normalise_picture_box(w, e, s, n, &b).empty());
+  REQUIRE(sm::io::normalise_picture_box(w, e, s, n, &b) == sm::io::PictureBoxProblem::None);
   return b;
 }
 
@@ -327,12 +327,14 @@ TEST_CASE("picture: categories, one colour each, named in the legend") {
 
 TEST_CASE("picture: boxes that frame nothing are refused with the reason") {
   PictureBox b;
-  CHECK(sm::io::normalise_picture_box(0, 10, 40, 30, &b).find("south 40 must be below north 30") != std::string::npos);
-  CHECK(sm::io::normalise_picture_box(0, 10, -95, 30, &b).find("[-90, 90]") != std::string::npos);
-  CHECK(sm::io::normalise_picture_box(5, 5, 0, 1, &b).find("no width") != std::string::npos);
-  CHECK(sm::io::normalise_picture_box(0, 400, 0, 1, &b).find("[-360, 360]") != std::string::npos);
-  CHECK(sm::io::normalise_picture_box(-300, 200, 0, 1, &b).find("more than 360") != std::string::npos);
-  REQUIRE(sm::io::normalise_picture_box(170, -170, 0, 1, &b).empty());
+  using Problem = sm::io::PictureBoxProblem;
+  CHECK(sm::io::normalise_picture_box(0, 10, 40, 30, &b) == Problem::SouthNotBelowNorth);
+  CHECK(sm::io::normalise_picture_box(0, 10, -95, 30, &b) == Problem::Latitudes);
+  CHECK(sm::io::normalise_picture_box(5, 5, 0, 1, &b) == Problem::NoWidth);
+  CHECK(sm::io::normalise_picture_box(0, 400, 0, 1, &b) == Problem::Longitudes);
+  CHECK(sm::io::normalise_picture_box(-300, 200, 0, 1, &b) == Problem::TooWide);
+  CHECK(sm::io::normalise_picture_box(0, 10, 0, std::nan(""), &b) == Problem::NotFinite);
+  REQUIRE(sm::io::normalise_picture_box(170, -170, 0, 1, &b) == Problem::None);
   CHECK(b.west == 170);
   CHECK(b.east == 190);
 }
