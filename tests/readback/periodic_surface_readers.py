@@ -3,7 +3,9 @@
 (python3-gmsh) must load the MSH 4.1 and 2.2 files with their $Periodic section and see
 surface 12 as a copy of surface 11: as many triangles, every node of surface 12 (its
 boundary included) listed once with its master's node, each the master's turned by the
-map written with them, which turns point 2 onto point 3 (a third of a turn about z).
+map written with them, which turns point 2 onto point 3 (a third of a turn about z). And
+(periodic_surface_flip.geo) a copy onto a surface whose loop runs the other way has its
+triangles reversed: surface 1's all turn counter-clockwise, surface 2's all clockwise.
 
     periodic_surface_readers.py STEREOMESH
 Exit 0: all checks hold; 1: a check failed (each is printed); 77: a reader is missing.
@@ -42,6 +44,22 @@ def surface_view(path):
     return master, pairs, list(affine), sorted(own), listed, triangles
 
 
+def turns(path):
+    """Per surface 1 and 2: the signs of its triangles' areas about z."""
+    gmsh.initialize(["-v", "0"])
+    gmsh.option.setNumber("General.Verbosity", 0)
+    gmsh.open(path)
+    tags, coords, _ = gmsh.model.mesh.getNodes()
+    xyz = dict(zip(tags.tolist(), coords.reshape(-1, 3)))
+    out = {}
+    for s in (1, 2):
+        _, _, element_nodes = gmsh.model.mesh.getElements(2, s)
+        tri = element_nodes[0].reshape(-1, 3).tolist() if element_nodes else []
+        out[s] = {int(np.sign(np.cross(xyz[b] - xyz[a], xyz[c] - xyz[a])[2])) for a, b, c in tri}, len(tri)
+    gmsh.finalize()
+    return out
+
+
 def main():
     stereomesh = sys.argv[1]
     with tempfile.TemporaryDirectory() as out:
@@ -64,6 +82,11 @@ def main():
             check(np.linalg.norm(m.dot(p2)[:3] - want) < 1e-15, f"{name}: the map turns point 2 onto point 3")
             err = max((float(np.linalg.norm(a - m.dot(np.append(b, 1))[:3])) for a, b in pairs), default=1.0)
             check(err < 1e-12, f"{name}: each node of surface 12 is its master's turned ({err:.2g})")
+        if run_script(stereomesh, "periodic_surface_flip.geo", out, what="stereomesh ran the reversed loop"):
+            t = turns(os.path.join(out, "flip.msh"))
+            check(t[1][1] == t[2][1] and t[1][1] > 20, f"flip.msh: surfaces 1 and 2 have {t[1][1]} and {t[2][1]} triangles")
+            check(t[1][0] == {1} and t[2][0] == {-1},
+                  f"flip.msh: surface 1's triangles turn {t[1][0]}, surface 2's {t[2][0]} (want {{1}}, {{-1}})")
     finish()
 
 
