@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <map>
 #include <span>
 #include <string>
 #include <vector>
@@ -24,6 +25,7 @@
 #include "mesh/face_floor.h"
 #include "mesh/face_layer.h"
 #include "mesh/face_output.h"
+#include "mesh/face_periodic_copy.h"
 #include "mesh/face_refine.h"
 #include "mesh/face_sizing.h"
 #include "mesh/face_smooth.h"
@@ -124,6 +126,23 @@ bool run_face(FaceWork& f, const geo::ModelSurface& s) {
   return true;
 }
 
+// The periodic surfaces copied from `source`, then those copied from them (a chain; the
+// interpreter refuses cycles, and each surface is copied once: at most copies.size() steps).
+bool copy_periodic_faces(const geo::Model& model, ModelMesh& mesh, const Mesh2dOptions& opt, double bbox,
+                         Mesh2dResult& res, std::vector<std::uint32_t>& local_of,
+                         const std::map<int, PeriodicSurfaceSpec>& copies, int source, std::uint64_t& faces_done) {
+  std::vector<int> sources{source};
+  for (std::size_t next = 0; next < sources.size() && next <= copies.size(); ++next)
+    for (const auto& [target, spec] : copies) {
+      if (spec.source != sources[next] || !model.surface(target)) continue;
+      FaceWork f(model, mesh, opt, bbox, res, local_of, target);
+      if (!copy_periodic_face(f, spec)) return false;
+      progress_update(opt.progress, ++faces_done);
+      sources.push_back(target);
+    }
+  return true;
+}
+
 double model_bbox(const geo::Model& model, double given) {
   double bbox = given;
   if (!(bbox > 0)) bbox = model.bounding_box().diagonal();
@@ -142,7 +161,10 @@ Mesh2dResult mesh_surfaces(const geo::Model& model, ModelMesh& mesh, const Mesh2
   std::vector<std::uint32_t> local_of;
   progress_begin(opt.progress, "2D", model.surfaces().size());
   std::uint64_t faces_done = 0;
+  const std::map<int, PeriodicSurfaceSpec> no_copies;
+  const std::map<int, PeriodicSurfaceSpec>& copies = opt.constraints ? opt.constraints->periodic_surfaces : no_copies;
   for (const auto& [tag, s] : model.surfaces()) {
+    if (copies.count(tag)) continue;   // a periodic surface: copied after its source
     Mesh2dOptions own;  // a face with an algorithm of its own: the options with it
     const auto algo = opt.surface_algorithm.find(tag);
     if (algo != opt.surface_algorithm.end()) {
@@ -150,7 +172,7 @@ Mesh2dResult mesh_surfaces(const geo::Model& model, ModelMesh& mesh, const Mesh2
       own.algorithm = algo->second;
     }
     FaceWork f(model, mesh, algo != opt.surface_algorithm.end() ? own : opt, bbox, res, local_of, s.tag);
-    if (!run_face(f, s)) {
+    if (!run_face(f, s) || !copy_periodic_faces(model, mesh, opt, bbox, res, local_of, copies, tag, faces_done)) {
       progress_end(opt.progress);
       return res;
     }

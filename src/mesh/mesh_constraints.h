@@ -50,6 +50,22 @@ struct PeriodicPointSpec {
   std::vector<double> affine;
 };
 
+/// `Periodic Surface target {curves} = source {curves} [transform];` (Gmsh's meshMaster
+/// of the target surface): the target's mesh is a copy of its source's by `affine` (16
+/// numbers row by row, given or inferred), its boundary curves' copies being periodic
+/// curves of their own.
+struct PeriodicSurfaceSpec {
+  /// A boundary curve of the target with its counterpart on the source's, and whether
+  /// their nodes run alike (+1) or reversed (-1); a curve may be its own counterpart.
+  struct CurvePair {
+    int target = 0, source = 0;   // > 0
+    int orientation = 1;
+  };
+  int source = 0;   // > 0
+  std::vector<double> affine;
+  std::vector<CurvePair> curves;
+};
+
 /// Mesh.RecombinationAlgorithm 0 (simple) and 1 (blossom-quality; see recombine.h).
 enum class RecombineAlgorithm { Simple = 0, Matching = 1 };
 
@@ -68,11 +84,14 @@ struct MeshConstraints {
   /// last statement naming a point wins, as in Gmsh).
   std::map<int, PeriodicCurveSpec> periodic_curves;
   std::map<int, PeriodicPointSpec> periodic_points;
+  /// `Periodic Surface`: target surface tag -> its source.
+  std::map<int, PeriodicSurfaceSpec> periodic_surfaces;
 
   bool recombines(int surface) const { return recombine_all || recombine.count(surface) > 0; }
   bool empty() const {
     return curves.empty() && surfaces.empty() && recombine.empty() && !recombine_all && surface_algorithm.empty() &&
-           compound_curves.empty() && compound_surfaces.empty() && periodic_curves.empty();
+           compound_curves.empty() && compound_surfaces.empty() && periodic_curves.empty() &&
+           periodic_surfaces.empty();
   }
 };
 

@@ -51,7 +51,7 @@ struct ModelMesh {
   std::map<int, CurveMesh> curves;            // curve tag -> its mesh
   std::map<int, SurfaceMesh> surfaces;
   int dim = 0;                                // highest dimension meshed
-  std::vector<PeriodicLink> periodic;         // points, then curves, in tag order
+  std::vector<PeriodicLink> periodic;         // points, curves, then surfaces, in tag order
 
   std::uint32_t add_node(Vec3 xyz) {
     nodes.push_back({xyz, {}, false});

@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "mesh/periodic_surface.h"
+
 namespace sm {
 
 std::vector<double> periodic_translation(Vec3 d) {
@@ -151,6 +153,8 @@ std::vector<PeriodicLink> periodic_links(const geo::Model& model, const ModelMes
     for (std::size_t i = 0; i < mine.size(); ++i) l.nodes.emplace_back(mine[i], theirs[i]);
     out.push_back(std::move(l));
   }
+  std::vector<PeriodicLink> surfaces = periodic_surface_links(mesh, c, why);
+  for (PeriodicLink& l : surfaces) out.push_back(std::move(l));
   return out;
 }
 

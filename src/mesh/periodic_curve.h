@@ -41,7 +41,8 @@ std::optional<int> periodic_orientation(const geo::Model& model, int target, int
 bool periodic_curve_nodes(const geo::Model& model, const ModelMesh& mesh, int target, const PeriodicCurveSpec& spec,
                           std::vector<double>& ts, std::vector<Vec3>& xyz, std::string* why);
 
-/// The $Periodic correspondences of a meshed model, points then curves in tag order: a
+/// The $Periodic correspondences of a meshed model, points, curves, then surfaces
+/// (periodic_surface_links) in tag order: a
 /// curve's nodes (ends included) with its source's in the copy's order, a point's node
 /// with its master's. Empty `why` when every target has as many nodes as its source,
 /// else what broke the copy (the 1D repair splitting one of them).

@@ -441,7 +441,8 @@ MeshFailure finish_2d_elements(Interpreter& in, const CompoundSurfacePlan& compo
                                Mesh2dResult& r2, SourceRange where) {
   KernelState& k = in.kernel();
   classify_compound_elements(k.model, compounds, mesh);
-  if (!k.constraints.periodic_curves.empty()) {   // the quality floor may have split a curve edge
+  // the quality floor may have split a curve edge
+  if (!k.constraints.periodic_curves.empty() || !k.constraints.periodic_surfaces.empty()) {
     std::string why;
     mesh.periodic = periodic_links(k.model, mesh, k.constraints, &why);
     if (!why.empty()) return {Diag::MeshFailed, why, {}};

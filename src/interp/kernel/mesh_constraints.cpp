@@ -3,6 +3,8 @@
 // `Transfinite Surface{s} = {corners} Left|Right|Alternate...;`, `Recombine Surface{s};`.
 #include <cmath>
 #include <cstdlib>
+#include <map>
+#include <set>
 
 #include <fmt/format.h>
 
@@ -10,6 +12,7 @@
 #include "interp/kernel/dispatch.h"
 #include "interp/kernel/geometry_shapes.h"
 #include "mesh/periodic_curve.h"
+#include "mesh/periodic_surface.h"
 
 namespace sm::interp {
 
@@ -165,6 +168,20 @@ std::vector<double> periodic_affine(Interpreter& in, const Stmt& s, const Period
 // Without a transform the signs give the direction; with one, the transform must take
 // the source's end points onto the target's (within Geometry.Tolerance of the model's
 // size, as Gmsh 4.8.4 checks it), which gives the direction.
+// Curve `t`'s mesh a copy of curve `spec.source`'s, and the nodes of t's end points copies
+// of their masters' (for a surface's curves, a point that maps onto itself, on a rotation's
+// axis, is left out as Gmsh leaves it).
+void add_periodic_curve(KernelState& k, int t, PeriodicCurveSpec spec, bool skip_fixed_points) {
+  const geo::Model& m = k.model;
+  const geo::ModelCurve& tc = *m.curve(t);
+  const geo::ModelCurve& sc = *m.curve(spec.source);
+  const int master_of_begin = spec.orientation > 0 ? sc.begin : sc.end;
+  const int master_of_end = spec.orientation > 0 ? sc.end : sc.begin;
+  if (!skip_fixed_points || tc.begin != master_of_begin) k.constraints.periodic_points[tc.begin] = {master_of_begin, spec.affine};
+  if (!skip_fixed_points || tc.end != master_of_end) k.constraints.periodic_points[tc.end] = {master_of_end, spec.affine};
+  k.constraints.periodic_curves[t] = std::move(spec);
+}
+
 void exec_periodic_curve(Interpreter& in, const Stmt& s, const PeriodicStmt& n) {
   KernelState& k = in.kernel();
   const geo::Model& m = k.model;
@@ -188,12 +205,91 @@ void exec_periodic_curve(Interpreter& in, const Stmt& s, const PeriodicStmt& n) 
         in.fail(s.range, Diag::PeriodicEndsMissed, src, t, d.first, d.second, tolerance);
       spec.orientation = *o;
     }
-    const geo::ModelCurve& tc = *m.curve(t);
-    const geo::ModelCurve& sc = *m.curve(src);
-    k.constraints.periodic_points[tc.begin] = {spec.orientation > 0 ? sc.begin : sc.end, affine};
-    k.constraints.periodic_points[tc.end] = {spec.orientation > 0 ? sc.end : sc.begin, affine};
-    k.constraints.periodic_curves[t] = std::move(spec);
+    add_periodic_curve(k, t, std::move(spec), false);
   }
+}
+
+// The curves bounding surface `tag` (unsigned).
+std::set<int> surface_curves(const geo::Model& m, int tag) {
+  std::set<int> out;
+  for (int l : m.surface(tag)->loops)
+    if (const geo::ModelCurveLoop* loop = m.curve_loop(std::abs(l)))
+      for (int c : loop->curves) out.insert(std::abs(c));
+  return out;
+}
+
+// The end points of the paired curves, master's point -> target's point (Gmsh's pairing in
+// GFace::setMeshMaster: the signs of a pair say whether the curves run alike).
+std::map<int, int> paired_points(const geo::Model& m, const std::vector<int>& targets,
+                                 const std::vector<int>& sources) {
+  std::map<int, int> out;
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    const geo::ModelCurve& tc = *m.curve(std::abs(targets[i]));
+    const geo::ModelCurve& sc = *m.curve(std::abs(sources[i]));
+    const bool alike = (targets[i] < 0) == (sources[i] < 0);
+    out[sc.begin] = alike ? tc.begin : tc.end;
+    out[sc.end] = alike ? tc.end : tc.begin;
+  }
+  return out;
+}
+
+// `Periodic Surface target {curves} = source {curves};` (Gmsh 4.8.4's addPeriodicFace): the
+// target's mesh becomes a copy of the source's, by the translation or rotation that takes
+// the paired curves' end points onto each other; each pair of curves becomes periodic (a
+// curve paired with itself, on a rotation's axis, stays as it is).
+void exec_periodic_surface(Interpreter& in, const Stmt& s, const PeriodicStmt& n) {
+  KernelState& k = in.kernel();
+  const geo::Model& m = k.model;
+  const int t = static_cast<int>(in.eval_number(n.slave_surface));
+  const int src = static_cast<int>(in.eval_number(n.master_surface));
+  const std::vector<int> targets = eval_tags(in, n.slaves), sources = eval_tags(in, n.masters);
+  for (int f : {t, src})
+    if (!m.surface(f)) in.fail(s.range, Diag::PeriodicSurfaceMissing, t, f);
+  if (t == src) in.fail(s.range, Diag::PeriodicSurfaceItself, t);
+  if (targets.size() != sources.size())
+    in.fail(s.range, Diag::PeriodicSurfaceCurveCounts, targets.size(), t, sources.size(), src);
+  const std::set<int> target_boundary = surface_curves(m, t), source_boundary = surface_curves(m, src);
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    for (int c : {targets[i], sources[i]})
+      if (!m.curve(std::abs(c))) in.fail(s.range, Diag::PeriodicCurveMissing, std::abs(targets[i]), std::abs(c));
+    if (!target_boundary.count(std::abs(targets[i])))
+      in.fail(in.ast().expr(n.slaves).range, Diag::PeriodicSurfaceCurveOff, std::abs(targets[i]), t);
+    if (!source_boundary.count(std::abs(sources[i])))
+      in.fail(in.ast().expr(n.masters).range, Diag::PeriodicSurfaceCurveOff, std::abs(sources[i]), src);
+  }
+  std::set<int> listed;
+  for (int c : targets) listed.insert(std::abs(c));
+  for (int c : target_boundary)
+    if (!listed.count(c)) in.fail(in.ast().expr(n.slaves).range, Diag::PeriodicSurfaceCurveUnpaired, c, t);
+  for (int cur = src, steps = 0; steps <= static_cast<int>(k.constraints.periodic_surfaces.size()); ++steps) {
+    const auto up = k.constraints.periodic_surfaces.find(cur);
+    if (up == k.constraints.periodic_surfaces.end()) break;
+    if (up->second.source == t) in.fail(s.range, Diag::PeriodicSurfaceCycle, t, src, t);
+    cur = up->second.source;
+  }
+
+  const double tolerance = m.options().tolerance * m.bounding_box().diagonal();
+  const std::map<int, int> points = paired_points(m, targets, sources);
+  std::vector<std::pair<Vec3, Vec3>> places;
+  for (const auto& [from, to] : points) places.emplace_back(m.vertex(from)->xyz, m.vertex(to)->xyz);
+  std::string why;
+  const std::vector<double> affine = infer_periodic_transform(places, tolerance, &why);
+  if (affine.empty()) in.fail(s.range, Diag::PeriodicSurfaceNoMap, t, src, why);
+  for (const auto& [from, to] : points) {
+    const double miss = norm(apply_affine(affine, m.vertex(from)->xyz) - m.vertex(to)->xyz);
+    if (!(miss <= tolerance)) in.fail(s.range, Diag::PeriodicSurfacePointMissed, from, to, miss, tolerance);
+  }
+  PeriodicSurfaceSpec spec{src, affine, {}};
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    const int tc = std::abs(targets[i]), sc = std::abs(sources[i]);
+    std::pair<double, double> d{0, 0};
+    const std::optional<int> o = periodic_orientation(m, tc, sc, affine, tolerance, &d);
+    if (!o) in.fail(s.range, Diag::PeriodicEndsMissed, sc, tc, d.first, d.second, tolerance);
+    spec.curves.push_back({tc, sc, *o});
+    // Gmsh: a curve that maps onto itself (a rotation's axis) keeps its own mesh
+    if (tc != sc) add_periodic_curve(k, tc, {sc, *o, affine}, true);
+  }
+  k.constraints.periodic_surfaces[t] = std::move(spec);
 }
 
 }  // namespace
@@ -207,8 +303,10 @@ void exec_mesh_constraint_stmt(Interpreter& in, StmtId id) {
     case StmtKind::EntitySetting: exec_entity_setting(in, id, s, std::get<EntitySettingStmt>(s.node)); break;
     case StmtKind::Periodic: {
       const auto& n = std::get<PeriodicStmt>(s.node);
-      // `Periodic Surface` (a copy of a surface's mesh) is not supported yet: reported as such.
-      if (n.ent == EntityKind::Curve && !n.slave_surface.valid()) exec_periodic_curve(in, s, n);
+      // The braced surface form (`Periodic Surface{targets} = {sources} Translate{..};`,
+      // which pairs the curves by the transform) is not supported yet: reported as such.
+      if (n.slave_surface.valid()) exec_periodic_surface(in, s, n);
+      else if (n.ent == EntityKind::Curve) exec_periodic_curve(in, s, n);
       else exec_geometry_stmt(in, id);
       break;
     }
