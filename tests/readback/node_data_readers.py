@@ -12,7 +12,7 @@ import os
 import sys
 import tempfile
 
-from readback import check, finish, reader, run_script  # exits 77 when a reader is missing
+from readback import check, finish, gmsh_nodes, reader, run_script  # exits 77 when a reader is missing
 import gmsh
 import netCDF4
 import numpy as np
@@ -33,10 +33,7 @@ def by_point(xyz, values):
 
 
 def gmsh_views(path):
-    gmsh.initialize(["-v", "0"])
-    gmsh.open(path)
-    tags, coords, _ = gmsh.model.mesh.getNodes()
-    xyz = dict(zip(tags.tolist(), coords.reshape(-1, 3)))
+    xyz = gmsh_nodes(path)
     out = {}
     for t in gmsh.view.getTags():
         name = gmsh.option.getString(f"View[{gmsh.view.getIndex(t)}].Name")

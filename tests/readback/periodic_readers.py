@@ -12,7 +12,7 @@ import os
 import sys
 import tempfile
 
-from readback import check, finish, run_script  # exits 77 when a reader is missing
+from readback import check, finish, gmsh_nodes, run_script  # exits 77 when a reader is missing
 import gmsh
 import numpy as np
 
@@ -20,12 +20,7 @@ import numpy as np
 def periodic_view(path):
     """Per curve 1..4: (master tag, node pairs' coordinates (slave, master), affine map,
     line element count) as Gmsh's reader sees them."""
-    gmsh.initialize(["-v", "0"])
-    gmsh.option.setNumber("General.Verbosity", 0)
-    gmsh.option.setNumber("Mesh.IgnorePeriodicity", 0)   # else MSH 2.2's section is skipped
-    gmsh.open(path)
-    tags, coords, _ = gmsh.model.mesh.getNodes()
-    xyz = dict(zip(tags.tolist(), coords.reshape(-1, 3)))
+    xyz = gmsh_nodes(path, periodic=True)
     out = {}
     for c in range(1, 5):
         master, nodes, master_nodes, affine = gmsh.model.mesh.getPeriodicNodes(1, c)

@@ -15,7 +15,7 @@ import os
 import sys
 import tempfile
 
-from readback import check, finish, run_script  # exits 77 when a reader is missing
+from readback import check, finish, gmsh_nodes, run_script  # exits 77 when a reader is missing
 import gmsh
 import numpy as np
 
@@ -24,12 +24,7 @@ def surface_view(path):
     """(master, node pairs' coordinates (slave, master), affine map, the nodes of surface
     12's triangles, the nodes the link lists, triangles of surfaces 11 and 12) as Gmsh's
     reader sees them."""
-    gmsh.initialize(["-v", "0"])
-    gmsh.option.setNumber("General.Verbosity", 0)
-    gmsh.option.setNumber("Mesh.IgnorePeriodicity", 0)   # else MSH 2.2's section is skipped
-    gmsh.open(path)
-    tags, coords, _ = gmsh.model.mesh.getNodes()
-    xyz = dict(zip(tags.tolist(), coords.reshape(-1, 3)))
+    xyz = gmsh_nodes(path, periodic=True)
     master, nodes, master_nodes, affine = gmsh.model.mesh.getPeriodicNodes(2, 12)
     pairs = [(xyz[a], xyz[b]) for a, b in zip(nodes.tolist(), master_nodes.tolist())]
     triangles, own = [], set()
@@ -46,11 +41,7 @@ def surface_view(path):
 
 def turns(path):
     """Per surface 1 and 2: the signs of its triangles' areas about z."""
-    gmsh.initialize(["-v", "0"])
-    gmsh.option.setNumber("General.Verbosity", 0)
-    gmsh.open(path)
-    tags, coords, _ = gmsh.model.mesh.getNodes()
-    xyz = dict(zip(tags.tolist(), coords.reshape(-1, 3)))
+    xyz = gmsh_nodes(path)
     out = {}
     for s in (1, 2):
         _, _, element_nodes = gmsh.model.mesh.getElements(2, s)

@@ -13,7 +13,7 @@ import os
 import sys
 import tempfile
 
-from readback import check, finish, run_script, reader  # exits 77 when a reader is missing
+from readback import check, finish, gmsh_nodes, run_script, reader  # exits 77 when a reader is missing
 import gmsh
 import netCDF4
 import numpy as np
@@ -23,11 +23,7 @@ meshio = reader("meshio")
 
 def gmsh_quads(path):
     """(quadrangles, triangles, smallest quadrangle area) as Gmsh's reader sees them."""
-    gmsh.initialize(["-v", "0"])
-    gmsh.option.setNumber("General.Verbosity", 0)
-    gmsh.open(path)
-    tags, coords, _ = gmsh.model.mesh.getNodes()
-    xyz = dict(zip(tags.tolist(), coords.reshape(-1, 3)))
+    xyz = gmsh_nodes(path)
     quads = tris = 0
     smallest = float("inf")
     for dim, tag in gmsh.model.getEntities(2):

@@ -24,6 +24,19 @@ def check(ok, what):
         failures.append(what)
 
 
+def gmsh_nodes(path, periodic=False):
+    """Opens PATH in Gmsh's reader, quietly, and gives its nodes as {tag: xyz}; the model stays
+    open for the caller's further queries (the caller ends with gmsh.finalize()). With
+    `periodic`, the $Periodic section is read (MSH 2.2's is skipped otherwise)."""
+    gmsh.initialize(["-v", "0"])
+    gmsh.option.setNumber("General.Verbosity", 0)
+    if periodic:
+        gmsh.option.setNumber("Mesh.IgnorePeriodicity", 0)
+    gmsh.open(path)
+    tags, coords, _ = gmsh.model.mesh.getNodes()
+    return dict(zip(tags.tolist(), coords.reshape(-1, 3)))
+
+
 def run_script(stereomesh, script, out_dir, extra=(), what=None):
     """stereomesh -0 SCRIPT -setstring OutDir OUT_DIR [EXTRA...]: the finished run (its stdout
     holds the script's Printf lines), or None (a failed check) if it fails. With `what`, its

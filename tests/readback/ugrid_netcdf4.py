@@ -10,7 +10,7 @@ import os
 import sys
 import tempfile
 
-from readback import check, finish, run_script  # exits 77 when a reader is missing
+from readback import check, finish, gmsh_nodes, run_script  # exits 77 when a reader is missing
 import gmsh
 import netCDF4
 import numpy as np
@@ -24,10 +24,7 @@ def main():
 
 
 def compare(msh_path, nc_path):
-    gmsh.initialize(["-v", "0"])
-    gmsh.open(msh_path)
-    tags, coords, _ = gmsh.model.mesh.getNodes()
-    xyz = dict(zip(tags.tolist(), coords.reshape(-1, 3)))
+    xyz = gmsh_nodes(msh_path)
     tri = []
     for _, etags, enodes in zip(*gmsh.model.mesh.getElements(2)):
         tri += [tuple(enodes[i:i + 3]) for i in range(0, len(enodes), 3)]
