@@ -27,7 +27,7 @@
 # beside the checkout (it stops with a message otherwise).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-# --scale: the full GSHHG at 30, 10 and 3 km and the default example instead of the
+# --scale: the full GSHHG at 30, 10, 3 and 1 km and the default example instead of the
 # side-by-side run, measured once (tests/bench/scale.sh), then every doc that quotes those
 # figures written from that one measurement (tests/bench/scale_docs.py).
 if [[ ${1:-} == --scale ]]; then

@@ -18,9 +18,12 @@
 #   full10     gamma = coast size = 10 km
 #   full3      gamma = coast size = 3 km
 #   full3nt2   the 3 km case with -nt 2: its wall time against full3's, and the same bytes
+#   full1      the ten-million-triangle case (tests/bench/tenmillion.sh's): gamma 3 km, a 1 km
+#              coast (ShoreSizeMin), the shore ramp to 80 km (ShoreSizeMax): 9.2 M triangles
+#   full1nt2   the same with -nt 2
 #   example_X  each other example (examples/X.geo) as it comes: docs/examples.md's table
 # and the import alone (bench_coast_scale: each step with its peak memory) at 30, 10 and
-# 3 km. About 3 minutes of CPU on this project's machine.
+# 3 km. About 8 minutes of CPU and 1.1 GB of memory on this project's machine.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
@@ -69,6 +72,9 @@ run_case full30open 1 world_ocean "${full_args[@]}" -setnumber CloseNarrowWater 
 run_case full10 1 world_ocean "${full_args[@]}" -setnumber CoastAccuracy 10000 -setnumber ShoreSizeMin 10000
 run_case full3 1 world_ocean "${full_args[@]}" -setnumber CoastAccuracy 3000 -setnumber ShoreSizeMin 3000
 run_case full3nt2 2 world_ocean "${full_args[@]}" -setnumber CoastAccuracy 3000 -setnumber ShoreSizeMin 3000
+ten_million=(-setnumber CoastAccuracy 3000 -setnumber ShoreSizeMin 1000 -setnumber ShoreSizeMax 80e3)
+run_case full1 1 world_ocean "${full_args[@]}" "${ten_million[@]}"
+run_case full1nt2 2 world_ocean "${full_args[@]}" "${ten_million[@]}"
 # The other examples as `stereomesh -2 examples/X.geo` runs them: docs/examples.md's table.
 for example in gb_ireland arctic great_barrier_reef north_sea_scheldt gulf_of_mexico irish_sea mediterranean; do
   run_case "example_$example" 1 "$example"
