@@ -1,7 +1,6 @@
 // Coastline statements (native extension, paper section 2.2): `Coastline[n] = GSHHS;`,
 // `Coastline[n].Option = value;`, `Delete Coastline[n];` and the import `Coastline{n}`, which
 // runs coast::build_coast_model and turns its loops into points, curves and curve loops.
-#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -24,7 +23,6 @@
 #include "field/registry.h"
 #include "interp/coast_diagnostic.h"
 #include "interp/kernel/coastline_report.h"
-#include "interp/kernel/coastline_short_curves.h"
 #include "interp/kernel/dispatch.h"
 #include "interp/kernel/field_eval.h"
 #include "interp/kernel/geometry_shapes.h"
@@ -43,7 +41,6 @@ struct CoastlineImport {
   std::vector<int> curves, open_curves, points;
   std::vector<int> coast_points;     // points of the coast curves (no open-boundary point but their ends)
   std::vector<int> coast_curves;     // curves that are not open boundaries (dams included)
-  std::vector<int> two_point_curves;   // coast curves of two points (the dams, mostly)
   /// Per open curve: the sides of the Region box it runs along (bit 0 West, 1 East,
   /// 2 South, 3 North), or the edges of the Region polygon (0-based, as given).
   std::vector<std::uint8_t> open_sides;
@@ -604,7 +601,6 @@ int add_loop(CoastImportWork& w, const coast::CoastModel& m, const coast::CoastL
       imp.open_edges.push_back(w.polygon ? w.polygon->edges_along(cc.ll) : std::vector<std::size_t>{});
     } else {
       imp.coast_curves.push_back(tag);
-      if (cp.size() == 2) imp.two_point_curves.push_back(tag);
       // Its points, the ends it shares with its neighbours once (the loop's first point
       // may come last, closing the loop).
       for (int p : cp)
@@ -658,15 +654,6 @@ std::shared_ptr<const CoastlineImport> import_coastline(Interpreter& in, int id,
 }
 
 }  // namespace
-
-std::vector<int> coastline_two_point_curves(const KernelState& k) {
-  std::vector<int> tags;
-  for (const auto& [id, d] : k.coastlines)
-    if (d.imported) tags.insert(tags.end(), d.imported->two_point_curves.begin(), d.imported->two_point_curves.end());
-  std::sort(tags.begin(), tags.end());
-  tags.erase(std::unique(tags.begin(), tags.end()), tags.end());
-  return tags;
-}
 
 void exec_coastline_stmt(Interpreter& in, StmtId id) {
   const Stmt& s = in.ast().stmt(id);

@@ -27,7 +27,6 @@
 #include "interp/kernel/field_eval.h"
 #include "interp/kernel/geometry_shapes.h"
 #include "interp/kernel/node_data_export.h"
-#include "interp/kernel/coastline_short_curves.h"
 #include "interp/kernel/ocean_grid_export.h"
 #include "interp/kernel/output_options.h"
 #include "interp/kernel/partition_export.h"
@@ -475,7 +474,7 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   // Shown as a stage when there is a field to set up (not for a model with sizes at points).
   const bool has_fields = (k.background_field && *k.background_field > 0) || !k.coastlines.empty();
   std::optional<StageScope> fields_stage(std::in_place, &k.clock, has_fields ? progress_sink(in) : nullptr, "fields");
-  field::FieldPtr background = with_short_curve_grading(k, with_channel_sizes(in, background_size_field(in)));
+  field::FieldPtr background = with_channel_sizes(in, background_size_field(in));
   fields_stage.reset();
   Mesh2dOptions opt2;
   if (dim >= 2)

@@ -7,7 +7,6 @@
 #include "field/min_max.h"
 #include "field/size_policy.h"
 #include "interp/interpreter.h"
-#include "interp/kernel/coastline_short_curves.h"
 #include "interp/kernel/field_context.h"
 #include "interp/kernel/field_eval.h"
 #include "interp/kernel/size_policy_from_options.h"
@@ -34,7 +33,7 @@ std::string node_data_named(Interpreter& in, const io::MeshModel& mm, const std:
   auto sizes = [&]() -> std::string {
     if (sized) return {};
     base = background_size_field(in);
-    sized = with_short_curve_grading(k, with_channel_sizes(in, base));
+    sized = with_channel_sizes(in, base);
     if (!sized) return "Mesh.NodeData: size and criterion need a size field (Background Field = n, or a Coastline)";
     sized_h.resize(n);
     sized->eval(mm.xyz, sized_h);
