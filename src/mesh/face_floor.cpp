@@ -12,7 +12,7 @@
 
 #include <fmt/format.h>
 
-#include "exact/quality.h"
+#include "base/parallel.h"
 #include "mesh/modify/optimize.h"
 #include "mesh/quality_floor.h"
 #include "mesh/store_undo.h"
@@ -75,14 +75,8 @@ void report_floor(FaceWork& f, const QualityFloorResult& r) {
   const std::uint32_t rest = r.below_after - r.at_sharp;
   if (rest > 0) {
     // The worst of them, for the place.
-    double worst = 2;
-    TriId wt;
-    for (std::uint32_t t = 0; t < f.tri.num_slots(); ++t) {
-      if (!f.tri.alive(TriId{t})) continue;
-      const double rt = rho(space_of(f, f.tri.vertex(TriId{t}, 0)), space_of(f, f.tri.vertex(TriId{t}, 1)),
-                            space_of(f, f.tri.vertex(TriId{t}, 2)));
-      if (rt < worst) worst = rt, wt = TriId{t};
-    }
+    const auto [wt, worst] =
+        worst_triangle(f.tri, [&f](VertexId v) { return space_of(f, v); }, resolve_thread_count(f.opt.threads));
     const Vec3 c =
         (space_of(f, f.tri.vertex(wt, 0)) + space_of(f, f.tri.vertex(wt, 1)) + space_of(f, f.tri.vertex(wt, 2))) / 3.0;
     f.res.quality_warnings.push_back(fmt::format(
@@ -215,6 +209,7 @@ QualityFloorOptions floor_run_options(const FaceWork& f, bool never_worse, bool 
   QualityFloorOptions fo;
   fo.floor = f.opt.quality_floor;
   fo.never_below_start = never_worse;
+  fo.threads = resolve_thread_count(f.opt.threads);
   if (beyond_refinement) {
     // Most of what is below such a floor stays below it: a quarter of the budgets (one
     // point per triangle below it at the start), so that the run stays within about
@@ -232,6 +227,7 @@ void requality_after_floor(FaceWork& f) {
   oo.threshold = std::min(0.9, f.opt.quality_floor + 0.2);
   oo.sacrifice_below = oo.threshold;
   oo.compound_below = std::min(oo.threshold, f.opt.quality_floor + 0.1);
+  oo.threads = resolve_thread_count(f.opt.threads);
   optimize_quality(f.tri, f.fixed_count, oo);
 }
 
@@ -252,7 +248,8 @@ void raise_face_floor(FaceWork& f) {
   // runs again never going below the face's starting worst.
   const auto space = [&f](VertexId v) { return space_of(f, v); };
   double worst_start = 1;
-  const std::uint32_t below_start = count_below(f.tri, space, f.opt.quality_floor, &worst_start);
+  const int threads = resolve_thread_count(f.opt.threads);
+  const std::uint32_t below_start = count_below(f.tri, space, f.opt.quality_floor, &worst_start, threads);
   if (below_start == 0) return;
   // The refinement's merge sized the store's arrays exactly (partition.cpp): room for
   // the floor's points (at most QualityFloorOptions' default budget, each 2 triangles net,
@@ -284,7 +281,7 @@ void raise_face_floor(FaceWork& f) {
     left = raise_quality_floor(f.tri, face, count_only);
     if (undo.faulted(left)) return;
     double worst_end = 1;
-    count_below(f.tri, space, f.opt.quality_floor, &worst_end);
+    count_below(f.tri, space, f.opt.quality_floor, &worst_end, threads);
     worse = r.changed() && !(worst_end >= worst_start && left.below_after <= below_start);
     if (!worse) break;
   }
@@ -296,6 +293,7 @@ void raise_face_floor(FaceWork& f) {
     QualityFloorOptions count_only;
     count_only.floor = f.opt.quality_floor;
     count_only.max_rounds = 0;
+    count_only.threads = threads;
     left = raise_quality_floor(f.tri, face, count_only);
     if (undo.faulted(left)) return;
     f.res.quality_warnings.push_back(fmt::format(

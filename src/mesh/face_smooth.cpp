@@ -25,6 +25,7 @@ void optimize_face(FaceWork& f) {
     oo.sacrifice_below = 0.7;
     oo.max_share_loss = 1e-4;
   }
+  oo.threads = resolve_thread_count(f.opt.threads);
   optimize_quality(f.tri, f.fixed_count, oo);
 }
 

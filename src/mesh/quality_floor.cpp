@@ -3,9 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <span>
 #include <utility>
+#include <vector>
 
+#include "base/parallel.h"
 #include "exact/predicates.h"
 #include "exact/segments.h"
 #include "exact/quality.h"
@@ -18,6 +21,21 @@ namespace sm {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+// Triangles (or vertices) per chunk of the floor's scans over the whole face: fixed, so
+// the chunks, and the results reduced in chunk order, do not depend on the thread count.
+constexpr std::size_t kFloorScanChunk = 16384;
+
+// fn(begin, end) over the chunks of [0, n), on `threads` threads when there is more than
+// one chunk (a single chunk, as after each insertion, runs here without the fork).
+void floor_scan(int threads, std::size_t n, const std::function<void(std::size_t, std::size_t)>& fn) {
+  if (n <= kFloorScanChunk) {
+    if (n > 0) fn(0, n);
+    return;
+  }
+  parallel_for_chunks(threads, n, kFloorScanChunk, fn);
+}
+
+std::size_t floor_scan_chunks(std::size_t n) { return (n + kFloorScanChunk - 1) / kFloorScanChunk; }
 
 // rho of the isoceles triangle with apex angle a: 8 sin(a/2) sin^2((pi - a)/4).
 double isoceles_rho(double a) {
@@ -72,7 +90,7 @@ class Floor {
  public:
   Floor(TriangleStore& m, const FloorFace& face, const QualityFloorOptions& opt)
       : m_(m), face_(face), q_(opt.floor), limit_(sharp_angle_limit(opt.floor)),
-        never_below_start_(opt.never_below_start), ins_(m) {}
+        never_below_start_(opt.never_below_start), threads_(std::max(1, opt.threads)), ins_(m) {}
 
   QualityFloorResult run(const QualityFloorOptions& opt);
 
@@ -101,9 +119,16 @@ class Floor {
     return s;
   }
   void sync_space() {
-    for (std::uint32_t v = static_cast<std::uint32_t>(x_.size()); v < m_.num_vertices(); ++v)
-      x_.push_back(face_.space(VertexId{v}));
+    const std::size_t from = x_.size(), n = m_.num_vertices();
+    if (from >= n) return;
+    x_.resize(n);
+    floor_scan(threads_, n - from, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t v = from + begin; v < from + end; ++v) x_[v] = face_.space(VertexId{static_cast<std::uint32_t>(v)});
+    });
   }
+  /// The live triangles with rho < q_ ((rho, slot) by slot) and the lowest rho of all,
+  /// measured on the threads.
+  std::vector<std::pair<double, std::uint32_t>> scan_below(double* lowest);
   double rho3(TriId t) const {
     return rho(x_[m_.vertex(t, 0).value], x_[m_.vertex(t, 1).value], x_[m_.vertex(t, 2).value]);
   }
@@ -141,6 +166,7 @@ class Floor {
   const FloorFace& face_;
   double q_, limit_;
   bool never_below_start_;
+  int threads_;
   PointInserter ins_;
   std::vector<Vec3> x_;
   std::vector<TriId> touched_;
@@ -177,15 +203,23 @@ VertexId Floor::sharp_corner(TriId t, double* angle) {
 }
 
 void Floor::find_sharp_corners() {
-  for (std::uint32_t t = 0; t < m_.num_slots(); ++t) {
-    if (!m_.alive(TriId{t})) continue;
-    for (std::uint32_t e = 0; e < 3; ++e) {
-      const VertexId v = m_.vertex(TriId{t}, e);
-      if (!face_.is_corner(v)) continue;
-      const double a = wedge(TriId{t}, e);
-      if (a < limit_) sharp_all_.push_back({v, a * 180 / kPi});
+  // The corners of the live triangles found on the threads (by slot, then corner), their
+  // wedges measured here in that order (a walk that does not end is a fault).
+  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(floor_scan_chunks(m_.num_slots()));
+  floor_scan(threads_, m_.num_slots(), [&](std::size_t begin, std::size_t end) {
+    auto& out = found[begin / kFloorScanChunk];
+    for (std::size_t t = begin; t < end; ++t) {
+      if (!m_.alive(TriId{static_cast<std::uint32_t>(t)})) continue;
+      for (std::uint32_t e = 0; e < 3; ++e)
+        if (face_.is_corner(m_.vertex(TriId{static_cast<std::uint32_t>(t)}, e)))
+          out.emplace_back(static_cast<std::uint32_t>(t), e);
     }
-  }
+  });
+  for (const auto& chunk : found)
+    for (const auto& [t, e] : chunk) {
+      const double a = wedge(TriId{t}, e);
+      if (a < limit_) sharp_all_.push_back({m_.vertex(TriId{t}, e), a * 180 / kPi});
+    }
   std::sort(sharp_all_.begin(), sharp_all_.end(), [](const SharpCorner& a, const SharpCorner& b) {
     return a.v.value != b.v.value ? a.v.value < b.v.value : a.degrees < b.degrees;
   });
@@ -543,6 +577,33 @@ bool Floor::improve(TriId t) {
   return false;
 }
 
+std::vector<std::pair<double, std::uint32_t>> Floor::scan_below(double* lowest) {
+  struct Chunk {
+    std::vector<std::pair<double, std::uint32_t>> below;
+    double lowest = 1;
+  };
+  std::vector<Chunk> chunks(floor_scan_chunks(m_.num_slots()));
+  floor_scan(threads_, m_.num_slots(), [&](std::size_t begin, std::size_t end) {
+    Chunk& c = chunks[begin / kFloorScanChunk];
+    for (std::size_t slot = begin; slot < end; ++slot) {
+      const TriId t{static_cast<std::uint32_t>(slot)};
+      if (!m_.alive(t)) continue;
+      const double r = rho3(t);
+      c.lowest = std::min(c.lowest, r);   // the minimum of the doubles: any grouping gives it
+      if (r < q_) c.below.emplace_back(r, t.value);
+    }
+  });
+  std::vector<std::pair<double, std::uint32_t>> below;
+  std::size_t n = 0;
+  for (const Chunk& c : chunks) n += c.below.size();
+  below.reserve(n);
+  for (const Chunk& c : chunks) {
+    *lowest = std::min(*lowest, c.lowest);
+    below.insert(below.end(), c.below.begin(), c.below.end());
+  }
+  return below;
+}
+
 QualityFloorResult Floor::run(const QualityFloorOptions& opt) {
   sync_space();
   find_sharp_corners();
@@ -551,11 +612,10 @@ QualityFloorResult Floor::run(const QualityFloorOptions& opt) {
     bad.clear();
     res_.at_sharp = 0;
     std::uint32_t below = 0;
-    for (std::uint32_t t = 0; t < m_.num_slots(); ++t) {
-      if (!m_.alive(TriId{t})) continue;
-      const double r = rho3(TriId{t});
-      worst_start_ = std::min(worst_start_, r);
-      if (!(r < q_)) continue;
+    double lowest = 1;
+    const auto under = scan_below(&lowest);
+    worst_start_ = std::min(worst_start_, lowest);
+    for (const auto& [r, t] : under) {
       ++below;
       double angle = 0;
       const VertexId v = sharp_corner(TriId{t}, &angle);
@@ -626,17 +686,47 @@ QualityFloorResult raise_quality_floor(TriangleStore& m, const FloorFace& face, 
 }
 
 std::uint32_t count_below(const TriangleStore& m, const std::function<Vec3(VertexId)>& space, double q,
-                          double* worst) {
+                          double* worst, int threads) {
+  struct Chunk {
+    std::uint32_t n = 0;
+    double w = 1;
+  };
+  std::vector<Chunk> chunks(floor_scan_chunks(m.num_slots()));
+  floor_scan(std::max(1, threads), m.num_slots(), [&](std::size_t begin, std::size_t end) {
+    Chunk& c = chunks[begin / kFloorScanChunk];
+    for (std::size_t slot = begin; slot < end; ++slot) {
+      const TriId t{static_cast<std::uint32_t>(slot)};
+      if (!m.alive(t)) continue;
+      const double r = rho(space(m.vertex(t, 0)), space(m.vertex(t, 1)), space(m.vertex(t, 2)));
+      c.n += r < q;
+      c.w = std::min(c.w, r);
+    }
+  });
   std::uint32_t n = 0;
   double w = 1;
-  for (std::uint32_t t = 0; t < m.num_slots(); ++t) {
-    if (!m.alive(TriId{t})) continue;
-    const double r = rho(space(m.vertex(TriId{t}, 0)), space(m.vertex(TriId{t}, 1)), space(m.vertex(TriId{t}, 2)));
-    n += r < q;
-    w = std::min(w, r);
-  }
+  for (const Chunk& c : chunks) n += c.n, w = std::min(w, c.w);
   if (worst) *worst = w;
   return n;
+}
+
+std::pair<TriId, double> worst_triangle(const TriangleStore& m, const std::function<Vec3(VertexId)>& space,
+                                        int threads) {
+  // Per chunk its first strict minimum; across chunks, in chunk order, the first strict
+  // minimum again: the serial scan's answer.
+  std::vector<std::pair<TriId, double>> chunks(floor_scan_chunks(m.num_slots()), {TriId{}, 2.0});
+  floor_scan(std::max(1, threads), m.num_slots(), [&](std::size_t begin, std::size_t end) {
+    auto& [wt, worst] = chunks[begin / kFloorScanChunk];
+    for (std::size_t slot = begin; slot < end; ++slot) {
+      const TriId t{static_cast<std::uint32_t>(slot)};
+      if (!m.alive(t)) continue;
+      const double r = rho(space(m.vertex(t, 0)), space(m.vertex(t, 1)), space(m.vertex(t, 2)));
+      if (r < worst) worst = r, wt = t;
+    }
+  });
+  std::pair<TriId, double> best{TriId{}, 2.0};
+  for (const auto& c : chunks)
+    if (c.second < best.second) best = c;
+  return best;
 }
 
 }  // namespace sm

@@ -17,6 +17,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "base/vec.h"
@@ -39,6 +40,10 @@ struct QualityFloorOptions {
   /// A change may leave triangles worse than the one worked on (the next rounds mend
   /// them); with this set, never below half of its rho nor the worst one at the start.
   bool never_below_start = false;
+  /// Threads for the scans over the whole face (every triangle measured each round, every
+  /// vertex mapped to space): cut into chunks of a fixed size and reduced in chunk order,
+  /// so the result is the same bytes for every count. The changes themselves stay serial.
+  int threads = 1;
 };
 
 /// What the floor needs from the face it works on (the 2D mesher's face).
@@ -95,7 +100,15 @@ double sharp_angle_limit(double q);
 QualityFloorResult raise_quality_floor(TriangleStore& m, const FloorFace& face, const QualityFloorOptions& opt);
 
 /// Triangles of `m` with rho < q measured by `space`, and the worst rho (1 when none).
+/// `space` is called from up to `threads` threads (each vertex once); the result does not
+/// depend on the thread count.
 std::uint32_t count_below(const TriangleStore& m, const std::function<Vec3(VertexId)>& space, double q,
-                          double* worst = nullptr);
+                          double* worst = nullptr, int threads = 1);
+
+/// The live triangle of `m` with the lowest rho measured by `space`, the smallest slot
+/// among equals, and that rho (none and 2 when `m` has no triangle). `space` is called
+/// from up to `threads` threads; the answer does not depend on the thread count.
+std::pair<TriId, double> worst_triangle(const TriangleStore& m, const std::function<Vec3(VertexId)>& space,
+                                        int threads = 1);
 
 }  // namespace sm

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "base/parallel.h"
 #include "exact/predicates.h"
 #include "exact/quality.h"
 
@@ -18,6 +19,9 @@ namespace sm {
 namespace {
 
 constexpr double kHalfSqrt3 = 0.8660254037844386;
+// Triangles per chunk of the scans over the whole store: fixed, so the chunks do not
+// depend on the thread count.
+constexpr std::size_t kOptimizeScanChunk = 16384;
 // The statistics' "good" bar: no swap or move may lower the number of triangles above it.
 constexpr double kGood = 0.9;
 // A swap or move that pushes `lost` triangles below kGood is kept only when the worst rho
@@ -70,13 +74,7 @@ class Optimizer {
 
   OptimizeStats run() {
     OptimizeStats st;
-    double min_all = 1;
-    for (std::uint32_t t = 0; t < m_.num_slots(); ++t) {
-      if (!m_.alive(TriId{t})) continue;
-      const double q = tri_quality(TriId{t});
-      min_all = std::min(min_all, std::max(q, 0.0));  // -1: flat in floating point
-      if (q < opt_.threshold) bad_.push_back({q, t});
-    }
+    const double min_all = scan_bad();
     std::sort(bad_.begin(), bad_.end());
     bank_ = static_cast<std::int64_t>(std::max(0.0, opt_.max_share_loss) * m_.num_triangles());
     st.min_before = m_.num_triangles() ? min_all : 0;
@@ -103,9 +101,7 @@ class Optimizer {
       st.min_after = std::max(bad_.front().q, 0.0);
     } else {
       // Every triangle is at or above the threshold: one scan for the exact minimum.
-      double mn = 1;
-      for (std::uint32_t t = 0; t < m_.num_slots(); ++t)
-        if (m_.alive(TriId{t})) mn = std::min(mn, std::max(tri_quality(TriId{t}), 0.0));
+      const double mn = scan_bad();
       st.min_after = m_.num_triangles() ? mn : 0;
     }
     return st;
@@ -123,6 +119,45 @@ class Optimizer {
     return rho(xyz(a), xyz(b), xyz(c));
   }
   double tri_quality(TriId t) { return quality(m_.vertex(t, 0), m_.vertex(t, 1), m_.vertex(t, 2)); }
+
+  // Every live triangle measured: those below the threshold appended to bad_ by slot, and
+  // the lowest rho (flat ones as 0) returned. Without to_space (whose cache is not shared
+  // between threads) the triangles are measured in fixed chunks on the threads, the lists
+  // joined in chunk order: the serial scan's list and minimum.
+  double scan_bad() {
+    const std::size_t n = m_.num_slots();
+    if (space_ || opt_.threads <= 1 || n <= kOptimizeScanChunk) {
+      double min_all = 1;
+      for (std::uint32_t t = 0; t < n; ++t) {
+        if (!m_.alive(TriId{t})) continue;
+        const double q = tri_quality(TriId{t});
+        min_all = std::min(min_all, std::max(q, 0.0));  // -1: flat in floating point
+        if (q < opt_.threshold) bad_.push_back({q, t});
+      }
+      return min_all;
+    }
+    struct Chunk {
+      std::vector<BadTri> bad;
+      double min_all = 1;
+    };
+    std::vector<Chunk> chunks((n + kOptimizeScanChunk - 1) / kOptimizeScanChunk);
+    parallel_for_chunks(opt_.threads, n, kOptimizeScanChunk, [&](std::size_t begin, std::size_t end) {
+      Chunk& c = chunks[begin / kOptimizeScanChunk];
+      for (std::size_t slot = begin; slot < end; ++slot) {
+        const TriId t{static_cast<std::uint32_t>(slot)};
+        if (!m_.alive(t)) continue;
+        const double q = rho_ccw(m_.pos(m_.vertex(t, 0)), m_.pos(m_.vertex(t, 1)), m_.pos(m_.vertex(t, 2)));
+        c.min_all = std::min(c.min_all, std::max(q, 0.0));
+        if (q < opt_.threshold) c.bad.push_back({q, t.value});
+      }
+    });
+    double min_all = 1;
+    for (const Chunk& c : chunks) {
+      min_all = std::min(min_all, c.min_all);
+      bad_.insert(bad_.end(), c.bad.begin(), c.bad.end());
+    }
+    return min_all;
+  }
 
   // Whether a change that raises the worst rho from `before` by `gain` may push `lost`
   // triangles below kGood (`lost_total` since the change began).

@@ -43,6 +43,10 @@ struct OptimizeOptions {
   /// on conformal parametrisations (plane, PolarSphere, Mercator) where plane rho is
   /// sphere rho to first order.
   std::function<Vec3(Vec2)> to_space;
+  /// Threads for the scans over every triangle (the first measure, the last minimum),
+  /// without to_space: fixed chunks reduced in chunk order, the same bytes for every
+  /// count. The swaps and moves stay serial.
+  int threads = 1;
 };
 
 struct OptimizeStats {

@@ -290,3 +290,31 @@ TEST_CASE("optimize_quality: compound changes round short boundary edges (dams) 
   optimize_quality(copy, fixed);
   CHECK(same_points_corners_twins(copy, m));
 }
+
+TEST_CASE("optimize_quality: the same bytes and stats on 1, 2 and 3 threads (the scans in chunks)") {
+  // Over 16384 triangle slots: the first and last scans run in several chunks.
+  const Square base = square(0.008, false);
+  REQUIRE(base.m.num_slots() > 2 * 16384);   // three chunks at least
+  std::vector<TriangleStore> out;
+  std::vector<OptimizeStats> stats;
+  for (int threads : {1, 2, 3}) {
+    Square s = base;
+    OptimizeOptions oo;
+    oo.threshold = 0.75, oo.sacrifice_below = 0.7, oo.max_share_loss = 1e-4;   // the face driver's del2d settings
+    oo.threads = threads;
+    stats.push_back(optimize_quality(s.m, s.fixed, oo));
+    std::vector<Vec2> fixed_xy(base.m.xy.begin(), base.m.xy.begin() + base.fixed);
+    check_invariants(s.m, s.edges, fixed_xy);
+    out.push_back(std::move(s.m));
+  }
+  for (std::size_t i = 1; i < out.size(); ++i) {
+    CHECK(same_points_corners_twins(out[0], out[i]));
+    CHECK(stats[i].bad_before == stats[0].bad_before);
+    CHECK(stats[i].bad_after == stats[0].bad_after);
+    CHECK(stats[i].min_before == stats[0].min_before);
+    CHECK(stats[i].min_after == stats[0].min_after);
+    CHECK(stats[i].swaps == stats[0].swaps);
+    CHECK(stats[i].moves == stats[0].moves);
+  }
+  CHECK(stats[0].min_after > stats[0].min_before);
+}
