@@ -26,6 +26,9 @@ class MinInput {
   /// h[i] = the value at pts[i] wherever that is below h[i] (what a Min does with its
   /// next input), without computing the value where it certainly is not.
   virtual void lower(const EntityRef* on, std::span<const Vec3> pts, std::span<double> h) const = 0;
+  /// Whether lower() costs less where h is already smaller (a search cut short): a Min
+  /// then asks such inputs last, once the others have lowered h.
+  virtual bool prunes() const { return true; }
 };
 
 }  // namespace sm::field

@@ -250,7 +250,7 @@ bool ChannelWidths::certainly_at_least(const Vec3& x, double max_width) const {
   // a sample that near it reads the cap.
   const double wanted = std::min(max_width, m.cap);
   constexpr double kRounding = 1e-9;
-  return m.narrowest->lower_bound(x, 0.5 * wanted) >= wanted * (1 + kRounding);
+  return m.narrowest->at_least(x, 0.5 * wanted, wanted * (1 + kRounding));
 }
 
 ChannelWidthField::ChannelWidthField(std::vector<CoastChain> chains, const ChannelWidthOptions& o, double cap)

@@ -91,50 +91,73 @@ MinGrid::MinGrid(std::span<const Vec3> pts, std::span<const double> value, doubl
   int bits = 4;
   while (capacity < 2 * entries_) capacity *= 2, ++bits;
   shift_ = 64 - bits;
-  keys_.assign(capacity, kEmpty);
-  minima_.assign(capacity, 0);
+  slots_.assign(capacity, Slot{kEmpty, 0});
   for (const auto& [k, v] : all) {
     std::size_t slot = static_cast<std::size_t>((k * 0x9E3779B97F4A7C15ull) >> shift_);
-    while (keys_[slot] != kEmpty) slot = (slot + 1) & (capacity - 1);
-    keys_[slot] = k;
-    minima_[slot] = float_at_most(v);
+    while (slots_[slot].key != kEmpty) slot = (slot + 1) & (capacity - 1);
+    slots_[slot] = {k, float_at_most(v)};
   }
 }
 
 double MinGrid::find(std::uint64_t k) const {
-  const std::size_t mask = keys_.size() - 1;
+  const std::size_t mask = slots_.size() - 1;
   for (std::size_t slot = static_cast<std::size_t>((k * 0x9E3779B97F4A7C15ull) >> shift_);; slot = (slot + 1) & mask) {
-    if (keys_[slot] == k) return static_cast<double>(minima_[slot]);
-    if (keys_[slot] == kEmpty) return std::numeric_limits<double>::infinity();
+    if (slots_[slot].key == k) return static_cast<double>(slots_[slot].min);
+    if (slots_[slot].key == kEmpty) return std::numeric_limits<double>::infinity();
   }
 }
 
-double MinGrid::lower_bound(const Vec3& x, double r) const {
+bool MinGrid::box_of(const Vec3& x, double r, Box& box, double& bound) const {
   constexpr double kNone = -std::numeric_limits<double>::infinity();
-  if (keys_.empty()) return std::numeric_limits<double>::infinity();
-  if (!std::isfinite(x.x) || !std::isfinite(x.y) || !std::isfinite(x.z) || !(r >= 0)) return kNone;
+  bound = std::numeric_limits<double>::infinity();
+  if (slots_.empty()) return false;
+  bound = kNone;
+  if (!std::isfinite(x.x) || !std::isfinite(x.y) || !std::isfinite(x.z) || !(r >= 0)) return false;
   const double reach = r * (1 + kMargin) + kMargin * (scale_ + std::fabs(x.x) + std::fabs(x.y) + std::fabs(x.z));
   int l = 0;
   double cell = finest_;
   while (cell < 2 * reach) {
-    if (++l >= levels_) return kNone;
+    if (++l >= levels_) return false;
     cell *= 2;
   }
-  std::int64_t from[3], to[3];
+  box.level = l;
   const double at[3] = {x.x - origin_.x, x.y - origin_.y, x.z - origin_.z};
   for (int a = 0; a < 3; ++a) {
     // Outside the indexed range a cell holds no point; clamped before the casts.
     const double lo = std::floor((at[a] - reach) / cell), hi = std::floor((at[a] + reach) / cell);
     const double top = static_cast<double>((kCells >> l) - 1);
-    if (hi < 0 || lo > top) return std::numeric_limits<double>::infinity();
-    from[a] = static_cast<std::int64_t>(std::max(lo, 0.0));
-    to[a] = static_cast<std::int64_t>(std::min(hi, top));
+    if (hi < 0 || lo > top) {
+      bound = std::numeric_limits<double>::infinity();
+      return false;
+    }
+    box.from[a] = static_cast<std::int64_t>(std::max(lo, 0.0));
+    box.to[a] = static_cast<std::int64_t>(std::min(hi, top));
   }
-  double low = std::numeric_limits<double>::infinity();
-  for (std::int64_t i = from[0]; i <= to[0]; ++i)
-    for (std::int64_t j = from[1]; j <= to[1]; ++j)
-      for (std::int64_t k = from[2]; k <= to[2]; ++k) low = std::min(low, find(key(l, i, j, k)));
+  bound = std::numeric_limits<double>::infinity();
+  return true;
+}
+
+double MinGrid::lower_bound(const Vec3& x, double r) const {
+  Box b;
+  double low = 0;
+  if (!box_of(x, r, b, low)) return low;
+  for (std::int64_t i = b.from[0]; i <= b.to[0]; ++i)
+    for (std::int64_t j = b.from[1]; j <= b.to[1]; ++j)
+      for (std::int64_t k = b.from[2]; k <= b.to[2]; ++k) low = std::min(low, find(key(b.level, i, j, k)));
   return low;
+}
+
+bool MinGrid::at_least(const Vec3& x, double r, double v) const {
+  // As lower_bound's std::min, a NaN cell is passed over and nothing is at least a NaN.
+  Box b;
+  double low = 0;
+  if (std::isnan(v)) return false;
+  if (!box_of(x, r, b, low)) return low >= v;
+  for (std::int64_t i = b.from[0]; i <= b.to[0]; ++i)
+    for (std::int64_t j = b.from[1]; j <= b.to[1]; ++j)
+      for (std::int64_t k = b.from[2]; k <= b.to[2]; ++k)
+        if (find(key(b.level, i, j, k)) < v) return false;
+  return true;
 }
 
 }  // namespace sm::field

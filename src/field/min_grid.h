@@ -26,22 +26,36 @@ class MinGrid {
   /// a point out). +inf where no point is that near; -inf where x is not finite or
   /// the ball is wider than the coarsest level (no bound).
   double lower_bound(const Vec3& x, double r) const;
+  /// lower_bound(x, r) >= v, reading the cells only until one is below v.
+  bool at_least(const Vec3& x, double r, double v) const;
 
   std::size_t cells() const { return entries_; }
 
  private:
   std::uint64_t key(int level, std::int64_t i, std::int64_t j, std::int64_t k) const;
   double find(std::uint64_t key) const;
+  // The level and cell ranges of lower_bound(x, r); false with `bound` set where no cell
+  // is read (+inf: no point that near; -inf: no bound).
+  struct Box {
+    int level = 0;
+    std::int64_t from[3] = {0, 0, 0}, to[3] = {0, 0, 0};
+  };
+  bool box_of(const Vec3& x, double r, Box& box, double& bound) const;
 
   Vec3 origin_{};
   double finest_ = 0;
   double scale_ = 0;  // |x| + extent: the rounding margin's reference
   int levels_ = 0;
   std::size_t entries_ = 0;
-  std::vector<std::uint64_t> keys_;  // open addressing, linear probing; kEmpty marks a free slot
-  // Each cell's minimum rounded down to a float: still a lower bound (half the bytes of
-  // a double, where a query needs a bound and not the value).
-  std::vector<float> minima_;
+  // Open addressing, linear probing; kEmpty marks a free slot. Each cell's minimum is
+  // rounded down to a float: still a lower bound (half the bytes of a double, where a
+  // query needs a bound and not the value), held beside its key so that a lookup reads
+  // one cache line.
+  struct Slot {
+    std::uint64_t key;
+    float min;
+  };
+  std::vector<Slot> slots_;
   int shift_ = 64;
 };
 

@@ -15,6 +15,13 @@ class ExtremumField final : public CompositeField {
  public:
   ExtremumField(std::vector<std::pair<int, FieldPtr>> in, bool is_min) : in_(std::move(in)), is_min_(is_min) {
     for (const auto& [id, f] : in_) lowers_.push_back(is_min_ ? dynamic_cast<const MinInput*>(f.get()) : nullptr);
+    // Without argmin the order of a Min's inputs does not change its value (NaN never
+    // enters h: every update is a `<`), so the inputs whose search stops sooner under a
+    // smaller h (a Threshold of a Distance: the nearest coast point sought only as far as
+    // could still lower h) come after the others, each group in list order.
+    for (int pass = 0; pass < 2; ++pass)
+      for (std::size_t n = 0; n < in_.size(); ++n)
+        if ((lowers_[n] && lowers_[n]->prunes()) == (pass == 1)) min_order_.push_back(n);
   }
 
   bool is_min() const { return is_min_; }
@@ -24,7 +31,8 @@ class ExtremumField final : public CompositeField {
     std::fill(h.begin(), h.end(), is_min_ ? kMaxLc : -kMaxLc);
     if (!which.empty()) std::fill(which.begin(), which.end(), -1);
     std::vector<double> tmp(pts.size());
-    for (std::size_t n = 0; n < in_.size(); ++n) {
+    for (std::size_t k = 0; k < in_.size(); ++k) {
+      const std::size_t n = is_min_ && which.empty() ? min_order_[k] : k;
       const auto& [id, f] = in_[n];
       // An input that can skip the points where it cannot be the smallest does so
       // (without argmin: there a tie must still be seen).
@@ -51,6 +59,7 @@ class ExtremumField final : public CompositeField {
  private:
   std::vector<std::pair<int, FieldPtr>> in_;
   std::vector<const MinInput*> lowers_;  // per input: itself, when it is one
+  std::vector<std::size_t> min_order_;    // the inputs in the order a Min without argmin asks them
   bool is_min_;
 };
 

@@ -25,15 +25,11 @@ class ThresholdField final : public CompositeField, public MinInput {
   // rounding (the sizes' spread, at least kSpread of SizeMax, keeps the margin's size
   // step far above it), so the result is that of evaluating and taking the min.
   void lower(const EntityRef* on, std::span<const Vec3> pts, std::span<double> h) const override {
-    constexpr double kRampMargin = 1e-9, kSpread = 1e-5, kBelowMin = 1e-12, kFarOrigin = 1e3;
+    constexpr double kRampMargin = 1e-9, kBelowMin = 1e-12;
     const double span = dist_max_ - dist_min_;
     const double spread = size_max_ - size_min_;
     std::vector<double> v;
-    // Where the margin would not cover the rounding (a sigmoid, sizes almost equal,
-    // DistMin far from 0 against the span), every point is evaluated.
-    const bool invertible = !sigmoid_ && std::isfinite(span) && span > 0 && spread > kSpread * size_max_ &&
-                            std::fabs(dist_min_) <= kFarOrigin * span;
-    if (!bounded_ || !invertible) {
+    if (!prunes()) {
       v.resize(pts.size());
       run(on, pts, v);
       for (std::size_t i = 0; i < h.size(); ++i)
@@ -58,6 +54,18 @@ class ThresholdField final : public CompositeField, public MinInput {
     for (double& x : v) x = size_at(x);
     for (std::size_t k = 0; k < which.size(); ++k)
       if (v[k] < h[which[k]]) h[which[k]] = v[k];
+  }
+
+  // Where the margin would not cover the rounding (a sigmoid, sizes almost equal,
+  // DistMin far from 0 against the span), or the input cannot stop early, lower()
+  // evaluates every point.
+  bool prunes() const override {
+    constexpr double kSpread = 1e-5, kFarOrigin = 1e3;
+    const double span = dist_max_ - dist_min_;
+    const double spread = size_max_ - size_min_;
+    const bool invertible = !sigmoid_ && std::isfinite(span) && span > 0 && spread > kSpread * size_max_ &&
+                            std::fabs(dist_min_) <= kFarOrigin * span;
+    return bounded_ && invertible;
   }
 
  protected:

@@ -34,6 +34,9 @@ TEST_CASE("min grid: the bound never exceeds the smallest value within r, on a p
         if (norm(pts[i] - x) <= r) least = std::min(least, v[i]);
       const double b = grid.lower_bound(x, r);
       CHECK(b <= least);
+      // The early-exit test agrees with the bound, on each side of it.
+      for (const double w : {b, std::nextafter(b, -1e300), std::nextafter(b, 1e300), 0.5 * b, 2 * b})
+        CHECK(grid.at_least(x, r, w) == (b >= w));
       bounded += std::isfinite(b) && b > 0;
     }
     // The grid is not trivially -inf: small balls get real bounds.
