@@ -93,6 +93,7 @@ DeviationOptions in_context(DeviationOptions o, const ImportOptions& opt) {
 }
 RepairOptions in_context(RepairOptions o, const ImportOptions& opt) {
   o.radius = opt.radius;
+  o.threads = opt.threads;
   return o;
 }
 PassageOptions in_context(PassageOptions o, const ImportOptions& opt) {

@@ -487,8 +487,9 @@ void put_back_points(std::vector<WorkCurve>& curves, std::vector<std::pair<std::
 // changed is marked in `changes`.
 bool spline_pass(std::vector<WorkCurve>& curves, const std::vector<WorkLoop>& loops,
                  const std::vector<std::vector<Vec2>>& polys, const std::vector<std::vector<LoopVertexRef>>& refs,
-                 std::size_t round, double radius, bool may_fix, std::vector<RepairEntry>& log,
+                 std::size_t round, const RepairOptions& opt, bool may_fix, std::vector<RepairEntry>& log,
                  RoundChanges& changes) {
+  const double radius = opt.radius;
   std::vector<std::vector<std::uint32_t>> starts(loops.size());
   std::vector<std::vector<double>> tol(loops.size());
   std::vector<std::vector<char>> active;
@@ -509,7 +510,7 @@ bool spline_pass(std::vector<WorkCurve>& curves, const std::vector<WorkLoop>& lo
     sl[l].tol = tol[l];
     sl[l].active = active[l];
   }
-  const std::vector<HullOverlap> over = find_spline_crossings(sl);
+  const std::vector<HullOverlap> over = find_spline_crossings(sl, opt.threads);
   if (over.empty()) return true;
   for (const HullOverlap& o : over) {   // found again by the next pass unless mended
     changes.touch_span(curves, refs[o.loop_a], o.seg_a);
@@ -816,7 +817,7 @@ Result<std::size_t> repair_loops(std::vector<WorkCurve>& curves, std::vector<Wor
       r.changes.touch_segment(curves, r.refs[h.loop_b], h.seg_b);
     }
     if (hits.empty()) {
-      if (!opt.check_splines || spline_pass(curves, loops, r.polys, r.refs, round, opt.radius,
+      if (!opt.check_splines || spline_pass(curves, loops, r.polys, r.refs, round, opt,
                                             static_cast<int>(round) < opt.max_rounds, log, r.changes))
         break;
       continue;   // points were put back: check the polygons again

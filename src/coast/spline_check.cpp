@@ -10,6 +10,7 @@
 #include <optional>
 #include <tuple>
 
+#include "base/parallel.h"
 #include "coast/place_pairs.h"
 #include "exact/predicates.h"
 #include "exact/segments.h"
@@ -313,10 +314,164 @@ struct Span {
   Bez b;
   Vec2 lo, hi;
   std::uint32_t loop, seg;
-  std::uint32_t next;   // the span starting where this one ends (index in the span list)
+  std::uint32_t id;     // the span's index among all spans of all loops
+  std::uint32_t next;   // the id of the span starting where this one ends
   double tol;
   bool active;          // tested (SplineLoop::active)
 };
+
+// The spans of one loop, numbered along it (periodic: span s follows segment s; pieces:
+// each piece of m points, its end points tripled, has m + 1 spans, span j on its points
+// j-2 .. j+1 clamped). Segments never decrease along the numbering.
+struct LoopSpans {
+  const SplineLoop& L;
+  std::uint32_t n;
+  std::vector<std::uint32_t> starts;       // pieces: first point of each (0 first)
+  std::vector<std::uint32_t> first_span;   // pieces: first span of each, then the count
+
+  explicit LoopSpans(const SplineLoop& loop) : L(loop), n(static_cast<std::uint32_t>(loop.pts.size())) {
+    if (L.periodic) return;
+    starts.assign(L.piece_start.begin(), L.piece_start.end());
+    if (starts.empty() || starts[0] != 0) starts.insert(starts.begin(), 0);
+    first_span.push_back(0);
+    for (std::size_t k = 0; k < starts.size(); ++k) {
+      const std::uint32_t b = k + 1 < starts.size() ? starts[k + 1] : n;
+      first_span.push_back(first_span.back() + (b - starts[k] + 2));   // m + 1 spans, m = b - a + 1
+    }
+  }
+  std::uint32_t count() const { return L.periodic ? n : first_span.back(); }
+  // Calls f(local span, segment, Bezier, next local span) for the spans whose segment
+  // `want` accepts, in order; the Bezier is made only for those.
+  template <class Want, class F>
+  void each(Want&& want, F&& f) const {
+    if (L.periodic) {
+      for (std::uint32_t s = 0; s < n; ++s)
+        if (want(s)) f(s, s, to_bezier(L.pts[(s + n - 1) % n], L.pts[s], L.pts[(s + 1) % n], L.pts[(s + 2) % n]), (s + 1) % n);
+      return;
+    }
+    for (std::size_t k = 0; k < starts.size(); ++k) {
+      const std::uint32_t a = starts[k];
+      const std::uint32_t b = k + 1 < starts.size() ? starts[k + 1] : n;
+      const std::uint32_t m = b - a + 1;
+      auto q = [&](std::int64_t j) { return L.pts[(a + static_cast<std::uint32_t>(std::clamp<std::int64_t>(j, 0, m - 1))) % n]; };
+      for (std::uint32_t j = 0; j <= m; ++j) {
+        const std::uint32_t seg = a + std::clamp<std::uint32_t>(j, 1, m - 1) - 1;
+        if (!want(seg)) continue;
+        const std::uint32_t next = j < m ? first_span[k] + j + 1 : first_span[(k + 1) % starts.size()];
+        f(first_span[k] + j, seg,
+          to_bezier(q(std::int64_t{j} - 2), q(std::int64_t{j} - 1), q(j), q(std::int64_t{j} + 1)), next);
+      }
+    }
+  }
+};
+
+// Segments are looked at in blocks of this many: a block's box (its control points) holds
+// the boxes of the spans following its segments.
+constexpr std::uint32_t kSpanBlock = 32;
+
+struct Box {
+  Vec2 lo, hi;
+};
+
+bool boxes_meet(const Box& a, const Box& b) {
+  return !(a.lo.x > b.hi.x || b.lo.x > a.hi.x || a.lo.y > b.hi.y || b.lo.y > a.hi.y);
+}
+
+// Per loop and block of segments: whether a span following one of its segments can meet
+// an active span (its block holds an active segment, or its box meets an active span's
+// box). Only pairs with an active span are tested, so the other spans need not be made.
+std::vector<std::vector<char>> blocks_near_active(std::span<const SplineLoop> loops) {
+  std::vector<std::vector<char>> need(loops.size());
+  std::vector<Box> active;   // the active spans' boxes
+  std::vector<Box> blocks;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> block_at;   // (loop, block)
+  for (std::uint32_t l = 0; l < loops.size(); ++l) {
+    const SplineLoop& L = loops[l];
+    const auto n = static_cast<std::uint32_t>(L.pts.size());
+    if (n < 3) continue;
+    const bool all = L.active.size() != n;
+    need[l].assign((n + kSpanBlock - 1) / kSpanBlock, all ? 1 : 0);
+    if (all) continue;   // every span made: nothing to look up
+    if (std::any_of(L.active.begin(), L.active.end(), [](char c) { return c != 0; })) {
+      LoopSpans(L).each([&](std::uint32_t s) { return L.active[s] != 0; },
+                        [&](std::uint32_t, std::uint32_t s, const Bez& b, std::uint32_t) {
+                          need[l][s / kSpanBlock] = 1;
+                          Box x;
+                          box_of(b, x.lo, x.hi);
+                          active.push_back(x);
+                        });
+    }
+    for (std::uint32_t k = 0; k < need[l].size(); ++k) {
+      if (need[l][k]) continue;
+      const std::uint32_t s0 = k * kSpanBlock, s1 = std::min(n, s0 + kSpanBlock);
+      Box x{L.pts[s0], L.pts[s0]};
+      for (std::uint32_t i = s0 + n - 1; i <= s1 + n + 1; ++i) {   // points s0-1 .. s1+1
+        const Vec2 p = L.pts[i % n];
+        x.lo = {std::min(x.lo.x, p.x), std::min(x.lo.y, p.y)};
+        x.hi = {std::max(x.hi.x, p.x), std::max(x.hi.y, p.y)};
+      }
+      blocks.push_back(x);
+      block_at.push_back({l, k});
+    }
+  }
+  if (active.empty() || blocks.empty()) return need;
+  // The active boxes in a uniform grid, each block looked up in the cells its box covers.
+  Box all = active[0];
+  for (const Box& x : active)
+    all = {{std::min(all.lo.x, x.lo.x), std::min(all.lo.y, x.lo.y)}, {std::max(all.hi.x, x.hi.x), std::max(all.hi.y, x.hi.y)}};
+  constexpr std::int64_t kCells = 256;   // a side: at most 65536 cells
+  const double cx = std::max((all.hi.x - all.lo.x) / kCells, 1e-300), cy = std::max((all.hi.y - all.lo.y) / kCells, 1e-300);
+  auto ix = [&](double x) { return std::clamp<std::int64_t>(static_cast<std::int64_t>((x - all.lo.x) / cx), 0, kCells - 1); };
+  auto iy = [&](double y) { return std::clamp<std::int64_t>(static_cast<std::int64_t>((y - all.lo.y) / cy), 0, kCells - 1); };
+  std::vector<std::uint32_t> cell_first(kCells * kCells + 1, 0), items;
+  for (int pass = 0; pass < 2; ++pass) {   // count, then place (a counting sort on cells)
+    if (pass == 1) {
+      for (std::size_t c = 1; c < cell_first.size(); ++c) cell_first[c] += cell_first[c - 1];
+      items.resize(cell_first.back());
+    }
+    for (std::uint32_t i = 0; i < active.size(); ++i)
+      for (std::int64_t y = iy(active[i].lo.y); y <= iy(active[i].hi.y); ++y)
+        for (std::int64_t x = ix(active[i].lo.x); x <= ix(active[i].hi.x); ++x) {
+          if (pass == 0) ++cell_first[static_cast<std::size_t>(y * kCells + x) + 1];
+          else items[cell_first[static_cast<std::size_t>(y * kCells + x)]++] = i;
+        }
+  }
+  for (std::size_t c = cell_first.size() - 1; c > 0; --c) cell_first[c] = cell_first[c - 1];   // back to starts
+  cell_first[0] = 0;
+  for (std::size_t k = 0; k < blocks.size(); ++k) {
+    const Box& x = blocks[k];
+    if (!boxes_meet(x, all)) continue;
+    bool hit = false;
+    for (std::int64_t y = iy(x.lo.y); y <= iy(x.hi.y) && !hit; ++y)
+      for (std::int64_t c = y * kCells + ix(x.lo.x); c <= y * kCells + ix(x.hi.x) && !hit; ++c)
+        for (std::uint32_t j = cell_first[static_cast<std::size_t>(c)]; j < cell_first[static_cast<std::size_t>(c) + 1]; ++j)
+          if (boxes_meet(x, active[items[j]])) {
+            hit = true;
+            break;
+          }
+    if (hit) need[block_at[k].first][block_at[k].second] = 1;
+  }
+  return need;
+}
+
+// Does the pair of spans meet? (a and b distinct; each Span::next tells a joint.)
+bool spans_meet(const Span& a, const Span& b, Vec2& where) {
+  MeetContext cx{std::min(a.tol, b.tol), kMeetBudget, {}};
+  bool meet;
+  if (a.next == b.id && b.next == a.id) {   // a loop of two spans: both ends joined
+    Bez a1, a2;
+    split(a.b, a1, a2);
+    meet = curves_meet(a2, b.b, true, cx) || curves_meet(b.b, a1, true, cx);
+  } else if (a.next == b.id) {
+    meet = curves_meet(a.b, b.b, true, cx);
+  } else if (b.next == a.id) {
+    meet = curves_meet(b.b, a.b, true, cx);
+  } else {
+    meet = curves_meet(a.b, b.b, false, cx);
+  }
+  where = cx.where;
+  return meet;
+}
 
 }  // namespace
 
@@ -378,9 +533,11 @@ std::vector<HullOverlap> find_hull_overlaps(std::span<const SplineLoop> loops) {
   return out;
 }
 
-std::vector<HullOverlap> find_spline_crossings(std::span<const SplineLoop> loops) {
-  constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+
+std::vector<HullOverlap> find_spline_crossings(std::span<const SplineLoop> loops, int threads) {
+  const std::vector<std::vector<char>> need = blocks_near_active(loops);
   std::vector<Span> spans;
+  std::uint32_t id = 0;   // the spans of the loops before
   for (std::uint32_t l = 0; l < loops.size(); ++l) {
     const SplineLoop& L = loops[l];
     const auto n = static_cast<std::uint32_t>(L.pts.size());
@@ -391,77 +548,54 @@ std::vector<HullOverlap> find_spline_crossings(std::span<const SplineLoop> loops
       for (Vec2 p : L.pts) lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)}, hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
       fallback = 1e-7 * std::max(hi.x - lo.x, hi.y - lo.y);
     }
-    auto tol_at = [&](std::uint32_t i) { return L.tol.size() == n ? L.tol[i] : fallback; };
-    auto active_at = [&](std::uint32_t i) { return L.active.size() != n || L.active[i] != 0; };
-    const auto first = static_cast<std::uint32_t>(spans.size());
-    auto add = [&](const Bez& b, std::uint32_t seg) {
-      Span sp{b, {}, {}, l, seg, kNone, tol_at(seg), active_at(seg)};
-      box_of(b, sp.lo, sp.hi);
-      spans.push_back(sp);
-    };
-    if (L.periodic) {
-      // Span s on points s-1 .. s+2 (wrapping) follows segment s.
-      for (std::uint32_t s = 0; s < n; ++s)
-        add(to_bezier(L.pts[(s + n - 1) % n], L.pts[s], L.pts[(s + 1) % n], L.pts[(s + 2) % n]), s);
-      for (std::uint32_t s = 0; s < n; ++s) spans[first + s].next = first + (s + 1) % n;
-    } else {
-      // Each piece: points a .. b (b the next piece's first point, wrapping), end points
-      // tripled: m + 1 spans for m points, span j on points j-2 .. j+1 (clamped).
-      std::vector<std::uint32_t> starts(L.piece_start.begin(), L.piece_start.end());
-      if (starts.empty() || starts[0] != 0) starts.insert(starts.begin(), 0);
-      std::vector<std::uint32_t> piece_first_span;
-      for (std::size_t k = 0; k < starts.size(); ++k) {
-        const std::uint32_t a = starts[k];
-        const std::uint32_t b = k + 1 < starts.size() ? starts[k + 1] : n;
-        const std::uint32_t m = b - a + 1;
-        auto q = [&](std::int64_t j) { return L.pts[(a + static_cast<std::uint32_t>(std::clamp<std::int64_t>(j, 0, m - 1))) % n]; };
-        piece_first_span.push_back(static_cast<std::uint32_t>(spans.size()));
-        for (std::uint32_t j = 0; j <= m; ++j) {
-          add(to_bezier(q(std::int64_t{j} - 2), q(std::int64_t{j} - 1), q(j), q(std::int64_t{j} + 1)),
-              a + std::clamp<std::uint32_t>(j, 1, m - 1) - 1);
-          if (j > 0) spans[spans.size() - 2].next = static_cast<std::uint32_t>(spans.size() - 1);
-        }
-      }
-      for (std::size_t k = 0; k < piece_first_span.size(); ++k) {
-        const std::uint32_t last = k + 1 < piece_first_span.size() ? piece_first_span[k + 1] - 1
-                                                                    : static_cast<std::uint32_t>(spans.size() - 1);
-        spans[last].next = piece_first_span[(k + 1) % piece_first_span.size()];
-      }
-    }
+    const LoopSpans ls(L);
+    ls.each([&](std::uint32_t s) { return need[l][s / kSpanBlock] != 0; },
+            [&](std::uint32_t j, std::uint32_t s, const Bez& b, std::uint32_t next) {
+              Span sp{b, {}, {}, l, s, id + j, id + next, L.tol.size() == n ? L.tol[s] : fallback,
+                      L.active.size() != n || L.active[s] != 0};
+              box_of(b, sp.lo, sp.hi);
+              spans.push_back(sp);
+            });
+    id += ls.count();
   }
-  std::vector<HullOverlap> out;
-  auto found = [&](const Span& a, const Span& b, Vec2 where) {
-    HullOverlap o{a.loop, a.seg, b.loop, b.seg, where};
-    order_places(o);
-    out.push_back(o);
-  };
-  for (const Span& s : spans) {
-    if (!s.active) continue;
-    MeetContext cx{s.tol, kMeetBudget, {}};
-    if (curve_meets_itself(s.b, cx)) found(s, s, cx.where);
-  }
-  // Every span stays in the grid, so the pairs tested are visited in the order of a full
-  // search: the same records in the same order before the sort.
+  // The pairs to decide (one of them active at least), then decided on the threads in
+  // fixed chunks whose finds are joined in chunk order.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  for (std::uint32_t i = 0; i < spans.size(); ++i)
+    if (spans[i].active) pairs.push_back({i, i});   // the span against itself
   for_box_pairs(spans, [&](std::uint32_t ia, std::uint32_t ib) {
-    const Span& a = spans[ia];
-    const Span& b = spans[ib];
-    if (!a.active && !b.active) return;
-    MeetContext cx{std::min(a.tol, b.tol), kMeetBudget, {}};
-    bool meet;
-    if (a.next == ib && b.next == ia) {   // a loop of two spans: both ends joined
-      Bez a1, a2;
-      split(a.b, a1, a2);
-      meet = curves_meet(a2, b.b, true, cx) || curves_meet(b.b, a1, true, cx);
-    } else if (a.next == ib) {
-      meet = curves_meet(a.b, b.b, true, cx);
-    } else if (b.next == ia) {
-      meet = curves_meet(b.b, a.b, true, cx);
-    } else {
-      meet = curves_meet(a.b, b.b, false, cx);
-    }
-    if (meet) found(a, b, cx.where);
+    if (spans[ia].active || spans[ib].active) pairs.push_back({ia, ib});
   });
-  sort_place_pairs(out);
+  constexpr std::size_t kChunk = 512;
+  std::vector<std::vector<HullOverlap>> parts((pairs.size() + kChunk - 1) / kChunk);
+  parallel_for_chunks(resolve_thread_count(threads), pairs.size(), kChunk, [&](std::size_t begin, std::size_t end) {
+    std::vector<HullOverlap>& part = parts[begin / kChunk];
+    for (std::size_t k = begin; k < end; ++k) {
+      const Span& a = spans[pairs[k].first];
+      const Span& b = spans[pairs[k].second];
+      Vec2 where;
+      bool meet;
+      if (&a == &b) {
+        MeetContext cx{a.tol, kMeetBudget, {}};
+        meet = curve_meets_itself(a.b, cx);
+        where = cx.where;
+      } else {
+        meet = spans_meet(a, b, where);
+      }
+      if (!meet) continue;
+      HullOverlap o{a.loop, a.seg, b.loop, b.seg, where};
+      order_places(o);
+      part.push_back(o);
+    }
+  });
+  std::vector<HullOverlap> out;
+  for (const std::vector<HullOverlap>& p : parts) out.insert(out.end(), p.begin(), p.end());
+  // Two finds of one pair of segments (the tripled end of a piece has two spans on its
+  // first segment) keep the place first in (x, y): which grid cell found them first, and
+  // which spans were made, do not matter.
+  std::sort(out.begin(), out.end(), [](const HullOverlap& a, const HullOverlap& b) {
+    return std::tuple(place_pair_key(a), a.where.x, a.where.y) < std::tuple(place_pair_key(b), b.where.x, b.where.y);
+  });
   out.erase(std::unique(out.begin(), out.end(),
                         [](const HullOverlap& a, const HullOverlap& b) { return place_pair_key(a) == place_pair_key(b); }),
             out.end());

@@ -49,9 +49,11 @@ std::vector<HullOverlap> find_hull_overlaps(std::span<const SplineLoop> loops);
 /// decided by halving both cubic Bezier spans (de Casteljau) while their control hulls
 /// overlap (exact orient2d), down to the tolerance. Consecutive spans, which meet at their
 /// joint, are separate when the directions from the joint to their control points span
-/// disjoint angles. Only pairs with an active span (SplineLoop::active) are decided, in the
-/// same order as with every span active, so the result is the full search's when no pair
-/// of two inactive spans meets. Sorted, each pair once.
-std::vector<HullOverlap> find_spline_crossings(std::span<const SplineLoop> loops);
+/// disjoint angles. Only pairs with an active span (SplineLoop::active) are decided, so the
+/// result is the full search's when no pair
+/// of two inactive spans meets; only the spans that can meet an active one are made. Sorted,
+/// each pair once (of two places found for one pair, the first in x then y). The pairs are
+/// decided on up to `threads` threads (resolve_thread_count), the same result for any.
+std::vector<HullOverlap> find_spline_crossings(std::span<const SplineLoop> loops, int threads = 1);
 
 }  // namespace sm::coast

@@ -165,6 +165,53 @@ TEST_CASE("spline crossings: with some spans marked active, exactly the full sea
   CHECK(found == 2 * full.size());   // each pair through either of its spans
 }
 
+TEST_CASE("spline crossings: spans made only near the active ones, on any number of threads, as the full search") {
+  // A comb of 40 teeth (160 points: many blocks of segments) whose spline cuts each reflex
+  // corner at the notch's bottom as the L's does, a small square on each cut.
+  constexpr int kTeeth = 40;
+  std::vector<std::vector<Vec2>> loops(1);
+  std::vector<Vec2> comb{{0, 0}, {4.0 * kTeeth - 2, 0}, {4.0 * kTeeth - 2, 4}};
+  for (int k = kTeeth - 1; k >= 1; --k) {
+    const double x = 4.0 * k;
+    comb.insert(comb.end(), {{x, 4}, {x, 2}, {x - 2, 2}, {x - 2, 4}});
+    loops.push_back(square({x - 2 + 1.0 / 3, 2 + 1.0 / 3}, 0.03));
+  }
+  comb.push_back({0, 4});
+  loops[0] = std::move(comb);
+  REQUIRE(find_intersections(loops).empty());
+  std::vector<SplineLoop> sl;
+  for (const auto& l : loops) sl.push_back({l, {}, true});
+  const auto full = find_spline_crossings(sl);
+  REQUIRE(full.size() >= kTeeth - 1);   // every square crossed
+  const auto two = find_spline_crossings(sl, 2);
+  REQUIRE(two.size() == full.size());
+  for (std::size_t i = 0; i < full.size(); ++i) {
+    CHECK(place_pair_key(two[i]) == place_pair_key(full[i]));
+    CHECK(two[i].where == full[i].where);
+  }
+  // A few comb segments and every third square active: the full search's pairs holding one.
+  std::vector<std::vector<char>> active(loops.size());
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    active[l].assign(loops[l].size(), 0);
+    for (std::size_t s = 0; s < loops[l].size(); ++s) active[l][s] = l == 0 ? s % 29 == 5 : l % 3 == 0;
+    sl[l].active = active[l];
+  }
+  auto is_active = [&](std::uint32_t l, std::uint32_t s) { return active[l][s] != 0; };
+  std::vector<HullOverlap> expect;
+  for (const HullOverlap& o : full)
+    if (is_active(o.loop_a, o.seg_a) || is_active(o.loop_b, o.seg_b)) expect.push_back(o);
+  REQUIRE_FALSE(expect.empty());
+  REQUIRE(expect.size() < full.size());
+  for (int threads : {1, 2}) {
+    const auto got = find_spline_crossings(sl, threads);
+    REQUIRE(got.size() == expect.size());
+    for (std::size_t i = 0; i < got.size(); ++i) {
+      CHECK(place_pair_key(got[i]) == place_pair_key(expect[i]));
+      CHECK(got[i].where == expect[i].where);
+    }
+  }
+}
+
 TEST_CASE("spline crossings: a near miss with overlapping hulls is not a crossing") {
   // The square moved out of the notch until its spline (a rounded square, corners 2h/3 from
   // its centre) clears the L's spline by about 0.02: the span hulls still overlap.
