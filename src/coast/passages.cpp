@@ -876,8 +876,10 @@ std::vector<NearMiss> round_near_misses(Work& w) {
   }
   w.segs = std::move(segs);
   std::size_t searched = 0;
-  std::vector<NearMiss> near = find_near_pairs(w.polys, w.width, active, &searched);
+  std::vector<NearMiss> near = find_near_pairs(w.polys, w.width, active, &searched, resolve_thread_count(w.opt.threads));
   w.stats.near_searched += searched;
+  std::vector<std::vector<char>>().swap(active);
+  near.reserve(near.size() + w.near.size());
   for (const auto& [na, nb] : w.near) {
     const std::uint32_t sa = renumber[na], sb = renumber[nb];
     if (sa == kNoSegment || sb == kNoSegment) continue;
