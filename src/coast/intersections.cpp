@@ -321,38 +321,62 @@ std::vector<NearMiss> find_near_pairs(std::span<const std::vector<Vec2>> loops,
   };
   auto on_seg = [&](std::size_t k) { return seg_at(on[k].first, on[k].second); };
   const Grid g = make_grid_of(on.size(), on_seg);
-  // The cells as offsets into one array of entries, each cell's in (loop, index) order (as
-  // the sorted (cell, segment) list had them).
+  // The cells' entries (cell, active segment), sorted: each cell's in (loop, index) order.
+  // Most cells of a world's grid are empty (up to 16 a segment, make_grid_of): an offsets
+  // array over all of them (4 bytes a cell, 21 MB for the 323,000 segments of the first
+  // closing round at 3 km) is made only where the cells are few, else a cell's entries are
+  // found by a binary search.
   const auto n_cells = static_cast<std::size_t>(g.nx * g.ny);
-  std::vector<std::uint32_t> start(n_cells + 1, 0);
-  auto each_cell = [&](auto&& f) {
-    for (std::size_t k = 0; k < on.size(); ++k) {
-      const Seg s = on_seg(k);
-      for (std::int64_t y = g.iy(s.lo.y); y <= g.iy(s.hi.y); ++y)
-        for (std::int64_t x = g.ix(s.lo.x); x <= g.ix(s.hi.x); ++x) f(static_cast<std::size_t>(y * g.nx + x), k);
-    }
-  };
-  std::size_t total = 0;
-  each_cell([&](std::size_t c, std::size_t) { ++start[c + 1], ++total; });
-  SM_ASSERT(total < 0xFFFFFFFFu, "find_near_pairs: more cell entries than 32-bit offsets (coast/intersections.cpp)");
-  for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
-  std::vector<std::uint32_t> entries(total);
-  {
-    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-    each_cell([&](std::size_t c, std::size_t k) { entries[fill[c]++] = static_cast<std::uint32_t>(k); });
+  SM_ASSERT(n_cells < 0xFFFFFFFFu, "find_near_pairs: more cells than 32-bit cell numbers (coast/intersections.cpp)");
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> entries;
+  std::size_t n_entries = 0;
+  for (std::size_t k = 0; k < on.size(); ++k) {
+    const Seg s = on_seg(k);
+    n_entries += static_cast<std::size_t>((g.iy(s.hi.y) - g.iy(s.lo.y) + 1) * (g.ix(s.hi.x) - g.ix(s.lo.x) + 1));
   }
+  entries.reserve(n_entries);
+  for (std::size_t k = 0; k < on.size(); ++k) {
+    const Seg s = on_seg(k);
+    for (std::int64_t y = g.iy(s.lo.y); y <= g.iy(s.hi.y); ++y)
+      for (std::int64_t x = g.ix(s.lo.x); x <= g.ix(s.hi.x); ++x)
+        entries.push_back({static_cast<std::uint32_t>(y * g.nx + x), static_cast<std::uint32_t>(k)});
+  }
+  std::sort(entries.begin(), entries.end());
+  std::vector<std::uint32_t> start;
+  if (n_cells <= 4 * entries.size()) {
+    start.assign(n_cells + 1, 0);
+    for (const auto& en : entries) ++start[en.first + 1];
+    for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
+  }
+  // The entries of cell c: [first, second) in `entries`.
+  auto cell_range = [&](std::size_t c) -> std::pair<std::size_t, std::size_t> {
+    if (!start.empty()) return {start[c], start[c + 1]};
+    const auto key = static_cast<std::uint32_t>(c);
+    const auto lo_it = std::lower_bound(entries.begin(), entries.end(), key, [](const auto& en, std::uint32_t v) { return en.first < v; });
+    auto hi_it = lo_it;
+    while (hi_it != entries.end() && hi_it->first == key) ++hi_it;
+    return {static_cast<std::size_t>(lo_it - entries.begin()), static_cast<std::size_t>(hi_it - entries.begin())};
+  };
   Vec2 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()}, hi = -lo;
   for (std::size_t k = 0; k < on.size(); ++k) {
     const Seg s = on_seg(k);
     lo = {std::min(lo.x, s.lo.x), std::min(lo.y, s.lo.y)}, hi = {std::max(hi.x, s.hi.x), std::max(hi.y, s.hi.y)};
   }
-  // The pair record as find_near_misses makes it: s before t in (loop, index) order.
-  auto test = [&](const Seg& s, const Seg& t, std::vector<NearMiss>& found) {
+  // The pairs as find_near_misses takes them: s before t in (loop, index) order. A chunk
+  // lists its pairs' places only (16 bytes, where a record is 40); the records are made
+  // once all are found, the distance measured again by the same expression (the same bits).
+  struct Places {
+    std::uint32_t loop_a, seg_a, loop_b, seg_b;
+  };
+  auto distance = [](const Seg& s, const Seg& t) {
+    return std::min({seg_distance_point(s.a, s.b, t.a), seg_distance_point(s.a, s.b, t.b),
+                     seg_distance_point(t.a, t.b, s.a), seg_distance_point(t.a, t.b, s.b)});
+  };
+  auto test = [&](const Seg& s, const Seg& t, std::vector<Places>& found) {
     const double w = std::min(width[s.loop][s.index], width[t.loop][t.index]);
-    const double d = std::min({seg_distance_point(s.a, s.b, t.a), seg_distance_point(s.a, s.b, t.b),
-                               seg_distance_point(t.a, t.b, s.a), seg_distance_point(t.a, t.b, s.b)});
+    const double d = distance(s, t);
     if (d >= w || d == 0) return;
-    found.push_back({s.loop, s.index, t.loop, t.index, d, 0.5 * (s.a + t.a)});
+    found.push_back({s.loop, s.index, t.loop, t.index});
   };
   auto boxes_meet = [](const Seg& s, const Seg& t) {
     return !(s.lo.x > t.hi.x || t.lo.x > s.hi.x || s.lo.y > t.hi.y || t.lo.y > s.hi.y);
@@ -364,17 +388,21 @@ std::vector<NearMiss> find_near_pairs(std::span<const std::vector<Vec2>> loops,
   // Work in fixed chunks whatever the thread count (each chunk's pairs in a list of its
   // own), then one list sorted: the pairs are distinct (a pair is taken in one cell, as in
   // for_each_active_pair), so the sorted list is the same for every count.
-  // First the pairs of two active segments, by runs of cells.
-  constexpr std::size_t kCellChunk = 1 << 14, kSegChunk = 1 << 14;
-  const std::size_t n_cell_chunks = (n_cells + kCellChunk - 1) / kCellChunk;
+  // First the pairs of two active segments, by runs of entries (a chunk takes the cells
+  // whose first entry it holds).
+  constexpr std::size_t kEntryChunk = 1 << 14, kSegChunk = 1 << 14;
+  const std::size_t n_entry_chunks = (entries.size() + kEntryChunk - 1) / kEntryChunk;
   const std::size_t n_seg_chunks = (n_all + kSegChunk - 1) / kSegChunk;
-  std::vector<std::vector<NearMiss>> found(n_cell_chunks + n_seg_chunks);
-  parallel_for_chunks(threads, n_cells, kCellChunk, [&](std::size_t b, std::size_t e) {
-    std::vector<NearMiss>& mine = found[b / kCellChunk];
+  std::vector<std::vector<Places>> found(n_entry_chunks + n_seg_chunks);
+  parallel_for_chunks(threads, entries.size(), kEntryChunk, [&](std::size_t b, std::size_t e) {
+    std::vector<Places>& mine = found[b / kEntryChunk];
     std::vector<Seg> here;
-    for (std::size_t c = b; c < e; ++c) {
+    std::size_t i = b;
+    while (i < e && i > 0 && entries[i - 1].first == entries[i].first) ++i;   // a cell begun before
+    while (i < e) {
+      const std::uint32_t c = entries[i].first;
       here.clear();
-      for (std::uint32_t x = start[c]; x < start[c + 1]; ++x) here.push_back(on_seg(entries[x]));
+      for (; i < entries.size() && entries[i].first == c; ++i) here.push_back(on_seg(entries[i].second));
       for (std::size_t p = 0; p < here.size(); ++p)
         for (std::size_t q = p + 1; q < here.size(); ++q)
           if (boxes_meet(here[p], here[q]) && corner_cell(here[p], here[q]) == c) test(here[p], here[q], mine);
@@ -385,7 +413,7 @@ std::vector<NearMiss> find_near_pairs(std::span<const std::vector<Vec2>> loops,
   std::vector<std::size_t> loop_first(loops.size() + 1, 0);
   for (std::size_t l = 0; l < loops.size(); ++l) loop_first[l + 1] = loop_first[l] + (loops[l].size() >= 2 ? loops[l].size() : 0);
   parallel_for_chunks(threads, n_all, kSegChunk, [&](std::size_t b, std::size_t e) {
-    std::vector<NearMiss>& mine = found[n_cell_chunks + b / kSegChunk];
+    std::vector<Places>& mine = found[n_entry_chunks + b / kSegChunk];
     auto l = static_cast<std::uint32_t>(std::upper_bound(loop_first.begin(), loop_first.end(), b) - loop_first.begin() - 1);
     for (std::size_t k = b; k < e; ++k) {
       while (k >= loop_first[l + 1]) ++l;
@@ -396,8 +424,9 @@ std::vector<NearMiss> find_near_pairs(std::span<const std::vector<Vec2>> loops,
       for (std::int64_t y = g.iy(t.lo.y); y <= g.iy(t.hi.y); ++y)
         for (std::int64_t x = g.ix(t.lo.x); x <= g.ix(t.hi.x); ++x) {
           const auto c = static_cast<std::size_t>(y * g.nx + x);
-          for (std::uint32_t en = start[c]; en < start[c + 1]; ++en) {
-            const Seg s = on_seg(entries[en]);
+          const auto [first, last] = cell_range(c);
+          for (std::size_t en = first; en < last; ++en) {
+            const Seg s = on_seg(entries[en].second);
             if (!boxes_meet(s, t) || corner_cell(s, t) != c) continue;   // taken in another cell
             if (std::pair(s.loop, s.index) < std::pair(t.loop, t.index))
               test(s, t, mine);
@@ -407,14 +436,17 @@ std::vector<NearMiss> find_near_pairs(std::span<const std::vector<Vec2>> loops,
         }
     }
   });
-  std::vector<std::uint32_t>().swap(entries);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>>().swap(entries);
   std::vector<std::uint32_t>().swap(start);
   std::size_t n_found = 0;
   for (const auto& f : found) n_found += f.size();
   out.reserve(n_found);
   for (auto& f : found) {
-    out.insert(out.end(), f.begin(), f.end());
-    std::vector<NearMiss>().swap(f);
+    for (const Places& x : f) {
+      const Seg s = seg_at(x.loop_a, x.seg_a), t = seg_at(x.loop_b, x.seg_b);
+      out.push_back({x.loop_a, x.seg_a, x.loop_b, x.seg_b, distance(s, t), 0.5 * (s.a + t.a)});
+    }
+    std::vector<Places>().swap(f);
   }
   sort_place_pairs(out);
   return out;
