@@ -241,6 +241,27 @@ void record_hit(const Seg& s, const Seg& t, std::vector<SegmentHit>& hits) {
   hits.push_back(h);
 }
 
+// The active segments of the loops of 2 points or more as (loop, index), in that order,
+// sized once; `n_all`: those loops' segments, active or not.
+std::vector<std::pair<std::uint32_t, std::uint32_t>> active_places(std::span<const std::vector<Vec2>> loops,
+                                                                   std::span<const std::vector<char>> active,
+                                                                   std::size_t& n_all) {
+  std::size_t n_on = 0;
+  n_all = 0;
+  for (std::uint32_t l = 0; l < loops.size(); ++l) {
+    if (loops[l].size() < 2) continue;
+    n_all += loops[l].size();
+    for (const char a : active[l]) n_on += a != 0;
+  }
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> on;
+  on.reserve(n_on);
+  for (std::uint32_t l = 0; l < loops.size(); ++l)
+    if (loops[l].size() >= 2)
+      for (std::uint32_t i = 0; i < loops[l].size(); ++i)
+        if (active[l][i]) on.push_back({l, i});
+  return on;
+}
+
 }  // namespace
 
 std::vector<SegmentHit> find_intersections(std::span<const std::vector<Vec2>> loops, IntersectionStats* stats) {
@@ -296,20 +317,10 @@ std::vector<NearMiss> find_near_pairs(std::span<const std::vector<Vec2>> loops,
   // are read from the loops where a test needs them (a Seg copy of each, 80 bytes, and two
   // sorted (cell, segment) lists of 16 bytes an entry were most of passage closing's first
   // round at 3 km on the full GSHHG, the import's peak: docs/kernel.md).
-  std::size_t n_on = 0, n_all = 0;
-  for (std::uint32_t l = 0; l < loops.size(); ++l) {
-    if (loops[l].size() < 2) continue;
-    n_all += loops[l].size();
-    for (const char a : active[l]) n_on += a != 0;
-  }
-  if (searched) *searched = n_on;
-  if (n_on == 0) return out;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> on;
-  on.reserve(n_on);
-  for (std::uint32_t l = 0; l < loops.size(); ++l)
-    if (loops[l].size() >= 2)
-      for (std::uint32_t i = 0; i < loops[l].size(); ++i)
-        if (active[l][i]) on.push_back({l, i});
+  std::size_t n_all = 0;
+  const std::vector<std::pair<std::uint32_t, std::uint32_t>> on = active_places(loops, active, n_all);
+  if (searched) *searched = on.size();
+  if (on.empty()) return out;
   auto seg_at = [&](std::uint32_t l, std::uint32_t i) {
     const auto& p = loops[l];
     const auto n = static_cast<std::uint32_t>(p.size());
@@ -357,11 +368,8 @@ std::vector<NearMiss> find_near_pairs(std::span<const std::vector<Vec2>> loops,
     while (hi_it != entries.end() && hi_it->first == key) ++hi_it;
     return {static_cast<std::size_t>(lo_it - entries.begin()), static_cast<std::size_t>(hi_it - entries.begin())};
   };
-  Vec2 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()}, hi = -lo;
-  for (std::size_t k = 0; k < on.size(); ++k) {
-    const Seg s = on_seg(k);
-    lo = {std::min(lo.x, s.lo.x), std::min(lo.y, s.lo.y)}, hi = {std::max(hi.x, s.hi.x), std::max(hi.y, s.hi.y)};
-  }
+  // The active segments' boxes' bounding box: the grid's, which starts at its lower corner.
+  const Vec2 lo = g.origin, hi = g.origin + Vec2{static_cast<double>(g.nx) * g.cell, static_cast<double>(g.ny) * g.cell};
   // The pairs as find_near_misses takes them: s before t in (loop, index) order. A chunk
   // lists its pairs' places only (16 bytes, where a record is 40); the records are made
   // once all are found, the distance measured again by the same expression (the same bits).
