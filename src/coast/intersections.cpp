@@ -10,6 +10,8 @@
 #include <limits>
 #include <tuple>
 
+#include "base/check.h"
+#include "base/parallel.h"
 #include "coast/place_pairs.h"
 #include "exact/predicates.h"
 #include "exact/segments.h"
@@ -68,12 +70,15 @@ std::vector<Seg> make_segments(std::span<const std::vector<Vec2>> loops, std::sp
   return segs;
 }
 
-Grid make_grid(const std::vector<Seg>& segs) {
+// The grid for n segments, seg(k) the k-th (its padded box).
+template <class At>
+Grid make_grid_of(std::size_t n, At&& seg) {
   Grid g;
   Vec2 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()}, hi = -lo;
   std::vector<double> len;
-  len.reserve(segs.size());
-  for (const Seg& s : segs) {
+  len.reserve(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const Seg s = seg(k);
     lo = {std::min(lo.x, s.lo.x), std::min(lo.y, s.lo.y)};
     hi = {std::max(hi.x, s.hi.x), std::max(hi.y, s.hi.y)};
     len.push_back(std::max(s.hi.x - s.lo.x, s.hi.y - s.lo.y));
@@ -84,7 +89,7 @@ Grid make_grid(const std::vector<Seg>& segs) {
   const double span = std::max(hi.x - lo.x, hi.y - lo.y);
   double cell = std::max(2.0 * len[len.size() / 2], span * 1e-7);
   // Never more than ~16 cells per segment overall (memory bound for sparse data).
-  const double min_cell = span / std::sqrt(16.0 * static_cast<double>(segs.size()) + 1.0);
+  const double min_cell = span / std::sqrt(16.0 * static_cast<double>(n) + 1.0);
   cell = std::max(cell, min_cell);
   if (!(cell > 0)) cell = 1;
   g.origin = lo;
@@ -92,6 +97,10 @@ Grid make_grid(const std::vector<Seg>& segs) {
   g.nx = std::max<std::int64_t>(1, static_cast<std::int64_t>((hi.x - lo.x) / cell) + 1);
   g.ny = std::max<std::int64_t>(1, static_cast<std::int64_t>((hi.y - lo.y) / cell) + 1);
   return g;
+}
+
+Grid make_grid(const std::vector<Seg>& segs) {
+  return make_grid_of(segs.size(), [&segs](std::size_t k) { return segs[k]; });
 }
 
 // Cell entries sorted by cell: the candidate pairs of each cell are tested in order.
@@ -232,6 +241,27 @@ void record_hit(const Seg& s, const Seg& t, std::vector<SegmentHit>& hits) {
   hits.push_back(h);
 }
 
+// The active segments of the loops of 2 points or more as (loop, index), in that order,
+// sized once; `n_all`: those loops' segments, active or not.
+std::vector<std::pair<std::uint32_t, std::uint32_t>> active_places(std::span<const std::vector<Vec2>> loops,
+                                                                   std::span<const std::vector<char>> active,
+                                                                   std::size_t& n_all) {
+  std::size_t n_on = 0;
+  n_all = 0;
+  for (std::uint32_t l = 0; l < loops.size(); ++l) {
+    if (loops[l].size() < 2) continue;
+    n_all += loops[l].size();
+    for (const char a : active[l]) n_on += a != 0;
+  }
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> on;
+  on.reserve(n_on);
+  for (std::uint32_t l = 0; l < loops.size(); ++l)
+    if (loops[l].size() >= 2)
+      for (std::uint32_t i = 0; i < loops[l].size(); ++i)
+        if (active[l][i]) on.push_back({l, i});
+  return on;
+}
+
 }  // namespace
 
 std::vector<SegmentHit> find_intersections(std::span<const std::vector<Vec2>> loops, IntersectionStats* stats) {
@@ -281,20 +311,151 @@ std::vector<NearMiss> find_near_misses(std::span<const std::vector<Vec2>> loops,
 
 std::vector<NearMiss> find_near_pairs(std::span<const std::vector<Vec2>> loops,
                                       std::span<const std::vector<double>> width,
-                                      std::span<const std::vector<char>> active, std::size_t* searched) {
+                                      std::span<const std::vector<char>> active, std::size_t* searched, int threads) {
   std::vector<NearMiss> out;
-  const std::vector<Seg> on = make_segments(loops, width, active, true);   // in (loop, index) order
+  // The active segments as (loop, index), in that order; a segment's points and padded box
+  // are read from the loops where a test needs them (a Seg copy of each, 80 bytes, and two
+  // sorted (cell, segment) lists of 16 bytes an entry were most of passage closing's first
+  // round at 3 km on the full GSHHG, the import's peak: docs/kernel.md).
+  std::size_t n_all = 0;
+  const std::vector<std::pair<std::uint32_t, std::uint32_t>> on = active_places(loops, active, n_all);
   if (searched) *searched = on.size();
   if (on.empty()) return out;
-  // The pair record as find_near_misses makes it: s before t in (loop, index) order.
-  auto test = [&](const Seg& s, const Seg& t) {
-    const double w = std::min(width[s.loop][s.index], width[t.loop][t.index]);
-    const double d = std::min({seg_distance_point(s.a, s.b, t.a), seg_distance_point(s.a, s.b, t.b),
-                               seg_distance_point(t.a, t.b, s.a), seg_distance_point(t.a, t.b, s.b)});
-    if (d >= w || d == 0) return;
-    out.push_back({s.loop, s.index, t.loop, t.index, d, 0.5 * (s.a + t.a)});
+  auto seg_at = [&](std::uint32_t l, std::uint32_t i) {
+    const auto& p = loops[l];
+    const auto n = static_cast<std::uint32_t>(p.size());
+    Seg s{p[i], p[(i + 1) % n], l, i, n, {}, {}};
+    const double pd = 0.5 * width[l][i];
+    s.lo = {std::min(s.a.x, s.b.x) - pd, std::min(s.a.y, s.b.y) - pd};
+    s.hi = {std::max(s.a.x, s.b.x) + pd, std::max(s.a.y, s.b.y) + pd};
+    return s;
   };
-  for_each_active_pair(loops, width, active, on, test);
+  auto on_seg = [&](std::size_t k) { return seg_at(on[k].first, on[k].second); };
+  const Grid g = make_grid_of(on.size(), on_seg);
+  // The cells' entries (cell, active segment), sorted: each cell's in (loop, index) order.
+  // Most cells of a world's grid are empty (up to 16 a segment, make_grid_of): an offsets
+  // array over all of them (4 bytes a cell, 21 MB for the 323,000 segments of the first
+  // closing round at 3 km) is made only where the cells are few, else a cell's entries are
+  // found by a binary search.
+  const auto n_cells = static_cast<std::size_t>(g.nx * g.ny);
+  SM_ASSERT(n_cells < 0xFFFFFFFFu, "find_near_pairs: more cells than 32-bit cell numbers (coast/intersections.cpp)");
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> entries;
+  std::size_t n_entries = 0;
+  for (std::size_t k = 0; k < on.size(); ++k) {
+    const Seg s = on_seg(k);
+    n_entries += static_cast<std::size_t>((g.iy(s.hi.y) - g.iy(s.lo.y) + 1) * (g.ix(s.hi.x) - g.ix(s.lo.x) + 1));
+  }
+  entries.reserve(n_entries);
+  for (std::size_t k = 0; k < on.size(); ++k) {
+    const Seg s = on_seg(k);
+    for (std::int64_t y = g.iy(s.lo.y); y <= g.iy(s.hi.y); ++y)
+      for (std::int64_t x = g.ix(s.lo.x); x <= g.ix(s.hi.x); ++x)
+        entries.push_back({static_cast<std::uint32_t>(y * g.nx + x), static_cast<std::uint32_t>(k)});
+  }
+  std::sort(entries.begin(), entries.end());
+  std::vector<std::uint32_t> start;
+  if (n_cells <= 4 * entries.size()) {
+    start.assign(n_cells + 1, 0);
+    for (const auto& en : entries) ++start[en.first + 1];
+    for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
+  }
+  // The entries of cell c: [first, second) in `entries`.
+  auto cell_range = [&](std::size_t c) -> std::pair<std::size_t, std::size_t> {
+    if (!start.empty()) return {start[c], start[c + 1]};
+    const auto key = static_cast<std::uint32_t>(c);
+    const auto lo_it = std::lower_bound(entries.begin(), entries.end(), key, [](const auto& en, std::uint32_t v) { return en.first < v; });
+    auto hi_it = lo_it;
+    while (hi_it != entries.end() && hi_it->first == key) ++hi_it;
+    return {static_cast<std::size_t>(lo_it - entries.begin()), static_cast<std::size_t>(hi_it - entries.begin())};
+  };
+  // The active segments' boxes' bounding box: the grid's, which starts at its lower corner.
+  const Vec2 lo = g.origin, hi = g.origin + Vec2{static_cast<double>(g.nx) * g.cell, static_cast<double>(g.ny) * g.cell};
+  // The pairs as find_near_misses takes them: s before t in (loop, index) order. A chunk
+  // lists its pairs' places only (16 bytes, where a record is 40); the records are made
+  // once all are found, the distance measured again by the same expression (the same bits).
+  struct Places {
+    std::uint32_t loop_a, seg_a, loop_b, seg_b;
+  };
+  auto distance = [](const Seg& s, const Seg& t) {
+    return std::min({seg_distance_point(s.a, s.b, t.a), seg_distance_point(s.a, s.b, t.b),
+                     seg_distance_point(t.a, t.b, s.a), seg_distance_point(t.a, t.b, s.b)});
+  };
+  auto test = [&](const Seg& s, const Seg& t, std::vector<Places>& found) {
+    const double w = std::min(width[s.loop][s.index], width[t.loop][t.index]);
+    const double d = distance(s, t);
+    if (d >= w || d == 0) return;
+    found.push_back({s.loop, s.index, t.loop, t.index});
+  };
+  auto boxes_meet = [](const Seg& s, const Seg& t) {
+    return !(s.lo.x > t.hi.x || t.lo.x > s.hi.x || s.lo.y > t.hi.y || t.lo.y > s.hi.y);
+  };
+  auto corner_cell = [&](const Seg& s, const Seg& t) {
+    const Vec2 corner{std::max(s.lo.x, t.lo.x), std::max(s.lo.y, t.lo.y)};
+    return static_cast<std::size_t>(g.iy(corner.y) * g.nx + g.ix(corner.x));
+  };
+  // Work in fixed chunks whatever the thread count (each chunk's pairs in a list of its
+  // own), then one list sorted: the pairs are distinct (a pair is taken in one cell, as in
+  // for_each_active_pair), so the sorted list is the same for every count.
+  // First the pairs of two active segments, by runs of entries (a chunk takes the cells
+  // whose first entry it holds).
+  constexpr std::size_t kEntryChunk = 1 << 14, kSegChunk = 1 << 14;
+  const std::size_t n_entry_chunks = (entries.size() + kEntryChunk - 1) / kEntryChunk;
+  const std::size_t n_seg_chunks = (n_all + kSegChunk - 1) / kSegChunk;
+  std::vector<std::vector<Places>> found(n_entry_chunks + n_seg_chunks);
+  parallel_for_chunks(threads, entries.size(), kEntryChunk, [&](std::size_t b, std::size_t e) {
+    std::vector<Places>& mine = found[b / kEntryChunk];
+    std::vector<Seg> here;
+    std::size_t i = b;
+    while (i < e && i > 0 && entries[i - 1].first == entries[i].first) ++i;   // a cell begun before
+    while (i < e) {
+      const std::uint32_t c = entries[i].first;
+      here.clear();
+      for (; i < entries.size() && entries[i].first == c; ++i) here.push_back(on_seg(entries[i].second));
+      for (std::size_t p = 0; p < here.size(); ++p)
+        for (std::size_t q = p + 1; q < here.size(); ++q)
+          if (boxes_meet(here[p], here[q]) && corner_cell(here[p], here[q]) == c) test(here[p], here[q], mine);
+    }
+  });
+  // Then each inactive segment whose box meets the active ones' bounding box looks in the
+  // cells its box covers, by runs of the loops' segments (numbered loop after loop).
+  std::vector<std::size_t> loop_first(loops.size() + 1, 0);
+  for (std::size_t l = 0; l < loops.size(); ++l) loop_first[l + 1] = loop_first[l] + (loops[l].size() >= 2 ? loops[l].size() : 0);
+  parallel_for_chunks(threads, n_all, kSegChunk, [&](std::size_t b, std::size_t e) {
+    std::vector<Places>& mine = found[n_entry_chunks + b / kSegChunk];
+    auto l = static_cast<std::uint32_t>(std::upper_bound(loop_first.begin(), loop_first.end(), b) - loop_first.begin() - 1);
+    for (std::size_t k = b; k < e; ++k) {
+      while (k >= loop_first[l + 1]) ++l;
+      const auto i = static_cast<std::uint32_t>(k - loop_first[l]);
+      if (active[l][i]) continue;
+      const Seg t = seg_at(l, i);
+      if (t.lo.x > hi.x || t.hi.x < lo.x || t.lo.y > hi.y || t.hi.y < lo.y) continue;
+      for (std::int64_t y = g.iy(t.lo.y); y <= g.iy(t.hi.y); ++y)
+        for (std::int64_t x = g.ix(t.lo.x); x <= g.ix(t.hi.x); ++x) {
+          const auto c = static_cast<std::size_t>(y * g.nx + x);
+          const auto [first, last] = cell_range(c);
+          for (std::size_t en = first; en < last; ++en) {
+            const Seg s = on_seg(entries[en].second);
+            if (!boxes_meet(s, t) || corner_cell(s, t) != c) continue;   // taken in another cell
+            if (std::pair(s.loop, s.index) < std::pair(t.loop, t.index))
+              test(s, t, mine);
+            else
+              test(t, s, mine);
+          }
+        }
+    }
+  });
+  std::vector<std::pair<std::uint32_t, std::uint32_t>>().swap(entries);
+  std::vector<std::uint32_t>().swap(start);
+  std::size_t n_found = 0;
+  for (const auto& f : found) n_found += f.size();
+  out.reserve(n_found);
+  for (auto& f : found) {
+    for (const Places& x : f) {
+      const Seg s = seg_at(x.loop_a, x.seg_a), t = seg_at(x.loop_b, x.seg_b);
+      out.push_back({x.loop_a, x.seg_a, x.loop_b, x.seg_b, distance(s, t), 0.5 * (s.a + t.a)});
+    }
+    std::vector<Places>().swap(f);
+  }
   sort_place_pairs(out);
   return out;
 }

@@ -58,10 +58,12 @@ std::vector<NearMiss> find_near_misses(std::span<const std::vector<Vec2>> loops,
 /// unchanged segments from one search to the next asks only about the segments that
 /// changed, and decides about pairs on one loop with the loop as it is then. (loop_a,
 /// seg_a) < (loop_b, seg_b); sorted as find_near_misses; `searched` (when given) is set to
-/// the number of segments entered in the grid (the active ones).
+/// the number of segments entered in the grid (the active ones). `threads`: the search's
+/// (parallel_for_chunks); the result is the same for every count.
 std::vector<NearMiss> find_near_pairs(std::span<const std::vector<Vec2>> loops,
                                       std::span<const std::vector<double>> width,
-                                      std::span<const std::vector<char>> active, std::size_t* searched = nullptr);
+                                      std::span<const std::vector<char>> active, std::size_t* searched = nullptr,
+                                      int threads = 1);
 
 /// find_near_misses after the loops changed in places: `before` is find_near_misses of the
 /// loops as they were, each place numbered as it is now (a loop renumbered or merged into

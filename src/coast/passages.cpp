@@ -876,8 +876,14 @@ std::vector<NearMiss> round_near_misses(Work& w) {
   }
   w.segs = std::move(segs);
   std::size_t searched = 0;
-  std::vector<NearMiss> near = find_near_pairs(w.polys, w.width, active, &searched);
+  std::vector<NearMiss> near = find_near_pairs(w.polys, w.width, active, &searched, resolve_thread_count(w.opt.threads));
   w.stats.near_searched += searched;
+  std::vector<std::vector<char>>().swap(active);
+  // The search's grid and per-chunk lists are freed: their pages go back before the round's
+  // next arrays (candidates, the clean test's grid) are made, else they stay resident under
+  // them (the first round at 3 km: 50 MB freed but resident, the import's peak).
+  release_free_memory();
+  near.reserve(near.size() + w.near.size());
   for (const auto& [na, nb] : w.near) {
     const std::uint32_t sa = renumber[na], sb = renumber[nb];
     if (sa == kNoSegment || sb == kNoSegment) continue;
@@ -1067,6 +1073,7 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
   round_polygons(w);
   const std::vector<std::vector<Vec2>>& polys = w.polys;
   const std::vector<Candidate> cands = round_candidates(w);
+  release_free_memory();   // the round's near pairs and ways across (round_near_misses)
   // The round's segments as they were at its start: the cuts made since only replaced two
   // segments by two dams (in `made`) or dropped water, so checking against the start's
   // segments too is the same or stricter (a stricter refusal is retried next round).
@@ -1314,6 +1321,15 @@ WorkLoop rebuild(Work& w, const FlatLoop& f, const std::vector<std::uint32_t>& r
       c.record = w.dams[src - w.n_curves].record;
       c.id = w.dams[src - w.n_curves].id;
     }
+    // The run's points counted first, so the curve's arrays are made at their size: grown
+    // by doubling, a continent's curve held up to twice its points (the rebuild's peak).
+    std::size_t run = 0, kept = 0;
+    for (std::size_t j = i; run == 0 || (j != start && node(j).src == src); j = (j + 1) % n, ++run)
+      kept += node(j).kept || j == i;
+    c.full.reserve(run + 1);
+    c.uv.reserve(run + 1);
+    c.gamma.reserve(run + 1);
+    c.keep.reserve(kept + 1);
     std::size_t j = i;
     do {
       const Node& nd = node(j);
@@ -1553,8 +1569,14 @@ Result<bool> close_passages(std::vector<WorkCurve>& curves, std::vector<WorkLoop
     }
   std::vector<char> is_unused(w.n_curves, 0);
   for (std::uint32_t ci : unused) is_unused[ci] = 1;
+  // Freed curves' pages go back to the system every so often (kTrimBytes): the rebuilt
+  // curves come from elsewhere in the heap, and the freed ones stayed resident under them.
+  constexpr std::size_t kTrimBytes = std::size_t{32} << 20;
+  std::size_t freed = 0;
   auto free_curve = [&](std::uint32_t ci) {
     WorkCurve& c = curves[ci];
+    freed += c.full.capacity() * sizeof(geo::LonLat) + c.uv.capacity() * sizeof(Vec2) +
+             c.gamma.capacity() * sizeof(double) + c.keep.capacity() * sizeof(std::uint32_t);
     std::vector<geo::LonLat>().swap(c.full);
     std::vector<Vec2>().swap(c.uv);
     std::vector<double>().swap(c.gamma);
@@ -1577,6 +1599,7 @@ Result<bool> close_passages(std::vector<WorkCurve>& curves, std::vector<WorkLoop
     changed = true;
     for (std::uint32_t ci : read)
       if (--readers[ci] == 0 && is_unused[ci]) free_curve(ci);
+    if (freed >= kTrimBytes) release_free_memory(), freed = 0;
   }
   return changed;
 }

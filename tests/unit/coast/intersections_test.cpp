@@ -362,3 +362,47 @@ TEST_CASE("intersections: near misses after loops are joined are the full search
     near = again;
   }
 }
+
+TEST_CASE("intersections: near pairs are the same records on any thread count, past one chunk") {
+  // 600 wavy rings (24,000 segments, so the search's cells and segments each come in
+  // several fixed chunks): the full search is find_near_misses record for record, and
+  // every thread count gives the same list, the active segments a third of them or all.
+  std::mt19937 rng(777);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<std::vector<Vec2>> loops;
+  std::vector<std::vector<double>> width;
+  for (int l = 0; l < 600; ++l) {
+    const Vec2 c{20 * u(rng), 20 * u(rng)};
+    std::vector<Vec2> p;
+    std::vector<double> w;
+    for (int i = 0; i < 40; ++i) {
+      const double a = 6.283185307179586 * i / 40;
+      const double r = 0.5 * (1 + 0.3 * std::sin(7 * a) + 0.2 * u(rng));
+      p.push_back({c.x + r * std::cos(a), c.y + r * std::sin(a)});
+      w.push_back(0.05 + 0.2 * u(rng));
+    }
+    loops.push_back(p);
+    width.push_back(w);
+  }
+  std::vector<std::vector<char>> every, third;
+  for (const auto& p : loops) {
+    every.emplace_back(p.size(), 1);
+    std::vector<char> a(p.size());
+    for (char& x : a) x = u(rng) < 0.33;
+    third.push_back(a);
+  }
+  const auto all = find_near_pairs(loops, width, every, nullptr, 1);
+  std::vector<NearMiss> filtered;
+  for (const NearMiss& m : all) {
+    const std::uint32_t d = m.seg_a > m.seg_b ? m.seg_a - m.seg_b : m.seg_b - m.seg_a;
+    if (m.loop_a != m.loop_b || std::min(d, 40 - d) >= 3) filtered.push_back(m);
+  }
+  REQUIRE(filtered.size() > 1000);
+  CHECK(same_near_misses(filtered, find_near_misses(loops, width)));
+  const auto some = find_near_pairs(loops, width, third, nullptr, 1);
+  REQUIRE(some.size() > 500);
+  for (int threads : {2, 3, 8}) {
+    CHECK(same_near_misses(find_near_pairs(loops, width, every, nullptr, threads), all));
+    CHECK(same_near_misses(find_near_pairs(loops, width, third, nullptr, threads), some));
+  }
+}
