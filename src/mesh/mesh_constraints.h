@@ -6,6 +6,7 @@
 
 #include <map>
 #include <set>
+#include <utility>
 #include <vector>
 
 namespace sm {
@@ -63,7 +64,11 @@ struct PeriodicSurfaceSpec {
   };
   int source = 0;   // > 0
   std::vector<double> affine;
+  /// The target's boundary curves, then its embedded curves, each with its counterpart.
   std::vector<CurvePair> curves;
+  /// Embedded points of the target with their counterparts on the source (target, source):
+  /// their nodes are no curve's, so the copy pairs them on their own.
+  std::vector<std::pair<int, int>> points;
 };
 
 /// Mesh.RecombinationAlgorithm 0 (simple) and 1 (blossom-quality; see recombine.h).

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <map>
 
 #include <fmt/format.h>
 
@@ -33,7 +35,125 @@ std::vector<double> frame_rotation(Vec3 a1, Vec3 a2, Vec3 b1, Vec3 b2) {
   return r;
 }
 
+// A surface's points and curves as Gmsh pairs them: the boundary curves' and embedded
+// curves' end points and the embedded points; the boundary curves, then the embedded ones.
+struct SurfaceEntities {
+  std::vector<int> points;   // sorted, unique
+  std::vector<int> curves;   // > 0, unique, in the surface's order
+};
+
+SurfaceEntities surface_entities(const geo::Model& model, int tag, bool embedded_only) {
+  const geo::ModelSurface& s = *model.surface(tag);
+  SurfaceEntities out;
+  auto add_curve = [&](int c) {
+    const geo::ModelCurve* mc = model.curve(std::abs(c));
+    if (!mc || std::find(out.curves.begin(), out.curves.end(), std::abs(c)) != out.curves.end()) return;
+    out.curves.push_back(std::abs(c));
+    out.points.push_back(mc->begin);
+    out.points.push_back(mc->end);
+  };
+  if (!embedded_only)
+    for (int l : s.loops)
+      if (const geo::ModelCurveLoop* loop = model.curve_loop(std::abs(l)))
+        for (int c : loop->curves) add_curve(c);
+  for (int c : s.embedded_curves) add_curve(c);
+  for (int p : s.embedded_points)
+    if (model.vertex(p)) out.points.push_back(p);
+  std::sort(out.points.begin(), out.points.end());
+  out.points.erase(std::unique(out.points.begin(), out.points.end()), out.points.end());
+  return out;
+}
+
+// The bounding box of 33 points of curve c, each mapped by `affine` (none: as they are).
+geo::BoundingBox sampled_box(const geo::ModelCurve& c, const std::vector<double>* affine) {
+  geo::BoundingBox box;
+  constexpr int kSamples = 32;
+  for (int i = 0; i <= kSamples; ++i) {
+    const Vec3 p = c.shape ? c.shape->point(static_cast<double>(i) / kSamples) : Vec3{};
+    box.add(affine ? apply_affine(*affine, p) : p);
+  }
+  return box;
+}
+
+// Whether source curve `sc` mapped by `affine` runs along target curve `tc` as Gmsh tells
+// curves with the same end points apart: their bounding boxes' corners within a thousandth
+// of the target's box (its bounding boxes are rough; sampled ones are too).
+bool same_place(const geo::ModelCurve& tc, const geo::ModelCurve& sc, const std::vector<double>& affine,
+                double tolerance) {
+  const geo::BoundingBox mine = sampled_box(tc, nullptr), theirs = sampled_box(sc, &affine);
+  const double tol = std::max(1e-3 * mine.diagonal(), tolerance);
+  return norm(mine.lo - theirs.lo) <= tol && norm(mine.hi - theirs.hi) <= tol;
+}
+
+// A closed curve's copy runs alike when the map turns the source's tangent at its start
+// along the target's (both curves start at the same place, so their ends tell nothing).
+int closed_orientation(const geo::ModelCurve& tc, const geo::ModelCurve& sc, const std::vector<double>& affine) {
+  if (!tc.shape || !sc.shape) return 1;
+  const Vec3 at = sc.shape->point(0), along = sc.shape->eval(0).d1;
+  const Vec3 turned = apply_affine(affine, at + along) - apply_affine(affine, at);
+  return dot(turned, tc.shape->eval(0).d1) < 0 ? -1 : 1;
+}
+
 }  // namespace
+
+PeriodicSurfaceMatch match_periodic_surface(const geo::Model& model, int target, int source,
+                                            const std::vector<double>& affine, double tolerance, bool embedded_only) {
+  using Miss = PeriodicSurfaceMatch::Miss;
+  PeriodicSurfaceMatch out;
+  const SurfaceEntities mine = surface_entities(model, target, embedded_only);
+  const SurfaceEntities theirs = surface_entities(model, source, embedded_only);
+  if (mine.points.size() != theirs.points.size() || mine.curves.size() != theirs.curves.size()) {
+    out.miss = Miss::Counts;
+    out.counts[0] = mine.points.size(), out.counts[1] = mine.curves.size();
+    out.counts[2] = theirs.points.size(), out.counts[3] = theirs.curves.size();
+    return out;
+  }
+  // Each source point onto the nearest target point (Gmsh takes the first within the
+  // tolerance; the nearest is the same one whenever the points are farther apart than that).
+  std::map<int, int> source_of;   // target point -> source point
+  for (int p : theirs.points) {
+    const Vec3 x = apply_affine(affine, model.vertex(p)->xyz);
+    int best = 0;
+    double best_d = 1e300;
+    for (int q : mine.points) {
+      const double d = norm(model.vertex(q)->xyz - x);
+      if (d < best_d) best = q, best_d = d;
+    }
+    if (!(best_d <= tolerance)) {
+      out.miss = Miss::Point, out.entity = p, out.image = x, out.distance = best_d;
+      return out;
+    }
+    source_of[best] = p;
+  }
+  for (int c : mine.curves) {
+    const geo::ModelCurve& tc = *model.curve(c);
+    const auto b = source_of.find(tc.begin), e = source_of.find(tc.end);
+    // The source curves whose ends land on c's, with the way they run; one is taken as it
+    // is, several (the same end points) are told apart by where they lie.
+    std::vector<std::pair<int, int>> candidates;
+    for (int sc_tag : theirs.curves) {
+      if (b == source_of.end() || e == source_of.end()) break;
+      const geo::ModelCurve& sc = *model.curve(sc_tag);
+      if (sc.begin == b->second && sc.end == e->second) candidates.emplace_back(sc_tag, 1);
+      else if (sc.begin == e->second && sc.end == b->second) candidates.emplace_back(sc_tag, -1);
+    }
+    if (candidates.size() > 1)
+      std::erase_if(candidates, [&](const std::pair<int, int>& k) {
+        return !same_place(tc, *model.curve(k.first), affine, tolerance);
+      });
+    if (candidates.empty()) {
+      out.miss = Miss::Curve, out.entity = c;
+      return out;
+    }
+    const auto [found, o] = candidates.front();
+    const int orientation = tc.periodic() ? closed_orientation(tc, *model.curve(found), affine) : o;
+    out.curves.push_back({c, found, orientation});
+  }
+  const geo::ModelSurface& s = *model.surface(target);
+  for (int p : s.embedded_points)
+    if (const auto it = source_of.find(p); it != source_of.end()) out.points.emplace_back(p, it->second);
+  return out;
+}
 
 std::vector<double> infer_periodic_transform(const std::vector<std::pair<Vec3, Vec3>>& pairs, double tolerance,
                                              std::string* why) {
@@ -104,6 +224,14 @@ std::map<std::uint32_t, std::uint32_t> periodic_boundary_images(const ModelMesh&
       return {};
     }
     for (std::size_t i = 0; i < mine.size(); ++i) image[theirs[i]] = mine[i];
+  }
+  for (const auto& [point, counterpart] : spec.points) {
+    const auto mine = mesh.vertex_node.find(point), theirs = mesh.vertex_node.find(counterpart);
+    if (mine == mesh.vertex_node.end() || theirs == mesh.vertex_node.end()) {
+      if (why) *why = fmt::format("periodic surface {}: its embedded point {} or point {} has no node", target, point, counterpart);
+      return {};
+    }
+    image[theirs->second] = mine->second;
   }
   return image;
 }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "base/vec.h"
+#include "geo/model.h"
 #include "mesh/mesh_constraints.h"
 #include "mesh/model_mesh.h"
 #include "mesh/periodic_link.h"
@@ -26,9 +27,39 @@ namespace sm {
 std::vector<double> infer_periodic_transform(const std::vector<std::pair<Vec3, Vec3>>& pairs, double tolerance,
                                              std::string* why);
 
+/// What pairing a target surface's points and curves with a source's by a given map found
+/// (Gmsh 4.8.4's setMeshMaster of a surface with a transform: boundary and embedded
+/// entities alike). On success `miss` is None and every curve of the target has its
+/// counterpart; otherwise `miss` says what failed and `entity` names it.
+struct PeriodicSurfaceMatch {
+  enum class Miss : std::uint8_t {
+    None,
+    Counts,  ///< the surfaces have different numbers of points or curves (`counts`)
+    Point,   ///< source point `entity` lands at `image`, `distance` from the nearest target point
+    Curve,   ///< target curve `entity` is the image of no source curve
+  };
+  std::vector<PeriodicSurfaceSpec::CurvePair> curves;
+  std::vector<std::pair<int, int>> points;   // embedded points: (target, source)
+  Miss miss = Miss::None;
+  int entity = 0;
+  Vec3 image{};
+  double distance = 0;
+  /// Counts: the target's points and curves, then the source's.
+  std::size_t counts[4] = {0, 0, 0, 0};
+};
+
+/// Pairs surface `target`'s points and curves with surface `source`'s by `affine`: each
+/// source point must land within `tolerance` of a target point, and each target curve is
+/// the source curve whose end points land on its own (forward or backward); curves with the
+/// same end points are told apart by their sampled bounding boxes, as Gmsh does. With
+/// `embedded_only`, only the embedded points and curves (and those curves' end points) are
+/// paired: the boundary's pairs are the statement's.
+PeriodicSurfaceMatch match_periodic_surface(const geo::Model& model, int target, int source,
+                                            const std::vector<double>& affine, double tolerance, bool embedded_only);
+
 /// The target's node of each source node on the paired curves of a periodic surface (ends
-/// included), node for node in the pair's orientation. Empty, with `why`, when two paired
-/// curves' node counts differ (the 1D repair or a quality floor split one of them) or a
+/// included, embedded curves too) and of its paired embedded points, node for node in the
+/// pair's orientation. Empty, with `why`, when two paired curves' node counts differ (the 1D repair or a quality floor split one of them) or a
 /// curve has no mesh.
 std::map<std::uint32_t, std::uint32_t> periodic_boundary_images(const ModelMesh& mesh, int target,
                                                                  const PeriodicSurfaceSpec& spec, std::string* why);

@@ -6,6 +6,10 @@ boundary included) listed once with its master's node, each the master's turned 
 map written with them, which turns point 2 onto point 3 (a third of a turn about z). And
 (periodic_surface_flip.geo) a copy onto a surface whose loop runs the other way has its
 triangles reversed: surface 1's all turn counter-clockwise, surface 2's all clockwise.
+And (periodic_surface_forms.geo) the forms with a transform, Translate, Rotate and Affine, a
+chain (surface 5 copies surface 2, a copy of surface 1) and a source with an embedded point
+and curve: each copy has its source's triangles, its link lists every node of them (the
+embedded ones included) and each node is its master's moved by the map written with them.
 
     periodic_surface_readers.py STEREOMESH
 Exit 0: all checks hold; 1: a check failed (each is printed); 77: a reader is missing.
@@ -51,6 +55,29 @@ def turns(path):
     return out
 
 
+def copy_view(path, copies):
+    """Per (target, source) of `copies`: the target's master, the largest distance of a node
+    from its master's image by the written map, whether the link lists exactly the nodes of
+    the target's triangles, and both surfaces' triangle counts, as Gmsh's reader sees them."""
+    xyz = gmsh_nodes(path, periodic=True)
+    out = []
+    for target, source in copies:
+        master, nodes, master_nodes, affine = gmsh.model.mesh.getPeriodicNodes(2, target)
+        m = np.array(affine).reshape(4, 4) if len(affine) == 16 else np.full((4, 4), np.nan)
+        err = max((float(np.linalg.norm(xyz[a] - m.dot(np.append(xyz[b], 1))[:3]))
+                   for a, b in zip(nodes.tolist(), master_nodes.tolist())), default=1.0)
+        counts, own = [], set()
+        for s in (target, source):
+            types, elements, element_nodes = gmsh.model.mesh.getElements(2, s)
+            counts.append(sum(len(e) for t, e in zip(types, elements) if t == 2))
+            if s == target:
+                for n in element_nodes:
+                    own.update(n.tolist())
+        out.append((master, err, sorted(nodes.tolist()) == sorted(own), counts))
+    gmsh.finalize()
+    return out
+
+
 def main():
     stereomesh = sys.argv[1]
     with tempfile.TemporaryDirectory() as out:
@@ -78,6 +105,16 @@ def main():
             check(t[1][1] == t[2][1] and t[1][1] > 20, f"flip.msh: surfaces 1 and 2 have {t[1][1]} and {t[2][1]} triangles")
             check(t[1][0] == {1} and t[2][0] == {-1},
                   f"flip.msh: surface 1's triangles turn {t[1][0]}, surface 2's {t[2][0]} (want {{1}}, {{-1}})")
+        if run_script(stereomesh, "periodic_surface_forms.geo", out, what="stereomesh ran the transforms"):
+            copies = [(2, 1), (3, 1), (4, 1), (5, 2)]
+            for name in ["forms.msh", "forms22.msh"]:
+                for (target, source), (master, err, listed, counts) in zip(copies, copy_view(os.path.join(out, name), copies)):
+                    what = f"{name}: surface {target}"
+                    check(master == source, f"{what}'s master is surface {master} (want {source})")
+                    check(counts[0] == counts[1] and counts[0] > 100,
+                          f"{what} has {counts[0]} triangles, surface {source} {counts[1]}")
+                    check(listed, f"{what}: the link lists the nodes of its triangles")
+                    check(err < 1e-12, f"{what}: each node is its master's moved by the map ({err:.2g})")
     finish()
 
 

@@ -233,6 +233,45 @@ std::map<int, int> paired_points(const geo::Model& m, const std::vector<int>& ta
   return out;
 }
 
+// Surface t copying surface src must not close a circle of copies (t is src's source, or
+// its source's...): each step follows one recorded copy, so at most that many steps.
+void check_no_copy_cycle(Interpreter& in, const Stmt& s, int t, int src) {
+  const std::map<int, PeriodicSurfaceSpec>& copies = in.kernel().constraints.periodic_surfaces;
+  for (int cur = src, steps = 0; steps <= static_cast<int>(copies.size()); ++steps) {
+    const auto up = copies.find(cur);
+    if (up == copies.end()) break;
+    if (up->second.source == t) in.fail(s.range, Diag::PeriodicSurfaceCycle, t, src, t);
+    cur = up->second.source;
+  }
+}
+
+// A failed pairing of surface t's points and curves with src's, at the list it concerns.
+void report_match_miss(Interpreter& in, const Stmt& s, const PeriodicStmt& n, const PeriodicSurfaceMatch& match,
+                       int t, int src, double tolerance) {
+  using Miss = PeriodicSurfaceMatch::Miss;
+  const SourceRange targets = in.ast().expr(n.slaves).range, sources = in.ast().expr(n.masters).range;
+  switch (match.miss) {
+    case Miss::None: return;
+    case Miss::Counts:
+      in.fail(s.range, Diag::PeriodicSurfaceEntityCounts,
+              n.slave_surface.valid() ? "embedded points and curves (with the curves' end points)"
+                                      : "points and curves, boundary and embedded",
+              t, match.counts[0], match.counts[1], src, match.counts[2], match.counts[3]);
+    case Miss::Point:
+      in.fail(sources, Diag::PeriodicSurfacePointUnmatched, match.entity, src, match.image.x, match.image.y,
+              match.image.z, t, match.distance, tolerance);
+    case Miss::Curve: in.fail(targets, Diag::PeriodicSurfaceCurveUnmatched, match.entity, t, src);
+  }
+}
+
+// Surface t's mesh a copy of spec.source's: each paired curve becomes periodic (Gmsh: a
+// curve that maps onto itself, a rotation's axis, keeps its own mesh).
+void record_periodic_surface(KernelState& k, int t, PeriodicSurfaceSpec spec) {
+  for (const PeriodicSurfaceSpec::CurvePair& p : spec.curves)
+    if (p.target != p.source) add_periodic_curve(k, p.target, {p.source, p.orientation, spec.affine}, true);
+  k.constraints.periodic_surfaces[t] = std::move(spec);
+}
+
 // `Periodic Surface target {curves} = source {curves};` (Gmsh 4.8.4's addPeriodicFace): the
 // target's mesh becomes a copy of the source's, by the translation or rotation that takes
 // the paired curves' end points onto each other; each pair of curves becomes periodic (a
@@ -261,12 +300,7 @@ void exec_periodic_surface(Interpreter& in, const Stmt& s, const PeriodicStmt& n
   for (int c : targets) listed.insert(std::abs(c));
   for (int c : target_boundary)
     if (!listed.count(c)) in.fail(in.ast().expr(n.slaves).range, Diag::PeriodicSurfaceCurveUnpaired, c, t);
-  for (int cur = src, steps = 0; steps <= static_cast<int>(k.constraints.periodic_surfaces.size()); ++steps) {
-    const auto up = k.constraints.periodic_surfaces.find(cur);
-    if (up == k.constraints.periodic_surfaces.end()) break;
-    if (up->second.source == t) in.fail(s.range, Diag::PeriodicSurfaceCycle, t, src, t);
-    cur = up->second.source;
-  }
+  check_no_copy_cycle(in, s, t, src);
 
   const double tolerance = m.options().tolerance * m.bounding_box().diagonal();
   const std::map<int, int> points = paired_points(m, targets, sources);
@@ -279,17 +313,45 @@ void exec_periodic_surface(Interpreter& in, const Stmt& s, const PeriodicStmt& n
     const double miss = norm(apply_affine(affine, m.vertex(from)->xyz) - m.vertex(to)->xyz);
     if (!(miss <= tolerance)) in.fail(s.range, Diag::PeriodicSurfacePointMissed, from, to, miss, tolerance);
   }
-  PeriodicSurfaceSpec spec{src, affine, {}};
+  PeriodicSurfaceSpec spec{src, affine, {}, {}};
   for (std::size_t i = 0; i < targets.size(); ++i) {
     const int tc = std::abs(targets[i]), sc = std::abs(sources[i]);
     std::pair<double, double> d{0, 0};
     const std::optional<int> o = periodic_orientation(m, tc, sc, affine, tolerance, &d);
     if (!o) in.fail(s.range, Diag::PeriodicEndsMissed, sc, tc, d.first, d.second, tolerance);
     spec.curves.push_back({tc, sc, *o});
-    // Gmsh: a curve that maps onto itself (a rotation's axis) keeps its own mesh
-    if (tc != sc) add_periodic_curve(k, tc, {sc, *o, affine}, true);
   }
-  k.constraints.periodic_surfaces[t] = std::move(spec);
+  // Gmsh pairs the embedded points and curves by the map found (its setMeshMaster with a
+  // transform, which the curve-list form ends in): the copy carries them over.
+  const PeriodicSurfaceMatch embedded = match_periodic_surface(m, t, src, affine, tolerance, true);
+  report_match_miss(in, s, n, embedded, t, src, tolerance);
+  spec.curves.insert(spec.curves.end(), embedded.curves.begin(), embedded.curves.end());
+  spec.points = embedded.points;
+  record_periodic_surface(k, t, std::move(spec));
+}
+
+// `Periodic Surface{targets} = {sources} Translate{..} | Rotate{..} | Affine{..};` (Gmsh
+// 4.8.4's addPeriodicFace with a transform): each target's mesh becomes a copy of its
+// source's, the points and curves (boundary and embedded) paired by where the map takes
+// the source's. Gmsh refuses the form without a transform; so do we.
+void exec_periodic_surfaces_by_map(Interpreter& in, const Stmt& s, const PeriodicStmt& n) {
+  KernelState& k = in.kernel();
+  const geo::Model& m = k.model;
+  const std::vector<int> targets = eval_tags(in, n.slaves), sources = eval_tags(in, n.masters);
+  if (targets.size() != sources.size()) in.fail(s.range, Diag::PeriodicSurfaceCounts, targets.size(), sources.size());
+  if (n.transform == PeriodicTransform::None) in.fail(s.range, Diag::PeriodicSurfaceNeedsTransform);
+  const std::vector<double> affine = periodic_affine(in, s, n);
+  const double tolerance = m.options().tolerance * m.bounding_box().diagonal();
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    const int t = std::abs(targets[i]), src = std::abs(sources[i]);
+    for (int f : {t, src})
+      if (!m.surface(f)) in.fail(s.range, Diag::PeriodicSurfaceMissing, t, f);
+    if (t == src) in.fail(s.range, Diag::PeriodicSurfaceItself, t);
+    check_no_copy_cycle(in, s, t, src);
+    const PeriodicSurfaceMatch match = match_periodic_surface(m, t, src, affine, tolerance, false);
+    report_match_miss(in, s, n, match, t, src, tolerance);
+    record_periodic_surface(k, t, {src, affine, match.curves, match.points});
+  }
 }
 
 }  // namespace
@@ -303,10 +365,9 @@ void exec_mesh_constraint_stmt(Interpreter& in, StmtId id) {
     case StmtKind::EntitySetting: exec_entity_setting(in, id, s, std::get<EntitySettingStmt>(s.node)); break;
     case StmtKind::Periodic: {
       const auto& n = std::get<PeriodicStmt>(s.node);
-      // The braced surface form (`Periodic Surface{targets} = {sources} Translate{..};`,
-      // which pairs the curves by the transform) is not supported yet: reported as such.
       if (n.slave_surface.valid()) exec_periodic_surface(in, s, n);
       else if (n.ent == EntityKind::Curve) exec_periodic_curve(in, s, n);
+      else if (n.ent == EntityKind::Surface) exec_periodic_surfaces_by_map(in, s, n);
       else exec_geometry_stmt(in, id);
       break;
     }

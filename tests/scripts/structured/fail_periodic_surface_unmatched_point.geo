@@ -1,0 +1,10 @@
+// The translation takes surface 1's points half a unit short of surface 2's: point 1 lands
+// at (1.5, 0, 0), no point of surface 2; refused at the source list, naming point 1.
+Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {1, 1, 0}; Point(4) = {0, 1, 0};
+Point(5) = {2, 0, 0}; Point(6) = {3, 0, 0}; Point(7) = {3, 1, 0}; Point(8) = {2, 1, 0};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
+Line(5) = {5, 6}; Line(6) = {6, 7}; Line(7) = {7, 8}; Line(8) = {8, 5};
+Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
+Curve Loop(2) = {5, 6, 7, 8}; Plane Surface(2) = {2};
+Periodic Surface {2} = {1} Translate {1.5, 0, 0};
+// expect error: 9:24: invalid-operation
