@@ -10,6 +10,8 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <string>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -194,8 +196,7 @@ CompoundSurfacePlan plan_compound_surfaces(const geo::Model& model, const std::v
     const geo::Model before = plan.model;
     if (std::string why = combine(plan, model, tags); !why.empty()) {
       plan.model = before;   // a half-made union undone
-      plan.warnings.push_back(fmt::format("Compound Surface{{{}}}: {}; the surfaces are meshed one by one",
-                                          tag_list(tags), why));
+      plan.declined.push_back({tags, std::move(why)});
       continue;
     }
     taken.insert(tags.begin(), tags.end());
@@ -291,6 +292,12 @@ void name_compound_unions(const CompoundSurfacePlan& plan, std::string& text) {
       at += by.size();
     }
   }
+}
+
+const std::vector<int>* compound_union_of(const CompoundSurfacePlan& plan, int surface) {
+  for (const CompoundSurfacePlan::Group& g : plan.groups)
+    if (g.union_tag == surface) return &g.surfaces;
+  return nullptr;
 }
 
 void name_compound_unions(const CompoundSurfacePlan& plan, MeshError& error) {

@@ -30,8 +30,13 @@ struct CompoundSurfacePlan {
     Vec3 normal{0, 0, 1};         // Euclidean: the plane's unit normal
   };
   std::vector<Group> groups;
-  /// One sentence per group meshed surface by surface instead, saying why.
-  std::vector<std::string> warnings;
+  /// A group meshed surface by surface instead: its surfaces, and why not as one (a
+  /// phrase of check_union's or the geometry's: "the surfaces are not in one plane ...").
+  struct Declined {
+    std::vector<int> surfaces;
+    std::string why;
+  };
+  std::vector<Declined> declined;
   bool empty() const { return groups.empty(); }
 };
 
@@ -47,7 +52,9 @@ void classify_compound_elements(const geo::Model& model, const CompoundSurfacePl
 /// message becomes "the union of Compound Surface{a, b}", and the entity U the first of
 /// them (whose statement the interpreter can show).
 void name_compound_unions(const CompoundSurfacePlan& plan, MeshError& error);
-/// The same in a warning's text.
+/// The same in a text (a failure's message).
 void name_compound_unions(const CompoundSurfacePlan& plan, std::string& text);
+/// The union's originals when `surface` is a union of the plan, else null.
+const std::vector<int>* compound_union_of(const CompoundSurfacePlan& plan, int surface);
 
 }  // namespace sm

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -66,17 +67,9 @@ bool collect_boundary(FaceWork& f, const geo::ModelSurface& s) {
     std::size_t big = 0;
     for (std::size_t i = 1; i < islands.size(); ++i)
       if (islands[i].span > islands[big].span) big = i;
-    constexpr std::size_t kListed = 8;
-    std::string loops;
-    for (std::size_t i = 0; i < std::min(islands.size(), kListed); ++i)
-      loops += fmt::format("{}{}", i ? ", " : "", islands[i].loop);
-    if (islands.size() > kListed) loops += fmt::format(" and {} more", islands.size() - kListed);
-    const bool one = islands.size() == 1;
-    f.res.warnings.push_back(fmt::format(
-        "surface {}: {} island{} smaller than the mesh size {} left out ({} closed curve{} got fewer than 3 mesh "
-        "edges; {}near {}): hole loop{} {}",
-        f.tag, islands.size(), one ? "" : "s", one ? "is" : "are", one ? "its" : "their", one ? "" : "s",
-        one ? "" : "largest ", f.where_text(islands[big].at), one ? "" : "s", loops));
+    MeshNote note{.kind = MeshNoteKind::IslandsLeftOut, .surface = f.tag, .place = f.place_of(islands[big].at)};
+    for (const auto& island : islands) note.loops.push_back(island.loop);
+    f.res.notes.push_back(std::move(note));
   }
   if (f.chains.empty()) return f.fail("no boundary loop");
   for (int p : s.embedded_points) {
@@ -113,10 +106,11 @@ bool choose_plane(FaceWork& f) {
                               kGmshPlaneCoherence),
                   p->where);
   if (off)
-    f.res.warnings.push_back(fmt::format(
-        "surface {}: the boundary lies up to {:.3g} off the surface's plane (more than Geometry.Tolerance; {:.2g} of "
-        "its size) near {}: meshed in that plane, as Gmsh meshes a Plane Surface in its mean plane",
-        f.tag, off->distance, off->distance / f.bbox, f.where_text(off->where)));
+    f.res.notes.push_back(MeshNote{.kind = MeshNoteKind::BoundaryOffPlane,
+                                   .surface = f.tag,
+                                   .place = f.place_of(off->where),
+                                   .distance = off->distance,
+                                   .relative = off->distance / f.bbox});
   return true;
 }
 

@@ -10,9 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include <fmt/format.h>
-
 #include "base/parallel.h"
+#include "exact/quality.h"
 #include "mesh/modify/optimize.h"
 #include "mesh/quality_floor.h"
 #include "mesh/store_undo.h"
@@ -56,21 +55,18 @@ int curve_of(const FloorCurves& fl, VertexId a, VertexId b) {
   return it == fl.edge_curve_of.end() ? 0 : it->second;
 }
 
-// The floor's report: the triangles left at corners too sharp for it (the first few
-// listed), then the rest with the place of the worst.
+// The floor's report: the triangles left at corners too sharp for it (with every such
+// corner), then the rest with the place of the worst.
 void report_floor(FaceWork& f, const QualityFloorResult& r) {
   const double q = f.opt.quality_floor;
-  auto place = [&f](VertexId v) { return f.where_text(space_of(f, v)); };
   if (!r.sharp.empty()) {
-    constexpr std::size_t kListed = 8;
-    std::string list;
-    for (std::size_t i = 0; i < std::min(r.sharp.size(), kListed); ++i)
-      list += fmt::format("{}{:.1f} degrees at {}", i ? "; " : "", r.sharp[i].degrees, place(r.sharp[i].v));
-    if (r.sharp.size() > kListed) list += fmt::format("; and {} more", r.sharp.size() - kListed);
-    f.res.quality_warnings.push_back(fmt::format(
-        "surface {}: {} triangle{} below Mesh.QualityFloor = {:g} where the boundary makes an angle too sharp for it "
-        "(under {:.1f} degrees): {}",
-        f.tag, r.at_sharp, r.at_sharp == 1 ? "" : "s", q, sharp_angle_limit(q) * 180 / geo::kPi, list));
+    MeshNote note{.kind = MeshNoteKind::FloorSharpCorners,
+                  .surface = f.tag,
+                  .count = r.at_sharp,
+                  .floor = q,
+                  .sharp_limit_degrees = sharp_angle_limit(q) * 180 / geo::kPi};
+    for (const SharpCorner& c : r.sharp) note.corners.push_back({c.degrees, f.place_of(space_of(f, c.v))});
+    f.res.notes.push_back(std::move(note));
   }
   const std::uint32_t rest = r.below_after - r.at_sharp;
   if (rest > 0) {
@@ -79,12 +75,15 @@ void report_floor(FaceWork& f, const QualityFloorResult& r) {
         worst_triangle(f.tri, [&f](VertexId v) { return space_of(f, v); }, resolve_thread_count(f.opt.threads));
     const Vec3 c =
         (space_of(f, f.tri.vertex(wt, 0)) + space_of(f, f.tri.vertex(wt, 1)) + space_of(f, f.tri.vertex(wt, 2))) / 3.0;
-    f.res.quality_warnings.push_back(fmt::format(
-        "surface {}: {} triangle{} still below Mesh.QualityFloor = {:g} after {} round{} and {} new points (the work "
-        "is bounded{}); the worst, rho {:.4f}, near {}",
-        f.tag, rest, rest == 1 ? "" : "s", q, r.rounds, r.rounds == 1 ? "" : "s", r.curve_splits + r.interior_points,
-        r.out_of_work ? fmt::format(": its budget of {} operations ran out", r.work_budget) : std::string(), worst,
-        f.where_text(c)));
+    f.res.notes.push_back(MeshNote{.kind = MeshNoteKind::FloorStillBelow,
+                                   .surface = f.tag,
+                                   .place = f.place_of(c),
+                                   .count = rest,
+                                   .floor = q,
+                                   .rounds = r.rounds,
+                                   .new_points = std::uint64_t{r.curve_splits} + r.interior_points,
+                                   .work_budget = r.out_of_work ? r.work_budget : 0,
+                                   .worst_rho = worst});
   }
 }
 
@@ -187,11 +186,10 @@ class FloorUndo {
   // reported with its place.
   bool faulted(const QualityFloorResult& q) {
     if (q.fault.empty()) return false;
-    const std::string at = f_.where_text(space_of(f_, q.fault_at));
+    const MeshPlace at = f_.place_of(space_of(f_, q.fault_at));
     put_back();
-    f_.res.quality_warnings.push_back(
-        fmt::format("surface {}: internal error: {} near {}; the face is left as it was before Mesh.QualityFloor",
-                    f_.tag, q.fault, at));
+    f_.res.notes.push_back(
+        MeshNote{.kind = MeshNoteKind::FloorFault, .surface = f_.tag, .place = at, .fault = q.fault});
     return true;
   }
 
@@ -296,11 +294,13 @@ void raise_face_floor(FaceWork& f) {
     count_only.threads = threads;
     left = raise_quality_floor(f.tri, face, count_only);
     if (undo.faulted(left)) return;
-    f.res.quality_warnings.push_back(fmt::format(
-        "surface {}: Mesh.QualityFloor = {:g} left {} triangles below it where the face had {} (after {} round{} and "
-        "{} new points); the face is left as it was before the floor",
-        f.tag, f.opt.quality_floor, ended, below_start, r.rounds, r.rounds == 1 ? "" : "s",
-        r.curve_splits + r.interior_points));
+    f.res.notes.push_back(MeshNote{.kind = MeshNoteKind::FloorPutBack,
+                                   .surface = f.tag,
+                                   .count = ended,
+                                   .count_before = below_start,
+                                   .floor = f.opt.quality_floor,
+                                   .rounds = r.rounds,
+                                   .new_points = std::uint64_t{r.curve_splits} + r.interior_points});
     r = QualityFloorResult{};
   }
   f.res.stats.floor_curve_splits += r.curve_splits;

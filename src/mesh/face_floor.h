@@ -9,7 +9,7 @@ namespace sm {
 /// map to space, then the quality pass again where it changed something. Curve splits
 /// add nodes to the curves' 1D meshes (f.mesh.curves, so faces meshed later get them);
 /// a face that would end worse is put back and done again never below its starting
-/// worst, else left as it was. Its report goes into f.res.quality_warnings, its counts
+/// worst, else left as it was. Its report goes into f.res.notes, its counts
 /// into f.res.stats. Off when opt.quality_floor <= 0.
 void raise_face_floor(FaceWork& f);
 

@@ -39,6 +39,14 @@ std::string FaceWork::where_text(Vec3 p) const {
   return fmt::format("lon {:.4f}, lat {:.4f}", ll.lon, ll.lat);
 }
 
+MeshPlace FaceWork::place_of(Vec3 p) const {
+  MeshPlace at;
+  at.xyz = p;
+  at.on_sphere = plane.geom != nullptr;
+  if (at.on_sphere) at.lonlat = plane.lonlat(p);
+  return at;
+}
+
 bool FaceWork::recombined() const { return opt.constraints && opt.constraints->recombines(tag); }
 
 }  // namespace sm

@@ -35,7 +35,7 @@ struct FaceChain {
 };
 
 /// One face being meshed, from its boundary loops to its elements in the model mesh.
-/// Failures go to res.error (fail()), warnings to res.warnings and res.quality_warnings.
+/// Failures go to res.error (fail()), warnings to res.notes.
 struct FaceWork {
   /// scratch (local_of): global node -> local vertex, all kNoLocal; left so again on destruction.
   FaceWork(const geo::Model& the_model, ModelMesh& the_mesh, const Mesh2dOptions& options, double diag,
@@ -48,6 +48,8 @@ struct FaceWork {
   bool fail(std::string msg, std::optional<Vec3> where = std::nullopt, std::initializer_list<int> curves = {});
   /// "lon X, lat Y" of a point of the face (on a geometry), else "(x, y, z)".
   std::string where_text(Vec3 p) const;
+  /// A point of the face as a note's place: in space, and in degrees on a geometry.
+  MeshPlace place_of(Vec3 p) const;
   /// Whether the surface's triangles are paired into quadrangles (recombine.h).
   bool recombined() const;
 

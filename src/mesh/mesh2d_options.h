@@ -14,6 +14,7 @@
 #include "field/size_policy.h"
 #include "mesh/mesh_constraints.h"
 #include "mesh/mesh_error.h"
+#include "mesh/mesh_note.h"
 #include "mesh/mesh_stats.h"
 #include "mesh/partition.h"
 
@@ -48,7 +49,7 @@ struct Mesh2dOptions {
   /// do too; a curve a face meshed before holds is left alone), interior points inserted,
   /// then the quality pass again; a face that would end worse is put back and done again
   /// never below its starting worst. Triangles at corners too sharp for it, and any left
-  /// when the bounded work runs out, are reported in Mesh2dResult::quality_warnings.
+  /// when the bounded work runs out, are reported in Mesh2dResult::notes.
   /// <= 0: off.
   double quality_floor = 0;
   /// front2d refuses the points Gmsh 4.8.4 refuses (RefineOptions::gmsh_rejection): too
@@ -101,10 +102,10 @@ struct Mesh2dResult {
   /// A failure names the surface first, then the curves involved; the message starts
   /// "surface N: " and, with a place, ends "near lon X, lat Y" (or "near (x, y, z)").
   MeshError error;
-  std::vector<std::string> warnings;
-  /// One line per surface left below Mesh2dOptions::quality_floor (sharp corners; work
-  /// bounded), each starting "surface N: ".
-  std::vector<std::string> quality_warnings;
+  /// The warnings, in the order the faces were meshed: islands left out, a boundary off
+  /// its plane, and surfaces left below Mesh2dOptions::quality_floor (sharp corners, work
+  /// bounded), each about one surface (mesh_note.h).
+  std::vector<MeshNote> notes;
   Mesh2dStats stats;
   /// Per meshed surface (tag order), the size its mesher aimed at, at 3D points (the
   /// points go radially onto a sphere): the size policy with the background field and

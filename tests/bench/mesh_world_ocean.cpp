@@ -314,7 +314,7 @@ int main(int argc, char** argv) {
                 "%.3f, refine %.3f, smooth %.3f, output %.3f): %.0f triangles/s CPU in 2D, %zu warnings\n",
                 c1, t1, static_cast<unsigned long long>(r1.stats.edges), r1.stats.repair_splits, c2, t2,
                 r2.stats.seconds_boundary, r2.stats.seconds_refine, r2.stats.seconds_smooth, r2.stats.seconds_output,
-                static_cast<double>(st.triangles) / c2, r2.warnings.size());
+                static_cast<double>(st.triangles) / c2, r2.notes.size());
     print_stats("ours", st);
     std::printf("%s", sm::format_stats(st).c_str());
     ours_1d[a] = c1, ours_2d[a] = c2;
@@ -326,7 +326,8 @@ int main(int argc, char** argv) {
         return std::fprintf(stderr, "%s: %s\n", out_msh.c_str(), err.c_str()), 1;
       std::printf("  wrote %s\n", out_msh.c_str());
     }
-    for (std::size_t k = 0; k < r2.warnings.size() && k < 3; ++k) std::printf("  warning: %s\n", r2.warnings[k].c_str());
+    for (std::size_t k = 0; k < r2.notes.size() && k < 3; ++k)
+      std::printf("  warning: surface %d: %s\n", r2.notes[k].surface, sm::mesh_note_kind_name(r2.notes[k].kind));
     if (!thread_counts.empty()) {
       if (part_triangles > 0) {
         o2.partition.part_triangles = static_cast<std::uint64_t>(part_triangles);

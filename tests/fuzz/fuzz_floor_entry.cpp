@@ -112,8 +112,8 @@ void check_mesh(const ModelMesh& mesh, const Mesh2dResult& r2, double floor, dou
   if (lines && std::fabs(domain_area - polygon_area) > 1e-9 * polygon_area)
     floor_violated("the boundary moved off its lines",
                    std::to_string(domain_area) + " for " + std::to_string(polygon_area));
-  for (const std::string& w : r2.quality_warnings)
-    if (w.find("internal error") != std::string::npos) floor_violated("the floor reported an internal error", w);
+  for (const MeshNote& w : r2.notes)
+    if (w.kind == MeshNoteKind::FloorFault) floor_violated("the floor reported an internal error", w.fault);
   std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
   int sign = 0;
   double area = 0, min_rho = 1;
@@ -146,8 +146,11 @@ void check_mesh(const ModelMesh& mesh, const Mesh2dResult& r2, double floor, dou
     for (const auto& [tag, sf] : mesh.surfaces) n += sf.triangles.size();
     std::fprintf(stderr, "fuzz_floor: floor %.2f: %zu triangles, rho min %.3f, %zu curve splits, %zu points, %zu reports\n",
                  floor, n, min_rho, static_cast<std::size_t>(r2.stats.floor_curve_splits),
-                 static_cast<std::size_t>(r2.stats.floor_points), r2.quality_warnings.size());
-    for (const std::string& w : r2.quality_warnings) std::fprintf(stderr, "  %s\n", w.c_str());
+                 static_cast<std::size_t>(r2.stats.floor_points), r2.notes.size());
+    for (const MeshNote& w : r2.notes)
+      std::fprintf(stderr, "  surface %d: %s: %llu triangles, near (%g, %g, %g)\n", w.surface,
+                   mesh_note_kind_name(w.kind), static_cast<unsigned long long>(w.count), w.place.xyz.x,
+                   w.place.xyz.y, w.place.xyz.z);
   }
   if (std::fabs(area - domain_area) > 1e-9 * domain_area)
     floor_violated("the triangles do not cover the domain once",
@@ -155,9 +158,9 @@ void check_mesh(const ModelMesh& mesh, const Mesh2dResult& r2, double floor, dou
   // Below the floor at the end: the floor says so, with a place.
   if (floor > 0 && min_rho < floor - 1e-9) {
     bool reported = false;
-    for (const std::string& w : r2.quality_warnings)
-      reported = reported || (w.find("Mesh.QualityFloor") != std::string::npos &&
-                              (w.find(" at (") != std::string::npos || w.find("near (") != std::string::npos));
+    for (const MeshNote& w : r2.notes)
+      reported = reported || (w.kind == MeshNoteKind::FloorSharpCorners && !w.corners.empty()) ||
+                 w.kind == MeshNoteKind::FloorStillBelow;
     if (!reported) floor_violated("a triangle below the floor and no located report");
   }
 }

@@ -26,6 +26,7 @@
 #include "interp/kernel/field_context.h"
 #include "interp/kernel/field_eval.h"
 #include "interp/kernel/geometry_shapes.h"
+#include "interp/kernel/mesh_note_words.h"
 #include "interp/kernel/node_data_export.h"
 #include "interp/kernel/ocean_grid_export.h"
 #include "interp/kernel/output_options.h"
@@ -454,10 +455,10 @@ MeshFailure finish_2d_elements(Interpreter& in, const CompoundSurfacePlan& compo
         r2.target_sizes[i].surface = 0;
       }
   for (const StageTime& t : stage_times(r2.stats)) add_stage_time(k.mesh2d_parts, t);
-  for (std::string& w : r2.warnings) name_compound_unions(compounds, w);
-  for (std::string& w : r2.quality_warnings) name_compound_unions(compounds, w);
-  for (const std::string& w : r2.warnings) in.diags().report_message(where, Diag::MeshWarning, w);
-  for (const std::string& w : r2.quality_warnings) in.diags().report_message(where, Diag::MeshQualityFloor, w);
+  // The floor's notes after the others, each in face order.
+  for (bool floor : {false, true})
+    for (const MeshNote& note : r2.notes)
+      if (note.about_floor() == floor) report_mesh_note(in.diags(), where, note, compounds);
   return {};
 }
 
@@ -507,7 +508,7 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   // surfaces (mesh/compound_surface.h); the elements go back to them after 2D.
   const CompoundSurfacePlan compounds = plan_compound_surfaces(k.model, k.constraints.compound_surfaces);
   const geo::Model& meshed = compounds.empty() ? k.model : compounds.model;
-  for (const std::string& w : compounds.warnings) in.diags().report_message(where, Diag::MeshWarning, w);
+  for (const CompoundSurfacePlan::Declined& d : compounds.declined) report_compound_declined(in.diags(), where, d);
   if (dim >= 2)
     opt1.coarse_check = [&](const ModelMesh& coarse) {
       budget = check_face_budgets(meshed, coarse, opt2).error;

@@ -9,5 +9,5 @@ Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
 Curve Loop(2) = {5, 6, 7, -2}; Plane Surface(2) = {2};
 Compound Surface{1, 2};
 Compound Surface{7};   // expect warning: 11:1: gmsh-compat
-Mesh 2;   // expect warning: 12:1: mesh-warning
+Mesh 2;   // expect warning: 12:1: mesh-warning: Compound Surface{1, 2}: the surfaces are not in one plane (Gmsh reparametrises such a compound; stereomesh combines surfaces of one plane only); the surfaces are meshed one by one
 Printf("%g", Mesh.NbTriangles > 0);   // expect: 1

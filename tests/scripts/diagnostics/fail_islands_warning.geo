@@ -16,5 +16,5 @@ For k In {0:2}
 EndFor
 Plane Surface(1) = {1, 2, 3, 4};
 Printf("before");   // expect: before
-Mesh 2;             // expect warning: 19:1: mesh-warning
+Mesh 2;             // expect warning: 19:1: mesh-warning: surface 1: 3 islands smaller than the mesh size are left out (their closed curves got fewer than 3 mesh edges; largest near (0.7, 0.3, 0)): hole loops 2, 3, 4
 Printf("%g", Mesh.NbTriangles > 0);   // expect: 1

@@ -11,5 +11,5 @@ Curve Loop(1) = {1, 2, 3, 4};
 Plane Surface(1) = {1};
 Transfinite Curve{1, 3} = 11;
 Mesh.QualityFloor = 0.3;   // gmsh -0: an unknown option, reported, the script goes on
-Mesh 2;   // expect warning: 14:1: mesh-quality-floor
+Mesh 2;   // expect warning: 14:1: mesh-quality-floor: surface 1: 20 triangles still below Mesh.QualityFloor = 0.3 after 1 round and 0 new points (the work is bounded); the worst, rho 0.1891, near (0.0333333, 0.00333333, 0)
 Printf("%g boundary nodes", 2 * Mesh.NbNodes - Mesh.NbTriangles - 2);   // expect: 22 boundary nodes

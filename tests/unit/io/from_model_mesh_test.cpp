@@ -162,8 +162,9 @@ Islands square_with_islands() {
   s.mesh = std::move(r1.mesh);
   const Mesh2dResult r2 = mesh_surfaces(m, s.mesh, {});
   REQUIRE(r2.ok());
-  REQUIRE(r2.warnings.size() == 1);
-  CHECK(r2.warnings.front().find("2 islands smaller than the mesh size are left out") != std::string::npos);
+  REQUIRE(r2.notes.size() == 1);
+  CHECK(r2.notes.front().kind == MeshNoteKind::IslandsLeftOut);
+  CHECK(r2.notes.front().loops.size() == 2);
   return s;
 }
 

@@ -69,8 +69,8 @@ TEST_CASE("diagnostic groups: one caret, counts per kind and sort, cut with a wa
 TEST_CASE("diagnostic groups: a lone diagnostic, and those without a location, are rendered as before") {
   sm::lang::SourceManager sources;
   sm::lang::Diagnostics diags(sources);
-  diags.report_message(sm::lang::SourceRange{}, sm::lang::Diag::MeshWarning, "one");
-  diags.report_message(sm::lang::SourceRange{}, sm::lang::Diag::MeshWarning, "two");
+  diags.report_message(sm::lang::SourceRange{}, sm::lang::Diag::MeshBoundaryOffPlane, "one");
+  diags.report_message(sm::lang::SourceRange{}, sm::lang::Diag::MeshBoundaryOffPlane, "two");
   sm::lang::GroupRenderOptions opt;
   opt.unlocated_prefix = "prog: ";
   CHECK(sm::lang::render_grouped(diags, diags.all(), opt) ==

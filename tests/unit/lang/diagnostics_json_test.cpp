@@ -14,7 +14,7 @@ TEST_CASE("diagnostics json: every field, nulls without a location") {
                       "Coastline[1]: passage")
       .item({"passage closed", "width 42 m", true, 12.5, -0.25})
       .note(sm::lang::SourceRange{f, 0, 1}, "set here");
-  diags.report_message(sm::lang::SourceRange{}, sm::lang::Diag::MeshWarning, "tab\there");
+  diags.report_message(sm::lang::SourceRange{}, sm::lang::Diag::MeshBoundaryOffPlane, "tab\there");
   CHECK(sm::lang::diagnostic_json_line(sources, diags.all()[0]) ==
         "{\"file\": \"dir/w \\\"1\\\".geo\", \"line\": 2, \"col\": 7, \"severity\": \"warning\", "
         "\"kind\": \"coastline-passage\", \"message\": \"Coastline[1]: passage\", \"lon\": 12.5, \"lat\": -0.25, "

@@ -126,7 +126,7 @@ TEST_CASE("compound: two squares meshed as one, the triangles back on each squar
   geo::Model m;
   add_two_squares(m, 0.2);
   const CompoundSurfacePlan plan = plan_compound_surfaces(m, {{1, 2}});
-  REQUIRE(plan.warnings.empty());
+  REQUIRE(plan.declined.empty());
   REQUIRE(plan.groups.size() == 1);
   const int u = plan.groups[0].union_tag;
   CHECK(plan.model.surface(1) == nullptr);
@@ -165,8 +165,9 @@ TEST_CASE("compound: surfaces not in one plane are meshed one by one") {
   add_two_squares(m, 0.5, 0.5);   // the right square is tilted
   const CompoundSurfacePlan plan = plan_compound_surfaces(m, {{1, 2}});
   CHECK(plan.groups.empty());
-  REQUIRE(plan.warnings.size() == 1);
-  CHECK(plan.warnings[0].find("not in one plane") != std::string::npos);
+  REQUIRE(plan.declined.size() == 1);
+  CHECK(plan.declined[0].surfaces == std::vector<int>{1, 2});
+  CHECK(plan.declined[0].why.find("not in one plane") != std::string::npos);
   CHECK(plan.model.surface(1) != nullptr);
   CHECK(plan.model.surface(2) != nullptr);
   // A single surface, or a missing one, is no compound at all.
@@ -174,7 +175,7 @@ TEST_CASE("compound: surfaces not in one plane are meshed one by one") {
   add_two_squares(flat, 0.5);
   const CompoundSurfacePlan one = plan_compound_surfaces(flat, {{1, 99}});
   CHECK(one.groups.empty());
-  CHECK(one.warnings.empty());
+  CHECK(one.declined.empty());
 }
 
 TEST_CASE("compound: the mesher's words about a union name the script's surfaces") {

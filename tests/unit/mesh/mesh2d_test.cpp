@@ -485,7 +485,7 @@ TEST_CASE("mesh2d: embedded point and curve are kept as nodes and edges") {
   for (std::size_t k = 0; k + 1 < cm.nodes.size(); ++k) CHECK(edges.count(std::minmax(cm.nodes[k], cm.nodes[k + 1])) == 1);
   check_ccw_xy(a.mesh, 1);
   // Smoothed with the embedded point pinned (no warning), to a good quality.
-  CHECK(a.r2.warnings.empty());
+  CHECK(a.r2.notes.empty());
   const MeshStats st = mesh_stats(a.mesh);
   MESSAGE(format_stats(st));
   CHECK(st.min_rho > 0.3);
@@ -1027,15 +1027,14 @@ TEST_CASE("mesh2d: islands below the mesh size give one warning per surface, nam
   }
   REQUIRE(m.add_plane_surface(1, loops).ok());
   const Meshed a = mesh_model(m, {}, {});
-  REQUIRE(a.r2.warnings.size() == 1);
-  const std::string& w = a.r2.warnings.front();
-  INFO(w);
-  CHECK(w.rfind("surface 1: 3 islands smaller than the mesh size are left out (their closed curves got fewer than "
-                "3 mesh edges; largest near (", 0) == 0);
-  CHECK(w.find(fmt::format("): hole loops {}, {}, {}", loops[1], loops[2], loops[3])) != std::string::npos);
+  REQUIRE(a.r2.notes.size() == 1);
+  const MeshNote& w = a.r2.notes.front();
+  CHECK(w.kind == MeshNoteKind::IslandsLeftOut);
+  CHECK(w.surface == 1);
+  CHECK(w.loops == std::vector<int>{loops[1], loops[2], loops[3]});
+  CHECK(!w.place.on_sphere);
   // The largest is the island at (0.7, 0.3): its two nodes' midpoint lies within its radius.
-  const auto open = w.find("near (") + 6;
-  const double x = std::stod(w.substr(open)), y = std::stod(w.substr(w.find(", ", open) + 2));
+  const double x = w.place.xyz.x, y = w.place.xyz.y;
   CHECK(std::abs(x - 0.7) < 0.013);
   CHECK(std::abs(y - 0.3) < 0.013);
   // The face is meshed without them: its boundary is the square's 40 edges only.

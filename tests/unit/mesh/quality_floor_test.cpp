@@ -108,7 +108,7 @@ TEST_CASE("quality floor: a face with a narrow inlet reaches rho >= 0.3") {
   MESSAGE("with the floor: rho min " << on.min_rho << ", " << on.r2.stats.floor_curve_splits << " curve splits, "
                                      << on.r2.stats.floor_points << " points");
   CHECK(on.min_rho >= 0.3);
-  CHECK(on.r2.quality_warnings.empty());
+  CHECK(on.r2.notes.empty());
   CHECK(on.r2.stats.floor_curve_splits + on.r2.stats.floor_points > 0);
   // The inlet's sides gained nodes on their own lines: the geometry did not change.
   for (const auto& [tag, cm] : on.mesh.curves)
@@ -126,12 +126,18 @@ TEST_CASE("quality floor: a 5-degree corner is reported once, with its angle, an
   const double a = 5 * 3.14159265358979 / 180;
   qf_add_polygon(m, {{0, 0}, {1, 0}, {std::cos(a), std::sin(a)}}, 0.1);
   const QfMeshed on = qf_mesh(m, 0.3);
-  REQUIRE(on.r2.quality_warnings.size() == 1);
-  const std::string& w = on.r2.quality_warnings[0];
-  MESSAGE(w);
-  CHECK(w.rfind("surface ", 0) == 0);
-  CHECK(w.find("too sharp") != std::string::npos);
-  CHECK(w.find("5.0 degrees at (0, 0, 0)") != std::string::npos);
+  REQUIRE(on.r2.notes.size() == 1);
+  const MeshNote& w = on.r2.notes[0];
+  CHECK(w.kind == MeshNoteKind::FloorSharpCorners);
+  CHECK(m.surface(w.surface) != nullptr);
+  CHECK(w.floor == 0.3);
+  CHECK(w.count >= 1);
+  CHECK(w.sharp_limit_degrees > 9);
+  CHECK(w.sharp_limit_degrees < 10);
+  REQUIRE(w.corners.size() == 1);
+  CHECK(w.corners[0].degrees == doctest::Approx(5));
+  CHECK(w.corners[0].place.xyz == Vec3{0, 0, 0});
+  CHECK(!w.corners[0].place.on_sphere);
   // Bounded: nothing is inserted for the corner's own triangle.
   CHECK(on.r2.stats.floor_curve_splits + on.r2.stats.floor_points < 300);
 }
@@ -198,15 +204,17 @@ TEST_CASE("quality floor: a strip 0.01 wide under a face sharing its side never 
   REQUIRE(m.add_plane_surface(2, {2}).ok());
   const QfMeshed off = qf_mesh(m, 0);
   const QfMeshed on = qf_mesh(m, 0.3);
-  MESSAGE("strip: rho min " << off.min_rho << " -> " << on.min_rho << ", " << on.r2.quality_warnings.size()
-                            << " warnings");
+  MESSAGE("strip: rho min " << off.min_rho << " -> " << on.min_rho << ", " << on.r2.notes.size() << " warnings");
   REQUIRE(off.min_rho < 0.3);
   CHECK(on.min_rho >= off.min_rho);
   CHECK(on.mesh.curves.at(3).nodes == off.mesh.curves.at(3).nodes);   // the shared curve kept
   CHECK(qf_conforming(on.mesh));
-  REQUIRE(on.r2.quality_warnings.size() == 1);
-  CHECK(on.r2.quality_warnings[0].rfind("surface 2: ", 0) == 0);
-  CHECK(on.r2.quality_warnings[0].find("still below Mesh.QualityFloor = 0.3") != std::string::npos);
+  REQUIRE(on.r2.notes.size() == 1);
+  CHECK(on.r2.notes[0].kind == MeshNoteKind::FloorStillBelow);
+  CHECK(on.r2.notes[0].surface == 2);
+  CHECK(on.r2.notes[0].floor == 0.3);
+  CHECK(on.r2.notes[0].count > 0);
+  CHECK(on.r2.notes[0].worst_rho < 0.3);
 }
 
 TEST_CASE("quality floor: a 13-degree corner with legs 1 : 2.6 gets the isoceles triangle of its angle") {
@@ -223,7 +231,7 @@ TEST_CASE("quality floor: a 13-degree corner with legs 1 : 2.6 gets the isoceles
                                        << on.r2.stats.floor_curve_splits << " curve splits");
   REQUIRE(off.min_rho < 0.3);
   CHECK(on.min_rho >= 0.3);
-  CHECK(on.r2.quality_warnings.empty());
+  CHECK(on.r2.notes.empty());
   CHECK(on.r2.stats.floor_curve_splits < 40);
   CHECK(qf_conforming(on.mesh));
 }
@@ -251,10 +259,10 @@ TEST_CASE("quality floor: a short open side between two coasts that bend into th
   const QfMeshed on = qf_mesh(m, 0.3);
   MESSAGE("short open side: rho min " << off.min_rho << " -> " << on.min_rho << ", "
                                       << on.r2.stats.floor_curve_splits << " curve splits, "
-                                      << on.r2.quality_warnings.size() << " warnings");
+                                      << on.r2.notes.size() << " warnings");
   REQUIRE(off.min_rho < 0.3);
   CHECK(on.min_rho >= 0.3);
-  CHECK(on.r2.quality_warnings.empty());
+  CHECK(on.r2.notes.empty());
   CHECK(qf_conforming(on.mesh));
   // The new coast nodes lie on the B-splines themselves.
   for (const int c : {2, 4}) {
@@ -280,11 +288,11 @@ TEST_CASE("quality floor: every floor in [0, 0.9] ends with a conforming mesh or
     CHECK(qf_conforming(on.mesh));
     if (on.min_rho < q - 1e-9) {
       bool reported = false;
-      for (const std::string& w : on.r2.quality_warnings)
-        reported = reported || (w.find("Mesh.QualityFloor") != std::string::npos && w.find(" (") != std::string::npos);
+      for (const MeshNote& w : on.r2.notes)
+        reported = reported || (w.about_floor() && w.kind != MeshNoteKind::FloorFault);
       CHECK(reported);
     }
-    for (const std::string& w : on.r2.quality_warnings) CHECK(w.find("internal error") == std::string::npos);
+    for (const MeshNote& w : on.r2.notes) CHECK(w.kind != MeshNoteKind::FloorFault);
   }
 }
 
