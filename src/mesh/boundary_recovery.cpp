@@ -41,12 +41,15 @@ BoundaryResult recover_boundary(BoundaryProblem& problem, const SplitFn& split, 
     if (cv.pts.size() < 2 || cv.pts.size() != cv.t.size()) {
       res.error = make_error(BoundaryErrorKind::Invalid, cv.id, cv.id, {}, 0, 0,
                              fmt::format("curve {} needs at least two points with one parameter each", cv.id));
+      res.error.fault = BoundaryFault::CurveTooFewPoints;
       return res;
     }
     for (std::uint32_t p : cv.pts)
       if (p >= pts.size()) {
         res.error = make_error(BoundaryErrorKind::Invalid, cv.id, cv.id, {}, p, p,
                                fmt::format("curve {} uses point {} of {}", cv.id, p, pts.size()));
+        res.error.fault = BoundaryFault::PointOutOfRange;
+        res.error.count = pts.size();
         return res;
       }
   }
@@ -56,6 +59,8 @@ BoundaryResult recover_boundary(BoundaryProblem& problem, const SplitFn& split, 
     if (res.rounds++ >= opt.max_rounds) {
       res.error = make_error(BoundaryErrorKind::NoProgress, 0, 0, {}, 0, 0,
                              fmt::format("curve intersections still present after {} repair rounds", opt.max_rounds));
+      res.error.fault = BoundaryFault::RoundsExhausted;
+      res.error.count = opt.max_rounds;
       return res;
     }
     // (1) Delaunay of every point.
@@ -79,6 +84,8 @@ BoundaryResult recover_boundary(BoundaryProblem& problem, const SplitFn& split, 
     }
     if (!dr.ok()) {
       res.error = make_error(BoundaryErrorKind::Invalid, 0, 0, {}, 0, 0, "cannot triangulate the curve points: " + dr.error);
+      res.error.fault = BoundaryFault::TriangulationFailed;
+      res.error.reason = dr.error;
       return res;
     }
     // (2) Recover every curve edge.
@@ -95,6 +102,8 @@ BoundaryResult recover_boundary(BoundaryProblem& problem, const SplitFn& split, 
     const RecoverResult rr = recover_edges(m, g, res.edges);
     if (!rr.ok()) {
       res.error = make_error(BoundaryErrorKind::Invalid, 0, 0, {}, 0, 0, "edge recovery failed: " + rr.error);
+      res.error.fault = BoundaryFault::EdgeRecoveryFailed;
+      res.error.reason = rr.error;
       return res;
     }
     if (rr.clean()) return res;
@@ -136,6 +145,8 @@ BoundaryResult recover_boundary(BoundaryProblem& problem, const SplitFn& split, 
       if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
         res.error = make_error(BoundaryErrorKind::Invalid, cv.id, cv.id, pts[cv.pts[k]], cv.pts[k], cv.pts[k + 1],
                                fmt::format("curve {}: no point at parameter {}", cv.id, tm));
+        res.error.fault = BoundaryFault::NoPointAtParameter;
+        res.error.parameter = tm;
         return res;
       }
       pts.push_back(p);

@@ -39,13 +39,33 @@ struct BoundaryOptions {
 
 enum class BoundaryErrorKind { None, Intersection, DuplicatePoint, NoProgress, Invalid };
 
+/// What went wrong beside a crossing (the values it fills in BoundaryError): NoProgress is
+/// RoundsExhausted (count: the rounds); Invalid is one of the others: a curve with fewer
+/// than two points (curve_a), a point index past the points (curve_a, point_a, count), a
+/// split with no point (curve_a, parameter), or the triangulation or the edge recovery
+/// failing (reason: their words).
+enum class BoundaryFault {
+  None,
+  RoundsExhausted,
+  CurveTooFewPoints,
+  PointOutOfRange,
+  NoPointAtParameter,
+  TriangulationFailed,
+  EdgeRecoveryFailed
+};
+
 /// A failure located for the interpreter: the two curve ids (equal for a
-/// self-intersecting curve), the place in the plane and the point indices.
+/// self-intersecting curve), the place in the plane and the point indices; `message`
+/// is the recovery's own sentence (its tests read it; mesh1d passes the typed values on).
 struct BoundaryError {
   BoundaryErrorKind kind = BoundaryErrorKind::None;
+  BoundaryFault fault = BoundaryFault::None;
   std::uint32_t curve_a = 0, curve_b = 0;
   Vec2 where;
   std::uint32_t point_a = 0, point_b = 0;
+  std::size_t count = 0;    ///< RoundsExhausted: the rounds; PointOutOfRange: the points
+  double parameter = 0;     ///< NoPointAtParameter: the curve parameter of the split
+  std::string reason;       ///< TriangulationFailed, EdgeRecoveryFailed: the sub-step's words
   std::string message;
 };
 

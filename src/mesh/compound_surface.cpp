@@ -304,7 +304,6 @@ void name_compound_unions(const CompoundSurfacePlan& plan, MeshError& error) {
   for (const CompoundSurfacePlan::Group& g : plan.groups)
     for (MeshEntity& e : error.entities)
       if (e.dim == 2 && e.tag == g.union_tag) e.tag = g.surfaces[0];
-  name_compound_unions(plan, error.message);
 }
 
 }  // namespace sm

@@ -48,11 +48,11 @@ CompoundSurfacePlan plan_compound_surfaces(const geo::Model& model, const std::v
 /// the union's own entry removed, so that `mesh` matches the script's model.
 void classify_compound_elements(const geo::Model& model, const CompoundSurfacePlan& plan, ModelMesh& mesh);
 
-/// An error of the mesher on a union speaks of the script's surfaces: "surface U" in its
-/// message becomes "the union of Compound Surface{a, b}", and the entity U the first of
-/// them (whose statement the interpreter can show).
+/// An error of the mesher on a union names the first of the script's surfaces as its entity
+/// U (whose statement the interpreter can show); MeshError::surface stays U, which the
+/// worded error names through the text overload.
 void name_compound_unions(const CompoundSurfacePlan& plan, MeshError& error);
-/// The same in a text (a failure's message).
+/// "surface U" in a warning's or worded error's text becomes "the union of Compound Surface{a, b}".
 void name_compound_unions(const CompoundSurfacePlan& plan, std::string& text);
 /// The union's originals when `surface` is a union of the plan, else null.
 const std::vector<int>* compound_union_of(const CompoundSurfacePlan& plan, int surface);

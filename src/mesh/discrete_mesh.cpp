@@ -1,21 +1,23 @@
 // Discrete surfaces into the mesh (discrete_mesh.h).
 #include "mesh/discrete_mesh.h"
 
-#include <fmt/format.h>
-
 namespace sm {
 
-std::string add_discrete_surfaces(const DiscreteEntities& d, ModelMesh& mesh) {
+MeshError add_discrete_surfaces(const DiscreteEntities& d, ModelMesh& mesh) {
   std::map<std::uint64_t, std::uint32_t> node_of;   // the file's tag -> the mesh's node
   for (const auto& [v, tag] : d.vertex_node)
     if (const auto it = mesh.vertex_node.find(v); it != mesh.vertex_node.end()) node_of.emplace(tag, it->second);
   for (const auto& [c, tags] : d.curve_nodes) {
     const auto it = mesh.curves.find(c);
     if (it == mesh.curves.end()) continue;
-    if (it->second.nodes.size() != tags.size())
-      return fmt::format("discrete curve {} has {} mesh nodes where its file gave {}: its mesh was changed (the "
-                         "repair of crossing 1D meshes split it)",
-                         c, it->second.nodes.size(), tags.size());
+    if (it->second.nodes.size() != tags.size()) {
+      MeshError e;
+      e.kind = MeshErrorKind::Failed;
+      e.problem = MeshProblem::DiscreteCurveChanged;
+      e.add_entity(1, c);
+      e.numbers = {c, static_cast<long long>(it->second.nodes.size()), static_cast<long long>(tags.size())};
+      return e;
+    }
     for (std::size_t i = 0; i < tags.size(); ++i) node_of.emplace(tags[i], it->second.nodes[i]);
   }
   for (const auto& [s, surface] : d.surfaces) {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "base/vec.h"
+#include "mesh/mesh_error.h"
 #include "mesh/model_mesh.h"
 
 namespace sm {
@@ -32,8 +33,9 @@ struct DiscreteEntities {
 
 /// Adds the discrete surfaces to `mesh`, whose points and curves are meshed: an element's
 /// node is the node of the point or discrete curve that has its tag, else a node of the
-/// surface's own (one per tag, shared between the surfaces). Returns what is wrong (a
-/// discrete curve whose mesh no longer has its nodes, split by the 1D repair), or empty.
-std::string add_discrete_surfaces(const DiscreteEntities& d, ModelMesh& mesh);
+/// surface's own (one per tag, shared between the surfaces). Returns what is wrong
+/// (DiscreteCurveChanged: a discrete curve whose mesh no longer has its nodes, split by the
+/// 1D repair), or ok().
+MeshError add_discrete_surfaces(const DiscreteEntities& d, ModelMesh& mesh);
 
 }  // namespace sm

@@ -55,9 +55,8 @@ bool mesh_swept_face(FaceWork& f, const geo::Extrusion& ex) {
   const std::vector<std::uint32_t> src = f.mesh.curve_nodes(ex.source);
   const std::vector<std::uint32_t> top = f.mesh.curve_nodes(ex.source > 0 ? ex.top : -ex.top);
   if (src.size() < 2 || top.size() != src.size())
-    return f.fail(fmt::format("its top curve {} has {} nodes where its source curve {} has {}: the layers need a "
-                              "copy of the source's mesh",
-                              ex.top, top.size(), std::abs(ex.source), src.size()),
+    return f.fail(MeshProblem::ExtrudeTopNodes,
+                  {ex.top, static_cast<long long>(top.size()), std::abs(ex.source), static_cast<long long>(src.size())},
                   std::nullopt, {ex.top, std::abs(ex.source)});
   const std::size_t M = src.size() - 1;
   auto side = [&](int curve, std::uint32_t base) -> std::vector<std::uint32_t> {
@@ -67,9 +66,7 @@ bool mesh_swept_face(FaceWork& f, const geo::Extrusion& ex) {
   const std::vector<std::uint32_t> left = side(ex.begin_curve, src.front());
   const std::vector<std::uint32_t> right = side(ex.end_curve, src.back());
   if (left.size() != K + 1 || right.size() != K + 1)
-    return f.fail(fmt::format("a curve swept from an end of curve {} does not have the {} elements of the layers",
-                              std::abs(ex.source), K),
-                  std::nullopt, {ex.begin_curve, ex.end_curve});
+    return f.fail(MeshProblem::ExtrudeSweptElements, {std::abs(ex.source), static_cast<long long>(K)}, std::nullopt, {ex.begin_curve, ex.end_curve});
   SurfaceMesh out;
   out.tag = f.tag;
   // grid[k * (M + 1) + i]: source node i at layer height k.
@@ -114,7 +111,7 @@ bool mesh_swept_face(FaceWork& f, const geo::Extrusion& ex) {
 bool mesh_top_face(FaceWork& f, const geo::ModelSurface& s, const geo::Extrusion& ex) {
   const auto sit = f.mesh.surfaces.find(std::abs(ex.source));
   if (sit == f.mesh.surfaces.end())
-    return f.fail(fmt::format("its source surface {} has no mesh to copy", std::abs(ex.source)));
+    return f.fail(MeshProblem::SourceNotMeshed, {std::abs(ex.source)});
   // Source node -> top node, along the copied boundary curves.
   std::map<std::uint32_t, std::uint32_t> to_top;
   for (int l : s.loops)
@@ -124,8 +121,7 @@ bool mesh_top_face(FaceWork& f, const geo::ModelSurface& s, const geo::Extrusion
       if (!ce || ce->body || tm == f.mesh.curves.end()) continue;
       const auto sm = f.mesh.curves.find(std::abs(ce->source));
       if (sm == f.mesh.curves.end() || sm->second.nodes.size() != tm->second.nodes.size())
-        return f.fail(fmt::format("its curve {} is not a copy of the mesh of curve {}", std::abs(c), std::abs(ce->source)),
-                      std::nullopt, {std::abs(c)});
+        return f.fail(MeshProblem::ExtrudeCurveNotCopy, {std::abs(c), std::abs(ce->source)}, std::nullopt, {std::abs(c)});
       for (std::size_t j = 0; j < sm->second.nodes.size(); ++j) to_top[sm->second.nodes[j]] = tm->second.nodes[j];
     }
   const SurfaceMesh& from = sit->second;
@@ -146,13 +142,13 @@ bool mesh_top_face(FaceWork& f, const geo::ModelSurface& s, const geo::Extrusion
   for (const auto& t : from.triangles) {
     std::array<std::uint32_t, 3> o{};
     for (std::size_t c = 0; c < 3; ++c)
-      if (!map(t[c], o[c])) return f.fail(fmt::format("a node of surface {} has no copy on its top", std::abs(ex.source)));
+      if (!map(t[c], o[c])) return f.fail(MeshProblem::ExtrudeNodeNoCopy, {std::abs(ex.source)});
     out.triangles.push_back(o);
   }
   for (const auto& q : from.quads) {
     std::array<std::uint32_t, 4> o{};
     for (std::size_t c = 0; c < 4; ++c)
-      if (!map(q[c], o[c])) return f.fail(fmt::format("a node of surface {} has no copy on its top", std::abs(ex.source)));
+      if (!map(q[c], o[c])) return f.fail(MeshProblem::ExtrudeNodeNoCopy, {std::abs(ex.source)});
     out.quads.push_back(o);
   }
   store_surface(f, std::move(out));

@@ -25,7 +25,7 @@ bool collect_boundary(FaceWork& f, const geo::ModelSurface& s) {
   std::vector<Island> islands;
   for (std::size_t li = 0; li < s.loops.size(); ++li) {
     const geo::ModelCurveLoop* loop = f.model.curve_loop(std::abs(s.loops[li]));
-    if (!loop) return f.fail(fmt::format("curve loop {} does not exist", std::abs(s.loops[li])));
+    if (!loop) return f.fail(MeshProblem::LoopMissing, {std::abs(s.loops[li])});
     std::vector<int> curves = loop->curves;
     if (s.loops[li] < 0) {
       std::reverse(curves.begin(), curves.end());
@@ -36,12 +36,12 @@ bool collect_boundary(FaceWork& f, const geo::ModelSurface& s) {
     FaceChain ch;
     for (int sc : curves) {
       const auto it = f.mesh.curves.find(std::abs(sc));
-      if (it == f.mesh.curves.end()) return f.fail(fmt::format("curve {} has no 1D mesh", std::abs(sc)));
+      if (it == f.mesh.curves.end()) return f.fail(MeshProblem::CurveNotMeshed, {std::abs(sc)});
       std::vector<std::uint32_t> nodes = it->second.nodes;
       if (nodes.size() < 2) continue;  // collapsed (mesh/mesh1d.cpp): its ends are one node
       if (sc < 0) std::reverse(nodes.begin(), nodes.end());
       if (!ch.nodes.empty() && ch.nodes.back() != nodes.front())
-        return f.fail(fmt::format("curve loop {} is not connected at curve {}", loop->tag, sc));
+        return f.fail(MeshProblem::LoopNotConnected, {loop->tag, sc});
       for (std::size_t k = ch.nodes.empty() ? 0 : 1; k < nodes.size(); ++k) ch.nodes.push_back(nodes[k]);
       ch.edge_curve.insert(ch.edge_curve.end(), nodes.size() - 1, std::abs(sc));
       if (ch.nodes.size() > 1 && ch.nodes.back() == ch.nodes.front()) {
@@ -52,15 +52,14 @@ bool collect_boundary(FaceWork& f, const geo::ModelSurface& s) {
           const Vec3 a = f.mesh.nodes[ch.nodes.front()].xyz, b = f.mesh.nodes[ch.nodes.back()].xyz;
           islands.push_back({loop->tag, norm(b - a), (a + b) * 0.5});
         } else if (ch.nodes.size() < 3) {
-          return f.fail(fmt::format("curve loop {} has fewer than 3 boundary nodes", loop->tag),
-                        f.mesh.nodes[ch.nodes.front()].xyz);
+          return f.fail(MeshProblem::LoopTooFewNodes, {loop->tag}, f.mesh.nodes[ch.nodes.front()].xyz);
         } else {
           f.chains.push_back(std::move(ch));
         }
         ch = FaceChain{};
       }
     }
-    if (!ch.nodes.empty()) return f.fail(fmt::format("curve loop {} does not close", loop->tag));
+    if (!ch.nodes.empty()) return f.fail(MeshProblem::LoopNotClosed, {loop->tag});
   }
   if (!islands.empty()) {
     // The first island of the largest span: deterministic for equal spans.
@@ -71,15 +70,15 @@ bool collect_boundary(FaceWork& f, const geo::ModelSurface& s) {
     for (const auto& island : islands) note.loops.push_back(island.loop);
     f.res.notes.push_back(std::move(note));
   }
-  if (f.chains.empty()) return f.fail("no boundary loop");
+  if (f.chains.empty()) return f.fail(MeshProblem::NoBoundaryLoop);
   for (int p : s.embedded_points) {
     const auto it = f.mesh.vertex_node.find(p);
-    if (it == f.mesh.vertex_node.end()) return f.fail(fmt::format("embedded point {} has no node", p));
+    if (it == f.mesh.vertex_node.end()) return f.fail(MeshProblem::EmbeddedPointNoNode, {p});
     f.emb_points.push_back(it->second);
   }
   for (int c : s.embedded_curves) {
     const auto it = f.mesh.curves.find(c);
-    if (it == f.mesh.curves.end()) return f.fail(fmt::format("embedded curve {} has no 1D mesh", c));
+    if (it == f.mesh.curves.end()) return f.fail(MeshProblem::EmbeddedCurveNotMeshed, {c});
     FaceChain ch;
     ch.nodes = it->second.nodes;
     ch.edge_curve.assign(ch.nodes.size() - 1, c);
@@ -102,9 +101,13 @@ bool choose_plane(FaceWork& f) {
   const std::optional<FacePlaneProblem> p =
       make_face_plane(f.plane, f.mesh, curves, f.emb_points, tol, kGmshPlaneCoherence * f.bbox, &off);
   if (p)
-    return f.fail(fmt::format("{} (off its plane by more than {:g} of its size, the bound Gmsh checks)", p->message,
-                              kGmshPlaneCoherence),
-                  p->where);
+  {
+    constexpr MeshProblem kProblem[] = {MeshProblem::FaceAtPole, MeshProblem::FaceNoArea, MeshProblem::FaceNotPlanar,
+                                        MeshProblem::FacePointOffPlane};
+    f.fail(kProblem[static_cast<int>(p->fault)], {}, p->where);
+    f.res.error.value = kGmshPlaneCoherence;
+    return false;
+  }
   if (off)
     f.res.notes.push_back(MeshNote{.kind = MeshNoteKind::BoundaryOffPlane,
                                    .surface = f.tag,

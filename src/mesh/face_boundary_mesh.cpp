@@ -50,25 +50,23 @@ bool triangulate_boundary(FaceWork& f) {
   f.fixed_count = f.tri.num_vertices();
 
   const DelaunayResult dr = delaunay(f.tri);
-  if (!dr.ok()) return f.fail("Delaunay of the boundary nodes failed: " + dr.error);
+  if (!dr.ok()) return f.fail_because(MeshProblem::DelaunayFailed, dr.error);
   if (!dr.duplicates.empty()) {
     const std::uint32_t a = f.global[dr.duplicates[0].dup.value], b = f.global[dr.duplicates[0].kept.value];
-    return f.fail(fmt::format("two distinct boundary nodes ({} and {}) at the same place", a, b), f.mesh.nodes[a].xyz);
+    return f.fail(MeshProblem::BoundaryNodesCoincide, {a, b}, f.mesh.nodes[a].xyz);
   }
   const PlanarGeometry g{&f.tri.xy};
   const RecoverResult rr = recover_edges(f.tri, g, f.edges);
-  if (!rr.ok()) return f.fail("boundary recovery failed: " + rr.error);
+  if (!rr.ok()) return f.fail_because(MeshProblem::RecoveryFailed, rr.error);
   if (!rr.crossings.empty()) {
     const EdgeCrossing& x = rr.crossings[0];
     const Edge e = f.edges[x.edge];
     const int other = x.other != kNoEdge ? f.edge_curve[x.other] : 0;
-    return f.fail(fmt::format("boundary edges of curves {} and {} cross", f.edge_curve[x.edge], other),
-                  f.mesh.nodes[f.global[e.first.value]].xyz, {f.edge_curve[x.edge], other});
+    return f.fail(MeshProblem::BoundaryEdgesCross, {f.edge_curve[x.edge], other}, f.mesh.nodes[f.global[e.first.value]].xyz, {f.edge_curve[x.edge], other});
   }
   if (!rr.touching.empty()) {
     const VertexOnEdge& x = rr.touching[0];
-    return f.fail(fmt::format("a boundary node lies on an edge of curve {}", f.edge_curve[x.edge]),
-                  f.mesh.nodes[f.global[x.v.value]].xyz, {f.edge_curve[x.edge]});
+    return f.fail(MeshProblem::BoundaryNodeOnEdge, {f.edge_curve[x.edge]}, f.mesh.nodes[f.global[x.v.value]].xyz, {f.edge_curve[x.edge]});
   }
   // The sizes extended from the boundary are interpolated in the whole recovered
   // triangulation, holes and the hull outside the face included: a walk in it always
@@ -76,7 +74,7 @@ bool triangulate_boundary(FaceWork& f) {
   // hole's sizes to everything behind it.
   if (f.opt.size.extend_from_boundary != 0) f.hull = f.tri;
   const DomainResult dom = remove_outside(f.tri, g, loops);
-  if (!dom.ok()) return f.fail("hole removal failed: " + dom.error);
+  if (!dom.ok()) return f.fail_because(MeshProblem::HoleRemovalFailed, dom.error);
   return true;
 }
 

@@ -557,10 +557,7 @@ bool rest_of_face(LayerBuild& b, const DirectedEdges& de, std::vector<FaceChain>
     for (std::size_t guard = 0; guard <= out.size(); ++guard) {
       const auto it = out.find(v);
       if (it == out.end() || it->second.size() != 1 || used.count(v))
-        return f.fail(fmt::format("its boundary layers overlap or meet the boundary (near {}): lower their Thickness "
-                                  "or their fans",
-                                  f.where_text(f.mesh.nodes[v].xyz)),
-                      f.mesh.nodes[v].xyz);
+        return f.fail(MeshProblem::LayersOverlap, {}, f.mesh.nodes[v].xyz);
       used.insert(v);
       ch.nodes.push_back(v);
       const auto cv = de.curve.find({v, it->second.front()});
@@ -569,8 +566,7 @@ bool rest_of_face(LayerBuild& b, const DirectedEdges& de, std::vector<FaceChain>
       if (v == start) break;
     }
     if (v != start || ch.nodes.size() < 3)
-      return f.fail("its boundary layers leave a part of it with no closed boundary: lower their Thickness",
-                    f.mesh.nodes[start].xyz);
+      return f.fail(MeshProblem::LayersOpen, {}, f.mesh.nodes[start].xyz);
     loops.push_back(std::move(ch));
   }
   auto area = [&](const FaceChain& ch) {
@@ -582,7 +578,7 @@ bool rest_of_face(LayerBuild& b, const DirectedEdges& de, std::vector<FaceChain>
   std::size_t outer = 0;
   for (std::size_t i = 1; i < loops.size(); ++i)
     if (area(loops[i]) > area(loops[outer])) outer = i;
-  if (loops.empty()) return f.fail("its boundary layers fill it: lower their Thickness");
+  if (loops.empty()) return f.fail(MeshProblem::LayersFill);
   std::swap(loops[0], loops[outer]);
   f.chains = std::move(loops);
   return true;

@@ -39,14 +39,18 @@ bool copy_reverses(const geo::Model& model, int target, const PeriodicSurfaceSpe
 bool copy_periodic_face(FaceWork& f, const PeriodicSurfaceSpec& spec) {
   const auto src = f.mesh.surfaces.find(spec.source);
   if (src == f.mesh.surfaces.end())
-    return f.fail(fmt::format("its source surface {} has no mesh to copy", spec.source));
-  std::string why;
-  std::map<std::uint32_t, std::uint32_t> image = periodic_boundary_images(f.mesh, f.tag, spec, &why);
-  if (image.empty()) return f.fail(why.empty() ? "its paired curves have no nodes" : why);
+    return f.fail(MeshProblem::SourceNotMeshed, {spec.source});
+  MeshError broke;
+  std::map<std::uint32_t, std::uint32_t> image = periodic_boundary_images(f.mesh, f.tag, spec, &broke);
+  if (image.empty()) {
+    if (broke.ok()) return f.fail(MeshProblem::PairedCurvesNoNodes);
+    const auto& n = broke.numbers;
+    return f.fail(MeshProblem::PeriodicFaceCurveNodes, {n[0], n[1], n[2], n[3], n[4]});
+  }
 
   const geo::ModelSurface& s = *f.model.surface(f.tag);
   const geo::SurfaceGeometry* geom = s.geometry ? f.model.geometry(s.geometry) : nullptr;
-  if (s.geometry && !geom) return f.fail(fmt::format("surface geometry {} does not exist", s.geometry));
+  if (s.geometry && !geom) return f.fail(MeshProblem::GeometryMissing, {s.geometry});
   SurfaceMesh out;
   out.tag = f.tag;
   // Copied before the new nodes are added: the source's list lives in the same map.
@@ -74,17 +78,18 @@ bool copy_periodic_face(FaceWork& f, const PeriodicSurfaceSpec& spec) {
   for (const auto& t : from.triangles) {
     std::array<std::uint32_t, 3> c{};
     for (int e = 0; e < 3; ++e)
-      if (!node(t[e], c[e]))
-        return f.fail(fmt::format("node at ({}, {}, {}) of surface {} is on none of its paired curves",
-                                  f.mesh.nodes[t[e]].xyz.x, f.mesh.nodes[t[e]].xyz.y, f.mesh.nodes[t[e]].xyz.z,
-                                  spec.source));
+      if (!node(t[e], c[e])) {
+        f.fail(MeshProblem::PeriodicNodeOffCurves, {spec.source});
+        f.res.error.xyz = f.mesh.nodes[t[e]].xyz;   // in the sentence, not a place after it
+        return false;
+      }
     if (reverse) std::swap(c[1], c[2]);
     out.triangles.push_back(c);
   }
   for (const auto& q : from.quads) {
     std::array<std::uint32_t, 4> c{};
     for (int e = 0; e < 4; ++e)
-      if (!node(q[e], c[e])) return f.fail(fmt::format("a quadrangle node of surface {} is on none of its paired curves", spec.source));
+      if (!node(q[e], c[e])) return f.fail(MeshProblem::PeriodicQuadNodeOffCurves, {spec.source});
     if (reverse) std::swap(c[1], c[3]);
     out.quads.push_back(c);
   }

@@ -23,9 +23,7 @@ std::optional<FacePlaneProblem> make_face_plane(FacePlane& plane, const ModelMes
       for (std::uint32_t v : *nodes) {
         uv = plane.node_param(mesh.nodes[v]);
         if (plane.mercator && !(std::abs(uv.y) < 0.5 * geo::kPi - 1e-9))
-          return FacePlaneProblem{"a lon/lat Sphere face cannot reach a pole (its parametrisation is singular "
-                                  "there); use a PolarSphere",
-                                  mesh.nodes[v].xyz};
+          return FacePlaneProblem{FacePlaneFault::AtPole, mesh.nodes[v].xyz};
       }
     uv = plane.node_param(mesh.nodes[curves[0]->front()]);
     Vec3 du, dv;
@@ -44,7 +42,7 @@ std::optional<FacePlaneProblem> make_face_plane(FacePlane& plane, const ModelMes
   }
   c = c / static_cast<double>(L.size());
   const double nn = norm(n);
-  if (!(nn > 0)) return FacePlaneProblem{"the outer loop encloses no area", mesh.nodes[L[0]].xyz};
+  if (!(nn > 0)) return FacePlaneProblem{FacePlaneFault::NoArea, mesh.nodes[L[0]].xyz};
   n = n / nn;
   if (n.x == 0 && n.y == 0) {
     plane.o = {0, 0, c.z};
@@ -72,9 +70,9 @@ std::optional<FacePlaneProblem> make_face_plane(FacePlane& plane, const ModelMes
   };
   for (const std::vector<std::uint32_t>* nodes : curves)
     for (std::uint32_t v : *nodes)
-      if (!check(v)) return FacePlaneProblem{"the boundary is not planar", mesh.nodes[v].xyz};
+      if (!check(v)) return FacePlaneProblem{FacePlaneFault::NotPlanar, mesh.nodes[v].xyz};
   for (std::uint32_t v : points)
-    if (!check(v)) return FacePlaneProblem{"an embedded point is not in the surface's plane", mesh.nodes[v].xyz};
+    if (!check(v)) return FacePlaneProblem{FacePlaneFault::PointOffPlane, mesh.nodes[v].xyz};
   if (offset && farthest.distance > 0) *offset = farthest;
   return std::nullopt;
 }

@@ -67,9 +67,13 @@ struct FacePlane {
   geo::LonLat lonlat(Vec3 x) const;
 };
 
-/// Why a face has no plane: the message and the node where it shows.
+/// Why a face has no plane: a lon/lat Sphere face reaching a pole, an outer loop with no
+/// area, a boundary node or an embedded point off the plane.
+enum class FacePlaneFault { AtPole, NoArea, NotPlanar, PointOffPlane };
+
+/// Why a face has no plane, and the node where it shows.
 struct FacePlaneProblem {
-  std::string message;
+  FacePlaneFault fault;
   Vec3 where;
 };
 

@@ -100,7 +100,7 @@ bool refine_in_plane(FaceWork& f, const std::function<void(std::span<const Vec2>
     f.res.stats.parts += pr.stats.parts;
     f.res.stats.estimated_triangles += pr.stats.estimate;
     ++f.res.stats.partitioned_faces;
-    if (!pr.ok()) return f.fail("refinement failed: " + pr.error);
+    if (!pr.ok()) return f.fail_because(MeshProblem::RefinementFailed, pr.error);
     // Parts are Delaunay inside; smoothing ends with flips that make the seams so too.
     if (f.opt.smoothing <= 0) make_delaunay(f.tri);
     return true;
@@ -125,7 +125,7 @@ bool refine_in_plane(FaceWork& f, const std::function<void(std::span<const Vec2>
   }
   f.res.stats.inserted += rf.stats.inserted;
   f.res.stats.rejected += rf.stats.rejected;
-  if (!rf.ok()) return f.fail("refinement failed: " + rf.error);
+  if (!rf.ok()) return f.fail_because(MeshProblem::RefinementFailed, rf.error);
   return true;
 }
 
@@ -141,7 +141,7 @@ bool refine_face(FaceWork& f, std::uint64_t estimate) {
   mo.smoothing_passes = std::max(0, f.opt.smoothing);
   mo.max_vertices = f.opt.max_vertices_per_face;
   const MeshAdaptResult ma = mesh_adapt(f.tri, mo);
-  if (!ma.ok()) return f.fail("meshadapt failed: " + ma.error);
+  if (!ma.ok()) return f.fail_because(MeshProblem::MeshAdaptFailed, ma.error);
   f.res.stats.inserted += ma.stats.splits;
   f.smoothed = true;
   return true;

@@ -17,11 +17,30 @@
 
 namespace sm {
 
+namespace {
+
+// The filling's fault as the face's problem, with its values.
+bool fail_transfinite(FaceWork& f, const TransfiniteResult& r) {
+  MeshProblem p = MeshProblem::TransfiniteEmptySide;
+  switch (r.fault) {
+    case TransfiniteFault::CornerCount: p = MeshProblem::TransfiniteCornerCount; break;
+    case TransfiniteFault::CornerOffBoundary: p = MeshProblem::TransfiniteCornerOffBoundary; break;
+    case TransfiniteFault::CornerTwice: p = MeshProblem::TransfiniteCornerTwice; break;
+    case TransfiniteFault::SidesUnequal4: p = MeshProblem::TransfiniteSidesUnequal4; break;
+    case TransfiniteFault::SidesUnequal3: p = MeshProblem::TransfiniteSidesUnequal3; break;
+    case TransfiniteFault::EmptySide:
+    case TransfiniteFault::None: break;
+  }
+  return f.fail(p, {r.numbers[0], r.numbers[1], r.numbers[2], r.numbers[3]});
+}
+
+}  // namespace
+
 bool mesh_transfinite_face(FaceWork& f, const geo::ModelSurface& s, const TransfiniteSurfaceSpec& spec) {
   if (!collect_boundary(f, s)) return false;
   if (f.chains.size() != 1) {
     const std::size_t holes = f.chains.size() - 1;
-    return f.fail(fmt::format("is transfinite but has {} hole{}", holes, holes == 1 ? "" : "s"));
+    return f.fail(MeshProblem::TransfiniteHoles, {static_cast<long long>(holes)});
   }
   const FaceChain& ch = f.chains[0];
   const std::size_t n = ch.nodes.size();
@@ -52,13 +71,13 @@ bool mesh_transfinite_face(FaceWork& f, const geo::ModelSurface& s, const Transf
       const auto at =
           it == f.mesh.vertex_node.end() ? ch.nodes.end() : std::find(ch.nodes.begin(), ch.nodes.end(), it->second);
       if (at == ch.nodes.end())
-        return f.fail(fmt::format("transfinite corner {} is not a point of its boundary", corner));
+        return f.fail(MeshProblem::TransfiniteCorner, {corner});
       b.corners.push_back(static_cast<std::size_t>(at - ch.nodes.begin()));
     }
   }
   const int smoothing = f.opt.smoothing > 1 ? f.opt.smoothing : 0;  // Gmsh: with Mesh.Smoothing > 1
   TransfiniteResult r = fill_transfinite(b, spec.arrangement, f.recombined(), smoothing);
-  if (!r.ok()) return f.fail(r.error);
+  if (!r.ok()) return fail_transfinite(f, r);
   std::optional<Vec3> centre;
   double radius = 0;
   if (s.filling && s.sphere_centre)

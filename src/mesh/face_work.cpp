@@ -14,22 +14,31 @@ FaceWork::~FaceWork() {
     if (node < local_of.size()) local_of[node] = kNoLocal;
 }
 
-bool FaceWork::fail(std::string msg, std::optional<Vec3> where, std::initializer_list<int> curves) {
+bool FaceWork::fail(MeshProblem problem, std::initializer_list<long long> numbers, std::optional<Vec3> where,
+                    std::initializer_list<int> curves) {
   MeshError& e = res.error;
   e.kind = MeshErrorKind::Failed;
+  e.problem = problem;
+  e.surface = tag;
   e.add_entity(2, tag);
   for (int c : curves) e.add_entity(1, c);
-  e.message = fmt::format("surface {}: {}", tag, msg);
+  std::size_t i = 0;
+  for (long long n : numbers)
+    if (i < e.numbers.size()) e.numbers[i++] = n;
   if (where) {
+    e.has_xyz = true;
     e.xyz = *where;
     if (plane.geom) {
       e.has_lonlat = true;
       e.where = plane.lonlat(*where);
-      e.message += fmt::format(" near lon {:.6f}, lat {:.6f}", e.where.lon, e.where.lat);
-    } else {
-      e.message += fmt::format(" near ({}, {}, {})", where->x, where->y, where->z);
     }
   }
+  return false;
+}
+
+bool FaceWork::fail_because(MeshProblem problem, std::string reason) {
+  fail(problem);
+  res.error.reason = std::move(reason);
   return false;
 }
 

@@ -44,8 +44,12 @@ struct FaceWork {
   FaceWork(const FaceWork&) = delete;
   FaceWork& operator=(const FaceWork&) = delete;
 
-  /// Sets the error: this surface, then `curves`, the message, the place. Returns false.
-  bool fail(std::string msg, std::optional<Vec3> where = std::nullopt, std::initializer_list<int> curves = {});
+  /// Sets the error: `problem` with its numbers on this surface, then `curves`, the place.
+  /// Returns false.
+  bool fail(MeshProblem problem, std::initializer_list<long long> numbers = {}, std::optional<Vec3> where = std::nullopt,
+            std::initializer_list<int> curves = {});
+  /// fail(problem) with a sub-step's own words as its reason.
+  bool fail_because(MeshProblem problem, std::string reason);
   /// "lon X, lat Y" of a point of the face (on a geometry), else "(x, y, z)".
   std::string where_text(Vec3 p) const;
   /// A point of the face as a note's place: in space, and in degrees on a geometry.

@@ -216,13 +216,35 @@ struct CurveJob {
   const geo::Curve* shape = nullptr;
 };
 
-MeshError make_error(MeshErrorKind kind, int a, int b, std::string msg) {
+MeshError make_error(MeshErrorKind kind, int a, int b, MeshProblem problem = MeshProblem::None,
+                     std::array<long long, 5> numbers = {}) {
   MeshError e;
   e.kind = kind;
+  e.problem = problem;
   e.add_entity(1, a);
   e.add_entity(1, b);
-  e.message = std::move(msg);
+  e.numbers = numbers;
   return e;
+}
+
+// A failure of the crossing repair other than a crossing (boundary_recovery.h) as the mesh
+// kernel's problem, with its values.
+void repair_problem(const BoundaryError& b, MeshError& e) {
+  e.numbers = {b.curve_a, b.point_a, static_cast<long long>(b.count)};
+  e.value = b.parameter;
+  e.reason = b.reason;
+  switch (b.fault) {
+    case BoundaryFault::RoundsExhausted:
+      e.numbers[0] = static_cast<long long>(b.count);
+      e.problem = MeshProblem::RepairRoundsExhausted;
+      return;
+    case BoundaryFault::CurveTooFewPoints: e.problem = MeshProblem::RepairCurveTooFewPoints; return;
+    case BoundaryFault::PointOutOfRange: e.problem = MeshProblem::RepairPointOutOfRange; return;
+    case BoundaryFault::NoPointAtParameter: e.problem = MeshProblem::RepairNoPointAtParameter; return;
+    case BoundaryFault::TriangulationFailed: e.problem = MeshProblem::RepairTriangulationFailed; return;
+    case BoundaryFault::EdgeRecoveryFailed: e.problem = MeshProblem::RepairEdgeRecoveryFailed; return;
+    case BoundaryFault::None: return;
+  }
 }
 
 // The curves drawn in one plane: a surface geometry's (u,v) plane (key = its tag) or the
@@ -287,7 +309,7 @@ MeshError repair_group(const geo::Model& model, const PlaneGroup& g, ModelMesh& 
     if (br.error.kind == BoundaryErrorKind::Intersection) kind = MeshErrorKind::Intersection;
     if (br.error.kind == BoundaryErrorKind::DuplicatePoint) kind = MeshErrorKind::DuplicatePoint;
     if (br.error.kind == BoundaryErrorKind::NoProgress) kind = MeshErrorKind::NoProgress;
-    MeshError e = make_error(kind, static_cast<int>(br.error.curve_a), static_cast<int>(br.error.curve_b), "");
+    MeshError e = make_error(kind, static_cast<int>(br.error.curve_a), static_cast<int>(br.error.curve_b));
     const Vec2 w = br.error.where;
     e.xyz = geom ? geom->point(w) : Vec3{w.x, w.y, g.z};
     if (geom && geom->polar()) {
@@ -299,7 +321,7 @@ MeshError repair_group(const geo::Model& model, const PlaneGroup& g, ModelMesh& 
     }
     // A crossing or a duplicate node is told by its kind, curves and place (the interpreter
     // words it); any other failure keeps the recovery's own words.
-    if (kind != MeshErrorKind::Intersection && kind != MeshErrorKind::DuplicatePoint) e.message = br.error.message;
+    if (kind != MeshErrorKind::Intersection && kind != MeshErrorKind::DuplicatePoint) repair_problem(br.error, e);
     return e;
   }
   if (br.splits == 0) return {};
@@ -412,18 +434,12 @@ void plan_layer_points(const geo::Model& model, const Mesh1dOptions& opt, CurveP
       const int vtag = end == 0 ? mc.begin : mc.end;
       if (!p.is_end_point(vtag)) continue;
       if (mc.shape->kind() != geo::CurveKind::Line) {
-        cp.error = make_error(MeshErrorKind::Invalid, cp.tag, cp.tag,
-                              fmt::format("curve {} leaves point {}, where a boundary layer ends: it must be a "
-                                          "straight line to carry the layer points (as in Gmsh)",
-                                          cp.tag, vtag));
+        cp.error = make_error(MeshErrorKind::Invalid, cp.tag, cp.tag, MeshProblem::LayerEndCurved, {vtag});
         return;
       }
       std::vector<double>& d = end == 0 ? cp.layer_begin : cp.layer_end;
       if (!d.empty()) {
-        cp.error = make_error(MeshErrorKind::Invalid, cp.tag, cp.tag,
-                              fmt::format("two boundary layers end at point {} of curve {}: they must not touch (as "
-                                          "in Gmsh)",
-                                          vtag, cp.tag));
+        cp.error = make_error(MeshErrorKind::Invalid, cp.tag, cp.tag, MeshProblem::LayersTouch, {vtag});
         return;
       }
       d = field::layer_distances(p, p.size_at_point(vtag), std::min(p.thickness, 0.4 * chord));
@@ -575,14 +591,14 @@ void integrate_plan(const geo::Model& model, const Mesh1dOptions& opt, double bb
   const int tag = cp.tag;
   const geo::ModelCurve& mc = *cp.mc;
   if (!mc.shape) {
-    cp.error = make_error(MeshErrorKind::Invalid, tag, tag, fmt::format("curve {} has no geometry", tag));
+    cp.error = make_error(MeshErrorKind::Invalid, tag, tag, MeshProblem::CurveNoGeometry);
     return;
   }
   const geo::Curve& shape = *mc.shape;
   const geo::ModelVertex* vb = model.vertex(mc.begin);
   const geo::ModelVertex* ve = model.vertex(mc.end);
   if (!vb || !ve) {
-    cp.error = make_error(MeshErrorKind::Invalid, tag, tag, fmt::format("curve {} lacks an end point", tag));
+    cp.error = make_error(MeshErrorKind::Invalid, tag, tag, MeshProblem::CurveNoEndPoint);
     return;
   }
   if (vb->lc < geo::kMaxLc) cp.lc0 = vb->lc;
@@ -635,16 +651,12 @@ bool check_node_budget(std::vector<CurvePlan>& plans, const Mesh1dOptions& opt, 
     }
     res.stats.size_evaluations += cp.evaluations;
     if (!std::isfinite(cp.total)) {
-      res.error = make_error(
-          MeshErrorKind::Invalid, tag, tag,
-          fmt::format("curve {}: the size integral is not finite (a size of zero or a degenerate curve)", tag));
+      res.error = make_error(MeshErrorKind::Invalid, tag, tag, MeshProblem::CurveSizeNotFinite);
       return false;
     }
     const double limit = opt.max_elements > 0 ? std::min(opt.max_elements, kMaxCurveNodes) : kMaxCurveNodes;
     if (!(cp.nodes <= limit)) {
-      res.error = make_error(
-          MeshErrorKind::LimitExceeded, tag, tag,
-          fmt::format("curve {} would get about {:.1e} nodes, over the limit of {:g}", tag, cp.nodes, limit));
+      res.error = make_error(MeshErrorKind::LimitExceeded, tag, tag);
       res.error.count = cp.nodes;
       res.error.limit = limit;
       return false;
@@ -654,10 +666,7 @@ bool check_node_budget(std::vector<CurvePlan>& plans, const Mesh1dOptions& opt, 
   }
   if (opt.max_elements > 0 && total_nodes > opt.max_elements) {
     const int tag = plans[largest].tag;
-    res.error = make_error(MeshErrorKind::LimitExceeded, tag, tag,
-                           fmt::format("the curves would get about {:.1e} nodes in all (curve {} the most, {:.1e}), "
-                                       "over the limit of {:g}",
-                                       total_nodes, tag, plans[largest].nodes, opt.max_elements));
+    res.error = make_error(MeshErrorKind::LimitExceeded, tag, tag);
     res.error.count = total_nodes;
     res.error.limit = opt.max_elements;
     res.error.all_curves = true;
@@ -860,9 +869,8 @@ void number_plan(const geo::Model& model, CurvePlan& cp, ModelMesh& mesh) {
 // A `Periodic Curve` target's nodes copied from its source's mesh (periodic_curve.h).
 MeshError copy_periodic_plan(const geo::Model& model, const PeriodicCurveSpec& spec, CurvePlan& cp,
                              ModelMesh& mesh) {
-  std::string why;
-  if (!periodic_curve_nodes(model, mesh, cp.tag, spec, cp.ts, cp.xyz, &why))
-    return make_error(MeshErrorKind::Invalid, cp.tag, spec.source, fmt::format("periodic curve {}: {}", cp.tag, why));
+  MeshError why;
+  if (!periodic_curve_nodes(model, mesh, cp.tag, spec, cp.ts, cp.xyz, &why)) return why;
   cp.uv.clear();
   if (cp.mc->shape->on_surface())
     for (std::size_t i = 1; i + 1 < cp.ts.size(); ++i) cp.uv.push_back(cp.mc->shape->eval_uv(cp.ts[i]).p);
@@ -895,10 +903,10 @@ MeshError number_nodes(const geo::Model& model, const Mesh1dOptions& opt, std::v
       if (MeshError e = copy_periodic_plan(model, spec, *cp, mesh); !e.ok()) return e;
     }
     if (waiting.size() == copies.size())
-      return make_error(MeshErrorKind::Invalid, waiting.front()->tag, periodic.at(waiting.front()->tag).source,
-                        fmt::format("periodic curve {} copies curve {}, which is not meshed first: the periodic "
-                                    "curves copy one another in a cycle, or the source is not a curve of the model",
-                                    waiting.front()->tag, periodic.at(waiting.front()->tag).source));
+    {
+      const int tag = waiting.front()->tag, source = periodic.at(tag).source;
+      return make_error(MeshErrorKind::Invalid, tag, source, MeshProblem::PeriodicCycle, {tag, source});
+    }
     copies.swap(waiting);
   }
   return {};
@@ -1011,7 +1019,7 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
   if (!check_node_budget(plans, opt, res, total_nodes)) return res;
   if (opt.max_elements > 0 && opt.coarse_check && total_nodes > opt.coarse_check_nodes &&
       !opt.coarse_check(coarse_mesh(plans, opt, bbox, mesh))) {
-    res.error = make_error(MeshErrorKind::Stopped, 0, 0, "stopped before placing the 1D nodes");
+    res.error = make_error(MeshErrorKind::Stopped, 0, 0);
     return res;
   }
   plan_compounds(model, opt, plans);
@@ -1041,10 +1049,10 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
     res.stats.seconds_repair = seconds_since(t0);
   }
   if (opt.constraints && !opt.constraints->periodic_curves.empty()) {
-    std::string why;
+    MeshError why;
     mesh.periodic = periodic_links(model, mesh, *opt.constraints, &why);
-    if (!why.empty()) {
-      res.error = make_error(MeshErrorKind::Failed, 0, 0, why);
+    if (!why.ok()) {
+      res.error = std::move(why);
       return res;
     }
   }

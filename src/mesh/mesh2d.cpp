@@ -61,8 +61,7 @@ bool check_budget(FaceWork& f, std::uint64_t& estimate) {
   };
   estimate = estimate_triangles(f.tri, estimate_at);
   if (f.opt.max_elements > 0 && static_cast<double>(estimate) > f.opt.max_elements) {
-    f.fail(fmt::format("it would get about {:.1e} triangles, over the limit of {:g}", static_cast<double>(estimate),
-                       f.opt.max_elements));
+    f.fail(MeshProblem::None);
     f.res.error.kind = MeshErrorKind::LimitExceeded;
     f.res.error.count = static_cast<double>(estimate);
     f.res.error.limit = f.opt.max_elements;
@@ -81,7 +80,7 @@ bool run_face(FaceWork& f, const geo::ModelSurface& s) {
       return mesh_transfinite_face(f, s, it->second);
     }
   f.plane.geom = s.geometry ? f.model.geometry(s.geometry) : nullptr;
-  if (s.geometry && !f.plane.geom) return f.fail(fmt::format("surface geometry {} does not exist", s.geometry));
+  if (s.geometry && !f.plane.geom) return f.fail(MeshProblem::GeometryMissing, {s.geometry});
   auto t0 = std::chrono::steady_clock::now();
   if (!collect_boundary(f, s)) return false;
   if (s.filling && !s.geometry)

@@ -99,8 +99,8 @@ struct Mesh2dStats {
 };
 
 struct Mesh2dResult {
-  /// A failure names the surface first, then the curves involved; the message starts
-  /// "surface N: " and, with a place, ends "near lon X, lat Y" (or "near (x, y, z)").
+  /// A failure names the surface first, then the curves involved: its problem, the
+  /// surface, its numbers and place (mesh_error.h).
   MeshError error;
   /// The warnings, in the order the faces were meshed: islands left out, a boundary off
   /// its plane, and surfaces left below Mesh2dOptions::quality_floor (sharp corners, work

@@ -97,12 +97,20 @@ double nearest_parameter(const geo::Curve& c, Vec3 p, double t0, double toleranc
 }  // namespace
 
 bool periodic_curve_nodes(const geo::Model& model, const ModelMesh& mesh, int target, const PeriodicCurveSpec& spec,
-                          std::vector<double>& ts, std::vector<Vec3>& xyz, std::string* why) {
+                          std::vector<double>& ts, std::vector<Vec3>& xyz, MeshError* why) {
+  auto fail = [&](MeshProblem problem, std::array<long long, 5> numbers) {
+    if (!why) return false;
+    why->kind = MeshErrorKind::Invalid;
+    why->problem = problem;
+    why->add_entity(1, target);
+    why->add_entity(1, spec.source);
+    why->numbers = numbers;
+    return false;
+  };
   const geo::ModelCurve* mc = model.curve(target);
   const auto src = mesh.curves.find(spec.source);
   if (!mc || !mc->shape || src == mesh.curves.end() || src->second.nodes.size() < 2) {
-    if (why) *why = fmt::format("its source curve {} has no mesh to copy", spec.source);
-    return false;
+    return fail(MeshProblem::PeriodicSourceNotMeshed, {target, spec.source});
   }
   const CurveMesh& s = src->second;
   const std::size_t n = s.nodes.size();
@@ -120,18 +128,14 @@ bool periodic_curve_nodes(const geo::Model& model, const ModelMesh& mesh, int ta
     xyz.push_back(shape.point(ts[i]));
   }
   for (std::size_t i = 1; i < n; ++i)
-    if (!(ts[i] > ts[i - 1])) {
-      if (why)
-        *why = fmt::format("the copy of curve {}'s nodes does not run along it (node {} of {} is not past the "
-                           "one before): the transform does not map curve {} onto it",
-                           spec.source, i, n - 1, spec.source);
-      return false;
-    }
+    if (!(ts[i] > ts[i - 1]))
+      return fail(MeshProblem::PeriodicCopyNotAlong,
+                  {target, spec.source, static_cast<long long>(i), static_cast<long long>(n - 1)});
   return true;
 }
 
 std::vector<PeriodicLink> periodic_links(const geo::Model& model, const ModelMesh& mesh, const MeshConstraints& c,
-                                         std::string* why) {
+                                         MeshError* why) {
   std::vector<PeriodicLink> out;
   for (const auto& [tag, p] : c.periodic_points) {
     const auto a = mesh.vertex_node.find(tag), b = mesh.vertex_node.find(p.master);
@@ -143,10 +147,11 @@ std::vector<PeriodicLink> periodic_links(const geo::Model& model, const ModelMes
     const std::vector<std::uint32_t> mine = mesh.curve_nodes(tag);
     const std::vector<std::uint32_t> theirs = mesh.curve_nodes(p.orientation > 0 ? p.source : -p.source);
     if (mine.size() != theirs.size() || mine.size() < 2) {
-      if (why && why->empty())
-        *why = fmt::format("periodic curve {} has {} nodes where its source curve {} has {}: the repair of "
-                           "crossing 1D meshes split one of them",
-                           tag, mine.size(), p.source, theirs.size());
+      if (why && why->ok()) {
+        why->kind = MeshErrorKind::Failed;
+        why->problem = MeshProblem::PeriodicCurveNodeCounts;
+        why->numbers = {tag, static_cast<long long>(mine.size()), p.source, static_cast<long long>(theirs.size())};
+      }
       continue;
     }
     PeriodicLink l{1, tag, p.source, p.affine, {}};

@@ -10,6 +10,7 @@
 #include "base/vec.h"
 #include "geo/model.h"
 #include "mesh/mesh_constraints.h"
+#include "mesh/mesh_error.h"
 #include "mesh/model_mesh.h"
 
 namespace sm {
@@ -36,17 +37,19 @@ std::optional<int> periodic_orientation(const geo::Model& model, int target, int
 /// parameters `ts` (first 0, last 1, increasing) and the interior nodes' places `xyz`.
 /// Without a map the parameters are the source's (reversed for orientation -1) and the
 /// places the target's points there; with one, each source node is mapped and projected
-/// onto the target (its parameter by a bounded search). False, with `why`, when the
-/// source has no mesh or the copied parameters do not increase along the target.
+/// onto the target (its parameter by a bounded search). False, with `why`
+/// (PeriodicSourceNotMeshed, PeriodicCopyNotAlong), when the source has no mesh or the
+/// copied parameters do not increase along the target.
 bool periodic_curve_nodes(const geo::Model& model, const ModelMesh& mesh, int target, const PeriodicCurveSpec& spec,
-                          std::vector<double>& ts, std::vector<Vec3>& xyz, std::string* why);
+                          std::vector<double>& ts, std::vector<Vec3>& xyz, MeshError* why);
 
 /// The $Periodic correspondences of a meshed model, points, curves, then surfaces
 /// (periodic_surface_links) in tag order: a
 /// curve's nodes (ends included) with its source's in the copy's order, a point's node
-/// with its master's. Empty `why` when every target has as many nodes as its source,
-/// else what broke the copy (the 1D repair splitting one of them).
+/// with its master's. `why` stays ok() when every target has as many nodes as its source,
+/// else it says what broke the first copy (the 1D repair splitting one of them):
+/// PeriodicCurveNodeCounts, or a surface's as periodic_surface_links says.
 std::vector<PeriodicLink> periodic_links(const geo::Model& model, const ModelMesh& mesh, const MeshConstraints& c,
-                                         std::string* why);
+                                         MeshError* why);
 
 }  // namespace sm

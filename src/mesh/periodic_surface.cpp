@@ -211,16 +211,19 @@ std::vector<double> infer_periodic_transform(const std::vector<std::pair<Vec3, V
 }
 
 std::map<std::uint32_t, std::uint32_t> periodic_boundary_images(const ModelMesh& mesh, int target,
-                                                                 const PeriodicSurfaceSpec& spec, std::string* why) {
+                                                                 const PeriodicSurfaceSpec& spec, MeshError* why) {
   std::map<std::uint32_t, std::uint32_t> image;
   for (const PeriodicSurfaceSpec::CurvePair& p : spec.curves) {
     const std::vector<std::uint32_t> mine = mesh.curve_nodes(p.target);
     const std::vector<std::uint32_t> theirs = mesh.curve_nodes(p.orientation > 0 ? p.source : -p.source);
     if (mine.size() != theirs.size() || mine.size() < 2) {
-      if (why)
-        *why = fmt::format("periodic surface {}: its curve {} has {} nodes where curve {} of surface {} has {} (the "
-                           "repair of crossing 1D meshes or a quality floor split one of them)",
-                           target, p.target, mine.size(), p.source, spec.source, theirs.size());
+      if (why) {
+        why->kind = MeshErrorKind::Failed;
+        why->problem = MeshProblem::PeriodicSurfaceNodeCounts;
+        why->surface = target;
+        why->numbers = {p.target, static_cast<long long>(mine.size()), p.source,
+                        static_cast<long long>(theirs.size()), spec.source};
+      }
       return {};
     }
     for (std::size_t i = 0; i < mine.size(); ++i) image[theirs[i]] = mine[i];
@@ -236,17 +239,23 @@ std::map<std::uint32_t, std::uint32_t> periodic_boundary_images(const ModelMesh&
   return image;
 }
 
-std::vector<PeriodicLink> periodic_surface_links(const ModelMesh& mesh, const MeshConstraints& c, std::string* why) {
+std::vector<PeriodicLink> periodic_surface_links(const ModelMesh& mesh, const MeshConstraints& c, MeshError* why) {
   std::vector<PeriodicLink> out;
   for (const auto& [tag, spec] : c.periodic_surfaces) {
     const auto mine = mesh.surfaces.find(tag), theirs = mesh.surfaces.find(spec.source);
     if (mine == mesh.surfaces.end() || theirs == mesh.surfaces.end()) continue;
-    std::string broke;
+    MeshError broke;
     std::map<std::uint32_t, std::uint32_t> image = periodic_boundary_images(mesh, tag, spec, &broke);
     if (image.empty() || mine->second.interior_nodes.size() != theirs->second.interior_nodes.size()) {
-      if (why && why->empty())
-        *why = broke.empty() ? fmt::format("periodic surface {} is no longer a copy of surface {}", tag, spec.source)
-                             : broke;
+      if (why && why->ok()) {
+        if (broke.ok()) {
+          broke.kind = MeshErrorKind::Failed;
+          broke.problem = MeshProblem::PeriodicSurfaceNotCopy;
+          broke.surface = tag;
+          broke.numbers[0] = spec.source;
+        }
+        *why = std::move(broke);
+      }
       continue;
     }
     for (std::size_t i = 0; i < mine->second.interior_nodes.size(); ++i)

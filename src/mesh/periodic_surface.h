@@ -13,6 +13,7 @@
 #include "base/vec.h"
 #include "geo/model.h"
 #include "mesh/mesh_constraints.h"
+#include "mesh/mesh_error.h"
 #include "mesh/model_mesh.h"
 #include "mesh/periodic_link.h"
 
@@ -59,14 +60,16 @@ PeriodicSurfaceMatch match_periodic_surface(const geo::Model& model, int target,
 
 /// The target's node of each source node on the paired curves of a periodic surface (ends
 /// included, embedded curves too) and of its paired embedded points, node for node in the
-/// pair's orientation. Empty, with `why`, when two paired curves' node counts differ (the 1D repair or a quality floor split one of them) or a
+/// pair's orientation. Empty, with `why` (its PeriodicSurfaceNodeCounts), when two paired
+/// curves' node counts differ (the 1D repair or a quality floor split one of them) or a
 /// curve has no mesh.
 std::map<std::uint32_t, std::uint32_t> periodic_boundary_images(const ModelMesh& mesh, int target,
-                                                                 const PeriodicSurfaceSpec& spec, std::string* why);
+                                                                 const PeriodicSurfaceSpec& spec, MeshError* why);
 
 /// The $Periodic links of the periodic surfaces in tag order: each node of the copy
 /// (boundary included) with its source's node, by the copy's node. A surface without a
-/// mesh is left out; `why` as in periodic_boundary_images.
-std::vector<PeriodicLink> periodic_surface_links(const ModelMesh& mesh, const MeshConstraints& c, std::string* why);
+/// mesh is left out; `why` (the first broken copy) as in periodic_boundary_images, or
+/// PeriodicSurfaceNotCopy when the interiors differ.
+std::vector<PeriodicLink> periodic_surface_links(const ModelMesh& mesh, const MeshConstraints& c, MeshError* why);
 
 }  // namespace sm

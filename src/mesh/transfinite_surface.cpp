@@ -24,11 +24,14 @@ TransfiniteResult fill_transfinite(const TransfiniteBoundary& b, TriangleArrange
   const std::size_t nc = b.corners.size();
   if (nc != 3 && nc != 4) {
     r.error = fmt::format("is transfinite but has {} corner{} (give 3 or 4)", nc, nc == 1 ? "" : "s");
+    r.fault = TransfiniteFault::CornerCount;
+    r.numbers = {static_cast<int>(nc)};
     return r;
   }
   for (std::size_t c : b.corners)
     if (c >= n) {
       r.error = "a transfinite corner is not on the boundary";
+      r.fault = TransfiniteFault::CornerOffBoundary;
       return r;
     }
   // m[k]: the chain position of the k-th node going round from corner 0 towards corner 1.
@@ -51,6 +54,7 @@ TransfiniteResult fill_transfinite(const TransfiniteBoundary& b, TriangleArrange
     if (is_corner(m[k], 0)) N.push_back(k);
   if (N.size() != nc) {
     r.error = "transfinite parameters are incoherent (a corner is listed twice)";
+    r.fault = TransfiniteFault::CornerTwice;
     return r;
   }
   const int L = static_cast<int>(N[1] - N[0]), H = static_cast<int>(N[2] - N[1]);
@@ -58,17 +62,22 @@ TransfiniteResult fill_transfinite(const TransfiniteBoundary& b, TriangleArrange
     const int Lb = static_cast<int>(N[3] - N[2]), Hb = static_cast<int>(n - N[3]);
     if (Lb != L || Hb != H) {
       r.error = fmt::format("cannot be meshed using the transfinite algo (divisions {} != {} or {} != {})", Lb, L, Hb, H);
+      r.fault = TransfiniteFault::SidesUnequal4;
+      r.numbers = {Lb, L, Hb, H};
       return r;
     }
   } else {
     const int Lb = static_cast<int>(n - N[2]);
     if (Lb != L) {
       r.error = fmt::format("cannot be meshed using the transfinite algo (divisions {} != {})", L, Lb);
+      r.fault = TransfiniteFault::SidesUnequal3;
+      r.numbers = {L, Lb};
       return r;
     }
   }
   if (L < 1 || H < 1) {
     r.error = "a transfinite side has no edge";
+    r.fault = TransfiniteFault::EmptySide;
     return r;
   }
   r.L = L, r.H = H;

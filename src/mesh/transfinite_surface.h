@@ -29,8 +29,16 @@ struct TransfiniteBoundary {
   std::vector<std::size_t> corners;
 };
 
+/// Why a boundary cannot be filled (TransfiniteResult::numbers holds its values): not 3 or 4
+/// corners (n0 the count), a corner off the chain, a corner listed twice, opposite sides
+/// unequal (4 sides: n0..n3 the third side, the first, the fourth, the second; 3 sides: n0
+/// the first, n1 the third), a side with no edge.
+enum class TransfiniteFault { None, CornerCount, CornerOffBoundary, CornerTwice, SidesUnequal4, SidesUnequal3, EmptySide };
+
 struct TransfiniteResult {
-  std::string error;                       // empty when filled
+  std::string error;                       // empty when filled: the fault in words
+  TransfiniteFault fault = TransfiniteFault::None;
+  std::array<int, 4> numbers{};            // the fault's values
   int L = 0, H = 0;                        // edges along the first side and the second
   /// The new interior nodes' interpolated coordinates.
   std::vector<Vec3> interior;

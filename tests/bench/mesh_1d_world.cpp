@@ -140,7 +140,8 @@ void run_case(const Built& b, const field::SizeField& field, double h, bool repa
   const Mesh1dResult r = mesh_curves(b.model, opt);
   const double total = seconds_since(t0);
   if (!r.ok()) {
-    std::printf("  1D meshing failed after %.2f s: %s\n", total, r.error.message.c_str());
+    std::printf("  1D meshing failed after %.2f s: kind %d, problem %d, curve %d\n", total, static_cast<int>(r.error.kind),
+                static_cast<int>(r.error.problem), r.error.tag());
     std::printf("  (dense sampling of the splines there: %zu crossing segment pairs)\n", sampled_crossings(b.model, r.error));
     return;
   }

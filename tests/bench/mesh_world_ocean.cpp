@@ -207,7 +207,7 @@ void thread_table(const sm::geo::Model& model, const sm::Mesh1dResult& r1, sm::M
     const sm::Mesh2dResult r2 = sm::mesh_surfaces(model, mesh, o);
     const double wall = since(t0);
     if (!r2.ok()) {
-      std::printf("    2D failed: %s\n", r2.error.message.c_str());
+      std::printf("    2D failed: problem %d on surface %d\n", static_cast<int>(r2.error.problem), r2.error.surface);
       return;
     }
     const sm::MeshStats st = sm::mesh_stats(mesh, target);
@@ -297,7 +297,7 @@ int main(int argc, char** argv) {
     const double c0 = cpu_seconds();
     sm::Mesh1dResult r1 = sm::mesh_curves(model, o1);
     const double t1 = since(t0), c1 = cpu_seconds() - c0;
-    if (!r1.ok()) return std::fprintf(stderr, "1D: %s\n", r1.error.message.c_str()), 1;
+    if (!r1.ok()) return std::fprintf(stderr, "1D: kind %d, problem %d\n", static_cast<int>(r1.error.kind), static_cast<int>(r1.error.problem)), 1;
     sm::Mesh2dOptions o2;
     o2.algorithm = static_cast<sm::Mesh2dAlgorithm>(a);
     o2.background = &size;
@@ -306,7 +306,7 @@ int main(int argc, char** argv) {
     const double c2start = cpu_seconds();
     const sm::Mesh2dResult r2 = sm::mesh_surfaces(model, r1.mesh, o2);
     const double t2 = since(t0), c2 = cpu_seconds() - c2start;
-    if (!r2.ok()) return std::fprintf(stderr, "2D: %s\n", r2.error.message.c_str()), 1;
+    if (!r2.ok()) return std::fprintf(stderr, "2D: problem %d on surface %d\n", static_cast<int>(r2.error.problem), r2.error.surface), 1;
     sm::MeshStats st = sm::mesh_stats(r1.mesh, target);
     st.stages = {{"1D", t1}};
     for (const sm::StageTime& x : sm::stage_times(r2.stats)) st.stages.push_back(x);

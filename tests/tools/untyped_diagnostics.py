@@ -6,14 +6,14 @@ A kind of src/lang/diag_kinds.def declares its message's shape, DIAG(Name, Sever
 (src/lang/diag_format.h). A format that is only "{}" declares no shape: any sentence fits.
 
   untyped_diagnostics.py [--def FILE]                 list the kinds whose format is "{}"
-  untyped_diagnostics.py --check --allow FILE [--def FILE]
-                                                      fail (exit 1) on a "{}" kind the
-                                                      allow-list does not hold, and on a
+  untyped_diagnostics.py --check [--allow FILE] [--def FILE]
+                                                      fail (exit 1) on a "{}" kind (one an
+                                                      allow-list does not hold), and on a
                                                       listed one that is typed now or gone
   untyped_diagnostics.py --self-test                  the reader on a sample table
 
-The allow-list holds one kind name a line; `#` starts a comment. Run by CTest
-(tests/CMakeLists.txt, untyped_diagnostics).
+The allow-list holds one kind name a line; `#` starts a comment. CTest
+(tests/CMakeLists.txt, untyped_diagnostics) runs the check with none: no kind may be "{}".
 """
 import argparse
 import os

@@ -27,6 +27,7 @@
 #include "interp/kernel/field_eval.h"
 #include "interp/kernel/geometry_shapes.h"
 #include "interp/kernel/mesh_note_words.h"
+#include "interp/kernel/mesh_error_words.h"
 #include "interp/kernel/node_data_export.h"
 #include "interp/kernel/ocean_grid_export.h"
 #include "interp/kernel/output_options.h"
@@ -102,7 +103,7 @@ constexpr std::size_t kMaxStepUnmetReported = 10;
 // the user can change it (Mesh.MaxElements, or the cap of nodes on one curve).
 std::pair<Diag, std::string> worded_1d(const MeshError& e) {
   if (e.kind == MeshErrorKind::Intersection || e.kind == MeshErrorKind::DuplicatePoint) return worded_crossing(e);
-  if (e.kind != MeshErrorKind::LimitExceeded) return {Diag::MeshFailed, e.message};
+  if (e.kind != MeshErrorKind::LimitExceeded) return worded_mesh_problem(e);
   const bool cap = e.limit >= kMaxCurveNodes;
   if (e.all_curves && cap)
     return {Diag::LimitAllCurvesCap, format_diag<double, int, double>(Diag::LimitAllCurvesCap, e.count, e.tag(0), e.limit)};
@@ -118,21 +119,21 @@ std::pair<Diag, std::string> worded_1d(const MeshError& e) {
 // A meshing failure on its way to a diagnostic (kind, message, notes at the
 // statements that created the entities involved, the failing entity's first).
 struct MeshFailure {
-  Diag kind = Diag::MeshFailed;
+  Diag kind = Diag::MeshNoProblemNamed;
   std::string message;
   std::vector<DiagNote> notes;
   bool failed() const { return !message.empty(); }
 };
 
-MeshFailure failure_of(const KernelState& k, const MeshError& e) {
-  MeshFailure f{Diag::MeshFailed, e.message, provenance_notes(k, e)};
-  if (e.kind == MeshErrorKind::LimitExceeded) {
-    f.kind = Diag::LimitSurfaceTriangles;
-    f.message = format_diag<int, double, double>(Diag::LimitSurfaceTriangles, e.tag(0), e.count, e.limit);
-  } else if (e.has_lonlat) {
-    f.message += fmt::format(" (near lon {:.4f}, lat {:.4f})", e.where.lon, e.where.lat);
-  }
-  return f;
+// A 2D mesher error's kind and message, a compound's union named by its surfaces.
+MeshFailure failure_of(const KernelState& k, const MeshError& e, const CompoundSurfacePlan& compounds) {
+  if (e.kind == MeshErrorKind::LimitExceeded)
+    return {Diag::LimitSurfaceTriangles,
+            format_diag<int, double, double>(Diag::LimitSurfaceTriangles, e.tag(0), e.count, e.limit),
+            provenance_notes(k, e)};
+  auto [kind, message] = worded_mesh_problem(e);
+  name_compound_unions(compounds, message);
+  return {kind, std::move(message), provenance_notes(k, e)};
 }
 
 // `t` summed into the entry of its name in `times` (appended when there is none).
@@ -259,8 +260,8 @@ MeshFailure mesh2d_options(Interpreter& in, const field::SizeField* background, 
   // A row of mesh/mesh2d_algorithms.h; the others are refused by their number.
   const Mesh2dAlgorithmRow* row = mesh2d_algorithm_numbered(algo);
   if (!row) {
-    MeshFailure f{Diag::MeshFailed,
-                  fmt::format("Mesh.Algorithm {} is not available: use {}", algo, mesh2d_algorithm_numbers()), {}};
+    MeshFailure f{Diag::MeshAlgorithmUnavailable,
+                  format_diag(Diag::MeshAlgorithmUnavailable, algo, mesh2d_algorithm_numbers()), {}};
     if (const auto it = k.option_set_at.find("Mesh.Algorithm"); it != k.option_set_at.end())
       f.notes.push_back({it->second, "Mesh.Algorithm was set here"});
     return f;
@@ -318,10 +319,10 @@ MeshFailure structured_constraints(Interpreter& in, int dim, Mesh2dOptions& opt2
   for (const auto& [surface, algo] : constraints.surface_algorithm) {
     const Mesh2dAlgorithmRow* row = mesh2d_algorithm_numbered(algo);
     if (!row)
-      return MeshFailure{Diag::MeshFailed,
-                         fmt::format("MeshAlgorithm Surface{{{}}} = {} is not available: use {}", surface, algo,
-                                     mesh2d_algorithm_numbers()),
-                         {}};
+      return MeshFailure{
+          Diag::MeshSurfaceAlgorithmUnavailable,
+          format_diag(Diag::MeshSurfaceAlgorithmUnavailable, surface, algo, mesh2d_algorithm_numbers()),
+          {}};
     opt2.surface_algorithm[surface] = row->algorithm;
   }
   return {};
@@ -444,9 +445,12 @@ MeshFailure finish_2d_elements(Interpreter& in, const CompoundSurfacePlan& compo
   classify_compound_elements(k.model, compounds, mesh);
   // the quality floor may have split a curve edge
   if (!k.constraints.periodic_curves.empty() || !k.constraints.periodic_surfaces.empty()) {
-    std::string why;
+    MeshError why;
     mesh.periodic = periodic_links(k.model, mesh, k.constraints, &why);
-    if (!why.empty()) return {Diag::MeshFailed, why, {}};
+    if (!why.ok()) {
+      auto [kind, message] = worded_mesh_problem(why);
+      return {kind, std::move(message), {}};
+    }
   }
   for (const CompoundSurfacePlan::Group& g : compounds.groups)   // the union's target size on each original
     for (std::size_t i = 0, n = r2.target_sizes.size(); i < n; ++i)
@@ -518,22 +522,24 @@ MeshFailure mesh_model_unguarded(Interpreter& in, int dim, SourceRange where) {
   std::optional<StageScope> stage_1d(std::in_place, &k.clock, nullptr, "1D");
   Mesh1dResult r = mesh_curves(meshed, opt1);
   stage_1d.reset();
-  if (r.error.kind == MeshErrorKind::Stopped) return failure_of(k, budget);
+  if (r.error.kind == MeshErrorKind::Stopped) return failure_of(k, budget, compounds);
   if (!r.ok()) {
     auto [kind, message] = worded_1d(r.error);
     return {kind, std::move(message), provenance_notes(k, r.error)};
   }
   auto mesh = std::make_shared<ModelMesh>(std::move(r.mesh));
   // The merged files' surfaces, meshed as they are, on their points' and curves' nodes.
-  if (const std::string why = add_discrete_surfaces(k.discrete, *mesh); !why.empty())
-    return {Diag::MeshFailed, why, {}};
+  if (const MeshError why = add_discrete_surfaces(k.discrete, *mesh); !why.ok()) {
+    auto [kind, message] = worded_mesh_problem(why);
+    return {kind, std::move(message), {}};
+  }
   if (dim < 2) return finish_1d(in, std::move(mesh));
   opt2.progress = progress_sink(in);
   std::optional<StageScope> stage_2d(std::in_place, &k.clock, nullptr, "2D");
   Mesh2dResult r2 = mesh_surfaces(meshed, *mesh, opt2);
   stage_2d.reset();
   name_compound_unions(compounds, r2.error);
-  if (!r2.ok()) return failure_of(k, r2.error);
+  if (!r2.ok()) return failure_of(k, r2.error, compounds);
   if (MeshFailure f = finish_2d_elements(in, compounds, *mesh, r2, where); f.failed()) return f;
   // Statistics against the size each face's mesher aimed at (with the extension from
   // the boundary where it is on).

@@ -8,4 +8,4 @@ Curve Loop(1) = {1, 2, 3, 4};
 Curve Loop(2) = {5, 6, 7};
 Surface(1) = {1, 2};
 Mesh 2;
-// expect error: 10:1: mesh-error
+// expect error: 10:1: mesh-error: surface 1: boundary edges of curves 5 and 2 cross near (2.8, 1, 0.25)

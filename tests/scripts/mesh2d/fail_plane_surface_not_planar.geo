@@ -6,4 +6,4 @@ Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
 Curve Loop(1) = {1, 2, 3, 4};
 Plane Surface(1) = {1};
 Mesh 2;
-// expect error: 8:1: mesh-error
+// expect error: 8:1: mesh-error: surface 1: the boundary is not planar (off its plane by more than 0.001 of its size, the bound Gmsh checks) near (0, 0, 0)

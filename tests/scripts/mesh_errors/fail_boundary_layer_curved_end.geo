@@ -7,4 +7,4 @@ Field[1].CurvesList = {1};
 Field[1].PointsList = {1, 2};
 BoundaryLayer Field = 1;
 Mesh 2;
-// expect error: 9:1: mesh-error
+// expect error: 9:1: mesh-error: curve 2 leaves point 2, where a boundary layer ends: it must be a straight line to carry the layer points (as in Gmsh)

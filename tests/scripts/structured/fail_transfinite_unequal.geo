@@ -6,4 +6,4 @@ Plane Surface(1) = {1};
 Transfinite Curve{1} = 5;
 Transfinite Curve{2, 3, 4} = 4;
 Transfinite Surface{1};
-Mesh 2;   // expect error: 9:1: mesh-error
+Mesh 2;   // expect error: 9:1: mesh-error: surface 1: cannot be meshed using the transfinite algo (divisions 3 != 4 or 3 != 3)

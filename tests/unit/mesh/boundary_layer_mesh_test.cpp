@@ -52,7 +52,7 @@ ModelMesh bl_mesh(const geo::Model& m, const std::vector<field::BoundaryLayerPar
   Mesh2dOptions o2;
   o2.boundary_layers = layers;
   const Mesh2dResult r2 = mesh_surfaces(m, r1.mesh, o2);
-  INFO(r2.error.message);
+  INFO(static_cast<int>(r2.error.problem));
   REQUIRE(r2.ok());
   return std::move(r1.mesh);
 }

@@ -60,7 +60,7 @@ QfMeshed qf_mesh(const geo::Model& m, double floor, double size = 0.115) {
   o2.size = o1.size;
   o2.quality_floor = floor;
   out.r2 = mesh_surfaces(m, out.mesh, o2);
-  INFO(out.r2.error.message);
+  INFO(static_cast<int>(out.r2.error.problem));
   REQUIRE(out.r2.ok());
   for (const auto& [tag, sf] : out.mesh.surfaces)
     for (const auto& t : sf.triangles)

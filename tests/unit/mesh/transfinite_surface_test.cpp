@@ -167,6 +167,8 @@ TEST_CASE("transfinite surface: the 2D driver on a Plane Surface with transfinit
     sm::Mesh1dResult again = sm::mesh_curves(m, o1);
     const sm::Mesh2dResult r2 = sm::mesh_surfaces(m, again.mesh, o2);
     REQUIRE_FALSE(r2.ok());
-    CHECK(r2.error.message == "surface 1: cannot be meshed using the transfinite algo (divisions 3 != 4 or 2 != 2)");
+    CHECK(r2.error.problem == sm::MeshProblem::TransfiniteSidesUnequal4);
+    CHECK(r2.error.surface == 1);
+    CHECK(r2.error.numbers == std::array<long long, 5>{3, 4, 2, 2, 0});
   }
 }
