@@ -52,6 +52,7 @@ enum class MeshProblem {
   PeriodicCurveNodeCounts,   ///< n0 the periodic curve, n1 its nodes, n2 its source curve, n3 the source's nodes
   PeriodicSurfaceNodeCounts, ///< surface, n0 its curve, n1 its nodes, n2 the source's curve, n3 that one's nodes, n4 the source surface
   PeriodicSurfaceNotCopy,    ///< surface, n0 the source surface
+  PeriodicSurfacePointNoNode, ///< surface, n0 its embedded point, n1 the source's paired point
   DiscreteCurveChanged,      ///< n0 the discrete curve, n1 its mesh nodes, n2 the nodes its file gave
   // 2D: the surface is MeshError::surface (and entities[0]).
   GeometryMissing,           ///< n0 the surface geometry that does not exist

@@ -231,7 +231,12 @@ std::map<std::uint32_t, std::uint32_t> periodic_boundary_images(const ModelMesh&
   for (const auto& [point, counterpart] : spec.points) {
     const auto mine = mesh.vertex_node.find(point), theirs = mesh.vertex_node.find(counterpart);
     if (mine == mesh.vertex_node.end() || theirs == mesh.vertex_node.end()) {
-      if (why) *why = fmt::format("periodic surface {}: its embedded point {} or point {} has no node", target, point, counterpart);
+      if (why) {
+        why->kind = MeshErrorKind::Failed;
+        why->problem = MeshProblem::PeriodicSurfacePointNoNode;
+        why->surface = target;
+        why->numbers = {point, counterpart};
+      }
       return {};
     }
     image[theirs->second] = mine->second;

@@ -49,6 +49,8 @@ std::optional<Worded> worded_curve_problem(const MeshError& e) {
     case MeshProblem::PeriodicSurfaceNodeCounts:
       return worded(Diag::MeshPeriodicSurfaceNodeCounts, e.surface, n[0], n[1], n[2], n[4], n[3]);
     case MeshProblem::PeriodicSurfaceNotCopy: return worded(Diag::MeshPeriodicSurfaceNotCopy, e.surface, n[0]);
+    case MeshProblem::PeriodicSurfacePointNoNode:
+      return worded(Diag::MeshPeriodicSurfacePointNoNode, e.surface, n[0], n[1]);
     case MeshProblem::DiscreteCurveChanged: return worded(Diag::MeshDiscreteCurveChanged, n[0], n[1], n[2]);
     default: break;
   }
