@@ -151,7 +151,8 @@ bool write_all(int fd, const char* data, std::size_t size) {
 OutputFile::~OutputFile() { abandon(); }
 
 bool OutputFile::fail(std::string_view what, int err) {
-  if (!failed_) error_ = what.empty() ? std::string(std::strerror(err)) : fmt::format("{}: {}", what, std::strerror(err));
+  if (!failed_)
+    error_ = what.empty() ? std::string(std::strerror(err)) : fmt::format("{}: {}", what, std::strerror(err));
   failed_ = true;
   return false;
 }

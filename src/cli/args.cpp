@@ -187,7 +187,8 @@ ParseOutcome parse_args(const std::vector<std::string>& argv) {
       a.include_dirs.push_back(arg.substr(2));
     } else if (flag) {
       // In the table but handled by no branch above: a flag added to flags.cpp only.
-      return fail(fmt::format("internal error: '{}' is in the flag table (cli/flags.cpp) but parse_args has no branch for it", arg));
+      return fail(fmt::format(
+          "internal error: '{}' is in the flag table (cli/flags.cpp) but parse_args has no branch for it", arg));
     } else {
       a.files.push_back(arg);
     }

@@ -101,15 +101,18 @@ std::string write_gshhs_plugin_geo(const CoastModel& m, const GshhsPluginOptions
 Result<GshhsPluginResult> run_gshhs_plugin(const GshhsPluginOptions& opt) {
   if (!(opt.radius > 0)) return CoastError{opt.in_file_name, -1, "Plugin(GSHHS): radius must be positive", {}};
   if (opt.write_polar_sphere != 1 && opt.write_polar_sphere != 0 && opt.write_polar_sphere != -2)
-    return CoastError{opt.in_file_name, -1,
-                      fmt::format("Plugin(GSHHS): WritePolarSphere must be 1, 0 or -2, not {}", opt.write_polar_sphere), {}};
+    return CoastError{opt.in_file_name,
+                      -1,
+                      fmt::format("Plugin(GSHHS): WritePolarSphere must be 1, 0 or -2, not {}", opt.write_polar_sphere),
+                      {}};
   Result<Coastline> data = CoastError{};
   if (opt.format == "gshhs") {
     data = read_gshhs(opt.in_file_name);
   } else if (opt.format == "loops2") {
     const auto coord = parse_loops2_coordinate(opt.coordinate);
     if (!coord)
-      return CoastError{opt.in_file_name, -1, fmt::format("Plugin(GSHHS): unknown Coordinate '{}'", opt.coordinate), {}};
+      return CoastError{
+          opt.in_file_name, -1, fmt::format("Plugin(GSHHS): unknown Coordinate '{}'", opt.coordinate), {}};
     Loops2Options lo;
     lo.coordinate = *coord;
     lo.utm_zone = opt.utm_zone;
@@ -117,7 +120,8 @@ Result<GshhsPluginResult> run_gshhs_plugin(const GshhsPluginOptions& opt) {
     lo.utm_polar_radius = opt.utm_polar_radius;
     data = read_loops2(opt.in_file_name, lo);
   } else {
-    return CoastError{opt.in_file_name, -1, fmt::format("Plugin(GSHHS): unknown Format '{}' (gshhs or loops2)", opt.format), {}};
+    return CoastError{
+        opt.in_file_name, -1, fmt::format("Plugin(GSHHS): unknown Format '{}' (gshhs or loops2)", opt.format), {}};
   }
   if (!data) return data.error();
   if (opt.format == "loops2")

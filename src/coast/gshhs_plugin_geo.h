@@ -23,7 +23,7 @@ struct GshhsPluginOptions {
   double utm_equatorial_radius = 6378137;   // UTMEquatorialRadius
   double utm_polar_radius = 6356752.3142;   // UTMPolarRadius
   double radius = 6371009;                  // radius (metres)
-  int write_polar_sphere = 1;               // WritePolarSphere: 1 sphere + (u,v); 0 (u,v) only; -2 plane (xi,eta) in metres
+  int write_polar_sphere = 1;  // WritePolarSphere: 1 sphere + (u,v); 0 (u,v) only; -2 plane (xi,eta) in metres
   double min_straits_factor = 1;            // MinStraitsFactor (> 0: straits narrower than factor*gamma are closed)
 };
 

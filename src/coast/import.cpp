@@ -41,12 +41,14 @@ const char* describe(RepairKind k) {
     case RepairKind::OutsideWater: return "island outside every water surface dropped";
     case RepairKind::SplineHull: return "original points put back where the B-splines crossed or touched";
     case RepairKind::SplineMayCross: return "the B-splines cross or touch here on the source data";
-    case RepairKind::ClosedPassage: return "passage narrower than MinChannelWidth or Mesh.MinTimeStep needs closed by two dams";
+    case RepairKind::ClosedPassage:
+      return "passage narrower than MinChannelWidth or Mesh.MinTimeStep needs closed by two dams";
     case RepairKind::NarrowWater: return "water narrower than MinChannelWidth behind a dam removed";
     case RepairKind::DamPlaced: return "dam placed across the water";
     case RepairKind::KeptOpen: return "passage kept open by KeepOpen";
     case RepairKind::DroppedSea: return "sea holding no SeaAt point dropped";
-    case RepairKind::GrazingCrossing: return "Region polygon edge crossing water for less than the accuracy: coast joined across it";
+    case RepairKind::GrazingCrossing:
+      return "Region polygon edge crossing water for less than the accuracy: coast joined across it";
     case RepairKind::PocketLeftOut: return "water inside the Region polygon only across such crossings left out";
   }
   return "?";

@@ -211,7 +211,8 @@ void for_each_active_pair(std::span<const std::vector<Vec2>> loops, std::span<co
   for (const auto& c : cells) ++start[static_cast<std::size_t>(c.first) + 1];
   for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
   Vec2 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()}, hi = -lo;
-  for (const Seg& s : on) lo = {std::min(lo.x, s.lo.x), std::min(lo.y, s.lo.y)}, hi = {std::max(hi.x, s.hi.x), std::max(hi.y, s.hi.y)};
+  for (const Seg& s : on)
+    lo = {std::min(lo.x, s.lo.x), std::min(lo.y, s.lo.y)}, hi = {std::max(hi.x, s.hi.x), std::max(hi.y, s.hi.y)};
   for_each_segment(loops, pad, active, false, lo, hi, [&](const Seg& t) {
     for (std::int64_t y = g.iy(t.lo.y); y <= g.iy(t.hi.y); ++y)
       for (std::int64_t x = g.ix(t.lo.x); x <= g.ix(t.hi.x); ++x) {

@@ -69,10 +69,9 @@ std::vector<NearMiss> find_near_pairs(std::span<const std::vector<Vec2>> loops,
 /// loops as they were, each place numbered as it is now (a loop renumbered or merged into
 /// another: its records renumbered, in any order), and active[l][s] marks each segment
 /// that is new or whose pairs may have changed (its geometry, width, or its distance along
-/// its loop to the other segment of a pair); a place past its loop's end is gone. The records of two inactive segments are
-/// those of `before` (the one-loop filter made again), the others are searched
-/// (find_near_pairs). The result is find_near_misses(loops, width), record for record, at
-/// the cost of the active segments and the segments near them.
+/// its loop to the other segment of a pair); a place past its loop's end is gone. The records of two inactive segments
+/// are those of `before` (the one-loop filter made again), the others are searched (find_near_pairs). The result is
+/// find_near_misses(loops, width), record for record, at the cost of the active segments and the segments near them.
 std::vector<NearMiss> find_near_misses_again(std::span<const std::vector<Vec2>> loops,
                                              std::span<const std::vector<double>> width,
                                              std::span<const std::vector<char>> active, std::vector<NearMiss> before);

@@ -876,7 +876,8 @@ std::vector<NearMiss> round_near_misses(Work& w) {
   }
   w.segs = std::move(segs);
   std::size_t searched = 0;
-  std::vector<NearMiss> near = find_near_pairs(w.polys, w.width, active, &searched, resolve_thread_count(w.opt.threads));
+  std::vector<NearMiss> near =
+      find_near_pairs(w.polys, w.width, active, &searched, resolve_thread_count(w.opt.threads));
   w.stats.near_searched += searched;
   std::vector<std::vector<char>>().swap(active);
   // The search's grid and per-chunk lists are freed: their pages go back before the round's
@@ -978,7 +979,8 @@ std::vector<Candidate> round_candidates(Work& w) {
     const Vec2 mid = 0.25 * (pa[m.seg_a] + pa[(m.seg_a + 1) % pa.size()] + pb[m.seg_b] + pb[(m.seg_b + 1) % pb.size()]);
     cands.push_back({d, m.loop_a, m.seg_a, m.loop_b, m.seg_b, mid});
   }
-  std::stable_sort(cands.begin(), cands.end(), [](const Candidate& x, const Candidate& y) { return x.width < y.width; });
+  std::stable_sort(cands.begin(), cands.end(),
+                   [](const Candidate& x, const Candidate& y) { return x.width < y.width; });
   return cands;
 }
 
@@ -1143,7 +1145,8 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
       if (sharp && !w.flat[l].dead) trim_dam_wedges(w, w.flat[l], ends, near, made);
     }
     if (dropped == 0)   // a cut that only trims narrow water is listed as NarrowWater
-      log.push_back({RepairKind::ClosedPassage, info.record, info.id, unit_sphere().lonlat_from_param(c.where), c.width});
+      log.push_back(
+          {RepairKind::ClosedPassage, info.record, info.id, unit_sphere().lonlat_from_param(c.where), c.width});
     any = true;
   }
   return put_back_refused(w, refused, grid, made) || any;
@@ -1164,7 +1167,8 @@ std::uint32_t insert_on(Work& w, FlatLoop& f, std::size_t j, Vec2 x) {
   w.pool.added_ll.push_back(unit_sphere().lonlat_from_param(x));
   w.pool.added_uv.push_back(x);
   w.pool.added_gamma.push_back(ga + t * (gb - ga));
-  SM_ASSERT(w.pool.added_uv.size() <= kMaxIndex, "close_passages: more dam points than 31-bit indices (passages.cpp, insert_on)");
+  SM_ASSERT(w.pool.added_uv.size() <= kMaxIndex,
+            "close_passages: more dam points than 31-bit indices (passages.cpp, insert_on)");
   const std::uint32_t at =
       w.add_node({kAdded, w.nodes[a].src, static_cast<std::uint32_t>(w.pool.added_uv.size() - 1) & kMaxIndex, true});
   w.next[a] = at;
@@ -1280,12 +1284,13 @@ Result<std::size_t> place_dam(Work& w, geo::LonLat p_ll, geo::LonLat q_ll, std::
       if (pb[j] == out.x) jb = j;
     if (ja == pa.size() || jb == pb.size() ||
         !cut_is_clean(w.flat, fa2.p(ja), fa2.p(ja + 1), fb2.p(jb), fb2.p(jb + 1), {}))
-      return CoastError{coast_option_string(CoastOpt::Dams), -1,
-                        fmt::format("the dam from (lon {:.6f}, lat {:.6f}) to (lon {:.6f}, lat {:.6f}) cannot close the "
-                                    "water it crosses without crossing another coastline: move its ends onto the "
-                                    "nearest land on each side",
-                                    p_ll.lon, p_ll.lat, q_ll.lon, q_ll.lat),
-                        unit_sphere().lonlat_from_param(0.5 * (in.x + out.x))};
+      return CoastError{
+          coast_option_string(CoastOpt::Dams), -1,
+          fmt::format("the dam from (lon {:.6f}, lat {:.6f}) to (lon {:.6f}, lat {:.6f}) cannot close the "
+                      "water it crosses without crossing another coastline: move its ends onto the "
+                      "nearest land on each side",
+                      p_ll.lon, p_ll.lat, q_ll.lon, q_ll.lat),
+          unit_sphere().lonlat_from_param(0.5 * (in.x + out.x))};
     const DamInfo info = info_of(w, fa2.node(ja));
     const CutResult r = cut(w, in.loop, ja, out.loop, jb);
     for (std::uint32_t l : r.new_loops) drop_if_narrow(w, l, log);
@@ -1429,7 +1434,8 @@ std::array<std::set<UvKey>, 2> banks_of(const Work& w, std::uint32_t la, std::ui
           continue;
         }
         bool take = uv_point_segment_metres(p, f.p(next), f.p(next + 1), R) <= reach;
-        for (auto it = segs[1 - i].begin(); !take && it != segs[1 - i].end(); ++it) take = seg_m(f, next, g, *it) <= across;
+        for (auto it = segs[1 - i].begin(); !take && it != segs[1 - i].end(); ++it)
+          take = seg_m(f, next, g, *it) <= across;
         if (!take) {
           open[i][d] = false;
           continue;
@@ -1452,11 +1458,12 @@ Result<bool> find_gates(Work& w, std::vector<RepairEntry>& log) {
     const Vec2 p = unit_sphere().param_from_lonlat(ll);
     const Nearest a = nearest_coast(w, p, {0, 0});
     auto fail = [&](std::string why) {
-      return CoastError{coast_option_string(CoastOpt::KeepOpen), -1, fmt::format("the KeepOpen point (lon {:.6f}, lat {:.6f}) {}", ll.lon, ll.lat, why),
-                        ll};
+      return CoastError{coast_option_string(CoastOpt::KeepOpen), -1,
+                        fmt::format("the KeepOpen point (lon {:.6f}, lat {:.6f}) {}", ll.lon, ll.lat, why), ll};
     };
     if (!std::isfinite(a.d2)) return fail("has no coastline near it");
-    if (a.d2 == 0 || !in_water(w.flat[a.loop], a.seg, a.at, p)) return fail("lies on land: put it in the water of the passage");
+    if (a.d2 == 0 || !in_water(w.flat[a.loop], a.seg, a.at, p))
+      return fail("lies on land: put it in the water of the passage");
     const Nearest b = nearest_coast(w, p, a.at - p);
     if (!std::isfinite(b.d2)) return fail("has no coast across from its nearest coast: it is in no passage");
     Gate g;
@@ -1507,11 +1514,12 @@ Result<bool> close_passages(std::vector<WorkCurve>& curves, std::vector<WorkLoop
     auto placed = place_dam(w, p, q, log);
     if (!placed) return placed.error();
     if (*placed == 0)
-      return CoastError{coast_option_string(CoastOpt::Dams), -1,
-                        fmt::format("the dam from (lon {:.6f}, lat {:.6f}) to (lon {:.6f}, lat {:.6f}) crosses no water: "
-                                    "both ends and the line between them lie on land (or in one stretch of water)",
-                                    p.lon, p.lat, q.lon, q.lat),
-                        p};
+      return CoastError{
+          coast_option_string(CoastOpt::Dams), -1,
+          fmt::format("the dam from (lon {:.6f}, lat {:.6f}) to (lon {:.6f}, lat {:.6f}) crosses no water: "
+                      "both ends and the line between them lie on land (or in one stretch of water)",
+                      p.lon, p.lat, q.lon, q.lat),
+          p};
   }
   // Each round closes at most one passage per loop, and every cut either drops water or
   // joins/splits loops; the bound only guards against a geometry that would not settle.

@@ -181,10 +181,11 @@ Result<std::vector<Ring>> splice_patch(const std::vector<Ring>& base, const std:
   for (std::size_t i = 0; i < local.size(); ++i) {
     const Ring& r = local[i];
     if (!r.closed || is_water(r.level) || r.wraps_pole)
-      return CoastError{"patch", static_cast<std::int64_t>(r.record),
-                        "a patch shoreline must be closed land rings (level 1): this one is open, a lake or round a pole",
-                        r.pts.empty() ? std::optional<geo::LonLat>{} : std::optional<geo::LonLat>{r.pts.front()},
-                        coast_option_string(CoastOpt::Patch)};
+      return CoastError{
+          "patch", static_cast<std::int64_t>(r.record),
+          "a patch shoreline must be closed land rings (level 1): this one is open, a lake or round a pole",
+          r.pts.empty() ? std::optional<geo::LonLat>{} : std::optional<geo::LonLat>{r.pts.front()},
+          coast_option_string(CoastOpt::Patch)};
     const std::size_t before = chains.size();
     if (!cut_ring(r, base.size() + i, box, true, chains)) {
       if (!strictly_outside(r.pts[0], box)) {   // wholly inside: an island of the patch
@@ -207,13 +208,14 @@ Result<std::vector<Ring>> splice_patch(const std::vector<Ring>& base, const std:
   const PerimeterLink link = link_along_perimeter(ends, inside_filled, outside_filled);
   if (link.error != PerimeterLinkError::None) {
     const PatchChain& b = chains[link.bad_chain];
-    return CoastError{"patch", static_cast<std::int64_t>(b.ring < base.size() ? base[b.ring].record : local[b.ring - base.size()].record),
-                      fmt::format("the {} shoreline and the box do not close into land rings here ({})",
-                                  b.outside ? "base" : "patch",
-                                  link.error == PerimeterLinkError::Inconsistent
-                                      ? "two shorelines enter or leave the box in a row: orientations disagree"
-                                      : "both sides of the box are land or both water at a shoreline's end"),
-                      b.pts.back(), coast_option_string(CoastOpt::Patch)};
+    return CoastError{
+        "patch",
+        static_cast<std::int64_t>(b.ring < base.size() ? base[b.ring].record : local[b.ring - base.size()].record),
+        fmt::format("the {} shoreline and the box do not close into land rings here ({})", b.outside ? "base" : "patch",
+                    link.error == PerimeterLinkError::Inconsistent
+                        ? "two shorelines enter or leave the box in a row: orientations disagree"
+                        : "both sides of the box are land or both water at a shoreline's end"),
+        b.pts.back(), coast_option_string(CoastOpt::Patch)};
   }
   // Walk: open chains (base polylines cut elsewhere) first, then the closed rings.
   std::vector<char> used(chains.size(), 0);

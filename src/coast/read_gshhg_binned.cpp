@@ -107,7 +107,9 @@ class NcFile {
     else if constexpr (std::is_same_v<T, double>) return NC_DOUBLE;
     else return NC_BYTE;
   }
-  int get(int var, std::size_t start, std::size_t count, int* p) const { return nc_get_vara_int(id_, var, &start, &count, p); }
+  int get(int var, std::size_t start, std::size_t count, int* p) const {
+    return nc_get_vara_int(id_, var, &start, &count, p);
+  }
   int get(int var, std::size_t start, std::size_t count, short* p) const {
     return nc_get_vara_short(id_, var, &start, &count, p);
   }
@@ -352,8 +354,10 @@ void read_points(const NcFile& nc, const BinnedTables& t, const std::vector<Piec
   pts.dy.assign(static_cast<std::size_t>(t.n_pt), 0);
   for (const auto& [a, e] : runs) {   // straight into place: the points are 2 x 22 MB at full resolution
     const auto at = static_cast<std::size_t>(a), count = static_cast<std::size_t>(e - a);
-    nc.read("Relative_longitude_from_SW_corner_of_bin", static_cast<std::uint64_t>(t.n_pt), at, count, pts.dx.data() + at);
-    nc.read("Relative_latitude_from_SW_corner_of_bin", static_cast<std::uint64_t>(t.n_pt), at, count, pts.dy.data() + at);
+    nc.read("Relative_longitude_from_SW_corner_of_bin", static_cast<std::uint64_t>(t.n_pt), at, count,
+            pts.dx.data() + at);
+    nc.read("Relative_latitude_from_SW_corner_of_bin", static_cast<std::uint64_t>(t.n_pt), at, count,
+            pts.dy.data() + at);
   }
 }
 
@@ -372,7 +376,8 @@ void join_pieces(const std::vector<Piece>& pieces, std::size_t p0, std::size_t p
   auto key_at = [&](const At& a) { return grid.key(a.bin, pts.ux(a.i), pts.uy(a.i)); };
   const std::size_t n = p1 - p0;
   starts.clear();
-  for (std::size_t k = p0; k < p1; ++k) starts.emplace_back(pts.start_key(pieces[k]), static_cast<std::uint32_t>(k - p0));
+  for (std::size_t k = p0; k < p1; ++k)
+    starts.emplace_back(pts.start_key(pieces[k]), static_cast<std::uint32_t>(k - p0));
   std::sort(starts.begin(), starts.end());
   used.assign(n, 0);
   cycles.clear();
@@ -383,7 +388,8 @@ void join_pieces(const std::vector<Piece>& pieces, std::size_t p0, std::size_t p
     std::vector<At>& chain = cycles.emplace_back();
     const Piece& f = pieces[p0 + first];
     if (f.closed && n != 1)
-      throw Fail{fmt::format("polygon {} has a piece closed inside bin {} and {} others", f.polygon, f.bin, n - 1), f.seg};
+      throw Fail{fmt::format("polygon {} has a piece closed inside bin {} and {} others", f.polygon, f.bin, n - 1),
+                 f.seg};
     const std::uint64_t ring_start = pts.start_key(f);
     std::size_t cur = first;
     for (std::size_t step = 0;; ++step) {
@@ -510,7 +516,9 @@ Coastline read(const std::string& path, const GshhgBinnedOptions& opt, std::uint
 
 }  // namespace
 
-bool is_gshhg_resolution(std::string_view r) { return r.size() == 1 && std::string_view("clihf").find(r[0]) != std::string_view::npos; }
+bool is_gshhg_resolution(std::string_view r) {
+  return r.size() == 1 && std::string_view("clihf").find(r[0]) != std::string_view::npos;
+}
 
 std::string gshhg_binned_file(char resolution, std::string_view dir) {
   return fmt::format("{}/binned_GSHHS_{}.nc", dir, resolution);

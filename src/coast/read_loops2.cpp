@@ -26,10 +26,12 @@ Result<Coastline> read_loops2_string(std::string_view text, const std::string& n
   if (opt.coordinate == Loops2Coordinate::Utm) {
     const double a = opt.utm_equatorial_radius, b = opt.utm_polar_radius;
     if (!(a > 0 && b > 0 && b <= a) || opt.utm_zone < 1 || opt.utm_zone > 60)
-      return CoastError{name, -1, fmt::format("UTM needs a zone 1..60 (got {}) and radii a >= b > 0", opt.utm_zone), {}};
+      return CoastError{
+          name, -1, fmt::format("UTM needs a zone 1..60 (got {}) and radii a >= b > 0", opt.utm_zone), {}};
     tm.emplace(a, (a - b) / a, 0.9996);
   }
-  if (!text.empty() && text.back() != '\n' && text.find_first_not_of(" \t\r", text.rfind('\n') + 1) != std::string_view::npos)
+  if (!text.empty() && text.back() != '\n' &&
+      text.find_first_not_of(" \t\r", text.rfind('\n') + 1) != std::string_view::npos)
     return CoastError{name, -1, "the last line has no end of line: the file looks truncated", {}};
   Coastline out;
   out.file = name;

@@ -103,17 +103,18 @@ Result<RegionPolygon> RegionPolygon::make(const std::vector<geo::LonLat>& given)
   for (std::size_t i = 0; i < n; ++i) {
     const geo::LonLat p = given[i];
     if (!std::isfinite(p.lon) || !std::isfinite(p.lat) || p.lat < -90 || p.lat > 90)
-      return polygon_error(fmt::format("region polygon vertex {} {}: the latitude must lie in [-90, 90]", i + 1, where_text(p)),
-                          p);
+      return polygon_error(
+          fmt::format("region polygon vertex {} {}: the latitude must lie in [-90, 90]", i + 1, where_text(p)), p);
     const geo::LonLat q = given[(i + 1) % n];
     if (arc_deg(p, q) < 1e-9)
-      return polygon_error(fmt::format("region polygon vertices {} and {} are the same point {}", i + 1, (i + 1) % n + 1,
-                                      where_text(p)),
-                          p);
+      return polygon_error(
+          fmt::format("region polygon vertices {} and {} are the same point {}", i + 1, (i + 1) % n + 1, where_text(p)),
+          p);
     sum += unit_of(p);
   }
   RegionPolygon poly;
-  if (norm(sum) < 1e-9) return polygon_error("the region polygon's vertices have no centre (they spread round the sphere)");
+  if (norm(sum) < 1e-9)
+    return polygon_error("the region polygon's vertices have no centre (they spread round the sphere)");
   poly.c_ = sum / norm(sum);
   Vec3 east = cross(Vec3{0, 0, 1}, poly.c_);
   if (norm(east) < 1e-9) east = {0, 1, 0};   // centre at a pole: any east will do
@@ -139,10 +140,11 @@ Result<RegionPolygon> RegionPolygon::make(const std::vector<geo::LonLat>& given)
       const bool neighbours = j == i + 1 || (i == 0 && j == n - 1);
       const bool bad = neighbours ? k.kind == SegmentContactKind::Overlap : k.kind != SegmentContactKind::None;
       if (bad)
-        return polygon_error(fmt::format("the region polygon crosses itself: edges {} and {} meet (vertex {} {} to "
-                                        "vertex {}, and vertex {} to vertex {})",
-                                        i + 1, j + 1, i + 1, where_text(given[i]), (i + 1) % n + 1, j + 1, (j + 1) % n + 1),
-                            given[i]);
+        return polygon_error(
+            fmt::format("the region polygon crosses itself: edges {} and {} meet (vertex {} {} to "
+                        "vertex {}, and vertex {} to vertex {})",
+                        i + 1, j + 1, i + 1, where_text(given[i]), (i + 1) % n + 1, j + 1, (j + 1) % n + 1),
+            given[i]);
     }
   const Sign o = ring_orientation(poly.gn_);
   if (o == Sign::Zero) return polygon_error("the region polygon has no area");
@@ -158,8 +160,9 @@ Result<RegionPolygon> RegionPolygon::make(const std::vector<geo::LonLat>& given)
   }
   for (const geo::LonLat pole : {geo::LonLat{0, 90}, geo::LonLat{0, -90}})
     if (poly.contains(pole))
-      return polygon_error(fmt::format("the region polygon holds the {} Pole: use a box reaching the pole (a polar cap)",
-                                      pole.lat > 0 ? "North" : "South"));
+      return polygon_error(
+          fmt::format("the region polygon holds the {} Pole: use a box reaching the pole (a polar cap)",
+                      pole.lat > 0 ? "North" : "South"));
   return poly;
 }
 

@@ -201,8 +201,10 @@ bool unite_islands(std::vector<WorkCurve>& curves, WorkLoop& la, WorkLoop& lb, c
   if (m < 2 || m % 2) return false;
   std::vector<std::size_t> by_a(m), by_b(m), pos_a(m), pos_b(m);
   for (std::size_t i = 0; i < m; ++i) by_a[i] = by_b[i] = i;
-  std::sort(by_a.begin(), by_a.end(), [&](std::size_t i, std::size_t j) { return std::tie(xs[i].ia, xs[i].ta) < std::tie(xs[j].ia, xs[j].ta); });
-  std::sort(by_b.begin(), by_b.end(), [&](std::size_t i, std::size_t j) { return std::tie(xs[i].ib, xs[i].tb) < std::tie(xs[j].ib, xs[j].tb); });
+  std::sort(by_a.begin(), by_a.end(),
+            [&](std::size_t i, std::size_t j) { return std::tie(xs[i].ia, xs[i].ta) < std::tie(xs[j].ia, xs[j].ta); });
+  std::sort(by_b.begin(), by_b.end(),
+            [&](std::size_t i, std::size_t j) { return std::tie(xs[i].ib, xs[i].tb) < std::tie(xs[j].ib, xs[j].tb); });
   for (std::size_t i = 0; i < m; ++i) pos_a[by_a[i]] = i, pos_b[by_b[i]] = i;
   std::size_t start = m;
   for (std::size_t i = 0; i < m && start == m; ++i)
@@ -432,7 +434,8 @@ struct RoundChanges {
 
  private:
   static void marked_segments(Marks& m, const std::vector<WorkCurve>& curves, const std::vector<WorkLoop>& loops,
-                              const std::vector<std::vector<LoopVertexRef>>& refs, std::vector<std::vector<char>>& out) {
+                              const std::vector<std::vector<LoopVertexRef>>& refs,
+                              std::vector<std::vector<char>>& out) {
     out.resize(loops.size());
     for (auto& a : m.at) {
       std::sort(a.begin(), a.end());
@@ -526,7 +529,8 @@ bool spline_pass(std::vector<WorkCurve>& curves, const std::vector<WorkLoop>& lo
     }
     bool any = false;
     const std::size_t first_split = splits.size();
-    for (const auto& [l, s] : {std::pair{o.loop_a, o.seg_a}, std::pair{o.loop_b, o.seg_b}}) {   // inserts are made unique
+    for (const auto& [l, s] :
+         {std::pair{o.loop_a, o.seg_a}, std::pair{o.loop_b, o.seg_b}}) {  // inserts are made unique
       const auto n = static_cast<std::uint32_t>(polys[l].size());
       for (std::uint32_t d : {n - 1, 0u, 1u}) {   // the span's control segments s-1, s, s+1
         const std::uint32_t v = (s + d) % n;

@@ -72,7 +72,8 @@ class SegmentGrid {
     ++stamp_;
     const auto [x0, y0] = at(lo);
     const auto [x1, y1] = at(hi);
-    auto visit = [&](const std::pair<std::uint32_t, std::uint32_t>* b, const std::pair<std::uint32_t, std::uint32_t>* e) {
+    auto visit = [&](const std::pair<std::uint32_t, std::uint32_t>* b,
+                     const std::pair<std::uint32_t, std::uint32_t>* e) {
       for (; b != e; ++b) {
         const auto [l, j] = *b;
         std::uint32_t& mark = seen_[first_[l] + j];
@@ -87,7 +88,8 @@ class SegmentGrid {
     for (std::uint32_t y = y0; y <= y1; ++y)
       for (std::uint32_t x = x0; x <= x1; ++x) {
         const std::size_t c = std::size_t{y} * side_ + x;
-        const auto fine = std::lower_bound(fine_.begin(), fine_.end(), c, [](const Fine& g, std::size_t k) { return g.cell < k; });
+        const auto fine =
+            std::lower_bound(fine_.begin(), fine_.end(), c, [](const Fine& g, std::size_t k) { return g.cell < k; });
         if (fine == fine_.end() || fine->cell != c) {
           if (visit(entries_.data() + start_[c], entries_.data() + start_[c + 1])) return true;
           continue;
@@ -162,7 +164,8 @@ class SegmentGrid {
     };
     each_fine_cell([&](std::size_t k, std::pair<std::uint32_t, std::uint32_t>) { ++fine_start_[k + 1]; });
     for (std::size_t k = 1; k < fine_start_.size(); ++k) fine_start_[k] += fine_start_[k - 1];
-    SM_ASSERT(fine_start_.back() < 0xFFFFFFFFu, "SegmentGrid: more fine cell entries than 32-bit offsets (coast/segment_grid.h)");
+    SM_ASSERT(fine_start_.back() < 0xFFFFFFFFu,
+              "SegmentGrid: more fine cell entries than 32-bit offsets (coast/segment_grid.h)");
     fine_entries_.resize(fine_start_.back());
     std::vector<std::uint32_t> fill(fine_start_.begin(), fine_start_.end() - 1);
     each_fine_cell([&](std::size_t k, std::pair<std::uint32_t, std::uint32_t> en) { fine_entries_[fill[k]++] = en; });

@@ -65,7 +65,8 @@ std::optional<CoastError> check_record(const fs::path& file, std::int64_t k, std
   if (words < kMinContentWords)
     return error_in(file, k, fmt::format("{} claims a record of {} bytes, less than its 4-byte shape type", what,
                                          2 * words));
-  const std::uint64_t end = static_cast<std::uint64_t>(offset) + kRecordHeaderBytes + 2 * static_cast<std::uint64_t>(words);
+  const std::uint64_t end =
+      static_cast<std::uint64_t>(offset) + kRecordHeaderBytes + 2 * static_cast<std::uint64_t>(words);
   if (offset < static_cast<std::int64_t>(kHeaderBytes) || end > shp_claimed)
     return error_in(file, k, fmt::format("{} claims a record at bytes {} to {}, outside the {} bytes of records "
                                          "the .shp header claims", what, offset, end, shp_claimed));
@@ -101,7 +102,8 @@ std::optional<CoastError> check_shapefile_sizes(const fs::path& shp, const fs::p
   std::uint64_t offset = kHeaderBytes;
   for (std::int64_t k = 0; offset < shp_claimed; ++k) {
     unsigned char h[kRecordHeaderBytes];
-    if (offset + kRecordHeaderBytes > shp_claimed || std::fseek(shp_f.get(), static_cast<long>(offset), SEEK_SET) != 0 ||
+    if (offset + kRecordHeaderBytes > shp_claimed ||
+        std::fseek(shp_f.get(), static_cast<long>(offset), SEEK_SET) != 0 ||
         std::fread(h, 1, sizeof h, shp_f.get()) != sizeof h)
       return error_in(shp, k, fmt::format("the record header at byte {} runs past the {} bytes the header claims",
                                           offset, shp_claimed));

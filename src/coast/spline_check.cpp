@@ -151,7 +151,9 @@ Vec2 third(Vec2 a, Vec2 b) { return a == b ? a : (2.0 * a + b) / 3.0; }   // a t
 Vec2 joint(Vec2 a, Vec2 b, Vec2 c) { return a == b && b == c ? b : (a + 4.0 * b + c) / 6.0; }
 
 // The span of the uniform cubic B-spline on control points p0..p3 as a cubic Bezier.
-Bez to_bezier(Vec2 p0, Vec2 p1, Vec2 p2, Vec2 p3) { return {joint(p0, p1, p2), third(p1, p2), third(p2, p1), joint(p1, p2, p3)}; }
+Bez to_bezier(Vec2 p0, Vec2 p1, Vec2 p2, Vec2 p3) {
+  return {joint(p0, p1, p2), third(p1, p2), third(p2, p1), joint(p1, p2, p3)};
+}
 
 void split(const Bez& b, Bez& l, Bez& r) {
   const Vec2 ab = mid(b[0], b[1]), bc = mid(b[1], b[2]), cd = mid(b[2], b[3]);
@@ -346,14 +348,17 @@ struct LoopSpans {
   void each(Want&& want, F&& f) const {
     if (L.periodic) {
       for (std::uint32_t s = 0; s < n; ++s)
-        if (want(s)) f(s, s, to_bezier(L.pts[(s + n - 1) % n], L.pts[s], L.pts[(s + 1) % n], L.pts[(s + 2) % n]), (s + 1) % n);
+        if (want(s))
+          f(s, s, to_bezier(L.pts[(s + n - 1) % n], L.pts[s], L.pts[(s + 1) % n], L.pts[(s + 2) % n]), (s + 1) % n);
       return;
     }
     for (std::size_t k = 0; k < starts.size(); ++k) {
       const std::uint32_t a = starts[k];
       const std::uint32_t b = k + 1 < starts.size() ? starts[k + 1] : n;
       const std::uint32_t m = b - a + 1;
-      auto q = [&](std::int64_t j) { return L.pts[(a + static_cast<std::uint32_t>(std::clamp<std::int64_t>(j, 0, m - 1))) % n]; };
+      auto q = [&](std::int64_t j) {
+        return L.pts[(a + static_cast<std::uint32_t>(std::clamp<std::int64_t>(j, 0, m - 1))) % n];
+      };
       for (std::uint32_t j = 0; j <= m; ++j) {
         const std::uint32_t seg = a + std::clamp<std::uint32_t>(j, 1, m - 1) - 1;
         if (!want(seg)) continue;
@@ -418,11 +423,17 @@ std::vector<std::vector<char>> blocks_near_active(std::span<const SplineLoop> lo
   // The active boxes in a uniform grid, each block looked up in the cells its box covers.
   Box all = active[0];
   for (const Box& x : active)
-    all = {{std::min(all.lo.x, x.lo.x), std::min(all.lo.y, x.lo.y)}, {std::max(all.hi.x, x.hi.x), std::max(all.hi.y, x.hi.y)}};
+    all = {{std::min(all.lo.x, x.lo.x), std::min(all.lo.y, x.lo.y)},
+           {std::max(all.hi.x, x.hi.x), std::max(all.hi.y, x.hi.y)}};
   constexpr std::int64_t kCells = 256;   // a side: at most 65536 cells
-  const double cx = std::max((all.hi.x - all.lo.x) / kCells, 1e-300), cy = std::max((all.hi.y - all.lo.y) / kCells, 1e-300);
-  auto ix = [&](double x) { return std::clamp<std::int64_t>(static_cast<std::int64_t>((x - all.lo.x) / cx), 0, kCells - 1); };
-  auto iy = [&](double y) { return std::clamp<std::int64_t>(static_cast<std::int64_t>((y - all.lo.y) / cy), 0, kCells - 1); };
+  const double cx = std::max((all.hi.x - all.lo.x) / kCells, 1e-300),
+               cy = std::max((all.hi.y - all.lo.y) / kCells, 1e-300);
+  auto ix = [&](double x) {
+    return std::clamp<std::int64_t>(static_cast<std::int64_t>((x - all.lo.x) / cx), 0, kCells - 1);
+  };
+  auto iy = [&](double y) {
+    return std::clamp<std::int64_t>(static_cast<std::int64_t>((y - all.lo.y) / cy), 0, kCells - 1);
+  };
   std::vector<std::uint32_t> cell_first(kCells * kCells + 1, 0), items;
   for (int pass = 0; pass < 2; ++pass) {   // count, then place (a counting sort on cells)
     if (pass == 1) {
@@ -444,7 +455,8 @@ std::vector<std::vector<char>> blocks_near_active(std::span<const SplineLoop> lo
     bool hit = false;
     for (std::int64_t y = iy(x.lo.y); y <= iy(x.hi.y) && !hit; ++y)
       for (std::int64_t c = y * kCells + ix(x.lo.x); c <= y * kCells + ix(x.hi.x) && !hit; ++c)
-        for (std::uint32_t j = cell_first[static_cast<std::size_t>(c)]; j < cell_first[static_cast<std::size_t>(c) + 1]; ++j)
+        for (std::uint32_t j = cell_first[static_cast<std::size_t>(c)]; j < cell_first[static_cast<std::size_t>(c) + 1];
+             ++j)
           if (boxes_meet(x, active[items[j]])) {
             hit = true;
             break;
@@ -545,7 +557,8 @@ std::vector<HullOverlap> find_spline_crossings(std::span<const SplineLoop> loops
     double fallback = 0;
     if (L.tol.size() != n) {
       Vec2 lo = L.pts[0], hi = L.pts[0];
-      for (Vec2 p : L.pts) lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)}, hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+      for (Vec2 p : L.pts)
+        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)}, hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
       fallback = 1e-7 * std::max(hi.x - lo.x, hi.y - lo.y);
     }
     const LoopSpans ls(L);
@@ -596,9 +609,10 @@ std::vector<HullOverlap> find_spline_crossings(std::span<const SplineLoop> loops
   std::sort(out.begin(), out.end(), [](const HullOverlap& a, const HullOverlap& b) {
     return std::tuple(place_pair_key(a), a.where.x, a.where.y) < std::tuple(place_pair_key(b), b.where.x, b.where.y);
   });
-  out.erase(std::unique(out.begin(), out.end(),
-                        [](const HullOverlap& a, const HullOverlap& b) { return place_pair_key(a) == place_pair_key(b); }),
-            out.end());
+  out.erase(
+      std::unique(out.begin(), out.end(),
+                  [](const HullOverlap& a, const HullOverlap& b) { return place_pair_key(a) == place_pair_key(b); }),
+      out.end());
   return out;
 }
 

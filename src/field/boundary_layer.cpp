@@ -163,7 +163,8 @@ BoundaryLayerParams boundary_layer_params(const Options& o, int id) {
   p.excluded_surfaces = tags(o, "ExcludedSurfacesList", id);
   for (double v : o.list("FanPointsSizesList")) {
     if (v != std::floor(v) || v < 0 || v > kMaxBoundaryLayers)
-      bad(id, "FanPointsSizesList", fmt::format("{:g} is not a count of fan elements (0 to {})", v, kMaxBoundaryLayers));
+      bad(id, "FanPointsSizesList",
+          fmt::format("{:g} is not a count of fan elements (0 to {})", v, kMaxBoundaryLayers));
     p.fan_sizes.push_back(static_cast<int>(v));
   }
   const std::vector<double>& sizes = o.list("SizesList");

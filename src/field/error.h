@@ -47,7 +47,7 @@ class FieldError : public std::runtime_error {
   std::string file;           ///< FileError: the path
   std::string name;           ///< UnknownKind: the kind named; UnknownOption, BadValue: the field's kind
   std::string expression;     ///< ParseError: the MathEval expression
-  std::string reason;         ///< FileError, ParseError, BadValue Option: what is wrong, after the file, column or option
+  std::string reason;  ///< FileError, ParseError, BadValue Option: what is wrong, after the file, column or option
   int column = -1;            ///< ParseError: 1-based column in the expression
   std::optional<Vec3> point;  ///< BadValue from an evaluation: where the field was evaluated
   /// WrongOptionType: the type the option takes and the type of the value given (`name` is

@@ -306,7 +306,8 @@ void KdTree::nearest_capped(std::span<const Vec3> queries, std::span<const doubl
   for (std::size_t k = 0; k < queries.size(); ++k) {
     const std::size_t i = order.empty() ? k : order[k];
     const Vec3& q = queries[i];
-    const double far2 = far2_of.empty() ? std::numeric_limits<double>::infinity() : far2_of[far2_of.size() == 1 ? 0 : i];
+    const double far2 =
+        far2_of.empty() ? std::numeric_limits<double>::infinity() : far2_of[far2_of.size() == 1 ? 0 : i];
     double best2 = far2;
     std::uint32_t best = NearTree::kNoTie;
     bool found = false;

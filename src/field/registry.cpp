@@ -16,11 +16,12 @@ const std::vector<KindSpec>& kinds() {
   // Built once, immutable afterwards (thread-safe static initialisation).
   static const std::vector<KindSpec> all = [] {
     std::vector<KindSpec> v = {
-        ball_kind(),       bathymetry_kind(), boundary_layer_kind(), box_kind(),        channel_width_kind(),        constant_kind(),
-        curvature_kind(),  cylinder_kind(),   distance_kind(),   gradation_kind(),
-        gradient_kind(),   laplacian_kind(),  lonlat_kind(),     math_eval_kind(),
-        max_eigen_hessian_kind(), max_kind(), mean_kind(),       min_kind(),       min_aniso_kind(),
-        param_kind(),      restrict_kind(),   structured_kind(), threshold_kind(),  time_step_kind(),
+        ball_kind(),          bathymetry_kind(), boundary_layer_kind(),    box_kind(),
+        channel_width_kind(), constant_kind(),   curvature_kind(),         cylinder_kind(),
+        distance_kind(),      gradation_kind(),  gradient_kind(),          laplacian_kind(),
+        lonlat_kind(),        math_eval_kind(),  max_eigen_hessian_kind(), max_kind(),
+        mean_kind(),          min_kind(),        min_aniso_kind(),         param_kind(),
+        restrict_kind(),      structured_kind(), threshold_kind(),         time_step_kind(),
     };
     std::sort(v.begin(), v.end(),
               [](const KindSpec& a, const KindSpec& b) { return a.name < b.name; });

@@ -66,8 +66,8 @@ namespace {
 
 class MinOnEntities final : public SizeField {
  public:
-  MinOnEntities(std::shared_ptr<const SizeField> base, std::shared_ptr<const ChannelWidthField> extra, std::set<int> curves,
-                std::set<int> surfaces)
+  MinOnEntities(std::shared_ptr<const SizeField> base, std::shared_ptr<const ChannelWidthField> extra,
+                std::set<int> curves, std::set<int> surfaces)
       : base_(std::move(base)), extra_(std::move(extra)), curves_(std::move(curves)), surfaces_(std::move(surfaces)) {}
 
   void eval(std::span<const Vec3> pts, std::span<double> h) const override { run(nullptr, pts, h); }

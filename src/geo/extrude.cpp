@@ -329,7 +329,8 @@ GeoResult<int> Model::extrude_surface_entity(int s, const ExtrudeSpec& spec, int
       if (auto it = merged.find(ex.begin_curve); ex.begin_curve && it != merged.end()) ex.begin_curve = it->second;
       if (auto it = merged.find(ex.end_curve); ex.end_curve && it != merged.end()) ex.end_curve = it->second;
       if (key.first == 1 && !ex.body)
-        if (auto it = merged.find(std::abs(ex.source)); it != merged.end()) ex.source = ex.source > 0 ? it->second : -it->second;
+        if (auto it = merged.find(std::abs(ex.source)); it != merged.end())
+          ex.source = ex.source > 0 ? it->second : -it->second;
     }
   }
   return tt;
@@ -381,7 +382,7 @@ GeoResult<std::vector<DimTag>> Model::extrude(const std::vector<DimTag>& entitie
       out.push_back({3, vol});
       if (spec.return_lateral)
         for (int s : volumes_.at(vol).surfaces)
-          if (std::abs(s) != e.tag && std::abs(s) != *top) out.push_back({2, std::abs(s)});   // listed unsigned, as Gmsh
+          if (std::abs(s) != e.tag && std::abs(s) != *top) out.push_back({2, std::abs(s)});  // listed unsigned, as Gmsh
     } else {
       return make_error(GeoErrorId::CannotExtrudeVolume, EntityKind::Volume, {e.tag});
     }

@@ -469,7 +469,8 @@ GeoStatus Model::add_plane_surface(int tag, const std::vector<int>& loops) {
   const SurfaceGeometry* g = s.geometry ? &geometries_.at(s.geometry) : nullptr;
   std::vector<LoopPolygon> probes;   // each loop probed once, then tried as a hole of each outer candidate
   probes.reserve(loops.size());
-  for (std::size_t i = 1; i < loops.size(); ++i) probes.push_back(probe_loop(*this, loops_.at(std::abs(loops[i])), g, 16));
+  for (std::size_t i = 1; i < loops.size(); ++i)
+    probes.push_back(probe_loop(*this, loops_.at(std::abs(loops[i])), g, 16));
   // Where each other loop lies with loops[outer_index] as the outer one: the loops wholly
   // outside it and those partly outside (some probe points in, some out).
   struct Placement {
@@ -521,7 +522,8 @@ GeoStatus Model::add_plane_surface(int tag, const std::vector<int>& loops) {
       const std::size_t bad = first.outside.empty() ? first.crossing.front() : first.outside.front();
       const int l = std::abs(loops[bad]);
       if (pole_side)
-        return make_error(GeoErrorId::HoleOutsidePolar, EntityKind::Surface, {tag, l, std::abs(loops[0])}, {s.geometry});
+        return make_error(GeoErrorId::HoleOutsidePolar, EntityKind::Surface, {tag, l, std::abs(loops[0])},
+                          {s.geometry});
       return make_error(GeoErrorId::HoleOutside, EntityKind::Surface, {tag, l, std::abs(loops[0])});
     }
     if (outer != 0) {
@@ -547,7 +549,8 @@ GeoResult<int> Model::add_physical(int dim, std::optional<int> tag, const std::s
     return make_error(GeoErrorId::PhysicalDimension, EntityKind::Physical, {}, {dim});
   for (int e : entities) {
     const int a = std::abs(e);
-    const bool ok = (dim == 0 && vertex(a)) || (dim == 1 && curve(a)) || (dim == 2 && surface(a)) || (dim == 3 && volumes_.count(a));
+    const bool ok = (dim == 0 && vertex(a)) || (dim == 1 && curve(a)) || (dim == 2 && surface(a)) ||
+                    (dim == 3 && volumes_.count(a));
     if (!ok) return missing(GeoErrorId::UnknownInPhysicalGroup, static_cast<EntityKind>(dim), e);
   }
   int t = 0;
@@ -605,7 +608,8 @@ GeoStatus Model::embed(int dim, const std::vector<int>& tags_in, int surface_tag
   if (it == surfaces_.end()) return missing(GeoErrorId::UnknownEmbeddingTarget, EntityKind::Surface, surface_tag);
   for (int t : tags_in) {
     if (dim == 0 && !vertex(t)) return missing(GeoErrorId::UnknownEmbedded, EntityKind::Point, t, {surface_tag});
-    if (dim == 1 && !curve(std::abs(t))) return missing(GeoErrorId::UnknownEmbedded, EntityKind::Curve, t, {surface_tag});
+    if (dim == 1 && !curve(std::abs(t)))
+      return missing(GeoErrorId::UnknownEmbedded, EntityKind::Curve, t, {surface_tag});
   }
   if (dim != 0 && dim != 1)
     return make_error(GeoErrorId::EmbedDimension, EntityKind::Surface, {surface_tag});
@@ -635,7 +639,8 @@ GeoResult<std::vector<DimTag>> Model::boundary(const std::vector<DimTag>& entiti
       if (!s) return missing(GeoErrorId::UnknownInBoundary, EntityKind::Surface, e.tag);
       // In the script's order (an outer loop listed after a hole moved to the front).
       std::vector<int> listed = s->loops;
-      std::rotate(listed.begin(), listed.begin() + 1, listed.begin() + static_cast<std::ptrdiff_t>(s->listed_outer) + 1);
+      std::rotate(listed.begin(), listed.begin() + 1,
+                  listed.begin() + static_cast<std::ptrdiff_t>(s->listed_outer) + 1);
       for (std::size_t i = 0; i < listed.size(); ++i) {
         // As Gmsh lists them (setSurfaceGeneratrices): every loop after the first listed one
         // reversed (its curves negated, in reverse order), so that holes run against the
@@ -689,7 +694,8 @@ GeoStatus Model::add_surface_filling(int tag, const std::vector<int>& loops, std
   // curves, is the patch; the others are holes in it (benchmarks/2d/ruled_on_sphere.geo).
   for (std::size_t i = 0; i < loops.size(); ++i) {
     const ModelCurveLoop* h = curve_loop(std::abs(loops[i]));
-    if (loops[i] == 0 || !h) return missing(GeoErrorId::UnknownEntityIn, EntityKind::CurveLoop, loops[i], {tag}, {"surface"});
+    if (loops[i] == 0 || !h)
+      return missing(GeoErrorId::UnknownEntityIn, EntityKind::CurveLoop, loops[i], {tag}, {"surface"});
     if (h->unclosed) return *h->unclosed;
     for (std::size_t j = 0; j < i; ++j)
       if (std::abs(loops[i]) == std::abs(loops[j]))

@@ -151,7 +151,8 @@ class Model {
   /// "Surface(t) = {loop} <In Sphere{c}>;": a transfinite patch on a loop of 3 or 4 curves.
   /// On a surface geometry (all its curves on it) it is parametrised by that geometry, as
   /// in Gmsh.
-  GeoStatus add_surface_filling(int tag, const std::vector<int>& loops, std::optional<int> sphere_centre = std::nullopt);
+  GeoStatus add_surface_filling(int tag, const std::vector<int>& loops,
+                                std::optional<int> sphere_centre = std::nullopt);
   /// The point at (u,v) of a filling surface or of a surface on a geometry.
   GeoResult<Vec3> surface_point(int tag, Vec2 uv) const;
   /// The transfinite patch of filling surface `s` (its first loop, Gmsh's sphere guess
@@ -342,8 +343,8 @@ class Model {
 };
 
 /// A curve Gmsh collapses: between two distinct points at the same place (within
-/// Geometry.Tolerance), with every control point there too (a zero-length Line, a Spline or B-spline of repeated points).
-/// Circles and ellipses never do. The 1D mesh gives it one node and no edge.
+/// Geometry.Tolerance), with every control point there too (a zero-length Line, a Spline or B-spline of repeated
+/// points). Circles and ellipses never do. The 1D mesh gives it one node and no edge.
 bool collapses(const Model& m, const ModelCurve& c);
 
 }  // namespace sm::geo

@@ -250,7 +250,8 @@ int Model::coherence(std::map<int, int>* curves_merged) {
   // the largest surviving tag; with OldNewReg = 0 the high-water marks stay.
   if (options_.old_new_reg) {
     // The point tags a Duplicata took for copies Gmsh makes and merges here count as merged.
-    if (!replace.empty() || duplicate_took_spare_points_) max_tag_[0] = vertices_.empty() ? 0 : vertices_.rbegin()->first;
+    if (!replace.empty() || duplicate_took_spare_points_)
+      max_tag_[0] = vertices_.empty() ? 0 : vertices_.rbegin()->first;
     if (!curve_replace.empty()) max_tag_[1] = curves_.empty() ? 0 : curves_.rbegin()->first;
   }
   duplicate_took_spare_points_ = false;
@@ -377,8 +378,8 @@ GeoStatus Model::transform_points(const std::vector<DimTag>& entities, const std
   touch();
   for (const DimTag& e : entities) {
     const int t = std::abs(e.tag);
-    if ((e.dim == 0 && !vertices_.count(t)) || (e.dim == 1 && !curves_.count(t)) || (e.dim == 2 && !surfaces_.count(t)) ||
-        e.dim < 0 || e.dim > 2)
+    if ((e.dim == 0 && !vertices_.count(t)) || (e.dim == 1 && !curves_.count(t)) ||
+        (e.dim == 2 && !surfaces_.count(t)) || e.dim < 0 || e.dim > 2)
       return make_error(GeoErrorId::CannotTransformUnknown,
                         e.dim >= 0 && e.dim <= 2 ? static_cast<EntityKind>(e.dim) : EntityKind::None, {e.tag}, {e.dim});
   }
@@ -431,7 +432,8 @@ GeoStatus Model::rotate(const std::vector<DimTag>& entities, Vec3 axis, Vec3 p, 
 }
 
 GeoStatus Model::dilate(const std::vector<DimTag>& entities, Vec3 c, Vec3 f) {
-  return transform_points(entities, {f.x, 0, 0, c.x - f.x * c.x, 0, f.y, 0, c.y - f.y * c.y, 0, 0, f.z, c.z - f.z * c.z});
+  return transform_points(entities,
+                          {f.x, 0, 0, c.x - f.x * c.x, 0, f.y, 0, c.y - f.y * c.y, 0, 0, f.z, c.z - f.z * c.z});
 }
 
 GeoStatus Model::symmetry(const std::vector<DimTag>& entities, double a, double b, double c, double d) {
@@ -450,7 +452,8 @@ GeoStatus Model::symmetry(const std::vector<DimTag>& entities, double a, double 
 GeoResult<std::vector<int>> Model::split_curve(int tag, const std::vector<int>& requested_points) {
   touch();
   auto it = curves_.find(tag);
-  if (it == curves_.end()) return make_error(GeoErrorId::CannotActOnUnknown, EntityKind::Curve, {tag}, {}, {}, {"split"});
+  if (it == curves_.end())
+    return make_error(GeoErrorId::CannotActOnUnknown, EntityKind::Curve, {tag}, {}, {}, {"split"});
   const ModelCurve old = it->second;
   if (old.kind == CurveKind::Circle || old.kind == CurveKind::Ellipse)
     return make_error(GeoErrorId::CannotSplitArc, EntityKind::Curve, {tag}, {}, {}, {to_string(old.kind)});

@@ -169,8 +169,8 @@ Interpreter::Flow Interpreter::exec_include(const Stmt& s, const IncludeStmt& in
       try {
         fail_fmt(r, Diag::IncludeCycle, name);
       } catch (RuntimeError& e) {
-        e.notes.insert(e.notes.begin(),
-                       DiagNote{SourceRange{}, fmt::format("include chain: {} -> {}", fmt::join(include_stack_, " -> "), canon)});
+        e.notes.insert(e.notes.begin(), DiagNote{SourceRange{}, fmt::format("include chain: {} -> {}",
+                                                                            fmt::join(include_stack_, " -> "), canon)});
         throw;
       }
     }

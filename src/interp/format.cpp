@@ -167,12 +167,14 @@ FormatResult format_gmsh(std::string_view fmt, const std::vector<FormatArg>& arg
         -1);
   if (args.size() > dirs.size()) {
     const std::size_t extra = args.size() - dirs.size();
-    return failed_result(format_failure(Diag::FormatExtraArguments, extra, plural(extra)), static_cast<int>(dirs.size()));
+    return failed_result(format_failure(Diag::FormatExtraArguments, extra, plural(extra)),
+                         static_cast<int>(dirs.size()));
   }
   std::size_t pos = 0;
   for (std::size_t k = 0; k < dirs.size(); ++k) {
     literal(pos, dirs[k].begin);
-    if (auto e = format_one(dirs[k], args[k], r.text); e.failed()) return failed_result(std::move(e), static_cast<int>(k));
+    if (auto e = format_one(dirs[k], args[k], r.text); e.failed())
+      return failed_result(std::move(e), static_cast<int>(k));
     pos = dirs[k].end;
   }
   literal(pos, fmt.size());

@@ -114,7 +114,8 @@ GeoDiagnostic geo_compat_diagnostic(const geo::Model::CompatNote& note) {
   const auto tag = [&note](std::size_t i) { return i < note.tags.size() ? note.tags[i] : 0; };
   switch (note.id) {
     case Id::UncheckedLoop:
-      if (note.unchecked_loop) return worded(Diag::GmshCompatUncheckedLoop, geo_diagnostic(*note.unchecked_loop).message);
+      if (note.unchecked_loop)
+        return worded(Diag::GmshCompatUncheckedLoop, geo_diagnostic(*note.unchecked_loop).message);
       break;
     case Id::TagZero: return worded(Diag::GmshCompatTagZero, note.word);
     case Id::MeshSizeOfMissingPoint: return worded(Diag::GmshCompatMeshSizeOfMissingPoint, tag(0));

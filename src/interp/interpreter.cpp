@@ -246,9 +246,9 @@ std::vector<DiagNote> Interpreter::frame_notes() const {
     }
     const Frame& f = frames_[n - 1 - k];
     if (f.loop)
-      notes.push_back(DiagNote{f.site, f.what.empty()
-                                           ? fmt::format("inside this 'For' loop (iteration {})", format_g(f.value))
-                                           : fmt::format("inside this 'For' loop ({} = {})", f.what, format_g(f.value))});
+      notes.push_back(DiagNote{
+          f.site, f.what.empty() ? fmt::format("inside this 'For' loop (iteration {})", format_g(f.value))
+                                 : fmt::format("inside this 'For' loop ({} = {})", f.what, format_g(f.value))});
     else
       notes.push_back(DiagNote{f.site, fmt::format("called from here ({})", f.what)});
   }

@@ -1,9 +1,8 @@
-// Where the wall time of a run goes, and beside it the process's CPU time (all threads): every interval between two stage changes is charged to
-// the innermost open stage, and the time with no stage open to the script's own
-// evaluation. The stages are exclusive, so they add up to the time since the clock started
-// by construction of the account, not by a remainder computed at the end: each second is
-// measured where it is spent. It is a Progress, so that kernel code reporting stages (the
-// field set-up's kinds) can charge them without knowing about the clock.
+// Where the wall time of a run goes, and beside it the process's CPU time (all threads): every interval between two
+// stage changes is charged to the innermost open stage, and the time with no stage open to the script's own evaluation.
+// The stages are exclusive, so they add up to the time since the clock started by construction of the account, not by a
+// remainder computed at the end: each second is measured where it is spent. It is a Progress, so that kernel code
+// reporting stages (the field set-up's kinds) can charge them without knowing about the clock.
 #pragma once
 
 #include <chrono>

@@ -25,7 +25,8 @@ std::vector<BoundaryEdge> boundary_edges(const MeshModel& m) {
   std::vector<BoundaryEdge> out;
   std::set<Edge> seen;
   for (const EntityMesh* c : curves) {
-    const int group = c->physical_tags.empty() ? 0 : *std::min_element(c->physical_tags.begin(), c->physical_tags.end());
+    const int group =
+        c->physical_tags.empty() ? 0 : *std::min_element(c->physical_tags.begin(), c->physical_tags.end());
     for (std::size_t i = 0; i + 2 <= c->connectivity.size(); i += 2) {
       const std::uint32_t a = c->connectivity[i], b = c->connectivity[i + 1];
       const auto it = faces_on.find(key(a, b));

@@ -31,8 +31,9 @@ DualGraph dual_graph_2d(const MeshModel& mesh) {
       }
     }
   }
-  std::sort(sides.begin(), sides.end(),
-            [](const Side& a, const Side& b) { return std::tie(a.lo, a.hi, a.element) < std::tie(b.lo, b.hi, b.element); });
+  std::sort(sides.begin(), sides.end(), [](const Side& a, const Side& b) {
+    return std::tie(a.lo, a.hi, a.element) < std::tie(b.lo, b.hi, b.element);
+  });
   // Each run of equal sides links every pair in it (two elements in a conforming mesh).
   std::vector<std::pair<std::uint32_t, std::uint32_t>> links;
   for (std::size_t i = 0; i < sides.size();) {

@@ -155,7 +155,8 @@ MeshModel from_model_mesh(const geo::Model& model, const ModelMesh& mesh, std::v
       // its size at once: up to 36 bytes a triangle for 12).
       if (uv) {
         e.params.reserve(2 * sm.interior_nodes.size());
-        for (std::uint32_t n : sm.interior_nodes) e.params.insert(e.params.end(), {mesh.nodes[n].uv.x, mesh.nodes[n].uv.y});
+        for (std::uint32_t n : sm.interior_nodes)
+          e.params.insert(e.params.end(), {mesh.nodes[n].uv.x, mesh.nodes[n].uv.y});
       }
       e.connectivity.reserve(3 * sm.triangles.size());
       for (const auto& t : sm.triangles) e.connectivity.insert(e.connectivity.end(), t.begin(), t.end());

@@ -65,7 +65,8 @@ std::string validate_mesh_model(const MeshModel& m) {
   }
   for (const EntityMesh& e : m.entities)
     for (std::uint32_t n : e.connectivity) {
-      if (n >= m.xyz.size()) return fmt::format("element of entity ({}, {}) uses node {} out of range", e.dim, e.tag, n);
+      if (n >= m.xyz.size())
+        return fmt::format("element of entity ({}, {}) uses node {} out of range", e.dim, e.tag, n);
       if (owner[n] == kNoOwner) return fmt::format("node {} is used by an element but owned by no entity", n);
     }
   return {};

@@ -64,7 +64,8 @@ std::string write(const MeshModel& m, const OceanGridOptions& opt, Flavour flavo
     const std::size_t npe = static_cast<std::size_t>(nodes_per_element(s->type));
     for (std::size_t k = 0; k + npe <= s->connectivity.size(); k += npe) {
       fmt::format_to(std::back_inserter(out), "{} {}", ++e, npe);
-      for (std::size_t j = 0; j < npe; ++j) fmt::format_to(std::back_inserter(out), " {}", n.id[s->connectivity[k + j]]);
+      for (std::size_t j = 0; j < npe; ++j)
+        fmt::format_to(std::back_inserter(out), " {}", n.id[s->connectivity[k + j]]);
       out += '\n';
     }
   }

@@ -77,7 +77,8 @@ std::vector<std::uint32_t> connected_pieces(const EntityMesh& e, std::uint32_t* 
     const std::uint32_t* c = &e.connectivity[k * npe];
     const auto el = static_cast<std::uint32_t>(k);
     if (e.dim == 2) {
-      for (int j = 0; j < npe; ++j) keys.emplace_back(std::min(c[j], c[(j + 1) % npe]), std::max(c[j], c[(j + 1) % npe]), el);
+      for (int j = 0; j < npe; ++j)
+        keys.emplace_back(std::min(c[j], c[(j + 1) % npe]), std::max(c[j], c[(j + 1) % npe]), el);
     } else {
       for (int j = 0; j < npe; ++j) keys.emplace_back(c[j], 0u, el);
     }

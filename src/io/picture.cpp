@@ -150,7 +150,8 @@ struct Projection {
 template <std::size_t N>
 bool meets_box(const PictureBox& b, const std::array<Vec2, N>& q) {
   double x0 = q[0].x, x1 = q[0].x, y0 = q[0].y, y1 = q[0].y;
-  for (const Vec2& r : q) x0 = std::min(x0, r.x), x1 = std::max(x1, r.x), y0 = std::min(y0, r.y), y1 = std::max(y1, r.y);
+  for (const Vec2& r : q)
+    x0 = std::min(x0, r.x), x1 = std::max(x1, r.x), y0 = std::min(y0, r.y), y1 = std::max(y1, r.y);
   return x1 >= b.west && x0 <= b.east && y1 >= b.south && y0 <= b.north;
 }
 
@@ -390,7 +391,8 @@ void measure_colour_ranges(SceneWork& w) {
     double lo = std::numeric_limits<double>::max(), hi = -lo;
     for (const Drawn& d : w.drawn)
       for (std::uint32_t v : d.v)
-        if (std::isfinite(opt.node_values[v])) lo = std::min(lo, opt.node_values[v]), hi = std::max(hi, opt.node_values[v]);
+        if (std::isfinite(opt.node_values[v]))
+          lo = std::min(lo, opt.node_values[v]), hi = std::max(hi, opt.node_values[v]);
     if (lo <= hi) w.vmin = lo, w.vmax = hi > lo ? hi : lo + 1;
     if (opt.colour_max > opt.colour_min) w.vmin = opt.colour_min, w.vmax = opt.colour_max;
   }
@@ -462,7 +464,8 @@ void draw_curves(SceneWork& w) {
   std::vector<const PhysicalGroup*> groups;
   for (const PhysicalGroup& g : w.m.physicals)
     if (g.dim == 1) groups.push_back(&g);
-  std::sort(groups.begin(), groups.end(), [](const PhysicalGroup* a, const PhysicalGroup* b) { return a->tag < b->tag; });
+  std::sort(groups.begin(), groups.end(),
+            [](const PhysicalGroup* a, const PhysicalGroup* b) { return a->tag < b->tag; });
   std::map<int, std::uint32_t> style_of_group;   // physical tag -> curve style
   std::size_t next_group_colour = 0;
   auto style_for = [&](const EntityMesh& e) -> std::uint32_t {
@@ -506,8 +509,9 @@ void draw_curves(SceneWork& w) {
         if (seam)
           for (Vec2& r : q)
             if (r.x < w.proj.lon_centre) r.x += 360;
-        outside = !meets_box(*opt.box, q) && !(seam && meets_box(*opt.box, std::array<Vec2, 2>{
-                                                                    Vec2{q[0].x - 360, q[0].y}, Vec2{q[1].x - 360, q[1].y}}));
+        outside =
+            !meets_box(*opt.box, q) &&
+            !(seam && meets_box(*opt.box, std::array<Vec2, 2>{Vec2{q[0].x - 360, q[0].y}, Vec2{q[1].x - 360, q[1].y}}));
       }
       if (jump || outside) {
         flush();
@@ -683,7 +687,8 @@ void list_legend(SceneWork& w) {
                        fmt::format("below the floor {:g}: {}", floor, range(QualityClass::BelowFloor))});
     entries.push_back({LegendEntry::Swatch, kWorstPercentColour,
                        fmt::format("worst {:g}%: {}", 100 * kWorstFraction, range(QualityClass::WorstPercent))});
-    entries.push_back({LegendEntry::Swatch, kGoodQualityColour, fmt::format("the rest: {}", range(QualityClass::Rest))});
+    entries.push_back(
+        {LegendEntry::Swatch, kGoodQualityColour, fmt::format("the rest: {}", range(QualityClass::Rest))});
   }
   if (!sc.marks.empty()) entries.push_back({LegendEntry::Mark, kMarkColour, sc.legend.front()});
   sc.legend.clear();
@@ -716,10 +721,13 @@ std::pair<double, double> lay_out_colour_bar(SceneWork& w, double pad, double to
   for (const auto& [pos, label] : w.ticks) {
     const double x = pad + bar_w * pos;
     sc.lines.push_back({{{x, bar_y + bar_h}, {x, bar_y + bar_h + 0.3 * font}}, kTextColour, 1});
-    sc.texts.push_back({{x, bar_y + bar_h + 1.3 * font}, label, 0.85 * font, Scene::Anchor::Middle, kTextColour, false});
+    sc.texts.push_back(
+        {{x, bar_y + bar_h + 1.3 * font}, label, 0.85 * font, Scene::Anchor::Middle, kTextColour, false});
   }
-  sc.lines.push_back({{{pad, bar_y}, {pad + bar_w, bar_y}, {pad + bar_w, bar_y + bar_h}, {pad, bar_y + bar_h}, {pad, bar_y}},
-                      kTextColour, 1});
+  sc.lines.push_back(
+      {{{pad, bar_y}, {pad + bar_w, bar_y}, {pad + bar_w, bar_y + bar_h}, {pad, bar_y + bar_h}, {pad, bar_y}},
+       kTextColour,
+       1});
   return {pad + bar_w + 2 * font, bar_y + bar_h + 1.6 * font};
 }
 

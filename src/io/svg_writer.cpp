@@ -38,7 +38,9 @@ std::string points(const std::vector<Vec2>& line) {
 
 void add_texts(std::string& out, const std::vector<Scene::Text>& texts, Rgb halo) {
   for (const Scene::Text& t : texts) {
-    const char* anchor = t.anchor == Scene::Anchor::Start ? "start" : t.anchor == Scene::Anchor::Middle ? "middle" : "end";
+    const char* anchor = t.anchor == Scene::Anchor::Start    ? "start"
+                         : t.anchor == Scene::Anchor::Middle ? "middle"
+                                                             : "end";
     out += fmt::format("<text x=\"{:.2f}\" y=\"{:.2f}\" font-size=\"{:.2f}\" text-anchor=\"{}\" fill=\"{}\"", t.at.x,
                        t.at.y, t.size, anchor, hex(t.colour));
     if (t.halo)
@@ -118,8 +120,8 @@ std::string svg_to_string(const Scene& sc) {
       out += fmt::format("<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" fill=\"{}\"/>\n", b.lo.x,
                          b.lo.y, b.hi.x - b.lo.x, b.hi.y - b.lo.y, hex(b.fill));
     for (const Scene::Line& l : sc.lines)
-      out += fmt::format("<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"{:.2f}\" points=\"{}\"/>\n", hex(l.colour),
-                         l.width, points(l.p));
+      out += fmt::format("<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"{:.2f}\" points=\"{}\"/>\n",
+                         hex(l.colour), l.width, points(l.p));
     for (const Scene::Circle& c : sc.circles)   // width 0: a filled dot
       out += c.width > 0 ? fmt::format("<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" fill=\"none\" stroke=\"{}\" "
                                        "stroke-width=\"{:.2f}\"/>\n",

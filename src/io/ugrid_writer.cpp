@@ -56,7 +56,8 @@ Ugrid gather(const MeshModel& m, const OceanGridOptions& opt, const std::vector<
   std::vector<const EntityMesh*> faces;
   for (const EntityMesh& e : m.entities)
     if (e.dim == 2 && (e.type == ElementType::Triangle3 || e.type == ElementType::Quad4)) faces.push_back(&e);
-  std::stable_sort(faces.begin(), faces.end(), [](const EntityMesh* a, const EntityMesh* b) { return a->tag < b->tag; });
+  std::stable_sort(faces.begin(), faces.end(),
+                   [](const EntityMesh* a, const EntityMesh* b) { return a->tag < b->tag; });
   for (const EntityMesh* f : faces)
     if (f->type == ElementType::Quad4) u.max_face_nodes = 4;
 
@@ -100,7 +101,8 @@ Ugrid gather(const MeshModel& m, const OceanGridOptions& opt, const std::vector<
   for (const BoundaryEdge& e : boundary_edges(m)) {
     u.edge_nodes.push_back(file_id[e.a]);
     u.edge_nodes.push_back(file_id[e.b]);
-    u.edge_kind.push_back(open.count(edge_key(e.a, e.b)) ? kOpen : (on_island[e.a] && on_island[e.b] ? kIsland : kMainland));
+    u.edge_kind.push_back(open.count(edge_key(e.a, e.b)) ? kOpen
+                                                         : (on_island[e.a] && on_island[e.b] ? kIsland : kMainland));
     u.edge_physical.push_back(e.physical);
     if (e.physical) used_groups.insert(e.physical); else any_ungrouped = true;
   }

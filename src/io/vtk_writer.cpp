@@ -81,8 +81,9 @@ CellArrays cell_arrays(const MeshModel& m, const Selection& s, const VtkOptions&
     c.entity.push_back(e.tag);
     c.physical.push_back(e.physical_tags.empty() ? 0 : e.physical_tags.front());
     c.quality.push_back(e.type == ElementType::Triangle3 ? rho(m.xyz[v[0]], m.xyz[v[1]], m.xyz[v[2]])
-                        : e.type == ElementType::Quad4 ? quad_quality(m.xyz[v[0]], m.xyz[v[1]], m.xyz[v[2]], m.xyz[v[3]])
-                                                       : 1.0);
+                        : e.type == ElementType::Quad4
+                            ? quad_quality(m.xyz[v[0]], m.xyz[v[1]], m.xyz[v[2]], m.xyz[v[3]])
+                            : 1.0);
     if (opt.element_part) c.partition.push_back((*opt.element_part)[ei][k]);
   }
   return c;
@@ -128,7 +129,8 @@ std::string legacy(const MeshModel& m, const VtkOptions& opt) {
     const std::int64_t end = c.offsets[i];
     if (opt.binary) {
       put_be<std::int32_t>(out, static_cast<std::int32_t>(end - begin));
-      for (std::int64_t j = begin; j < end; ++j) put_be<std::int32_t>(out, static_cast<std::int32_t>(c.connectivity[j]));
+      for (std::int64_t j = begin; j < end; ++j)
+        put_be<std::int32_t>(out, static_cast<std::int32_t>(c.connectivity[j]));
     } else {
       out += fmt::format("{}", end - begin);
       for (std::int64_t j = begin; j < end; ++j) fmt::format_to(std::back_inserter(out), " {}", c.connectivity[j]);

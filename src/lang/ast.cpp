@@ -239,7 +239,9 @@ class Dumper {
     std::string out = "(shapes";
     for (const ShapeItem& it : b) {
       switch (it.kind) {
-        case ShapeItem::Kind::Entities: out += " (" + ent(it.ent, it.physical) + (it.all ? " :" : "") + list(it.tags) + ")"; break;
+        case ShapeItem::Kind::Entities:
+          out += " (" + ent(it.ent, it.physical) + (it.all ? " :" : "") + list(it.tags) + ")";
+          break;
         case ShapeItem::Kind::Create: out += " " + stmt(it.create); break;
         case ShapeItem::Kind::Nested: out += " " + expr(it.nested); break;
       }
@@ -272,17 +274,23 @@ class Dumper {
   std::string node(const ConstantExpr& n) { return "(const " + std::string(constant_text(n.which)) + ")"; }
   std::string node(const UnaryExpr& n) { return "(" + op(n.op) + " " + expr(n.operand) + ")"; }
   std::string node(const BinaryExpr& n) { return "(" + op(n.op) + " " + expr(n.lhs) + " " + expr(n.rhs) + ")"; }
-  std::string node(const TernaryExpr& n) { return "(? " + expr(n.cond) + " " + expr(n.then_expr) + " " + expr(n.else_expr) + ")"; }
+  std::string node(const TernaryExpr& n) {
+    return "(? " + expr(n.cond) + " " + expr(n.then_expr) + " " + expr(n.else_expr) + ")";
+  }
   std::string node(const PostfixExpr& n) { return "(post" + op(n.op) + " " + expr(n.target) + ")"; }
   std::string node(const IndexExpr& n) { return "(index " + name(n.name) + " " + expr(n.index) + ")"; }
   std::string node(const WholeListExpr& n) { return "(whole " + name(n.name) + ")"; }
   std::string node(const SliceExpr& n) { return "(slice " + name(n.name) + list(n.indices) + ")"; }
   std::string node(const LengthExpr& n) { return "(# " + expr(n.list) + ")"; }
   std::string node(const ListExpr& n) { return "(list" + list(n.items) + ")"; }
-  std::string node(const RangeExpr& n) { return "(range " + expr(n.from) + " " + expr(n.to) + (n.step.valid() ? " " + expr(n.step) : "") + ")"; }
+  std::string node(const RangeExpr& n) {
+    return "(range " + expr(n.from) + " " + expr(n.to) + (n.step.valid() ? " " + expr(n.step) : "") + ")";
+  }
   std::string node(const CallExpr& n) { return "(call " + s(n.func) + list(n.args) + ")"; }
   std::string node(const OptionExpr& n) { return "(option " + option(n.option) + ")"; }
-  std::string node(const EntityQueryExpr& n) { return "(query " + ent(n.ent, n.physical) + (n.all ? " :" : "") + list(n.tags) + ")"; }
+  std::string node(const EntityQueryExpr& n) {
+    return "(query " + ent(n.ent, n.physical) + (n.all ? " :" : "") + list(n.tags) + ")";
+  }
   std::string node(const EntityInBoxExpr& n) { return "(in-box " + ent(n.ent) + list(n.box) + ")"; }
   std::string node(const BoundaryExpr& n) {
     static constexpr std::string_view kNames[] = {"Boundary", "CombinedBoundary", "PointsOf"};
@@ -290,7 +298,8 @@ class Dumper {
   }
   std::string node(const TransformExpr& n) {
     static constexpr std::string_view kNames[] = {"Translate", "Rotate", "Symmetry", "Dilate", "Duplicata", "Extrude"};
-    std::string out = "(" + std::string(kNames[static_cast<int>(n.kind)]) + " (params" + list(n.params) + ") " + shapes(n.shapes);
+    std::string out =
+        "(" + std::string(kNames[static_cast<int>(n.kind)]) + " (params" + list(n.params) + ") " + shapes(n.shapes);
     // Extrude's mesh parameters by count only: more list() calls here make GCC 12 inline
     // differently and report a false -Wrestrict overlap elsewhere in this file.
     if (!n.extrude.layers.empty()) out.append(fmt::format(" (layers {})", n.extrude.layers.size()));
@@ -302,7 +311,9 @@ class Dumper {
   std::string node(const IntersectExpr& n) { return "(intersect" + list(n.curves) + " " + expr(n.surface) + ")"; }
 
   // statements
-  std::string node(const AssignStmt& n) { return "(assign " + std::string(affop_text(n.op)) + " " + lvalue(n.target) + " " + expr(n.value) + ")"; }
+  std::string node(const AssignStmt& n) {
+    return "(assign " + std::string(affop_text(n.op)) + " " + lvalue(n.target) + " " + expr(n.value) + ")";
+  }
   std::string node(const IncDecStmt& n) { return std::string(n.increment ? "(++ " : "(-- ") + lvalue(n.target) + ")"; }
   std::string node(const DefineConstantStmt& n) {
     std::string out = "(define-constant";
@@ -318,12 +329,16 @@ class Dumper {
     return out + ")";
   }
   std::string node(const DeleteStmt& n) {
-    static constexpr std::string_view kNames[] = {"Variable", "Variables", "Model", "Physicals", "Meshes", "All", "Options"};
-    return "(delete " + std::string(kNames[static_cast<int>(n.what)]) + (n.what == DeleteWhat::Variable ? " " + name(n.name) : "") + ")";
+    static constexpr std::string_view kNames[] = {"Variable", "Variables", "Model",  "Physicals",
+                                                  "Meshes",   "All",       "Options"};
+    return "(delete " + std::string(kNames[static_cast<int>(n.what)]) +
+           (n.what == DeleteWhat::Variable ? " " + name(n.name) : "") + ")";
   }
   std::string node(const DeleteFieldStmt& n) { return "(delete-field " + expr(n.id) + ")"; }
   std::string node(const DeleteCoastlineStmt& n) { return "(delete-coastline " + expr(n.id) + ")"; }
-  std::string node(const DeleteShapesStmt& n) { return std::string(n.recursive ? "(recursive-delete " : "(delete ") + shapes(n.shapes) + ")"; }
+  std::string node(const DeleteShapesStmt& n) {
+    return std::string(n.recursive ? "(recursive-delete " : "(delete ") + shapes(n.shapes) + ")";
+  }
   std::string node(const PrintStmt& n) {
     static constexpr std::string_view kNames[] = {"Printf", "Warning", "Error"};
     std::string out = "(" + std::string(kNames[static_cast<int>(n.kind)]) + " " + expr(n.format) + list(n.args);
@@ -339,62 +354,92 @@ class Dumper {
   std::string node(const ForStmt& n) {
     return "(for " + s(n.var) + " " + expr(n.from) + " " + expr(n.to) + " " + expr(n.step) + " " + body(n.body) + ")";
   }
-  std::string node(const MacroStmt& n) { return "(macro " + (n.name.valid() ? s(n.name) : expr(n.name_expr)) + " " + body(n.body) + ")"; }
-  std::string node(const CallStmt& n) { return "(call-macro " + (n.name.valid() ? s(n.name) : expr(n.name_expr)) + ")"; }
+  std::string node(const MacroStmt& n) {
+    return "(macro " + (n.name.valid() ? s(n.name) : expr(n.name_expr)) + " " + body(n.body) + ")";
+  }
+  std::string node(const CallStmt& n) {
+    return "(call-macro " + (n.name.valid() ? s(n.name) : expr(n.name_expr)) + ")";
+  }
   std::string node(const ReturnStmt&) { return "(return)"; }
   std::string node(const ExitStmt& n) { return "(exit" + (n.code.valid() ? " " + expr(n.code) : std::string()) + ")"; }
   std::string node(const AbortStmt&) { return "(abort)"; }
-  std::string node(const AssertStmt& n) { return "(assert " + expr(n.cond) + " " + expr(n.message) + list(n.args) + ")"; }
+  std::string node(const AssertStmt& n) {
+    return "(assert " + expr(n.cond) + " " + expr(n.message) + list(n.args) + ")";
+  }
   std::string node(const IncludeStmt& n) { return "(include " + expr(n.path) + ")"; }
-  std::string node(const CommandStmt& n) { return "(command " + s(n.command) + (n.arg.valid() ? " " + expr(n.arg) : "") + ")"; }
+  std::string node(const CommandStmt& n) {
+    return "(command " + s(n.command) + (n.arg.valid() ? " " + expr(n.arg) : "") + ")";
+  }
   std::string node(const SetFactoryStmt& n) { return "(set-factory " + expr(n.name) + ")"; }
   std::string node(const SetMaxTagStmt& n) { return "(set-max-tag " + ent(n.ent) + " " + expr(n.tag) + ")"; }
   std::string node(const PointStmt& n) { return "(point " + expr(n.tag) + " " + expr(n.coords) + ")"; }
   std::string node(const CurveStmt& n) {
-    static constexpr std::string_view kNames[] = {"Line", "Spline", "BSpline", "Bezier", "Nurbs", "Circle", "Ellipse", "CompoundSpline", "CompoundBSpline"};
-    return "(" + std::string(kNames[static_cast<int>(n.kind)]) + " " + expr(n.tag) + " " + expr(n.points) + opt("plane", n.plane) +
-           opt("knots", n.knots) + opt("order", n.order) + opt("using", n.using_n) + ")";
+    static constexpr std::string_view kNames[] = {"Line",   "Spline",  "BSpline",        "Bezier",         "Nurbs",
+                                                  "Circle", "Ellipse", "CompoundSpline", "CompoundBSpline"};
+    return "(" + std::string(kNames[static_cast<int>(n.kind)]) + " " + expr(n.tag) + " " + expr(n.points) +
+           opt("plane", n.plane) + opt("knots", n.knots) + opt("order", n.order) + opt("using", n.using_n) + ")";
   }
   std::string node(const CurveLoopStmt& n) { return "(curve-loop " + expr(n.tag) + " " + expr(n.curves) + ")"; }
   std::string node(const SurfaceStmt& n) {
-    return std::string(n.kind == SurfaceKind::Plane ? "(plane-surface " : "(surface ") + expr(n.tag) + " " + expr(n.loops) + opt("in-sphere", n.in_sphere) + ")";
+    return std::string(n.kind == SurfaceKind::Plane ? "(plane-surface " : "(surface ") + expr(n.tag) + " " +
+           expr(n.loops) + opt("in-sphere", n.in_sphere) + ")";
   }
   std::string node(const SurfaceLoopStmt& n) { return "(surface-loop " + expr(n.tag) + " " + expr(n.surfaces) + ")"; }
   std::string node(const VolumeStmt& n) { return "(volume " + expr(n.tag) + " " + expr(n.loops) + ")"; }
-  std::string node(const SphereStmt& n) { return std::string(n.polar ? "(polar-sphere " : "(sphere ") + expr(n.tag) + " " + expr(n.points) + ")"; }
-  std::string node(const ParametricSurfaceStmt& n) { return "(parametric-surface " + expr(n.tag) + " " + expr(n.fx) + " " + expr(n.fy) + " " + expr(n.fz) + ")"; }
+  std::string node(const SphereStmt& n) {
+    return std::string(n.polar ? "(polar-sphere " : "(sphere ") + expr(n.tag) + " " + expr(n.points) + ")";
+  }
+  std::string node(const ParametricSurfaceStmt& n) {
+    return "(parametric-surface " + expr(n.tag) + " " + expr(n.fx) + " " + expr(n.fy) + " " + expr(n.fz) + ")";
+  }
   std::string node(const CoordinatesSurfaceStmt& n) { return "(coordinates-surface " + expr(n.geometry) + ")"; }
   std::string node(const EuclideanCoordinatesStmt&) { return "(euclidean-coordinates)"; }
   std::string node(const PhysicalStmt& n) {
-    return "(physical " + ent(n.ent) + " " + expr(n.tag) + " " + expr(n.name) + " " + std::string(affop_text(n.op)) + " " + expr(n.entities) + ")";
+    return "(physical " + ent(n.ent) + " " + expr(n.tag) + " " + expr(n.name) + " " + std::string(affop_text(n.op)) +
+           " " + expr(n.entities) + ")";
   }
   std::string node(const CoherenceStmt& n) {
     static constexpr std::string_view kNames[] = {"Geometry", "Mesh", "Points"};
-    return "(coherence " + std::string(kNames[static_cast<int>(n.what)]) + (n.points.valid() ? " " + expr(n.points) : "") + ")";
+    return "(coherence " + std::string(kNames[static_cast<int>(n.what)]) +
+           (n.points.valid() ? " " + expr(n.points) : "") + ")";
   }
   std::string node(const SplitCurveStmt& n) { return "(split-curve " + expr(n.curve) + " " + expr(n.points) + ")"; }
   std::string node(const ShapeExprStmt& n) { return "(shape-stmt " + expr(n.expr) + ")"; }
-  std::string node(const EmbedStmt& n) { return "(embed " + ent(n.ent) + " " + expr(n.tags) + " " + ent(n.target) + " " + expr(n.target_tag) + ")"; }
-  std::string node(const MeshSizeStmt& n) { return "(mesh-size " + std::string(n.all ? ":" : expr(n.points)) + " " + expr(n.size) + ")"; }
+  std::string node(const EmbedStmt& n) {
+    return "(embed " + ent(n.ent) + " " + expr(n.tags) + " " + ent(n.target) + " " + expr(n.target_tag) + ")";
+  }
+  std::string node(const MeshSizeStmt& n) {
+    return "(mesh-size " + std::string(n.all ? ":" : expr(n.points)) + " " + expr(n.size) + ")";
+  }
   std::string node(const TransfiniteCurveStmt& n) {
-    return "(transfinite-curve " + std::string(n.all ? ":" : expr(n.curves)) + " " + expr(n.nodes) + (n.distribution.valid() ? " " + s(n.distribution) + " " + expr(n.coef) : "") + ")";
+    return "(transfinite-curve " + std::string(n.all ? ":" : expr(n.curves)) + " " + expr(n.nodes) +
+           (n.distribution.valid() ? " " + s(n.distribution) + " " + expr(n.coef) : "") + ")";
   }
   std::string node(const TransfiniteSurfaceStmt& n) {
-    return "(transfinite-surface " + std::string(n.all ? ":" : expr(n.surfaces)) + " " + expr(n.corners) + (n.arrangement.valid() ? " " + s(n.arrangement) : "") + ")";
+    return "(transfinite-surface " + std::string(n.all ? ":" : expr(n.surfaces)) + " " + expr(n.corners) +
+           (n.arrangement.valid() ? " " + s(n.arrangement) : "") + ")";
   }
-  std::string node(const RecombineStmt& n) { return "(recombine " + ent(n.ent) + " " + (n.all ? ":" : expr(n.tags)) + opt("angle", n.angle) + ")"; }
+  std::string node(const RecombineStmt& n) {
+    return "(recombine " + ent(n.ent) + " " + (n.all ? ":" : expr(n.tags)) + opt("angle", n.angle) + ")";
+  }
   std::string node(const EntitySettingStmt& n) {
     static constexpr std::string_view kNames[] = {"MeshAlgorithm", "MeshSizeFromBoundary", "Smoother"};
-    return "(" + std::string(kNames[static_cast<int>(n.kind)]) + " " + ent(n.ent) + " " + (n.all ? ":" : expr(n.tags)) + " " + expr(n.value) + ")";
+    return "(" + std::string(kNames[static_cast<int>(n.kind)]) + " " + ent(n.ent) + " " + (n.all ? ":" : expr(n.tags)) +
+           " " + expr(n.value) + ")";
   }
   std::string node(const PeriodicStmt& n) {
     static constexpr std::string_view kTransforms[] = {"", "translate", "rotate", "affine"};
     const std::string slave = n.slave_surface.valid() ? expr(n.slave_surface) + " " : "";
     const std::string master = n.master_surface.valid() ? expr(n.master_surface) + " " : "";
     return "(periodic " + ent(n.ent) + " " + slave + expr(n.slaves) + " " + master + expr(n.masters) +
-           (n.transform == PeriodicTransform::None ? "" : " (" + std::string(kTransforms[static_cast<int>(n.transform)]) + list(n.transform_args) + ")") + ")";
+           (n.transform == PeriodicTransform::None
+                ? ""
+                : " (" + std::string(kTransforms[static_cast<int>(n.transform)]) + list(n.transform_args) + ")") +
+           ")";
   }
-  std::string node(const ReverseMeshStmt& n) { return "(reverse-mesh " + ent(n.ent) + " " + (n.all ? ":" : expr(n.tags)) + ")"; }
+  std::string node(const ReverseMeshStmt& n) {
+    return "(reverse-mesh " + ent(n.ent) + " " + (n.all ? ":" : expr(n.tags)) + ")";
+  }
   std::string node(const CompoundStmt& n) { return "(compound " + ent(n.ent) + " " + expr(n.tags) + ")"; }
   std::string node(const FieldNewStmt& n) { return "(field-new " + expr(n.id) + " " + s(n.type) + ")"; }
   std::string node(const FieldOptionStmt& n) {
@@ -407,10 +452,13 @@ class Dumper {
   }
   std::string node(const CoastlineActionStmt& n) { return "(coastline-action " + expr(n.id) + " " + s(n.action) + ")"; }
   std::string node(const BackgroundFieldStmt& n) { return "(" + s(n.which) + "-field " + expr(n.value) + ")"; }
-  std::string node(const PluginStmt& n) { return "(plugin " + s(n.plugin) + " " + s(n.member) + (n.value.valid() ? " " + expr(n.value) : "") + ")"; }
+  std::string node(const PluginStmt& n) {
+    return "(plugin " + s(n.plugin) + " " + s(n.member) + (n.value.valid() ? " " + expr(n.value) : "") + ")";
+  }
   std::string node(const ViewStmt& n) {
     std::string out = "(view " + expr(n.name);
-    for (const ViewItem& it : n.items) out += " (" + s(it.type) + " (" + list(it.coords).substr(it.coords.empty() ? 0 : 1) + ")" + list(it.values) + ")";
+    for (const ViewItem& it : n.items)
+      out += " (" + s(it.type) + " (" + list(it.coords).substr(it.coords.empty() ? 0 : 1) + ")" + list(it.values) + ")";
     return out + ")";
   }
   std::string node(const ColorStmt& n) { return "(color " + expr(n.color) + " " + shapes(n.shapes) + ")"; }

@@ -154,7 +154,12 @@ enum class TransformKind : std::uint8_t { Translate, Rotate, Symmetry, Dilate, D
 /// written, layers the items of Layers' braces (empty: no Layers), recombine invalid
 /// without `Recombine` (a NumberExpr 1 when written bare). See docs/interpreter.md.
 struct ExtrudeMeshParams { ExprList layers; SourceRange layers_range; bool has_recombine = false; ExprId recombine; };
-struct TransformExpr { TransformKind kind = TransformKind::Translate; ExprList params; ShapeBlock shapes; ExtrudeMeshParams extrude; };
+struct TransformExpr {
+  TransformKind kind = TransformKind::Translate;
+  ExprList params;
+  ShapeBlock shapes;
+  ExtrudeMeshParams extrude;
+};
 /// Native extension: `Coastline{n, ...}` imports coastline object(s) n and
 /// returns the new curve-loop tags (outer loop first).
 struct CoastlineQueryExpr { ExprList ids; };
@@ -228,7 +233,13 @@ enum class PrintKind : std::uint8_t { Printf, Warning, Error };
 enum class Redirect : std::uint8_t { None, Write, Append };  ///< `> file`, `>> file`
 /// `Printf(format, args...) [> file | >> file];` args are items without braces
 /// (expressions, ranges, whole lists) as written.
-struct PrintStmt { PrintKind kind = PrintKind::Printf; ExprId format; ExprList args; Redirect redirect = Redirect::None; ExprId file; };
+struct PrintStmt {
+  PrintKind kind = PrintKind::Printf;
+  ExprId format;
+  ExprList args;
+  Redirect redirect = Redirect::None;
+  ExprId file;
+};
 
 struct IfBranch { ExprId cond; StmtList body; SourceRange keyword; };  ///< If / ElseIf
 /// `If (c) ... ElseIf (c) ... Else ... EndIf`: the first true branch runs, else else_body.
@@ -260,11 +271,29 @@ struct SetMaxTagStmt { EntityKind ent = EntityKind::Point; ExprId tag; };
 
 /// `Point(tag) = {x, y, z[, lc]};` coords: the ListExpr as written.
 struct PointStmt { ExprId tag; ExprId coords; };
-enum class CurveKind : std::uint8_t { Line, Spline, BSpline, Bezier, Nurbs, Circle, Ellipse, CompoundSpline, CompoundBSpline };
+enum class CurveKind : std::uint8_t {
+  Line,
+  Spline,
+  BSpline,
+  Bezier,
+  Nurbs,
+  Circle,
+  Ellipse,
+  CompoundSpline,
+  CompoundBSpline
+};
 /// `Line|Spline|CatmullRom|BSpline|Bezier|Circle|Ellipse(tag) = {points}`;
 /// Circle/Ellipse: `Plane{nx,ny,nz}` in plane (ListExpr, else invalid);
 /// `Nurbs(t) = {pts} Knots {knots} Order k`; `Compound Spline(t) = {curves} Using n`.
-struct CurveStmt { CurveKind kind = CurveKind::Line; ExprId tag; ExprId points; ExprId plane; ExprId knots; ExprId order; ExprId using_n; };
+struct CurveStmt {
+  CurveKind kind = CurveKind::Line;
+  ExprId tag;
+  ExprId points;
+  ExprId plane;
+  ExprId knots;
+  ExprId order;
+  ExprId using_n;
+};
 /// `Curve Loop(tag) = {curves};` / `Line Loop`. The second word is not checked (Gmsh).
 struct CurveLoopStmt { ExprId tag; ExprId curves; };
 enum class SurfaceKind : std::uint8_t { Plane, Filling };
@@ -284,7 +313,13 @@ struct CoordinatesSurfaceStmt { ExprId geometry; };
 struct EuclideanCoordinatesStmt {};
 /// `Physical <ent>(tag | "name" | "name", tag) (=|+=|-=) {entities};`
 /// tag and name each invalid when absent.
-struct PhysicalStmt { EntityKind ent = EntityKind::Point; ExprId tag; ExprId name; AffOp op = AffOp::Assign; ExprId entities; };
+struct PhysicalStmt {
+  EntityKind ent = EntityKind::Point;
+  ExprId tag;
+  ExprId name;
+  AffOp op = AffOp::Assign;
+  ExprId entities;
+};
 enum class CoherenceKind : std::uint8_t { Geometry, Mesh, Points };
 /// `Coherence;` `Coherence Geometry;` `Coherence Mesh;` `Coherence Point{items};`
 struct CoherenceStmt { CoherenceKind what = CoherenceKind::Geometry; ExprId points; };
@@ -293,7 +328,12 @@ struct SplitCurveStmt { ExprId curve; ExprId points; };
 /// A transform/Duplicata/Boundary used as a statement: `Translate{1,0,0}{ Point{1}; };`
 struct ShapeExprStmt { ExprId expr; };
 /// `Point{tags} In Surface{s};` / `Curve{tags} In Surface{s};`
-struct EmbedStmt { EntityKind ent = EntityKind::Point; ExprId tags; EntityKind target = EntityKind::Surface; ExprId target_tag; };
+struct EmbedStmt {
+  EntityKind ent = EntityKind::Point;
+  ExprId tags;
+  EntityKind target = EntityKind::Surface;
+  ExprId target_tag;
+};
 /// `MeshSize{points} = size;` / `Characteristic Length{...} = size;`
 struct MeshSizeStmt { bool all = false; ExprId points; ExprId size; };
 /// `Transfinite Curve{curves} = nodes [Using Progression|Bump|Beta coef];`
@@ -304,7 +344,13 @@ struct TransfiniteSurfaceStmt { bool all = false; ExprId surfaces; ExprId corner
 struct RecombineStmt { EntityKind ent = EntityKind::Surface; bool all = false; ExprId tags; ExprId angle; };
 enum class SettingKind : std::uint8_t { MeshAlgorithm, MeshSizeFromBoundary, Smoother };
 /// `MeshAlgorithm Surface{tags} = v;` `MeshSizeFromBoundary Surface{...} = v;` `Smoother Surface{...} = v;`
-struct EntitySettingStmt { SettingKind kind = SettingKind::MeshAlgorithm; EntityKind ent = EntityKind::Surface; bool all = false; ExprId tags; ExprId value; };
+struct EntitySettingStmt {
+  SettingKind kind = SettingKind::MeshAlgorithm;
+  EntityKind ent = EntityKind::Surface;
+  bool all = false;
+  ExprId tags;
+  ExprId value;
+};
 enum class PeriodicTransform : std::uint8_t { None, Translate, Rotate, Affine };
 /// `Periodic Curve{slaves} = {masters} [Translate{dx,dy,dz} | Rotate{{axis},{point},angle} | Affine{16 numbers}];`
 /// (transform_args: the transform's items, empty without one), and Gmsh's surface form
@@ -361,17 +407,15 @@ enum class StmtKind : std::uint8_t {
   BackgroundField, Plugin, View, Color, Visibility
 };
 using StmtNode =
-    std::variant<AssignStmt, IncDecStmt, DefineConstantStmt, DeleteStmt, DeleteFieldStmt,
-                 DeleteCoastlineStmt, DeleteShapesStmt, PrintStmt, IfStmt, ForStmt, MacroStmt, CallStmt, ReturnStmt,
-                 ExitStmt, AbortStmt, AssertStmt, IncludeStmt, CommandStmt, SetFactoryStmt,
-                 SetMaxTagStmt, PointStmt, CurveStmt, CurveLoopStmt, SurfaceStmt, SurfaceLoopStmt,
-                 VolumeStmt, SphereStmt, ParametricSurfaceStmt, CoordinatesSurfaceStmt,
-                 EuclideanCoordinatesStmt, PhysicalStmt, CoherenceStmt, SplitCurveStmt,
-                 ShapeExprStmt, EmbedStmt, MeshSizeStmt, TransfiniteCurveStmt,
-                 TransfiniteSurfaceStmt, RecombineStmt, EntitySettingStmt, PeriodicStmt,
-                 ReverseMeshStmt, CompoundStmt, FieldNewStmt, FieldOptionStmt, FieldActionStmt,
-                 CoastlineNewStmt, CoastlineOptionStmt, CoastlineActionStmt, BackgroundFieldStmt, PluginStmt, ViewStmt, ColorStmt,
-                 VisibilityStmt>;
+    std::variant<AssignStmt, IncDecStmt, DefineConstantStmt, DeleteStmt, DeleteFieldStmt, DeleteCoastlineStmt,
+                 DeleteShapesStmt, PrintStmt, IfStmt, ForStmt, MacroStmt, CallStmt, ReturnStmt, ExitStmt, AbortStmt,
+                 AssertStmt, IncludeStmt, CommandStmt, SetFactoryStmt, SetMaxTagStmt, PointStmt, CurveStmt,
+                 CurveLoopStmt, SurfaceStmt, SurfaceLoopStmt, VolumeStmt, SphereStmt, ParametricSurfaceStmt,
+                 CoordinatesSurfaceStmt, EuclideanCoordinatesStmt, PhysicalStmt, CoherenceStmt, SplitCurveStmt,
+                 ShapeExprStmt, EmbedStmt, MeshSizeStmt, TransfiniteCurveStmt, TransfiniteSurfaceStmt, RecombineStmt,
+                 EntitySettingStmt, PeriodicStmt, ReverseMeshStmt, CompoundStmt, FieldNewStmt, FieldOptionStmt,
+                 FieldActionStmt, CoastlineNewStmt, CoastlineOptionStmt, CoastlineActionStmt, BackgroundFieldStmt,
+                 PluginStmt, ViewStmt, ColorStmt, VisibilityStmt>;
 
 struct Stmt {
   SourceRange range;    ///< the whole statement (for a block: keyword to End keyword)

@@ -23,8 +23,8 @@ bool same_notes(const std::vector<DiagNote>& a, const std::vector<DiagNote>& b) 
 // Only located diagnostics group: what a group saves is the source line and caret
 // repeated under each, and a diagnostic without a location has none.
 bool same_group(const Diagnostic& a, const Diagnostic& b) {
-  return a.range.valid() && a.range.file == b.range.file && a.range.begin == b.range.begin && a.range.end == b.range.end &&
-         a.severity == b.severity && same_notes(a.notes, b.notes);
+  return a.range.valid() && a.range.file == b.range.file && a.range.begin == b.range.begin &&
+         a.range.end == b.range.end && a.severity == b.severity && same_notes(a.notes, b.notes);
 }
 
 std::string_view plural(Severity s) {
@@ -92,7 +92,8 @@ std::string render_group(const Diagnostics& diags, const std::vector<const Diagn
     out += fmt::format("  {} x {} [{}]\n", s.members.size(), s.what, kebab);
     // Ranked sorts (every member with a rank) are cut to their largest, largest first.
     std::vector<const Diagnostic*> members = s.members;
-    const bool ranked = std::all_of(members.begin(), members.end(), [](const Diagnostic* d) { return std::isfinite(d->item.rank); });
+    const bool ranked =
+        std::all_of(members.begin(), members.end(), [](const Diagnostic* d) { return std::isfinite(d->item.rank); });
     if (ranked && !options.list_all)
       std::stable_sort(members.begin(), members.end(),
                        [](const Diagnostic* a, const Diagnostic* b) { return a->item.rank > b->item.rank; });

@@ -110,7 +110,8 @@ void render_snippet(const SourceManager& sources, SourceRange range, std::string
   const std::string_view line = sources.line_text(range.file, lc.line);
   const std::size_t caret = std::min<std::size_t>(lc.col - 1, line.size());
   std::size_t underline = 1;
-  if (range.end > range.begin) underline = std::max<std::size_t>(1, std::min<std::size_t>(range.end - range.begin, line.size() - caret));
+  if (range.end > range.begin)
+    underline = std::max<std::size_t>(1, std::min<std::size_t>(range.end - range.begin, line.size() - caret));
 
   std::size_t b = 0, e = line.size();
   if (line.size() > kMaxShownLine) {

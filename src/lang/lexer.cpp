@@ -61,7 +61,8 @@ bool Lexer::skip_space_and_comments() {
       ++pos_;
     } else if (c == '/' && pos_ + 1 < n && text_[pos_ + 1] == '/') {
       const void* nl = std::memchr(text_.data() + pos_, '\n', n - pos_);
-      pos_ = nl ? static_cast<std::uint32_t>(static_cast<const char*>(nl) - text_.data()) : static_cast<std::uint32_t>(n);
+      pos_ =
+          nl ? static_cast<std::uint32_t>(static_cast<const char*>(nl) - text_.data()) : static_cast<std::uint32_t>(n);
     } else if (c == '/' && pos_ + 1 < n && text_[pos_ + 1] == '*') {
       const std::size_t close = text_.find("*/", pos_ + 2);
       if (close == std::string_view::npos) {
@@ -179,7 +180,10 @@ Token Lexer::lex_invalid() {
   std::size_t first_len = 1;
   bool printable = first >= 0x20 && first < 0x7F;
   if (first >= 0x80) {  // a whole valid UTF-8 character is quoted; an invalid byte is shown in hex
-    std::size_t len = first >= 0xC2 && first <= 0xDF ? 2 : first >= 0xE0 && first <= 0xEF ? 3 : first >= 0xF0 && first <= 0xF4 ? 4 : 0;
+    std::size_t len = first >= 0xC2 && first <= 0xDF   ? 2
+                      : first >= 0xE0 && first <= 0xEF ? 3
+                      : first >= 0xF0 && first <= 0xF4 ? 4
+                                                       : 0;
     bool ok = len > 0 && b + len <= n;
     for (std::size_t k = 1; ok && k < len; ++k) ok = (static_cast<unsigned char>(text_[b + k]) & 0xC0) == 0x80;
     if (ok) {

@@ -210,13 +210,15 @@ StmtList Parser::parse_block(const Token& opener, Block kind) {
                         (kind == Block::If && (k == Tok::EndIf || k == Tok::ElseIf || k == Tok::Else)) ||
                         (kind == Block::Macro && k == Tok::Return);
       if (mine) break;
-      if (k == Tok::Return && std::any_of(blocks_.begin(), blocks_.end(), [](const OpenBlock& b) { return b.kind == Block::Macro; })) {
+      if (k == Tok::Return &&
+          std::any_of(blocks_.begin(), blocks_.end(), [](const OpenBlock& b) { return b.kind == Block::Macro; })) {
         // `Return` nested in an If/For of a macro body: an early return.
         body.push_back(parse_return());
         continue;
       }
       const Block wanted = k == Tok::EndFor ? Block::For : k == Tok::Return ? Block::Macro : Block::If;
-      const bool outer = std::any_of(blocks_.begin(), blocks_.end() - 1, [&](const OpenBlock& b) { return b.kind == wanted; });
+      const bool outer =
+          std::any_of(blocks_.begin(), blocks_.end() - 1, [&](const OpenBlock& b) { return b.kind == wanted; });
       if (outer) break;  // the enclosing block's end: the caller reports this block as unclosed
       const Token end = advance();
       static constexpr std::string_view kNames[] = {"For", "If", "Macro"};
@@ -434,7 +436,8 @@ StmtId Parser::parse_call() {
 void Parser::warn_statement_after(const Token& kw, SourceRange stmt_range) {
   const Token t = peek();
   if (t.kind == Tok::Eof || is_statement_boundary(t.kind) || t.kind == Tok::Error) return;
-  if (line_of(t.range) != line_of(SourceRange{stmt_range.file, stmt_range.end ? stmt_range.end - 1 : 0, stmt_range.end}))
+  if (line_of(t.range) !=
+      line_of(SourceRange{stmt_range.file, stmt_range.end ? stmt_range.end - 1 : 0, stmt_range.end}))
     return;
   diags_.report(t.range, Diag::StatementAfterCall, text(kw));
 }

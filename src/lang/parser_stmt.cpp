@@ -222,7 +222,9 @@ StmtId Parser::parse_assignment(const Token& first) {
 StmtId Parser::parse_print() {
   const Token kw = advance();
   PrintStmt node;
-  node.kind = kw.kind == Tok::Printf ? PrintKind::Printf : kw.kind == Tok::Warning ? PrintKind::Warning : PrintKind::Error;
+  node.kind = kw.kind == Tok::Printf    ? PrintKind::Printf
+              : kw.kind == Tok::Warning ? PrintKind::Warning
+                                        : PrintKind::Error;
   const Token open = expect(Tok::LParen, fmt::format("'(' after '{}'", text(kw)));
   node.format = parse_expr();
   while (accept(Tok::Comma)) node.args.push_back(parse_item());
@@ -351,7 +353,8 @@ StmtId Parser::parse_field_statement() {
   const Token opt = expect_member_word(coast ? "a coastline option" : "a field option");
   const StrId member = ast_.intern(text(opt));
   if (accept(Tok::Semicolon))
-    return coast ? add(kw, CoastlineActionStmt{id, member, opt.range}) : add(kw, FieldActionStmt{id, member, opt.range});
+    return coast ? add(kw, CoastlineActionStmt{id, member, opt.range})
+                 : add(kw, FieldActionStmt{id, member, opt.range});
   expect(Tok::Assign, "'=' after the option name");
   const bool braced = at(Tok::LBrace);
   const ExprId value = braced ? parse_braced_list() : parse_expr();

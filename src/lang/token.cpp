@@ -20,7 +20,8 @@ constexpr auto make_keywords() {
       SM_GEO_KEYWORDS(SM_KW)
 #undef SM_KW
   };
-  std::sort(entries.begin(), entries.end(), [](const KeywordEntry& a, const KeywordEntry& b) { return a.text < b.text; });
+  std::sort(entries.begin(), entries.end(),
+            [](const KeywordEntry& a, const KeywordEntry& b) { return a.text < b.text; });
   return entries;
 }
 constexpr auto kKeywords = make_keywords();

@@ -83,7 +83,8 @@ BoundaryResult recover_boundary(BoundaryProblem& problem, const SplitFn& split, 
       return res;
     }
     if (!dr.ok()) {
-      res.error = make_error(BoundaryErrorKind::Invalid, 0, 0, {}, 0, 0, "cannot triangulate the curve points: " + dr.error);
+      res.error =
+          make_error(BoundaryErrorKind::Invalid, 0, 0, {}, 0, 0, "cannot triangulate the curve points: " + dr.error);
       res.error.fault = BoundaryFault::TriangulationFailed;
       res.error.reason = dr.error;
       return res;
@@ -110,20 +111,23 @@ BoundaryResult recover_boundary(BoundaryProblem& problem, const SplitFn& split, 
     // (3) Split every edge involved; stop when an intersecting edge is
     // already shorter than the tolerance: the curves really intersect.
     to_split.clear();
-    auto edge_len = [&](std::uint32_t e) { return norm(pts[res.edges[e].second.value] - pts[res.edges[e].first.value]); };
+    auto edge_len = [&](std::uint32_t e) {
+      return norm(pts[res.edges[e].second.value] - pts[res.edges[e].first.value]);
+    };
     auto fail_if_short = [&](std::uint32_t e, std::uint32_t other_curve, Vec2 where) {
       if (edge_len(e) >= opt.tolerance) return false;
       const std::uint32_t ida = curves[res.edge_curve[e]].id, idb = curves[other_curve].id;
-      res.error = make_error(BoundaryErrorKind::Intersection, ida, idb, where, res.edges[e].first.value,
-                             res.edges[e].second.value,
-                             ida == idb ? fmt::format("curve {} intersects itself near ({}, {})", ida, where.x, where.y)
-                                        : fmt::format("curves {} and {} intersect near ({}, {})", ida, idb, where.x, where.y));
+      res.error = make_error(
+          BoundaryErrorKind::Intersection, ida, idb, where, res.edges[e].first.value, res.edges[e].second.value,
+          ida == idb ? fmt::format("curve {} intersects itself near ({}, {})", ida, where.x, where.y)
+                     : fmt::format("curves {} and {} intersect near ({}, {})", ida, idb, where.x, where.y));
       return true;
     };
     for (const EdgeCrossing& x : rr.crossings) {
       if (x.other == kNoEdge) continue;
       const Vec2 where = 0.5 * (pts[x.u.value] + pts[x.w.value]);
-      if (fail_if_short(x.edge, res.edge_curve[x.other], where) || fail_if_short(x.other, res.edge_curve[x.edge], where))
+      if (fail_if_short(x.edge, res.edge_curve[x.other], where) ||
+          fail_if_short(x.other, res.edge_curve[x.edge], where))
         return res;
       to_split.push_back(edge_ref[x.edge]);
       to_split.push_back(edge_ref[x.other]);

@@ -33,7 +33,8 @@ CheckResult check_topology(const TriangleStore& m) {
       if (!o.valid()) continue;
       if (o.value >= m.corner.size() || !m.alive(tri_of(o)))
         return {fmt::format("side {} of triangle {} has a dead or invalid twin {}", e, t, o.value)};
-      if (m.twin[o.value] != s) return {fmt::format("twin of side {} is {} but its twin is {}", s.value, o.value, m.twin[o.value].value)};
+      if (m.twin[o.value] != s)
+        return {fmt::format("twin of side {} is {} but its twin is {}", s.value, o.value, m.twin[o.value].value)};
       if (m.org(o) != m.dest(s) || m.dest(o) != m.org(s))
         return {fmt::format("side {} ({}->{}) and twin {} ({}->{}) do not match", s.value, m.org(s).value,
                             m.dest(s).value, o.value, m.org(o).value, m.dest(o).value)};
@@ -41,11 +42,13 @@ CheckResult check_topology(const TriangleStore& m) {
         return {fmt::format("flags differ across edge {}-{}", m.org(s).value, m.dest(s).value)};
     }
     const VertexId a = m.vertex(TriId{t}, 0), b = m.vertex(TriId{t}, 1), c = m.vertex(TriId{t}, 2);
-    if (a == b || b == c || a == c) return {fmt::format("triangle {} repeats a corner ({}, {}, {})", t, a.value, b.value, c.value)};
+    if (a == b || b == c || a == c)
+      return {fmt::format("triangle {} repeats a corner ({}, {}, {})", t, a.value, b.value, c.value)};
     if (g.orient(a, b, c) != Sign::Positive)
       return {fmt::format("triangle {} ({}, {}, {}) is not counter-clockwise", t, a.value, b.value, c.value)};
   }
-  if (dead != m.free_tris.size()) return {fmt::format("{} dead triangles but {} on the free list", dead, m.free_tris.size())};
+  if (dead != m.free_tris.size())
+    return {fmt::format("{} dead triangles but {} on the free list", dead, m.free_tris.size())};
   for (TriId t : m.free_tris)
     if (m.alive(t)) return {fmt::format("free list holds live triangle {}", t.value)};
   std::sort(edges.begin(), edges.end());

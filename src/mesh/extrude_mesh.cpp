@@ -66,7 +66,8 @@ bool mesh_swept_face(FaceWork& f, const geo::Extrusion& ex) {
   const std::vector<std::uint32_t> left = side(ex.begin_curve, src.front());
   const std::vector<std::uint32_t> right = side(ex.end_curve, src.back());
   if (left.size() != K + 1 || right.size() != K + 1)
-    return f.fail(MeshProblem::ExtrudeSweptElements, {std::abs(ex.source), static_cast<long long>(K)}, std::nullopt, {ex.begin_curve, ex.end_curve});
+    return f.fail(MeshProblem::ExtrudeSweptElements, {std::abs(ex.source), static_cast<long long>(K)}, std::nullopt,
+                  {ex.begin_curve, ex.end_curve});
   SurfaceMesh out;
   out.tag = f.tag;
   // grid[k * (M + 1) + i]: source node i at layer height k.
@@ -121,7 +122,8 @@ bool mesh_top_face(FaceWork& f, const geo::ModelSurface& s, const geo::Extrusion
       if (!ce || ce->body || tm == f.mesh.curves.end()) continue;
       const auto sm = f.mesh.curves.find(std::abs(ce->source));
       if (sm == f.mesh.curves.end() || sm->second.nodes.size() != tm->second.nodes.size())
-        return f.fail(MeshProblem::ExtrudeCurveNotCopy, {std::abs(c), std::abs(ce->source)}, std::nullopt, {std::abs(c)});
+        return f.fail(MeshProblem::ExtrudeCurveNotCopy, {std::abs(c), std::abs(ce->source)}, std::nullopt,
+                      {std::abs(c)});
       for (std::size_t j = 0; j < sm->second.nodes.size(); ++j) to_top[sm->second.nodes[j]] = tm->second.nodes[j];
     }
   const SurfaceMesh& from = sit->second;

@@ -62,11 +62,13 @@ bool triangulate_boundary(FaceWork& f) {
     const EdgeCrossing& x = rr.crossings[0];
     const Edge e = f.edges[x.edge];
     const int other = x.other != kNoEdge ? f.edge_curve[x.other] : 0;
-    return f.fail(MeshProblem::BoundaryEdgesCross, {f.edge_curve[x.edge], other}, f.mesh.nodes[f.global[e.first.value]].xyz, {f.edge_curve[x.edge], other});
+    return f.fail(MeshProblem::BoundaryEdgesCross, {f.edge_curve[x.edge], other},
+                  f.mesh.nodes[f.global[e.first.value]].xyz, {f.edge_curve[x.edge], other});
   }
   if (!rr.touching.empty()) {
     const VertexOnEdge& x = rr.touching[0];
-    return f.fail(MeshProblem::BoundaryNodeOnEdge, {f.edge_curve[x.edge]}, f.mesh.nodes[f.global[x.v.value]].xyz, {f.edge_curve[x.edge]});
+    return f.fail(MeshProblem::BoundaryNodeOnEdge, {f.edge_curve[x.edge]}, f.mesh.nodes[f.global[x.v.value]].xyz,
+                  {f.edge_curve[x.edge]});
   }
   // The sizes extended from the boundary are interpolated in the whole recovered
   // triangulation, holes and the hull outside the face included: a walk in it always

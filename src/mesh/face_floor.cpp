@@ -129,7 +129,8 @@ void record_curve_split(FaceWork& f, FloorCurves& fl, VertexId a, VertexId b, Ve
   cm.nodes.insert(cm.nodes.begin() + at, node);
   cm.t.insert(cm.t.begin() + at, fl.pending.t);
   fl.floor_nodes.emplace_back(fl.pending.curve, node);
-  if (cm.h.size() > fl.pending.k + 1) cm.h.insert(cm.h.begin() + at, 0.5 * (cm.h[fl.pending.k] + cm.h[fl.pending.k + 1]));
+  if (cm.h.size() > fl.pending.k + 1)
+    cm.h.insert(cm.h.begin() + at, 0.5 * (cm.h[fl.pending.k] + cm.h[fl.pending.k + 1]));
   if (f.global.size() <= v.value) f.global.resize(v.value + 1, kNoLocal);
   f.global[v.value] = node;
   fl.edge_curve_of.erase(std::minmax(a.value, b.value));

@@ -173,7 +173,8 @@ bool segments_meet(Vec2 p, Vec2 q, Vec2 r, Vec2 s) {
 // filter: an element is tested against what shares a cell with its bounding box.
 class OverlapGrid {
  public:
-  OverlapGrid(const LayerBuild& b, const std::vector<LayerElement>& els, const std::vector<std::pair<Vec2, Vec2>>& lines)
+  OverlapGrid(const LayerBuild& b, const std::vector<LayerElement>& els,
+              const std::vector<std::pair<Vec2, Vec2>>& lines)
       : b_(b), els_(els), lines_(lines) {
     lo_ = {1e300, 1e300};
     Vec2 hi{-1e300, -1e300};
@@ -266,7 +267,8 @@ class OverlapGrid {
   }
   bool elements_meet(const LayerElement& e, const LayerElement& o) const {
     for (int j = 0; j < o.nv; ++j) {
-      const std::array<std::uint32_t, 2> ids{o.v[static_cast<std::size_t>(j)], o.v[static_cast<std::size_t>((j + 1) % o.nv)]};
+      const std::array<std::uint32_t, 2> ids{o.v[static_cast<std::size_t>(j)],
+                                             o.v[static_cast<std::size_t>((j + 1) % o.nv)]};
       if (edges_meet(e, b_.xy(ids[0]), b_.xy(ids[1]), &ids)) return true;
     }
     return false;
@@ -367,7 +369,8 @@ struct LayerElements {
   std::vector<LayerElement> els;
   int column_id = 0;
   void add(std::array<std::uint32_t, 4> v, int nv, int layer, const BoundaryLayerParams& p) {
-    if (orient2d(b.xy(v[0]), b.xy(v[1]), b.xy(v[2])) == Sign::Negative) std::swap(v[1], v[static_cast<std::size_t>(nv - 1)]);
+    if (orient2d(b.xy(v[0]), b.xy(v[1]), b.xy(v[2])) == Sign::Negative)
+      std::swap(v[1], v[static_cast<std::size_t>(nv - 1)]);
     els.push_back({v, nv, layer, column_id, p.quads});
   }
 };
@@ -465,7 +468,8 @@ std::vector<bool> kept_elements(const LayerBuild& b, const std::vector<LayerElem
   for (const auto& [e, cnt] : de.count) lines.push_back({b.xy(e.first), b.xy(e.second)});
   std::vector<std::size_t> order(els.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return els[x].layer < els[y].layer; });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t x, std::size_t y) { return els[x].layer < els[y].layer; });
   std::vector<bool> dropped(els.size(), false);
   {
     OverlapGrid grid(b, els, lines);
@@ -501,7 +505,8 @@ void emit_layer_elements(LayerBuild& b, const std::vector<LayerElement>& els, co
     std::uint32_t& m = made[v & ~kPending];
     if (m == kNoLocal) {
       const Vec2 q = b.pending[v & ~kPending];
-      m = f.plane.geom ? f.mesh.add_node(f.plane.to_space(q), f.plane.to_param(q)) : f.mesh.add_node(f.plane.to_space(q));
+      m = f.plane.geom ? f.mesh.add_node(f.plane.to_space(q), f.plane.to_param(q))
+                       : f.mesh.add_node(f.plane.to_space(q));
       f.layer_nodes.push_back(m);
     }
     return m;
@@ -512,7 +517,8 @@ void emit_layer_elements(LayerBuild& b, const std::vector<LayerElement>& els, co
     const LayerElement& e = els[i];
     std::array<std::uint32_t, 4> q{};
     for (int j = 0; j < e.nv; ++j) q[static_cast<std::size_t>(j)] = node_of(e.v[static_cast<std::size_t>(j)]);
-    for (int j = 0; j < e.nv; ++j) de.element_edge(q[static_cast<std::size_t>(j)], q[static_cast<std::size_t>((j + 1) % e.nv)]);
+    for (int j = 0; j < e.nv; ++j)
+      de.element_edge(q[static_cast<std::size_t>(j)], q[static_cast<std::size_t>((j + 1) % e.nv)]);
     if (e.nv == 3) {
       f.layer_triangles.push_back({q[0], q[1], q[2]});
     } else if (e.quads || recombined) {

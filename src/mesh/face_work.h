@@ -46,8 +46,8 @@ struct FaceWork {
 
   /// Sets the error: `problem` with its numbers on this surface, then `curves`, the place.
   /// Returns false.
-  bool fail(MeshProblem problem, std::initializer_list<long long> numbers = {}, std::optional<Vec3> where = std::nullopt,
-            std::initializer_list<int> curves = {});
+  bool fail(MeshProblem problem, std::initializer_list<long long> numbers = {},
+            std::optional<Vec3> where = std::nullopt, std::initializer_list<int> curves = {});
   /// fail(problem) with a sub-step's own words as its reason.
   bool fail_because(MeshProblem problem, std::string reason);
   /// "lon X, lat Y" of a point of the face (on a geometry), else "(x, y, z)".

@@ -254,7 +254,8 @@ InsertOutcome Frontal::insert_rebay(std::uint32_t t, Side s) {
   }
   if (out != InsertOutcome::Inserted) {
     const TriId tt{t};
-    out = ins_.insert_near(circumcentre(m_.pos(m_.vertex(tt, 0)), m_.pos(m_.vertex(tt, 1)), m_.pos(m_.vertex(tt, 2))), tt);
+    out = ins_.insert_near(circumcentre(m_.pos(m_.vertex(tt, 0)), m_.pos(m_.vertex(tt, 1)), m_.pos(m_.vertex(tt, 2))),
+                           tt);
     if (out == InsertOutcome::Inserted) ++fres_.circumcentre_fallbacks;
   }
   return out;

@@ -628,7 +628,8 @@ void integrate_plan(const geo::Model& model, const Mesh1dOptions& opt, double bb
   cp.evaluations = cp.prim.evaluations;
   cp.nodes = node_count(cp.prim, cp.min_segs);
   plan_layer_points(model, opt, cp);
-  if (!cp.layer_begin.empty() || !cp.layer_end.empty()) cp.nodes += static_cast<double>(cp.layer_begin.size() + cp.layer_end.size());
+  if (!cp.layer_begin.empty() || !cp.layer_end.empty())
+    cp.nodes += static_cast<double>(cp.layer_begin.size() + cp.layer_end.size());
   if (cp.odd && cp.nodes <= kMaxCurveNodes - 1 && std::fmod(cp.nodes, 2.0) == 0) cp.nodes += 1;
   take_parameters(opt, cp);
 }
@@ -695,9 +696,10 @@ ModelMesh coarse_mesh(const std::vector<CurvePlan>& plans, const Mesh1dOptions& 
       coarse.curves.emplace(cp.tag, std::move(cm));
       continue;
     }
-    cm.t = cp.transfinite       ? transfinite_parameters(shape, *cp.transfinite)
-           : cp.parameters_taken ? cp.coarse_ts
-                                 : place_n_nodes(cp.prim, static_cast<int>(std::min<double>(cp.nodes, kCoarseCurveNodes)));
+    cm.t = cp.transfinite ? transfinite_parameters(shape, *cp.transfinite)
+           : cp.parameters_taken
+               ? cp.coarse_ts
+               : place_n_nodes(cp.prim, static_cast<int>(std::min<double>(cp.nodes, kCoarseCurveNodes)));
     cm.nodes.push_back(coarse.vertex_node.at(cp.mc->begin));
     const bool uv = shape.on_surface();
     for (std::size_t i = 1; i + 1 < cm.t.size(); ++i)

@@ -77,7 +77,8 @@ struct Mesh1dOptions {
 };
 
 /// The integrand's size h(t) along one curve: for `t`, the curve jets at t, sets h (> 0).
-using CurveSizeFn = std::function<void(std::span<const double> t, std::span<const geo::Jet3> jets, std::span<double> h)>;
+using CurveSizeFn =
+    std::function<void(std::span<const double> t, std::span<const geo::Jet3> jets, std::span<double> h)>;
 
 /// Samples of the primitive a(t) = integral_0^t |X'(s)| / h(s) ds (adaptive trapezoid,
 /// piece by piece, sizes evaluated in batches): t and a increasing, t from 0 to 1. With

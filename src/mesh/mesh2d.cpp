@@ -1,9 +1,8 @@
 // The 2D pipeline (paper section 3.3): per face, in tag order, the steps over its
 // FaceWork (face_work.h): boundary and plane (face_boundary), boundary mesh and sizing
-// (face_boundary_mesh; the boundary layers before it, face_layer), the element budget (here), refinement (face_refine), smoothing
-// and the quality pass (face_smooth), the quality floor (face_floor), output
-// (face_output); a transfinite face is filled instead (face_transfinite); a filling
-// Surface gets its plane from face_filling.
+// (face_boundary_mesh; the boundary layers before it, face_layer), the element budget (here), refinement (face_refine),
+// smoothing and the quality pass (face_smooth), the quality floor (face_floor), output (face_output); a transfinite
+// face is filled instead (face_transfinite); a filling Surface gets its plane from face_filling.
 #include "mesh/mesh2d.h"
 
 #include <algorithm>

@@ -33,70 +33,71 @@ struct MeshEntity {
 enum class MeshProblem {
   None,
   // 1D: the curve is entities[0].
-  LayerEndCurved,            ///< n0 the point where a boundary layer ends, on a curve that is no line
-  LayersTouch,               ///< n0 the point where two boundary layers end
-  CurveNoGeometry,           ///< the curve has no shape
-  CurveNoEndPoint,           ///< an end point of the curve does not exist
-  CurveSizeNotFinite,        ///< the curve's size integral is not finite
+  LayerEndCurved,      ///< n0 the point where a boundary layer ends, on a curve that is no line
+  LayersTouch,         ///< n0 the point where two boundary layers end
+  CurveNoGeometry,     ///< the curve has no shape
+  CurveNoEndPoint,     ///< an end point of the curve does not exist
+  CurveSizeNotFinite,  ///< the curve's size integral is not finite
   // The 1D crossing repair (mesh/boundary_recovery.h) failing other than on a crossing.
-  RepairRoundsExhausted,     ///< n0 the repair rounds run
-  RepairCurveTooFewPoints,   ///< n0 the curve given fewer than two points
-  RepairPointOutOfRange,     ///< n0 the curve, n1 the point index, n2 the points there are
-  RepairNoPointAtParameter,  ///< n0 the curve; value the parameter of the split
-  RepairTriangulationFailed, ///< reason: the triangulation's words
-  RepairEdgeRecoveryFailed,  ///< reason: the edge recovery's words
-  PeriodicSourceNotMeshed,   ///< n0 the periodic curve, n1 its source curve, which has no mesh
-  PeriodicCopyNotAlong,      ///< n0 the periodic curve, n1 its source, n2 the node, n3 the nodes' count less one
-  PeriodicCycle,             ///< n0 the periodic curve, n1 its source, not meshed first
+  RepairRoundsExhausted,      ///< n0 the repair rounds run
+  RepairCurveTooFewPoints,    ///< n0 the curve given fewer than two points
+  RepairPointOutOfRange,      ///< n0 the curve, n1 the point index, n2 the points there are
+  RepairNoPointAtParameter,   ///< n0 the curve; value the parameter of the split
+  RepairTriangulationFailed,  ///< reason: the triangulation's words
+  RepairEdgeRecoveryFailed,   ///< reason: the edge recovery's words
+  PeriodicSourceNotMeshed,    ///< n0 the periodic curve, n1 its source curve, which has no mesh
+  PeriodicCopyNotAlong,       ///< n0 the periodic curve, n1 its source, n2 the node, n3 the nodes' count less one
+  PeriodicCycle,              ///< n0 the periodic curve, n1 its source, not meshed first
   // After meshing: the $Periodic links (mesh/periodic_curve.h) or the merged surfaces.
-  PeriodicCurveNodeCounts,   ///< n0 the periodic curve, n1 its nodes, n2 its source curve, n3 the source's nodes
-  PeriodicSurfaceNodeCounts, ///< surface, n0 its curve, n1 its nodes, n2 the source's curve, n3 that one's nodes, n4 the source surface
-  PeriodicSurfaceNotCopy,    ///< surface, n0 the source surface
-  PeriodicSurfacePointNoNode, ///< surface, n0 its embedded point, n1 the source's paired point
-  DiscreteCurveChanged,      ///< n0 the discrete curve, n1 its mesh nodes, n2 the nodes its file gave
+  PeriodicCurveNodeCounts,     ///< n0 the periodic curve, n1 its nodes, n2 its source curve, n3 the source's nodes
+  PeriodicSurfaceNodeCounts,   ///< surface, n0 its curve, n1 its nodes, n2 the source's curve, n3 that one's nodes, n4
+                               ///< the source surface
+  PeriodicSurfaceNotCopy,      ///< surface, n0 the source surface
+  PeriodicSurfacePointNoNode,  ///< surface, n0 its embedded point, n1 the source's paired point
+  DiscreteCurveChanged,        ///< n0 the discrete curve, n1 its mesh nodes, n2 the nodes its file gave
   // 2D: the surface is MeshError::surface (and entities[0]).
-  GeometryMissing,           ///< n0 the surface geometry that does not exist
-  LoopMissing,               ///< n0 the curve loop that does not exist
-  CurveNotMeshed,            ///< n0 the curve of a loop with no 1D mesh
-  LoopNotConnected,          ///< n0 the loop, n1 the curve (signed) where it breaks
-  LoopTooFewNodes,           ///< n0 the loop; place
-  LoopNotClosed,             ///< n0 the loop
-  NoBoundaryLoop,            ///< no loop at all
-  EmbeddedPointNoNode,       ///< n0 the embedded point
-  EmbeddedCurveNotMeshed,    ///< n0 the embedded curve
+  GeometryMissing,         ///< n0 the surface geometry that does not exist
+  LoopMissing,             ///< n0 the curve loop that does not exist
+  CurveNotMeshed,          ///< n0 the curve of a loop with no 1D mesh
+  LoopNotConnected,        ///< n0 the loop, n1 the curve (signed) where it breaks
+  LoopTooFewNodes,         ///< n0 the loop; place
+  LoopNotClosed,           ///< n0 the loop
+  NoBoundaryLoop,          ///< no loop at all
+  EmbeddedPointNoNode,     ///< n0 the embedded point
+  EmbeddedCurveNotMeshed,  ///< n0 the embedded curve
   // The face's plane (mesh/face_plane.h); value: the share of its size Gmsh's check allows.
-  FaceAtPole,                ///< a lon/lat Sphere face reaching a pole; place
-  FaceNoArea,                ///< the outer loop encloses no area; place
-  FaceNotPlanar,             ///< the boundary is not planar; place
-  FacePointOffPlane,         ///< an embedded point is off the plane; place
-  LayersOverlap,             ///< the boundary layers overlap; place
-  LayersOpen,                ///< the layers leave a part with no closed boundary; place
-  LayersFill,                ///< the layers fill the face
-  DelaunayFailed,            ///< reason: the boundary nodes' Delaunay's words
-  BoundaryNodesCoincide,     ///< n0, n1 the two nodes at one place; place
-  RecoveryFailed,            ///< reason: the edge recovery's words
-  BoundaryEdgesCross,        ///< n0, n1 the curves of the crossing edges; place
-  BoundaryNodeOnEdge,        ///< n0 the curve of the edge a node lies on; place
-  HoleRemovalFailed,         ///< reason: the hole removal's words
-  RefinementFailed,          ///< reason: the refinement's words
-  MeshAdaptFailed,           ///< reason: meshadapt's words
-  TransfiniteHoles,          ///< n0 the holes of a transfinite surface
-  TransfiniteCorner,         ///< n0 the corner point not on the boundary
-  TransfiniteCornerCount,    ///< n0 the corners, not 3 or 4 (mesh/transfinite_surface.h)
+  FaceAtPole,                    ///< a lon/lat Sphere face reaching a pole; place
+  FaceNoArea,                    ///< the outer loop encloses no area; place
+  FaceNotPlanar,                 ///< the boundary is not planar; place
+  FacePointOffPlane,             ///< an embedded point is off the plane; place
+  LayersOverlap,                 ///< the boundary layers overlap; place
+  LayersOpen,                    ///< the layers leave a part with no closed boundary; place
+  LayersFill,                    ///< the layers fill the face
+  DelaunayFailed,                ///< reason: the boundary nodes' Delaunay's words
+  BoundaryNodesCoincide,         ///< n0, n1 the two nodes at one place; place
+  RecoveryFailed,                ///< reason: the edge recovery's words
+  BoundaryEdgesCross,            ///< n0, n1 the curves of the crossing edges; place
+  BoundaryNodeOnEdge,            ///< n0 the curve of the edge a node lies on; place
+  HoleRemovalFailed,             ///< reason: the hole removal's words
+  RefinementFailed,              ///< reason: the refinement's words
+  MeshAdaptFailed,               ///< reason: meshadapt's words
+  TransfiniteHoles,              ///< n0 the holes of a transfinite surface
+  TransfiniteCorner,             ///< n0 the corner point not on the boundary
+  TransfiniteCornerCount,        ///< n0 the corners, not 3 or 4 (mesh/transfinite_surface.h)
   TransfiniteCornerOffBoundary,  ///< a corner off the boundary chain
-  TransfiniteCornerTwice,    ///< a corner listed twice
-  TransfiniteSidesUnequal4,  ///< n0..n3 the divisions: third side, first, fourth, second
-  TransfiniteSidesUnequal3,  ///< n0, n1 the divisions: first side, third
-  TransfiniteEmptySide,      ///< a side with no edge
-  SourceNotMeshed,           ///< n0 the surface an extrusion or periodic copy copies, not meshed
-  ExtrudeTopNodes,           ///< n0 the top curve, n1 its nodes, n2 the source curve, n3 its nodes
-  ExtrudeSweptElements,      ///< n0 the source curve, n1 the layers' elements
-  ExtrudeCurveNotCopy,       ///< n0 the top's curve, n1 the curve it should copy
-  ExtrudeNodeNoCopy,         ///< n0 the source surface
-  PairedCurvesNoNodes,       ///< a periodic copy's paired curves have no nodes
-  PeriodicFaceCurveNodes,    ///< as PeriodicSurfaceNodeCounts, met while copying the face
-  PeriodicNodeOffCurves,     ///< n0 the source surface; place (always in space): its node on no paired curve
-  PeriodicQuadNodeOffCurves, ///< n0 the source surface
+  TransfiniteCornerTwice,        ///< a corner listed twice
+  TransfiniteSidesUnequal4,      ///< n0..n3 the divisions: third side, first, fourth, second
+  TransfiniteSidesUnequal3,      ///< n0, n1 the divisions: first side, third
+  TransfiniteEmptySide,          ///< a side with no edge
+  SourceNotMeshed,               ///< n0 the surface an extrusion or periodic copy copies, not meshed
+  ExtrudeTopNodes,               ///< n0 the top curve, n1 its nodes, n2 the source curve, n3 its nodes
+  ExtrudeSweptElements,          ///< n0 the source curve, n1 the layers' elements
+  ExtrudeCurveNotCopy,           ///< n0 the top's curve, n1 the curve it should copy
+  ExtrudeNodeNoCopy,             ///< n0 the source surface
+  PairedCurvesNoNodes,           ///< a periodic copy's paired curves have no nodes
+  PeriodicFaceCurveNodes,        ///< as PeriodicSurfaceNodeCounts, met while copying the face
+  PeriodicNodeOffCurves,         ///< n0 the source surface; place (always in space): its node on no paired curve
+  PeriodicQuadNodeOffCurves,     ///< n0 the source surface
 };
 
 struct MeshError {

@@ -124,7 +124,8 @@ MeshStats compute_stats(const ModelMesh& mesh, const std::vector<const SizeAt3*>
       }
     }
     for (const auto& q : sf.quads) {
-      const double qq = quad_quality(mesh.nodes[q[0]].xyz, mesh.nodes[q[1]].xyz, mesh.nodes[q[2]].xyz, mesh.nodes[q[3]].xyz);
+      const double qq =
+          quad_quality(mesh.nodes[q[0]].xyz, mesh.nodes[q[1]].xyz, mesh.nodes[q[2]].xyz, mesh.nodes[q[3]].xyz);
       quad_sum += qq;
       s.quad_min = s.quads == 0 ? qq : std::min(s.quad_min, qq);
       ++s.quads;
@@ -291,8 +292,8 @@ std::string stats_json(const MeshStats& s) {
   }
   if (s.has_depth_clamp) {
     const field::DepthClampReport& d = s.depth_clamp;
-    out += fmt::format(", \"depth_min\": {}, \"depth_clamped_nodes\": {}, \"depth_clamped_dry\": {}", json_number(d.min_depth),
-                       d.clamped, d.dry);
+    out += fmt::format(", \"depth_min\": {}, \"depth_clamped_nodes\": {}, \"depth_clamped_dry\": {}",
+                       json_number(d.min_depth), d.clamped, d.dry);
     if (d.has_worst)
       out += fmt::format(", \"depth_clamp_lon\": {}, \"depth_clamp_lat\": {}, \"depth_clamp_grid\": {}, "
                          "\"depth_clamp_value\": {}",

@@ -59,8 +59,8 @@ struct SurfaceSize {
 };
 
 /// Statistics over every surface element of the mesh (rho over the triangles, the corner
-/// quality over the quadrangles). With `size`, each distinct element edge's chord length is divided by the size at its midpoint (the callback may
-/// project the midpoint onto the surface).
+/// quality over the quadrangles). With `size`, each distinct element edge's chord length is divided by the size at its
+/// midpoint (the callback may project the midpoint onto the surface).
 MeshStats mesh_stats(const ModelMesh& mesh, const SizeAt3& size = nullptr);
 
 /// As above with a target size per surface: each distinct edge is measured against the

@@ -318,7 +318,8 @@ void Adapter::run() {
     std::fill(fixed_.begin(), fixed_.end(), 0);
     for (std::uint32_t s = 0; s < m_.corner.size(); ++s) {
       if (!m_.alive(tri_of(Side{s}))) continue;
-      if (m_.constrained(Side{s}) || !m_.twin[s].valid()) fixed_[m_.corner[s].value] = fixed_[m_.dest(Side{s}).value] = 1;
+      if (m_.constrained(Side{s}) || !m_.twin[s].valid())
+        fixed_[m_.corner[s].value] = fixed_[m_.dest(Side{s}).value] = 1;
     }
     for (std::uint32_t v = 0; v < n_input; ++v) fixed_[v] |= !m_.out_side[v].valid();
   }

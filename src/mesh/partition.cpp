@@ -516,8 +516,8 @@ std::vector<std::uint32_t> copy_parts(Coarse& c, std::vector<PartOut>& parts, co
         const auto s0 = static_cast<std::uint32_t>(3 * tbase[p]);
         for (std::uint32_t x = 0; x < P.corner.size(); ++x) {
           const VertexId v = P.corner[x];
-          out.corner[s0 + x] = VertexId{v.value < po.n_init ? po.global_of[v.value]
-                                                           : static_cast<std::uint32_t>(vbase[p] + v.value - po.n_init)};
+          out.corner[s0 + x] = VertexId{
+              v.value < po.n_init ? po.global_of[v.value] : static_cast<std::uint32_t>(vbase[p] + v.value - po.n_init)};
           out.side_flags[s0 + x] = P.side_flags[x];
           if (P.twin[x].valid()) {
             out.twin[s0 + x] = Side{s0 + P.twin[x].value};

@@ -89,10 +89,10 @@ std::vector<Vec2> subdivide_segment(Vec2 a, Vec2 b, const PlaneSizeFn& size);
 /// The result is the same bytes for every thread count; on failure m is left empty. on_parts, if given, is called on
 /// the calling thread only: (0, K) once the part count K is known, then (done, K) as parts
 /// finish (non-decreasing, last (K, K) when all succeed); the parts report nothing.
-PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, PartRefiner kind,
-                                   const std::function<PlaneSizeFn()>& make_size, const PartitionOptions& opt,
-                                   int threads,
-                                   const std::function<void(std::uint32_t done, std::uint32_t parts)>& on_parts = nullptr,
-                                   const std::function<void(RefineOptions&)>& part_sizes = nullptr);
+PartitionResult refine_partitioned(
+    TriangleStore& m, const RefineOptions& base, PartRefiner kind, const std::function<PlaneSizeFn()>& make_size,
+    const PartitionOptions& opt, int threads,
+    const std::function<void(std::uint32_t done, std::uint32_t parts)>& on_parts = nullptr,
+    const std::function<void(RefineOptions&)>& part_sizes = nullptr);
 
 }  // namespace sm

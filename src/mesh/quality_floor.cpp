@@ -123,7 +123,8 @@ class Floor {
     if (from >= n) return;
     x_.resize(n);
     floor_scan(threads_, n - from, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t v = from + begin; v < from + end; ++v) x_[v] = face_.space(VertexId{static_cast<std::uint32_t>(v)});
+      for (std::size_t v = from + begin; v < from + end; ++v)
+        x_[v] = face_.space(VertexId{static_cast<std::uint32_t>(v)});
     });
   }
   /// The live triangles with rho < q_ ((rho, slot) by slot) and the lowest rho of all,
@@ -631,8 +632,9 @@ QualityFloorResult Floor::run(const QualityFloorOptions& opt) {
   };
   res_.below_before = collect(false);
   const std::uint32_t budget = opt.max_points ? opt.max_points : 4 * res_.below_before + 256;
-  budget_ = opt.max_work ? opt.max_work
-                         : 16 * std::uint64_t{res_.below_before} + 64 * std::uint64_t(std::max(opt.max_rounds, 0)) + 1024;
+  budget_ = opt.max_work
+                ? opt.max_work
+                : 16 * std::uint64_t{res_.below_before} + 64 * std::uint64_t(std::max(opt.max_rounds, 0)) + 1024;
   res_.work_budget = budget_;
   for (int round = 0; round < opt.max_rounds && !bad.empty() && !stopped(); ++round) {
     ++res_.rounds;

@@ -56,7 +56,8 @@ void Refiner::run() {
     }
     inserted();
     if (!consider(ins_.created())) break;
-    if (maybe_sort(new_slot, new_vertex)) new_slot = {}, new_vertex = {};  // 6 bytes a triangle, not needed until the next sort
+    if (maybe_sort(new_slot, new_vertex))
+      new_slot = {}, new_vertex = {};  // 6 bytes a triangle, not needed until the next sort
   }
   finish();
 }

@@ -21,12 +21,11 @@ struct RefineOptions {
   /// circumcentres of the triangles an insertion creates.
   std::function<void(std::span<const Vec2> pts, std::span<double> h)> size_at;
   /// Optional second size, carried by the vertices as Gmsh 4.8.4's 2D Delaunay and frontal
-  /// refiners carry the boundary sizes extended into the face (docs/kernel.md): evaluated at the vertices present on entry (h[i] at pts[i],
-  /// inf where none); a vertex inserted later gets the barycentric interpolation of the
-  /// sizes of the triangle that contained it, in the mesh being refined; a triangle's size
-  /// is the smaller of size_at at its circumcentre and the mean of its vertices' sizes.
-  /// As the mesh grows, large boundary sizes so reach further in than an interpolation in
-  /// the boundary triangulation would let them.
+  /// refiners carry the boundary sizes extended into the face (docs/kernel.md): evaluated at the vertices present on
+  /// entry (h[i] at pts[i], inf where none); a vertex inserted later gets the barycentric interpolation of the sizes of
+  /// the triangle that contained it, in the mesh being refined; a triangle's size is the smaller of size_at at its
+  /// circumcentre and the mean of its vertices' sizes. As the mesh grows, large boundary sizes so reach further in than
+  /// an interpolation in the boundary triangulation would let them.
   std::function<void(std::span<const Vec2> pts, std::span<double> h)> vertex_size_at;
   /// With vertex_size_at: h[i] = the factor from its sizes to plane sizes at pts[i] (1 /
   /// the conformal factor of a sphere's plane), applied where a triangle or a vertex is

@@ -82,10 +82,11 @@ double transfinite_density(const TransfiniteCurveSpec& s, double t, double speed
     }
     case TransfiniteLaw::Bump: {
       const double c = s.coef;
-      const double a = c > 1.0 ? -4.0 * std::sqrt(c - 1.0) * std::atan2(1.0, std::sqrt(c - 1.0)) / (n * length)
-                               : 2.0 * std::sqrt(1.0 - c) *
-                                     std::log(std::abs((1.0 + 1.0 / std::sqrt(1.0 - c)) / (1.0 - 1.0 / std::sqrt(1.0 - c)))) /
-                                     (n * length);
+      const double a =
+          c > 1.0 ? -4.0 * std::sqrt(c - 1.0) * std::atan2(1.0, std::sqrt(c - 1.0)) / (n * length)
+                  : 2.0 * std::sqrt(1.0 - c) *
+                        std::log(std::abs((1.0 + 1.0 / std::sqrt(1.0 - c)) / (1.0 - 1.0 / std::sqrt(1.0 - c)))) /
+                        (n * length);
       const double b = -a * length * length / (4.0 * (c - 1.0));
       const double x = t * length - 0.5 * length;
       return speed / (-a * x * x + b);

@@ -33,7 +33,15 @@ struct TransfiniteBoundary {
 /// corners (n0 the count), a corner off the chain, a corner listed twice, opposite sides
 /// unequal (4 sides: n0..n3 the third side, the first, the fourth, the second; 3 sides: n0
 /// the first, n1 the third), a side with no edge.
-enum class TransfiniteFault { None, CornerCount, CornerOffBoundary, CornerTwice, SidesUnequal4, SidesUnequal3, EmptySide };
+enum class TransfiniteFault {
+  None,
+  CornerCount,
+  CornerOffBoundary,
+  CornerTwice,
+  SidesUnequal4,
+  SidesUnequal3,
+  EmptySide
+};
 
 struct TransfiniteResult {
   std::string error;                       // empty when filled: the fault in words
@@ -52,7 +60,8 @@ struct TransfiniteResult {
 /// Corners found as Gmsh finds them when none are given: the first node of each of the
 /// loop's 3 or 4 curves (`curve_starts`, positions in the chain); a 3-sided face is
 /// turned so that its two sides from the first corner have the same count if possible.
-std::vector<std::size_t> implicit_transfinite_corners(std::span<const std::size_t> curve_starts, std::size_t chain_size);
+std::vector<std::size_t> implicit_transfinite_corners(std::span<const std::size_t> curve_starts,
+                                                      std::size_t chain_size);
 
 /// Fills the face; `smoothing` > 0 passes of elliptic smoothing on a 4-sided grid
 /// (Gmsh's, with Mesh.Smoothing > 1). Errors name the counts as Gmsh reports them:

@@ -180,7 +180,8 @@ Mesh run(const py::object& error_type, const std::string& path, const std::map<s
   m.triangles = t;
   std::vector<std::int64_t> quad;
   for (const io::EntityMesh& e : mm.entities)
-    if (e.dim == 2 && e.type == io::ElementType::Quad4) quad.insert(quad.end(), e.connectivity.begin(), e.connectivity.end());
+    if (e.dim == 2 && e.type == io::ElementType::Quad4)
+      quad.insert(quad.end(), e.connectivity.begin(), e.connectivity.end());
   py::array_t<std::int64_t> qa({static_cast<py::ssize_t>(quad.size() / 4), py::ssize_t{4}});
   std::copy(quad.begin(), quad.end(), qa.mutable_data());
   m.quads = qa;
@@ -260,7 +261,8 @@ class ScriptError(RuntimeError):
       .def_readonly("node_partition", &Mesh::node_partition,
                     "(N,) int32 the smallest partition of each node's triangles, else None")
       .def_readonly("stats", &Mesh::stats, "the statistics of --stats as a dict (None without a 2D mesh)")
-      .def_readonly("diagnostics", &Mesh::diagnostics, "warnings and notes: dicts (severity, kind, message, file, line, column)")
+      .def_readonly("diagnostics", &Mesh::diagnostics,
+                    "warnings and notes: dicts (severity, kind, message, file, line, column)")
       .def_readonly("printed", &Mesh::printed, "what the script's Printf wrote")
       .def("__repr__", [](const Mesh& m) {
         return "<stereomesh.Mesh: " + std::to_string(py::len(m.nodes_xyz)) + " nodes, " +

@@ -92,7 +92,7 @@ int main(int argc, char** argv) {
   std::size_t points = 0;
   for (const auto& c : cm->curves) points += c.uv.size();
   std::printf("%s at gamma %g m%s: %zu curves, %zu loops, %zu surfaces, %zu control points\n", argv[1], gamma,
-              check_splines ? " (spline crossings checked)" : " (splines not checked)", cm->curves.size(), cm->loops.size(),
-              cm->surfaces.size(), points);
+              check_splines ? " (spline crossings checked)" : " (splines not checked)", cm->curves.size(),
+              cm->loops.size(), cm->surfaces.size(), points);
   return 0;
 }

@@ -141,7 +141,9 @@ int main(int argc, char** argv) {
   }
   for (std::size_t k = 0; k < rings.size(); ++k)
     if (k != outer && !sm::point_in_ring(rings[outer], rings[k][0]))
-      return std::fprintf(stderr, "bench_crude_world_geo: ring %zu lies outside the outer ring %zu on the chart\n", k, outer), 1;
+      return std::fprintf(stderr, "bench_crude_world_geo: ring %zu lies outside the outer ring %zu on the chart\n", k,
+                          outer),
+             1;
 
   std::string out;
   out += fmt::format("// The GSHHG crude world ocean ({}; written by tests/bench/crude_world_geo.cpp, {} form):\n",
@@ -160,7 +162,8 @@ int main(int argc, char** argv) {
     points += rings[k].size();
     if (lines) {
       const int c0 = curve;
-      for (int i = first; i < p; ++i) out += fmt::format("Line({}) = {{{}, {}}};\n", curve++, i, i + 1 < p ? i + 1 : first);
+      for (int i = first; i < p; ++i)
+        out += fmt::format("Line({}) = {{{}, {}}};\n", curve++, i, i + 1 < p ? i + 1 : first);
       out += fmt::format("Curve Loop({}) = {{{}:{}}};\n", k + 1, c0, curve - 1);
     } else {
       out += fmt::format("BSpline({}) = {{{}:{}, {}}};\n", curve, first, p - 1, first);

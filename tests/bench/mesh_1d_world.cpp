@@ -140,9 +140,10 @@ void run_case(const Built& b, const field::SizeField& field, double h, bool repa
   const Mesh1dResult r = mesh_curves(b.model, opt);
   const double total = seconds_since(t0);
   if (!r.ok()) {
-    std::printf("  1D meshing failed after %.2f s: kind %d, problem %d, curve %d\n", total, static_cast<int>(r.error.kind),
-                static_cast<int>(r.error.problem), r.error.tag());
-    std::printf("  (dense sampling of the splines there: %zu crossing segment pairs)\n", sampled_crossings(b.model, r.error));
+    std::printf("  1D meshing failed after %.2f s: kind %d, problem %d, curve %d\n", total,
+                static_cast<int>(r.error.kind), static_cast<int>(r.error.problem), r.error.tag());
+    std::printf("  (dense sampling of the splines there: %zu crossing segment pairs)\n",
+                sampled_crossings(b.model, r.error));
     return;
   }
   std::printf("  1D mesh: %llu nodes (%zu of them model points), %llu edges\n",
@@ -172,9 +173,10 @@ void run_case(const Built& b, const field::SizeField& field, double h, bool repa
       const double arc = geo::curve_length(*b.model.curve(tag)->shape, c.t[k], c.t[k + 1], 2) / h;
       arc_lo = std::min(arc_lo, arc), arc_hi = std::max(arc_hi, arc);
     }
-  std::printf("  interior edges within [0.7, 1.4] of the size: %.2f%% of %zu (min %.3f, max %.3f); "
-              "on curves of >= 10 edges %.2f%% of %zu\n",
-              100.0 * good / std::max<std::size_t>(1, n), n, lo, hi, 100.0 * good10 / std::max<std::size_t>(1, n10), n10);
+  std::printf(
+      "  interior edges within [0.7, 1.4] of the size: %.2f%% of %zu (min %.3f, max %.3f); "
+      "on curves of >= 10 edges %.2f%% of %zu\n",
+      100.0 * good / std::max<std::size_t>(1, n), n, lo, hi, 100.0 * good10 / std::max<std::size_t>(1, n10), n10);
   // Along the curve (arc length between nodes) the edges match the size; the chords above
   // are shorter where coastlines turn sharply within one size.
   std::printf("  arc length between nodes / size: min %.3f, max %.3f\n", arc_lo, arc_hi);

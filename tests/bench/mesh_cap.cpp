@@ -72,7 +72,8 @@ bool run_ours(double delta, bool adapt) {
     const sm::Vec2 a{r * std::cos(2 * M_PI * i / kSides), r * std::sin(2 * M_PI * i / kSides)};
     const sm::Vec2 b{r * std::cos(2 * M_PI * (i + 1) / kSides), r * std::sin(2 * M_PI * (i + 1) / kSides)};
     const sm::Vec3 pa = on_sphere(a), pb = on_sphere(b);
-    const int n = std::max(1, static_cast<int>(std::ceil(std::atan2(sm::norm(sm::cross(pa, pb)), sm::dot(pa, pb)) / delta - 1e-9)));
+    const int n = std::max(
+        1, static_cast<int>(std::ceil(std::atan2(sm::norm(sm::cross(pa, pb)), sm::dot(pa, pb)) / delta - 1e-9)));
     for (int k = 0; k < n; ++k) loop.v.push_back(m.add_vertex(a + (double(k) / n) * (b - a)));
   }
   if (!sm::testing::boundary_mesh(m, {loop})) return std::fprintf(stderr, "boundary mesh failed\n"), false;
@@ -99,7 +100,8 @@ bool run_ours(double delta, bool adapt) {
   std::vector<std::array<std::uint32_t, 3>> tris;
   for (std::uint32_t t = 0; t < m.num_slots(); ++t)
     if (m.alive(sm::TriId{t}))
-      tris.push_back({m.vertex(sm::TriId{t}, 0).value, m.vertex(sm::TriId{t}, 1).value, m.vertex(sm::TriId{t}, 2).value});
+      tris.push_back(
+          {m.vertex(sm::TriId{t}, 0).value, m.vertex(sm::TriId{t}, 1).value, m.vertex(sm::TriId{t}, 2).value});
   std::printf("stereomesh %s, cap of 60 degrees, delta = %g: %u nodes, %.3f s CPU (%.0f triangles/s)\n",
               adapt ? "meshadapt" : "del2d + 1 smoothing", delta, m.num_vertices(), cpu, tris.size() / cpu);
   print_sphere_quality(p, tris, delta);
@@ -154,14 +156,15 @@ bool read_msh(const std::string& path, std::vector<sm::Vec3>& p, std::vector<std
 void run_gmsh(double delta, const char* algo) {
   const std::string dir = "/tmp/stereomesh_bench_cap";
   std::system(("mkdir -p " + dir).c_str());
-  std::ofstream(dir + "/cap.geo") << "Point(1) = {0, 0, 0};\nPoint(2) = {0, 0, 1};\nPolarSphere(1) = {1, 2};\n"
-                                  << "r = Tan(Pi / 6);\nn = " << kSides << ";\n"
-                                  << "For i In {0:n - 1}\n"
-                                  << "  Point(10 + i) = {r * Cos(2 * Pi * i / n), r * Sin(2 * Pi * i / n), 0};\n"
-                                  << "EndFor\nFor i In {0:n - 1}\n  Line(10 + i) = {10 + i, 10 + (i + 1) % n};\nEndFor\n"
-                                  << "Curve Loop(1) = {10 : 10 + n - 1};\nPlane Surface(1) = {1};\n"
-                                  << "Field[1] = MathEval;\nField[1].F = \"" << delta << "\";\nBackground Field = 1;\n"
-                                  << "Mesh.MeshSizeFromPoints = 0;\nMesh.MeshSizeExtendFromBoundary = 0;\n";
+  std::ofstream(dir + "/cap.geo")
+      << "Point(1) = {0, 0, 0};\nPoint(2) = {0, 0, 1};\nPolarSphere(1) = {1, 2};\n"
+      << "r = Tan(Pi / 6);\nn = " << kSides << ";\n"
+      << "For i In {0:n - 1}\n"
+      << "  Point(10 + i) = {r * Cos(2 * Pi * i / n), r * Sin(2 * Pi * i / n), 0};\n"
+      << "EndFor\nFor i In {0:n - 1}\n  Line(10 + i) = {10 + i, 10 + (i + 1) % n};\nEndFor\n"
+      << "Curve Loop(1) = {10 : 10 + n - 1};\nPlane Surface(1) = {1};\n"
+      << "Field[1] = MathEval;\nField[1].F = \"" << delta << "\";\nBackground Field = 1;\n"
+      << "Mesh.MeshSizeFromPoints = 0;\nMesh.MeshSizeExtendFromBoundary = 0;\n";
   std::fflush(stdout);
   const std::string log = dir + "/gmsh_" + algo + ".log", msh = dir + "/cap_" + algo + ".msh";
   const int rc = std::system(("cd " + dir + " && gmsh cap.geo -2 -algo " + algo + " -nt 1 -o " + msh + " > " + log +

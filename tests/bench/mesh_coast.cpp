@@ -38,7 +38,8 @@ int main(int argc, char** argv) {
   if (!dr.ok()) return std::fprintf(stderr, "delaunay: %s\n", dr.error.c_str()), 1;
   std::vector<sm::Edge> edges;
   for (const auto& cv : p.curves)
-    for (std::size_t k = 0; k + 1 < cv.pts.size(); ++k) edges.push_back({sm::VertexId{cv.pts[k]}, sm::VertexId{cv.pts[k + 1]}});
+    for (std::size_t k = 0; k + 1 < cv.pts.size(); ++k)
+      edges.push_back({sm::VertexId{cv.pts[k]}, sm::VertexId{cv.pts[k + 1]}});
   t0 = std::chrono::steady_clock::now();
   const auto rr = sm::recover_edges(m, sm::PlanarGeometry{&m.xy}, edges);
   const double tr = since(t0);

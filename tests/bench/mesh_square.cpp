@@ -103,16 +103,17 @@ bool run_ours(double h, bool frontal) {
   const auto q = sm::mesh_quality(m, [&](sm::Vec2) { return h; });
   std::printf("stereomesh %s, unit square, h = %g\n", name, h);
   std::printf("  peak memory %.1f MB above the start, %.1f bytes per triangle\n", peak / 1e6, peak / q.triangles);
-  std::printf("  %u nodes, %u triangles; boundary %.3f s, refine %.3f s, smoothing %.3f s; total %.3f s wall, %.3f s CPU\n",
-              q.nodes, q.triangles, t_boundary, t_refined - t_boundary, t_smooth, t_total, c_total);
-  std::printf("  CPU: boundary + refine %.3f s (%.0f triangles/s), smoothing %.3f s\n", c_refined, q.triangles / c_refined,
-              c_smooth);
+  std::printf(
+      "  %u nodes, %u triangles; boundary %.3f s, refine %.3f s, smoothing %.3f s; total %.3f s wall, %.3f s CPU\n",
+      q.nodes, q.triangles, t_boundary, t_refined - t_boundary, t_smooth, t_total, c_total);
+  std::printf("  CPU: boundary + refine %.3f s (%.0f triangles/s), smoothing %.3f s\n", c_refined,
+              q.triangles / c_refined, c_smooth);
   std::printf("  before smoothing: rho > 0.9: %.2f%%, min rho %.3f, mean %.3f\n", 100 * q0.share_rho_09, q0.min_rho,
               q0.mean_rho);
   std::printf("  %.0f triangles/s (wall), %.0f triangles/s (CPU)\n", q.triangles / t_total, q.triangles / c_total);
-  std::printf("  rho: min %.3f mean %.3f, share > 0.9: %.2f%%; edge/h median %.3f, 5-95%% [%.3f, %.3f], in [0.7,1.4] %.2f%%\n",
-              q.min_rho, q.mean_rho, 100 * q.share_rho_09, q.len_median, q.len_p05, q.len_p95,
-              100 * q.share_len_07_14);
+  std::printf(
+      "  rho: min %.3f mean %.3f, share > 0.9: %.2f%%; edge/h median %.3f, 5-95%% [%.3f, %.3f], in [0.7,1.4] %.2f%%\n",
+      q.min_rho, q.mean_rho, 100 * q.share_rho_09, q.len_median, q.len_p05, q.len_p95, 100 * q.share_len_07_14);
   std::printf("  %llu insertions, %llu rejected, %llu heap pops (%llu stale), %.2f walk steps/insertion\n",
               static_cast<unsigned long long>(r.stats.inserted), static_cast<unsigned long long>(r.stats.rejected),
               static_cast<unsigned long long>(r.stats.pops), static_cast<unsigned long long>(r.stats.stale),
@@ -153,9 +154,11 @@ bool run_threads(double h, bool frontal, const std::vector<int>& counts, bool wh
     const double t_smooth = since(t1), t_total = since(t0), c_total = process_cpu_seconds() - c0;
     const double peak = memory_bytes("VmHWM") - rss0;
     const auto q = sm::mesh_quality(m, [&](sm::Vec2) { return h; });
-    std::printf("    whole |     1 | %9u |          |         |         | %8.3f | %12.3f | %13.3f |          | %9.1f | %6.2f%% | %11.2f%% | (min rho %.3f)\n",
-                q.triangles, t_smooth, t_total, c_total, peak / q.triangles, 100 * q.share_rho_09,
-                100 * q.share_len_07_14, q.min_rho);
+    std::printf(
+        "    whole |     1 | %9u |          |         |         | %8.3f | %12.3f | %13.3f |          | %9.1f | %6.2f%% "
+        "| %11.2f%% | (min rho %.3f)\n",
+        q.triangles, t_smooth, t_total, c_total, peak / q.triangles, 100 * q.share_rho_09, 100 * q.share_len_07_14,
+        q.min_rho);
   }
   double first = 0;
   std::uint64_t first_hash = 0;
@@ -173,8 +176,8 @@ bool run_threads(double h, bool frontal, const std::vector<int>& counts, bool wh
     const auto make = [h]() -> sm::PlaneSizeFn {
       return [h](std::span<const sm::Vec2>, std::span<double> out) { std::fill(out.begin(), out.end(), h); };
     };
-    const sm::PartitionResult r = sm::refine_partitioned(m, ro, frontal ? sm::PartRefiner::Frontal : sm::PartRefiner::Del2d,
-                                                         make, sm::PartitionOptions{}, threads);
+    const sm::PartitionResult r = sm::refine_partitioned(
+        m, ro, frontal ? sm::PartRefiner::Frontal : sm::PartRefiner::Del2d, make, sm::PartitionOptions{}, threads);
     if (!r.ok()) return std::fprintf(stderr, "%s in parts: %s\n", name, r.error.c_str()), false;
     const auto t1 = std::chrono::steady_clock::now();
     sm::smooth_laplacian(m, 1, threads);
@@ -184,10 +187,12 @@ bool run_threads(double h, bool frontal, const std::vector<int>& counts, bool wh
     if (first == 0) first = t_total, first_hash = hash;
     same = same && hash == first_hash;
     const auto q = sm::mesh_quality(m, [&](sm::Vec2) { return h; });
-    std::printf("  %7d | %5u | %9u | %8.3f | %7.3f | %7.3f | %8.3f | %12.3f | %13.3f | %7.2fx | %9.1f | %6.2f%% | %11.2f%% | %016llx (min rho %.3f)\n",
-                threads, r.stats.parts, q.triangles, r.stats.seconds_coarse, r.stats.seconds_parts, r.stats.seconds_merge,
-                t_smooth, t_total, c_total, first / t_total, peak / q.triangles, 100 * q.share_rho_09,
-                100 * q.share_len_07_14, static_cast<unsigned long long>(hash), q.min_rho);
+    std::printf(
+        "  %7d | %5u | %9u | %8.3f | %7.3f | %7.3f | %8.3f | %12.3f | %13.3f | %7.2fx | %9.1f | %6.2f%% | %11.2f%% | "
+        "%016llx (min rho %.3f)\n",
+        threads, r.stats.parts, q.triangles, r.stats.seconds_coarse, r.stats.seconds_parts, r.stats.seconds_merge,
+        t_smooth, t_total, c_total, first / t_total, peak / q.triangles, 100 * q.share_rho_09, 100 * q.share_len_07_14,
+        static_cast<unsigned long long>(hash), q.min_rho);
     std::fflush(stdout);
   }
   std::printf("  the same mesh for every thread count: %s\n", same ? "yes" : "NO");
@@ -210,14 +215,16 @@ bool run_meshadapt(double h) {
   if (!r.ok()) return std::fprintf(stderr, "meshadapt: %s\n", r.error.c_str()), false;
   const auto q = sm::mesh_quality(m, [&](sm::Vec2) { return h; });
   std::printf("stereomesh meshadapt, unit square, h = %g\n", h);
-  std::printf("  %u nodes, %u triangles; boundary %.3f s, adapt %.3f s; total %.3f s wall, %.3f s CPU (%.0f triangles/s)\n",
-              q.nodes, q.triangles, t_boundary, t_total - t_boundary, t_total, c_total, q.triangles / c_total);
-  std::printf("  rho: min %.3f mean %.3f, share > 0.9: %.2f%%; edge/h median %.3f, 5-95%% [%.3f, %.3f], in [0.7,1.4] %.2f%%\n",
-              q.min_rho, q.mean_rho, 100 * q.share_rho_09, q.len_median, q.len_p05, q.len_p95,
-              100 * q.share_len_07_14);
+  std::printf(
+      "  %u nodes, %u triangles; boundary %.3f s, adapt %.3f s; total %.3f s wall, %.3f s CPU (%.0f triangles/s)\n",
+      q.nodes, q.triangles, t_boundary, t_total - t_boundary, t_total, c_total, q.triangles / c_total);
+  std::printf(
+      "  rho: min %.3f mean %.3f, share > 0.9: %.2f%%; edge/h median %.3f, 5-95%% [%.3f, %.3f], in [0.7,1.4] %.2f%%\n",
+      q.min_rho, q.mean_rho, 100 * q.share_rho_09, q.len_median, q.len_p05, q.len_p95, 100 * q.share_len_07_14);
   std::printf("  %u rounds, %llu splits, %llu collapses (%llu refused), %llu swaps, %llu smoothing moves\n",
               r.stats.iterations, static_cast<unsigned long long>(r.stats.splits),
-              static_cast<unsigned long long>(r.stats.collapses), static_cast<unsigned long long>(r.stats.collapses_refused),
+              static_cast<unsigned long long>(r.stats.collapses),
+              static_cast<unsigned long long>(r.stats.collapses_refused),
               static_cast<unsigned long long>(r.stats.swaps), static_cast<unsigned long long>(r.stats.smoothed));
   return true;
 }
@@ -334,7 +341,8 @@ int main(int argc, char** argv) {
       del2d = a == "del2d" || a == "all";
       front2d = a == "front2d" || a == "all";
       meshadapt = a == "meshadapt" || a == "all";
-      if (!del2d && !front2d && !meshadapt) return std::fprintf(stderr, "--algo: del2d, front2d, meshadapt or all\n"), 2;
+      if (!del2d && !front2d && !meshadapt)
+        return std::fprintf(stderr, "--algo: del2d, front2d, meshadapt or all\n"), 2;
     } else {
       h = std::atof(argv[i]);
     }

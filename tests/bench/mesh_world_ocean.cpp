@@ -191,8 +191,9 @@ std::vector<int> parse_counts(const char* text) {
 void thread_table(const sm::geo::Model& model, const sm::Mesh1dResult& r1, sm::Mesh2dOptions o2,
                   const std::vector<int>& counts, const sm::SizeAt3& target) {
   std::printf("  2D in parts, %u hardware threads:\n", std::thread::hardware_concurrency());
-  std::printf("    threads | parts | estimate | triangles | 2D wall s | refine s | smooth s | speed-up | rho>0.9 | rho min | "
-              "in [0.7,1.4]\n");
+  std::printf(
+      "    threads | parts | estimate | triangles | 2D wall s | refine s | smooth s | speed-up | rho>0.9 | rho min | "
+      "in [0.7,1.4]\n");
   std::vector<sm::MeshNode> first_nodes;
   std::map<int, sm::SurfaceMesh> first_faces;
   double first = 0;
@@ -224,7 +225,8 @@ void thread_table(const sm::geo::Model& model, const sm::Mesh1dResult& r1, sm::M
                 run < 0 ? "whole" : label, static_cast<unsigned long long>(run < 0 ? 1 : r2.stats.parts),
                 static_cast<unsigned long long>(r2.stats.estimated_triangles),
                 static_cast<unsigned long long>(st.triangles), wall, r2.stats.seconds_refine, r2.stats.seconds_smooth,
-                run < 0 || first == 0 ? 0.0 : first / wall, 100 * st.share_rho_09, st.min_rho, 100 * st.share_len_07_14);
+                run < 0 || first == 0 ? 0.0 : first / wall, 100 * st.share_rho_09, st.min_rho,
+                100 * st.share_len_07_14);
     std::fflush(stdout);
   }
   std::printf("    the same mesh for every thread count: %s\n", same ? "yes" : "NO");
@@ -261,7 +263,9 @@ int main(int argc, char** argv) {
   sm::coast::ImportOptions io;
   io.radius = radius;
   io.repair.check_splines = true;   // BSplines through the control points must not cross (1D would stop)
-  io.gamma = [gamma_km](std::span<const sm::Vec3>, std::span<double> g) { std::fill(g.begin(), g.end(), gamma_km * 1e3); };
+  io.gamma = [gamma_km](std::span<const sm::Vec3>, std::span<double> g) {
+    std::fill(g.begin(), g.end(), gamma_km * 1e3);
+  };
   auto cm = sm::coast::build_coast_model(std::move(*coast), io);
   if (!cm) return std::fprintf(stderr, "%s\n", cm.error().to_string().c_str()), 1;
   const double t_import = since(t0);
@@ -297,7 +301,10 @@ int main(int argc, char** argv) {
     const double c0 = cpu_seconds();
     sm::Mesh1dResult r1 = sm::mesh_curves(model, o1);
     const double t1 = since(t0), c1 = cpu_seconds() - c0;
-    if (!r1.ok()) return std::fprintf(stderr, "1D: kind %d, problem %d\n", static_cast<int>(r1.error.kind), static_cast<int>(r1.error.problem)), 1;
+    if (!r1.ok())
+      return std::fprintf(stderr, "1D: kind %d, problem %d\n", static_cast<int>(r1.error.kind),
+                          static_cast<int>(r1.error.problem)),
+             1;
     sm::Mesh2dOptions o2;
     o2.algorithm = static_cast<sm::Mesh2dAlgorithm>(a);
     o2.background = &size;
@@ -306,7 +313,10 @@ int main(int argc, char** argv) {
     const double c2start = cpu_seconds();
     const sm::Mesh2dResult r2 = sm::mesh_surfaces(model, r1.mesh, o2);
     const double t2 = since(t0), c2 = cpu_seconds() - c2start;
-    if (!r2.ok()) return std::fprintf(stderr, "2D: problem %d on surface %d\n", static_cast<int>(r2.error.problem), r2.error.surface), 1;
+    if (!r2.ok())
+      return std::fprintf(stderr, "2D: problem %d on surface %d\n", static_cast<int>(r2.error.problem),
+                          r2.error.surface),
+             1;
     sm::MeshStats st = sm::mesh_stats(r1.mesh, target);
     st.stages = {{"1D", t1}};
     for (const sm::StageTime& x : sm::stage_times(r2.stats)) st.stages.push_back(x);
@@ -352,7 +362,8 @@ int main(int argc, char** argv) {
       std::ofstream out(base + ".geo");
       out << geo;
       out << "Field[IFI + 1] = Threshold;\nField[IFI + 1].IField = IFI + 0;\n";
-      out << "Field[IFI + 1].LcMin = " << kLcMin / size_scale << ";\nField[IFI + 1].LcMax = " << kLcMax / size_scale << ";\n";
+      out << "Field[IFI + 1].LcMin = " << kLcMin / size_scale << ";\nField[IFI + 1].LcMax = " << kLcMax / size_scale
+          << ";\n";
       out << "Field[IFI + 1].DistMin = " << kDistMin << ";\nField[IFI + 1].DistMax = " << kDistMax << ";\n";
       out << "Background Field = IFI + 1;\n";
       out << "Mesh.CharacteristicLengthExtendFromBoundary = 0;\nMesh.CharacteristicLengthFromPoints = 0;\n";

@@ -144,7 +144,8 @@ void check_mesh(const ModelMesh& mesh, const Mesh2dResult& r2, double floor, dou
   if (verbose()) {
     std::size_t n = 0;
     for (const auto& [tag, sf] : mesh.surfaces) n += sf.triangles.size();
-    std::fprintf(stderr, "fuzz_floor: floor %.2f: %zu triangles, rho min %.3f, %zu curve splits, %zu points, %zu reports\n",
+    std::fprintf(stderr,
+                 "fuzz_floor: floor %.2f: %zu triangles, rho min %.3f, %zu curve splits, %zu points, %zu reports\n",
                  floor, n, min_rho, static_cast<std::size_t>(r2.stats.floor_curve_splits),
                  static_cast<std::size_t>(r2.stats.floor_points), r2.notes.size());
     for (const MeshNote& w : r2.notes)
@@ -249,7 +250,8 @@ void run_floor_input(const std::uint8_t* data, std::size_t size) {
   if (!r2.ok()) {
     if (r2.error.problem == MeshProblem::None && r2.error.kind != MeshErrorKind::LimitExceeded)
       floor_violated("an error naming no problem");
-    if (verbose()) std::fprintf(stderr, "fuzz_floor: 2D failed cleanly: problem %d\n", static_cast<int>(r2.error.problem));
+    if (verbose())
+      std::fprintf(stderr, "fuzz_floor: 2D failed cleanly: problem %d\n", static_cast<int>(r2.error.problem));
     return;
   }
   check_mesh(mesh, r2, floor, domain, spans == 1);

@@ -38,7 +38,9 @@ int main(int argc, char** argv) {
     for (const Reader& r : kReaders)
       if (std::strcmp(argv[1], r.name) == 0) reader = &r;
   if (!reader) {
-    std::fprintf(stderr, "usage: fuzz_readers_replay gshhs|lonlat_text|loops2|shapefile|netcdf|esri|gshhg_binned|floor DIR...\n");
+    std::fprintf(
+        stderr,
+        "usage: fuzz_readers_replay gshhs|lonlat_text|loops2|shapefile|netcdf|esri|gshhg_binned|floor DIR...\n");
     return 2;
   }
   std::vector<std::filesystem::path> files;

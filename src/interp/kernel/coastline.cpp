@@ -197,7 +197,8 @@ void exec_coast_option(Interpreter& in, const Stmt& s, const CoastlineOptionStmt
   // Checked now, so that a mistake is reported where it is written.
   if (auto why = coast::check_coast_option(*o, table_value(v)))
     in.fail(in.ast().expr(n.value).range, Diag::CoastlineOptionRefused, id, o->name, *why);
-  if (o->type == coast::CoastOptionType::Path) v = Value::string(resolve_script_path(in.builtin_env(), v.strs().front()));
+  if (o->type == coast::CoastOptionType::Path)
+    v = Value::string(resolve_script_path(in.builtin_env(), v.strs().front()));
   const bool is_region = o == &coast::coast_option(CoastOpt::Region);
   const bool is_region_file = o == &coast::coast_option(CoastOpt::RegionFile);
   if ((is_region && option(d, CoastOpt::RegionFile)) ||
@@ -358,7 +359,8 @@ void check_water_points(CoastImportWork& w) {
   if (!io.region_polygon.empty()) w.polygon = *coast::RegionPolygon::make(io.region_polygon);   // checked when set
   const int id = w.id;
   const auto region_note = [&] {
-    return DiagNote{*set_at(w.d, CoastOpt::Region), fmt::format("Coastline[{}].{} is set here", id, name_of(CoastOpt::Region))};
+    return DiagNote{*set_at(w.d, CoastOpt::Region),
+                    fmt::format("Coastline[{}].{} is set here", id, name_of(CoastOpt::Region))};
   };
   for (const CoastOpt o : {CoastOpt::SeaAt, CoastOpt::KeepOpen}) {
     const std::vector<geo::LonLat>& points = o == CoastOpt::SeaAt ? io.sea_at : io.passages.keep_open;
@@ -487,7 +489,9 @@ void report_changes(CoastImportWork& w, const coast::CoastModel& m) {
     else if (line.passage)
       report_passage_change(in.diags(), w.at, id, line);
     else
-      in.diags().report(w.at, Diag::CoastlineRepair, fmt::format("Coastline[{}]", id), line.text).item(coastline_item(line));
+      in.diags()
+          .report(w.at, Diag::CoastlineRepair, fmt::format("Coastline[{}]", id), line.text)
+          .item(coastline_item(line));
   }
   for (const coast::RepairEntry& e : m.report.repair) {   // for Coastline{n, "Closures"} and "DroppedSeas"
     std::vector<double>* list = e.kind == coast::RepairKind::ClosedPassage ? &imp.closures
@@ -506,8 +510,8 @@ void report_changes(CoastImportWork& w, const coast::CoastModel& m) {
     if (w.polygon)
       in.diags().report(region_at, Diag::CoastlineRegionPolygonEmpty, id);
     else if (io.region)
-      in.diags().report(region_at, Diag::CoastlineRegionBoxEmpty, id, io.region->west, io.region->east, io.region->south,
-                        io.region->north);
+      in.diags().report(region_at, Diag::CoastlineRegionBoxEmpty, id, io.region->west, io.region->east,
+                        io.region->south, io.region->north);
     else
       in.diags().report(region_at, Diag::CoastlineFileRegionEmpty, id);
   }
@@ -587,7 +591,8 @@ int add_loop(CoastImportWork& w, const coast::CoastModel& m, const coast::CoastL
   for (std::size_t c = 0; c < loop.curves.size(); ++c) {
     const coast::CoastCurve& cc = m.curves[loop.curves[c]];
     const std::size_t end = c + 1 < loop.curves.size() ? start[c + 1] : pts.size();
-    std::vector<int> cp(pts.begin() + static_cast<std::ptrdiff_t>(start[c]), pts.begin() + static_cast<std::ptrdiff_t>(end));
+    std::vector<int> cp(pts.begin() + static_cast<std::ptrdiff_t>(start[c]),
+                        pts.begin() + static_cast<std::ptrdiff_t>(end));
     cp.push_back(cc.periodic ? pts[start[c]] : pts[end == pts.size() ? 0 : end]);
     const geo::CurveKind kind = polyline || cp.size() == 2 ? geo::CurveKind::Line : geo::CurveKind::BSpline;
     const int tag = model.new_curve_tag();
@@ -759,7 +764,9 @@ Value eval_coastline_query(Interpreter& in, ExprId e) {
       imp.surfaces_made = true;
     }
     if (what == "Closures" || what == "DroppedSeas" || what == "Straits") {
-      const std::vector<double>& f = what == "Closures" ? imp.closures : what == "Straits" ? imp.straits : imp.dropped_seas;
+      const std::vector<double>& f = what == "Closures"  ? imp.closures
+                                     : what == "Straits" ? imp.straits
+                                                         : imp.dropped_seas;
       out.insert(out.end(), f.begin(), f.end());
       continue;
     }

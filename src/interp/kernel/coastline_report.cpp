@@ -31,7 +31,8 @@ lang::Diagnostics::Handle report_placed(
     std::type_identity_t<lang::DiagFormat<int, std::size_t, std::int64_t, double, double, Figures...>> with,
     std::type_identity_t<lang::DiagFormat<int, double, double, Figures...>> without, const Figures&... figures) {
   // Changes of no source record (the Region's own pieces) say only their place.
-  if (e.record == static_cast<std::size_t>(-1)) return diags.report(at, without, id, e.where.lon, e.where.lat, figures...);
+  if (e.record == static_cast<std::size_t>(-1))
+    return diags.report(at, without, id, e.where.lon, e.where.lat, figures...);
   return diags.report(at, with, id, e.record, e.id, e.where.lon, e.where.lat, figures...);
 }
 

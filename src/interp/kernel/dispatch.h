@@ -63,7 +63,8 @@ bool exec_mesh_command(Interpreter& in, lang::StmtId s, std::string_view command
 Value eval_coastline_query(Interpreter& in, lang::ExprId e);
 
 /// The coast curves Coastline[id]'s import created, its open boundaries (region cuts)
-/// left out (coastline.cpp); nullopt if it is not defined or not imported yet (ChannelWidth's CoastlineId, Mesh.ElementsAcrossChannels).
+/// left out (coastline.cpp); nullopt if it is not defined or not imported yet (ChannelWidth's CoastlineId,
+/// Mesh.ElementsAcrossChannels).
 std::optional<std::vector<int>> coastline_curves(const KernelState& k, int id);
 
 /// Evaluates the expressions of a statement the kernel cannot run yet, so

@@ -112,7 +112,8 @@ std::vector<geo::DimTag> apply_extrude(Interpreter& in, const Expr& x, const Tra
   report_compat_notes(in, at);
   if (!r) fail_geo(in, at, r.error());
   for (const geo::DimTag& d : *r)
-    if (in.kernel().created_at.count({d.dim, std::abs(d.tag)}) == 0) record_created(in.kernel(), d.dim, std::abs(d.tag), at);
+    if (in.kernel().created_at.count({d.dim, std::abs(d.tag)}) == 0)
+      record_created(in.kernel(), d.dim, std::abs(d.tag), at);
   return std::move(*r);
 }
 

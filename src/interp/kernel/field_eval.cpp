@@ -379,8 +379,9 @@ field::FieldPtr background_size_field(Interpreter& in, const CurveMeshNodes* mes
   check_reference_depth(in, id, k.background_field_at);
   try {
     const StageScope stage(&k.clock, nullptr, "fields");
-    return field::checked_size_field(k.fields.build(id, interp_build_context(in, mesh_nodes, k.background_field_at)).shared(id),
-                                     id, kind_of(in, id));
+    return field::checked_size_field(
+        k.fields.build(id, interp_build_context(in, mesh_nodes, k.background_field_at)).shared(id), id,
+        kind_of(in, id));
   } catch (const field::FieldError& e) {
     fail_field_error(in, e, k.background_field_at);
   }
@@ -462,8 +463,9 @@ OptionRefusal check_depth_sampling(Interpreter& in, const field::SizeField& dept
   return option_refusal(Diag::DepthSamplingNeedsGrid);
 }
 
-OptionRefusal depth_at(Interpreter& in, std::span<const Vec3> xyz, const std::vector<std::array<std::uint32_t, 2>>& edges,
-                       std::vector<double>& depth, std::optional<field::DepthClampReport>* report) {
+OptionRefusal depth_at(Interpreter& in, std::span<const Vec3> xyz,
+                       const std::vector<std::array<std::uint32_t, 2>>& edges, std::vector<double>& depth,
+                       std::optional<field::DepthClampReport>* report) {
   const KernelState& k = in.kernel();
   const int id = static_cast<int>(in.options().number("Mesh.DepthField"));
   const auto at = k.option_set_at.find("Mesh.DepthField");

@@ -61,8 +61,9 @@ field::FieldPtr background_size_field(Interpreter& in, const CurveMeshNodes* mes
 /// With `edges` (node index pairs of the elements' edges), sampled as Mesh.DepthSampling
 /// says: 1 averages the grid cells within half the mean incident edge of each node.
 /// `report`, if given, is set when the field is a grid depth (Bathymetry, Output "depth").
-OptionRefusal depth_at(Interpreter& in, std::span<const Vec3> xyz, const std::vector<std::array<std::uint32_t, 2>>& edges,
-                       std::vector<double>& depth, std::optional<field::DepthClampReport>* report = nullptr);
+OptionRefusal depth_at(Interpreter& in, std::span<const Vec3> xyz,
+                       const std::vector<std::array<std::uint32_t, 2>>& edges, std::vector<double>& depth,
+                       std::optional<field::DepthClampReport>* report = nullptr);
 
 /// depth_at on the nodes of a mesh to write, with the edges of its surface elements.
 OptionRefusal depth_at(Interpreter& in, const io::MeshModel& mm, std::vector<double>& depth);

@@ -68,7 +68,8 @@ bool option_value(Interpreter& in, const FieldOptionStmt& n, int id, const field
     // A Bathymetry's FileName takes a list of grids by priority: {"fine.nc", "coarse.nc"}
     // or "fine.nc, coarse.nc", each name relative to the script; the kernel gets them
     // comma-separated (field/bathymetry.cpp).
-    const bool grid_list = spec && spec->name == "FileName" && in.kernel().fields.options(id).kind().name == "Bathymetry";
+    const bool grid_list =
+        spec && spec->name == "FileName" && in.kernel().fields.options(id).kind().name == "Bathymetry";
     if (v.kind() == Value::Kind::StringList && v.strs().size() != 1 && !(grid_list && v.strs().size() > 1))
       in.fail(value_at, Diag::FieldOptionOneString, in.ast().str(n.option), id, v.strs().size());
     std::string text;
@@ -109,7 +110,8 @@ bool option_value(Interpreter& in, const FieldOptionStmt& n, int id, const field
   for (double x : v.nums()) {
     if (!std::isfinite(x))
       in.fail(value_at, Diag::FieldOptionNotFinite, in.ast().str(n.option), id);
-    if (ids && std::abs(x) > 2147483647.0) in.fail(value_at, Diag::FieldOptionNotValidId, in.ast().str(n.option), id, x);
+    if (ids && std::abs(x) > 2147483647.0)
+      in.fail(value_at, Diag::FieldOptionNotValidId, in.ast().str(n.option), id, x);
   }
   if (list) {
     out = v.nums();

@@ -182,7 +182,8 @@ std::optional<geo::DimTag> exec_point(Interpreter& in, const Stmt& s, const Poin
 }
 
 std::optional<geo::DimTag> exec_curve(Interpreter& in, StmtId id, const Stmt& s, const CurveStmt& n) {
-  if (n.kind == CurveKind::CompoundSpline || n.kind == CurveKind::CompoundBSpline) return exec_compound_spline(in, s, n);
+  if (n.kind == CurveKind::CompoundSpline || n.kind == CurveKind::CompoundBSpline)
+    return exec_compound_spline(in, s, n);
   if (n.kind == CurveKind::Nurbs) {
     check_stmt_exprs(in, id);
     in.not_supported_stmt(id, stmt_name(in, id));

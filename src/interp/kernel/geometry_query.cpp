@@ -294,7 +294,8 @@ Value eval_model_expr(Interpreter& in, ExprId e) {
     case ExprKind::EntityQuery: return eval_entity_query(in, x, std::get<EntityQueryExpr>(x.node));
     case ExprKind::EntityInBox: {
       const auto& q = std::get<EntityInBoxExpr>(x.node);
-      const std::vector<double> b = sized(in, x.range, numbers_of(in, q.box), 6, "In BoundingBox{xmin, ymin, zmin, xmax, ymax, zmax}");
+      const std::vector<double> b =
+          sized(in, x.range, numbers_of(in, q.box), 6, "In BoundingBox{xmin, ymin, zmin, xmax, ymax, zmax}");
       std::vector<double> out;
       const int dim = static_cast<int>(q.ent);
       if (dim <= 2)

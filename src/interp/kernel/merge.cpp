@@ -34,7 +34,8 @@ void exec_merge(Interpreter& in, StmtId id, const CommandStmt& c) {
   if (std::ifstream f(p, std::ios::binary); !f || f.peek() == std::ifstream::traits_type::eof())
     in.fail(at, Diag::CannotMerge, name, std::string_view("cannot read it, or it is empty"));
   std::string ext = p.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
   if (ext == ".pos") {
     in.display_only_stmt(id, "Merge of a post-processing view (.pos)");
     return;
@@ -52,7 +53,8 @@ void exec_merge(Interpreter& in, StmtId id, const CommandStmt& c) {
   else
     what = fmt::format("Gmsh reads the file by its extension ('{}'), and stereomesh reads none yet", ext);
   const auto h = in.diags().report(s.keyword.valid() ? s.keyword : s.range, Diag::NotSupportedYet,
-                                   fmt::format("Merge \"{}\"", name), fmt::format(" (in Gmsh {}): the statement is skipped", what));
+                                   fmt::format("Merge \"{}\"", name),
+                                   fmt::format(" (in Gmsh {}): the statement is skipped", what));
   (void)h;
 }
 

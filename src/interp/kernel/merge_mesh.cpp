@@ -4,7 +4,8 @@
 // one chain, are a discrete curve between the points on its end nodes (new points where
 // the file has none, as CreateTopology makes them), from the smaller tag's; a surface's triangles and quadrangles
 // are a discrete surface, meshed as it is. The file's physical groups of points and
-// curves are added to the model's (those of surfaces are not supported yet). Later statements use these points and curves as any others.
+// curves are added to the model's (those of surfaces are not supported yet). Later statements use these points and
+// curves as any others.
 #include <algorithm>
 #include <filesystem>
 #include <fstream>

@@ -106,12 +106,14 @@ std::pair<Diag, std::string> worded_1d(const MeshError& e) {
   if (e.kind != MeshErrorKind::LimitExceeded) return worded_mesh_problem(e);
   const bool cap = e.limit >= kMaxCurveNodes;
   if (e.all_curves && cap)
-    return {Diag::LimitAllCurvesCap, format_diag<double, int, double>(Diag::LimitAllCurvesCap, e.count, e.tag(0), e.limit)};
+    return {Diag::LimitAllCurvesCap,
+            format_diag<double, int, double>(Diag::LimitAllCurvesCap, e.count, e.tag(0), e.limit)};
   if (e.all_curves)
     return {Diag::LimitAllCurvesBudget,
             format_diag<double, int, double>(Diag::LimitAllCurvesBudget, e.count, e.tag(0), e.limit)};
   if (cap)
-    return {Diag::LimitCurveNodesCap, format_diag<int, double, double>(Diag::LimitCurveNodesCap, e.tag(0), e.count, e.limit)};
+    return {Diag::LimitCurveNodesCap,
+            format_diag<int, double, double>(Diag::LimitCurveNodesCap, e.tag(0), e.count, e.limit)};
   return {Diag::LimitCurveNodesBudget,
           format_diag<int, double, double>(Diag::LimitCurveNodesBudget, e.tag(0), e.count, e.limit)};
 }
@@ -567,7 +569,8 @@ MeshFailure mesh_model(Interpreter& in, int dim, SourceRange where) {
   } catch (const field::FieldError& e) {
     fail_field_error(in, e, in.kernel().background_field_at);
   } catch (const std::bad_alloc&) {
-    return {Diag::OutOfMemory, format_diag<int, double>(Diag::OutOfMemory, dim, in.options().number("Mesh.MaxElements")),
+    return {Diag::OutOfMemory,
+            format_diag<int, double>(Diag::OutOfMemory, dim, in.options().number("Mesh.MaxElements")),
             {}};
   }
 }
@@ -841,7 +844,8 @@ bool mesh_from_command_line(Interpreter& in, int dim, const std::string& output,
   const std::string path = output.empty() ? default_mesh_output(first_script, format) : output;
   {
     std::string why;
-    const io::OutputFormat* row = format.empty() ? guess_output_format(in.options(), path, &why) : io::find_output_format(format);
+    const io::OutputFormat* row =
+        format.empty() ? guess_output_format(in.options(), path, &why) : io::find_output_format(format);
     if (!row) {
       diags.report(SourceRange{}, Diag::FileWriteError, path, why.empty() ? "unknown format '" + format + "'" : why);
       return false;

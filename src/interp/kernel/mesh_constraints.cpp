@@ -177,8 +177,10 @@ void add_periodic_curve(KernelState& k, int t, PeriodicCurveSpec spec, bool skip
   const geo::ModelCurve& sc = *m.curve(spec.source);
   const int master_of_begin = spec.orientation > 0 ? sc.begin : sc.end;
   const int master_of_end = spec.orientation > 0 ? sc.end : sc.begin;
-  if (!skip_fixed_points || tc.begin != master_of_begin) k.constraints.periodic_points[tc.begin] = {master_of_begin, spec.affine};
-  if (!skip_fixed_points || tc.end != master_of_end) k.constraints.periodic_points[tc.end] = {master_of_end, spec.affine};
+  if (!skip_fixed_points || tc.begin != master_of_begin)
+    k.constraints.periodic_points[tc.begin] = {master_of_begin, spec.affine};
+  if (!skip_fixed_points || tc.end != master_of_end)
+    k.constraints.periodic_points[tc.end] = {master_of_end, spec.affine};
   k.constraints.periodic_curves[t] = std::move(spec);
 }
 

@@ -66,7 +66,8 @@ std::optional<Worded> worded_face_problem(const MeshError& e) {
     case MeshProblem::LoopMissing: return worded(Diag::MeshLoopMissing, s, n[0]);
     case MeshProblem::CurveNotMeshed: return worded(Diag::MeshCurveNotMeshed, s, n[0]);
     case MeshProblem::LoopNotConnected: return worded(Diag::MeshLoopNotConnected, s, n[0], n[1]);
-    case MeshProblem::LoopTooFewNodes: return placed(e, Diag::MeshLoopTooFewNodes, Diag::MeshLoopTooFewNodesXyz, s, n[0]);
+    case MeshProblem::LoopTooFewNodes:
+      return placed(e, Diag::MeshLoopTooFewNodes, Diag::MeshLoopTooFewNodesXyz, s, n[0]);
     case MeshProblem::LoopNotClosed: return worded(Diag::MeshLoopNotClosed, s, n[0]);
     case MeshProblem::NoBoundaryLoop: return worded(Diag::MeshNoBoundaryLoop, s);
     case MeshProblem::EmbeddedPointNoNode: return worded(Diag::MeshEmbeddedPointNoNode, s, n[0]);

@@ -76,7 +76,8 @@ std::string node_data_named(Interpreter& in, const io::MeshModel& mm, const std:
         const bool channel = !base || sized_h[i] < base_h[i];
         values[i] = channel ? 0 : (is_min ? which[i] : whole);
       }
-      out.push_back({name, "1", "size criterion at the mesh nodes: the field id in the background Min, 0 the channel width",
+      out.push_back({name, "1",
+                     "size criterion at the mesh nodes: the field id in the background Min, 0 the channel width",
                      std::move(values)});
     }
   }

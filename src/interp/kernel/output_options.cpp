@@ -97,7 +97,9 @@ std::string picture_options(Interpreter& in, const io::MeshModel& mm, io::Pictur
     return fmt::format(
         "Mesh.PictureColour = {:g}: use 0 (plain), 1 (quality), 2 (triangle size), 3 (size criterion) or 4 (depth)",
         colour);
-  po.colour = colour == 0 ? io::PictureColour::None : colour == 1 ? io::PictureColour::Quality : io::PictureColour::Size;
+  po.colour = colour == 0   ? io::PictureColour::None
+              : colour == 1 ? io::PictureColour::Quality
+                            : io::PictureColour::Size;
   if (colour == 3 || colour == 4) {
     std::vector<io::NodeData> data;
     if (std::string why = node_data_named(in, mm, {colour == 3 ? "criterion" : "depth"}, data); !why.empty())

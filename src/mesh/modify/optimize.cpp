@@ -354,7 +354,8 @@ class Optimizer {
           // The sorted qualities must rise (leximin).
           const double q = star_quality(p, floor, &g, &w, &cand_q_);
           if (q >= best && leximin_better(cand_q_, cur_q_) && fair_trade(q - best, good - g, best, good0 - g)) {
-            if (leximin_better(cand_q_, best_q_)) best_q_ = cand_q_, best_p = p, chosen = q, chosen_good = g, chosen_worst = w;
+            if (leximin_better(cand_q_, best_q_))
+              best_q_ = cand_q_, best_p = p, chosen = q, chosen_good = g, chosen_worst = w;
             break;
           }
         }
@@ -449,8 +450,9 @@ class Optimizer {
     // stars changed since: it fails again.
     const std::uint64_t key = (std::uint64_t{vs[0].value} << 32) | vs[1].value;
     const auto known = failed_.find(key);
-    const bool repeat = known != failed_.end() && std::max({changed_[vs[0].value], changed_[vs[1].value],
-                                                            changed_[vs[2].value], changed_[vs[3].value]}) <= known->second;
+    const bool repeat =
+        known != failed_.end() && std::max({changed_[vs[0].value], changed_[vs[1].value], changed_[vs[2].value],
+                                            changed_[vs[3].value]}) <= known->second;
     double q0 = 0;
     int g0 = 0;
     if (!repeat) std::tie(q0, g0) = region_quality(vs, tri_of(s).value, tri_of(o).value, region_q0_);

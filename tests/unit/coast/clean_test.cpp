@@ -113,7 +113,8 @@ TEST_CASE("clean: rings sharing an edge are merged (polygons split at the dateli
       const auto& p1 = c->rings[k].pts;
       const auto& p2 = c2.rings[k].pts;
       differ += p1.size() != p2.size();
-      for (std::size_t i = 0; i < std::min(p1.size(), p2.size()); ++i) differ += p1[i].lon != p2[i].lon || p1[i].lat != p2[i].lat;
+      for (std::size_t i = 0; i < std::min(p1.size(), p2.size()); ++i)
+        differ += p1[i].lon != p2[i].lon || p1[i].lat != p2[i].lat;
     }
     CHECK(differ == 0);
     CHECK(r2.entries.size() == r.entries.size());

@@ -61,7 +61,8 @@ CoastOptionValue text(std::string_view s) {
 TEST_CASE("docs/interpreter.md holds the generated coastline option table") {
   sm::testing::check_generated_section(std::string(SM_SOURCE_DIR) + "/docs/interpreter.md",
                                        "<!-- BEGIN GENERATED: sm::coast::coast_options_markdown() -->\n",
-                                       "<!-- END GENERATED -->", coast_options_markdown(), "SM_UPDATE_COAST_OPTION_DOCS");
+                                       "<!-- END GENERATED -->", coast_options_markdown(),
+                                       "SM_UPDATE_COAST_OPTION_DOCS");
 }
 
 TEST_CASE("coastline options: every option is set by a script test") {

@@ -170,10 +170,12 @@ TEST_CASE("deviation: the figures kept from the rounds are those of a fresh scan
   // segments near the last points put back scanned at the end), on closed curves and on a
   // piece.
   std::vector<WorkCurve> base;
-  for (int i = 0; i < 5; ++i) base.push_back(curve_of(island_with_headland(20e3 + 15e3 * i, 30e3 + 5e3 * i), 25e3, 11 + 2 * i));
+  for (int i = 0; i < 5; ++i)
+    base.push_back(curve_of(island_with_headland(20e3 + 15e3 * i, 30e3 + 5e3 * i), 25e3, 11 + 2 * i));
   WorkCurve piece = curve_of(island_with_headland(50e3, 45e3), 25e3, 14);
   piece.periodic = false;
-  if (piece.keep.back() != piece.full.size() - 1) piece.keep.push_back(static_cast<std::uint32_t>(piece.full.size() - 1));
+  if (piece.keep.back() != piece.full.size() - 1)
+    piece.keep.push_back(static_cast<std::uint32_t>(piece.full.size() - 1));
   base.push_back(piece);
   for (const int rounds : {1, 2, 32}) {
     CAPTURE(rounds);

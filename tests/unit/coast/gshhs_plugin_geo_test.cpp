@@ -126,7 +126,8 @@ TEST_CASE("plugin: loops2 input, WritePolarSphere = 0 and -2, bad options") {
   REQUIRE(p.ok());
   const Vec2 uv = p->model.curves[0].uv[0];
   char line[200];
-  std::snprintf(line, sizeof line, "Point ( IP + 0 ) = {%.16g, %.16g, 0 };", -2 * o.radius * uv.x, -2 * o.radius * uv.y);
+  std::snprintf(line, sizeof line, "Point ( IP + 0 ) = {%.16g, %.16g, 0 };", -2 * o.radius * uv.x,
+                -2 * o.radius * uv.y);
   CHECK(p->geo.find(line) != std::string::npos);
   if (have_gmsh()) {
     std::string out;

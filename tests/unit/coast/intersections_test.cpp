@@ -243,13 +243,15 @@ TEST_CASE("intersections: near pairs of the active segments are those of all pai
     const auto some = find_near_pairs(loops, width, active, &searched);
     std::vector<Key> want;
     for (const NearMiss& m : all)
-      if (active[m.loop_a][m.seg_a] || active[m.loop_b][m.seg_b]) want.emplace_back(m.loop_a, m.seg_a, m.loop_b, m.seg_b);
+      if (active[m.loop_a][m.seg_a] || active[m.loop_b][m.seg_b])
+        want.emplace_back(m.loop_a, m.seg_a, m.loop_b, m.seg_b);
     CHECK(keys(some) == want);
     std::size_t on = 0;
     for (const auto& a : active) on += static_cast<std::size_t>(std::count(a.begin(), a.end(), 1));
     CHECK(searched == on);
     for (std::size_t i = 0; i < some.size(); ++i) {
-      const auto it = std::find_if(all.begin(), all.end(), [&](const NearMiss& m) { return keys({m}) == keys({some[i]}); });
+      const auto it =
+          std::find_if(all.begin(), all.end(), [&](const NearMiss& m) { return keys({m}) == keys({some[i]}); });
       REQUIRE(it != all.end());
       CHECK(it->distance == some[i].distance);
     }
@@ -340,12 +342,15 @@ TEST_CASE("intersections: near misses after loops are joined are the full search
   for (const auto& round : rounds) {
     std::vector<LoopJoin> joins;
     for (const auto& [into, from] : round) {
-      const auto na = static_cast<std::uint32_t>(loops[into].size()), nb = static_cast<std::uint32_t>(loops[from].size());
+      const auto na = static_cast<std::uint32_t>(loops[into].size()),
+                 nb = static_cast<std::uint32_t>(loops[from].size());
       const std::uint32_t ka = static_cast<std::uint32_t>(rng() % na), kb = static_cast<std::uint32_t>(rng() % nb);
       std::vector<Vec2> p;
       std::vector<double> w;
-      for (std::uint32_t i = 1; i <= na; ++i) p.push_back(loops[into][(ka + i) % na]), w.push_back(width[into][(ka + i) % na]);
-      for (std::uint32_t i = 1; i <= nb; ++i) p.push_back(loops[from][(kb + i) % nb]), w.push_back(width[from][(kb + i) % nb]);
+      for (std::uint32_t i = 1; i <= na; ++i)
+        p.push_back(loops[into][(ka + i) % na]), w.push_back(width[into][(ka + i) % na]);
+      for (std::uint32_t i = 1; i <= nb; ++i)
+        p.push_back(loops[from][(kb + i) % nb]), w.push_back(width[from][(kb + i) % nb]);
       loops[into] = p;
       width[into] = w;
       loops[from].clear();

@@ -105,9 +105,11 @@ double pass_canal_width(double w) {
   const auto s = side(c.rings[0], -w / 2), n = side(c.rings[1], w / 2);
   double best = 1e300;
   for (std::size_t i = 0; i < s.size(); ++i)
-    for (std::size_t j = 0; j + 1 < n.size(); ++j) best = std::min(best, uv_point_segment_metres(s[i], n[j], n[j + 1], geo::kEarthRadius));
+    for (std::size_t j = 0; j + 1 < n.size(); ++j)
+      best = std::min(best, uv_point_segment_metres(s[i], n[j], n[j + 1], geo::kEarthRadius));
   for (std::size_t i = 0; i < n.size(); ++i)
-    for (std::size_t j = 0; j + 1 < s.size(); ++j) best = std::min(best, uv_point_segment_metres(n[i], s[j], s[j + 1], geo::kEarthRadius));
+    for (std::size_t j = 0; j + 1 < s.size(); ++j)
+      best = std::min(best, uv_point_segment_metres(n[i], s[j], s[j + 1], geo::kEarthRadius));
   return best;
 }
 
@@ -515,7 +517,8 @@ TEST_CASE("passages: a cut's work on the kept points does not grow with the loop
   const CombRun shallow = comb_run(centres, centres[17], 1.0), deep = comb_run(centres, centres[17], 40.0);
   REQUIRE(shallow.stats.cuts >= 39);
   CHECK(deep.closures == shallow.closures);
-  const double per_cut_shallow = static_cast<double>(shallow.stats.kept_visits) / static_cast<double>(shallow.stats.cuts);
+  const double per_cut_shallow =
+      static_cast<double>(shallow.stats.kept_visits) / static_cast<double>(shallow.stats.cuts);
   const double per_cut_deep = static_cast<double>(deep.stats.kept_visits) / static_cast<double>(deep.stats.cuts);
   MESSAGE("kept points visited per cut: ", per_cut_shallow, " at ", shallow.points, " points, ", per_cut_deep, " at ",
           deep.points);

@@ -112,8 +112,10 @@ TEST_CASE("gshhs: 1.x layouts rebuilt from the 2.3.0 records read the same") {
     v1plain.push_back(0), v1plain.push_back(static_cast<unsigned char>((flag >> 16) & 1));
     v1plain.push_back(0), v1plain.push_back(static_cast<unsigned char>((flag >> 24) & 1));
     const std::size_t body = static_cast<std::size_t>(h[1]) * 8;
-    v1flag.insert(v1flag.end(), b.begin() + static_cast<long>(off + 44), b.begin() + static_cast<long>(off + 44 + body));
-    v1plain.insert(v1plain.end(), b.begin() + static_cast<long>(off + 44), b.begin() + static_cast<long>(off + 44 + body));
+    v1flag.insert(v1flag.end(), b.begin() + static_cast<long>(off + 44),
+                  b.begin() + static_cast<long>(off + 44 + body));
+    v1plain.insert(v1plain.end(), b.begin() + static_cast<long>(off + 44),
+                   b.begin() + static_cast<long>(off + 44 + body));
     off += 44 + body;
   }
   auto ref = read_gshhs_bytes(b, "v2");

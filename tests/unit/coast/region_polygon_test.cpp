@@ -53,7 +53,8 @@ TEST_CASE("region polygon: checks of the vertices") {
   CHECK(message(RegionPolygon::make({{0, 0}, {1, 1}})).find("at least 3") != std::string::npos);
   CHECK(message(RegionPolygon::make({{0, 0}, {10, 10}, {10, 0}, {0, 10}})).find("crosses itself") != std::string::npos);
   CHECK(message(RegionPolygon::make({{0, 0}, {0, 0}, {1, 1}})).find("same point") != std::string::npos);
-  CHECK(message(RegionPolygon::make({{0, 0}, {1, 0}, {2, 0}})).find("crosses itself") != std::string::npos);   // edges 3 and 1 overlap
+  CHECK(message(RegionPolygon::make({{0, 0}, {1, 0}, {2, 0}})).find("crosses itself") !=
+        std::string::npos);  // edges 3 and 1 overlap
   CHECK(message(RegionPolygon::make({{0, 80}, {120, 80}, {240, 80}})).find("North Pole") != std::string::npos);
   CHECK(message(RegionPolygon::make({{0, 0}, {170, 0}, {85, 10}})).find("degrees from") != std::string::npos);
   CHECK(message(RegionPolygon::make({{0, 0}, {1, 95}, {2, 0}})).find("latitude") != std::string::npos);

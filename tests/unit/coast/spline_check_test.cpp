@@ -58,7 +58,9 @@ std::vector<SegmentHit> sampled_crossings(std::span<const std::vector<Vec2>> per
 // the polygon.
 const std::vector<Vec2> kL{{0, 0}, {4, 0}, {4, 2}, {2, 2}, {2, 4}, {0, 4}};
 
-std::vector<Vec2> square(Vec2 c, double h) { return {{c.x - h, c.y - h}, {c.x + h, c.y - h}, {c.x + h, c.y + h}, {c.x - h, c.y + h}}; }
+std::vector<Vec2> square(Vec2 c, double h) {
+  return {{c.x - h, c.y - h}, {c.x + h, c.y - h}, {c.x + h, c.y + h}, {c.x - h, c.y + h}};
+}
 
 }  // namespace
 
@@ -249,7 +251,8 @@ TEST_CASE("spline crossings: joints of consecutive spans and pieces are not cros
   const std::vector<Vec2> z{{26, 1}, {0, 0}, {10, 0}, {-16, 1}, {-16, 20}, {26, 20}};
   std::vector<SplineLoop> zl{{z, {}, true}};
   bool self = false;
-  for (const auto& o : find_spline_crossings(zl)) self |= o.loop_a == 0 && o.loop_b == 0 && o.seg_a == 1 && o.seg_b == 1;
+  for (const auto& o : find_spline_crossings(zl))
+    self |= o.loop_a == 0 && o.loop_b == 0 && o.seg_a == 1 && o.seg_b == 1;
   CHECK(self);
 }
 

@@ -199,7 +199,8 @@ TEST_CASE("channel width: lower() on the sphere equals min(h, field) where the g
                 r * std::sin(lat * deg)};
   };
   std::vector<CoastChain> coast(2);
-  for (double lon = -5; lon <= 5 + 1e-9; lon += 0.02) coast[0].points.push_back(at(10, lon)), coast[1].points.push_back(at(10.5, lon));
+  for (double lon = -5; lon <= 5 + 1e-9; lon += 0.02)
+    coast[0].points.push_back(at(10, lon)), coast[1].points.push_back(at(10.5, lon));
   auto f = make_channel_width_field(coast, {/*elements_across=*/3, /*size_min=*/200, /*size_max=*/200e3});
   std::mt19937 rng(9);
   std::uniform_real_distribution<double> lat(8, 12.5), lon(-7, 7), lh(2, 5.5);

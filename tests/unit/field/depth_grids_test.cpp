@@ -94,7 +94,8 @@ constexpr double kDepthDeg = std::numbers::pi / 180;
 TEST_CASE("depth grids: the cell mean within half the local size, by hand") {
   DepthTmp tmp;
   // Depth 10 i + j at lon i, lat j (degrees), Positive "down".
-  write_depth_grid(tmp.dir / "g.nc", {0, 1, 10, 0, 1, 10, [](double lon, double lat) { return 10 * lon + lat; }, "m", ""});
+  write_depth_grid(tmp.dir / "g.nc",
+                   {0, 1, 10, 0, 1, 10, [](double lon, double lat) { return 10 * lon + lat; }, "m", ""});
   FieldSet fs;
   fs.define(1, "Bathymetry");
   fs.set(1, "FileName", (tmp.dir / "g.nc").string());
@@ -174,8 +175,8 @@ TEST_CASE("depth grids: the finest grid that covers a point wins, the next fills
   fs.set(1, "Positive", std::string("down"));
   const BuiltFields b = fs.build(1, {});
   const GridDepthField& f = depth_field(b);
-  const std::vector<Vec3> p{depth_on_unit(5.6, 5.6), depth_on_unit(15, 15), depth_on_unit(6.75, 6.75), depth_on_unit(4.9, 7),
-                            depth_on_unit(8, 8)};
+  const std::vector<Vec3> p{depth_on_unit(5.6, 5.6), depth_on_unit(15, 15), depth_on_unit(6.75, 6.75),
+                            depth_on_unit(4.9, 7), depth_on_unit(8, 8)};
   std::vector<double> out(p.size());
   f.eval(p, out);
   CHECK(out[0] == 50);                            // inside the fine grid
@@ -235,7 +236,8 @@ TEST_CASE("depth grids: a list of grids must share units and reference system") 
 
 TEST_CASE("depth grids: a window reads only the box of the grid, with the same values") {
   DepthTmp tmp;
-  write_depth_grid(tmp.dir / "g.nc", {0, 1, 10, 0, 1, 10, [](double lon, double lat) { return 10 * lon + lat; }, "m", ""});
+  write_depth_grid(tmp.dir / "g.nc",
+                   {0, 1, 10, 0, 1, 10, [](double lon, double lat) { return 10 * lon + lat; }, "m", ""});
   NetcdfGridSpec spec;
   spec.window = {2.5, 5.5, 3.2, 6.8};
   // Columns lon 2..6 and rows lat 3..7 meet the box; one more on each side.

@@ -9,7 +9,7 @@
 #include "generated_docs.h"
 
 TEST_CASE("docs/fields.md holds the generated field reference") {
-  sm::testing::check_generated_section(std::string(SM_SOURCE_DIR) + "/docs/fields.md",
-                                       "<!-- BEGIN GENERATED: sm::field::registry_markdown() -->\n",
-                                       "<!-- END GENERATED -->", sm::field::registry_markdown(), "SM_UPDATE_FIELD_DOCS");
+  sm::testing::check_generated_section(
+      std::string(SM_SOURCE_DIR) + "/docs/fields.md", "<!-- BEGIN GENERATED: sm::field::registry_markdown() -->\n",
+      "<!-- END GENERATED -->", sm::field::registry_markdown(), "SM_UPDATE_FIELD_DOCS");
 }

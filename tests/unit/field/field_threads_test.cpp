@@ -1,6 +1,6 @@
-// Every field kind, and the size policy, evaluated from several threads at once (`-nt`: parts of one face refined concurrently) give the same bits as a serial evaluation,
-// and so do netCDF grids read from several threads. Run under ThreadSanitizer (build-*-tsan,
-// docs/fields.md "Threads") this also shows there is no race.
+// Every field kind, and the size policy, evaluated from several threads at once (`-nt`: parts of one face refined
+// concurrently) give the same bits as a serial evaluation, and so do netCDF grids read from several threads. Run under
+// ThreadSanitizer (build-*-tsan, docs/fields.md "Threads") this also shows there is no race.
 #include <algorithm>
 #include <bit>
 #include <cmath>

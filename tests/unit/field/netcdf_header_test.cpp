@@ -116,8 +116,8 @@ TEST_CASE("netcdf header: an empty list with any tag is skipped, as libnetcdf re
   // attributes.
   std::string message;
   try {
-    read_netcdf_grid(std::string(SM_TEST_DATA) + "/../fuzz/crashes_netcdf/attribute_count_after_empty_list_with_odd_tag.nc",
-                     {});
+    read_netcdf_grid(
+        std::string(SM_TEST_DATA) + "/../fuzz/crashes_netcdf/attribute_count_after_empty_list_with_odd_tag.nc", {});
   } catch (const FieldError& e) {
     message = e.what();
   }

@@ -10,10 +10,11 @@
 using namespace sm::field;
 
 TEST_CASE("registry: every field kind listed here is registered, sorted") {
-  const char* expected[] = {"Ball", "Bathymetry", "BoundaryLayer", "Box", "ChannelWidth", "Constant", "Curvature", "Cylinder",
-                            "Distance", "Gradation", "Gradient", "Laplacian", "LonLat", "MathEval",
-                            "Max", "MaxEigenHessian", "Mean", "Min", "MinAniso", "Param", "Restrict",
-                            "Structured", "Threshold", "TimeStep"};
+  const char* expected[] = {
+      "Ball",       "Bathymetry",      "BoundaryLayer", "Box",      "ChannelWidth", "Constant", "Curvature",
+      "Cylinder",   "Distance",        "Gradation",     "Gradient", "Laplacian",    "LonLat",   "MathEval",
+      "Max",        "MaxEigenHessian", "Mean",          "Min",      "MinAniso",     "Param",    "Restrict",
+      "Structured", "Threshold",       "TimeStep"};
   REQUIRE(kinds().size() == std::size(expected));
   for (std::size_t i = 0; i < kinds().size(); ++i) CHECK(kinds()[i].name == expected[i]);
   for (const KindSpec& k : kinds()) {

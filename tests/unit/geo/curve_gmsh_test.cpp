@@ -135,7 +135,8 @@ void check_derivatives(const Curve& c) {
   }
 }
 
-void run_cases(const std::string& file, const std::vector<CurveCase>& cases, const std::map<int, SurfaceGeometry>& geos) {
+void run_cases(const std::string& file, const std::vector<CurveCase>& cases,
+               const std::map<int, SurfaceGeometry>& geos) {
   const GmshReference ref = read_msh41(std::string(SM_TEST_DATA) + "/geo/" + file);
   std::size_t total = 0;
   for (const CurveCase& cc : cases) {

@@ -48,7 +48,8 @@ TEST_CASE("curve_length: B-spline pieces and refinement converge") {
   const double l1 = curve_length(c, 0, 1, 1), l4 = curve_length(c, 0, 1, 4);
   CHECK(std::abs(l1 - l4) < 1e-9 * l4);
   // Additivity across a split inside a piece.
-  CHECK(curve_length(c, 0, 0.4137, 2) + curve_length(c, 0.4137, 1, 2) == doctest::Approx(curve_length(c, 0, 1, 2)).epsilon(1e-12));
+  CHECK(curve_length(c, 0, 0.4137, 2) + curve_length(c, 0.4137, 1, 2) ==
+        doctest::Approx(curve_length(c, 0, 1, 2)).epsilon(1e-12));
   d.xyz.push_back(d.xyz.front());
   d.periodic = true;
   CHECK(Curve::make(d)->pieces() == 40);

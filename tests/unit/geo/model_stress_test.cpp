@@ -22,7 +22,8 @@ namespace {
 // The first broken invariant, or "" (plain checks: millions of them per run).
 std::string broken_invariant(const Model& m) {
   for (const auto& [t, c] : m.curves()) {
-    if (c.tag != t || !c.shape || c.begin != c.points.front() || c.end != c.points.back()) return "curve " + std::to_string(t);
+    if (c.tag != t || !c.shape || c.begin != c.points.front() || c.end != c.points.back())
+      return "curve " + std::to_string(t);
     for (int p : c.points)
       if (!m.vertex(p)) return "curve " + std::to_string(t) + " point " + std::to_string(p);
   }
@@ -107,7 +108,9 @@ TEST_CASE("model stress: 3000 random statements keep the model consistent") {
     switch (op) {
       case 0:
       case 1:
-      case 2: st = m.add_point(pick(3) ? m.new_point_tag() : 1 + pick(60), {coord(), coord(), coord()}, pick(2) * 0.1); break;
+      case 2:
+        st = m.add_point(pick(3) ? m.new_point_tag() : 1 + pick(60), {coord(), coord(), coord()}, pick(2) * 0.1);
+        break;
       case 3:
       case 4:
       case 5: {

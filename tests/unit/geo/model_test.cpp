@@ -268,7 +268,8 @@ TEST_CASE("PolarSphere geometry: points in (u,v), curves and surfaces on it") {
   CHECK(m.set_current_geometry(8).error().kind == GeoErrorKind::MissingEntity);
   REQUIRE(m.add_lonlat_sphere(2, 1, 2));
   REQUIRE(m.add_point(8, {0.5, 0.25, 0}));
-  CHECK(norm(m.vertex(8)->xyz - Vec3{std::cos(0.25) * std::cos(0.5), std::cos(0.25) * std::sin(0.5), std::sin(0.25)}) < 1e-15);
+  CHECK(norm(m.vertex(8)->xyz - Vec3{std::cos(0.25) * std::cos(0.5), std::cos(0.25) * std::sin(0.5), std::sin(0.25)}) <
+        1e-15);
   REQUIRE(m.set_mesh_size({3, 4}, 0.5));
   CHECK(m.vertex(4)->lc == 0.5);
   // An unknown point: Gmsh ignores it; the known ones still get the size.

@@ -193,6 +193,7 @@ TEST_CASE("PolarSphere::map: the chain rule in one pass equals the generic compo
   const SecondDerivs d = s.second_derivatives(c.p);
   CHECK(norm(j.p - s.point(c.p)) < 1e-15);
   CHECK(norm(j.d1 - (c.d1.x * xu + c.d1.y * xv)) < 1e-14);
-  const Vec3 d2 = (c.d1.x * c.d1.x) * d.uu + (2 * c.d1.x * c.d1.y) * d.uv + (c.d1.y * c.d1.y) * d.vv + c.d2.x * xu + c.d2.y * xv;
+  const Vec3 d2 =
+      (c.d1.x * c.d1.x) * d.uu + (2 * c.d1.x * c.d1.y) * d.uv + (c.d1.y * c.d1.y) * d.vv + c.d2.x * xu + c.d2.y * xv;
   CHECK(norm(j.d2 - d2) < 1e-13);
 }

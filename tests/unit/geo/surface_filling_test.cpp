@@ -23,7 +23,8 @@ struct Sample {
 
 TEST_CASE("filling surfaces: Coons patch on 4 sides, Gmsh's 3-side form, sphere patches") {
   Model m;
-  const Vec3 p[] = {{0, 0, 0}, {2, 0, 0.3}, {2.2, 1.5, 0}, {-0.2, 1, 0.5}, {1, -0.3, 0.1}, {2.5, 0.8, 0}, {1, 1.6, 0.2}, {-0.4, 0.5, 0}};
+  const Vec3 p[] = {{0, 0, 0},      {2, 0, 0.3},   {2.2, 1.5, 0}, {-0.2, 1, 0.5},
+                    {1, -0.3, 0.1}, {2.5, 0.8, 0}, {1, 1.6, 0.2}, {-0.4, 0.5, 0}};
   for (int i = 0; i < 8; ++i) REQUIRE(m.add_point(i + 1, p[i]));
   REQUIRE(m.add_curve(1, CurveKind::Spline, {1, 5, 2}));
   REQUIRE(m.add_curve(2, CurveKind::Spline, {2, 6, 3}));

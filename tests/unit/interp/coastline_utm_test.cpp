@@ -45,14 +45,18 @@ std::string utm_script(const std::string& file, bool radii) {
   return "R = 6371009; Point(1) = {0, 0, 0}; Point(2) = {0, 0, R}; PolarSphere(1) = {1, 2};\n"
          "Field[1] = MathEval; Field[1].F = \"2000\";\n"
          "Coastline[1] = Loops2;\n"
-         "Coastline[1].FileName = \"" SM_SOURCE_DIR "/tests/data/coast_scripts/islands_loops2.txt\";\n"
+         "Coastline[1].FileName = \"" SM_SOURCE_DIR
+         "/tests/data/coast_scripts/islands_loops2.txt\";\n"
          "Coastline[1].AccuracyField = 1;\n"
          "Coastline[2] = Loops2;\n"
-         "Coastline[2].FileName = \"" + file + "\";\n"
+         "Coastline[2].FileName = \"" +
+         file +
+         "\";\n"
          "Coastline[2].Coordinate = \"utm\";\n"
          "Coastline[2].UTMZone = 30;\n" +
-         (radii ? fmt::format("Coastline[2].UTMEquatorialRadius = {};\nCoastline[2].UTMPolarRadius = {};\n", kUtmA, kUtmB)
-                : std::string()) +
+         (radii
+              ? fmt::format("Coastline[2].UTMEquatorialRadius = {};\nCoastline[2].UTMPolarRadius = {};\n", kUtmA, kUtmB)
+              : std::string()) +
          "Coastline[2].AccuracyField = 1;\n"
          "a[] = Coastline{1, \"Points\"};\n"
          "b[] = Coastline{2, \"Points\"};\n"

@@ -37,7 +37,8 @@ TEST_CASE("geo_diagnostic: loops, circles and holes, one kind per shape") {
   CHECK(geo_diagnostic(reversed).message ==
         "curve loop 7 is broken at curve 2: it ends at point 4 where curve 3 also ends (use -3 to reverse it)");
   const GeoError open = make_error(GeoErrorId::LoopDoesNotClose, EntityKind::CurveLoop, {7, 2}, {4, 1});
-  CHECK(geo_diagnostic(open).message == "curve loop 7 does not close: curve 2 ends at point 4 but the loop started at point 1");
+  CHECK(geo_diagnostic(open).message ==
+        "curve loop 7 does not close: curve 2 ends at point 4 but the loop started at point 1");
   CHECK(diag_info(geo_diagnostic(open).kind).kebab == diag_info(geo_diagnostic(reversed).kind).kebab);
 
   const GeoError radii = make_error(GeoErrorId::NotCocircular, EntityKind::Curve, {3}, {}, {1.0, 1.25});
@@ -70,7 +71,8 @@ TEST_CASE("geo_compat_diagnostic: the kernel's gmsh-compat notes carry values, t
   CHECK(geo_compat_diagnostic(notes[1]).message ==
         "line 4 goes from point 1 to itself: Gmsh keeps it as a degenerate curve with no mesh elements; we do not "
         "create it (only its tag is taken)");
-  CHECK(geo_compat_diagnostic(notes[2]).message == "MeshSize of point 7, which does not exist: Gmsh ignores it; so do we");
+  CHECK(geo_compat_diagnostic(notes[2]).message ==
+        "MeshSize of point 7, which does not exist: Gmsh ignores it; so do we");
   for (const auto& n : notes) CHECK(std::string(diag_info(geo_compat_diagnostic(n).kind).kebab) == "gmsh-compat");
 
   Model::CompatNote later{Model::CompatNoteId::OuterListedLater, {3, 2, 1}, {}, std::nullopt};

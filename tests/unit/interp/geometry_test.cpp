@@ -21,8 +21,9 @@ const char* kSquare =
 
 TEST_CASE("geometry: a broken curve loop names the curve and where it was created") {
   // Gmsh 4.8.4 creates such a loop unchecked (a warning); the surface it bounds is the error.
-  const auto r = run_script(std::string(kSquare) +
-                            "Line(3) = {4, 3};\nLine(4) = {4, 1};\nCurve Loop(1) = {1, 2, 3, 4};\nPlane Surface(1) = {1};\n");
+  const auto r =
+      run_script(std::string(kSquare) +
+                 "Line(3) = {4, 3};\nLine(4) = {4, 1};\nCurve Loop(1) = {1, 2, 3, 4};\nPlane Surface(1) = {1};\n");
   REQUIRE(r.kinds.size() == 2);
   CHECK(r.kinds[0] == "9:1 gmsh-compat");
   CHECK(r.kinds[1] == "10:1 loop-not-closed");
@@ -32,7 +33,8 @@ TEST_CASE("geometry: a broken curve loop names the curve and where it was create
 }
 
 TEST_CASE("geometry: entities made by Duplicata and Split Curve point at those statements") {
-  auto r = run_script(std::string(kSquare) + "c[] = Duplicata{ Curve{1}; };\nCurve Loop(1) = {c[0], 2};\nPlane Surface(1) = {1};\n");
+  auto r = run_script(std::string(kSquare) +
+                      "c[] = Duplicata{ Curve{1}; };\nCurve Loop(1) = {c[0], 2};\nPlane Surface(1) = {1};\n");
   REQUIRE(r.kinds.size() == 2);
   CHECK(r.kinds[1] == "9:1 loop-not-closed");
   CHECK(r.rendered.find("test.geo:7:7: note: curve 3 was created here") != std::string::npos);

@@ -170,7 +170,8 @@ TEST_CASE("interp: Printf redirection and Include relative to the script") {
   fs::remove_all(dir);
   fs::create_directories(dir / "sub");
   {
-    std::ofstream(dir / "sub" / "inc.geo") << "Printf(\"%g\", 10) > \"nums.txt\";\nPrintf(\"%g\", 20) >> \"nums.txt\";\n";
+    std::ofstream(dir / "sub" / "inc.geo")
+        << "Printf(\"%g\", 10) > \"nums.txt\";\nPrintf(\"%g\", 20) >> \"nums.txt\";\n";
     std::ofstream(dir / "main.geo") << "Include \"sub/inc.geo\";\nl[] = ListFromFile(\"sub/nums.txt\");\n"
                                        "Printf(\"l\", l[]);\n";
   }
@@ -245,7 +246,8 @@ TEST_CASE("interp: Include inside a running loop keeps the loop's nodes valid") 
     inc << "count += 1;\n";
     for (int i = 0; i < 2000; ++i) inc << "tmp_" << i << " = " << i << " * 2 + 1;\n";
   }
-  std::ofstream(dir / "main.geo") << "count = 0;\nFor i In {1:3}\n  Include \"body.geo\";\n  Printf(\"%g %g\", i, count);\nEndFor\n";
+  std::ofstream(dir / "main.geo")
+      << "count = 0;\nFor i In {1:3}\n  Include \"body.geo\";\n  Printf(\"%g %g\", i, count);\nEndFor\n";
   sm::lang::SourceManager sources;
   sm::lang::Diagnostics diags(sources);
   std::ostringstream out;

@@ -63,7 +63,8 @@ TEST_CASE("mesh commands: -2 over the element budget is located at the surface's
   CHECK_FALSE(r.ok);
   CHECK(r.first == "5:3 limit-exceeded");
   CHECK(r.rendered.find("cli.geo:5:3: error: surface 1 would get about 2.3e+10 triangles, over Mesh.MaxElements = "
-                        "2e+08: check the mesh sizes, or raise Mesh.MaxElements [limit-exceeded]") != std::string::npos);
+                        "2e+08: check the mesh sizes, or raise Mesh.MaxElements [limit-exceeded]") !=
+        std::string::npos);
   CHECK(r.rendered.find("^") != std::string::npos);
   CHECK_FALSE(r.wrote);
 }
@@ -104,7 +105,8 @@ TEST_CASE("mesh commands: a 1D failure from -2 points at the statement of a curv
 
 TEST_CASE("mesh commands: a 2D failure notes the surface and the curve it names (one mesh error shape)") {
   // An embedded point on a boundary edge: the face's edge recovery finds it touching curve 1.
-  const CliMesh r = mesh_cli("lc = 10;\n" + kSquareWithLc + "Point(5) = {0.5, 0, 0, lc};\nPoint{5} In Surface{1};\n", 2);
+  const CliMesh r =
+      mesh_cli("lc = 10;\n" + kSquareWithLc + "Point(5) = {0.5, 0, 0, lc};\nPoint{5} In Surface{1};\n", 2);
   CHECK_FALSE(r.ok);
   CHECK(r.first == "5:3 mesh-error");   // -2: at the statement that created the surface
   CHECK(r.rendered.find("surface 1: a boundary node lies on an edge of curve 1") != std::string::npos);

@@ -65,7 +65,8 @@ TEST_CASE("mesh note words: a boundary off its plane, and a Compound Surface's u
 TEST_CASE("mesh note words: a declined Compound Surface group") {
   sm::lang::SourceManager sources;
   sm::lang::Diagnostics diags(sources);
-  sm::interp::report_compound_declined(diags, sm::lang::SourceRange{}, {{1, 2, 5}, "they have no boundary of their own"});
+  sm::interp::report_compound_declined(diags, sm::lang::SourceRange{},
+                                       {{1, 2, 5}, "they have no boundary of their own"});
   REQUIRE(diags.all().size() == 1);
   CHECK(diags.all()[0].message ==
         "Compound Surface{1, 2, 5}: they have no boundary of their own; the surfaces are meshed one by one");

@@ -68,7 +68,8 @@ TEST_CASE("ocean grids: boundaries from the 'open' group, depth from Mesh.DepthF
     for (const auto& s : g.open)
       for (std::uint32_t v : s.nodes) {
         const sm::Vec2 ll = g.xy[v];
-        const double to_box = std::min({std::abs(ll.x + 9), std::abs(ll.x + 3), std::abs(ll.y - 50.5), std::abs(ll.y - 55)});
+        const double to_box =
+            std::min({std::abs(ll.x + 9), std::abs(ll.x + 3), std::abs(ll.y - 50.5), std::abs(ll.y - 55)});
         CHECK(to_box < 0.05);
       }
     // Land: the coasts of Ireland, Wales, Cornwall... as mainland strings between open

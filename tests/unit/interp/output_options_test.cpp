@@ -151,7 +151,8 @@ TEST_CASE("output options: Mesh.PictureBox zooms, is read back, and refuses boxe
 TEST_CASE("output options: Mesh.PictureColour 3 colours by the Min's input that sets the size, named") {
   // Two criteria in a Min: FineField (smaller for x < 0.4) and CoarseField. The legend names
   // both, through the Min behind the mesher's checked background field.
-  const std::string svg = std::filesystem::temp_directory_path() / ("sm_oo_crit_" + std::to_string(::getpid()) + ".svg");
+  const std::string svg =
+      std::filesystem::temp_directory_path() / ("sm_oo_crit_" + std::to_string(::getpid()) + ".svg");
   const auto r = run_script(
       "Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {1, 1, 0}; Point(4) = {0, 1, 0};\n"
       "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};\n"

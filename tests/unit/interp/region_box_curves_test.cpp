@@ -77,12 +77,14 @@ TEST_CASE("region box: the Irish Sea tutorial's open curves follow the box withi
   const double box[4] = {-7, -2.5, 51.5, 55.5};
   for (double gamma : {2e3, 20e3}) {
     CAPTURE(gamma);
-    const Deviation d = measure("CoastSize = " + std::to_string(gamma) + "; FarSize = 60e3" +
-                                    "; Include \"irish_sea.geo\";\n"
-                                    "For i In {0 : #RegionalOpenCurves[] - 1}  Printf(\"%g\", RegionalOpenCurves[i]);  EndFor\n",
-                                box);
+    const Deviation d =
+        measure("CoastSize = " + std::to_string(gamma) + "; FarSize = 60e3" +
+                    "; Include \"irish_sea.geo\";\n"
+                    "For i In {0 : #RegionalOpenCurves[] - 1}  Printf(\"%g\", RegionalOpenCurves[i]);  EndFor\n",
+                box);
     CHECK(d.curves > 0);
-    MESSAGE("gamma ", gamma, " m: ", d.curves, " open curves, max deviation ", d.max_m, " m (", d.max_deg, " deg) at ", d.where.lon, " ", d.where.lat);
+    MESSAGE("gamma ", gamma, " m: ", d.curves, " open curves, max deviation ", d.max_m, " m (", d.max_deg, " deg) at ",
+            d.where.lon, " ", d.where.lat);
     CHECK(d.max_m < 0.05 * gamma);   // was 668 m at 2 km, 10.5 km at 20 km (B-splines cutting the corners)
   }
 }

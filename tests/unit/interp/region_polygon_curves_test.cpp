@@ -20,7 +20,8 @@ namespace {
 constexpr double kDeg = 3.14159265358979323846 / 180;
 
 Vec3 unit(double lon, double lat) {
-  return {std::cos(lat * kDeg) * std::cos(lon * kDeg), std::cos(lat * kDeg) * std::sin(lon * kDeg), std::sin(lat * kDeg)};
+  return {std::cos(lat * kDeg) * std::cos(lon * kDeg), std::cos(lat * kDeg) * std::sin(lon * kDeg),
+          std::sin(lat * kDeg)};
 }
 
 const double kPolygon[] = {-5.27, 51.89, -2.2, 52.2, -2.2, 55.3, -4.5, 55.1, -5.0, 54.90,

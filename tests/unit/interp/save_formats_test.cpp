@@ -97,7 +97,8 @@ TEST_CASE("save formats: checks before meshing: a name that picks no format, an 
 
   CliRun no_depth = run_cli(dir, kSaveSquare, "fort.14");
   CHECK(no_depth.ok);
-  CHECK(no_depth.rendered.find("no Mesh.DepthField is set, so every depth in this fort14 file is 0") != std::string::npos);
+  CHECK(no_depth.rendered.find("no Mesh.DepthField is set, so every depth in this fort14 file is 0") !=
+        std::string::npos);
   CliRun with_depth = run_cli(dir, kSaveSquare + "Field[1] = MathEval; Field[1].F = \"50\"; Mesh.DepthField = 1;\n",
                               "hgrid.gr3");
   CHECK(with_depth.ok);

@@ -144,7 +144,8 @@ Islands square_with_islands() {
     const int p = 5 + 4 * k;
     for (int i = 0; i < 4; ++i) {
       const double a = geo::kPi / 2 * i;
-      REQUIRE(m.add_point(p + i, {centres[k][0] + 0.005 * std::cos(a), centres[k][1] + 0.005 * std::sin(a), 0}, 0.1).ok());
+      REQUIRE(
+          m.add_point(p + i, {centres[k][0] + 0.005 * std::cos(a), centres[k][1] + 0.005 * std::sin(a), 0}, 0.1).ok());
       s.island_points.push_back(p + i);
     }
     REQUIRE(m.add_curve(5 + k, geo::CurveKind::BSpline, {p, p + 1, p + 2, p + 3, p}).ok());

@@ -113,24 +113,26 @@ TEST_CASE("node coordinates: MSH files in lon/lat and stereographic load in Gmsh
   const sm::testing::ScratchDir dir;
   const std::string script = (dir.path / "coords.py").string();
   // One Python run loads every file (starting Gmsh's module costs most of the time).
-  std::ofstream(script) << "import sys, gmsh\n"
-                           "gmsh.initialize(['x', '-v', '0'])\n"
-                           "for path in sys.argv[1:]:\n"
-                           "    gmsh.clear()\n"
-                           "    gmsh.open(path)\n"
-                           "    tags, xyz, _ = gmsh.model.mesh.getNodes()\n"
-                           "    _, t2, _ = gmsh.model.mesh.getElements(2)\n"
-                           "    _, t1, _ = gmsh.model.mesh.getElements(1)\n"
-                           "    xs, ys, zs = xyz[0::3], xyz[1::3], xyz[2::3]\n"
-                           "    print(len(tags), sum(len(e) for e in t2), sum(len(e) for e in t1),\n"
-                           "          '%.6f %.6f %.6f %.6f %.6f' % (min(xs), max(xs), min(ys), max(ys), max(abs(z) for z in zs)))\n";
+  std::ofstream(script)
+      << "import sys, gmsh\n"
+         "gmsh.initialize(['x', '-v', '0'])\n"
+         "for path in sys.argv[1:]:\n"
+         "    gmsh.clear()\n"
+         "    gmsh.open(path)\n"
+         "    tags, xyz, _ = gmsh.model.mesh.getNodes()\n"
+         "    _, t2, _ = gmsh.model.mesh.getElements(2)\n"
+         "    _, t1, _ = gmsh.model.mesh.getElements(1)\n"
+         "    xs, ys, zs = xyz[0::3], xyz[1::3], xyz[2::3]\n"
+         "    print(len(tags), sum(len(e) for e in t2), sum(len(e) for e in t1),\n"
+         "          '%.6f %.6f %.6f %.6f %.6f' % (min(xs), max(xs), min(ys), max(ys), max(abs(z) for z in zs)))\n";
   const MeshModel xyz = sm::io::testing::sphere_patch(8, kR);
   std::string paths, want_all;
   for (NodeCoordinates mode : {NodeCoordinates::LonLat, NodeCoordinates::Stereographic}) {
     MeshModel m = xyz;
     REQUIRE(convert_node_coordinates(m, mode, SphereFrame{{0, 0, 0}, kR}).empty());
     double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
-    for (const Vec3& p : m.xyz) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+    for (const Vec3& p : m.xyz)
+      x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
     // 81 nodes, 128 triangles, 4 x 8 + 8 boundary and mid-curve segments.
     const std::string want = fmt::format("81 128 40 {:.6f} {:.6f} {:.6f} {:.6f} 0.000000\n", x0, x1, y0, y1);
     for (int version : {22, 41})

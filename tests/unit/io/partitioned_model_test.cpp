@@ -51,7 +51,8 @@ TEST_CASE("mesh partition: every element in a part, within 3% and the cut counte
     const sm::io::EntityMesh& s = m.entities.back();
     std::map<std::set<std::uint32_t>, std::vector<int>> parts_on;
     for (std::size_t k = 0; k < tri.size(); ++k)
-      for (int j = 0; j < 3; ++j) parts_on[side(s.connectivity[3 * k + j], s.connectivity[3 * k + (j + 1) % 3])].push_back(tri[k]);
+      for (int j = 0; j < 3; ++j)
+        parts_on[side(s.connectivity[3 * k + j], s.connectivity[3 * k + (j + 1) % 3])].push_back(tri[k]);
     std::uint64_t cut = 0;
     for (const auto& [e, qs] : parts_on) cut += qs.size() == 2 && qs[0] != qs[1];
     CHECK(p.edge_cut == cut);
@@ -113,7 +114,8 @@ TEST_CASE("partitioned model: pieces, interfaces and partition points, each node
       CHECK(e.physical_tags == std::vector<int>{7});   // the parent's groups
       CHECK(e.tag > 1);
       for (std::size_t k = 0; k < e.connectivity.size(); k += 3)
-        CHECK(tri_part.emplace(std::set<std::uint32_t>(&e.connectivity[k], &e.connectivity[k] + 3), e.partitions[0]).second);
+        CHECK(tri_part.emplace(std::set<std::uint32_t>(&e.connectivity[k], &e.connectivity[k] + 3), e.partitions[0])
+                  .second);
     }
     if (e.dim == 1 && e.partitions.size() == 2) {
       ++interfaces;
@@ -180,7 +182,8 @@ TEST_CASE("mesh partition: realigned to a mesh model with an entity left out") {
   for (std::size_t i = 0; i < fewer.entities.size(); ++i) {
     const auto key = std::make_pair(fewer.entities[i].dim, fewer.entities[i].tag);
     CHECK(a.entities[i] == key);
-    const std::size_t row = static_cast<std::size_t>(std::find(p.entities.begin(), p.entities.end(), key) - p.entities.begin());
+    const std::size_t row =
+        static_cast<std::size_t>(std::find(p.entities.begin(), p.entities.end(), key) - p.entities.begin());
     CHECK(a.element_part[i] == p.element_part[row]);
   }
   CHECK(a.node_part == p.node_part);

@@ -22,11 +22,12 @@ std::string count_elements(const std::string& svg_path) {
   // A folder of its own: parallel test runs (other build folders) must not share files.
   const sm::testing::ScratchDir dir;
   const std::string script = dir / "count.py";
-  std::ofstream(script) << "import sys, xml.etree.ElementTree as ET\n"
-                           "ns = '{http://www.w3.org/2000/svg}'\n"
-                           "root = ET.parse(sys.argv[1]).getroot()\n"
-                           "g = {e.get('id'): e for e in root.iter(ns + 'g')}\n"
-                           "print(len(g['triangles'].findall(ns + 'polygon')), len(g['curves'].findall(ns + 'polyline')))\n";
+  std::ofstream(script)
+      << "import sys, xml.etree.ElementTree as ET\n"
+         "ns = '{http://www.w3.org/2000/svg}'\n"
+         "root = ET.parse(sys.argv[1]).getroot()\n"
+         "g = {e.get('id'): e for e in root.iter(ns + 'g')}\n"
+         "print(len(g['triangles'].findall(ns + 'polygon')), len(g['curves'].findall(ns + 'polyline')))\n";
   const std::string out = dir / "count.txt";
   if (std::system(fmt::format("python3 {} {} > {}", script, svg_path, out).c_str()) != 0) return "parse error";
   std::ifstream in(out);

@@ -69,7 +69,8 @@ TEST_CASE("UGRID: a sphere patch with half its triangles clockwise, an open side
   MeshModel m = sm::io::testing::sphere_patch(4, 6371e3);
   for (EntityMesh& e : m.entities)
     if (e.dim == 2)
-      for (std::size_t i = 0; i < e.connectivity.size(); i += 6) std::swap(e.connectivity[i + 1], e.connectivity[i + 2]);
+      for (std::size_t i = 0; i < e.connectivity.size(); i += 6)
+        std::swap(e.connectivity[i + 1], e.connectivity[i + 2]);
   OceanGridOptions opt;
   opt.radius = 6371e3;
   opt.lonlat = true;
@@ -104,7 +105,8 @@ TEST_CASE("UGRID: a sphere patch with half its triangles clockwise, an open side
   for (std::size_t f = 0; f < 32; ++f) {
     Vec3 p[3];
     for (int k = 0; k < 3; ++k)
-      p[k] = sphere.from_lonlat({lon[static_cast<std::size_t>(faces[3 * f + k])], lat[static_cast<std::size_t>(faces[3 * f + k])]});
+      p[k] = sphere.from_lonlat(
+          {lon[static_cast<std::size_t>(faces[3 * f + k])], lat[static_cast<std::size_t>(faces[3 * f + k])]});
     anticlockwise += dot(cross(p[1] - p[0], p[2] - p[0]), p[0]) > 0;
   }
   CHECK(anticlockwise == 32);

@@ -44,5 +44,6 @@ TEST_CASE("builtin table: a string-valued call names a macro") {
 TEST_CASE("docs/interpreter.md holds the generated builtin reference") {
   sm::testing::check_generated_section(std::string(SM_SOURCE_DIR) + "/docs/interpreter.md",
                                        "<!-- BEGIN GENERATED: sm::lang::builtin_functions_markdown() -->\n",
-                                       "<!-- END GENERATED -->", builtin_functions_markdown(), "SM_UPDATE_BUILTIN_DOCS");
+                                       "<!-- END GENERATED -->", builtin_functions_markdown(),
+                                       "SM_UPDATE_BUILTIN_DOCS");
 }

@@ -42,7 +42,8 @@ TEST_CASE("diagnostics: error limit stops with one message") {
   const FileId f = sm.add_buffer("a.geo", "x").file;
   Diagnostics diags(sm);
   diags.set_max_errors(3);
-  for (int i = 0; i < 10; ++i) diags.report(SourceRange{f, 0, 1}, Diag::UnknownCommand, "x").note(SourceRange{}, "dropped?");
+  for (int i = 0; i < 10; ++i)
+    diags.report(SourceRange{f, 0, 1}, Diag::UnknownCommand, "x").note(SourceRange{}, "dropped?");
   CHECK(diags.too_many_errors());
   CHECK(diags.all().size() == 4);
   CHECK(diags.all().back().message == "too many errors (3), stopping");

@@ -20,11 +20,33 @@ TEST_CASE("hostile: other deep nestings (lists, unary, ^, ~{}, blocks, transform
   const std::vector<std::string> cases = {
       "z = " + std::string(100000, '{') + "1" + std::string(100000, '}') + ";",
       "x = " + std::string(100000, '!') + "1;",
-      [] { std::string s = "y = "; for (int i = 0; i < 100000; ++i) s += "2^"; return s + "1;"; }(),
-      [] { std::string s = "x = a"; for (int i = 0; i < 50000; ++i) s += "~{a"; return s + std::string(50000, '}') + ";"; }(),
-      [] { std::string s; for (int i = 0; i < 5000; ++i) s += "For i In {1:2} "; for (int i = 0; i < 5000; ++i) s += "EndFor "; return s; }(),
-      [] { std::string s; for (int i = 0; i < 5000; ++i) s += "If(1) "; for (int i = 0; i < 5000; ++i) s += "EndIf "; return s; }(),
-      [] { std::string s = "Delete { "; for (int i = 0; i < 20000; ++i) s += "Translate{1,0,0}{"; return s + std::string(20001, '}'); }(),
+      [] {
+        std::string s = "y = ";
+        for (int i = 0; i < 100000; ++i) s += "2^";
+        return s + "1;";
+      }(),
+      [] {
+        std::string s = "x = a";
+        for (int i = 0; i < 50000; ++i) s += "~{a";
+        return s + std::string(50000, '}') + ";";
+      }(),
+      [] {
+        std::string s;
+        for (int i = 0; i < 5000; ++i) s += "For i In {1:2} ";
+        for (int i = 0; i < 5000; ++i) s += "EndFor ";
+        return s;
+      }(),
+      [] {
+        std::string s;
+        for (int i = 0; i < 5000; ++i) s += "If(1) ";
+        for (int i = 0; i < 5000; ++i) s += "EndIf ";
+        return s;
+      }(),
+      [] {
+        std::string s = "Delete { ";
+        for (int i = 0; i < 20000; ++i) s += "Translate{1,0,0}{";
+        return s + std::string(20001, '}');
+      }(),
   };
   for (const std::string& text : cases) {
     const auto r = parse_text(text);

@@ -53,7 +53,8 @@ TEST_CASE("parser: control flow blocks") {
   CHECK(ast_of("For (1:3:2) x = 1; EndFor") == "(for _ 1 3 2 ((assign = x 1)))");
   CHECK(ast_of("If (a) x=1; ElseIf (b) x=2; Else x=3; EndIf") ==
         "(if ((var a) ((assign = x 1))) ((var b) ((assign = x 2))) (else ((assign = x 3))))");
-  CHECK(ast_of("Macro Foo x = 1; If (x) Return; EndIf Return") == "(macro Foo ((assign = x 1) (if ((var x) ((return))))))");
+  CHECK(ast_of("Macro Foo x = 1; If (x) Return; EndIf Return") ==
+        "(macro Foo ((assign = x 1) (if ((var x) ((return))))))");
   CHECK(ast_of("Function \"Bar\" Return") == "(macro Bar ())");
   CHECK(ast_of("Call Foo;") == "(call-macro Foo)");
   CHECK(ast_of("Call StrCat(\"F\", \"oo\");") == "(call-macro (call StrCat \"F\" \"oo\"))");
@@ -103,7 +104,8 @@ TEST_CASE("parser: geometry statements") {
   CHECK(ast_of("q[] = Point In BoundingBox{0,0,0,1,1,1};") == "(assign = (whole q) (in-box Point 0 0 0 1 1 1))");
   CHECK(ast_of("Transfinite Curve{1, -3} = 30 Using Progression 1.2;") ==
         "(transfinite-curve (list 1 (- 3)) 30 Progression 1.2)");
-  CHECK(ast_of("Transfinite Surface{1} = {1,2,3,4} Alternate;") == "(transfinite-surface (list 1) (list 1 2 3 4) Alternate)");
+  CHECK(ast_of("Transfinite Surface{1} = {1,2,3,4} Alternate;") ==
+        "(transfinite-surface (list 1) (list 1 2 3 4) Alternate)");
   CHECK(ast_of("Recombine Surface{:};") == "(recombine Surface :)");
   CHECK(ast_of("MeshSize{1, 2} = 0.1;") == "(mesh-size (list 1 2) 0.1)");
   CHECK(ast_of("Characteristic Length{:} = 0.1;") == "(mesh-size : 0.1)");
@@ -112,18 +114,21 @@ TEST_CASE("parser: geometry statements") {
   CHECK(ast_of("Split Curve{3} Point{7, 8};") == "(split-curve 3 (list 7 8))");
   CHECK(ast_of("Compound Spline(5) = {1, 2} Using 10;") == "(CompoundSpline 5 (list 1 2) :using 10)");
   CHECK(ast_of("Compound Curve{1, 2};") == "(compound Curve (list 1 2))");
-  CHECK(ast_of("Periodic Curve{1} = {3} Translate{1, 0, 0};") == "(periodic Curve (list 1) (list 3) (translate 1 0 0))");
+  CHECK(ast_of("Periodic Curve{1} = {3} Translate{1, 0, 0};") ==
+        "(periodic Curve (list 1) (list 3) (translate 1 0 0))");
   CHECK(ast_of("Euclidian Coordinates;") == "(euclidean-coordinates)");
   CHECK(ast_of("Coordinates Surface 1;") == "(coordinates-surface 1)");
   CHECK(ast_of("Parametric Surface(1) = \"u\" \"v\" \"0\";") == "(parametric-surface 1 \"u\" \"v\" \"0\")");
-  CHECK(ast_of("Nurbs(1) = {1, 2, 3} Knots {0, 0, 1, 1} Order 2;") == "(Nurbs 1 (list 1 2 3) :knots (list 0 0 1 1) :order 2)");
+  CHECK(ast_of("Nurbs(1) = {1, 2, 3} Knots {0, 0, 1, 1} Order 2;") ==
+        "(Nurbs 1 (list 1 2 3) :knots (list 0 0 1 1) :order 2)");
 }
 
 TEST_CASE("parser: fields, coastlines, plugins") {
   CHECK(ast_of("Field[1] = Distance;") == "(field-new 1 Distance)");
   CHECK(ast_of("Field[newf] = Min;") == "(field-new (const newf) Min)");
   CHECK(ast_of("Field[1].CurvesList = {1:4};") == "(field-option 1 CurvesList (list (range 1 4)))");
-  CHECK(ast_of("Field[2].F = Sprintf(\"F4^3 + %g\", lc);") == "(field-option 2 F (call Sprintf \"F4^3 + %g\" (var lc)))");
+  CHECK(ast_of("Field[2].F = Sprintf(\"F4^3 + %g\", lc);") ==
+        "(field-option 2 F (call Sprintf \"F4^3 + %g\" (var lc)))");
   CHECK(ast_of("Field[2].Run;") == "(field-action 2 Run)");
   CHECK(ast_of("Background Field = 7;") == "(Background-field 7)");
   CHECK(ast_of("Delete Field[3];") == "(delete-field 3)");
@@ -202,7 +207,8 @@ TEST_CASE("parser: documented extensions and corner cases") {
   CHECK(ast_of("n = #{1, 2};") == "(assign = n (# (list 1 2)))");
   CHECK(ast_of("Field[1].Min = 1;") == "(field-option 1 Min 1)");
   CHECK(ast_of("Mesh.Smoother = 3;") == "(assign = (option Mesh.Smoother) 3)");
-  CHECK(ast_of("Translate {-0.02, 0, 0} { Point{5}; }") == "(shape-stmt (Translate (params (- 0.02) 0 0) (shapes (Point 5))))");
+  CHECK(ast_of("Translate {-0.02, 0, 0} { Point{5}; }") ==
+        "(shape-stmt (Translate (params (- 0.02) 0 0) (shapes (Point 5))))");
   CHECK(ast_of("Point(1) = (0, 1, 2);") == "(point 1 (list 0 1 2))");
   CHECK(ast_of("For i In {1:3} EndFor;") == "(for i 1 3 _ ())");
   CHECK(ast_of("Mesh = 3;") == "(assign = Mesh 3)");

@@ -71,7 +71,8 @@ TEST_CASE("recovery: unclosed blocks point back at their opener") {
         "t.geo:1:4: note: '(' opened here\n");
   CHECK(r.ast.find("(assign = w 2)") != std::string::npos);
   r = parse_text("Macro A\nMacro B\nReturn\nReturn\n");
-  CHECK(headlines(r.diags).find("t.geo:2:1: error: a 'Macro' cannot be defined inside another 'Macro' [nested-macro]") == 0);
+  CHECK(headlines(r.diags).find(
+            "t.geo:2:1: error: a 'Macro' cannot be defined inside another 'Macro' [nested-macro]") == 0);
   r = parse_text("If (1) Else x = 1; Else y = 2; EndIf");
   CHECK(headlines(r.diags) == "t.geo:1:20: error: 'Else' after 'Else' in the same 'If' [else-after-else]\n");
 }
@@ -105,8 +106,10 @@ TEST_CASE("recovery: unknown commands and keywords as names") {
         "t.geo:1:1: error: unknown command 'Sav' [unknown-command]\n"
         "t.geo:1:1: note: did you mean 'Save'?\n");
   r = parse_text("Pi = 3;\n");
-  CHECK(headlines(r.diags) == "t.geo:1:1: error: 'Pi' is a keyword and cannot be used as a name here [keyword-as-name]\n");
+  CHECK(headlines(r.diags) ==
+        "t.geo:1:1: error: 'Pi' is a keyword and cannot be used as a name here [keyword-as-name]\n");
   r = parse_text("Call Foo; x = 1;\n");
   CHECK(r.ok);
-  CHECK(headlines(r.diags).find("warning: statements after 'Call' on the same line run after it here, but before it in Gmsh [statement-after-call]") != std::string::npos);
+  CHECK(headlines(r.diags).find("warning: statements after 'Call' on the same line run after it here, but before it in "
+                                "Gmsh [statement-after-call]") != std::string::npos);
 }

@@ -92,7 +92,8 @@ TEST_CASE("boundary layers: heights, counts and a conforming mesh") {
   const CurveMesh& side = mesh.curves.at(2);
   REQUIRE(side.nodes.size() == 9);
   const double heights[3] = {0.01, 0.023, 0.0399};
-  for (int i = 0; i < 3; ++i) CHECK(mesh.nodes[side.nodes[static_cast<std::size_t>(i) + 1]].xyz.y == doctest::Approx(heights[i]));
+  for (int i = 0; i < 3; ++i)
+    CHECK(mesh.nodes[side.nodes[static_cast<std::size_t>(i) + 1]].xyz.y == doctest::Approx(heights[i]));
   CHECK(mesh.nodes[side.nodes[4]].xyz.y == doctest::Approx(0.1319).epsilon(1e-3));
   // The bottom keeps its 11 nodes; above each, the three layer points.
   const CurveMesh& bottom = mesh.curves.at(1);

@@ -142,7 +142,8 @@ TEST_CASE("cdt: outer loop with holes, either orientation; inconsistent loops fa
     std::vector<VertexId> v;
     const Vec2 c[4] = {{x0, y0}, {x0 + s, y0}, {x0 + s, y0 + s}, {x0, y0 + s}};
     for (int e = 0; e < 4; ++e)
-      for (int k = 0; k < per_side; ++k) v.push_back(m.add_vertex(c[e] + (double(k) / per_side) * (c[(e + 1) % 4] - c[e])));
+      for (int k = 0; k < per_side; ++k)
+        v.push_back(m.add_vertex(c[e] + (double(k) / per_side) * (c[(e + 1) % 4] - c[e])));
     return v;
   };
   auto outer = square(0, 0, 1, 10);
@@ -248,7 +249,8 @@ TEST_CASE("cdt: random lattices with random non-crossing constraints") {
             TriangleStore copy = m;
             const auto rc = recover_edges(copy, PlanarGeometry{&copy.xy}, {{VertexId{v}, VertexId{w}}});
             REQUIRE(rc.ok());
-            const bool split0 = std::any_of(r.touching.begin(), r.touching.end(), [](const VertexOnEdge& t) { return t.edge == 0; });
+            const bool split0 =
+                std::any_of(r.touching.begin(), r.touching.end(), [](const VertexOnEdge& t) { return t.edge == 0; });
             if (!split0) CHECK(!rc.crossings.empty());
             CHECK(check_topology(copy).ok());
             v = w = m.num_vertices();  // one probe per trial

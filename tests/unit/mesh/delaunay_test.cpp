@@ -26,7 +26,8 @@ std::vector<std::array<std::uint32_t, 3>> canonical(const TriangleStore& m) {
   std::vector<std::array<std::uint32_t, 3>> out;
   for (std::uint32_t t = 0; t < m.num_slots(); ++t) {
     if (!m.alive(TriId{t})) continue;
-    std::array<std::uint32_t, 3> c{m.vertex(TriId{t}, 0).value, m.vertex(TriId{t}, 1).value, m.vertex(TriId{t}, 2).value};
+    std::array<std::uint32_t, 3> c{m.vertex(TriId{t}, 0).value, m.vertex(TriId{t}, 1).value,
+                                   m.vertex(TriId{t}, 2).value};
     std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
     out.push_back(c);
   }

@@ -129,7 +129,8 @@ TEST_CASE("front2d: square with circular holes, an embedded polyline and a grade
   const Loop h2 = graded_loop(m, circle({1.4, 0.45}, 0.25), size, true);
   // An embedded open polyline (Curve In Surface): constrained, not a loop.
   std::vector<VertexId> line;
-  for (int k = 0; k <= 30; ++k) line.push_back(m.add_vertex({0.85 + 0.01 * k * std::cos(0.3), 0.2 + 0.01 * k * std::sin(0.3)}));
+  for (int k = 0; k <= 30; ++k)
+    line.push_back(m.add_vertex({0.85 + 0.01 * k * std::cos(0.3), 0.2 + 0.01 * k * std::sin(0.3)}));
   std::vector<Edge> edges;
   REQUIRE(delaunay(m).ok());
   for (const Loop* l : {&sq, &h1, &h2})

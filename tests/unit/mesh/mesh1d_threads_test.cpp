@@ -46,7 +46,8 @@ sm::geo::Model threads_sphere_rings(int rings) {
     for (int i = 0; i < n; ++i) {
       const double a = 2 * sm::geo::kPi * i / n;
       const double rad = 2 + 0.5 * std::sin(3 * a + r);
-      const sm::geo::LonLat ll{lon0 + rad * std::cos(a) / std::cos(lat0 * sm::geo::kDegToRad), lat0 + rad * std::sin(a)};
+      const sm::geo::LonLat ll{lon0 + rad * std::cos(a) / std::cos(lat0 * sm::geo::kDegToRad),
+                               lat0 + rad * std::sin(a)};
       const int t = m.new_point_tag();
       const sm::Vec2 uv = ps.param_from_lonlat(ll);
       REQUIRE(m.add_point(t, {uv.x, uv.y, 0}).ok());

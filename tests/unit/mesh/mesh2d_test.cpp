@@ -89,7 +89,8 @@ std::string name_of(Mesh2dAlgorithm a) {
   }
 }
 
-constexpr Mesh2dAlgorithm kAlgorithms[] = {Mesh2dAlgorithm::Del2d, Mesh2dAlgorithm::Frontal, Mesh2dAlgorithm::MeshAdapt};
+constexpr Mesh2dAlgorithm kAlgorithms[] = {Mesh2dAlgorithm::Del2d, Mesh2dAlgorithm::Frontal,
+                                           Mesh2dAlgorithm::MeshAdapt};
 
 // Quality floor per algorithm: share of triangles with rho > 0.9 on the uniform cases.
 double rho09_floor(Mesh2dAlgorithm a) {
@@ -483,7 +484,8 @@ TEST_CASE("mesh2d: embedded point and curve are kept as nodes and edges") {
   CHECK(uses_point);
   CHECK(a.mesh.nodes[pn].xyz == Vec3{0.5, 0.5, 0});
   const CurveMesh& cm = a.mesh.curves.at(100);
-  for (std::size_t k = 0; k + 1 < cm.nodes.size(); ++k) CHECK(edges.count(std::minmax(cm.nodes[k], cm.nodes[k + 1])) == 1);
+  for (std::size_t k = 0; k + 1 < cm.nodes.size(); ++k)
+    CHECK(edges.count(std::minmax(cm.nodes[k], cm.nodes[k + 1])) == 1);
   check_ccw_xy(a.mesh, 1);
   // Smoothed with the embedded point pinned (no warning), to a good quality.
   CHECK(a.r2.notes.empty());
@@ -494,7 +496,8 @@ TEST_CASE("mesh2d: embedded point and curve are kept as nodes and edges") {
   // The point's size 0.01 is extended around it: short edges at the point.
   double shortest = 1;
   for (const auto& e : edges)
-    if (e.first == pn || e.second == pn) shortest = std::min(shortest, norm(a.mesh.nodes[e.first].xyz - a.mesh.nodes[e.second].xyz));
+    if (e.first == pn || e.second == pn)
+      shortest = std::min(shortest, norm(a.mesh.nodes[e.first].xyz - a.mesh.nodes[e.second].xyz));
   CHECK(shortest < 0.03);
 }
 
@@ -587,7 +590,8 @@ TEST_CASE("mesh2d: world ocean north of 60S from GSHHG crude, shore distance 30 
     std::size_t pick = rings.size();
     for (int c : {r1.error.tag(0), r1.error.tag(1)}) {
       const auto it = wp->ring_of_curve.find(c);
-      if (it != wp->ring_of_curve.end() && (pick == rings.size() || rings[it->second].lon.size() < rings[pick].lon.size()))
+      if (it != wp->ring_of_curve.end() &&
+          (pick == rings.size() || rings[it->second].lon.size() < rings[pick].lon.size()))
         pick = it->second;
     }
     REQUIRE(pick < rings.size());
@@ -725,7 +729,8 @@ TEST_CASE("mesh2d: a face in a tilted plane is meshed in that plane") {
     area += 0.5 * norm(c);
   }
   CHECK(area == doctest::Approx(std::sqrt(2.0)).epsilon(1e-9));
-  for (std::uint32_t v : a.mesh.surfaces.at(1).interior_nodes) CHECK(std::abs(a.mesh.nodes[v].xyz.x - a.mesh.nodes[v].xyz.z) < 1e-12);
+  for (std::uint32_t v : a.mesh.surfaces.at(1).interior_nodes)
+    CHECK(std::abs(a.mesh.nodes[v].xyz.x - a.mesh.nodes[v].xyz.z) < 1e-12);
   const MeshStats st = uniform_stats(a.mesh, 0.05);
   CHECK(st.share_len_07_14 >= 0.95);
 }
@@ -825,7 +830,8 @@ TEST_CASE("mesh2d: a square with holes and embedded entities refined in parts, t
     for (const Tri& t : a.mesh.surfaces.at(1).triangles)
       for (int e = 0; e < 3; ++e) edges.insert(std::minmax(t[e], t[(e + 1) % 3])), nodes.insert(t[e]);
     const CurveMesh& emb = a.mesh.curves.at(100);
-    for (std::size_t k = 0; k + 1 < emb.nodes.size(); ++k) CHECK(edges.count(std::minmax(emb.nodes[k], emb.nodes[k + 1])) == 1);
+    for (std::size_t k = 0; k + 1 < emb.nodes.size(); ++k)
+      CHECK(edges.count(std::minmax(emb.nodes[k], emb.nodes[k + 1])) == 1);
     CHECK(nodes.count(a.mesh.vertex_node.at(102)) == 1);
     const auto [st, sw] = check_against_whole(m, r1.mesh, o2, a, lc);
     CHECK(double(st.triangles) == doctest::Approx(double(sw.triangles)).epsilon(0.03));

@@ -136,7 +136,8 @@ TEST_CASE("curve_stats: on the model's sphere the edges are great-circle arcs, i
   CHECK(s.shortest == doctest::Approx(r * 10 * pi / 180).epsilon(1e-12));
   CHECK(s.longest == doctest::Approx(r * 45 * pi / 180).epsilon(1e-12));
   // 5003.8 km along the sphere where the chord is 4876 km.
-  CHECK(format_curve_stats(s) == "Mesh: 4 nodes, 3 line elements on 2 curves; edges from 1112 km to 5004 km on the sphere\n");
+  CHECK(format_curve_stats(s) ==
+        "Mesh: 4 nodes, 3 line elements on 2 curves; edges from 1112 km to 5004 km on the sphere\n");
   const std::string json = curve_stats_json(s, {{"1D", 0.5}});
   CHECK(json.find("\"nodes\": 4, \"line_elements\": 3, \"curves\": 2, \"edge_min\": ") == 1);
   CHECK(json.find("\"edge_units\": \"m\", \"stages\": {\"1D\": 0.5}}") != std::string::npos);

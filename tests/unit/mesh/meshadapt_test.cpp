@@ -201,8 +201,8 @@ TEST_CASE("meshadapt: a spherical cap in the stereographic plane (paper section 
   check_adapted(m, edges);
   // Arcs and the flat triangles through the three points, on the sphere.
   const testing::SphereStats st = testing::sphere_stats(m, delta);
-  MESSAGE("cap: " << m.num_triangles() << " triangles, " << 100.0 * st.in_07_14 << "% of edges within [0.7, 1.4] delta, "
-                  << 100.0 * st.rho_09 << "% rho > 0.9 on the sphere");
+  MESSAGE("cap: " << m.num_triangles() << " triangles, " << 100.0 * st.in_07_14
+                  << "% of edges within [0.7, 1.4] delta, " << 100.0 * st.rho_09 << "% rho > 0.9 on the sphere");
   CHECK(st.in_07_14 > 0.95);
   CHECK(st.rho_09 > 0.8);
   const double expected = testing::cap_triangles_expected(delta);

@@ -61,7 +61,8 @@ TEST_CASE("swap: the pass raises the worst rho of a split-up square") {
   const auto poor = [&] {  // triangles with rho < 0.2
     std::size_t n = 0;
     for (std::uint32_t t = 0; t < m.num_slots(); ++t)
-      if (m.alive(TriId{t})) n += rho(m.pos(m.vertex(TriId{t}, 0)), m.pos(m.vertex(TriId{t}, 1)), m.pos(m.vertex(TriId{t}, 2))) < 0.2;
+      if (m.alive(TriId{t}))
+        n += rho(m.pos(m.vertex(TriId{t}, 0)), m.pos(m.vertex(TriId{t}, 1)), m.pos(m.vertex(TriId{t}, 2))) < 0.2;
     return n;
   };
   const QualityStats before = mesh_quality(m);

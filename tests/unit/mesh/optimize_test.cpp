@@ -168,8 +168,9 @@ TEST_CASE("optimize_quality: PolarSphere cap measured on the sphere (to_space)")
     CHECK(same_points_corners_twins(copy, m));
     check_invariants(m, edges, fixed_xy);
     const auto [min1, share1] = sphere_rho(m);
-    MESSAGE(std::string(frontal ? "front2d" : "del2d") << " cap: sphere rho min " << min0 << " -> " << min1 << ", > 0.9 "
-                                            << share0 << " -> " << share1 << "; " << st.moves << " moves");
+    MESSAGE(std::string(frontal ? "front2d" : "del2d")
+            << " cap: sphere rho min " << min0 << " -> " << min1 << ", > 0.9 " << share0 << " -> " << share1 << "; "
+            << st.moves << " moves");
     CHECK(st.min_before == doctest::Approx(min0));
     CHECK(st.min_after == doctest::Approx(min1));
     CHECK(min1 > min0 + 0.1);

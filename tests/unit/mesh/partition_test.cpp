@@ -146,7 +146,8 @@ TEST_CASE("partition: subdivide_segment follows the integral of 1/h") {
   CHECK(r[0].x == doctest::Approx(0.9));
 }
 
-TEST_CASE("partition: refine_partitioned on a square with holes is conforming, graded, and the same for 1, 2, 4 threads") {
+TEST_CASE(
+    "partition: refine_partitioned on a square with holes is conforming, graded, and the same for 1, 2, 4 threads") {
   for (PartRefiner kind : {PartRefiner::Del2d, PartRefiner::Frontal}) {
     CAPTURE(kind == PartRefiner::Frontal);
     std::vector<Edge> edges;
@@ -272,5 +273,6 @@ TEST_CASE("partition: estimate_triangles of a vanishing size is the largest coun
   const PlaneSizeFn tiny = [](std::span<const Vec2>, std::span<double> h) {
     for (double& x : h) x = 1e-6;
   };
-  CHECK(static_cast<double>(estimate_triangles(m, tiny)) == doctest::Approx(1 / (1e-12 * std::sqrt(3) / 4)).epsilon(0.01));
+  CHECK(static_cast<double>(estimate_triangles(m, tiny)) ==
+        doctest::Approx(1 / (1e-12 * std::sqrt(3) / 4)).epsilon(0.01));
 }

@@ -44,7 +44,8 @@ TEST_CASE("periodic curve: the map's direction from the end points, or none") {
   const sm::geo::Model m = periodic_curve_testing::square();
   const double tol = 1e-8;
   CHECK(sm::periodic_orientation(m, 3, 1, sm::periodic_translation({0, 1, 0}), tol) == -1);
-  CHECK(sm::periodic_orientation(m, 4, 1, sm::periodic_rotation({0, 0, 1}, {0.5, 0.5, 0}, -std::numbers::pi / 2), tol) == 1);
+  CHECK(sm::periodic_orientation(m, 4, 1, sm::periodic_rotation({0, 0, 1}, {0.5, 0.5, 0}, -std::numbers::pi / 2),
+                                 tol) == 1);
   std::pair<double, double> d;
   CHECK_FALSE(sm::periodic_orientation(m, 3, 1, sm::periodic_translation({0, 2, 0}), tol, &d));
   CHECK(d.first == doctest::Approx(1.0));

@@ -64,7 +64,8 @@ QfMeshed qf_mesh(const geo::Model& m, double floor, double size = 0.115) {
   REQUIRE(out.r2.ok());
   for (const auto& [tag, sf] : out.mesh.surfaces)
     for (const auto& t : sf.triangles)
-      out.min_rho = std::min(out.min_rho, rho(out.mesh.nodes[t[0]].xyz, out.mesh.nodes[t[1]].xyz, out.mesh.nodes[t[2]].xyz));
+      out.min_rho =
+          std::min(out.min_rho, rho(out.mesh.nodes[t[0]].xyz, out.mesh.nodes[t[1]].xyz, out.mesh.nodes[t[2]].xyz));
   return out;
 }
 
@@ -354,7 +355,8 @@ TEST_CASE("quality floor: the same mesh on 1, 2 and 3 threads, never worse than 
     REQUIRE(out.r2.ok());
     for (const auto& [tag, sf] : out.mesh.surfaces)
       for (const auto& t : sf.triangles)
-        out.min_rho = std::min(out.min_rho, rho(out.mesh.nodes[t[0]].xyz, out.mesh.nodes[t[1]].xyz, out.mesh.nodes[t[2]].xyz));
+        out.min_rho =
+            std::min(out.min_rho, rho(out.mesh.nodes[t[0]].xyz, out.mesh.nodes[t[1]].xyz, out.mesh.nodes[t[2]].xyz));
     runs.push_back(std::move(out));
   }
   const auto& s1 = runs[1].mesh.surfaces.begin()->second;

@@ -39,7 +39,8 @@ Grid delaunay_grid(int n) {
   for (const sm::Vec2 p : g.xy) g.xyz.push_back({p.x, p.y, 0});
   for (std::uint32_t t = 0; t < m.num_slots(); ++t)
     if (m.alive(sm::TriId{t}))
-      g.tris.push_back({m.vertex(sm::TriId{t}, 0).value, m.vertex(sm::TriId{t}, 1).value, m.vertex(sm::TriId{t}, 2).value});
+      g.tris.push_back(
+          {m.vertex(sm::TriId{t}, 0).value, m.vertex(sm::TriId{t}, 1).value, m.vertex(sm::TriId{t}, 2).value});
   return g;
 }
 

@@ -48,7 +48,8 @@ TEST_CASE("quality: eta and gamma") {
   CHECK(eta({0, 0}, {1, 0}, {0.5, std::sqrt(0.75)}) == doctest::Approx(1));
   CHECK(gamma({0, 0}, {1, 0}, {0.5, std::sqrt(0.75)}) == doctest::Approx(1));
   // Right isosceles: r_in = (2 - sqrt2) / 2, longest edge sqrt2.
-  CHECK(gamma({0, 0}, {1, 0}, {0, 1}) == doctest::Approx(2 * std::sqrt(3.0) * (2 - std::sqrt(2.0)) / 2 / std::sqrt(2.0)));
+  CHECK(gamma({0, 0}, {1, 0}, {0, 1}) ==
+        doctest::Approx(2 * std::sqrt(3.0) * (2 - std::sqrt(2.0)) / 2 / std::sqrt(2.0)));
   CHECK(gamma({0, 0}, {1, 0}, {2, 0}) == 0);
   const Vec2 cc = circumcentre({0, 0}, {2, 0}, {0, 2});
   CHECK(cc.x == doctest::Approx(1));
@@ -206,7 +207,8 @@ TEST_CASE("refine: a spherical cap meshed in the stereographic plane (paper sect
   check_refined(m, edges);
   // Edge lengths measured on the sphere (great-circle arcs).
   const testing::SphereStats st = testing::sphere_stats(m, delta);
-  MESSAGE("cap: " << m.num_triangles() << " triangles, " << 100.0 * st.in_07_14 << "% of edges within [0.7, 1.4] delta on the sphere");
+  MESSAGE("cap: " << m.num_triangles() << " triangles, " << 100.0 * st.in_07_14
+                  << "% of edges within [0.7, 1.4] delta on the sphere");
   CHECK(st.in_07_14 > 0.95);
   // Triangles fill the cap's area (2 pi (1 - cos 60) = pi) at about the
   // equilateral density of the target size.

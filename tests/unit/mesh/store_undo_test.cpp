@@ -62,7 +62,8 @@ void su_change(TriangleStore& m, std::uint32_t fixed) {
   std::uint32_t inserted = 0;
   for (std::uint32_t t = 7; t < m.num_slots() && inserted < 30; t += 53) {
     if (!m.alive(TriId{t})) continue;
-    const Vec2 c = (1.0 / 3) * (m.pos(m.vertex(TriId{t}, 0)) + m.pos(m.vertex(TriId{t}, 1)) + m.pos(m.vertex(TriId{t}, 2)));
+    const Vec2 c =
+        (1.0 / 3) * (m.pos(m.vertex(TriId{t}, 0)) + m.pos(m.vertex(TriId{t}, 1)) + m.pos(m.vertex(TriId{t}, 2)));
     inserted += ins.insert(c, TriId{t}) == InsertOutcome::Inserted;
   }
   CHECK(inserted > 0);

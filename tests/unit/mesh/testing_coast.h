@@ -85,7 +85,8 @@ struct RingCurve {
         std::upper_bound(s.begin(), s.end(), t) - s.begin(), s.size() - 1);
     const std::size_t j = k == 0 ? 0 : k - 1;
     const double len = s[j + 1] - s[j], f = len > 0 ? std::clamp((t - s[j]) / len, 0.0, 1.0) : 0.0;
-    return stereo(ring->lon[j] + f * (ring->lon[j + 1] - ring->lon[j]), ring->lat[j] + f * (ring->lat[j + 1] - ring->lat[j]));
+    return stereo(ring->lon[j] + f * (ring->lon[j + 1] - ring->lon[j]),
+                  ring->lat[j] + f * (ring->lat[j + 1] - ring->lat[j]));
   }
 };
 

@@ -27,7 +27,8 @@ inline Loop circle_loop(TriangleStore& m, Vec2 c, double r, double h, bool hole)
   Loop l;
   l.hole = hole;
   const int n = std::max(3, static_cast<int>(std::ceil(2 * M_PI * r / h)));
-  for (int k = 0; k < n; ++k) l.v.push_back(m.add_vertex({c.x + r * std::cos(2 * M_PI * k / n), c.y + r * std::sin(2 * M_PI * k / n)}));
+  for (int k = 0; k < n; ++k)
+    l.v.push_back(m.add_vertex({c.x + r * std::cos(2 * M_PI * k / n), c.y + r * std::sin(2 * M_PI * k / n)}));
   return l;
 }
 

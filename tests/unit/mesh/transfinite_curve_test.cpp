@@ -28,7 +28,8 @@ TEST_CASE("transfinite curve: Progression 1.2 on 5 nodes is the geometric series
   for (std::size_t k = 0; k < x.size(); ++k) CHECK(x[k] == doctest::Approx(want[k]).epsilon(1e-12));
   // A negative tag: the same steps from the other end.
   const std::vector<double> r = sm::transfinite_abscissae(law(5, sm::TransfiniteLaw::Progression, 1.2, true));
-  for (std::size_t k = 0; k < r.size(); ++k) CHECK(r[k] == doctest::Approx(1.0 - want[want.size() - 1 - k]).epsilon(1e-12));
+  for (std::size_t k = 0; k < r.size(); ++k)
+    CHECK(r[k] == doctest::Approx(1.0 - want[want.size() - 1 - k]).epsilon(1e-12));
 }
 
 TEST_CASE("transfinite curve: equal spacing for coefficient 1, 0 and Beta below 1") {

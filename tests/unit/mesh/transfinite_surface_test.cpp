@@ -26,7 +26,8 @@ sm::TransfiniteBoundary square(int nx, int ny) {
   for (int j = 0; j < ny; ++j) add(1, double(j) / ny);
   for (int i = nx; i > 0; --i) add(double(i) / nx, 1);
   for (int j = ny; j > 0; --j) add(0, double(j) / ny);
-  b.corners = {0, static_cast<std::size_t>(nx), static_cast<std::size_t>(nx + ny), static_cast<std::size_t>(2 * nx + ny)};
+  b.corners = {0, static_cast<std::size_t>(nx), static_cast<std::size_t>(nx + ny),
+               static_cast<std::size_t>(2 * nx + ny)};
   return b;
 }
 
@@ -81,7 +82,8 @@ TEST_CASE("transfinite surface: Left, Right and Alternate diagonals") {
         const sm::Vec3 p = at(b, r, t[e]), q = at(b, r, t[(e + 1) % 3]);
         if (std::abs(std::abs(p.x - q.x) - 0.5) < 1e-12 && std::abs(std::abs(p.y - q.y) - 0.5) < 1e-12 &&
             (p.x - q.x) * (p.y - q.y) > 0)
-          rising.insert({static_cast<int>(std::min(p.x, q.x) * 2 + 0.5), static_cast<int>(std::min(p.y, q.y) * 2 + 0.5)});
+          rising.insert(
+              {static_cast<int>(std::min(p.x, q.x) * 2 + 0.5), static_cast<int>(std::min(p.y, q.y) * 2 + 0.5)});
       }
     }
     return rising;

@@ -178,7 +178,8 @@ TEST_CASE("triangulation: sort_spatially renumbers along the curve and keeps the
     bool first = true;
     for (std::uint32_t t = 0; t < s.num_slots(); ++t) {
       if (!s.alive(TriId{t})) continue;
-      const Vec2 c = (1.0 / 3) * (s.pos(s.vertex(TriId{t}, 0)) + s.pos(s.vertex(TriId{t}, 1)) + s.pos(s.vertex(TriId{t}, 2)));
+      const Vec2 c =
+          (1.0 / 3) * (s.pos(s.vertex(TriId{t}, 0)) + s.pos(s.vertex(TriId{t}, 1)) + s.pos(s.vertex(TriId{t}, 2)));
       if (!first) len += norm(c - prev);
       prev = c, first = false;
     }
