@@ -170,6 +170,25 @@ double seg_distance_point(Vec2 a, Vec2 b, Vec2 p) {
   return norm(p - (a + t * d));
 }
 
+// The distance of two segments that do not cross: the least of each one's end points' to
+// the other (a near miss is measured so by every search).
+double near_distance(const Seg& s, const Seg& t) {
+  return std::min({seg_distance_point(s.a, s.b, t.a), seg_distance_point(s.a, s.b, t.b),
+                   seg_distance_point(t.a, t.b, s.a), seg_distance_point(t.a, t.b, s.b)});
+}
+
+// Whether the (padded) boxes of s and t overlap.
+bool boxes_meet(const Seg& s, const Seg& t) {
+  return !(s.lo.x > t.hi.x || t.lo.x > s.hi.x || s.lo.y > t.hi.y || t.lo.y > s.hi.y);
+}
+
+// The one cell a pair is taken in: that of the lower corner of the two boxes' overlap,
+// which lies in both boxes and so in a cell each of them covers.
+std::int64_t pair_cell(const Grid& g, const Seg& s, const Seg& t) {
+  const Vec2 corner{std::max(s.lo.x, t.lo.x), std::max(s.lo.y, t.lo.y)};
+  return g.iy(corner.y) * g.nx + g.ix(corner.x);
+}
+
 template <class Visit>
 void for_each_candidate(const std::vector<Seg>& segs, const Grid& g, IntersectionStats* st, Visit visit) {
   const auto cells = bin(segs, g);
@@ -182,9 +201,7 @@ void for_each_candidate(const std::vector<Seg>& segs, const Grid& g, Intersectio
       for (std::size_t q = p + 1; q < j; ++q) {
         const Seg& s = segs[cells[p].second];
         const Seg& t = segs[cells[q].second];
-        if (s.lo.x > t.hi.x || t.lo.x > s.hi.x || s.lo.y > t.hi.y || t.lo.y > s.hi.y) continue;
-        const Vec2 corner{std::max(s.lo.x, t.lo.x), std::max(s.lo.y, t.lo.y)};
-        if (g.iy(corner.y) * g.nx + g.ix(corner.x) != cell) continue;   // tested in another cell
+        if (!boxes_meet(s, t) || pair_cell(g, s, t) != cell) continue;   // else tested in another cell
         if (st) ++st->candidate_pairs;
         visit(s, t);
       }
@@ -220,9 +237,7 @@ void for_each_active_pair(std::span<const std::vector<Vec2>> loops, std::span<co
         const auto c = static_cast<std::size_t>(cell);
         for (std::uint32_t e = start[c]; e < start[c + 1]; ++e) {   // entries in cell order, as bin sorted them
           const Seg& s = on[cells[e].second];
-          if (s.lo.x > t.hi.x || t.lo.x > s.hi.x || s.lo.y > t.hi.y || t.lo.y > s.hi.y) continue;
-          const Vec2 corner{std::max(s.lo.x, t.lo.x), std::max(s.lo.y, t.lo.y)};
-          if (g.iy(corner.y) * g.nx + g.ix(corner.x) != cell) continue;   // taken in another cell
+          if (!boxes_meet(s, t) || pair_cell(g, s, t) != cell) continue;   // else taken in another cell
           if (std::pair(s.loop, s.index) < std::pair(t.loop, t.index))
             test(s, t);
           else
@@ -301,8 +316,7 @@ std::vector<NearMiss> find_near_misses(std::span<const std::vector<Vec2>> loops,
       if (std::min(d, s.n - d) < 3) return;
     }
     const double w = std::min(width[s.loop][s.index], width[t.loop][t.index]);
-    const double d = std::min({seg_distance_point(s.a, s.b, t.a), seg_distance_point(s.a, s.b, t.b),
-                               seg_distance_point(t.a, t.b, s.a), seg_distance_point(t.a, t.b, s.b)});
+    const double d = near_distance(s, t);
     if (d >= w || d == 0) return;
     out.push_back({s.loop, s.index, t.loop, t.index, d, 0.5 * (s.a + t.a)});
   });
@@ -377,22 +391,11 @@ std::vector<NearMiss> find_near_pairs(std::span<const std::vector<Vec2>> loops,
   struct Places {
     std::uint32_t loop_a, seg_a, loop_b, seg_b;
   };
-  auto distance = [](const Seg& s, const Seg& t) {
-    return std::min({seg_distance_point(s.a, s.b, t.a), seg_distance_point(s.a, s.b, t.b),
-                     seg_distance_point(t.a, t.b, s.a), seg_distance_point(t.a, t.b, s.b)});
-  };
   auto test = [&](const Seg& s, const Seg& t, std::vector<Places>& found) {
     const double w = std::min(width[s.loop][s.index], width[t.loop][t.index]);
-    const double d = distance(s, t);
+    const double d = near_distance(s, t);
     if (d >= w || d == 0) return;
     found.push_back({s.loop, s.index, t.loop, t.index});
-  };
-  auto boxes_meet = [](const Seg& s, const Seg& t) {
-    return !(s.lo.x > t.hi.x || t.lo.x > s.hi.x || s.lo.y > t.hi.y || t.lo.y > s.hi.y);
-  };
-  auto corner_cell = [&](const Seg& s, const Seg& t) {
-    const Vec2 corner{std::max(s.lo.x, t.lo.x), std::max(s.lo.y, t.lo.y)};
-    return static_cast<std::size_t>(g.iy(corner.y) * g.nx + g.ix(corner.x));
   };
   // Work in fixed chunks whatever the thread count (each chunk's pairs in a list of its
   // own), then one list sorted: the pairs are distinct (a pair is taken in one cell, as in
@@ -414,7 +417,7 @@ std::vector<NearMiss> find_near_pairs(std::span<const std::vector<Vec2>> loops,
       for (; i < entries.size() && entries[i].first == c; ++i) here.push_back(on_seg(entries[i].second));
       for (std::size_t p = 0; p < here.size(); ++p)
         for (std::size_t q = p + 1; q < here.size(); ++q)
-          if (boxes_meet(here[p], here[q]) && corner_cell(here[p], here[q]) == c) test(here[p], here[q], mine);
+          if (boxes_meet(here[p], here[q]) && pair_cell(g, here[p], here[q]) == c) test(here[p], here[q], mine);
     }
   });
   // Then each inactive segment whose box meets the active ones' bounding box looks in the
@@ -436,7 +439,8 @@ std::vector<NearMiss> find_near_pairs(std::span<const std::vector<Vec2>> loops,
           const auto [first, last] = cell_range(c);
           for (std::size_t en = first; en < last; ++en) {
             const Seg s = on_seg(entries[en].second);
-            if (!boxes_meet(s, t) || corner_cell(s, t) != c) continue;   // taken in another cell
+            // Else taken in another cell.
+            if (!boxes_meet(s, t) || pair_cell(g, s, t) != static_cast<std::int64_t>(c)) continue;
             if (std::pair(s.loop, s.index) < std::pair(t.loop, t.index))
               test(s, t, mine);
             else
@@ -453,7 +457,7 @@ std::vector<NearMiss> find_near_pairs(std::span<const std::vector<Vec2>> loops,
   for (auto& f : found) {
     for (const Places& x : f) {
       const Seg s = seg_at(x.loop_a, x.seg_a), t = seg_at(x.loop_b, x.seg_b);
-      out.push_back({x.loop_a, x.seg_a, x.loop_b, x.seg_b, distance(s, t), 0.5 * (s.a + t.a)});
+      out.push_back({x.loop_a, x.seg_a, x.loop_b, x.seg_b, near_distance(s, t), 0.5 * (s.a + t.a)});
     }
     std::vector<Places>().swap(f);
   }

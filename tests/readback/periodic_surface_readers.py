@@ -24,6 +24,16 @@ import gmsh
 import numpy as np
 
 
+def surface_elements(s):
+    """Surface s of the open model: its triangle count and the nodes of its elements (MSH
+    2.2 keeps no entity's boundary, so a link is checked against these)."""
+    types, elements, element_nodes = gmsh.model.mesh.getElements(2, s)
+    nodes = set()
+    for n in element_nodes:
+        nodes.update(n.tolist())
+    return sum(len(e) for t, e in zip(types, elements) if t == 2), nodes
+
+
 def surface_view(path):
     """(master, node pairs' coordinates (slave, master), affine map, the nodes of surface
     12's triangles, the nodes the link lists, triangles of surfaces 11 and 12) as Gmsh's
@@ -31,13 +41,8 @@ def surface_view(path):
     xyz = gmsh_nodes(path, periodic=True)
     master, nodes, master_nodes, affine = gmsh.model.mesh.getPeriodicNodes(2, 12)
     pairs = [(xyz[a], xyz[b]) for a, b in zip(nodes.tolist(), master_nodes.tolist())]
-    triangles, own = [], set()
-    for s in (11, 12):
-        types, elements, element_nodes = gmsh.model.mesh.getElements(2, s)
-        triangles.append(sum(len(e) for t, e in zip(types, elements) if t == 2))
-        if s == 12:   # its triangles' nodes: MSH 2.2 keeps no entity's boundary
-            for n in element_nodes:
-                own.update(n.tolist())
+    (source_triangles, _), (target_triangles, own) = surface_elements(11), surface_elements(12)
+    triangles = [source_triangles, target_triangles]
     listed = sorted(nodes.tolist())
     gmsh.finalize()
     return master, pairs, list(affine), sorted(own), listed, triangles
@@ -66,13 +71,8 @@ def copy_view(path, copies):
         m = np.array(affine).reshape(4, 4) if len(affine) == 16 else np.full((4, 4), np.nan)
         err = max((float(np.linalg.norm(xyz[a] - m.dot(np.append(xyz[b], 1))[:3]))
                    for a, b in zip(nodes.tolist(), master_nodes.tolist())), default=1.0)
-        counts, own = [], set()
-        for s in (target, source):
-            types, elements, element_nodes = gmsh.model.mesh.getElements(2, s)
-            counts.append(sum(len(e) for t, e in zip(types, elements) if t == 2))
-            if s == target:
-                for n in element_nodes:
-                    own.update(n.tolist())
+        (target_triangles, own), (source_triangles, _) = surface_elements(target), surface_elements(source)
+        counts = [target_triangles, source_triangles]
         out.append((master, err, sorted(nodes.tolist()) == sorted(own), counts))
     gmsh.finalize()
     return out

@@ -77,9 +77,7 @@ std::optional<Worded> worded_face_problem(const MeshError& e) {
     case MeshProblem::FaceNotPlanar: return placed(e, Diag::MeshFaceNotPlanar, Diag::MeshFaceNotPlanarXyz, s, e.value);
     case MeshProblem::FacePointOffPlane:
       return placed(e, Diag::MeshFacePointOffPlane, Diag::MeshFacePointOffPlaneXyz, s, e.value);
-    case MeshProblem::LayersOverlap:
-      if (e.has_lonlat) return worded(Diag::MeshLayersOverlap, s, e.where.lon, e.where.lat);
-      return worded(Diag::MeshLayersOverlapXyz, s, e.xyz.x, e.xyz.y, e.xyz.z);
+    case MeshProblem::LayersOverlap: return placed(e, Diag::MeshLayersOverlap, Diag::MeshLayersOverlapXyz, s);
     case MeshProblem::LayersOpen: return placed(e, Diag::MeshLayersOpen, Diag::MeshLayersOpenXyz, s);
     case MeshProblem::LayersFill: return worded(Diag::MeshLayersFill, s);
     case MeshProblem::DelaunayFailed: return worded(Diag::MeshDelaunayFailed, s, e.reason);
