@@ -33,7 +33,7 @@ sm::ModelMesh threads_stats_grid(int n) {
 
 }  // namespace
 
-TEST_CASE("mesh_stats threads: the same figures to the last bit for 1, 2 and 6 threads") {
+TEST_CASE("mesh_stats threads: the same figures to the last bit for 1, 2, 3 and 6 threads") {
   const sm::ModelMesh m = threads_stats_grid(160);
   std::vector<sm::SurfaceSize> sizes;
   sizes.push_back({3, [](std::span<const sm::Vec3> x, std::span<double> h) {
@@ -47,7 +47,7 @@ TEST_CASE("mesh_stats threads: the same figures to the last bit for 1, 2 and 6 t
   REQUIRE(one.has_sizes);
   CHECK(one.edges > 70000);
   CHECK(one.min_rho < one.mean_rho);
-  for (int threads : {2, 6}) {
+  for (int threads : {2, 3, 6}) {
     CAPTURE(threads);
     const sm::MeshStats s = sm::mesh_stats(m, sizes, threads);
     CHECK(s.nodes == one.nodes);
@@ -61,5 +61,6 @@ TEST_CASE("mesh_stats threads: the same figures to the last bit for 1, 2 and 6 t
     CHECK(s.len_p05 == one.len_p05);
     CHECK(s.len_p95 == one.len_p95);
     CHECK(s.share_len_07_14 == one.share_len_07_14);
+    CHECK(sm::stats_json(s) == sm::stats_json(one));   // every figure, as --stats writes it
   }
 }
