@@ -12,6 +12,7 @@
 #include <functional>
 #include <map>
 #include <numeric>
+#include <span>
 
 #include "base/output_file.h"
 #include "base/parallel.h"
@@ -51,8 +52,10 @@ class Out {
 
   /// The text of items [0, n), fill(begin, end, out) appending that of [begin, end) to out:
   /// made in chunks of fixed bounds on the writer's threads, a wave of chunks at a time
-  /// (so that at most a few chunks are held beyond the buffer), and appended in item order,
-  /// so the bytes do not depend on the thread count.
+  /// (so that at most two waves are held beyond the buffer), and appended in item order,
+  /// so the bytes do not depend on the thread count. A wave's text is appended and
+  /// written out by one thread while the others make the next wave's: the file's writes
+  /// (the kernel's copy of every byte) overlap the formatting instead of following it.
   template <class Fill>
   void items(std::size_t n, const Fill& fill) {
     constexpr std::size_t kItems = 1 << 14;
@@ -65,21 +68,38 @@ class Out {
       return;
     }
     const std::size_t wave = static_cast<std::size_t>(threads_) * 4;
-    std::vector<std::string> parts(std::min(chunks, wave));
-    for (std::size_t c0 = 0; c0 < chunks; c0 += wave) {
-      const std::size_t nc = std::min(wave, chunks - c0);
-      parallel_for_chunks(threads_, nc, 1, [&](std::size_t begin, std::size_t end) {
-        for (std::size_t c = begin; c < end; ++c) {
-          parts[c].clear();
-          const std::size_t lo = (c0 + c) * kItems;
-          fill(lo, std::min(n, lo + kItems), parts[c]);
-        }
-      });
-      for (std::size_t c = 0; c < nc; ++c) {
-        buf_.append(parts[c]);
+    // Two sets of parts: a wave is made into one while the one before is written from the other.
+    std::vector<std::string> parts[2];
+    parts[0].resize(std::min(chunks, wave));
+    parts[1].resize(std::min(chunks, wave));
+    std::size_t written_count = 0;   // the parts of the wave before (in parts[1 - current])
+    auto write_out = [&](std::vector<std::string>& done, std::size_t count) {
+      for (std::size_t c = 0; c < count; ++c) {
+        buf_.append(done[c]);
         drain();
       }
+    };
+    std::size_t current = 0;
+    for (std::size_t c0 = 0; c0 < chunks; c0 += wave, current = 1 - current) {
+      const std::size_t nc = std::min(wave, chunks - c0);
+      std::vector<std::string>& made = parts[current];
+      std::vector<std::string>& done = parts[1 - current];
+      // Job 0 writes the wave before; jobs 1..nc make this wave's chunks.
+      parallel_for_chunks(threads_, nc + 1, 1, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t job = begin; job < end; ++job) {
+          if (job == 0) {
+            write_out(done, written_count);
+            continue;
+          }
+          const std::size_t c = job - 1;
+          made[c].clear();
+          const std::size_t lo = (c0 + c) * kItems;
+          fill(lo, std::min(n, lo + kItems), made[c]);
+        }
+      });
+      written_count = nc;
     }
+    write_out(parts[1 - current], written_count);
   }
 
  private:
@@ -318,6 +338,22 @@ struct Box {
   bool empty() const { return lo.x > hi.x; }
 };
 
+// The box of the points `nodes`, in chunks of fixed bounds on `threads` threads (a
+// surface's elements read millions of points in no order): the least and greatest
+// coordinates are the same however the chunks are cut and joined.
+Box bounding_box(const MeshModel& m, std::span<const std::uint32_t> nodes, int threads) {
+  constexpr std::size_t kBoxChunk = 1 << 16;
+  std::vector<Box> chunk_box((nodes.size() + kBoxChunk - 1) / kBoxChunk);
+  parallel_for_chunks(resolve_thread_count(threads), nodes.size(), kBoxChunk, [&](std::size_t begin, std::size_t end) {
+    Box& b = chunk_box[begin / kBoxChunk];
+    for (std::size_t k = begin; k < end; ++k) b.add(m.xyz[nodes[k]]);
+  });
+  Box box;
+  for (const Box& b : chunk_box)
+    if (!b.empty()) box.add(b.lo), box.add(b.hi);
+  return box;
+}
+
 // $Entities (the model's own entities) or, for a partitioned mesh, $PartitionedEntities
 // (the entities with partitions: partition count, no ghost entities, then per entity its
 // parent's dim and tag and its partitions before the usual fields), as Gmsh 4.8.4 writes.
@@ -349,9 +385,9 @@ void write_entities41(Out& o, const MeshModel& m, const MshOptions& opt, const P
     const std::size_t i = p.order[k];
     const EntityMesh& e = m.entities[i];
     if (!listed(e) || extra[i]) continue;
-    Box box;
-    for (std::uint32_t n : e.nodes) box.add(m.xyz[n]);
-    for (std::uint32_t n : e.connectivity) box.add(m.xyz[n]);
+    Box box = bounding_box(m, e.nodes, opt.threads);
+    const Box used = bounding_box(m, e.connectivity, opt.threads);
+    if (!used.empty()) box.add(used.lo), box.add(used.hi);
     for (std::size_t j = k + 1; j < p.order.size() && extra[p.order[j]]; ++j)
       for (std::uint32_t n : m.entities[p.order[j]].connectivity) box.add(m.xyz[n]);
     if (const auto it = piece_boxes.find({e.dim, e.tag}); it != piece_boxes.end())
