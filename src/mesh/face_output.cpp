@@ -5,10 +5,18 @@
 #include <algorithm>
 #include <utility>
 
+#include "base/parallel.h"
 #include "mesh/face_sizing.h"
 #include "mesh/recombine.h"
 
 namespace sm {
+namespace {
+
+// New nodes per chunk of their placement in space: fixed, so the cut is the same for every
+// thread count.
+constexpr std::size_t kOutputNodeChunk = 1 << 14;
+
+}  // namespace
 
 void append_elements(SurfaceMesh& out, const std::vector<std::array<std::uint32_t, 3>>& triangles,
                      const std::vector<std::array<std::uint32_t, 4>>& quads, bool flip,
@@ -54,14 +62,26 @@ void output_face(FaceWork& f) {
   const std::size_t need = f.mesh.nodes.size() + (nv - std::min(nv, f.fixed_count));
   if (need > f.mesh.nodes.capacity())
     f.mesh.nodes.reserve(std::max(need, f.mesh.nodes.capacity() + f.mesh.nodes.capacity() / 2));
+  // The new nodes numbered in vertex order, then placed in space on threads (each node on
+  // its own: the same coordinates for any count).
   sm_out.interior_nodes.reserve(nv - std::min(nv, f.fixed_count));
   for (std::uint32_t v = f.fixed_count; v < nv; ++v) {
     if (f.global[v] != kNoLocal) continue;
-    const Vec2 p = xy[v];
-    f.global[v] =
-        f.plane.geom ? f.mesh.add_node(f.plane.to_space(p), f.plane.to_param(p)) : f.mesh.add_node(f.plane.to_space(p));
-    sm_out.interior_nodes.push_back(f.global[v]);
+    f.global[v] = static_cast<std::uint32_t>(f.mesh.nodes.size() + sm_out.interior_nodes.size());
+    sm_out.interior_nodes.push_back(v);   // the local vertex until placed
   }
+  const std::size_t first_new = f.mesh.nodes.size();
+  f.mesh.nodes.resize(first_new + sm_out.interior_nodes.size());
+  parallel_for_chunks(resolve_thread_count(f.opt.threads), sm_out.interior_nodes.size(), kOutputNodeChunk,
+                      [&](std::size_t begin, std::size_t end) {
+                        for (std::size_t k = begin; k < end; ++k) {
+                          const Vec2 p = xy[sm_out.interior_nodes[k]];
+                          MeshNode& n = f.mesh.nodes[first_new + k];
+                          n.xyz = f.plane.to_space(p);
+                          if (f.plane.geom) n.uv = f.plane.to_param(p), n.has_uv = true;
+                          sm_out.interior_nodes[k] = static_cast<std::uint32_t>(first_new + k);
+                        }
+                      });
   const bool flip = f.plane.geom && !f.plane.ccw_is_outward;
   std::vector<std::array<std::uint32_t, 4>> local_quads;
   if (f.recombined()) {
