@@ -5,6 +5,7 @@
 #include "mesh/extrude_mesh.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <exception>
@@ -678,15 +679,29 @@ bool check_node_budget(std::vector<CurvePlan>& plans, const Mesh1dOptions& opt, 
 
 // The coarse 1D mesh for Mesh1dOptions::coarse_check: kCoarseCurveNodes nodes per curve
 // at equal increments of its size integral (a transfinite curve its own), with the 1D
-// sizes at the nodes (CurveMesh::h), no repair.
+// sizes at the nodes (CurveMesh::h), no repair. The curves' parameters, then their nodes'
+// places and sizes (the background field's evaluations), are computed on `threads`
+// threads, each curve into its own arrays; the nodes are numbered in between, in plan
+// order, as one thread numbers them.
 ModelMesh coarse_mesh(const std::vector<CurvePlan>& plans, const Mesh1dOptions& opt, double bbox,
-                      const ModelMesh& mesh) {
+                      const ModelMesh& mesh, int threads) {
   ModelMesh coarse;
   coarse.dim = 1;
   coarse.nodes = mesh.nodes;
   coarse.vertex_node = mesh.vertex_node;
-  for (const CurvePlan& cp : plans) {
-    const geo::Curve& shape = *cp.mc->shape;
+  std::vector<std::vector<double>> ts(plans.size());
+  parallel_for_chunks(threads, plans.size(), 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const CurvePlan& cp = plans[i];
+      if (cp.collapsed) continue;
+      ts[i] = cp.transfinite       ? transfinite_parameters(*cp.mc->shape, *cp.transfinite)
+              : cp.parameters_taken ? cp.coarse_ts
+                                    : place_n_nodes(cp.prim, static_cast<int>(std::min<double>(cp.nodes, kCoarseCurveNodes)));
+    }
+  });
+  std::vector<CurveMesh*> placed(plans.size(), nullptr);
+  for (std::size_t i = 0; i < plans.size(); ++i) {
+    const CurvePlan& cp = plans[i];
     CurveMesh cm;
     cm.tag = cp.tag;
     if (cp.collapsed) {
@@ -696,23 +711,32 @@ ModelMesh coarse_mesh(const std::vector<CurvePlan>& plans, const Mesh1dOptions& 
       coarse.curves.emplace(cp.tag, std::move(cm));
       continue;
     }
-    cm.t = cp.transfinite ? transfinite_parameters(shape, *cp.transfinite)
-           : cp.parameters_taken
-               ? cp.coarse_ts
-               : place_n_nodes(cp.prim, static_cast<int>(std::min<double>(cp.nodes, kCoarseCurveNodes)));
+    cm.t = std::move(ts[i]);
     cm.nodes.push_back(coarse.vertex_node.at(cp.mc->begin));
-    const bool uv = shape.on_surface();
-    for (std::size_t i = 1; i + 1 < cm.t.size(); ++i)
-      cm.nodes.push_back(uv ? coarse.add_node(shape.point(cm.t[i]), shape.eval_uv(cm.t[i]).p)
-                            : coarse.add_node(shape.point(cm.t[i])));
+    for (std::size_t k = 1; k + 1 < cm.t.size(); ++k) cm.nodes.push_back(static_cast<std::uint32_t>(coarse.nodes.size() + k - 1));
     cm.nodes.push_back(coarse.vertex_node.at(cp.mc->end));
-    std::vector<geo::Jet3> jets(cm.t.size());
-    for (std::size_t i = 0; i < cm.t.size(); ++i) jets[i] = shape.eval(cm.t[i]);
-    cm.h.resize(cm.t.size());
-    curve_size(opt, bbox, cp)(cm.t, jets, cm.h);
-    for (double& h : cm.h) h /= cp.stretch;
-    coarse.curves.emplace(cp.tag, std::move(cm));
+    coarse.nodes.resize(coarse.nodes.size() + (cm.t.size() >= 2 ? cm.t.size() - 2 : 0));
+    placed[i] = &coarse.curves.emplace(cp.tag, std::move(cm)).first->second;
   }
+  parallel_for_chunks(threads, plans.size(), 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      if (!placed[i]) continue;
+      const CurvePlan& cp = plans[i];
+      CurveMesh& cm = *placed[i];
+      const geo::Curve& shape = *cp.mc->shape;
+      const bool uv = shape.on_surface();
+      for (std::size_t k = 1; k + 1 < cm.t.size(); ++k) {
+        MeshNode& n = coarse.nodes[cm.nodes[k]];
+        n.xyz = shape.point(cm.t[k]);
+        if (uv) n.uv = shape.eval_uv(cm.t[k]).p, n.has_uv = true;
+      }
+      std::vector<geo::Jet3> jets(cm.t.size());
+      for (std::size_t k = 0; k < cm.t.size(); ++k) jets[k] = shape.eval(cm.t[k]);
+      cm.h.resize(cm.t.size());
+      curve_size(opt, bbox, cp)(cm.t, jets, cm.h);
+      for (double& h : cm.h) h /= cp.stretch;
+    }
+  });
   return coarse;
 }
 
@@ -1019,20 +1043,37 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
       [&](std::size_t done) { progress_update(opt.progress, done); });
   double total_nodes = 0;
   if (!check_node_budget(plans, opt, res, total_nodes)) return res;
-  if (opt.max_elements > 0 && opt.coarse_check && total_nodes > opt.coarse_check_nodes &&
-      !opt.coarse_check(coarse_mesh(plans, opt, bbox, mesh))) {
+  std::optional<ModelMesh> coarse;
+  if (opt.max_elements > 0 && opt.coarse_check && total_nodes > opt.coarse_check_nodes)
+    coarse = coarse_mesh(plans, opt, bbox, mesh, threads);
+  plan_compounds(model, opt, plans);
+  // The nodes of each curve (parameters and coordinates), in parallel; then numbered.
+  // The coarse check (the faces' budgets, a serial triangulation) is job 0, beside the
+  // curves' placement rather than before it: on one thread it runs first and a refusal
+  // skips the placement, as before; on more the placement is done while it runs, and
+  // thrown away if it refuses. Neither reads what the other writes.
+  std::atomic<bool> refused{false};
+  const std::size_t first_curve = coarse ? 1 : 0;
+  parallel_for_chunks(threads, plans.size() + first_curve, 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t job = begin; job < end; ++job) {
+      if (job < first_curve) {
+        if (!opt.coarse_check(*coarse)) refused = true;
+        coarse.reset();
+        continue;
+      }
+      if (refused) return;
+      CurvePlan& cp = plans[job - first_curve];
+      try {
+        place_plan(model, opt, bbox, cp);
+      } catch (...) {
+        cp.thrown = std::current_exception();
+      }
+    }
+  });
+  if (refused) {
     res.error = make_error(MeshErrorKind::Stopped, 0, 0);
     return res;
   }
-  plan_compounds(model, opt, plans);
-  // The nodes of each curve (parameters and coordinates), in parallel; then numbered.
-  parallel_for_chunks(threads, plans.size(), 1, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) try {
-        place_plan(model, opt, bbox, plans[i]);
-      } catch (...) {
-        plans[i].thrown = std::current_exception();
-      }
-  });
   res.error = number_nodes(model, opt, plans, mesh);
   if (!res.ok()) return res;
   stage.end();
