@@ -3,8 +3,10 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 using namespace sm;
 
@@ -150,4 +152,41 @@ TEST_CASE("curve_stats: on the model's sphere the edges are great-circle arcs, i
   CHECK_FALSE(mixed.on_sphere);
   CHECK(mixed.longest == doctest::Approx(r));
   CHECK(format_curve_stats(mixed).find("(model units)") != std::string::npos);
+}
+
+TEST_CASE("mesh_stats: the length quantiles are those of the sorted ratios, for 3 to 399 edges") {
+  // A fan of k triangles around node 0 with rim nodes at varied distances: 2k + 1 distinct
+  // edges of distinct lengths (size 1: the ratios are the lengths). Each quantile is
+  // checked to the last bit against the sorted lengths, linear between the two order
+  // statistics around q (n - 1), for every count (the selections nest on the median).
+  for (int k : {1, 2, 3, 4, 5, 7, 10, 19, 20, 21, 64, 199}) {
+    CAPTURE(k);
+    ModelMesh m;
+    m.add_node({0, 0, 0});
+    for (int i = 0; i <= k; ++i) {
+      const double a = 3.0 * i / k, r = 1 + 0.37 * std::sin(1.3 * i + 0.2 * i * i);
+      m.add_node({r * std::cos(a), r * std::sin(a), 0});
+    }
+    SurfaceMesh sf;
+    sf.tag = 1;
+    for (std::uint32_t i = 1; i <= static_cast<std::uint32_t>(k); ++i) sf.triangles.push_back({0, i, i + 1});
+    m.surfaces[1] = sf;
+    std::vector<double> len;
+    for (std::uint32_t i = 1; i <= static_cast<std::uint32_t>(k) + 1; ++i) len.push_back(norm(m.nodes[i].xyz));
+    for (std::uint32_t i = 1; i <= static_cast<std::uint32_t>(k); ++i)
+      len.push_back(norm(m.nodes[i + 1].xyz - m.nodes[i].xyz));
+    std::sort(len.begin(), len.end());
+    const auto expected = [&](double q) {
+      const double pos = q * static_cast<double>(len.size() - 1);
+      const std::size_t i = static_cast<std::size_t>(pos);
+      const double f = pos - static_cast<double>(i);
+      return i + 1 >= len.size() ? len[i] : len[i] * (1 - f) + len[i + 1] * f;
+    };
+    const MeshStats s =
+        mesh_stats(m, [](std::span<const Vec3>, std::span<double> h) { std::fill(h.begin(), h.end(), 1.0); });
+    REQUIRE(s.edges == len.size());
+    CHECK(s.len_median == expected(0.5));
+    CHECK(s.len_p05 == expected(0.05));
+    CHECK(s.len_p95 == expected(0.95));
+  }
 }
