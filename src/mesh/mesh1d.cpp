@@ -677,6 +677,9 @@ bool check_node_budget(std::vector<CurvePlan>& plans, const Mesh1dOptions& opt, 
   return true;
 }
 
+// The most nodes placed while the coarse check runs (mesh_curves).
+constexpr double kOverlapNodes = 2e6;
+
 // The coarse 1D mesh for Mesh1dOptions::coarse_check: kCoarseCurveNodes nodes per curve
 // at equal increments of its size integral (a transfinite curve its own), with the 1D
 // sizes at the nodes (CurveMesh::h), no repair. The curves' parameters, then their nodes'
@@ -1051,8 +1054,14 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
   // The coarse check (the faces' budgets, a serial triangulation) is job 0, beside the
   // curves' placement rather than before it: on one thread it runs first and a refusal
   // skips the placement, as before; on more the placement is done while it runs, and
-  // thrown away if it refuses. Neither reads what the other writes.
+  // thrown away if it refuses. Neither reads what the other writes. Beside it only up to
+  // kOverlapNodes in all (about 50 bytes a node placed in vain on a refusal): the check is
+  // there to refuse a boundary of millions of nodes before they are placed.
   std::atomic<bool> refused{false};
+  if (coarse && (threads == 1 || total_nodes > kOverlapNodes)) {
+    refused = !opt.coarse_check(*coarse);
+    coarse.reset();
+  }
   const std::size_t first_curve = coarse ? 1 : 0;
   parallel_for_chunks(threads, plans.size() + first_curve, 1, [&](std::size_t begin, std::size_t end) {
     for (std::size_t job = begin; job < end; ++job) {
@@ -1061,7 +1070,7 @@ Mesh1dResult mesh_curves(const geo::Model& model, const Mesh1dOptions& opt) {
         coarse.reset();
         continue;
       }
-      if (refused) return;
+      if (refused) return;   // the check ran first (one thread, or too many nodes) and refused
       CurvePlan& cp = plans[job - first_curve];
       try {
         place_plan(model, opt, bbox, cp);

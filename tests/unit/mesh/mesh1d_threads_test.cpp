@@ -125,3 +125,47 @@ TEST_CASE("mesh1d threads: of two failing curves the first in tag order is repor
     CHECK(r.error.tag(0) == failing.front());
   }
 }
+
+TEST_CASE("mesh1d threads: the coarse check's mesh, and the mesh beside it, the same for 1, 2 and 3 threads") {
+  // The coarse mesh is made on threads (its nodes numbered in plan order between) and the
+  // check runs beside the placement: the coarse nodes, parameters and sizes, the final
+  // mesh, and a refusal are the same for every count.
+  const sm::geo::Model m = threads_sphere_rings(40);
+  const WavyField f;
+  sm::Mesh1dOptions opt;
+  opt.repair_all_curves = true;
+  opt.background = &f;
+  opt.size.from_points = false;
+  opt.max_elements = 1e9;
+  opt.coarse_check_nodes = 0;
+  bool accept = true;
+  sm::ModelMesh coarse;
+  int calls = 0;
+  opt.coarse_check = [&](const sm::ModelMesh& c) {
+    ++calls;
+    coarse = c;
+    return accept;
+  };
+  opt.threads = 1;
+  const sm::Mesh1dResult one = sm::mesh_curves(m, opt);
+  REQUIRE(one.ok());
+  REQUIRE(calls == 1);
+  const sm::ModelMesh coarse_one = coarse;
+  CHECK(coarse_one.nodes.size() > 1000);
+  for (int threads : {2, 3}) {
+    CAPTURE(threads);
+    opt.threads = threads;
+    accept = true;
+    calls = 0;
+    const sm::Mesh1dResult r = sm::mesh_curves(m, opt);
+    REQUIRE(r.ok());
+    REQUIRE(calls == 1);
+    check_same_mesh(one.mesh, r.mesh);
+    check_same_mesh(coarse_one, coarse);
+    for (const auto& [tag, c] : coarse_one.curves) CHECK(c.h == coarse.curves.at(tag).h);
+    accept = false;
+    const sm::Mesh1dResult refused = sm::mesh_curves(m, opt);
+    CHECK(refused.error.kind == sm::MeshErrorKind::Stopped);
+    CHECK(refused.mesh.curves.empty());
+  }
+}
