@@ -9,7 +9,7 @@
 #include "io/msh_writer.h"
 #include "io/test_meshes.h"
 
-TEST_CASE("msh threads: 2.2 and 4.1, ASCII and binary, parametric: the same bytes for 1, 2 and 5 threads") {
+TEST_CASE("msh threads: 2.2 and 4.1, ASCII and binary, parametric: the same bytes for 1, 2, 3 and 5 threads") {
   // 151^2 nodes and 45,000 triangles: several chunks of 16,384 lines each.
   const sm::io::MeshModel m = sm::io::testing::grid_square(150);
   for (int version : {22, 41})
@@ -26,7 +26,7 @@ TEST_CASE("msh threads: 2.2 and 4.1, ASCII and binary, parametric: the same byte
         o.threads = 1;
         const std::string one = sm::io::msh_to_string(m, o);
         CHECK(one.size() > 1000000);
-        for (int threads : {2, 5}) {
+        for (int threads : {2, 3, 5}) {
           o.threads = threads;
           CHECK(sm::io::msh_to_string(m, o) == one);
         }
@@ -37,4 +37,22 @@ TEST_CASE("msh threads: 2.2 and 4.1, ASCII and binary, parametric: the same byte
         CHECK(one.find(fmt::format("\n{} ", last_elm)) != std::string::npos);
         CHECK(one.find(fmt::format("{:.16g} {:.16g} 0", 149.0 / 150, 149.0 / 150)) != std::string::npos);
       }
+}
+
+TEST_CASE("msh threads: blocks of several waves (written while the next is formatted) the same bytes for 1, 2, 3") {
+  // 331^2 nodes and 217,800 triangles: 14 chunks of 16,384 elements, more than one wave of
+  // 4 chunks a thread at 2 and 3 threads, so waves are written beside the next one's making.
+  const sm::io::MeshModel m = sm::io::testing::grid_square(330);
+  for (int version : {22, 41}) {
+    CAPTURE(version);
+    sm::io::MshOptions o;
+    o.version = version;
+    o.threads = 1;
+    const std::string one = sm::io::msh_to_string(m, o);
+    for (int threads : {2, 3}) {
+      CAPTURE(threads);
+      o.threads = threads;
+      CHECK(sm::io::msh_to_string(m, o) == one);
+    }
+  }
 }
