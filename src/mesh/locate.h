@@ -103,13 +103,18 @@ struct StoreWalker {
   }
 };
 
-/// The straight walk of a TriangleStore from g towards p (the floor's question: what lies
-/// between a triangle and a point it would insert): of the sides with p strictly beyond,
-/// the walk crosses the one the segment g -> p passes between the ends of (a vertex on the
-/// segment counts on one side only), never back over the side it came in by; constrained
-/// and hull sides are walls, and `wall` is the one the walk stopped at. A straight walk
-/// enters each triangle once (a line meets a convex triangle in one segment), so the
-/// caller's step limit is its triangle count and StepLimit is a corrupt triangulation.
+/// The straight walk of a TriangleStore from g towards p (the quality floor's question:
+/// what lies between a triangle and a point it would insert). Of the sides with p
+/// strictly beyond, the walk crosses the first whose origin is not right of the line
+/// g -> p and whose destination is right of it, never back over the side it came in by;
+/// constrained and hull sides are walls, and `wall` is the one the walk stopped at. A
+/// line meets a convex triangle in one segment, so a straight walk enters each triangle
+/// once: the caller's step limit is its triangle count, and StepLimit means a corrupt
+/// triangulation. (The side a segment leaves a counter-clockwise triangle by has its
+/// origin right of the segment and its destination left: this rule, the floor's since it
+/// was written, seldom crosses a side, so the floor's walk mostly ends in its first
+/// triangle. Turning it round changes the floor's meshes; it is kept so that they keep
+/// their bytes.)
 struct SegmentWalker {
   const TriangleStore& m;
   Vec2 g, p;

@@ -159,9 +159,10 @@ class Floor {
   /// and b) and no vertex near it lies in the triangle a, p, b.
   bool bulge_is_clear(Side s, Vec2 p);
   void touched(VertexId v);
-  /// Walks straight from the centroid of t towards p: the first constrained (or hull)
-  /// side crossed, or none with *reached the triangle holding p. Both none when the walk
-  /// gives up (p not finite, a degenerate path).
+  /// Walks straight from the centroid of t towards p (mesh/locate.h's SegmentWalker): the
+  /// constrained (or hull) side it stopped at, or none with *reached the triangle where
+  /// it ended (mostly t itself: the walk's rule seldom crosses a side). Both none when p
+  /// is not finite or the walk did not end.
   Side blocking_side(TriId t, Vec2 p, TriId* reached);
 
   TriangleStore& m_;
