@@ -81,14 +81,18 @@ void Recoverer::recover(std::uint32_t i, VertexId a0, VertexId b0) {
       else if (ou == Sign::Negative && ow == Sign::Positive) exit = next(s);
       return split.valid() || exit.valid();
     };
+    // Round a's fan, each triangle met once each way (a longer turn is a corrupt fan, and
+    // ends in the error below): counter-clockwise, then clockwise from the hull.
     bool done = false;
     Side s = start;
+    std::uint32_t turn = 0;
     do {
       done = try_side(s);
       s = m_.twin[prev(s).value];
-    } while (!done && s.valid() && s != start);
+    } while (!done && s.valid() && s != start && ++turn <= m_.num_slots());
     if (!done && !s.valid()) {
-      for (s = start; !done;) {
+      s = start;
+      for (turn = 0; !done && turn <= m_.num_slots(); ++turn) {
         const Side o = m_.twin[s.value];
         if (!o.valid()) break;
         s = next(o);
@@ -102,7 +106,12 @@ void Recoverer::recover(std::uint32_t i, VertexId a0, VertexId b0) {
     // Walk along ab collecting crossed edges, until b or a vertex on ab.
     bool blocked = false;
     queue_.clear();
-    while (exit.valid()) {
+    // A straight segment enters each triangle once: a longer walk is a corrupt triangulation.
+    for (std::uint32_t steps = 0; exit.valid(); ++steps) {
+      if (steps > m_.num_slots()) {
+        res_.error = fmt::format("cannot recover edge {}-{}: the walk along it did not end", a.value, b.value);
+        return;
+      }
       const VertexId u = m_.org(exit), w = m_.dest(exit);
       if (m_.constrained(exit)) {
         const auto it = owner.find(edge_key(u, w));

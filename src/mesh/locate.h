@@ -1,6 +1,7 @@
-// Point location in a triangulation: the one visibility walk of mesh/ (Delaunay
-// construction, constrained insertion, the boundary-size interpolation of a face) and
-// the barycentric weights of the point in the triangle found.
+// Point location in a triangulation: the one walk of mesh/ (Delaunay construction,
+// constrained insertion, the boundary-size interpolation of a face, the quality floor's
+// straight walk towards a point it would insert) and the barycentric weights of the point
+// in the triangle found.
 //
 // The walk stands in a triangle and looks at its three sides in rotation order from a
 // side its caller chooses (random, or turning, so that it cannot cycle forever on a
@@ -98,6 +99,43 @@ struct StoreWalker {
     const Side o = m.twin[s.value];
     if (!o.valid()) return {pass_over_hull ? Across::PassOver : Across::Wall};
     if (constraints_are_walls && m.constrained(s)) return {Across::Wall};
+    return {Across::Enter, o.value / 3};
+  }
+};
+
+/// The straight walk of a TriangleStore from g towards p (the quality floor's question:
+/// what lies between a triangle and a point it would insert). Of the sides with p
+/// strictly beyond, the walk crosses the first whose origin is not right of the line
+/// g -> p and whose destination is right of it, never back over the side it came in by;
+/// constrained and hull sides are walls, and `wall` is the one the walk stopped at. A
+/// line meets a convex triangle in one segment, so a straight walk enters each triangle
+/// once: the caller's step limit is its triangle count, and StepLimit means a corrupt
+/// triangulation. (The side a segment leaves a counter-clockwise triangle by has its
+/// origin right of the segment and its destination left: this rule, the floor's since it
+/// was written, seldom crosses a side, so the floor's walk mostly ends in its first
+/// triangle. Turning it round changes the floor's meshes; it is kept so that they keep
+/// their bytes.)
+struct SegmentWalker {
+  const TriangleStore& m;
+  Vec2 g, p;
+  Side wall{};
+  std::uint32_t came_in_by = 3;   // side of the current triangle the walk entered by; 3: none
+
+  Vec2 org(std::uint32_t t, std::uint32_t e) const { return m.pos(m.org(Side{3 * t + e})); }
+  Vec2 dest(std::uint32_t t, std::uint32_t e) const { return m.pos(m.dest(Side{3 * t + e})); }
+  std::uint32_t first_side(std::uint32_t, std::uint64_t) const { return 0; }
+  bool skip(std::uint32_t e) const { return e == came_in_by; }
+  PredicateStats* predicate_stats() const { return nullptr; }
+  AcrossStep across(std::uint32_t t, std::uint32_t e) {
+    const Sign sa = orient2d(g, p, org(t, e)), sb = orient2d(g, p, dest(t, e));
+    if (sa == Sign::Negative || sb != Sign::Negative) return {Across::PassOver};
+    const Side s{3 * t + e};
+    const Side o = m.twin[s.value];
+    if (!o.valid() || m.constrained(s)) {
+      wall = s;
+      return {Across::Wall};
+    }
+    came_in_by = o.value % 3;
     return {Across::Enter, o.value / 3};
   }
 };

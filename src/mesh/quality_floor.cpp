@@ -13,6 +13,7 @@
 #include "exact/segments.h"
 #include "exact/quality.h"
 #include "mesh/insert.h"
+#include "mesh/locate.h"
 #include "mesh/modify/smooth.h"
 #include "mesh/modify/split.h"
 #include "mesh/quality.h"
@@ -158,9 +159,10 @@ class Floor {
   /// and b) and no vertex near it lies in the triangle a, p, b.
   bool bulge_is_clear(Side s, Vec2 p);
   void touched(VertexId v);
-  /// Walks straight from the centroid of t towards p: the first constrained (or hull)
-  /// side crossed, or none with *reached the triangle holding p. Both none when the walk
-  /// gives up (p not finite, a degenerate path).
+  /// Walks straight from the centroid of t towards p (mesh/locate.h's SegmentWalker): the
+  /// constrained (or hull) side it stopped at, or none with *reached the triangle where
+  /// it ended (mostly t itself: the walk's rule seldom crosses a side). Both none when p
+  /// is not finite or the walk did not end.
   Side blocking_side(TriId t, Vec2 p, TriId* reached);
 
   TriangleStore& m_;
@@ -298,29 +300,13 @@ Side Floor::blocking_side(TriId t, Vec2 p, TriId* reached) {
   *reached = TriId{};
   if (!std::isfinite(p.x) || !std::isfinite(p.y)) return Side{};
   const Vec2 g = (m_.pos(m_.vertex(t, 0)) + m_.pos(m_.vertex(t, 1)) + m_.pos(m_.vertex(t, 2))) / 3.0;
-  TriId u = t;
-  Side entry;
-  for (std::uint32_t step = 0; step < 4 * m_.num_slots() + 16; ++step) {
-    Side exit;
-    for (std::uint32_t e = 0; e < 3 && !exit.valid(); ++e) {
-      const Side s = side_of(u, e);
-      if (entry.valid() && s == entry) continue;
-      const Vec2 a = m_.pos(m_.org(s)), b = m_.pos(m_.dest(s));
-      // p strictly beyond the side (u is left of a -> b) and the segment g -> p passes
-      // between its ends (a vertex on the path counts on one side only).
-      if (orient2d(a, b, p) != Sign::Negative) continue;
-      const Sign sa = orient2d(g, p, a), sb = orient2d(g, p, b);
-      if (sa != Sign::Negative && sb == Sign::Negative) exit = s;
-    }
-    if (!exit.valid()) {
-      *reached = u;
-      return Side{};
-    }
-    if (m_.constrained(exit) || !m_.twin[exit.value].valid()) return exit;
-    entry = m_.twin[exit.value];
-    u = tri_of(entry);
+  SegmentWalker w{m_, g, p};
+  const WalkResult r = walk_to(w, p, t.value, m_.num_slots());
+  switch (r.end) {
+    case WalkEnd::Found: *reached = TriId{r.tri}; return Side{};
+    case WalkEnd::Blocked: return w.wall;
+    case WalkEnd::StepLimit: break;
   }
-  // A straight walk crosses each triangle once: a longer one is a corrupt triangulation.
   fault("the walk through the face of the quality floor did not end", m_.vertex(t, 0));
   return Side{};
 }
