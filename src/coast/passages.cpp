@@ -195,14 +195,24 @@ struct Work {
   // full GSHHG): two words for every node of the pool were 56 MB under the import's peak,
   // and a hash map from node to segment a cache miss per segment and per near pair each
   // round. `near`: the last round's near pairs (before the one-loop test), by their
-  // segments' numbers in that round.
+  // segments' numbers in that round (sorted), each with its way across once measured
+  // (way_across reads only the two segments' points: a pair of unchanged segments keeps it;
+  // at a deviation bound's closures most near pairs outlive many rounds). `first_segment`:
+  // per loop, the number of its first segment in the round.
   struct Segment {
     std::uint32_t start, end, number;
+  };
+  struct NearPair {
+    std::uint32_t a, b;
+    bool measured;
+    double across;
+    auto key() const { return std::pair(a, b); }
   };
   std::vector<std::vector<Vec2>> polys = {};
   std::vector<std::vector<double>> width = {};
   std::vector<Segment> segs = {};
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> near = {};
+  std::vector<NearPair> near = {};
+  std::vector<std::size_t> first_segment = {};
   bool gate_closed(Vec2 a0, Vec2 b0) const {
     for (const Gate& g : gates)
       if (g.closes(a0, b0)) return true;
@@ -256,12 +266,6 @@ void flatten(Work& w, const WorkLoop& loop) {
   w.flat.push_back(std::move(f));
 }
 
-double signed_area(const std::vector<Vec2>& p) {
-  double a = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) a += cross(p[i], p[(i + 1) % p.size()]);
-  return 0.5 * a;
-}
-
 // The polygon's points in order (one pass over the rope).
 std::vector<Vec2> polygon(const FlatLoop& f) {
   std::vector<Vec2> p;
@@ -271,15 +275,32 @@ std::vector<Vec2> polygon(const FlatLoop& f) {
 }
 
 // Mean width 2A/P of a loop's water in metres (a strip of width w: about w). Read in
-// order: only water loops ask (fate_of), among them the pieces a cut drops.
+// order: only water loops ask (fate_of), among them the pieces a cut drops, and the sea
+// loop after every cut of it (a deviation bound's closures are as many cuts). One pass
+// over the rope, no copy of the polygon: the three sums take their terms in the order
+// of the polygon's own passes (point i, then segment i -> i + 1, the closing segment
+// last), so they are the same doubles.
 double mean_width_m(const FlatLoop& f, double radius) {
-  const std::vector<Vec2> p = polygon(f);
-  Vec2 mean{0, 0};
-  for (Vec2 x : p) mean = mean + x;
-  mean = (1.0 / static_cast<double>(p.size())) * mean;
-  double per = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) per += norm(p[(i + 1) % p.size()] - p[i]);
-  return per > 0 ? 2.0 * std::abs(signed_area(p)) / per * lambda_m(mean, radius) : 0.0;
+  Vec2 mean{0, 0}, first{0, 0}, last{0, 0};
+  double per = 0, area2 = 0;
+  std::size_t n = 0;
+  f.ropes->for_each(f.rope, [&](TreeNode t) {
+    const Vec2 x = f.ropes->uv(t);
+    mean = mean + x;
+    if (n == 0) {
+      first = x;
+    } else {
+      per += norm(x - last);
+      area2 += cross(last, x);
+    }
+    last = x;
+    ++n;
+  });
+  if (n == 0) return 0.0;
+  per += norm(first - last);
+  area2 += cross(last, first);
+  mean = (1.0 / static_cast<double>(n)) * mean;
+  return per > 0 ? 2.0 * std::abs(0.5 * area2) / per * lambda_m(mean, radius) : 0.0;
 }
 
 bool in_box(Vec2 p, Vec2 lo, Vec2 hi) { return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y; }
@@ -885,18 +906,29 @@ std::vector<NearMiss> round_near_misses(Work& w) {
   // them (the first round at 3 km: 50 MB freed but resident, the import's peak).
   release_free_memory();
   near.reserve(near.size() + w.near.size());
-  for (const auto& [na, nb] : w.near) {
-    const std::uint32_t sa = renumber[na], sb = renumber[nb];
+  std::vector<Work::NearPair> pairs;   // this round's, in the order of `near`
+  pairs.reserve(near.capacity());
+  for (const NearMiss& m : near)
+    pairs.push_back({static_cast<std::uint32_t>(first[m.loop_a] + m.seg_a),
+                     static_cast<std::uint32_t>(first[m.loop_b] + m.seg_b), false, 0.0});
+  for (const Work::NearPair& p : w.near) {
+    const std::uint32_t sa = renumber[p.a], sb = renumber[p.b];
     if (sa == kNoSegment || sb == kNoSegment) continue;
     NearMiss m{at[sa].first, at[sa].second, at[sb].first, at[sb].second, 0, {}};
     order_places(m);
+    // The way across kept only with the segments in the same roles: with width_at the
+    // width is read at the mean of the four points, added in the pair's order.
+    const bool same_roles = m.loop_a == at[sa].first && m.seg_a == at[sa].second;
     near.push_back(m);
+    pairs.push_back({static_cast<std::uint32_t>(first[m.loop_a] + m.seg_a),
+                     static_cast<std::uint32_t>(first[m.loop_b] + m.seg_b),
+                     p.measured && (same_roles || !w.opt.width_at), p.across});
     ++w.stats.near_kept;
   }
-  w.near.clear();
-  for (const NearMiss& m : near)
-    w.near.push_back({static_cast<std::uint32_t>(first[m.loop_a] + m.seg_a),
-                      static_cast<std::uint32_t>(first[m.loop_b] + m.seg_b)});
+  std::sort(pairs.begin(), pairs.end(),
+            [](const Work::NearPair& x, const Work::NearPair& y) { return x.key() < y.key(); });
+  w.near = std::move(pairs);
+  w.first_segment = std::move(first);
   // Within one loop only far-apart parts count: at least 3 segments away both ways (as
   // find_near_misses), with the loop as it is now.
   std::erase_if(near, [&](const NearMiss& m) {
@@ -962,12 +994,32 @@ std::vector<Candidate> round_candidates(Work& w) {
   // loops, so two round-start loops' segments stay on two loops (close_round would follow
   // the pair and skip it; at 3 km, 128,000 of the 524,000 candidates of six rounds).
   if (w.opt.keep_passages) std::erase_if(near, [](const NearMiss& m) { return m.loop_a != m.loop_b; });
+  // Each near pair's entry in w.near, whose way across is kept from the round it was
+  // measured in; the others measured now and kept there.
+  std::vector<std::size_t> entry(near.size());
+  std::vector<std::size_t> to_measure;
   std::vector<double> across(near.size());
+  for (std::size_t i = 0; i < near.size(); ++i) {
+    const NearMiss& m = near[i];
+    const std::pair key(static_cast<std::uint32_t>(w.first_segment[m.loop_a] + m.seg_a),
+                        static_cast<std::uint32_t>(w.first_segment[m.loop_b] + m.seg_b));
+    const auto it = std::lower_bound(w.near.begin(), w.near.end(), key,
+                                     [](const Work::NearPair& p, const auto& k) { return p.key() < k; });
+    SM_ASSERT(it != w.near.end() && it->key() == key,
+              "close_passages: a near pair not in the round's list (passages.cpp, round_candidates)");
+    entry[i] = static_cast<std::size_t>(it - w.near.begin());
+    if (it->measured)
+      across[i] = it->across;
+    else
+      to_measure.push_back(i);
+  }
+  w.stats.across_kept += near.size() - to_measure.size();
   constexpr std::size_t kChunk = 4096;
-  parallel_for_chunks(w.opt.width_at ? 1 : resolve_thread_count(w.opt.threads), near.size(), kChunk,
+  parallel_for_chunks(w.opt.width_at ? 1 : resolve_thread_count(w.opt.threads), to_measure.size(), kChunk,
                       [&](std::size_t b, std::size_t e) {
-                        for (std::size_t i = b; i < e; ++i) across[i] = way_across(w, near[i]);
+                        for (std::size_t i = b; i < e; ++i) across[to_measure[i]] = way_across(w, near[to_measure[i]]);
                       });
+  for (std::size_t i : to_measure) w.near[entry[i]].measured = true, w.near[entry[i]].across = across[i];
   std::vector<Candidate> cands;
   for (std::size_t i = 0; i < near.size(); ++i) {
     const NearMiss& m = near[i];
@@ -1537,7 +1589,8 @@ Result<bool> close_passages(std::vector<WorkCurve>& curves, std::vector<WorkLoop
   std::vector<std::vector<Vec2>>().swap(w.polys);
   std::vector<std::vector<double>>().swap(w.width);
   std::vector<Work::Segment>().swap(w.segs);
-  std::vector<std::pair<std::uint32_t, std::uint32_t>>().swap(w.near);
+  std::vector<Work::NearPair>().swap(w.near);
+  std::vector<std::size_t>().swap(w.first_segment);
   // The loops to rebuild (changed in place, or made by cuts) and the curves of the loops
   // cut or rebuilt, whose points the rebuilt curves take over. Each such curve is freed as
   // soon as the last ring reading it is rebuilt (rings read the curves' points until then):

@@ -61,6 +61,7 @@ struct PassageStats {
   std::size_t polygons_kept = 0;   // those taken from the round before (the loop unchanged)
   std::size_t near_searched = 0;   // segments searched for near misses (new since the round before)
   std::size_t near_kept = 0;       // near pairs taken from the round before (both segments unchanged)
+  std::size_t across_kept = 0;     // of the rounds' near pairs, those whose way across was measured before
 };
 
 /// Closes passages and places dams in place (new loops appended, replaced loops marked

@@ -445,14 +445,16 @@ class Optimizer {
     if (orient2d(m_.pos(vs[2]), m_.pos(vs[0]), m_.pos(vs[3])) != Sign::Positive ||
         orient2d(m_.pos(vs[3]), m_.pos(vs[1]), m_.pos(vs[2])) != Sign::Positive)
       return false;
-    // The change reads the stars of the quad's corners and the points in them only; it
-    // failed on this edge (the same corners in the same roles) before, and none of those
-    // stars changed since: it fails again.
+    // The change reads the quad and the stars of its free corners only (a fixed corner
+    // never moves, and its triangles outside the quad and those stars are not in the
+    // region); it failed on this edge with the same four corners in the same roles
+    // before, and none of the free corners' stars changed since: it fails again. The
+    // fixed corners' stars are not asked: a coast point beside a dam or a short coast edge
+    // has a wide star, touched by every change round it, and the quads at it would
+    // otherwise be worked out again after each (docs/benchmarks.md, the deviation bound).
     const std::uint64_t key = (std::uint64_t{vs[0].value} << 32) | vs[1].value;
     const auto known = failed_.find(key);
-    const bool repeat =
-        known != failed_.end() && std::max({changed_[vs[0].value], changed_[vs[1].value], changed_[vs[2].value],
-                                            changed_[vs[3].value]}) <= known->second;
+    const bool repeat = known != failed_.end() && unchanged_since(known->second, vs);
     double q0 = 0;
     int g0 = 0;
     if (!repeat) std::tie(q0, g0) = region_quality(vs, tri_of(s).value, tri_of(o).value, region_q0_);
@@ -462,7 +464,9 @@ class Optimizer {
     // Only the corners free after the flip move (whether a vertex is free depends on the
     // edges round it, which the sweeps do not change).
     std::array<bool, 4> free{};
-    if (!repeat)
+    if (repeat)
+      free = known->second.free;
+    else
       for (std::size_t i = 0; i < 4; ++i) free[i] = gather_star(vs[i]);
     ++st.compound_tried;
     if (repeat) {
@@ -497,12 +501,37 @@ class Optimizer {
       m_.xy[vs[i].value] = old_xy[i];
       if (space_) xyz_[vs[i].value] = opt_.to_space(old_xy[i]), have_xyz_[vs[i].value] = 1;
     }
-    failed_[key] = clock_;
+    failed_[key] = FailedChange{clock_, vs[2], vs[3], free};
     // The flip back restores the two triangles with their slots exchanged: measure both again.
     const Side back = m_.flip(n);
     mark(tri_of(back).value);
     mark(tri_of(m_.twin[back.value]).value);
     return false;
+  }
+
+  // A compound change that failed: the clock_ then, the quad's other two corners (the
+  // edge's org and dest are the key) and which of the four corners were free.
+  struct FailedChange {
+    std::uint64_t clock = 0;
+    VertexId apex, twin_apex;
+    std::array<bool, 4> free{};
+  };
+
+  // Whether the change on the quad vs is the one that failed as f with nothing it reads
+  // changed since: the same corners, no free corner's star changed after the failure, and
+  // neither of the quad's triangles made again (a triangle of fixed corners only is in no
+  // free corner's star: its corners' stars are asked then). Whether a corner is free
+  // depends only on the edges round it (constrained ones are never flipped) and
+  // fixed_count_, so the same corners are free now.
+  bool unchanged_since(const FailedChange& f, const std::array<VertexId, 4>& vs) const {
+    if (f.apex != vs[2] || f.twin_apex != vs[3]) return false;
+    const bool pinned_left = !f.free[0] && !f.free[1] && !f.free[2];    // (org, dest, apex)
+    const bool pinned_right = !f.free[0] && !f.free[1] && !f.free[3];   // (dest, org, twin apex)
+    for (std::size_t i = 0; i < 4; ++i) {
+      const bool asked = f.free[i] || (pinned_left && i != 3) || (pinned_right && i != 2);
+      if (asked && changed_[vs[i].value] > f.clock) return false;
+    }
+    return true;
   }
 
   void compound_round(OptimizeStats& st) {
@@ -542,10 +571,10 @@ class Optimizer {
   std::vector<std::uint32_t> vert_stamp_;
   std::vector<std::uint8_t> stuck_;  // per vertex: smoothing found nothing, star unchanged since
   // Per vertex: the clock_ of the last change of its star (touch); per edge (org << 32 |
-  // dest) whose compound change failed: the clock_ then.
+  // dest) whose compound change failed: that failure (FailedChange).
   std::vector<std::uint64_t> changed_;
   std::uint64_t clock_ = 0;
-  std::unordered_map<std::uint64_t, std::uint64_t> failed_;
+  std::unordered_map<std::uint64_t, FailedChange> failed_;
   std::uint32_t stamp_ = 0;
   // Triangles above kGood gained minus lost so far: never negative, so the share of
   // rho > 0.9 never falls below the input's.

@@ -646,6 +646,10 @@ TEST_CASE("passages: a closing round keeps the polygons and near pairs of what d
   CHECK(stats.near_searched < segments + 10);
   // The strait's pair (facing sides of the two islands) taken from the round before.
   CHECK(stats.near_kept >= 1);
+  // The sea's own near pairs that outlive the cut keep their ways across: each measured
+  // once, in the first round that asks.
+  MESSAGE("near pairs kept " << stats.near_kept << ", ways across kept " << stats.across_kept);
+  CHECK(stats.across_kept >= 1);
   // The strait is kept open: both islands live on, unchanged.
   std::size_t islands = 0;
   for (std::size_t l = 1; l < 3; ++l) islands += !loops[l].dead;
