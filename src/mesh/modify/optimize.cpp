@@ -14,6 +14,7 @@
 #include "base/parallel.h"
 #include "exact/predicates.h"
 #include "exact/quality.h"
+#include "mesh/modify/optimize_blocks.h"
 
 namespace sm {
 namespace {
@@ -132,7 +133,7 @@ class Optimizer {
         if (!m_.alive(TriId{t})) continue;
         const double q = tri_quality(TriId{t});
         min_all = std::min(min_all, std::max(q, 0.0));  // -1: flat in floating point
-        if (q < opt_.threshold) bad_.push_back({q, t});
+        if (q < opt_.threshold && seeded(t)) bad_.push_back({q, t});
       }
       return min_all;
     }
@@ -148,7 +149,7 @@ class Optimizer {
         if (!m_.alive(t)) continue;
         const double q = rho_ccw(m_.pos(m_.vertex(t, 0)), m_.pos(m_.vertex(t, 1)), m_.pos(m_.vertex(t, 2)));
         c.min_all = std::min(c.min_all, std::max(q, 0.0));
-        if (q < opt_.threshold) c.bad.push_back({q, t.value});
+        if (q < opt_.threshold && seeded(t.value)) c.bad.push_back({q, t.value});
       }
     });
     double min_all = 1;
@@ -158,6 +159,8 @@ class Optimizer {
     }
     return min_all;
   }
+
+  bool seeded(std::uint32_t t) const { return !opt_.seeds || (*opt_.seeds)[t]; }
 
   // Whether a change that raises the worst rho from `before` by `gain` may push `lost`
   // triangles below kGood (`lost_total` since the change began).
@@ -593,6 +596,9 @@ class Optimizer {
 }  // namespace
 
 OptimizeStats optimize_quality(TriangleStore& m, std::uint32_t fixed_count, const OptimizeOptions& opt) {
+  if (opt.block_min_triangles > 0 && m.num_triangles() >= opt.block_min_triangles && !opt.to_space &&
+      !opt.seeds && !m.undo_link.journal)
+    return optimize_in_blocks(m, fixed_count, opt);
   return Optimizer(m, fixed_count, opt).run();
 }
 

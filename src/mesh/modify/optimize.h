@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 #include "base/vec.h"
 #include "mesh/triangulation.h"
@@ -45,8 +46,21 @@ struct OptimizeOptions {
   std::function<Vec3(Vec2)> to_space;
   /// Threads for the scans over every triangle (the first measure, the last minimum),
   /// without to_space: fixed chunks reduced in chunk order, the same bytes for every
-  /// count. The swaps and moves stay serial.
+  /// count. The swaps and moves stay serial, unless the store is blocked (below).
   int threads = 1;
+  /// A store of at least this many live triangles, without to_space and without an undo
+  /// journal, is optimised in blocks (optimize_blocks.h): the blocks on the threads, then
+  /// a serial pass round their borders. The blocks depend on the mesh only, so the bytes
+  /// are the same for every thread count (but not those of the one serial pass). 0: never.
+  std::uint32_t block_min_triangles = 200000;
+  /// Bad triangles (below threshold) per block: enough that a block's own work dwarfs its
+  /// copying, few enough that two threads share a face's blocks evenly. A face with fewer
+  /// than twice this many is optimised by the serial pass alone.
+  std::uint32_t block_bad = 4096;
+  /// When given (one flag per triangle slot), only flagged triangles start the list of
+  /// those worked on (the blocked pass's border pass); the others join it only when a
+  /// change touches them.
+  const std::vector<std::uint8_t>* seeds = nullptr;
 };
 
 struct OptimizeStats {
@@ -60,6 +74,7 @@ struct OptimizeStats {
   std::uint32_t bad_before = 0, bad_after = 0;       // triangles below the threshold
   double min_before = 0, min_after = 0;              // worst rho (as measured by the pass)
   int rounds = 0;
+  std::uint32_t blocks = 0;                          // optimised in blocks (optimize_blocks.h)
 };
 
 /// Raises the worst triangle qualities of a refined triangulation (plane or
