@@ -3,6 +3,7 @@
 #include "coast/import.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <string_view>
 #include <vector>
@@ -10,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "base/cpu_clock.h"
+#include "base/elapsed.h"
 #include "base/release_memory.h"
 #include "coast/coastline_option_id.h"
 #include "coast/deviation.h"
@@ -412,6 +414,7 @@ struct ImportWork {
   ImportWork(const ImportWork&) = delete;
   ImportWork& operator=(const ImportWork&) = delete;
   double cpu_mark = process_cpu_seconds();
+  std::chrono::steady_clock::time_point wall_mark = std::chrono::steady_clock::now();
 
   void step_done() { progress_update(opt.progress, ++steps_done); }
   // The CPU seconds since the last charge go to step `name` of the report's account.
@@ -421,7 +424,9 @@ struct ImportWork {
                            [name](const ImportStepTime& t) { return t.name == name; });
     if (it == rep.step_cpu.end()) it = rep.step_cpu.insert(it, ImportStepTime{std::string(name), 0});
     it->seconds += now - cpu_mark;
+    it->wall += seconds_since(wall_mark);
     cpu_mark = now;
+    wall_mark = std::chrono::steady_clock::now();
   }
   // An error of a stage that names no file: the shoreline file's.
   CoastError in_file(CoastError e) const {

@@ -124,10 +124,11 @@ struct ReportLine {
   std::optional<RepairEntry> entry = std::nullopt;
 };
 
-/// The CPU seconds (every thread) one step of the import took.
+/// The CPU seconds (every thread) and the wall seconds one step of the import took.
 struct ImportStepTime {
   std::string name;
   double seconds = 0;
+  double wall = 0;
 };
 
 struct ImportReport {
