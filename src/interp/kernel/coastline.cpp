@@ -461,8 +461,8 @@ coast::CoastModel read_and_build(CoastImportWork& w) {
   auto built = coast::build_coast_model(std::move(source), w.io());
   import_stage.reset();
   // Where the import's time went, step by step (CPU seconds of every thread / wall
-  // seconds), at -v 5 (beside the run's Time line).
-  if (built && w.in.options().number("General.Verbosity") >= 5) {
+  // seconds), at Gmsh's debug level (-v 99): the Time line's "import" taken apart.
+  if (built && w.in.options().number("General.Verbosity") >= 99) {
     std::string line = fmt::format("Import steps (CPU/wall s): read {:.3f}/{:.3f}", read_cpu, read_wall);
     for (const coast::ImportStepTime& t : built->report.step_cpu)
       line += fmt::format(", {} {:.3f}/{:.3f}", t.name, t.seconds, t.wall);
