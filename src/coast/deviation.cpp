@@ -532,8 +532,12 @@ DeviationReport bound_deviation(std::vector<WorkCurve>& curves, const DeviationO
   std::vector<CurveState> states(curves.size());
   std::vector<char> active(curves.size(), 1), changed(curves.size(), 0);
   const int rounds = opt.fixed > 0 || opt.factor > 0 ? opt.max_rounds : 0;
+  // One curve a chunk: the rings come largest first (GSHHG's continents lead), so chunks of
+  // 64 put nearly every point in the first one and left the other threads idle. Each
+  // curve's scan is written to its own slot: the chunks decide only who runs it.
+  constexpr std::size_t kChunk = 1;
   for (int round = 0; round < rounds; ++round) {
-    parallel_for_chunks(threads, curves.size(), 64, [&](std::size_t b, std::size_t e) {
+    parallel_for_chunks(threads, curves.size(), kChunk, [&](std::size_t b, std::size_t e) {
       for (std::size_t i = b; i < e; ++i) {
         if (!active[i]) continue;
         scans[i] = scan_curve(curves[i], ps, opt, states[i], round == 0 ? nullptr : &states[i].fresh);
@@ -564,7 +568,7 @@ DeviationReport bound_deviation(std::vector<WorkCurve>& curves, const DeviationO
   // The final figures over every curve: from the segments' results, after scanning those
   // the last round's points changed (when the rounds ran out), or every segment once when
   // there is no bound (measured only).
-  parallel_for_chunks(threads, curves.size(), 64, [&](std::size_t b, std::size_t e) {
+  parallel_for_chunks(threads, curves.size(), kChunk, [&](std::size_t b, std::size_t e) {
     for (std::size_t i = b; i < e; ++i) {
       CurveState& st = states[i];
       if (curves[i].open_boundary || curves[i].keep.size() < 2) {

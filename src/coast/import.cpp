@@ -3,11 +3,15 @@
 #include "coast/import.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
 
+#include "base/cpu_clock.h"
+#include "base/elapsed.h"
 #include "base/release_memory.h"
 #include "coast/coastline_option_id.h"
 #include "coast/deviation.h"
@@ -409,7 +413,21 @@ struct ImportWork {
   ImportWork(Coastline d, const ImportOptions& o) : data(std::move(d)), opt(o) {}
   ImportWork(const ImportWork&) = delete;
   ImportWork& operator=(const ImportWork&) = delete;
+  double cpu_mark = process_cpu_seconds();
+  std::chrono::steady_clock::time_point wall_mark = std::chrono::steady_clock::now();
+
   void step_done() { progress_update(opt.progress, ++steps_done); }
+  // The CPU seconds since the last charge go to step `name` of the report's account.
+  void charge(std::string_view name) {
+    const double now = process_cpu_seconds();
+    auto it = std::find_if(rep.step_cpu.begin(), rep.step_cpu.end(),
+                           [name](const ImportStepTime& t) { return t.name == name; });
+    if (it == rep.step_cpu.end()) it = rep.step_cpu.insert(it, ImportStepTime{std::string(name), 0});
+    it->seconds += now - cpu_mark;
+    it->wall += seconds_since(wall_mark);
+    cpu_mark = now;
+    wall_mark = std::chrono::steady_clock::now();
+  }
   // An error of a stage that names no file: the shoreline file's.
   CoastError in_file(CoastError e) const {
     e.file = data.file;
@@ -600,6 +618,7 @@ std::optional<CoastError> repair_pass(ImportWork& w) {
 std::optional<CoastError> repair_and_orient(ImportWork& w) {
   w.ro = in_context(w.opt.repair, w.opt);
   if (auto e = repair_pass(w)) return e;
+  w.charge("repair");
   const std::size_t merged_before = w.rep.count(RepairKind::MergedIslands);
   // The first pass's rounds (polygons, grids, segment lists) and then the straits' passes
   // (their polygons, widths and near misses) leave their freed heap resident under the
@@ -610,10 +629,12 @@ std::optional<CoastError> repair_and_orient(ImportWork& w) {
   // The box alone has no strait: near its corners its own sides came out as one.
   if (!w.region_empty) handle_straits(w.curves, w.loops, w.ro, w.rep.repair);
   release_free_memory();
+  w.charge("straits");
   // A merge across a strait adds two bridge edges, checked against the polygons only: the
   // curves through them are checked again.
   if (w.ro.check_splines && w.rep.count(RepairKind::MergedIslands) > merged_before)
     if (auto e = repair_pass(w)) return e;
+  w.charge("repair");
   std::vector<Vec2> poly;
   for (std::size_t l = 0; l < w.loops.size(); ++l) {
     WorkLoop& loop = w.loops[l];
@@ -669,6 +690,7 @@ std::optional<CoastError> close_narrow_passages(ImportWork& w) {
     po.width_at = [width_at, floor](geo::LonLat ll) { return std::max(floor, width_at(ll)); };
   }
   auto closed = close_passages(curves, w.loops, po, w.rep.repair);
+  w.charge("passages");
   if (!closed) {
     CoastError e = closed.error();
     e.option = e.file;
@@ -676,6 +698,7 @@ std::optional<CoastError> close_narrow_passages(ImportWork& w) {
   }
   if (*closed && w.ro.check_splines)
     if (auto e = repair_pass(w)) return e;
+  w.charge("repair");
   // The straits were measured on the coarsened curves; the passages changed them: a cut
   // refused at a pinch puts the source points back (a 31 m gap between two 2 km
   // segments is a 110 m strait in the source), and a closure makes land of a strait.
@@ -687,6 +710,7 @@ std::optional<CoastError> close_narrow_passages(ImportWork& w) {
     again.close_straits = false;
     handle_straits(curves, w.loops, again, w.rep.repair);
   }
+  w.charge("straits");
   // The step each closure saved, each strait left open and each KeepOpen passage costs,
   // at its place's depth.
   if (by_step)
@@ -809,14 +833,19 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
   } stage_end{opt.progress};
   progress_begin(opt.progress, "coastline", kImportSteps);
   keep_levels(w);
+  w.charge("levels");
   w.step_done();
   if (auto e = clean_and_orient(w)) return *e;
+  w.charge("clean");
   w.step_done();
   if (auto e = clip_region(w)) return *e;
+  w.charge("clip");
   w.step_done();
   if (auto e = coarsen_rings(w)) return *e;
+  w.charge("coarsen");
   w.step_done();
   make_work_loops(w);
+  w.charge("curves");
   w.step_done();
   // The curves back within the bound of their source points (before the repair, which
   // then sees the curves as they will be drawn).
@@ -824,16 +853,20 @@ Result<CoastModel> build_coast_model(Coastline data, const ImportOptions& opt) {
   // Its per-curve arrays (many from the heap) are freed: their pages are given back, or
   // they stay resident under the repair's and the passages' arrays (the import's peak).
   release_free_memory();
+  w.charge("deviation");
   if (auto e = repair_and_orient(w)) return *e;
   free_unused_curves(w);
   // The same for the repair rounds' polygons and grids, before the passages' pool is made.
   release_free_memory();
+  w.charge("orient");
   if (auto e = close_narrow_passages(w)) return *e;
   w.step_done();
   assign_holes(w);
   if (auto e = keep_seas(w)) return *e;
+  w.charge("surfaces");
   w.step_done();
   emit_model(w);
+  w.charge("model");
   w.step_done();
   w.model.region_empty = w.region_empty;
   return std::move(w.model);

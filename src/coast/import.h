@@ -124,6 +124,13 @@ struct ReportLine {
   std::optional<RepairEntry> entry = std::nullopt;
 };
 
+/// The CPU seconds (every thread) and the wall seconds one step of the import took.
+struct ImportStepTime {
+  std::string name;
+  double seconds = 0;
+  double wall = 0;
+};
+
 struct ImportReport {
   CleanReport clean;
   std::vector<DroppedRing> dropped;
@@ -134,6 +141,9 @@ struct ImportReport {
   DeviationReport deviation;
   /// With a patch: its splice (steps along the patch box where the two sources disagree).
   std::optional<PatchReport> patch;
+  /// Each step's CPU seconds in the order the steps first ran (a step run again, as the
+  /// repair pass after the straits, adds to its first entry): where the import's time goes.
+  std::vector<ImportStepTime> step_cpu;
   std::size_t count(RepairKind k) const;
   /// The human-readable report, nothing cut: the cleaning and coarsening summaries,
   /// then one line per repair entry in `repair`'s order, each with its parts.

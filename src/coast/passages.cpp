@@ -237,33 +237,72 @@ struct Work {
   }
 };
 
-void flatten(Work& w, const WorkLoop& loop) {
-  FlatLoop f;
-  f.pool = &w.pool;
-  f.ropes = &w.ropes;
-  std::vector<KeptRopes::Item> f_kept;
-  f.hole = loop.hole;
-  f.dead = loop.dead;
-  f.head = static_cast<std::uint32_t>(w.nodes.size());
-  if (!loop.dead)
-    for (std::uint32_t ci : loop.curves) {
-      const WorkCurve& c = w.curves[ci];
-      std::vector<char> kept(c.full.size(), 0);
-      for (auto k : c.keep) kept[k] = 1;
-      const std::size_t m = c.periodic ? c.full.size() : c.full.size() - 1;
-      SM_ASSERT(m <= kMaxIndex, "close_passages: a curve with more points than 31-bit indices (passages.cpp, flatten)");
-      for (std::size_t i = 0; i < m; ++i) {
-        const std::uint32_t id = w.add_node({ci, ci, static_cast<std::uint32_t>(i) & kMaxIndex, kept[i] != 0});
-        if (kept[i]) f_kept.push_back({id, c.uv[i], 0.0});
+// Every loop into the pool: its nodes numbered loop after loop, curve after curve (dead
+// loops have none), each ring linked, and its kept nodes with their metres made a rope.
+// The loops are flattened on the threads in fixed chunks of loops, each writing only its
+// own loops' node range (known beforehand from the curves' sizes) and kept lists; the
+// ropes are then made on the calling thread in loop order. Node ids and ropes are those of
+// one thread whatever the count: the rounds sort segments by node and walk ropes by id.
+void flatten_loops(Work& w, const std::vector<WorkLoop>& loops) {
+  const std::size_t n = loops.size();
+  auto points_of = [&](const WorkCurve& c) { return c.periodic ? c.full.size() : c.full.size() - 1; };
+  std::vector<std::size_t> first(n + 1, w.nodes.size());   // loop l's nodes: [first[l], first[l + 1])
+  std::size_t room = w.nodes.size();   // every curve's points: an open curve's last is the next one's first
+  for (std::size_t l = 0; l < n; ++l) {
+    std::size_t m = 0;
+    if (!loops[l].dead)
+      for (std::uint32_t ci : loops[l].curves) {
+        SM_ASSERT(points_of(w.curves[ci]) <= kMaxIndex,
+                  "close_passages: a curve with more points than 31-bit indices (passages.cpp, flatten_loops)");
+        m += points_of(w.curves[ci]);
+        room += w.curves[ci].full.size();
       }
+    first[l + 1] = first[l] + m;
+  }
+  SM_ASSERT(first[n] < kAdded, "close_passages: more points than 32-bit node ids (passages.cpp, flatten_loops)");
+  // Sized once, the open curves' spare points as room for the dams' nodes: grown by
+  // doubling, the pool would hold up to twice the world's points.
+  w.nodes.reserve(room);
+  w.next.reserve(room);
+  w.nodes.resize(first[n]);
+  w.next.resize(first[n]);
+  std::vector<std::vector<KeptRopes::Item>> kept_items(n);
+  constexpr std::size_t kChunk = 16;   // loops
+  parallel_for_chunks(resolve_thread_count(w.opt.threads), n, kChunk, [&](std::size_t b, std::size_t e) {
+    std::vector<char> kept;
+    for (std::size_t l = b; l < e; ++l) {
+      if (loops[l].dead) continue;
+      std::vector<KeptRopes::Item>& items = kept_items[l];
+      auto id = static_cast<std::uint32_t>(first[l]);
+      for (std::uint32_t ci : loops[l].curves) {
+        const WorkCurve& c = w.curves[ci];
+        kept.assign(c.full.size(), 0);
+        for (auto k : c.keep) kept[k] = 1;
+        const std::size_t m = points_of(c);
+        for (std::size_t i = 0; i < m; ++i, ++id) {
+          w.nodes[id] = {ci, ci, static_cast<std::uint32_t>(i) & kMaxIndex, kept[i] != 0};
+          if (kept[i]) items.push_back({id, c.uv[i], 0.0});
+        }
+      }
+      for (std::size_t j = 0; j < items.size(); ++j)
+        items[j].metres = chord(w.pool.ll(items[j].id), w.pool.ll(items[(j + 1) % items.size()].id), w.opt.radius);
+      const auto head = static_cast<std::uint32_t>(first[l]), end = static_cast<std::uint32_t>(first[l + 1]);
+      for (std::uint32_t i = head; i < end; ++i) w.next[i] = i + 1 == end ? head : i + 1;
     }
-  for (std::size_t j = 0; j < f_kept.size(); ++j)
-    f_kept[j].metres = chord(w.pool.ll(f_kept[j].id), w.pool.ll(f_kept[(j + 1) % f_kept.size()].id), w.opt.radius);
-  f.rope = w.ropes.make(f_kept);
-  const auto end = static_cast<std::uint32_t>(w.nodes.size());
-  for (std::uint32_t i = f.head; i < end; ++i) w.next[i] = i + 1 == end ? f.head : i + 1;
-  w.stats.node_visits += end - f.head;
-  w.flat.push_back(std::move(f));
+  });
+  w.flat.reserve(w.flat.size() + n);
+  for (std::size_t l = 0; l < n; ++l) {
+    FlatLoop f;
+    f.pool = &w.pool;
+    f.ropes = &w.ropes;
+    f.hole = loops[l].hole;
+    f.dead = loops[l].dead;
+    f.head = static_cast<std::uint32_t>(first[l]);
+    f.rope = w.ropes.make(kept_items[l]);
+    std::vector<KeptRopes::Item>().swap(kept_items[l]);
+    w.stats.node_visits += first[l + 1] - first[l];
+    w.flat.push_back(std::move(f));
+  }
 }
 
 // The polygon's points in order (one pass over the rope).
@@ -1546,14 +1585,7 @@ Result<bool> close_passages(std::vector<WorkCurve>& curves, std::vector<WorkLoop
   if (!(opt.min_width > 0) && opt.dams.empty() && opt.keep_open.empty()) return false;
   PassageStats local_stats;
   Work w{curves, curves.size(), opt, stats ? *stats : local_stats};
-  // The pool sized once: grown by doubling it would hold up to twice the world's points.
-  std::size_t points = 0;
-  for (const WorkLoop& l : loops)
-    if (!l.dead)
-      for (std::uint32_t ci : l.curves) points += curves[ci].full.size();
-  w.nodes.reserve(points);
-  w.next.reserve(points);
-  for (const WorkLoop& l : loops) flatten(w, l);
+  flatten_loops(w, loops);
   // Flattening's per-curve scratch, freed among the pool's and the ropes' arrays, and each
   // round's (its segment lists, grid and near pairs) would stay resident under the next
   // round's, which come from elsewhere in the heap: the import's peak on the full-resolution

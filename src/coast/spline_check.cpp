@@ -342,6 +342,21 @@ struct LoopSpans {
     }
   }
   std::uint32_t count() const { return L.periodic ? n : first_span.back(); }
+  // How many spans each() hands to f for `want` (their Beziers not made).
+  template <class Want>
+  std::size_t count_if(Want&& want) const {
+    std::size_t c = 0;
+    if (L.periodic) {
+      for (std::uint32_t s = 0; s < n; ++s) c += want(s) ? 1 : 0;
+      return c;
+    }
+    for (std::size_t k = 0; k < starts.size(); ++k) {
+      const std::uint32_t a = starts[k];
+      const std::uint32_t m = (k + 1 < starts.size() ? starts[k + 1] : n) - a + 1;
+      for (std::uint32_t j = 0; j <= m; ++j) c += want(a + std::clamp<std::uint32_t>(j, 1, m - 1) - 1) ? 1 : 0;
+    }
+    return c;
+  }
   // Calls f(local span, segment, Bezier, next local span) for the spans whose segment
   // `want` accepts, in order; the Bezier is made only for those.
   template <class Want, class F>
@@ -548,29 +563,52 @@ std::vector<HullOverlap> find_hull_overlaps(std::span<const SplineLoop> loops) {
 
 std::vector<HullOverlap> find_spline_crossings(std::span<const SplineLoop> loops, int threads) {
   const std::vector<std::vector<char>> need = blocks_near_active(loops);
-  std::vector<Span> spans;
-  std::uint32_t id = 0;   // the spans of the loops before
-  for (std::uint32_t l = 0; l < loops.size(); ++l) {
-    const SplineLoop& L = loops[l];
-    const auto n = static_cast<std::uint32_t>(L.pts.size());
-    if (n < 3) continue;
-    double fallback = 0;
-    if (L.tol.size() != n) {
-      Vec2 lo = L.pts[0], hi = L.pts[0];
-      for (Vec2 p : L.pts)
-        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)}, hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
-      fallback = 1e-7 * std::max(hi.x - lo.x, hi.y - lo.y);
+  // The spans are made on the threads in fixed chunks of loops, each loop's written at its
+  // place in one array: a loop's span ids start after the loops before (their counts) and
+  // its spans after theirs (counted first, on the threads too), so the array is one
+  // thread's for every count. A continent has thousands of spans: a few loops a chunk.
+  const std::size_t n_loops = loops.size();
+  constexpr std::size_t kLoopChunk = 4;
+  const int workers = resolve_thread_count(threads);
+  std::vector<std::uint32_t> first_id(n_loops + 1, 0);
+  std::vector<std::size_t> first_span(n_loops + 1, 0);
+  parallel_for_chunks(workers, n_loops, kLoopChunk, [&](std::size_t b, std::size_t e) {
+    for (std::size_t l = b; l < e; ++l) {
+      if (loops[l].pts.size() < 3) continue;
+      const LoopSpans ls(loops[l]);
+      first_id[l + 1] = ls.count();
+      first_span[l + 1] = ls.count_if([&](std::uint32_t s) { return need[l][s / kSpanBlock] != 0; });
     }
-    const LoopSpans ls(L);
-    ls.each([&](std::uint32_t s) { return need[l][s / kSpanBlock] != 0; },
-            [&](std::uint32_t j, std::uint32_t s, const Bez& b, std::uint32_t next) {
-              Span sp{b, {}, {}, l, s, id + j, id + next, L.tol.size() == n ? L.tol[s] : fallback,
-                      L.active.size() != n || L.active[s] != 0};
-              box_of(b, sp.lo, sp.hi);
-              spans.push_back(sp);
-            });
-    id += ls.count();
+  });
+  for (std::size_t l = 0; l < n_loops; ++l) {
+    first_id[l + 1] += first_id[l];
+    first_span[l + 1] += first_span[l];
   }
+  std::vector<Span> spans(first_span[n_loops]);
+  parallel_for_chunks(workers, n_loops, kLoopChunk, [&](std::size_t b, std::size_t e) {
+    for (std::size_t li = b; li < e; ++li) {
+      const SplineLoop& L = loops[li];
+      const auto n = static_cast<std::uint32_t>(L.pts.size());
+      if (n < 3) continue;
+      const auto l = static_cast<std::uint32_t>(li);
+      double fallback = 0;
+      if (L.tol.size() != n) {
+        Vec2 lo = L.pts[0], hi = L.pts[0];
+        for (Vec2 p : L.pts)
+          lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)}, hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+        fallback = 1e-7 * std::max(hi.x - lo.x, hi.y - lo.y);
+      }
+      const std::uint32_t id = first_id[l];
+      std::size_t at = first_span[l];
+      LoopSpans(L).each([&](std::uint32_t s) { return need[l][s / kSpanBlock] != 0; },
+                        [&](std::uint32_t j, std::uint32_t s, const Bez& bz, std::uint32_t next) {
+                          Span& sp = spans[at++];
+                          sp = Span{bz, {}, {}, l, s, id + j, id + next, L.tol.size() == n ? L.tol[s] : fallback,
+                                    L.active.size() != n || L.active[s] != 0};
+                          box_of(bz, sp.lo, sp.hi);
+                        });
+    }
+  });
   // The pairs to decide (one of them active at least), then decided on the threads in
   // fixed chunks whose finds are joined in chunk order.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
@@ -581,7 +619,7 @@ std::vector<HullOverlap> find_spline_crossings(std::span<const SplineLoop> loops
   });
   constexpr std::size_t kChunk = 512;
   std::vector<std::vector<HullOverlap>> parts((pairs.size() + kChunk - 1) / kChunk);
-  parallel_for_chunks(resolve_thread_count(threads), pairs.size(), kChunk, [&](std::size_t begin, std::size_t end) {
+  parallel_for_chunks(workers, pairs.size(), kChunk, [&](std::size_t begin, std::size_t end) {
     std::vector<HullOverlap>& part = parts[begin / kChunk];
     for (std::size_t k = begin; k < end; ++k) {
       const Span& a = spans[pairs[k].first];

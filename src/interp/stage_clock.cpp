@@ -1,11 +1,11 @@
 // The run's stage account (see stage_clock.h).
 #include "interp/stage_clock.h"
 
-#include <time.h>
-
 #include <algorithm>
 
 #include <fmt/format.h>
+
+#include "base/cpu_clock.h"
 
 namespace sm::interp {
 
@@ -13,12 +13,6 @@ namespace {
 
 double steady_seconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-double process_cpu_seconds() {
-  timespec t{};
-  if (clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t) != 0) return 0;
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
 }  // namespace

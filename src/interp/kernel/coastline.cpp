@@ -1,7 +1,9 @@
 // Coastline statements (native extension, paper section 2.2): `Coastline[n] = GSHHS;`,
 // `Coastline[n].Option = value;`, `Delete Coastline[n];` and the import `Coastline{n}`, which
 // runs coast::build_coast_model and turns its loops into points, curves and curve loops.
+#include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <optional>
 #include <string>
@@ -15,6 +17,8 @@
 #include <fmt/format.h>
 
 #include "base/check.h"
+#include "base/cpu_clock.h"
+#include "base/elapsed.h"
 #include "coast/coastline_options.h"
 #include "coast/import.h"
 #include "coast/read.h"
@@ -450,8 +454,22 @@ coast::Coastline read_shoreline(CoastImportWork& w) {
 // entities from its loops is the script's own time).
 coast::CoastModel read_and_build(CoastImportWork& w) {
   std::optional<StageScope> import_stage(std::in_place, &w.in.kernel().clock, nullptr, "import");
-  auto built = coast::build_coast_model(read_shoreline(w), w.io());
+  const double read_start = process_cpu_seconds();
+  const auto read_wall_start = std::chrono::steady_clock::now();
+  coast::Coastline source = read_shoreline(w);
+  const double read_cpu = process_cpu_seconds() - read_start, read_wall = seconds_since(read_wall_start);
+  auto built = coast::build_coast_model(std::move(source), w.io());
   import_stage.reset();
+  // Where the import's time went, step by step (CPU seconds of every thread / wall
+  // seconds), at Gmsh's debug level (-v 99): the Time line's "import" taken apart.
+  if (built && w.in.options().number("General.Verbosity") >= 99) {
+    std::string line = fmt::format("Import steps (CPU/wall s): read {:.3f}/{:.3f}", read_cpu, read_wall);
+    for (const coast::ImportStepTime& t : built->report.step_cpu)
+      line += fmt::format(", {} {:.3f}/{:.3f}", t.name, t.seconds, t.wall);
+    std::fflush(stdout);
+    std::fputs((line + "\n").c_str(), stderr);
+    std::fflush(stderr);
+  }
   // The import's working arrays (the source points three times over, the passage pool:
   // hundreds of MB for the full-resolution world) are freed now, but many came from the
   // heap, whose free pages stay resident beside everything made after (the fields, the

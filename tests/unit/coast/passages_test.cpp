@@ -13,6 +13,7 @@
 #include "coast/loop_uv.h"
 #include "coast/import.h"
 #include "coast/intersections.h"
+#include "coast/read_lonlat_text.h"
 #include "exact/ring.h"
 #include "geo/curve_bspline.h"
 
@@ -765,4 +766,42 @@ TEST_CASE("passages: a dam at a river mouth behind a spit makes no corner the me
     CHECK(angle >= 9.4);
   }
   CHECK(junctions >= 2);
+}
+
+TEST_CASE("passages: the same closures on 1, 2 and 3 threads on real data (loops flattened in chunks)") {
+  // Great Britain and Ireland at full resolution: many loops, so the pool's nodes are
+  // numbered in many chunks of loops; the rounds order segments by node, so nodes numbered
+  // in the order the chunks finish would change which passages close first.
+  auto c = read_lonlat_text(std::string(SM_DATA_DIR) + "/gshhg/gb_ireland_f.txt");
+  REQUIRE(c.ok());
+  auto model = [&](int threads) {
+    ImportOptions o;
+    o.gamma = testing::constant_accuracy(1500);
+    o.passages.min_width = 1500;
+    o.threads = threads;
+    auto m = build_coast_model(*c, o);
+    REQUIRE_MESSAGE(m.ok(), (m.ok() ? "" : m.error().to_string()));
+    return std::move(*m);
+  };
+  const CoastModel one = model(1);
+  REQUIRE(one.loops.size() > 4 * 16);   // flatten_loops takes 16 loops a chunk
+  REQUIRE(one.report.count(RepairKind::ClosedPassage) + one.report.count(RepairKind::NarrowWater) > 10);
+  for (int threads : {2, 3}) {
+    CAPTURE(threads);
+    const CoastModel m = model(threads);
+    REQUIRE(m.curves.size() == one.curves.size());
+    for (std::size_t i = 0; i < m.curves.size(); ++i) {
+      REQUIRE(m.curves[i].uv.size() == one.curves[i].uv.size());
+      CHECK(std::equal(m.curves[i].uv.begin(), m.curves[i].uv.end(), one.curves[i].uv.begin()));
+    }
+    REQUIRE(m.loops.size() == one.loops.size());
+    for (std::size_t l = 0; l < m.loops.size(); ++l) CHECK(m.loops[l].curves == one.loops[l].curves);
+    REQUIRE(m.report.repair.size() == one.report.repair.size());
+    for (std::size_t i = 0; i < m.report.repair.size(); ++i) {
+      CHECK(m.report.repair[i].kind == one.report.repair[i].kind);
+      CHECK(m.report.repair[i].where.lon == one.report.repair[i].where.lon);
+      CHECK(m.report.repair[i].where.lat == one.report.repair[i].where.lat);
+      CHECK(m.report.repair[i].value == one.report.repair[i].value);
+    }
+  }
 }

@@ -9,6 +9,7 @@
 
 #include "coast/import.h"
 #include "coast/intersections.h"
+#include "coast/loop_uv.h"
 #include "coast/place_pairs.h"
 #include "coast/read_lonlat_text.h"
 #include "geo/curve_bspline.h"
@@ -339,5 +340,50 @@ TEST_CASE("spline crossings: real coastlines import with no two B-splines crossi
     CHECK(checked->report.count(RepairKind::SplineMayCross) == 0);
     // A few per cent more control points at most.
     CHECK(static_cast<double>(checked->report.points_out) < 1.03 * static_cast<double>(plain->report.points_out));
+  }
+}
+
+TEST_CASE("spline crossings: the same finds on 1, 2 and 3 threads on real data (spans made in chunks of loops)") {
+  // world_c at 30 km as coarsening leaves it: an island whose spline crosses the mainland's
+  // (above), among hundreds of loops, so the spans are made in many chunks of loops, each
+  // loop's at the place its count before gives it.
+  auto data = read_lonlat_text(std::string(SM_DATA_DIR) + "/gshhg/world_c.txt");
+  REQUIRE(data.ok());
+  ImportOptions o;
+  o.gamma = [](std::span<const Vec3>, std::span<double> g) {
+    for (double& x : g) x = 30000;
+  };
+  o.deviation.factor = 0;
+  o.repair.check_splines = false;
+  auto plain = build_coast_model(*data, o);
+  REQUIRE(plain.ok());
+  std::vector<std::vector<Vec2>> polys;
+  for (std::uint32_t l = 0; l < plain->loops.size(); ++l) polys.push_back(sm::testing::loop_uv(*plain, l));
+  REQUIRE(polys.size() > 4 * 4);   // find_spline_crossings takes 4 loops a chunk
+  std::vector<SplineLoop> sl;
+  for (const auto& p : polys) sl.push_back({p, {}, true});
+  auto same = [](const std::vector<HullOverlap>& a, const std::vector<HullOverlap>& b) {
+    REQUIRE(a.size() == b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      CHECK(place_pair_key(a[i]) == place_pair_key(b[i]));
+      CHECK(a[i].where == b[i].where);
+    }
+  };
+  const auto one = find_spline_crossings(sl, 1);
+  REQUIRE_FALSE(one.empty());
+  for (int threads : {2, 3}) {
+    CAPTURE(threads);
+    same(find_spline_crossings(sl, threads), one);
+  }
+  // Only every third loop tested: the spans made only near them, at their places.
+  std::vector<std::vector<char>> active(sl.size());
+  for (std::size_t l = 0; l < sl.size(); ++l) {
+    active[l].assign(polys[l].size(), l % 3 == 0 ? 1 : 0);
+    sl[l].active = active[l];
+  }
+  const auto some = find_spline_crossings(sl, 1);
+  for (int threads : {2, 3}) {
+    CAPTURE(threads);
+    same(find_spline_crossings(sl, threads), some);
   }
 }
