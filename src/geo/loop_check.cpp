@@ -65,6 +65,35 @@ GeoResult<std::vector<int>> chain_loop(int loop_tag, const std::vector<LoopEdge>
   return out;
 }
 
+GeoResult<std::vector<int>> chain_loop_reorienting(int loop_tag, const std::vector<LoopEdge>& edges) {
+  const std::size_t n = edges.size();
+  std::vector<bool> used(n, false);
+  std::vector<int> out;
+  out.reserve(n);
+  // Each pass of the outer loop places one curve: at most n passes of n steps.
+  int chain_start = 0, end = 0, last_curve = 0;
+  while (out.size() < n) {
+    if (out.empty() || end == chain_start) {   // a new chain: the first remaining curve as written
+      const std::size_t first = static_cast<std::size_t>(std::find(used.begin(), used.end(), false) - used.begin());
+      used[first] = true;
+      out.push_back(edges[first].curve);
+      chain_start = edges[first].from, end = edges[first].to, last_curve = edges[first].curve;
+      continue;
+    }
+    std::size_t i = 0;
+    while (i < n && (used[i] || (edges[i].from != end && edges[i].to != end))) ++i;
+    if (i == n) return make_error(GeoErrorId::LoopBroken, EntityKind::CurveLoop, {loop_tag, last_curve}, {end});
+    used[i] = true;
+    const bool reversed = edges[i].from != end;
+    last_curve = reversed ? -edges[i].curve : edges[i].curve;
+    out.push_back(last_curve);
+    end = reversed ? edges[i].from : edges[i].to;
+  }
+  if (end != chain_start)
+    return make_error(GeoErrorId::LoopDoesNotClose, EntityKind::CurveLoop, {loop_tag, last_curve}, {end, chain_start});
+  return out;
+}
+
 namespace {
 
 int samples_for(const ModelCurve& c) {

@@ -24,6 +24,13 @@ struct LoopEdge {
 /// curve where the chain breaks (and a curve that would fit with the other sign).
 GeoResult<std::vector<int>> chain_loop(int loop_tag, const std::vector<LoopEdge>& edges);
 
+/// A loop of discrete curves as Gmsh 4.8.4 takes it (Geo/Geo.cpp's SortEdgesInLoop leaves
+/// such a loop unsorted, and its mesher uses the curves' edges whatever their signs): each
+/// chain continues with the first remaining curve, in written order, that starts or ends
+/// where the chain ends, reversed when it ends there. Returns the signed tags in chained
+/// order; the errors are chain_loop's.
+GeoResult<std::vector<int>> chain_loop_reorienting(int loop_tag, const std::vector<LoopEdge>& edges);
+
 /// A loop sampled densely enough for containment tests: (u,v) when drawn on a geometry,
 /// else points in space.
 struct LoopPolygon {

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <limits>
 #include <cmath>
 #include <initializer_list>
 
@@ -326,6 +327,35 @@ GeoStatus Model::add_discrete_curve(int tag, int begin, int end, std::vector<Vec
   return {};
 }
 
+GeoStatus Model::give_geometry_to_discrete_curve(int tag) {
+  auto it = curves_.find(tag);
+  if (it == curves_.end() || !it->second.discrete)
+    return missing(GeoErrorId::UnknownEntityUsedBy, EntityKind::Curve, tag, {tag}, {"CreateGeometry"});
+  touch();
+  it->second.has_geometry = true;
+  return {};
+}
+
+GeoStatus Model::add_surface_of_discrete_mesh(int tag, const std::vector<std::vector<int>>& loops) {
+  std::vector<int> loop_tags;
+  for (const std::vector<int>& curves : loops) {
+    std::vector<LoopEdge> edges;
+    for (int c : curves) {
+      const ModelCurve* mc = curve(c);
+      if (!mc) return missing(GeoErrorId::UnknownEntityIn, EntityKind::Curve, c, {tag}, {"plane surface"});
+      edges.push_back({c, mc->begin, mc->end});
+    }
+    ModelCurveLoop l;
+    l.tag = std::numeric_limits<int>::max() - hidden_loop_tag_++;
+    auto chained = chain_loop_reorienting(l.tag, edges);
+    if (!chained) return chained.error();
+    l.curves = std::move(*chained);
+    loop_tags.push_back(l.tag);
+    loops_.emplace(l.tag, std::move(l));
+  }
+  return add_plane_surface(tag, loop_tags);
+}
+
 GeoStatus Model::add_curve(int tag, CurveKind kind, const std::vector<int>& points, std::optional<Vec3> plane_normal) {
   touch();
   if (auto s = check_new_tag(EntityKind::Curve, tag, curves_.count(tag) > 0); !s) return s;
@@ -419,6 +449,17 @@ GeoStatus Model::add_curve_loop(int tag, const std::vector<int>& curves) {
   if (!chained && chained.error().kind != GeoErrorKind::LoopNotClosed) return chained.error();
   ModelCurveLoop l;
   l.tag = tag;
+  const bool has_discrete = std::any_of(curves.begin(), curves.end(), [&](int sc) { return curve(std::abs(sc))->discrete; });
+  if (!chained && has_discrete) {
+    if (auto reoriented = chain_loop_reorienting(tag, edges)) {
+      // Gmsh meshes a loop of discrete curves as its edges come, whatever their signs.
+      const auto flipped = std::find_if(reoriented->begin(), reoriented->end(), [&](int sc) {
+        return std::find(curves.begin(), curves.end(), sc) == curves.end();
+      });
+      compat_notes_.push_back({CompatNoteId::DiscreteLoopReoriented, {tag, -*flipped}, {}, {}});
+      chained = std::move(reoriented);
+    }
+  }
   if (!chained) {
     compat_notes_.push_back({CompatNoteId::UncheckedLoop, {}, {}, chained.error()});
     l.curves = curves;

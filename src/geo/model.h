@@ -42,6 +42,9 @@ struct ModelCurve {
   /// its mesh nodes, begin, `inner`, end, whose mesh is those nodes (never remeshed).
   bool discrete = false;
   std::vector<Vec3> inner;
+  /// A discrete curve given a geometry by `CreateGeometry;` (Gmsh's discreteEdge with its
+  /// parametrisation): the same polyline, now meshed by the 1D mesher as any curve.
+  bool has_geometry = false;
 
   bool periodic() const { return begin == end; }
 };
@@ -142,6 +145,14 @@ class Model {
   /// A discrete curve (ModelCurve::discrete) from point `begin` through `inner` to point
   /// `end` (the mesh nodes of a merged file's curve, in order; begin == end: closed).
   GeoStatus add_discrete_curve(int tag, int begin, int end, std::vector<Vec3> inner);
+  /// `CreateGeometry;` on discrete curve `tag`: its polyline becomes its geometry
+  /// (ModelCurve::has_geometry), so that the 1D mesher remeshes it.
+  GeoStatus give_geometry_to_discrete_curve(int tag);
+  /// `CreateGeometry;` on a flat discrete surface: plane surface `tag` bounded by `loops`
+  /// (each a closed chain of discrete curves, in any order and orientation: the surface's
+  /// mesh boundary), held in loops of hidden tags as a duplicated surface's are; the
+  /// enclosing loop becomes the outer one as in add_plane_surface.
+  GeoStatus add_surface_of_discrete_mesh(int tag, const std::vector<std::vector<int>>& loops);
   /// "Curve Loop(t) = {...};": must close; reordered as Gmsh does when the signs are
   /// consistent; a loop may hold several closed chains (Gmsh's "subloops").
   GeoStatus add_curve_loop(int tag, const std::vector<int>& curves);
@@ -281,6 +292,7 @@ class Model {
     ExtrudeClosedCurve,      // tags: the curve
     DuplicataOfMissing,      // word: the entity's kind; tags: its tag
     SplitAtOtherPoint,       // tags: the curve, the point
+    DiscreteLoopReoriented,  // tags: the loop, the first curve reversed
   };
   struct CompatNote {
     CompatNoteId id = CompatNoteId::UncheckedLoop;

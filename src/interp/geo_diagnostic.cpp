@@ -127,6 +127,7 @@ GeoDiagnostic geo_compat_diagnostic(const geo::Model::CompatNote& note) {
     case Id::ExtrudeClosedCurve: return worded(Diag::GmshCompatExtrudeClosedCurve, tag(0));
     case Id::DuplicataOfMissing: return worded(Diag::GmshCompatDuplicataOfMissing, note.word, tag(0));
     case Id::SplitAtOtherPoint: return worded(Diag::GmshCompatSplitAtOtherPoint, tag(0), tag(1));
+    case Id::DiscreteLoopReoriented: return worded(Diag::GmshCompatDiscreteLoopReoriented, tag(0), tag(1));
   }
   return worded(Diag::GmshCompatUncheckedLoop, std::string("curve loop (no error recorded)"));   // a kernel bug
 }

@@ -750,7 +750,7 @@ void place_plan(const geo::Model& model, const Mesh1dOptions& opt, double bbox, 
     return;
   }
   const geo::ModelCurve& mc = *cp.mc;
-  if (mc.discrete) {   // a merged mesh's curve: its nodes, at its polyline's corners
+  if (mc.discrete && !mc.has_geometry) {   // a merged mesh's curve: its nodes, at its polyline's corners
     const std::size_t n = mc.inner.size() + 2;
     cp.ts.resize(n);
     for (std::size_t i = 0; i < n; ++i) cp.ts[i] = static_cast<double>(i) / static_cast<double>(n - 1);

@@ -21,6 +21,7 @@ import argparse
 import glob
 import math
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -190,12 +191,19 @@ def short(text, n=110):
 def out_of_scope(text):
     """Why a script lies outside the project's scope (2D meshing with the built-in geometry
     kernel, no post-processing views), or None: a statement, not a comment, that selects the
-    OpenCASCADE kernel, or that reads a view (.pos) or sizes a mesh by one."""
+    OpenCASCADE kernel, that reads a view (.pos) or sizes a mesh by one, or that merges an STL
+    triangulation. Gmsh merges an STL file (tutorial t13) to remesh a surface in 3D: its
+    triangles are a discrete surface that ClassifySurfaces splits along sharp edges into
+    patches, each of which CreateGeometry reparametrises (a map of a curved patch onto the
+    plane) so that it can be remeshed, and a volume is then meshed inside; stereomesh meshes
+    planar and spherical 2D models, and stops at such a Merge with an error saying so."""
     code = [line.split("//", 1)[0] for line in text.splitlines()]
     if any('SetFactory("OpenCASCADE")' in line for line in code):
         return "OpenCASCADE"
     if any(".pos\"" in line or "Background Mesh View" in line for line in code):
         return "post-processing views"
+    if any(re.search(r'\bMerge\s*"[^"]*\.stl"', line, re.IGNORECASE) for line in code):
+        return "3D remeshing of an STL surface"
     return None
 
 
@@ -274,7 +282,8 @@ def write_markdown(results, out, timeout, build_dir=None):
     in_scope = [r for _, r in results if not r.get("out_of_scope")]
     in_eval = sum(r["eval"] in ("agrees", "differs") for r in in_scope)
     if in_scope:
-        lines.append(f"- In the project's scope (2D, the built-in geometry kernel, no post-processing views): "
+        lines.append(f"- In the project's scope (2D, the built-in geometry kernel, no post-processing views, no "
+                     f"STL surfaces to remesh in 3D): "
                      f"**{in_eval} of {len(in_scope)}** evaluate ({100 * in_eval / len(in_scope):.1f}%); out of "
                      "scope: " + (", ".join(f"{n} ({why})" for n, why in outside) or "none") + ".")
     # Every script both mesh with elements, quadrangle meshes included.

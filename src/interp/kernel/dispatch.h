@@ -50,6 +50,10 @@ Value eval_field_call(Interpreter& in, const lang::Expr& e, const lang::CallExpr
 /// (.msh) becomes discrete entities (merge_mesh_file), views are display only, the other
 /// kinds Gmsh reads are reported as not supported.
 void exec_merge(Interpreter& in, lang::StmtId s, const lang::CommandStmt& c);
+/// `CreateGeometry;` (create_geometry.cpp): the discrete curves and flat discrete surfaces
+/// of merged meshes get a geometry from their mesh and are remeshed; a located warning when
+/// there is none left to do.
+void exec_create_geometry(Interpreter& in, lang::StmtId s);
 /// The mesh file at `path` (`name` as the script wrote it) into discrete entities of the
 /// model (merge_mesh.cpp); errors are at `at`.
 void merge_mesh_file(Interpreter& in, const std::filesystem::path& path, const std::string& name,

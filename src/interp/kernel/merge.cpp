@@ -3,8 +3,9 @@
 // (merge_mesh.cpp), an STL triangulation a discrete surface, a .pos file a
 // post-processing view, a .geo or .opt file is parsed as a script. A file that is missing
 // or unreadable is an error at its name (Gmsh stops there too), a view is display only
-// (as `View` is), and the other kinds are reported as not supported, each saying what
-// Gmsh would have made of the file.
+// (as `View` is), an STL file stops the run at its name (what follows it remeshes the
+// surface in 3D, which nothing here does), and the other kinds are reported as not
+// supported, each saying what Gmsh would have made of the file.
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -44,11 +45,9 @@ void exec_merge(Interpreter& in, StmtId id, const CommandStmt& c) {
     merge_mesh_file(in, p, name, at);
     return;
   }
+  if (ext == ".stl") in.fail(at, Diag::MergeStl, name);
   std::string what;
-  if (ext == ".stl")
-    what = "its triangles become a discrete surface (for ClassifySurfaces and volumes), which stereomesh's model has "
-           "no place for";
-  else if (ext == ".geo" || ext == ".opt")
+  if (ext == ".geo" || ext == ".opt")
     what = "it is parsed as a script: use Include";
   else
     what = fmt::format("Gmsh reads the file by its extension ('{}'), and stereomesh reads none yet", ext);

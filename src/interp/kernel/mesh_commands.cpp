@@ -741,6 +741,10 @@ bool exec_mesh_command(Interpreter& in, StmtId id, std::string_view command) {
     // Merge makes the discrete curves' end points as it reads a mesh file (merge_mesh.cpp),
     // so that Gmsh's `CreateTopology;` after it has nothing left to do.
     if (command == "CreateTopology" && !c->arg.valid()) return true;
+    if (command == "CreateGeometry" && !c->arg.valid()) {
+      exec_create_geometry(in, id);
+      return true;
+    }
     if (command == "PartitionMesh" && c->arg.valid()) {
       exec_partition_mesh(in, id, *c);
       return true;
