@@ -105,16 +105,13 @@ struct StoreWalker {
 
 /// The straight walk of a TriangleStore from g towards p (the quality floor's question:
 /// what lies between a triangle and a point it would insert). Of the sides with p
-/// strictly beyond, the walk crosses the first whose origin is not right of the line
-/// g -> p and whose destination is right of it, never back over the side it came in by;
-/// constrained and hull sides are walls, and `wall` is the one the walk stopped at. A
-/// line meets a convex triangle in one segment, so a straight walk enters each triangle
-/// once: the caller's step limit is its triangle count, and StepLimit means a corrupt
-/// triangulation. (The side a segment leaves a counter-clockwise triangle by has its
-/// origin right of the segment and its destination left: this rule, the floor's since it
-/// was written, seldom crosses a side, so the floor's walk mostly ends in its first
-/// triangle. Turning it round changes the floor's meshes; it is kept so that they keep
-/// their bytes.)
+/// strictly beyond, the walk crosses the one the segment g -> p leaves by: in a
+/// counter-clockwise triangle its origin lies right of the line g -> p and its destination
+/// not right of it (a vertex on the line counts on its left only), never back over the
+/// side it came in by; constrained and hull sides are walls, and `wall` is the one the
+/// walk stopped at. A line meets a convex triangle in one segment, so a straight walk
+/// enters each triangle once: the caller's step limit is its triangle count, and
+/// StepLimit means a corrupt triangulation.
 struct SegmentWalker {
   const TriangleStore& m;
   Vec2 g, p;
@@ -128,7 +125,7 @@ struct SegmentWalker {
   PredicateStats* predicate_stats() const { return nullptr; }
   AcrossStep across(std::uint32_t t, std::uint32_t e) {
     const Sign sa = orient2d(g, p, org(t, e)), sb = orient2d(g, p, dest(t, e));
-    if (sa == Sign::Negative || sb != Sign::Negative) return {Across::PassOver};
+    if (sa != Sign::Negative || sb == Sign::Negative) return {Across::PassOver};
     const Side s{3 * t + e};
     const Side o = m.twin[s.value];
     if (!o.valid() || m.constrained(s)) {

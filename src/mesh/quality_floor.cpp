@@ -160,9 +160,8 @@ class Floor {
   bool bulge_is_clear(Side s, Vec2 p);
   void touched(VertexId v);
   /// Walks straight from the centroid of t towards p (mesh/locate.h's SegmentWalker): the
-  /// constrained (or hull) side it stopped at, or none with *reached the triangle where
-  /// it ended (mostly t itself: the walk's rule seldom crosses a side). Both none when p
-  /// is not finite or the walk did not end.
+  /// constrained (or hull) side it stopped at, or none with *reached the triangle that
+  /// holds p. Both none when p is not finite or the walk did not end.
   Side blocking_side(TriId t, Vec2 p, TriId* reached);
 
   TriangleStore& m_;

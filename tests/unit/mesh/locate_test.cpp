@@ -81,3 +81,21 @@ TEST_CASE("locate: barycentric weights") {
   const std::array<double, 3> flat = barycentric(a, c, b, p);   // clockwise: the fallback thirds
   CHECK(flat[0] == doctest::Approx(1.0 / 3));
 }
+
+TEST_CASE("locate: the straight walk from a centroid ends in the triangle holding the point") {
+  const TriangleStore m = random_delaunay(7, 300);
+  std::mt19937_64 rng(8);
+  std::uniform_real_distribution<double> U(0.2, 0.8);
+  int crossed = 0;
+  for (std::uint32_t t = 0; t < 100; ++t) {
+    const Vec2 g = (m.pos(m.vertex(TriId{t}, 0)) + m.pos(m.vertex(TriId{t}, 1)) + m.pos(m.vertex(TriId{t}, 2))) / 3.0;
+    const Vec2 p{U(rng), U(rng)};
+    SegmentWalker w{m, g, p};
+    const WalkResult r = walk_to(w, p, t, m.num_slots());
+    REQUIRE(r.end == WalkEnd::Found);
+    StoreWalker look{m};
+    CHECK(walker_contains(look, r.tri, p));
+    crossed += r.steps > 0;
+  }
+  CHECK(crossed > 50);
+}
