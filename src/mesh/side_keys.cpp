@@ -50,8 +50,11 @@ std::pair<std::uint32_t, std::uint32_t> node_range(const SurfaceMesh& sf, int th
   std::vector<std::pair<std::uint32_t, std::uint32_t>> chunk_range((n + kSideChunk - 1) / kSideChunk,
                                                                    {std::numeric_limits<std::uint32_t>::max(), 0});
   parallel_for_chunks(threads, n, kSideChunk, [&](std::size_t begin, std::size_t end) {
-    auto& [lo, hi] = chunk_range[begin / kSideChunk];
-    for_each_side(sf, begin, end, [&](std::uint32_t a, std::uint32_t) { lo = std::min(lo, a), hi = std::max(hi, a); });
+    // A plain reference, not a structured binding: clang before 16 cannot capture bindings.
+    auto& range = chunk_range[begin / kSideChunk];
+    for_each_side(sf, begin, end, [&](std::uint32_t a, std::uint32_t) {
+      range.first = std::min(range.first, a), range.second = std::max(range.second, a);
+    });
   });
   std::pair<std::uint32_t, std::uint32_t> r{std::numeric_limits<std::uint32_t>::max(), 0};
   for (const auto& [lo, hi] : chunk_range) r = {std::min(r.first, lo), std::max(r.second, hi)};
