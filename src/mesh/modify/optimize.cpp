@@ -56,12 +56,6 @@ inline bool leximin_better(const std::vector<double>& a, const std::vector<doubl
   return false;
 }
 
-struct BadTri {
-  double q;
-  std::uint32_t t;
-  bool operator<(const BadTri& o) const { return q < o.q || (q == o.q && t < o.t); }
-};
-
 class Optimizer {
  public:
   Optimizer(TriangleStore& m, std::uint32_t fixed_count, const OptimizeOptions& opt)
@@ -137,27 +131,7 @@ class Optimizer {
       }
       return min_all;
     }
-    struct Chunk {
-      std::vector<BadTri> bad;
-      double min_all = 1;
-    };
-    std::vector<Chunk> chunks((n + kOptimizeScanChunk - 1) / kOptimizeScanChunk);
-    parallel_for_chunks(opt_.threads, n, kOptimizeScanChunk, [&](std::size_t begin, std::size_t end) {
-      Chunk& c = chunks[begin / kOptimizeScanChunk];
-      for (std::size_t slot = begin; slot < end; ++slot) {
-        const TriId t{static_cast<std::uint32_t>(slot)};
-        if (!m_.alive(t)) continue;
-        const double q = rho_ccw(m_.pos(m_.vertex(t, 0)), m_.pos(m_.vertex(t, 1)), m_.pos(m_.vertex(t, 2)));
-        c.min_all = std::min(c.min_all, std::max(q, 0.0));
-        if (q < opt_.threshold && seeded(t.value)) c.bad.push_back({q, t.value});
-      }
-    });
-    double min_all = 1;
-    for (const Chunk& c : chunks) {
-      min_all = std::min(min_all, c.min_all);
-      bad_.insert(bad_.end(), c.bad.begin(), c.bad.end());
-    }
-    return min_all;
+    return scan_plane_bad(m_, opt_.threshold, opt_.threads, opt_.seeds, bad_);
   }
 
   bool seeded(std::uint32_t t) const { return !opt_.seeds || (*opt_.seeds)[t]; }
@@ -600,6 +574,32 @@ OptimizeStats optimize_quality(TriangleStore& m, std::uint32_t fixed_count, cons
       !opt.seeds && !m.undo_link.journal)
     return optimize_in_blocks(m, fixed_count, opt);
   return Optimizer(m, fixed_count, opt).run();
+}
+
+double scan_plane_bad(const TriangleStore& m, double threshold, int threads, const std::vector<std::uint8_t>* seeds,
+                      std::vector<BadTri>& bad) {
+  struct Chunk {
+    std::vector<BadTri> bad;
+    double min_all = 1;
+  };
+  const std::size_t n = m.num_slots();
+  std::vector<Chunk> chunks((n + kOptimizeScanChunk - 1) / kOptimizeScanChunk);
+  parallel_for_chunks(threads, n, kOptimizeScanChunk, [&](std::size_t begin, std::size_t end) {
+    Chunk& c = chunks[begin / kOptimizeScanChunk];
+    for (std::size_t slot = begin; slot < end; ++slot) {
+      const TriId t{static_cast<std::uint32_t>(slot)};
+      if (!m.alive(t)) continue;
+      const double q = rho_ccw(m.pos(m.vertex(t, 0)), m.pos(m.vertex(t, 1)), m.pos(m.vertex(t, 2)));
+      c.min_all = std::min(c.min_all, std::max(q, 0.0));
+      if (q < threshold && (!seeds || (*seeds)[slot])) c.bad.push_back({q, t.value});
+    }
+  });
+  double min_all = 1;
+  for (const Chunk& c : chunks) {
+    min_all = std::min(min_all, c.min_all);
+    bad.insert(bad.end(), c.bad.begin(), c.bad.end());
+  }
+  return min_all;
 }
 
 }  // namespace sm

@@ -95,4 +95,18 @@ struct OptimizeStats {
 /// Deterministic: triangles are handled by increasing (rho, id), vertices by id.
 OptimizeStats optimize_quality(TriangleStore& m, std::uint32_t fixed_count, const OptimizeOptions& opt = {});
 
+/// A triangle below the threshold: its plane rho and its slot, ordered worst first.
+struct BadTri {
+  double q;
+  std::uint32_t t;
+  bool operator<(const BadTri& o) const { return q < o.q || (q == o.q && t < o.t); }
+};
+
+/// Every live triangle of m measured by its plane rho in fixed chunks on `threads` threads:
+/// those below `threshold` (and flagged in `seeds`, when given) appended to `bad` by slot,
+/// the lists joined in chunk order, and the lowest rho returned (flat ones as 0). The same
+/// for every thread count.
+double scan_plane_bad(const TriangleStore& m, double threshold, int threads, const std::vector<std::uint8_t>* seeds,
+                      std::vector<BadTri>& bad);
+
 }  // namespace sm

@@ -22,35 +22,7 @@ constexpr std::uint32_t kMaxBlocks = 1024;
 // Rings of vertex stars claimed round a block's bad triangles: the stars of their corners
 // (the moves' and swaps' reach), then one more for the cascades.
 constexpr int kBlockRings = 2;
-constexpr std::size_t kBlockScanChunk = 16384;
 constexpr std::uint32_t kUnclaimed = 0xffffffffu;
-
-struct BlockScan {
-  std::vector<std::uint32_t> bad;  // slots below the threshold, increasing
-  double min_all = 1;              // the worst rho (flat ones as 0)
-};
-
-// Every live triangle measured in fixed chunks on the threads, joined in chunk order.
-BlockScan scan_blocked(const TriangleStore& m, double threshold, int threads) {
-  const std::size_t n = m.num_slots();
-  std::vector<BlockScan> chunks((n + kBlockScanChunk - 1) / kBlockScanChunk);
-  parallel_for_chunks(threads, n, kBlockScanChunk, [&](std::size_t begin, std::size_t end) {
-    BlockScan& c = chunks[begin / kBlockScanChunk];
-    for (std::size_t slot = begin; slot < end; ++slot) {
-      const TriId t{static_cast<std::uint32_t>(slot)};
-      if (!m.alive(t)) continue;
-      const double q = rho_ccw(m.pos(m.vertex(t, 0)), m.pos(m.vertex(t, 1)), m.pos(m.vertex(t, 2)));
-      c.min_all = std::min(c.min_all, std::max(q, 0.0));
-      if (q < threshold) c.bad.push_back(t.value);
-    }
-  });
-  BlockScan all;
-  for (const BlockScan& c : chunks) {
-    all.min_all = std::min(all.min_all, c.min_all);
-    all.bad.insert(all.bad.end(), c.bad.begin(), c.bad.end());
-  }
-  return all;
-}
 
 // Calls fn(t) for the triangles round the origin of s (a side of a live triangle): one way
 // round up to a hull edge, then the other way. At most as many steps as slots.
@@ -100,19 +72,19 @@ PartitionOptions block_counts(std::uint32_t per_block) {
 
 // Cuts the bad triangles into blocks and lets each block, in order, claim its bad triangles
 // and kBlockRings rings of stars round them: owner[t] names the block of slot t.
-std::vector<Block> claim_blocks(const TriangleStore& m, const std::vector<std::uint32_t>& bad,
+std::vector<Block> claim_blocks(const TriangleStore& m, const std::vector<BadTri>& bad,
                                 std::uint32_t per_block, std::vector<std::uint32_t>& owner) {
   const std::uint32_t k = part_count(bad.size(), block_counts(per_block));
   std::vector<Vec2> centroid(bad.size());
   for (std::size_t i = 0; i < bad.size(); ++i) {
-    const TriId t{bad[i]};
+    const TriId t{bad[i].t};
     centroid[i] = (m.pos(m.vertex(t, 0)) + m.pos(m.vertex(t, 1)) + m.pos(m.vertex(t, 2))) * (1.0 / 3);
   }
   const std::vector<double> weight(bad.size(), 1.0);
   const std::vector<std::uint32_t> part = bisect_parts(centroid, weight, k);
   std::vector<Block> blocks(k);
   std::vector<std::vector<std::uint32_t>> seeds(k);
-  for (std::size_t i = 0; i < bad.size(); ++i) seeds[part[i]].push_back(bad[i]), ++blocks[part[i]].bad;
+  for (std::size_t i = 0; i < bad.size(); ++i) seeds[part[i]].push_back(bad[i].t), ++blocks[part[i]].bad;
   owner.assign(m.num_slots(), kUnclaimed);
   std::vector<std::uint32_t> front, grown;
   for (std::uint32_t b = 0; b < k; ++b) {
@@ -254,13 +226,14 @@ OptimizeStats optimize_in_blocks(TriangleStore& m, std::uint32_t fixed_count, co
   OptimizeOptions serial = opt;
   serial.block_min_triangles = 0;
   const int threads = std::max(opt.threads, 1);
-  const BlockScan before = scan_blocked(m, opt.threshold, threads);
-  if (before.bad.size() < 2 * std::uint64_t{std::max<std::uint32_t>(opt.block_bad, 1)}) return optimize_quality(m, fixed_count, serial);
+  std::vector<BadTri> bad;
+  const double min_before = scan_plane_bad(m, opt.threshold, threads, nullptr, bad);
+  if (bad.size() < 2 * std::uint64_t{std::max<std::uint32_t>(opt.block_bad, 1)}) return optimize_quality(m, fixed_count, serial);
   OptimizeStats st;
-  st.bad_before = static_cast<std::uint32_t>(before.bad.size());
-  st.min_before = before.min_all;
+  st.bad_before = static_cast<std::uint32_t>(bad.size());
+  st.min_before = min_before;
   std::vector<std::uint32_t> owner;
-  std::vector<Block> blocks = claim_blocks(m, before.bad, opt.block_bad, owner);
+  std::vector<Block> blocks = claim_blocks(m, bad, opt.block_bad, owner);
   const std::vector<std::uint8_t> border = border_vertices(m, owner);
   // The face's bank of sacrifices (optimize.h: max_share_loss) shared by the blocks as
   // their bad triangles are: no block may spend another's.
@@ -271,7 +244,7 @@ OptimizeStats optimize_in_blocks(TriangleStore& m, std::uint32_t fixed_count, co
     TriangleStore sub = extract_block(m, static_cast<std::uint32_t>(b), owner, blk, verts);
     OptimizeOptions bo = serial;
     bo.threads = 1;
-    bo.max_share_loss = bank * blk.bad / double(before.bad.size()) / double(sub.num_triangles());
+    bo.max_share_loss = bank * blk.bad / double(bad.size()) / double(sub.num_triangles());
     const std::uint32_t fixed =
         static_cast<std::uint32_t>(std::lower_bound(verts.begin(), verts.end(), fixed_count) - verts.begin());
     blk.st = optimize_quality(sub, fixed, bo);
@@ -287,9 +260,9 @@ OptimizeStats optimize_in_blocks(TriangleStore& m, std::uint32_t fixed_count, co
   serial.seeds = &seeds;
   serial.max_share_loss = 0;
   add_counts(st, optimize_quality(m, fixed_count, serial));
-  const BlockScan after = scan_blocked(m, opt.threshold, threads);
-  st.bad_after = static_cast<std::uint32_t>(after.bad.size());
-  st.min_after = after.min_all;
+  bad.clear();
+  st.min_after = scan_plane_bad(m, opt.threshold, threads, nullptr, bad);
+  st.bad_after = static_cast<std::uint32_t>(bad.size());
   return st;
 }
 
