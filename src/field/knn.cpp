@@ -16,6 +16,7 @@
 #include <flann/flann.hpp>
 
 #include "field/field.h"
+#include "field/near_tree.h"
 
 namespace sm::field {
 
@@ -118,149 +119,17 @@ std::vector<std::uint32_t> morton_order(std::span<const Vec3> q) {
   return order;
 }
 
-// The exact nearest-point tree of our own: a k-d tree over the points, split at the
-// median of the widest side of each cell's box, leaves of at most kNearLeaf points
-// whose coordinates lie together (x, y, z arrays in leaf order). A cell is skipped only
-// when the squared distance from the query to its box is above the best so far: for a
-// point inside the box every per-axis gap, computed in doubles, is at most the point's
-// (rounding is monotone), so the box's figure is never above any of its points' squared
-// distance, and a point at exactly the best distance with a smaller index is still seen.
-//
-//   node k: box lo[3], hi[3]; a leaf holds x/y/z/id[begin .. end); an inner node's two
-//   children are nodes child and child + 1 (nearer one searched first)
-class NearTree {
- public:
-  explicit NearTree(const std::vector<Vec3>& pts) {
-    const std::size_t n = pts.size();
-    std::vector<std::uint32_t> ids(n);
-    for (std::size_t i = 0; i < n; ++i) ids[i] = static_cast<std::uint32_t>(i);
-    nodes_.reserve(2 * (n / kNearLeaf + 1));
-    nodes_.push_back({});
-    build(pts, ids, 0, 0, static_cast<std::uint32_t>(n), 0);
-    x_.resize(n), y_.resize(n), z_.resize(n), id_ = ids;
-    for (std::size_t k = 0; k < n; ++k) x_[k] = pts[ids[k]].x, y_[k] = pts[ids[k]].y, z_[k] = pts[ids[k]].z;
-  }
-
-  /// Lowers (best2, best) to the nearest point's squared distance and index when it is
-  /// nearer, or as near with a smaller index; `best` = kNoTie lets only a strictly nearer
-  /// point in (a cap, not a candidate).
-  void search(const Vec3& q, double& best2, std::uint32_t& best) const {
-    walk(q, best2, [&](std::uint32_t m, double d2) {
-      if (d2 < best2 || (d2 == best2 && id_[m] < best)) best2 = d2, best = id_[m];
-    });
-  }
-
-  /// Calls visit(index, squared distance) for each point nearer than sqrt(bound2), in the
-  /// tree's order; bound2 becomes min(bound2, what visit returns), and cells beyond it
-  /// are skipped.
-  void visit(const Vec3& q, double bound2, const std::function<double(std::uint32_t, double)>& fn) const {
-    walk(q, bound2, [&](std::uint32_t m, double d2) {
-      if (d2 < bound2) bound2 = std::min(bound2, fn(id_[m], d2));
-    });
-  }
-
-  /// The "index" that no point's index is below: a tie with it never wins.
-  static constexpr std::uint32_t kNoTie = 0;
-
- private:
-  /// The descent search and visit share: the nearer child first, a cell entered only while
-  /// its box is no farther than `limit`, which `leaf(slot, squared distance)` may lower for
-  /// each point of a leaf entered. A stack of kMaxDepth pending cells bounds it.
-  template <class Leaf>
-  void walk(const Vec3& q, const double& limit, Leaf&& leaf) const {
-    std::array<std::pair<std::uint32_t, double>, kMaxDepth> stack;
-    std::size_t top = 0;
-    std::uint32_t k = 0;
-    double bound = box2(nodes_[0], q);
-    for (;;) {
-      if (bound <= limit) {  // false for a NaN query
-        const Node& nd = nodes_[k];
-        if (nd.child != 0) {
-          const double b1 = box2(nodes_[nd.child], q), b2 = box2(nodes_[nd.child + 1], q);
-          const bool first_nearer = b1 <= b2;
-          stack[top++] = first_nearer ? std::pair{nd.child + 1, b2} : std::pair{nd.child, b1};
-          k = first_nearer ? nd.child : nd.child + 1;
-          bound = first_nearer ? b1 : b2;
-          continue;
-        }
-        for (std::uint32_t m = nd.begin; m < nd.end; ++m) {
-          const double dx = x_[m] - q.x, dy = y_[m] - q.y, dz = z_[m] - q.z;
-          leaf(m, dx * dx + dy * dy + dz * dz);
-        }
-      }
-      if (top == 0) return;
-      --top;
-      k = stack[top].first;
-      bound = stack[top].second;
-    }
-  }
-
-  static constexpr std::uint32_t kNearLeaf = 8;
-  // Each level halves the points, so the depth stays below log2(2^32 / kNearLeaf) + 1.
-  static constexpr std::size_t kMaxDepth = 32;
-  struct Node {
-    double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
-    std::uint32_t begin = 0, end = 0;
-    std::uint32_t child = 0;  // 0: a leaf
-  };
-
-  static double box2(const Node& nd, const Vec3& q) {
-    const double c[3] = {q.x, q.y, q.z};
-    double s = 0;
-    for (int a = 0; a < 3; ++a) {
-      const double g = c[a] < nd.lo[a] ? nd.lo[a] - c[a] : c[a] > nd.hi[a] ? c[a] - nd.hi[a] : 0.0;
-      s += g * g;
-    }
-    return s;
-  }
-
-  void build(const std::vector<Vec3>& pts, std::vector<std::uint32_t>& ids, std::uint32_t k, std::uint32_t begin,
-             std::uint32_t end, std::size_t depth) {
-    Node nd;
-    nd.begin = begin, nd.end = end;
-    for (int a = 0; a < 3; ++a) nd.lo[a] = std::numeric_limits<double>::infinity(), nd.hi[a] = -nd.lo[a];
-    for (std::uint32_t m = begin; m < end; ++m) {
-      const Vec3& p = pts[ids[m]];
-      const double c[3] = {p.x, p.y, p.z};
-      for (int a = 0; a < 3; ++a) nd.lo[a] = std::min(nd.lo[a], c[a]), nd.hi[a] = std::max(nd.hi[a], c[a]);
-    }
-    if (end - begin > kNearLeaf && depth + 1 < kMaxDepth) {
-      int axis = 0;
-      for (int a = 1; a < 3; ++a)
-        if (nd.hi[a] - nd.lo[a] > nd.hi[axis] - nd.lo[axis]) axis = a;
-      // Point i's coordinate on the axis: the axis-th double of pts[i] (Vec3 is three doubles).
-      const double* coord = &pts[0].x + axis;
-      const std::uint32_t mid = begin + (end - begin) / 2;
-      std::nth_element(ids.begin() + begin, ids.begin() + mid, ids.begin() + end,
-                       [coord](std::uint32_t i, std::uint32_t j) { return coord[3 * i] < coord[3 * j]; });
-      nd.child = static_cast<std::uint32_t>(nodes_.size());
-      nodes_.push_back({});
-      nodes_.push_back({});
-      nodes_[k] = nd;
-      build(pts, ids, nd.child, begin, mid, depth + 1);
-      build(pts, ids, nd.child + 1, mid, end, depth + 1);
-      return;
-    }
-    nodes_[k] = nd;
-  }
-
-  std::vector<Node> nodes_;
-  std::vector<double> x_, y_, z_;
-  std::vector<std::uint32_t> id_;
-};
-
 }  // namespace
 
 struct KdTree::Impl {
-  explicit Impl(const std::vector<Vec3>& pts) : near(pts) {}
-  NearTree near;               // ours: the exact searches and visit_within
   std::unique_ptr<Tree> flann;  // FLANN's, built only for approximate searches (eps > 0)
 };
 
 KdTree::KdTree(std::vector<Vec3> points, KnnOptions opts) : points_(std::move(points)), opts_(opts) {
   static_assert(sizeof(Vec3) == 3 * sizeof(double));
   if (points_.empty()) return;
-  impl_ = std::make_unique<Impl>(points_);
+  near_ = std::make_unique<NearTree>(points_);
+  impl_ = std::make_unique<Impl>();
   if (opts_.eps > 0) {
     flann::Matrix<double> data(reinterpret_cast<double*>(points_.data()), points_.size(), 3);
     impl_->flann = std::make_unique<Tree>(data, flann::KDTreeSingleIndexParams(opts_.leaf_size, /*reorder=*/true));
@@ -318,7 +187,7 @@ void KdTree::nearest_capped(std::span<const Vec3> queries, std::span<const doubl
         const double seed2 = norm2(points_[prev] - q);
         if (seed2 < far2) best2 = seed2, best = prev;
       }
-      impl_->near.search(q, best2, best);
+      near_->search_up(q, best2, best);
       found = best2 < far2;
     } else {
       // A (1 + eps)-approximate search: FLANN's.
@@ -361,7 +230,7 @@ void KdTree::nearest_within(std::span<const Vec3> queries, std::span<const doubl
       const double seed2 = norm2(points_[prev] - q);
       if (seed2 < far2) best2 = seed2, best = prev;
     }
-    impl_->near.search(q, best2, best);
+    near_->search_up(q, best2, best);
     if (!(best2 < far2)) {
       dist[i] = std::isfinite(q.x + q.y + q.z) ? std::numeric_limits<double>::infinity()
                                               : std::numeric_limits<double>::quiet_NaN();
@@ -372,12 +241,6 @@ void KdTree::nearest_within(std::span<const Vec3> queries, std::span<const doubl
     dist[i] = std::sqrt(best2);
     index[i] = best;
   }
-}
-
-void KdTree::visit_within(const Vec3& q, double bound2,
-                          const std::function<double(std::uint32_t, double)>& visit) const {
-  if (!impl_ || !(bound2 > 0)) return;
-  impl_->near.visit(q, bound2, visit);
 }
 
 void nearest_brute_force(std::span<const Vec3> points, std::span<const Vec3> queries,

@@ -4,12 +4,12 @@
 #pragma once
 
 #include <cstdint>
-#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
 
 #include "base/vec.h"
+#include "field/near_tree.h"
 
 namespace sm::field {
 
@@ -55,8 +55,11 @@ class KdTree {
   /// bound, which may only shrink: cells beyond it are skipped. For searches
   /// whose criterion is not the plain distance but is bounded below by it
   /// (ChannelWidth's inscribed-ball width).
-  void visit_within(const Vec3& q, double bound2,
-                    const std::function<double(std::uint32_t, double)>& visit) const;
+  /// A template, inlined into the leaves' loop (no std::function call a point).
+  template <class Visit>
+  void visit_within(const Vec3& q, double bound2, Visit&& visit) const {
+    if (near_ && bound2 > 0) near_->visit(q, bound2, visit);
+  }
 
  private:
   // nearest() with the search cut at squared distance far2 (one value, or one per query;
@@ -66,6 +69,7 @@ class KdTree {
 
   struct Impl;
   std::vector<Vec3> points_;  // FLANN indexes this memory in place
+  std::unique_ptr<NearTree> near_;  // ours: the exact searches and visit_within
   KnnOptions opts_;
   std::unique_ptr<Impl> impl_;
 };

@@ -265,3 +265,66 @@ TEST_CASE("knn: visit_within sees every point within the bound, and prunes by th
     CHECK(visits < 200);  // pruned: not the 5000 points within the first bound
   }
 }
+
+// The two searches of the tree of our own (from the root, and from the query's leaf
+// upwards) give brute force's answer, ties included (of several points at the same
+// distance the smallest index), whatever the candidate they start with: none, a cap that
+// lets only strictly nearer points in, or a point of the set (as the batches' seeds).
+TEST_CASE("knn: NearTree's search from the leaf up equals the descent and brute force, ties included") {
+  std::mt19937 rng(23);
+  std::uniform_int_distribution<int> cell(0, 15), half(0, 1), pick(0, 3);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (const bool lattice : {true, false}) {
+    std::vector<Vec3> pts(4000);
+    for (Vec3& p : pts)
+      p = lattice ? Vec3{double(cell(rng)), double(cell(rng)), double(cell(rng))} : Vec3{u(rng), u(rng), 0.05 * u(rng)};
+    for (std::size_t i = 0; i < 300; ++i) pts[3500 + i] = pts[i * 3];  // repeats with a larger index
+    const NearTree tree(pts);
+    std::size_t ties = 0;
+    for (int n = 0; n < 4000; ++n) {
+      Vec3 q = lattice ? Vec3{cell(rng) + 0.5 * half(rng), cell(rng) + 0.5 * half(rng), cell(rng) + 0.5 * half(rng)}
+                       : Vec3{1.3 * u(rng), 1.3 * u(rng), 0.1 * u(rng)};
+      if (n % 97 == 0) q = q * 5.0;  // far outside the points
+      // Brute force: the least (squared distance, index).
+      double want2 = std::numeric_limits<double>::infinity();
+      std::uint32_t want = 0;
+      std::size_t at_best = 0;
+      for (std::uint32_t j = 0; j < pts.size(); ++j) {
+        const double d2 = norm2(pts[j] - q);
+        if (d2 < want2) want2 = d2, want = j, at_best = 0;
+        at_best += d2 == want2;
+      }
+      ties += at_best > 1;
+      // The start: nothing, a cap (the answer's distance or beyond), or a point as candidate.
+      double start2 = std::numeric_limits<double>::infinity();
+      std::uint32_t start = NearTree::kNoTie;
+      const int how = pick(rng);
+      if (how == 1) start2 = want2 * (1 + half(rng));
+      if (how >= 2) {
+        start = static_cast<std::uint32_t>(rng() % pts.size());
+        start2 = norm2(pts[start] - q);
+      }
+      double d_down = start2, d_up = start2;
+      std::uint32_t i_down = start, i_up = start;
+      tree.search(q, d_down, i_down);
+      tree.search_up(q, d_up, i_up);
+      CHECK(d_up == d_down);
+      CHECK(i_up == i_down);
+      if (how == 1 && start2 == want2) {  // a cap at the answer: nothing strictly nearer
+        CHECK(i_up == NearTree::kNoTie);
+        CHECK(d_up == want2);
+      } else {
+        CHECK(d_up == want2);
+        CHECK(i_up == want);
+      }
+    }
+    if (lattice) CHECK(ties > 1000);
+  }
+  // A non-finite query finds nothing.
+  const NearTree tree(std::vector<Vec3>{{0, 0, 0}, {1, 1, 1}});
+  double d2 = std::numeric_limits<double>::infinity();
+  std::uint32_t best = NearTree::kNoTie;
+  tree.search_up({std::nan(""), 0, 0}, d2, best);
+  CHECK(best == NearTree::kNoTie);
+  CHECK(std::isinf(d2));
+}
