@@ -282,7 +282,7 @@ std::uint64_t Adapter::smooth_pass(bool all) {
   moved_.clear();
   for (std::uint32_t v : work_) {
     if (fixed_[v] || !m_.out_side[v].valid()) continue;
-    if (!vertex_ring(m_, VertexId{v}, ring_)) continue;
+    if (vertex_ring(m_, VertexId{v}, ring_) != FanEnd::Closed) continue;
     Vec2 sum{0, 0};
     for (Side x : ring_) sum += m_.pos(m_.dest(x));
     const Vec2 p = sum / static_cast<double>(ring_.size());

@@ -315,16 +315,28 @@ std::vector<std::uint32_t> bisect_parts(std::span<const Vec2> points, std::span<
       total += weights[idx[i]];
     }
     const bool along_x = x1 - x0 >= y1 - y0;
-    std::sort(idx.begin() + begin, idx.begin() + end, [&](std::uint32_t a, std::uint32_t b) {
+    const auto before = [&](std::uint32_t a, std::uint32_t b) {
       const double ca = along_x ? points[a].x : points[a].y, cb = along_x ? points[b].x : points[b].y;
       return ca != cb ? ca < cb : a < b;
-    });
+    };
     // The left half takes items while its weight stays below half of the total; both
-    // halves keep at least one item when there are two.
+    // halves keep at least one item when there are two. With equal weights that count
+    // does not depend on the order (the same sums), and only which items fall on each
+    // side matters: a selection, not a sort (the blocked quality pass cuts millions).
+    const double w0 = weights[idx[begin]];
+    bool equal = true;
+    for (std::size_t i = begin; i < end && equal; ++i) equal = weights[idx[i]] == w0;
     std::size_t mid = begin;
     double acc = 0;
-    while (mid < end && acc + weights[idx[mid]] <= 0.5 * total) acc += weights[idx[mid++]];
-    if (end - begin >= 2) mid = std::clamp(mid, begin + 1, end - 1);
+    if (equal) {
+      while (mid < end && acc + w0 <= 0.5 * total) acc += w0, ++mid;
+      if (end - begin >= 2) mid = std::clamp(mid, begin + 1, end - 1);
+      std::nth_element(idx.begin() + begin, idx.begin() + mid, idx.begin() + end, before);
+    } else {
+      std::sort(idx.begin() + begin, idx.begin() + end, before);
+      while (mid < end && acc + weights[idx[mid]] <= 0.5 * total) acc += weights[idx[mid++]];
+      if (end - begin >= 2) mid = std::clamp(mid, begin + 1, end - 1);
+    }
     self(self, begin, mid, first, count / 2);
     self(self, mid, end, first + count / 2, count - count / 2);
   };

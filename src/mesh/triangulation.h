@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "base/id.h"
@@ -126,6 +127,57 @@ struct TriangleStore {
   void save_for_undo(TriId t);
   void save_for_undo(VertexId v);
 };
+
+/// How a walk round a vertex's fan (for_each_fan_side) ended.
+enum class FanEnd : std::uint8_t {
+  Closed,   // back at the first side: the vertex is inside the triangulation
+  Open,     // a hull edge (or a removed neighbour) reached both ways round
+  Stopped,  // the caller's function asked to stop
+  Corrupt,  // more steps than the store has triangle slots: the twins do not form a fan
+};
+
+/// Calls fn(s) for each side s leaving v = org(start), start a side of a live triangle:
+/// counter-clockwise from start until back at start or at a hull edge, then, for an open
+/// fan, clockwise from start (the sides before it, nearest first) to the other hull edge.
+/// fn returns void, or bool (false stops the walk: FanEnd::Stopped). A fan holds each
+/// triangle once, so the walk takes at most num_slots() steps; a longer one is a corrupt
+/// store and stops as FanEnd::Corrupt, which the caller reports or refuses.
+template <class Fn>
+FanEnd for_each_fan_side(const TriangleStore& m, Side start, Fn&& fn) {
+  const auto visit = [&fn](Side s) {
+    if constexpr (std::is_void_v<std::invoke_result_t<Fn&, Side>>) {
+      fn(s);
+      return true;
+    } else {
+      return static_cast<bool>(fn(s));
+    }
+  };
+  const std::uint32_t slots = m.num_slots();
+  std::uint32_t used = slots + 1;  // triangles met counter-clockwise, once the hull is reached
+  // Counter-clockwise: twin(prev(s)) leaves v in the next triangle.
+  Side s = start;
+  for (std::uint32_t k = 0; k < slots; ++k) {
+    if (!visit(s)) return FanEnd::Stopped;
+    const Side n = m.twin[prev(s).value];
+    if (n == start) return FanEnd::Closed;
+    if (!n.valid()) {
+      used = k + 1;
+      break;
+    }
+    s = n;
+  }
+  if (used > slots) return FanEnd::Corrupt;
+  // Clockwise from the start: next(twin(s)) leaves v in the previous triangle.
+  s = start;
+  for (std::uint32_t k = used; k <= slots; ++k) {
+    const Side o = m.twin[s.value];
+    if (!o.valid()) return FanEnd::Open;
+    if (k == slots) break;
+    s = next(o);
+    if (!visit(s)) return FanEnd::Stopped;
+  }
+  return FanEnd::Corrupt;
+}
 
 /// A store from vertex positions and counter-clockwise triangles; twins are
 /// found by matching opposite sides. Returns false (store left empty) when

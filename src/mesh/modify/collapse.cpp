@@ -3,34 +3,32 @@
 #include "mesh/modify/collapse.h"
 
 #include <algorithm>
+#include <cstddef>
 
 namespace sm {
 
-bool vertex_ring(const TriangleStore& m, VertexId v, std::vector<Side>& out) {
+FanEnd vertex_ring(const TriangleStore& m, VertexId v, std::vector<Side>& out) {
   out.clear();
   const Side start = m.out_side[v.value];
-  if (!start.valid()) return false;
-  // Counter-clockwise (twin(prev(s)) leaves v in the next triangle): back
-  // at the start for an interior vertex, the usual case.
-  for (Side s = start;;) {
-    out.push_back(s);
-    const Side n = m.twin[prev(s).value];
-    if (!n.valid()) break;
-    if (n == start) return true;
-    s = n;
-  }
-  // Open fan: clockwise (next(twin(s)) leaves v) to its first side, then
-  // counter-clockwise again to the last.
-  Side first = start;
-  for (Side o = m.twin[first.value]; o.valid(); o = m.twin[first.value]) first = next(o);
-  out.clear();
-  for (Side s = first; s.valid(); s = m.twin[prev(s).value]) out.push_back(s);
-  return false;
+  if (!start.valid()) return FanEnd::Open;
+  const FanEnd end = for_each_fan_side(m, start, [&out](Side s) { out.push_back(s); });
+  if (end == FanEnd::Corrupt) out.clear();
+  if (end != FanEnd::Open) return end;
+  // The walk met start up to the hull counter-clockwise (the last of those has no twin
+  // after it), then the sides before start clockwise, nearest first: those come first,
+  // reversed, so the ring starts at the clockwise-most side.
+  std::size_t last = 0;
+  while (last + 1 < out.size() && m.twin[prev(out[last]).value].valid()) ++last;
+  std::reverse(out.begin() + static_cast<std::ptrdiff_t>(last) + 1, out.end());
+  std::rotate(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(last) + 1, out.end());
+  return FanEnd::Open;
 }
 
 CollapseCheck can_collapse(const TriangleStore& m, Side s, std::vector<Side>& ring, PredicateStats* st) {
   const VertexId v = m.org(s), w = m.dest(s);
-  if (!vertex_ring(m, v, ring)) return CollapseCheck::Constrained;
+  const FanEnd fan = vertex_ring(m, v, ring);
+  if (fan == FanEnd::Corrupt) return CollapseCheck::CorruptFan;
+  if (fan != FanEnd::Closed) return CollapseCheck::Constrained;
   for (Side x : ring)
     if (m.constrained(x)) return CollapseCheck::Constrained;
   const Side ts = m.twin[s.value];

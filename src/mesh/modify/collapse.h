@@ -10,10 +10,11 @@
 
 namespace sm {
 
-/// The sides leaving v in counter-clockwise order round v. For a vertex on
-/// the hull the fan is open and the first side is the clockwise-most one.
-/// Returns true when the fan is closed.
-bool vertex_ring(const TriangleStore& m, VertexId v, std::vector<Side>& out);
+/// The sides leaving v in counter-clockwise order round v (for_each_fan_side,
+/// triangulation.h): FanEnd::Closed for an inner vertex; FanEnd::Open on the hull,
+/// the first side then the clockwise-most one (an isolated vertex: Open, no sides);
+/// FanEnd::Corrupt, with out empty, when the twins round v do not form a fan.
+FanEnd vertex_ring(const TriangleStore& m, VertexId v, std::vector<Side>& out);
 
 /// Why a collapse was refused.
 enum class CollapseCheck : std::uint8_t {
@@ -21,6 +22,7 @@ enum class CollapseCheck : std::uint8_t {
   Constrained,   // v lies on a constrained or hull edge (it would leave the boundary)
   Link,          // v and w share a neighbour other than the two apexes (topology would break)
   Inverted,      // a triangle of v's ball would turn clockwise or flat at w (exact orient2d)
+  CorruptFan,    // the twins round v do not form a fan (a corrupt store: refused, not walked)
 };
 
 /// Whether the edge of side s (v -> w) can collapse v onto w: v is on no

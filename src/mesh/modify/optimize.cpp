@@ -219,18 +219,14 @@ class Optimizer {
     star_tris_.clear();
     fail_first_ = SIZE_MAX;
     if (v.value < fixed_count_ || !m_.out_side_ok(v)) return false;
-    const Side start = m_.out_side[v.value];
-    Side s = start;
-    do {
+    // A star on a constrained edge or the hull is not free; a corrupt fan is left alone.
+    const FanEnd end = for_each_fan_side(m_, m_.out_side[v.value], [this](Side s) {
       if (m_.constrained(s)) return false;
       add_star_edge(m_.dest(s), m_.apex(s));
       star_tris_.push_back(tri_of(s).value);
-      const Side t = m_.twin[prev(s).value];
-      if (!t.valid()) return false;
-      s = t;
-      if (star_.size() > m_.corner.size()) return false;  // not a fan: leave it alone
-    } while (s != start);
-    return star_.size() >= 3;
+      return true;
+    });
+    return end == FanEnd::Closed && star_.size() >= 3;
   }
 
   void add_star_edge(VertexId b, VertexId c) {

@@ -24,28 +24,6 @@ constexpr std::uint32_t kMaxBlocks = 1024;
 constexpr int kBlockRings = 2;
 constexpr std::uint32_t kUnclaimed = 0xffffffffu;
 
-// Calls fn(t) for the triangles round the origin of s (a side of a live triangle): one way
-// round up to a hull edge, then the other way. At most as many steps as slots.
-template <class Fn>
-void for_each_round(const TriangleStore& m, Side s0, Fn&& fn) {
-  const std::size_t limit = m.num_slots() + 1;
-  Side s = s0;
-  for (std::size_t k = 0; k < limit; ++k) {
-    fn(tri_of(s).value);
-    const Side t = m.twin[prev(s).value];
-    if (!t.valid()) break;
-    if (t == s0) return;
-    s = t;
-  }
-  s = s0;
-  for (std::size_t k = 0; k < limit; ++k) {
-    const Side o = m.twin[s.value];
-    if (!o.valid()) return;
-    s = next(o);
-    fn(tri_of(s).value);
-  }
-}
-
 // A side of a block's store whose twin lies outside the block: its ends (global ids) and,
 // when it is a border rather than a hull edge, the original twin.
 struct BlockSide {
@@ -70,6 +48,16 @@ PartitionOptions block_counts(std::uint32_t per_block) {
   return po;
 }
 
+// Block b claims the unclaimed triangles round org(s), appending them to tris and grown.
+void claim_fan(const TriangleStore& m, Side s, std::uint32_t b, std::vector<std::uint32_t>& owner,
+               std::vector<std::uint32_t>& tris, std::vector<std::uint32_t>& grown) {
+  const FanEnd end = for_each_fan_side(m, s, [&](Side x) {
+    const std::uint32_t u = tri_of(x).value;
+    if (owner[u] == kUnclaimed) owner[u] = b, tris.push_back(u), grown.push_back(u);
+  });
+  SM_ASSERT(end != FanEnd::Corrupt, "optimize_in_blocks: a vertex's fan does not close within the store");
+}
+
 // Cuts the bad triangles into blocks and lets each block, in order, claim its bad triangles
 // and kBlockRings rings of stars round them: owner[t] names the block of slot t.
 std::vector<Block> claim_blocks(const TriangleStore& m, const std::vector<BadTri>& bad,
@@ -86,6 +74,9 @@ std::vector<Block> claim_blocks(const TriangleStore& m, const std::vector<BadTri
   std::vector<std::vector<std::uint32_t>> seeds(k);
   for (std::size_t i = 0; i < bad.size(); ++i) seeds[part[i]].push_back(bad[i].t), ++blocks[part[i]].bad;
   owner.assign(m.num_slots(), kUnclaimed);
+  // walked[v] == b + 1: block b walked v's fan, which then holds no unclaimed triangle, so
+  // a second walk (from another triangle of the front, or the next ring) would claim nothing.
+  std::vector<std::uint32_t> walked(m.num_vertices(), 0);
   std::vector<std::uint32_t> front, grown;
   for (std::uint32_t b = 0; b < k; ++b) {
     std::vector<std::uint32_t>& tris = blocks[b].tris;
@@ -95,10 +86,12 @@ std::vector<Block> claim_blocks(const TriangleStore& m, const std::vector<BadTri
     for (int ring = 0; ring < kBlockRings; ++ring) {
       grown.clear();
       for (std::uint32_t t : front)
-        for (std::uint32_t e = 0; e < 3; ++e)
-          for_each_round(m, side_of(TriId{t}, e), [&](std::uint32_t u) {
-            if (owner[u] == kUnclaimed) owner[u] = b, tris.push_back(u), grown.push_back(u);
-          });
+        for (std::uint32_t e = 0; e < 3; ++e) {
+          const Side s = side_of(TriId{t}, e);
+          if (walked[m.corner[s.value].value] == b + 1) continue;
+          walked[m.corner[s.value].value] = b + 1;
+          claim_fan(m, s, b, owner, tris, grown);
+        }
       front.swap(grown);
     }
     std::sort(tris.begin(), tris.end());
@@ -119,20 +112,51 @@ std::vector<std::uint8_t> border_vertices(const TriangleStore& m, const std::vec
   return border;
 }
 
+// Scratch shared by the blocks on the threads, each writing only entries of its own:
+// slot_local[t] for the triangles it owns, vertex_local[v] for its inner vertices (one that
+// is no border vertex has all its triangles in one block). Lookups in them replace binary
+// searches in the block's lists, which cost as much as the rest of the copy.
+struct BlockMaps {
+  std::vector<std::uint32_t> slot_local;    // per triangle slot: its index in its block
+  std::vector<std::uint32_t> vertex_local;  // per vertex: kUnclaimed, or its local id
+};
+
 // Block b's triangles as a store of their own: vertices by increasing global id (verts),
 // triangles in slot order, twins outside the block cut (recorded in blk.outer).
 TriangleStore extract_block(const TriangleStore& m, std::uint32_t b, const std::vector<std::uint32_t>& owner,
-                            Block& blk, std::vector<std::uint32_t>& verts) {
+                            const std::vector<std::uint8_t>& border, BlockMaps& maps, Block& blk,
+                            std::vector<std::uint32_t>& verts) {
+  const std::uint32_t n = static_cast<std::uint32_t>(blk.tris.size());
+  // The inner vertices once each (the first sight marks them), the border ones sorted
+  // apart (other blocks see them too), then both lists merged by global id.
   verts.clear();
-  for (std::uint32_t t : blk.tris)
-    for (std::uint32_t e = 0; e < 3; ++e) verts.push_back(m.vertex(TriId{t}, e).value);
+  std::vector<std::uint32_t> shared;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const std::uint32_t t = blk.tris[i];
+    maps.slot_local[t] = i;
+    for (std::uint32_t e = 0; e < 3; ++e) {
+      const std::uint32_t v = m.corner[3 * t + e].value;
+      if (border[v]) {
+        shared.push_back(v);
+      } else if (maps.vertex_local[v] == kUnclaimed) {
+        maps.vertex_local[v] = 0;
+        verts.push_back(v);
+      }
+    }
+  }
   std::sort(verts.begin(), verts.end());
-  verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+  std::sort(shared.begin(), shared.end());
+  shared.erase(std::unique(shared.begin(), shared.end()), shared.end());
+  const std::size_t inner = verts.size();
+  verts.insert(verts.end(), shared.begin(), shared.end());
+  std::inplace_merge(verts.begin(), verts.begin() + static_cast<std::ptrdiff_t>(inner), verts.end());
+  for (std::uint32_t j = 0; j < verts.size(); ++j)
+    if (!border[verts[j]]) maps.vertex_local[verts[j]] = j;
   const auto local_vertex = [&](VertexId v) {
+    if (!border[v.value]) return VertexId{maps.vertex_local[v.value]};
     return VertexId{static_cast<std::uint32_t>(std::lower_bound(verts.begin(), verts.end(), v.value) - verts.begin())};
   };
   TriangleStore sub;
-  const std::uint32_t n = static_cast<std::uint32_t>(blk.tris.size());
   sub.xy.resize(verts.size());
   for (std::size_t j = 0; j < verts.size(); ++j) sub.xy[j] = m.xy[verts[j]];
   sub.corner.resize(3 * std::size_t{n});
@@ -151,8 +175,7 @@ TriangleStore extract_block(const TriangleStore& m, std::uint32_t b, const std::
         blk.outer.push_back({m.org(s).value, m.dest(s).value, o});
         continue;
       }
-      const auto j = static_cast<std::uint32_t>(std::lower_bound(blk.tris.begin(), blk.tris.end(), u) - blk.tris.begin());
-      sub.twin[3 * i + e] = Side{3 * j + o.value % 3};
+      sub.twin[3 * i + e] = Side{3 * maps.slot_local[u] + o.value % 3};
     }
   sub.rebuild_out_side();
   return sub;
@@ -235,13 +258,14 @@ OptimizeStats optimize_in_blocks(TriangleStore& m, std::uint32_t fixed_count, co
   std::vector<std::uint32_t> owner;
   std::vector<Block> blocks = claim_blocks(m, bad, opt.block_bad, owner);
   const std::vector<std::uint8_t> border = border_vertices(m, owner);
+  BlockMaps maps{std::vector<std::uint32_t>(m.num_slots()), std::vector<std::uint32_t>(m.num_vertices(), kUnclaimed)};
   // The face's bank of sacrifices (optimize.h: max_share_loss) shared by the blocks as
   // their bad triangles are: no block may spend another's.
   const double bank = std::max(0.0, opt.max_share_loss) * m.num_triangles();
   parallel_for_chunks(threads, blocks.size(), 1, [&](std::size_t b, std::size_t) {
     Block& blk = blocks[b];
     std::vector<std::uint32_t> verts;
-    TriangleStore sub = extract_block(m, static_cast<std::uint32_t>(b), owner, blk, verts);
+    TriangleStore sub = extract_block(m, static_cast<std::uint32_t>(b), owner, border, maps, blk, verts);
     OptimizeOptions bo = serial;
     bo.threads = 1;
     bo.max_share_loss = bank * blk.bad / double(bad.size()) / double(sub.num_triangles());

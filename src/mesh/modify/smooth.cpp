@@ -77,12 +77,9 @@ SmoothStats smooth_laplacian(TriangleStore& m, int passes, int threads, std::uin
       for (std::size_t v = begin; v < end; ++v) {
         if (fixed[v] || !m.out_side_ok(VertexId{static_cast<std::uint32_t>(v)})) continue;
         sides.clear();
-        const Side start = m.out_side[v];
-        Side s = start;
-        do {
-          sides.push_back(s.value);
-          s = m.twin[prev(s).value];  // a free vertex is on no hull edge: the fan closes
-        } while (s.valid() && s != start && sides.size() <= m.corner.size());
+        // A free vertex is on no hull edge: its fan closes (a corrupt one is left alone).
+        if (for_each_fan_side(m, m.out_side[v], [&sides](Side s) { sides.push_back(s.value); }) != FanEnd::Closed)
+          continue;
         if (sides.size() < 3) continue;
         std::sort(sides.begin(), sides.end());
         Vec2 sum{0, 0};

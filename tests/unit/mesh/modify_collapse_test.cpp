@@ -28,13 +28,39 @@ TriangleStore hexagon(Vec2 c) {
 TEST_CASE("collapse: ring of an interior and of a hull vertex") {
   TriangleStore m = hexagon({0, 0});
   std::vector<Side> ring;
-  CHECK(vertex_ring(m, VertexId{0}, ring));
+  CHECK(vertex_ring(m, VertexId{0}, ring) == FanEnd::Closed);
   CHECK(ring.size() == 6);
   for (std::size_t i = 0; i + 1 < ring.size(); ++i)  // counter-clockwise order
     CHECK(m.dest(ring[i + 1]) == m.apex(ring[i]));
-  CHECK_FALSE(vertex_ring(m, VertexId{1}, ring));
+  CHECK(vertex_ring(m, VertexId{1}, ring) == FanEnd::Open);
   CHECK(ring.size() == 2);
   CHECK(m.dest(ring[1]) == m.apex(ring[0]));
+}
+
+TEST_CASE("collapse: an open ring starts clockwise-most whatever out_side names") {
+  TriangleStore m = hexagon({0, 0});
+  m.kill_triangle(TriId{3});  // (0, 4, 5): the centre's fan opens between 4 and 5
+  for (std::uint32_t t : {0u, 1u, 2u, 4u, 5u}) {
+    m.out_side[0] = side_of(TriId{t}, 0);
+    std::vector<Side> ring;
+    REQUIRE(vertex_ring(m, VertexId{0}, ring) == FanEnd::Open);
+    REQUIRE(ring.size() == 5);
+    CHECK(m.dest(ring.front()) == VertexId{5});
+    CHECK(m.apex(ring.back()) == VertexId{4});
+    for (std::size_t i = 0; i + 1 < ring.size(); ++i) CHECK(m.dest(ring[i + 1]) == m.apex(ring[i]));
+  }
+}
+
+TEST_CASE("collapse: a corrupt fan is refused, not walked") {
+  TriangleStore m = hexagon({0.1, 0.05});
+  // Triangles 2 and 3 point at each other round the centre: counter-clockwise from
+  // triangle 0 the walk enters the loop 2 -> 3 -> 2 and never comes back.
+  m.twin[prev(side_of(TriId{3}, 0)).value] = side_of(TriId{2}, 0);
+  std::vector<Side> ring;
+  m.out_side[0] = side_of(TriId{0}, 0);
+  CHECK(vertex_ring(m, VertexId{0}, ring) == FanEnd::Corrupt);
+  CHECK(ring.empty());
+  CHECK(can_collapse(m, m.side_between(VertexId{0}, VertexId{1}), ring) == CollapseCheck::CorruptFan);
 }
 
 TEST_CASE("collapse: centre of a hexagon onto a corner") {

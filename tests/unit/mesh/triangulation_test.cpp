@@ -239,3 +239,77 @@ TEST_CASE("side_between: a corrupt fan that never comes back ends, with the over
   CHECK(!m.side_between(c, VertexId{2}, &overrun).valid());
   CHECK(overrun);
 }
+
+TEST_CASE("for_each_fan_side: a closed fan, an open one at the hull, a stop, a lone triangle") {
+  TriangleStore m = grid3();
+  std::vector<Side> seen;
+  const auto collect = [&seen](Side s) { seen.push_back(s); };
+  // The centre: six triangles, counter-clockwise, back at the start.
+  const VertexId c{4};
+  CHECK(for_each_fan_side(m, m.out_side[c.value], collect) == FanEnd::Closed);
+  REQUIRE(seen.size() == 6);
+  std::set<std::uint32_t> tris;
+  for (std::size_t i = 0; i < seen.size(); ++i) {
+    CHECK(m.org(seen[i]) == c);
+    tris.insert(tri_of(seen[i]).value);
+    if (i + 1 < seen.size()) CHECK(m.dest(seen[i + 1]) == m.apex(seen[i]));
+  }
+  CHECK(tris.size() == 6);
+  // The middle of the bottom row (vertex 1): open, three triangles, whichever side it
+  // starts from, counter-clockwise to the hull first, then clockwise from the start.
+  const VertexId b{1};
+  std::vector<Side> fan;
+  for (std::uint32_t s = 0; s < m.corner.size(); ++s)
+    if (m.corner[s] == b) fan.push_back(Side{s});
+  REQUIRE(fan.size() == 3);
+  for (Side start : fan) {
+    seen.clear();
+    CHECK(for_each_fan_side(m, start, collect) == FanEnd::Open);
+    REQUIRE(seen.size() == 3);
+    CHECK(seen.front() == start);
+    tris.clear();
+    for (Side s : seen) {
+      CHECK(m.org(s) == b);
+      tris.insert(tri_of(s).value);
+    }
+    CHECK(tris.size() == 3);
+  }
+  // A false from the function stops the walk where it is.
+  seen.clear();
+  CHECK(for_each_fan_side(m, m.out_side[c.value], [&seen](Side s) {
+          seen.push_back(s);
+          return seen.size() < 2;
+        }) == FanEnd::Stopped);
+  CHECK(seen.size() == 2);
+  // A store of one triangle: the open fan holds every slot and still ends as Open.
+  TriangleStore one;
+  REQUIRE(build_triangulation({{0, 0}, {1, 0}, {0, 1}}, {{0, 1, 2}}, one));
+  seen.clear();
+  CHECK(for_each_fan_side(one, side_of(TriId{0}, 1), collect) == FanEnd::Open);
+  CHECK(seen.size() == 1);
+}
+
+TEST_CASE("for_each_fan_side: a corrupt fan stops within the store's slots") {
+  TriangleStore m = grid3();
+  const VertexId c{4};
+  const Side s0 = m.out_side[c.value];
+  const Side s1 = m.twin[prev(s0).value];
+  const Side s2 = m.twin[prev(s1).value];
+  const Side s3 = m.twin[prev(s2).value];
+  REQUIRE((s1.valid() && s2.valid() && s3.valid()));
+  m.twin[prev(s3).value] = s1;  // s1 -> s2 -> s3 -> s1 -> ...: never back to s0, no hull
+  std::size_t calls = 0;
+  CHECK(for_each_fan_side(m, s0, [&calls](Side) { ++calls; }) == FanEnd::Corrupt);
+  CHECK(calls == m.num_slots());
+  // The same loop met clockwise, after an open counter-clockwise part.
+  TriangleStore o = grid3();
+  const Side t0 = o.out_side[c.value];
+  const Side t1 = o.twin[t0.value];            // -> c in the triangle clockwise of t0
+  REQUIRE(t1.valid());
+  const Side back = next(t1);                   // leaves c, clockwise of t0
+  o.twin[prev(t0).value] = Side{};              // open counter-clockwise right after t0
+  o.twin[back.value] = prev(back);              // clockwise from back: back to back, for ever
+  calls = 0;
+  CHECK(for_each_fan_side(o, t0, [&calls](Side) { ++calls; }) == FanEnd::Corrupt);
+  CHECK(calls == o.num_slots());
+}
