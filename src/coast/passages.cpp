@@ -976,8 +976,22 @@ std::vector<NearMiss> round_near_misses(Work& w) {
     const std::uint32_t d = m.seg_a > m.seg_b ? m.seg_a - m.seg_b : m.seg_b - m.seg_a;
     return std::min(d, n - d) < 3;
   });
-  sort_place_pairs(near);
-  return near;
+  // In place-pair order (sort_place_pairs): a loop's segments are numbered on from its
+  // first[], in loop order, so (loop_a, seg_a, loop_b, seg_b) orders as the two numbers do.
+  // Sorted as one 64-bit key a pair (the four-field comparison over 40-byte records was
+  // most of a round's sort); the keys are unique (a new pair has a new segment, a kept one
+  // none), so the order is the one sort_place_pairs gives.
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> order(near.size());
+  for (std::size_t i = 0; i < near.size(); ++i) {
+    const NearMiss& m = near[i];
+    order[i] = {(std::uint64_t{w.first_segment[m.loop_a] + m.seg_a} << 32) | (w.first_segment[m.loop_b] + m.seg_b),
+                static_cast<std::uint32_t>(i)};
+  }
+  std::sort(order.begin(), order.end());
+  std::vector<NearMiss> sorted;
+  sorted.reserve(near.size());
+  for (const auto& o : order) sorted.push_back(near[o.second]);
+  return sorted;
 }
 
 // The round-start polygons and widths (Work::polys, width): those of loops unchanged since
