@@ -83,23 +83,13 @@ class Optimizer {
       refresh_bad();
       if (st.swaps == swaps0 && st.moves == moves0) break;
     }
-    // The compound rounds stop after one that leaves the worst rho where it was (within
-    // kLexTie). The first round takes what the single moves could not; after it, round dams
-    // and coast edges much shorter than their neighbours (corners fixed, the worst often
-    // among them) each round works out again most changes below compound_below, the last
-    // round's moves having touched their free corners' stars, for a few kept: the Gulf of
-    // Mexico at the deviation bound tries 1,418, 1,242, 1,217 and 1,215 changes and keeps
-    // 136, 47, 22 and 18 (docs/benchmarks.md, the coast within gamma of the data).
     for (int r = 0; r < opt_.rounds && !bad_.empty() && bad_.front().q < opt_.compound_below; ++r) {
       const std::uint64_t swaps0 = st.swaps;
-      const double worst0 = bad_.front().q;
-      ++st.compound_rounds;
       compound_round(st);
       refresh_bad();
       smooth_round(st);
       refresh_bad();
       if (st.swaps == swaps0) break;
-      if (!bad_.empty() && !(bad_.front().q > worst0 + kLexTie)) break;
     }
     st.bad_after = static_cast<std::uint32_t>(bad_.size());
     if (!bad_.empty()) {

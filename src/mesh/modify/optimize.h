@@ -74,7 +74,6 @@ struct OptimizeStats {
   std::uint32_t bad_before = 0, bad_after = 0;       // triangles below the threshold
   double min_before = 0, min_after = 0;              // worst rho (as measured by the pass)
   int rounds = 0;
-  int compound_rounds = 0;                           // stopped once one leaves the worst rho
   std::uint32_t blocks = 0;                          // optimised in blocks (optimize_blocks.h)
 };
 
@@ -92,8 +91,7 @@ struct OptimizeStats {
 /// star triangle is counter-clockwise by the exact orient2d. Stops early when a round changes
 /// nothing. Then (3) triangles still below compound_below try a flip of each edge
 /// followed by two sweeps of moves of the quad's corners, undone unless the sorted
-/// qualities round them rise; up to `rounds` such rounds, stopping after one that leaves
-/// the worst rho where it was (within 1e-3). The result is valid but in general no longer Delaunay.
+/// qualities round them rise. The result is valid but in general no longer Delaunay.
 /// Deterministic: triangles are handled by increasing (rho, id), vertices by id.
 OptimizeStats optimize_quality(TriangleStore& m, std::uint32_t fixed_count, const OptimizeOptions& opt = {});
 

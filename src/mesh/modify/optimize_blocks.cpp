@@ -217,7 +217,6 @@ void add_counts(OptimizeStats& to, const OptimizeStats& s) {
   to.compound_tried += s.compound_tried, to.compound_pinned += s.compound_pinned;
   to.compound_repeated += s.compound_repeated;
   to.rounds = std::max(to.rounds, s.rounds);
-  to.compound_rounds = std::max(to.compound_rounds, s.compound_rounds);
 }
 
 }  // namespace
