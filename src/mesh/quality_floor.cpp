@@ -644,6 +644,7 @@ QualityFloorResult Floor::run(const QualityFloorOptions& opt) {
     return below;
   };
   res_.below_before = collect(false);
+  res_.worst_before = worst_start_;
   const std::uint32_t budget = opt.max_points ? opt.max_points : 4 * res_.below_before + 256;
   budget_ = opt.max_work
                 ? opt.max_work

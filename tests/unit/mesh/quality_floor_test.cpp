@@ -447,7 +447,10 @@ TEST_CASE("quality floor: with an undo journal its rounds measure only what chan
     return raise_quality_floor(m, face, opt);
   };
   TriangleStore plain = base, journalled = base;
+  double worst = 0;
+  count_below(base, [&base](VertexId v) { return Vec3{base.pos(v).x, base.pos(v).y, 0}; }, 0.3, &worst);
   const QualityFloorResult rp = run(plain);
+  CHECK(rp.worst_before == worst);   // the face's worst from the floor's own first scan
   StoreUndo undo(journalled);
   const QualityFloorResult rj = run(journalled);
   MESSAGE("rounds " << rp.rounds << ", points " << rp.interior_points << ", below " << rp.below_before << " -> "
