@@ -274,13 +274,13 @@ void raise_face_floor(FaceWork& f) {
     r = raise_quality_floor(f.tri, face, fo);
     if (undo.faulted(r)) return;
     if (r.changed() && f.opt.smoothing > 0 && f.opt.quality_pass) requality_after_floor(f);
-    // What is left, measured after the quality pass (no rounds: only the count).
+    // What is left, measured after the quality pass (no rounds: only the count, and the
+    // worst rho from the same scan: count_below's answer).
     QualityFloorOptions count_only = fo;
     count_only.max_rounds = 0;
     left = raise_quality_floor(f.tri, face, count_only);
     if (undo.faulted(left)) return;
-    double worst_end = 1;
-    count_below(f.tri, space, f.opt.quality_floor, &worst_end, threads);
+    const double worst_end = left.worst_before;
     worse = r.changed() && !(worst_end >= worst_start && left.below_after <= below_start);
     if (!worse) break;
   }

@@ -17,6 +17,7 @@
 #include "mesh/modify/smooth.h"
 #include "mesh/modify/split.h"
 #include "mesh/quality.h"
+#include "mesh/store_undo.h"
 
 namespace sm {
 namespace {
@@ -128,8 +129,9 @@ class Floor {
         x_[v] = face_.space(VertexId{static_cast<std::uint32_t>(v)});
     });
   }
-  /// The live triangles with rho < q_ ((rho, slot) by slot) and the lowest rho of all,
-  /// measured on the threads.
+  /// The live triangles with rho < q_ ((rho, slot) by slot) and the lowest rho of all
+  /// (exact when below q_), measured on the threads; after the first scan only the slots
+  /// that can have changed, when the store has an undo journal (see the definition).
   std::vector<std::pair<double, std::uint32_t>> scan_below(double* lowest);
   double rho3(TriId t) const {
     return rho(x_[m_.vertex(t, 0).value], x_[m_.vertex(t, 1).value], x_[m_.vertex(t, 2).value]);
@@ -175,6 +177,10 @@ class Floor {
   double worst_start_ = 1;
   std::vector<SharpCorner> sharp_all_;
   std::vector<TriId> near_;
+  // scan_below's slots to measure after the first scan, and those below q at it.
+  bool scanned_once_ = false;
+  const StoreUndo* journal_at_scan_ = nullptr;
+  std::vector<std::uint32_t> slots_, start_below_;
   QualityFloorResult res_;
   std::uint64_t work_ = 0, budget_ = ~std::uint64_t{0};
 };
@@ -568,11 +574,27 @@ std::vector<std::pair<double, std::uint32_t>> Floor::scan_below(double* lowest) 
     std::vector<std::pair<double, std::uint32_t>> below;
     double lowest = 1;
   };
-  std::vector<Chunk> chunks(floor_scan_chunks(m_.num_slots()));
-  floor_scan(threads_, m_.num_slots(), [&](std::size_t begin, std::size_t end) {
+  // With the store's undo journal started before the first scan (face_floor.cpp), a slot
+  // it never saw change, below the slots it started with, keeps its rho: only the slots
+  // below q at that scan, those changed since and the new ones can be below q now. The
+  // same list as the whole scan, in the same slot order; the lowest rho among them is
+  // the lowest of all whenever it is below q (the only case where it is used).
+  const StoreUndo* journal = m_.undo_link.journal;
+  const bool partial =
+      journal && scanned_once_ && journal == journal_at_scan_ && journal->start_slots() <= m_.num_slots();
+  if (partial) {
+    slots_.assign(start_below_.begin(), start_below_.end());
+    journal->changed_slots(slots_);
+    for (std::uint32_t t = journal->start_slots(); t < m_.num_slots(); ++t) slots_.push_back(t);
+    std::sort(slots_.begin(), slots_.end());
+    slots_.erase(std::unique(slots_.begin(), slots_.end()), slots_.end());
+  }
+  const std::size_t n = partial ? slots_.size() : m_.num_slots();
+  std::vector<Chunk> chunks(floor_scan_chunks(n));
+  floor_scan(threads_, n, [&](std::size_t begin, std::size_t end) {
     Chunk& c = chunks[begin / kFloorScanChunk];
-    for (std::size_t slot = begin; slot < end; ++slot) {
-      const TriId t{static_cast<std::uint32_t>(slot)};
+    for (std::size_t i = begin; i < end; ++i) {
+      const TriId t{partial ? slots_[i] : static_cast<std::uint32_t>(i)};
       if (!m_.alive(t)) continue;
       const double r = rho3(t);
       c.lowest = std::min(c.lowest, r);   // the minimum of the doubles: any grouping gives it
@@ -580,12 +602,18 @@ std::vector<std::pair<double, std::uint32_t>> Floor::scan_below(double* lowest) 
     }
   });
   std::vector<std::pair<double, std::uint32_t>> below;
-  std::size_t n = 0;
-  for (const Chunk& c : chunks) n += c.below.size();
-  below.reserve(n);
+  std::size_t count = 0;
+  for (const Chunk& c : chunks) count += c.below.size();
+  below.reserve(count);
   for (const Chunk& c : chunks) {
     *lowest = std::min(*lowest, c.lowest);
     below.insert(below.end(), c.below.begin(), c.below.end());
+  }
+  if (!scanned_once_) {
+    scanned_once_ = true;
+    journal_at_scan_ = journal;
+    start_below_.clear();
+    for (const auto& [r, t] : below) start_below_.push_back(t);
   }
   return below;
 }
@@ -616,6 +644,7 @@ QualityFloorResult Floor::run(const QualityFloorOptions& opt) {
     return below;
   };
   res_.below_before = collect(false);
+  res_.worst_before = worst_start_;
   const std::uint32_t budget = opt.max_points ? opt.max_points : 4 * res_.below_before + 256;
   budget_ = opt.max_work
                 ? opt.max_work

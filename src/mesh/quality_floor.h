@@ -79,6 +79,9 @@ struct QualityFloorResult {
   bool out_of_budget = false;       ///< stopped by max_rounds, max_points or max_work with work left
   bool out_of_work = false;         ///< of out_of_budget: max_work was reached
   std::uint64_t work = 0, work_budget = 0;   ///< operations spent, and allowed
+  /// The lowest rho at the start (1 when none is lower), as count_below measures it: a
+  /// count-only run (max_rounds 0) gives the face's worst without another scan.
+  double worst_before = 1;
   /// An internal error (a walk round a vertex or through the face that did not end within
   /// the store's size: the triangulation is not consistent there): what, and the vertex
   /// near which it happened. The floor stops at once; the caller should put the face back

@@ -92,6 +92,11 @@ void StoreUndo::save_vertex(const TriangleStore& m, std::uint32_t v) {
   verts_.push_back({v, m.out_side[v], m.xy[v]});
 }
 
+void StoreUndo::changed_slots(std::vector<std::uint32_t>& out) const {
+  out.reserve(out.size() + tris_.size());
+  for (const SavedTri& s : tris_) out.push_back(s.t);
+}
+
 void StoreUndo::restore(TriangleStore& m) {
   SM_ASSERT(&m == &m_, "an undo journal restored on another store");
   m.undo_link.journal = nullptr;  // the writes below are the journal's own

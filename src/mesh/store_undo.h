@@ -34,6 +34,13 @@ class StoreUndo {
   /// journal is a bug (SM_ASSERT), never a silently different mesh.
   void restore(TriangleStore& m);
 
+  /// Triangle slots at the start: those from here on are new (never saved).
+  std::uint32_t start_slots() const { return slots_; }
+  /// Appends every slot below start_slots() changed since the start to `out`, each once,
+  /// in the order of their first change (what a scan of the whole store for what changed
+  /// may read instead: the quality floor's rounds, quality_floor.cpp).
+  void changed_slots(std::vector<std::uint32_t>& out) const;
+
   /// Entries saved so far (triangles, vertices).
   std::size_t saved_triangles() const { return tris_.size(); }
   std::size_t saved_vertices() const { return verts_.size(); }

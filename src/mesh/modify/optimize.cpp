@@ -567,7 +567,7 @@ class Optimizer {
 
 OptimizeStats optimize_quality(TriangleStore& m, std::uint32_t fixed_count, const OptimizeOptions& opt) {
   if (opt.block_min_triangles > 0 && m.num_triangles() >= opt.block_min_triangles && !opt.to_space &&
-      !opt.seeds && !m.undo_link.journal)
+      !opt.seeds)
     return optimize_in_blocks(m, fixed_count, opt);
   return Optimizer(m, fixed_count, opt).run();
 }

@@ -48,9 +48,9 @@ struct OptimizeOptions {
   /// without to_space: fixed chunks reduced in chunk order, the same bytes for every
   /// count. The swaps and moves stay serial, unless the store is blocked (below).
   int threads = 1;
-  /// A store of at least this many live triangles, without to_space and without an undo
-  /// journal, is optimised in blocks (optimize_blocks.h): the blocks on the threads, then
-  /// a serial pass round their borders. The blocks depend on the mesh only, so the bytes
+  /// A store of at least this many live triangles, without to_space, is optimised in
+  /// blocks (optimize_blocks.h; an undo journal on the store is kept): the blocks on the
+  /// threads, then a serial pass round their borders. The blocks depend on the mesh only, so the bytes
   /// are the same for every thread count (but not those of the one serial pass). 0: never.
   std::uint32_t block_min_triangles = 200000;
   /// Bad triangles (below threshold) per block: enough that a block's own work dwarfs its

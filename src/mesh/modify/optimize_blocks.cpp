@@ -235,6 +235,23 @@ void link_blocks(TriangleStore& m, const std::vector<Block>& blocks, const std::
     for (const auto& [v, out] : blk.border_out) m.out_side[v] = out;
 }
 
+// With an undo journal on the store (store_undo.h), everything the blocks and the linking
+// will write is saved first, here on one thread (the journal is not shared by threads): the
+// claimed slots, the corners of their triangles (inner ones move, border ones get a new
+// out_side) and the unclaimed slots across their borders (their twins are linked again).
+void journal_blocks(TriangleStore& m, const std::vector<Block>& blocks, const std::vector<std::uint32_t>& owner) {
+  if (!m.undo_link.journal) return;
+  for (const Block& blk : blocks)
+    for (const std::uint32_t t : blk.tris)
+      for (std::uint32_t e = 0; e < 3; ++e) {
+        const Side s = side_of(TriId{t}, e);
+        m.will_change_tri(TriId{t});
+        m.will_change_vertex(m.corner[s.value]);
+        const Side o = m.twin[s.value];
+        if (o.valid() && owner[tri_of(o).value] == kUnclaimed) m.will_change_tri_of(o);
+      }
+}
+
 void add_counts(OptimizeStats& to, const OptimizeStats& s) {
   to.swaps += s.swaps, to.moves += s.moves, to.refused += s.refused;
   to.compound_tried += s.compound_tried, to.compound_pinned += s.compound_pinned;
@@ -245,7 +262,7 @@ void add_counts(OptimizeStats& to, const OptimizeStats& s) {
 }  // namespace
 
 OptimizeStats optimize_in_blocks(TriangleStore& m, std::uint32_t fixed_count, const OptimizeOptions& opt) {
-  SM_ASSERT(!opt.to_space && !opt.seeds && !m.undo_link.journal, "optimize_in_blocks: unsupported options");
+  SM_ASSERT(!opt.to_space && !opt.seeds, "optimize_in_blocks: unsupported options");
   OptimizeOptions serial = opt;
   serial.block_min_triangles = 0;
   const int threads = std::max(opt.threads, 1);
@@ -259,6 +276,7 @@ OptimizeStats optimize_in_blocks(TriangleStore& m, std::uint32_t fixed_count, co
   std::vector<Block> blocks = claim_blocks(m, bad, opt.block_bad, owner);
   const std::vector<std::uint8_t> border = border_vertices(m, owner);
   BlockMaps maps{std::vector<std::uint32_t>(m.num_slots()), std::vector<std::uint32_t>(m.num_vertices(), kUnclaimed)};
+  journal_blocks(m, blocks, owner);
   // The face's bank of sacrifices (optimize.h: max_share_loss) shared by the blocks as
   // their bad triangles are: no block may spend another's.
   const double bank = std::max(0.0, opt.max_share_loss) * m.num_triangles();

@@ -21,7 +21,8 @@ namespace sm {
 /// and its inner vertices: no two blocks write the same element. The borders are then linked
 /// again in block order, and the serial pass runs once more from the bad triangles that touch
 /// a border vertex. Without enough bad triangles for two blocks, the serial pass alone.
-/// The store must have no undo journal, opt no to_space and no seeds.
+/// opt must have no to_space and no seeds. An undo journal on the store (store_undo.h) gets
+/// everything the blocks write saved first, on one thread, so that it can still put the store back.
 OptimizeStats optimize_in_blocks(TriangleStore& m, std::uint32_t fixed_count, const OptimizeOptions& opt);
 
 }  // namespace sm

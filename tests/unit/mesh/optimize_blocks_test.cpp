@@ -10,6 +10,7 @@
 #include "mesh/modify/optimize.h"
 #include "mesh/modify/smooth.h"
 #include "mesh/refine.h"
+#include "mesh/store_undo.h"
 #include "testing_domains.h"
 
 using namespace sm;
@@ -105,4 +106,23 @@ TEST_CASE("optimize_quality in blocks: as good as the serial pass, the share abo
   CHECK(share_above(blocked.m, 0.9) >= share_above(base.m, 0.9) - 1e-4);
   MESSAGE("serial: min ", ss.min_after, " bad ", ss.bad_after, "; blocked: min ", bs.min_after, " bad ", bs.bad_after,
           " blocks ", bs.blocks, " of ", bs.bad_before, " bad");
+}
+
+TEST_CASE("optimize_quality in blocks under an undo journal: the same bytes, and put back exactly") {
+  // The quality floor's quality pass runs with the floor's journal attached (face_floor.cpp):
+  // the blocks save what they will write before the threads start.
+  const Face base = holed_square(0.006);
+  Face plain = base;
+  const OptimizeStats ps = optimize_quality(plain.m, plain.fixed, blocked_options(2));
+  REQUIRE(ps.blocks >= 4);
+  for (int threads : {1, 2, 3}) {
+    CAPTURE(threads);
+    Face f = base;
+    StoreUndo undo(f.m);
+    const OptimizeStats js = optimize_quality(f.m, f.fixed, blocked_options(threads));
+    CHECK(js.blocks == ps.blocks);
+    CHECK(same_store_bytes(f.m, plain.m));
+    undo.restore(f.m);   // asserts the fingerprint of the store at the start
+    CHECK(same_store_bytes(f.m, base.m));
+  }
 }

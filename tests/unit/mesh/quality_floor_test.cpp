@@ -16,6 +16,7 @@
 #include "mesh/mesh1d.h"
 #include "mesh/mesh2d.h"
 #include "mesh/quality_floor.h"
+#include "mesh/store_undo.h"
 
 using namespace sm;
 
@@ -413,4 +414,57 @@ TEST_CASE("quality floor: count_below and worst_triangle give the serial answer 
     CHECK(t == t1);
     CHECK(r == r1);
   }
+}
+
+TEST_CASE("quality floor: with an undo journal its rounds measure only what changed, the same mesh as without") {
+  // Rows of points 1 apart, every other gap 0.08 high: slivers in every second strip,
+  // lifted by interior points over several rounds. With the store's undo journal attached
+  // (as face_floor.cpp runs it), the rounds after the first measure only the slots below
+  // the floor at the start, those the journal saw change and the new ones: the same list
+  // as the scan of the whole store, so the same mesh and result.
+  TriangleStore base;
+  std::vector<Vec2> xy;
+  const std::uint32_t nx = 40, ny = 40;
+  for (std::uint32_t j = 0; j < ny; ++j)
+    for (std::uint32_t i = 0; i < nx; ++i) xy.push_back({double(i) + 0.3 * (j % 3), (j / 2) * 1.08 + (j % 2) * 0.08});
+  std::vector<std::array<std::uint32_t, 3>> tris;
+  for (std::uint32_t j = 0; j + 1 < ny; ++j)
+    for (std::uint32_t i = 0; i + 1 < nx; ++i) {
+      const std::uint32_t a = j * nx + i, b = a + 1, c = a + nx, d = c + 1;
+      tris.push_back({a, b, d});
+      tris.push_back({a, d, c});
+    }
+  REQUIRE(build_triangulation(xy, tris, base));
+  const auto run = [](TriangleStore& m) {
+    FloorFace face;
+    face.space = [&m](VertexId v) { return Vec3{m.pos(v).x, m.pos(v).y, 0}; };
+    face.to_space = [](Vec2 p) { return Vec3{p.x, p.y, 0}; };
+    face.curve_point = [](VertexId, VertexId, double) { return std::optional<Vec2>{}; };
+    face.curve_split_done = [](VertexId, VertexId, VertexId) {};
+    face.is_corner = [](VertexId) { return false; };
+    QualityFloorOptions opt;
+    opt.floor = 0.3;
+    return raise_quality_floor(m, face, opt);
+  };
+  TriangleStore plain = base, journalled = base;
+  double worst = 0;
+  count_below(base, [&base](VertexId v) { return Vec3{base.pos(v).x, base.pos(v).y, 0}; }, 0.3, &worst);
+  const QualityFloorResult rp = run(plain);
+  CHECK(rp.worst_before == worst);   // the face's worst from the floor's own first scan
+  StoreUndo undo(journalled);
+  const QualityFloorResult rj = run(journalled);
+  MESSAGE("rounds " << rp.rounds << ", points " << rp.interior_points << ", below " << rp.below_before << " -> "
+                    << rp.below_after);
+  CHECK(rp.rounds >= 2);
+  CHECK(rp.interior_points > 0);
+  CHECK(rj.rounds == rp.rounds);
+  CHECK(rj.interior_points == rp.interior_points);
+  CHECK(rj.below_after == rp.below_after);
+  CHECK(rj.work == rp.work);
+  CHECK(journalled.corner == plain.corner);
+  CHECK(journalled.twin == plain.twin);
+  REQUIRE(journalled.xy.size() == plain.xy.size());
+  CHECK(std::memcmp(journalled.xy.data(), plain.xy.data(), plain.xy.size() * sizeof(Vec2)) == 0);
+  undo.restore(journalled);
+  CHECK(journalled.corner == base.corner);
 }
