@@ -91,9 +91,13 @@ bool refine_in_plane(FaceWork& f, const std::function<void(std::span<const Vec2>
       if (!nested) progress_begin(f.opt.progress, "2D refine", parts), nested = true;
       progress_update(f.opt.progress, done);
     };
-    const PartitionResult pr =
-        refine_partitioned(f.tri, ro, frontal ? PartRefiner::Frontal : PartRefiner::Del2d, make_size, f.opt.partition,
-                           resolve_thread_count(f.opt.threads), on_parts, part_sizes);
+    // Without the extension the size at a point depends on the point alone, so the serial
+    // steps may size their large batches on the threads (PartitionOptions::sizes_by_point).
+    PartitionOptions po = f.opt.partition;
+    po.sizes_by_point = f.opt.size.extend_from_boundary == 0;
+    const PartitionResult pr = refine_partitioned(f.tri, ro, frontal ? PartRefiner::Frontal : PartRefiner::Del2d,
+                                                  make_size, po, resolve_thread_count(f.opt.threads), on_parts,
+                                                  part_sizes);
     if (nested) progress_end(f.opt.progress);
     f.res.stats.inserted += pr.stats.refine.inserted;
     f.res.stats.rejected += pr.stats.refine.rejected;

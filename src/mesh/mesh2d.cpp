@@ -6,9 +6,11 @@
 #include "mesh/mesh2d.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -16,6 +18,7 @@
 #include <fmt/format.h>
 
 #include "base/elapsed.h"
+#include "base/parallel.h"
 #include "base/progress.h"
 #include "base/release_memory.h"
 #include "mesh/face_boundary.h"
@@ -54,11 +57,24 @@ bool check_budget(FaceWork& f, std::uint64_t& estimate) {
   // is counted in the size evaluations only when partitioning uses it.
   const bool partitioning = f.opt.partition.min_triangles > 0 && f.opt.algorithm != Mesh2dAlgorithm::MeshAdapt;
   if (!(partitioning || f.opt.progress || f.opt.max_elements > 0)) return true;
-  PlaneSizes estimate_sizes(*f.sizing, partitioning ? &f.size_evaluations : nullptr);
-  const PlaneSizeFn estimate_at = [&estimate_sizes](std::span<const Vec2> p, std::span<double> h) {
-    estimate_sizes(p, h);
-  };
-  estimate = estimate_triangles(f.tri, estimate_at);
+  std::atomic<std::uint64_t>* evaluations = partitioning ? &f.size_evaluations : nullptr;
+  const int threads = resolve_thread_count(f.opt.threads);
+  if (f.opt.size.extend_from_boundary == 0 && threads > 1) {
+    // The size at a point depends on the point alone: the batches run on the threads, each
+    // with an evaluator of its own, for the same estimate.
+    const std::shared_ptr<const FaceSizing> sizing = f.sizing;
+    const auto make_size = [sizing, evaluations]() -> PlaneSizeFn {
+      auto sizes = std::make_shared<PlaneSizes>(*sizing, evaluations);
+      return [sizes](std::span<const Vec2> p, std::span<double> h) { (*sizes)(p, h); };
+    };
+    estimate = estimate_triangles(f.tri, make_size, threads);
+  } else {
+    PlaneSizes estimate_sizes(*f.sizing, evaluations);
+    const PlaneSizeFn estimate_at = [&estimate_sizes](std::span<const Vec2> p, std::span<double> h) {
+      estimate_sizes(p, h);
+    };
+    estimate = estimate_triangles(f.tri, estimate_at);
+  }
   if (f.opt.max_elements > 0 && static_cast<double>(estimate) > f.opt.max_elements) {
     f.fail(MeshProblem::None);
     f.res.error.kind = MeshErrorKind::LimitExceeded;

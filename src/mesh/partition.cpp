@@ -23,6 +23,17 @@ namespace {
 
 constexpr double kEquilateralArea = 0.4330127018922193;  // sqrt(3)/4: equilateral of side 1
 constexpr std::size_t kBatch = 4096;
+// Points a chunk of a large batch of sizes on the threads (sizes_in_chunks).
+constexpr std::size_t kSizeChunk = 1024;
+
+// h[i] = the size at p[i] in chunks of kSizeChunk points on up to `threads` threads, each
+// chunk by an evaluator of its own (PartitionOptions::sizes_by_point).
+void sizes_in_chunks(std::span<const Vec2> p, std::span<double> h, const std::function<PlaneSizeFn()>& make_size,
+                     int threads) {
+  parallel_for_chunks(threads, p.size(), kSizeChunk, [&](std::size_t b, std::size_t e) {
+    make_size()(p.subspan(b, e - b), h.subspan(b, e - b));
+  });
+}
 
 double area(const TriangleStore& m, std::uint32_t t) {
   const Vec2 a = m.pos(m.vertex(TriId{t}, 0)), b = m.pos(m.vertex(TriId{t}, 1)), c = m.pos(m.vertex(TriId{t}, 2));
@@ -37,37 +48,56 @@ std::vector<std::uint32_t> live_triangles(const TriangleStore& m) {
   return t;
 }
 
+// One batch of estimate_each: items [b, e) of tris.
+void estimate_batch(const TriangleStore& m, std::span<const std::uint32_t> tris, std::size_t b, std::size_t e,
+                    const PlaneSizeFn& size, std::vector<Vec2>& mid, std::vector<double>& h, std::vector<Vec2>& c,
+                    std::vector<double>& w) {
+  const std::size_t n = e - b;
+  mid.resize(3 * n);
+  h.resize(3 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const TriId t{tris[b + i]};
+    const Vec2 p[3] = {m.pos(m.vertex(t, 0)), m.pos(m.vertex(t, 1)), m.pos(m.vertex(t, 2))};
+    c[b + i] = (p[0] + p[1] + p[2]) / 3.0;
+    for (int k = 0; k < 3; ++k) mid[3 * i + k] = 0.5 * (p[k] + p[(k + 1) % 3]);
+  }
+  size(mid, h);
+  for (std::size_t i = 0; i < n; ++i) {
+    double inv = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double x = h[3 * i + k];
+      if (x > 0 && std::isfinite(x)) inv += 1 / (3 * x * x);
+    }
+    w[b + i] = area(m, tris[b + i]) * inv / kEquilateralArea;
+  }
+}
+
 // Centroids and estimated final triangle counts of the listed triangles: the area times
 // the mean of 1/(equilateral area at the size) at the three edge midpoints (a rule exact
 // for quadratics: the size varies across the large coarse triangles, and 1/h^2 is convex
 // in it, so the centroid alone underestimated the world ocean by 40%). A non-positive or
-// non-finite size counts 0 (the refiner reports it).
+// non-finite size counts 0 (the refiner reports it). In batches of kBatch triangles: with
+// make_size and more than one thread, the batches run on the threads, each sized by an
+// evaluator of its own (for a size that depends on the point alone: the same weights);
+// otherwise in turn, by `size` (or, when null, one evaluator from make_size).
 void estimate_each(const TriangleStore& m, std::span<const std::uint32_t> tris, const PlaneSizeFn& size,
-                   std::vector<Vec2>& c, std::vector<double>& w) {
+                   std::vector<Vec2>& c, std::vector<double>& w,
+                   const std::function<PlaneSizeFn()>& make_size = nullptr, int threads = 1) {
   c.resize(tris.size());
   w.assign(tris.size(), 0.0);
+  if (make_size && threads > 1 && tris.size() > kBatch) {
+    parallel_for_chunks(threads, tris.size(), kBatch, [&](std::size_t b, std::size_t e) {
+      std::vector<Vec2> mid;
+      std::vector<double> h;
+      estimate_batch(m, tris, b, e, make_size(), mid, h, c, w);
+    });
+    return;
+  }
+  const PlaneSizeFn serial = size ? size : make_size();
   std::vector<Vec2> mid;
   std::vector<double> h;
-  for (std::size_t b = 0; b < tris.size(); b += kBatch) {
-    const std::size_t n = std::min(kBatch, tris.size() - b);
-    mid.resize(3 * n);
-    h.resize(3 * n);
-    for (std::size_t i = 0; i < n; ++i) {
-      const TriId t{tris[b + i]};
-      const Vec2 p[3] = {m.pos(m.vertex(t, 0)), m.pos(m.vertex(t, 1)), m.pos(m.vertex(t, 2))};
-      c[b + i] = (p[0] + p[1] + p[2]) / 3.0;
-      for (int e = 0; e < 3; ++e) mid[3 * i + e] = 0.5 * (p[e] + p[(e + 1) % 3]);
-    }
-    size(mid, h);
-    for (std::size_t i = 0; i < n; ++i) {
-      double inv = 0;
-      for (int e = 0; e < 3; ++e) {
-        const double x = h[3 * i + e];
-        if (x > 0 && std::isfinite(x)) inv += 1 / (3 * x * x);
-      }
-      w[b + i] = area(m, tris[b + i]) * inv / kEquilateralArea;
-    }
-  }
+  for (std::size_t b = 0; b < tris.size(); b += kBatch)
+    estimate_batch(m, tris, b, std::min(tris.size(), b + kBatch), serial, mid, h, c, w);
 }
 
 void add_stats(RefineStats& to, const RefineStats& s) {
@@ -291,6 +321,14 @@ std::uint64_t estimate_triangles(const TriangleStore& m, const PlaneSizeFn& size
   return saturated_count(std::accumulate(w.begin(), w.end(), 0.0));
 }
 
+std::uint64_t estimate_triangles(const TriangleStore& m, const std::function<PlaneSizeFn()>& make_size, int threads) {
+  const std::vector<std::uint32_t> tris = live_triangles(m);
+  std::vector<Vec2> c;
+  std::vector<double> w;
+  estimate_each(m, tris, nullptr, c, w, make_size, threads);
+  return saturated_count(std::accumulate(w.begin(), w.end(), 0.0));
+}
+
 std::uint32_t part_count(std::uint64_t estimate, const PartitionOptions& opt) {
   const double ratio = double(estimate) / double(std::max<std::uint64_t>(opt.part_triangles, 1));
   const int log2k = ratio > 1 ? static_cast<int>(std::lround(std::log2(ratio))) : 1;
@@ -386,15 +424,20 @@ namespace {
 // It starts from m itself, moved rather than copied: the result replaces m, and a copy
 // held the face's boundary triangulation twice through the parts (at the full world's
 // 3 km, some 300,000 boundary vertices). m is left empty on failure.
+// With sizes by point and threads, its large batches (the first sizing of every
+// triangle, 4096 at a time) are sized in chunks on the threads (sizes_in_chunks).
 bool refine_coarse(Coarse& c, TriangleStore& m, const RefineOptions& base, const PlaneSizeFn& fine,
-                   const PartitionOptions& opt, PartitionResult& res) {
+                   const std::function<PlaneSizeFn()>& make_size, int threads, const PartitionOptions& opt,
+                   PartitionResult& res) {
   c.m = std::move(m);
   m = TriangleStore{};
   RefineOptions co = base;
   co.vertex_size_at = nullptr;
   const double f = opt.coarse_factor;
-  co.size_at = [&fine, f](std::span<const Vec2> p, std::span<double> h) {
-    fine(p, h);
+  const bool chunked = opt.sizes_by_point && threads > 1;
+  co.size_at = [&fine, &make_size, f, chunked, threads](std::span<const Vec2> p, std::span<double> h) {
+    if (chunked && p.size() >= 2 * kSizeChunk) sizes_in_chunks(p, h, make_size, threads);
+    else fine(p, h);
     for (double& x : h) x *= f;
   };
   const RefineResult r = refine_del2d(c.m, co);
@@ -410,10 +453,11 @@ bool refine_coarse(Coarse& c, TriangleStore& m, const RefineOptions& base, const
 // from it, the coarse triangles bisected into that many parts of about equal weight.
 // Returns the part count.
 std::uint32_t cut_into_parts(Coarse& c, const std::vector<std::uint32_t>& tris, const PlaneSizeFn& fine,
-                             const PartitionOptions& opt, PartitionResult& res) {
+                             const std::function<PlaneSizeFn()>& make_size, int threads, const PartitionOptions& opt,
+                             PartitionResult& res) {
   std::vector<Vec2> centre;
   std::vector<double> weight;
-  estimate_each(c.m, tris, fine, centre, weight);
+  estimate_each(c.m, tris, fine, centre, weight, opt.sizes_by_point ? make_size : nullptr, threads);
   res.stats.coarse_triangles = tris.size();
   res.stats.estimate = saturated_count(std::accumulate(weight.begin(), weight.end(), 0.0));
   const std::uint32_t k = part_count(res.stats.estimate, opt);
@@ -428,8 +472,11 @@ std::uint32_t cut_into_parts(Coarse& c, const std::vector<std::uint32_t>& tris, 
   return k;
 }
 
-// Border edges: subdivided once, from the smaller vertex id.
-void subdivide_borders(Coarse& c, const std::vector<std::uint32_t>& tris, const PlaneSizeFn& fine) {
+// Border edges: subdivided once, from the smaller vertex id. The borders are listed first;
+// with sizes by point and threads, their points are then found in chunks of borders on the
+// threads, each chunk with an evaluator of its own, and appended in border order.
+void subdivide_borders(Coarse& c, const std::vector<std::uint32_t>& tris, const PlaneSizeFn& fine,
+                       const std::function<PlaneSizeFn()>& make_size, int threads, const PartitionOptions& opt) {
   c.border_of_side.assign(c.m.corner.size(), kNoIndex);
   for (std::uint32_t t : tris)
     for (std::uint32_t e = 0; e < 3; ++e) {
@@ -437,13 +484,25 @@ void subdivide_borders(Coarse& c, const std::vector<std::uint32_t>& tris, const 
       const Side o = c.m.twin[s.value];
       if (!o.valid() || c.part_of[tri_of(o).value] == c.part_of[t] || c.m.constrained(s)) continue;
       if (c.m.org(s).value > c.m.dest(s).value) continue;
-      Border br{c.m.org(s), c.m.dest(s), static_cast<std::uint32_t>(c.border_xy.size()), 0};
-      const std::vector<Vec2> pts = subdivide_segment(c.m.pos(br.a), c.m.pos(br.b), fine);
-      br.count = static_cast<std::uint32_t>(pts.size());
-      c.border_xy.insert(c.border_xy.end(), pts.begin(), pts.end());
       c.border_of_side[s.value] = c.border_of_side[o.value] = static_cast<std::uint32_t>(c.borders.size());
-      c.borders.push_back(br);
+      c.borders.push_back(Border{c.m.org(s), c.m.dest(s), 0, 0});
     }
+  std::vector<std::vector<Vec2>> pts(c.borders.size());
+  const auto subdivide = [&c, &pts](std::size_t b, std::size_t e, const PlaneSizeFn& size) {
+    for (std::size_t i = b; i < e; ++i)
+      pts[i] = subdivide_segment(c.m.pos(c.borders[i].a), c.m.pos(c.borders[i].b), size);
+  };
+  constexpr std::size_t kBordersPerChunk = 64;
+  if (opt.sizes_by_point && threads > 1 && c.borders.size() > kBordersPerChunk)
+    parallel_for_chunks(threads, c.borders.size(), kBordersPerChunk,
+                        [&](std::size_t b, std::size_t e) { subdivide(b, e, make_size()); });
+  else
+    subdivide(0, c.borders.size(), fine);
+  for (std::size_t i = 0; i < c.borders.size(); ++i) {
+    c.borders[i].first = static_cast<std::uint32_t>(c.border_xy.size());
+    c.borders[i].count = static_cast<std::uint32_t>(pts[i].size());
+    c.border_xy.insert(c.border_xy.end(), pts[i].begin(), pts[i].end());
+  }
 }
 
 // The coarse vertices kept (Coarse::new_id): the input's n0 with their ids, then the
@@ -614,10 +673,10 @@ PartitionResult refine_partitioned(TriangleStore& m, const RefineOptions& base, 
   const PlaneSizeFn fine = make_size();
   Coarse c;
   const std::uint32_t n0 = m.num_vertices();
-  if (!refine_coarse(c, m, base, fine, opt, res)) return res;
+  if (!refine_coarse(c, m, base, fine, make_size, threads, opt, res)) return res;
   const std::vector<std::uint32_t> tris = live_triangles(c.m);
-  const std::uint32_t k = cut_into_parts(c, tris, fine, opt, res);
-  subdivide_borders(c, tris, fine);
+  const std::uint32_t k = cut_into_parts(c, tris, fine, make_size, threads, opt, res);
+  subdivide_borders(c, tris, fine, make_size, threads, opt);
   number_kept_vertices(c, n0);
   res.stats.border_edges = c.borders.size();
   res.stats.border_points = c.border_xy.size();

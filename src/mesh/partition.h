@@ -28,6 +28,12 @@ struct PartitionOptions {
   /// The coarse refinement uses the size times this (a few thousand coarse triangles per part).
   double coarse_factor = 8;
   std::uint32_t max_parts = 4096;
+  /// The size at a point depends on the point alone (a face without the extension of the
+  /// boundary sizes, whose walk hint makes PlaneSizes's rounding depend on the points before):
+  /// the serial steps' large batches (the coarse pass's first sizing, the cut's estimate,
+  /// the border subdivision) are then evaluated in fixed chunks on the threads, each chunk by
+  /// an evaluator of its own from make_size, which gives the same sizes. Set by the caller.
+  bool sizes_by_point = false;
 };
 
 enum class PartRefiner { Del2d, Frontal };
@@ -55,6 +61,11 @@ std::uint64_t saturated_count(double x);
 /// triangles of area / (h^2 sqrt(3) / 4), 1/h^2 averaged over the edge midpoints (batched),
 /// as saturated_count() (a zero or NaN size gives the largest count).
 std::uint64_t estimate_triangles(const TriangleStore& m, const PlaneSizeFn& size);
+
+/// The same estimate with the size evaluated on up to `threads` threads, in the same
+/// batches, each batch by an evaluator of its own from make_size: the same count as the
+/// serial one for a size that depends on the point alone (PartitionOptions::sizes_by_point).
+std::uint64_t estimate_triangles(const TriangleStore& m, const std::function<PlaneSizeFn()>& make_size, int threads);
 
 /// The part count for an estimate: the power of two nearest estimate / part_triangles,
 /// at least 2 and at most max_parts. A function of the estimate only, never of threads.

@@ -6,6 +6,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -226,6 +227,51 @@ TEST_CASE(
     CHECK(qp.min_rho > 0.1);
     CHECK(qp.share_rho_09 > qw.share_rho_09 - 0.02);
     CHECK(double(qp.triangles) == doctest::Approx(double(qw.triangles)).epsilon(0.03));
+  }
+}
+
+TEST_CASE("partition: sizes by point sized in chunks on the threads give the same stores and estimate") {
+  // A fine boundary (about 5,400 vertices) under a coarser graded size: the coarse pass's
+  // first batches (4096 triangles), the cut's estimate (over 4096 coarse triangles) and the
+  // borders (over 64) are all large enough to be cut into chunks.
+  std::vector<Edge> edges;
+  const TriangleStore cdt = square_with_holes(0.001, &edges);
+  REQUIRE(cdt.num_triangles() > 4096);
+  const double h0 = 0.003;
+  std::atomic<int> made{0};
+  const auto make = [h0, &made] {
+    ++made;
+    return graded(h0);
+  };
+  const std::uint64_t est = estimate_triangles(cdt, graded(h0));
+  for (int threads : {1, 2, 3}) {
+    CAPTURE(threads);
+    made = 0;
+    CHECK(estimate_triangles(cdt, make, threads) == est);
+    CHECK(made == (threads > 1 ? int((cdt.num_triangles() + 4095) / 4096) : 1));
+  }
+  RefineOptions ro;
+  ro.radius_limit = 0.73;
+  PartitionOptions po;
+  po.part_triangles = 2000;
+  TriangleStore m1 = cdt;
+  const PartitionResult r1 = refine_partitioned(m1, ro, PartRefiner::Frontal, make, po, 1);
+  REQUIRE(r1.ok());
+  CHECK(r1.stats.coarse_triangles > 4096);
+  CHECK(r1.stats.border_edges > 64);
+  po.sizes_by_point = true;
+  for (int threads : {1, 2, 3}) {
+    CAPTURE(threads);
+    made = 0;
+    TriangleStore mt = cdt;
+    const PartitionResult rt = refine_partitioned(mt, ro, PartRefiner::Frontal, make, po, threads);
+    REQUIRE(rt.ok());
+    CHECK(same(m1, mt));
+    CHECK(rt.stats.estimate == r1.stats.estimate);
+    CHECK(rt.stats.border_points == r1.stats.border_points);
+    // One evaluator for the serial steps and one a part, and with threads one a chunk more.
+    if (threads == 1) CHECK(made == int(1 + r1.stats.parts));
+    else CHECK(made > int(1 + r1.stats.parts + r1.stats.coarse_triangles / 4096));
   }
 }
 
