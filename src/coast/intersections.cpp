@@ -278,6 +278,34 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> active_places(std::span<con
   return on;
 }
 
+// The places found (per chunk), in place-pair order (sort_place_pairs), each made into its
+// record by make. The segments numbered loop after loop (loop_first, each below 2^32),
+// (loop_a, seg_a, loop_b, seg_b) orders as the two numbers do: sorted as one 64-bit key (the
+// four-field comparison over 40-byte records cost more). The pairs are distinct, so the
+// keys are, and the order is the one sort_place_pairs gives.
+template <class P, class Make>
+auto in_place_order(std::vector<std::vector<P>>& found, const std::vector<std::size_t>& loop_first, Make make) {
+  std::size_t n_found = 0;
+  for (const auto& f : found) n_found += f.size();
+  std::vector<P> all;
+  all.reserve(n_found);
+  for (auto& f : found) {
+    all.insert(all.end(), f.begin(), f.end());
+    std::vector<P>().swap(f);
+  }
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> order(all.size());
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const P& x = all[i];
+    order[i] = {(std::uint64_t{loop_first[x.loop_a] + x.seg_a} << 32) | (loop_first[x.loop_b] + x.seg_b),
+                static_cast<std::uint32_t>(i)};
+  }
+  std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<decltype(make(all[0]))> out;
+  out.reserve(all.size());
+  for (const auto& o : order) out.push_back(make(all[o.second]));
+  return out;
+}
+
 }  // namespace
 
 std::vector<SegmentHit> find_intersections(std::span<const std::vector<Vec2>> loops, IntersectionStats* stats) {
@@ -287,7 +315,7 @@ std::vector<SegmentHit> find_intersections(std::span<const std::vector<Vec2>> lo
   if (segs.size() < 2) return hits;
   const Grid g = make_grid(segs);
   for_each_candidate(segs, g, stats, [&hits](const Seg& s, const Seg& t) { record_hit(s, t, hits); });
-  sort_place_pairs(hits);
+  sort_place_pairs_on(hits, loops);
   return hits;
 }
 
@@ -299,7 +327,7 @@ std::vector<SegmentHit> find_intersections_at(std::span<const std::vector<Vec2>>
   // The earlier segment in (loop, index) order first, as find_intersections has them: the
   // place a hit is reported at is measured on its first segment.
   for_each_active_pair(loops, {}, active, on, [&hits](const Seg& s, const Seg& t) { record_hit(s, t, hits); });
-  sort_place_pairs(hits);
+  sort_place_pairs_on(hits, loops);
   return hits;
 }
 
@@ -320,7 +348,7 @@ std::vector<NearMiss> find_near_misses(std::span<const std::vector<Vec2>> loops,
     if (d >= w || d == 0) return;
     out.push_back({s.loop, s.index, t.loop, t.index, d, 0.5 * (s.a + t.a)});
   });
-  sort_place_pairs(out);
+  sort_place_pairs_on(out, loops);
   return out;
 }
 
@@ -360,19 +388,28 @@ std::vector<NearMiss> find_near_pairs(std::span<const std::vector<Vec2>> loops,
     const Seg s = on_seg(k);
     n_entries += static_cast<std::size_t>((g.iy(s.hi.y) - g.iy(s.lo.y) + 1) * (g.ix(s.hi.x) - g.ix(s.lo.x) + 1));
   }
-  entries.reserve(n_entries);
-  for (std::size_t k = 0; k < on.size(); ++k) {
-    const Seg s = on_seg(k);
-    for (std::int64_t y = g.iy(s.lo.y); y <= g.iy(s.hi.y); ++y)
-      for (std::int64_t x = g.ix(s.lo.x); x <= g.ix(s.hi.x); ++x)
-        entries.push_back({static_cast<std::uint32_t>(y * g.nx + x), static_cast<std::uint32_t>(k)});
-  }
-  std::sort(entries.begin(), entries.end());
+  auto each_entry = [&](auto&& f) {
+    for (std::size_t k = 0; k < on.size(); ++k) {
+      const Seg s = on_seg(k);
+      for (std::int64_t y = g.iy(s.lo.y); y <= g.iy(s.hi.y); ++y)
+        for (std::int64_t x = g.ix(s.lo.x); x <= g.ix(s.hi.x); ++x)
+          f(static_cast<std::uint32_t>(y * g.nx + x), static_cast<std::uint32_t>(k));
+    }
+  };
   std::vector<std::uint32_t> start;
-  if (n_cells <= 4 * entries.size()) {
+  if (n_cells <= 4 * n_entries) {
+    // Placed by counting, in the order made (each cell's in segment order): the order the
+    // sort below gives, without the sort (most of a round's grid).
     start.assign(n_cells + 1, 0);
-    for (const auto& en : entries) ++start[en.first + 1];
+    each_entry([&](std::uint32_t c, std::uint32_t) { ++start[c + 1]; });
     for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
+    entries.resize(n_entries);
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    each_entry([&](std::uint32_t c, std::uint32_t k) { entries[fill[c]++] = {c, k}; });
+  } else {
+    entries.reserve(n_entries);
+    each_entry([&](std::uint32_t c, std::uint32_t k) { entries.push_back({c, k}); });
+    std::sort(entries.begin(), entries.end());
   }
   // The entries of cell c: [first, second) in `entries`.
   auto cell_range = [&](std::size_t c) -> std::pair<std::size_t, std::size_t> {
@@ -451,18 +488,11 @@ std::vector<NearMiss> find_near_pairs(std::span<const std::vector<Vec2>> loops,
   });
   std::vector<std::pair<std::uint32_t, std::uint32_t>>().swap(entries);
   std::vector<std::uint32_t>().swap(start);
-  std::size_t n_found = 0;
-  for (const auto& f : found) n_found += f.size();
-  out.reserve(n_found);
-  for (auto& f : found) {
-    for (const Places& x : f) {
-      const Seg s = seg_at(x.loop_a, x.seg_a), t = seg_at(x.loop_b, x.seg_b);
-      out.push_back({x.loop_a, x.seg_a, x.loop_b, x.seg_b, near_distance(s, t), 0.5 * (s.a + t.a)});
-    }
-    std::vector<Places>().swap(f);
-  }
-  sort_place_pairs(out);
-  return out;
+  SM_ASSERT(n_all < 0xFFFFFFFFu, "find_near_pairs: more segments than 32-bit numbers (coast/intersections.cpp)");
+  return in_place_order(found, loop_first, [&](const Places& x) {
+    const Seg s = seg_at(x.loop_a, x.seg_a), t = seg_at(x.loop_b, x.seg_b);
+    return NearMiss{x.loop_a, x.seg_a, x.loop_b, x.seg_b, near_distance(s, t), 0.5 * (s.a + t.a)};
+  });
 }
 
 std::vector<NearMiss> find_near_misses_again(std::span<const std::vector<Vec2>> loops,
@@ -480,7 +510,7 @@ std::vector<NearMiss> find_near_misses_again(std::span<const std::vector<Vec2>> 
   std::erase_if(before, [&](const NearMiss& m) {
     return searched(m.loop_a, m.seg_a) || searched(m.loop_b, m.seg_b) || near_along(m);
   });
-  sort_place_pairs(before);
+  sort_place_pairs_on(before, loops);
   std::vector<NearMiss> found = find_near_pairs(loops, width, active);
   std::erase_if(found, near_along);
   std::vector<NearMiss> out;

@@ -1184,8 +1184,14 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
   // The round's segments as they were at its start: the cuts made since only replaced two
   // segments by two dams (in `made`) or dropped water, so checking against the start's
   // segments too is the same or stricter (a stricter refusal is retried next round).
-  SegmentGrid grid(polys);
-  auto near = [&](Vec2 lo, Vec2 hi, auto&& f) { return grid.any_near(lo, hi, f); };
+  // Made at the round's first test (a round whose candidates all fall before it, the last
+  // one among them, makes none: a grid of the world's segments).
+  std::optional<SegmentGrid> grid;
+  auto the_grid = [&]() -> SegmentGrid& {
+    if (!grid) grid.emplace(polys);
+    return *grid;
+  };
+  auto near = [&](Vec2 lo, Vec2 hi, auto&& f) { return the_grid().any_near(lo, hi, f); };
   std::vector<std::pair<Vec2, Vec2>> made;
   std::vector<RefusedCut> refused;
   std::map<std::uint32_t, ChainTracker> chains;   // per round-start loop cut this round
@@ -1254,7 +1260,7 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
           {RepairKind::ClosedPassage, info.record, info.id, unit_sphere().lonlat_from_param(c.where), c.width});
     any = true;
   }
-  return put_back_refused(w, refused, grid, made) || any;
+  return (!refused.empty() && put_back_refused(w, refused, the_grid(), made)) || any;
 }
 
 // Inserts a kept node at uv point x on kept segment j of loop f (its original points

@@ -4,9 +4,12 @@
 #pragma once
 
 #include <algorithm>
+#include <cstdint>
 #include <tuple>
 #include <utility>
 #include <vector>
+
+#include "base/check.h"
 
 namespace sm::coast {
 
@@ -29,6 +32,33 @@ void order_places(P& p) {
 template <class P>
 void sort_place_pairs(std::vector<P>& v) {
   std::sort(v.begin(), v.end(), [](const P& a, const P& b) { return place_pair_key(a) < place_pair_key(b); });
+}
+
+/// As sort_place_pairs, for places on `loops` (each seg < its loop's size) that are
+/// distinct pairs: the segments numbered loop after loop, (loop_a, seg_a, loop_b, seg_b)
+/// orders as the two numbers do, so each record is sorted by one 64-bit key (the
+/// four-field comparison over the records cost several times more). Equal keys would be one
+/// pair twice; with distinct pairs the order is sort_place_pairs'.
+template <class P, class Loops>
+void sort_place_pairs_on(std::vector<P>& v, const Loops& loops) {
+  std::vector<std::uint64_t> first(loops.size() + 1, 0);
+  for (std::size_t l = 0; l < loops.size(); ++l) first[l + 1] = first[l] + loops[l].size();
+  if (first.back() >= 0xFFFFFFFFu || v.size() >= 0xFFFFFFFFu) {
+    sort_place_pairs(v);
+    return;
+  }
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> order(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    SM_ASSERT(v[i].seg_a < loops[v[i].loop_a].size() && v[i].seg_b < loops[v[i].loop_b].size(),
+              "sort_place_pairs_on: a place past its loop's end (coast/place_pairs.h)");
+    order[i] = {((first[v[i].loop_a] + v[i].seg_a) << 32) | (first[v[i].loop_b] + v[i].seg_b),
+                static_cast<std::uint32_t>(i)};
+  }
+  std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<P> sorted;
+  sorted.reserve(v.size());
+  for (const auto& o : order) sorted.push_back(v[o.second]);
+  v = std::move(sorted);
 }
 
 }  // namespace sm::coast

@@ -38,8 +38,8 @@ class SegmentGrid {
     start_.assign(static_cast<std::size_t>(side_) * side_ + 1, 0);
     auto each_cell = [&](auto&& f) {
       for (std::uint32_t l = 0; l < polys.size(); ++l)
-        for (std::uint32_t j = 0; j < polys[l].size(); ++j) {
-          const Vec2 a = polys[l][j], b = polys[l][(j + 1) % polys[l].size()];
+        for (std::uint32_t j = 0, n_l = static_cast<std::uint32_t>(polys[l].size()); j < n_l; ++j) {
+          const Vec2 a = polys[l][j], b = polys[l][next(j, n_l)];
           const auto [x0, y0] = at({std::min(a.x, b.x), std::min(a.y, b.y)});
           const auto [x1, y1] = at({std::max(a.x, b.x), std::max(a.y, b.y)});
           for (std::uint32_t y = y0; y <= y1; ++y)
@@ -81,7 +81,7 @@ class SegmentGrid {
         mark = stamp_;
         ++visited_;
         const auto& p = polys_[l];
-        if (f(l, p[j], p[(j + 1) % p.size()])) return true;
+        if (f(l, p[j], p[next(j, static_cast<std::uint32_t>(p.size()))])) return true;
       }
       return false;
     };
@@ -108,6 +108,9 @@ class SegmentGrid {
   std::size_t visited() const { return visited_; }
 
  private:
+  // Segment j's end vertex, (j + 1) mod n without a division: a grid's build takes every
+  // segment's twice, and the integer division was a visible part of it.
+  static std::uint32_t next(std::uint32_t j, std::uint32_t n) { return j + 1 == n ? 0 : j + 1; }
   std::pair<std::uint32_t, std::uint32_t> at(Vec2 p) const {
     auto c = [&](double v, double o) {
       return static_cast<std::uint32_t>(std::clamp((v - o) / cell_, 0.0, static_cast<double>(side_ - 1)));
@@ -143,7 +146,7 @@ class SegmentGrid {
       Vec2 lo{1e300, 1e300}, hi{-1e300, -1e300};
       for (std::size_t e = start_[c]; e < start_[c + 1]; ++e) {
         const auto [l, j] = entries_[e];
-        for (const Vec2 x : {polys_[l][j], polys_[l][(j + 1) % polys_[l].size()]})
+        for (const Vec2 x : {polys_[l][j], polys_[l][next(j, static_cast<std::uint32_t>(polys_[l].size()))]})
           lo = {std::min(lo.x, x.x), std::min(lo.y, x.y)}, hi = {std::max(hi.x, x.x), std::max(hi.y, x.y)};
       }
       fine_.push_back({c, lo, std::max({hi.x - lo.x, hi.y - lo.y, 1e-300}) / side, side, cells});
@@ -155,7 +158,7 @@ class SegmentGrid {
       for (const Fine& g : fine_)
         for (std::size_t e = start_[g.cell]; e < start_[g.cell + 1]; ++e) {
           const auto [l, j] = entries_[e];
-          const Vec2 a = polys_[l][j], b = polys_[l][(j + 1) % polys_[l].size()];
+          const Vec2 a = polys_[l][j], b = polys_[l][next(j, static_cast<std::uint32_t>(polys_[l].size()))];
           const auto [x0, y0] = fine_at(g, {std::min(a.x, b.x), std::min(a.y, b.y)});
           const auto [x1, y1] = fine_at(g, {std::max(a.x, b.x), std::max(a.y, b.y)});
           for (std::uint32_t y = y0; y <= y1; ++y)
