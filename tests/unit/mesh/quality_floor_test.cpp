@@ -40,6 +40,18 @@ int qf_add_polygon(geo::Model& m, const std::vector<Vec2>& pts, double lc) {
   return s;
 }
 
+// A store's own plane as the floor's space, with no curve to split and no corner: the
+// floor can only move, flip and insert inside.
+FloorFace qf_flat_face(const TriangleStore& m) {
+  FloorFace face;
+  face.space = [&m](VertexId v) { return Vec3{m.pos(v).x, m.pos(v).y, 0}; };
+  face.to_space = [](Vec2 p) { return Vec3{p.x, p.y, 0}; };
+  face.curve_point = [](VertexId, VertexId, double) { return std::optional<Vec2>{}; };
+  face.curve_split_done = [](VertexId, VertexId, VertexId) {};
+  face.is_corner = [](VertexId) { return false; };
+  return face;
+}
+
 struct QfMeshed {
   ModelMesh mesh;
   Mesh2dResult r2;
@@ -312,12 +324,7 @@ TEST_CASE("quality floor: the work budget stops it and says so") {
     tris.push_back({i, i + 12, i + 11});
   }
   REQUIRE(build_triangulation(xy, tris, m));
-  FloorFace face;
-  face.space = [&m](VertexId v) { return Vec3{m.pos(v).x, m.pos(v).y, 0}; };
-  face.to_space = [](Vec2 p) { return Vec3{p.x, p.y, 0}; };
-  face.curve_point = [](VertexId, VertexId, double) { return std::optional<Vec2>{}; };
-  face.curve_split_done = [](VertexId, VertexId, VertexId) {};
-  face.is_corner = [](VertexId) { return false; };
+  FloorFace face = qf_flat_face(m);
   QualityFloorOptions opt;
   opt.floor = 0.3;
   opt.max_work = 10;
@@ -436,12 +443,7 @@ TEST_CASE("quality floor: with an undo journal its rounds measure only what chan
     }
   REQUIRE(build_triangulation(xy, tris, base));
   const auto run = [](TriangleStore& m) {
-    FloorFace face;
-    face.space = [&m](VertexId v) { return Vec3{m.pos(v).x, m.pos(v).y, 0}; };
-    face.to_space = [](Vec2 p) { return Vec3{p.x, p.y, 0}; };
-    face.curve_point = [](VertexId, VertexId, double) { return std::optional<Vec2>{}; };
-    face.curve_split_done = [](VertexId, VertexId, VertexId) {};
-    face.is_corner = [](VertexId) { return false; };
+    FloorFace face = qf_flat_face(m);
     QualityFloorOptions opt;
     opt.floor = 0.3;
     return raise_quality_floor(m, face, opt);
