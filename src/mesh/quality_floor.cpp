@@ -238,22 +238,9 @@ void Floor::find_sharp_corners() {
 
 void Floor::touched(VertexId v) {
   // Every live triangle round v (its fan, open on a constrained edge's side).
-  const Side start = m_.out_side[v.value];
   if (!m_.out_side_ok(v)) return;
-  for (int dir = 0; dir < 2; ++dir) {
-    Side s = start;
-    for (std::uint32_t guard = 0;; ++guard) {
-      if (guard > m_.num_slots()) {
-        fault("the walk round a new vertex of the quality floor did not end", v);
-        return;
-      }
-      touched_.push_back(tri_of(s));
-      const Side o = dir == 0 ? m_.twin[prev(s).value] : m_.twin[s.value];
-      if (!o.valid()) break;
-      s = dir == 0 ? o : next(o);
-      if (s == start) return;
-    }
-  }
+  const FanEnd end = for_each_fan_side(m_, m_.out_side[v.value], [&](Side s) { touched_.push_back(tri_of(s)); });
+  if (end == FanEnd::Corrupt) fault("the walk round a new vertex of the quality floor did not end", v);
 }
 
 bool Floor::bulge_is_clear(Side s, Vec2 p) {
@@ -542,19 +529,14 @@ bool Floor::improve(TriId t) {
   for (std::uint32_t e = 0; e < 3; ++e) {
     const VertexId v = m_.vertex(t, e);
     if (!m_.out_side_ok(v)) continue;
-    const Side start = m_.out_side[v.value];
-    // Around v (both ways, the fan may be open): the constrained sides leaving or reaching v.
-    for (int dir = 0; dir < 2 && nc + 2 <= 16; ++dir) {
-      Side x = start;
-      for (std::uint32_t guard = 0; guard < 64 && nc + 2 <= 16; ++guard) {
-        if (m_.constrained(x)) cand[nc++] = x;
-        if (m_.constrained(prev(x))) cand[nc++] = prev(x);
-        const Side o = dir == 0 ? m_.twin[prev(x).value] : m_.twin[x.value];
-        if (!o.valid()) break;
-        x = dir == 0 ? o : next(o);
-        if (x == start) break;
-      }
-    }
+    // Round v (the fan may be open): the constrained sides leaving or reaching v, as many
+    // as cand holds (a corrupt fan ends the walk; the candidates met so far are tried).
+    for_each_fan_side(m_, m_.out_side[v.value], [&](Side x) {
+      if (m_.constrained(x)) cand[nc++] = x;
+      if (m_.constrained(prev(x))) cand[nc++] = prev(x);
+      return nc + 2 <= 16;
+    });
+    if (nc + 2 > 16) break;
   }
   std::sort(cand, cand + nc, [&](Side p, Side q) {
     const double lp = len3(p), lq = len3(q);
