@@ -156,6 +156,26 @@ struct SpanGroup {
 };
 static_assert(Polyline::kGroup == kSamples, "a span is one group of the near-curve polyline");
 
+// The weights (times 6) of the uniform cubic B-spline's four control points at each sample
+// of a span, made once: the same doubles as made for each span (t = i / kSamples).
+struct SampleWeights {
+  double w[kSamples + 1][4];
+};
+const SampleWeights& sample_weights() {
+  static const SampleWeights table = [] {
+    SampleWeights sw{};
+    for (int i = 0; i <= kSamples; ++i) {
+      const double t = static_cast<double>(i) / kSamples, u = 1 - t;
+      sw.w[i][0] = u * u * u;
+      sw.w[i][1] = 3 * t * t * t - 6 * t * t + 4;
+      sw.w[i][2] = -3 * t * t * t + 3 * t * t + 3 * t + 1;
+      sw.w[i][3] = t * t * t;
+    }
+    return sw;
+  }();
+  return table;
+}
+
 // One curve seen by the pass: its control points, spans and source points on the sphere.
 // The source points are mapped to the sphere where a scan reads them (a division and a few
 // products each, about four times per point and scan): kept for every curve between the
@@ -211,11 +231,10 @@ class CurveView {
   void span_group(long k, double margin, SpanGroup& g) const {
     g.k = k;
     const Vec2 a = control(k - 1), b = control(k), c = control(k + 1), d = control(k + 2);
+    const SampleWeights& w = sample_weights();
     for (int i = 0; i <= kSamples; ++i) {
-      const double t = static_cast<double>(i) / kSamples, u = 1 - t;
-      const double wa = u * u * u, wb = 3 * t * t * t - 6 * t * t + 4, wc = -3 * t * t * t + 3 * t * t + 3 * t + 1,
-                   wd = t * t * t;
-      g.p[i] = ps_.point((wa * a + wb * b + wc * c + wd * d) / 6.0);
+      const double* wi = w.w[i];
+      g.p[i] = ps_.point((wi[0] * a + wi[1] * b + wi[2] * c + wi[3] * d) / 6.0);
     }
     Vec3 lo = g.p[0], hi = g.p[0];
     for (int i = 0; i < kSamples; ++i) {
@@ -427,14 +446,20 @@ CurveScan scan_curve(const WorkCurve& c, const geo::PolarSphere& ps, const Devia
   const double min_angle = opt.min_angle_deg * geo::kDegToRad;
   const bool bounded = opt.fixed > 0 || opt.factor > 0;
   const double margin = 1e-10 * opt.radius;   // the rounding of distances on this sphere
-  // A segment's curve depends on the control points two before to three after it.
-  auto touched = [&](long s) {
-    for (long k = s - 2; k <= s + 3; ++k) {
-      const long i = c.periodic ? ((k % m) + m) % m : k;
-      if (i >= 0 && i < m && (*fresh)[static_cast<std::size_t>(i)]) return true;
+  // A segment's curve depends on the control points two before to three after it: the
+  // segments a point put back changed are marked from the points (three before to two
+  // after each), not looked for at every segment of the curve.
+  std::vector<char> touched;
+  if (fresh) {
+    touched.assign(static_cast<std::size_t>(v.segments()), 0);
+    for (long k = 0; k < m; ++k) {
+      if (!(*fresh)[static_cast<std::size_t>(k)]) continue;
+      for (long s = k - 3; s <= k + 2; ++s) {
+        const long i = c.periodic ? ((s % m) + m) % m : s;
+        if (i >= 0 && i < v.segments()) touched[static_cast<std::size_t>(i)] = 1;
+      }
     }
-    return false;
-  };
+  }
   auto control = [&](long k) { return c.uv[c.keep[static_cast<std::size_t>(c.periodic ? ((k % m) + m) % m : k)]]; };
   // Putting j back between the control points of segment s: no corner sharper than
   // min_angle at j, nor at its two neighbours unless they were already that sharp (a
@@ -486,7 +511,7 @@ CurveScan scan_curve(const WorkCurve& c, const geo::PolarSphere& ps, const Devia
     window_lo = from;
   };
   for (long s = 0; s < v.segments(); ++s) {
-    if (fresh && !touched(s)) continue;
+    if (fresh && !touched[static_cast<std::size_t>(s)]) continue;
     SegmentResult& r = st.seg[static_cast<std::size_t>(s)];
     r = SegmentResult{};
     const auto [a, b] = v.source_range(s);
