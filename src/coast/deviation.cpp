@@ -9,8 +9,11 @@
 #include "coast/deviation.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <iterator>
+#include <span>
 
 #include "base/parallel.h"
 
@@ -113,40 +116,76 @@ class Polyline {
 // Whether one of the source segments of `pts` near segment `around` (kNearSegments on
 // each side) lies within `bound` of p, each measured as Polyline measures it: then
 // Polyline::farther_than over all of them is false too (the minimum it finds is at most
-// that segment's, the same number), without the polyline's set-up.
+// that segment's, the same number), without the polyline's set-up. The answer is whether
+// any of them is within, so they are tried from `around` outwards (the nearest, as a
+// rule, is there: one or two tried, not half of them).
 constexpr std::size_t kNearSegments = 4;
 bool near_source(const std::vector<Vec3>& pts, std::size_t around, const Vec3& p, double bound) {
   const std::size_t segments = pts.size() > 0 ? pts.size() - 1 : 0;
   const std::size_t lo = around > kNearSegments ? around - kNearSegments : 0;
   const std::size_t hi = std::min(segments, around + kNearSegments);
-  for (std::size_t i = lo; i < hi; ++i) {
+  if (lo >= hi) return false;
+  const auto within = [&](std::size_t i) {
     const Vec3& a = pts[i];
     const Vec3 ab = pts[i + 1] - pts[i];
     const double l2 = norm2(ab);
     double t = l2 > 0 ? dot(p - a, ab) / l2 : 0.0;
     t = std::clamp(t, 0.0, 1.0);
-    if (!(std::sqrt(norm2(p - (a + t * ab))) / bound > 1)) return true;
+    return !(std::sqrt(norm2(p - (a + t * ab))) / bound > 1);
+  };
+  const std::size_t start = std::min(around, hi - 1);
+  if (within(start)) return true;
+  // Each step tries one more segment of [lo, hi): at most hi - lo - 1 of them.
+  for (std::size_t l = start, r = start + 1; l > lo || r < hi;) {
+    if (l > lo && within(--l)) return true;
+    if (r < hi && within(r++)) return true;
   }
   return false;
 }
 
+// One span of the curve as a group of the near-curve polyline (Polyline, kGroup = kSamples):
+// its samples, each sample-to-sample segment's direction and squared length, and the ball
+// that holds its points, as Polyline::assign makes them for the group the span is there.
+struct SpanGroup {
+  long k = 0;   // the span (unwrapped)
+  Vec3 p[kSamples + 1];
+  Vec3 ab[kSamples];
+  double l2[kSamples];
+  Vec3 centre;
+  double reach = 0;
+};
+static_assert(Polyline::kGroup == kSamples, "a span is one group of the near-curve polyline");
+
+// The weights (times 6) of the uniform cubic B-spline's four control points at each sample
+// of a span, made once: the same doubles as made for each span (t = i / kSamples).
+struct SampleWeights {
+  double w[kSamples + 1][4];
+};
+const SampleWeights& sample_weights() {
+  static const SampleWeights table = [] {
+    SampleWeights sw{};
+    for (int i = 0; i <= kSamples; ++i) {
+      const double t = static_cast<double>(i) / kSamples, u = 1 - t;
+      sw.w[i][0] = u * u * u;
+      sw.w[i][1] = 3 * t * t * t - 6 * t * t + 4;
+      sw.w[i][2] = -3 * t * t * t + 3 * t * t + 3 * t + 1;
+      sw.w[i][3] = t * t * t;
+    }
+    return sw;
+  }();
+  return table;
+}
+
 // One curve seen by the pass: its control points, spans and source points on the sphere.
-// Spans are sampled when first asked for and kept for the rest of the scan. The source
-// points are mapped to the sphere where a scan reads them (a division and a few products
-// each, about four times per point and scan): kept for every curve between the rounds,
-// they were 24 bytes a source point, 220 MB of the import's peak on the full-resolution
-// world (docs/kernel.md, "Memory of the 2D pipeline": the 3 km world's peak is the import's).
+// The source points are mapped to the sphere where a scan reads them (a division and a few
+// products each, about four times per point and scan): kept for every curve between the
+// rounds, they were 24 bytes a source point, 220 MB of the import's peak on the
+// full-resolution world (docs/kernel.md, "Memory of the 2D pipeline": the 3 km world's
+// peak is the import's).
 class CurveView {
  public:
   CurveView(const WorkCurve& c, const geo::PolarSphere& ps, const DeviationOptions& opt)
-      : c_(c), ps_(ps), opt_(opt), n_(static_cast<long>(c.full.size())), m_(static_cast<long>(c.keep.size())) {
-    if (opt.bspline) {
-      // A piece has spans -1 to m-1; a periodic curve's span k is span k mod m.
-      const std::size_t count = static_cast<std::size_t>(c.periodic ? m_ : m_ + 1);
-      samples_.resize(count * (kSamples + 1));
-      sampled_.assign(count, 0);
-    }
-  }
+      : c_(c), ps_(ps), opt_(opt), n_(static_cast<long>(c.full.size())), m_(static_cast<long>(c.keep.size())) {}
 
   // Control-polygon segments: s goes from keep[s] to keep[s + 1] (the last one of a
   // periodic curve wraps to keep[0]).
@@ -181,59 +220,175 @@ class CurveView {
     if (opt_.fixed > 0) return opt_.fixed;
     return opt_.factor > 0 ? opt_.factor * g : HUGE_VAL;  // no bound: measured only
   }
-
-  // The curve near segment s as a polyline on the sphere: the spans that pass by it.
-  void curve_near(long s, std::vector<Vec3>& line) { spans(s - 1, s + 1, s, line); }
-  // The span that follows segment s, sampled.
-  void span(long s, std::vector<Vec3>& line) { spans(s, s, s, line); }
+  // Segment s itself (straight segments, CurveType "Line").
+  void line(long s, std::vector<Vec3>& out) const {
+    out.clear();
+    out.push_back(ps_.point(control(s)));
+    out.push_back(ps_.point(control(s + 1)));
+  }
+  // Span k (a piece has spans -1 to m-1; a periodic curve's span k is span k mod m) into g:
+  // its kSamples + 1 points (its control points k-1 to k+2), and the group's data.
+  void span_group(long k, double margin, SpanGroup& g) const {
+    g.k = k;
+    const Vec2 a = control(k - 1), b = control(k), c = control(k + 1), d = control(k + 2);
+    const SampleWeights& w = sample_weights();
+    for (int i = 0; i <= kSamples; ++i) {
+      const double* wi = w.w[i];
+      g.p[i] = ps_.point((wi[0] * a + wi[1] * b + wi[2] * c + wi[3] * d) / 6.0);
+    }
+    Vec3 lo = g.p[0], hi = g.p[0];
+    for (int i = 0; i < kSamples; ++i) {
+      g.ab[i] = g.p[i + 1] - g.p[i];
+      g.l2[i] = norm2(g.ab[i]);
+      const Vec3& q = g.p[i + 1];
+      lo = {std::min(lo.x, q.x), std::min(lo.y, q.y), std::min(lo.z, q.z)},
+      hi = {std::max(hi.x, q.x), std::max(hi.y, q.y), std::max(hi.z, q.z)};
+    }
+    g.centre = 0.5 * (lo + hi);
+    double r2 = 0;
+    for (int i = 0; i <= kSamples; ++i) r2 = std::max(r2, norm2(g.p[i] - g.centre));
+    g.reach = std::sqrt(r2) + margin;
+  }
 
  private:
-  // Spans first..last sampled into one polyline (a piece has spans -1 to m-1; each span
-  // after the first adds its points after its start, which is the previous one's end);
-  // with straight segments, segment s itself.
-  void spans(long first, long last, long s, std::vector<Vec3>& line) {
-    line.clear();
-    if (!opt_.bspline) {
-      line.push_back(ps_.point(control(s)));
-      line.push_back(ps_.point(control(s + 1)));
-      return;
-    }
-    if (!c_.periodic) first = std::max(first, -1L), last = std::min(last, m_ - 1);
-    for (long k = first; k <= last; ++k) {
-      const Vec3* p = sampled(k);
-      line.insert(line.end(), p + (line.empty() ? 0 : 1), p + kSamples + 1);
-    }
-  }
   // Control point k: wrapped on a periodic curve; clamped on a piece, whose end points
   // count three times (the spans -1 and m-1 then end exactly on them).
   Vec2 control(long k) const {
     const long i = c_.periodic ? ((k % m_) + m_) % m_ : std::clamp(k, 0L, m_ - 1);
     return c_.uv[c_.keep[static_cast<std::size_t>(i)]];
   }
-  // The kSamples + 1 points of span k (its control points k-1 to k+2).
-  const Vec3* sampled(long k) {
-    const std::size_t slot = static_cast<std::size_t>(c_.periodic ? ((k % m_) + m_) % m_ : k + 1);
-    Vec3* out = samples_.data() + slot * (kSamples + 1);
-    if (!sampled_[slot]) {
-      const Vec2 a = control(k - 1), b = control(k), c = control(k + 1), d = control(k + 2);
-      for (int i = 0; i <= kSamples; ++i) {
-        const double t = static_cast<double>(i) / kSamples, u = 1 - t;
-        const double wa = u * u * u, wb = 3 * t * t * t - 6 * t * t + 4, wc = -3 * t * t * t + 3 * t * t + 3 * t + 1,
-                     wd = t * t * t;
-        out[i] = ps_.point((wa * a + wb * b + wc * c + wd * d) / 6.0);
-      }
-      sampled_[slot] = 1;
-    }
-    return out;
-  }
 
   const WorkCurve& c_;
   const geo::PolarSphere& ps_;
   const DeviationOptions& opt_;
   long n_, m_;
-  std::vector<Vec3> samples_;
-  std::vector<char> sampled_;
 };
+
+// Whether two points are the same bits (a span's first sample against the one before's
+// last: the same sum of the same terms, but for signed zeros).
+bool same_bits(const Vec3& a, const Vec3& b) {
+  return std::bit_cast<std::uint64_t>(a.x) == std::bit_cast<std::uint64_t>(b.x) &&
+         std::bit_cast<std::uint64_t>(a.y) == std::bit_cast<std::uint64_t>(b.y) &&
+         std::bit_cast<std::uint64_t>(a.z) == std::bit_cast<std::uint64_t>(b.z);
+}
+
+// The curve near segment s (spans s-1, s, s+1) as the three groups of one polyline: the
+// spans a scan reads, each made once for the three segments that read it (segments are
+// scanned in order; made again when s jumps). The polyline of the three spans (each span
+// after the first from its second sample on) is the one whose groups these are when each
+// span starts on the bits the one before ends on, which near() checks.
+class NearSpans {
+ public:
+  NearSpans(const CurveView& v, double margin) : v_(v), margin_(margin) {}
+  // The three groups for segment s, span s first (as Polyline::distance with the span's
+  // first segment as `first` tries them); false when the spans do not join bit for bit.
+  bool near(long s, const SpanGroup* (&g)[3]) {
+    g[0] = &get(s - 1);
+    g[1] = &get(s);
+    g[2] = &get(s + 1);
+    return same_bits(g[0]->p[kSamples], g[1]->p[0]) && same_bits(g[1]->p[kSamples], g[2]->p[0]);
+  }
+
+ private:
+  // Span k in slot k mod 3: the three spans of a segment never share a slot.
+  const SpanGroup& get(long k) {
+    const std::size_t slot = static_cast<std::size_t>(((k % 3) + 3) % 3);
+    SpanGroup& g = ring_[slot];
+    if (!made_[slot] || g.k != k) {
+      v_.span_group(k, margin_, g);
+      made_[slot] = 1;
+    }
+    return g;
+  }
+
+  const CurveView& v_;
+  double margin_;
+  SpanGroup ring_[3];
+  char made_[3] = {0, 0, 0};
+};
+
+// Polyline::distance(p, kSamples) over the polyline of the three spans of NearSpans::near
+// (the same numbers, group by group: the spans' own data are the groups').
+double near_distance(const Vec3& p, const SpanGroup* const (&g)[3], double margin) {
+  double d2 = norm2(p - g[0]->p[0]);
+  for (int k : {1, 0, 2}) {
+    const SpanGroup& h = *g[k];
+    const double dc = norm(p - h.centre) - h.reach - margin;
+    if (dc > 0 && dc * dc > d2) continue;
+    for (int i = 0; i < kSamples; ++i) {
+      const Vec3& a = h.p[i];
+      const Vec3& ab = h.ab[i];
+      const double l2 = h.l2[i];
+      double t = l2 > 0 ? dot(p - a, ab) / l2 : 0.0;
+      t = std::clamp(t, 0.0, 1.0);
+      d2 = std::min(d2, norm2(p - (a + t * ab)));
+    }
+  }
+  return std::sqrt(d2);
+}
+
+// The curve near segment s as a scan measures the segment's source points against it:
+// the three spans of NearSpans as groups of their own, or their polyline made as one
+// where they do not join bit for bit; with straight segments (CurveType "Line"), the
+// segment itself. `own`: the curve that follows the segment (span s, or the segment).
+class NearCurve {
+ public:
+  NearCurve(const CurveView& v, bool bspline, double margin) : v_(v), spans_(v, margin), bspline_(bspline), margin_(margin) {}
+  void set(long s) {
+    grouped_ = false;
+    if (!bspline_) {
+      v_.line(s, points_);
+      own_ = points_;
+      line_.assign(points_, margin_);
+      return;
+    }
+    grouped_ = spans_.near(s, groups_);
+    own_ = std::span<const Vec3>(groups_[1]->p, kSamples + 1);
+    if (grouped_) return;
+    points_.assign(groups_[0]->p, groups_[0]->p + kSamples + 1);
+    for (int k = 1; k < 3; ++k) points_.insert(points_.end(), groups_[k]->p + 1, groups_[k]->p + kSamples + 1);
+    line_.assign(points_, margin_);
+  }
+  // The span of segment s comes after the span before it (a piece's first segment too: it
+  // has span -1): its group is measured first.
+  double distance(const Vec3& p) const {
+    return grouped_ ? near_distance(p, groups_, margin_) : line_.distance(p, bspline_ ? kSamples : 0);
+  }
+  std::span<const Vec3> own() const { return own_; }
+
+ private:
+  const CurveView& v_;
+  NearSpans spans_;
+  bool bspline_;
+  double margin_;
+  const SpanGroup* groups_[3] = {nullptr, nullptr, nullptr};
+  bool grouped_ = false;
+  std::vector<Vec3> points_;
+  Polyline line_;
+  std::span<const Vec3> own_;
+};
+
+// Whether the curve `own` that follows a segment strays farther than `bound` from the
+// source polyline `window` (the source points from the control point before the segment
+// to the one after; the segment's own source points are a..b, window[0] is source point
+// `from`). The i-th sample of the curve lies, as a rule, nearest the source points that
+// far along the segment: the source segments there are tried first, and the whole
+// polyline only from the first sample none of them is within the bound of; each sample is
+// measured only until a source segment within the bound is found.
+bool curve_strays(std::span<const Vec3> own, const std::vector<Vec3>& window, long from, long a, long b, double bound,
+                  Polyline& source_line, double margin) {
+  const auto along = [&](std::size_t i) {
+    const long steps = static_cast<long>(std::max<std::size_t>(own.size() - 1, 1));
+    return static_cast<std::size_t>((a - from) + (b - a) * static_cast<long>(i) / steps);
+  };
+  std::size_t i = 0;
+  while (i < own.size() && near_source(window, along(i), own[i], bound)) ++i;
+  if (i == own.size()) return false;
+  source_line.assign(window, margin);
+  for (; i < own.size(); ++i)
+    if (source_line.farther_than(own[i], along(i), bound)) return true;
+  return false;
+}
 
 // What the scan of one control-polygon segment found, kept until a point put back near it
 // changes its curve.
@@ -291,14 +446,20 @@ CurveScan scan_curve(const WorkCurve& c, const geo::PolarSphere& ps, const Devia
   const double min_angle = opt.min_angle_deg * geo::kDegToRad;
   const bool bounded = opt.fixed > 0 || opt.factor > 0;
   const double margin = 1e-10 * opt.radius;   // the rounding of distances on this sphere
-  // A segment's curve depends on the control points two before to three after it.
-  auto touched = [&](long s) {
-    for (long k = s - 2; k <= s + 3; ++k) {
-      const long i = c.periodic ? ((k % m) + m) % m : k;
-      if (i >= 0 && i < m && (*fresh)[static_cast<std::size_t>(i)]) return true;
+  // A segment's curve depends on the control points two before to three after it: the
+  // segments a point put back changed are marked from the points (three before to two
+  // after each), not looked for at every segment of the curve.
+  std::vector<char> touched;
+  if (fresh) {
+    touched.assign(static_cast<std::size_t>(v.segments()), 0);
+    for (long k = 0; k < m; ++k) {
+      if (!(*fresh)[static_cast<std::size_t>(k)]) continue;
+      for (long s = k - 3; s <= k + 2; ++s) {
+        const long i = c.periodic ? ((s % m) + m) % m : s;
+        if (i >= 0 && i < v.segments()) touched[static_cast<std::size_t>(i)] = 1;
+      }
     }
-    return false;
-  };
+  }
   auto control = [&](long k) { return c.uv[c.keep[static_cast<std::size_t>(c.periodic ? ((k % m) + m) % m : k)]]; };
   // Putting j back between the control points of segment s: no corner sharper than
   // min_angle at j, nor at its two neighbours unless they were already that sharp (a
@@ -331,8 +492,8 @@ CurveScan scan_curve(const WorkCurve& c, const geo::PolarSphere& ps, const Devia
   auto splittable = [&](long s, long a) {
     return allowed_between(s) && norm(v.source(a + 1) - v.source(a)) > 0.1 * v.bound(a);
   };
-  std::vector<Vec3> points, own;
-  Polyline near, source_line;
+  NearCurve near(v, opt.bspline, margin);
+  Polyline source_line;
   std::vector<std::pair<double, long>> candidates;
   // With a bound, the source points from the control point before segment s to the one
   // after it on the sphere (`window`, unwrapped indices from window_lo): the next segment's
@@ -350,15 +511,11 @@ CurveScan scan_curve(const WorkCurve& c, const geo::PolarSphere& ps, const Devia
     window_lo = from;
   };
   for (long s = 0; s < v.segments(); ++s) {
-    if (fresh && !touched(s)) continue;
+    if (fresh && !touched[static_cast<std::size_t>(s)]) continue;
     SegmentResult& r = st.seg[static_cast<std::size_t>(s)];
     r = SegmentResult{};
     const auto [a, b] = v.source_range(s);
-    v.curve_near(s, points);
-    near.assign(points, margin);
-    // The span of segment s itself comes after the span before it (a piece's first
-    // segment too: it has span -1).
-    const std::size_t own_first = opt.bspline ? static_cast<std::size_t>(kSamples) : 0;
+    near.set(s);
     candidates.clear();
     long from = a;   // the window's first source index
     if (bounded) {
@@ -370,7 +527,7 @@ CurveScan scan_curve(const WorkCurve& c, const geo::PolarSphere& ps, const Devia
     // Source points to the curve.
     const bool last_point_too = !c.periodic && s + 1 == v.segments();
     for (long j = a; j < b || (j == b && last_point_too); ++j) {
-      const double d = near.distance(source(j), own_first);
+      const double d = near.distance(source(j));
       const double q = d / v.bound(j);
       st.dist[static_cast<std::size_t>(j % n)] = d;
       if (d > r.max) r.max = d, r.max_at = j % n;
@@ -380,25 +537,9 @@ CurveScan scan_curve(const WorkCurve& c, const geo::PolarSphere& ps, const Devia
     // The curve to the source points: the span that follows the segment against the
     // source polyline from the control point before it to the one after. It decides only
     // whether the segment is over the bound: not computed when its source points are
-    // already over it, nor without a bound (measuring only, the default), and each sample
-    // of the span measured only until a source segment within the bound is found.
-    bool curve_over = false;
-    if (bounded && r.ratio <= 1) {
-      v.span(s, own);
-      // The i-th sample of the span lies, as a rule, nearest the source points that far
-      // along the segment: the source segments there are tried first, and the whole
-      // polyline only from the first sample none of them is within the bound of.
-      // (The bounds passed by value: a lambda may not capture structured bindings before
-      // C++20's P1091 reached every compiler, clang 14 included.)
-      const auto along = [&, a = a, b = b](std::size_t i) {
-        const long steps = static_cast<long>(std::max<std::size_t>(own.size() - 1, 1));
-        return static_cast<std::size_t>((a - from) + (b - a) * static_cast<long>(i) / steps);
-      };
-      std::size_t i = 0;
-      while (i < own.size() && near_source(window, along(i), own[i], v.bound(a))) ++i;
-      if (i < own.size()) source_line.assign(window, margin);
-      for (; i < own.size() && !curve_over; ++i) curve_over = source_line.farther_than(own[i], along(i), v.bound(a));
-    }
+    // already over it, nor without a bound (measuring only, the default).
+    const bool curve_over =
+        bounded && r.ratio <= 1 && curve_strays(near.own(), window, from, a, b, v.bound(a), source_line, margin);
     if (r.ratio <= 1 && !curve_over) continue;
     // The farthest source point that makes no spike; a few tries, farthest first.
     std::sort(candidates.begin(), candidates.end(), [](const auto& x, const auto& y) {

@@ -198,3 +198,66 @@ TEST_CASE("deviation: the figures kept from the rounds are those of a fresh scan
     if (rep.narrow_features == 0) CHECK(rep.max == max);
   }
 }
+
+TEST_CASE("deviation: each source point's distance is the nearest of the three spans near its segment") {
+  // The pass measures a source point against the curve near its control-polygon segment:
+  // the spans before it, along it and after it, sampled at kSamples + 1 points each
+  // (coast/deviation.cpp). Here the same samples are made by hand and every segment of
+  // their polyline measured, with no grouping nor skipping: the pass's distances must be
+  // the same numbers, on closed curves and on a piece (its end points tripled).
+  constexpr int kSamples = 8;
+  DeviationOptions opt;
+  opt.radius = kR;
+  const geo::PolarSphere ps({0, 0, 0}, kR);
+  std::vector<WorkCurve> curves;
+  for (int i = 0; i < 3; ++i) curves.push_back(curve_of(island_with_headland(20e3 + 20e3 * i, 25e3 + 10e3 * i), 25e3, 7 + 3 * i));
+  WorkCurve piece = curve_of(island_with_headland(40e3, 35e3), 25e3, 9);
+  piece.periodic = false;
+  if (piece.keep.back() != piece.full.size() - 1)
+    piece.keep.push_back(static_cast<std::uint32_t>(piece.full.size() - 1));
+  curves.push_back(piece);
+  for (const WorkCurve& c : curves) {
+    CAPTURE(c.periodic);
+    const long m = static_cast<long>(c.keep.size()), n = static_cast<long>(c.full.size());
+    auto control = [&](long k) {
+      const long i = c.periodic ? ((k % m) + m) % m : std::clamp(k, 0L, m - 1);
+      return c.uv[c.keep[static_cast<std::size_t>(i)]];
+    };
+    auto span = [&](long k, std::vector<Vec3>& line, bool first) {
+      const Vec2 a = control(k - 1), b = control(k), cc = control(k + 1), d = control(k + 2);
+      for (int i = first ? 0 : 1; i <= kSamples; ++i) {
+        const double t = static_cast<double>(i) / kSamples, u = 1 - t;
+        const double wa = u * u * u, wb = 3 * t * t * t - 6 * t * t + 4, wc = -3 * t * t * t + 3 * t * t + 3 * t + 1,
+                     wd = t * t * t;
+        line.push_back(ps.point((wa * a + wb * b + wc * cc + wd * d) / 6.0));
+      }
+    };
+    const std::vector<double> got = source_distances(c, opt);
+    REQUIRE(got.size() == c.full.size());
+    const long segments = c.periodic ? m : m - 1;
+    std::size_t checked = 0;
+    for (long s = 0; s < segments; ++s) {
+      std::vector<Vec3> line;
+      span(s - 1, line, true);
+      span(s, line, false);
+      span(s + 1, line, false);
+      const long a = c.keep[static_cast<std::size_t>(s)];
+      const long b = s + 1 < m ? static_cast<long>(c.keep[static_cast<std::size_t>(s + 1)]) : c.keep[0] + n;
+      const bool last_point_too = !c.periodic && s + 1 == segments;
+      for (long j = a; j < b || (j == b && last_point_too); ++j) {
+        const Vec3 p = ps.point(c.uv[static_cast<std::size_t>(j % n)]);
+        double d2 = norm2(p - line.front());
+        for (std::size_t i = 0; i + 1 < line.size(); ++i) {
+          const Vec3 ab = line[i + 1] - line[i];
+          const double l2 = norm2(ab);
+          double t = l2 > 0 ? dot(p - line[i], ab) / l2 : 0.0;
+          t = std::clamp(t, 0.0, 1.0);
+          d2 = std::min(d2, norm2(p - (line[i] + t * ab)));
+        }
+        CHECK(got[static_cast<std::size_t>(j % n)] == std::sqrt(d2));
+        ++checked;
+      }
+    }
+    CHECK(checked >= c.full.size());
+  }
+}
