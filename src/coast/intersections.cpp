@@ -497,7 +497,8 @@ std::vector<NearMiss> find_near_pairs(std::span<const std::vector<Vec2>> loops,
 
 std::vector<NearMiss> find_near_misses_again(std::span<const std::vector<Vec2>> loops,
                                              std::span<const std::vector<double>> width,
-                                             std::span<const std::vector<char>> active, std::vector<NearMiss> before) {
+                                             std::span<const std::vector<char>> active, std::vector<NearMiss> before,
+                                             int threads) {
   // Within one loop only far-apart parts count: at least 3 segments away both ways.
   auto near_along = [&](const NearMiss& m) {
     if (m.loop_a != m.loop_b) return false;
@@ -510,8 +511,12 @@ std::vector<NearMiss> find_near_misses_again(std::span<const std::vector<Vec2>> 
   std::erase_if(before, [&](const NearMiss& m) {
     return searched(m.loop_a, m.seg_a) || searched(m.loop_b, m.seg_b) || near_along(m);
   });
-  sort_place_pairs_on(before, loops);
-  std::vector<NearMiss> found = find_near_pairs(loops, width, active);
+  // Sorted already when renumber_for_joins kept the order (each record's places unique then:
+  // the only two that can meet, a replaced segment's, are at a bridge, searched again).
+  if (!std::is_sorted(before.begin(), before.end(),
+                      [](const NearMiss& a, const NearMiss& b) { return place_pair_key(a) < place_pair_key(b); }))
+    sort_place_pairs_on(before, loops);
+  std::vector<NearMiss> found = find_near_pairs(loops, width, active, nullptr, threads);
   std::erase_if(found, near_along);
   std::vector<NearMiss> out;
   out.reserve(before.size() + found.size());
@@ -539,10 +544,28 @@ void renumber_for_joins(std::span<const LoopJoin> joins, std::vector<NearMiss>& 
       l = j.into;
     }
   };
+  // The records of loops in no join keep their places, so their order: a list sorted before
+  // stays sorted with the renumbered records sorted on their own and merged in, and
+  // find_near_misses_again need not sort it (the straits' passes at 3 km: 290,000 records
+  // sorted each pass, a few thousand of them renumbered).
+  auto by_key = [](const NearMiss& a, const NearMiss& b) { return place_pair_key(a) < place_pair_key(b); };
+  const bool was_sorted = std::is_sorted(near.begin(), near.end(), by_key);
+  auto joined = [&](std::uint32_t l) { return l < loops && join_of[l] != kNone; };
+  std::vector<NearMiss> renumbered;
   for (NearMiss& m : near) {
+    const bool moves = joined(m.loop_a) || joined(m.loop_b);
     place(m.loop_a, m.seg_a);
     place(m.loop_b, m.seg_b);
     order_places(m);   // the distance and the place (a half sum) do not depend on the order
+    if (was_sorted && moves) renumbered.push_back(m);
+  }
+  if (was_sorted && !renumbered.empty()) {
+    std::erase_if(near, [&](const NearMiss& m) { return joined(m.loop_a) || joined(m.loop_b); });
+    sort_place_pairs(renumbered);
+    std::vector<NearMiss> merged;
+    merged.reserve(near.size() + renumbered.size());
+    std::merge(near.begin(), near.end(), renumbered.begin(), renumbered.end(), std::back_inserter(merged), by_key);
+    near = std::move(merged);
   }
   for (const LoopJoin& j : joins) {
     const std::uint32_t n = j.n_into + j.n_from;

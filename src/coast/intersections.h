@@ -72,9 +72,11 @@ std::vector<NearMiss> find_near_pairs(std::span<const std::vector<Vec2>> loops,
 /// its loop to the other segment of a pair); a place past its loop's end is gone. The records of two inactive segments
 /// are those of `before` (the one-loop filter made again), the others are searched (find_near_pairs). The result is
 /// find_near_misses(loops, width), record for record, at the cost of the active segments and the segments near them.
+/// `threads`: the search's (find_near_pairs); the result is the same for every count.
 std::vector<NearMiss> find_near_misses_again(std::span<const std::vector<Vec2>> loops,
                                              std::span<const std::vector<double>> width,
-                                             std::span<const std::vector<char>> active, std::vector<NearMiss> before);
+                                             std::span<const std::vector<char>> active, std::vector<NearMiss> before,
+                                             int threads = 1);
 
 /// Two loops joined across segment k_into of `into` and k_from of `from` (repair.cpp,
 /// merge_across): into's polygon becomes its vertices from k_into + 1 round to k_into, then
@@ -88,7 +90,8 @@ struct LoopJoin {
 /// Renumbers the places of `near` for the joins (each loop in one join at most), and marks
 /// in `active` (one flag per segment of the loops after the joins, cleared by the caller)
 /// what find_near_misses_again must search again: the bridges and the two segments on each
-/// side of each (a pair there may have been near along one loop, or become so).
+/// side of each (a pair there may have been near along one loop, or become so). A `near`
+/// sorted by place_pair_key stays sorted.
 void renumber_for_joins(std::span<const LoopJoin> joins, std::vector<NearMiss>& near,
                         std::vector<std::vector<char>>& active);
 

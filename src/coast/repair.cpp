@@ -7,11 +7,14 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <span>
 #include <tuple>
+#include <type_traits>
 #include <unordered_map>
 
 #include <fmt/format.h>
 
+#include "base/parallel.h"
 #include "coast/intersections.h"
 #include "coast/segment_grid.h"
 #include "exact/ring.h"
@@ -847,51 +850,167 @@ namespace {
 // dead then and nothing reads its curve again: its points are freed (kept, the islands a
 // continent took in held their points twice, to the end of the import).
 //
-// la's curve is made so in place: its arrays turned to start at the end of its segment,
-// the dropped originals of the segment cut off the end, lb's run appended. A continent
-// takes in tens of islands across the straits' passes (Eurasia, 3 million source points
-// at full resolution), and a new curve per merge copied it each time into fresh pages. The
-// arrays grow by an eighth beyond what a merge needs when they must grow (not by doubling:
-// the full GSHHG's peak memory at 30 km), and handle_straits fits them to their size at
-// its end.
+// la's curve is made so in place, in ring order but not from its start: lb's run goes in
+// after the start of la's segment, in place of the dropped originals of the segment (the
+// points after it moved once), and the keep list is la's from ka + 1 round, then lb's. A
+// continent takes in tens of islands across the straits' passes (Eurasia, 3 million
+// source points at full resolution): turning its arrays to start at the segment's end at
+// each merge copied all of them each time; the curve is turned once when the passes are
+// done (start_at_first_kept). The arrays grow by an eighth
+// beyond what a merge needs when they must grow (not by doubling: the full GSHHG's peak
+// memory at 30 km), and handle_straits fits them to their size at its end.
 void merge_across(std::vector<WorkCurve>& curves, WorkLoop& la, std::uint32_t ka, WorkLoop& lb, std::uint32_t kb) {
   WorkCurve& A = curves[la.curves[0]];
   WorkCurve& B = curves[lb.curves[0]];
-  // From keep[k+1] round to keep[k] (inclusive): every retained point of the curve lies on
-  // that run, in the order of the keep list from k+1 on.
-  auto run_length = [](const WorkCurve& c, std::uint32_t k) {
-    const std::size_t n = c.full.size();
-    return (c.keep[k] + n - c.keep[(k + 1) % c.keep.size()]) % n + 1;
-  };
   const std::size_t na = A.full.size(), nka = A.keep.size();
-  const std::size_t from_a = A.keep[(ka + 1) % nka];
-  const std::size_t len_a = run_length(A, ka), len_b = run_length(B, kb);
-  const std::size_t total = len_a + len_b;
-  auto turn = [&](auto& v) {
-    std::rotate(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(from_a), v.end());
-    v.resize(len_a);
-    if (v.capacity() < total) v.reserve(total + total / 8);
-  };
-  turn(A.full);
-  turn(A.uv);
-  turn(A.gamma);
-  std::rotate(A.keep.begin(), A.keep.begin() + static_cast<std::ptrdiff_t>((ka + 1) % nka), A.keep.end());
-  for (std::uint32_t& k : A.keep) k = static_cast<std::uint32_t>((k + na - from_a) % na);
+  const std::size_t end_a = A.keep[ka], from_a = A.keep[(ka + 1) % nka];
   const std::size_t nb = B.full.size(), nkb = B.keep.size();
   const std::size_t from_b = B.keep[(kb + 1) % nkb];
-  if (A.keep.capacity() < nka + nkb) A.keep.reserve(nka + nkb + (nka + nkb) / 8);
-  for (std::size_t s = 0; s < len_b; ++s) {
-    const std::size_t i = (from_b + s) % nb;
-    A.full.push_back(B.full[i]);
-    A.uv.push_back(B.uv[i]);
-    A.gamma.push_back(B.gamma[i]);
+  // B's points from keep[kb+1] round to keep[kb] (inclusive): every retained point of B.
+  const std::size_t len_b = (B.keep[kb] + nb - from_b) % nb + 1;
+  // Where A's points go: those of its kept run stay in ring order; `at` is where B's run
+  // starts. Without a wrap (from_a after end_a) the points from from_a on move by `shift`;
+  // with one (the segment runs past A's last point to its first) the points before from_a
+  // and after end_a are dropped and the run moved to the front.
+  const bool wraps = from_a <= end_a;
+  std::size_t at = 0;
+  std::ptrdiff_t shift = 0;
+  auto place = [&](auto& v) {
+    using T = typename std::remove_reference_t<decltype(v)>::value_type;
+    const std::size_t total = wraps ? end_a - from_a + 1 + len_b : na - (from_a - end_a - 1) + len_b;
+    if (v.capacity() < total) v.reserve(total + total / 8);
+    if (wraps) {
+      v.erase(v.begin() + static_cast<std::ptrdiff_t>(end_a + 1), v.end());
+      v.erase(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(from_a));
+      at = v.size();
+      v.resize(total);
+    } else {
+      at = end_a + 1;
+      shift = static_cast<std::ptrdiff_t>(at + len_b) - static_cast<std::ptrdiff_t>(from_a);
+      if (shift > 0) {
+        v.resize(total);
+        std::move_backward(v.begin() + static_cast<std::ptrdiff_t>(from_a), v.begin() + static_cast<std::ptrdiff_t>(na),
+                           v.end());
+      } else if (shift < 0) {
+        std::move(v.begin() + static_cast<std::ptrdiff_t>(from_a), v.end(),
+                  v.begin() + static_cast<std::ptrdiff_t>(at + len_b));
+        v.resize(total);
+      }
+    }
+    return std::span<T>(v).subspan(at, len_b);
+  };
+  {
+    const std::span<geo::LonLat> full = place(A.full);
+    const std::span<Vec2> uv = place(A.uv);
+    const std::span<double> gamma = place(A.gamma);
+    for (std::size_t s = 0, i = from_b; s < len_b; ++s, i = i + 1 == nb ? 0 : i + 1) {
+      full[s] = B.full[i];
+      uv[s] = B.uv[i];
+      gamma[s] = B.gamma[i];
+    }
   }
+  std::rotate(A.keep.begin(), A.keep.begin() + static_cast<std::ptrdiff_t>((ka + 1) % nka), A.keep.end());
+  for (std::uint32_t& k : A.keep)
+    k = static_cast<std::uint32_t>(wraps ? k - from_a : (k >= from_a ? static_cast<std::ptrdiff_t>(k) + shift : k));
+  if (A.keep.capacity() < nka + nkb) A.keep.reserve(nka + nkb + (nka + nkb) / 8);
   for (std::size_t j = 0; j < nkb; ++j)
-    A.keep.push_back(static_cast<std::uint32_t>(len_a + (B.keep[(kb + 1 + j) % nkb] + nb - from_b) % nb));
+    A.keep.push_back(static_cast<std::uint32_t>(at + (B.keep[(kb + 1 + j) % nkb] + nb - from_b) % nb));
   A.periodic = true;
   free_points(B);
   lb.dead = true;
 }
+
+// A curve merge_across left starting elsewhere turned to start at its first kept point:
+// the points in the order the merges' runs give them, as the rest of the import has them.
+void start_at_first_kept(WorkCurve& c) {
+  const std::size_t s = c.keep.empty() ? 0 : c.keep[0];
+  if (s == 0) return;
+  const auto by = static_cast<std::ptrdiff_t>(s);
+  std::rotate(c.full.begin(), c.full.begin() + by, c.full.end());
+  std::rotate(c.uv.begin(), c.uv.begin() + by, c.uv.end());
+  std::rotate(c.gamma.begin(), c.gamma.begin() + by, c.gamma.end());
+  const std::size_t n = c.full.size();
+  for (std::uint32_t& k : c.keep) k = static_cast<std::uint32_t>((k + n - s) % n);
+}
+
+// A loop the pass before merged into another (j): its polygon and widths are the two
+// loops' (unchanged since they were made) turned and put end to end as merge_across put the
+// points (LoopJoin), the same values in the same order; its vertex refs those of its one
+// curve (ci) in order. Made again from the curve they were a gather through the keep list
+// of a continent's source points and a division per vertex, for every merge.
+void join_polygons(std::vector<std::vector<Vec2>>& polys, std::vector<std::vector<double>>& width,
+                   std::vector<std::vector<LoopVertexRef>>& refs, const LoopJoin& j, std::uint32_t ci) {
+  std::vector<Vec2> p;
+  std::vector<double> wd;
+  p.reserve(std::size_t{j.n_into} + j.n_from);
+  wd.reserve(p.capacity());
+  for (const auto [l, k, n] : {std::array{j.into, j.k_into, j.n_into}, std::array{j.from, j.k_from, j.n_from}}) {
+    const auto at = static_cast<std::ptrdiff_t>((k + 1) % n);
+    p.insert(p.end(), polys[l].begin() + at, polys[l].end());
+    p.insert(p.end(), polys[l].begin(), polys[l].begin() + at);
+    wd.insert(wd.end(), width[l].begin() + at, width[l].end());
+    wd.insert(wd.end(), width[l].begin(), width[l].begin() + at);
+  }
+  polys[j.into] = std::move(p);
+  width[j.into] = std::move(wd);
+  refs[j.into].resize(polys[j.into].size());
+  for (std::uint32_t k = 0; k < refs[j.into].size(); ++k) refs[j.into][k] = {ci, k};
+  std::vector<Vec2>().swap(polys[j.from]);
+  std::vector<double>().swap(width[j.from]);
+  std::vector<LoopVertexRef>().swap(refs[j.from]);
+}
+
+// The segments a strait's bridge is checked against: those of the pass's polygons of the
+// loops not merged away in the pass. The loops no merge touched before the pass are in one
+// grid of their first polygons, kept through the passes; the merged ones in a grid of
+// their polygons made each pass (a grid of the whole coast made each pass was a fifth of
+// the straits' time at 3 km on the full GSHHG, where most loops never merge). Each made at
+// the first bridge it is asked about.
+class BridgeGrids {
+ public:
+  explicit BridgeGrids(std::size_t n_loops) : merged_ever_(n_loops, 0) {}
+  /// The loops of join j change from the next pass on (called at that pass's start).
+  void merged(const LoopJoin& j) { merged_ever_[j.into] = merged_ever_[j.from] = 1; }
+  void new_pass() {
+    merged_grid_.reset();
+    merged_polys_.clear();
+  }
+  /// Whether the bridge b0 -> b1 crosses a segment of the pass's polygons (polys) of a loop
+  /// alive now, other than those sharing an end point with it (its neighbours in the new
+  /// loop).
+  bool crosses(const std::vector<WorkLoop>& loops, const std::vector<std::vector<Vec2>>& polys, Vec2 b0, Vec2 b1) {
+    if (!first_grid_) {
+      first_polys_ = polys;
+      first_grid_.emplace(first_polys_);
+    }
+    if (!merged_grid_) {
+      merged_polys_.resize(polys.size());
+      for (std::size_t l = 0; l < polys.size(); ++l)
+        if (merged_ever_[l]) merged_polys_[l] = polys[l];
+      merged_grid_.emplace(merged_polys_);
+    }
+    const Vec2 lo{std::min(b0.x, b1.x), std::min(b0.y, b1.y)};
+    const Vec2 hi{std::max(b0.x, b1.x), std::max(b0.y, b1.y)};
+    auto meets_bridge = [&](std::uint32_t l, Vec2 s0, Vec2 s1) {
+      if (loops[l].dead) return false;
+      if (std::max(s0.x, s1.x) < lo.x || std::min(s0.x, s1.x) > hi.x || std::max(s0.y, s1.y) < lo.y ||
+          std::min(s0.y, s1.y) > hi.y)
+        return false;
+      if (s0 == b0 || s0 == b1 || s1 == b0 || s1 == b1) return false;
+      return segments_meet(b0, b1, s0, s1);
+    };
+    return first_grid_->any_near_in(lo, hi, [&](std::uint32_t l, Vec2 s0, Vec2 s1) {
+      return !merged_ever_[l] && meets_bridge(l, s0, s1);
+    }) || merged_grid_->any_near_in(lo, hi, meets_bridge);
+  }
+
+ private:
+  std::vector<char> merged_ever_;   // per loop: in a join of an earlier pass
+  std::vector<std::vector<Vec2>> first_polys_;
+  std::optional<SegmentGrid> first_grid_;
+  std::vector<std::vector<Vec2>> merged_polys_;   // the merged loops' (the others empty)
+  std::optional<SegmentGrid> merged_grid_;
+};
 
 double lambda(Vec2 uv, double radius) { return 2.0 * radius / (1.0 + norm2(uv)); }
 
@@ -915,9 +1034,19 @@ void handle_straits(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops
   std::vector<char> changed(loops.size(), 1);
   std::vector<NearMiss> near;
   std::vector<LoopJoin> joins;   // the pass before's merges
+  std::vector<char> joined(loops.size(), 0);
+  std::vector<char> took_in(loops.size(), 0);   // the loops merge_across joined another into
+  BridgeGrids grids(loops.size());
   for (int pass = 0; pass < kMaxPasses; ++pass) {
+    // A loop the pass before merged into another: its polygon and widths from the two
+    // loops' (join_polygons).
+    for (const LoopJoin& j : joins) {
+      join_polygons(polys, width, refs, j, loops[j.into].curves[0]);
+      joined[j.into] = joined[j.from] = 1;
+      grids.merged(j);
+    }
     for (std::size_t l = 0; l < loops.size(); ++l) {
-      if (!changed[l]) continue;
+      if (!changed[l] || joined[l]) continue;
       polys[l].clear();
       refs[l].clear();
       width[l].clear();
@@ -941,11 +1070,12 @@ void handle_straits(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops
       renumber_for_joins(joins, near, active);
       for (std::size_t l = 0; l < loops.size(); ++l)
         if (active[l].size() != polys[l].size()) active[l].assign(polys[l].size(), 0);
-      near = find_near_misses_again(polys, width, active, std::move(near));
+      near = find_near_misses_again(polys, width, active, std::move(near), resolve_thread_count(opt.threads));
     }
     std::fill(changed.begin(), changed.end(), 0);
+    for (const LoopJoin& j : joins) joined[j.into] = joined[j.from] = 0;
     joins.clear();
-    std::optional<SegmentGrid> grid;   // made at the pass's first merge tried
+    grids.new_pass();
     // Narrowest place per pair of loops, narrowest pairs first; a place where the two
     // segments face each other (run in opposite directions, more than 120 degrees apart)
     // is preferred, since only there can a bridge close the strait.
@@ -998,27 +1128,13 @@ void handle_straits(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops
         const Vec2 b0 = pb[m.seg_b], b1 = pb[(m.seg_b + 1) % pb.size()];
         const std::array<std::array<Vec2, 2>, 2> bridges{{{a0, b1}, {b0, a1}}};
         bool bad = segments_meet(bridges[0][0], bridges[0][1], bridges[1][0], bridges[1][1]);
-        // Against the segments of the loops not merged away in this pass, near the bridge
-        // (the grid holds the pass's polygons; a loop merged into another is dead now).
-        for (const auto& br : bridges) {
-          if (bad) break;
-          const Vec2 lo{std::min(br[0].x, br[1].x), std::min(br[0].y, br[1].y)};
-          const Vec2 hi{std::max(br[0].x, br[1].x), std::max(br[0].y, br[1].y)};
-          if (!grid) grid.emplace(polys);
-          bad = grid->any_near_in(lo, hi, [&](std::uint32_t l, Vec2 s0, Vec2 s1) {
-            if (loops[l].dead) return false;
-            if (std::max(s0.x, s1.x) < lo.x || std::min(s0.x, s1.x) > hi.x || std::max(s0.y, s1.y) < lo.y ||
-                std::min(s0.y, s1.y) > hi.y)
-              return false;
-            // Edges sharing an end point with the bridge are its neighbours in the new loop.
-            if (s0 == br[0] || s0 == br[1] || s1 == br[0] || s1 == br[1]) return false;
-            return segments_meet(br[0], br[1], s0, s1);
-          });
-        }
+        // Against the segments of the loops not merged away in this pass, near the bridge.
+        for (const auto& br : bridges) bad = bad || grids.crosses(loops, polys, br[0], br[1]);
         if (!bad) {
           joins.push_back({m.loop_a, m.loop_b, ra.k, rb.k, static_cast<std::uint32_t>(pa.size()),
                            static_cast<std::uint32_t>(pb.size())});
           merge_across(curves, la, ra.k, lb, rb.k);
+          took_in[m.loop_a] = 1;
           changed[m.loop_a] = changed[m.loop_b] = 1;   // merged once this pass, made again the next
           merged = true;
           log.push_back({RepairKind::MergedIslands, ca.record, ca.id, uv_to_lonlat(m.where), metres});
@@ -1032,6 +1148,8 @@ void handle_straits(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops
       break;
     }
   }
+  for (std::size_t l = 0; l < loops.size(); ++l)
+    if (took_in[l] && !loops[l].dead) start_at_first_kept(curves[loops[l].curves[0]]);
   // The merged curves' arrays, grown with room to spare (merge_across), fitted to their
   // size before the passages' pool is made beside them.
   for (const WorkLoop& l : loops)

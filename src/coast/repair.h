@@ -43,7 +43,7 @@ struct RepairOptions {
   /// Also refine where the B-spline curves cross or touch (find_spline_crossings); places
   /// left on original data are reported as SplineMayCross.
   bool check_splines = true;
-  int threads = 1;   // for the spline check (find_spline_crossings): the same result for any
+  int threads = 1;   // for the spline check (find_spline_crossings) and the straits' search: the same result for any
 };
 
 /// The (u,v) polygon of a loop (first point not repeated) and, per vertex, the curve and

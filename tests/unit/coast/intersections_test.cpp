@@ -359,11 +359,21 @@ TEST_CASE("intersections: near misses after loops are joined are the full search
     }
     std::vector<std::vector<char>> active(loops.size());
     for (std::size_t l = 0; l < loops.size(); ++l) active[l].assign(loops[l].size(), 0);
+    std::vector<std::vector<char>> active_shuffled = active;
     std::vector<NearMiss> renumbered = near;
     renumber_for_joins(joins, renumbered, active);
+    // The records sorted before stay sorted (find_near_misses_again takes them as they are).
+    CHECK(std::is_sorted(renumbered.begin(), renumbered.end(), [](const NearMiss& a, const NearMiss& b) {
+      return place_pair_key(a) < place_pair_key(b);
+    }));
     const std::vector<NearMiss> full = find_near_misses(loops, width);
     const std::vector<NearMiss> again = find_near_misses_again(loops, width, active, renumbered);
     CHECK(same_near_misses(again, full));
+    // The same from the records in any order, searched on two threads.
+    std::vector<NearMiss> shuffled = near;
+    std::shuffle(shuffled.begin(), shuffled.end(), rng);
+    renumber_for_joins(joins, shuffled, active_shuffled);
+    CHECK(same_near_misses(find_near_misses_again(loops, width, active_shuffled, shuffled, 2), full));
     near = again;
   }
 }
