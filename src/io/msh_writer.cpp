@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <cstring>
 #include <functional>
@@ -21,6 +22,8 @@ namespace sm::io {
 namespace {
 
 constexpr std::uint32_t kUnowned = 0xFFFFFFFFu;
+// Nodes a chunk in the passes over every element's or entity's nodes below.
+constexpr std::size_t kNodeChunk = std::size_t{1} << 16;
 
 // Buffered byte output that either keeps everything (msh_to_string) or
 // drains to a base::OutputFile every few megabytes (large meshes).
@@ -172,8 +175,14 @@ Plan make_plan(const MeshModel& m, const MshOptions& opt) {
     p.saved[i] = opt.save_all || !p.has_physicals || !e.physical_tags.empty() || interface;
   }
   p.owner.assign(m.xyz.size(), kUnowned);
-  for (std::size_t i = 0; i < m.entities.size(); ++i)
-    for (std::uint32_t n : m.entities[i].nodes) p.owner[n] = static_cast<std::uint32_t>(i);
+  // A node has one owner (validate_mesh_model): each slot is written once.
+  for (std::size_t i = 0; i < m.entities.size(); ++i) {
+    const std::vector<std::uint32_t>& nodes = m.entities[i].nodes;
+    parallel_for_chunks(resolve_thread_count(opt.threads), nodes.size(), kNodeChunk,
+                        [&](std::size_t begin, std::size_t end) {
+                          for (std::size_t k = begin; k < end; ++k) p.owner[nodes[k]] = static_cast<std::uint32_t>(i);
+                        });
+  }
   return p;
 }
 
@@ -619,10 +628,16 @@ void write_msh41(Out& o, const MeshModel& m, const MshOptions& opt, const Plan& 
   // Node blocks: every saved entity, plus every entity owning a node that a
   // saved element uses (the boundary of a physical surface, say).
   std::vector<char> node_block(m.entities.size(), 0);
+  const int threads = resolve_thread_count(opt.threads);
   for (std::size_t i = 0; i < m.entities.size(); ++i) {
     if (!p.saved[i]) continue;
     node_block[i] = 1;
-    for (std::uint32_t n : m.entities[i].connectivity) node_block[p.owner[n]] = 1;
+    // The same value from every element: stores made atomic (relaxed), not ordered.
+    const std::vector<std::uint32_t>& used = m.entities[i].connectivity;
+    parallel_for_chunks(threads, used.size(), kNodeChunk, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t k = begin; k < end; ++k)
+        std::atomic_ref<char>(node_block[p.owner[used[k]]]).store(1, std::memory_order_relaxed);
+    });
   }
   // An entity's second element block holds no nodes: its first block's node block is
   // the entity's (written when either is saved).
@@ -638,7 +653,12 @@ void write_msh41(Out& o, const MeshModel& m, const MshOptions& opt, const Plan& 
   for (std::size_t i : p.order) {
     if (!node_block[i]) continue;
     ++n_blocks;
-    for (std::uint32_t n : m.entities[i].nodes) tag[n] = ++n_nodes;
+    const std::vector<std::uint32_t>& nodes = m.entities[i].nodes;
+    const std::size_t before = n_nodes;
+    parallel_for_chunks(threads, nodes.size(), kNodeChunk, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t k = begin; k < end; ++k) tag[nodes[k]] = before + k + 1;
+    });
+    n_nodes += nodes.size();
   }
   // The partitioned entities list the nodes in another order than the model's: their tags
   // stay the MeshModel's numbering (node i is tag i + 1, as in the unpartitioned file and
