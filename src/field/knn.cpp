@@ -128,7 +128,7 @@ struct KdTree::Impl {
 KdTree::KdTree(std::vector<Vec3> points, KnnOptions opts) : points_(std::move(points)), opts_(opts) {
   static_assert(sizeof(Vec3) == 3 * sizeof(double));
   if (points_.empty()) return;
-  near_ = std::make_unique<NearTree>(points_);
+  near_ = std::make_unique<NearTree>(points_, opts_.threads);
   impl_ = std::make_unique<Impl>();
   if (opts_.eps > 0) {
     flann::Matrix<double> data(reinterpret_cast<double*>(points_.data()), points_.size(), 3);

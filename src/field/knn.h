@@ -20,6 +20,8 @@ struct KnnOptions {
   /// Answer the queries of a batch in Morton (space-filling curve) order,
   /// each search starting with the bound given by the previous answer.
   bool sort_queries = true;
+  /// Threads for the exact tree's build (field/near_tree.h): the same tree for any count.
+  int threads = 1;
 };
 
 class KdTree {

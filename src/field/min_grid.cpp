@@ -10,6 +10,9 @@
 #include <tuple>
 #include <utility>
 
+#include "base/parallel.h"
+#include "base/parallel_sort.h"
+
 namespace sm::field {
 
 namespace {
@@ -37,7 +40,7 @@ std::uint64_t MinGrid::key(int level, std::int64_t i, std::int64_t j, std::int64
          (static_cast<std::uint64_t>(j) << kCoordBits) | static_cast<std::uint64_t>(k);
 }
 
-MinGrid::MinGrid(std::span<const Vec3> pts, std::span<const double> value, double finest_cell) {
+MinGrid::MinGrid(std::span<const Vec3> pts, std::span<const double> value, double finest_cell, int threads) {
   if (pts.empty()) return;
   Vec3 lo = pts[0], hi = pts[0];
   for (const Vec3& p : pts) {
@@ -62,10 +65,13 @@ MinGrid::MinGrid(std::span<const Vec3> pts, std::span<const double> value, doubl
     double min;
   };
   std::vector<Cell> level(pts.size());
-  for (std::size_t n = 0; n < pts.size(); ++n) {
-    const Vec3 d = pts[n] - origin_;
-    level[n] = {cell_of(d.x, finest_), cell_of(d.y, finest_), cell_of(d.z, finest_), value[n]};
-  }
+  constexpr std::size_t kChunk = std::size_t{1} << 15;
+  parallel_for_chunks(threads, pts.size(), kChunk, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t n = begin; n < end; ++n) {
+      const Vec3 d = pts[n] - origin_;
+      level[n] = {cell_of(d.x, finest_), cell_of(d.y, finest_), cell_of(d.z, finest_), value[n]};
+    }
+  });
   const auto same = [](const Cell& a, const Cell& b) { return a.i == b.i && a.j == b.j && a.k == b.k; };
   const auto before = [](const Cell& a, const Cell& b) {
     return std::tie(a.i, a.j, a.k) < std::tie(b.i, b.j, b.k);
@@ -74,7 +80,9 @@ MinGrid::MinGrid(std::span<const Vec3> pts, std::span<const double> value, doubl
   for (int l = 0; l < levels_; ++l) {
     if (l > 0)
       for (Cell& c : level) c = {c.i >> 1, c.j >> 1, c.k >> 1, c.min};
-    std::sort(level.begin(), level.end(), before);
+    // Cells of one key end up next to each other whatever the order among them: their
+    // minimum is the same.
+    parallel_sort(threads, level, before);
     std::size_t out = 0;
     for (std::size_t n = 0; n < level.size(); ++n) {
       if (out > 0 && same(level[out - 1], level[n])) {
@@ -92,8 +100,17 @@ MinGrid::MinGrid(std::span<const Vec3> pts, std::span<const double> value, doubl
   while (capacity < 2 * entries_) capacity *= 2, ++bits;
   shift_ = 64 - bits;
   slots_.assign(capacity, Slot{kEmpty, 0});
+  // The cells inserted in the order of their home slots, so that the table is written
+  // front to back: in the levels' order, a cache miss a cell was most of the grid's
+  // set-up on the world's coasts. Any order gives the same answers (a key is found by
+  // probing from its home slot, whatever was inserted before it).
+  const auto home = [this](std::uint64_t k) { return static_cast<std::size_t>((k * 0x9E3779B97F4A7C15ull) >> shift_); };
+  parallel_sort(threads, all, [&home](const std::pair<std::uint64_t, double>& a, const std::pair<std::uint64_t, double>& b) {
+    const std::size_t ha = home(a.first), hb = home(b.first);
+    return ha != hb ? ha < hb : a.first < b.first;
+  });
   for (const auto& [k, v] : all) {
-    std::size_t slot = static_cast<std::size_t>((k * 0x9E3779B97F4A7C15ull) >> shift_);
+    std::size_t slot = home(k);
     while (slots_[slot].key != kEmpty) slot = (slot + 1) & (capacity - 1);
     slots_[slot] = {k, float_at_most(v)};
   }

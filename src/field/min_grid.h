@@ -17,8 +17,9 @@ class MinGrid {
  public:
   /// `value[i]` is carried by `pts[i]` (finite points). `finest_cell`: the cell size
   /// of level 0 (raised where the points' extent needs it to fit the cell index);
-  /// level k has cells of finest_cell * 2^k, up to one that holds every point.
-  MinGrid(std::span<const Vec3> pts, std::span<const double> value, double finest_cell);
+  /// level k has cells of finest_cell * 2^k, up to one that holds every point. The
+  /// cells are sorted on `threads` threads (the same grid for every count).
+  MinGrid(std::span<const Vec3> pts, std::span<const double> value, double finest_cell, int threads = 1);
 
   /// A lower bound on the values of the points within distance r of x: the minimum
   /// over the cells of the smallest level whose cells are at least 2r wide that

@@ -5,24 +5,61 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <map>
+#include <utility>
+
+#include "base/parallel.h"
 
 namespace sm::field {
 
-NearTree::NearTree(std::span<const Vec3> pts) {
+NearTree::NearTree(std::span<const Vec3> pts, int threads) {
   const std::size_t n = pts.size();
   if (n == 0) return;
   std::vector<std::uint32_t> ids(n);
   for (std::size_t i = 0; i < n; ++i) ids[i] = static_cast<std::uint32_t>(i);
-  nodes_.reserve(2 * (n / kLeaf + 1));
-  nodes_.push_back({});
-  build(pts, ids, 0, 0, static_cast<std::uint32_t>(n), 0);
+  nodes_.resize(1 + std::size_t{descendants(static_cast<std::uint32_t>(n), 0)});
+  // The top levels here, the subtrees below them on the threads: each reorders its own
+  // range of ids and writes its own nodes, numbered as one depth-first build numbers them.
+  std::vector<Subtree> deferred;
+  std::uint32_t next = 1;
+  build(pts, ids, 0, 0, static_cast<std::uint32_t>(n), 0, next, &deferred);
+  parallel_for_chunks(threads, deferred.size(), 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t) {
+      const Subtree& s = deferred[t];
+      std::uint32_t below = s.next;
+      build(pts, ids, s.k, s.begin, s.end, s.depth, below, nullptr);
+    }
+  });
   x_.resize(n), y_.resize(n), z_.resize(n), id_ = ids;
+  constexpr std::size_t kChunk = std::size_t{1} << 15;
+  parallel_for_chunks(threads, n, kChunk, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) x_[k] = pts[ids[k]].x, y_[k] = pts[ids[k]].y, z_[k] = pts[ids[k]].z;
+  });
+}
 
-  for (std::size_t k = 0; k < n; ++k) x_[k] = pts[ids[k]].x, y_[k] = pts[ids[k]].y, z_[k] = pts[ids[k]].z;
+std::uint32_t NearTree::descendants(std::uint32_t count, std::size_t depth) {
+  // A level's nodes have at most two sizes (halves differ by at most one point): one
+  // answer kept per size and level, so about two nodes a level are visited, not every one.
+  std::map<std::pair<std::uint32_t, std::size_t>, std::uint32_t> known;
+  const auto below = [&known](const auto& self, std::uint32_t c, std::size_t d) -> std::uint32_t {
+    if (!(c > kLeaf && d + 1 < kMaxDepth)) return 0;
+    if (const auto it = known.find({c, d}); it != known.end()) return it->second;
+    const std::uint32_t lo = c / 2;
+    const std::uint32_t v = 2 + self(self, lo, d + 1) + self(self, c - lo, d + 1);
+    known.emplace(std::make_pair(c, d), v);
+    return v;
+  };
+  return below(below, count, depth);
 }
 
 void NearTree::build(std::span<const Vec3> pts, std::vector<std::uint32_t>& ids, std::uint32_t k,
-                     std::uint32_t begin, std::uint32_t end, std::size_t depth) {
+                     std::uint32_t begin, std::uint32_t end, std::size_t depth, std::uint32_t& next,
+                     std::vector<Subtree>* deferred) {
+  if (deferred && depth == kSubtreeDepth) {
+    deferred->push_back({k, begin, end, depth, next});
+    next += descendants(end - begin, depth);
+    return;
+  }
   Node nd;
   nd.begin = begin, nd.end = end;
   for (int a = 0; a < 3; ++a) nd.lo[a] = std::numeric_limits<double>::infinity(), nd.hi[a] = -nd.lo[a];
@@ -40,13 +77,12 @@ void NearTree::build(std::span<const Vec3> pts, std::vector<std::uint32_t>& ids,
     const std::uint32_t mid = begin + (end - begin) / 2;
     std::nth_element(ids.begin() + begin, ids.begin() + mid, ids.begin() + end,
                      [coord](std::uint32_t i, std::uint32_t j) { return coord[3 * i] < coord[3 * j]; });
-    nd.child = static_cast<std::uint32_t>(nodes_.size());
+    nd.child = next;
     nd.axis = static_cast<std::uint32_t>(axis);
-    nodes_.push_back({});
-    nodes_.push_back({});
+    next += 2;
     nodes_[k] = nd;
-    build(pts, ids, nd.child, begin, mid, depth + 1);
-    build(pts, ids, nd.child + 1, mid, end, depth + 1);
+    build(pts, ids, nd.child, begin, mid, depth + 1, next, deferred);
+    build(pts, ids, nd.child + 1, mid, end, depth + 1, next, deferred);
     return;
   }
   nodes_[k] = nd;

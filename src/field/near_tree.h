@@ -25,7 +25,8 @@ namespace sm::field {
 //   first is at most the second's smallest (its lo[axis]).
 class NearTree {
  public:
-  explicit NearTree(std::span<const Vec3> pts);
+  /// Built on `threads` threads below its top levels: the same tree for every count.
+  explicit NearTree(std::span<const Vec3> pts, int threads = 1);
 
   /// Lowers (best2, best) to the nearest point's squared distance and index when it is
   /// nearer, or as near with a smaller index; `best` = kNoTie lets only a strictly nearer
@@ -112,8 +113,23 @@ class NearTree {
     }
   }
 
+  // A subtree left for the threads: node k over ids[begin, end) at `depth`, its
+  // descendants numbered from `next` on.
+  struct Subtree {
+    std::uint32_t k, begin, end;
+    std::size_t depth;
+    std::uint32_t next;
+  };
+  // Node k over ids[begin, end): its box, and below it, when it has more than kLeaf
+  // points, its two children numbered `next` and next + 1 (next then past them and their
+  // subtrees: the order of one depth-first build). With `deferred`, a node at
+  // kSubtreeDepth is left there as a Subtree instead.
   void build(std::span<const Vec3> pts, std::vector<std::uint32_t>& ids, std::uint32_t k, std::uint32_t begin,
-             std::uint32_t end, std::size_t depth);
+             std::uint32_t end, std::size_t depth, std::uint32_t& next, std::vector<Subtree>* deferred);
+  // The nodes a node over `count` points at `depth` has below it (as build makes them).
+  static std::uint32_t descendants(std::uint32_t count, std::size_t depth);
+  // Subtrees are built on the threads from this depth down (8 of them).
+  static constexpr std::size_t kSubtreeDepth = 3;
 
   std::vector<Node> nodes_;
   std::vector<double> x_, y_, z_;

@@ -3,16 +3,35 @@
 #include "io/from_model_mesh.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstdlib>
 #include <map>
 #include <set>
 #include <utility>
+
+#include "base/parallel.h"
 
 namespace sm::io {
 
 namespace {
 
 constexpr std::uint32_t kDropped = 0xFFFFFFFFu;
+constexpr std::size_t kChunk = std::size_t{1} << 16;
+
+// flag[v] = 1 for every node v of `nodes`, on `threads` threads: each store is the same
+// value, made atomic (relaxed) where two elements share a node.
+void mark_all(std::vector<char>& flag, const std::vector<std::uint32_t>& nodes, int threads) {
+  parallel_for_chunks(threads, nodes.size(), kChunk, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) std::atomic_ref<char>(flag[nodes[k]]).store(1, std::memory_order_relaxed);
+  });
+}
+
+// v = index[v] for every v of `nodes`, on `threads` threads.
+void renumber(std::vector<std::uint32_t>& nodes, const std::vector<std::uint32_t>& index, int threads) {
+  parallel_for_chunks(threads, nodes.size(), kChunk, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) nodes[k] = index[nodes[k]];
+  });
+}
 
 // Leaves out what the 2D mesher left out, and numbers the nodes as the MSH writer does.
 // Curves of a meshed surface's loops whose nodes no 2D element uses (the closed curves of
@@ -21,13 +40,13 @@ constexpr std::uint32_t kDropped = 0xFFFFFFFFu;
 // renumbered 0.. in entity order ((dim, tag), each entity's own nodes in order), keeping
 // only the nodes some kept entity owns. Returns old node -> new node (kDropped: gone).
 std::vector<std::uint32_t> keep_mesh_only(const geo::Model& model, const std::vector<MeshNode>& nodes,
-                                          MeshModel& out) {
+                                          MeshModel& out, int threads) {
   std::vector<char> in_2d(nodes.size(), 0);
   std::set<int> meshed_surfaces;
   for (const EntityMesh& e : out.entities)
     if (e.dim == 2 && !e.connectivity.empty()) {
       meshed_surfaces.insert(e.tag);
-      for (std::uint32_t v : e.connectivity) in_2d[v] = 1;
+      mark_all(in_2d, e.connectivity, threads);
     }
   std::set<int> bounding;   // curves in the loops of the surfaces that have elements
   for (int tag : meshed_surfaces)
@@ -55,8 +74,7 @@ std::vector<std::uint32_t> keep_mesh_only(const geo::Model& model, const std::ve
   // as Gmsh writes it), unless it ended a dropped curve.
   std::vector<char> used_by_kept(nodes.size(), 0);
   for (std::size_t i = 0; i < out.entities.size(); ++i)
-    if (!dropped_entity[i] && out.entities[i].dim > 0)
-      for (std::uint32_t v : out.entities[i].connectivity) used_by_kept[v] = 1;
+    if (!dropped_entity[i] && out.entities[i].dim > 0) mark_all(used_by_kept, out.entities[i].connectivity, threads);
   const bool drop_construction = !model.geometries().empty() || !out.physicals.empty();
   if (!meshed_surfaces.empty())
     for (std::size_t i = 0; i < out.entities.size(); ++i) {
@@ -79,11 +97,13 @@ std::vector<std::uint32_t> keep_mesh_only(const geo::Model& model, const std::ve
     for (std::uint32_t v : out.entities[i].nodes)
       if (index[v] == kDropped) index[v] = static_cast<std::uint32_t>(kept_nodes++);
   out.xyz.resize(kept_nodes);
-  for (std::size_t v = 0; v < nodes.size(); ++v)
-    if (index[v] != kDropped) out.xyz[index[v]] = nodes[v].xyz;
+  parallel_for_chunks(threads, nodes.size(), kChunk, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t v = begin; v < end; ++v)
+      if (index[v] != kDropped) out.xyz[index[v]] = nodes[v].xyz;
+  });
   for (EntityMesh& e : out.entities) {
-    for (std::uint32_t& v : e.nodes) v = index[v];
-    for (std::uint32_t& v : e.connectivity) v = index[v];   // every used node is owned (validate_mesh_model)
+    renumber(e.nodes, index, threads);
+    renumber(e.connectivity, index, threads);   // every used node is owned (validate_mesh_model)
   }
   return index;
 }
@@ -91,7 +111,8 @@ std::vector<std::uint32_t> keep_mesh_only(const geo::Model& model, const std::ve
 }  // namespace
 
 MeshModel from_model_mesh(const geo::Model& model, const ModelMesh& mesh, std::vector<std::uint32_t>* node_index,
-                          bool parametric) {
+                          bool parametric, int threads) {
+  threads = resolve_thread_count(threads);
   MeshModel out;   // its points are filled last, by keep_mesh_only
   // (dim, |entity tag|) -> physical tags, ascending and without repeats.
   std::map<std::pair<int, int>, std::vector<int>> groups_of;
@@ -158,8 +179,12 @@ MeshModel from_model_mesh(const geo::Model& model, const ModelMesh& mesh, std::v
         for (std::uint32_t n : sm.interior_nodes)
           e.params.insert(e.params.end(), {mesh.nodes[n].uv.x, mesh.nodes[n].uv.y});
       }
-      e.connectivity.reserve(3 * sm.triangles.size());
-      for (const auto& t : sm.triangles) e.connectivity.insert(e.connectivity.end(), t.begin(), t.end());
+      e.connectivity.resize(3 * sm.triangles.size());
+      const auto& triangles = sm.triangles;   // a lambda may not capture a structured binding (clang 14)
+      parallel_for_chunks(threads, triangles.size(), kChunk, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t t = begin; t < end; ++t)
+          std::copy(triangles[t].begin(), triangles[t].end(), e.connectivity.begin() + static_cast<std::ptrdiff_t>(3 * t));
+      });
       if (!sm.quads.empty()) {
         // Quadrangles only: the entity's one block is theirs. Both kinds: a second record of
         // the same entity holds the quadrangles (no nodes: the first owns them), as MSH 4.1
@@ -197,7 +222,7 @@ MeshModel from_model_mesh(const geo::Model& model, const ModelMesh& mesh, std::v
   // The discrete surfaces of a merged mesh (mesh/discrete_mesh.h): elements, no loops.
   for (const auto& [tag, s] : mesh.surfaces)
     if (!model.surface(tag)) add_surface(tag, {});
-  std::vector<std::uint32_t> index = keep_mesh_only(model, mesh.nodes, out);
+  std::vector<std::uint32_t> index = keep_mesh_only(model, mesh.nodes, out, threads);
   // The periodic correspondences whose entities and nodes are all kept.
   std::set<std::pair<int, int>> kept;
   for (const EntityMesh& e : out.entities) kept.insert({e.dim, e.tag});

@@ -31,7 +31,9 @@ namespace sm::io {
 /// Without `parametric` the entities get no parametric coordinates (EntityMesh::params
 /// empty), for a file that will not hold them (MSH without Mesh.SaveParametric, every
 /// other format): 16 bytes a surface node less at the writing's peak.
+/// The copies and renumbering of the elements' nodes run on `threads` threads (the same
+/// model for every count).
 MeshModel from_model_mesh(const geo::Model& model, const ModelMesh& mesh,
-                          std::vector<std::uint32_t>* node_index = nullptr, bool parametric = true);
+                          std::vector<std::uint32_t>* node_index = nullptr, bool parametric = true, int threads = 1);
 
 }  // namespace sm::io

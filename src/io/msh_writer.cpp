@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <cstring>
 #include <functional>
@@ -21,11 +22,14 @@ namespace sm::io {
 namespace {
 
 constexpr std::uint32_t kUnowned = 0xFFFFFFFFu;
+// Nodes a chunk in the passes over every element's or entity's nodes below.
+constexpr std::size_t kNodeChunk = std::size_t{1} << 16;
 
 // Buffered byte output that either keeps everything (msh_to_string) or
 // drains to a base::OutputFile every few megabytes (large meshes).
 class Out {
  public:
+  static constexpr std::size_t kItems = 1 << 14;   // items (lines) a chunk
   Out(base::OutputFile* file, int threads) : file_(file), threads_(resolve_thread_count(threads)) {}
   void text(std::string_view s) { buf_.append(s); drain(); }
   template <class... A>
@@ -56,13 +60,13 @@ class Out {
   /// so the bytes do not depend on the thread count. A wave's text is appended and
   /// written out by one thread while the others make the next wave's: the file's writes
   /// (the kernel's copy of every byte) overlap the formatting instead of following it.
+  /// (`per_chunk` items a chunk.)
   template <class Fill>
-  void items(std::size_t n, const Fill& fill) {
-    constexpr std::size_t kItems = 1 << 14;
-    const std::size_t chunks = (n + kItems - 1) / kItems;
+  void items(std::size_t n, const Fill& fill, std::size_t per_chunk = kItems) {
+    const std::size_t chunks = (n + per_chunk - 1) / per_chunk;
     if (threads_ <= 1 || chunks <= 1) {
       for (std::size_t c = 0; c < chunks; ++c) {
-        fill(c * kItems, std::min(n, (c + 1) * kItems), buf_);
+        fill(c * per_chunk, std::min(n, (c + 1) * per_chunk), buf_);
         drain();
       }
       return;
@@ -93,13 +97,48 @@ class Out {
           }
           const std::size_t c = job - 1;
           made[c].clear();
-          const std::size_t lo = (c0 + c) * kItems;
-          fill(lo, std::min(n, lo + kItems), made[c]);
+          const std::size_t lo = (c0 + c) * per_chunk;
+          fill(lo, std::min(n, lo + per_chunk), made[c]);
         }
       });
       written_count = nc;
     }
     write_out(parts[1 - current], written_count);
+  }
+
+  /// The text of blocks [0, n) in order, block k holding weight(k) items (lines): a
+  /// block of kItems or more by large(k, *this) (its own items, chunked); a run of
+  /// smaller ones cut into groups of consecutive blocks of at most kItems lines in all
+  /// (one block at least), each group one chunk of items, small(k, out) appending block
+  /// k's text. Groups depend on the weights only: the same bytes for every thread count.
+  /// (The world's coast is tens of thousands of curves of a few nodes each: block by
+  /// block, their text was made on one thread.)
+  template <class Weight, class Small, class Large>
+  void blocks(std::size_t n, const Weight& weight, const Small& small, const Large& large) {
+    std::vector<std::size_t> group_start;
+    for (std::size_t k = 0; k < n;) {
+      if (weight(k) >= kItems) {
+        large(k, *this);
+        ++k;
+        continue;
+      }
+      group_start.clear();
+      std::size_t end = k, lines = kItems;
+      for (; end < n && weight(end) < kItems; ++end) {
+        const std::size_t w = weight(end) + 1;   // and its header line
+        if (lines + w > kItems) group_start.push_back(end), lines = 0;
+        lines += w;
+      }
+      group_start.push_back(end);
+      items(
+          group_start.size() - 1,
+          [&](std::size_t begin, std::size_t stop, std::string& out) {
+            for (std::size_t g = begin; g < stop; ++g)
+              for (std::size_t b = group_start[g]; b < group_start[g + 1]; ++b) small(b, out);
+          },
+          1);
+      k = end;
+    }
   }
 
  private:
@@ -136,8 +175,14 @@ Plan make_plan(const MeshModel& m, const MshOptions& opt) {
     p.saved[i] = opt.save_all || !p.has_physicals || !e.physical_tags.empty() || interface;
   }
   p.owner.assign(m.xyz.size(), kUnowned);
-  for (std::size_t i = 0; i < m.entities.size(); ++i)
-    for (std::uint32_t n : m.entities[i].nodes) p.owner[n] = static_cast<std::uint32_t>(i);
+  // A node has one owner (validate_mesh_model): each slot is written once.
+  for (std::size_t i = 0; i < m.entities.size(); ++i) {
+    const std::vector<std::uint32_t>& nodes = m.entities[i].nodes;
+    parallel_for_chunks(resolve_thread_count(opt.threads), nodes.size(), kNodeChunk,
+                        [&](std::size_t begin, std::size_t end) {
+                          for (std::size_t k = begin; k < end; ++k) p.owner[nodes[k]] = static_cast<std::uint32_t>(i);
+                        });
+  }
   return p;
 }
 
@@ -436,6 +481,146 @@ void write_entities41(Out& o, const MeshModel& m, const MshOptions& opt, const P
   o.text(partitioned ? "$EndPartitionedEntities\n" : "$EndEntities\n");
 }
 
+// $Nodes's blocks: an entity's header, then its node tags and places (tag[n]: node n's tag).
+void write_node_blocks41(Out& o, const MeshModel& m, const MshOptions& opt, const std::vector<char>& node_block,
+                         const Plan& p, const std::vector<std::uint64_t>& tag) {
+  std::vector<std::size_t> node_blocks;
+  for (std::size_t i : p.order)
+    if (node_block[i]) node_blocks.push_back(i);
+  auto has_param = [&](const EntityMesh& e) {
+    return opt.save_parametric && e.dim > 0 && e.params.size() == e.nodes.size() * e.dim;
+  };
+  // A block's node tags, then its coordinates (and parameters), items [begin, end) of each.
+  auto node_tags = [&](const EntityMesh& e, std::size_t begin, std::size_t end, std::string& out) {
+    auto it = std::back_inserter(out);
+    for (std::size_t k = begin; k < end; ++k) it = fmt::format_to(it, FMT_COMPILE("{}\n"), tag[e.nodes[k]]);
+  };
+  auto node_places = [&](const EntityMesh& e, std::size_t begin, std::size_t end, std::string& out) {
+    const bool param = has_param(e);
+    auto it = std::back_inserter(out);
+    for (std::size_t k = begin; k < end; ++k) {
+      const Vec3 x = m.xyz[e.nodes[k]];
+      it = fmt::format_to(it, FMT_COMPILE("{:.16g} {:.16g} {:.16g}"), x.x, x.y, x.z);
+      if (param)
+        for (int d = 0; d < e.dim; ++d) it = fmt::format_to(it, FMT_COMPILE(" {:.16g}"), e.params[k * e.dim + d]);
+      *it++ = '\n';
+    }
+  };
+  auto node_header = [&](const EntityMesh& e, std::string& out) {
+    fmt::format_to(std::back_inserter(out), FMT_COMPILE("{} {} {} {}\n"), e.dim, e.tag, has_param(e) ? 1 : 0,
+                   e.nodes.size());
+  };
+  if (!opt.binary)
+    o.blocks(
+        node_blocks.size(), [&](std::size_t b) { return 2 * m.entities[node_blocks[b]].nodes.size(); },
+        [&](std::size_t b, std::string& out) {
+          const EntityMesh& e = m.entities[node_blocks[b]];
+          node_header(e, out);
+          node_tags(e, 0, e.nodes.size(), out);
+          node_places(e, 0, e.nodes.size(), out);
+        },
+        [&](std::size_t b, Out& out) {
+          const EntityMesh& e = m.entities[node_blocks[b]];
+          std::string header;
+          node_header(e, header);
+          out.text(header);
+          out.items(e.nodes.size(), [&](std::size_t begin, std::size_t end, std::string& text) {
+            node_tags(e, begin, end, text);
+          });
+          out.items(e.nodes.size(), [&](std::size_t begin, std::size_t end, std::string& text) {
+            node_places(e, begin, end, text);
+          });
+        });
+  if (opt.binary)
+    for (const std::size_t i : node_blocks) {
+      const EntityMesh& e = m.entities[i];
+      const bool param = has_param(e);
+      o.bin<int>(e.dim), o.bin<int>(e.tag), o.bin<int>(param ? 1 : 0), o.bin<std::uint64_t>(e.nodes.size());
+      for (std::uint32_t n : e.nodes) o.bin<std::uint64_t>(tag[n]);
+      for (std::size_t k = 0; k < e.nodes.size(); ++k) {
+        const Vec3 x = m.xyz[e.nodes[k]];
+        o.bin(x.x), o.bin(x.y), o.bin(x.z);
+        if (param)
+          for (int d = 0; d < e.dim; ++d) o.bin(e.params[k * e.dim + d]);
+      }
+    }
+}
+
+// $Elements: its counts, then each saved entity's block (tag[n]: node n's tag).
+void write_element_blocks41(Out& o, const MeshModel& m, const MshOptions& opt, const Plan& p,
+                            const std::vector<std::uint64_t>& tag) {
+  std::size_t e_blocks = 0, n_elem = 0;
+  for (std::size_t i : p.order)
+    if (p.saved[i] && element_count(m.entities[i])) ++e_blocks, n_elem += element_count(m.entities[i]);
+  o.text("$Elements\n");
+  const std::uint64_t min_el = n_elem ? 1 : 0;
+  if (opt.binary) {
+    o.bin<std::uint64_t>(e_blocks), o.bin<std::uint64_t>(n_elem), o.bin<std::uint64_t>(min_el),
+        o.bin<std::uint64_t>(n_elem);
+  } else {
+    o.f("{} {} {} {}\n", e_blocks, n_elem, min_el, n_elem);
+  }
+  // The element blocks with the number before each one's first element.
+  std::vector<std::size_t> element_blocks;
+  std::vector<std::uint64_t> first_element;
+  {
+    std::uint64_t count = 0;
+    for (std::size_t i : p.order)
+      if (p.saved[i] && element_count(m.entities[i])) {
+        element_blocks.push_back(i);
+        first_element.push_back(count);
+        count += element_count(m.entities[i]);
+      }
+  }
+  auto element_header = [&](const EntityMesh& e, std::string& out) {
+    fmt::format_to(std::back_inserter(out), FMT_COMPILE("{} {} {} {}\n"), e.dim, e.tag, static_cast<int>(e.type),
+                   element_count(e));
+  };
+  auto element_lines = [&](std::size_t b, std::size_t begin, std::size_t end, std::string& out) {
+    const EntityMesh& e = m.entities[element_blocks[b]];
+    const int npe = nodes_per_element(e.type);
+    const std::uint64_t first = first_element[b];
+    auto it = std::back_inserter(out);
+    for (std::size_t k = begin; k < end; ++k) {
+      const std::uint32_t* c = &e.connectivity[k * npe];
+      it = fmt::format_to(it, FMT_COMPILE("{} "), first + k + 1);
+      for (int j = 0; j < npe; ++j) it = fmt::format_to(it, FMT_COMPILE("{} "), tag[c[j]]);
+      *it++ = '\n';
+    }
+  };
+  if (!opt.binary)
+    o.blocks(
+        element_blocks.size(), [&](std::size_t b) { return element_count(m.entities[element_blocks[b]]); },
+        [&](std::size_t b, std::string& out) {
+          const EntityMesh& e = m.entities[element_blocks[b]];
+          element_header(e, out);
+          element_lines(b, 0, element_count(e), out);
+        },
+        [&](std::size_t b, Out& out) {
+          const EntityMesh& e = m.entities[element_blocks[b]];
+          std::string header;
+          element_header(e, header);
+          out.text(header);
+          out.items(element_count(e), [&](std::size_t begin, std::size_t end, std::string& text) {
+            element_lines(b, begin, end, text);
+          });
+        });
+  std::uint64_t elm = 0;
+  for (std::size_t i : p.order) {
+    const EntityMesh& e = m.entities[i];
+    const std::size_t ne = element_count(e);
+    if (!p.saved[i] || !ne || !opt.binary) continue;
+    const int npe = nodes_per_element(e.type);
+    o.bin<int>(e.dim), o.bin<int>(e.tag), o.bin<int>(static_cast<int>(e.type)), o.bin<std::uint64_t>(ne);
+    for (std::size_t k = 0; k < ne; ++k) {
+      ++elm;
+      const std::uint32_t* c = &e.connectivity[k * npe];
+      o.bin<std::uint64_t>(elm);
+      for (int j = 0; j < npe; ++j) o.bin<std::uint64_t>(tag[c[j]]);
+    }
+  }
+}
+
 void write_msh41(Out& o, const MeshModel& m, const MshOptions& opt, const Plan& p) {
   write_entities41(o, m, opt, p, /*partitioned=*/false);
   if (m.num_partitions > 0) write_entities41(o, m, opt, p, /*partitioned=*/true);
@@ -443,10 +628,16 @@ void write_msh41(Out& o, const MeshModel& m, const MshOptions& opt, const Plan& 
   // Node blocks: every saved entity, plus every entity owning a node that a
   // saved element uses (the boundary of a physical surface, say).
   std::vector<char> node_block(m.entities.size(), 0);
+  const int threads = resolve_thread_count(opt.threads);
   for (std::size_t i = 0; i < m.entities.size(); ++i) {
     if (!p.saved[i]) continue;
     node_block[i] = 1;
-    for (std::uint32_t n : m.entities[i].connectivity) node_block[p.owner[n]] = 1;
+    // The same value from every element: stores made atomic (relaxed), not ordered.
+    const std::vector<std::uint32_t>& used = m.entities[i].connectivity;
+    parallel_for_chunks(threads, used.size(), kNodeChunk, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t k = begin; k < end; ++k)
+        std::atomic_ref<char>(node_block[p.owner[used[k]]]).store(1, std::memory_order_relaxed);
+    });
   }
   // An entity's second element block holds no nodes: its first block's node block is
   // the entity's (written when either is saved).
@@ -462,7 +653,12 @@ void write_msh41(Out& o, const MeshModel& m, const MshOptions& opt, const Plan& 
   for (std::size_t i : p.order) {
     if (!node_block[i]) continue;
     ++n_blocks;
-    for (std::uint32_t n : m.entities[i].nodes) tag[n] = ++n_nodes;
+    const std::vector<std::uint32_t>& nodes = m.entities[i].nodes;
+    const std::size_t before = n_nodes;
+    parallel_for_chunks(threads, nodes.size(), kNodeChunk, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t k = begin; k < end; ++k) tag[nodes[k]] = before + k + 1;
+    });
+    n_nodes += nodes.size();
   }
   // The partitioned entities list the nodes in another order than the model's: their tags
   // stay the MeshModel's numbering (node i is tag i + 1, as in the unpartitioned file and
@@ -485,82 +681,10 @@ void write_msh41(Out& o, const MeshModel& m, const MshOptions& opt, const Plan& 
   } else {
     o.f("{} {} {} {}\n", n_blocks, n_nodes, min_tag, max_tag);
   }
-  for (std::size_t i : p.order) {
-    if (!node_block[i]) continue;
-    const EntityMesh& e = m.entities[i];
-    const bool param = opt.save_parametric && e.dim > 0 && e.params.size() == e.nodes.size() * e.dim;
-    if (opt.binary) {
-      o.bin<int>(e.dim), o.bin<int>(e.tag), o.bin<int>(param ? 1 : 0), o.bin<std::uint64_t>(e.nodes.size());
-      for (std::uint32_t n : e.nodes) o.bin<std::uint64_t>(tag[n]);
-      for (std::size_t k = 0; k < e.nodes.size(); ++k) {
-        const Vec3 x = m.xyz[e.nodes[k]];
-        o.bin(x.x), o.bin(x.y), o.bin(x.z);
-        if (param)
-          for (int d = 0; d < e.dim; ++d) o.bin(e.params[k * e.dim + d]);
-      }
-    } else {
-      o.f("{} {} {} {}\n", e.dim, e.tag, param ? 1 : 0, e.nodes.size());
-      o.items(e.nodes.size(), [&](std::size_t begin, std::size_t end, std::string& out) {
-        auto it = std::back_inserter(out);
-        for (std::size_t k = begin; k < end; ++k) it = fmt::format_to(it, FMT_COMPILE("{}\n"), tag[e.nodes[k]]);
-      });
-      o.items(e.nodes.size(), [&](std::size_t begin, std::size_t end, std::string& out) {
-        auto it = std::back_inserter(out);
-        for (std::size_t k = begin; k < end; ++k) {
-          const Vec3 x = m.xyz[e.nodes[k]];
-          it = fmt::format_to(it, FMT_COMPILE("{:.16g} {:.16g} {:.16g}"), x.x, x.y, x.z);
-          if (param)
-            for (int d = 0; d < e.dim; ++d) it = fmt::format_to(it, FMT_COMPILE(" {:.16g}"), e.params[k * e.dim + d]);
-          *it++ = '\n';
-        }
-      });
-    }
-  }
+  write_node_blocks41(o, m, opt, node_block, p, tag);
   o.text(opt.binary ? "\n$EndNodes\n" : "$EndNodes\n");
 
-  std::size_t e_blocks = 0, n_elem = 0;
-  for (std::size_t i : p.order)
-    if (p.saved[i] && element_count(m.entities[i])) ++e_blocks, n_elem += element_count(m.entities[i]);
-  o.text("$Elements\n");
-  const std::uint64_t min_el = n_elem ? 1 : 0;
-  if (opt.binary) {
-    o.bin<std::uint64_t>(e_blocks), o.bin<std::uint64_t>(n_elem), o.bin<std::uint64_t>(min_el),
-        o.bin<std::uint64_t>(n_elem);
-  } else {
-    o.f("{} {} {} {}\n", e_blocks, n_elem, min_el, n_elem);
-  }
-  std::uint64_t elm = 0;
-  for (std::size_t i : p.order) {
-    const EntityMesh& e = m.entities[i];
-    const std::size_t ne = element_count(e);
-    if (!p.saved[i] || !ne) continue;
-    const int npe = nodes_per_element(e.type);
-    if (opt.binary) {
-      o.bin<int>(e.dim), o.bin<int>(e.tag), o.bin<int>(static_cast<int>(e.type)), o.bin<std::uint64_t>(ne);
-    } else {
-      o.f("{} {} {} {}\n", e.dim, e.tag, static_cast<int>(e.type), ne);
-    }
-    if (!opt.binary) {
-      const std::uint64_t first = elm;
-      o.items(ne, [&](std::size_t begin, std::size_t end, std::string& out) {
-        auto it = std::back_inserter(out);
-        for (std::size_t k = begin; k < end; ++k) {
-          const std::uint32_t* c = &e.connectivity[k * npe];
-          it = fmt::format_to(it, FMT_COMPILE("{} "), first + k + 1);
-          for (int j = 0; j < npe; ++j) it = fmt::format_to(it, FMT_COMPILE("{} "), tag[c[j]]);
-          *it++ = '\n';
-        }
-      });
-      elm += ne;
-      continue;
-    }
-    for (std::size_t k = 0; k < ne; ++k) {
-      ++elm;
-      const std::uint32_t* c = &e.connectivity[k * npe];
-      o.bin<std::uint64_t>(elm);
-      for (int j = 0; j < npe; ++j) o.bin<std::uint64_t>(tag[c[j]]);
-    }
-  }
+  write_element_blocks41(o, m, opt, p, tag);
   o.text(opt.binary ? "\n$EndElements\n" : "$EndElements\n");
   if (m.num_partitions == 0) write_periodic(o, m, p, tag, /*v41=*/true, opt.binary);
   if (!opt.node_data.empty()) {

@@ -613,7 +613,8 @@ std::string save_mesh(Interpreter& in, const std::string& path, const std::strin
   const Options& o = in.options();
   // The parametric coordinates only for a file that holds them (MSH's, with the option).
   io::MeshModel mm = io::from_model_mesh(k.model, k.mesh ? *k.mesh : empty, &node_index,
-                                         o.number("Mesh.SaveParametric") != 0);
+                                         o.number("Mesh.SaveParametric") != 0,
+                                         static_cast<int>(o.number("General.NumThreads")));
   const io::OutputFormat* f = nullptr;
   if (format.empty()) {
     std::string why;

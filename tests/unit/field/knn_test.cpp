@@ -328,3 +328,29 @@ TEST_CASE("knn: NearTree's search from the leaf up equals the descent and brute 
   CHECK(best == NearTree::kNoTie);
   CHECK(std::isinf(d2));
 }
+
+TEST_CASE("knn: NearTree built on threads is the same tree (its visits in the same order) for every count") {
+  std::mt19937 rng(31);
+  std::uniform_real_distribution<double> u(-1, 1);
+  // Enough points for subtrees below the top levels to be built on their own, some repeated.
+  std::vector<Vec3> pts(30011);
+  for (Vec3& p : pts) p = {u(rng), u(rng), 0.2 * u(rng)};
+  for (std::size_t i = 0; i < 500; ++i) pts[20000 + i] = pts[i];
+  const NearTree one(pts, 1);
+  for (const int threads : {2, 3, 8}) {
+    const NearTree many(pts, threads);
+    for (int n = 0; n < 200; ++n) {
+      const Vec3 q{u(rng), u(rng), 0.2 * u(rng)};
+      std::vector<std::pair<std::uint32_t, double>> seen_one, seen_many;
+      one.visit(q, 0.01, [&](std::uint32_t i, double d2) { seen_one.emplace_back(i, d2); return 0.01; });
+      many.visit(q, 0.01, [&](std::uint32_t i, double d2) { seen_many.emplace_back(i, d2); return 0.01; });
+      CHECK(seen_many == seen_one);
+      double d_one = std::numeric_limits<double>::infinity(), d_many = d_one;
+      std::uint32_t i_one = NearTree::kNoTie, i_many = NearTree::kNoTie;
+      one.search_up(q, d_one, i_one);
+      many.search_up(q, d_many, i_many);
+      CHECK(d_many == d_one);
+      CHECK(i_many == i_one);
+    }
+  }
+}

@@ -56,3 +56,22 @@ TEST_CASE("min grid: a point exactly r away is inside, a far ball is empty, bad 
   MinGrid empty({}, {}, 1);
   CHECK(empty.lower_bound({0, 0, 0}, 1) == std::numeric_limits<double>::infinity());
 }
+
+TEST_CASE("min grid: the same bounds for every thread count") {
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> u(-1, 1), val(0, 10);
+  // Enough points for the cells' sort to run in several runs, many in shared cells.
+  std::vector<Vec3> pts(200000);
+  std::vector<double> v(pts.size());
+  for (std::size_t i = 0; i < pts.size(); ++i) pts[i] = {u(rng), u(rng), 0.5 * u(rng)}, v[i] = val(rng);
+  const MinGrid one(pts, v, 0.003, 1);
+  for (const int threads : {2, 4}) {
+    const MinGrid many(pts, v, 0.003, threads);
+    CHECK(many.cells() == one.cells());
+    for (int q = 0; q < 2000; ++q) {
+      const Vec3 x{u(rng), u(rng), u(rng)};
+      const double r = 0.002 * (1 + q % 50);
+      CHECK(many.lower_bound(x, r) == one.lower_bound(x, r));
+    }
+  }
+}

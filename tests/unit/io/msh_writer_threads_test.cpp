@@ -56,3 +56,32 @@ TEST_CASE("msh threads: blocks of several waves (written while the next is forma
     }
   }
 }
+
+TEST_CASE("msh threads: thousands of small blocks (a world's coast curves) grouped, with large ones between, the "
+          "same bytes for 1, 2 and 3 threads") {
+  // 6000 curves of 7 nodes and 6 lines each, curve 3000 with 40,000 nodes (its own
+  // chunks amid the groups of small blocks), each curve owning its nodes.
+  sm::io::MeshModel m;
+  for (int c = 1; c <= 6000; ++c) {
+    sm::io::EntityMesh e;
+    e.dim = 1, e.tag = c, e.type = sm::io::ElementType::Line2;
+    const std::uint32_t n = c == 3000 ? 40000 : 7;
+    for (std::uint32_t k = 0; k < n; ++k) {
+      e.nodes.push_back(static_cast<std::uint32_t>(m.xyz.size()));
+      m.xyz.push_back({c + k / 3.0, c * 0.1 - k / 7.0, 0});
+      if (k > 0) e.connectivity.insert(e.connectivity.end(), {e.nodes[k - 1], e.nodes[k]});
+    }
+    m.entities.push_back(std::move(e));
+  }
+  sm::io::MshOptions o;
+  o.version = 41;
+  o.threads = 1;
+  const std::string one = sm::io::msh_to_string(m, o);
+  CHECK(one.find("\n1 3000 0 40000\n") != std::string::npos);   // the large block's header
+  CHECK(one.find("\n1 5999 1 6\n") != std::string::npos);       // a small one's element header
+  for (int threads : {2, 3}) {
+    CAPTURE(threads);
+    o.threads = threads;
+    CHECK(sm::io::msh_to_string(m, o) == one);
+  }
+}
