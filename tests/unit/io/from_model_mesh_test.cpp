@@ -277,3 +277,30 @@ TEST_CASE("from_model_mesh: a group keeps a deleted entity's tag; a group with n
   REQUIRE(surface != mm.entities.end());
   CHECK(surface->physical_tags == std::vector<int>{6});
 }
+
+TEST_CASE("from_model_mesh: the same model for every thread count, across the copies' chunks") {
+  // The unit square at lc 0.004: about 140,000 triangles and 72,000 nodes, so the threaded
+  // copies and renumbering (chunks of 65,536 entries) split both the nodes and the
+  // triangles' corners between threads.
+  geo::Model m = square_and_free_point();
+  REQUIRE(m.set_mesh_size({1, 2, 3, 4}, 0.004).ok());
+  Mesh1dResult r1 = mesh_curves(m, {});
+  REQUIRE(r1.ok());
+  REQUIRE(mesh_surfaces(m, r1.mesh, {}).ok());
+  REQUIRE(r1.mesh.nodes.size() > (std::size_t{1} << 16));
+  std::vector<std::uint32_t> index1;
+  const io::MeshModel one = io::from_model_mesh(m, r1.mesh, &index1, true, 1);
+  CHECK(io::validate_mesh_model(one).empty());
+  for (int threads : {2, 3}) {
+    std::vector<std::uint32_t> index;
+    const io::MeshModel many = io::from_model_mesh(m, r1.mesh, &index, true, threads);
+    CHECK(index == index1);
+    CHECK(many.xyz == one.xyz);
+    REQUIRE(many.entities.size() == one.entities.size());
+    for (std::size_t i = 0; i < one.entities.size(); ++i) {
+      CHECK(many.entities[i].nodes == one.entities[i].nodes);
+      CHECK(many.entities[i].connectivity == one.entities[i].connectivity);
+      CHECK(many.entities[i].params == one.entities[i].params);
+    }
+  }
+}
