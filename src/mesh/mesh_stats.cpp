@@ -48,25 +48,23 @@ double quantile_in(std::vector<std::uint64_t>& v, std::size_t lo, std::size_t hi
 }
 
 // The median, 5% and 95% quantiles into s: the median first over all the ratios, then the
-// others each on its side of it (half the selection work of three over all), both sides at
-// once on `threads` threads when each is on its own side: they reorder disjoint ranges
-// (the 5% one reads the median's slot past its range, which neither writes).
+// others each on its side of it (half the selection work of three over all). When each is
+// on its own side they reorder disjoint ranges (the 5% one reads the median's slot past its
+// range, which neither writes), so both run at once on `threads` threads; otherwise (a few
+// edges) one after the other over all the ratios.
 void length_quantiles(std::vector<std::uint64_t>& v, MeshStats& s, int threads) {
   const std::size_t n = v.size();
   const auto index = [n](double q) { return static_cast<std::size_t>(q * static_cast<double>(n - 1)); };
   const std::size_t mid = index(0.5);
   s.len_median = quantile_in(v, 0, n, 0.5);
-  if (index(0.05) < mid && index(0.95) > mid) {
-    parallel_for_chunks(threads, 2, 1, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t side = begin; side < end; ++side) {
-        if (side == 0) s.len_p05 = quantile_in(v, 0, mid, 0.05);
-        else s.len_p95 = quantile_in(v, mid + 1, n, 0.95);
-      }
-    });
-    return;
-  }
-  s.len_p05 = index(0.05) < mid ? quantile_in(v, 0, mid, 0.05) : quantile_in(v, 0, n, 0.05);
-  s.len_p95 = index(0.95) > mid ? quantile_in(v, mid + 1, n, 0.95) : quantile_in(v, 0, n, 0.95);
+  const bool below = index(0.05) < mid, above = index(0.95) > mid;
+  const std::size_t p05_end = below ? mid : n, p95_begin = above ? mid + 1 : 0;
+  parallel_for_chunks(below && above ? threads : 1, 2, 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t side = begin; side < end; ++side) {
+      if (side == 0) s.len_p05 = quantile_in(v, 0, p05_end, 0.05);
+      else s.len_p95 = quantile_in(v, p95_begin, n, 0.95);
+    }
+  });
 }
 
 }  // namespace
