@@ -37,11 +37,22 @@ inline Vec2 ideal_apex(Vec2 b, Vec2 c) {
   return 0.5 * (b + c) + kHalfSqrt3 * Vec2{-d.y, d.x};
 }
 
+// rho_terms(a, b, c) of exact/quality.h with la = std::sqrt(norm2(b - c)) given (a star's
+// outer edge: the same wherever its centre a is tried), the same doubles; num and den are
+// left 0 unless a, b, c turn counter-clockwise in floating point (then no root is taken).
+inline RhoTerms rho_terms_ccw(Vec2 a, Vec2 b, Vec2 c, double la) {
+  const double area2 = cross(b - a, c - a);
+  if (!(area2 > 0)) return {area2, 0, 0};
+  const double lb = std::sqrt(norm2(c - a)), lc = std::sqrt(norm2(a - b));
+  return {area2, 4 * area2 * area2, (la + lb + lc) * la * lb * lc};
+}
+
 // An outer edge (b, c) of a vertex star: the triangle (centre, b, c) is counter-clockwise.
 struct StarEdge {
   Vec2 b, c;
   Vec3 sb, sc;  // on the surface, with OptimizeOptions::to_space
   double length = 0;  // norm(sb - sc): the same for every position of the centre
+  double plane_length = 0;  // std::sqrt(norm2(b - c)): rho_terms_ccw's la (optimise_position)
 };
 
 // Sorted qualities compared worst first: the first pair that differs by more than
@@ -230,7 +241,7 @@ class Optimizer {
   }
 
   void add_star_edge(VertexId b, VertexId c) {
-    StarEdge e{m_.pos(b), m_.pos(c), {}, {}, 0};
+    StarEdge e{m_.pos(b), m_.pos(c), {}, {}, 0, 0};
     if (space_) e.sb = xyz(b), e.sc = xyz(c), e.length = norm(e.sb - e.sc);
     star_.push_back(e);
   }
@@ -254,7 +265,7 @@ class Optimizer {
         return q > floor ? q : -1;
       }
       // rho = num / den; the early exit compares without the division.
-      const RhoTerms r = rho_terms(p, e.b, e.c);
+      const RhoTerms r = rho_terms_ccw(p, e.b, e.c, e.plane_length);
       if (!(r.area2 > 0) || !(r.num > floor * r.den)) return -1;
       return r.num / r.den;
     };
@@ -295,12 +306,17 @@ class Optimizer {
   // kGood, a few line searches towards the candidates of optimize.h; returns the
   // position reached (start when nothing was better) and updates best. Every step is
   // checked with the exact orient2d.
-  Vec2 optimise_position(Vec2 start, double& best, int& good, OptimizeStats& st) {
+  Vec2 optimise_position(Vec2 start, double& best, int& good, OptimizeStats& st, int* good_start = nullptr) {
     Vec2 cur = start;
     std::size_t worst = 0;
+    // The plane lengths of the outer edges once per search, not once per candidate (the
+    // stars gathered only for their triangles, region_quality's, need none).
+    if (!space_)
+      for (StarEdge& e : star_) e.plane_length = std::sqrt(norm2(e.b - e.c));
     best = star_quality(cur, -2, &good, &worst, &cur_q_);
     if (best < 0) return start;  // tangled in floating point already: not ours to fix
     const int good0 = good;
+    if (good_start) *good_start = good0;
     Vec2 lap{0, 0}, ideal{0, 0};
     for (const StarEdge& e : star_) {
       lap += e.b;
@@ -354,10 +370,9 @@ class Optimizer {
     const Vec2 start = m_.pos(v);
     double best = 0;
     int good = 0;
-    int good0 = 0;
-    star_quality(start, -2, &good0);
+    int good0 = 0;  // the star's count above kGood where it starts (read only when it moved)
     bank_blocked_ = false;
-    const Vec2 cur = optimise_position(start, best, good, st);
+    const Vec2 cur = optimise_position(start, best, good, st, &good0);
     // Refused only for want of gained triangles: worth another try in a later round.
     if (bank_blocked_) stuck_[v.value] = 0;
     if (cur == start) return false;
