@@ -19,13 +19,10 @@
 #include <utility>
 
 #include "base/check.h"
+#include "base/huge_alloc.h"
 #include "base/rng.h"
 #include "mesh/cavity.h"
 #include "mesh/locate.h"
-
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
 
 namespace sm {
 namespace {
@@ -82,32 +79,6 @@ void radix_sort_keys(std::vector<std::uint64_t>& v, int key_bits) {
     v.swap(tmp);
   }
 }
-
-// Allocator for the big working arrays: 2 MiB aligned and, on Linux,
-// advised to use transparent huge pages. The cavity search and the walk jump
-// between triangles across tens of MiB; with 4 KiB pages nearly every such
-// jump is also a TLB miss (and the first touch of each page a fault).
-template <class T>
-struct HugeAlloc {
-  using value_type = T;
-  HugeAlloc() = default;
-  template <class U>
-  HugeAlloc(const HugeAlloc<U>&) {}
-  static constexpr std::size_t kHuge = std::size_t{2} << 20;
-  T* allocate(std::size_t n) {
-    // Small arrays (small inputs) take the ordinary path.
-    const std::size_t bytes = n * sizeof(T) < 2 * kHuge ? n * sizeof(T) : (n * sizeof(T) + kHuge - 1) / kHuge * kHuge;
-    void* p = bytes < 2 * kHuge ? std::malloc(bytes ? bytes : 1) : std::aligned_alloc(kHuge, bytes);
-    if (!p) throw std::bad_alloc();
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    if (bytes >= 2 * kHuge) madvise(p, bytes, MADV_HUGEPAGE);
-#endif
-    return static_cast<T*>(p);
-  }
-  void deallocate(T* p, std::size_t) { std::free(p); }
-  template <class U>
-  friend bool operator==(const HugeAlloc&, const HugeAlloc<U>&) { return true; }
-};
 
 // Working triangle: corners (kGhost allowed), neighbour sides and the
 // cavity stamp in one half cache line, so a conflict test or a walk step
