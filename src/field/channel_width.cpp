@@ -170,7 +170,25 @@ ChannelWidths::ChannelWidths(std::vector<CoastChain> chains, double cap, int thr
       const double b = std::max(wp, wn);
       return b * b;
     };
-    m.tree->visit_within(p, m.cap * m.cap, visit);
+    // A point lowers wp only inside the ball tangent at p on side +m of diameter wp (the
+    // picture: |d|^2 < wp (d . m)), centred at p + m wp / 2; wn likewise on side -m. A cell
+    // whose box is farther from both balls than their radii holds none, and is skipped:
+    // the widths are the same, from fewer points (the ball around p of radius
+    // max(wp, wn) that bounds the visit holds every coast point near p, most of them on
+    // this bank). The margins, relative 1e-6 and 1e-9 of the coordinates, are far above
+    // the rounding of d2 / dm and of the centres (about 1e-16 of the coordinates).
+    const double slack = 1e-9 * (norm(p) + m.cap);
+    const auto may_hold = [&](const auto& box_dist2) {
+      if (side == Vec3{0, 0, 0}) return true;
+      for (const double sign : {1.0, -1.0}) {
+        const double w = sign > 0 ? wp : wn;
+        if (!(w > 0)) continue;
+        const double r = 0.5 * w * (1 + 1e-6) + slack;
+        if (box_dist2(p + (sign * 0.5 * w) * side) <= r * r) return true;
+      }
+      return false;
+    };
+    m.tree->visit_within(p, m.cap * m.cap, visit, may_hold);
     if (water > 0) wn = wp;
     if (water < 0) wp = wn;
     m.w_pos[i] = wp;

@@ -62,6 +62,11 @@ class KdTree {
   void visit_within(const Vec3& q, double bound2, Visit&& visit) const {
     if (near_ && bound2 > 0) near_->visit(q, bound2, visit);
   }
+  /// The same, entering only the cells where may_hold(box_dist2) is true (NearTree::visit).
+  template <class Visit, class MayHold>
+  void visit_within(const Vec3& q, double bound2, Visit&& visit, MayHold&& may_hold) const {
+    if (near_ && bound2 > 0) near_->visit(q, bound2, visit, may_hold);
+  }
 
  private:
   // nearest() with the search cut at squared distance far2 (one value, or one per query;

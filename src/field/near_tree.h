@@ -46,10 +46,22 @@ class NearTree {
   /// (ChannelWidth's set-up makes one per coast sample).
   template <class Visit>
   void visit(const Vec3& q, double bound2, Visit&& fn) const {
+    visit(q, bound2, fn, [](const auto&) { return true; });
+  }
+
+  /// As visit(), but a cell is entered only where may_hold(box_dist2) is true as well:
+  /// box_dist2(c) is the squared distance from c to the cell's box (computed as the
+  /// search's own bound is). For a criterion whose points lie in a region smaller than
+  /// the ball, which may shrink as visit lowers the bound: ChannelWidth's tangent balls.
+  template <class Visit, class MayHold>
+  void visit(const Vec3& q, double bound2, Visit&& fn, MayHold&& may_hold) const {
     if (nodes_.empty()) return;
-    walk(q, 0, box2(nodes_[0], q), bound2, [&](std::uint32_t m, double d2) {
-      if (d2 < bound2) bound2 = std::min(bound2, static_cast<double>(fn(id_[m], d2)));
-    });
+    walk(
+        q, 0, box2(nodes_[0], q), bound2,
+        [&](std::uint32_t m, double d2) {
+          if (d2 < bound2) bound2 = std::min(bound2, static_cast<double>(fn(id_[m], d2)));
+        },
+        [&](const Node& nd) { return may_hold([&nd](const Vec3& c) { return box2(nd, c); }); });
   }
 
   /// The "index" that no point's index is below: a tie with it never wins.
@@ -78,10 +90,16 @@ class NearTree {
 
   /// The descent search and visit share, over node `from`'s subtree whose box is at
   /// `bound` from q: the nearer child first, a cell entered only while its box is no
-  /// farther than `limit`, which `leaf(slot, squared distance)` may lower for each point
-  /// of a leaf entered. A stack of kMaxDepth pending cells bounds it.
+  /// farther than `limit` (and `enter(node)` holds), which `leaf(slot, squared distance)`
+  /// may lower for each point of a leaf entered. A stack of kMaxDepth pending cells
+  /// bounds it.
   template <class Leaf>
   void walk(const Vec3& q, std::uint32_t from, double bound, const double& limit, Leaf&& leaf) const {
+    walk(q, from, bound, limit, leaf, [](const Node&) { return true; });
+  }
+  template <class Leaf, class Enter>
+  void walk(const Vec3& q, std::uint32_t from, double bound, const double& limit, Leaf&& leaf,
+            Enter&& enter) const {
     // Not initialised (a std::array of pairs would be zeroed: 512 bytes a call).
     struct Pending {
       std::uint32_t node;
@@ -91,7 +109,7 @@ class NearTree {
     std::size_t top = 0;
     std::uint32_t k = from;
     for (;;) {
-      if (bound <= limit) {  // false for a NaN query
+      if (bound <= limit && enter(nodes_[k])) {  // false for a NaN query
         const Node& nd = nodes_[k];
         if (nd.child != 0) {
           const double b1 = box2(nodes_[nd.child], q), b2 = box2(nodes_[nd.child + 1], q);

@@ -797,10 +797,14 @@ void place_plan(const geo::Model& model, const Mesh1dOptions& opt, double bbox, 
       std::vector<std::uint8_t> drop(n, 0);
       std::size_t dropped = 0, prev = 0;
       for (std::size_t i = 1; i + 1 < n; ++i) {
-        const double t = i == 1 ? ts[1] : 0.5 * (ts[i] + ts[prev]);
-        const geo::Jet3 j = shape.eval(t);
-        double h = 0;
-        size(std::span<const double>(&t, 1), std::span<const geo::Jet3>(&j, 1), std::span<double>(&h, 1));
+        // While the node before was kept, the midpoint is the screen's (the same t, so
+        // the same size): only a node after a dropped one needs its own evaluation.
+        double h = hm[i - 1];
+        if (prev + 1 != i) {
+          const double t = 0.5 * (ts[i] + ts[prev]);
+          const geo::Jet3 j = shape.eval(t);
+          size(std::span<const double>(&t, 1), std::span<const geo::Jet3>(&j, 1), std::span<double>(&h, 1));
+        }
         if (norm(x[i] - x[prev]) < 0.3 * h / stretch) {
           drop[i] = 1;
           ++dropped;
