@@ -30,6 +30,16 @@ inline RhoTerms rho_terms(Vec2 a, Vec2 b, Vec2 c) {
   return {area2, 4 * area2 * area2, (la + lb + lc) * la * lb * lc};
 }
 
+/// rho_terms with la = std::sqrt(norm2(b - c)) given (a vertex star's outer edge: the same
+/// wherever the optimiser tries its centre a), the same doubles; num and den are left 0
+/// unless a, b, c turn counter-clockwise in floating point (then no root is taken).
+inline RhoTerms rho_terms_ccw(Vec2 a, Vec2 b, Vec2 c, double la) {
+  const double area2 = cross(b - a, c - a);
+  if (!(area2 > 0)) return {area2, 0, 0};
+  const double lb = std::sqrt(norm2(c - a)), lc = std::sqrt(norm2(a - b));
+  return {area2, 4 * area2 * area2, (la + lb + lc) * la * lb * lc};
+}
+
 /// rho of a plane triangle of either orientation; 0 when degenerate.
 inline double rho(Vec2 a, Vec2 b, Vec2 c) {
   const RhoTerms t = rho_terms(a, b, c);

@@ -37,16 +37,6 @@ inline Vec2 ideal_apex(Vec2 b, Vec2 c) {
   return 0.5 * (b + c) + kHalfSqrt3 * Vec2{-d.y, d.x};
 }
 
-// rho_terms(a, b, c) of exact/quality.h with la = std::sqrt(norm2(b - c)) given (a star's
-// outer edge: the same wherever its centre a is tried), the same doubles; num and den are
-// left 0 unless a, b, c turn counter-clockwise in floating point (then no root is taken).
-inline RhoTerms rho_terms_ccw(Vec2 a, Vec2 b, Vec2 c, double la) {
-  const double area2 = cross(b - a, c - a);
-  if (!(area2 > 0)) return {area2, 0, 0};
-  const double lb = std::sqrt(norm2(c - a)), lc = std::sqrt(norm2(a - b));
-  return {area2, 4 * area2 * area2, (la + lb + lc) * la * lb * lc};
-}
-
 // An outer edge (b, c) of a vertex star: the triangle (centre, b, c) is counter-clockwise.
 struct StarEdge {
   Vec2 b, c;
