@@ -106,7 +106,7 @@ bool refine_in_plane(FaceWork& f, const std::function<void(std::span<const Vec2>
     ++f.res.stats.partitioned_faces;
     if (!pr.ok()) return f.fail_because(MeshProblem::RefinementFailed, pr.error);
     // Parts are Delaunay inside; smoothing ends with flips that make the seams so too.
-    if (f.opt.smoothing <= 0) make_delaunay(f.tri);
+    if (f.opt.smoothing <= 0) make_delaunay(f.tri, resolve_thread_count(f.opt.threads));
     return true;
   }
   // A large face in one piece: "2D refine" nested in "2D" in estimated triangles, told

@@ -18,13 +18,16 @@ struct SmoothStats {
 /// edge but must stay), to the average of its neighbours, unless that would invert a triangle of
 /// its fan (exact orient2d at the new place); then flip non-constrained
 /// edges until the mesh is constrained Delaunay again (id tie-break). The averaging and
-/// the inversion checks run on `threads` threads (<= 1: the calling thread only; the
-/// flips stay serial); the result is the same bytes for any thread count.
+/// the inversion checks run on `threads` threads, and so do the flips' first in-circle
+/// tests (<= 1: the calling thread only; the flips themselves stay serial); the result is
+/// the same bytes for any thread count.
 SmoothStats smooth_laplacian(TriangleStore& m, int passes, int threads = 1, std::uint32_t pinned = 0);
 
 /// Lawson flips over every non-constrained edge until all are locally
-/// Delaunay. Returns the number of flips.
-std::uint64_t make_delaunay(TriangleStore& m);
+/// Delaunay. Returns the number of flips. With threads > 1 every edge is first tested
+/// in parallel and the serial flips test anew only edges a flip has changed: the same
+/// flips in the same order, the same bytes for any thread count.
+std::uint64_t make_delaunay(TriangleStore& m, int threads = 1);
 
 /// The same flips, starting from the edges of the alive triangles `tris` only (and
 /// cascading from there): after a local change (a point inserted, an edge split) that
