@@ -561,7 +561,7 @@ void renumber_for_joins(std::span<const LoopJoin> joins, std::vector<NearMiss>& 
   }
   if (was_sorted && !renumbered.empty()) {
     std::erase_if(near, [&](const NearMiss& m) { return joined(m.loop_a) || joined(m.loop_b); });
-    sort_place_pairs(renumbered);
+    sort_place_pairs_by_keys(renumbered);   // distinct: the places map one to one
     std::vector<NearMiss> merged;
     merged.reserve(near.size() + renumbered.size());
     std::merge(near.begin(), near.end(), renumbered.begin(), renumbered.end(), std::back_inserter(merged), by_key);

@@ -60,6 +60,9 @@ class KeptRopes {
   /// result differs from a running sum by rounding, within (j + depth) ulps of the total).
   double prefix_metres(Rope r, std::size_t j) const;
   double total_metres(Rope r) const { return r == kNone ? 0.0 : nodes_[r].sum; }
+  /// The tree node at the next position of t's rope (kNone after its last): one step up or
+  /// down the tree from t, where at(rope, rank + 1) descends from the root again.
+  TreeNode next(TreeNode t) const { return successor(t); }
   /// Calls f(tree node) for every point in order.
   template <class F>
   void for_each(Rope r, F&& f) const {

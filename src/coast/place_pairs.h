@@ -34,6 +34,28 @@ void sort_place_pairs(std::vector<P>& v) {
   std::sort(v.begin(), v.end(), [](const P& a, const P& b) { return place_pair_key(a) < place_pair_key(b); });
 }
 
+/// As sort_place_pairs for distinct pairs, by two 64-bit keys a record, (loop_a, seg_a) and
+/// (loop_b, seg_b), with no loops to number the places on: the records are sorted as keys
+/// and moved once, where the four-field comparison moved the 40-byte records at every swap
+/// (renumber_for_joins' records of the loops a strait pass joined, continents' own pairs
+/// among them: 0.45 s of the straits' 4.6 s at 3 km on the full GSHHG).
+template <class P>
+void sort_place_pairs_by_keys(std::vector<P>& v) {
+  struct Key {
+    std::uint64_t a, b;
+    std::size_t i;
+  };
+  std::vector<Key> order(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i)
+    order[i] = {(std::uint64_t{v[i].loop_a} << 32) | v[i].seg_a, (std::uint64_t{v[i].loop_b} << 32) | v[i].seg_b, i};
+  std::sort(order.begin(), order.end(),
+            [](const Key& x, const Key& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
+  std::vector<P> sorted;
+  sorted.reserve(v.size());
+  for (const Key& k : order) sorted.push_back(v[k.i]);
+  v = std::move(sorted);
+}
+
 /// As sort_place_pairs, for places on `loops` (each seg < its loop's size) that are
 /// distinct pairs: the segments numbered loop after loop, (loop_a, seg_a, loop_b, seg_b)
 /// orders as the two numbers do, so each record is sorted by one 64-bit key (the

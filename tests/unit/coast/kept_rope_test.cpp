@@ -138,6 +138,8 @@ TEST_CASE("kept ropes: many cuts and joins give the rings that copying gives") {
       CHECK(ropes.id(t) == f[j].id);
       CHECK(ropes.rank(t) == j);
       CHECK(ropes.root_of(t) == r);
+      // The next position by one step from t (follow_find in passages.cpp), none after the last.
+      CHECK(ropes.next(t) == (j + 1 < f.size() ? ropes.at(r, j + 1) : KeptRopes::kNone));
       // Summed in another order: within the rounding of a sum of f.size() terms.
       CHECK(std::abs(ropes.prefix_metres(r, j) - run) <= 4e-16 * static_cast<double>(f.size()) * (run + 1));
       run += f[j].metres;

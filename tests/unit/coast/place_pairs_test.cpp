@@ -1,5 +1,5 @@
-// sort_place_pairs_on (coast/place_pairs.h): the one-key sort of pair records on loops gives
-// sort_place_pairs' order, record for record, for loops of every size (empty ones too).
+// sort_place_pairs_on and sort_place_pairs_by_keys (coast/place_pairs.h): the key sorts of pair
+// records give sort_place_pairs' order, record for record, for loops of every size (empty ones too).
 #include "coast/place_pairs.h"
 
 #include <doctest/doctest.h>
@@ -35,10 +35,13 @@ TEST_CASE("place pairs: the one-key sort on loops orders as sort_place_pairs") {
       order_places(r);
       if (seen.insert({r.loop_a, r.seg_a, r.loop_b, r.seg_b}).second) v.push_back(r);
     }
-    std::vector<Rec> want = v, got = v;
+    std::vector<Rec> want = v, got = v, by_keys = v;
     sort_place_pairs(want);
     sort_place_pairs_on(got, loops);
+    sort_place_pairs_by_keys(by_keys);
     REQUIRE(got.size() == want.size());
+    REQUIRE(by_keys.size() == want.size());
     for (std::size_t i = 0; i < got.size(); ++i) CHECK(got[i].tag == want[i].tag);
+    for (std::size_t i = 0; i < by_keys.size(); ++i) CHECK(by_keys[i].tag == want[i].tag);
   }
 }
