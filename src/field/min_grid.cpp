@@ -1,12 +1,11 @@
-// Cells are keyed by their level and integer coordinates, 2 x 2 x 2 of them (a brick)
-// under one 64-bit key in one open-addressing table: the levels together hold at most
-// about twice as many cells as there are points (each level has at most the cells of
-// the one below), and a query reads at most 8 of them, in at most 8 bricks.
+// Cells are keyed by their level and integer coordinates in one 64-bit word and kept
+// in one open-addressing table: the levels together hold at most about twice as many
+// cells as there are points (each level has at most the cells of the one below),
+// and a query reads at most 8 of them.
 #include "field/min_grid.h"
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <tuple>
 #include <utility>
@@ -96,85 +95,33 @@ MinGrid::MinGrid(std::span<const Vec3> pts, std::span<const double> value, doubl
     for (const Cell& c : level) all.emplace_back(key(l, c.i, c.j, c.k), c.min);
   }
   entries_ = all.size();
-  // A cell's brick and lane (min_grid.h), from its key's coordinates.
-  constexpr std::uint64_t kCoordMask = (std::uint64_t{1} << kCoordBits) - 1;
-  const auto brick_of = [](std::uint64_t k) {
-    const std::uint64_t lvl = k >> (3 * kCoordBits);
-    const std::uint64_t i = (k >> (2 * kCoordBits)) & kCoordMask, j = (k >> kCoordBits) & kCoordMask,
-                        c = k & kCoordMask;
-    return lvl << (3 * kCoordBits) | (i >> 1) << (2 * kCoordBits) | (j >> 1) << kCoordBits | c >> 1;
-  };
-  const auto lane_of = [](std::uint64_t k) {
-    return static_cast<int>(((k >> (2 * kCoordBits)) & 1) | ((k >> kCoordBits) & 1) << 1 | (k & 1) << 2);
-  };
-  std::size_t bricks = 0;
-  {
-    std::vector<std::uint64_t> keys(all.size());
-    for (std::size_t n = 0; n < all.size(); ++n) keys[n] = brick_of(all[n].first);
-    parallel_sort(threads, keys, std::less<>());
-    bricks = static_cast<std::size_t>(std::unique(keys.begin(), keys.end()) - keys.begin());
-  }
   std::size_t capacity = 16;
   int bits = 4;
-  while (capacity < 2 * bricks) capacity *= 2, ++bits;
+  while (capacity < 2 * entries_) capacity *= 2, ++bits;
   shift_ = 64 - bits;
-  Brick empty{kEmpty, {}};
-  for (float& f : empty.min) f = std::numeric_limits<float>::infinity();
-  slots_.assign(capacity, empty);
-  // The cells inserted in the order of their bricks' home slots, so that the table is
-  // written front to back: in the levels' order, a cache miss a cell was most of the
-  // grid's set-up on the world's coasts. Any order gives the same answers (a key is found
-  // by probing from its home slot, whatever was inserted before it); a brick's cells are
-  // next to each other in this order, so its slot is the one just written.
-  parallel_sort(threads, all,
-                [this, &brick_of](const std::pair<std::uint64_t, double>& a, const std::pair<std::uint64_t, double>& b) {
-                  const std::uint64_t ba = brick_of(a.first), bb = brick_of(b.first);
-                  const std::size_t ha = home(ba), hb = home(bb);
-                  return ha != hb ? ha < hb : ba != bb ? ba < bb : a.first < b.first;
-                });
-  std::size_t slot = 0;
-  std::uint64_t last = kEmpty;
+  slots_.assign(capacity, Slot{kEmpty, 0});
+  // The cells inserted in the order of their home slots, so that the table is written
+  // front to back: in the levels' order, a cache miss a cell was most of the grid's
+  // set-up on the world's coasts. Any order gives the same answers (a key is found by
+  // probing from its home slot, whatever was inserted before it).
+  const auto home = [this](std::uint64_t k) { return static_cast<std::size_t>((k * 0x9E3779B97F4A7C15ull) >> shift_); };
+  parallel_sort(threads, all, [&home](const std::pair<std::uint64_t, double>& a, const std::pair<std::uint64_t, double>& b) {
+    const std::size_t ha = home(a.first), hb = home(b.first);
+    return ha != hb ? ha < hb : a.first < b.first;
+  });
   for (const auto& [k, v] : all) {
-    const std::uint64_t b = brick_of(k);
-    if (b != last) {
-      slot = home(b);
-      while (slots_[slot].key != kEmpty) slot = (slot + 1) & (capacity - 1);
-      slots_[slot].key = b;
-      last = b;
-    }
-    slots_[slot].min[lane_of(k)] = float_at_most(v);
+    std::size_t slot = home(k);
+    while (slots_[slot].key != kEmpty) slot = (slot + 1) & (capacity - 1);
+    slots_[slot] = {k, float_at_most(v)};
   }
 }
 
-const MinGrid::Brick* MinGrid::find(std::uint64_t k) const {
+double MinGrid::find(std::uint64_t k) const {
   const std::size_t mask = slots_.size() - 1;
-  for (std::size_t slot = home(k);; slot = (slot + 1) & mask) {
-    if (slots_[slot].key == k) return &slots_[slot];
-    if (slots_[slot].key == kEmpty) return nullptr;
+  for (std::size_t slot = static_cast<std::size_t>((k * 0x9E3779B97F4A7C15ull) >> shift_);; slot = (slot + 1) & mask) {
+    if (slots_[slot].key == k) return static_cast<double>(slots_[slot].min);
+    if (slots_[slot].key == kEmpty) return std::numeric_limits<double>::infinity();
   }
-}
-
-template <class Read>
-bool MinGrid::each_cell(const Box& b, Read&& read) const {
-  // The bricks' home slots are fetched together first: their cache misses overlap
-  // instead of following one another.
-  for (std::int64_t bi = b.from[0] >> 1; bi <= b.to[0] >> 1; ++bi)
-    for (std::int64_t bj = b.from[1] >> 1; bj <= b.to[1] >> 1; ++bj)
-      for (std::int64_t bk = b.from[2] >> 1; bk <= b.to[2] >> 1; ++bk) {
-        const std::uint64_t k = key(b.level, bi, bj, bk);
-        __builtin_prefetch(&slots_[home(k)]);
-      }
-  for (std::int64_t bi = b.from[0] >> 1; bi <= b.to[0] >> 1; ++bi)
-    for (std::int64_t bj = b.from[1] >> 1; bj <= b.to[1] >> 1; ++bj)
-      for (std::int64_t bk = b.from[2] >> 1; bk <= b.to[2] >> 1; ++bk) {
-        const Brick* brick = find(key(b.level, bi, bj, bk));
-        if (!brick) continue;  // no point in any of its cells: all +inf
-        for (std::int64_t i = std::max(b.from[0], 2 * bi); i <= std::min(b.to[0], 2 * bi + 1); ++i)
-          for (std::int64_t j = std::max(b.from[1], 2 * bj); j <= std::min(b.to[1], 2 * bj + 1); ++j)
-            for (std::int64_t k = std::max(b.from[2], 2 * bk); k <= std::min(b.to[2], 2 * bk + 1); ++k)
-              if (!read(static_cast<double>(brick->min[(i & 1) | (j & 1) << 1 | (k & 1) << 2]))) return false;
-      }
-  return true;
 }
 
 bool MinGrid::box_of(const Vec3& x, double r, Box& box, double& bound) const {
@@ -211,10 +158,9 @@ double MinGrid::lower_bound(const Vec3& x, double r) const {
   Box b;
   double low = 0;
   if (!box_of(x, r, b, low)) return low;
-  each_cell(b, [&low](double m) {
-    low = std::min(low, m);
-    return true;
-  });
+  for (std::int64_t i = b.from[0]; i <= b.to[0]; ++i)
+    for (std::int64_t j = b.from[1]; j <= b.to[1]; ++j)
+      for (std::int64_t k = b.from[2]; k <= b.to[2]; ++k) low = std::min(low, find(key(b.level, i, j, k)));
   return low;
 }
 
@@ -224,7 +170,11 @@ bool MinGrid::at_least(const Vec3& x, double r, double v) const {
   double low = 0;
   if (std::isnan(v)) return false;
   if (!box_of(x, r, b, low)) return low >= v;
-  return each_cell(b, [v](double m) { return !(m < v); });
+  for (std::int64_t i = b.from[0]; i <= b.to[0]; ++i)
+    for (std::int64_t j = b.from[1]; j <= b.to[1]; ++j)
+      for (std::int64_t k = b.from[2]; k <= b.to[2]; ++k)
+        if (find(key(b.level, i, j, k)) < v) return false;
+  return true;
 }
 
 }  // namespace sm::field

@@ -33,23 +33,14 @@ class MinGrid {
   std::size_t cells() const { return entries_; }
 
  private:
+  std::uint64_t key(int level, std::int64_t i, std::int64_t j, std::int64_t k) const;
+  double find(std::uint64_t key) const;
   // The level and cell ranges of lower_bound(x, r); false with `bound` set where no cell
   // is read (+inf: no point that near; -inf: no bound).
   struct Box {
     int level = 0;
     std::int64_t from[3] = {0, 0, 0}, to[3] = {0, 0, 0};
   };
-  std::uint64_t key(int level, std::int64_t i, std::int64_t j, std::int64_t k) const;
-  struct Brick;
-  // The brick of `key` (a brick's level and coordinates), or null where no point is in it.
-  const Brick* find(std::uint64_t key) const;
-  // The slot where probing for `key` starts.
-  std::size_t home(std::uint64_t key) const { return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> shift_); }
-  // Calls read(cell minimum) for each cell of `box` in a brick that is held, a brick at a
-  // time, until it returns false; false then. The cells of a brick not held are +inf, a
-  // value that neither lowers a bound nor is below one.
-  template <class Read>
-  bool each_cell(const Box& box, Read&& read) const;
   bool box_of(const Vec3& x, double r, Box& box, double& bound) const;
 
   Vec3 origin_{};
@@ -57,18 +48,15 @@ class MinGrid {
   double scale_ = 0;  // |x| + extent: the rounding margin's reference
   int levels_ = 0;
   std::size_t entries_ = 0;
-  // Open addressing, linear probing; kEmpty marks a free slot. A slot holds a brick of
-  // 2 x 2 x 2 cells of one level, so that a query's box of at most 2 cells a side reads
-  // 1 to 8 bricks (3.4 on average for a box 2 cells wide on each axis), not 8 cells in
-  // 8 random slots. Each cell's minimum is rounded down to a float: still a lower bound
-  // (half the bytes of a double), +inf in a cell without points.
-  //
-  //   brick (level, I, J, K): cells (2I + a, 2J + b, 2K + c), lane a + 2 b + 4 c
-  struct Brick {
+  // Open addressing, linear probing; kEmpty marks a free slot. Each cell's minimum is
+  // rounded down to a float: still a lower bound (half the bytes of a double, where a
+  // query needs a bound and not the value), held beside its key so that a lookup reads
+  // one cache line.
+  struct Slot {
     std::uint64_t key;
-    float min[8];
+    float min;
   };
-  std::vector<Brick> slots_;
+  std::vector<Slot> slots_;
   int shift_ = 64;
 };
 

@@ -1,6 +1,5 @@
 #include "field/min_grid.h"
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -75,45 +74,4 @@ TEST_CASE("min grid: the same bounds for every thread count") {
       CHECK(many.lower_bound(x, r) == one.lower_bound(x, r));
     }
   }
-}
-
-TEST_CASE("min grid: a box of cells reads exactly its cells' minima, across the bricks' borders") {
-  // One point a cell (cell size 1 from the first point: cell i holds coordinates
-  // i + 0.5 to i + 1.5), each with its own value:
-  // a ball on a cell corner meets the 2 x 2 x 2 cells around it, starting at even and odd
-  // cells on each axis (in one brick of 2 x 2 x 2 cells, or straddling two to eight of
-  // them); a ball at a cell's centre meets that cell alone.
-  constexpr int kSide = 8;
-  std::vector<Vec3> pts;
-  std::vector<double> v;
-  std::mt19937 rng(5);
-  for (int i = 0; i < kSide; ++i)
-    for (int j = 0; j < kSide; ++j)
-      for (int k = 0; k < kSide; ++k) {
-        pts.push_back({i + 0.5, j + 0.5, k + 0.5});
-        v.push_back(static_cast<double>(pts.size()));
-      }
-  std::shuffle(v.begin(), v.end(), rng);
-  const auto value = [&v](int i, int j, int k) { return v[static_cast<std::size_t>((i * kSide + j) * kSide + k)]; };
-  const MinGrid grid(pts, v, 1.0);
-  int checked = 0;
-  for (int i = 0; i + 1 < kSide; ++i)
-    for (int j = 0; j + 1 < kSide; ++j)
-      for (int k = 0; k + 1 < kSide; ++k) {
-        double least = std::numeric_limits<double>::infinity();
-        for (int a = 0; a < 2; ++a)
-          for (int b = 0; b < 2; ++b)
-            for (int c = 0; c < 2; ++c) least = std::min(least, value(i + a, j + b, k + c));
-        const Vec3 corner{i + 1.5, j + 1.5, k + 1.5};
-        CHECK(grid.lower_bound(corner, 0.1) == least);
-        CHECK(grid.at_least(corner, 0.1, least));
-        CHECK_FALSE(grid.at_least(corner, 0.1, least + 0.5));
-        CHECK(grid.lower_bound({i + 1.0, j + 1.0, k + 1.0}, 0.1) == value(i, j, k));
-        ++checked;
-      }
-  CHECK(checked == 343);
-  // A ball beyond the last cells on one axis reads only the cells inside.
-  CHECK(grid.lower_bound({kSide + 1.0, 1.0, 1.0}, 0.1) == std::numeric_limits<double>::infinity());
-  CHECK(grid.lower_bound({kSide + 0.5, 1.5, 1.5}, 0.1) == std::min({value(kSide - 1, 0, 0), value(kSide - 1, 0, 1),
-                                                          value(kSide - 1, 1, 0), value(kSide - 1, 1, 1)}));
 }
