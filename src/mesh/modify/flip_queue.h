@@ -18,17 +18,27 @@ struct FlipQueue {
   /// Queues the edge of s, keyed by the smaller of its two sides, unless it is on the hull,
   /// constrained or already queued.
   void push_edge(const TriangleStore& m, Side s) {
+    push_edge(m, s, [](Side) { return false; });
+  }
+  /// The same, also passing over an edge whose key `queued_elsewhere(key)` says is waiting
+  /// below the stack without being stored on it (smooth.cpp's pre-tested make_delaunay).
+  template <class QueuedElsewhere>
+  void push_edge(const TriangleStore& m, Side s, QueuedElsewhere&& queued_elsewhere) {
     const Side o = m.twin[s.value];
     if (!o.valid() || m.constrained(s)) return;
     const Side key = s.value < o.value ? s : o;
-    if (!queued[key.value]) queued[key.value] = 1, stack.push_back(key);
+    if (!queued[key.value] && !queued_elsewhere(key)) queued[key.value] = 1, stack.push_back(key);
   }
 
   /// After m.flip returned n (the new edge d -> c): the four outer edges of the quad, which
   /// the flip may have made flippable.
   void push_outer_edges(const TriangleStore& m, Side n) {
+    push_outer_edges(m, n, [](Side) { return false; });
+  }
+  template <class QueuedElsewhere>
+  void push_outer_edges(const TriangleStore& m, Side n, QueuedElsewhere&& queued_elsewhere) {
     const Side o = m.twin[n.value];
-    for (Side x : {next(n), prev(n), next(o), prev(o)}) push_edge(m, x);
+    for (Side x : {next(n), prev(n), next(o), prev(o)}) push_edge(m, x, queued_elsewhere);
   }
 
   bool empty() const { return stack.empty(); }

@@ -88,15 +88,11 @@ std::uint64_t flip_pretested(TriangleStore& m, std::vector<std::uint8_t>& tag) {
     const Side n = m.flip(s);  // d -> c, in the slots ts and to
     tag[ts.value] |= kTouched;
     tag[to.value] |= kTouched;
+    // The triangles beyond the quad's four outer edges: a twin of theirs changed.
     const Side no = m.twin[n.value];
-    for (const Side x : {next(n), prev(n), next(no), prev(no)}) {  // FlipQueue::push_outer_edges
-      const Side y = m.twin[x.value];
-      if (!y.valid()) continue;
-      tag[tri_of(y).value] |= kNearTouched;
-      if (m.constrained(x)) continue;
-      const Side key = x.value < y.value ? x : y;
-      if (!q.queued[key.value] && !initially_queued(key)) q.queued[key.value] = 1, q.stack.push_back(key);
-    }
+    for (const Side x : {next(n), prev(n), next(no), prev(no)})
+      if (const Side y = m.twin[x.value]; y.valid()) tag[tri_of(y).value] |= kNearTouched;
+    q.push_outer_edges(m, n, initially_queued);
     ++flips;
   };
   for (;;) {
