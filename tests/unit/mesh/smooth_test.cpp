@@ -10,6 +10,20 @@
 
 using namespace sm;
 
+namespace {
+
+// The unit square's boundary and del2d at h = 0.05 (its boundary vertices first).
+Loop refined_unit_square(TriangleStore& m) {
+  const Loop sq = testing::polygon_loop(m, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.05, false);
+  REQUIRE(testing::boundary_mesh(m, {sq}, nullptr));
+  RefineOptions opt;
+  opt.size = 0.05;
+  REQUIRE(refine_del2d(m, opt).ok());
+  return sq;
+}
+
+}  // namespace
+
 TEST_CASE("smooth: one and three passes after del2d on a square with a hole") {
   TriangleStore m;
   const Loop sq = testing::polygon_loop(m, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.02, false);
@@ -45,11 +59,7 @@ TEST_CASE("smooth: pinned vertices stay, the others move as without pinning") {
   // The face mesher pins its input vertices when it has embedded points (on no
   // constrained edge): the same smoothing, one implementation.
   TriangleStore m;
-  const Loop sq = testing::polygon_loop(m, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.05, false);
-  REQUIRE(testing::boundary_mesh(m, {sq}, nullptr));
-  RefineOptions opt;
-  opt.size = 0.05;
-  REQUIRE(refine_del2d(m, opt).ok());
+  const Loop sq = refined_unit_square(m);
   const std::uint32_t pinned = static_cast<std::uint32_t>(sq.v.size()) + 5;   // 5 interior vertices too
   TriangleStore free_copy = m;
   const std::vector<Vec2> before = m.xy;
@@ -65,11 +75,7 @@ TEST_CASE("smooth: pinned vertices stay, the others move as without pinning") {
 
 TEST_CASE("smooth: the ends of an inner constrained edge stay, whichever side holds the flag") {
   TriangleStore m;
-  const Loop sq = testing::polygon_loop(m, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.05, false);
-  REQUIRE(testing::boundary_mesh(m, {sq}, nullptr));
-  RefineOptions opt;
-  opt.size = 0.05;
-  REQUIRE(refine_del2d(m, opt).ok());
+  const Loop sq = refined_unit_square(m);
   const std::uint32_t first_inner = static_cast<std::uint32_t>(sq.v.size());
   Side s{0};
   while (s.value < m.corner.size() && !(m.alive(tri_of(s)) && m.twin[s.value].valid() &&
