@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <optional>
 #include <span>
 #include <tuple>
 #include <type_traits>
@@ -15,8 +14,8 @@
 #include <fmt/format.h>
 
 #include "base/parallel.h"
+#include "coast/bridge_check.h"
 #include "coast/intersections.h"
-#include "coast/segment_grid.h"
 #include "exact/ring.h"
 #include "coast/spline_check.h"
 #include "exact/predicates.h"
@@ -960,58 +959,6 @@ void join_polygons(std::vector<std::vector<Vec2>>& polys, std::vector<std::vecto
   std::vector<LoopVertexRef>().swap(refs[j.from]);
 }
 
-// The segments a strait's bridge is checked against: those of the pass's polygons of the
-// loops not merged away in the pass. The loops no merge touched before the pass are in one
-// grid of their first polygons, kept through the passes; the merged ones in a grid of
-// their polygons made each pass (a grid of the whole coast made each pass was a fifth of
-// the straits' time at 3 km on the full GSHHG, where most loops never merge). Each made at
-// the first bridge it is asked about.
-class BridgeGrids {
- public:
-  explicit BridgeGrids(std::size_t n_loops) : merged_ever_(n_loops, 0) {}
-  /// The loops of join j change from the next pass on (called at that pass's start).
-  void merged(const LoopJoin& j) { merged_ever_[j.into] = merged_ever_[j.from] = 1; }
-  void new_pass() {
-    merged_grid_.reset();
-    merged_polys_.clear();
-  }
-  /// Whether the bridge b0 -> b1 crosses a segment of the pass's polygons (polys) of a loop
-  /// alive now, other than those sharing an end point with it (its neighbours in the new
-  /// loop).
-  bool crosses(const std::vector<WorkLoop>& loops, const std::vector<std::vector<Vec2>>& polys, Vec2 b0, Vec2 b1) {
-    if (!first_grid_) {
-      first_polys_ = polys;
-      first_grid_.emplace(first_polys_);
-    }
-    if (!merged_grid_) {
-      merged_polys_.resize(polys.size());
-      for (std::size_t l = 0; l < polys.size(); ++l)
-        if (merged_ever_[l]) merged_polys_[l] = polys[l];
-      merged_grid_.emplace(merged_polys_);
-    }
-    const Vec2 lo{std::min(b0.x, b1.x), std::min(b0.y, b1.y)};
-    const Vec2 hi{std::max(b0.x, b1.x), std::max(b0.y, b1.y)};
-    auto meets_bridge = [&](std::uint32_t l, Vec2 s0, Vec2 s1) {
-      if (loops[l].dead) return false;
-      if (std::max(s0.x, s1.x) < lo.x || std::min(s0.x, s1.x) > hi.x || std::max(s0.y, s1.y) < lo.y ||
-          std::min(s0.y, s1.y) > hi.y)
-        return false;
-      if (s0 == b0 || s0 == b1 || s1 == b0 || s1 == b1) return false;
-      return segments_meet(b0, b1, s0, s1);
-    };
-    return first_grid_->any_near_in(lo, hi, [&](std::uint32_t l, Vec2 s0, Vec2 s1) {
-      return !merged_ever_[l] && meets_bridge(l, s0, s1);
-    }) || merged_grid_->any_near_in(lo, hi, meets_bridge);
-  }
-
- private:
-  std::vector<char> merged_ever_;   // per loop: in a join of an earlier pass
-  std::vector<std::vector<Vec2>> first_polys_;
-  std::optional<SegmentGrid> first_grid_;
-  std::vector<std::vector<Vec2>> merged_polys_;   // the merged loops' (the others empty)
-  std::optional<SegmentGrid> merged_grid_;
-};
-
 double lambda(Vec2 uv, double radius) { return 2.0 * radius / (1.0 + norm2(uv)); }
 
 }  // namespace
@@ -1036,14 +983,14 @@ void handle_straits(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops
   std::vector<LoopJoin> joins;   // the pass before's merges
   std::vector<char> joined(loops.size(), 0);
   std::vector<char> took_in(loops.size(), 0);   // the loops merge_across joined another into
-  BridgeGrids grids(loops.size());
+  BridgeCheck bridges(loops.size());   // the bridges checked against the pass's polygons
   for (int pass = 0; pass < kMaxPasses; ++pass) {
     // A loop the pass before merged into another: its polygon and widths from the two
     // loops' (join_polygons).
     for (const LoopJoin& j : joins) {
+      bridges.merged(j, polys);
       join_polygons(polys, width, refs, j, loops[j.into].curves[0]);
       joined[j.into] = joined[j.from] = 1;
-      grids.merged(j);
     }
     for (std::size_t l = 0; l < loops.size(); ++l) {
       if (!changed[l] || joined[l]) continue;
@@ -1075,7 +1022,7 @@ void handle_straits(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops
     std::fill(changed.begin(), changed.end(), 0);
     for (const LoopJoin& j : joins) joined[j.into] = joined[j.from] = 0;
     joins.clear();
-    grids.new_pass();
+    bridges.new_pass();
     // Narrowest place per pair of loops, narrowest pairs first; a place where the two
     // segments face each other (run in opposite directions, more than 120 degrees apart)
     // is preferred, since only there can a bridge close the strait.
@@ -1126,10 +1073,10 @@ void handle_straits(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops
         const std::vector<Vec2>& pb = polys[m.loop_b];
         const Vec2 a0 = pa[m.seg_a], a1 = pa[(m.seg_a + 1) % pa.size()];
         const Vec2 b0 = pb[m.seg_b], b1 = pb[(m.seg_b + 1) % pb.size()];
-        const std::array<std::array<Vec2, 2>, 2> bridges{{{a0, b1}, {b0, a1}}};
-        bool bad = segments_meet(bridges[0][0], bridges[0][1], bridges[1][0], bridges[1][1]);
+        const std::array<std::array<Vec2, 2>, 2> bridge{{{a0, b1}, {b0, a1}}};
+        bool bad = segments_meet(bridge[0][0], bridge[0][1], bridge[1][0], bridge[1][1]);
         // Against the segments of the loops not merged away in this pass, near the bridge.
-        for (const auto& br : bridges) bad = bad || grids.crosses(loops, polys, br[0], br[1]);
+        for (const auto& br : bridge) bad = bad || bridges.crosses(loops, polys, br[0], br[1]);
         if (!bad) {
           joins.push_back({m.loop_a, m.loop_b, ra.k, rb.k, static_cast<std::uint32_t>(pa.size()),
                            static_cast<std::uint32_t>(pb.size())});

@@ -68,6 +68,11 @@ class SegmentGrid {
   /// As any_near, f(l, s0, s1) also told the polygon l the segment belongs to.
   template <class F>
   bool any_near_in(Vec2 lo, Vec2 hi, F&& f) {
+    return any_segment_near(lo, hi, [&f](std::uint32_t l, std::uint32_t, Vec2 s0, Vec2 s1) { return f(l, s0, s1); });
+  }
+  /// As any_near, f(l, j, s0, s1) told the segment's polygon l and its number j there.
+  template <class F>
+  bool any_segment_near(Vec2 lo, Vec2 hi, F&& f) {
     if (entries_.empty()) return false;
     ++stamp_;
     const auto [x0, y0] = at(lo);
@@ -81,7 +86,7 @@ class SegmentGrid {
         mark = stamp_;
         ++visited_;
         const auto& p = polys_[l];
-        if (f(l, p[j], p[next(j, static_cast<std::uint32_t>(p.size()))])) return true;
+        if (f(l, j, p[j], p[next(j, static_cast<std::uint32_t>(p.size()))])) return true;
       }
       return false;
     };
