@@ -236,12 +236,26 @@ void ChannelWidths::width_within(std::span<const Vec3> pts, std::span<const doub
     std::fill(w.begin(), w.end(), m.cap);
     return;
   }
-  // Farther than max_width / 2 from the coast the water is wider than that.
-  std::vector<double> radius(max_width.size());
-  for (std::size_t i = 0; i < radius.size(); ++i) radius[i] = 0.5 * std::min(max_width[i], m.cap);
-  std::vector<double> dist(pts.size());
-  std::vector<std::uint32_t> index(pts.size());
-  m.tree->nearest_within(pts, radius, dist, index);
+  // In pieces whose scratch lives on the stack (the 2D refiners ask about 15 points a
+  // call: heap arrays a call cost more than their searches); each point's width depends
+  // on that point alone, so the pieces change nothing.
+  for (std::size_t from = 0; from < pts.size(); from += kPiece) {
+    const std::size_t n = std::min(kPiece, pts.size() - from);
+    width_piece(pts.subspan(from, n), max_width.size() <= 1 ? max_width : max_width.subspan(from, n),
+                w.subspan(from, n));
+  }
+}
+
+void ChannelWidths::width_piece(std::span<const Vec3> pts, std::span<const double> max_width,
+                                std::span<double> w) const {
+  const Impl& m = *impl_;
+  // Farther than max_width / 2 from the coast the water is wider than that. Not
+  // initialised: each array's first pts.size() (radius: max_width.size()) are written.
+  double radius[kPiece], dist[kPiece];
+  std::uint32_t index[kPiece];
+  for (std::size_t i = 0; i < max_width.size(); ++i) radius[i] = 0.5 * std::min(max_width[i], m.cap);
+  m.tree->nearest_within(pts, std::span<const double>(radius, max_width.size()), std::span<double>(dist, pts.size()),
+                         std::span<std::uint32_t>(index, pts.size()));
   for (std::size_t k = 0; k < pts.size(); ++k) {
     std::uint32_t i = index[k];
     const Vec3& x = pts[k];
@@ -299,22 +313,36 @@ void ChannelWidthField::lower(std::span<const Vec3> pts, std::span<double> h) co
   // size is >= h: the min below leaves h as it is, as a full evaluation would.
   // Where h <= SizeMax and the grid of smallest widths shows none below N h within
   // reach, that width is >= min(N h, cap), whose size is >= h: no search needed.
-  std::vector<std::uint32_t> which;
-  std::vector<Vec3> at;
-  std::vector<double> limit;
+  for (std::size_t from = 0; from < pts.size(); from += kPiece) {
+    const std::size_t n = std::min(kPiece, pts.size() - from);
+    lower_piece(pts.subspan(from, n), h.subspan(from, n));
+  }
+}
+
+void ChannelWidthField::lower_piece(std::span<const Vec3> pts, std::span<double> h) const {
+  // Not initialised: the first `count` of each are written (an array of Vec3, whose
+  // members have default values, would be written first, hence the union).
+  std::uint32_t which[kPiece];
+  union Points {
+    Points() {}
+    Vec3 p[kPiece];
+  } at;
+  double limit[kPiece], w[kPiece];
+  std::size_t count = 0;
   for (std::size_t i = 0; i < h.size(); ++i) {
     if (!(h[i] > o_.size_min)) continue;
     const bool capped = o_.size_max < h[i];
     const double lim = capped ? cap_ : o_.elements_across * h[i];
     if (!capped && widths_.certainly_at_least(pts[i], lim)) continue;
-    which.push_back(static_cast<std::uint32_t>(i));
-    at.push_back(pts[i]);
-    limit.push_back(lim);
+    which[count] = static_cast<std::uint32_t>(i);
+    at.p[count] = pts[i];
+    limit[count] = lim;
+    ++count;
   }
-  if (which.empty()) return;
-  std::vector<double> w(which.size());
-  widths_.width_within(at, limit, w);
-  for (std::size_t k = 0; k < which.size(); ++k) h[which[k]] = std::min(h[which[k]], size_of(w[k]));
+  if (count == 0) return;
+  widths_.width_within(std::span<const Vec3>(at.p, count), std::span<const double>(limit, count),
+                       std::span<double>(w, count));
+  for (std::size_t k = 0; k < count; ++k) h[which[k]] = std::min(h[which[k]], size_of(w[k]));
 }
 
 namespace {

@@ -75,20 +75,31 @@ std::uint64_t spread3(std::uint64_t v) {
 // LSD radix sort of (key, index) pairs by key, 8 bits a pass (stable, so equal keys stay
 // in index order, as a sort of the pairs would give); passes where every key has the same
 // digit are skipped. Several times faster than std::sort on large batches.
-void radix_sort(std::vector<std::pair<std::uint64_t, std::uint32_t>>& keys) {
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> tmp(keys.size());
+// A query's Morton key and its index; no default member values, so that a stack array of
+// them is not zeroed first.
+struct MortonKey {
+  std::uint64_t key;
+  std::uint32_t index;
+  friend bool operator<(const MortonKey& a, const MortonKey& b) {
+    return a.key != b.key ? a.key < b.key : a.index < b.index;
+  }
+};
+
+void radix_sort(std::vector<MortonKey>& keys) {
+  std::vector<MortonKey> tmp(keys.size());
   for (int shift = 0; shift < 64; shift += 8) {
     std::size_t count[257] = {};
-    for (const auto& k : keys) ++count[((k.first >> shift) & 0xff) + 1];
-    if (count[((keys[0].first >> shift) & 0xff) + 1] == keys.size()) continue;
+    for (const auto& k : keys) ++count[((k.key >> shift) & 0xff) + 1];
+    if (count[((keys[0].key >> shift) & 0xff) + 1] == keys.size()) continue;
     for (int d = 0; d < 256; ++d) count[d + 1] += count[d];
-    for (const auto& k : keys) tmp[count[(k.first >> shift) & 0xff]++] = k;
+    for (const auto& k : keys) tmp[count[(k.key >> shift) & 0xff]++] = k;
     keys.swap(tmp);
   }
 }
 
-/// Query order along a Morton curve of the batch's bounding box.
-std::vector<std::uint32_t> morton_order(std::span<const Vec3> q) {
+/// The Morton key of each query: its cell on a 2^21 grid of the batch's bounding box per
+/// axis, the three cell numbers' bits interleaved.
+void morton_keys(std::span<const Vec3> q, MortonKey* keys) {
   Vec3 lo = q[0], hi = q[0];
   for (const Vec3& p : q) {
     lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
@@ -96,7 +107,6 @@ std::vector<std::uint32_t> morton_order(std::span<const Vec3> q) {
   }
   const double ext = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z, 1e-300});
   const double s = static_cast<double>((1u << 21) - 1) / ext;
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> keys(q.size());
   for (std::size_t i = 0; i < q.size(); ++i) {
     auto cell = [&](double c, double l) {
       return static_cast<std::uint64_t>(std::isfinite(c) ? (c - l) * s : 0.0);
@@ -105,18 +115,33 @@ std::vector<std::uint32_t> morton_order(std::span<const Vec3> q) {
                    spread3(cell(q[i].z, lo.z)) << 2,
                static_cast<std::uint32_t>(i)};
   }
-  // A small batch (the 1D integrator's, along one curve: tens of points) is sorted as
-  // pairs: the radix sort's eight passes over 257 counters would cost more than the
-  // points. The order is the same, since the indices make every pair distinct.
-  constexpr std::size_t kRadixFrom = 256;
-  if (q.size() < kRadixFrom) {
-    std::sort(keys.begin(), keys.end());
-  } else {
-    radix_sort(keys);
+}
+
+// A batch of at most this many queries is ordered on the stack and sorted as pairs (the
+// 2D refiners' batches, the circumcentres of one insertion's triangles, have about 15:
+// a heap allocation each would cost more than their sort), a larger one on the heap by
+// the radix sort, whose eight passes over 257 counters pay only for many points. Both
+// give the same order, since the indices make every pair distinct.
+constexpr std::size_t kSmallBatch = 256;
+
+/// Query order along a Morton curve of the batch's bounding box: order[k] is the k-th
+/// query's index. Stack memory for a small batch, else `heap`'s (resized).
+std::span<const std::uint32_t> morton_order(std::span<const Vec3> q,
+                                            std::array<std::uint32_t, kSmallBatch>& small,
+                                            std::vector<std::uint32_t>& heap) {
+  if (q.size() <= kSmallBatch) {
+    MortonKey keys[kSmallBatch];  // not initialised: the batch's part written first
+    morton_keys(q, keys);
+    std::sort(keys, keys + q.size());
+    for (std::size_t i = 0; i < q.size(); ++i) small[i] = keys[i].index;
+    return {small.data(), q.size()};
   }
-  std::vector<std::uint32_t> order(q.size());
-  for (std::size_t i = 0; i < q.size(); ++i) order[i] = keys[i].second;
-  return order;
+  std::vector<MortonKey> keys(q.size());
+  morton_keys(q, keys.data());
+  radix_sort(keys);
+  heap.resize(q.size());
+  for (std::size_t i = 0; i < q.size(); ++i) heap[i] = keys[i].index;
+  return heap;
 }
 
 }  // namespace
@@ -141,26 +166,30 @@ KdTree::~KdTree() = default;
 
 void KdTree::nearest(std::span<const Vec3> queries, std::span<double> dist,
                      std::span<std::uint32_t> index) const {
-  const double none = std::numeric_limits<double>::infinity();
-  nearest_capped(queries, std::span<const double>(&none, 1), dist, index);
+  nearest_capped(queries, [](std::size_t) { return std::numeric_limits<double>::infinity(); }, dist, index);
 }
 
 void KdTree::nearest_below(std::span<const Vec3> queries, std::span<const double> limit,
                            std::span<double> dist) const {
   // The reach is a hair above the limit, so that a point at a distance up to the limit
   // is found whatever the rounding of its squared distance; no limit (or a non-positive
-  // one) is no cut.
+  // one) is no cut. Computed per query (no array of them: a heap allocation a batch).
   constexpr double kReachMargin = 1e-9;
-  std::vector<double> far2(limit.size());
-  for (std::size_t i = 0; i < limit.size(); ++i) {
-    const double reach = limit[i] * (1 + kReachMargin);
-    far2[i] = limit[i] > 0 && std::isfinite(reach * reach) ? reach * reach : std::numeric_limits<double>::infinity();
+  const auto far2_at = [limit](std::size_t i) {
+    const double l = limit[limit.size() == 1 ? 0 : i];
+    const double reach = l * (1 + kReachMargin);
+    return l > 0 && std::isfinite(reach * reach) ? reach * reach : std::numeric_limits<double>::infinity();
+  };
+  if (limit.empty()) {
+    nearest(queries, dist);
+    return;
   }
-  nearest_capped(queries, far2, dist, {});
+  nearest_capped(queries, far2_at, dist, {});
 }
 
-void KdTree::nearest_capped(std::span<const Vec3> queries, std::span<const double> far2_of,
-                            std::span<double> dist, std::span<std::uint32_t> index) const {
+template <class Far2>
+void KdTree::nearest_capped(std::span<const Vec3> queries, const Far2& far2_at, std::span<double> dist,
+                            std::span<std::uint32_t> index) const {
   constexpr std::uint32_t kNoIndex = std::numeric_limits<std::uint32_t>::max();
   if (!impl_) {
     for (double& d : dist) d = kMaxLc;
@@ -168,15 +197,16 @@ void KdTree::nearest_capped(std::span<const Vec3> queries, std::span<const doubl
     return;
   }
   if (queries.empty()) return;
-  std::vector<std::uint32_t> order;
-  if (opts_.sort_queries && queries.size() > 1) order = morton_order(queries);
+  std::array<std::uint32_t, kSmallBatch> small_order;  // not initialised: trivial elements
+  std::vector<std::uint32_t> heap_order;
+  std::span<const std::uint32_t> order;
+  if (opts_.sort_queries && queries.size() > 1) order = morton_order(queries, small_order, heap_order);
   const flann::SearchParams params(flann::FLANN_CHECKS_UNLIMITED, opts_.eps);
   std::uint32_t prev = kNoIndex;
   for (std::size_t k = 0; k < queries.size(); ++k) {
     const std::size_t i = order.empty() ? k : order[k];
     const Vec3& q = queries[i];
-    const double far2 =
-        far2_of.empty() ? std::numeric_limits<double>::infinity() : far2_of[far2_of.size() == 1 ? 0 : i];
+    const double far2 = far2_at(i);
     double best2 = far2;
     std::uint32_t best = NearTree::kNoTie;
     bool found = false;
@@ -216,8 +246,10 @@ void KdTree::nearest_within(std::span<const Vec3> queries, std::span<const doubl
     std::fill(index.begin(), index.end(), kNoIndex);
     return;
   }
-  std::vector<std::uint32_t> order;
-  if (opts_.sort_queries && queries.size() > 1) order = morton_order(queries);
+  std::array<std::uint32_t, kSmallBatch> small_order;  // not initialised: trivial elements
+  std::vector<std::uint32_t> heap_order;
+  std::span<const std::uint32_t> order;
+  if (opts_.sort_queries && queries.size() > 1) order = morton_order(queries, small_order, heap_order);
   std::uint32_t prev = kNoIndex;
   for (std::size_t k = 0; k < queries.size(); ++k) {
     const std::size_t i = order.empty() ? k : order[k];

@@ -69,9 +69,11 @@ class KdTree {
   }
 
  private:
-  // nearest() with the search cut at squared distance far2 (one value, or one per query;
-  // infinite: no cut); a query with no point nearer gets +infinity and UINT32_MAX.
-  void nearest_capped(std::span<const Vec3> queries, std::span<const double> far2, std::span<double> dist,
+  // nearest() with query i's search cut at squared distance far2_at(i) (infinite: no
+  // cut); a query with no point nearer gets +infinity and UINT32_MAX. Defined and
+  // instantiated in knn.cpp.
+  template <class Far2>
+  void nearest_capped(std::span<const Vec3> queries, const Far2& far2_at, std::span<double> dist,
                       std::span<std::uint32_t> index) const;
 
   struct Impl;

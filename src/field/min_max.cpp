@@ -30,7 +30,7 @@ class ExtremumField final : public CompositeField {
                   std::span<int> which) const {
     std::fill(h.begin(), h.end(), is_min_ ? kMaxLc : -kMaxLc);
     if (!which.empty()) std::fill(which.begin(), which.end(), -1);
-    std::vector<double> tmp(pts.size());
+    std::vector<double> tmp;  // sized when an input is evaluated whole (a Min of lowering inputs needs none)
     for (std::size_t k = 0; k < in_.size(); ++k) {
       const std::size_t n = is_min_ && which.empty() ? min_order_[k] : k;
       const auto& [id, f] = in_[n];
@@ -40,6 +40,7 @@ class ExtremumField final : public CompositeField {
         lowers_[n]->lower(on, pts, h);
         continue;
       }
+      tmp.resize(pts.size());
       eval_input(*f, on, pts, tmp);
       for (std::size_t i = 0; i < pts.size(); ++i) {
         const bool better = is_min_ ? tmp[i] < h[i] : tmp[i] > h[i];

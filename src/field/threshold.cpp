@@ -25,35 +25,13 @@ class ThresholdField final : public CompositeField, public MinInput {
   // rounding (the sizes' spread, at least kSpread of SizeMax, keeps the margin's size
   // step far above it), so the result is that of evaluating and taking the min.
   void lower(const EntityRef* on, std::span<const Vec3> pts, std::span<double> h) const override {
-    constexpr double kRampMargin = 1e-9, kBelowMin = 1e-12;
-    const double span = dist_max_ - dist_min_;
-    const double spread = size_max_ - size_min_;
-    std::vector<double> v;
-    if (!prunes()) {
-      v.resize(pts.size());
-      run(on, pts, v);
-      for (std::size_t i = 0; i < h.size(); ++i)
-        if (v[i] < h[i]) h[i] = v[i];
-      return;
+    // A large batch in pieces of kPiece points, whose scratch lives on the stack: the 2D
+    // refiners size about 15 points a call, and heap vectors a call cost more than their
+    // search. Each point's value depends on that point alone, so the pieces change nothing.
+    for (std::size_t from = 0; from < pts.size(); from += kPiece) {
+      const std::size_t n = std::min(kPiece, pts.size() - from);
+      lower_piece(on, pts.subspan(from, n), h.subspan(from, n));
     }
-    std::vector<std::uint32_t> which;
-    std::vector<Vec3> at;
-    std::vector<double> limit;
-    for (std::size_t i = 0; i < h.size(); ++i) {
-      // No distance gives a size below SizeMin (up to rounding).
-      if (h[i] < size_min_ * (1 - kBelowMin)) continue;
-      double lim = dist_max_;  // also for a NaN h
-      if (h[i] < size_max_) lim = std::min(lim, dist_min_ + ((h[i] - size_min_) / spread + kRampMargin) * span);
-      which.push_back(static_cast<std::uint32_t>(i));
-      at.push_back(pts[i]);
-      limit.push_back(lim);
-    }
-    if (which.empty()) return;
-    v.resize(at.size());
-    bounded_->eval_below(at, limit, v);
-    for (double& x : v) x = size_at(x);
-    for (std::size_t k = 0; k < which.size(); ++k)
-      if (v[k] < h[which[k]]) h[which[k]] = v[k];
   }
 
   // Where the margin would not cover the rounding (a sigmoid, sizes almost equal,
@@ -81,6 +59,47 @@ class ThresholdField final : public CompositeField, public MinInput {
   }
 
  private:
+  static constexpr std::size_t kPiece = 256;
+
+  void lower_piece(const EntityRef* on, std::span<const Vec3> pts, std::span<double> h) const {
+    constexpr double kRampMargin = 1e-9, kBelowMin = 1e-12;
+    const double span = dist_max_ - dist_min_;
+    const double spread = size_max_ - size_min_;
+    double v[kPiece];  // not initialised: written before read
+    if (!prunes()) {
+      run(on, pts, std::span<double>(v, pts.size()));
+      for (std::size_t i = 0; i < h.size(); ++i)
+        if (v[i] < h[i]) h[i] = v[i];
+      return;
+    }
+    std::uint32_t which[kPiece];
+    // Not initialised either (an array of Vec3, whose members have default values, would
+    // be written first): its first `count` elements are assigned below.
+    union Points {
+      Points() {}
+      Vec3 p[kPiece];
+    } at;
+    double limit[kPiece];
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < h.size(); ++i) {
+      // No distance gives a size below SizeMin (up to rounding).
+      if (h[i] < size_min_ * (1 - kBelowMin)) continue;
+      double lim = dist_max_;  // also for a NaN h
+      if (h[i] < size_max_) lim = std::min(lim, dist_min_ + ((h[i] - size_min_) / spread + kRampMargin) * span);
+      which[count] = static_cast<std::uint32_t>(i);
+      at.p[count] = pts[i];
+      limit[count] = lim;
+      ++count;
+    }
+    if (count == 0) return;
+    bounded_->eval_below(std::span<const Vec3>(at.p, count), std::span<const double>(limit, count),
+                         std::span<double>(v, count));
+    for (std::size_t k = 0; k < count; ++k) {
+      const double x = size_at(v[k]);
+      if (x < h[which[k]]) h[which[k]] = x;
+    }
+  }
+
   double size_at(double d) const {
     const double span = dist_max_ - dist_min_;
     // DistMin == DistMax is a step at DistMin (Gmsh would divide by zero).

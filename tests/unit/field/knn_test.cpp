@@ -230,6 +230,66 @@ TEST_CASE("knn: batches of seeded searches keep brute force's answers, ties incl
   }
 }
 
+// The 2D refiners size about 15 close points a call (one insertion's circumcentres): such
+// batches are ordered on the stack, larger ones (from 257 queries) on the heap
+// (src/field/knn.cpp's kSmallBatch). On a lattice with ties, with one limit per query (some
+// below the nearest distance, some above), every batch size gives brute force's distance
+// within the limit and a value above it beyond.
+TEST_CASE("knn: nearest_below in small and large batches keeps brute force's answers, ties included") {
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> cell(0, 15), half(0, 1);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<Vec3> pts(3000);
+  for (Vec3& p : pts) p = {double(cell(rng)), double(cell(rng)), double(cell(rng))};
+  for (std::size_t i = 0; i < 100; ++i) pts[2000 + i] = pts[i];
+  std::vector<Vec3> q(2000);
+  std::vector<double> limit(q.size());
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    // Clustered as a batch's circumcentres are: runs of 16 around one lattice cell.
+    const std::size_t c = i / 16;
+    const double cx = (c * 7) % 16, cy = (c * 11) % 16, cz = (c * 13) % 16;
+    q[i] = {cx + 0.5 * half(rng), cy + 0.5 * half(rng), cz + 0.5 * half(rng)};
+    if (i % 37 == 0) q[i] = q[i] * 3.0 - Vec3{20, 20, 20};
+    limit[i] = 2.0 * u(rng);
+  }
+  std::vector<double> bd(q.size());
+  nearest_brute_force(pts, q, bd);
+  const KdTree tree(pts);
+  for (const std::size_t batch : {std::size_t{1}, std::size_t{15}, std::size_t{256}, std::size_t{257}, q.size()}) {
+    std::vector<double> d(q.size());
+    for (std::size_t first = 0; first < q.size(); first += batch) {
+      const std::size_t n = std::min(batch, q.size() - first);
+      tree.nearest_below(std::span<const Vec3>(q.data() + first, n), std::span<const double>(limit.data() + first, n),
+                         std::span<double>(d.data() + first, n));
+    }
+    int within = 0, beyond = 0;
+    for (std::size_t i = 0; i < q.size(); ++i) {
+      if (bd[i] <= limit[i]) {
+        ++within;
+        CHECK(d[i] == bd[i]);
+      } else {
+        ++beyond;
+        CHECK(d[i] > limit[i]);
+      }
+    }
+    CHECK(within > 300);
+    CHECK(beyond > 300);
+    // The indices as well (nearest: no limit), smallest among the tied.
+    std::vector<double> nd(q.size());
+    std::vector<std::uint32_t> idx(q.size()), bidx(q.size());
+    nearest_brute_force(pts, q, bd, bidx);
+    for (std::size_t first = 0; first < q.size(); first += batch) {
+      const std::size_t n = std::min(batch, q.size() - first);
+      tree.nearest(std::span<const Vec3>(q.data() + first, n), std::span<double>(nd.data() + first, n),
+                   std::span<std::uint32_t>(idx.data() + first, n));
+    }
+    for (std::size_t i = 0; i < q.size(); ++i) {
+      CHECK(nd[i] == bd[i]);
+      CHECK(idx[i] == bidx[i]);
+    }
+  }
+}
+
 // visit_within hands over every point nearer than the bound, and the bound shrinks to what
 // the callback returns: with the squared distance returned, the least one seen is the
 // nearest point's (ChannelWidth's searches rely on both).

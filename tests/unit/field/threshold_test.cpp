@@ -178,3 +178,50 @@ TEST_CASE("threshold: inside a Min, a Distance is searched only where it can low
   CHECK(below_other_min > 20);
   CHECK(both_max > 20);
 }
+
+// A Min lowers h through its Threshold of a Distance in pieces of at most 256 points, each
+// with its scratch on the stack (src/field/threshold.cpp): the sizes of a large batch, of
+// the refiners' small ones and of single points are the same numbers.
+TEST_CASE("threshold: inside a Min, the sizes do not depend on how the points are batched") {
+  BuildContext ctx;
+  std::vector<Vec3> where;
+  for (int i = 0; i < 40; ++i) where.push_back({std::cos(0.3 * i) * (1 + 0.02 * i), std::sin(0.3 * i), 0});
+  ctx.point_position = [&](int tag) -> std::optional<Vec3> {
+    if (tag < 1 || tag > static_cast<int>(where.size())) return std::nullopt;
+    return where[static_cast<std::size_t>(tag - 1)];
+  };
+  FieldSet fs;
+  fs.define(1, "Distance");
+  std::vector<double> tags;
+  for (std::size_t t = 1; t <= where.size(); ++t) tags.push_back(static_cast<double>(t));
+  fs.set(1, "PointsList", tags);
+  fs.define(2, "Threshold");
+  fs.set(2, "InField", 1.0);
+  fs.set(2, "SizeMin", 0.05);
+  fs.set(2, "SizeMax", 0.5);
+  fs.set(2, "DistMin", 0.1);
+  fs.set(2, "DistMax", 1.5);
+  fs.define(3, "MathEval");
+  fs.set(3, "F", std::string("0.2 + 0.1 * x"));
+  fs.define(4, "Min");
+  fs.set(4, "FieldsList", std::vector<double>{3, 2});
+  std::vector<Vec3> q;
+  for (int i = -40; i <= 40; ++i)
+    for (int j = -10; j <= 10; ++j) q.push_back({0.05 * i, 0.2 * j, 0.01 * (i % 5)});
+  REQUIRE(q.size() > 1000);
+  const std::vector<double> whole = sm::field::testing::eval_field(fs, 4, q, ctx);
+  const std::vector<double> alone = sm::field::testing::eval_field(fs, 2, q, ctx);
+  int by_shore = 0;
+  for (std::size_t i = 0; i < q.size(); ++i) by_shore += alone[i] < 0.2 + 0.1 * q[i].x ? 1 : 0;
+  CHECK(by_shore > 300);
+  CHECK(by_shore < static_cast<int>(q.size()) - 300);
+  BuiltFields built = fs.build(4, ctx);
+  for (const std::size_t batch : {std::size_t{1}, std::size_t{15}, std::size_t{256}, std::size_t{300}}) {
+    std::vector<double> h(q.size());
+    for (std::size_t first = 0; first < q.size(); first += batch) {
+      const std::size_t n = std::min(batch, q.size() - first);
+      built.get(4)->eval(std::span<const Vec3>(q.data() + first, n), std::span<double>(h.data() + first, n));
+    }
+    for (std::size_t i = 0; i < q.size(); ++i) CHECK(h[i] == whole[i]);
+  }
+}
