@@ -1,7 +1,11 @@
 // Cells are keyed by their level and integer coordinates in one 64-bit word and kept
 // in one open-addressing table: the levels together hold at most about twice as many
 // cells as there are points (each level has at most the cells of the one below),
-// and a query reads at most 8 of them.
+// and a query reads at most 8 of them. The 8 cells of a brick (2 x 2 x 2 cells whose
+// coordinates differ only in their lowest bits) have their home slots in one aligned
+// group of 8 slots, by a hash of the brick and the cell's place in it: a query's box,
+// 2 cells a side, meets 1 to 8 bricks (about 3.4 on a coast), so it reads a few
+// groups of nearby slots instead of 8 random ones, with the same table.
 #include "field/min_grid.h"
 
 #include <algorithm>
@@ -33,7 +37,19 @@ float float_at_most(double v) {
   return static_cast<double>(f) > v ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
 }
 
+// The coordinates' lowest bits in a key: a cell's place in its brick.
+constexpr std::uint64_t kLaneBits =
+    (std::uint64_t{1} << (2 * kCoordBits)) | (std::uint64_t{1} << kCoordBits) | std::uint64_t{1};
+
 }  // namespace
+
+std::size_t MinGrid::home(std::uint64_t key) const {
+  const std::size_t group = static_cast<std::size_t>(((key & ~kLaneBits) * 0x9E3779B97F4A7C15ull) >> shift_) &
+                            ~std::size_t{7};
+  const auto lane = static_cast<std::size_t>((key & 1) | ((key >> (kCoordBits - 1)) & 2) |
+                                             ((key >> (2 * kCoordBits - 2)) & 4));
+  return group | lane;
+}
 
 std::uint64_t MinGrid::key(int level, std::int64_t i, std::int64_t j, std::int64_t k) const {
   return (static_cast<std::uint64_t>(level) << (3 * kCoordBits)) | (static_cast<std::uint64_t>(i) << (2 * kCoordBits)) |
@@ -104,7 +120,7 @@ MinGrid::MinGrid(std::span<const Vec3> pts, std::span<const double> value, doubl
   // front to back: in the levels' order, a cache miss a cell was most of the grid's
   // set-up on the world's coasts. Any order gives the same answers (a key is found by
   // probing from its home slot, whatever was inserted before it).
-  const auto home = [this](std::uint64_t k) { return static_cast<std::size_t>((k * 0x9E3779B97F4A7C15ull) >> shift_); };
+  const auto home = [this](std::uint64_t k) { return this->home(k); };
   parallel_sort(threads, all, [&home](const std::pair<std::uint64_t, double>& a, const std::pair<std::uint64_t, double>& b) {
     const std::size_t ha = home(a.first), hb = home(b.first);
     return ha != hb ? ha < hb : a.first < b.first;
@@ -116,9 +132,9 @@ MinGrid::MinGrid(std::span<const Vec3> pts, std::span<const double> value, doubl
   }
 }
 
-double MinGrid::find(std::uint64_t k) const {
+double MinGrid::find(std::uint64_t k, std::size_t from) const {
   const std::size_t mask = slots_.size() - 1;
-  for (std::size_t slot = static_cast<std::size_t>((k * 0x9E3779B97F4A7C15ull) >> shift_);; slot = (slot + 1) & mask) {
+  for (std::size_t slot = from;; slot = (slot + 1) & mask) {
     if (slots_[slot].key == k) return static_cast<double>(slots_[slot].min);
     if (slots_[slot].key == kEmpty) return std::numeric_limits<double>::infinity();
   }
@@ -154,13 +170,45 @@ bool MinGrid::box_of(const Vec3& x, double r, Box& box, double& bound) const {
   return true;
 }
 
+template <class Fn>
+bool MinGrid::each_cell(const Box& b, Fn&& fn) const {
+  // The box's home slots first, each fetched as it is computed, then the probes: the
+  // cache misses overlap instead of following one another. A box is at most 2 cells
+  // a side but for rounding at the ball's bounds; a larger one is read as it comes.
+  constexpr std::int64_t kMost = 8;
+  if ((b.to[0] - b.from[0] + 1) * (b.to[1] - b.from[1] + 1) * (b.to[2] - b.from[2] + 1) <= kMost) {
+    std::uint64_t keys[kMost];
+    std::size_t homes[kMost];
+    int n = 0;
+    for (std::int64_t i = b.from[0]; i <= b.to[0]; ++i)
+      for (std::int64_t j = b.from[1]; j <= b.to[1]; ++j)
+        for (std::int64_t k = b.from[2]; k <= b.to[2]; ++k) {
+          keys[n] = key(b.level, i, j, k);
+          homes[n] = home(keys[n]);
+          __builtin_prefetch(&slots_[homes[n]]);
+          ++n;
+        }
+    for (int c = 0; c < n; ++c)
+      if (!fn(find(keys[c], homes[c]))) return false;
+    return true;
+  }
+  for (std::int64_t i = b.from[0]; i <= b.to[0]; ++i)
+    for (std::int64_t j = b.from[1]; j <= b.to[1]; ++j)
+      for (std::int64_t k = b.from[2]; k <= b.to[2]; ++k) {
+        const std::uint64_t c = key(b.level, i, j, k);
+        if (!fn(find(c, home(c)))) return false;
+      }
+  return true;
+}
+
 double MinGrid::lower_bound(const Vec3& x, double r) const {
   Box b;
   double low = 0;
   if (!box_of(x, r, b, low)) return low;
-  for (std::int64_t i = b.from[0]; i <= b.to[0]; ++i)
-    for (std::int64_t j = b.from[1]; j <= b.to[1]; ++j)
-      for (std::int64_t k = b.from[2]; k <= b.to[2]; ++k) low = std::min(low, find(key(b.level, i, j, k)));
+  each_cell(b, [&low](double m) {
+    low = std::min(low, m);
+    return true;
+  });
   return low;
 }
 
@@ -170,11 +218,7 @@ bool MinGrid::at_least(const Vec3& x, double r, double v) const {
   double low = 0;
   if (std::isnan(v)) return false;
   if (!box_of(x, r, b, low)) return low >= v;
-  for (std::int64_t i = b.from[0]; i <= b.to[0]; ++i)
-    for (std::int64_t j = b.from[1]; j <= b.to[1]; ++j)
-      for (std::int64_t k = b.from[2]; k <= b.to[2]; ++k)
-        if (find(key(b.level, i, j, k)) < v) return false;
-  return true;
+  return each_cell(b, [v](double m) { return !(m < v); });
 }
 
 }  // namespace sm::field

@@ -34,7 +34,10 @@ class MinGrid {
 
  private:
   std::uint64_t key(int level, std::int64_t i, std::int64_t j, std::int64_t k) const;
-  double find(std::uint64_t key) const;
+  // The cell's home slot: its brick's group of 8 slots, and its place in the brick.
+  std::size_t home(std::uint64_t key) const;
+  // The cell's minimum (+inf where it holds no point), probing from its home slot.
+  double find(std::uint64_t key, std::size_t home) const;
   // The level and cell ranges of lower_bound(x, r); false with `bound` set where no cell
   // is read (+inf: no point that near; -inf: no bound).
   struct Box {
@@ -42,6 +45,10 @@ class MinGrid {
     std::int64_t from[3] = {0, 0, 0}, to[3] = {0, 0, 0};
   };
   bool box_of(const Vec3& x, double r, Box& box, double& bound) const;
+  // Calls fn(cell minimum) for each cell of the box, in the box's order, until fn returns
+  // false (then false).
+  template <class Fn>
+  bool each_cell(const Box& box, Fn&& fn) const;
 
   Vec3 origin_{};
   double finest_ = 0;

@@ -2,7 +2,9 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 #include <random>
+#include <tuple>
 
 #include <doctest/doctest.h>
 
@@ -72,6 +74,69 @@ TEST_CASE("min grid: the same bounds for every thread count") {
       const Vec3 x{u(rng), u(rng), u(rng)};
       const double r = 0.002 * (1 + q % 50);
       CHECK(many.lower_bound(x, r) == one.lower_bound(x, r));
+    }
+  }
+}
+
+TEST_CASE("min grid: a ball inside one cell reads that cell's smallest value, at every level (brute force)") {
+  // The table places the 8 cells of a brick in one group of slots (field/min_grid.cpp): a
+  // cell stored where a query does not look for it would read +inf, above the value. The
+  // points' corner is the origin and the cells are powers of two, so the cells' bounds
+  // are exact and each point's cell is known here.
+  std::mt19937 rng(37);
+  std::uniform_real_distribution<double> u(0, 1), val(0, 10);
+  const double finest = 1.0 / 64;
+  for (const bool curve : {false, true}) {
+    // A cloud that fills most bricks, or points along a curve (a coast) that leaves most
+    // of each brick's cells empty.
+    std::vector<Vec3> pts{{0, 0, 0}};
+    for (int n = 0; n < 20000; ++n) {
+      const double t = u(rng);
+      pts.push_back(curve ? Vec3{t, 0.5 + 0.4 * std::sin(9 * t), 0.05 + 0.02 * std::cos(5 * t)}
+                          : Vec3{t, u(rng), 0.1 * u(rng)});
+    }
+    std::vector<double> v(pts.size());
+    for (double& x : v) x = val(rng);
+    const MinGrid grid(pts, v, finest);
+    for (int level = 0; level < 7; ++level) {
+      const std::int64_t per_cell = std::int64_t{1} << level;
+      const double cell = finest * static_cast<double>(per_cell);
+      std::map<std::tuple<std::int64_t, std::int64_t, std::int64_t>, double> least;
+      for (std::size_t n = 0; n < pts.size(); ++n) {
+        const auto at = [&](double c) { return static_cast<std::int64_t>(std::floor(c / finest)) >> level; };
+        const auto key = std::make_tuple(at(pts[n].x), at(pts[n].y), at(pts[n].z));
+        const auto it = least.find(key);
+        if (it == least.end()) {
+          least.emplace(key, v[n]);
+        } else {
+          it->second = std::min(it->second, v[n]);
+        }
+      }
+      const auto centre = [&](std::int64_t i, std::int64_t j, std::int64_t k) {
+        return Vec3{(static_cast<double>(i) + 0.5) * cell, (static_cast<double>(j) + 0.5) * cell,
+                    (static_cast<double>(k) + 0.5) * cell};
+      };
+      for (const auto& [ijk, m] : least) {
+        const auto [i, j, k] = ijk;
+        float f = static_cast<float>(m);
+        if (static_cast<double>(f) > m) f = std::nextafter(f, -1e30f);
+        const double expected = f;
+        const Vec3 x = centre(i, j, k);
+        REQUIRE(grid.lower_bound(x, 0.3 * cell) == expected);
+        CHECK(grid.at_least(x, 0.3 * cell, expected));
+        CHECK_FALSE(grid.at_least(x, 0.3 * cell, std::nextafter(expected, 1e300)));
+      }
+      // The cells beside held ones that hold no point read +inf.
+      int empty = 0;
+      for (const auto& [ijk, m] : least) {
+        const auto [i, j, k] = ijk;
+        for (const std::int64_t dk : {-1, 1}) {
+          if (k + dk < 0 || least.count({i, j, k + dk}) > 0) continue;
+          CHECK(grid.lower_bound(centre(i, j, k + dk), 0.3 * cell) == std::numeric_limits<double>::infinity());
+          ++empty;
+        }
+      }
+      CHECK(empty > 0);
     }
   }
 }
