@@ -2,6 +2,9 @@
 // path and pull the aggregates back up it, without recursion (depth is O(log n) expected).
 #include "coast/kept_rope.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "base/check.h"
 
 namespace sm::coast {
@@ -40,6 +43,7 @@ KeptRopes::TreeNode KeptRopes::new_node(const Item& item) {
   n.metres = item.metres;
   n.sum = item.metres;
   n.low = t;
+  max_norm2_ = std::max(max_norm2_, norm2(item.uv));
   return t;
 }
 
@@ -48,6 +52,15 @@ void KeptRopes::pull(TreeNode t) {
   n.size = 1;
   n.sum = n.metres;
   n.low = t;
+  n.uv_length = n.twice_area = 0;
+  // The segment from the last point of the part before to the first of the part after
+  // (found down the subtree's spine: its length is O(log n) expected, and over all the
+  // tree nodes of a rope each node is on two such spines at most, so make stays O(n)).
+  auto link = [&](TreeNode a, TreeNode b) {
+    const Vec2 p = nodes_[a].uv, q = nodes_[b].uv;
+    n.uv_length = n.uv_length + std::sqrt(norm2(q - p));
+    n.twice_area = n.twice_area + cross(p, q);
+  };
   auto lower = [&](TreeNode a, TreeNode b) {   // b strictly before a in (y, x)
     const Vec2 p = nodes_[a].uv, q = nodes_[b].uv;
     return q.y < p.y || (q.y == p.y && q.x < p.x);
@@ -57,12 +70,22 @@ void KeptRopes::pull(TreeNode t) {
     n.size += l.size;
     n.sum = l.sum + n.sum;
     if (!lower(l.low, t)) n.low = l.low;   // ties go to the earlier point
+    n.uv_length = l.uv_length;
+    n.twice_area = l.twice_area;
+    TreeNode a = n.left;   // the left part's last point
+    while (nodes_[a].right != kNone) a = nodes_[a].right, ++work_;
+    link(a, t);
   }
   if (n.right != kNone) {
     const Node& r = nodes_[n.right];
     n.size += r.size;
     n.sum = n.sum + r.sum;
     if (lower(n.low, r.low)) n.low = r.low;
+    TreeNode b = n.right;   // the right part's first point
+    while (nodes_[b].left != kNone) b = nodes_[b].left, ++work_;
+    link(t, b);
+    n.uv_length = n.uv_length + r.uv_length;
+    n.twice_area = n.twice_area + r.twice_area;
   }
 }
 
@@ -200,8 +223,16 @@ KeptRopes::Rope KeptRopes::rotate(Rope r, std::size_t j) {
 }
 
 void KeptRopes::set_metres(TreeNode t, double m) {
+  // Only the metres' sums change (the same sums as pull's, in the same order); the points,
+  // their order and so the other aggregates stay.
   nodes_[t].metres = m;
-  for (; t != kNone; t = nodes_[t].parent) ++work_, pull(t);
+  for (; t != kNone; t = nodes_[t].parent) {
+    ++work_;
+    Node& n = nodes_[t];
+    n.sum = n.metres;
+    if (n.left != kNone) n.sum = nodes_[n.left].sum + n.sum;
+    if (n.right != kNone) n.sum = n.sum + nodes_[n.right].sum;
+  }
 }
 
 double KeptRopes::prefix_metres(Rope r, std::size_t j) const {
@@ -223,6 +254,18 @@ double KeptRopes::prefix_metres(Rope r, std::size_t j) const {
   return s;
 }
 
+KeptRopes::RingSums KeptRopes::ring_sums(Rope r) const {
+  RingSums s;
+  if (r == kNone) return s;
+  const Node& n = nodes_[r];
+  const Vec2 p = nodes_[rightmost(r)].uv, q = nodes_[leftmost(r)].uv;   // the closing segment
+  s.points = n.size;
+  s.uv_perimeter = n.uv_length + std::sqrt(norm2(q - p));
+  s.twice_area = n.twice_area + cross(p, q);
+  s.some_point = n.uv;
+  return s;
+}
+
 void KeptRopes::release(Rope r) {
   if (r == kNone) return;
   const std::size_t before = free_.size();
@@ -233,6 +276,11 @@ void KeptRopes::release(Rope r) {
 
 KeptRopes::TreeNode KeptRopes::leftmost(TreeNode t) const {
   while (nodes_[t].left != kNone) t = nodes_[t].left;
+  return t;
+}
+
+KeptRopes::TreeNode KeptRopes::rightmost(TreeNode t) const {
+  while (nodes_[t].right != kNone) t = nodes_[t].right;
   return t;
 }
 

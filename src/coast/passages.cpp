@@ -24,6 +24,7 @@
 #include "coast/coastline_option_id.h"
 #include "coast/intersections.h"
 #include "coast/kept_rope.h"
+#include "coast/mean_width.h"
 #include "coast/place_pairs.h"
 #include "coast/segment_grid.h"
 #include "exact/ring.h"
@@ -50,8 +51,6 @@ const geo::PolarSphere& unit_sphere() {
   static const geo::PolarSphere ps({0, 0, 0}, 1.0);
   return ps;
 }
-
-double lambda_m(Vec2 uv, double radius) { return 2.0 * radius / (1.0 + norm2(uv)); }
 
 Vec2 closest_on_segment(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 d = b - a;
@@ -313,35 +312,6 @@ std::vector<Vec2> polygon(const FlatLoop& f) {
   return p;
 }
 
-// Mean width 2A/P of a loop's water in metres (a strip of width w: about w). Read in
-// order: only water loops ask (fate_of), among them the pieces a cut drops, and the sea
-// loop after every cut of it (a deviation bound's closures are as many cuts). One pass
-// over the rope, no copy of the polygon: the three sums take their terms in the order
-// of the polygon's own passes (point i, then segment i -> i + 1, the closing segment
-// last), so they are the same doubles.
-double mean_width_m(const FlatLoop& f, double radius) {
-  Vec2 mean{0, 0}, first{0, 0}, last{0, 0};
-  double per = 0, area2 = 0;
-  std::size_t n = 0;
-  f.ropes->for_each(f.rope, [&](TreeNode t) {
-    const Vec2 x = f.ropes->uv(t);
-    mean = mean + x;
-    if (n == 0) {
-      first = x;
-    } else {
-      per += norm(x - last);
-      area2 += cross(last, x);
-    }
-    last = x;
-    ++n;
-  });
-  if (n == 0) return 0.0;
-  per += norm(first - last);
-  area2 += cross(last, first);
-  mean = (1.0 / static_cast<double>(n)) * mean;
-  return per > 0 ? 2.0 * std::abs(0.5 * area2) / per * lambda_m(mean, radius) : 0.0;
-}
-
 bool in_box(Vec2 p, Vec2 lo, Vec2 hi) { return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y; }
 
 // Whether the cut at a0->a1, b0->b1 can be made: the other segment on the water side of
@@ -543,14 +513,21 @@ bool passage_on_one_ring(const Work& w, const FlatLoop& f, std::size_t sa, std::
 // What becomes of a new loop: kept, or dropped as degenerate (fewer than 3 points or no
 // area) or as water (counter-clockwise) all narrower than the width.
 enum class Fate { Kept, Degenerate, Narrow };
-Fate fate_of(const Work& w, const FlatLoop& f, double* mean_width = nullptr) {
+// A water loop's mean width (coast/mean_width.h) is read round the ring only when the
+// rope's sums leave the answer in doubt, or to be logged (`mean_width`: a Narrow loop's).
+Fate fate_of(Work& w, const FlatLoop& f, double* mean_width = nullptr) {
   if (f.size() < 3) return Fate::Degenerate;
   if ((f.orientation ? *f.orientation : rope_orientation(w.ropes, f.rope)) == Sign::Zero) return Fate::Degenerate;
   if (f.hole) return Fate::Kept;
-  const double mw = mean_width_m(f, w.opt.radius);
-  if (mean_width) *mean_width = mw;
   const double W = passage_width_at(w.opt, f.ll(0));
-  return W > 0 && mw < W ? Fate::Narrow : Fate::Kept;
+  if (!(W > 0)) return Fate::Kept;
+  ++w.stats.width_tests;
+  const std::optional<bool> below = mean_width_surely_below(w.ropes, f.rope, w.opt.radius, W);
+  if (below && !(*below && mean_width)) return *below ? Fate::Narrow : Fate::Kept;
+  ++w.stats.width_passes;
+  const double mw = ring_mean_width_m(w.ropes, f.rope, w.opt.radius);
+  if (mean_width) *mean_width = mw;
+  return mw < W ? Fate::Narrow : Fate::Kept;
 }
 
 // Drops a new loop that fate_of drops; logs narrow water.

@@ -62,6 +62,10 @@ struct PassageStats {
   std::size_t near_searched = 0;   // segments searched for near misses (new since the round before)
   std::size_t near_kept = 0;       // near pairs taken from the round before (both segments unchanged)
   std::size_t across_kept = 0;     // of the rounds' near pairs, those whose way across was measured before
+  // Water loops' mean widths asked (passages.cpp, fate_of), and of them those read round
+  // the ring (the rope's sums not certain, or the width logged; coast/mean_width.h):
+  std::size_t width_tests = 0;
+  std::size_t width_passes = 0;
 };
 
 /// Closes passages and places dams in place (new loops appended, replaced loops marked

@@ -150,7 +150,7 @@ TEST_CASE("kept ropes: many cuts and joins give the rings that copying gives") {
 
 TEST_CASE("kept ropes: a cut's work does not grow with the ring's size") {
   // A copy per cut reads the ring: 100 times more work on a ring 100 times larger. A rope
-  // cut goes down a few paths of the tree: a few times log n.
+  // cut goes down a few paths of the tree: a few times (log n)^2 with the spines below.
   auto work_per_cut = [](std::size_t n) {
     std::mt19937 rng(7);
     KeptRopes ropes;
@@ -172,6 +172,9 @@ TEST_CASE("kept ropes: a cut's work does not grow with the ring's size") {
   };
   const double small = work_per_cut(1000), large = work_per_cut(100000);
   MESSAGE("rope work per cut: ", small, " at 1,000 points, ", large, " at 100,000");
-  CHECK(large < 2.5 * small);
-  CHECK(large < 400);
+  // Each tree node pulled on a path also walks the spine of a child subtree to the point
+  // next to it (the mean width's link segments, kept_rope.cpp): log n nodes a pull, so
+  // (log n)^2 a path: 3 times more at 100 times the points (1.5 times without the spines).
+  CHECK(large < 4.0 * small);
+  CHECK(large < 1200);
 }

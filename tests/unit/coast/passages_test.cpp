@@ -507,6 +507,15 @@ TEST_CASE("passages: closing many inlets of one loop reads each of its points a 
   std::sort(reference.begin(), reference.end());
   CHECK(all.closures.size() == reference.size());
   CHECK(all.closures == reference);
+  // Every piece a cut drops or would drop, and the sea after each cut, ask their mean
+  // width; the rope's sums decide (coast/mean_width.h), and the pass round the ring is
+  // made only for the narrow water logged with its width (a near tie would add one).
+  std::size_t narrow = 0;
+  for (const auto& c : all.closures) narrow += std::get<0>(c) == static_cast<int>(RepairKind::NarrowWater);
+  MESSAGE("mean widths asked ", all.stats.width_tests, ", read round the ring ", all.stats.width_passes,
+          ", narrow water logged ", narrow);
+  CHECK(all.stats.width_tests >= 2 * all.stats.cuts);
+  CHECK(all.stats.width_passes == narrow);
 }
 
 TEST_CASE("passages: a cut's work on the kept points does not grow with the loop's size") {
@@ -524,6 +533,8 @@ TEST_CASE("passages: a cut's work on the kept points does not grow with the loop
   MESSAGE("kept points visited per cut: ", per_cut_shallow, " at ", shallow.points, " points, ", per_cut_deep, " at ",
           deep.points);
   CHECK(per_cut_deep < 1.5 * per_cut_shallow);
+  // The sea's mean width after each cut comes from the rope's sums, whatever its size.
+  CHECK(deep.stats.width_passes == shallow.stats.width_passes);
 }
 
 namespace {
