@@ -89,30 +89,41 @@ void clean_ring(Ring& r, CleanReport& rep) {
   }
 }
 
+// Rings cleaned on the threads in fixed chunks of kCleanChunk, each chunk's report
+// written to its own part (then: per-ring work of one chunk, `after(k, part)`); the parts
+// are joined in ring order, so the entries are one thread's for every count.
+constexpr std::size_t kCleanChunk = 256;
+template <class After>
+void clean_in_order(std::vector<Ring>& rings, CleanReport& rep, int threads, After after) {
+  const std::size_t n = rings.size();
+  std::vector<CleanReport> parts((n + kCleanChunk - 1) / kCleanChunk);
+  parallel_for_chunks(resolve_thread_count(threads), n, kCleanChunk, [&](std::size_t begin, std::size_t end) {
+    CleanReport& part = parts[begin / kCleanChunk];
+    for (std::size_t k = begin; k < end; ++k) {
+      clean_ring(rings[k], part);
+      after(k, part);
+    }
+  });
+  for (CleanReport& p : parts) rep.entries.insert(rep.entries.end(), p.entries.begin(), p.entries.end());
+}
+
 }  // namespace
 
 CleanReport clean(Coastline& c, int threads) {
   // Rings are cleaned independently, in chunks whose reports are joined in ring order:
   // the same entries for every thread count.
-  constexpr std::size_t kChunk = 256;
   const std::size_t n = c.rings.size();
-  std::vector<CleanReport> parts((n + kChunk - 1) / kChunk);
   std::vector<char> degenerate(n, 0);
-  parallel_for_chunks(resolve_thread_count(threads), n, kChunk, [&](std::size_t begin, std::size_t end) {
-    CleanReport& rep = parts[begin / kChunk];
-    for (std::size_t k = begin; k < end; ++k) {
-      Ring& r = c.rings[k];
-      clean_ring(r, rep);
-      const std::size_t need = r.closed ? 3 : 2;
-      if (r.pts.size() < need) {
-        rep.entries.push_back({CleanAction::DegenerateRing, r.record, r.id,
-                               r.pts.empty() ? geo::LonLat{} : r.pts.front()});
-        degenerate[k] = 1;
-      }
+  CleanReport rep;
+  clean_in_order(c.rings, rep, threads, [&](std::size_t k, CleanReport& part) {
+    const Ring& r = c.rings[k];
+    const std::size_t need = r.closed ? 3 : 2;
+    if (r.pts.size() < need) {
+      part.entries.push_back({CleanAction::DegenerateRing, r.record, r.id,
+                              r.pts.empty() ? geo::LonLat{} : r.pts.front()});
+      degenerate[k] = 1;
     }
   });
-  CleanReport rep;
-  for (CleanReport& p : parts) rep.entries.insert(rep.entries.end(), p.entries.begin(), p.entries.end());
   std::size_t top = 0;
   for (std::size_t k = 0; k < n; ++k)
     if (!degenerate[k]) {
@@ -275,18 +286,26 @@ std::vector<Edge> candidate_edges(const Coastline& c, int threads) {
 // Polygons cut at the dateline do not always carry the same vertices along the cut:
 // every vertex lying on lon +-180 is inserted into the dateline edges of the other rings
 // that pass over it, so that the shared runs become identical edges.
-void split_dateline_edges(Coastline& c) {
-  std::vector<double> lats;
+// The search for those vertices looks at every source point: the rings go to the threads
+// in fixed chunks, each chunk's latitudes joined in ring order (the list one thread makes).
+void split_dateline_edges(Coastline& c, int threads) {
+  constexpr std::size_t kChunk = 256;   // rings
   std::vector<char> on_dateline(c.rings.size(), 0);
-  for (std::size_t k = 0; k < c.rings.size(); ++k) {
-    const Ring& r = c.rings[k];
-    if (r.closed && !r.wraps_pole)
-      for (auto p : r.pts)
-        if (key(p).lon == 180.0) {
-          lats.push_back(p.lat);
-          on_dateline[k] = 1;
-        }
-  }
+  std::vector<std::vector<double>> found((c.rings.size() + kChunk - 1) / kChunk);
+  parallel_for_chunks(resolve_thread_count(threads), c.rings.size(), kChunk, [&](std::size_t b, std::size_t e) {
+    std::vector<double>& part = found[b / kChunk];
+    for (std::size_t k = b; k < e; ++k) {
+      const Ring& r = c.rings[k];
+      if (r.closed && !r.wraps_pole)
+        for (auto p : r.pts)
+          if (key(p).lon == 180.0) {
+            part.push_back(p.lat);
+            on_dateline[k] = 1;
+          }
+    }
+  });
+  std::vector<double> lats;
+  for (const std::vector<double>& part : found) lats.insert(lats.end(), part.begin(), part.end());
   if (lats.empty()) return;
   std::sort(lats.begin(), lats.end());
   lats.erase(std::unique(lats.begin(), lats.end()), lats.end());
@@ -314,7 +333,7 @@ void split_dateline_edges(Coastline& c) {
 }
 
 void merge_touching_rings(Coastline& c, CleanReport& rep, int threads) {
-  split_dateline_edges(c);
+  split_dateline_edges(c, threads);
   for (;;) {
     const std::vector<Edge> edges = candidate_edges(c, resolve_thread_count(threads));
     std::vector<char> busy(c.rings.size(), 0), dead(c.rings.size(), 0);
@@ -349,8 +368,9 @@ void merge_touching_rings(Coastline& c, CleanReport& rep, int threads) {
     for (std::size_t r = 0; r < c.rings.size(); ++r)
       if (!dead[r]) kept.push_back(std::move(c.rings[r]));
     c.rings = std::move(kept);
-    // The rest of a shared run now folds back on itself: the spike pass removes it.
-    for (Ring& r : c.rings) clean_ring(r, rep);
+    // The rest of a shared run now folds back on itself: the spike pass removes it (every
+    // ring again, on the threads: a pass over all the source points).
+    clean_in_order(c.rings, rep, threads, [](std::size_t, CleanReport&) {});
   }
 }
 

@@ -12,6 +12,7 @@
 
 #include "base/cpu_clock.h"
 #include "base/elapsed.h"
+#include "base/parallel.h"
 #include "base/release_memory.h"
 #include "coast/coastline_option_id.h"
 #include "coast/deviation.h"
@@ -221,7 +222,11 @@ namespace {
 
 bool is_water_level(int level) { return level == 2 || level == 4; }
 
-WorkCurve make_curve(CoarseRing&& cr, bool open_boundary, const geo::PolarSphere& ps) {
+// The curve of a coarse ring, its (u,v) points not yet made (set_uv, on the threads) but
+// their array reserved here, on the calling thread: the heap's layout is the serial
+// import's (made on a worker, the 160 MB of them at 3 km came from another arena and
+// raised the -nt 2 peak by 15 MB).
+WorkCurve make_curve(CoarseRing&& cr, bool open_boundary) {
   WorkCurve w;
   w.full = std::move(cr.ring.pts);
   w.gamma = std::move(cr.gamma);
@@ -231,8 +236,21 @@ WorkCurve make_curve(CoarseRing&& cr, bool open_boundary, const geo::PolarSphere
   w.record = cr.ring.record;
   w.id = cr.ring.id;
   w.uv.reserve(w.full.size());
-  for (auto p : w.full) w.uv.push_back(ps.param_from_lonlat(p));
   return w;
+}
+
+// Every curve's (u,v) points from its lon/lat ones: each curve's are its own (one point's
+// image depends on that point alone), so the chunks of curves go to the threads and the
+// result is the same bytes for every count. On one thread this was the curves step's
+// whole time (0.3 s of CPU for the 10 million source points of the full GSHHG).
+void set_uv(std::vector<WorkCurve>& curves, const geo::PolarSphere& ps, int threads) {
+  constexpr std::size_t kChunk = 8;   // curves: the continents lead, so small chunks share them out
+  parallel_for_chunks(resolve_thread_count(threads), curves.size(), kChunk, [&](std::size_t b, std::size_t e) {
+    for (std::size_t i = b; i < e; ++i) {
+      WorkCurve& c = curves[i];
+      for (const geo::LonLat p : c.full) c.uv.push_back(ps.param_from_lonlat(p));   // within its reserve
+    }
+  });
 }
 
 // Every point on one line (exact): a loop without area.
@@ -570,7 +588,7 @@ void make_work_loops(ImportWork& w) {
   for (CoarseRing& cr : w.whole.rings) {
     const int level = cr.ring.level;
     const bool pole = cr.ring.wraps_pole;
-    curves.push_back(make_curve(std::move(cr), false, w.ps));
+    curves.push_back(make_curve(std::move(cr), false));
     WorkLoop loop;
     loop.curves = {static_cast<std::uint32_t>(curves.size() - 1)};
     // Land rings are holes in the water; the ring round the singular point (the South
@@ -584,7 +602,7 @@ void make_work_loops(ImportWork& w) {
     WorkLoop loop;
     loop.hole = false;
     for (std::size_t k = span.first; k < span.second; ++k, ++at) {
-      curves.push_back(make_curve(std::move(w.pieces.rings[at]), w.piece_is_boundary[k] != 0, w.ps));
+      curves.push_back(make_curve(std::move(w.pieces.rings[at]), w.piece_is_boundary[k] != 0));
       loop.curves.push_back(static_cast<std::uint32_t>(curves.size() - 1));
     }
     loops.push_back(std::move(loop));
@@ -592,6 +610,7 @@ void make_work_loops(ImportWork& w) {
   // The coarse rings' points are the curves' now: their shells go.
   std::vector<CoarseRing>().swap(w.whole.rings);
   std::vector<CoarseRing>().swap(w.pieces.rings);
+  set_uv(curves, w.ps, w.opt.threads);
   std::vector<Vec2> poly;
   for (std::size_t l = 0; l < loops.size(); ++l) {
     WorkLoop& loop = loops[l];
@@ -728,29 +747,61 @@ std::optional<CoastError> close_narrow_passages(ImportWork& w) {
 
 // 7. Surfaces: each hole goes to the smallest outer loop that contains it; the ocean
 // first: the loop round the South Pole or, in a region, the largest loop.
+// The loops' polygons, the outers' areas and each hole's outer are found on the threads,
+// each written to its own slot (a hole's outer depends on the polygons alone), and then
+// taken in loop order: the same surfaces for every thread count.
 void assign_holes(ImportWork& w) {
   const std::vector<WorkLoop>& loops = w.loops;
+  const int threads = resolve_thread_count(w.opt.threads);
+  constexpr std::size_t kChunk = 64;   // loops
   w.polys.resize(loops.size());
-  for (std::size_t l = 0; l < loops.size(); ++l)
-    if (!loops[l].dead) loop_polygon(w.curves, loops[l], w.polys[l], nullptr);
+  // Each polygon's array is reserved here, on the calling thread (as for the curves' (u,v)
+  // points in set_uv), and filled on the threads within it.
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    if (loops[l].dead) continue;
+    std::size_t n = 0;
+    for (std::uint32_t ci : loops[l].curves) {
+      const WorkCurve& c = w.curves[ci];
+      if (!c.keep.empty()) n += c.periodic ? c.keep.size() : c.keep.size() - 1;
+    }
+    w.polys[l].reserve(n);
+  }
+  parallel_for_chunks(threads, loops.size(), kChunk, [&](std::size_t b, std::size_t e) {
+    for (std::size_t l = b; l < e; ++l)
+      if (!loops[l].dead) loop_polygon(w.curves, loops[l], w.polys[l], nullptr);
+  });
   for (std::uint32_t l = 0; l < loops.size(); ++l)
     if (!loops[l].dead && !loops[l].hole) w.outers.push_back(l);
-  auto area = [&](std::uint32_t l) {
-    double a = 0;
-    const auto& p = w.polys[l];
-    for (std::size_t i = 0; i < p.size(); ++i) a += cross(p[i], p[(i + 1) % p.size()]);
-    return std::abs(a);
-  };
+  // Each outer's (doubled) area once: it was summed again at every comparison below.
+  std::vector<double> area_of(loops.size(), 0.0);
+  parallel_for_chunks(threads, w.outers.size(), 1, [&](std::size_t b, std::size_t e) {
+    for (std::size_t o = b; o < e; ++o) {
+      double a = 0;
+      const auto& p = w.polys[w.outers[o]];
+      for (std::size_t i = 0; i < p.size(); ++i) a += cross(p[i], p[(i + 1) % p.size()]);
+      area_of[w.outers[o]] = std::abs(a);
+    }
+  });
+  auto area = [&](std::uint32_t l) { return area_of[l]; };
   std::vector<std::uint32_t>& outers = w.outers;
   std::stable_sort(outers.begin(), outers.end(), [&](std::uint32_t a, std::uint32_t b) { return area(a) > area(b); });
   w.holes_of.resize(outers.size());
+  // Per hole: the index in `outers` of the smallest outer loop round its first point.
+  std::vector<std::size_t> best_of(loops.size(), outers.size());
+  parallel_for_chunks(threads, loops.size(), kChunk, [&](std::size_t b, std::size_t e) {
+    for (std::size_t l = b; l < e; ++l) {
+      if (loops[l].dead || !loops[l].hole) continue;
+      std::size_t best = outers.size();
+      for (std::size_t o = 0; o < outers.size(); ++o)
+        if (point_in_ring(w.polys[outers[o]], w.polys[l][0]) &&
+            (best == outers.size() || area(outers[o]) < area(outers[best])))
+          best = o;
+      best_of[l] = best;
+    }
+  });
   for (std::uint32_t l = 0; l < loops.size(); ++l) {
     if (loops[l].dead || !loops[l].hole) continue;
-    std::size_t best = outers.size();
-    for (std::size_t o = 0; o < outers.size(); ++o)
-      if (point_in_ring(w.polys[outers[o]], w.polys[l][0]) &&
-          (best == outers.size() || area(outers[o]) < area(outers[best])))
-        best = o;
+    const std::size_t best = best_of[l];
     if (best < outers.size()) {
       w.holes_of[best].push_back(l);
     } else if (outers.empty()) {

@@ -273,3 +273,50 @@ TEST_CASE("import: the same input gives the same model, bit for bit") {
   REQUIRE(ia.size() == ib.size());
   for (std::size_t i = 0; i < ia.size(); ++i) CHECK(ia[i].text == ib[i].text);
 }
+
+// The curves' (u,v) points and the surfaces (each hole's outer loop) are made on the
+// threads (import.cpp's set_uv and assign_holes): 1, 2 and 3 threads give the model of the
+// serial import, loop for loop and point for point. The lakes (level 2) are outer loops
+// beside the ocean's (round Antarctica), so the islands choose among several outers.
+TEST_CASE("import: every thread count gives the serial model, surfaces and points alike") {
+  ImportOptions o;
+  o.gamma = sm::testing::constant_accuracy(20e3);
+  o.levels = {1, 2};
+  auto read = read_gshhs(std::string(SM_DATA_DIR) + "/gshhs/gshhs_c.b");
+  REQUIRE(read.ok());
+  const Coastline source = std::move(*read);
+  o.threads = 1;
+  auto serial = build_coast_model(source, o);
+  REQUIRE_MESSAGE(serial.ok(), (serial.ok() ? "" : serial.error().to_string()));
+  REQUIRE(serial->surfaces.size() > 1);
+  std::size_t holes = 0;
+  for (const CoastSurface& s : serial->surfaces) holes += s.holes.size();
+  REQUIRE(holes > 100);
+  for (int threads : {1, 2, 3}) {
+    CAPTURE(threads);
+    o.threads = threads;
+    auto m = build_coast_model(source, o);
+    REQUIRE(m.ok());
+    REQUIRE(m->surfaces.size() == serial->surfaces.size());
+    for (std::size_t s = 0; s < m->surfaces.size(); ++s) {
+      CHECK(m->surfaces[s].outer == serial->surfaces[s].outer);
+      CHECK(m->surfaces[s].holes == serial->surfaces[s].holes);
+    }
+    CHECK(m->unassigned == serial->unassigned);
+    REQUIRE(m->loops.size() == serial->loops.size());
+    for (std::size_t l = 0; l < m->loops.size(); ++l) CHECK(m->loops[l].curves == serial->loops[l].curves);
+    REQUIRE(m->curves.size() == serial->curves.size());
+    for (std::size_t c = 0; c < m->curves.size(); ++c) {
+      const CoastCurve& a = m->curves[c];
+      const CoastCurve& b = serial->curves[c];
+      REQUIRE(a.uv.size() == b.uv.size());
+      bool same = a.ll.size() == b.ll.size();
+      for (std::size_t k = 0; same && k < a.uv.size(); ++k)
+        same = a.uv[k] == b.uv[k] && a.ll[k].lon == b.ll[k].lon && a.ll[k].lat == b.ll[k].lat;
+      CHECK(same);
+    }
+    const auto ia = m->report.items(), ib = serial->report.items();
+    REQUIRE(ia.size() == ib.size());
+    for (std::size_t i = 0; i < ia.size(); ++i) CHECK(ia[i].text == ib[i].text);
+  }
+}
