@@ -124,6 +124,11 @@ void morton_keys(std::span<const Vec3> q, MortonKey* keys) {
 // give the same order, since the indices make every pair distinct.
 constexpr std::size_t kSmallBatch = 256;
 
+// Below this many queries a batch is answered in its own order: the refiners' batches of
+// about 15 (one insertion's new triangles around its vertex, each next to the one before)
+// are in a near order already, and their Morton keys and sort cost more than they save.
+constexpr std::size_t kSortFrom = 32;
+
 /// Query order along a Morton curve of the batch's bounding box: order[k] is the k-th
 /// query's index. Stack memory for a small batch, else `heap`'s (resized).
 std::span<const std::uint32_t> morton_order(std::span<const Vec3> q,
@@ -200,7 +205,7 @@ void KdTree::nearest_capped(std::span<const Vec3> queries, const Far2& far2_at, 
   std::array<std::uint32_t, kSmallBatch> small_order;  // not initialised: trivial elements
   std::vector<std::uint32_t> heap_order;
   std::span<const std::uint32_t> order;
-  if (opts_.sort_queries && queries.size() > 1) order = morton_order(queries, small_order, heap_order);
+  if (opts_.sort_queries && queries.size() >= kSortFrom) order = morton_order(queries, small_order, heap_order);
   const flann::SearchParams params(flann::FLANN_CHECKS_UNLIMITED, opts_.eps);
   std::uint32_t prev = kNoIndex;
   for (std::size_t k = 0; k < queries.size(); ++k) {
@@ -249,7 +254,7 @@ void KdTree::nearest_within(std::span<const Vec3> queries, std::span<const doubl
   std::array<std::uint32_t, kSmallBatch> small_order;  // not initialised: trivial elements
   std::vector<std::uint32_t> heap_order;
   std::span<const std::uint32_t> order;
-  if (opts_.sort_queries && queries.size() > 1) order = morton_order(queries, small_order, heap_order);
+  if (opts_.sort_queries && queries.size() >= kSortFrom) order = morton_order(queries, small_order, heap_order);
   std::uint32_t prev = kNoIndex;
   for (std::size_t k = 0; k < queries.size(); ++k) {
     const std::size_t i = order.empty() ? k : order[k];
