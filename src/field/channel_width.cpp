@@ -23,6 +23,7 @@
 #include <fmt/format.h>
 
 #include "base/parallel.h"
+#include "field/batch_pieces.h"
 #include "field/error.h"
 #include "field/kinds.h"
 #include "field/knn.h"
@@ -236,14 +237,11 @@ void ChannelWidths::width_within(std::span<const Vec3> pts, std::span<const doub
     std::fill(w.begin(), w.end(), m.cap);
     return;
   }
-  // In pieces whose scratch lives on the stack (the 2D refiners ask about 15 points a
-  // call: heap arrays a call cost more than their searches); each point's width depends
-  // on that point alone, so the pieces change nothing.
-  for (std::size_t from = 0; from < pts.size(); from += kPiece) {
-    const std::size_t n = std::min(kPiece, pts.size() - from);
+  // In pieces whose scratch lives on the stack (field/batch_pieces.h).
+  for_each_piece(pts.size(), [&](std::size_t from, std::size_t n) {
     width_piece(pts.subspan(from, n), max_width.size() <= 1 ? max_width : max_width.subspan(from, n),
                 w.subspan(from, n));
-  }
+  });
 }
 
 void ChannelWidths::width_piece(std::span<const Vec3> pts, std::span<const double> max_width,
@@ -251,8 +249,8 @@ void ChannelWidths::width_piece(std::span<const Vec3> pts, std::span<const doubl
   const Impl& m = *impl_;
   // Farther than max_width / 2 from the coast the water is wider than that. Not
   // initialised: each array's first pts.size() (radius: max_width.size()) are written.
-  double radius[kPiece], dist[kPiece];
-  std::uint32_t index[kPiece];
+  double radius[kBatchPiece], dist[kBatchPiece];
+  std::uint32_t index[kBatchPiece];
   for (std::size_t i = 0; i < max_width.size(); ++i) radius[i] = 0.5 * std::min(max_width[i], m.cap);
   m.tree->nearest_within(pts, std::span<const double>(radius, max_width.size()), std::span<double>(dist, pts.size()),
                          std::span<std::uint32_t>(index, pts.size()));
@@ -313,21 +311,15 @@ void ChannelWidthField::lower(std::span<const Vec3> pts, std::span<double> h) co
   // size is >= h: the min below leaves h as it is, as a full evaluation would.
   // Where h <= SizeMax and the grid of smallest widths shows none below N h within
   // reach, that width is >= min(N h, cap), whose size is >= h: no search needed.
-  for (std::size_t from = 0; from < pts.size(); from += kPiece) {
-    const std::size_t n = std::min(kPiece, pts.size() - from);
-    lower_piece(pts.subspan(from, n), h.subspan(from, n));
-  }
+  for_each_piece(pts.size(),
+                 [&](std::size_t from, std::size_t n) { lower_piece(pts.subspan(from, n), h.subspan(from, n)); });
 }
 
 void ChannelWidthField::lower_piece(std::span<const Vec3> pts, std::span<double> h) const {
-  // Not initialised: the first `count` of each are written (an array of Vec3, whose
-  // members have default values, would be written first, hence the union).
-  std::uint32_t which[kPiece];
-  union Points {
-    Points() {}
-    Vec3 p[kPiece];
-  } at;
-  double limit[kPiece], w[kPiece];
+  // Not initialised: the first `count` of each are written.
+  std::uint32_t which[kBatchPiece];
+  PiecePoints at;
+  double limit[kBatchPiece], w[kBatchPiece];
   std::size_t count = 0;
   for (std::size_t i = 0; i < h.size(); ++i) {
     if (!(h[i] > o_.size_min)) continue;

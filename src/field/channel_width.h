@@ -47,8 +47,7 @@ class ChannelWidths {
   std::size_t samples() const;
 
  private:
-  // The evaluations run in pieces of at most kPiece points, with their scratch on the stack.
-  static constexpr std::size_t kPiece = 256;
+  // The evaluations run in pieces (field/batch_pieces.h), their scratch on the stack.
   void width_piece(std::span<const Vec3> pts, std::span<const double> max_width, std::span<double> w) const;
 
   struct Impl;
@@ -67,7 +66,6 @@ class ChannelWidthField final : public SizeField {
   void lower(std::span<const Vec3> pts, std::span<double> h) const;
 
  private:
-  static constexpr std::size_t kPiece = 256;  // as ChannelWidths'
   void lower_piece(std::span<const Vec3> pts, std::span<double> h) const;
   double size_of(double width) const;
   ChannelWidths widths_;

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "field/batch_pieces.h"
 #include "field/bounded_field.h"
 #include "field/kinds.h"
 
@@ -25,13 +26,10 @@ class ThresholdField final : public CompositeField, public MinInput {
   // rounding (the sizes' spread, at least kSpread of SizeMax, keeps the margin's size
   // step far above it), so the result is that of evaluating and taking the min.
   void lower(const EntityRef* on, std::span<const Vec3> pts, std::span<double> h) const override {
-    // A large batch in pieces of kPiece points, whose scratch lives on the stack: the 2D
-    // refiners size about 15 points a call, and heap vectors a call cost more than their
-    // search. Each point's value depends on that point alone, so the pieces change nothing.
-    for (std::size_t from = 0; from < pts.size(); from += kPiece) {
-      const std::size_t n = std::min(kPiece, pts.size() - from);
+    // In pieces whose scratch lives on the stack (field/batch_pieces.h).
+    for_each_piece(pts.size(), [&](std::size_t from, std::size_t n) {
       lower_piece(on, pts.subspan(from, n), h.subspan(from, n));
-    }
+    });
   }
 
   // Where the margin would not cover the rounding (a sigmoid, sizes almost equal,
@@ -59,27 +57,20 @@ class ThresholdField final : public CompositeField, public MinInput {
   }
 
  private:
-  static constexpr std::size_t kPiece = 256;
-
   void lower_piece(const EntityRef* on, std::span<const Vec3> pts, std::span<double> h) const {
     constexpr double kRampMargin = 1e-9, kBelowMin = 1e-12;
     const double span = dist_max_ - dist_min_;
     const double spread = size_max_ - size_min_;
-    double v[kPiece];  // not initialised: written before read
+    double v[kBatchPiece];  // not initialised: written before read
     if (!prunes()) {
       run(on, pts, std::span<double>(v, pts.size()));
       for (std::size_t i = 0; i < h.size(); ++i)
         if (v[i] < h[i]) h[i] = v[i];
       return;
     }
-    std::uint32_t which[kPiece];
-    // Not initialised either (an array of Vec3, whose members have default values, would
-    // be written first): its first `count` elements are assigned below.
-    union Points {
-      Points() {}
-      Vec3 p[kPiece];
-    } at;
-    double limit[kPiece];
+    std::uint32_t which[kBatchPiece];
+    PiecePoints at;  // not initialised either: the first `count` are assigned below
+    double limit[kBatchPiece];
     std::size_t count = 0;
     for (std::size_t i = 0; i < h.size(); ++i) {
       // No distance gives a size below SizeMin (up to rounding).
