@@ -209,44 +209,6 @@ void for_each_candidate(const std::vector<Seg>& segs, const Grid& g, Intersectio
   }
 }
 
-// Calls test(s, t) once for each pair of segments whose (padded) boxes overlap and of which
-// one at least is active, s before t in (loop, index) order: the grid holds only the active
-// segments; the pairs of two active ones are found as for_each_candidate finds them, and
-// each inactive segment looks in the cells its box covers. A pair is taken only in the
-// cell of the lower corner of the two boxes' overlap, which lies in both boxes and so in a
-// cell each of them covers: once, whatever the cell size. An inactive segment whose box
-// misses the active ones' bounding box meets none of them. The cells are an array of
-// offsets (the active grid has at most about 16 cells per active segment, make_grid), so
-// an inactive segment finds its cells' entries without a search.
-template <class Test>
-void for_each_active_pair(std::span<const std::vector<Vec2>> loops, std::span<const std::vector<double>> pad,
-                          std::span<const std::vector<char>> active, const std::vector<Seg>& on, Test test) {
-  const Grid g = make_grid(on);
-  for_each_candidate(on, g, nullptr, test);
-  const auto cells = bin(on, g);
-  std::vector<std::uint32_t> start(static_cast<std::size_t>(g.nx * g.ny) + 1, 0);
-  for (const auto& c : cells) ++start[static_cast<std::size_t>(c.first) + 1];
-  for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
-  Vec2 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()}, hi = -lo;
-  for (const Seg& s : on)
-    lo = {std::min(lo.x, s.lo.x), std::min(lo.y, s.lo.y)}, hi = {std::max(hi.x, s.hi.x), std::max(hi.y, s.hi.y)};
-  for_each_segment(loops, pad, active, false, lo, hi, [&](const Seg& t) {
-    for (std::int64_t y = g.iy(t.lo.y); y <= g.iy(t.hi.y); ++y)
-      for (std::int64_t x = g.ix(t.lo.x); x <= g.ix(t.hi.x); ++x) {
-        const std::int64_t cell = y * g.nx + x;
-        const auto c = static_cast<std::size_t>(cell);
-        for (std::uint32_t e = start[c]; e < start[c + 1]; ++e) {   // entries in cell order, as bin sorted them
-          const Seg& s = on[cells[e].second];
-          if (!boxes_meet(s, t) || pair_cell(g, s, t) != cell) continue;   // else taken in another cell
-          if (std::pair(s.loop, s.index) < std::pair(t.loop, t.index))
-            test(s, t);
-          else
-            test(t, s);
-        }
-      }
-  });
-}
-
 // The hit of segments s and t, if they meet, recorded with its places in their order.
 void record_hit(const Seg& s, const Seg& t, std::vector<SegmentHit>& hits) {
   HitKind kind;
@@ -320,13 +282,93 @@ std::vector<SegmentHit> find_intersections(std::span<const std::vector<Vec2>> lo
 }
 
 std::vector<SegmentHit> find_intersections_at(std::span<const std::vector<Vec2>> loops,
-                                              std::span<const std::vector<char>> active) {
+                                              std::span<const std::vector<char>> active, int threads) {
   std::vector<SegmentHit> hits;
   const std::vector<Seg> on = make_segments(loops, {}, active, true);   // in (loop, index) order
   if (on.empty()) return hits;
-  // The earlier segment in (loop, index) order first, as find_intersections has them: the
-  // place a hit is reported at is measured on its first segment.
-  for_each_active_pair(loops, {}, active, on, [&hits](const Seg& s, const Seg& t) { record_hit(s, t, hits); });
+  // Each pair of segments whose boxes overlap and of which one at least is active, once: the
+  // grid holds only the active segments; the pairs of two active ones are found as
+  // for_each_candidate finds them, and each inactive segment looks in the cells its box
+  // covers (an array of offsets: the active grid has at most about 16 cells per active
+  // segment, make_grid). A pair is taken only in the cell of the lower corner of the two
+  // boxes' overlap, which lies in both boxes and so in a cell each covers; an inactive
+  // segment whose box misses the active ones' bounding box meets none of them. The earlier
+  // segment in (loop, index) order first, as find_intersections has them (the place a hit is reported at is measured on its first
+  // segment), found in fixed chunks whatever the thread count, each chunk's hits in a list
+  // of its own, then one list sorted: a pair is taken in one cell only, so the hits are
+  // distinct and the sorted list is the same for every count. The repair's rounds ran this
+  // on one thread (the segments met by a round's changes are spread over the world, so most
+  // of the coast's inactive segments look in the grid each round).
+  const Grid g = make_grid(on);
+  const auto cells = bin(on, g);
+  std::vector<std::uint32_t> start(static_cast<std::size_t>(g.nx * g.ny) + 1, 0);
+  for (const auto& c : cells) ++start[static_cast<std::size_t>(c.first) + 1];
+  for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
+  Vec2 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()}, hi = -lo;
+  for (const Seg& s : on)
+    lo = {std::min(lo.x, s.lo.x), std::min(lo.y, s.lo.y)}, hi = {std::max(hi.x, s.hi.x), std::max(hi.y, s.hi.y)};
+  std::vector<std::size_t> loop_first(loops.size() + 1, 0);
+  for (std::size_t l = 0; l < loops.size(); ++l)
+    loop_first[l + 1] = loop_first[l] + (loops[l].size() >= 2 ? loops[l].size() : 0);
+  const std::size_t n_all = loop_first.back();
+  constexpr std::size_t kEntryChunk = 1 << 14, kSegChunk = 1 << 15;
+  const std::size_t n_entry_chunks = (cells.size() + kEntryChunk - 1) / kEntryChunk;
+  const std::size_t n_seg_chunks = (n_all + kSegChunk - 1) / kSegChunk;
+  std::vector<std::vector<SegmentHit>> found(n_entry_chunks + n_seg_chunks);
+  // The pairs of two active segments, by runs of entries (a chunk takes the cells whose
+  // first entry it holds), as for_each_candidate takes them.
+  parallel_for_chunks(threads, cells.size(), kEntryChunk, [&](std::size_t b, std::size_t e) {
+    std::vector<SegmentHit>& mine = found[b / kEntryChunk];
+    std::size_t i = b;
+    while (i < e && i > 0 && cells[i - 1].first == cells[i].first) ++i;   // a cell begun before
+    while (i < e) {
+      std::size_t j = i;
+      while (j < cells.size() && cells[j].first == cells[i].first) ++j;
+      const std::int64_t cell = cells[i].first;
+      for (std::size_t p = i; p < j; ++p)
+        for (std::size_t q = p + 1; q < j; ++q) {
+          const Seg& s = on[cells[p].second];
+          const Seg& t = on[cells[q].second];
+          if (!boxes_meet(s, t) || pair_cell(g, s, t) != cell) continue;   // else tested in another cell
+          record_hit(s, t, mine);
+        }
+      i = j;
+    }
+  });
+  // Then each inactive segment whose box meets the active ones' bounding box looks in the
+  // cells its box covers, by runs of the loops' segments (numbered loop after loop).
+  parallel_for_chunks(threads, n_all, kSegChunk, [&](std::size_t b, std::size_t e) {
+    std::vector<SegmentHit>& mine = found[n_entry_chunks + b / kSegChunk];
+    auto l = static_cast<std::uint32_t>(std::upper_bound(loop_first.begin(), loop_first.end(), b) - loop_first.begin() - 1);
+    for (std::size_t k = b; k < e; ++k) {
+      while (k >= loop_first[l + 1]) ++l;
+      const auto i = static_cast<std::uint32_t>(k - loop_first[l]);
+      if (active[l][i]) continue;
+      const auto& p = loops[l];
+      const auto n = static_cast<std::uint32_t>(p.size());
+      Seg t{p[i], p[(i + 1) % n], l, i, n, {}, {}};
+      t.lo = {std::min(t.a.x, t.b.x), std::min(t.a.y, t.b.y)};
+      t.hi = {std::max(t.a.x, t.b.x), std::max(t.a.y, t.b.y)};
+      if (t.lo.x > hi.x || t.hi.x < lo.x || t.lo.y > hi.y || t.hi.y < lo.y) continue;
+      for (std::int64_t y = g.iy(t.lo.y); y <= g.iy(t.hi.y); ++y)
+        for (std::int64_t x = g.ix(t.lo.x); x <= g.ix(t.hi.x); ++x) {
+          const std::int64_t cell = y * g.nx + x;
+          const auto c = static_cast<std::size_t>(cell);
+          for (std::uint32_t en = start[c]; en < start[c + 1]; ++en) {
+            const Seg& s = on[cells[en].second];
+            if (!boxes_meet(s, t) || pair_cell(g, s, t) != cell) continue;   // else taken in another cell
+            if (std::pair(s.loop, s.index) < std::pair(t.loop, t.index))
+              record_hit(s, t, mine);
+            else
+              record_hit(t, s, mine);
+          }
+        }
+    }
+  });
+  std::size_t n_hits = 0;
+  for (const auto& f : found) n_hits += f.size();
+  hits.reserve(n_hits);
+  for (const auto& f : found) hits.insert(hits.end(), f.begin(), f.end());
   sort_place_pairs_on(hits, loops);
   return hits;
 }
@@ -436,7 +478,7 @@ std::vector<NearMiss> find_near_pairs(std::span<const std::vector<Vec2>> loops,
   };
   // Work in fixed chunks whatever the thread count (each chunk's pairs in a list of its
   // own), then one list sorted: the pairs are distinct (a pair is taken in one cell, as in
-  // for_each_active_pair), so the sorted list is the same for every count.
+  // find_intersections_at), so the sorted list is the same for every count.
   // First the pairs of two active segments, by runs of entries (a chunk takes the cells
   // whose first entry it holds).
   constexpr std::size_t kEntryChunk = 1 << 14, kSegChunk = 1 << 14;

@@ -38,9 +38,10 @@ std::vector<SegmentHit> find_intersections(std::span<const std::vector<Vec2>> lo
 /// back, a hit left for the next round), and a pair of two unchanged segments keeps its
 /// verdict. Only the active segments are entered in a grid; each inactive one whose box
 /// meets theirs looks in the cells it covers. The same records, sorted the same way, as
-/// find_intersections restricted to those pairs.
+/// find_intersections restricted to those pairs, for every thread count (`threads`, as
+/// parallel_for_chunks takes it).
 std::vector<SegmentHit> find_intersections_at(std::span<const std::vector<Vec2>> loops,
-                                              std::span<const std::vector<char>> active);
+                                              std::span<const std::vector<char>> active, int threads = 1);
 
 /// Segments of different loops (or far apart in one loop) closer than `width(loop, seg)`
 /// without touching: narrow straits. Found with the same grid, cells enlarged by the width.

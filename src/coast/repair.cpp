@@ -9,7 +9,6 @@
 #include <span>
 #include <tuple>
 #include <type_traits>
-#include <unordered_map>
 
 #include <fmt/format.h>
 
@@ -605,18 +604,36 @@ struct LoopRepair {
   std::vector<std::vector<LoopVertexRef>> refs;
   RoundChanges changes;
   std::vector<std::vector<char>> active;   // per loop and segment: tested this round
+  std::vector<char> curve_changed;         // per curve: in a loop marked whole (rebuild_polygons)
 
   LoopRepair(std::vector<WorkCurve>& c, std::vector<WorkLoop>& l, std::vector<RepairEntry>& lg)
       : curves(c), loops(l), log(lg), polys(l.size()), refs(l.size()), changes(l.size(), c.size()) {}
 
+  // The polygons of the loops a round changed made again, the others' kept: a change to a
+  // curve's points or keep list marks the loop whole or the curve's points (RoundChanges),
+  // so a loop none of whose curves is marked and which is not marked whole has the polygon
+  // it had (making every loop's again each round was a gather through the keep lists of the
+  // whole coast, 17 rounds at 3 km on the full GSHHG). A curve of a loop marked whole is
+  // taken as changed in every loop that uses it. Called before the round's marks are read
+  // (and cleared) by changes.active.
   void rebuild_polygons() {
+    const RoundChanges::Marks& m = changes.round;
+    curve_changed.assign(curves.size(), 0);
+    for (std::size_t l = 0; l < loops.size(); ++l)
+      if (m.whole[l])
+        for (std::uint32_t ci : loops[l].curves) curve_changed[ci] = 1;
     for (std::size_t l = 0; l < loops.size(); ++l) {
       if (loops[l].dead) {
         polys[l].clear();
         refs[l].clear();
-      } else {
-        loop_polygon(curves, loops[l], polys[l], &refs[l]);
+        continue;
       }
+      bool dirty = m.whole[l] != 0;
+      for (std::size_t k = 0; k < loops[l].curves.size() && !dirty; ++k) {
+        const std::uint32_t ci = loops[l].curves[k];
+        dirty = curve_changed[ci] || !m.at[ci].empty();
+      }
+      if (dirty) loop_polygon(curves, loops[l], polys[l], &refs[l]);
     }
   }
 
@@ -815,7 +832,7 @@ Result<std::size_t> repair_loops(std::vector<WorkCurve>& curves, std::vector<Wor
   for (;; ++round) {
     r.rebuild_polygons();
     r.changes.active(curves, loops, r.refs, r.active);
-    const std::vector<SegmentHit> hits = find_intersections_at(r.polys, r.active);
+    const std::vector<SegmentHit> hits = find_intersections_at(r.polys, r.active, resolve_thread_count(opt.threads));
     // Next round re-checks the segments met here (a hit left alone this round stays) and
     // those changed below.
     for (const SegmentHit& h : hits) {
@@ -984,6 +1001,7 @@ void handle_straits(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops
   std::vector<char> joined(loops.size(), 0);
   std::vector<char> took_in(loops.size(), 0);   // the loops merge_across joined another into
   BridgeCheck bridges(loops.size());   // the bridges checked against the pass's polygons
+  std::vector<std::size_t> best_of;    // per loop: its entry in a pass's `best` (below)
   for (int pass = 0; pass < kMaxPasses; ++pass) {
     // A loop the pass before merged into another: its polygon and widths from the two
     // loops' (join_polygons).
@@ -1036,12 +1054,26 @@ void handle_straits(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops
     std::vector<NearMiss> best;
     std::vector<char> best_facing;
     // The entry of each pair of loops in `best` (a search through `best` for each near miss
-    // was near misses x pairs: thousands of each at full resolution).
-    std::unordered_map<std::uint64_t, std::size_t> best_of;
+    // was near misses x pairs: thousands of each at full resolution). `near` is sorted by
+    // place (find_near_misses, find_near_misses_again), so a loop's records as loop_a are
+    // consecutive: the entry of (loop_a, loop_b) is best_of[loop_b] while loop_a's run
+    // lasts, the slots it filled emptied when it ends (a hash map of the pairs was 290,000
+    // look-ups a pass at 3 km, most of the passes' own time).
+    constexpr std::size_t kNoEntry = ~std::size_t{0};
+    best_of.resize(loops.size(), kNoEntry);
+    std::uint32_t run_a = 0;
+    std::size_t run_first = 0;   // the first entry of `best` made in loop run_a's run
     for (const NearMiss& m : near) {
       const bool f = facing(m);
-      const auto [it, fresh] = best_of.try_emplace((std::uint64_t{m.loop_a} << 32) | m.loop_b, best.size());
-      const std::size_t i = it->second;
+      if (m.loop_a != run_a) {
+        for (std::size_t e = run_first; e < best.size(); ++e) best_of[best[e].loop_b] = kNoEntry;
+        run_a = m.loop_a;
+        run_first = best.size();
+      }
+      SM_ASSERT(m.loop_a >= run_a, "handle_straits: near misses not sorted by loop (repair.cpp, handle_straits)");
+      const bool fresh = best_of[m.loop_b] == kNoEntry;
+      if (fresh) best_of[m.loop_b] = best.size();
+      const std::size_t i = best_of[m.loop_b];
       if (fresh) {
         best.push_back(m);
         best_facing.push_back(f);
@@ -1054,6 +1086,7 @@ void handle_straits(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
     std::stable_sort(order.begin(), order.end(),
                      [&](std::size_t a, std::size_t b) { return best[a].distance < best[b].distance; });
+    for (std::size_t e = run_first; e < best.size(); ++e) best_of[best[e].loop_b] = kNoEntry;
     bool merged = false;
     std::vector<RepairEntry> pending;
     for (std::size_t oi : order) {

@@ -190,6 +190,57 @@ TEST_CASE("intersections: hits of the active segments are the full search's with
   }
 }
 
+TEST_CASE("intersections: hits of the active segments are the same on 1, 2 and 3 threads, over many chunks") {
+  // Enough segments for several chunks of each kind (active entries and the segments
+  // scanned, intersections.cpp): 2,500 wobbly rings over the unit square crossing their
+  // neighbours, folds and a shared vertex among them. The oracle: the full search
+  // restricted to the pairs with a marked segment, record for record at every count.
+  std::mt19937 rng(777);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<std::vector<Vec2>> loops;
+  for (int l = 0; l < 2500; ++l) {
+    const Vec2 c{u(rng), u(rng)};
+    const int n = 12 + l % 40;
+    std::vector<Vec2> p;
+    for (int i = 0; i < n; ++i) {
+      const double a = 6.283185307179586 * i / n;
+      const double r = 0.012 * (0.5 + u(rng));
+      p.push_back({c.x + r * std::cos(a), c.y + r * std::sin(a)});
+    }
+    if (l % 7 == 0) p[2] = p[0] + 0.5 * (p[1] - p[0]);   // folds back onto its first segment
+    loops.push_back(p);
+  }
+  loops[5][4] = loops[6][3];   // a shared vertex: a touch
+  std::size_t n_segs = 0;
+  for (const auto& p : loops) n_segs += p.size();
+  REQUIRE(n_segs > 3 * 32768);
+  const std::vector<SegmentHit> all = find_intersections(loops);
+  REQUIRE(all.size() > 1000);
+  for (const double frac : {0.002, 0.05, 0.4, 1.0}) {
+    std::vector<std::vector<char>> active;
+    for (const auto& p : loops) {
+      std::vector<char> a(p.size());
+      for (char& x : a) x = u(rng) < frac;
+      active.push_back(a);
+    }
+    std::vector<SegmentHit> want;
+    for (const SegmentHit& h : all)
+      if (active[h.loop_a][h.seg_a] || active[h.loop_b][h.seg_b]) want.push_back(h);
+    if (frac > 0.01) REQUIRE(want.size() > 100);
+    for (const int threads : {1, 2, 3}) {
+      CAPTURE(frac);
+      CAPTURE(threads);
+      const std::vector<SegmentHit> some = find_intersections_at(loops, active, threads);
+      REQUIRE(some.size() == want.size());
+      for (std::size_t i = 0; i < some.size(); ++i) {
+        CHECK(place_pair_key(some[i]) == place_pair_key(want[i]));
+        CHECK(some[i].kind == want[i].kind);
+        CHECK(some[i].where == want[i].where);
+      }
+    }
+  }
+}
+
 TEST_CASE("intersections: near pairs of the active segments are those of all pairs with one active") {
   // Wavy rings close together (many near pairs, some within one ring), segment widths
   // varying; the oracle: the full search (every segment active), which with the one-loop
