@@ -192,13 +192,13 @@ TEST_CASE("intersections: hits of the active segments are the full search's with
 
 TEST_CASE("intersections: hits of the active segments are the same on 1, 2 and 3 threads, over many chunks") {
   // Enough segments for several chunks of each kind (active entries and the segments
-  // scanned, intersections.cpp): 2,500 wobbly rings over the unit square crossing their
+  // scanned, intersections.cpp): 3,500 wobbly rings over the unit square crossing their
   // neighbours, folds and a shared vertex among them. The oracle: the full search
   // restricted to the pairs with a marked segment, record for record at every count.
   std::mt19937 rng(777);
   std::uniform_real_distribution<double> u(0, 1);
   std::vector<std::vector<Vec2>> loops;
-  for (int l = 0; l < 2500; ++l) {
+  for (int l = 0; l < 3500; ++l) {
     const Vec2 c{u(rng), u(rng)};
     const int n = 12 + l % 40;
     std::vector<Vec2> p;
