@@ -978,6 +978,45 @@ void join_polygons(std::vector<std::vector<Vec2>>& polys, std::vector<std::vecto
 
 double lambda(Vec2 uv, double radius) { return 2.0 * radius / (1.0 + norm2(uv)); }
 
+// The narrowest place per pair of loops of the near misses `near` (sorted by place), in
+// the order the pairs first appear; a place where the two segments face each other
+// (facing(m)) is preferred to one where they do not. best_of: one slot per loop, all
+// empty (~0) on entry and on return.
+template <class Facing>
+void best_per_loop_pair(const std::vector<NearMiss>& near, Facing&& facing, std::vector<std::size_t>& best_of,
+                        std::vector<NearMiss>& best, std::vector<char>& best_facing) {
+  // The entry of each pair of loops in `best` (a search through `best` for each near miss
+  // was near misses x pairs: thousands of each at full resolution). `near` is sorted by
+  // place (find_near_misses, find_near_misses_again), so a loop's records as loop_a are
+  // consecutive: the entry of (loop_a, loop_b) is best_of[loop_b] while loop_a's run
+  // lasts, the slots it filled emptied when it ends (a hash map of the pairs was 290,000
+  // look-ups a pass at 3 km, most of the passes' own time).
+  constexpr std::size_t kNoEntry = ~std::size_t{0};
+  std::uint32_t run_a = 0;
+  std::size_t run_first = 0;   // the first entry of `best` made in loop run_a's run
+  for (const NearMiss& m : near) {
+    const bool f = facing(m);
+    if (m.loop_a != run_a) {
+      for (std::size_t e = run_first; e < best.size(); ++e) best_of[best[e].loop_b] = kNoEntry;
+      run_a = m.loop_a;
+      run_first = best.size();
+    }
+    SM_ASSERT(m.loop_a >= run_a, "handle_straits: near misses not sorted by loop (repair.cpp, handle_straits)");
+    const bool fresh = best_of[m.loop_b] == kNoEntry;
+    if (fresh) best_of[m.loop_b] = best.size();
+    const std::size_t i = best_of[m.loop_b];
+    if (fresh) {
+      best.push_back(m);
+      best_facing.push_back(f);
+    } else if ((f && !best_facing[i]) || (f == static_cast<bool>(best_facing[i]) && m.distance < best[i].distance)) {
+      best[i] = m;
+      best_facing[i] = f;
+    }
+  }
+  for (std::size_t e = run_first; e < best.size(); ++e) best_of[best[e].loop_b] = kNoEntry;
+}
+
+
 }  // namespace
 
 void handle_straits(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops, const RepairOptions& opt,
@@ -1001,7 +1040,7 @@ void handle_straits(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops
   std::vector<char> joined(loops.size(), 0);
   std::vector<char> took_in(loops.size(), 0);   // the loops merge_across joined another into
   BridgeCheck bridges(loops.size());   // the bridges checked against the pass's polygons
-  std::vector<std::size_t> best_of;    // per loop: its entry in a pass's `best` (below)
+  std::vector<std::size_t> best_of(loops.size(), ~std::size_t{0});   // per loop: best_per_loop_pair's slots
   for (int pass = 0; pass < kMaxPasses; ++pass) {
     // A loop the pass before merged into another: its polygon and widths from the two
     // loops' (join_polygons).
@@ -1053,40 +1092,11 @@ void handle_straits(std::vector<WorkCurve>& curves, std::vector<WorkLoop>& loops
     };
     std::vector<NearMiss> best;
     std::vector<char> best_facing;
-    // The entry of each pair of loops in `best` (a search through `best` for each near miss
-    // was near misses x pairs: thousands of each at full resolution). `near` is sorted by
-    // place (find_near_misses, find_near_misses_again), so a loop's records as loop_a are
-    // consecutive: the entry of (loop_a, loop_b) is best_of[loop_b] while loop_a's run
-    // lasts, the slots it filled emptied when it ends (a hash map of the pairs was 290,000
-    // look-ups a pass at 3 km, most of the passes' own time).
-    constexpr std::size_t kNoEntry = ~std::size_t{0};
-    best_of.resize(loops.size(), kNoEntry);
-    std::uint32_t run_a = 0;
-    std::size_t run_first = 0;   // the first entry of `best` made in loop run_a's run
-    for (const NearMiss& m : near) {
-      const bool f = facing(m);
-      if (m.loop_a != run_a) {
-        for (std::size_t e = run_first; e < best.size(); ++e) best_of[best[e].loop_b] = kNoEntry;
-        run_a = m.loop_a;
-        run_first = best.size();
-      }
-      SM_ASSERT(m.loop_a >= run_a, "handle_straits: near misses not sorted by loop (repair.cpp, handle_straits)");
-      const bool fresh = best_of[m.loop_b] == kNoEntry;
-      if (fresh) best_of[m.loop_b] = best.size();
-      const std::size_t i = best_of[m.loop_b];
-      if (fresh) {
-        best.push_back(m);
-        best_facing.push_back(f);
-      } else if ((f && !best_facing[i]) || (f == static_cast<bool>(best_facing[i]) && m.distance < best[i].distance)) {
-        best[i] = m;
-        best_facing[i] = f;
-      }
-    }
+    best_per_loop_pair(near, facing, best_of, best, best_facing);
     std::vector<std::size_t> order(best.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
     std::stable_sort(order.begin(), order.end(),
                      [&](std::size_t a, std::size_t b) { return best[a].distance < best[b].distance; });
-    for (std::size_t e = run_first; e < best.size(); ++e) best_of[best[e].loop_b] = kNoEntry;
     bool merged = false;
     std::vector<RepairEntry> pending;
     for (std::size_t oi : order) {
