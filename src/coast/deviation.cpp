@@ -16,6 +16,7 @@
 #include <span>
 
 #include "base/parallel.h"
+#include "coast/segment_distance.h"
 
 namespace sm::coast {
 
@@ -99,9 +100,7 @@ class Polyline {
         const Vec3& a = a_[i];
         const Vec3& ab = ab_[i];
         const double l2 = l2_[i];
-        double t = l2 > 0 ? dot(p - a, ab) / l2 : 0.0;
-        t = std::clamp(t, 0.0, 1.0);
-        d2 = std::min(d2, norm2(p - (a + t * ab)));
+        d2 = std::min(d2, segment_distance2(p, a, ab, l2));
       }
       if (done(d2)) return d2;
     }
@@ -129,9 +128,7 @@ bool near_source(const std::vector<Vec3>& pts, std::size_t around, const Vec3& p
     const Vec3& a = pts[i];
     const Vec3 ab = pts[i + 1] - pts[i];
     const double l2 = norm2(ab);
-    double t = l2 > 0 ? dot(p - a, ab) / l2 : 0.0;
-    t = std::clamp(t, 0.0, 1.0);
-    return !(std::sqrt(norm2(p - (a + t * ab))) / bound > 1);
+    return !(std::sqrt(segment_distance2(p, a, ab, l2)) / bound > 1);
   };
   const std::size_t start = std::min(around, hi - 1);
   if (within(start)) return true;
@@ -319,9 +316,7 @@ double near_distance(const Vec3& p, const SpanGroup* const (&g)[3], double margi
       const Vec3& a = h.p[i];
       const Vec3& ab = h.ab[i];
       const double l2 = h.l2[i];
-      double t = l2 > 0 ? dot(p - a, ab) / l2 : 0.0;
-      t = std::clamp(t, 0.0, 1.0);
-      d2 = std::min(d2, norm2(p - (a + t * ab)));
+      d2 = std::min(d2, segment_distance2(p, a, ab, l2));
     }
   }
   return std::sqrt(d2);
