@@ -4,8 +4,6 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
-#include <cmath>
 #include <limits>
 #include <map>
 #include <utility>
@@ -13,21 +11,6 @@
 #include "base/parallel.h"
 
 namespace sm::field {
-
-namespace {
-
-// The largest float not above v, and the smallest not below it (v itself when a float
-// holds it; beyond the floats' range the largest finite one, still on the right side).
-float float_at_most(double v) {
-  const float f = static_cast<float>(v);
-  return static_cast<double>(f) > v ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
-}
-float float_at_least(double v) {
-  const float f = static_cast<float>(v);
-  return static_cast<double>(f) < v ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
-}
-
-}  // namespace
 
 NearTree::NearTree(std::span<const Vec3> pts, int threads) {
   const std::size_t n = pts.size();
@@ -47,13 +30,6 @@ NearTree::NearTree(std::span<const Vec3> pts, int threads) {
       build(pts, ids, s.k, s.begin, s.end, s.depth, below, nullptr);
     }
   });
-  // Each inner node's split bounds from its children's boxes (built by then), rounded
-  // outward to floats (Node::second_lo, first_hi).
-  for (Node& nd : nodes_) {
-    if (nd.child == 0) continue;
-    nd.begin = std::bit_cast<std::uint32_t>(float_at_most(nodes_[nd.child + 1].lo[nd.axis]));
-    nd.end = std::bit_cast<std::uint32_t>(float_at_least(nodes_[nd.child].hi[nd.axis]));
-  }
   x_.resize(n), y_.resize(n), z_.resize(n), id_ = ids;
   constexpr std::size_t kChunk = std::size_t{1} << 15;
   parallel_for_chunks(threads, n, kChunk, [&](std::size_t begin, std::size_t end) {
@@ -119,9 +95,8 @@ void NearTree::search(const Vec3& q, double& best2, std::uint32_t& best) const {
   });
 }
 
-// Down: at each inner node q takes the child whose side of its split bound it is on, and
-// the other child's gap along the split's axis, to that bound (a float no tighter than
-// the child's box), bounds (below) every computed squared distance
+// Down: at each inner node q takes the child whose side of the split it is on, and the
+// other child's gap along the split's axis bounds (below) every computed squared distance
 // from q to a point of that child: for a point beyond the gap the coordinate difference,
 // rounded, is at least the rounded gap (rounding is monotone), and the sum of the three
 // squares at least its square. reach[l] is the least such bound over the levels above l:
@@ -137,17 +112,21 @@ void NearTree::search_up(const Vec3& q, double& best2, std::uint32_t& best) cons
   std::size_t l = 0;
   std::uint32_t k = 0;
   reach[0] = std::numeric_limits<double>::infinity();
-  // The node's own split bounds only (no child read), and selects instead of branches:
-  // which side q is on is a coin toss near the leaves.
   while (nodes_[k].child != 0) {
     const Node& nd = nodes_[k];
+    const Node& second = nodes_[nd.child + 1];
     const double at = c[nd.axis];
-    const double second_lo = static_cast<double>(nd.second_lo()), first_hi = static_cast<double>(nd.first_hi());
-    const bool first = at < second_lo;
-    const double beyond = at - first_hi;
-    const double gap = first ? second_lo - at : beyond > 0 ? beyond : 0.0;  // 0 also for a NaN
-    other[l] = nd.child + (first ? 1u : 0u);
-    k = nd.child + (first ? 0u : 1u);
+    double gap = 0;
+    if (at < second.lo[nd.axis]) {
+      gap = second.lo[nd.axis] - at;
+      other[l] = nd.child + 1;
+      k = nd.child;
+    } else {
+      const double first_hi = nodes_[nd.child].hi[nd.axis];
+      gap = at > first_hi ? at - first_hi : 0.0;  // 0 also for a NaN
+      other[l] = nd.child;
+      k = nd.child + 1;
+    }
     reach[l + 1] = std::min(reach[l], gap * gap);
     ++l;
   }

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cstdint>
 #include <span>
 #include <utility>
@@ -72,23 +71,12 @@ class NearTree {
   static constexpr std::uint32_t kLeaf = 8;
   // Each level halves the points, so the depth stays below log2(2^32 / kLeaf) + 1.
   static constexpr std::size_t kMaxDepth = 32;
-  // One cache line a node (aligned: a node straddling two lines was two misses on the
-  // way down). An inner node keeps its split's two bounds as floats rounded outward in
-  // the words a leaf uses for its range of points, so that search_up's descent reads one
-  // node a level and not both children's boxes.
-  struct alignas(64) Node {
+  struct Node {
     double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
-    std::uint32_t begin = 0, end = 0;  // a leaf: its points; an inner node: split_bits
-    std::uint32_t child = 0;           // 0: a leaf
-    std::uint32_t axis = 0;            // the split's axis (inner nodes)
-    // An inner node: the split's bounds, as floats no tighter than the children's boxes:
-    // second_lo() is at most the second child's lo[axis], first_hi() at least the first's
-    // hi[axis] (a gap from q to such a bound, computed in doubles, is never above the
-    // gap to a point beyond it: rounding is monotone).
-    float second_lo() const { return std::bit_cast<float>(begin); }
-    float first_hi() const { return std::bit_cast<float>(end); }
+    std::uint32_t begin = 0, end = 0;
+    std::uint32_t child = 0;  // 0: a leaf
+    std::uint32_t axis = 0;   // the split's axis (inner nodes)
   };
-  static_assert(sizeof(Node) == 64);
 
   static double box2(const Node& nd, const Vec3& q) {
     const double c[3] = {q.x, q.y, q.z};

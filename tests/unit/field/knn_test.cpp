@@ -415,11 +415,11 @@ TEST_CASE("knn: NearTree built on threads is the same tree (its visits in the sa
   }
 }
 
-// The descent of search_up goes by each split's bounds rounded outward to floats: on
-// points in metres on the Earth's sphere, packed in clusters tighter than a float's step
-// there (0.5 m at 6.4e6 m), many splits fall inside one float step, and the search must
-// still give brute force's answer, ties (repeated points, points at the same distance)
-// included, from a cap, a candidate, or nothing; and the seeded batches too.
+// Points in metres on the Earth's sphere, in clusters down to a centimetre wide (many
+// splits a hair apart, where a tree that bounds its gaps loosely, e.g. with floats not
+// rounded outward, would lose points): both searches and the seeded batches give brute
+// force's answer, ties (repeated points, lattice points at the same distance) included,
+// from a cap, a candidate, or nothing.
 TEST_CASE("knn: NearTree on clustered points finer than a float's step equals brute force, ties included") {
   std::mt19937 rng(77);
   std::uniform_real_distribution<double> u(-1, 1);
