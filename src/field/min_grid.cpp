@@ -43,7 +43,8 @@ constexpr std::uint64_t kLaneBits =
 
 }  // namespace
 
-std::size_t MinGrid::home(std::uint64_t key) const {
+// Inline, as key(): called for every cell a query reads (out of line, a call per cell).
+inline std::size_t MinGrid::home(std::uint64_t key) const {
   const std::size_t group = static_cast<std::size_t>(((key & ~kLaneBits) * 0x9E3779B97F4A7C15ull) >> shift_) &
                             ~std::size_t{7};
   const auto lane = static_cast<std::size_t>((key & 1) | ((key >> (kCoordBits - 1)) & 2) |
@@ -51,7 +52,7 @@ std::size_t MinGrid::home(std::uint64_t key) const {
   return group | lane;
 }
 
-std::uint64_t MinGrid::key(int level, std::int64_t i, std::int64_t j, std::int64_t k) const {
+inline std::uint64_t MinGrid::key(int level, std::int64_t i, std::int64_t j, std::int64_t k) const {
   return (static_cast<std::uint64_t>(level) << (3 * kCoordBits)) | (static_cast<std::uint64_t>(i) << (2 * kCoordBits)) |
          (static_cast<std::uint64_t>(j) << kCoordBits) | static_cast<std::uint64_t>(k);
 }

@@ -414,3 +414,74 @@ TEST_CASE("knn: NearTree built on threads is the same tree (its visits in the sa
     }
   }
 }
+
+// Points in metres on the Earth's sphere, in clusters down to a centimetre wide (many
+// splits a hair apart, where a tree that bounds its gaps loosely, e.g. with floats not
+// rounded outward, would lose points): both searches and the seeded batches give brute
+// force's answer, ties (repeated points, lattice points at the same distance) included,
+// from a cap, a candidate, or nothing.
+TEST_CASE("knn: NearTree on clustered points finer than a float's step equals brute force, ties included") {
+  std::mt19937 rng(77);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::uniform_int_distribution<int> pick(0, 3), lattice(0, 7);
+  constexpr double kR = 6.371e6;
+  for (const double spread : {0.01, 3.0, 2000.0}) {
+    std::vector<Vec3> pts;
+    for (int cluster = 0; cluster < 40; ++cluster) {
+      Vec3 c{u(rng), u(rng), u(rng)};
+      c = c * (kR / std::sqrt(norm2(c)));
+      for (int n = 0; n < 120; ++n) {
+        // Half of them on a lattice (ties of distance and repeats), half spread.
+        const Vec3 d = n % 2 ? Vec3{u(rng), u(rng), u(rng)}
+                             : Vec3{double(lattice(rng)) / 7 - 0.5, double(lattice(rng)) / 7 - 0.5, 0.0};
+        pts.push_back(c + d * spread);
+      }
+    }
+    for (std::size_t i = 0; i < 200; ++i) pts.push_back(pts[i * 7]);  // repeats, larger index
+    const NearTree tree(pts);
+    std::vector<Vec3> queries;
+    for (int n = 0; n < 3000; ++n) {
+      const Vec3& p = pts[rng() % pts.size()];
+      Vec3 q = n % 3 == 0 ? p : p + Vec3{u(rng), u(rng), u(rng)} * (spread * (n % 3 == 1 ? 0.5 : 20.0));
+      if (n % 101 == 0) q = q * 1.5;  // far from every point
+      queries.push_back(q);
+    }
+    std::vector<double> want_d(queries.size());
+    std::vector<std::uint32_t> want_i(queries.size());
+    for (std::size_t n = 0; n < queries.size(); ++n) {
+      const Vec3& q = queries[n];
+      double want2 = std::numeric_limits<double>::infinity();
+      std::uint32_t want = 0;
+      for (std::uint32_t j = 0; j < pts.size(); ++j) {
+        const double d2 = norm2(pts[j] - q);
+        if (d2 < want2) want2 = d2, want = j;
+      }
+      want_d[n] = want2, want_i[n] = want;
+      double start2 = std::numeric_limits<double>::infinity();
+      std::uint32_t start = NearTree::kNoTie;
+      const int how = pick(rng);
+      if (how == 1) start2 = want2 * 2 + 1;
+      if (how >= 2) {
+        start = static_cast<std::uint32_t>(rng() % pts.size());
+        start2 = norm2(pts[start] - q);
+      }
+      double d_up = start2, d_down = start2;
+      std::uint32_t i_up = start, i_down = start;
+      tree.search_up(q, d_up, i_up);
+      tree.search(q, d_down, i_down);
+      CHECK(d_up == want2);
+      CHECK(i_up == want);
+      CHECK(d_down == want2);
+      CHECK(i_down == want);
+    }
+    // The batches: seeded with the previous answer, in Morton order.
+    const KdTree kd(pts);
+    std::vector<double> dist(queries.size());
+    std::vector<std::uint32_t> index(queries.size());
+    kd.nearest(queries, dist, index);
+    std::size_t bad = 0;
+    for (std::size_t n = 0; n < queries.size(); ++n)
+      bad += dist[n] != std::sqrt(want_d[n]) || index[n] != want_i[n];
+    CHECK(bad == 0);
+  }
+}
