@@ -328,6 +328,12 @@ class Optimizer {
       for (const Vec2 target : targets) {
         for (double step = 1; step >= 1.0 / 128; step *= 0.5) {
           const Vec2 p = cur + step * (target - cur);
+          // A candidate on the current position (the target reached by the last move, a
+          // step too small to move in floating point) measures cur_q_ again: never
+          // leximin-better, no triangle below the floor, so nothing to learn. After a move
+          // to the mean of the ideal points, the next search's first target is cur itself.
+          if (p == cur && !opt_.remeasure_current) continue;
+          ++st.star_measures;
           int g = 0;
           std::size_t w = 0;
           // The sorted qualities must rise (leximin).

@@ -34,6 +34,9 @@ struct OptimizeOptions {
   double compound_below = 0.85;
   /// Moves tried per vertex and round (each one a small line search).
   int smooth_iterations = 2;
+  /// Measure the star again for a candidate that lands on the vertex's current position
+  /// (the old way; the result is the same either way: for the tests' comparison).
+  bool remeasure_current = false;
   /// A swap is kept only when the worse rho of its pair rises by more than this (so
   /// swaps cannot cycle). Moves and compound changes compare the sorted qualities
   /// around them worst first (leximin, ties within 1e-3) and never lower the worst.
@@ -66,6 +69,7 @@ struct OptimizeOptions {
 struct OptimizeStats {
   std::uint64_t swaps = 0, moves = 0;
   std::uint64_t refused = 0;                         // a move failing the exact check
+  std::uint64_t star_measures = 0;                   // candidate positions measured (line searches)
   // Compound changes tried (an edge flipped), and of those the ones decided to fail before
   // their moves: a new triangle with its three corners fixed and below the worst rho
   // round the quad before (round a coast edge much shorter than its neighbours, a dam),

@@ -253,7 +253,7 @@ void journal_blocks(TriangleStore& m, const std::vector<Block>& blocks, const st
 }
 
 void add_counts(OptimizeStats& to, const OptimizeStats& s) {
-  to.swaps += s.swaps, to.moves += s.moves, to.refused += s.refused;
+  to.swaps += s.swaps, to.moves += s.moves, to.refused += s.refused, to.star_measures += s.star_measures;
   to.compound_tried += s.compound_tried, to.compound_pinned += s.compound_pinned;
   to.compound_repeated += s.compound_repeated;
   to.rounds = std::max(to.rounds, s.rounds);

@@ -319,3 +319,39 @@ TEST_CASE("optimize_quality: the same bytes and stats on 1, 2 and 3 threads (the
   }
   CHECK(stats[0].min_after > stats[0].min_before);
 }
+
+TEST_CASE("optimize_quality: candidates on the current position are not measured again, the same bytes") {
+  // The line searches skip a candidate that lands where the vertex is (after a move to
+  // the mean of the ideal points, the next search's first target): the old way measures it
+  // (remeasure_current) and must reach the same positions, flips and statistics.
+  for (const bool frontal : {false, true})
+    for (const bool driver : {false, true})
+      for (const bool blocked : {false, true}) {
+        CAPTURE(frontal);
+        CAPTURE(driver);
+        CAPTURE(blocked);
+        const Square base = square(0.012, frontal);
+        OptimizeOptions oo;
+        if (driver) oo.threshold = 0.75, oo.sacrifice_below = 0.7, oo.max_share_loss = 1e-4;  // face_smooth.cpp's del2d
+        if (blocked) oo.block_min_triangles = 1000, oo.block_bad = 64;
+        OptimizeOptions old = oo;
+        old.remeasure_current = true;
+        Square fast = base, slow = base;
+        const OptimizeStats a = optimize_quality(fast.m, fast.fixed, oo);
+        const OptimizeStats b = optimize_quality(slow.m, slow.fixed, old);
+        CHECK(same_points_corners_twins(fast.m, slow.m));
+        CHECK(fast.m.twin == slow.m.twin);
+        CHECK(a.swaps == b.swaps);
+        CHECK(a.moves == b.moves);
+        CHECK(a.refused == b.refused);
+        CHECK(a.compound_tried == b.compound_tried);
+        CHECK(a.bad_after == b.bad_after);
+        CHECK(a.min_after == b.min_after);
+        CHECK(a.rounds == b.rounds);
+        CHECK(a.blocks == b.blocks);
+        CHECK(a.moves > 0);
+        MESSAGE("frontal " << frontal << " driver " << driver << " blocked " << blocked << ": " << b.star_measures
+                           << " -> " << a.star_measures << " star measures");
+        CHECK(a.star_measures < b.star_measures);
+      }
+}
