@@ -157,8 +157,8 @@ ChannelWidths::ChannelWidths(std::vector<CoastChain> chains, double cap, int thr
     const int water = m.water[m.chain[i]];
     if (water > 0) wn = 0;
     if (water < 0) wp = 0;
-    // The width a point q would give on each side (the cap: none), and whether it may
-    // count at all (not the same coast point, not this bank's neighbour).
+    // Whether point j at squared distance d2 counts at all (not the same coast point,
+    // not this bank's neighbour).
     const auto counts = [&](std::uint32_t j, double d2) {
       if (d2 == 0) return false;  // the same coast point in two pieces
       if (m.chain[j] == m.chain[i]) {
@@ -174,6 +174,8 @@ ChannelWidths::ChannelWidths(std::vector<CoastChain> chains, double cap, int thr
     // against the smaller of the running width and w_seed (1 + 1e-9), which is still
     // above the least one, so the point giving it is still visited and the answer is
     // the same bits (the point's own width comes from the search, never the seed's).
+    // The seed's d2 is the tree's (field/near_tree.h: the same expression on the same
+    // coordinates), so it counts exactly when the search would count it.
     double sp = m.cap, sn = m.cap;
     for (const std::uint32_t j : {seed.pos, seed.neg}) {
       if (j == kNoWitness || j == i) continue;
