@@ -41,6 +41,11 @@ constexpr double kNeighbourRatio = std::numbers::pi / 2;
 constexpr double kOnCoast = 0.1;
 // Without SizeMax the widths are searched up to this many median sample spacings.
 constexpr double kDefaultCapSpacings = 64;
+// The points that set a sample's two widths (none: kNoWitness).
+constexpr std::uint32_t kNoWitness = std::numeric_limits<std::uint32_t>::max();
+struct Witnesses {
+  std::uint32_t pos = kNoWitness, neg = kNoWitness;
+};
 
 }  // namespace
 
@@ -86,7 +91,7 @@ struct ChannelWidths::Impl {
   }
 };
 
-ChannelWidths::ChannelWidths(std::vector<CoastChain> chains, double cap, int threads)
+ChannelWidths::ChannelWidths(std::vector<CoastChain> chains, double cap, int threads, bool seeded)
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   m.cap = cap;
@@ -141,7 +146,9 @@ ChannelWidths::ChannelWidths(std::vector<CoastChain> chains, double cap, int thr
   std::vector<Vec3>().swap(m.own);
   // Each sample's search reads the tree and writes only its own widths: samples are
   // independent, so chunks of them run on `threads` threads with the same result.
-  const auto search = [&m](std::size_t i) {
+  // `seed`: the points that set the previous sample's widths (the chunk's previous one,
+  // kNoWitness before it), replaced by this sample's.
+  const auto search = [&m](std::size_t i, Witnesses& seed) {
     const Vec3 p = m.pts[i], side = m.side(static_cast<std::uint32_t>(i));
     double wp = m.w_pos[i], wn = m.w_neg[i];
     // Where the water side is known, the land side is not searched: it stays at 0
@@ -150,25 +157,57 @@ ChannelWidths::ChannelWidths(std::vector<CoastChain> chains, double cap, int thr
     const int water = m.water[m.chain[i]];
     if (water > 0) wn = 0;
     if (water < 0) wp = 0;
-    const auto visit = [&](std::uint32_t j, double d2) -> double {
-      const double bound = std::max(wp, wn);
-      if (d2 == 0) return bound * bound;  // the same coast point in two pieces
-      const double d = std::sqrt(d2);
+    // Whether point j at squared distance d2 counts at all (not the same coast point,
+    // not this bank's neighbour).
+    const auto counts = [&](std::uint32_t j, double d2) {
+      if (d2 == 0) return false;  // the same coast point in two pieces
       if (m.chain[j] == m.chain[i]) {
         double along = std::fabs(m.s[j] - m.s[i]);
         if (m.closed[m.chain[i]]) along = std::min(along, m.length[m.chain[i]] - along);
-        if (along <= kNeighbourRatio * d) return bound * bound;
+        if (along <= kNeighbourRatio * std::sqrt(d2)) return false;
       }
-      const double dm = dot(m.pts[j] - p, side);
-      if (side == Vec3{0, 0, 0}) {  // no tangent: the nearest other piece, either side
-        wp = std::min(wp, d);
-        wn = std::min(wn, d);
+      return true;
+    };
+    // The search's widths are only ever lowered to a width some point gives, so the
+    // final ones are the least over every point that counts (within the cap). A point
+    // that counts and gives w_seed bounds that least from above: the cells are pruned
+    // against the smaller of the running width and w_seed (1 + 1e-9), which is still
+    // above the least one, so the point giving it is still visited and the answer is
+    // the same bits (the point's own width comes from the search, never the seed's).
+    // The seed's d2 is the tree's (field/near_tree.h: the same expression on the same
+    // coordinates), so it counts exactly when the search would count it.
+    double sp = m.cap, sn = m.cap;
+    for (const std::uint32_t j : {seed.pos, seed.neg}) {
+      if (j == kNoWitness || j == i) continue;
+      const Vec3 dv = m.pts[j] - p;
+      const double d2 = norm2(dv);
+      if (!(d2 < m.cap * m.cap) || !counts(j, d2)) continue;
+      const double dm = dot(dv, side);
+      constexpr double kSeedMargin = 1 + 1e-9;
+      if (side == Vec3{0, 0, 0}) {
+        sp = std::min(sp, std::sqrt(d2) * kSeedMargin);
+        sn = sp;
       } else if (dm > 0) {
-        wp = std::min(wp, d2 / dm);
+        sp = std::min(sp, d2 / dm * kSeedMargin);
       } else if (dm < 0) {
-        wn = std::min(wn, d2 / -dm);
+        sn = std::min(sn, d2 / -dm * kSeedMargin);
       }
-      const double b = std::max(wp, wn);
+    }
+    std::uint32_t jp = kNoWitness, jn = kNoWitness;
+    const auto visit = [&](std::uint32_t j, double d2) -> double {
+      if (counts(j, d2)) {
+        const double d = std::sqrt(d2);
+        const double dm = dot(m.pts[j] - p, side);
+        if (side == Vec3{0, 0, 0}) {  // no tangent: the nearest other piece, either side
+          if (d < wp) wp = d, jp = j;
+          if (d < wn) wn = d, jn = j;
+        } else if (dm > 0) {
+          if (d2 / dm < wp) wp = d2 / dm, jp = j;
+        } else if (dm < 0) {
+          if (d2 / -dm < wn) wn = d2 / -dm, jn = j;
+        }
+      }
+      const double b = std::max(std::min(wp, sp), std::min(wn, sn));
       return b * b;
     };
     // A point lowers wp only inside the ball tangent at p on side +m of diameter wp (the
@@ -182,23 +221,29 @@ ChannelWidths::ChannelWidths(std::vector<CoastChain> chains, double cap, int thr
     const auto may_hold = [&](const auto& box_dist2) {
       if (side == Vec3{0, 0, 0}) return true;
       for (const double sign : {1.0, -1.0}) {
-        const double w = sign > 0 ? wp : wn;
+        const double w = sign > 0 ? std::min(wp, sp) : std::min(wn, sn);
         if (!(w > 0)) continue;
         const double r = 0.5 * w * (1 + 1e-6) + slack;
         if (box_dist2(p + (sign * 0.5 * w) * side) <= r * r) return true;
       }
       return false;
     };
-    m.tree->visit_within(p, m.cap * m.cap, visit, may_hold);
+    const double start = std::max(std::min(wp, sp), std::min(wn, sn));
+    m.tree->visit_within(p, std::min(m.cap * m.cap, start * start * (1 + 1e-9)), visit, may_hold);
     if (water > 0) wn = wp;
     if (water < 0) wp = wn;
     m.w_pos[i] = wp;
     m.w_neg[i] = wn;
+    seed = {jp, jn};
   };
   constexpr std::size_t kSamplesPerChunk = 2048;
   const int workers = resolve_thread_count(threads);
   parallel_for_chunks(workers, n, kSamplesPerChunk, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) search(i);
+    Witnesses seed;
+    for (std::size_t i = begin; i < end; ++i) {
+      if (!seeded) seed = {};
+      search(i, seed);
+    }
   });
   std::vector<std::uint32_t>().swap(m.chain);
   std::vector<double>().swap(m.s);
@@ -224,6 +269,10 @@ ChannelWidths::ChannelWidths(std::vector<CoastChain> chains, double cap, int thr
 ChannelWidths::~ChannelWidths() = default;
 
 std::size_t ChannelWidths::samples() const { return impl_->pts.size(); }
+
+std::pair<double, double> ChannelWidths::sample_widths(std::size_t i) const {
+  return {impl_->w_pos.at(i), impl_->w_neg.at(i)};
+}
 
 void ChannelWidths::width(std::span<const Vec3> pts, std::span<double> w) const {
   const double all = impl_->cap;

@@ -5,6 +5,7 @@
 
 #include <memory>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "base/vec.h"
@@ -27,7 +28,9 @@ class ChannelWidths {
  public:
   /// `cap`: widths larger than this are not searched for and read as `cap`. The samples'
   /// searches run on `threads` threads (<= 0: the hardware's); the widths do not depend on it.
-  ChannelWidths(std::vector<CoastChain> chains, double cap, int threads = 1);
+  /// `seeded`: each search starts from the points that set the previous sample's widths
+  /// (the same widths, sooner; false only for tests and measurements of the unseeded one).
+  ChannelWidths(std::vector<CoastChain> chains, double cap, int threads = 1, bool seeded = true);
   ~ChannelWidths();
   ChannelWidths(const ChannelWidths&) = delete;
   ChannelWidths& operator=(const ChannelWidths&) = delete;
@@ -45,6 +48,9 @@ class ChannelWidths {
   /// (false where the grid cannot tell).
   bool certainly_at_least(const Vec3& x, double max_width) const;
   std::size_t samples() const;
+  /// Sample i's widths on its +side and -side (the chains' samples in order, empty
+  /// chains skipped), for tests against a brute force.
+  std::pair<double, double> sample_widths(std::size_t i) const;
 
  private:
   // The evaluations run in pieces (field/batch_pieces.h), their scratch on the stack.
