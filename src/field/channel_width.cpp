@@ -84,12 +84,106 @@ struct ChannelWidths::Impl {
     return std::max(norm(pts[next[i]] - pts[i]), norm(pts[i] - pts[prev[i]]));
   }
 
+  // One sample's two widths (the set-up's search; see the constructor). `seed`: the
+  // points that set the previous sample's widths (kNoWitness: none), replaced by this
+  // sample's. Each call reads the tree and writes only sample i's widths.
+  void search(std::size_t i, Witnesses& seed);
+
   double width_at(std::uint32_t i, const Vec3& x) const {
     const double off = dot(x - pts[i], side(i));
     if (std::fabs(off) <= kOnCoast * spacing(i)) return std::min(w_pos[i], w_neg[i]);
     return off > 0 ? w_pos[i] : w_neg[i];
   }
 };
+
+void ChannelWidths::Impl::search(std::size_t i, Witnesses& seed) {
+  const Vec3 p = pts[i], normal = side(static_cast<std::uint32_t>(i));
+  double wp = w_pos[i], wn = w_neg[i];
+  // Where the water side is known, the land side is not searched: it stays at 0
+  // during the search (so that it does not hold the bound up) and gets the water
+  // side's width after it, so that every point near the sample reads that.
+  const int water_side = water[chain[i]];
+  if (water_side > 0) wn = 0;
+  if (water_side < 0) wp = 0;
+  // Whether point j at squared distance d2 counts at all (not the same coast point,
+  // not this bank's neighbour).
+  const auto counts = [&](std::uint32_t j, double d2) {
+    if (d2 == 0) return false;  // the same coast point in two pieces
+    if (chain[j] == chain[i]) {
+      double along = std::fabs(s[j] - s[i]);
+      if (closed[chain[i]]) along = std::min(along, length[chain[i]] - along);
+      if (along <= kNeighbourRatio * std::sqrt(d2)) return false;
+    }
+    return true;
+  };
+  // The search's widths are only ever lowered to a width some point gives, so the
+  // final ones are the least over every point that counts (within the cap). A point
+  // that counts and gives w_seed bounds that least from above: the cells are pruned
+  // against the smaller of the running width and w_seed (1 + 1e-9), which is still
+  // above the least one, so the point giving it is still visited and the answer is
+  // the same bits (the point's own width comes from the search, never the seed's).
+  // The seed's d2 is the tree's (field/near_tree.h: the same expression on the same
+  // coordinates), so it counts exactly when the search would count it.
+  double sp = cap, sn = cap;
+  for (const std::uint32_t j : {seed.pos, seed.neg}) {
+    if (j == kNoWitness || j == i) continue;
+    const Vec3 dv = pts[j] - p;
+    const double d2 = norm2(dv);
+    if (!(d2 < cap * cap) || !counts(j, d2)) continue;
+    const double dm = dot(dv, normal);
+    constexpr double kSeedMargin = 1 + 1e-9;
+    if (normal == Vec3{0, 0, 0}) {
+      sp = std::min(sp, std::sqrt(d2) * kSeedMargin);
+      sn = sp;
+    } else if (dm > 0) {
+      sp = std::min(sp, d2 / dm * kSeedMargin);
+    } else if (dm < 0) {
+      sn = std::min(sn, d2 / -dm * kSeedMargin);
+    }
+  }
+  std::uint32_t jp = kNoWitness, jn = kNoWitness;
+  const auto visit = [&](std::uint32_t j, double d2) -> double {
+    if (counts(j, d2)) {
+      const double d = std::sqrt(d2);
+      const double dm = dot(pts[j] - p, normal);
+      if (normal == Vec3{0, 0, 0}) {  // no tangent: the nearest other piece, either side
+        if (d < wp) wp = d, jp = j;
+        if (d < wn) wn = d, jn = j;
+      } else if (dm > 0) {
+        if (d2 / dm < wp) wp = d2 / dm, jp = j;
+      } else if (dm < 0) {
+        if (d2 / -dm < wn) wn = d2 / -dm, jn = j;
+      }
+    }
+    const double b = std::max(std::min(wp, sp), std::min(wn, sn));
+    return b * b;
+  };
+  // A point lowers wp only inside the ball tangent at p on side +m of diameter wp (the
+  // picture: |d|^2 < wp (d . m)), centred at p + m wp / 2; wn likewise on side -m. A cell
+  // whose box is farther from both balls than their radii holds none, and is skipped:
+  // the widths are the same, from fewer points (the ball around p of radius
+  // max(wp, wn) that bounds the visit holds every coast point near p, most of them on
+  // this bank). The margins, relative 1e-6 and 1e-9 of the coordinates, are far above
+  // the rounding of d2 / dm and of the centres (about 1e-16 of the coordinates).
+  const double slack = 1e-9 * (norm(p) + cap);
+  const auto may_hold = [&](const auto& box_dist2) {
+    if (normal == Vec3{0, 0, 0}) return true;
+    for (const double sign : {1.0, -1.0}) {
+      const double w = sign > 0 ? std::min(wp, sp) : std::min(wn, sn);
+      if (!(w > 0)) continue;
+      const double r = 0.5 * w * (1 + 1e-6) + slack;
+      if (box_dist2(p + (sign * 0.5 * w) * normal) <= r * r) return true;
+    }
+    return false;
+  };
+  const double start = std::max(std::min(wp, sp), std::min(wn, sn));
+  tree->visit_within(p, std::min(cap * cap, start * start * (1 + 1e-9)), visit, may_hold);
+  if (water_side > 0) wn = wp;
+  if (water_side < 0) wp = wn;
+  w_pos[i] = wp;
+  w_neg[i] = wn;
+  seed = {jp, jn};
+}
 
 ChannelWidths::ChannelWidths(std::vector<CoastChain> chains, double cap, int threads, bool seeded)
     : impl_(std::make_unique<Impl>()) {
@@ -146,103 +240,14 @@ ChannelWidths::ChannelWidths(std::vector<CoastChain> chains, double cap, int thr
   std::vector<Vec3>().swap(m.own);
   // Each sample's search reads the tree and writes only its own widths: samples are
   // independent, so chunks of them run on `threads` threads with the same result.
-  // `seed`: the points that set the previous sample's widths (the chunk's previous one,
-  // kNoWitness before it), replaced by this sample's.
-  const auto search = [&m](std::size_t i, Witnesses& seed) {
-    const Vec3 p = m.pts[i], side = m.side(static_cast<std::uint32_t>(i));
-    double wp = m.w_pos[i], wn = m.w_neg[i];
-    // Where the water side is known, the land side is not searched: it stays at 0
-    // during the search (so that it does not hold the bound up) and gets the water
-    // side's width after it, so that every point near the sample reads that.
-    const int water = m.water[m.chain[i]];
-    if (water > 0) wn = 0;
-    if (water < 0) wp = 0;
-    // Whether point j at squared distance d2 counts at all (not the same coast point,
-    // not this bank's neighbour).
-    const auto counts = [&](std::uint32_t j, double d2) {
-      if (d2 == 0) return false;  // the same coast point in two pieces
-      if (m.chain[j] == m.chain[i]) {
-        double along = std::fabs(m.s[j] - m.s[i]);
-        if (m.closed[m.chain[i]]) along = std::min(along, m.length[m.chain[i]] - along);
-        if (along <= kNeighbourRatio * std::sqrt(d2)) return false;
-      }
-      return true;
-    };
-    // The search's widths are only ever lowered to a width some point gives, so the
-    // final ones are the least over every point that counts (within the cap). A point
-    // that counts and gives w_seed bounds that least from above: the cells are pruned
-    // against the smaller of the running width and w_seed (1 + 1e-9), which is still
-    // above the least one, so the point giving it is still visited and the answer is
-    // the same bits (the point's own width comes from the search, never the seed's).
-    // The seed's d2 is the tree's (field/near_tree.h: the same expression on the same
-    // coordinates), so it counts exactly when the search would count it.
-    double sp = m.cap, sn = m.cap;
-    for (const std::uint32_t j : {seed.pos, seed.neg}) {
-      if (j == kNoWitness || j == i) continue;
-      const Vec3 dv = m.pts[j] - p;
-      const double d2 = norm2(dv);
-      if (!(d2 < m.cap * m.cap) || !counts(j, d2)) continue;
-      const double dm = dot(dv, side);
-      constexpr double kSeedMargin = 1 + 1e-9;
-      if (side == Vec3{0, 0, 0}) {
-        sp = std::min(sp, std::sqrt(d2) * kSeedMargin);
-        sn = sp;
-      } else if (dm > 0) {
-        sp = std::min(sp, d2 / dm * kSeedMargin);
-      } else if (dm < 0) {
-        sn = std::min(sn, d2 / -dm * kSeedMargin);
-      }
-    }
-    std::uint32_t jp = kNoWitness, jn = kNoWitness;
-    const auto visit = [&](std::uint32_t j, double d2) -> double {
-      if (counts(j, d2)) {
-        const double d = std::sqrt(d2);
-        const double dm = dot(m.pts[j] - p, side);
-        if (side == Vec3{0, 0, 0}) {  // no tangent: the nearest other piece, either side
-          if (d < wp) wp = d, jp = j;
-          if (d < wn) wn = d, jn = j;
-        } else if (dm > 0) {
-          if (d2 / dm < wp) wp = d2 / dm, jp = j;
-        } else if (dm < 0) {
-          if (d2 / -dm < wn) wn = d2 / -dm, jn = j;
-        }
-      }
-      const double b = std::max(std::min(wp, sp), std::min(wn, sn));
-      return b * b;
-    };
-    // A point lowers wp only inside the ball tangent at p on side +m of diameter wp (the
-    // picture: |d|^2 < wp (d . m)), centred at p + m wp / 2; wn likewise on side -m. A cell
-    // whose box is farther from both balls than their radii holds none, and is skipped:
-    // the widths are the same, from fewer points (the ball around p of radius
-    // max(wp, wn) that bounds the visit holds every coast point near p, most of them on
-    // this bank). The margins, relative 1e-6 and 1e-9 of the coordinates, are far above
-    // the rounding of d2 / dm and of the centres (about 1e-16 of the coordinates).
-    const double slack = 1e-9 * (norm(p) + m.cap);
-    const auto may_hold = [&](const auto& box_dist2) {
-      if (side == Vec3{0, 0, 0}) return true;
-      for (const double sign : {1.0, -1.0}) {
-        const double w = sign > 0 ? std::min(wp, sp) : std::min(wn, sn);
-        if (!(w > 0)) continue;
-        const double r = 0.5 * w * (1 + 1e-6) + slack;
-        if (box_dist2(p + (sign * 0.5 * w) * side) <= r * r) return true;
-      }
-      return false;
-    };
-    const double start = std::max(std::min(wp, sp), std::min(wn, sn));
-    m.tree->visit_within(p, std::min(m.cap * m.cap, start * start * (1 + 1e-9)), visit, may_hold);
-    if (water > 0) wn = wp;
-    if (water < 0) wp = wn;
-    m.w_pos[i] = wp;
-    m.w_neg[i] = wn;
-    seed = {jp, jn};
-  };
+  // The seed is the chunk's previous sample's (none at a chunk's start).
   constexpr std::size_t kSamplesPerChunk = 2048;
   const int workers = resolve_thread_count(threads);
   parallel_for_chunks(workers, n, kSamplesPerChunk, [&](std::size_t begin, std::size_t end) {
     Witnesses seed;
     for (std::size_t i = begin; i < end; ++i) {
       if (!seeded) seed = {};
-      search(i, seed);
+      m.search(i, seed);
     }
   });
   std::vector<std::uint32_t>().swap(m.chain);
