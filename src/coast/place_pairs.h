@@ -34,13 +34,52 @@ void sort_place_pairs(std::vector<P>& v) {
   std::sort(v.begin(), v.end(), [](const P& a, const P& b) { return place_pair_key(a) < place_pair_key(b); });
 }
 
-/// As sort_place_pairs for distinct pairs, by two 64-bit keys a record, (loop_a, seg_a) and
-/// (loop_b, seg_b), with no loops to number the places on: the records are sorted as keys
-/// and moved once, where the four-field comparison moved the 40-byte records at every swap
+/// As sort_place_pairs for distinct pairs, with no loops to number the places on
 /// (renumber_for_joins' records of the loops a strait pass joined, continents' own pairs
-/// among them: 0.45 s of the straits' 4.6 s at 3 km on the full GSHHG).
+/// among them): the records are sorted as keys and moved once, where the four-field
+/// comparison moved the 40-byte records at every swap. Ties (one pair twice) keep their
+/// input order, so the order is std::stable_sort's by place_pair_key.
+///
+/// One 64-bit key a record when the places fit: each loop named gets the span of numbers
+/// 1 + its largest seg among the records, the spans laid end to end in loop order, and a
+/// place (l, s) is number first[l] + s. Within a loop the numbers rise with s; a loop's
+/// numbers all lie below the next named loop's first, so the numbers order as (loop, seg)
+/// do, one to one. With every number below 2^32, (number_a << 32) | number_b orders as
+/// (loop_a, seg_a, loop_b, seg_b). Otherwise (more than 2^32 numbers, or loop indices so
+/// large that the table of firsts would outgrow the records) the two-key sort below.
 template <class P>
 void sort_place_pairs_by_keys(std::vector<P>& v) {
+  std::vector<P> sorted;
+  sorted.reserve(v.size());
+  std::uint64_t max_loop = 0;
+  for (const P& p : v) max_loop = std::max<std::uint64_t>({max_loop, p.loop_a, p.loop_b});
+  const bool small_table = v.size() < 0xFFFFFFFFu && max_loop < 4 * std::uint64_t{v.size()} + 4096;
+  std::vector<std::uint64_t> first;   // the span of loop l, then (prefix sums) its first number
+  if (small_table) {
+    first.assign(max_loop + 1, 0);
+    for (const P& p : v) {
+      first[p.loop_a] = std::max<std::uint64_t>(first[p.loop_a], std::uint64_t{p.seg_a} + 1);
+      first[p.loop_b] = std::max<std::uint64_t>(first[p.loop_b], std::uint64_t{p.seg_b} + 1);
+    }
+    std::uint64_t total = 0;   // at most (max_loop + 1) * 2^32: no overflow
+    for (std::uint64_t& f : first) {
+      const std::uint64_t span = f;
+      f = total;
+      total += span;
+    }
+    if (total <= 0x100000000u) {
+      std::vector<std::pair<std::uint64_t, std::uint32_t>> order(v.size());
+      for (std::size_t i = 0; i < v.size(); ++i)
+        order[i] = {((first[v[i].loop_a] + v[i].seg_a) << 32) | (first[v[i].loop_b] + v[i].seg_b),
+                    static_cast<std::uint32_t>(i)};
+      std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
+        return a.first != b.first ? a.first < b.first : a.second < b.second;
+      });
+      for (const auto& o : order) sorted.push_back(v[o.second]);
+      v = std::move(sorted);
+      return;
+    }
+  }
   struct Key {
     std::uint64_t a, b;
     std::size_t i;
@@ -48,10 +87,9 @@ void sort_place_pairs_by_keys(std::vector<P>& v) {
   std::vector<Key> order(v.size());
   for (std::size_t i = 0; i < v.size(); ++i)
     order[i] = {(std::uint64_t{v[i].loop_a} << 32) | v[i].seg_a, (std::uint64_t{v[i].loop_b} << 32) | v[i].seg_b, i};
-  std::sort(order.begin(), order.end(),
-            [](const Key& x, const Key& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
-  std::vector<P> sorted;
-  sorted.reserve(v.size());
+  std::sort(order.begin(), order.end(), [](const Key& x, const Key& y) {
+    return x.a != y.a ? x.a < y.a : x.b != y.b ? x.b < y.b : x.i < y.i;
+  });
   for (const Key& k : order) sorted.push_back(v[k.i]);
   v = std::move(sorted);
 }
