@@ -149,6 +149,26 @@ std::span<const std::uint32_t> morton_order(std::span<const Vec3> q,
   return heap;
 }
 
+// The order a batch's queries are answered in: along a Morton curve (morton_order) from
+// kSortFrom queries on when sorting is asked for, else the batch's own. Holds the order's
+// memory, so it is neither copied nor moved.
+class QueryOrder {
+ public:
+  QueryOrder(std::span<const Vec3> q, bool sort) {
+    if (sort && q.size() >= kSortFrom) order_ = morton_order(q, small_, heap_);
+  }
+  QueryOrder(const QueryOrder&) = delete;
+  QueryOrder& operator=(const QueryOrder&) = delete;
+
+  /// The index of the k-th query answered.
+  std::size_t operator[](std::size_t k) const { return order_.empty() ? k : order_[k]; }
+
+ private:
+  std::array<std::uint32_t, kSmallBatch> small_;  // not initialised: trivial elements
+  std::vector<std::uint32_t> heap_;
+  std::span<const std::uint32_t> order_;
+};
+
 }  // namespace
 
 struct KdTree::Impl {
@@ -202,14 +222,11 @@ void KdTree::nearest_capped(std::span<const Vec3> queries, const Far2& far2_at, 
     return;
   }
   if (queries.empty()) return;
-  std::array<std::uint32_t, kSmallBatch> small_order;  // not initialised: trivial elements
-  std::vector<std::uint32_t> heap_order;
-  std::span<const std::uint32_t> order;
-  if (opts_.sort_queries && queries.size() >= kSortFrom) order = morton_order(queries, small_order, heap_order);
+  const QueryOrder order(queries, opts_.sort_queries);
   const flann::SearchParams params(flann::FLANN_CHECKS_UNLIMITED, opts_.eps);
   std::uint32_t prev = kNoIndex;
   for (std::size_t k = 0; k < queries.size(); ++k) {
-    const std::size_t i = order.empty() ? k : order[k];
+    const std::size_t i = order[k];
     const Vec3& q = queries[i];
     const double far2 = far2_at(i);
     double best2 = far2;
@@ -251,13 +268,10 @@ void KdTree::nearest_within(std::span<const Vec3> queries, std::span<const doubl
     std::fill(index.begin(), index.end(), kNoIndex);
     return;
   }
-  std::array<std::uint32_t, kSmallBatch> small_order;  // not initialised: trivial elements
-  std::vector<std::uint32_t> heap_order;
-  std::span<const std::uint32_t> order;
-  if (opts_.sort_queries && queries.size() >= kSortFrom) order = morton_order(queries, small_order, heap_order);
+  const QueryOrder order(queries, opts_.sort_queries);
   std::uint32_t prev = kNoIndex;
   for (std::size_t k = 0; k < queries.size(); ++k) {
-    const std::size_t i = order.empty() ? k : order[k];
+    const std::size_t i = order[k];
     const Vec3& q = queries[i];
     const double r = max_dist.size() == 1 ? max_dist[0] : max_dist[i];
     const double far2 = r > 0 ? r * r : 0;
