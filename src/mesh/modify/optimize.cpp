@@ -14,6 +14,7 @@
 #include "base/parallel.h"
 #include "exact/predicates.h"
 #include "exact/quality.h"
+#include "mesh/modify/flip_valence.h"
 #include "mesh/modify/optimize_blocks.h"
 
 namespace sm {
@@ -78,19 +79,23 @@ class Optimizer {
     for (int r = 0; r < opt_.rounds && !bad_.empty(); ++r) {
       ++st.rounds;
       const std::uint64_t swaps0 = st.swaps, moves0 = st.moves;
+      const std::size_t bad0 = bad_.size();
       swap_round(st);
       refresh_bad();
       smooth_round(st);
       refresh_bad();
       if (st.swaps == swaps0 && st.moves == moves0) break;
+      if (small_gain(bad0)) break;
     }
     for (int r = 0; r < opt_.rounds && !bad_.empty() && bad_.front().q < opt_.compound_below; ++r) {
       const std::uint64_t swaps0 = st.swaps;
+      const std::size_t bad0 = bad_.size();
       compound_round(st);
       refresh_bad();
       smooth_round(st);
       refresh_bad();
       if (st.swaps == swaps0) break;
+      if (small_gain(bad0)) break;
     }
     st.bad_after = static_cast<std::uint32_t>(bad_.size());
     if (!bad_.empty()) {
@@ -133,6 +138,14 @@ class Optimizer {
       return min_all;
     }
     return scan_plane_bad(m_, opt_.threshold, opt_.threads, opt_.seeds, bad_);
+  }
+
+  // Whether the round that started with bad0 triangles below the threshold lifted fewer
+  // than min_round_gain of them (counted as the fall of the bad list, which also holds the
+  // triangles the round pushed below).
+  bool small_gain(std::size_t bad0) const {
+    const double lifted = static_cast<double>(bad0) - static_cast<double>(bad_.size());
+    return lifted < opt_.min_round_gain * static_cast<double>(bad0);
   }
 
   bool seeded(std::uint32_t t) const { return !opt_.seeds || (*opt_.seeds)[t]; }
@@ -425,6 +438,10 @@ class Optimizer {
   bool try_compound(Side s, OptimizeStats& st) {
     const Side o = m_.twin[s.value];
     if (!o.valid() || m_.constrained(s)) return false;
+    if (flip_valence_rise(m_, s, fixed_count_) > opt_.compound_valence_rise) {
+      ++st.compound_valence_skipped;
+      return false;
+    }
     const std::array<VertexId, 4> vs = {m_.org(s), m_.dest(s), m_.apex(s), m_.apex(o)};
     if (orient2d(m_.pos(vs[2]), m_.pos(vs[0]), m_.pos(vs[3])) != Sign::Positive ||
         orient2d(m_.pos(vs[3]), m_.pos(vs[1]), m_.pos(vs[2])) != Sign::Positive)

@@ -32,6 +32,16 @@ struct OptimizeOptions {
   /// the sorted rho round them rises, the worst not lower and none dropping below 0.9
   /// (undone otherwise).
   double compound_below = 0.85;
+  /// Compound changes are tried only on edges whose flip raises sum (valence - 6)^2 over
+  /// the quad's free inner corners by at most this (flip_valence.h). Where a size ramp makes
+  /// the front drop points (pairs of valence 5 and 7), the flips that pull valences away
+  /// from 6 cost a third of the compound rounds and rarely succeed (docs/benchmarks.md).
+  int compound_valence_rise = 2;
+  /// Each loop of rounds (swaps and moves, then compound changes) ends after a round that
+  /// lifts fewer than this share of its bad triangles to the threshold or above: the later
+  /// rounds cost as much as the first and lift far fewer (docs/benchmarks.md). 0: the
+  /// loops end only when a round changes nothing (or after `rounds`).
+  double min_round_gain = 0.03;
   /// Moves tried per vertex and round (each one a small line search).
   int smooth_iterations = 2;
   /// Measure the star again for a candidate that lands on the vertex's current position
@@ -75,6 +85,7 @@ struct OptimizeStats {
   // round the quad before (round a coast edge much shorter than its neighbours, a dam),
   // or the same change failed before with the stars of its corners unchanged since.
   std::uint64_t compound_tried = 0, compound_pinned = 0, compound_repeated = 0;
+  std::uint64_t compound_valence_skipped = 0;        // edges left alone by compound_valence_rise
   std::uint32_t bad_before = 0, bad_after = 0;       // triangles below the threshold
   double min_before = 0, min_after = 0;              // worst rho (as measured by the pass)
   int rounds = 0;
@@ -93,7 +104,8 @@ struct OptimizeStats {
 /// each star triangle equilateral on its outer edge, and that point for the worst
 /// triangle, each tried with step 1, 1/2, ... 1/128; the best is kept only when every
 /// star triangle is counter-clockwise by the exact orient2d. Stops early when a round changes
-/// nothing. Then (3) triangles still below compound_below try a flip of each edge
+/// nothing or lifts few (min_round_gain). Then (3) triangles still below compound_below try a
+/// flip of each edge whose flip does not pull the valences far from 6 (compound_valence_rise)
 /// followed by two sweeps of moves of the quad's corners, undone unless the sorted
 /// qualities round them rise. The result is valid but in general no longer Delaunay.
 /// Deterministic: triangles are handled by increasing (rho, id), vertices by id.

@@ -256,6 +256,7 @@ void add_counts(OptimizeStats& to, const OptimizeStats& s) {
   to.swaps += s.swaps, to.moves += s.moves, to.refused += s.refused, to.star_measures += s.star_measures;
   to.compound_tried += s.compound_tried, to.compound_pinned += s.compound_pinned;
   to.compound_repeated += s.compound_repeated;
+  to.compound_valence_skipped += s.compound_valence_skipped;
   to.rounds = std::max(to.rounds, s.rounds);
 }
 

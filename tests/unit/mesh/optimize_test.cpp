@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <span>
 #include <string>
 
 #include "mesh/check.h"
@@ -354,4 +355,51 @@ TEST_CASE("optimize_quality: candidates on the current position are not measured
                            << " -> " << a.star_measures << " star measures");
         CHECK(a.star_measures < b.star_measures);
       }
+}
+
+TEST_CASE("optimize_quality: compound changes only on flips that keep the valences near 6") {
+  // front2d's unit square in a size ramp (0.01 at the bottom, +0.4 per unit up to 0.1, the
+  // shore ramp's gradient): with the default compound_valence_rise some edges are not tried
+  // (their flips pull the valences away from 6), so fewer compound changes are tried than
+  // with the limit lifted; the share above 0.9 still does not fall.
+  Square base;
+  const Loop sq = testing::polygon_loop(base.m, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.01, false);
+  REQUIRE(testing::boundary_mesh(base.m, {sq}, &base.edges));
+  base.fixed = base.m.num_vertices();
+  RefineOptions ro;
+  ro.size_at = [](std::span<const Vec2> pts, std::span<double> h) {
+    for (std::size_t i = 0; i < pts.size(); ++i) h[i] = std::min(0.01 + 0.4 * pts[i].y, 0.1);
+  };
+  REQUIRE(refine_front2d(base.m, ro).ok());
+  smooth_laplacian(base.m, 1);
+  const QualityStats before = mesh_quality(base.m);
+  Square limited = base, all = base;
+  OptimizeOptions every;
+  every.compound_valence_rise = 1000;
+  const OptimizeStats a = optimize_quality(limited.m, limited.fixed);
+  const OptimizeStats b = optimize_quality(all.m, all.fixed, every);
+  MESSAGE("compound changes tried " << b.compound_tried << " -> " << a.compound_tried << " ("
+                                    << a.compound_valence_skipped << " edges left alone)");
+  CHECK(a.compound_valence_skipped > 0);
+  CHECK(b.compound_valence_skipped == 0);
+  CHECK(a.compound_tried < b.compound_tried);
+  std::vector<Vec2> fixed_xy(base.m.xy.begin(), base.m.xy.begin() + base.fixed);
+  check_invariants(limited.m, limited.edges, fixed_xy);
+  CHECK(mesh_quality(limited.m).share_rho_09 >= before.share_rho_09);
+}
+
+TEST_CASE("optimize_quality: the rounds end after a round that lifts few (min_round_gain)") {
+  // A round must lift min_round_gain of its bad triangles for the next to run: at 1 (all
+  // of them) one round only, at 0 the rounds go on while they change anything.
+  const Square base = square(0.01, true);
+  Square one = base, on = base;
+  OptimizeOptions stop_early, go_on;
+  stop_early.min_round_gain = 1;
+  go_on.min_round_gain = 0;
+  const OptimizeStats a = optimize_quality(one.m, one.fixed, stop_early);
+  const OptimizeStats b = optimize_quality(on.m, on.fixed, go_on);
+  MESSAGE("rounds " << b.rounds << " -> " << a.rounds << ", moves " << b.moves << " -> " << a.moves);
+  CHECK(a.rounds == 1);
+  CHECK(b.rounds > 1);
+  CHECK(a.moves < b.moves);
 }
