@@ -35,7 +35,7 @@ struct OptimizeOptions {
   /// Compound changes are tried only on edges whose flip raises sum (valence - 6)^2 over
   /// the quad's free inner corners by at most this (flip_valence.h). Where a size ramp makes
   /// the front drop points (pairs of valence 5 and 7), the flips that pull valences away
-  /// from 6 cost a third of the compound rounds and rarely succeed (docs/benchmarks.md).
+  /// from 6 cost a quarter of the compound rounds' time and rarely succeed (docs/benchmarks.md).
   int compound_valence_rise = 2;
   /// Each loop of rounds (swaps and moves, then compound changes) ends after a round that
   /// lifts fewer than this share of its bad triangles to the threshold or above: the later
