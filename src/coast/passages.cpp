@@ -901,7 +901,7 @@ void rekeep(Work& w, FlatLoop& f, TreeNode from_t, std::uint32_t from, TreeNode 
 // only their points and widths), and only the segments new since then are searched.
 std::vector<NearMiss> round_near_misses(Work& w) {
   RoundSegments::Round round = w.segments.next(
-      w.flat.size(), [&](std::uint32_t l) { return !w.flat[l].dead; }, [&](std::uint32_t l) { return w.remade[l] != 0; },
+      w.flat.size(), w.ropes.capacity(), [&](std::uint32_t l) { return !w.flat[l].dead; }, [&](std::uint32_t l) { return w.remade[l] != 0; },
       [&](std::uint32_t l, std::vector<std::uint32_t>& ids, std::vector<std::uint32_t>& keys) {
         w.ropes.for_each(w.flat[l].rope, [&](TreeNode t) {
           ids.push_back(w.ropes.id(t));

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "base/check.h"
+
 namespace sm::coast {
 
 void RoundSegments::match_by_keys(std::uint32_t l, const std::vector<std::uint32_t>& ids,
@@ -10,7 +12,7 @@ void RoundSegments::match_by_keys(std::uint32_t l, const std::vector<std::uint32
   const std::size_t k = ids.size();
   for (std::size_t j = 0; j < k; ++j) {
     const std::uint32_t key = keys[j], start = ids[j], end = ids[j + 1 < k ? j + 1 : 0];
-    if (key >= place_.size()) place_.resize(std::size_t{key} + 1, kNoPlace);
+    SM_ASSERT(key < place_.size(), "RoundSegments: a key past the bound given (coast/round_segments.cpp)");
     const Place was = place_[key];
     place_[key] = {l, static_cast<std::uint32_t>(j)};
     // The last round's segment there, when it has the same ends: a node starts one segment

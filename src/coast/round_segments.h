@@ -33,11 +33,15 @@ class RoundSegments {
   /// added). `live(l)`: whether loop l is live; `changed(l)`: whether its ring may differ
   /// from the last round's (true for a loop made since; never false for one that differs);
   /// `ids_of(l, ids, keys)`: fills `ids` with a live loop's kept node ids in ring order and
-  /// `keys` with a number for each (below 2^32 - 1) that most points keep between rounds
+  /// `keys` with a number for each (below n_keys) that most points keep between rounds
   /// (passages.cpp: its rope point). A key is only a hint: where it names no segment of the
   /// last round with the same ends, the segment is matched by its start node.
   template <class Live, class Changed, class IdsOf>
-  Round next(std::size_t n_loops, Live&& live, Changed&& changed, IdsOf&& ids_of) {
+  Round next(std::size_t n_loops, std::size_t n_keys, Live&& live, Changed&& changed, IdsOf&& ids_of) {
+    // Sized once a round to the keys' bound, with an eighth to spare: grown key by key it
+    // doubled (8 bytes a rope point, the first round at the import's peak).
+    if (n_keys > place_.capacity()) place_.reserve(n_keys + n_keys / 8);
+    if (n_keys > place_.size()) place_.resize(n_keys, kNoPlace);
     Round r;
     r.active.resize(n_loops);
     r.renumber.assign(n_segments_, kNone);
@@ -99,6 +103,7 @@ class RoundSegments {
     std::vector<Segment> before, now;
     for (std::uint32_t l = 0; l < n_loops && l < first_.size(); ++l)
       if (!live(l) || changed(l)) add_segments(ids_[l], first_[l], &r.renumber, before);
+    if (before.empty()) return;   // nothing to match (the first round: every segment is new)
     for (const auto& [l, ids] : remade) add_unmatched(ids, first[l], r.active[l], now);
     match(before, now, r);
   }

@@ -144,7 +144,7 @@ TEST_CASE("RoundSegments matches the full walk and sort after random cuts and jo
       std::vector<std::size_t> first;
       const RoundSegments::Round want = full.next(loops, first);
       const RoundSegments::Round got = incremental.next(
-          loops.size(), [&](std::uint32_t l) { return loops[l].live; },
+          loops.size(), keys.size() + 8 + next_id, [&](std::uint32_t l) { return loops[l].live; },
           [&](std::uint32_t l) { return loops[l].changed; },
           [&](std::uint32_t l, std::vector<std::uint32_t>& ids, std::vector<std::uint32_t>& point_keys) {
             ids = loops[l].ids;
