@@ -26,6 +26,7 @@
 #include "coast/kept_rope.h"
 #include "coast/mean_width.h"
 #include "coast/place_pairs.h"
+#include "coast/round_segments.h"
 #include "coast/segment_grid.h"
 #include "exact/ring.h"
 #include "exact/predicates.h"
@@ -69,7 +70,6 @@ Vec2 closest_on_segment(Vec2 p, Vec2 a, Vec2 b) {
 // 39 MB of the pool on the full-resolution world).
 constexpr std::uint32_t kAdded = 0xFFFFFFFFu;
 constexpr std::uint32_t kMaxIndex = 0x7FFFFFFFu;   // index has 31 bits
-constexpr std::uint32_t kNoSegment = 0xFFFFFFFFu;  // no segment (round_near_misses)
 struct Node {
   std::uint32_t curve;
   std::uint32_t src;
@@ -186,21 +186,18 @@ struct Work {
   // puts a few points back; measuring every ring's polygon and searching every segment pair
   // again each round made passage closing grow with rounds x coast (the coast bound's points
   // put back add rounds). Per loop (by its number in `flat`, which only grows): the polygon
-  // and widths at the round's start, made again only for a loop that is `fresh`. The last
-  // round's segments (`segs`, by start node, freed with the rounds): each its start and end
-  // node and its number in that round's list, so a segment is the same as then when its
-  // start node has the same end (a node's point never moves; a node that left the live
-  // loops never comes back). Only kept nodes start segments (323,000 of 7 M at 3 km on the
-  // full GSHHG): two words for every node of the pool were 56 MB under the import's peak,
-  // and a hash map from node to segment a cache miss per segment and per near pair each
-  // round. `near`: the last round's near pairs (before the one-loop test), by their
-  // segments' numbers in that round (sorted), each with its way across once measured
-  // (way_across reads only the two segments' points: a pair of unchanged segments keeps it;
-  // at a deviation bound's closures most near pairs outlive many rounds). `first_segment`:
-  // per loop, the number of its first segment in the round.
-  struct Segment {
-    std::uint32_t start, end, number;
-  };
+  // and widths at the round's start, made again only for a loop that is `fresh` (`remade`:
+  // per loop, whether it was at this round's start). The round's segments (`segments`,
+  // round_segments.h, freed with the rounds): each live loop's kept node ids at the last
+  // round's start, so a segment is the same as then when its start node has the same end
+  // (a node's point never moves; a node that left the live loops never comes back), and
+  // each loop's first segment's number. Only kept nodes start segments (323,000 of 7 M at
+  // 3 km on the full GSHHG): two words for every node of the pool were 56 MB under the
+  // import's peak, and a hash map from node to segment a cache miss per segment and per
+  // near pair each round. `near`: the last round's near pairs (before the one-loop test),
+  // by their segments' numbers in that round (sorted), each with its way across once
+  // measured (way_across reads only the two segments' points: a pair of unchanged segments
+  // keeps it; at a deviation bound's closures most near pairs outlive many rounds).
   struct NearPair {
     std::uint32_t a, b;
     bool measured;
@@ -209,9 +206,9 @@ struct Work {
   };
   std::vector<std::vector<Vec2>> polys = {};
   std::vector<std::vector<double>> width = {};
-  std::vector<Segment> segs = {};
+  RoundSegments segments = {};
+  std::vector<char> remade = {};
   std::vector<NearPair> near = {};
-  std::vector<std::size_t> first_segment = {};
   bool gate_closed(Vec2 a0, Vec2 b0) const {
     for (const Gate& g : gates)
       if (g.closes(a0, b0)) return true;
@@ -903,37 +900,18 @@ void rekeep(Work& w, FlatLoop& f, TreeNode from_t, std::uint32_t from, TreeNode 
 // pairs of two segments unchanged since the last round are that round's (the test reads
 // only their points and widths), and only the segments new since then are searched.
 std::vector<NearMiss> round_near_misses(Work& w) {
-  std::vector<std::vector<char>> active(w.flat.size());
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> at;   // this round's segments: loop and position
-  std::vector<std::size_t> first(w.flat.size(), 0);          // per loop: its first segment's number
-  std::vector<Work::Segment> segs;                            // this round's, by start node below
-  std::vector<std::uint32_t> ids;
-  for (std::uint32_t l = 0; l < w.flat.size(); ++l) {
-    const FlatLoop& f = w.flat[l];
-    if (f.dead) continue;
-    const std::size_t k = f.size();
-    active[l].assign(k, 1);
-    first[l] = at.size();
-    ids.clear();
-    w.ropes.for_each(f.rope, [&](TreeNode t) { ids.push_back(w.ropes.id(t)); });
-    for (std::size_t j = 0; j < k; ++j) {
-      segs.push_back({ids[j], ids[j + 1 < k ? j + 1 : 0], static_cast<std::uint32_t>(at.size())});
-      at.push_back({l, static_cast<std::uint32_t>(j)});
-    }
-  }
-  // A node starts one segment a round (it is on one ring): the two rounds' lists sorted by
-  // start node are matched in one pass. `renumber`: a last-round segment's number now when
-  // it is unchanged, else kNoSegment.
-  std::sort(segs.begin(), segs.end(), [](const Work::Segment& x, const Work::Segment& y) { return x.start < y.start; });
-  std::vector<std::uint32_t> renumber(w.segs.size(), kNoSegment);
-  for (std::size_t i = 0, o = 0; i < segs.size(); ++i) {
-    while (o < w.segs.size() && w.segs[o].start < segs[i].start) ++o;
-    if (o == w.segs.size() || w.segs[o].start != segs[i].start || w.segs[o].end != segs[i].end) continue;
-    renumber[w.segs[o].number] = segs[i].number;
-    const auto [l, j] = at[segs[i].number];
-    active[l][j] = 0;
-  }
-  w.segs = std::move(segs);
+  RoundSegments::Round round = w.segments.next(
+      w.flat.size(), w.ropes.capacity(), [&](std::uint32_t l) { return !w.flat[l].dead; }, [&](std::uint32_t l) { return w.remade[l] != 0; },
+      [&](std::uint32_t l, std::vector<std::uint32_t>& ids, std::vector<std::uint32_t>& keys) {
+        w.ropes.for_each(w.flat[l].rope, [&](TreeNode t) {
+          ids.push_back(w.ropes.id(t));
+          keys.push_back(t);   // a cut moves rope points to the new loops: most keep their segment
+        });
+      });
+  std::vector<std::vector<char>>& active = round.active;
+  const std::vector<std::pair<std::uint32_t, std::uint32_t>>& at = round.at;
+  const std::vector<std::uint32_t>& renumber = round.renumber;
+  auto first = [&](std::uint32_t l) { return w.segments.first(l); };
   std::size_t searched = 0;
   std::vector<NearMiss> near =
       find_near_pairs(w.polys, w.width, active, &searched, resolve_thread_count(w.opt.threads));
@@ -947,49 +925,65 @@ std::vector<NearMiss> round_near_misses(Work& w) {
   std::vector<Work::NearPair> pairs;   // this round's, in the order of `near`
   pairs.reserve(near.capacity());
   for (const NearMiss& m : near)
-    pairs.push_back({static_cast<std::uint32_t>(first[m.loop_a] + m.seg_a),
-                     static_cast<std::uint32_t>(first[m.loop_b] + m.seg_b), false, 0.0});
+    pairs.push_back({static_cast<std::uint32_t>(first(m.loop_a) + m.seg_a),
+                     static_cast<std::uint32_t>(first(m.loop_b) + m.seg_b), false, 0.0});
   for (const Work::NearPair& p : w.near) {
     const std::uint32_t sa = renumber[p.a], sb = renumber[p.b];
-    if (sa == kNoSegment || sb == kNoSegment) continue;
+    if (sa == RoundSegments::kNone || sb == RoundSegments::kNone) continue;
     NearMiss m{at[sa].first, at[sa].second, at[sb].first, at[sb].second, 0, {}};
     order_places(m);
     // The way across kept only with the segments in the same roles: with width_at the
     // width is read at the mean of the four points, added in the pair's order.
     const bool same_roles = m.loop_a == at[sa].first && m.seg_a == at[sa].second;
     near.push_back(m);
-    pairs.push_back({static_cast<std::uint32_t>(first[m.loop_a] + m.seg_a),
-                     static_cast<std::uint32_t>(first[m.loop_b] + m.seg_b),
+    pairs.push_back({static_cast<std::uint32_t>(first(m.loop_a) + m.seg_a),
+                     static_cast<std::uint32_t>(first(m.loop_b) + m.seg_b),
                      p.measured && (same_roles || !w.opt.width_at), p.across});
     ++w.stats.near_kept;
   }
-  std::sort(pairs.begin(), pairs.end(),
-            [](const Work::NearPair& x, const Work::NearPair& y) { return x.key() < y.key(); });
-  w.near = std::move(pairs);
-  w.first_segment = std::move(first);
-  // Within one loop only far-apart parts count: at least 3 segments away both ways (as
-  // find_near_misses), with the loop as it is now.
-  std::erase_if(near, [&](const NearMiss& m) {
+  std::vector<Work::NearPair>().swap(w.near);   // read: freed before the round's order is made
+  // In place-pair order (sort_place_pairs): a loop's segments are numbered on from its
+  // first(), in loop order, so (loop_a, seg_a, loop_b, seg_b) orders as the two numbers do.
+  // Sorted as one 64-bit key a pair (the four-field comparison over 40-byte records was
+  // most of a round's sort); the keys are unique (a new pair has a new segment, a kept one
+  // none), so the order is the one sort_place_pairs gives. One sort orders both the pairs
+  // kept for the next round and the near misses (those of one loop too near along it left
+  // out: within one loop only far-apart parts count, at least 3 segments away both ways as
+  // find_near_misses, with the loop as it is now).
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> order(near.size());
+  for (std::size_t i = 0; i < near.size(); ++i)
+    order[i] = {(std::uint64_t{pairs[i].a} << 32) | pairs[i].b, static_cast<std::uint32_t>(i)};
+  std::sort(order.begin(), order.end());
+  auto near_along = [&](const NearMiss& m) {
     if (m.loop_a != m.loop_b) return false;
     const std::uint32_t n = static_cast<std::uint32_t>(w.polys[m.loop_a].size());
     const std::uint32_t d = m.seg_a > m.seg_b ? m.seg_a - m.seg_b : m.seg_b - m.seg_a;
     return std::min(d, n - d) < 3;
-  });
-  // In place-pair order (sort_place_pairs): a loop's segments are numbered on from its
-  // first[], in loop order, so (loop_a, seg_a, loop_b, seg_b) orders as the two numbers do.
-  // Sorted as one 64-bit key a pair (the four-field comparison over 40-byte records was
-  // most of a round's sort); the keys are unique (a new pair has a new segment, a kept one
-  // none), so the order is the one sort_place_pairs gives.
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> order(near.size());
-  for (std::size_t i = 0; i < near.size(); ++i) {
-    const NearMiss& m = near[i];
-    order[i] = {(std::uint64_t{w.first_segment[m.loop_a] + m.seg_a} << 32) | (w.first_segment[m.loop_b] + m.seg_b),
-                static_cast<std::uint32_t>(i)};
+  };
+  // The pairs put in that order where they are (each cycle of the permutation followed once,
+  // its entries' keys, read no more, marking them done): a sorted copy would be made where
+  // the old list's pages were freed but stay resident (the first round is the import's peak).
+  constexpr std::uint64_t kDone = ~std::uint64_t{0};
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    if (order[i].first == kDone) continue;
+    const Work::NearPair held = pairs[i];
+    std::size_t j = i;
+    for (std::size_t steps = 0; steps < order.size(); ++steps) {   // a cycle is at most every entry
+      const std::size_t from = order[j].second;
+      order[j].first = kDone;
+      if (from == i) {
+        pairs[j] = held;
+        break;
+      }
+      pairs[j] = pairs[from];
+      j = from;
+    }
   }
-  std::sort(order.begin(), order.end());
+  w.near = std::move(pairs);
   std::vector<NearMiss> sorted;
   sorted.reserve(near.size());
-  for (const auto& o : order) sorted.push_back(near[o.second]);
+  for (const auto& o : order)
+    if (!near_along(near[o.second])) sorted.push_back(near[o.second]);
   return sorted;
 }
 
@@ -999,8 +993,10 @@ void round_polygons(Work& w) {
   const double W = w.opt.min_width, R = w.opt.radius;
   w.polys.resize(w.flat.size());
   w.width.resize(w.flat.size());
+  w.remade.assign(w.flat.size(), 0);
   for (std::size_t l = 0; l < w.flat.size(); ++l) {
     FlatLoop& f = w.flat[l];
+    w.remade[l] = f.fresh;
     if (f.dead) {
       std::vector<Vec2>().swap(w.polys[l]);
       std::vector<double>().swap(w.width[l]);
@@ -1047,16 +1043,18 @@ std::vector<Candidate> round_candidates(Work& w) {
   // the pair and skip it; at 3 km, 128,000 of the 524,000 candidates of six rounds).
   if (w.opt.keep_passages) std::erase_if(near, [](const NearMiss& m) { return m.loop_a != m.loop_b; });
   // Each near pair's entry in w.near, whose way across is kept from the round it was
-  // measured in; the others measured now and kept there.
+  // measured in; the others measured now and kept there. Both lists are in key order (the
+  // near pairs are a part of w.near, round_near_misses), so the entries are found in one
+  // pass (a binary search a pair was a cache miss a level).
   std::vector<std::size_t> entry(near.size());
   std::vector<std::size_t> to_measure;
   std::vector<double> across(near.size());
+  auto it = w.near.begin();
   for (std::size_t i = 0; i < near.size(); ++i) {
     const NearMiss& m = near[i];
-    const std::pair key(static_cast<std::uint32_t>(w.first_segment[m.loop_a] + m.seg_a),
-                        static_cast<std::uint32_t>(w.first_segment[m.loop_b] + m.seg_b));
-    const auto it = std::lower_bound(w.near.begin(), w.near.end(), key,
-                                     [](const Work::NearPair& p, const auto& k) { return p.key() < k; });
+    const std::pair key(static_cast<std::uint32_t>(w.segments.first(m.loop_a) + m.seg_a),
+                        static_cast<std::uint32_t>(w.segments.first(m.loop_b) + m.seg_b));
+    while (it != w.near.end() && it->key() < key) ++it;
     SM_ASSERT(it != w.near.end() && it->key() == key,
               "close_passages: a near pair not in the round's list (passages.cpp, round_candidates)");
     entry[i] = static_cast<std::size_t>(it - w.near.begin());
@@ -1638,9 +1636,9 @@ Result<bool> close_passages(std::vector<WorkCurve>& curves, std::vector<WorkLoop
   w.ropes = KeptRopes();
   std::vector<std::vector<Vec2>>().swap(w.polys);
   std::vector<std::vector<double>>().swap(w.width);
-  std::vector<Work::Segment>().swap(w.segs);
+  w.segments.clear();
+  std::vector<char>().swap(w.remade);
   std::vector<Work::NearPair>().swap(w.near);
-  std::vector<std::size_t>().swap(w.first_segment);
   // The loops to rebuild (changed in place, or made by cuts) and the curves of the loops
   // cut or rebuilt, whose points the rebuilt curves take over. Each such curve is freed as
   // soon as the last ring reading it is rebuilt (rings read the curves' points until then):
