@@ -274,6 +274,17 @@ void KeptRopes::release(Rope r) {
   for (std::size_t i = before; i < free_.size(); ++i) nodes_[free_[i]].parent = kNone;
 }
 
+void KeptRopes::run(Rope r, std::size_t j, std::span<TreeNode> out) const {
+  if (out.empty()) return;
+  TreeNode t = at(r, j % size(r));
+  out[0] = t;
+  for (std::size_t i = 1; i < out.size(); ++i) {
+    t = successor(t);
+    if (t == kNone) t = leftmost(r);
+    out[i] = t;
+  }
+}
+
 KeptRopes::TreeNode KeptRopes::leftmost(TreeNode t) const {
   while (nodes_[t].left != kNone) t = nodes_[t].left;
   return t;

@@ -79,6 +79,10 @@ class KeptRopes {
   /// The tree node at the next position of t's rope (kNone after its last): one step up or
   /// down the tree from t, where at(rope, rank + 1) descends from the root again.
   TreeNode next(TreeNode t) const { return successor(t); }
+  /// The tree nodes at the consecutive ring positions j, j+1, ... (mod size(r), r not
+  /// empty) into out: one descent to j, then a step each (next, back to the first point
+  /// after the last), where at() per position descends from the root every time.
+  void run(Rope r, std::size_t j, std::span<TreeNode> out) const;
   /// Calls f(tree node) for every point in order.
   template <class F>
   void for_each(Rope r, F&& f) const {

@@ -141,6 +141,21 @@ struct FlatLoop {
   std::uint32_t id(std::size_t j) const { return ropes->id(tree_node(j)); }
   const Node& node(std::size_t j) const { return pool->nodes[id(j)]; }
   Vec2 p(std::size_t j) const { return ropes->uv(tree_node(j)); }
+  /// The rope points at positions j .. j + N - 1 (mod size()): one descent and N - 1 steps
+  /// (KeptRopes::run), where tree_node() per position descends from the root each time.
+  template <std::size_t N>
+  std::array<TreeNode, N> run(std::size_t j) const {
+    std::array<TreeNode, N> out;
+    ropes->run(rope, j, out);
+    return out;
+  }
+  template <std::size_t N>
+  std::array<Vec2, N> points(std::size_t j) const {
+    const std::array<TreeNode, N> t = run<N>(j);
+    std::array<Vec2, N> out;
+    for (std::size_t i = 0; i < N; ++i) out[i] = ropes->uv(t[i]);
+    return out;
+  }
   geo::LonLat ll(std::size_t j) const { return pool->ll(id(j)); }
   /// Dead: nothing reads it again, so its rope goes back to be reused.
   void kill() {
@@ -611,13 +626,11 @@ double dam_corner(Vec2 end, Vec2 across, Vec2 c1, Vec2 c2, Vec2 c3, bool in_side
 int sharp_dam_end(Work& w, std::uint32_t la, std::size_t sa, std::uint32_t lb, std::size_t sb) {
   const FlatLoop& fa = w.flat[la];
   const FlatLoop& fb = w.flat[lb];
-  const std::size_t ka = fa.size(), kb = fb.size();
-  const Vec2 a0 = fa.p(sa), a1 = fa.p(sa + 1), b0 = fb.p(sb), b1 = fb.p(sb + 1);
-  const double angle[4] = {
-      dam_corner(a0, b1, fa.p(sa + ka - 1), fa.p(sa + ka - 2), fa.p(sa + ka - 3), true),
-      dam_corner(b1, a0, fb.p(sb + 2), fb.p(sb + 3), fb.p(sb + 4), false),
-      dam_corner(b0, a1, fb.p(sb + kb - 1), fb.p(sb + kb - 2), fb.p(sb + kb - 3), true),
-      dam_corner(a1, b0, fa.p(sa + 2), fa.p(sa + 3), fa.p(sa + 4), false)};
+  // Positions s - 3 .. s + 4 of each loop: pa[3 + i] is fa.p(sa + i).
+  const std::array<Vec2, 8> pa = fa.points<8>(sa + fa.size() - 3), pb = fb.points<8>(sb + fb.size() - 3);
+  const Vec2 a0 = pa[3], a1 = pa[4], b0 = pb[3], b1 = pb[4];
+  const double angle[4] = {dam_corner(a0, b1, pa[2], pa[1], pa[0], true), dam_corner(b1, a0, pb[5], pb[6], pb[7], false),
+                           dam_corner(b0, a1, pb[2], pb[1], pb[0], true), dam_corner(a1, b0, pa[5], pa[6], pa[7], false)};
   int first = -1;
   for (int k = 0; k < 4 && first < 0; ++k)
     if (angle[k] < kMinDamCorner) first = k;
@@ -642,13 +655,15 @@ double corner_between(bool in_dam, bool out_dam, Vec2 u3, Vec2 u2, Vec2 u, Vec2 
   return water_angle(u, v, x);
 }
 
-// The water's corner at kept position j of f (corner_between): the segment into j and the
-// one out of it are each a dam (src past the curves) or a coast piece.
-double drawn_corner(const Work& w, const FlatLoop& f, std::size_t j) {
-  const std::size_t k = f.size();
-  const bool in_dam = f.node(j + k - 1).src >= w.n_curves, out_dam = f.node(j).src >= w.n_curves;
-  return corner_between(in_dam, out_dam, f.p(j + k - 3), f.p(j + k - 2), f.p(j + k - 1), f.p(j), f.p(j + 1),
-                        f.p(j + 2), f.p(j + 3));
+// Whether the kept segment from rope point t (to the next) is a dam (src past the curves).
+bool is_dam(const Work& w, TreeNode t) { return w.pool.nodes[w.ropes.id(t)].src >= w.n_curves; }
+
+// The water's corner at the middle one of seven consecutive rope points s of a loop
+// (corner_between): the segment into it and the one out of it are each a dam or a coast piece.
+double drawn_corner(const Work& w, const std::array<TreeNode, 7>& s) {
+  std::array<Vec2, 7> p;
+  for (std::size_t i = 0; i < 7; ++i) p[i] = w.ropes.uv(s[i]);
+  return corner_between(is_dam(w, s[2]), is_dam(w, s[3]), p[0], p[1], p[2], p[3], p[4], p[5], p[6]);
 }
 
 // A dam end at a corner sharper than kMinDamCorner that no nearby clean cut avoids (the
@@ -671,9 +686,13 @@ void trim_dam_wedges(Work& w, FlatLoop& f, std::array<TreeNode, 4> ends, Near&& 
       // free list, and no point has been made since the cut: it is in no live rope).
       if (w.ropes.root_of(end) != f.rope) break;
       const std::size_t j = w.ropes.rank(end);
-      const bool in_dam = f.node(j + k - 1).src >= w.n_curves, out_dam = f.node(j).src >= w.n_curves;
-      if (in_dam == out_dam || !(drawn_corner(w, f, j) < kMinDamCorner)) break;
-      const Vec2 u = f.p(j + k - 1), v = f.p(j), x = f.p(j + 1);
+      // Positions j - 4 .. j + 4: s[4 + i] is f.tree_node(j + i), pt[4 + i] is f.p(j + i).
+      const std::array<TreeNode, 9> s = f.run<9>(j + k - 4);
+      std::array<Vec2, 9> pt;
+      for (std::size_t i = 0; i < 9; ++i) pt[i] = w.ropes.uv(s[i]);
+      const bool in_dam = is_dam(w, s[3]), out_dam = is_dam(w, s[4]);
+      if (in_dam == out_dam || !(drawn_corner(w, {s[1], s[2], s[3], s[4], s[5], s[6], s[7]}) < kMinDamCorner)) break;
+      const Vec2 u = pt[3], v = pt[4], x = pt[5];
       if (!(water_angle(u, v, x) < 2 * kHalfPi) || orient2d(u, v, x) == Sign::Zero) break;
       const Sign away = orient2d(u, v, x) == Sign::Positive ? Sign::Negative : Sign::Positive;
       const Vec2 lo{std::min({u.x, v.x, x.x}), std::min({u.y, v.y, x.y})};
@@ -691,13 +710,11 @@ void trim_dam_wedges(Work& w, FlatLoop& f, std::array<TreeNode, 4> ends, Near&& 
       for (const auto& e : made) blocked = blocked || crosses(e.first, e.second);
       if (blocked) break;
       // The corners at u and x once v is gone, u -> x a dam.
-      const bool in_dam_u = f.node(j + k - 2).src >= w.n_curves, out_dam_x = f.node(j + 1).src >= w.n_curves;
-      const double at_u = corner_between(in_dam_u, true, f.p(j + k - 4), f.p(j + k - 3), f.p(j + k - 2), u, x,
-                                         f.p(j + 2), f.p(j + 3));
-      const double at_x = corner_between(true, out_dam_x, f.p(j + k - 3), f.p(j + k - 2), u, x, f.p(j + 2),
-                                         f.p(j + 3), f.p(j + 4));
+      const bool in_dam_u = is_dam(w, s[2]), out_dam_x = is_dam(w, s[5]);
+      const double at_u = corner_between(in_dam_u, true, pt[0], pt[1], pt[2], u, x, pt[6], pt[7]);
+      const double at_x = corner_between(true, out_dam_x, pt[1], pt[2], u, x, pt[6], pt[7], pt[8]);
       if (!(at_u >= kMinDamCorner && at_x >= kMinDamCorner)) break;
-      const TreeNode ut = f.tree_node(j + k - 1), xt = f.tree_node(j + 1);
+      const TreeNode ut = s[3], xt = s[5];
       const std::uint32_t un = w.ropes.id(ut), vn = w.ropes.id(end), xn = w.ropes.id(xt);
       if (out_dam) w.nodes[un].src = w.nodes[vn].src;   // the dam now leaves u
       w.next[un] = xn;
@@ -1108,8 +1125,8 @@ std::optional<std::pair<std::size_t, std::size_t>> unsharp_cut(Work& w, std::uin
         if (la == lb && (ta == tb || (ta + 1) % ka == tb || (tb + 1) % ka == ta)) continue;
         const FlatLoop& fa = w.flat[la];
         const FlatLoop& fb = w.flat[lb];
-        if (w.gate_closed(fa.p(ta), fb.p(tb)) ||
-            !cut_is_clean_near(near, fa.p(ta), fa.p(ta + 1), fb.p(tb), fb.p(tb + 1), made) ||
+        const std::array<Vec2, 2> pa = fa.points<2>(ta), pb = fb.points<2>(tb);
+        if (w.gate_closed(pa[0], pb[0]) || !cut_is_clean_near(near, pa[0], pa[1], pb[0], pb[1], made) ||
             sharp_dam_end(w, la, ta, lb, tb) >= 0)
           continue;
         return std::pair{ta, tb};
@@ -1233,17 +1250,18 @@ bool close_round(Work& w, std::vector<RepairEntry>& log) {
       if (!w.opt.keep_passages) {
         const FlatLoop& fa = w.flat[la];
         const FlatLoop& fb = w.flat[lb];
-        refused.push_back({la, fa.tree_node(sa), fa.tree_node(sa + 1), fa.id(sa), fa.id(sa + 1), b0, b1});
-        refused.push_back({lb, fb.tree_node(sb), fb.tree_node(sb + 1), fb.id(sb), fb.id(sb + 1), a0, a1});
+        const std::array<TreeNode, 2> ta = fa.run<2>(sa), tb = fb.run<2>(sb);
+        refused.push_back({la, ta[0], ta[1], w.ropes.id(ta[0]), w.ropes.id(ta[1]), b0, b1});
+        refused.push_back({lb, tb[0], tb[1], w.ropes.id(tb[0]), w.ropes.id(tb[1]), a0, a1});
       }
       continue;
     }
     if (w.opt.keep_passages && !cut_fills_dead_end(w, la, sa_cut, sb_cut)) continue;   // a passage
-    made.push_back({w.flat[la].p(sa_cut), w.flat[lb].p(sb_cut + 1)});
-    made.push_back({w.flat[lb].p(sb_cut), w.flat[la].p(sa_cut + 1)});
-    const DamInfo info = info_of(w, w.flat[la].node(sa_cut));
-    const std::array<TreeNode, 4> ends{w.flat[la].tree_node(sa_cut), w.flat[la].tree_node(sa_cut + 1),
-                                       w.flat[lb].tree_node(sb_cut), w.flat[lb].tree_node(sb_cut + 1)};
+    const std::array<TreeNode, 2> ea = w.flat[la].run<2>(sa_cut), eb = w.flat[lb].run<2>(sb_cut);
+    made.push_back({w.ropes.uv(ea[0]), w.ropes.uv(eb[1])});
+    made.push_back({w.ropes.uv(eb[0]), w.ropes.uv(ea[1])});
+    const DamInfo info = info_of(w, w.pool.nodes[w.ropes.id(ea[0])]);
+    const std::array<TreeNode, 4> ends{ea[0], ea[1], eb[0], eb[1]};
     const CutResult r = cut(w, la, sa_cut, lb, sb_cut);
     std::size_t dropped = 0;
     for (std::uint32_t l : r.new_loops) {

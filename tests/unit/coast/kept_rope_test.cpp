@@ -178,3 +178,38 @@ TEST_CASE("kept ropes: a cut's work does not grow with the ring's size") {
   CHECK(large < 4.0 * small);
   CHECK(large < 1200);
 }
+
+TEST_CASE("kept ropes: a run of consecutive points stepped from one descent is the points descended to") {
+  // Passage closing reads up to nine consecutive ring points round a cut's segments
+  // (passages.cpp: sharp_dam_end, trim_dam_wedges); a run steps with next() from one
+  // descent, wrapping from the last point to the first, as at() at (j + i) mod size gives.
+  std::mt19937 rng(11);
+  KeptRopes ropes;
+  // A ring cut and joined again and again, so that its tree is not the one make() built.
+  KeptRopes::Rope r = ropes.make(wobbly_ring(500, 0, rng));
+  for (int c = 0; c < 200; ++c) {
+    const std::size_t k = ropes.size(r);
+    const std::size_t j = std::uniform_int_distribution<std::size_t>(0, k - 1)(rng);
+    auto [a, b] = ropes.split(ropes.rotate(r, j), k / 3);
+    r = ropes.join(b, a);
+  }
+  const std::size_t n = ropes.size(r);
+  auto check_runs = [&](KeptRopes::Rope rope, std::size_t len) {
+    const std::size_t k = ropes.size(rope);
+    for (std::size_t j = 0; j < k + 3; ++j) {
+      std::vector<KeptRopes::TreeNode> out(len);
+      const std::size_t before = ropes.work();
+      ropes.run(rope, j, out);
+      const std::size_t run_work = ropes.work() - before;
+      const std::size_t one_descent_before = ropes.work();
+      (void)ropes.at(rope, j % k);
+      CHECK(run_work == ropes.work() - one_descent_before);   // one descent, not one a point
+      for (std::size_t i = 0; i < len; ++i) CHECK(out[i] == ropes.at(rope, (j + i) % k));
+    }
+  };
+  check_runs(r, 9);   // across tree nodes and round the ends (j near 0 and near n)
+  CHECK(n == 500);
+  // A ring shorter than the run: it wraps more than once.
+  KeptRopes::Rope small = ropes.make(wobbly_ring(3, 1000, rng));
+  check_runs(small, 8);
+}
