@@ -658,14 +658,6 @@ double corner_between(bool in_dam, bool out_dam, Vec2 u3, Vec2 u2, Vec2 u, Vec2 
 // Whether the kept segment from rope point t (to the next) is a dam (src past the curves).
 bool is_dam(const Work& w, TreeNode t) { return w.pool.nodes[w.ropes.id(t)].src >= w.n_curves; }
 
-// The water's corner at the middle one of seven consecutive rope points s of a loop
-// (corner_between): the segment into it and the one out of it are each a dam or a coast piece.
-double drawn_corner(const Work& w, const std::array<TreeNode, 7>& s) {
-  std::array<Vec2, 7> p;
-  for (std::size_t i = 0; i < 7; ++i) p[i] = w.ropes.uv(s[i]);
-  return corner_between(is_dam(w, s[2]), is_dam(w, s[3]), p[0], p[1], p[2], p[3], p[4], p[5], p[6]);
-}
-
 // A dam end at a corner sharper than kMinDamCorner that no nearby clean cut avoids (the
 // pinch of a river mouth behind a spit: the cuts next to it are not clean, the dam runs
 // back along the spit's inner side): the wedge of water between the dam and the coast is
@@ -691,7 +683,10 @@ void trim_dam_wedges(Work& w, FlatLoop& f, std::array<TreeNode, 4> ends, Near&& 
       std::array<Vec2, 9> pt;
       for (std::size_t i = 0; i < 9; ++i) pt[i] = w.ropes.uv(s[i]);
       const bool in_dam = is_dam(w, s[3]), out_dam = is_dam(w, s[4]);
-      if (in_dam == out_dam || !(drawn_corner(w, {s[1], s[2], s[3], s[4], s[5], s[6], s[7]}) < kMinDamCorner)) break;
+      // The water's corner at the dam end v = pt[4], the coast as drawn three points each way.
+      if (in_dam == out_dam ||
+          !(corner_between(in_dam, out_dam, pt[1], pt[2], pt[3], pt[4], pt[5], pt[6], pt[7]) < kMinDamCorner))
+        break;
       const Vec2 u = pt[3], v = pt[4], x = pt[5];
       if (!(water_angle(u, v, x) < 2 * kHalfPi) || orient2d(u, v, x) == Sign::Zero) break;
       const Sign away = orient2d(u, v, x) == Sign::Positive ? Sign::Negative : Sign::Positive;

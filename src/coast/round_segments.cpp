@@ -26,21 +26,6 @@ void RoundSegments::match_by_keys(std::uint32_t l, const std::vector<std::uint32
   }
 }
 
-void RoundSegments::add_segments(const std::vector<std::uint32_t>& ids, std::size_t first,
-                                 const std::vector<std::uint32_t>* renumber, std::vector<Segment>& out) {
-  const std::size_t k = ids.size();
-  for (std::size_t j = 0; j < k; ++j)
-    if (!renumber || (*renumber)[first + j] == kNone)
-      out.push_back({ids[j], ids[j + 1 < k ? j + 1 : 0], static_cast<std::uint32_t>(first + j)});
-}
-
-void RoundSegments::add_unmatched(const std::vector<std::uint32_t>& ids, std::size_t first,
-                                  const std::vector<char>& active, std::vector<Segment>& out) {
-  const std::size_t k = ids.size();
-  for (std::size_t j = 0; j < k; ++j)
-    if (active[j]) out.push_back({ids[j], ids[j + 1 < k ? j + 1 : 0], static_cast<std::uint32_t>(first + j)});
-}
-
 void RoundSegments::match(std::vector<Segment>& before, std::vector<Segment>& now, Round& r) {
   // A node starts one segment a round (it is on one ring): the two lists sorted by start
   // node are matched in one pass.

@@ -102,16 +102,26 @@ class RoundSegments {
                       const std::vector<std::size_t>& first, Round& r) const {
     std::vector<Segment> before, now;
     for (std::uint32_t l = 0; l < n_loops && l < first_.size(); ++l)
-      if (!live(l) || changed(l)) add_segments(ids_[l], first_[l], &r.renumber, before);
+      if (!live(l) || changed(l)) {
+        const std::size_t from = first_[l];
+        add_segments(ids_[l], from, [&](std::size_t j) { return r.renumber[from + j] == kNone; }, before);
+      }
     if (before.empty()) return;   // nothing to match (the first round: every segment is new)
-    for (const auto& [l, ids] : remade) add_unmatched(ids, first[l], r.active[l], now);
+    for (const auto& loop : remade) {
+      const std::vector<char>& active = r.active[loop.first];
+      add_segments(loop.second, first[loop.first], [&](std::size_t j) { return active[j] != 0; }, now);
+    }
     match(before, now, r);
   }
-  // ids' segments numbered from `first`, those with no number in `renumber` (when given).
-  static void add_segments(const std::vector<std::uint32_t>& ids, std::size_t first,
-                           const std::vector<std::uint32_t>* renumber, std::vector<Segment>& out);
-  static void add_unmatched(const std::vector<std::uint32_t>& ids, std::size_t first, const std::vector<char>& active,
-                            std::vector<Segment>& out);
+  // ids' segments (ring order, the last one closing the ring) numbered from `first`, those
+  // at the positions j where keep(j).
+  template <class Keep>
+  static void add_segments(const std::vector<std::uint32_t>& ids, std::size_t first, Keep&& keep,
+                           std::vector<Segment>& out) {
+    const std::size_t k = ids.size();
+    for (std::size_t j = 0; j < k; ++j)
+      if (keep(j)) out.push_back({ids[j], ids[j + 1 < k ? j + 1 : 0], static_cast<std::uint32_t>(first + j)});
+  }
   static void match(std::vector<Segment>& before, std::vector<Segment>& now, Round& r);
   std::vector<std::vector<std::uint32_t>> ids_;   // per loop live in the last round: its kept node ids then
   std::vector<std::size_t> first_;                 // per loop: its first segment's number in the last round
